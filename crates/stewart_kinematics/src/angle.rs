@@ -1,0 +1,122 @@
+//! An angle whose unit is carried by the type.
+//!
+//! The seed script's most common bug is a value in degrees passed where radians are
+//! expected (its author once set `yaw = 8` meaning degrees and watched the platform
+//! spin). [`Angle`] can only be built by naming the unit, and read back only by naming
+//! it again, so that mistake cannot be written.
+
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+
+use serde::{Deserialize, Serialize};
+
+/// A plane angle. Stored in radians; constructed and read only through named units.
+#[derive(Clone, Copy, Debug, Default, PartialEq, PartialOrd, Serialize, Deserialize)]
+pub struct Angle {
+    radians: f64,
+}
+
+impl Angle {
+    /// The zero angle.
+    pub const ZERO: Angle = Angle { radians: 0.0 };
+
+    /// An angle of `radians` radians.
+    #[inline]
+    pub const fn from_radians(radians: f64) -> Self {
+        Self { radians }
+    }
+
+    /// An angle of `degrees` degrees (converted as `degrees · π/180`, as MATLAB's `deg2rad`).
+    #[inline]
+    pub fn from_degrees(degrees: f64) -> Self {
+        Self {
+            radians: degrees.to_radians(),
+        }
+    }
+
+    /// The angle in radians.
+    #[inline]
+    pub const fn radians(self) -> f64 {
+        self.radians
+    }
+
+    /// The angle in degrees.
+    #[inline]
+    pub fn degrees(self) -> f64 {
+        self.radians.to_degrees()
+    }
+
+    /// Sine and cosine of the angle.
+    #[inline]
+    pub fn sin_cos(self) -> (f64, f64) {
+        self.radians.sin_cos()
+    }
+
+    /// Whether the angle is a finite number.
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.radians.is_finite()
+    }
+}
+
+impl Add for Angle {
+    type Output = Angle;
+    fn add(self, rhs: Angle) -> Angle {
+        Angle::from_radians(self.radians + rhs.radians)
+    }
+}
+
+impl Sub for Angle {
+    type Output = Angle;
+    fn sub(self, rhs: Angle) -> Angle {
+        Angle::from_radians(self.radians - rhs.radians)
+    }
+}
+
+impl Neg for Angle {
+    type Output = Angle;
+    fn neg(self) -> Angle {
+        Angle::from_radians(-self.radians)
+    }
+}
+
+impl Mul<f64> for Angle {
+    type Output = Angle;
+    fn mul(self, rhs: f64) -> Angle {
+        Angle::from_radians(self.radians * rhs)
+    }
+}
+
+impl fmt::Display for Angle {
+    /// Angles are shown to people in degrees, with the unit.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match f.precision() {
+            Some(p) => write!(f, "{:.*}°", p, self.degrees()),
+            None => write!(f, "{}°", self.degrees()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn degrees_and_radians_agree_on_known_values() {
+        assert_eq!(Angle::from_degrees(180.0).radians(), PI);
+        assert_eq!(Angle::from_degrees(90.0).radians(), PI / 2.0);
+        // The seed's pitch phase is π/4; written as 45° in files it must be the same double.
+        assert_eq!(Angle::from_degrees(45.0).radians(), PI / 4.0);
+        assert_eq!(Angle::from_radians(PI).degrees(), 180.0);
+    }
+
+    #[test]
+    fn arithmetic_keeps_units() {
+        let a = Angle::from_degrees(30.0) + Angle::from_degrees(60.0);
+        assert!((a.degrees() - 90.0).abs() < 1e-12);
+        assert!(((-a).degrees() + 90.0).abs() < 1e-12);
+        assert!(((a * 2.0).degrees() - 180.0).abs() < 1e-12);
+        assert_eq!(format!("{:.1}", Angle::from_degrees(12.5)), "12.5°");
+    }
+}

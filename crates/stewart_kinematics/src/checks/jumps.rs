@@ -1,0 +1,120 @@
+//! Discontinuities in leg length between consecutive samples.
+//!
+//! A smooth motion sampled finely changes each leg by about the same amount from one
+//! step to the next. A step is a jump when it is more than `jump_ratio` times the
+//! median of the (up to eight) steps around it and more than `jump_floor`. The median
+//! keeps a one-sample spike (a jump up and straight back down) from hiding itself.
+
+use crate::checks::{CheckSettings, Finding, FindingKind};
+
+/// Steps on each side compared with a step.
+const NEIGHBOURS: usize = 4;
+
+/// One finding per leg that jumps, with the first and last jump and the largest.
+pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> Vec<Finding> {
+    let n = lengths.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    let mut findings = Vec::new();
+    let mut steps = vec![0.0; n - 1];
+    for leg in 0..6 {
+        for (k, s) in steps.iter_mut().enumerate() {
+            *s = (lengths[k + 1][leg] - lengths[k][leg]).abs();
+        }
+        let mut found: Option<Finding> = None;
+        for k in 0..steps.len() {
+            let step = steps[k];
+            if step <= settings.jump_floor {
+                continue;
+            }
+            let typical = median_of_neighbours(&steps, k);
+            let limit = settings.jump_ratio * typical;
+            if step <= limit {
+                continue;
+            }
+            // The jump happens between samples k and k + 1; it is dated at k + 1.
+            let t = times[k + 1];
+            let f = found.get_or_insert(Finding {
+                kind: FindingKind::Jump,
+                leg: Some(leg + 1),
+                first_time: t,
+                last_time: t,
+                count: 0,
+                worst_time: t,
+                worst_value: step,
+                limit: limit.max(settings.jump_floor),
+                excess: step - limit.max(settings.jump_floor),
+            });
+            f.last_time = t;
+            f.count += 1;
+            if step > f.worst_value {
+                f.worst_value = step;
+                f.worst_time = t;
+                f.limit = limit.max(settings.jump_floor);
+                f.excess = step - f.limit;
+            }
+        }
+        findings.extend(found);
+    }
+    findings
+}
+
+fn median_of_neighbours(steps: &[f64], k: usize) -> f64 {
+    let mut around = [0.0; 2 * NEIGHBOURS];
+    let mut m = 0;
+    let lo = k.saturating_sub(NEIGHBOURS);
+    let hi = (k + NEIGHBOURS + 1).min(steps.len());
+    for (j, &s) in steps.iter().enumerate().take(hi).skip(lo) {
+        if j != k {
+            around[m] = s;
+            m += 1;
+        }
+    }
+    if m == 0 {
+        return 0.0;
+    }
+    let around = &mut around[..m];
+    around.sort_by(f64::total_cmp);
+    if m % 2 == 1 {
+        around[m / 2]
+    } else {
+        0.5 * (around[m / 2 - 1] + around[m / 2])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn smooth(n: usize) -> (Vec<f64>, Vec<[f64; 6]>) {
+        let times: Vec<f64> = (0..n).map(|k| k as f64 * 0.01).collect();
+        let lengths = times
+            .iter()
+            .map(|&t| std::array::from_fn(|i| 1.0 + 0.1 * (2.0 * t + i as f64).sin()))
+            .collect();
+        (times, lengths)
+    }
+
+    #[test]
+    fn smooth_motion_has_no_jumps_even_at_turning_points() {
+        let (times, lengths) = smooth(2000);
+        assert!(check(&times, &lengths, &CheckSettings::default()).is_empty());
+    }
+
+    #[test]
+    fn a_step_and_a_spike_are_found_and_dated() {
+        let (times, mut lengths) = smooth(500);
+        // Leg 2 steps up by 5 cm from sample 200 on.
+        for l in lengths.iter_mut().skip(200) {
+            l[1] += 0.05;
+        }
+        // Leg 6 has one wrong sample at 300 (a spike: up then straight down).
+        lengths[300][5] += 0.02;
+        let f = check(&times, &lengths, &CheckSettings::default());
+        assert_eq!(f.len(), 2);
+        assert_eq!((f[0].leg, f[0].count, f[0].first_time), (Some(2), 1, times[200]));
+        assert!((f[0].worst_value - 0.05).abs() < 2e-3);
+        assert_eq!((f[1].leg, f[1].count, f[1].first_time, f[1].last_time), (Some(6), 2, times[300], times[301]));
+    }
+}

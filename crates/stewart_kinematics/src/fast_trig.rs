@@ -1,0 +1,93 @@
+//! A branch-light `sin_cos` for the batch inverse-kinematics hot loop.
+//!
+//! The C library computes `sin` and `cos` with two calls, each with its own argument
+//! reduction and branches; that alone would eat most of the batch budget. This computes
+//! both from one reduction with straight-line code that the compiler can inline and
+//! schedule. Method (fdlibm's, re-derived here):
+//!
+//! 1. Reduce: `j = round(x · 2/π)`, `y = x − j·π/2`, with π/2 split in three parts
+//!    (Cody–Waite) so that the subtraction is exact for `|j| < 2²⁰`.
+//! 2. On `|y| ≤ π/4`, evaluate the minimax polynomials of fdlibm's `__kernel_sin` and
+//!    `__kernel_cos` (degree 13 and 14, error below one unit in the last place).
+//! 3. Swap and negate by the quadrant `j mod 4`.
+//!
+//! Arguments beyond [`REDUCTION_LIMIT`] (or not finite) go to the standard library.
+//! A test compares it with the standard library over a wide range.
+
+use std::f64::consts::FRAC_2_PI;
+
+/// Beyond this magnitude (radians) the three-part reduction loses exactness.
+pub const REDUCTION_LIMIT: f64 = 1.0e5;
+
+// π/2 in three parts: the first two have 33 significant bits, so j·PIO2_1 and
+// j·PIO2_2 are exact for |j| < 2^20.
+const PIO2_1: f64 = 1.570_796_326_734_125_614_17;
+const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11;
+const PIO2_3: f64 = 2.022_266_248_795_950_631_54e-21;
+
+// Minimax coefficients of sin(y) − y = y³·S(y²) on [−π/4, π/4].
+const S1: f64 = -1.666_666_666_666_663_243_48e-1;
+const S2: f64 = 8.333_333_333_322_489_461_24e-3;
+const S3: f64 = -1.984_126_982_985_794_931_34e-4;
+const S4: f64 = 2.755_731_370_707_006_767_89e-6;
+const S5: f64 = -2.505_076_025_340_686_341_95e-8;
+const S6: f64 = 1.589_690_995_211_550_102_21e-10;
+
+// Minimax coefficients of cos(y) − 1 + y²/2 = y⁴·C(y²) on [−π/4, π/4].
+const C1: f64 = 4.166_666_666_666_660_190_37e-2;
+const C2: f64 = -1.388_888_888_887_410_957_49e-3;
+const C3: f64 = 2.480_158_728_947_672_941_78e-5;
+const C4: f64 = -2.755_731_435_139_066_330_35e-7;
+const C5: f64 = 2.087_572_321_298_174_827_90e-9;
+const C6: f64 = -1.135_964_755_778_819_482_65e-11;
+
+/// `(sin x, cos x)` for a finite `x`, accurate to about one unit in the last place.
+#[inline(always)]
+pub fn sin_cos(x: f64) -> (f64, f64) {
+    if !(x.abs() <= REDUCTION_LIMIT) {
+        return x.sin_cos();
+    }
+    let j = (x * FRAC_2_PI).round();
+    let y = ((x - j * PIO2_1) - j * PIO2_2) - j * PIO2_3;
+    let z = y * y;
+    let s = y + y * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
+    let r = z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
+    let hz = 0.5 * z;
+    let w = 1.0 - hz;
+    let c = w + (((1.0 - w) - hz) + r);
+    // j fits in an i64 exactly since |j| ≤ 2/π · REDUCTION_LIMIT.
+    match (j as i64) & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn agrees_with_the_standard_library() {
+        let mut worst: f64 = 0.0;
+        let mut x = -2.0e4;
+        // Irregular stride so that many quadrants and reduced arguments are hit.
+        while x < 2.0e4 {
+            let (s, c) = sin_cos(x);
+            worst = worst.max((s - x.sin()).abs()).max((c - x.cos()).abs());
+            x += 0.137_931_034_482_758_6;
+        }
+        assert!(worst < 3e-16, "worst difference {worst:e}");
+    }
+
+    #[test]
+    fn exact_at_special_points_and_sensible_far_out() {
+        assert_eq!(sin_cos(0.0), (0.0, 1.0));
+        let (s, c) = sin_cos(std::f64::consts::FRAC_PI_2);
+        assert!((s - 1.0).abs() < 1e-16 && c.abs() < 1e-16);
+        let far = 3.0e7;
+        assert_eq!(sin_cos(far), far.sin_cos());
+        assert!(sin_cos(f64::NAN).0.is_nan());
+    }
+}

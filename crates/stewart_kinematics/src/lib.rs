@@ -1,0 +1,37 @@
+//! Kinematics of the six-degree-of-freedom Gough–Stewart platform.
+//!
+//! Pure math on `nalgebra` (f64): no GPU, window or UI. The model follows the seed
+//! article (see `SPEC.md`): base joints `b_i` on a circle of radius `r_b` in the base
+//! plane, platform joints `a_i` on a circle of radius `r_p` in the platform plane,
+//! pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment from
+//! `b_i` to `q_i = p + R a_i`.
+//!
+//! - [`angle`]: angles whose unit is carried by the type;
+//! - [`geometry`], [`layout`]: the platform and its named joint layouts;
+//! - [`pose`], [`inverse`], [`batch`]: poses and inverse kinematics, one or millions;
+//! - [`trajectory`]: motions over time and their sampling;
+//! - [`checks`]: rigid-body, stroke and jump checks over a motion;
+//! - [`scenario`]: scenario files (TOML) and the shipped presets;
+//! - [`table`]: numeric CSV tables with located errors.
+
+pub mod angle;
+pub mod batch;
+pub mod checks;
+mod fast_trig;
+pub mod geometry;
+pub mod inverse;
+pub mod layout;
+pub mod pose;
+pub mod scenario;
+pub mod table;
+pub mod trajectory;
+
+pub use angle::Angle;
+pub use batch::BatchSolver;
+pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};
+pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
+pub use inverse::LegSolution;
+pub use layout::Layout;
+pub use pose::Pose;
+pub use scenario::{Scenario, ScenarioError};
+pub use trajectory::{Motion, Sampling, Samples, Trajectory};

@@ -1,0 +1,232 @@
+//! Trajectories: poses as a function of time, and their sampling.
+//!
+//! Time is always an argument; nothing here reads a clock.
+
+pub mod keyframes;
+pub mod pose_table;
+pub mod shapes;
+pub mod sinusoid;
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::pose::Pose;
+pub use keyframes::{Interpolation, Keyframe, KeyframeError, Keyframes};
+pub use pose_table::{POSE_COLUMNS, PoseTable};
+pub use shapes::{Circle, FigureEight, Helix, Sway};
+pub use sinusoid::{Channel, Sinusoid, Wave};
+
+/// A motion of the platform over time.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Trajectory {
+    /// Six independent sinusoids (the seed's motion).
+    Sinusoid(Sinusoid),
+    /// A level circle.
+    Circle(Circle),
+    /// A level figure-eight.
+    FigureEight(FigureEight),
+    /// A rising helix.
+    Helix(Helix),
+    /// A circle banking into the turn.
+    Sway(Sway),
+    /// Interpolated keyframes (also what an imported pose table becomes).
+    Keyframes(Keyframes),
+}
+
+impl Trajectory {
+    /// Pose at time `t` (seconds).
+    pub fn pose_at(&self, t: f64) -> Pose {
+        match self {
+            Trajectory::Sinusoid(s) => s.pose_at(t),
+            Trajectory::Circle(s) => s.pose_at(t),
+            Trajectory::FigureEight(s) => s.pose_at(t),
+            Trajectory::Helix(s) => s.pose_at(t),
+            Trajectory::Sway(s) => s.pose_at(t),
+            Trajectory::Keyframes(s) => s.pose_at(t),
+        }
+    }
+
+    /// The name of the kind, as written in scenario files.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Trajectory::Sinusoid(_) => "sinusoid",
+            Trajectory::Circle(_) => "circle",
+            Trajectory::FigureEight(_) => "figure8",
+            Trajectory::Helix(_) => "helix",
+            Trajectory::Sway(_) => "sway",
+            Trajectory::Keyframes(_) => "keyframes",
+        }
+    }
+}
+
+/// Why a sampling was refused.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SamplingError {
+    /// Duration not a positive finite number.
+    #[error("`duration_s` must be a positive finite number of seconds, got {0}")]
+    Duration(f64),
+    /// Fewer than two samples.
+    #[error("`samples` must be at least 2, got {0}")]
+    TooFewSamples(u64),
+    /// Start time not finite.
+    #[error("`start_s` must be a finite number of seconds, got {0}")]
+    Start(f64),
+}
+
+/// Evenly spaced sample times over `[start, start + duration]`, both ends included
+/// (MATLAB's `linspace(start, start + duration, samples)`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Sampling {
+    start: f64,
+    duration: f64,
+    samples: usize,
+}
+
+/// Most samples a sampling may ask for (about 80 MB of poses); protects against typos.
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+impl Sampling {
+    /// The seed's sampling: 1001 samples over [0, 10] s.
+    pub const SEED: Sampling = Sampling {
+        start: 0.0,
+        duration: 10.0,
+        samples: 1001,
+    };
+
+    /// `samples` times from 0 to `duration` seconds.
+    pub fn new(duration: f64, samples: u64) -> Result<Self, SamplingError> {
+        Self::with_start(0.0, duration, samples)
+    }
+
+    /// `samples` times from `start` to `start + duration` seconds.
+    pub fn with_start(start: f64, duration: f64, samples: u64) -> Result<Self, SamplingError> {
+        if !start.is_finite() {
+            return Err(SamplingError::Start(start));
+        }
+        if !(duration.is_finite() && duration > 0.0) {
+            return Err(SamplingError::Duration(duration));
+        }
+        if !(2..=MAX_SAMPLES as u64).contains(&samples) {
+            return Err(SamplingError::TooFewSamples(samples));
+        }
+        Ok(Self {
+            start,
+            duration,
+            samples: samples as usize,
+        })
+    }
+
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.samples
+    }
+
+    /// Always false: a sampling has at least two samples.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Duration, seconds.
+    pub fn duration(&self) -> f64 {
+        self.duration
+    }
+
+    /// First time, seconds.
+    pub fn start(&self) -> f64 {
+        self.start
+    }
+
+    /// Time between samples, seconds.
+    pub fn step(&self) -> f64 {
+        self.duration / (self.samples - 1) as f64
+    }
+
+    /// Time of sample `k` (0-based): `start + k·duration/(n − 1)`, computed so that
+    /// `k·duration` is divided last (sample 1 of the seed is exactly the double 0.01).
+    pub fn time(&self, k: usize) -> f64 {
+        self.start + (k as f64 * self.duration) / (self.samples - 1) as f64
+    }
+
+    /// All sample times.
+    pub fn times(&self) -> impl ExactSizeIterator<Item = f64> + '_ {
+        (0..self.samples).map(|k| self.time(k))
+    }
+}
+
+/// A trajectory together with how it is sampled.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Motion {
+    /// The trajectory.
+    pub trajectory: Trajectory,
+    /// Its sample times.
+    pub sampling: Sampling,
+}
+
+impl Motion {
+    /// The seed's motion for home height `h0`.
+    pub fn seed(h0: f64) -> Self {
+        Self {
+            trajectory: Trajectory::Sinusoid(Sinusoid::seed(h0)),
+            sampling: Sampling::SEED,
+        }
+    }
+
+    /// Sample times and poses.
+    pub fn sample(&self) -> Samples {
+        let times: Vec<f64> = self.sampling.times().collect();
+        let poses = times.iter().map(|&t| self.trajectory.pose_at(t)).collect();
+        Samples { times, poses }
+    }
+}
+
+/// Poses at times: a sampled motion or an imported table.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Samples {
+    /// Times, seconds.
+    pub times: Vec<f64>,
+    /// Pose at each time.
+    pub poses: Vec<Pose>,
+}
+
+impl Samples {
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.poses.len()
+    }
+
+    /// Whether there are no samples.
+    pub fn is_empty(&self) -> bool {
+        self.poses.is_empty()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed_sampling_is_linspace_0_10_1001() {
+        let s = Sampling::SEED;
+        let t: Vec<f64> = s.times().collect();
+        assert_eq!(t.len(), 1001);
+        assert_eq!(t[0], 0.0);
+        assert_eq!(t[1], 0.01);
+        assert_eq!(t[500], 5.0);
+        assert_eq!(t[1000], 10.0);
+        // Every time is the double nearest to k/100.
+        for (k, &tk) in t.iter().enumerate() {
+            assert_eq!(tk, k as f64 / 100.0);
+        }
+    }
+
+    #[test]
+    fn sampling_refuses_nonsense() {
+        assert_eq!(Sampling::new(0.0, 10), Err(SamplingError::Duration(0.0)));
+        assert!(Sampling::new(f64::NAN, 10).is_err());
+        assert_eq!(Sampling::new(1.0, 1), Err(SamplingError::TooFewSamples(1)));
+        assert!(Sampling::with_start(f64::INFINITY, 1.0, 10).is_err());
+        let s = Sampling::with_start(2.0, 4.0, 5).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(s.times().collect::<Vec<_>>(), vec![2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(s.step(), 1.0);
+    }
+}

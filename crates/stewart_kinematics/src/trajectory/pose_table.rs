@@ -1,0 +1,117 @@
+//! Poses from a CSV table with columns `x,y,z,roll_deg,pitch_deg,yaw_deg` (metres and degrees),
+//! and an optional `t` column (seconds).
+
+use std::io::Read;
+
+use crate::pose::Pose;
+use crate::table::{NumericTable, TableError};
+use crate::trajectory::keyframes::{Interpolation, Keyframe, Keyframes};
+
+/// The pose columns, in order, with their units in the names.
+pub const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
+
+/// Poses read from a table, with the line each came from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PoseTable {
+    /// The `t` column, when the table has one.
+    pub times: Option<Vec<f64>>,
+    /// The poses, in file order.
+    pub poses: Vec<Pose>,
+    /// File line of each pose, from 1.
+    pub lines: Vec<u64>,
+}
+
+impl PoseTable {
+    /// Read a pose table; `file` names the source in error messages.
+    pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
+        let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
+        let t_index = table.index("t");
+        let poses = table
+            .rows
+            .iter()
+            .map(|r| {
+                let v = &r.values;
+                Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]])
+            })
+            .collect();
+        let times = t_index.map(|i| table.rows.iter().map(|r| r.values[i]).collect());
+        let lines = table.rows.iter().map(|r| r.line).collect();
+        Ok(Self {
+            times,
+            poses,
+            lines,
+        })
+    }
+
+    /// The table as a keyframed motion; it must have a `t` column with increasing times.
+    pub fn to_keyframes(
+        &self,
+        file: &str,
+        interpolation: Interpolation,
+    ) -> Result<Keyframes, TableError> {
+        let Some(times) = &self.times else {
+            return Err(TableError::MissingColumn {
+                file: file.to_owned(),
+                line: 1,
+                column: "t".to_owned(),
+                expected: format!("t,{}", POSE_COLUMNS.join(",")),
+            });
+        };
+        for i in 1..times.len() {
+            if times[i] <= times[i - 1] {
+                return Err(TableError::BadValue {
+                    file: file.to_owned(),
+                    line: self.lines[i],
+                    column: "t".to_owned(),
+                    message: format!(
+                        "time {} s is not after the previous row's {} s; times must increase",
+                        times[i],
+                        times[i - 1]
+                    ),
+                });
+            }
+        }
+        let keys = times
+            .iter()
+            .zip(&self.poses)
+            .map(|(&t, &pose)| Keyframe { t, pose })
+            .collect();
+        // Times increase and values are finite (checked above and by the reader).
+        Keyframes::new(keys, interpolation).map_err(|e| TableError::BadValue {
+            file: file.to_owned(),
+            line: 1,
+            column: "t".to_owned(),
+            message: e.to_string(),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_poses_in_degrees_and_builds_keyframes() {
+        let text = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n1,0.1,0,0.8,0,0,90\n";
+        let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(table.times, Some(vec![0.0, 1.0]));
+        assert_eq!(table.poses[1].yaw.radians(), std::f64::consts::FRAC_PI_2);
+        assert_eq!(table.lines, vec![2, 3]);
+        let k = table.to_keyframes("p.csv", Interpolation::Linear).unwrap_or_else(|e| panic!("{e}"));
+        assert!((k.pose_at(0.5).position.x - 0.05).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_trajectory_table_needs_increasing_times() {
+        let text = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n0,0,0,0.8,0,0,0\n";
+        let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
+        let e = table.to_keyframes("p.csv", Interpolation::Linear).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "p.csv, line 3, column `t`: time 0 s is not after the previous row's 0 s; times must increase"
+        );
+        let text = "x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0.8,0,0,0\n";
+        let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
+        assert!(table.to_keyframes("p.csv", Interpolation::Linear).unwrap_err().to_string().contains("no `t` column"));
+    }
+}
