@@ -1,1 +1,82 @@
+//! End-to-end tests of the `stewart` binary: run it as a user would and check what it
+//! prints, writes and returns.
 
+mod check;
+mod solve;
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+/// Run `stewart` with `args` (standard input empty unless given).
+pub fn stewart(args: &[&str]) -> Output {
+    stewart_with_input(args, b"")
+}
+
+/// Run `stewart` with `args`, feeding `input` on standard input.
+pub fn stewart_with_input(args: &[&str], input: &[u8]) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("cannot start stewart: {e}"));
+    if let Some(mut stdin) = child.stdin.take() {
+        stdin
+            .write_all(input)
+            .unwrap_or_else(|e| panic!("stdin: {e}"));
+    }
+    child
+        .wait_with_output()
+        .unwrap_or_else(|e| panic!("stewart did not finish: {e}"))
+}
+
+/// Standard output as text.
+pub fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Standard error as text.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Write `text` to `dir/name` and return the path as a string.
+pub fn write(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap_or_else(|e| panic!("{e}"));
+    path.display().to_string()
+}
+
+/// A fresh temporary folder.
+pub fn tempdir() -> tempfile::TempDir {
+    tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Parse a CSV text into its header and numeric rows.
+pub fn parse_csv(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .unwrap_or("")
+        .split(',')
+        .map(str::to_owned)
+        .collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|c| c.parse().unwrap_or_else(|e| panic!("{c}: {e}")))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn no_argument_says_what_exists_and_succeeds() {
+    let o = stewart(&[]);
+    assert!(o.status.success());
+    assert!(stdout(&o).contains("solve"));
+    assert!(stdout(&o).contains("check"));
+}

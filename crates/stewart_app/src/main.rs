@@ -1,1 +1,31 @@
-fn main(){}
+//! `stewart`: the Stewart-platform studio's one binary.
+//!
+//! Exit status: 0 success (and, for `check`, nothing found), 1 a check found a
+//! problem, 2 unusable input or output (one sentence on standard error says which).
+
+mod cli;
+mod commands;
+mod output;
+mod source;
+
+use std::process::ExitCode;
+
+use clap::Parser;
+
+use crate::cli::{Cli, Command};
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Solve(args)) => commands::solve::run(&args),
+        Some(Command::Check(args)) => commands::check::run(&args),
+        None => commands::no_command(),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}

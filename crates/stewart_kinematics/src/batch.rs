@@ -60,15 +60,13 @@ impl BatchSolver {
         let r21 = cp * sr;
         let r22 = cp * cr;
         let p = &pose.position;
-        let mut out = [0.0; 6];
-        for i in 0..6 {
+        std::array::from_fn(|i| {
             let (ax, ay, az) = (self.ax[i], self.ay[i], self.az[i]);
             let lx = p.x + self.dx[i] + (r00 * ax + r01 * ay + r02 * az);
             let ly = p.y + self.dy[i] + (r10 * ax + r11 * ay + r12 * az);
             let lz = p.z + self.dz[i] + (r20 * ax + r21 * ay + r22 * az);
-            out[i] = (lx * lx + ly * ly + lz * lz).sqrt();
-        }
-        out
+            (lx * lx + ly * ly + lz * lz).sqrt()
+        })
     }
 
     /// Leg lengths of every pose into `out` on the calling thread.
@@ -121,8 +119,16 @@ mod tests {
             .map(|k| {
                 let t = k as f64;
                 Pose::from_xyz_rpy_deg(
-                    [0.3 * (0.37 * t).sin(), 0.3 * (0.23 * t).cos(), 0.7 + 0.2 * (0.11 * t).sin()],
-                    [170.0 * (0.05 * t).sin(), 80.0 * (0.07 * t).cos(), 359.0 * (0.013 * t).sin()],
+                    [
+                        0.3 * (0.37 * t).sin(),
+                        0.3 * (0.23 * t).cos(),
+                        0.7 + 0.2 * (0.11 * t).sin(),
+                    ],
+                    [
+                        170.0 * (0.05 * t).sin(),
+                        80.0 * (0.07 * t).cos(),
+                        359.0 * (0.013 * t).sin(),
+                    ],
                 )
             })
             .collect();

@@ -7,7 +7,8 @@
 //!
 //! 1. Reduce: `j = round(x · 2/π)`, `y = x − j·π/2`, with π/2 split in three parts
 //!    (Cody–Waite) so that the subtraction is exact for `|j| < 2²⁰`.
-//! 2. On `|y| ≤ π/4`, evaluate the minimax polynomials of fdlibm's `__kernel_sin` and
+//! 2. On `|y| ≤ π/4`, evaluate the minimax polynomials (coefficients are fdlibm's,
+//!    written here as the shortest decimals of the same doubles) of fdlibm's `__kernel_sin` and
 //!    `__kernel_cos` (degree 13 and 14, error below one unit in the last place).
 //! 3. Swap and negate by the quadrant `j mod 4`.
 //!
@@ -17,34 +18,35 @@
 use std::f64::consts::FRAC_2_PI;
 
 /// Beyond this magnitude (radians) the three-part reduction loses exactness.
-pub const REDUCTION_LIMIT: f64 = 1.0e5;
+pub const REDUCTION_LIMIT: f64 = 100000.0;
 
 // π/2 in three parts: the first two have 33 significant bits, so j·PIO2_1 and
 // j·PIO2_2 are exact for |j| < 2^20.
-const PIO2_1: f64 = 1.570_796_326_734_125_614_17;
-const PIO2_2: f64 = 6.077_100_506_303_965_976_60e-11;
-const PIO2_3: f64 = 2.022_266_248_795_950_631_54e-21;
+const PIO2_1: f64 = 1.5707963267341256;
+const PIO2_2: f64 = 6.077100506303966e-11;
+const PIO2_3: f64 = 2.0222662487959506e-21;
 
 // Minimax coefficients of sin(y) − y = y³·S(y²) on [−π/4, π/4].
-const S1: f64 = -1.666_666_666_666_663_243_48e-1;
-const S2: f64 = 8.333_333_333_322_489_461_24e-3;
-const S3: f64 = -1.984_126_982_985_794_931_34e-4;
-const S4: f64 = 2.755_731_370_707_006_767_89e-6;
-const S5: f64 = -2.505_076_025_340_686_341_95e-8;
-const S6: f64 = 1.589_690_995_211_550_102_21e-10;
+const S1: f64 = -0.16666666666666632;
+const S2: f64 = 0.00833333333332249;
+const S3: f64 = -0.0001984126982985795;
+const S4: f64 = 2.7557313707070068e-06;
+const S5: f64 = -2.5050760253406863e-08;
+const S6: f64 = 1.58969099521155e-10;
 
 // Minimax coefficients of cos(y) − 1 + y²/2 = y⁴·C(y²) on [−π/4, π/4].
-const C1: f64 = 4.166_666_666_666_660_190_37e-2;
-const C2: f64 = -1.388_888_888_887_410_957_49e-3;
-const C3: f64 = 2.480_158_728_947_672_941_78e-5;
-const C4: f64 = -2.755_731_435_139_066_330_35e-7;
-const C5: f64 = 2.087_572_321_298_174_827_90e-9;
-const C6: f64 = -1.135_964_755_778_819_482_65e-11;
+const C1: f64 = 0.0416666666666666;
+const C2: f64 = -0.001388888888887411;
+const C3: f64 = 2.480158728947673e-05;
+const C4: f64 = -2.7557314351390663e-07;
+const C5: f64 = 2.087572321298175e-09;
+const C6: f64 = -1.1359647557788195e-11;
 
 /// `(sin x, cos x)` for a finite `x`, accurate to about one unit in the last place.
 #[inline(always)]
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    if !(x.abs() <= REDUCTION_LIMIT) {
+    // Also taken by NaN, for which the comparison is false.
+    if x.abs() > REDUCTION_LIMIT || x.is_nan() {
         return x.sin_cos();
     }
     let j = (x * FRAC_2_PI).round();

@@ -175,7 +175,11 @@ impl Geometry {
         check_positive("platform_radius", params.platform_radius)?;
         check_positive("home_height", params.home_height)?;
         check_angles(Plate::Base, "base_angles_deg", &params.base_angles)?;
-        check_angles(Plate::Platform, "platform_angles_deg", &params.platform_angles)?;
+        check_angles(
+            Plate::Platform,
+            "platform_angles_deg",
+            &params.platform_angles,
+        )?;
         if let Some(min) = params.stroke.min {
             check_positive("leg_min", min)?;
         }
@@ -272,7 +276,9 @@ fn check_angles(plate: Plate, field: &str, angles: &[Angle; 6]) -> Result<(), Ge
     }
     for i in 0..6 {
         for j in i + 1..6 {
-            let d = (angles[i] - angles[j]).radians().rem_euclid(std::f64::consts::TAU);
+            let d = (angles[i] - angles[j])
+                .radians()
+                .rem_euclid(std::f64::consts::TAU);
             if d < SAME_JOINT_ANGLE || std::f64::consts::TAU - d < SAME_JOINT_ANGLE {
                 return Err(GeometryError::DuplicateJoint {
                     plate,
@@ -322,20 +328,38 @@ mod tests {
         p.platform_angles[4] = Angle::from_degrees(30.0 + 360.0);
         assert!(matches!(
             Geometry::new(p),
-            Err(GeometryError::DuplicateJoint { plate: Plate::Platform, first: 1, second: 5, .. })
+            Err(GeometryError::DuplicateJoint {
+                plate: Plate::Platform,
+                first: 1,
+                second: 5,
+                ..
+            })
         ));
 
         let mut p = GeometryParams::seed();
         p.stroke = StrokeLimits::new(1.2, 0.9);
-        assert!(matches!(Geometry::new(p), Err(GeometryError::StrokeOrder { .. })));
+        assert!(matches!(
+            Geometry::new(p),
+            Err(GeometryError::StrokeOrder { .. })
+        ));
 
         let mut p = GeometryParams::seed();
         p.pivot.z = f64::INFINITY;
-        assert!(Geometry::new(p).unwrap_err().to_string().contains("pivot.z"));
+        assert!(
+            Geometry::new(p)
+                .unwrap_err()
+                .to_string()
+                .contains("pivot.z")
+        );
 
         let mut p = GeometryParams::seed();
         p.base_angles[2] = Angle::from_degrees(f64::NAN);
-        assert!(Geometry::new(p).unwrap_err().to_string().contains("base_angles_deg[2]"));
+        assert!(
+            Geometry::new(p)
+                .unwrap_err()
+                .to_string()
+                .contains("base_angles_deg[2]")
+        );
     }
 
     #[test]

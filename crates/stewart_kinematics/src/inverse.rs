@@ -145,7 +145,12 @@ mod tests {
         params.pivot = Vector3::new(0.1, -0.05, 0.4);
         let g = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
         let pose = Pose::from_xyz_rpy_deg([0.02, 0.03, 0.8], [7.0, -4.0, 12.0]);
-        let level = Pose { roll: Angle::ZERO, pitch: Angle::ZERO, yaw: Angle::ZERO, ..pose };
+        let level = Pose {
+            roll: Angle::ZERO,
+            pitch: Angle::ZERO,
+            yaw: Angle::ZERO,
+            ..pose
+        };
         // The pivot point, fixed to the platform, is at the same place rotated or not.
         let pivot_in_base = |p: &Pose| g.platform_centre(p) + p.rotation() * g.pivot();
         assert!((pivot_in_base(&pose) - pivot_in_base(&level)).norm() < 1e-15);

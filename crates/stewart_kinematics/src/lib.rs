@@ -34,4 +34,4 @@ pub use inverse::LegSolution;
 pub use layout::Layout;
 pub use pose::Pose;
 pub use scenario::{Scenario, ScenarioError};
-pub use trajectory::{Motion, Sampling, Samples, Trajectory};
+pub use trajectory::{Motion, Samples, Sampling, Trajectory};

@@ -46,7 +46,12 @@ impl Pose {
 
     /// The level pose at height `z` above the base centre.
     pub fn level_at(z: f64) -> Self {
-        Self::new(Vector3::new(0.0, 0.0, z), Angle::ZERO, Angle::ZERO, Angle::ZERO)
+        Self::new(
+            Vector3::new(0.0, 0.0, z),
+            Angle::ZERO,
+            Angle::ZERO,
+            Angle::ZERO,
+        )
     }
 
     /// The same orientation at another position.
@@ -61,7 +66,11 @@ impl Pose {
 
     /// `[roll, pitch, yaw]` in degrees.
     pub fn rpy_degrees(&self) -> [f64; 3] {
-        [self.roll.degrees(), self.pitch.degrees(), self.yaw.degrees()]
+        [
+            self.roll.degrees(),
+            self.pitch.degrees(),
+            self.yaw.degrees(),
+        ]
     }
 
     /// Whether every component is a finite number.

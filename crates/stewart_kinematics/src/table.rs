@@ -20,7 +20,9 @@ pub enum TableError {
         message: String,
     },
     /// A column the table must have is not in the header.
-    #[error("{file}, line {line}: the header has no `{column}` column (expected columns: {expected})")]
+    #[error(
+        "{file}, line {line}: the header has no `{column}` column (expected columns: {expected})"
+    )]
     MissingColumn {
         /// File name.
         file: String,
@@ -229,7 +231,10 @@ fn read_text(mut input: impl Read, file: &str) -> Result<String, TableError> {
         })?;
     String::from_utf8(bytes).map_err(|e| {
         let valid = e.utf8_error().valid_up_to();
-        let line = 1 + e.as_bytes()[..valid].iter().filter(|&&b| b == b'\n').count();
+        let line = 1 + e.as_bytes()[..valid]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
         TableError::Unreadable {
             file: file.to_owned(),
             message: format!("line {line} is not valid UTF-8 text"),
@@ -243,7 +248,13 @@ fn blank_comments(text: &str) -> String {
     text.split_inclusive('\n')
         .map(|line| {
             if line.trim_start().starts_with('#') {
-                if line.ends_with("\r\n") { "\r\n" } else if line.ends_with('\n') { "\n" } else { "" }
+                if line.ends_with("\r\n") {
+                    "\r\n"
+                } else if line.ends_with('\n') {
+                    "\n"
+                } else {
+                    ""
+                }
             } else {
                 line
             }
@@ -295,10 +306,23 @@ mod tests {
 
     #[test]
     fn reads_required_and_optional_columns_and_skips_others() {
-        let t = read("note, y ,x\n# a comment\nfoo,2,1\n\nbar,4,3\n").unwrap_or_else(|e| panic!("{e}"));
+        let t =
+            read("note, y ,x\n# a comment\nfoo,2,1\n\nbar,4,3\n").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(t.columns, ["x", "y"]);
-        assert_eq!(t.rows[0], Row { line: 3, values: vec![1.0, 2.0] });
-        assert_eq!(t.rows[1], Row { line: 5, values: vec![3.0, 4.0] });
+        assert_eq!(
+            t.rows[0],
+            Row {
+                line: 3,
+                values: vec![1.0, 2.0]
+            }
+        );
+        assert_eq!(
+            t.rows[1],
+            Row {
+                line: 5,
+                values: vec![3.0, 4.0]
+            }
+        );
         assert_eq!(t.index("t"), None);
         let t = read("t,x,y\n0.5,1,2\n").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(t.index("t"), Some(2));
@@ -312,13 +336,34 @@ mod tests {
             msg("x,z\n1,2\n"),
             "poses.csv, line 1: the header has no `y` column (expected columns: x,y)"
         );
-        assert_eq!(msg("x,y\n1,2\n1,abc\n"), "poses.csv, line 3, column `y`: `abc` is not a number");
-        assert_eq!(msg("x,y\n1,2\nNaN,1\n"), "poses.csv, line 3, column `x`: NaN is not a finite number");
-        assert_eq!(msg("x,y\n1,inf\n"), "poses.csv, line 2, column `y`: inf is not a finite number");
-        assert_eq!(msg("x,y\n1,2,3\n"), "poses.csv, line 2: 3 fields where the header has 2");
-        assert_eq!(msg("x,y\n"), "poses.csv: the table has a header but no data rows");
-        assert_eq!(msg("x,y,x\n1,2,3\n"), "poses.csv, line 1: the header names column `x` twice");
-        assert_eq!(msg("x,y\n1,\n"), "poses.csv, line 2, column `y`: `` is not a number");
+        assert_eq!(
+            msg("x,y\n1,2\n1,abc\n"),
+            "poses.csv, line 3, column `y`: `abc` is not a number"
+        );
+        assert_eq!(
+            msg("x,y\n1,2\nNaN,1\n"),
+            "poses.csv, line 3, column `x`: NaN is not a finite number"
+        );
+        assert_eq!(
+            msg("x,y\n1,inf\n"),
+            "poses.csv, line 2, column `y`: inf is not a finite number"
+        );
+        assert_eq!(
+            msg("x,y\n1,2,3\n"),
+            "poses.csv, line 2: 3 fields where the header has 2"
+        );
+        assert_eq!(
+            msg("x,y\n"),
+            "poses.csv: the table has a header but no data rows"
+        );
+        assert_eq!(
+            msg("x,y,x\n1,2,3\n"),
+            "poses.csv, line 1: the header names column `x` twice"
+        );
+        assert_eq!(
+            msg("x,y\n1,\n"),
+            "poses.csv, line 2, column `y`: `` is not a number"
+        );
         let bad_utf8: &[u8] = b"x,y\n1,2\n\xff,1\n";
         let e = NumericTable::read(bad_utf8, "poses.csv", &["x", "y"], &[]).unwrap_err();
         assert_eq!(e.to_string(), "poses.csv: line 3 is not valid UTF-8 text");

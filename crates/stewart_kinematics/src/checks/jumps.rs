@@ -19,8 +19,8 @@ pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> V
     let mut findings = Vec::new();
     let mut steps = vec![0.0; n - 1];
     for leg in 0..6 {
-        for (k, s) in steps.iter_mut().enumerate() {
-            *s = (lengths[k + 1][leg] - lengths[k][leg]).abs();
+        for (s, pair) in steps.iter_mut().zip(lengths.windows(2)) {
+            *s = (pair[1][leg] - pair[0][leg]).abs();
         }
         let mut found: Option<Finding> = None;
         for k in 0..steps.len() {
@@ -113,8 +113,14 @@ mod tests {
         lengths[300][5] += 0.02;
         let f = check(&times, &lengths, &CheckSettings::default());
         assert_eq!(f.len(), 2);
-        assert_eq!((f[0].leg, f[0].count, f[0].first_time), (Some(2), 1, times[200]));
+        assert_eq!(
+            (f[0].leg, f[0].count, f[0].first_time),
+            (Some(2), 1, times[200])
+        );
         assert!((f[0].worst_value - 0.05).abs() < 2e-3);
-        assert_eq!((f[1].leg, f[1].count, f[1].first_time, f[1].last_time), (Some(6), 2, times[300], times[301]));
+        assert_eq!(
+            (f[1].leg, f[1].count, f[1].first_time, f[1].last_time),
+            (Some(6), 2, times[300], times[301])
+        );
     }
 }

@@ -140,7 +140,11 @@ impl CheckReport {
 }
 
 /// Run every check over `samples` for `geometry`.
-pub fn check_motion(geometry: &Geometry, samples: &Samples, settings: &CheckSettings) -> CheckReport {
+pub fn check_motion(
+    geometry: &Geometry,
+    samples: &Samples,
+    settings: &CheckSettings,
+) -> CheckReport {
     let solutions: Vec<_> = samples.poses.iter().map(|p| geometry.inverse(p)).collect();
     let lengths: Vec<[f64; 6]> = solutions.iter().map(|s| s.lengths).collect();
     let mut leg_ranges = [[f64::INFINITY, f64::NEG_INFINITY]; 6];
@@ -150,8 +154,12 @@ pub fn check_motion(geometry: &Geometry, samples: &Samples, settings: &CheckSett
             leg_ranges[i][1] = leg_ranges[i][1].max(l[i]);
         }
     }
-    let (rigid_worst_deviation, mut findings) =
-        rigid::check(geometry, &samples.times, &solutions, settings.rigid_tolerance);
+    let (rigid_worst_deviation, mut findings) = rigid::check(
+        geometry,
+        &samples.times,
+        &solutions,
+        settings.rigid_tolerance,
+    );
     findings.extend(stroke::check(&geometry.stroke(), &samples.times, &lengths));
     findings.extend(jumps::check(&samples.times, &lengths, settings));
     CheckReport {

@@ -67,7 +67,12 @@ mod tests {
         let times = [0.0, 0.1, 0.2];
         let mut sols: Vec<_> = times
             .iter()
-            .map(|&t| g.inverse(&Pose::from_xyz_rpy_deg([t, 0.0, 0.8], [10.0 * t, 5.0, -3.0])))
+            .map(|&t| {
+                g.inverse(&Pose::from_xyz_rpy_deg(
+                    [t, 0.0, 0.8],
+                    [10.0 * t, 5.0, -3.0],
+                ))
+            })
             .collect();
         let (worst, findings) = check(&g, &times, &sols, 1e-9);
         assert!(worst < 1e-14 && findings.is_empty());

@@ -8,10 +8,24 @@ pub fn check(stroke: &StrokeLimits, times: &[f64], lengths: &[[f64; 6]]) -> Vec<
     let mut findings = Vec::new();
     for leg in 0..6 {
         if let Some(max) = stroke.max {
-            findings.extend(scan(FindingKind::StrokeMax, leg, max, times, lengths, |l| l - max));
+            findings.extend(scan(
+                FindingKind::StrokeMax,
+                leg,
+                max,
+                times,
+                lengths,
+                |l| l - max,
+            ));
         }
         if let Some(min) = stroke.min {
-            findings.extend(scan(FindingKind::StrokeMin, leg, min, times, lengths, |l| min - l));
+            findings.extend(scan(
+                FindingKind::StrokeMin,
+                leg,
+                min,
+                times,
+                lengths,
+                |l| min - l,
+            ));
         }
     }
     findings
@@ -67,10 +81,22 @@ mod tests {
         lengths[3][4] = 0.5;
         let f = check(&StrokeLimits::new(0.55, 1.3), &times, &lengths);
         assert_eq!(f.len(), 2);
-        assert_eq!((f[0].kind, f[0].leg, f[0].first_time, f[0].last_time, f[0].count), (FindingKind::StrokeMax, Some(3), 1.0, 2.0, 2));
+        assert_eq!(
+            (
+                f[0].kind,
+                f[0].leg,
+                f[0].first_time,
+                f[0].last_time,
+                f[0].count
+            ),
+            (FindingKind::StrokeMax, Some(3), 1.0, 2.0, 2)
+        );
         assert_eq!((f[0].worst_time, f[0].worst_value), (2.0, 1.40));
         assert!((f[0].excess - 0.10).abs() < 1e-15);
-        assert_eq!((f[1].kind, f[1].leg, f[1].first_time), (FindingKind::StrokeMin, Some(5), 3.0));
+        assert_eq!(
+            (f[1].kind, f[1].leg, f[1].first_time),
+            (FindingKind::StrokeMin, Some(5), 3.0)
+        );
         assert!((f[1].excess - 0.05).abs() < 1e-15);
         assert!(f[0].to_string().starts_with("leg L3 is longer than its maximum 1.3000 m from t = 1.000 s to t = 2.000 s (2 samples); worst 1.4000 m at t = 2.000 s, 100.0 mm over"));
         // No limits, no findings.

@@ -1,2 +1,111 @@
-//! x
-pub struct Scenario; pub struct ScenarioError;
+//! Scenario files: geometry, pivot, trajectory and check settings in readable TOML.
+//!
+//! ```toml
+//! name = "seed"
+//! [geometry]                       # required; exactly these keys
+//! base_radius = 1.0                # m
+//! platform_radius = 0.6            # m
+//! home_height = 0.8                # m
+//! base_angles_deg = [0, 60, 120, 180, 240, 300]
+//! platform_angles_deg = [30, 90, 150, 210, 270, 330]
+//! leg_min = 0.55                   # m, optional
+//! leg_max = 1.30                   # m, optional
+//! [pivot]                          # optional: rotation centre in the platform frame
+//! offset_m = [0.0, 0.0, 0.0]
+//! [trajectory]                     # optional: the seed's motion when absent
+//! kind = "sinusoid"                # sinusoid | circle | figure8 | helix | sway | keyframes | pose_table
+//! duration_s = 10.0
+//! samples = 1001
+//! [checks]                         # optional thresholds
+//! jump_ratio = 5.0
+//! ```
+//!
+//! See `assets/presets/` for a file of every trajectory kind and README.md for every key.
+
+mod build;
+mod error;
+mod file;
+pub mod presets;
+mod write;
+
+use std::path::Path;
+
+pub use error::{ScenarioError, ScenarioProblem};
+
+use crate::checks::CheckSettings;
+use crate::geometry::Geometry;
+use crate::trajectory::Motion;
+
+/// A platform, its motion and the check thresholds: everything a run needs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scenario {
+    /// Short name (a preset's name, or the file's).
+    pub name: String,
+    /// One line about it.
+    pub description: String,
+    /// The platform.
+    pub geometry: Geometry,
+    /// The motion and its sampling.
+    pub motion: Motion,
+    /// Thresholds of the checks.
+    pub checks: CheckSettings,
+}
+
+impl Scenario {
+    /// The seed article's scenario, built in code (the `seed` preset file says the same).
+    pub fn seed() -> Self {
+        let geometry = Geometry::seed();
+        Self {
+            name: "seed".to_owned(),
+            description: "The seed article's platform and motion.".to_owned(),
+            motion: Motion::seed(geometry.home_height()),
+            geometry,
+            checks: CheckSettings::default(),
+        }
+    }
+
+    /// Parse a scenario from TOML text. `file` names it in errors; a pose table's
+    /// relative path is resolved against `base_dir` (the current folder when `None`).
+    pub fn from_toml_str(
+        text: &str,
+        file: &str,
+        base_dir: Option<&Path>,
+    ) -> Result<Self, ScenarioError> {
+        build::parse(text, file, base_dir)
+    }
+
+    /// Load a scenario file.
+    pub fn load(path: &Path) -> Result<Self, ScenarioError> {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| ScenarioError {
+            file: name.clone(),
+            line: None,
+            column: None,
+            problem: Box::new(ScenarioProblem::Unreadable(e.to_string())),
+        })?;
+        Self::from_toml_str(&text, &name, path.parent())
+    }
+
+    /// A shipped preset by name.
+    pub fn preset(name: &str) -> Result<Self, ScenarioError> {
+        let text = presets::text(name).ok_or_else(|| ScenarioError {
+            file: format!("preset `{name}`"),
+            line: None,
+            column: None,
+            problem: Box::new(ScenarioProblem::UnknownPreset {
+                name: name.to_owned(),
+                known: presets::names().collect::<Vec<_>>().join(", "),
+            }),
+        })?;
+        Self::from_toml_str(text, &format!("preset `{name}`"), None)
+    }
+
+    /// The scenario as TOML text that [`Scenario::from_toml_str`] reads back to an equal
+    /// scenario. A pose table is written out as inline keyframes.
+    pub fn to_toml(&self) -> String {
+        write::to_toml(self)
+    }
+}
+
+#[cfg(test)]
+mod tests;

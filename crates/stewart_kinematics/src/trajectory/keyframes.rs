@@ -47,7 +47,9 @@ pub enum KeyframeError {
     #[error("a keyframed motion needs at least one key")]
     Empty,
     /// Times out of order.
-    #[error("key {index} is at t = {t} s, not after the previous key's {previous} s: times must increase")]
+    #[error(
+        "key {index} is at t = {t} s, not after the previous key's {previous} s: times must increase"
+    )]
     NotIncreasing {
         /// Key number, from 1.
         index: usize,
@@ -206,17 +208,32 @@ mod tests {
     use super::*;
 
     fn key(t: f64, x: f64, yaw_deg: f64) -> Keyframe {
-        Keyframe { t, pose: Pose::from_xyz_rpy_deg([x, 0.0, 0.8], [0.0, 0.0, yaw_deg]) }
+        Keyframe {
+            t,
+            pose: Pose::from_xyz_rpy_deg([x, 0.0, 0.8], [0.0, 0.0, yaw_deg]),
+        }
     }
 
     #[test]
     fn every_interpolation_passes_through_the_keys() {
-        let keys = vec![key(0.0, 0.0, 0.0), key(1.0, 0.1, 10.0), key(3.0, -0.1, 5.0), key(4.0, 0.0, 0.0)];
-        for interp in [Interpolation::Linear, Interpolation::Smoothstep, Interpolation::Cubic] {
+        let keys = vec![
+            key(0.0, 0.0, 0.0),
+            key(1.0, 0.1, 10.0),
+            key(3.0, -0.1, 5.0),
+            key(4.0, 0.0, 0.0),
+        ];
+        for interp in [
+            Interpolation::Linear,
+            Interpolation::Smoothstep,
+            Interpolation::Cubic,
+        ] {
             let k = Keyframes::new(keys.clone(), interp).unwrap_or_else(|e| panic!("{e}"));
             for key in &keys {
                 let p = k.pose_at(key.t);
-                assert!((p.position - key.pose.position).norm() < 1e-15, "{interp:?}");
+                assert!(
+                    (p.position - key.pose.position).norm() < 1e-15,
+                    "{interp:?}"
+                );
                 assert!((p.yaw - key.pose.yaw).radians().abs() < 1e-15);
             }
             // Held before the first and after the last key.
@@ -228,7 +245,10 @@ mod tests {
     #[test]
     fn cubic_spline_reproduces_a_straight_line_and_is_smooth() {
         // A natural spline through points on a line is that line.
-        let keys: Vec<_> = [0.0, 0.5, 2.0, 2.5, 4.0].iter().map(|&t| key(t, 0.1 * t, 0.0)).collect();
+        let keys: Vec<_> = [0.0, 0.5, 2.0, 2.5, 4.0]
+            .iter()
+            .map(|&t| key(t, 0.1 * t, 0.0))
+            .collect();
         let k = Keyframes::new(keys, Interpolation::Cubic).unwrap_or_else(|e| panic!("{e}"));
         for i in 0..=40 {
             let t = i as f64 * 0.1;
@@ -257,13 +277,21 @@ mod tests {
 
     #[test]
     fn bad_keys_are_refused_with_their_number() {
-        assert_eq!(Keyframes::new(vec![], Interpolation::Linear), Err(KeyframeError::Empty));
+        assert_eq!(
+            Keyframes::new(vec![], Interpolation::Linear),
+            Err(KeyframeError::Empty)
+        );
         let keys = vec![key(0.0, 0.0, 0.0), key(1.0, 0.0, 0.0), key(1.0, 0.0, 0.0)];
         assert_eq!(
-            Keyframes::new(keys, Interpolation::Linear).unwrap_err().to_string(),
+            Keyframes::new(keys, Interpolation::Linear)
+                .unwrap_err()
+                .to_string(),
             "key 3 is at t = 1 s, not after the previous key's 1 s: times must increase"
         );
         let keys = vec![key(0.0, f64::NAN, 0.0)];
-        assert_eq!(Keyframes::new(keys, Interpolation::Linear), Err(KeyframeError::NotFinite { index: 1 }));
+        assert_eq!(
+            Keyframes::new(keys, Interpolation::Linear),
+            Err(KeyframeError::NotFinite { index: 1 })
+        );
     }
 }

@@ -17,6 +17,8 @@ pub struct PoseTable {
     pub times: Option<Vec<f64>>,
     /// The poses, in file order.
     pub poses: Vec<Pose>,
+    /// The values as written: `x, y, z` (m), `roll, pitch, yaw` (degrees), in file order.
+    pub values: Vec<[f64; 6]>,
     /// File line of each pose, from 1.
     pub lines: Vec<u64>,
 }
@@ -34,11 +36,17 @@ impl PoseTable {
                 Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]])
             })
             .collect();
+        let values = table
+            .rows
+            .iter()
+            .map(|r| std::array::from_fn(|i| r.values[i]))
+            .collect();
         let times = t_index.map(|i| table.rows.iter().map(|r| r.values[i]).collect());
         let lines = table.rows.iter().map(|r| r.line).collect();
         Ok(Self {
             times,
             poses,
+            values,
             lines,
         })
     }
@@ -97,7 +105,9 @@ mod tests {
         assert_eq!(table.times, Some(vec![0.0, 1.0]));
         assert_eq!(table.poses[1].yaw.radians(), std::f64::consts::FRAC_PI_2);
         assert_eq!(table.lines, vec![2, 3]);
-        let k = table.to_keyframes("p.csv", Interpolation::Linear).unwrap_or_else(|e| panic!("{e}"));
+        let k = table
+            .to_keyframes("p.csv", Interpolation::Linear)
+            .unwrap_or_else(|e| panic!("{e}"));
         assert!((k.pose_at(0.5).position.x - 0.05).abs() < 1e-15);
     }
 
@@ -105,13 +115,21 @@ mod tests {
     fn a_trajectory_table_needs_increasing_times() {
         let text = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n0,0,0,0.8,0,0,0\n";
         let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
-        let e = table.to_keyframes("p.csv", Interpolation::Linear).unwrap_err();
+        let e = table
+            .to_keyframes("p.csv", Interpolation::Linear)
+            .unwrap_err();
         assert_eq!(
             e.to_string(),
             "p.csv, line 3, column `t`: time 0 s is not after the previous row's 0 s; times must increase"
         );
         let text = "x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0.8,0,0,0\n";
         let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
-        assert!(table.to_keyframes("p.csv", Interpolation::Linear).unwrap_err().to_string().contains("no `t` column"));
+        assert!(
+            table
+                .to_keyframes("p.csv", Interpolation::Linear)
+                .unwrap_err()
+                .to_string()
+                .contains("no `t` column")
+        );
     }
 }

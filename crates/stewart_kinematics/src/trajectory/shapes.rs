@@ -117,8 +117,18 @@ mod tests {
 
     #[test]
     fn circle_and_helix_stay_on_their_radius() {
-        let c = Circle { radius: 0.1, frequency_hz: 0.3, z: 0.8 };
-        let h = Helix { radius: 0.1, frequency_hz: 0.3, z_start: 0.7, z_end: 0.9, duration: 10.0 };
+        let c = Circle {
+            radius: 0.1,
+            frequency_hz: 0.3,
+            z: 0.8,
+        };
+        let h = Helix {
+            radius: 0.1,
+            frequency_hz: 0.3,
+            z_start: 0.7,
+            z_end: 0.9,
+            duration: 10.0,
+        };
         for k in 0..100 {
             let t = k as f64 * 0.1;
             for p in [c.pose_at(t), h.pose_at(t)] {
@@ -135,7 +145,12 @@ mod tests {
 
     #[test]
     fn figure_eight_crosses_itself_at_the_centre() {
-        let f = FigureEight { amplitude_x: 0.2, amplitude_y: 0.1, frequency_hz: 0.1, z: 0.8 };
+        let f = FigureEight {
+            amplitude_x: 0.2,
+            amplitude_y: 0.1,
+            frequency_hz: 0.1,
+            z: 0.8,
+        };
         // Half a period later x and y are both back at zero.
         let p = f.pose_at(5.0);
         assert!(p.position.xy().norm() < 1e-15);
@@ -146,7 +161,12 @@ mod tests {
 
     #[test]
     fn sway_banks_toward_the_centre() {
-        let s = Sway { radius: 0.1, frequency_hz: 0.2, tilt: Angle::from_degrees(5.0), z: 0.8 };
+        let s = Sway {
+            radius: 0.1,
+            frequency_hz: 0.2,
+            tilt: Angle::from_degrees(5.0),
+            z: 0.8,
+        };
         for k in 0..50 {
             let p = s.pose_at(k as f64 * 0.1);
             let normal = p.rotation() * Vector3::z();

@@ -1,0 +1,20 @@
+//! One module per subcommand.
+
+pub mod check;
+pub mod solve;
+
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::CommandFactory;
+
+/// `stewart` with no subcommand. The interactive viewer is a later milestone; until it
+/// exists, say so and show what the command line can do.
+pub fn no_command() -> Result<ExitCode> {
+    let mut cmd = crate::cli::Cli::command();
+    println!(
+        "The interactive viewer is not part of this build yet; the command line works without a display.\n"
+    );
+    cmd.print_help()?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,569 @@
+//! From parsed file structs to a validated [`Scenario`], locating every refusal.
+
+use std::ops::Range;
+use std::path::Path;
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::Scenario;
+use super::error::{ScenarioError, ScenarioProblem};
+use super::file::{
+    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LinearChannelFile, PivotFile,
+    ScenarioFile, TrajectoryFile, TrajectoryKind,
+};
+use crate::angle::Angle;
+use crate::checks::CheckSettings;
+use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
+use crate::pose::Pose;
+use crate::trajectory::{
+    Channel, Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Motion, PoseTable,
+    Sampling, Sinusoid, Sway, Trajectory,
+};
+
+/// Samples of a motion when the file does not say (the seed's count).
+const DEFAULT_SAMPLES: i64 = 1001;
+/// Duration of a motion when the file does not say (the seed's), seconds.
+const DEFAULT_DURATION: f64 = 10.0;
+
+/// The source text and name, to turn byte spans into located errors.
+struct Source<'a> {
+    text: &'a str,
+    file: &'a str,
+}
+
+impl Source<'_> {
+    fn err(
+        &self,
+        span: Option<Range<usize>>,
+        problem: impl Into<ScenarioProblem>,
+    ) -> ScenarioError {
+        ScenarioError::at(self.file, self.text, span, problem)
+    }
+
+    fn invalid(
+        &self,
+        span: Option<Range<usize>>,
+        field: &str,
+        reason: impl Into<String>,
+    ) -> ScenarioError {
+        self.err(
+            span,
+            ScenarioProblem::Invalid {
+                field: field.to_owned(),
+                reason: reason.into(),
+            },
+        )
+    }
+
+    /// A number that must be finite.
+    fn finite(&self, field: &str, v: &Spanned<f64>) -> Result<f64, ScenarioError> {
+        self.finite_at(field, *v.get_ref(), v.span())
+    }
+
+    fn finite_at(&self, field: &str, v: f64, span: Range<usize>) -> Result<f64, ScenarioError> {
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(self.invalid(
+                Some(span),
+                field,
+                format!("must be a finite number, got {v}"),
+            ))
+        }
+    }
+}
+
+pub(super) fn parse(
+    text: &str,
+    file: &str,
+    base_dir: Option<&Path>,
+) -> Result<Scenario, ScenarioError> {
+    let src = Source { text, file };
+    let parsed: ScenarioFile = toml::from_str(text).map_err(|e| {
+        src.err(
+            e.span(),
+            ScenarioProblem::Syntax(e.message().trim_end().to_owned()),
+        )
+    })?;
+    let geometry = build_geometry(&src, &parsed.geometry, parsed.pivot.as_ref())?;
+    let motion = match &parsed.trajectory {
+        Some(t) => build_motion(&src, t, &geometry, base_dir)?,
+        None => Motion::seed(geometry.home_height()),
+    };
+    let checks = build_checks(&src, parsed.checks.as_ref())?;
+    let name = parsed.name.unwrap_or_else(|| {
+        Path::new(file)
+            .file_stem()
+            .map_or_else(|| file.to_owned(), |s| s.to_string_lossy().into_owned())
+    });
+    Ok(Scenario {
+        name,
+        description: parsed.description.unwrap_or_default(),
+        geometry,
+        motion,
+        checks,
+    })
+}
+
+fn angles(src: &Source, field: &str, v: &Spanned<Vec<f64>>) -> Result<[Angle; 6], ScenarioError> {
+    let list = v.get_ref();
+    let array: [f64; 6] = list.as_slice().try_into().map_err(|_| {
+        src.invalid(
+            Some(v.span()),
+            field,
+            format!("must list 6 angles (one per leg), got {}", list.len()),
+        )
+    })?;
+    Ok(array.map(Angle::from_degrees))
+}
+
+fn build_geometry(
+    src: &Source,
+    g: &GeometryFile,
+    pivot: Option<&PivotFile>,
+) -> Result<Geometry, ScenarioError> {
+    let params = GeometryParams {
+        base_radius: *g.base_radius.get_ref(),
+        platform_radius: *g.platform_radius.get_ref(),
+        home_height: *g.home_height.get_ref(),
+        base_angles: angles(src, "base_angles_deg", &g.base_angles_deg)?,
+        platform_angles: angles(src, "platform_angles_deg", &g.platform_angles_deg)?,
+        stroke: StrokeLimits {
+            min: g.leg_min.as_ref().map(|v| *v.get_ref()),
+            max: g.leg_max.as_ref().map(|v| *v.get_ref()),
+        },
+        pivot: pivot.map_or_else(Vector3::zeros, |p| Vector3::from(*p.offset_m.get_ref())),
+    };
+    Geometry::new(params).map_err(|e| {
+        let span = geometry_error_span(g, pivot, &e);
+        src.err(span, e)
+    })
+}
+
+/// Where in the file the value a geometry error is about was written.
+fn geometry_error_span(
+    g: &GeometryFile,
+    pivot: Option<&PivotFile>,
+    e: &GeometryError,
+) -> Option<Range<usize>> {
+    let field = match e {
+        GeometryError::NotFinite { field, .. } | GeometryError::NotPositive { field, .. } => {
+            field.as_str()
+        }
+        GeometryError::DuplicateJoint {
+            plate: Plate::Base, ..
+        } => "base_angles_deg",
+        GeometryError::DuplicateJoint {
+            plate: Plate::Platform,
+            ..
+        } => "platform_angles_deg",
+        GeometryError::StrokeOrder { .. } => "leg_max",
+    };
+    let optional = |v: &Option<Spanned<f64>>| v.as_ref().map(Spanned::span);
+    match field {
+        "base_radius" => Some(g.base_radius.span()),
+        "platform_radius" => Some(g.platform_radius.span()),
+        "home_height" => Some(g.home_height.span()),
+        "leg_min" => optional(&g.leg_min),
+        "leg_max" => optional(&g.leg_max),
+        f if f.starts_with("base_angles_deg") => Some(g.base_angles_deg.span()),
+        f if f.starts_with("platform_angles_deg") => Some(g.platform_angles_deg.span()),
+        f if f.starts_with("pivot") => pivot.map(|p| p.offset_m.span()),
+        _ => None,
+    }
+}
+
+fn build_checks(src: &Source, c: Option<&ChecksFile>) -> Result<CheckSettings, ScenarioError> {
+    let mut settings = CheckSettings::default();
+    let Some(c) = c else { return Ok(settings) };
+    let positive =
+        |field: &str, v: &Option<Spanned<f64>>, target: &mut f64| -> Result<(), ScenarioError> {
+            if let Some(v) = v {
+                let x = src.finite(field, v)?;
+                if x <= 0.0 {
+                    return Err(src.invalid(
+                        Some(v.span()),
+                        field,
+                        format!("must be positive, got {x}"),
+                    ));
+                }
+                *target = x;
+            }
+            Ok(())
+        };
+    positive(
+        "checks.rigid_tolerance_m",
+        &c.rigid_tolerance_m,
+        &mut settings.rigid_tolerance,
+    )?;
+    positive("checks.jump_ratio", &c.jump_ratio, &mut settings.jump_ratio)?;
+    positive(
+        "checks.jump_floor_m",
+        &c.jump_floor_m,
+        &mut settings.jump_floor,
+    )?;
+    Ok(settings)
+}
+
+/// The keys each trajectory kind uses, beyond `kind`, `start_s`, `duration_s` and `samples`.
+fn keys_used_by(kind: TrajectoryKind) -> &'static [&'static str] {
+    match kind {
+        TrajectoryKind::Sinusoid => &["x", "y", "z", "roll", "pitch", "yaw"],
+        TrajectoryKind::Circle => &["radius_m", "frequency_hz", "z_m"],
+        TrajectoryKind::FigureEight => &["amplitude_x_m", "amplitude_y_m", "frequency_hz", "z_m"],
+        TrajectoryKind::Helix => &["radius_m", "frequency_hz", "z_start_m", "z_end_m"],
+        TrajectoryKind::Sway => &["radius_m", "frequency_hz", "tilt_deg", "z_m"],
+        TrajectoryKind::Keyframes => &["interpolation", "keys"],
+        TrajectoryKind::PoseTable => &["interpolation", "file"],
+    }
+}
+
+/// Every kind-specific key of the table that is present, with its span.
+fn present_keys(t: &TrajectoryFile) -> Vec<(&'static str, Range<usize>)> {
+    fn s<T>(v: &Option<Spanned<T>>) -> Option<Range<usize>> {
+        v.as_ref().map(Spanned::span)
+    }
+    [
+        ("x", s(&t.x)),
+        ("y", s(&t.y)),
+        ("z", s(&t.z)),
+        ("roll", s(&t.roll)),
+        ("pitch", s(&t.pitch)),
+        ("yaw", s(&t.yaw)),
+        ("radius_m", s(&t.radius_m)),
+        ("frequency_hz", s(&t.frequency_hz)),
+        ("z_m", s(&t.z_m)),
+        ("amplitude_x_m", s(&t.amplitude_x_m)),
+        ("amplitude_y_m", s(&t.amplitude_y_m)),
+        ("z_start_m", s(&t.z_start_m)),
+        ("z_end_m", s(&t.z_end_m)),
+        ("tilt_deg", s(&t.tilt_deg)),
+        ("interpolation", s(&t.interpolation)),
+        ("keys", s(&t.keys)),
+        ("file", s(&t.file)),
+    ]
+    .into_iter()
+    .filter_map(|(k, span)| span.map(|span| (k, span)))
+    .collect()
+}
+
+fn build_motion(
+    src: &Source,
+    table: &Spanned<TrajectoryFile>,
+    geometry: &Geometry,
+    base_dir: Option<&Path>,
+) -> Result<Motion, ScenarioError> {
+    let t = table.get_ref();
+    let Some(kind) = &t.kind else {
+        return Err(src.invalid(
+            Some(table.span()),
+            "trajectory.kind",
+            "is missing: say one of sinusoid, circle, figure8, helix, sway, keyframes, pose_table",
+        ));
+    };
+    let kind_span = kind.span();
+    let kind = *kind.get_ref();
+    for (key, span) in present_keys(t) {
+        if !keys_used_by(kind).contains(&key) {
+            return Err(src.invalid(
+                Some(span),
+                &format!("trajectory.{key}"),
+                format!(
+                    "is not used by trajectory kind `{}` (it uses: {})",
+                    kind.name(),
+                    keys_used_by(kind).join(", ")
+                ),
+            ));
+        }
+    }
+    let shapes = ShapeReader {
+        src,
+        t,
+        kind,
+        kind_span,
+    };
+    let h0 = geometry.home_height();
+    let trajectory = match kind {
+        TrajectoryKind::Sinusoid => Trajectory::Sinusoid(Sinusoid {
+            x: linear_channel(src, "x", t.x.as_ref(), 0.0)?,
+            y: linear_channel(src, "y", t.y.as_ref(), 0.0)?,
+            z: linear_channel(src, "z", t.z.as_ref(), h0)?,
+            roll_deg: angular_channel(src, "roll", t.roll.as_ref())?,
+            pitch_deg: angular_channel(src, "pitch", t.pitch.as_ref())?,
+            yaw_deg: angular_channel(src, "yaw", t.yaw.as_ref())?,
+        }),
+        TrajectoryKind::Circle => Trajectory::Circle(Circle {
+            radius: shapes.required("radius_m", &t.radius_m)?,
+            frequency_hz: shapes.required("frequency_hz", &t.frequency_hz)?,
+            z: shapes.optional("z_m", &t.z_m)?.unwrap_or(h0),
+        }),
+        TrajectoryKind::FigureEight => Trajectory::FigureEight(FigureEight {
+            amplitude_x: shapes.required("amplitude_x_m", &t.amplitude_x_m)?,
+            amplitude_y: shapes.required("amplitude_y_m", &t.amplitude_y_m)?,
+            frequency_hz: shapes.required("frequency_hz", &t.frequency_hz)?,
+            z: shapes.optional("z_m", &t.z_m)?.unwrap_or(h0),
+        }),
+        TrajectoryKind::Helix => Trajectory::Helix(Helix {
+            radius: shapes.required("radius_m", &t.radius_m)?,
+            frequency_hz: shapes.required("frequency_hz", &t.frequency_hz)?,
+            z_start: shapes.required("z_start_m", &t.z_start_m)?,
+            z_end: shapes.required("z_end_m", &t.z_end_m)?,
+            duration: t
+                .duration_s
+                .as_ref()
+                .map_or(DEFAULT_DURATION, |d| *d.get_ref()),
+        }),
+        TrajectoryKind::Sway => Trajectory::Sway(Sway {
+            radius: shapes.required("radius_m", &t.radius_m)?,
+            frequency_hz: shapes.required("frequency_hz", &t.frequency_hz)?,
+            tilt: Angle::from_degrees(shapes.required("tilt_deg", &t.tilt_deg)?),
+            z: shapes.optional("z_m", &t.z_m)?.unwrap_or(h0),
+        }),
+        TrajectoryKind::Keyframes => {
+            let Some(keys) = &t.keys else {
+                return Err(shapes.missing("keys"));
+            };
+            Trajectory::Keyframes(build_keyframes(src, keys, interpolation(t))?)
+        }
+        TrajectoryKind::PoseTable => {
+            let Some(path) = &t.file else {
+                return Err(shapes.missing("file"));
+            };
+            Trajectory::Keyframes(read_pose_table(src, path, base_dir, interpolation(t))?)
+        }
+    };
+    let sampling = build_sampling(src, t, &trajectory)?;
+    Ok(Motion {
+        trajectory,
+        sampling,
+    })
+}
+
+fn interpolation(t: &TrajectoryFile) -> Interpolation {
+    t.interpolation.as_ref().map_or(
+        if t.file.is_some() {
+            Interpolation::Linear
+        } else {
+            Interpolation::Cubic
+        },
+        |i| *i.get_ref(),
+    )
+}
+
+/// Reads the numeric keys of a shape, naming the kind when one is missing.
+struct ShapeReader<'a> {
+    src: &'a Source<'a>,
+    t: &'a TrajectoryFile,
+    kind: TrajectoryKind,
+    kind_span: Range<usize>,
+}
+
+impl ShapeReader<'_> {
+    fn missing(&self, key: &str) -> ScenarioError {
+        self.src.invalid(
+            Some(self.kind_span.clone()),
+            &format!("trajectory.{key}"),
+            format!(
+                "is required by trajectory kind `{}` but missing",
+                self.kind.name()
+            ),
+        )
+    }
+
+    fn optional(&self, key: &str, v: &Option<Spanned<f64>>) -> Result<Option<f64>, ScenarioError> {
+        let _ = self.t;
+        v.as_ref()
+            .map(|v| self.src.finite(&format!("trajectory.{key}"), v))
+            .transpose()
+    }
+
+    fn required(&self, key: &str, v: &Option<Spanned<f64>>) -> Result<f64, ScenarioError> {
+        self.optional(key, v)?.ok_or_else(|| self.missing(key))
+    }
+}
+
+fn check_channel(
+    src: &Source,
+    name: &str,
+    span: Range<usize>,
+    values: [(&str, f64); 4],
+) -> Result<(), ScenarioError> {
+    for (key, v) in values {
+        src.finite_at(&format!("trajectory.{name}.{key}"), v, span.clone())?;
+    }
+    Ok(())
+}
+
+fn linear_channel(
+    src: &Source,
+    name: &str,
+    c: Option<&Spanned<LinearChannelFile>>,
+    default_offset: f64,
+) -> Result<Channel, ScenarioError> {
+    let Some(c) = c else {
+        return Ok(Channel::default().with_offset(default_offset));
+    };
+    let f = c.get_ref();
+    let offset = f.offset_m.unwrap_or(default_offset);
+    check_channel(
+        src,
+        name,
+        c.span(),
+        [
+            ("amplitude_m", f.amplitude_m),
+            ("frequency_hz", f.frequency_hz),
+            ("phase_deg", f.phase_deg),
+            ("offset_m", offset),
+        ],
+    )?;
+    Ok(Channel {
+        amplitude: f.amplitude_m,
+        frequency_hz: f.frequency_hz,
+        phase: Angle::from_degrees(f.phase_deg),
+        offset,
+        wave: f.wave,
+    })
+}
+
+fn angular_channel(
+    src: &Source,
+    name: &str,
+    c: Option<&Spanned<AngularChannelFile>>,
+) -> Result<Channel, ScenarioError> {
+    let Some(c) = c else {
+        return Ok(Channel::default());
+    };
+    let f = c.get_ref();
+    check_channel(
+        src,
+        name,
+        c.span(),
+        [
+            ("amplitude_deg", f.amplitude_deg),
+            ("frequency_hz", f.frequency_hz),
+            ("phase_deg", f.phase_deg),
+            ("offset_deg", f.offset_deg),
+        ],
+    )?;
+    Ok(Channel {
+        amplitude: f.amplitude_deg,
+        frequency_hz: f.frequency_hz,
+        phase: Angle::from_degrees(f.phase_deg),
+        offset: f.offset_deg,
+        wave: f.wave,
+    })
+}
+
+fn build_keyframes(
+    src: &Source,
+    keys: &Spanned<Vec<Spanned<KeyFile>>>,
+    interpolation: Interpolation,
+) -> Result<Keyframes, ScenarioError> {
+    let mut frames = Vec::with_capacity(keys.get_ref().len());
+    for (i, k) in keys.get_ref().iter().enumerate() {
+        let f = k.get_ref();
+        let values = [
+            ("t_s", f.t_s),
+            ("x_m", f.x_m),
+            ("y_m", f.y_m),
+            ("z_m", f.z_m),
+            ("roll_deg", f.roll_deg),
+            ("pitch_deg", f.pitch_deg),
+            ("yaw_deg", f.yaw_deg),
+        ];
+        for (key, v) in values {
+            src.finite_at(&format!("trajectory.keys[{i}].{key}"), v, k.span())?;
+        }
+        frames.push(Keyframe {
+            t: f.t_s,
+            pose: Pose::from_xyz_rpy_deg(
+                [f.x_m, f.y_m, f.z_m],
+                [f.roll_deg, f.pitch_deg, f.yaw_deg],
+            ),
+        });
+    }
+    Keyframes::new(frames, interpolation).map_err(|e| {
+        // Point at the key the error names, or at the list.
+        let span = match &e {
+            crate::trajectory::KeyframeError::NotIncreasing { index, .. }
+            | crate::trajectory::KeyframeError::NotFinite { index } => {
+                keys.get_ref().get(index - 1).map(Spanned::span)
+            }
+            crate::trajectory::KeyframeError::Empty => None,
+        };
+        src.err(Some(span.unwrap_or_else(|| keys.span())), e)
+    })
+}
+
+fn read_pose_table(
+    src: &Source,
+    path: &Spanned<String>,
+    base_dir: Option<&Path>,
+    interpolation: Interpolation,
+) -> Result<Keyframes, ScenarioError> {
+    let relative = Path::new(path.get_ref());
+    let full = match base_dir {
+        Some(dir) if relative.is_relative() => dir.join(relative),
+        _ => relative.to_path_buf(),
+    };
+    let name = full.display().to_string();
+    let reader = std::fs::File::open(&full).map_err(|e| {
+        src.invalid(
+            Some(path.span()),
+            "trajectory.file",
+            format!("names `{name}`, which cannot be opened ({e})"),
+        )
+    })?;
+    let table = PoseTable::read(reader, &name).map_err(|e| src.err(Some(path.span()), e))?;
+    table
+        .to_keyframes(&name, interpolation)
+        .map_err(|e| src.err(Some(path.span()), e))
+}
+
+fn build_sampling(
+    src: &Source,
+    t: &TrajectoryFile,
+    trajectory: &Trajectory,
+) -> Result<Sampling, ScenarioError> {
+    // Keyframed motions default to their own time span and, for tables, their row count.
+    let (default_start, default_duration, default_samples) = match trajectory {
+        Trajectory::Keyframes(k) => {
+            let (first, last) = k.time_span();
+            let rows = if t.file.is_some() {
+                k.keys().len() as i64
+            } else {
+                DEFAULT_SAMPLES
+            };
+            (first, last - first, rows.max(2))
+        }
+        _ => (0.0, DEFAULT_DURATION, DEFAULT_SAMPLES),
+    };
+    let start = match &t.start_s {
+        Some(v) => src.finite("trajectory.start_s", v)?,
+        None => default_start,
+    };
+    let duration = match &t.duration_s {
+        Some(v) => src.finite("trajectory.duration_s", v)?,
+        None => default_duration,
+    };
+    let samples = t.samples.as_ref().map_or(default_samples, |s| *s.get_ref());
+    let samples_span = t.samples.as_ref().map(Spanned::span);
+    if samples < 2 {
+        return Err(src.invalid(
+            samples_span,
+            "trajectory.samples",
+            format!("must be at least 2, got {samples}"),
+        ));
+    }
+    Sampling::with_start(start, duration, samples as u64).map_err(|e| {
+        let span = match e {
+            crate::trajectory::SamplingError::Duration(_) => {
+                t.duration_s.as_ref().map(Spanned::span)
+            }
+            crate::trajectory::SamplingError::TooFewSamples(_) => samples_span.clone(),
+            crate::trajectory::SamplingError::Start(_) => t.start_s.as_ref().map(Spanned::span),
+        };
+        src.err(span, e)
+    })
+}

@@ -1,0 +1,243 @@
+//! Scenario parsing: presets, round trips and located errors.
+
+use super::*;
+use crate::trajectory::{Interpolation, Sampling, Trajectory};
+
+const GEOMETRY: &str = "[geometry]
+base_radius = 1.0
+platform_radius = 0.6
+home_height = 0.8
+base_angles_deg = [0, 60, 120, 180, 240, 300]
+platform_angles_deg = [30, 90, 150, 210, 270, 330]
+";
+
+fn parse(text: &str) -> Result<Scenario, ScenarioError> {
+    Scenario::from_toml_str(text, "s.toml", None)
+}
+
+fn error(text: &str) -> String {
+    match parse(text) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn every_preset_loads_and_samples_finite_poses() {
+    for name in presets::names() {
+        let s = Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(s.name, name);
+        let samples = s.motion.sample();
+        assert!(samples.len() >= 2);
+        assert!(samples.poses.iter().all(|p| p.is_finite()), "{name}");
+    }
+    for kind in [
+        "sinusoid",
+        "circle",
+        "figure8",
+        "helix",
+        "sway",
+        "keyframes",
+    ] {
+        assert!(
+            presets::PRESETS
+                .iter()
+                .any(|(_, text)| text.contains(&format!("kind = \"{kind}\""))),
+            "no preset of kind {kind}"
+        );
+    }
+}
+
+#[test]
+fn seed_preset_is_the_article_bit_for_bit() {
+    let preset = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+    let code = Scenario::seed();
+    assert_eq!(preset.geometry.base_joints(), code.geometry.base_joints());
+    assert_eq!(
+        preset.geometry.platform_joints(),
+        code.geometry.platform_joints()
+    );
+    assert_eq!(preset.motion.sampling, Sampling::SEED);
+    assert_eq!(preset.motion.sample(), code.motion.sample());
+    assert_eq!(
+        preset.geometry.stroke(),
+        crate::StrokeLimits::new(0.55, 1.30)
+    );
+}
+
+#[test]
+fn a_file_without_trajectory_uses_the_seed_motion_at_its_home_height() {
+    let s = parse(&GEOMETRY.replace("0.8", "0.9")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.name, "s");
+    assert_eq!(s.motion, Motion::seed(0.9));
+}
+
+#[test]
+fn scenarios_round_trip_through_toml() {
+    for name in presets::names() {
+        let s = Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
+        let text = s.to_toml();
+        let back = parse(&text).unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
+        assert_eq!(back.geometry.params().stroke, s.geometry.params().stroke);
+        assert_eq!(back.motion.sampling, s.motion.sampling);
+        for (a, b) in back
+            .motion
+            .sample()
+            .poses
+            .iter()
+            .zip(s.motion.sample().poses.iter())
+        {
+            assert!((a.position - b.position).norm() < 1e-15, "{name}");
+            assert!((a.yaw - b.yaw).radians().abs() < 1e-15, "{name}");
+        }
+    }
+    // A pivot survives too.
+    let text = format!("{GEOMETRY}[pivot]\noffset_m = [0.0, 0.1, 0.25]\n");
+    let s = parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.geometry.pivot(), nalgebra::Vector3::new(0.0, 0.1, 0.25));
+    assert_eq!(
+        parse(&s.to_toml())
+            .unwrap_or_else(|e| panic!("{e}"))
+            .geometry
+            .pivot(),
+        s.geometry.pivot()
+    );
+}
+
+#[test]
+fn shapes_read_their_keys_and_default_to_home_height() {
+    let s = parse(&format!(
+        "{GEOMETRY}[trajectory]\nkind = \"circle\"\nradius_m = 0.1\nfrequency_hz = 0.5\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    match s.motion.trajectory {
+        Trajectory::Circle(c) => assert_eq!((c.radius, c.frequency_hz, c.z), (0.1, 0.5, 0.8)),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn pose_table_trajectory_reads_the_csv_next_to_the_scenario() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(
+        dir.path().join("poses.csv"),
+        "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n0.5,0.05,0,0.8,0,0,5\n1,0.1,0,0.8,0,0,10\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.path().join("s.toml");
+    std::fs::write(
+        &path,
+        format!("{GEOMETRY}[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let s = Scenario::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.motion.sampling.len(), 3);
+    let samples = s.motion.sample();
+    assert_eq!(samples.times, vec![0.0, 0.5, 1.0]);
+    assert!((samples.poses[1].yaw.degrees() - 5.0).abs() < 1e-12);
+    match &s.motion.trajectory {
+        Trajectory::Keyframes(k) => assert_eq!(k.interpolation(), Interpolation::Linear),
+        other => panic!("{other:?}"),
+    }
+    // A bad cell in the table is reported with both locations.
+    std::fs::write(
+        dir.path().join("poses.csv"),
+        "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n1,0.1,0,oops,0,0,10\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let e = Scenario::load(&path).unwrap_err().to_string();
+    assert!(
+        e.ends_with("poses.csv, line 3, column `z`: `oops` is not a number"),
+        "{e}"
+    );
+    assert!(
+        e.contains("s.toml, line 9, column 8: in the pose table: "),
+        "{e}"
+    );
+}
+
+#[test]
+fn errors_name_the_line_and_the_value() {
+    assert_eq!(
+        error(&GEOMETRY.replace("base_radius = 1.0", "base_radius = -1.0")),
+        "s.toml, line 2, column 15: `base_radius` must be positive, got -1"
+    );
+    assert_eq!(
+        error(&GEOMETRY.replace("home_height = 0.8", "home_height = nan")),
+        "s.toml, line 4, column 15: `home_height` must be a finite number, got NaN"
+    );
+    assert_eq!(
+        error(&GEOMETRY.replace("[30, 90, 150, 210, 270, 330]", "[30, 90, 150, 210, 270]")),
+        "s.toml, line 6, column 23: `platform_angles_deg` must list 6 angles (one per leg), got 5"
+    );
+    assert_eq!(
+        error(&GEOMETRY.replace("[0, 60, 120, 180, 240, 300]", "[0, 60, 120, 180, 240, 360]")),
+        "s.toml, line 5, column 19: base joints 1 and 6 coincide (both at 0°): the six joints of a plate must be distinct"
+    );
+    assert_eq!(
+        error(&format!("{GEOMETRY}leg_min = 1.2\nleg_max = 0.9\n")),
+        "s.toml, line 8, column 11: `leg_min` (1.2 m) must be less than `leg_max` (0.9 m)"
+    );
+    let unknown = error(&format!("{GEOMETRY}leg_maximum = 1.0\n"));
+    assert!(
+        unknown.starts_with("s.toml, line 7, column 1: unknown field `leg_maximum`"),
+        "{unknown}"
+    );
+    let syntax = error("[geometry\nbase_radius = 1");
+    assert!(
+        syntax.starts_with("s.toml, line 1, column 10: "),
+        "{syntax}"
+    );
+    let missing = error("[geometry]\nbase_radius = 1.0\n");
+    assert!(
+        missing.starts_with("s.toml, line 1, column 1: missing field `platform_radius`"),
+        "{missing}"
+    );
+    let wrong_type = error(&GEOMETRY.replace("platform_radius = 0.6", "platform_radius = \"0.6\""));
+    assert!(
+        wrong_type.starts_with("s.toml, line 3, column 19: invalid type: string"),
+        "{wrong_type}"
+    );
+}
+
+#[test]
+fn trajectory_errors_name_the_key() {
+    let t = |body: &str| error(&format!("{GEOMETRY}[trajectory]\n{body}"));
+    assert_eq!(
+        t("kind = \"sinusoid\"\nradius_m = 0.1\n"),
+        "s.toml, line 9, column 12: `trajectory.radius_m` is not used by trajectory kind `sinusoid` (it uses: x, y, z, roll, pitch, yaw)"
+    );
+    assert_eq!(
+        t("kind = \"circle\"\nfrequency_hz = 0.5\n"),
+        "s.toml, line 8, column 8: `trajectory.radius_m` is required by trajectory kind `circle` but missing"
+    );
+    assert_eq!(
+        t("kind = \"circle\"\nradius_m = inf\nfrequency_hz = 0.5\n"),
+        "s.toml, line 9, column 12: `trajectory.radius_m` must be a finite number, got inf"
+    );
+    assert_eq!(
+        t("kind = \"circle\"\nradius_m = 0.1\nfrequency_hz = 0.5\nsamples = 1\n"),
+        "s.toml, line 11, column 11: `trajectory.samples` must be at least 2, got 1"
+    );
+    assert_eq!(
+        t("kind = \"circle\"\nradius_m = 0.1\nfrequency_hz = 0.5\nduration_s = -3\n"),
+        "s.toml, line 11, column 14: `duration_s` must be a positive finite number of seconds, got -3"
+    );
+    assert!(
+        t("kind = \"spiral\"\n").starts_with("s.toml, line 8, column 8: unknown variant `spiral`")
+    );
+    assert_eq!(
+        t("kind = \"sinusoid\"\n[trajectory.roll]\namplitude_deg = nan\n"),
+        "s.toml, line 9, column 1: `trajectory.roll.amplitude_deg` must be a finite number, got NaN"
+    );
+    assert_eq!(
+        t("kind = \"keyframes\"\nkeys = [\n {t_s = 0, z_m = 0.8},\n {t_s = 0, z_m = 0.9},\n]\n"),
+        "s.toml, line 11, column 2: key 2 is at t = 0 s, not after the previous key's 0 s: times must increase"
+    );
+    let missing_file = t("kind = \"pose_table\"\nfile = \"nowhere.csv\"\n");
+    assert!(missing_file.starts_with("s.toml, line 9, column 8: `trajectory.file` names `nowhere.csv`, which cannot be opened"), "{missing_file}");
+    assert_eq!(
+        Scenario::preset("spiral").unwrap_err().to_string(),
+        "preset `spiral`: no preset is called `spiral` (presets: seed, paired, circle, figure8, helix, sway, keyframes)"
+    );
+}

@@ -1,0 +1,131 @@
+//! Writing a [`Scenario`] back to TOML.
+
+use toml::Spanned;
+
+use super::Scenario;
+use super::file::{
+    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LinearChannelFile, PivotFile,
+    ScenarioFile, TrajectoryFile, TrajectoryKind,
+};
+use crate::trajectory::{Channel, Trajectory};
+
+fn s<T>(v: T) -> Spanned<T> {
+    Spanned::new(0..0, v)
+}
+
+fn linear(c: &Channel) -> Option<Spanned<LinearChannelFile>> {
+    Some(s(LinearChannelFile {
+        amplitude_m: c.amplitude,
+        frequency_hz: c.frequency_hz,
+        phase_deg: c.phase.degrees(),
+        offset_m: Some(c.offset),
+        wave: c.wave,
+    }))
+}
+
+fn angular(c: &Channel) -> Option<Spanned<AngularChannelFile>> {
+    Some(s(AngularChannelFile {
+        amplitude_deg: c.amplitude,
+        frequency_hz: c.frequency_hz,
+        phase_deg: c.phase.degrees(),
+        offset_deg: c.offset,
+        wave: c.wave,
+    }))
+}
+
+pub(super) fn to_toml(scenario: &Scenario) -> String {
+    let g = scenario.geometry.params();
+    let geometry = GeometryFile {
+        base_radius: s(g.base_radius),
+        platform_radius: s(g.platform_radius),
+        home_height: s(g.home_height),
+        base_angles_deg: s(g.base_angles.iter().map(|a| a.degrees()).collect()),
+        platform_angles_deg: s(g.platform_angles.iter().map(|a| a.degrees()).collect()),
+        leg_min: g.stroke.min.map(s),
+        leg_max: g.stroke.max.map(s),
+    };
+    let pivot = (g.pivot != nalgebra::Vector3::zeros()).then(|| PivotFile {
+        offset_m: s([g.pivot.x, g.pivot.y, g.pivot.z]),
+    });
+    let sampling = scenario.motion.sampling;
+    let mut t = TrajectoryFile {
+        start_s: (sampling.start() != 0.0).then(|| s(sampling.start())),
+        duration_s: Some(s(sampling.duration())),
+        samples: Some(s(sampling.len() as i64)),
+        ..TrajectoryFile::default()
+    };
+    let kind = match &scenario.motion.trajectory {
+        Trajectory::Sinusoid(c) => {
+            t.x = linear(&c.x);
+            t.y = linear(&c.y);
+            t.z = linear(&c.z);
+            t.roll = angular(&c.roll_deg);
+            t.pitch = angular(&c.pitch_deg);
+            t.yaw = angular(&c.yaw_deg);
+            TrajectoryKind::Sinusoid
+        }
+        Trajectory::Circle(c) => {
+            t.radius_m = Some(s(c.radius));
+            t.frequency_hz = Some(s(c.frequency_hz));
+            t.z_m = Some(s(c.z));
+            TrajectoryKind::Circle
+        }
+        Trajectory::FigureEight(c) => {
+            t.amplitude_x_m = Some(s(c.amplitude_x));
+            t.amplitude_y_m = Some(s(c.amplitude_y));
+            t.frequency_hz = Some(s(c.frequency_hz));
+            t.z_m = Some(s(c.z));
+            TrajectoryKind::FigureEight
+        }
+        Trajectory::Helix(c) => {
+            t.radius_m = Some(s(c.radius));
+            t.frequency_hz = Some(s(c.frequency_hz));
+            t.z_start_m = Some(s(c.z_start));
+            t.z_end_m = Some(s(c.z_end));
+            TrajectoryKind::Helix
+        }
+        Trajectory::Sway(c) => {
+            t.radius_m = Some(s(c.radius));
+            t.frequency_hz = Some(s(c.frequency_hz));
+            t.tilt_deg = Some(s(c.tilt.degrees()));
+            t.z_m = Some(s(c.z));
+            TrajectoryKind::Sway
+        }
+        Trajectory::Keyframes(k) => {
+            t.interpolation = Some(s(k.interpolation()));
+            t.keys = Some(s(k
+                .keys()
+                .iter()
+                .map(|key| {
+                    let [roll_deg, pitch_deg, yaw_deg] = key.pose.rpy_degrees();
+                    s(KeyFile {
+                        t_s: key.t,
+                        x_m: key.pose.position.x,
+                        y_m: key.pose.position.y,
+                        z_m: key.pose.position.z,
+                        roll_deg,
+                        pitch_deg,
+                        yaw_deg,
+                    })
+                })
+                .collect()));
+            TrajectoryKind::Keyframes
+        }
+    };
+    t.kind = Some(s(kind));
+    let c = &scenario.checks;
+    let file = ScenarioFile {
+        name: Some(scenario.name.clone()),
+        description: (!scenario.description.is_empty()).then(|| scenario.description.clone()),
+        geometry,
+        pivot,
+        trajectory: Some(s(t)),
+        checks: Some(ChecksFile {
+            rigid_tolerance_m: Some(s(c.rigid_tolerance)),
+            jump_ratio: Some(s(c.jump_ratio)),
+            jump_floor_m: Some(s(c.jump_floor)),
+        }),
+    };
+    // Serialising plain numbers, strings and tables cannot fail.
+    toml::to_string(&file).unwrap_or_else(|e| unreachable!("scenario serialisation: {e}"))
+}
