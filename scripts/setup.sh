@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Install the system packages the project needs, when they are missing (Debian; run as
+# root or with sudo available). Safe to run again: it does nothing when all are present.
+set -euo pipefail
+
+# Every system package the build, the program and the tests need. Later milestones add
+# here (Mesa's software Vulkan driver for headless rendering, ffmpeg for video export, …).
+PACKAGES=(gcc libc6-dev pkg-config ca-certificates)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+command -v cargo >/dev/null || { echo "setup: cargo not found: install Rust 1.95 (rustup) first" >&2; exit 1; }
