@@ -15,11 +15,13 @@
 //! - [`table`]: numeric CSV tables with located errors.
 
 pub mod angle;
+pub mod architecture;
 pub mod batch;
 pub mod checks;
 mod fast_trig;
 pub mod geometry;
 pub mod inverse;
+pub mod jacobian;
 pub mod layout;
 pub mod pose;
 pub mod scenario;
@@ -31,6 +33,7 @@ pub use batch::BatchSolver;
 pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};
 pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
 pub use inverse::LegSolution;
+pub use jacobian::Conditioning;
 pub use layout::Layout;
 pub use pose::Pose;
 pub use scenario::{Scenario, ScenarioError};
