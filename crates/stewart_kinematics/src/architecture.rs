@@ -74,7 +74,8 @@ impl Geometry {
         let mut worst = f64::INFINITY;
         let mut all_singular = true;
         for p in probes {
-            let pose = Pose::from_xyz_rpy_deg([p[0] * s, p[1] * s, h + p[2] * s], [p[3], p[4], p[5]]);
+            let pose =
+                Pose::from_xyz_rpy_deg([p[0] * s, p[1] * s, h + p[2] * s], [p[3], p[4], p[5]]);
             let c = self.conditioning(&pose);
             worst = worst.min(c.inverse_condition());
             all_singular &= c.is_singular();
@@ -103,8 +104,10 @@ fn joints_projectively_related(g: &Geometry) -> bool {
         let (x, y) = (base[k].x, base[k].y);
         let (u, v) = (plat[k].x, plat[k].y);
         let r = 2 * k;
-        m.row_mut(r).copy_from_slice(&[x, y, 1.0, 0.0, 0.0, 0.0, -u * x, -u * y]);
-        m.row_mut(r + 1).copy_from_slice(&[0.0, 0.0, 0.0, x, y, 1.0, -v * x, -v * y]);
+        m.row_mut(r)
+            .copy_from_slice(&[x, y, 1.0, 0.0, 0.0, 0.0, -u * x, -u * y]);
+        m.row_mut(r + 1)
+            .copy_from_slice(&[0.0, 0.0, 0.0, x, y, 1.0, -v * x, -v * y]);
         rhs[r] = u;
         rhs[r + 1] = v;
     }
@@ -157,21 +160,39 @@ mod tests {
     /// value near home is 0.65–0.75 (see the seed test).
     #[test]
     fn paired_geometry_is_regular() {
-        let g = Geometry::new(GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0)))
-            .unwrap_or_else(|e| panic!("{e}"));
+        let g = Geometry::new(GeometryParams::from_layout(
+            1.0,
+            0.6,
+            0.8,
+            Layout::paired(20.0),
+        ))
+        .unwrap_or_else(|e| panic!("{e}"));
         let report = g.architecture();
         assert!(!report.singular);
         assert!(!report.projective_correspondence);
-        assert!(report.worst_inverse_condition > 0.3, "{}", report.worst_inverse_condition);
-        assert!(report.explanation().starts_with("The geometry is not architecturally singular"));
+        assert!(
+            report.worst_inverse_condition > 0.3,
+            "{}",
+            report.worst_inverse_condition
+        );
+        assert!(
+            report
+                .explanation()
+                .starts_with("The geometry is not architecturally singular")
+        );
     }
 
     #[test]
     fn any_rotated_scaled_hexagon_is_singular_and_aligned_too() {
         // Not just the seed's 30°: aligned hexagons (offset 0°) and 15° are singular too.
         for offset in [0.0, 15.0, 45.0] {
-            let g = Geometry::new(GeometryParams::from_layout(1.0, 0.5, 0.7, Layout::Staggered { offset_deg: offset }))
-                .unwrap_or_else(|e| panic!("{e}"));
+            let g = Geometry::new(GeometryParams::from_layout(
+                1.0,
+                0.5,
+                0.7,
+                Layout::Staggered { offset_deg: offset },
+            ))
+            .unwrap_or_else(|e| panic!("{e}"));
             assert!(g.architecture().singular, "offset {offset}");
         }
     }

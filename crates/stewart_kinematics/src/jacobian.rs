@@ -58,8 +58,16 @@ impl Conditioning {
 
     /// The weakest twist in words: its dominant translation and rotation directions.
     pub fn describe_weakest_twist(&self) -> String {
-        let t = Vector3::new(self.weakest_twist[0], self.weakest_twist[1], self.weakest_twist[2]);
-        let r = Vector3::new(self.weakest_twist[3], self.weakest_twist[4], self.weakest_twist[5]);
+        let t = Vector3::new(
+            self.weakest_twist[0],
+            self.weakest_twist[1],
+            self.weakest_twist[2],
+        );
+        let r = Vector3::new(
+            self.weakest_twist[3],
+            self.weakest_twist[4],
+            self.weakest_twist[5],
+        );
         let part = |v: &Vector3<f64>, what: &str| {
             if v.norm() < 0.05 {
                 None
@@ -136,8 +144,13 @@ mod tests {
     use proptest::prelude::*;
 
     fn paired() -> Geometry {
-        Geometry::new(GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0)))
-            .unwrap_or_else(|e| panic!("{e}"))
+        Geometry::new(GeometryParams::from_layout(
+            1.0,
+            0.6,
+            0.8,
+            Layout::paired(20.0),
+        ))
+        .unwrap_or_else(|e| panic!("{e}"))
     }
 
     /// Leg rates by finite differences of inverse kinematics for a twist (v, ω) about
@@ -194,7 +207,10 @@ mod tests {
         // The seed's two regular hexagons: σ_min is rounding noise at any pose, and the
         // verdict is "singular", never a huge condition number.
         let g = Geometry::seed();
-        for pose in [g.home_pose(), Pose::from_xyz_rpy_deg([0.1, -0.05, 0.85], [5.0, -3.0, 12.0])] {
+        for pose in [
+            g.home_pose(),
+            Pose::from_xyz_rpy_deg([0.1, -0.05, 0.85], [5.0, -3.0, 12.0]),
+        ] {
             let c = g.conditioning(&pose);
             assert!(c.singular_values[5] < 1e-12, "{:?}", c.singular_values);
             assert!(c.is_singular());

@@ -1,0 +1,290 @@
+//! Forward kinematics: leg lengths → pose, by a damped Newton method with a line search.
+//!
+//! Unknowns are the pose coordinates `x = (x, y, z, roll, pitch, yaw)` (metres,
+//! radians); the residual is `f(x) = L(x) − L*`. Each iteration solves `F δ = −f`
+//! with `F = ∂L/∂x` (leg unit vectors for the position, `u_i · (∂R/∂θ)(a_i − c)` for the
+//! angles), then halves the step until `|f|²` decreases enough (Armijo). When the
+//! Newton step fails (singular `F` or no decrease), a Levenberg–Marquardt step
+//! `(FᵀF + λI) δ = −Fᵀ f` with growing `λ` is taken instead. Converged when every leg
+//! is within [`ForwardOptions::tolerance`] of its target (default 1e-12 m).
+
+pub mod assembly;
+pub mod sequence;
+
+use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::angle::Angle;
+use crate::geometry::Geometry;
+use crate::pose::Pose;
+
+/// Settings of the forward solver.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ForwardOptions {
+    /// Largest leg-length error accepted, metres.
+    pub tolerance: f64,
+    /// Most iterations before giving up.
+    pub max_iterations: usize,
+}
+
+impl Default for ForwardOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-12,
+            max_iterations: 100,
+        }
+    }
+}
+
+/// A pose found by the forward solver, with how it was found.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ForwardSolution {
+    /// The pose.
+    pub pose: Pose,
+    /// Newton iterations taken.
+    pub iterations: usize,
+    /// Largest leg-length error at the pose, metres.
+    pub residual: f64,
+}
+
+/// Why no pose was returned.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum ForwardError {
+    /// A length that is not a positive finite number.
+    #[error("leg L{leg} length {value} is not a positive finite number")]
+    InvalidLength {
+        /// Leg number from 1.
+        leg: usize,
+        /// The value given.
+        value: f64,
+    },
+    /// A length outside the actuator's stroke.
+    #[error("leg L{leg} length {length} m is outside the stroke [{min} m, {max} m]")]
+    OutsideStroke {
+        /// Leg number from 1.
+        leg: usize,
+        /// The value given.
+        length: f64,
+        /// Stroke minimum (or 0).
+        min: f64,
+        /// Stroke maximum (or infinity).
+        max: f64,
+    },
+    /// The iteration stopped without reaching the tolerance.
+    #[error(
+        "forward kinematics did not converge: {iterations} iterations, leg-length residual {residual:.3e} m (these lengths may not be reachable)"
+    )]
+    NotConverged {
+        /// Iterations taken.
+        iterations: usize,
+        /// Largest leg-length error reached, metres.
+        residual: f64,
+    },
+    /// Neither a Newton nor a damped step could reduce the residual.
+    #[error(
+        "forward kinematics stalled at a singular pose: {iterations} iterations, leg-length residual {residual:.3e} m"
+    )]
+    Singular {
+        /// Iterations taken.
+        iterations: usize,
+        /// Largest leg-length error reached, metres.
+        residual: f64,
+    },
+}
+
+fn coordinates(p: &Pose) -> Vector6<f64> {
+    Vector6::new(
+        p.position.x,
+        p.position.y,
+        p.position.z,
+        p.roll.radians(),
+        p.pitch.radians(),
+        p.yaw.radians(),
+    )
+}
+
+fn pose_of(x: &Vector6<f64>) -> Pose {
+    Pose::new(
+        Vector3::new(x[0], x[1], x[2]),
+        Angle::from_radians(x[3]),
+        Angle::from_radians(x[4]),
+        Angle::from_radians(x[5]),
+    )
+}
+
+/// The elementary rotations about x, y, z by `angles` and their derivatives with respect
+/// to each angle, from one sine/cosine per angle.
+fn rotations_and_derivatives(angles: [f64; 3]) -> ([Matrix3<f64>; 3], [Matrix3<f64>; 3]) {
+    let [(sx, cx), (sy, cy), (sz, cz)] = angles.map(f64::sin_cos);
+    let rot = [
+        Matrix3::new(1.0, 0.0, 0.0, 0.0, cx, -sx, 0.0, sx, cx),
+        Matrix3::new(cy, 0.0, sy, 0.0, 1.0, 0.0, -sy, 0.0, cy),
+        Matrix3::new(cz, -sz, 0.0, sz, cz, 0.0, 0.0, 0.0, 1.0),
+    ];
+    let d = [
+        Matrix3::new(0.0, 0.0, 0.0, 0.0, -sx, -cx, 0.0, cx, -sx),
+        Matrix3::new(-sy, 0.0, cy, 0.0, 0.0, 0.0, -cy, 0.0, -sy),
+        Matrix3::new(-sz, -cz, 0.0, cz, -sz, 0.0, 0.0, 0.0, 0.0),
+    ];
+    (rot, d)
+}
+
+impl Geometry {
+    /// Residual `L(x) − target` and its derivative `∂L/∂x` at pose coordinates `x`.
+    fn residual_and_derivative(
+        &self,
+        x: &Vector6<f64>,
+        target: &[f64; 6],
+    ) -> (Vector6<f64>, Matrix6<f64>) {
+        let ([rx, ry, rz], [dx, dy, dz]) = rotations_and_derivatives([x[3], x[4], x[5]]);
+        let rzy = rz * ry;
+        let r = rzy * rx;
+        let dr = [rzy * dx, rz * dy * rx, dz * ry * rx];
+        let position = Vector3::new(x[0], x[1], x[2]);
+        let c = self.pivot();
+        let mut f = Vector6::zeros();
+        let mut d = Matrix6::zeros();
+        for i in 0..6 {
+            let arm = self.platform_joints()[i] - c;
+            let leg = position + c + r * arm - self.base_joints()[i];
+            let length = leg.norm();
+            let u = leg / length;
+            f[i] = length - target[i];
+            for k in 0..3 {
+                d[(i, k)] = u[k];
+                d[(i, 3 + k)] = u.dot(&(dr[k] * arm));
+            }
+        }
+        (f, d)
+    }
+
+    /// Validate leg lengths against the stroke.
+    pub fn check_lengths(&self, lengths: &[f64; 6]) -> Result<(), ForwardError> {
+        let stroke = self.stroke();
+        for (i, &l) in lengths.iter().enumerate() {
+            if !(l.is_finite() && l > 0.0) {
+                return Err(ForwardError::InvalidLength {
+                    leg: i + 1,
+                    value: l,
+                });
+            }
+            if stroke.violation(l).is_some() {
+                return Err(ForwardError::OutsideStroke {
+                    leg: i + 1,
+                    length: l,
+                    min: stroke.min.unwrap_or(0.0),
+                    max: stroke.max.unwrap_or(f64::INFINITY),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The pose with leg lengths `lengths`, searched from `start`.
+    pub fn forward(
+        &self,
+        lengths: &[f64; 6],
+        start: &Pose,
+        options: &ForwardOptions,
+    ) -> Result<ForwardSolution, ForwardError> {
+        self.check_lengths(lengths)?;
+        self.forward_unchecked(lengths, start, options)
+    }
+
+    /// [`Geometry::forward`] without the stroke check (for searches that may pass through any length).
+    pub(crate) fn forward_unchecked(
+        &self,
+        lengths: &[f64; 6],
+        start: &Pose,
+        options: &ForwardOptions,
+    ) -> Result<ForwardSolution, ForwardError> {
+        let mut x = coordinates(start);
+        let mut lambda: f64 = 1e-3;
+        let mut iterations = 0;
+        let (mut f, mut d) = self.residual_and_derivative(&x, lengths);
+        loop {
+            let residual = f.amax();
+            if !residual.is_finite() {
+                return Err(ForwardError::NotConverged {
+                    iterations,
+                    residual,
+                });
+            }
+            if residual <= options.tolerance {
+                return Ok(ForwardSolution {
+                    pose: pose_of(&x),
+                    iterations,
+                    residual,
+                });
+            }
+            if iterations == options.max_iterations {
+                return Err(ForwardError::NotConverged {
+                    iterations,
+                    residual,
+                });
+            }
+            iterations += 1;
+            let cost = f.norm_squared();
+            // Newton step with backtracking; the accepted point's residual and derivative
+            // are those of the next iteration.
+            if let Some(step) = d.lu().solve(&(-f))
+                && step.iter().all(|v| v.is_finite())
+                && let Some(next) = self.line_search(&x, &step, lengths, cost)
+            {
+                (x, f, d) = next;
+                lambda = (lambda * 0.3).max(1e-12);
+                continue;
+            }
+            // Levenberg–Marquardt: increase the damping until the cost decreases.
+            let g = d.transpose() * f;
+            let h = d.transpose() * d;
+            let mut improved = false;
+            for _ in 0..30 {
+                let damped = h + Matrix6::identity() * (lambda * (1.0 + h.diagonal().amax()));
+                if let Some(step) = damped.cholesky().map(|c| c.solve(&(-g))) {
+                    let candidate = x + step;
+                    let (fc, dc) = self.residual_and_derivative(&candidate, lengths);
+                    if fc.norm_squared() < cost {
+                        (x, f, d) = (candidate, fc, dc);
+                        improved = true;
+                        break;
+                    }
+                }
+                lambda *= 10.0;
+            }
+            if !improved {
+                return Err(ForwardError::Singular {
+                    iterations,
+                    residual,
+                });
+            }
+        }
+    }
+
+    /// Backtracking along `step` until the cost drops by the Armijo fraction; returns the
+    /// accepted point with its residual and derivative.
+    fn line_search(
+        &self,
+        x: &Vector6<f64>,
+        step: &Vector6<f64>,
+        lengths: &[f64; 6],
+        cost: f64,
+    ) -> Option<(Vector6<f64>, Vector6<f64>, Matrix6<f64>)> {
+        let mut alpha = 1.0;
+        while alpha > 1e-4 {
+            let candidate = x + step * alpha;
+            let (f, d) = self.residual_and_derivative(&candidate, lengths);
+            let c = f.norm_squared();
+            // Full Newton steps reduce the cost by ~2α·cost; ask for 1e-4 of that.
+            if c <= cost * (1.0 - 2e-4 * alpha) || c == 0.0 {
+                return Some((candidate, f, d));
+            }
+            alpha *= 0.5;
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests;
