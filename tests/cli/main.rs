@@ -2,6 +2,7 @@
 //! prints, writes and returns.
 
 mod check;
+mod fk;
 mod solve;
 
 use std::path::Path;

@@ -22,6 +22,8 @@ pub enum Command {
     /// Check a scenario's motion: rigid-body consistency, stroke limits, leg-length jumps.
     /// Exit status 0 when nothing is found, 1 when a problem is found, 2 for unusable input.
     Check(CheckArgs),
+    /// Forward kinematics: poses from a table of leg lengths, as CSV.
+    Fk(FkArgs),
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset).
@@ -67,4 +69,25 @@ pub struct CheckArgs {
     /// Report format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
+}
+
+/// Arguments of `stewart fk`.
+#[derive(Debug, Args)]
+pub struct FkArgs {
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Leg lengths: a CSV with columns L1..L6 (metres) and optionally t; other columns are
+    /// ignored; `-` reads standard input.
+    #[arg(long, value_name = "LEGS.csv")]
+    pub legs: PathBuf,
+    /// Write the CSV here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Start every row from the home pose instead of the previous row's pose.
+    #[arg(long)]
+    pub cold: bool,
+    /// List every assembly mode the search finds for each row (a `mode` column numbers
+    /// them, highest platform first) instead of following one branch.
+    #[arg(long, conflicts_with = "cold")]
+    pub assembly_modes: bool,
 }

@@ -5,6 +5,7 @@
 
 mod cli;
 mod commands;
+mod csv_io;
 mod output;
 mod source;
 
@@ -19,6 +20,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Solve(args)) => commands::solve::run(&args),
         Some(Command::Check(args)) => commands::check::run(&args),
+        Some(Command::Fk(args)) => commands::fk::run(&args),
         None => commands::no_command(),
     };
     match result {

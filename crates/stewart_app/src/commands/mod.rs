@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod check;
+pub mod fk;
 pub mod solve;
 
 use std::process::ExitCode;

@@ -1,0 +1,112 @@
+//! `stewart fk`: poses from leg lengths.
+
+use std::process::ExitCode;
+
+use anyhow::{Result, anyhow};
+use stewart_kinematics::forward::assembly::canonical;
+use stewart_kinematics::table::NumericTable;
+use stewart_kinematics::{ForwardOptions, ForwardSolution};
+
+use crate::cli::FkArgs;
+use crate::csv_io::{CsvText, read_input};
+use crate::output;
+use crate::source;
+
+const LEG_COLUMNS: [&str; 6] = ["L1", "L2", "L3", "L4", "L5", "L6"];
+const POSE_OUT: [&str; 8] = [
+    "x",
+    "y",
+    "z",
+    "roll_deg",
+    "pitch_deg",
+    "yaw_deg",
+    "iterations",
+    "residual",
+];
+
+/// Run the command.
+pub fn run(args: &FkArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    let geometry = &scenario.geometry;
+    // Read the table first, so that a bad file is reported whatever the geometry.
+    let (table, file) = read_input(&args.legs, |r, name| {
+        Ok((
+            NumericTable::read(r, name, &LEG_COLUMNS, &["t"])?,
+            name.to_owned(),
+        ))
+    })?;
+    let t_index = table.index("t");
+    let lengths: Vec<[f64; 6]> = table
+        .rows
+        .iter()
+        .map(|r| std::array::from_fn(|i| r.values[i]))
+        .collect();
+
+    let architecture = geometry.architecture();
+    if architecture.singular {
+        return Err(anyhow!(
+            "scenario `{}`: the pose is not determined by the leg lengths, so forward kinematics has no answer. {}",
+            scenario.name,
+            architecture.explanation()
+        ));
+    }
+
+    let mut header: Vec<&str> = Vec::new();
+    if t_index.is_some() {
+        header.push("t");
+    }
+    if args.assembly_modes {
+        header.push("mode");
+    }
+    header.extend(POSE_OUT);
+    let mut csv = CsvText::with_header(&header);
+    let time = |k: usize| t_index.map(|i| table.rows[k].values[i]);
+
+    if args.assembly_modes {
+        for (k, row) in lengths.iter().enumerate() {
+            let modes = geometry
+                .assembly_modes(row)
+                .map_err(|e| anyhow!("{file}, line {}: {e}", table.rows[k].line))?;
+            for (m, s) in modes.iter().enumerate() {
+                csv.row(
+                    time(k)
+                        .into_iter()
+                        .chain([(m + 1) as f64])
+                        .chain(pose_values(s)),
+                );
+            }
+        }
+    } else {
+        let sequence = geometry
+            .forward_sequence(&lengths, args.cold, &ForwardOptions::default())
+            .map_err(|e| anyhow!("{file}, line {}: {}", table.rows[e.index].line, e.error))?;
+        for change in &sequence.branch_changes {
+            eprintln!(
+                "warning: {file}, line {}: the solution moved to another assembly branch (det J changed sign from {:.3e} to {:.3e})",
+                table.rows[change.index].line, change.det_before, change.det_after
+            );
+        }
+        for (k, s) in sequence.solutions.iter().enumerate() {
+            csv.row(time(k).into_iter().chain(pose_values(s)));
+        }
+    }
+    output::emit(args.out.as_deref(), csv.into_string().as_bytes())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `x, y, z, roll_deg, pitch_deg, yaw_deg, iterations, residual` of a solution, angles in
+/// their principal ranges.
+fn pose_values(s: &ForwardSolution) -> [f64; 8] {
+    let p = canonical(&s.pose);
+    let [r, pi, y] = p.rpy_degrees();
+    [
+        p.position.x,
+        p.position.y,
+        p.position.z,
+        r,
+        pi,
+        y,
+        s.iterations as f64,
+        s.residual,
+    ]
+}
