@@ -24,10 +24,12 @@ pub mod geometry;
 pub mod inverse;
 pub mod jacobian;
 pub mod layout;
+pub mod limits;
 pub mod pose;
 pub mod scenario;
 pub mod table;
 pub mod trajectory;
+pub mod workspace;
 
 pub use angle::Angle;
 pub use batch::BatchSolver;
@@ -37,6 +39,7 @@ pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits}
 pub use inverse::LegSolution;
 pub use jacobian::Conditioning;
 pub use layout::Layout;
+pub use limits::Limits;
 pub use pose::Pose;
 pub use scenario::{Scenario, ScenarioError};
 pub use trajectory::{Motion, Samples, Sampling, Trajectory};

@@ -24,6 +24,8 @@ pub struct CheckSettings {
     pub jump_ratio: f64,
     /// … and larger than this, metres (steps below it are never jumps).
     pub jump_floor: f64,
+    /// A pose whose normalised condition number exceeds this is near-singular.
+    pub condition_max: f64,
 }
 
 impl Default for CheckSettings {
@@ -32,6 +34,7 @@ impl Default for CheckSettings {
             rigid_tolerance: 1e-9,
             jump_ratio: 5.0,
             jump_floor: 1e-4,
+            condition_max: 30.0,
         }
     }
 }

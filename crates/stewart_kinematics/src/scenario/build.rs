@@ -9,12 +9,13 @@ use toml::Spanned;
 use super::Scenario;
 use super::error::{ScenarioError, ScenarioProblem};
 use super::file::{
-    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LinearChannelFile, PivotFile,
-    ScenarioFile, TrajectoryFile, TrajectoryKind,
+    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile, LinearChannelFile,
+    PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::angle::Angle;
 use crate::checks::CheckSettings;
 use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
+use crate::limits::Limits;
 use crate::pose::Pose;
 use crate::trajectory::{
     Channel, Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Motion, PoseTable,
@@ -92,6 +93,7 @@ pub(super) fn parse(
         None => Motion::seed(geometry.home_height()),
     };
     let checks = build_checks(&src, parsed.checks.as_ref())?;
+    let limits = build_limits(&src, parsed.limits.as_ref())?;
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
             .file_stem()
@@ -102,6 +104,7 @@ pub(super) fn parse(
         description: parsed.description.unwrap_or_default(),
         geometry,
         motion,
+        limits,
         checks,
     })
 }
@@ -203,7 +206,43 @@ fn build_checks(src: &Source, c: Option<&ChecksFile>) -> Result<CheckSettings, S
         &c.jump_floor_m,
         &mut settings.jump_floor,
     )?;
+    positive(
+        "checks.condition_max",
+        &c.condition_max,
+        &mut settings.condition_max,
+    )?;
     Ok(settings)
+}
+
+fn build_limits(src: &Source, l: Option<&LimitsFile>) -> Result<Limits, ScenarioError> {
+    let Some(l) = l else {
+        return Ok(Limits::default());
+    };
+    let positive = |field: &str, v: &Option<Spanned<f64>>| -> Result<Option<f64>, ScenarioError> {
+        let Some(v) = v else { return Ok(None) };
+        let x = src.finite(field, v)?;
+        if x <= 0.0 {
+            return Err(src.invalid(Some(v.span()), field, format!("must be positive, got {x}")));
+        }
+        Ok(Some(x))
+    };
+    let cone = |field: &str, v: &Option<Spanned<f64>>| -> Result<Option<Angle>, ScenarioError> {
+        let Some(deg) = positive(field, v)? else {
+            return Ok(None);
+        };
+        if deg >= 180.0 {
+            let span = v.as_ref().map(Spanned::span);
+            return Err(src.invalid(span, field, format!("must be less than 180°, got {deg}")));
+        }
+        Ok(Some(Angle::from_degrees(deg)))
+    };
+    Ok(Limits {
+        leg_speed_max: positive("limits.leg_speed_max_m_s", &l.leg_speed_max_m_s)?,
+        leg_accel_max: positive("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2)?,
+        base_cone: cone("limits.base_cone_deg", &l.base_cone_deg)?,
+        platform_cone: cone("limits.platform_cone_deg", &l.platform_cone_deg)?,
+        leg_radius: positive("limits.leg_radius_m", &l.leg_radius_m)?,
+    })
 }
 
 /// The keys each trajectory kind uses, beyond `kind`, `start_s`, `duration_s` and `samples`.

@@ -24,7 +24,25 @@ pub(crate) struct ScenarioFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub trajectory: Option<Spanned<TrajectoryFile>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limits: Option<LimitsFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checks: Option<ChecksFile>,
+}
+
+/// `[limits]`: actuator and joint limits beyond the stroke.
+#[derive(Debug, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct LimitsFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leg_speed_max_m_s: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leg_accel_max_m_s2: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base_cone_deg: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub platform_cone_deg: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leg_radius_m: Option<Spanned<f64>>,
 }
 
 /// `[geometry]`: exactly the keys the product specifies.
@@ -187,4 +205,6 @@ pub(crate) struct ChecksFile {
     pub jump_ratio: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub jump_floor_m: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub condition_max: Option<Spanned<f64>>,
 }

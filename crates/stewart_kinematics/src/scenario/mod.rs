@@ -16,6 +16,8 @@
 //! kind = "sinusoid"                # sinusoid | circle | figure8 | helix | sway | keyframes | pose_table
 //! duration_s = 10.0
 //! samples = 1001
+//! [limits]                         # optional: speed, acceleration, joint cones, leg size
+//! leg_speed_max_m_s = 0.5
 //! [checks]                         # optional thresholds
 //! jump_ratio = 5.0
 //! ```
@@ -34,6 +36,7 @@ pub use error::{ScenarioError, ScenarioProblem};
 
 use crate::checks::CheckSettings;
 use crate::geometry::Geometry;
+use crate::limits::Limits;
 use crate::trajectory::Motion;
 
 /// A platform, its motion and the check thresholds: everything a run needs.
@@ -47,6 +50,8 @@ pub struct Scenario {
     pub geometry: Geometry,
     /// The motion and its sampling.
     pub motion: Motion,
+    /// Actuator and joint limits beyond the stroke.
+    pub limits: Limits,
     /// Thresholds of the checks.
     pub checks: CheckSettings,
 }
@@ -59,6 +64,7 @@ impl Scenario {
             name: "seed".to_owned(),
             description: "The seed article's platform and motion.".to_owned(),
             motion: Motion::seed(geometry.home_height()),
+            limits: Limits::default(),
             geometry,
             checks: CheckSettings::default(),
         }

@@ -4,8 +4,8 @@ use toml::Spanned;
 
 use super::Scenario;
 use super::file::{
-    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LinearChannelFile, PivotFile,
-    ScenarioFile, TrajectoryFile, TrajectoryKind,
+    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile, LinearChannelFile,
+    PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::trajectory::{Channel, Trajectory};
 
@@ -113,6 +113,14 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         }
     };
     t.kind = Some(s(kind));
+    let l = &scenario.limits;
+    let limits = LimitsFile {
+        leg_speed_max_m_s: l.leg_speed_max.map(s),
+        leg_accel_max_m_s2: l.leg_accel_max.map(s),
+        base_cone_deg: l.base_cone.map(|a| s(a.degrees())),
+        platform_cone_deg: l.platform_cone.map(|a| s(a.degrees())),
+        leg_radius_m: l.leg_radius.map(s),
+    };
     let c = &scenario.checks;
     let file = ScenarioFile {
         name: Some(scenario.name.clone()),
@@ -120,10 +128,12 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         geometry,
         pivot,
         trajectory: Some(s(t)),
+        limits: (*l != crate::limits::Limits::default()).then_some(limits),
         checks: Some(ChecksFile {
             rigid_tolerance_m: Some(s(c.rigid_tolerance)),
             jump_ratio: Some(s(c.jump_ratio)),
             jump_floor_m: Some(s(c.jump_floor)),
+            condition_max: Some(s(c.condition_max)),
         }),
     };
     // Serialising plain numbers, strings and tables cannot fail.

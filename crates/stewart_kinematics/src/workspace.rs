@@ -1,0 +1,381 @@
+//! The reachable workspace: positions reachable at a fixed orientation, and the range of
+//! orientations reachable at a position, under the stroke and the pose limits.
+//!
+//! **Method (constant orientation).** With the rotation fixed, leg `i`'s length is the
+//! distance from the platform position `p` to the fixed point `−d_i` (where
+//! `d_i = c + R(a_i − c) − b_i`), so the stroke confines `p` to a spherical shell.
+//! The `xy` plane is divided into `N × N` columns; in each column the shells' `z`
+//! intervals are found in closed form and intersected (above the base plane), so each
+//! column's reachable height is exact and only the `xy` discretisation errs. The volume
+//! is the sum of column heights times the column area. Its error is estimated by
+//! Richardson's idea: the same sum on an `N/2` grid; the difference (which overstates
+//! the error of the finer grid) is reported as the error bound.
+//!
+//! When cone-angle or collision limits are set, each column's intervals are further
+//! sampled in `z` at the column spacing and only the allowed samples count, so the
+//! result is then a sampled (not exact-in-`z`) estimate.
+
+use nalgebra::Vector3;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::angle::Angle;
+use crate::geometry::Geometry;
+use crate::limits::Limits;
+use crate::pose::Pose;
+
+/// Why a workspace cannot be computed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum WorkspaceError {
+    /// Without both stroke limits the workspace is unbounded or meaningless.
+    #[error("the workspace needs both stroke limits (`leg_min` and `leg_max` in [geometry])")]
+    NoStroke,
+    /// Resolution out of range.
+    #[error("the resolution must be between 2 and {max} columns per side, got {got}")]
+    Resolution {
+        /// The value asked for.
+        got: usize,
+        /// The largest allowed.
+        max: usize,
+    },
+}
+
+/// Largest resolution (columns per side): 16 million columns.
+pub const MAX_RESOLUTION: usize = 4096;
+
+/// At most this many separate reachable `z` intervals per column (each shell contributes
+/// at most two, and intervals only split where shells cut them).
+const MAX_SPANS: usize = 8;
+
+/// The reachable positions at one orientation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ConstantOrientationWorkspace {
+    /// Roll, pitch, yaw of the platform.
+    pub orientation: [Angle; 3],
+    /// Columns per side of the `xy` grid.
+    pub resolution: usize,
+    /// Column spacing, metres.
+    pub cell: f64,
+    /// Reachable volume, m³.
+    pub volume: f64,
+    /// Error bound of the volume, m³ (difference from the half-resolution grid).
+    pub volume_error: f64,
+    /// `[[x_min, x_max], [y_min, y_max], [z_min, z_max]]` of the reachable set, metres
+    /// (column centres in `x`, `y`; exact interval ends in `z`), or `None` when empty.
+    pub extent: Option<[[f64; 2]; 3]>,
+    /// Reachable spans `(x, y, z_low, z_high)`, one per interval of each column.
+    pub spans: Vec<[f64; 4]>,
+}
+
+/// Geometry constants of one orientation.
+struct Shells {
+    /// Shell centres `−d_i`.
+    centres: [Vector3<f64>; 6],
+    min_sq: f64,
+    max_sq: f64,
+    max: f64,
+}
+
+impl Shells {
+    fn new(geometry: &Geometry, rotation: &nalgebra::Matrix3<f64>, min: f64, max: f64) -> Self {
+        let c = geometry.pivot();
+        let centres = std::array::from_fn(|i| {
+            let d = c + rotation * (geometry.platform_joints()[i] - c) - geometry.base_joints()[i];
+            -d
+        });
+        Self {
+            centres,
+            min_sq: min * min,
+            max_sq: max * max,
+            max,
+        }
+    }
+
+    /// The `xy` box outside which no shell intersection can lie.
+    fn xy_bounds(&self) -> Option<[[f64; 2]; 2]> {
+        let mut b = [[f64::NEG_INFINITY, f64::INFINITY]; 2];
+        for c in &self.centres {
+            for k in 0..2 {
+                b[k][0] = b[k][0].max(c[k] - self.max);
+                b[k][1] = b[k][1].min(c[k] + self.max);
+            }
+        }
+        (b[0][0] < b[0][1] && b[1][0] < b[1][1]).then_some(b)
+    }
+
+    /// Reachable `z` intervals (above the base plane) of the column at `(x, y)`.
+    fn column(&self, x: f64, y: f64, out: &mut [(f64, f64); MAX_SPANS]) -> usize {
+        let mut n = 1;
+        out[0] = (0.0, f64::INFINITY);
+        for c in &self.centres {
+            let h2 = (x - c.x) * (x - c.x) + (y - c.y) * (y - c.y);
+            let top = self.max_sq - h2;
+            if top < 0.0 {
+                return 0;
+            }
+            let hi = top.sqrt();
+            let inner = self.min_sq - h2;
+            // This shell allows z − c_z in [−hi, −lo] ∪ [lo, hi], one interval when the
+            // column misses the inner sphere.
+            let allowed = if inner > 0.0 {
+                let lo = inner.sqrt();
+                [(c.z - hi, c.z - lo), (c.z + lo, c.z + hi)]
+            } else {
+                [(c.z - hi, c.z + hi), (0.0, 0.0)]
+            };
+            let mut next = [(0.0, 0.0); MAX_SPANS];
+            let mut m = 0;
+            for &(a0, a1) in &out[..n] {
+                for &(b0, b1) in &allowed {
+                    let (s0, s1) = (a0.max(b0), a1.min(b1));
+                    if s0 < s1 && m < MAX_SPANS {
+                        next[m] = (s0, s1);
+                        m += 1;
+                    }
+                }
+            }
+            *out = next;
+            n = m;
+            if n == 0 {
+                return 0;
+            }
+        }
+        n
+    }
+}
+
+/// Column spacing and origin of an `n × n` grid over `bounds`.
+fn grid(bounds: &[[f64; 2]; 2], n: usize) -> (f64, f64, f64) {
+    let side = (bounds[0][1] - bounds[0][0]).max(bounds[1][1] - bounds[1][0]);
+    let cell = side / n as f64;
+    let x0 = 0.5 * (bounds[0][0] + bounds[0][1]) - 0.5 * side;
+    let y0 = 0.5 * (bounds[1][0] + bounds[1][1]) - 0.5 * side;
+    (cell, x0, y0)
+}
+
+/// Volume only, for the error estimate.
+fn volume_on_grid(shells: &Shells, bounds: &[[f64; 2]; 2], n: usize) -> f64 {
+    let (cell, x0, y0) = grid(bounds, n);
+    let height: f64 = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let x = x0 + (i as f64 + 0.5) * cell;
+            let mut spans = [(0.0, 0.0); MAX_SPANS];
+            let mut sum = 0.0;
+            for j in 0..n {
+                let y = y0 + (j as f64 + 0.5) * cell;
+                let k = shells.column(x, y, &mut spans);
+                sum += spans[..k].iter().map(|(a, b)| b - a).sum::<f64>();
+            }
+            sum
+        })
+        .sum();
+    height * cell * cell
+}
+
+impl Geometry {
+    /// Whether `pose` keeps every leg within its stroke and respects `limits`.
+    pub fn pose_within_limits(&self, limits: &Limits, pose: &Pose) -> bool {
+        let solution = self.inverse(pose);
+        let stroke = self.stroke();
+        solution
+            .lengths
+            .iter()
+            .all(|&l| stroke.violation(l).is_none())
+            && limits.pose_allowed(pose, &solution)
+    }
+
+    /// The positions reachable at orientation `[roll, pitch, yaw]`, on an
+    /// `resolution × resolution` grid of columns (see the module docs).
+    pub fn constant_orientation_workspace(
+        &self,
+        limits: &Limits,
+        orientation: [Angle; 3],
+        resolution: usize,
+    ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
+        let (Some(min), Some(max)) = (self.stroke().min, self.stroke().max) else {
+            return Err(WorkspaceError::NoStroke);
+        };
+        if !(2..=MAX_RESOLUTION).contains(&resolution) {
+            return Err(WorkspaceError::Resolution {
+                got: resolution,
+                max: MAX_RESOLUTION,
+            });
+        }
+        let [roll, pitch, yaw] = orientation;
+        let rotation = crate::pose::rotation_zyx(roll, pitch, yaw);
+        let shells = Shells::new(self, &rotation, min, max);
+        let empty = ConstantOrientationWorkspace {
+            orientation,
+            resolution,
+            cell: 0.0,
+            volume: 0.0,
+            volume_error: 0.0,
+            extent: None,
+            spans: Vec::new(),
+        };
+        let Some(bounds) = shells.xy_bounds() else {
+            return Ok(empty);
+        };
+        let (cell, x0, y0) = grid(&bounds, resolution);
+        let pose_limits = limits.has_pose_limits();
+        let rows: Vec<Vec<[f64; 4]>> = (0..resolution)
+            .into_par_iter()
+            .map(|i| {
+                let x = x0 + (i as f64 + 0.5) * cell;
+                let mut spans = [(0.0, 0.0); MAX_SPANS];
+                let mut row = Vec::new();
+                for j in 0..resolution {
+                    let y = y0 + (j as f64 + 0.5) * cell;
+                    let k = shells.column(x, y, &mut spans);
+                    for &(z0, z1) in &spans[..k] {
+                        if pose_limits {
+                            self.sample_span(
+                                limits,
+                                [roll, pitch, yaw],
+                                x,
+                                y,
+                                z0,
+                                z1,
+                                cell,
+                                &mut row,
+                            );
+                        } else {
+                            row.push([x, y, z0, z1]);
+                        }
+                    }
+                }
+                row
+            })
+            .collect();
+        let spans: Vec<[f64; 4]> = rows.into_iter().flatten().collect();
+        let volume = spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell;
+        let coarse = if pose_limits {
+            // The sampled estimate's own error is about one sample per span end.
+            spans.len() as f64 * cell * cell * cell
+        } else {
+            (volume - volume_on_grid(&shells, &bounds, (resolution / 2).max(1))).abs()
+        };
+        let extent = (!spans.is_empty()).then(|| {
+            let mut e = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
+            for s in &spans {
+                e[0] = [e[0][0].min(s[0]), e[0][1].max(s[0])];
+                e[1] = [e[1][0].min(s[1]), e[1][1].max(s[1])];
+                e[2] = [e[2][0].min(s[2]), e[2][1].max(s[3])];
+            }
+            e
+        });
+        Ok(ConstantOrientationWorkspace {
+            cell,
+            volume,
+            volume_error: coarse,
+            extent,
+            spans,
+            ..empty
+        })
+    }
+
+    /// Split the stroke-reachable span `[z0, z1]` of a column into runs of `z` samples
+    /// (spacing `dz`) that also respect the pose limits.
+    #[allow(clippy::too_many_arguments)]
+    fn sample_span(
+        &self,
+        limits: &Limits,
+        rpy: [Angle; 3],
+        x: f64,
+        y: f64,
+        z0: f64,
+        z1: f64,
+        dz: f64,
+        out: &mut Vec<[f64; 4]>,
+    ) {
+        let count = ((z1 - z0) / dz).ceil().max(1.0) as usize;
+        let step = (z1 - z0) / count as f64;
+        let mut run: Option<f64> = None;
+        for k in 0..count {
+            let z = z0 + (k as f64 + 0.5) * step;
+            let pose = Pose::new(Vector3::new(x, y, z), rpy[0], rpy[1], rpy[2]);
+            let solution = self.inverse(&pose);
+            let ok = limits.pose_allowed(&pose, &solution);
+            match (ok, run) {
+                (true, None) => run = Some(z0 + k as f64 * step),
+                (false, Some(start)) => {
+                    out.push([x, y, start, z0 + k as f64 * step]);
+                    run = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(start) = run {
+            out.push([x, y, start, z1]);
+        }
+    }
+
+    /// The range of one angle (others held at the given values) reachable at `pose`'s
+    /// position, searched outward from the pose's own angle in steps of `step` and refined
+    /// by bisection; `None` when the pose itself is not reachable.
+    pub fn orientation_range(
+        &self,
+        limits: &Limits,
+        pose: &Pose,
+        axis: Axis,
+        span: Angle,
+        step: Angle,
+    ) -> Option<[Angle; 2]> {
+        let with = |a: Angle| {
+            let mut p = *pose;
+            match axis {
+                Axis::Roll => p.roll = a,
+                Axis::Pitch => p.pitch = a,
+                Axis::Yaw => p.yaw = a,
+            }
+            self.pose_within_limits(limits, &p)
+        };
+        let centre = match axis {
+            Axis::Roll => pose.roll,
+            Axis::Pitch => pose.pitch,
+            Axis::Yaw => pose.yaw,
+        };
+        if !with(centre) {
+            return None;
+        }
+        let edge = |direction: f64| {
+            let mut inside = centre;
+            let mut k = 1.0;
+            loop {
+                let a = centre + step * (k * direction);
+                if (a - centre).radians().abs() > span.radians() {
+                    return centre + span * direction;
+                }
+                if !with(a) {
+                    // Bisect between the last reachable and the first unreachable angle.
+                    let (mut lo, mut hi) = (inside, a);
+                    for _ in 0..40 {
+                        let mid = Angle::from_radians(0.5 * (lo.radians() + hi.radians()));
+                        if with(mid) { lo = mid } else { hi = mid }
+                    }
+                    return lo;
+                }
+                inside = a;
+                k += 1.0;
+            }
+        };
+        Some([edge(-1.0), edge(1.0)])
+    }
+}
+
+/// One of the three Euler angles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Axis {
+    /// Rotation about x.
+    Roll,
+    /// Rotation about y.
+    Pitch,
+    /// Rotation about z.
+    Yaw,
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,177 @@
+use super::*;
+use crate::geometry::{GeometryParams, StrokeLimits};
+use crate::layout::Layout;
+
+fn paired() -> Geometry {
+    let mut p = GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0));
+    p.stroke = StrokeLimits::new(0.55, 1.30);
+    Geometry::new(p).unwrap_or_else(|e| panic!("{e}"))
+}
+
+const LEVEL: [Angle; 3] = [Angle::ZERO; 3];
+
+#[test]
+fn volume_agrees_with_an_independent_monte_carlo_estimate() {
+    let g = paired();
+    let ws = g
+        .constant_orientation_workspace(&Limits::default(), LEVEL, 400)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let [ex, ey, ez] = ws.extent.unwrap_or_else(|| panic!("empty"));
+    // Uniform samples in a box around the extent, tested with plain inverse kinematics.
+    let pad = 0.05;
+    let lo = [ex[0] - pad, ey[0] - pad, 0.0];
+    let hi = [ex[1] + pad, ey[1] + pad, ez[1] + pad];
+    let box_volume: f64 = (0..3).map(|k| hi[k] - lo[k]).product();
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut uniform = || {
+        // xorshift64*: a fixed, dependency-free sequence.
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        (state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let n = 200_000;
+    let mut inside = 0;
+    for _ in 0..n {
+        let p = [0, 1, 2].map(|k| lo[k] + (hi[k] - lo[k]) * uniform());
+        if g.pose_within_limits(
+            &Limits::default(),
+            &Pose::level_at(0.0).with_position(Vector3::from(p)),
+        ) {
+            inside += 1;
+        }
+    }
+    let fraction = inside as f64 / n as f64;
+    let mc = fraction * box_volume;
+    let sigma = (fraction * (1.0 - fraction) / n as f64).sqrt() * box_volume;
+    assert!(
+        (mc - ws.volume).abs() < 4.0 * sigma + ws.volume_error,
+        "mc {mc} ± {sigma}, grid {} ± {}",
+        ws.volume,
+        ws.volume_error
+    );
+}
+
+#[test]
+fn volume_converges_as_the_resolution_rises() {
+    let g = paired();
+    let v: Vec<f64> = [50, 100, 200, 400, 800]
+        .iter()
+        .map(|&n| {
+            g.constant_orientation_workspace(&Limits::default(), LEVEL, n)
+                .unwrap_or_else(|e| panic!("{e}"))
+                .volume
+        })
+        .collect();
+    let d: Vec<f64> = v.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    // Differences shrink (boundary cells dominate: roughly halving per doubling).
+    assert!(d[3] < d[1] && d[2] < d[0], "{v:?}");
+    assert!(d[3] / v[4] < 2e-3, "{v:?}");
+}
+
+#[test]
+fn spans_are_reachable_inside_and_end_at_the_stroke() {
+    let g = paired();
+    let rpy = [
+        Angle::from_degrees(3.0),
+        Angle::from_degrees(-2.0),
+        Angle::from_degrees(10.0),
+    ];
+    let ws = g
+        .constant_orientation_workspace(&Limits::default(), rpy, 60)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(!ws.spans.is_empty());
+    let stroke = g.stroke();
+    for s in ws.spans.iter().step_by(7) {
+        let at = |z: f64| Pose::new(Vector3::new(s[0], s[1], z), rpy[0], rpy[1], rpy[2]);
+        assert!(g.pose_within_limits(&Limits::default(), &at(0.5 * (s[2] + s[3]))));
+        // At the upper end some leg is exactly at a stroke limit.
+        let lengths = g.leg_lengths(&at(s[3]));
+        let at_limit = lengths.iter().any(|&l| {
+            (l - stroke.max.unwrap_or(0.0)).abs() < 1e-9
+                || (l - stroke.min.unwrap_or(0.0)).abs() < 1e-9
+        });
+        assert!(at_limit, "{lengths:?}");
+    }
+}
+
+#[test]
+fn pose_limits_only_shrink_the_workspace() {
+    let g = paired();
+    let free = g
+        .constant_orientation_workspace(&Limits::default(), LEVEL, 80)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let limits = Limits {
+        base_cone: Some(Angle::from_degrees(35.0)),
+        leg_radius: Some(0.02),
+        ..Limits::default()
+    };
+    let limited = g
+        .constant_orientation_workspace(&limits, LEVEL, 80)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(limited.volume < free.volume);
+    assert!(limited.volume > 0.0);
+    for s in limited.spans.iter().step_by(5) {
+        let p = Pose::level_at(0.5 * (s[2] + s[3])).with_position(Vector3::new(
+            s[0],
+            s[1],
+            0.5 * (s[2] + s[3]),
+        ));
+        assert!(g.pose_within_limits(&limits, &p));
+    }
+}
+
+#[test]
+fn no_stroke_or_bad_resolution_is_an_error() {
+    let g = Geometry::seed();
+    assert_eq!(
+        g.constant_orientation_workspace(&Limits::default(), LEVEL, 10),
+        Err(WorkspaceError::NoStroke)
+    );
+    assert!(
+        paired()
+            .constant_orientation_workspace(&Limits::default(), LEVEL, 1)
+            .is_err()
+    );
+}
+
+#[test]
+fn orientation_range_edges_are_sharp() {
+    let g = paired();
+    let pose = g.home_pose();
+    let step = Angle::from_degrees(1.0);
+    for axis in [Axis::Roll, Axis::Pitch, Axis::Yaw] {
+        let [lo, hi] = g
+            .orientation_range(
+                &Limits::default(),
+                &pose,
+                axis,
+                Angle::from_degrees(90.0),
+                step,
+            )
+            .unwrap_or_else(|| panic!("home unreachable"));
+        assert!(
+            lo.degrees() < -1.0 && hi.degrees() > 1.0,
+            "{axis:?}: {lo} {hi}"
+        );
+        let with = |a: Angle| {
+            let mut p = pose;
+            match axis {
+                Axis::Roll => p.roll = a,
+                Axis::Pitch => p.pitch = a,
+                Axis::Yaw => p.yaw = a,
+            }
+            g.pose_within_limits(&Limits::default(), &p)
+        };
+        let eps = Angle::from_degrees(1e-6);
+        for edge in [lo, hi] {
+            if edge.degrees().abs() < 89.9 {
+                let outward = if edge.radians() > 0.0 { eps } else { -eps };
+                assert!(
+                    with(edge) && !with(edge + outward * 10.0),
+                    "{axis:?} edge {edge}"
+                );
+            }
+        }
+    }
+}
