@@ -1,23 +1,73 @@
-//! `stewart check`.
+//! `stewart check`: the pre-flight report.
 
 use crate::{stderr, stdout, stewart, tempdir, write};
 
+const PAIRED: &str = include_str!("../../assets/presets/paired.toml");
+
+fn json(o: &std::process::Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", stdout(o)))
+}
+
 #[test]
-fn the_seed_passes_with_status_0() {
+fn the_seed_is_reported_as_architecturally_singular() {
     let o = stewart(&["check"]);
-    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
     let text = stdout(&o);
     assert!(text.contains("1001 samples"));
-    assert!(text.contains("No problem found"));
+    assert!(
+        text.contains("This geometry is architecturally singular"),
+        "{text}"
+    );
+    assert!(text.contains("paired layout"), "{text}");
+    let doc = json(&stewart(&["check", "--format", "json"]));
+    let findings = doc["findings"].as_array().cloned().unwrap_or_default();
+    assert_eq!(findings.len(), 1, "{findings:?}");
+    assert_eq!(findings[0]["kind"], "architecture_singular");
+    assert_eq!(doc["architecture"]["singular"], true);
+    assert_eq!(doc["architecture"]["projective_correspondence"], true);
+}
+
+#[test]
+fn the_paired_preset_passes_every_limit_with_status_0() {
+    let o = stewart(&["check", "--preset", "paired"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).contains("No problem found."));
+    let doc = json(&stewart(&[
+        "check", "--preset", "paired", "--format", "json",
+    ]));
+    let limits = doc["limits"].as_array().cloned().unwrap_or_default();
+    let kinds: Vec<&str> = limits.iter().filter_map(|l| l["kind"].as_str()).collect();
+    assert_eq!(
+        kinds,
+        [
+            "stroke_max",
+            "stroke_min",
+            "leg_speed",
+            "leg_accel",
+            "base_cone",
+            "platform_cone",
+            "leg_collision",
+            "near_singular"
+        ]
+    );
+    for l in &limits {
+        assert!(l["margin"].as_f64().is_some_and(|m| m > 0.0), "{l}");
+        assert!(
+            l["worst_time"]
+                .as_f64()
+                .is_some_and(|t| (0.0..=10.0).contains(&t))
+        );
+    }
 }
 
 #[test]
 fn a_leg_over_its_stroke_is_located_with_status_1() {
     let dir = tempdir();
-    // Seed motion with a shorter maximum: legs pass 1.15 m somewhere.
-    let text =
-        include_str!("../../assets/presets/seed.toml").replace("leg_max = 1.30", "leg_max = 1.15");
-    let scenario = write(dir.path(), "short.toml", &text);
+    let scenario = write(
+        dir.path(),
+        "short.toml",
+        &PAIRED.replace("leg_max = 1.30", "leg_max = 1.15"),
+    );
     let o = stewart(&["check", "--scenario", &scenario]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let out = stdout(&o);
@@ -28,8 +78,7 @@ fn a_leg_over_its_stroke_is_located_with_status_1() {
 
     let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
     assert_eq!(o.status.code(), Some(1));
-    let doc: serde_json::Value =
-        serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}"));
+    let doc = json(&o);
     assert_eq!(doc["clean"], false);
     assert_eq!(doc["samples"], 1001);
     assert_eq!(doc["leg_max_m"], 1.15);
@@ -37,17 +86,61 @@ fn a_leg_over_its_stroke_is_located_with_status_1() {
     assert!(!findings.is_empty());
     for f in &findings {
         assert_eq!(f["kind"], "stroke_max");
+        assert_eq!(f["unit"], "m");
         let worst = f["worst_value"].as_f64().unwrap_or(0.0);
-        let excess = f["excess"].as_f64().unwrap_or(0.0);
-        assert!((worst - 1.15 - excess).abs() < 1e-12 && excess > 0.0);
+        let margin = f["margin"].as_f64().unwrap_or(0.0);
+        assert!((1.15 - worst - margin).abs() < 1e-12 && margin < 0.0);
         let (first, last) = (
             f["first_time"].as_f64().unwrap_or(-1.0),
             f["last_time"].as_f64().unwrap_or(-1.0),
         );
         assert!((0.0..=10.0).contains(&first) && first <= last);
     }
-    // L1 reaches 1.196 m in the seed motion (see `stewart check`): it must be among them.
-    assert!(findings.iter().any(|f| f["leg"] == 1));
+    // L1 reaches 1.2703 m in the paired motion (see `stewart check --preset paired`).
+    assert!(findings.iter().any(|f| f["legs"][0] == 1));
+}
+
+#[test]
+fn every_kind_of_limit_is_reported_when_passed() {
+    let dir = tempdir();
+    let text = PAIRED
+        .replace("leg_speed_max_m_s = 0.5", "leg_speed_max_m_s = 0.1")
+        .replace("leg_accel_max_m_s2 = 5.0", "leg_accel_max_m_s2 = 0.1")
+        .replace("base_cone_deg = 60.0", "base_cone_deg = 45.0")
+        .replace("platform_cone_deg = 60.0", "platform_cone_deg = 50.0")
+        .replace("leg_radius_m = 0.025", "leg_radius_m = 0.15")
+        + "\n[checks]\ncondition_max = 1.9\n";
+    let scenario = write(dir.path(), "tight.toml", &text);
+    let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let doc = json(&o);
+    let findings = doc["findings"].as_array().cloned().unwrap_or_default();
+    for kind in [
+        "leg_speed",
+        "leg_accel",
+        "base_cone",
+        "platform_cone",
+        "leg_collision",
+        "near_singular",
+    ] {
+        let f = findings
+            .iter()
+            .find(|f| f["kind"] == kind)
+            .unwrap_or_else(|| panic!("no {kind}: {findings:?}"));
+        assert!(f["margin"].as_f64().is_some_and(|m| m < 0.0), "{f}");
+    }
+    let collision = findings
+        .iter()
+        .find(|f| f["kind"] == "leg_collision")
+        .cloned()
+        .unwrap_or_default();
+    assert_eq!(collision["legs"].as_array().map(Vec::len), Some(2));
+    let text = stdout(&stewart(&["check", "--scenario", &scenario]));
+    assert!(text.contains("come closer than 300.0 mm"), "{text}");
+    assert!(
+        text.contains("leans more than 45° from the base normal"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -61,21 +154,19 @@ fn a_jump_in_a_pose_table_is_found_and_dated() {
         csv.push_str(&format!("{t},0,0,{z},0,0,0\n"));
     }
     write(dir.path(), "poses.csv", &csv);
+    let geometry = PAIRED
+        .split("[trajectory]")
+        .next()
+        .unwrap_or_default()
+        .to_owned();
     let scenario = write(
         dir.path(),
         "s.toml",
-        &(include_str!("../../assets/presets/seed.toml")
-            .split("[trajectory]")
-            .next()
-            .unwrap_or_default()
-            .to_owned()
-            + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
+        &(geometry + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
     );
     let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
     assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
-    let doc: serde_json::Value =
-        serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}"));
-    let findings = doc["findings"].as_array().cloned().unwrap_or_default();
+    let findings = json(&o)["findings"].as_array().cloned().unwrap_or_default();
     assert_eq!(findings.len(), 6, "every leg jumps: {findings:?}");
     for f in &findings {
         assert_eq!(f["kind"], "jump");
@@ -108,4 +199,16 @@ fn unusable_input_gives_status_2() {
     );
     let o = stewart(&["check", "--format", "yaml"]);
     assert_eq!(o.status.code(), Some(2));
+    let limits = write(
+        dir.path(),
+        "l.toml",
+        &PAIRED.replace("base_cone_deg = 60.0", "base_cone_deg = 200.0"),
+    );
+    let o = stewart(&["check", "--scenario", &limits]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("`limits.base_cone_deg` must be less than 180°, got 200"),
+        "{}",
+        stderr(&o)
+    );
 }

@@ -1,17 +1,18 @@
-//! `stewart check`: the trajectory checks, as text or JSON.
+//! `stewart check`: the pre-flight report, as text or JSON.
 
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
 use serde::Serialize;
-use stewart_kinematics::{CheckReport, Scenario, check_motion};
+use stewart_kinematics::checks::LimitSummary;
+use stewart_kinematics::{CheckReport, FindingKind, Scenario, check_motion};
 
 use crate::cli::{CheckArgs, Format};
 use crate::output;
 use crate::source;
 
-/// The JSON document: the scenario's name and limits, then the report.
+/// The JSON document: the scenario's name and stroke, then the report.
 #[derive(Serialize)]
 struct JsonReport<'a> {
     scenario: &'a str,
@@ -27,6 +28,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let report = check_motion(
         &scenario.geometry,
+        &scenario.limits,
         &scenario.motion.sample(),
         &scenario.checks,
     );
@@ -52,6 +54,46 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     })
 }
 
+/// What a limit is called in the text report.
+fn limit_name(kind: FindingKind) -> &'static str {
+    match kind {
+        FindingKind::StrokeMax => "leg length (max)",
+        FindingKind::StrokeMin => "leg length (min)",
+        FindingKind::LegSpeed => "leg speed",
+        FindingKind::LegAccel => "leg acceleration",
+        FindingKind::BaseCone => "base joint cone",
+        FindingKind::PlatformCone => "platform joint cone",
+        FindingKind::LegCollision => "leg clearance",
+        FindingKind::NearSingular => "condition number",
+        FindingKind::ArchitectureSingular => "architecture",
+        FindingKind::Jump => "jumps",
+        FindingKind::RigidBody => "rigid body",
+    }
+}
+
+fn summary_line(s: &LimitSummary) -> String {
+    let legs: Vec<String> = s.legs.iter().map(|l| format!("L{l}")).collect();
+    let at = if legs.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", legs.join(", "))
+    };
+    let unit = if s.unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {}", s.unit)
+    };
+    let verdict = if s.margin >= 0.0 { "ok" } else { "VIOLATED" };
+    format!(
+        "  {:<20} worst {:.4}{unit}{at} at t = {:.3} s, limit {}{unit}, margin {:.4}{unit}  {verdict}",
+        limit_name(s.kind),
+        s.worst_value,
+        s.worst_time,
+        s.limit,
+        s.margin
+    )
+}
+
 fn text_report(scenario: &Scenario, report: &CheckReport) -> String {
     let mut s = String::new();
     let [t0, t1] = report.time_span;
@@ -61,27 +103,22 @@ fn text_report(scenario: &Scenario, report: &CheckReport) -> String {
         "Scenario `{}`: {} samples from t = {t0} s to t = {t1} s.",
         scenario.name, report.samples
     );
-    let stroke = scenario.geometry.stroke();
-    let fmt_limit = |v: Option<f64>| v.map_or_else(|| "none".to_owned(), |v| format!("{v} m"));
-    let _ = writeln!(
-        s,
-        "Stroke limits: min {}, max {}.",
-        fmt_limit(stroke.min),
-        fmt_limit(stroke.max)
-    );
+    let _ = writeln!(s, "Leg lengths over the motion:");
     for (i, [lo, hi]) in report.leg_ranges.iter().enumerate() {
         let _ = writeln!(s, "  L{}: {lo:.4} m … {hi:.4} m", i + 1);
+    }
+    let _ = writeln!(s, "Limits (worst over the motion, and the margin left):");
+    for l in &report.limits {
+        let _ = writeln!(s, "{}", summary_line(l));
     }
     let _ = writeln!(
         s,
         "Rigid body: largest change of a platform-joint distance {:.1e} m (tolerance {:.1e} m).",
         report.rigid_worst_deviation, scenario.checks.rigid_tolerance
     );
+    let _ = writeln!(s, "Architecture: {}", report.architecture.explanation());
     if report.is_clean() {
-        let _ = writeln!(
-            s,
-            "No problem found: every leg stays within its stroke, no jumps, the platform moves rigidly."
-        );
+        let _ = writeln!(s, "No problem found.");
     } else {
         let _ = writeln!(s, "{} problem(s) found:", report.findings.len());
         for f in &report.findings {

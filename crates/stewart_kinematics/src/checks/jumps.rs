@@ -35,16 +35,17 @@ pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> V
             }
             // The jump happens between samples k and k + 1; it is dated at k + 1.
             let t = times[k + 1];
-            let f = found.get_or_insert(Finding {
+            let f = found.get_or_insert_with(|| Finding {
                 kind: FindingKind::Jump,
-                leg: Some(leg + 1),
+                legs: vec![leg + 1],
                 first_time: t,
                 last_time: t,
                 count: 0,
                 worst_time: t,
                 worst_value: step,
                 limit: limit.max(settings.jump_floor),
-                excess: step - limit.max(settings.jump_floor),
+                margin: limit.max(settings.jump_floor) - step,
+                unit: "m".to_owned(),
             });
             f.last_time = t;
             f.count += 1;
@@ -52,7 +53,7 @@ pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> V
                 f.worst_value = step;
                 f.worst_time = t;
                 f.limit = limit.max(settings.jump_floor);
-                f.excess = step - f.limit;
+                f.margin = f.limit - step;
             }
         }
         findings.extend(found);
@@ -114,13 +115,18 @@ mod tests {
         let f = check(&times, &lengths, &CheckSettings::default());
         assert_eq!(f.len(), 2);
         assert_eq!(
-            (f[0].leg, f[0].count, f[0].first_time),
-            (Some(2), 1, times[200])
+            (f[0].legs.clone(), f[0].count, f[0].first_time),
+            (vec![2], 1, times[200])
         );
         assert!((f[0].worst_value - 0.05).abs() < 2e-3);
         assert_eq!(
-            (f[1].leg, f[1].count, f[1].first_time, f[1].last_time),
-            (Some(6), 2, times[300], times[301])
+            (
+                f[1].legs.clone(),
+                f[1].count,
+                f[1].first_time,
+                f[1].last_time
+            ),
+            (vec![6], 2, times[300], times[301])
         );
     }
 }

@@ -1,18 +1,29 @@
-//! Checks over a whole sampled motion, each finding located in leg and time.
+//! Checks over a whole sampled motion — the pre-flight report. Every finding is located
+//! in leg(s) and time, with its worst value and margin.
 //!
 //! - [`rigid`]: the platform joints keep their mutual distances (the seed's self-consistency test);
 //! - [`stroke`]: every leg stays within its stroke;
+//! - [`rates`]: leg speed and acceleration limits;
+//! - [`cones`]: the angle of each leg at its joints;
+//! - [`collision`]: the distance between legs seen as cylinders;
+//! - [`singularity`]: near-singular poses and architecture singularity;
 //! - [`jumps`]: no leg length jumps between two samples.
 
+pub mod collision;
+pub mod cones;
+mod describe;
 pub mod jumps;
+pub mod rates;
 pub mod rigid;
+mod scan;
+pub mod singularity;
 pub mod stroke;
-
-use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
+use crate::architecture::ArchitectureReport;
 use crate::geometry::Geometry;
+use crate::limits::Limits;
 use crate::trajectory::Samples;
 
 /// Thresholds of the checks. The defaults suit motions sampled at tens to thousands of hertz.
@@ -39,7 +50,7 @@ impl Default for CheckSettings {
     }
 }
 
-/// What a finding is about.
+/// What a finding (or a limit summary) is about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FindingKind {
@@ -47,19 +58,33 @@ pub enum FindingKind {
     StrokeMax,
     /// A leg shorter than its minimum length.
     StrokeMin,
+    /// A leg faster than the actuator's speed limit.
+    LegSpeed,
+    /// A leg accelerating beyond the actuator's limit.
+    LegAccel,
+    /// A leg leaning beyond the base joint's cone.
+    BaseCone,
+    /// A leg leaning beyond the platform joint's cone.
+    PlatformCone,
+    /// Two legs closer than twice the leg radius.
+    LegCollision,
+    /// A pose whose normalised condition number exceeds the threshold (or is singular).
+    NearSingular,
+    /// The geometry is singular at every pose.
+    ArchitectureSingular,
     /// A leg length changing abruptly between two samples.
     Jump,
     /// Platform joints whose mutual distances changed: the platform was not moved rigidly.
     RigidBody,
 }
 
-/// One problem, located: which leg, from when to when, how bad.
+/// One problem, located: which leg(s), from when to when, how bad.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Finding {
     /// What kind of problem.
     pub kind: FindingKind,
-    /// Leg number from 1, when the finding concerns one leg.
-    pub leg: Option<usize>,
+    /// Leg numbers from 1 (one leg, two for a collision, none for whole-platform findings).
+    pub legs: Vec<usize>,
     /// Time of the first sample concerned, seconds.
     pub first_time: f64,
     /// Time of the last sample concerned, seconds.
@@ -68,56 +93,33 @@ pub struct Finding {
     pub count: usize,
     /// Time of the worst sample, seconds.
     pub worst_time: f64,
-    /// The worst value: a leg length (stroke), a step (jump) or a distance change (rigid body), metres.
+    /// The worst value, in `unit`.
     pub worst_value: f64,
-    /// The limit that was passed, metres.
+    /// The limit that was passed, in `unit`.
     pub limit: f64,
-    /// By how much the worst value passes the limit, metres (always positive).
-    pub excess: f64,
+    /// How far inside the limit the worst value is, in `unit`: negative for a violation.
+    pub margin: f64,
+    /// Unit of `worst_value`, `limit` and `margin`: `m`, `m/s`, `m/s²`, `deg` or `` (a ratio).
+    pub unit: String,
 }
 
-impl fmt::Display for Finding {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let leg = self.leg.map(|l| format!("leg L{l}")).unwrap_or_default();
-        let span = if self.count > 1 {
-            format!(
-                "from t = {:.3} s to t = {:.3} s ({} samples)",
-                self.first_time, self.last_time, self.count
-            )
-        } else {
-            format!("at t = {:.3} s", self.first_time)
-        };
-        match self.kind {
-            FindingKind::StrokeMax => write!(
-                f,
-                "{leg} is longer than its maximum {:.4} m {span}; worst {:.4} m at t = {:.3} s, {:.1} mm over",
-                self.limit,
-                self.worst_value,
-                self.worst_time,
-                self.excess * 1e3
-            ),
-            FindingKind::StrokeMin => write!(
-                f,
-                "{leg} is shorter than its minimum {:.4} m {span}; worst {:.4} m at t = {:.3} s, {:.1} mm under",
-                self.limit,
-                self.worst_value,
-                self.worst_time,
-                self.excess * 1e3
-            ),
-            FindingKind::Jump => write!(
-                f,
-                "{leg} length jumps {span}; worst step {:.2} mm at t = {:.3} s, where the steps around it allow at most {:.3} mm",
-                self.worst_value * 1e3,
-                self.worst_time,
-                self.limit * 1e3
-            ),
-            FindingKind::RigidBody => write!(
-                f,
-                "the platform does not move rigidly {span}: a distance between platform joints changed by {:.3e} m (tolerance {:.1e} m) at t = {:.3} s",
-                self.worst_value, self.limit, self.worst_time
-            ),
-        }
-    }
+/// For one limit, the worst value over the whole motion and its margin, violated or not.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LimitSummary {
+    /// Which limit.
+    pub kind: FindingKind,
+    /// Leg(s) where the worst value occurs.
+    pub legs: Vec<usize>,
+    /// The worst value, in `unit`.
+    pub worst_value: f64,
+    /// When it occurs, seconds.
+    pub worst_time: f64,
+    /// The limit, in `unit`.
+    pub limit: f64,
+    /// How far inside the limit the worst value is (negative: violated), in `unit`.
+    pub margin: f64,
+    /// Unit of the values.
+    pub unit: String,
 }
 
 /// The outcome of every check over a motion.
@@ -131,7 +133,11 @@ pub struct CheckReport {
     pub leg_ranges: [[f64; 2]; 6],
     /// Largest change of any platform-joint distance seen, metres (rounding only, if all is well).
     pub rigid_worst_deviation: f64,
-    /// The problems found, in the order: rigid body, stroke, jumps.
+    /// Every limit that applies, with its worst value and margin.
+    pub limits: Vec<LimitSummary>,
+    /// Whether the geometry is singular everywhere, and why.
+    pub architecture: ArchitectureReport,
+    /// The problems found.
     pub findings: Vec<Finding>,
 }
 
@@ -142,37 +148,51 @@ impl CheckReport {
     }
 }
 
-/// Run every check over `samples` for `geometry`.
+/// Run every check over `samples` for `geometry` under `limits`.
 pub fn check_motion(
     geometry: &Geometry,
+    limits: &Limits,
     samples: &Samples,
     settings: &CheckSettings,
 ) -> CheckReport {
+    let times = &samples.times;
     let solutions: Vec<_> = samples.poses.iter().map(|p| geometry.inverse(p)).collect();
     let lengths: Vec<[f64; 6]> = solutions.iter().map(|s| s.lengths).collect();
     let mut leg_ranges = [[f64::INFINITY, f64::NEG_INFINITY]; 6];
     for l in &lengths {
-        for i in 0..6 {
-            leg_ranges[i][0] = leg_ranges[i][0].min(l[i]);
-            leg_ranges[i][1] = leg_ranges[i][1].max(l[i]);
+        for (range, &value) in leg_ranges.iter_mut().zip(l) {
+            range[0] = range[0].min(value);
+            range[1] = range[1].max(value);
         }
     }
-    let (rigid_worst_deviation, mut findings) = rigid::check(
+    let mut out = scan::Collected::default();
+    let (rigid_worst_deviation, rigid) =
+        rigid::check(geometry, times, &solutions, settings.rigid_tolerance);
+    out.findings.extend(rigid);
+    stroke::check(&geometry.stroke(), times, &lengths, &mut out);
+    rates::check(limits, times, &lengths, &mut out);
+    cones::check(limits, times, &samples.poses, &solutions, &mut out);
+    collision::check(limits, times, &solutions, &mut out);
+    let architecture = geometry.architecture();
+    singularity::check(
         geometry,
-        &samples.times,
-        &solutions,
-        settings.rigid_tolerance,
+        &architecture,
+        times,
+        &samples.poses,
+        settings,
+        &mut out,
     );
-    findings.extend(stroke::check(&geometry.stroke(), &samples.times, &lengths));
-    findings.extend(jumps::check(&samples.times, &lengths, settings));
+    out.findings.extend(jumps::check(times, &lengths, settings));
     CheckReport {
         samples: samples.len(),
         time_span: [
-            samples.times.first().copied().unwrap_or(0.0),
-            samples.times.last().copied().unwrap_or(0.0),
+            times.first().copied().unwrap_or(0.0),
+            times.last().copied().unwrap_or(0.0),
         ],
         leg_ranges,
         rigid_worst_deviation,
-        findings,
+        limits: out.limits,
+        architecture,
+        findings: out.findings,
     }
 }

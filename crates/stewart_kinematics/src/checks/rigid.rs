@@ -41,14 +41,15 @@ pub fn check(
     let findings = match (bad.first(), bad.last()) {
         (Some(&first), Some(&last)) => vec![Finding {
             kind: FindingKind::RigidBody,
-            leg: None,
+            legs: Vec::new(),
             first_time: times[first],
             last_time: times[last],
             count: bad.len(),
             worst_time: times[worst_k],
             worst_value: worst,
             limit: tolerance,
-            excess: worst - tolerance,
+            margin: tolerance - worst,
+            unit: "m".to_owned(),
         }],
         _ => Vec::new(),
     };

@@ -1,71 +1,36 @@
 //! Stroke limits: which leg leaves its stroke, from when to when, and by how much.
 
-use crate::checks::{Finding, FindingKind};
+use super::FindingKind;
+use super::scan::{Bound, Collected, scan_legs};
 use crate::geometry::StrokeLimits;
 
-/// One finding per leg and per limit passed.
-pub fn check(stroke: &StrokeLimits, times: &[f64], lengths: &[[f64; 6]]) -> Vec<Finding> {
-    let mut findings = Vec::new();
-    for leg in 0..6 {
-        if let Some(max) = stroke.max {
-            findings.extend(scan(
-                FindingKind::StrokeMax,
-                leg,
-                max,
-                times,
-                lengths,
-                |l| l - max,
-            ));
-        }
-        if let Some(min) = stroke.min {
-            findings.extend(scan(
-                FindingKind::StrokeMin,
-                leg,
-                min,
-                times,
-                lengths,
-                |l| min - l,
-            ));
-        }
-    }
-    findings
-}
-
-/// Collect the samples where `excess(length) > 0` for one leg.
-fn scan(
-    kind: FindingKind,
-    leg: usize,
-    limit: f64,
+/// One finding per leg and per limit passed; a summary per limit set.
+pub(crate) fn check(
+    stroke: &StrokeLimits,
     times: &[f64],
     lengths: &[[f64; 6]],
-    excess: impl Fn(f64) -> f64,
-) -> Option<Finding> {
-    let mut found: Option<Finding> = None;
-    for (k, l) in lengths.iter().enumerate() {
-        let e = excess(l[leg]);
-        if e <= 0.0 {
-            continue;
-        }
-        let f = found.get_or_insert(Finding {
-            kind,
-            leg: Some(leg + 1),
-            first_time: times[k],
-            last_time: times[k],
-            count: 0,
-            worst_time: times[k],
-            worst_value: l[leg],
-            limit,
-            excess: e,
-        });
-        f.last_time = times[k];
-        f.count += 1;
-        if e > f.excess {
-            f.excess = e;
-            f.worst_value = l[leg];
-            f.worst_time = times[k];
-        }
+    out: &mut Collected,
+) {
+    if let Some(max) = stroke.max {
+        scan_legs(
+            FindingKind::StrokeMax,
+            "m",
+            Bound::AtMost(max),
+            times,
+            lengths,
+            out,
+        );
     }
-    found
+    if let Some(min) = stroke.min {
+        scan_legs(
+            FindingKind::StrokeMin,
+            "m",
+            Bound::AtLeast(min),
+            times,
+            lengths,
+            out,
+        );
+    }
 }
 
 #[cfg(test)]
@@ -79,27 +44,34 @@ mod tests {
         lengths[1][2] = 1.35;
         lengths[2][2] = 1.40;
         lengths[3][4] = 0.5;
-        let f = check(&StrokeLimits::new(0.55, 1.3), &times, &lengths);
+        let mut out = Collected::default();
+        check(&StrokeLimits::new(0.55, 1.3), &times, &lengths, &mut out);
+        let f = &out.findings;
         assert_eq!(f.len(), 2);
         assert_eq!(
             (
                 f[0].kind,
-                f[0].leg,
+                f[0].legs.clone(),
                 f[0].first_time,
                 f[0].last_time,
                 f[0].count
             ),
-            (FindingKind::StrokeMax, Some(3), 1.0, 2.0, 2)
+            (FindingKind::StrokeMax, vec![3], 1.0, 2.0, 2)
         );
         assert_eq!((f[0].worst_time, f[0].worst_value), (2.0, 1.40));
-        assert!((f[0].excess - 0.10).abs() < 1e-15);
+        assert!((f[0].margin + 0.10).abs() < 1e-15);
         assert_eq!(
-            (f[1].kind, f[1].leg, f[1].first_time),
-            (FindingKind::StrokeMin, Some(5), 3.0)
+            (f[1].kind, f[1].legs.clone(), f[1].first_time),
+            (FindingKind::StrokeMin, vec![5], 3.0)
         );
-        assert!((f[1].excess - 0.05).abs() < 1e-15);
-        assert!(f[0].to_string().starts_with("leg L3 is longer than its maximum 1.3000 m from t = 1.000 s to t = 2.000 s (2 samples); worst 1.4000 m at t = 2.000 s, 100.0 mm over"));
-        // No limits, no findings.
-        assert!(check(&StrokeLimits::default(), &times, &lengths).is_empty());
+        assert!((f[1].margin + 0.05).abs() < 1e-15);
+        assert!(f[0].to_string().starts_with("leg L3 is longer than its maximum 1.3000 m from t = 1.000 s to t = 2.000 s (2 samples); worst 1.4000 m at t = 2.000 s, 100.0 mm over"), "{}", f[0]);
+        // A summary per limit, with the worst leg.
+        assert_eq!(out.limits.len(), 2);
+        assert_eq!(out.limits[0].legs, vec![3]);
+        // No limits, nothing.
+        let mut out = Collected::default();
+        check(&StrokeLimits::default(), &times, &lengths, &mut out);
+        assert!(out.findings.is_empty() && out.limits.is_empty());
     }
 }

@@ -80,6 +80,14 @@ fn scenarios_round_trip_through_toml() {
         let back = parse(&text).unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
         assert_eq!(back.geometry.params().stroke, s.geometry.params().stroke);
         assert_eq!(back.motion.sampling, s.motion.sampling);
+        assert_eq!(back.checks, s.checks);
+        assert_eq!(back.limits.leg_radius, s.limits.leg_radius);
+        assert_eq!(back.limits.leg_speed_max, s.limits.leg_speed_max);
+        let cone = |l: &Limits| l.base_cone.map(|a| a.degrees());
+        assert_eq!(
+            cone(&back.limits).map(|d| (d * 1e9).round()),
+            cone(&s.limits).map(|d| (d * 1e9).round())
+        );
         for (a, b) in back
             .motion
             .sample()

@@ -1,0 +1,115 @@
+//! Leg speed and acceleration, by finite differences of the sampled leg lengths.
+//!
+//! Interior samples use central differences on the (possibly uneven) time grid; the end
+//! samples take their neighbour's value.
+
+use super::FindingKind;
+use super::scan::{Bound, Collected, scan_legs};
+use crate::limits::Limits;
+
+/// Leg speeds dL/dt (m/s) at every sample.
+pub fn leg_speeds(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
+    let n = lengths.len();
+    if n < 2 {
+        return vec![[0.0; 6]; n];
+    }
+    (0..n)
+        .map(|k| {
+            let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
+            std::array::from_fn(|i| (lengths[b][i] - lengths[a][i]) / (times[b] - times[a]))
+        })
+        .collect()
+}
+
+/// Leg accelerations d²L/dt² (m/s²) at every sample.
+pub fn leg_accelerations(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
+    let n = lengths.len();
+    if n < 3 {
+        return vec![[0.0; 6]; n];
+    }
+    (0..n)
+        .map(|k| {
+            let k = k.clamp(1, n - 2);
+            let (h0, h1) = (times[k] - times[k - 1], times[k + 1] - times[k]);
+            std::array::from_fn(|i| {
+                let back = (lengths[k][i] - lengths[k - 1][i]) / h0;
+                let ahead = (lengths[k + 1][i] - lengths[k][i]) / h1;
+                2.0 * (ahead - back) / (h0 + h1)
+            })
+        })
+        .collect()
+}
+
+/// Findings and summaries for the speed and acceleration limits that are set.
+pub(crate) fn check(limits: &Limits, times: &[f64], lengths: &[[f64; 6]], out: &mut Collected) {
+    let abs = |v: Vec<[f64; 6]>| v.into_iter().map(|r| r.map(f64::abs)).collect::<Vec<_>>();
+    if let Some(max) = limits.leg_speed_max {
+        scan_legs(
+            FindingKind::LegSpeed,
+            "m/s",
+            Bound::AtMost(max),
+            times,
+            &abs(leg_speeds(times, lengths)),
+            out,
+        );
+    }
+    if let Some(max) = limits.leg_accel_max {
+        scan_legs(
+            FindingKind::LegAccel,
+            "m/s²",
+            Bound::AtMost(max),
+            times,
+            &abs(leg_accelerations(times, lengths)),
+            out,
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn differences_of_a_parabola_are_exact() {
+        // L = 1 + 0.3 t + 0.5·2 t² on an uneven grid: speed 0.3 + 2t, acceleration 2.
+        let times = [0.0, 0.1, 0.25, 0.3, 0.5];
+        let lengths: Vec<[f64; 6]> = times.iter().map(|&t| [1.0 + 0.3 * t + t * t; 6]).collect();
+        let a = leg_accelerations(&times, &lengths);
+        for row in &a {
+            assert!((row[0] - 2.0).abs() < 1e-12, "{row:?}");
+        }
+        let v = leg_speeds(&times, &lengths);
+        // Central difference over an uneven pair: exact for the mean slope.
+        let expected = (lengths[3][0] - lengths[1][0]) / (0.3 - 0.1);
+        assert!((v[2][0] - expected).abs() < 1e-15);
+    }
+
+    #[test]
+    fn limits_are_checked_only_when_set() {
+        let times: Vec<f64> = (0..101).map(|k| k as f64 * 0.01).collect();
+        let lengths: Vec<[f64; 6]> = times
+            .iter()
+            .map(|&t| [1.0 + 0.1 * (10.0 * t).sin(); 6])
+            .collect();
+        let mut out = Collected::default();
+        check(&Limits::default(), &times, &lengths, &mut out);
+        assert!(out.limits.is_empty());
+        // Peak speed 1 m/s, peak acceleration 10 m/s².
+        let limits = Limits {
+            leg_speed_max: Some(0.8),
+            leg_accel_max: Some(20.0),
+            ..Limits::default()
+        };
+        check(&limits, &times, &lengths, &mut out);
+        assert_eq!(out.limits.len(), 2);
+        assert!((out.limits[0].worst_value - 1.0).abs() < 5e-3); // central differences: 0.1·sin(0.1)/0.01
+        assert!((out.limits[1].worst_value - 10.0).abs() < 1e-2);
+        assert!(out.limits[1].margin > 9.0);
+        assert_eq!(out.findings.len(), 6); // every leg is too fast
+        assert!(
+            out.findings
+                .iter()
+                .all(|f| f.kind == FindingKind::LegSpeed && f.first_time == 0.0)
+        );
+    }
+}
