@@ -1,6 +1,7 @@
 //! End-to-end tests of the `stewart` binary: run it as a user would and check what it
 //! prints, writes and returns.
 
+mod analysis;
 mod check;
 mod fk;
 mod solve;

@@ -24,6 +24,11 @@ pub enum Command {
     Check(CheckArgs),
     /// Forward kinematics: poses from a table of leg lengths, as CSV.
     Fk(FkArgs),
+    /// Reachable workspace at a fixed orientation (volume, extent, points) and the
+    /// orientation range at a position.
+    Workspace(WorkspaceArgs),
+    /// Leg forces for a payload along the trajectory (static and dynamic), as CSV.
+    Forces(ForcesArgs),
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset).
@@ -90,4 +95,59 @@ pub struct FkArgs {
     /// them, highest platform first) instead of following one branch.
     #[arg(long, conflicts_with = "cold")]
     pub assembly_modes: bool,
+}
+
+/// Three comma-separated finite numbers, such as `0,0,0.8`.
+pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    let [a, b, c] = parts.as_slice() else {
+        return Err(format!("`{text}` is not three comma-separated numbers"));
+    };
+    let number = |s: &str| -> Result<f64, String> {
+        let v: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(format!("{s} is not a finite number"))
+        }
+    };
+    Ok([number(a)?, number(b)?, number(c)?])
+}
+
+/// Arguments of `stewart workspace`.
+#[derive(Debug, Args)]
+pub struct WorkspaceArgs {
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Platform orientation ROLL,PITCH,YAW in degrees.
+    #[arg(long, value_name = "ROLL,PITCH,YAW", value_parser = parse_triple, default_value = "0,0,0", allow_hyphen_values = true)]
+    pub orientation: [f64; 3],
+    /// Columns per side of the grid (the volume's error shrinks as it rises).
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u16).range(2..=4096))]
+    pub resolution: u16,
+    /// Position X,Y,Z (metres) at which to report the orientation range (default: home).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
+    pub position: Option<[f64; 3]>,
+    /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
+    #[arg(long, value_name = "FILE.csv|FILE.ply")]
+    pub out: Option<PathBuf>,
+}
+
+/// Arguments of `stewart forces`.
+#[derive(Debug, Args)]
+pub struct ForcesArgs {
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Moving mass in kg (overrides the scenario's `[payload]`).
+    #[arg(long, value_name = "KG", allow_hyphen_values = true)]
+    pub mass: Option<f64>,
+    /// Centre of mass X,Y,Z in the platform frame, metres.
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
+    pub com: Option<[f64; 3]>,
+    /// Principal moments of inertia IXX,IYY,IZZ about the centre of mass, kg·m².
+    #[arg(long, value_name = "IXX,IYY,IZZ", value_parser = parse_triple)]
+    pub inertia: Option<[f64; 3]>,
+    /// Write the CSV here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }

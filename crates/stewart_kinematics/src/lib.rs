@@ -19,6 +19,7 @@ pub mod architecture;
 pub mod batch;
 pub mod checks;
 mod fast_trig;
+pub mod forces;
 pub mod forward;
 pub mod geometry;
 pub mod inverse;

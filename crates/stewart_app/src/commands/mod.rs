@@ -2,7 +2,9 @@
 
 pub mod check;
 pub mod fk;
+pub mod forces;
 pub mod solve;
+pub mod workspace;
 
 use std::process::ExitCode;
 

@@ -14,6 +14,7 @@ use super::file::{
 };
 use crate::angle::Angle;
 use crate::checks::CheckSettings;
+use crate::forces::Payload;
 use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
 use crate::limits::Limits;
 use crate::pose::Pose;
@@ -94,6 +95,19 @@ pub(super) fn parse(
     };
     let checks = build_checks(&src, parsed.checks.as_ref())?;
     let limits = build_limits(&src, parsed.limits.as_ref())?;
+    let payload = parsed
+        .payload
+        .as_ref()
+        .map(|p| {
+            let f = p.get_ref();
+            Payload::new(
+                f.mass_kg,
+                Vector3::from(f.com_m),
+                nalgebra::Matrix3::from_diagonal(&Vector3::from(f.inertia_kg_m2)),
+            )
+            .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
+        })
+        .transpose()?;
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
             .file_stem()
@@ -105,6 +119,7 @@ pub(super) fn parse(
         geometry,
         motion,
         limits,
+        payload,
         checks,
     })
 }

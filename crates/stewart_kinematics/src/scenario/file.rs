@@ -26,7 +26,20 @@ pub(crate) struct ScenarioFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limits: Option<LimitsFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub payload: Option<Spanned<PayloadFile>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checks: Option<ChecksFile>,
+}
+
+/// `[payload]`: the moving mass (platform and load).
+#[derive(Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct PayloadFile {
+    pub mass_kg: f64,
+    #[serde(default)]
+    pub com_m: [f64; 3],
+    #[serde(default)]
+    pub inertia_kg_m2: [f64; 3],
 }
 
 /// `[limits]`: actuator and joint limits beyond the stroke.

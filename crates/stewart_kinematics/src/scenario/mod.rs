@@ -18,6 +18,10 @@
 //! samples = 1001
 //! [limits]                         # optional: speed, acceleration, joint cones, leg size
 //! leg_speed_max_m_s = 0.5
+//! [payload]                        # optional: moving mass for `forces`
+//! mass_kg = 60.0
+//! com_m = [0.0, 0.0, 0.1]          # platform frame
+//! inertia_kg_m2 = [3.0, 3.0, 5.0]  # principal, about the centre of mass, platform axes
 //! [checks]                         # optional thresholds
 //! jump_ratio = 5.0
 //! ```
@@ -35,6 +39,7 @@ use std::path::Path;
 pub use error::{ScenarioError, ScenarioProblem};
 
 use crate::checks::CheckSettings;
+use crate::forces::Payload;
 use crate::geometry::Geometry;
 use crate::limits::Limits;
 use crate::trajectory::Motion;
@@ -52,6 +57,8 @@ pub struct Scenario {
     pub motion: Motion,
     /// Actuator and joint limits beyond the stroke.
     pub limits: Limits,
+    /// The moving mass, when given.
+    pub payload: Option<Payload>,
     /// Thresholds of the checks.
     pub checks: CheckSettings,
 }
@@ -65,6 +72,7 @@ impl Scenario {
             description: "The seed article's platform and motion.".to_owned(),
             motion: Motion::seed(geometry.home_height()),
             limits: Limits::default(),
+            payload: None,
             geometry,
             checks: CheckSettings::default(),
         }

@@ -81,6 +81,7 @@ fn scenarios_round_trip_through_toml() {
         assert_eq!(back.geometry.params().stroke, s.geometry.params().stroke);
         assert_eq!(back.motion.sampling, s.motion.sampling);
         assert_eq!(back.checks, s.checks);
+        assert_eq!(back.payload, s.payload);
         assert_eq!(back.limits.leg_radius, s.limits.leg_radius);
         assert_eq!(back.limits.leg_speed_max, s.limits.leg_speed_max);
         let cone = |l: &Limits| l.base_cone.map(|a| a.degrees());

@@ -5,7 +5,7 @@ use toml::Spanned;
 use super::Scenario;
 use super::file::{
     AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile, LinearChannelFile,
-    PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
+    PayloadFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::trajectory::{Channel, Trajectory};
 
@@ -129,6 +129,13 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         pivot,
         trajectory: Some(s(t)),
         limits: (*l != crate::limits::Limits::default()).then_some(limits),
+        payload: scenario.payload.map(|p| {
+            s(PayloadFile {
+                mass_kg: p.mass,
+                com_m: [p.centre_of_mass.x, p.centre_of_mass.y, p.centre_of_mass.z],
+                inertia_kg_m2: [p.inertia[(0, 0)], p.inertia[(1, 1)], p.inertia[(2, 2)]],
+            })
+        }),
         checks: Some(ChecksFile {
             rigid_tolerance_m: Some(s(c.rigid_tolerance)),
             jump_ratio: Some(s(c.jump_ratio)),

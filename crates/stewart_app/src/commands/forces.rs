@@ -1,0 +1,57 @@
+//! `stewart forces`: leg forces for a payload along the trajectory.
+
+use std::process::ExitCode;
+
+use anyhow::{Result, anyhow};
+use nalgebra::{Matrix3, Vector3};
+use stewart_kinematics::forces::Payload;
+
+use crate::cli::ForcesArgs;
+use crate::csv_io::CsvText;
+use crate::output;
+use crate::source;
+
+/// Run the command.
+pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    let g = &scenario.geometry;
+    let base = scenario.payload;
+    let mass = args.mass.or(base.map(|p| p.mass)).ok_or_else(|| {
+        anyhow!(
+            "scenario `{}` has no [payload] table: give the moving mass with --mass KG",
+            scenario.name
+        )
+    })?;
+    let com = args
+        .com
+        .map(Vector3::from)
+        .or(base.map(|p| p.centre_of_mass))
+        .unwrap_or_else(Vector3::zeros);
+    let inertia = args
+        .inertia
+        .map(|i| Matrix3::from_diagonal(&Vector3::from(i)))
+        .or(base.map(|p| p.inertia))
+        .unwrap_or_else(Matrix3::zeros);
+    let payload = Payload::new(mass, com, inertia)?;
+    if g.architecture().singular {
+        return Err(anyhow!(
+            "scenario `{}` is architecturally singular, so the leg forces are not determined at any pose (use a paired layout)",
+            scenario.name
+        ));
+    }
+    let series = g.forces_along(&scenario.motion.sample(), &payload)?;
+    let mut header = vec!["t".to_owned()];
+    header.extend((1..=6).map(|i| format!("F{i}_static")));
+    header.extend((1..=6).map(|i| format!("F{i}")));
+    let mut csv = CsvText::with_header(&header);
+    for k in 0..series.times.len() {
+        csv.row(
+            [series.times[k]]
+                .into_iter()
+                .chain(series.statics[k])
+                .chain(series.dynamics[k]),
+        );
+    }
+    output::emit(args.out.as_deref(), csv.into_string().as_bytes())?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,249 @@
+//! Actuator forces for a payload: statics through the Jacobian transpose, and dynamics
+//! by Newton–Euler on the moving platform.
+//!
+//! Leg `i` pushes the platform with force `f_i u_i` (`u_i` the unit leg vector from base
+//! to platform joint), so **positive forces are compression** (the leg pushes the
+//! platform away from the base), negative tension. With `J` the inverse Jacobian
+//! (rows `[u_iᵀ, (r_i × u_i)ᵀ]`, `r_i` from the pivot point to joint `i`), the legs
+//! exert the wrench `Jᵀ f` about the pivot point. Newton–Euler for the platform and
+//! payload (mass `m`, centre of mass `c`, inertia `I` about `c`; `r_c` from the pivot
+//! point to `c`; `a_c` its acceleration; `ω`, `α` the angular velocity and acceleration):
+//!
+//! ```text
+//! Jᵀ f = [ m (a_c − g) ;  I_w α + ω × (I_w ω) + r_c × m (a_c − g) ],   I_w = R I Rᵀ
+//! ```
+//!
+//! Statics is the special case `a_c = 0`, `ω = α = 0`. Velocities and accelerations come
+//! from central differences of the sampled motion (times are arguments, never a clock).
+
+use std::ops::{Mul, Sub};
+
+use nalgebra::{Matrix3, Vector3, Vector6};
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::geometry::Geometry;
+use crate::trajectory::Samples;
+
+/// Standard gravity, m/s², along −z of the base frame.
+pub const STANDARD_GRAVITY: f64 = 9.806_65;
+
+/// The moving mass: platform plus payload.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Payload {
+    /// Mass, kg.
+    pub mass: f64,
+    /// Centre of mass in the platform frame, m.
+    pub centre_of_mass: Vector3<f64>,
+    /// Inertia tensor about the centre of mass, in platform axes, kg·m².
+    pub inertia: Matrix3<f64>,
+}
+
+/// Why forces could not be computed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ForceError {
+    /// The Jacobian cannot be inverted at this sample.
+    #[error(
+        "the platform is at a singular pose at t = {time} s: the leg forces are not determined there"
+    )]
+    Singular {
+        /// Time of the sample, seconds.
+        time: f64,
+    },
+    /// A payload value that is not usable.
+    #[error("payload {field} must be {requirement}, got {value}")]
+    BadPayload {
+        /// The field.
+        field: &'static str,
+        /// What it must be.
+        requirement: &'static str,
+        /// Its value.
+        value: f64,
+    },
+}
+
+impl Payload {
+    /// A payload, validated: positive finite mass, finite centre, symmetric positive
+    /// semi-definite finite inertia.
+    pub fn new(
+        mass: f64,
+        centre_of_mass: Vector3<f64>,
+        inertia: Matrix3<f64>,
+    ) -> Result<Self, ForceError> {
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(ForceError::BadPayload {
+                field: "mass",
+                requirement: "a positive finite number of kilograms",
+                value: mass,
+            });
+        }
+        if let Some(&v) = centre_of_mass.iter().find(|v| !v.is_finite()) {
+            return Err(ForceError::BadPayload {
+                field: "centre of mass",
+                requirement: "finite",
+                value: v,
+            });
+        }
+        if let Some(&v) = inertia.iter().find(|v| !v.is_finite()) {
+            return Err(ForceError::BadPayload {
+                field: "inertia",
+                requirement: "finite",
+                value: v,
+            });
+        }
+        let smallest = inertia.symmetric_eigenvalues().min();
+        if smallest < -1e-12 * inertia.amax() {
+            return Err(ForceError::BadPayload {
+                field: "inertia",
+                requirement: "positive semi-definite",
+                value: smallest,
+            });
+        }
+        Ok(Self {
+            mass,
+            centre_of_mass,
+            inertia,
+        })
+    }
+}
+
+/// Leg forces along a motion, newtons, positive in compression.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceSeries {
+    /// Sample times, seconds.
+    pub times: Vec<f64>,
+    /// Static forces (payload weight only) per sample.
+    pub statics: Vec<[f64; 6]>,
+    /// Dynamic forces (weight and inertia) per sample.
+    pub dynamics: Vec<[f64; 6]>,
+}
+
+/// Central first difference of a sampled series at sample `k` (one-sided at the ends).
+fn first_difference<T>(times: &[f64], values: &[T], k: usize) -> Option<T>
+where
+    T: Copy + Sub<Output = T> + Mul<f64, Output = T>,
+{
+    let n = values.len();
+    if n < 2 {
+        return None;
+    }
+    let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
+    Some((values[b] - values[a]) * (1.0 / (times[b] - times[a])))
+}
+
+/// Three-point second difference on an uneven grid at sample `k` (the ends take their
+/// neighbour's value). Exact for quadratics.
+fn second_difference<T>(times: &[f64], values: &[T], k: usize) -> Option<T>
+where
+    T: Copy + Sub<Output = T> + Mul<f64, Output = T>,
+{
+    let n = values.len();
+    if n < 3 {
+        return None;
+    }
+    let k = k.clamp(1, n - 2);
+    let (h0, h1) = (times[k] - times[k - 1], times[k + 1] - times[k]);
+    let ahead = (values[k + 1] - values[k]) * (1.0 / h1);
+    let back = (values[k] - values[k - 1]) * (1.0 / h0);
+    Some((ahead - back) * (2.0 / (h0 + h1)))
+}
+
+/// The vector of the skew-symmetric part of `m`: `vee((m − mᵀ)/2)`.
+fn skew_vector(m: &Matrix3<f64>) -> Vector3<f64> {
+    Vector3::new(
+        m[(2, 1)] - m[(1, 2)],
+        m[(0, 2)] - m[(2, 0)],
+        m[(1, 0)] - m[(0, 1)],
+    ) * 0.5
+}
+
+impl Geometry {
+    /// Leg forces that hold the payload still at `pose` (weight only).
+    pub fn static_forces(&self, pose: &crate::pose::Pose, payload: &Payload) -> Option<[f64; 6]> {
+        self.leg_forces(
+            pose,
+            payload,
+            &Vector3::zeros(),
+            &Vector3::zeros(),
+            &Vector3::zeros(),
+        )
+    }
+
+    /// Leg forces at `pose` for a centre-of-mass acceleration `a_c` and angular
+    /// velocity `omega` and acceleration `alpha` (base frame). `None` at a singular pose.
+    pub fn leg_forces(
+        &self,
+        pose: &crate::pose::Pose,
+        payload: &Payload,
+        a_c: &Vector3<f64>,
+        omega: &Vector3<f64>,
+        alpha: &Vector3<f64>,
+    ) -> Option<[f64; 6]> {
+        let r = pose.rotation();
+        let r_c = r * (payload.centre_of_mass - self.pivot());
+        let inertia = r * payload.inertia * r.transpose();
+        let g = Vector3::new(0.0, 0.0, -STANDARD_GRAVITY);
+        let force = payload.mass * (a_c - g);
+        let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
+        let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
+        let j = self.jacobian(pose);
+        let f = j.transpose().lu().solve(&wrench)?;
+        let cond = crate::jacobian::conditioning_of(&j, self.characteristic_length());
+        if cond.is_singular() {
+            return None;
+        }
+        Some(std::array::from_fn(|i| f[i]))
+    }
+
+    /// Static and dynamic leg forces at every sample of a motion.
+    pub fn forces_along(
+        &self,
+        samples: &Samples,
+        payload: &Payload,
+    ) -> Result<ForceSeries, ForceError> {
+        let times = &samples.times;
+        let rotations: Vec<Matrix3<f64>> = samples.poses.iter().map(|p| p.rotation()).collect();
+        let c = self.pivot();
+        let centres: Vec<Vector3<f64>> = samples
+            .poses
+            .iter()
+            .zip(&rotations)
+            .map(|(p, r)| p.position + c + r * (payload.centre_of_mass - c))
+            .collect();
+        // Ṙ = [ω]× R, so ω = vee(skew(Ṙ Rᵀ)); R̈ = ([α]× + [ω]×²) R and [ω]×² is
+        // symmetric, so α = vee(skew(R̈ Rᵀ)).
+        let zero_v = Vector3::zeros();
+        let zero_m = Matrix3::zeros();
+        let omegas: Vec<Vector3<f64>> = (0..rotations.len())
+            .map(|k| {
+                skew_vector(
+                    &(first_difference(times, &rotations, k).unwrap_or(zero_m)
+                        * rotations[k].transpose()),
+                )
+            })
+            .collect();
+        let mut statics = Vec::with_capacity(times.len());
+        let mut dynamics = Vec::with_capacity(times.len());
+        for (k, pose) in samples.poses.iter().enumerate() {
+            let singular = || ForceError::Singular { time: times[k] };
+            let a_c = second_difference(times, &centres, k).unwrap_or(zero_v);
+            let alpha = skew_vector(
+                &(second_difference(times, &rotations, k).unwrap_or(zero_m)
+                    * rotations[k].transpose()),
+            );
+            statics.push(self.static_forces(pose, payload).ok_or_else(singular)?);
+            dynamics.push(
+                self.leg_forces(pose, payload, &a_c, &omegas[k], &alpha)
+                    .ok_or_else(singular)?,
+            );
+        }
+        Ok(ForceSeries {
+            times: times.clone(),
+            statics,
+            dynamics,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,161 @@
+//! `stewart workspace` and `stewart forces`.
+
+use crate::{parse_csv, stderr, stdout, stewart, tempdir};
+
+/// The number after `label` in `text`.
+fn number_after(text: &str, label: &str) -> f64 {
+    let rest = text
+        .split(label)
+        .nth(1)
+        .unwrap_or_else(|| panic!("no `{label}` in {text}"));
+    rest.split_whitespace()
+        .next()
+        .and_then(|w| w.parse().ok())
+        .unwrap_or_else(|| panic!("no number after `{label}`"))
+}
+
+#[test]
+fn workspace_reports_volume_extent_ranges_and_writes_points() {
+    let dir = tempdir();
+    let ply = dir.path().join("ws.ply");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "circle",
+        "--resolution",
+        "100",
+        "--out",
+        &ply.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let volume = number_after(&text, "volume ");
+    let error = number_after(&text, "± ");
+    assert!(volume > 0.3 && volume < 0.45, "{text}");
+    assert!(error < 0.01 * volume, "{text}");
+    assert!(text.contains("extent x "), "{text}");
+    for axis in ["roll ", "pitch", "yaw  "] {
+        assert!(text.contains(&format!("  {axis} -")), "{text}");
+    }
+    let ply_text = std::fs::read_to_string(&ply).unwrap_or_default();
+    let count: usize = ply_text
+        .lines()
+        .find_map(|l| l.strip_prefix("element vertex "))
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    let body: Vec<&str> = ply_text
+        .split("end_header\n")
+        .nth(1)
+        .unwrap_or("")
+        .lines()
+        .collect();
+    assert!(
+        count > 1000 && body.len() == count,
+        "{count} vs {}",
+        body.len()
+    );
+    // CSV too, and a tilted orientation shrinks the volume.
+    let csv = dir.path().join("ws.csv");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "circle",
+        "--resolution",
+        "100",
+        "--orientation",
+        "10,-5,20",
+        "--out",
+        &csv.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(number_after(&stdout(&o), "volume ") < volume);
+    let (header, rows) = parse_csv(&std::fs::read_to_string(&csv).unwrap_or_default());
+    assert_eq!(header, ["x", "y", "z"]);
+    assert!(rows.iter().all(|r| r[2] > 0.0));
+}
+
+#[test]
+fn workspace_refuses_what_it_cannot_compute() {
+    let dir = tempdir();
+    let o = stewart(&["workspace", "--preset", "circle", "--orientation", "1,2"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("not three comma-separated numbers"),
+        "{}",
+        stderr(&o)
+    );
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "circle",
+        "--orientation",
+        "1,nan,2",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "circle",
+        "--out",
+        &dir.path().join("ws.txt").display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("must end in .csv or .ply"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.path().join("ws.txt").exists());
+    let s = dir.path().join("nostroke.toml");
+    std::fs::write(&s, "[geometry]\nbase_radius = 1.0\nplatform_radius = 0.6\nhome_height = 0.8\nbase_angles_deg = [10, 110, 130, 230, 250, 350]\nplatform_angles_deg = [50, 70, 170, 190, 290, 310]\n").unwrap_or_default();
+    let o = stewart(&["workspace", "--scenario", &s.display().to_string()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("needs both stroke limits"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn forces_carry_the_payload() {
+    let o = stewart(&["forces", "--preset", "paired"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (header, rows) = parse_csv(&stdout(&o));
+    assert_eq!(header.len(), 13);
+    assert_eq!(header[1], "F1_static");
+    assert_eq!(header[12], "F6");
+    assert_eq!(rows.len(), 1001);
+    // 60 kg on legs leaning ~45°: every leg in compression, each well under the full weight·2.
+    for r in &rows {
+        assert!(
+            r[1..].iter().all(|&f| f > 0.0 && f < 2.0 * 60.0 * 9.81),
+            "{r:?}"
+        );
+    }
+    // A heavier payload from the command line scales the static forces exactly.
+    let heavy = stewart(&["forces", "--preset", "paired", "--mass", "120"]);
+    let (_, heavy) = parse_csv(&stdout(&heavy));
+    for (a, b) in rows.iter().zip(&heavy) {
+        for c in 1..7 {
+            assert!((b[c] - 2.0 * a[c]).abs() < 1e-9 * b[c].abs().max(1.0));
+        }
+    }
+    let o = stewart(&["forces", "--preset", "circle"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("no [payload] table"), "{}", stderr(&o));
+    let o = stewart(&["forces", "--preset", "seed", "--mass", "10"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("architecturally singular"),
+        "{}",
+        stderr(&o)
+    );
+    let o = stewart(&["forces", "--preset", "paired", "--mass", "-3"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("payload mass must be a positive finite number"),
+        "{}",
+        stderr(&o)
+    );
+}
