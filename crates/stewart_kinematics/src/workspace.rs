@@ -64,7 +64,8 @@ pub struct ConstantOrientationWorkspace {
     /// `[[x_min, x_max], [y_min, y_max], [z_min, z_max]]` of the reachable set, metres
     /// (column centres in `x`, `y`; exact interval ends in `z`), or `None` when empty.
     pub extent: Option<[[f64; 2]; 3]>,
-    /// Reachable spans `(x, y, z_low, z_high)`, one per interval of each column.
+    /// Reachable spans `(x, y, z_low, z_high)` of the platform centre, one per interval of
+    /// each column.
     pub spans: Vec<[f64; 4]>,
 }
 
@@ -186,7 +187,7 @@ impl Geometry {
             && limits.pose_allowed(pose, &solution)
     }
 
-    /// The positions reachable at orientation `[roll, pitch, yaw]`, on an
+    /// The platform-centre positions reachable at orientation `[roll, pitch, yaw]`, on an
     /// `resolution × resolution` grid of columns (see the module docs).
     pub fn constant_orientation_workspace(
         &self,
@@ -249,7 +250,14 @@ impl Geometry {
                 row
             })
             .collect();
-        let spans: Vec<[f64; 4]> = rows.into_iter().flatten().collect();
+        // Report platform-centre positions: with a pivot offset `c` the centre sits at
+        // `p + c − R c`, a constant shift at a fixed orientation.
+        let shift = self.pivot() - rotation * self.pivot();
+        let spans: Vec<[f64; 4]> = rows
+            .into_iter()
+            .flatten()
+            .map(|[x, y, z0, z1]| [x + shift.x, y + shift.y, z0 + shift.z, z1 + shift.z])
+            .collect();
         let volume = spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell;
         let coarse = if pose_limits {
             // The sampled estimate's own error is about one sample per span end.

@@ -175,3 +175,38 @@ fn orientation_range_edges_are_sharp() {
         }
     }
 }
+
+#[test]
+fn with_a_pivot_the_workspace_is_that_of_the_platform_centre() {
+    // The same platform with and without a pivot offset has the same set of reachable
+    // platform-centre placements at a fixed orientation.
+    let rpy = [
+        Angle::from_degrees(8.0),
+        Angle::from_degrees(-4.0),
+        Angle::from_degrees(12.0),
+    ];
+    let plain = paired()
+        .constant_orientation_workspace(&Limits::default(), rpy, 100)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut params = paired().params().clone();
+    params.pivot = Vector3::new(0.05, -0.02, 0.3);
+    let pivoted = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
+    let shifted = pivoted
+        .constant_orientation_workspace(&Limits::default(), rpy, 100)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        (plain.volume - shifted.volume).abs() < 1e-9,
+        "{} vs {}",
+        plain.volume,
+        shifted.volume
+    );
+    let (a, b) = (
+        plain.extent.unwrap_or_default(),
+        shifted.extent.unwrap_or_default(),
+    );
+    for k in 0..3 {
+        for e in 0..2 {
+            assert!((a[k][e] - b[k][e]).abs() < 1e-9, "{a:?} vs {b:?}");
+        }
+    }
+}
