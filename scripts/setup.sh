@@ -3,9 +3,11 @@
 # root or with sudo available). Safe to run again: it does nothing when all are present.
 set -euo pipefail
 
-# Every system package the build, the program and the tests need. Later milestones add
-# here (Mesa's software Vulkan driver for headless rendering, ffmpeg for video export, …).
-PACKAGES=(gcc libc6-dev pkg-config ca-certificates)
+# Every system package the build, the program and the tests need.
+PACKAGES=(gcc libc6-dev pkg-config ca-certificates
+  mesa-vulkan-drivers libvulkan1 libegl1 libegl-mesa0 libgl1-mesa-dri   # software GPU (lavapipe) for headless rendering
+  ffmpeg                                                                 # MP4 export, ffprobe in tests
+)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

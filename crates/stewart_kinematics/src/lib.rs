@@ -28,6 +28,7 @@ pub mod layout;
 pub mod limits;
 pub mod pose;
 pub mod scenario;
+pub mod scene;
 pub mod table;
 pub mod trajectory;
 pub mod workspace;

@@ -1,0 +1,111 @@
+//! Choosing an adapter and opening a device, with or without a window.
+
+use thiserror::Error;
+
+/// Why no GPU device could be opened.
+#[derive(Debug, Error)]
+pub enum GpuError {
+    /// No adapter at all.
+    #[error(
+        "no graphics adapter found: install a GPU driver, or Mesa's software Vulkan driver (Debian: `apt-get install mesa-vulkan-drivers libvulkan1`)"
+    )]
+    NoAdapter,
+    /// `WGPU_ADAPTER_NAME` matched nothing.
+    #[error(
+        "WGPU_ADAPTER_NAME is `{wanted}` but no adapter's name contains it (adapters: {available})"
+    )]
+    NoMatchingAdapter {
+        /// The name asked for.
+        wanted: String,
+        /// The adapters found.
+        available: String,
+    },
+    /// The adapter refused to open a device.
+    #[error("the graphics adapter `{adapter}` could not open a device: {message}")]
+    Device {
+        /// Adapter name.
+        adapter: String,
+        /// The driver's words.
+        message: String,
+    },
+}
+
+/// An instance, adapter, device and queue.
+pub struct Gpu {
+    /// The instance.
+    pub instance: wgpu::Instance,
+    /// The adapter in use.
+    pub adapter: wgpu::Adapter,
+    /// The device.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+}
+
+impl Gpu {
+    /// A device for offscreen rendering: a real GPU when present, otherwise a software
+    /// adapter (lavapipe). Honours `WGPU_BACKEND` (e.g. `vulkan`, `gl`) and
+    /// `WGPU_ADAPTER_NAME` (a part of the adapter's name, e.g. `llvmpipe`).
+    pub fn headless() -> Result<Gpu, GpuError> {
+        pollster::block_on(Self::headless_async())
+    }
+
+    async fn headless_async() -> Result<Gpu, GpuError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = Self::choose_adapter(&instance).await?;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("stewart"),
+                required_limits: wgpu::Limits::downlevel_webgl2_defaults()
+                    .using_resolution(adapter.limits()),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| GpuError::Device {
+                adapter: adapter.get_info().name,
+                message: e.to_string(),
+            })?;
+        Ok(Gpu {
+            instance,
+            adapter,
+            device,
+            queue,
+        })
+    }
+
+    async fn choose_adapter(instance: &wgpu::Instance) -> Result<wgpu::Adapter, GpuError> {
+        if let Ok(wanted) = std::env::var("WGPU_ADAPTER_NAME") {
+            let adapters = instance.enumerate_adapters(wgpu::Backends::all()).await;
+            let names: Vec<String> = adapters.iter().map(|a| a.get_info().name).collect();
+            let lower = wanted.to_lowercase();
+            return adapters
+                .into_iter()
+                .find(|a| a.get_info().name.to_lowercase().contains(&lower))
+                .ok_or(GpuError::NoMatchingAdapter {
+                    wanted,
+                    available: names.join(", "),
+                });
+        }
+        let options = |fallback| wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::from_env()
+                .unwrap_or(wgpu::PowerPreference::HighPerformance),
+            force_fallback_adapter: fallback,
+            compatible_surface: None,
+            ..Default::default()
+        };
+        if let Ok(a) = instance.request_adapter(&options(false)).await {
+            return Ok(a);
+        }
+        instance
+            .request_adapter(&options(true))
+            .await
+            .map_err(|_| GpuError::NoAdapter)
+    }
+
+    /// A one-line description of the adapter: name, backend, type.
+    pub fn describe(&self) -> String {
+        let info = self.adapter.get_info();
+        format!("{} ({:?}, {:?})", info.name, info.backend, info.device_type)
+    }
+}

@@ -1,0 +1,29 @@
+//! The Stewart platform studio's renderer, on wgpu.
+//!
+//! It draws a [`stewart_kinematics::scene::SceneFrame`] — base and platform plates,
+//! legs as actuator body and rod, joints, ground grid, axes, the traced path — into any
+//! colour view: a window's surface, a texture inside the UI, or an offscreen texture
+//! read back for export and tests. It knows nothing of egui or winit.
+//!
+//! - [`camera`]: the orbit camera (glam);
+//! - [`draw_list`]: scene frame → instances, plates and lines (CPU);
+//! - [`renderer`]: pipelines and the one draw entry point;
+//! - [`offscreen`]: headless targets and read-back;
+//! - [`gpu`]: adapter choice (a GPU, else lavapipe), honouring `WGPU_BACKEND` / `WGPU_ADAPTER_NAME`.
+
+pub mod camera;
+pub mod draw_list;
+pub mod gpu;
+pub mod gpu_types;
+pub mod mesh;
+pub mod offscreen;
+pub mod renderer;
+pub mod shaders;
+pub mod theme;
+
+pub use camera::OrbitCamera;
+pub use draw_list::{DrawList, Overlays};
+pub use gpu::{Gpu, GpuError};
+pub use offscreen::{Frame, Offscreen, OffscreenError};
+pub use renderer::Renderer;
+pub use theme::Theme;

@@ -1,0 +1,294 @@
+//! Rendering into a texture with no window, and reading the pixels back.
+
+use crate::camera::OrbitCamera;
+use crate::draw_list::DrawList;
+use crate::gpu::{Gpu, GpuError};
+use crate::renderer::{DEPTH_FORMAT, Renderer};
+use crate::theme::Theme;
+
+/// Colour format of offscreen frames (sRGB, so images match the screen).
+pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// Largest frame side, pixels (4K is 3840 × 2160).
+pub const MAX_SIDE: u32 = 4096;
+
+/// An RGBA image read back from the GPU, rows top to bottom, no padding.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Frame {
+    /// Width, pixels.
+    pub width: u32,
+    /// Height, pixels.
+    pub height: u32,
+    /// `width × height × 4` bytes, sRGB.
+    pub rgba: Vec<u8>,
+}
+
+impl Frame {
+    /// The pixel at `(x, y)`.
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
+        let i = 4 * (y as usize * self.width as usize + x as usize);
+        [
+            self.rgba[i],
+            self.rgba[i + 1],
+            self.rgba[i + 2],
+            self.rgba[i + 3],
+        ]
+    }
+}
+
+/// Textures of one size.
+struct Targets {
+    width: u32,
+    height: u32,
+    msaa: Option<wgpu::TextureView>,
+    resolve: wgpu::Texture,
+    resolve_view: wgpu::TextureView,
+    depth: wgpu::TextureView,
+    readback: wgpu::Buffer,
+    padded_row: u32,
+}
+
+impl Targets {
+    fn new(device: &wgpu::Device, width: u32, height: u32, samples: u32) -> Self {
+        let size = wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        };
+        let texture = |label: &str, format, samples, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size,
+                mip_level_count: 1,
+                sample_count: samples,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let msaa = (samples > 1).then(|| {
+            texture(
+                "msaa colour",
+                FORMAT,
+                samples,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            )
+            .create_view(&Default::default())
+        });
+        let resolve = texture(
+            "colour",
+            FORMAT,
+            1,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
+        let resolve_view = resolve.create_view(&Default::default());
+        let depth = texture(
+            "depth",
+            DEPTH_FORMAT,
+            samples,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        )
+        .create_view(&Default::default());
+        // Rows of a texture-to-buffer copy must be padded to 256 bytes.
+        let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let padded_row = (4 * width).div_ceil(align) * align;
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: u64::from(padded_row) * u64::from(height),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        Self {
+            width,
+            height,
+            msaa,
+            resolve,
+            resolve_view,
+            depth,
+            readback,
+            padded_row,
+        }
+    }
+}
+
+/// Why an offscreen frame could not be made.
+#[derive(Debug, thiserror::Error)]
+pub enum OffscreenError {
+    /// No device.
+    #[error(transparent)]
+    Gpu(#[from] GpuError),
+    /// A size of zero or beyond the limit.
+    #[error("the frame size {width}×{height} is not between 1×1 and {max}×{max}")]
+    Size {
+        /// Width asked for.
+        width: u32,
+        /// Height asked for.
+        height: u32,
+        /// Largest side.
+        max: u32,
+    },
+    /// Reading the pixels back failed.
+    #[error("reading the frame back from the GPU failed: {0}")]
+    Readback(String),
+}
+
+/// A headless renderer: the scene renderer plus offscreen targets.
+pub struct Offscreen {
+    gpu: Gpu,
+    renderer: Renderer,
+    targets: Option<Targets>,
+}
+
+impl Offscreen {
+    /// Open a device (see [`Gpu::headless`]) and build the renderer, with 4× MSAA when the
+    /// adapter supports it.
+    pub fn new() -> Result<Self, OffscreenError> {
+        let gpu = Gpu::headless()?;
+        let features = gpu.adapter.get_texture_format_features(FORMAT);
+        let samples = if features.flags.sample_count_supported(4) {
+            4
+        } else {
+            1
+        };
+        let renderer = Renderer::new(&gpu.device, FORMAT, samples);
+        Ok(Self {
+            gpu,
+            renderer,
+            targets: None,
+        })
+    }
+
+    /// The adapter in words.
+    pub fn adapter(&self) -> String {
+        self.gpu.describe()
+    }
+
+    /// MSAA samples in use.
+    pub fn samples(&self) -> u32 {
+        self.renderer.samples
+    }
+
+    /// Draw `list` seen by `camera` in `theme` at `width × height` and read it back.
+    pub fn render(
+        &mut self,
+        list: &DrawList,
+        camera: &OrbitCamera,
+        theme: &Theme,
+        width: u32,
+        height: u32,
+    ) -> Result<Frame, OffscreenError> {
+        self.submit(list, camera, theme, width, height)?;
+        self.read()
+    }
+
+    /// Draw and start copying to the readback buffer, without waiting.
+    pub fn submit(
+        &mut self,
+        list: &DrawList,
+        camera: &OrbitCamera,
+        theme: &Theme,
+        width: u32,
+        height: u32,
+    ) -> Result<(), OffscreenError> {
+        if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
+            return Err(OffscreenError::Size {
+                width,
+                height,
+                max: MAX_SIDE,
+            });
+        }
+        let device = &self.gpu.device;
+        if self
+            .targets
+            .as_ref()
+            .is_none_or(|t| t.width != width || t.height != height)
+        {
+            self.targets = Some(Targets::new(device, width, height, self.renderer.samples));
+        }
+        let Some(t) = &self.targets else {
+            unreachable!("targets were just made")
+        };
+        self.renderer.prepare(
+            device,
+            &self.gpu.queue,
+            list,
+            camera,
+            theme,
+            width as f32 / height as f32,
+        );
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("offscreen"),
+        });
+        match &t.msaa {
+            Some(msaa) => self
+                .renderer
+                .render(&mut encoder, msaa, Some(&t.resolve_view), &t.depth),
+            None => self
+                .renderer
+                .render(&mut encoder, &t.resolve_view, None, &t.depth),
+        }
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &t.resolve,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &t.readback,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(t.padded_row),
+                    rows_per_image: Some(height),
+                },
+            },
+            wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+        );
+        self.gpu.queue.submit([encoder.finish()]);
+        Ok(())
+    }
+
+    /// Wait for the last submitted frame and return its pixels.
+    pub fn read(&mut self) -> Result<Frame, OffscreenError> {
+        let Some(t) = &self.targets else {
+            return Err(OffscreenError::Readback(
+                "no frame was submitted".to_owned(),
+            ));
+        };
+        let slice = t.readback.slice(..);
+        let (sender, receiver) = std::sync::mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = sender.send(r);
+        });
+        self.gpu
+            .device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| OffscreenError::Readback(e.to_string()))?;
+        receiver
+            .recv()
+            .map_err(|e| OffscreenError::Readback(e.to_string()))?
+            .map_err(|e| OffscreenError::Readback(e.to_string()))?;
+        let row = 4 * t.width as usize;
+        let mut rgba = Vec::with_capacity(row * t.height as usize);
+        {
+            let data = slice
+                .get_mapped_range()
+                .map_err(|e| OffscreenError::Readback(e.to_string()))?;
+            for y in 0..t.height as usize {
+                let start = y * t.padded_row as usize;
+                rgba.extend_from_slice(&data[start..start + row]);
+            }
+        }
+        t.readback.unmap();
+        Ok(Frame {
+            width: t.width,
+            height: t.height,
+            rgba,
+        })
+    }
+}

@@ -1,0 +1,433 @@
+//! The renderer: pipelines and buffers, and one entry point that draws a scene into a
+//! colour view (a window's surface, an egui viewport or an offscreen texture).
+
+use wgpu::util::DeviceExt;
+
+use crate::camera::OrbitCamera;
+use crate::draw_list::DrawList;
+use crate::gpu_types::{Globals, LineVertex, MeshInstance, MeshVertex};
+use crate::mesh::Mesh;
+use crate::shaders;
+use crate::theme::{Theme, linear};
+
+/// Depth buffer format.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// A static mesh on the GPU.
+struct GpuMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    count: u32,
+}
+
+impl GpuMesh {
+    fn new(device: &wgpu::Device, mesh: &Mesh, label: &str) -> Self {
+        Self {
+            vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(&mesh.vertices),
+                usage: wgpu::BufferUsages::VERTEX,
+            }),
+            indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(&mesh.indices),
+                usage: wgpu::BufferUsages::INDEX,
+            }),
+            count: mesh.indices.len() as u32,
+        }
+    }
+}
+
+/// A vertex or instance buffer rewritten every frame, grown when needed.
+struct DynamicBuffer {
+    buffer: wgpu::Buffer,
+    capacity: u64,
+    usage: wgpu::BufferUsages,
+    label: &'static str,
+}
+
+impl DynamicBuffer {
+    fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages) -> Self {
+        let capacity = 4096;
+        let usage = usage | wgpu::BufferUsages::COPY_DST;
+        Self {
+            buffer: device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: capacity,
+                usage,
+                mapped_at_creation: false,
+            }),
+            capacity,
+            usage,
+            label,
+        }
+    }
+
+    fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, bytes: &[u8]) {
+        let needed = bytes.len() as u64;
+        if needed > self.capacity {
+            self.capacity = needed.next_power_of_two();
+            self.buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(self.label),
+                size: self.capacity,
+                usage: self.usage,
+                mapped_at_creation: false,
+            });
+        }
+        if !bytes.is_empty() {
+            queue.write_buffer(&self.buffer, 0, bytes);
+        }
+    }
+}
+
+/// Ranges of the shared instance buffer, per mesh.
+#[derive(Default, Clone)]
+struct Batches {
+    cylinders: std::ops::Range<u32>,
+    spheres: std::ops::Range<u32>,
+    cones: std::ops::Range<u32>,
+    /// (first index, index count) of each plate in the plate buffer, back to front, and its instance.
+    plates: Vec<(u32, u32, u32)>,
+    lines: u32,
+}
+
+/// Pipelines, meshes and per-frame buffers for drawing a Stewart platform.
+pub struct Renderer {
+    opaque: wgpu::RenderPipeline,
+    translucent: wgpu::RenderPipeline,
+    lines: wgpu::RenderPipeline,
+    globals: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    cylinder: GpuMesh,
+    sphere: GpuMesh,
+    cone: GpuMesh,
+    instances: DynamicBuffer,
+    plate_vertices: DynamicBuffer,
+    plate_indices: DynamicBuffer,
+    line_vertices: DynamicBuffer,
+    batches: Batches,
+    clear: wgpu::Color,
+    /// MSAA sample count the pipelines were built for.
+    pub samples: u32,
+    /// Colour format the pipelines were built for.
+    pub format: wgpu::TextureFormat,
+}
+
+impl Renderer {
+    /// Build the pipelines for colour `format` with `samples` (1 or 4) MSAA samples.
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, samples: u32) -> Self {
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("globals"),
+            size: size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("globals"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("globals"),
+            layout: &layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: globals.as_entire_binding(),
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("stewart"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let mesh_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("mesh.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(shaders::MESH.into()),
+        });
+        let line_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("lines.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(shaders::LINES.into()),
+        });
+        let mesh_buffers = [
+            Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<MeshVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+            }),
+            Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<MeshInstance>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4, 4 => Float32x4, 5 => Float32x4, 6 => Float32x4],
+            }),
+        ];
+        let multisample = wgpu::MultisampleState {
+            count: samples,
+            mask: !0,
+            alpha_to_coverage_enabled: false,
+        };
+        let blend_target = [Some(wgpu::ColorTargetState {
+            format,
+            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+            write_mask: wgpu::ColorWrites::ALL,
+        })];
+        let mesh_pipeline = |label: &str, depth_write: bool, cull: Option<wgpu::Face>| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &mesh_module,
+                    entry_point: Some("vs_main"),
+                    compilation_options: Default::default(),
+                    buffers: &mesh_buffers,
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology: wgpu::PrimitiveTopology::TriangleList,
+                    cull_mode: cull,
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(depth_write),
+                    depth_compare: Some(wgpu::CompareFunction::Less),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample,
+                fragment: Some(wgpu::FragmentState {
+                    module: &mesh_module,
+                    entry_point: Some("fs_main"),
+                    compilation_options: Default::default(),
+                    targets: &blend_target,
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
+        // Translucent plates: depth-tested against the opaque scene, not written, both
+        // faces drawn, back to front.
+        let translucent = mesh_pipeline("translucent plates", false, None);
+        let lines = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("lines"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &line_module,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<LineVertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4],
+                })],
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::LineList,
+                ..Default::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample,
+            fragment: Some(wgpu::FragmentState {
+                module: &line_module,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &blend_target,
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self {
+            opaque,
+            translucent,
+            lines,
+            globals,
+            bind_group,
+            cylinder: GpuMesh::new(device, &Mesh::cylinder(), "cylinder"),
+            sphere: GpuMesh::new(device, &Mesh::sphere(), "sphere"),
+            cone: GpuMesh::new(device, &Mesh::cone(), "cone"),
+            instances: DynamicBuffer::new(device, "instances", wgpu::BufferUsages::VERTEX),
+            plate_vertices: DynamicBuffer::new(
+                device,
+                "plate vertices",
+                wgpu::BufferUsages::VERTEX,
+            ),
+            plate_indices: DynamicBuffer::new(device, "plate indices", wgpu::BufferUsages::INDEX),
+            line_vertices: DynamicBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX),
+            batches: Batches::default(),
+            clear: wgpu::Color::BLACK,
+            samples,
+            format,
+        }
+    }
+
+    /// Upload one frame: the camera for `aspect` (width / height), the theme and the draw list.
+    pub fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        list: &DrawList,
+        camera: &OrbitCamera,
+        theme: &Theme,
+        aspect: f32,
+    ) {
+        let eye = camera.eye();
+        // Key light over the viewer's right shoulder and above; fill from the other side.
+        let forward = -camera.direction();
+        let right = forward.cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
+        let key = (-forward + right * 0.6 + glam::Vec3::Z * 0.9).normalize();
+        let fill = (-forward - right * 0.8 + glam::Vec3::Z * 0.2).normalize();
+        let globals = Globals {
+            view_proj: camera.view_proj(aspect).to_cols_array_2d(),
+            eye: [eye.x, eye.y, eye.z, 1.0],
+            key_light: [key.x, key.y, key.z, 0.75],
+            fill_light: [fill.x, fill.y, fill.z, 0.25],
+            shading: [0.22, 0.25, 48.0, 0.0],
+        };
+        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+        let bg = linear(theme.background);
+        self.clear = wgpu::Color {
+            r: bg[0] as f64,
+            g: bg[1] as f64,
+            b: bg[2] as f64,
+            a: 1.0,
+        };
+
+        // Instances: cylinders, spheres, cones, then one identity instance per plate.
+        let mut instances: Vec<MeshInstance> = Vec::with_capacity(
+            list.cylinders.len() + list.spheres.len() + list.cones.len() + list.plates.len(),
+        );
+        let range = |items: &[MeshInstance], all: &mut Vec<MeshInstance>| {
+            let start = all.len() as u32;
+            all.extend_from_slice(items);
+            start..all.len() as u32
+        };
+        let cylinders = range(&list.cylinders, &mut instances);
+        let spheres = range(&list.spheres, &mut instances);
+        let cones = range(&list.cones, &mut instances);
+        // Plates back to front from the eye.
+        let mut order: Vec<usize> = (0..list.plates.len()).collect();
+        order.sort_by(|&a, &b| {
+            let da = (list.plates[a].2 - eye).length_squared();
+            let db = (list.plates[b].2 - eye).length_squared();
+            db.total_cmp(&da)
+        });
+        let mut plate_vertices: Vec<MeshVertex> = Vec::new();
+        let mut plate_indices: Vec<u32> = Vec::new();
+        let mut plates = Vec::new();
+        for k in order {
+            let (mesh, color, _) = &list.plates[k];
+            let base = plate_vertices.len() as u32;
+            let first = plate_indices.len() as u32;
+            plate_vertices.extend_from_slice(&mesh.vertices);
+            plate_indices.extend(mesh.indices.iter().map(|i| i + base));
+            let instance = instances.len() as u32;
+            instances.push(MeshInstance {
+                model: glam::Mat4::IDENTITY.to_cols_array_2d(),
+                color: *color,
+            });
+            plates.push((first, mesh.indices.len() as u32, instance));
+        }
+        self.instances
+            .write(device, queue, bytemuck::cast_slice(&instances));
+        self.plate_vertices
+            .write(device, queue, bytemuck::cast_slice(&plate_vertices));
+        self.plate_indices
+            .write(device, queue, bytemuck::cast_slice(&plate_indices));
+        self.line_vertices
+            .write(device, queue, bytemuck::cast_slice(&list.lines));
+        self.batches = Batches {
+            cylinders,
+            spheres,
+            cones,
+            plates,
+            lines: list.lines.len() as u32,
+        };
+    }
+
+    /// The background colour of the prepared frame (linear), for clearing.
+    pub fn clear_color(&self) -> wgpu::Color {
+        self.clear
+    }
+
+    /// Draw the prepared frame into an open render pass.
+    pub fn paint(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        if self.batches.lines > 0 {
+            pass.set_pipeline(&self.lines);
+            pass.set_vertex_buffer(0, self.line_vertices.buffer.slice(..));
+            pass.draw(0..self.batches.lines, 0..1);
+        }
+        pass.set_pipeline(&self.opaque);
+        pass.set_vertex_buffer(1, self.instances.buffer.slice(..));
+        for (mesh, range) in [
+            (&self.cylinder, &self.batches.cylinders),
+            (&self.sphere, &self.batches.spheres),
+            (&self.cone, &self.batches.cones),
+        ] {
+            if range.is_empty() {
+                continue;
+            }
+            pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+            pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..mesh.count, 0, range.clone());
+        }
+        if !self.batches.plates.is_empty() {
+            pass.set_pipeline(&self.translucent);
+            pass.set_vertex_buffer(0, self.plate_vertices.buffer.slice(..));
+            pass.set_index_buffer(
+                self.plate_indices.buffer.slice(..),
+                wgpu::IndexFormat::Uint32,
+            );
+            for &(first, count, instance) in &self.batches.plates {
+                pass.draw_indexed(first..first + count, 0, instance..instance + 1);
+            }
+        }
+    }
+
+    /// Record a whole pass: clear `target` (and `depth`), draw, resolve into `resolve` when MSAA is on.
+    pub fn render(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        resolve: Option<&wgpu::TextureView>,
+        depth: &wgpu::TextureView,
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("stewart scene"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: resolve,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(self.clear),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: depth,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        self.paint(&mut pass);
+    }
+}

@@ -1,0 +1,99 @@
+//! Colour themes: a dark one for the screen, a light one for slides and papers.
+
+/// An sRGB colour with alpha, components 0..1.
+pub type Srgba = [f32; 4];
+
+/// Every colour the renderer uses, in sRGB.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Theme {
+    /// Background.
+    pub background: Srgba,
+    /// Ground grid lines.
+    pub grid: Srgba,
+    /// The fixed base plate (translucent).
+    pub base_plate: Srgba,
+    /// The moving platform (translucent).
+    pub platform: Srgba,
+    /// Actuator bodies.
+    pub leg_body: Srgba,
+    /// Actuator rods.
+    pub leg_rod: Srgba,
+    /// A leg within 5 % of a stroke end.
+    pub leg_near_limit: Srgba,
+    /// A leg over its stroke.
+    pub leg_over_limit: Srgba,
+    /// Joints.
+    pub joint: Srgba,
+    /// The path traced by the platform centre.
+    pub path: Srgba,
+    /// x, y, z axes.
+    pub axes: [Srgba; 3],
+}
+
+impl Theme {
+    /// Dark background for the screen.
+    pub const DARK: Theme = Theme {
+        background: [0.11, 0.12, 0.14, 1.0],
+        grid: [0.32, 0.34, 0.38, 1.0],
+        base_plate: [0.55, 0.57, 0.60, 0.55],
+        platform: [0.85, 0.22, 0.20, 0.70],
+        leg_body: [0.25, 0.45, 0.85, 1.0],
+        leg_rod: [0.75, 0.80, 0.88, 1.0],
+        leg_near_limit: [1.0, 0.60, 0.10, 1.0],
+        leg_over_limit: [1.0, 0.88, 0.0, 1.0],
+        joint: [0.90, 0.90, 0.92, 1.0],
+        path: [0.35, 0.85, 0.95, 1.0],
+        axes: [
+            [0.90, 0.25, 0.25, 1.0],
+            [0.30, 0.80, 0.30, 1.0],
+            [0.30, 0.50, 0.95, 1.0],
+        ],
+    };
+
+    /// White background, dark lines: for slides and papers.
+    pub const LIGHT: Theme = Theme {
+        background: [1.0, 1.0, 1.0, 1.0],
+        grid: [0.78, 0.79, 0.81, 1.0],
+        base_plate: [0.45, 0.47, 0.50, 0.45],
+        platform: [0.80, 0.16, 0.14, 0.65],
+        leg_body: [0.12, 0.30, 0.70, 1.0],
+        leg_rod: [0.45, 0.50, 0.58, 1.0],
+        leg_near_limit: [0.95, 0.50, 0.0, 1.0],
+        leg_over_limit: [1.0, 0.80, 0.0, 1.0],
+        joint: [0.20, 0.20, 0.22, 1.0],
+        path: [0.05, 0.55, 0.70, 1.0],
+        axes: [
+            [0.80, 0.10, 0.10, 1.0],
+            [0.10, 0.60, 0.10, 1.0],
+            [0.10, 0.30, 0.85, 1.0],
+        ],
+    };
+
+    /// A theme by name: `dark` or `light`.
+    pub fn by_name(name: &str) -> Option<Theme> {
+        match name {
+            "dark" => Some(Theme::DARK),
+            "light" => Some(Theme::LIGHT),
+            _ => None,
+        }
+    }
+}
+
+/// sRGB component to linear.
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// An sRGB colour to linear RGB, alpha kept.
+pub fn linear(c: Srgba) -> [f32; 4] {
+    [
+        srgb_to_linear(c[0]),
+        srgb_to_linear(c[1]),
+        srgb_to_linear(c[2]),
+        c[3],
+    ]
+}

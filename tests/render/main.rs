@@ -1,0 +1,177 @@
+//! Headless rendering tests: shaders validate, frames show what they must, and match
+//! reference images. They run on whatever adapter `Gpu::headless` finds (lavapipe in CI).
+
+mod shaders;
+mod snapshots;
+
+use glam::Vec3;
+use stewart_kinematics::{Geometry, GeometryParams, Pose, StrokeLimits};
+use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
+
+/// Render `pose` of `geometry` at `width × height` with the seed view.
+pub fn render(
+    offscreen: &mut Offscreen,
+    geometry: &Geometry,
+    pose: &Pose,
+    theme: &Theme,
+    width: u32,
+    height: u32,
+) -> (Frame, OrbitCamera) {
+    let frame = geometry.scene_frame(pose, Vec::new());
+    let list = DrawList::build(&frame, theme, &Overlays::default());
+    let camera = seed_camera(geometry);
+    let image = offscreen
+        .render(&list, &camera, theme, width, height)
+        .unwrap_or_else(|e| panic!("{e}"));
+    (image, camera)
+}
+
+/// The seed's view framing the platform at home.
+pub fn seed_camera(geometry: &Geometry) -> OrbitCamera {
+    let h = geometry.home_height() as f32;
+    OrbitCamera::seed_view(
+        Vec3::new(0.0, 0.0, 0.45 * h),
+        geometry.params().base_radius as f32 * 1.15,
+    )
+}
+
+/// Pixel coordinates of a world point.
+pub fn project(camera: &OrbitCamera, p: Vec3, width: u32, height: u32) -> (u32, u32) {
+    let ndc = camera
+        .view_proj(width as f32 / height as f32)
+        .project_point3(p);
+    let x = ((ndc.x + 1.0) * 0.5 * width as f32) as u32;
+    let y = ((1.0 - ndc.y) * 0.5 * height as f32) as u32;
+    (x.min(width - 1), y.min(height - 1))
+}
+
+/// A headless renderer, or a failed test saying why.
+pub fn offscreen() -> Offscreen {
+    Offscreen::new().unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn is_platform_red(p: [u8; 4]) -> bool {
+    p[0] as i32 > p[1] as i32 + 60 && p[0] as i32 > p[2] as i32 + 60
+}
+
+#[test]
+fn the_platform_centre_shows_the_platform_colour_at_any_width() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    // 333 is not a multiple of 64: rows are padded on the GPU and must be unpadded.
+    for (w, h) in [(320, 240), (333, 217)] {
+        for theme in [Theme::DARK, Theme::LIGHT] {
+            let (frame, camera) = render(&mut off, &g, &g.home_pose(), &theme, w, h);
+            assert_eq!(
+                (frame.width, frame.height, frame.rgba.len()),
+                (w, h, (w * h * 4) as usize)
+            );
+            let (x, y) = project(&camera, Vec3::new(0.0, 0.0, 0.8), w, h);
+            let p = frame.pixel(x, y);
+            assert!(
+                is_platform_red(p),
+                "{w}×{h}: pixel at the platform centre ({x}, {y}) is {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn themes_have_their_backgrounds() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let (dark, _) = render(&mut off, &g, &g.home_pose(), &Theme::DARK, 160, 120);
+    let (light, _) = render(&mut off, &g, &g.home_pose(), &Theme::LIGHT, 160, 120);
+    assert!(
+        dark.pixel(2, 2)[..3].iter().all(|&c| c < 50),
+        "{:?}",
+        dark.pixel(2, 2)
+    );
+    assert_eq!(light.pixel(2, 2), [255, 255, 255, 255]);
+}
+
+#[test]
+fn the_image_changes_with_the_pose_and_only_then() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let (a, _) = render(&mut off, &g, &g.home_pose(), &Theme::DARK, 200, 150);
+    let (b, _) = render(&mut off, &g, &g.home_pose(), &Theme::DARK, 200, 150);
+    assert_eq!(a.rgba, b.rgba, "the same pose must render the same image");
+    let moved = Pose::from_xyz_rpy_deg([0.1, 0.0, 0.85], [0.0, 5.0, 10.0]);
+    let (c, _) = render(&mut off, &g, &moved, &Theme::DARK, 200, 150);
+    let changed = a
+        .rgba
+        .chunks(4)
+        .zip(c.rgba.chunks(4))
+        .filter(|(p, q)| p != q)
+        .count();
+    assert!(changed > 500, "only {changed} pixels changed");
+}
+
+#[test]
+fn a_leg_over_its_stroke_shows_the_warning_colour() {
+    let mut off = offscreen();
+    let mut params = GeometryParams::seed();
+    params.stroke = StrokeLimits::new(0.5, 0.97); // home legs are 0.98 m: every leg is over
+    let g = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
+    let (w, h) = (320, 240);
+    let (frame, camera) = render(&mut off, &g, &g.home_pose(), &Theme::DARK, w, h);
+    let warning = Theme::DARK.leg_over_limit;
+    let target = [0, 1, 2].map(|k| (warning[k] * 255.0) as i32);
+    // Somewhere along leg 1 (the one nearest the camera at azimuth 135° is leg 2, at 60°).
+    let sol = g.inverse(&g.home_pose());
+    let mut best = i32::MAX;
+    for i in 0..6 {
+        for s in [0.3f32, 0.5, 0.7] {
+            let b = sol.platform_joints[i] - sol.legs[i];
+            let p = b + sol.legs[i] * s as f64;
+            let (x, y) = project(&camera, Vec3::new(p.x as f32, p.y as f32, p.z as f32), w, h);
+            let q = frame.pixel(x, y);
+            let d = (0..3)
+                .map(|k| (q[k] as i32 - target[k]).abs())
+                .max()
+                .unwrap_or(255);
+            best = best.min(d);
+        }
+    }
+    // Shading darkens and lightens the colour: the closest leg pixel must be within 30%.
+    assert!(
+        best < 80,
+        "no leg pixel near the warning colour {target:?} (closest distance {best})"
+    );
+    let normal = render(
+        &mut off,
+        &Geometry::seed(),
+        &g.home_pose(),
+        &Theme::DARK,
+        w,
+        h,
+    )
+    .0;
+    let yellowish = |f: &Frame| {
+        f.rgba
+            .chunks(4)
+            .filter(|p| p[0] > 180 && p[1] > 140 && p[2] < 80)
+            .count()
+    };
+    assert!(
+        yellowish(&frame) > 10 * yellowish(&normal).max(1),
+        "{} vs {}",
+        yellowish(&frame),
+        yellowish(&normal)
+    );
+}
+
+#[test]
+fn a_bad_size_is_an_error_not_a_panic() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let list = DrawList::build(
+        &g.scene_frame(&g.home_pose(), Vec::new()),
+        &Theme::DARK,
+        &Overlays::default(),
+    );
+    let camera = seed_camera(&g);
+    assert!(off.render(&list, &camera, &Theme::DARK, 0, 100).is_err());
+    assert!(off.render(&list, &camera, &Theme::DARK, 100, 5000).is_err());
+}
