@@ -7,6 +7,8 @@ set -euo pipefail
 PACKAGES=(gcc libc6-dev pkg-config ca-certificates
   mesa-vulkan-drivers libvulkan1 libegl1 libegl-mesa0 libgl1-mesa-dri   # software GPU (lavapipe) for headless rendering
   ffmpeg                                                                 # MP4 export, ffprobe in tests
+  fonts-dejavu-core                                                      # text in PDF and PNG plots
+  poppler-utils                                                          # pdftoppm: tests open exported PDFs
 )
 
 missing=()

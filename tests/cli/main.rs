@@ -3,6 +3,7 @@
 
 mod analysis;
 mod check;
+mod export;
 mod fk;
 mod solve;
 

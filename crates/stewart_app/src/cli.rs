@@ -29,6 +29,10 @@ pub enum Command {
     Workspace(WorkspaceArgs),
     /// Leg forces for a payload along the trajectory (static and dynamic), as CSV.
     Forces(ForcesArgs),
+    /// Render the trajectory headlessly: a PNG sequence (folder), a GIF or an MP4.
+    Render(RenderArgs),
+    /// The leg-length plot for a paper: SVG, PDF or PNG.
+    Plot(PlotArgs),
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset).
@@ -150,4 +154,88 @@ pub struct ForcesArgs {
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+}
+
+/// `WxH`, such as `1280x720`.
+pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let (w, h) = text
+        .split_once(['x', 'X', '×'])
+        .ok_or_else(|| format!("`{text}` is not a size like 1280x720"))?;
+    let side = |s: &str| -> Result<u32, String> {
+        let v: u32 = s
+            .trim()
+            .parse()
+            .map_err(|_| format!("`{s}` is not a whole number of pixels"))?;
+        if (16..=4096).contains(&v) {
+            Ok(v)
+        } else {
+            Err(format!("{v} pixels is outside 16..=4096"))
+        }
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+/// `A..B`, `A..` or `..B`: frame indices from A (default 0) up to, not including, B.
+pub fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String> {
+    let (a, b) = text
+        .split_once("..")
+        .ok_or_else(|| format!("`{text}` is not a range like 0..100"))?;
+    let index = |s: &str| -> Result<Option<usize>, String> {
+        if s.trim().is_empty() {
+            Ok(None)
+        } else {
+            s.trim()
+                .parse()
+                .map(Some)
+                .map_err(|_| format!("`{s}` is not a frame number"))
+        }
+    };
+    Ok((index(a)?, index(b)?))
+}
+
+/// Arguments of `stewart render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
+    #[arg(long, value_name = "OUT")]
+    pub out: PathBuf,
+    /// Frame size WxH in pixels (up to 3840x2160 and beyond, 4096 a side at most).
+    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
+    pub size: (u32, u32),
+    /// Frames per second of the output (default: the trajectory's own sample rate, one frame per sample).
+    #[arg(long, value_name = "N")]
+    pub fps: Option<f64>,
+    /// Only frames A..B (indices, B excluded).
+    #[arg(long, value_name = "A..B", value_parser = parse_frames)]
+    pub frames: Option<(Option<usize>, Option<usize>)>,
+    /// Colours: `dark` for the screen, `light` for slides and papers.
+    #[arg(long, value_enum, default_value_t = ThemeName::Dark)]
+    pub theme: ThemeName,
+    /// Camera AZ,EL,DIST (degrees, degrees, metres); default: the seed's view framing the platform.
+    #[arg(long, value_name = "AZ,EL,DIST", value_parser = parse_triple, allow_hyphen_values = true)]
+    pub camera: Option<[f64; 3]>,
+    /// Put the leg-length plot beside the 3D view, with a marker at the frame's time.
+    #[arg(long)]
+    pub composite: bool,
+}
+
+/// The colour themes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ThemeName {
+    /// Dark background.
+    Dark,
+    /// White background (presentation).
+    Light,
+}
+
+/// Arguments of `stewart plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// `.svg`, `.pdf` or `.png`.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
 }

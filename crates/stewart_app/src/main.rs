@@ -6,6 +6,7 @@
 mod cli;
 mod commands;
 mod csv_io;
+mod export;
 mod output;
 mod source;
 
@@ -23,6 +24,8 @@ fn main() -> ExitCode {
         Some(Command::Fk(args)) => commands::fk::run(&args),
         Some(Command::Workspace(args)) => commands::workspace::run(&args),
         Some(Command::Forces(args)) => commands::forces::run(&args),
+        Some(Command::Render(args)) => commands::render::run(&args),
+        Some(Command::Plot(args)) => commands::plot::run(&args),
         None => commands::no_command(),
     };
     match result {

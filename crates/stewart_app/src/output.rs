@@ -26,10 +26,22 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
     tmp.write_all(bytes)
         .and_then(|()| tmp.as_file().sync_all())
         .with_context(|| format!("cannot write `{shown}`"))?;
+    readable_by_all(tmp.path());
     tmp.persist(path)
         .map_err(|e| e.error)
         .with_context(|| format!("cannot write `{shown}`"))?;
     Ok(())
+}
+
+/// Give a staged file or folder the usual permissions (temporary files are private).
+pub fn readable_by_all(path: &Path) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = if path.is_dir() { 0o755 } else { 0o644 };
+        // Best effort: a file that stays private is still a correct file.
+        let _ = std::fs::set_permissions(path, std::fs::Permissions::from_mode(mode));
+    }
 }
 
 /// Write `bytes` to `path`, or to standard output when there is no path.

@@ -3,6 +3,8 @@
 pub mod check;
 pub mod fk;
 pub mod forces;
+pub mod plot;
+pub mod render;
 pub mod solve;
 pub mod workspace;
 

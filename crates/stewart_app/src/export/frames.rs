@@ -1,0 +1,183 @@
+//! Rendering a trajectory's frames headlessly, optionally beside the leg-length plot.
+
+use anyhow::{Result, anyhow};
+use glam::Vec3;
+use nalgebra::Vector3;
+use stewart_kinematics::{Pose, Scenario};
+use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
+
+use super::plot::{self, PlotData};
+use super::vector;
+
+/// What to render.
+pub struct FrameJob {
+    /// Frame times, seconds.
+    pub times: Vec<f64>,
+    /// Output size, pixels.
+    pub width: u32,
+    /// Output size, pixels.
+    pub height: u32,
+    /// Colours.
+    pub theme: Theme,
+    /// The camera.
+    pub camera: OrbitCamera,
+    /// The 3D view and the plot side by side.
+    pub composite: bool,
+}
+
+/// The seed's view framing `scenario`'s platform.
+pub fn default_camera(scenario: &Scenario) -> OrbitCamera {
+    let g = &scenario.geometry;
+    let h = g.home_height() as f32;
+    OrbitCamera::seed_view(
+        Vec3::new(0.0, 0.0, 0.45 * h),
+        g.params().base_radius.max(g.params().platform_radius) as f32 * 1.15,
+    )
+}
+
+/// The plot half of a composite frame: the static plot once, then a marker per frame.
+struct PlotPanel {
+    width: u32,
+    height: u32,
+    rgba: Vec<u8>,
+    /// Pixel x of t0 and t1 and the plot area's top and bottom rows.
+    x_of_t: (f64, f64, f64, f64),
+    rows: (u32, u32),
+}
+
+impl PlotPanel {
+    fn new(scenario: &Scenario, width: u32, height: u32) -> Result<Self> {
+        let samples = scenario.motion.sample();
+        let lengths: Vec<[f64; 6]> = samples
+            .poses
+            .iter()
+            .map(|p| scenario.geometry.leg_lengths(p))
+            .collect();
+        let stroke = scenario.geometry.stroke();
+        let svg = plot::svg(&PlotData {
+            title: &format!("Leg lengths — {}", scenario.name),
+            times: &samples.times,
+            lengths: &lengths,
+            leg_min: stroke.min,
+            leg_max: stroke.max,
+            marker: None,
+        });
+        let (rgba, scale, (ox, oy)) = vector::rgba_fit(&svg, width, height)?;
+        let (ml, mr, mt, mb) = plot::margins();
+        let (scale, ox, oy) = (f64::from(scale), f64::from(ox), f64::from(oy));
+        let t0 = samples.times.first().copied().unwrap_or(0.0);
+        let t1 = samples.times.last().copied().unwrap_or(1.0);
+        Ok(Self {
+            width,
+            height,
+            rgba,
+            x_of_t: (ox + ml * scale, ox + (plot::WIDTH - mr) * scale, t0, t1),
+            rows: (
+                (oy + mt * scale) as u32,
+                (oy + (plot::HEIGHT - mb) * scale) as u32,
+            ),
+        })
+    }
+
+    /// The panel with a 2-pixel black marker at time `t`.
+    fn at(&self, t: f64) -> Vec<u8> {
+        let mut rgba = self.rgba.clone();
+        let (x0, x1, t0, t1) = self.x_of_t;
+        let x = (x0 + (t - t0) / (t1 - t0).max(1e-12) * (x1 - x0)).round() as i64;
+        for y in self.rows.0..self.rows.1.min(self.height) {
+            for dx in 0..2 {
+                let xx = x + dx;
+                if (0..self.width as i64).contains(&xx) {
+                    let i = 4 * (y as usize * self.width as usize + xx as usize);
+                    rgba[i..i + 4].copy_from_slice(&[20, 20, 20, 255]);
+                }
+            }
+        }
+        rgba
+    }
+}
+
+/// Renders the frames of a job one by one.
+pub struct FrameSource<'a> {
+    scenario: &'a Scenario,
+    job: &'a FrameJob,
+    offscreen: Offscreen,
+    panel: Option<PlotPanel>,
+    path: Vec<Vector3<f64>>,
+    view_width: u32,
+}
+
+impl<'a> FrameSource<'a> {
+    /// Open the GPU and prepare the plot panel.
+    pub fn new(scenario: &'a Scenario, job: &'a FrameJob) -> Result<Self> {
+        let offscreen = Offscreen::new()?;
+        let (view_width, panel) = if job.composite {
+            let view = (job.width as f64 * 0.55).round() as u32;
+            (
+                view,
+                Some(PlotPanel::new(scenario, job.width - view, job.height)?),
+            )
+        } else {
+            (job.width, None)
+        };
+        if view_width == 0 {
+            return Err(anyhow!("the frame is too narrow for the composite layout"));
+        }
+        Ok(Self {
+            scenario,
+            job,
+            offscreen,
+            panel,
+            path: Vec::new(),
+            view_width,
+        })
+    }
+
+    /// The adapter in words.
+    pub fn adapter(&self) -> String {
+        self.offscreen.adapter()
+    }
+
+    /// Width and height of the frames.
+    pub fn frame_size(&self) -> (u32, u32) {
+        (self.job.width, self.job.height)
+    }
+
+    /// Render frame `k` (frames must be asked for in order for the traced path).
+    pub fn frame(&mut self, k: usize) -> Result<Frame> {
+        let t = self.job.times[k];
+        let g = &self.scenario.geometry;
+        let pose: Pose = self.scenario.motion.trajectory.pose_at(t);
+        self.path.push(g.platform_centre(&pose));
+        let scene = g.scene_frame(&pose, self.path.clone());
+        let list = DrawList::build(&scene, &self.job.theme, &Overlays::default());
+        // The camera frames the platform for views at least as wide as high; back off for narrower ones.
+        let aspect = self.view_width as f32 / self.job.height as f32;
+        let mut camera = self.job.camera;
+        camera.distance /= aspect.min(1.0);
+        let view = self.offscreen.render(
+            &list,
+            &camera,
+            &self.job.theme,
+            self.view_width,
+            self.job.height,
+        )?;
+        let Some(panel) = &self.panel else {
+            return Ok(view);
+        };
+        let plot = panel.at(t);
+        let (w, h) = (self.job.width as usize, self.job.height as usize);
+        let mut rgba = Vec::with_capacity(w * h * 4);
+        for y in 0..h {
+            let left = y * self.view_width as usize * 4;
+            rgba.extend_from_slice(&view.rgba[left..left + self.view_width as usize * 4]);
+            let right = y * panel.width as usize * 4;
+            rgba.extend_from_slice(&plot[right..right + panel.width as usize * 4]);
+        }
+        Ok(Frame {
+            width: self.job.width,
+            height: self.job.height,
+            rgba,
+        })
+    }
+}

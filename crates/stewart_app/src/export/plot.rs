@@ -1,0 +1,270 @@
+//! The leg-length plot as SVG: axes with units, ticks, legend L1…L6, stroke limits as
+//! dashed lines, white background, sized for a paper (16 cm × 9 cm). Text is SVG text and
+//! every curve a `<polyline>`, so the vector outputs are real vectors.
+
+use std::fmt::Write as _;
+
+/// Okabe–Ito colours: distinguishable with colour-blindness and in grey print.
+pub const LEG_COLOURS: [&str; 6] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9",
+];
+
+/// What to plot.
+pub struct PlotData<'a> {
+    /// Title above the axes.
+    pub title: &'a str,
+    /// Sample times, seconds.
+    pub times: &'a [f64],
+    /// Six leg lengths per sample, metres.
+    pub lengths: &'a [[f64; 6]],
+    /// Stroke limits, metres.
+    pub leg_min: Option<f64>,
+    /// Stroke limits, metres.
+    pub leg_max: Option<f64>,
+    /// A vertical marker at this time (the current frame of a video), seconds.
+    pub marker: Option<f64>,
+}
+
+/// Page size in CSS pixels (96 per inch): 16 cm × 9 cm.
+pub const WIDTH: f64 = 604.7;
+/// See [`WIDTH`].
+pub const HEIGHT: f64 = 340.2;
+
+/// Plot area margins: left, right, top, bottom.
+const MARGIN: [f64; 4] = [62.0, 78.0, 30.0, 44.0];
+
+/// The plot area's margins (left, right, top, bottom) in CSS pixels of the page.
+pub fn margins() -> (f64, f64, f64, f64) {
+    (MARGIN[0], MARGIN[1], MARGIN[2], MARGIN[3])
+}
+
+/// About `count` "nice" ticks (1, 2, 5 × 10ⁿ apart) covering `[lo, hi]`.
+pub fn nice_ticks(lo: f64, hi: f64, count: usize) -> Vec<f64> {
+    let span = (hi - lo).abs().max(1e-12);
+    let raw = span / count.max(1) as f64;
+    let magnitude = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * magnitude)
+        .find(|s| *s >= raw * 0.999)
+        .unwrap_or(raw);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
+}
+
+fn label(v: f64, step: f64) -> String {
+    let decimals = if step >= 1.0 {
+        0
+    } else {
+        (-step.log10()).ceil() as usize
+    };
+    format!("{v:.decimals$}")
+}
+
+/// The plot as an SVG document.
+pub fn svg(data: &PlotData) -> String {
+    let t0 = data.times.first().copied().unwrap_or(0.0);
+    let t1 = data.times.last().copied().unwrap_or(1.0).max(t0 + 1e-9);
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    for l in data.lengths.iter().flatten() {
+        lo = lo.min(*l);
+        hi = hi.max(*l);
+    }
+    for limit in [data.leg_min, data.leg_max].into_iter().flatten() {
+        lo = lo.min(limit);
+        hi = hi.max(limit);
+    }
+    if !lo.is_finite() {
+        (lo, hi) = (0.0, 1.0);
+    }
+    let pad = 0.05 * (hi - lo).max(1e-6);
+    let (lo, hi) = (lo - pad, hi + pad);
+    let [ml, mr, mt, mb] = MARGIN;
+    let (x0, x1, y0, y1) = (ml, WIDTH - mr, HEIGHT - mb, mt);
+    let sx = |t: f64| x0 + (t - t0) / (t1 - t0) * (x1 - x0);
+    let sy = |l: f64| y0 + (l - lo) / (hi - lo) * (y1 - y0);
+
+    let mut s = String::new();
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="160mm" height="90mm" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="DejaVu Sans, Arial, Helvetica, sans-serif" font-size="11">"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<rect x="0" y="0" width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.1}" y="18" text-anchor="middle" font-size="13">{}</text>"#,
+        0.5 * (x0 + x1),
+        escape(data.title)
+    );
+    // Grid and ticks.
+    let x_ticks = nice_ticks(t0, t1, 8);
+    let y_ticks = nice_ticks(lo, hi, 6);
+    let x_step = x_ticks
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .next()
+        .unwrap_or(1.0);
+    let y_step = y_ticks
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .next()
+        .unwrap_or(0.1);
+    let _ = writeln!(
+        s,
+        r##"<g class="grid" stroke="#e0e0e0" stroke-width="0.6">"##
+    );
+    for &t in &x_ticks {
+        let _ = writeln!(
+            s,
+            r#"<line x1="{0:.2}" y1="{y0:.2}" x2="{0:.2}" y2="{y1:.2}"/>"#,
+            sx(t)
+        );
+    }
+    for &l in &y_ticks {
+        let _ = writeln!(
+            s,
+            r#"<line x1="{x0:.2}" y1="{0:.2}" x2="{x1:.2}" y2="{0:.2}"/>"#,
+            sy(l)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(s, r#"<g class="ticks" fill="black">"#);
+    for &t in &x_ticks {
+        let _ = writeln!(
+            s,
+            r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
+            sx(t),
+            y0 + 15.0,
+            label(t, x_step)
+        );
+    }
+    for &l in &y_ticks {
+        let _ = writeln!(
+            s,
+            r#"<text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
+            x0 - 6.0,
+            sy(l) + 4.0,
+            label(l, y_step)
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(
+        s,
+        r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="black" stroke-width="0.8"/>"#,
+        x1 - x0,
+        y0 - y1
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">Time t (s)</text>"#,
+        0.5 * (x0 + x1),
+        HEIGHT - 8.0
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">Leg length L (m)</text>"#,
+        0.5 * (y0 + y1)
+    );
+    // Stroke limits.
+    for (name, limit) in [("min", data.leg_min), ("max", data.leg_max)] {
+        if let Some(l) = limit {
+            let y = sy(l);
+            let _ = writeln!(
+                s,
+                r##"<line class="stroke-{name}" x1="{x0:.2}" y1="{y:.2}" x2="{x1:.2}" y2="{y:.2}" stroke="#444" stroke-width="1" stroke-dasharray="5 3"/>"##
+            );
+            let _ = writeln!(
+                s,
+                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">L{name} = {l} m</text>"##,
+                x1 - 4.0,
+                y - 3.0
+            );
+        }
+    }
+    // Curves.
+    for leg in 0..6 {
+        let mut points = String::with_capacity(data.lengths.len() * 16);
+        for (t, l) in data.times.iter().zip(data.lengths) {
+            let _ = write!(points, "{:.2},{:.2} ", sx(*t), sy(l[leg]));
+        }
+        let _ = writeln!(
+            s,
+            r#"<polyline class="leg L{}" fill="none" stroke="{}" stroke-width="1.4" stroke-linejoin="round" points="{}"/>"#,
+            leg + 1,
+            LEG_COLOURS[leg],
+            points.trim_end()
+        );
+    }
+    if let Some(t) = data.marker {
+        let x = sx(t.clamp(t0, t1));
+        let _ = writeln!(
+            s,
+            r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="black" stroke-width="1.2"/>"#
+        );
+    }
+    // Legend, right of the axes.
+    let _ = writeln!(s, r#"<g class="legend">"#);
+    for (leg, colour) in LEG_COLOURS.iter().enumerate() {
+        let y = y1 + 14.0 + 16.0 * leg as f64;
+        let _ = writeln!(
+            s,
+            r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="{}" stroke-width="2"/><text x="{:.2}" y="{:.2}">L{}</text>"#,
+            x1 + 8.0,
+            x1 + 26.0,
+            colour,
+            x1 + 31.0,
+            y + 4.0,
+            leg + 1
+        );
+    }
+    let _ = writeln!(s, "</g>");
+    s.push_str("</svg>\n");
+    s
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_are_nice_and_cover_the_range() {
+        assert_eq!(
+            nice_ticks(0.0, 10.0, 8),
+            vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]
+        );
+        let t = nice_ticks(0.82, 1.21, 6);
+        assert!(t.iter().all(|v| (0.82..=1.21).contains(v)));
+        assert!((t[1] - t[0] - 0.05).abs() < 1e-12, "{t:?}");
+    }
+
+    #[test]
+    fn the_svg_holds_six_curves_limits_and_labels() {
+        let times: Vec<f64> = (0..11).map(|k| k as f64).collect();
+        let lengths: Vec<[f64; 6]> = times.iter().map(|t| [1.0 + 0.01 * t; 6]).collect();
+        let text = svg(&PlotData {
+            title: "a < b",
+            times: &times,
+            lengths: &lengths,
+            leg_min: Some(0.9),
+            leg_max: Some(1.2),
+            marker: Some(5.0),
+        });
+        assert_eq!(text.matches("<polyline").count(), 6);
+        assert!(text.contains("Time t (s)") && text.contains("Leg length L (m)"));
+        assert!(text.contains("stroke-dasharray") && text.contains("Lmax = 1.2 m"));
+        assert!(text.contains("a &lt; b"));
+        assert!(text.contains(r#"class="marker""#));
+    }
+}

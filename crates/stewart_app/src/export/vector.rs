@@ -1,0 +1,77 @@
+//! SVG to PDF (svg2pdf: text stays text, curves stay paths) and to PNG (resvg).
+
+use std::sync::{Arc, OnceLock};
+
+use anyhow::{Context, Result};
+use resvg::{tiny_skia, usvg};
+
+/// The system fonts, loaded once (DejaVu Sans on Debian: `fonts-dejavu-core`).
+fn fonts() -> Arc<usvg::fontdb::Database> {
+    static FONTS: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
+    FONTS
+        .get_or_init(|| {
+            let mut db = usvg::fontdb::Database::new();
+            db.load_system_fonts();
+            Arc::new(db)
+        })
+        .clone()
+}
+
+/// Parse an SVG document with the system fonts.
+pub fn tree(svg: &str) -> Result<usvg::Tree> {
+    let options = usvg::Options {
+        fontdb: fonts(),
+        ..usvg::Options::default()
+    };
+    usvg::Tree::from_str(svg, &options).context("the plot's SVG could not be parsed")
+}
+
+/// The SVG as a one-page PDF of the same size.
+pub fn pdf(svg: &str) -> Result<Vec<u8>> {
+    // svg2pdf's usvg is the same version as resvg's, so one tree serves both.
+    let tree = tree(svg)?;
+    svg2pdf::to_pdf(
+        &tree,
+        svg2pdf::ConversionOptions::default(),
+        svg2pdf::PageOptions::default(),
+    )
+    .map_err(|e| anyhow::anyhow!("the plot could not be converted to PDF: {e}"))
+}
+
+/// The SVG as a PNG at `scale` × its CSS-pixel size (scale 3.125 ≈ 300 dpi), on white.
+pub fn png(svg: &str, scale: f32) -> Result<Vec<u8>> {
+    let tree = tree(svg)?;
+    let size = tree.size();
+    let (w, h) = (
+        (size.width() * scale).ceil() as u32,
+        (size.height() * scale).ceil() as u32,
+    );
+    let mut pixmap = tiny_skia::Pixmap::new(w, h).context("the plot image size is invalid")?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    resvg::render(
+        &tree,
+        tiny_skia::Transform::from_scale(scale, scale),
+        &mut pixmap.as_mut(),
+    );
+    pixmap
+        .encode_png()
+        .context("the plot could not be encoded as PNG")
+}
+
+/// The SVG rasterised into a white `width × height` RGBA image, scaled uniformly to fit
+/// and centred (for video composites). Returns the pixels, the scale and the offset.
+pub fn rgba_fit(svg: &str, width: u32, height: u32) -> Result<(Vec<u8>, f32, (f32, f32))> {
+    let tree = tree(svg)?;
+    let size = tree.size();
+    let scale = (width as f32 / size.width()).min(height as f32 / size.height());
+    let offset = (
+        0.5 * (width as f32 - scale * size.width()),
+        0.5 * (height as f32 - scale * size.height()),
+    );
+    let mut pixmap =
+        tiny_skia::Pixmap::new(width, height).context("the plot image size is invalid")?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    let transform = tiny_skia::Transform::from_row(scale, 0.0, 0.0, scale, offset.0, offset.1);
+    resvg::render(&tree, transform, &mut pixmap.as_mut());
+    Ok((pixmap.take(), scale, offset))
+}

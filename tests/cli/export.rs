@@ -1,0 +1,268 @@
+//! `stewart render` and `stewart plot`: files a person would open, checked as such.
+
+use std::path::Path;
+use std::process::Command;
+
+use crate::{stderr, stewart, tempdir};
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .map(|e| e.file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+#[test]
+fn a_png_sequence_has_the_right_count_names_and_size() {
+    let dir = tempdir();
+    let out = dir.path().join("frames");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--frames",
+        "10..25",
+        "--size",
+        "200x120",
+        "--theme",
+        "light",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let files = names(&out);
+    assert_eq!(files.len(), 15);
+    assert_eq!(files[0], "frame_00010.png");
+    assert_eq!(files[14], "frame_00024.png");
+    for f in &files {
+        let img = image::open(out.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+        assert_eq!((img.width(), img.height()), (200, 120));
+    }
+    // Light theme: white corners; and consecutive frames differ (the platform moves).
+    let a = image::open(out.join(&files[0]))
+        .map(|i| i.to_rgba8())
+        .unwrap_or_default();
+    let b = image::open(out.join(&files[14]))
+        .map(|i| i.to_rgba8())
+        .unwrap_or_default();
+    assert_eq!(a.get_pixel(0, 0).0, [255, 255, 255, 255]);
+    assert_ne!(a.as_raw(), b.as_raw());
+    // Only the folder was created: no staging leftovers.
+    assert_eq!(names(dir.path()), ["frames"]);
+    // Rendering again into the now non-empty folder is refused, and it is left as it was.
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--frames",
+        "0..2",
+        "--size",
+        "200x120",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("is not an empty folder"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(names(&out).len(), 15);
+}
+
+#[test]
+fn a_gif_has_every_frame_at_the_frame_rate() {
+    let dir = tempdir();
+    let out = dir.path().join("motion.gif");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--fps",
+        "20",
+        "--frames",
+        "0..12",
+        "--size",
+        "160x100",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file = std::fs::File::open(&out).unwrap_or_else(|e| panic!("{e}"));
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options.read_info(file).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((decoder.width(), decoder.height()), (160, 100));
+    let mut count = 0;
+    while let Some(frame) = decoder.read_next_frame().unwrap_or_else(|e| panic!("{e}")) {
+        assert_eq!(frame.delay, 5, "20 frames/s is 5 centiseconds a frame");
+        count += 1;
+    }
+    assert_eq!(count, 12);
+}
+
+#[test]
+fn an_mp4_has_its_frames_and_duration() {
+    let dir = tempdir();
+    let out = dir.path().join("motion.mp4");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--fps",
+        "25",
+        "--frames",
+        "0..50",
+        "--size",
+        "320x180",
+        "--composite",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let probe = Command::new("ffprobe")
+        .args([
+            "-v",
+            "error",
+            "-count_frames",
+            "-select_streams",
+            "v:0",
+            "-show_entries",
+            "stream=nb_read_frames,width,height,codec_name",
+            "-show_entries",
+            "format=duration",
+            "-of",
+            "default=noprint_wrappers=1",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap_or_else(|e| panic!("ffprobe: {e}"));
+    let text = String::from_utf8_lossy(&probe.stdout).into_owned();
+    assert!(text.contains("codec_name=h264"), "{text}");
+    assert!(
+        text.contains("width=320") && text.contains("height=180"),
+        "{text}"
+    );
+    assert!(text.contains("nb_read_frames=50"), "{text}");
+    let duration: f64 = text
+        .lines()
+        .find_map(|l| l.strip_prefix("duration="))
+        .and_then(|d| d.parse().ok())
+        .unwrap_or(0.0);
+    assert!((duration - 2.0).abs() < 0.05, "{text}");
+}
+
+#[test]
+fn mp4_without_ffmpeg_says_how_to_install_it() {
+    let dir = tempdir();
+    let out = dir.path().join("motion.mp4");
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "render",
+            "--out",
+            &out.display().to_string(),
+            "--frames",
+            "0..2",
+        ])
+        .env("PATH", dir.path())
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("apt-get install ffmpeg"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn bad_render_options_are_refused() {
+    let dir = tempdir();
+    let out = dir.path().join("x.gif").display().to_string();
+    for (args, expected) in [
+        (vec!["--size", "10x10"], "outside 16..=4096"),
+        (vec!["--size", "big"], "not a size"),
+        (vec!["--frames", "5..3"], "not a non-empty range"),
+        (vec!["--frames", "0..99999"], "not a non-empty range"),
+        (vec!["--fps", "0"], "--fps must be"),
+    ] {
+        let mut all = vec!["render", "--out", &out];
+        all.extend(args);
+        let o = stewart(&all);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(stderr(&o).contains(expected), "{}", stderr(&o));
+    }
+    assert!(names(dir.path()).is_empty(), "{:?}", names(dir.path()));
+}
+
+#[test]
+fn the_plot_is_real_svg_pdf_and_png() {
+    let dir = tempdir();
+    let svg = dir.path().join("legs.svg");
+    let o = stewart(&[
+        "plot",
+        "--preset",
+        "paired",
+        "--out",
+        &svg.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap_or_default();
+    let tree = resvg::usvg::Tree::from_str(&text, &resvg::usvg::Options::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(tree.size().width() > 500.0);
+    for leg in 1..=6 {
+        assert_eq!(text.matches(&format!(r#"class="leg L{leg}""#)).count(), 1);
+    }
+    assert!(
+        text.contains("<text") && text.contains("Leg length L (m)") && text.contains("Time t (s)")
+    );
+    assert_eq!(
+        text.matches("stroke-dasharray").count(),
+        2,
+        "both stroke limits"
+    );
+    assert!(
+        !text.contains("<image"),
+        "vector output must not embed a bitmap"
+    );
+
+    let pdf = dir.path().join("legs.pdf");
+    let o = stewart(&[
+        "plot",
+        "--preset",
+        "paired",
+        "--out",
+        &pdf.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let bytes = std::fs::read(&pdf).unwrap_or_default();
+    assert!(bytes.starts_with(b"%PDF-"));
+    let raster = dir.path().join("page");
+    let r = Command::new("pdftoppm")
+        .args(["-png", "-r", "50", "-singlefile"])
+        .arg(&pdf)
+        .arg(&raster)
+        .output()
+        .unwrap_or_else(|e| panic!("pdftoppm: {e}"));
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let page = image::open(dir.path().join("page.png"))
+        .map(|i| i.to_rgb8())
+        .unwrap_or_else(|e| panic!("{e}"));
+    let coloured = page
+        .pixels()
+        .filter(|p| p.0.iter().max().unwrap_or(&0) - p.0.iter().min().unwrap_or(&0) > 60)
+        .count();
+    assert!(
+        coloured > 200,
+        "the PDF page shows the coloured curves ({coloured} pixels)"
+    );
+
+    let png = dir.path().join("legs.png");
+    let o = stewart(&["plot", "--out", &png.display().to_string()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let img = image::open(&png).unwrap_or_else(|e| panic!("{e}"));
+    assert!(img.width() >= 1800, "about 300 dpi for a 16 cm figure");
+
+    let o = stewart(&[
+        "plot",
+        "--out",
+        &dir.path().join("legs.txt").display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("must end in .svg, .pdf or .png"));
+}
