@@ -50,6 +50,7 @@ pub struct ScenarioArgs {
 /// Arguments of `stewart solve`.
 #[derive(Debug, Args)]
 pub struct SolveArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Solve these poses instead of the trajectory: a CSV with columns
@@ -73,6 +74,7 @@ pub enum Format {
 /// Arguments of `stewart check`.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Report format.
@@ -83,6 +85,7 @@ pub struct CheckArgs {
 /// Arguments of `stewart fk`.
 #[derive(Debug, Args)]
 pub struct FkArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Leg lengths: a CSV with columns L1..L6 (metres) and optionally t; other columns are
@@ -121,6 +124,7 @@ pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
 /// Arguments of `stewart workspace`.
 #[derive(Debug, Args)]
 pub struct WorkspaceArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Platform orientation ROLL,PITCH,YAW in degrees.
@@ -140,6 +144,7 @@ pub struct WorkspaceArgs {
 /// Arguments of `stewart forces`.
 #[derive(Debug, Args)]
 pub struct ForcesArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Moving mass in kg (overrides the scenario's `[payload]`).
@@ -196,6 +201,7 @@ pub fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String
 /// Arguments of `stewart render`.
 #[derive(Debug, Args)]
 pub struct RenderArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
@@ -233,6 +239,7 @@ pub enum ThemeName {
 /// Arguments of `stewart plot`.
 #[derive(Debug, Args)]
 pub struct PlotArgs {
+    /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// `.svg`, `.pdf` or `.png`.

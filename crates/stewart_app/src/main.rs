@@ -3,18 +3,11 @@
 //! Exit status: 0 success (and, for `check`, nothing found), 1 a check found a
 //! problem, 2 unusable input or output (one sentence on standard error says which).
 
-mod cli;
-mod commands;
-mod csv_io;
-mod export;
-mod output;
-mod source;
-
 use std::process::ExitCode;
 
 use clap::Parser;
-
-use crate::cli::{Cli, Command};
+use stewart_app::cli::{Cli, Command};
+use stewart_app::commands;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();

@@ -1,0 +1,49 @@
+//! Export throughput: the seed trajectory rendered at 1280×720 and encoded to PNG files
+//! by the same pipeline as `stewart render` (GPU render and read-back on one thread, PNG
+//! encoding on worker threads). Each iteration exports 60 frames; criterion reports
+//! frames per second. `cargo bench -p stewart_app --bench export`.
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use indicatif::ProgressBar;
+use stewart_app::export::encode::{Target, export};
+use stewart_app::export::frames::{FrameJob, FrameSource, default_camera};
+use stewart_kinematics::Scenario;
+use stewart_render::Theme;
+
+const FRAMES: usize = 60;
+
+fn bench(c: &mut Criterion) {
+    let scenario = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+    let job = FrameJob {
+        times: scenario.motion.sampling.times().collect(),
+        width: 1280,
+        height: 720,
+        theme: Theme::DARK,
+        camera: default_camera(&scenario),
+        composite: false,
+    };
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut group = c.benchmark_group("export_1280x720");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(FRAMES as u64));
+    let mut run = 0;
+    group.bench_function("png_frames", |b| {
+        b.iter(|| {
+            let mut source = FrameSource::new(&scenario, &job).unwrap_or_else(|e| panic!("{e}"));
+            run += 1;
+            let out = dir.path().join(format!("run{run}"));
+            export(
+                &mut source,
+                0..FRAMES,
+                100.0,
+                &Target::Folder(out),
+                &ProgressBar::hidden(),
+            )
+            .unwrap_or_else(|e| panic!("{e}"));
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,9 @@
+//! The Stewart-platform studio's program, as a library the `stewart` binary (and the
+//! export benchmark) use: command-line definitions, one module per command, exports.
+
+pub mod cli;
+pub mod commands;
+pub mod csv_io;
+pub mod export;
+pub mod output;
+pub mod source;
