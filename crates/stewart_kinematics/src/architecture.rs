@@ -160,13 +160,7 @@ mod tests {
     /// value near home is 0.65–0.75 (see the seed test).
     #[test]
     fn paired_geometry_is_regular() {
-        let g = Geometry::new(GeometryParams::from_layout(
-            1.0,
-            0.6,
-            0.8,
-            Layout::paired(20.0),
-        ))
-        .unwrap_or_else(|e| panic!("{e}"));
+        let g = crate::test_support::paired_geometry();
         let report = g.architecture();
         assert!(!report.singular);
         assert!(!report.projective_correspondence);

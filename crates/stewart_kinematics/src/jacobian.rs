@@ -143,16 +143,6 @@ mod tests {
     use crate::layout::Layout;
     use proptest::prelude::*;
 
-    fn paired() -> Geometry {
-        Geometry::new(GeometryParams::from_layout(
-            1.0,
-            0.6,
-            0.8,
-            Layout::paired(20.0),
-        ))
-        .unwrap_or_else(|e| panic!("{e}"))
-    }
-
     /// Leg rates by finite differences of inverse kinematics for a twist (v, ω) about
     /// the pivot point: move the pivot by v·h and rotate by ω·h (rotation composed in the
     /// base frame, about the pivot point).
@@ -195,7 +185,7 @@ mod tests {
 
     #[test]
     fn paired_layout_is_well_conditioned_at_home() {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let c = g.conditioning(&g.home_pose());
         assert!(!c.is_singular());
         assert!(c.singular_values[5] > 0.1, "{:?}", c.singular_values);
@@ -221,7 +211,7 @@ mod tests {
     #[test]
     fn characteristic_length_makes_the_measure_unit_free() {
         // The same platform in millimetres has the same normalised singular values.
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let mut mm = g.params().clone();
         mm.base_radius *= 1000.0;
         mm.platform_radius *= 1000.0;

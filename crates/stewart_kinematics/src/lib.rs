@@ -33,6 +33,9 @@ pub mod table;
 pub mod trajectory;
 pub mod workspace;
 
+#[cfg(test)]
+mod test_support;
+
 pub use angle::Angle;
 pub use batch::BatchSolver;
 pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};

@@ -218,13 +218,7 @@ mod tests {
 
     #[test]
     fn closest_legs_of_the_paired_layout_are_a_pair() {
-        let g = Geometry::new(crate::GeometryParams::from_layout(
-            1.0,
-            0.6,
-            0.8,
-            crate::Layout::paired(20.0),
-        ))
-        .unwrap_or_else(|e| panic!("{e}"));
+        let g = crate::test_support::paired_geometry();
         let pose = g.home_pose();
         let c = closest_legs(&g.inverse(&pose));
         // Legs 2k and 2k+1 share a platform pair: they are the close ones.

@@ -1,19 +1,7 @@
 use super::*;
 use crate::angle::Angle;
-use crate::geometry::GeometryParams;
-use crate::layout::Layout;
 use crate::pose::Pose;
 use proptest::prelude::*;
-
-fn paired() -> Geometry {
-    Geometry::new(GeometryParams::from_layout(
-        1.0,
-        0.6,
-        0.8,
-        Layout::paired(20.0),
-    ))
-    .unwrap_or_else(|e| panic!("{e}"))
-}
 
 fn payload(mass: f64, com: [f64; 3]) -> Payload {
     Payload::new(
@@ -45,7 +33,7 @@ proptest! {
         r in -15.0f64..15.0, p in -15.0f64..15.0, w in -25.0f64..25.0,
         m in 1.0f64..500.0, cx in -0.2f64..0.2, cy in -0.2f64..0.2, cz in 0.0f64..0.4,
     ) {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let load = payload(m, [cx, cy, cz]);
         let f = g.static_forces(&pose, &load).unwrap_or_else(|| panic!("singular"));
@@ -62,7 +50,7 @@ proptest! {
 fn a_centred_load_on_the_level_platform_is_shared_equally() {
     // By the three-fold symmetry of the paired layout, a load on the axis at home splits
     // equally: each leg carries m·g / (6 · u_z), with u_z = 0.8 / L.
-    let g = paired();
+    let g = crate::test_support::paired_geometry();
     let home = g.home_pose();
     let f = g
         .static_forces(&home, &payload(60.0, [0.0, 0.0, 0.0]))
@@ -77,7 +65,7 @@ fn a_centred_load_on_the_level_platform_is_shared_equally() {
 #[test]
 fn dynamics_adds_mass_times_acceleration_in_a_vertical_lift() {
     // z = 0.8 + ½·a·t²: the legs must carry m·(g + a).
-    let g = paired();
+    let g = crate::test_support::paired_geometry();
     let a = 2.0;
     let times: Vec<f64> = (0..41).map(|k| k as f64 * 0.005).collect();
     let poses = times
@@ -105,7 +93,7 @@ fn dynamics_adds_mass_times_acceleration_in_a_vertical_lift() {
 fn dynamics_adds_inertia_times_angular_acceleration_in_a_yaw_spin_up() {
     // yaw = ½·α·t² about the centre, load centred: moment about z = I_zz·α, no net force
     // beyond the weight (the gyroscopic term vanishes for a spin about a principal axis).
-    let g = paired();
+    let g = crate::test_support::paired_geometry();
     let alpha = 3.0;
     let times: Vec<f64> = (0..41).map(|k| k as f64 * 0.005).collect();
     let poses = times

@@ -99,18 +99,10 @@ pub fn canonical(pose: &Pose) -> Pose {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::GeometryParams;
-    use crate::layout::Layout;
 
     #[test]
     fn finds_the_pose_and_its_mirror_image_below_the_base() {
-        let g = Geometry::new(GeometryParams::from_layout(
-            1.0,
-            0.6,
-            0.8,
-            Layout::paired(20.0),
-        ))
-        .unwrap_or_else(|e| panic!("{e}"));
+        let g = crate::test_support::paired_geometry();
         let truth = Pose::from_xyz_rpy_deg([0.05, -0.03, 0.85], [4.0, -3.0, 10.0]);
         let lengths = g.leg_lengths(&truth);
         let modes = g.assembly_modes(&lengths).unwrap_or_else(|e| panic!("{e}"));

@@ -101,22 +101,10 @@ impl Geometry {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::GeometryParams;
-    use crate::layout::Layout;
-
-    fn paired() -> Geometry {
-        Geometry::new(GeometryParams::from_layout(
-            1.0,
-            0.6,
-            0.8,
-            Layout::paired(20.0),
-        ))
-        .unwrap_or_else(|e| panic!("{e}"))
-    }
 
     #[test]
     fn a_smooth_sequence_is_followed_warm_and_cold() {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let truth: Vec<Pose> = (0..200)
             .map(|k| {
                 let t = k as f64 * 0.05;
@@ -152,7 +140,7 @@ mod tests {
 
     #[test]
     fn a_jump_to_the_mirror_branch_is_flagged_and_a_bad_row_is_located() {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let p = Pose::from_xyz_rpy_deg([0.02, 0.0, 0.8], [0.0, 0.0, 5.0]);
         // The mirror image of p through the base plane has the same lengths.
         let mirror = Pose::from_xyz_rpy_deg([0.02, 0.0, -0.8], [0.0, 0.0, 5.0]);

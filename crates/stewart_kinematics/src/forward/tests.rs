@@ -1,17 +1,6 @@
 use super::*;
-use crate::geometry::{GeometryParams, StrokeLimits};
-use crate::layout::Layout;
+use crate::geometry::StrokeLimits;
 use proptest::prelude::*;
-
-fn paired() -> Geometry {
-    Geometry::new(GeometryParams::from_layout(
-        1.0,
-        0.6,
-        0.8,
-        Layout::paired(20.0),
-    ))
-    .unwrap_or_else(|e| panic!("{e}"))
-}
 
 fn assert_same_pose(a: &Pose, b: &Pose, tol: f64) {
     assert!((a.position - b.position).norm() < tol, "{a:?} vs {b:?}");
@@ -28,7 +17,7 @@ proptest! {
         r in -25.0f64..25.0, p in -25.0f64..25.0, w in -40.0f64..40.0,
         dx in -0.005f64..0.005, dr in -0.5f64..0.5,
     ) {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let truth = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let lengths = g.leg_lengths(&truth);
         let start = Pose::from_xyz_rpy_deg([x + dx, y - dx, z + dx], [r + dr, p - dr, w + dr]);
@@ -44,7 +33,7 @@ proptest! {
         x in -0.25f64..0.25, y in -0.25f64..0.25, z in 0.6f64..1.0,
         r in -15.0f64..15.0, p in -15.0f64..15.0, w in -25.0f64..25.0,
     ) {
-        let g = paired();
+        let g = crate::test_support::paired_geometry();
         let truth = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let lengths = g.leg_lengths(&truth);
         let sol = g.forward(&lengths, &g.home_pose(), &ForwardOptions::default()).unwrap_or_else(|e| panic!("{e}"));
@@ -55,7 +44,7 @@ proptest! {
 
 #[test]
 fn impossible_lengths_fail_with_a_typed_error() {
-    let g = paired();
+    let g = crate::test_support::paired_geometry();
     // Every leg 0.1 m: joints 1 and 4 of the base are 2 m apart, of the platform at most
     // 1.2 m, so no platform can be within 0.1 m of both: there is no solution.
     let err = g
@@ -103,7 +92,7 @@ fn impossible_lengths_fail_with_a_typed_error() {
 
 #[test]
 fn iteration_limit_is_reported() {
-    let g = paired();
+    let g = crate::test_support::paired_geometry();
     let truth = Pose::from_xyz_rpy_deg([0.1, 0.1, 0.9], [10.0, -5.0, 20.0]);
     let lengths = g.leg_lengths(&truth);
     let opts = ForwardOptions {
