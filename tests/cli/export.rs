@@ -266,3 +266,69 @@ fn the_plot_is_real_svg_pdf_and_png() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("must end in .svg, .pdf or .png"));
 }
+
+#[test]
+fn an_interrupted_export_leaves_nothing_behind() {
+    let dir = tempdir();
+    let out = dir.path().join("long.gif");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "render",
+            "--out",
+            &out.display().to_string(),
+            "--size",
+            "640x360",
+        ])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    // Wait until the export has staged its file (the Ctrl-C handler is in place by then),
+    // let it encode a little, then press Ctrl-C.
+    let started = std::time::Instant::now();
+    while names(dir.path()).is_empty() && started.elapsed().as_secs() < 60 {
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    assert!(!names(dir.path()).is_empty(), "the export never started");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .map(|s| s.success());
+    assert_eq!(killed.ok(), Some(true));
+    let o = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("interrupted"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        names(dir.path()).is_empty(),
+        "left behind: {:?}",
+        names(dir.path())
+    );
+}
+
+#[test]
+fn a_4k_frame_renders() {
+    let dir = tempdir();
+    let out = dir.path().join("uhd");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--frames",
+        "0..1",
+        "--size",
+        "3840x2160",
+        "--platform-axes",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let img = image::open(out.join("frame_00000.png")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((img.width(), img.height()), (3840, 2160));
+}

@@ -3,12 +3,14 @@
 //! encoding on worker threads). Each iteration exports 60 frames; criterion reports
 //! frames per second. `cargo bench -p stewart_app --bench export`.
 
+use std::sync::atomic::AtomicBool;
+
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use indicatif::ProgressBar;
 use stewart_app::export::encode::{Target, export};
 use stewart_app::export::frames::{FrameJob, FrameSource, default_camera};
 use stewart_kinematics::Scenario;
-use stewart_render::Theme;
+use stewart_render::{Overlays, Theme};
 
 const FRAMES: usize = 60;
 
@@ -21,6 +23,7 @@ fn bench(c: &mut Criterion) {
         theme: Theme::DARK,
         camera: default_camera(&scenario),
         composite: false,
+        overlays: Overlays::default(),
     };
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut group = c.benchmark_group("export_1280x720");
@@ -38,6 +41,7 @@ fn bench(c: &mut Criterion) {
                 100.0,
                 &Target::Folder(out),
                 &ProgressBar::hidden(),
+                &AtomicBool::new(false),
             )
             .unwrap_or_else(|e| panic!("{e}"));
         })

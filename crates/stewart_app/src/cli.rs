@@ -225,6 +225,9 @@ pub struct RenderArgs {
     /// Put the leg-length plot beside the 3D view, with a marker at the frame's time.
     #[arg(long)]
     pub composite: bool,
+    /// Draw the platform's own axes at its centre.
+    #[arg(long)]
+    pub platform_axes: bool,
 }
 
 /// The colour themes.

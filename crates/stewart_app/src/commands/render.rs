@@ -1,11 +1,13 @@
 //! `stewart render`: frames, GIF and MP4 of a trajectory, with no display.
 
 use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressStyle};
-use stewart_render::{OrbitCamera, Theme};
+use stewart_render::{OrbitCamera, Overlays, Theme};
 
 use crate::cli::{RenderArgs, ThemeName};
 use crate::export::encode::{self, Target};
@@ -67,6 +69,10 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         theme,
         camera,
         composite: args.composite,
+        overlays: Overlays {
+            platform_axes: args.platform_axes,
+            ..Overlays::default()
+        },
     };
     let mut source = FrameSource::new(&scenario, &job)?;
     let progress = ProgressBar::new((b - a) as u64);
@@ -74,8 +80,18 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         ProgressStyle::with_template("{bar:40} {pos}/{len} frames  {per_sec}  {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
+    // Ctrl-C stops the export cleanly: staged files are removed, nothing is half-written.
+    let stop = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&stop);
+    // A handler may already be installed (a second export in one process): then Ctrl-C
+    // keeps its default meaning, which also leaves no output behind.
+    let _ = ctrlc::set_handler(move || flag.store(true, Ordering::Relaxed));
     let started = Instant::now();
-    encode::export(&mut source, a..b, fps, &target, &progress)?;
+    let result = encode::export(&mut source, a..b, fps, &target, &progress, &stop);
+    if result.is_err() {
+        progress.abandon();
+    }
+    result?;
     progress.finish_and_clear();
     let seconds = started.elapsed().as_secs_f64();
     eprintln!(

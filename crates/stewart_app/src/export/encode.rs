@@ -5,6 +5,7 @@ use std::collections::BTreeMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::sync_channel;
 use std::sync::{Arc, Mutex};
 
@@ -324,12 +325,16 @@ impl Staging {
 }
 
 /// Render `indices` from `source` and encode them into `target` at `fps`, reporting on `progress`.
+///
+/// When `stop` becomes true (Ctrl-C), the export ends with an error and every staged file
+/// is removed: nothing half-written is left.
 pub fn export(
     source: &mut FrameSource,
     indices: std::ops::Range<usize>,
     fps: f64,
     target: &Target,
     progress: &ProgressBar,
+    stop: &AtomicBool,
 ) -> Result<()> {
     let first = source.frame_size();
     let mut staging = Staging::open(target, first.0, first.1, fps, indices.end.saturating_sub(1))?;
@@ -384,6 +389,10 @@ pub fn export(
         });
         let mut render_result = Ok(());
         for k in indices.clone() {
+            if stop.load(Ordering::Relaxed) {
+                render_result = Err(anyhow!("interrupted: nothing was written"));
+                break;
+            }
             match source.frame(k) {
                 Ok(frame) => {
                     if to_workers.send((k, frame)).is_err() {
@@ -397,10 +406,11 @@ pub fn export(
             }
         }
         drop(to_workers);
-        let staging = writer
+        let written = writer
             .join()
-            .map_err(|_| anyhow!("the encoder thread panicked"))??;
+            .map_err(|_| anyhow!("the encoder thread panicked"))?;
+        // A rendering failure or an interruption explains a short output: report it first.
         render_result?;
-        staging.finish()
+        written?.finish()
     })
 }

@@ -23,6 +23,8 @@ pub struct FrameJob {
     pub camera: OrbitCamera,
     /// The 3D view and the plot side by side.
     pub composite: bool,
+    /// Grid, axes, path.
+    pub overlays: Overlays,
 }
 
 /// The seed's view framing `scenario`'s platform.
@@ -150,7 +152,7 @@ impl<'a> FrameSource<'a> {
         let pose: Pose = self.scenario.motion.trajectory.pose_at(t);
         self.path.push(g.platform_centre(&pose));
         let scene = g.scene_frame(&pose, self.path.clone());
-        let list = DrawList::build(&scene, &self.job.theme, &Overlays::default());
+        let list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
         // The camera frames the platform for views at least as wide as high; back off for narrower ones.
         let aspect = self.view_width as f32 / self.job.height as f32;
         let mut camera = self.job.camera;
