@@ -271,7 +271,7 @@ fn the_plot_is_real_svg_pdf_and_png() {
 fn an_interrupted_export_leaves_nothing_behind() {
     let dir = tempdir();
     let out = dir.path().join("long.gif");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let child = Command::new(env!("CARGO_BIN_EXE_stewart"))
         .args([
             "render",
             "--out",
