@@ -332,3 +332,41 @@ fn a_4k_frame_renders() {
     let img = image::open(out.join("frame_00000.png")).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!((img.width(), img.height()), (3840, 2160));
 }
+
+#[test]
+fn no_adapter_is_one_clear_error() {
+    let dir = tempdir();
+    let out = dir.path().join("frames");
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "render",
+            "--out",
+            &out.display().to_string(),
+            "--frames",
+            "0..2",
+        ])
+        .env("VK_ICD_FILENAMES", dir.path().join("none.json"))
+        .env("WGPU_BACKEND", "vulkan")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("no graphics adapter found") && err.contains("mesa-vulkan-drivers"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "render",
+            "--out",
+            &out.display().to_string(),
+            "--frames",
+            "0..2",
+        ])
+        .env("WGPU_ADAPTER_NAME", "no-such-gpu")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("WGPU_ADAPTER_NAME is `no-such-gpu`"));
+}
