@@ -9,6 +9,7 @@ PACKAGES=(gcc libc6-dev pkg-config ca-certificates
   ffmpeg                                                                 # MP4 export, ffprobe in tests
   fonts-dejavu-core                                                      # text in PDF and PNG plots
   poppler-utils                                                          # pdftoppm: tests open exported PDFs
+  xvfb xauth                                                             # a virtual display for the viewer's smoke test
 )
 
 missing=()

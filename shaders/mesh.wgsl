@@ -9,7 +9,8 @@ struct Globals {
     key_light: vec4<f32>,
     // xyz: direction towards the fill light; w: fill strength.
     fill_light: vec4<f32>,
-    // x: ambient, y: specular strength, z: shininess, w unused.
+    // x: ambient, y: specular strength, z: shininess, w: 1 to encode the output as sRGB
+    // (for targets that are not sRGB formats, such as egui's), 0 to output linear.
     shading: vec4<f32>,
 };
 
@@ -64,5 +65,16 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     let half_vector = normalize(key + to_eye);
     let specular = globals.shading.y * pow(max(dot(n, half_vector), 0.0), globals.shading.z);
     let lit = in.color.rgb * (globals.shading.x + diffuse) + vec3<f32>(specular);
-    return vec4<f32>(lit, in.color.a);
+    return vec4<f32>(encode(lit), in.color.a);
+}
+
+// Linear to sRGB when the target does not do it (see `Globals::shading.w`).
+fn encode(linear: vec3<f32>) -> vec3<f32> {
+    if globals.shading.w < 0.5 {
+        return linear;
+    }
+    let c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
+    let low = c * 12.92;
+    let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
+    return select(high, low, c <= vec3<f32>(0.0031308));
 }

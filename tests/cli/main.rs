@@ -6,6 +6,7 @@ mod check;
 mod export;
 mod fk;
 mod solve;
+mod view;
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -77,9 +78,19 @@ pub fn parse_csv(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
 }
 
 #[test]
-fn no_argument_says_what_exists_and_succeeds() {
-    let o = stewart(&[]);
+fn help_lists_every_command() {
+    let o = stewart(&["--help"]);
     assert!(o.status.success());
-    assert!(stdout(&o).contains("solve"));
-    assert!(stdout(&o).contains("check"));
+    for command in [
+        "solve",
+        "check",
+        "fk",
+        "workspace",
+        "forces",
+        "render",
+        "plot",
+        "view",
+    ] {
+        assert!(stdout(&o).contains(command), "{command}");
+    }
 }

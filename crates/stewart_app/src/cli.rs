@@ -33,10 +33,12 @@ pub enum Command {
     Render(RenderArgs),
     /// The leg-length plot for a paper: SVG, PDF or PNG.
     Plot(PlotArgs),
+    /// The interactive viewer (what `stewart` with no argument opens).
+    View(ViewArgs),
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset).
-#[derive(Debug, Args)]
+#[derive(Debug, Args, Default)]
 #[group(multiple = false)]
 pub struct ScenarioArgs {
     /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes.
@@ -248,4 +250,21 @@ pub struct PlotArgs {
     /// `.svg`, `.pdf` or `.png`.
     #[arg(long, value_name = "FILE")]
     pub out: PathBuf,
+}
+
+/// Arguments of `stewart view`.
+#[derive(Debug, Args, Default)]
+pub struct ViewArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Start in the light (presentation) theme.
+    #[arg(long)]
+    pub light: bool,
+    /// Save the window's image here after `--frames` frames, then exit.
+    #[arg(long, value_name = "FILE.png")]
+    pub screenshot: Option<PathBuf>,
+    /// Frames to draw before the screenshot.
+    #[arg(long, default_value_t = 10)]
+    pub frames: u32,
 }

@@ -7,3 +7,4 @@ pub mod csv_io;
 pub mod export;
 pub mod output;
 pub mod source;
+pub mod viewer;

@@ -19,6 +19,7 @@ fn main() -> ExitCode {
         Some(Command::Forces(args)) => commands::forces::run(&args),
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Plot(args)) => commands::plot::run(&args),
+        Some(Command::View(args)) => commands::view::run(&args),
         None => commands::no_command(),
     };
     match result {

@@ -14,7 +14,7 @@ pub struct Globals {
     pub key_light: [f32; 4],
     /// Direction towards the fill light (xyz) and its strength (w).
     pub fill_light: [f32; 4],
-    /// Ambient, specular strength, shininess, unused.
+    /// Ambient, specular strength, shininess, and 1 when the shader must encode sRGB itself.
     pub shading: [f32; 4],
 }
 

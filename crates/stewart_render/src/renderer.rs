@@ -294,7 +294,12 @@ impl Renderer {
             eye: [eye.x, eye.y, eye.z, 1.0],
             key_light: [key.x, key.y, key.z, 0.75],
             fill_light: [fill.x, fill.y, fill.z, 0.25],
-            shading: [0.22, 0.25, 48.0, 0.0],
+            shading: [
+                0.22,
+                0.25,
+                48.0,
+                if self.format.is_srgb() { 0.0 } else { 1.0 },
+            ],
         };
         queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
         let bg = linear(theme.background);

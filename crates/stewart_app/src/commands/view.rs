@@ -1,0 +1,24 @@
+//! `stewart view`: the interactive viewer.
+
+use std::process::ExitCode;
+
+use anyhow::Result;
+
+use crate::cli::ViewArgs;
+use crate::source;
+use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
+
+/// Run the command.
+pub fn run(args: &ViewArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    let mut state = ViewerState::new(scenario);
+    state.light_theme = args.light;
+    run_viewer(
+        state,
+        ViewOptions {
+            screenshot: args.screenshot.clone(),
+            frames: args.frames,
+        },
+    )?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,253 @@
+//! The window and its loop: winit 0.30, egui-winit for input, egui-wgpu's painter for the
+//! surface; the 3D view shares its device. Redraws continuously only while playing.
+
+use std::num::NonZeroU32;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use anyhow::{Result, anyhow};
+use egui::ViewportId;
+use egui_wgpu::winit::Painter;
+use winit::application::ApplicationHandler;
+use winit::event::WindowEvent;
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::window::{Window, WindowId};
+
+use super::state::ViewerState;
+use super::ui::viewer_ui;
+
+/// How the viewer runs.
+#[derive(Clone, Debug, Default)]
+pub struct ViewOptions {
+    /// After this many frames, save the window's image here and exit.
+    pub screenshot: Option<PathBuf>,
+    /// Frames to draw before the screenshot.
+    pub frames: u32,
+}
+
+/// MSAA samples of the window (the 3D pipelines are built to match).
+const SAMPLES: u32 = 4;
+
+struct Open {
+    window: Arc<Window>,
+    painter: Painter,
+    input: egui_winit::State,
+}
+
+struct App {
+    state: ViewerState,
+    ctx: egui::Context,
+    options: ViewOptions,
+    open: Option<Open>,
+    frames: u32,
+    last: Instant,
+    screenshot: Arc<Mutex<Option<Result<()>>>>,
+    screenshot_asked: bool,
+    error: Option<anyhow::Error>,
+}
+
+/// Open the viewer on `state` and run until the window closes.
+pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
+    if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
+        return Err(anyhow!(
+            "the viewer needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set: run it on a desktop, or under `xvfb-run -a stewart view` (every other command works without a display)"
+        ));
+    }
+    let event_loop = EventLoop::new().map_err(|e| anyhow!("cannot open the window system: {e}"))?;
+    let mut app = App {
+        state,
+        ctx: egui::Context::default(),
+        options,
+        open: None,
+        frames: 0,
+        last: Instant::now(),
+        screenshot: Arc::new(Mutex::new(None)),
+        screenshot_asked: false,
+        error: None,
+    };
+    event_loop
+        .run_app(&mut app)
+        .map_err(|e| anyhow!("the window loop failed: {e}"))?;
+    match app.error {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+impl App {
+    fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
+        let attributes = Window::default_attributes()
+            .with_title(format!(
+                "Stewart platform studio — {}",
+                self.state.scenario.name
+            ))
+            .with_inner_size(winit::dpi::LogicalSize::new(1280.0, 720.0));
+        let window = Arc::new(
+            event_loop
+                .create_window(attributes)
+                .map_err(|e| anyhow!("cannot create the window: {e}"))?,
+        );
+        let options = egui_wgpu::RendererOptions {
+            msaa_samples: SAMPLES,
+            depth_stencil_format: Some(stewart_render::renderer::DEPTH_FORMAT),
+            ..Default::default()
+        };
+        let mut painter = pollster::block_on(Painter::new(
+            self.ctx.clone(),
+            egui_wgpu::WgpuConfiguration::default(),
+            false,
+            options,
+        ));
+        pollster::block_on(painter.set_window(ViewportId::ROOT, Some(window.clone())))
+            .map_err(|e| anyhow!("cannot draw into the window: {e} (install a GPU driver or Mesa's `mesa-vulkan-drivers`)"))?;
+        let render_state = painter
+            .render_state()
+            .ok_or_else(|| anyhow!("no GPU device for the window"))?;
+        let renderer = stewart_render::Renderer::new(
+            &render_state.device,
+            render_state.target_format,
+            SAMPLES,
+        );
+        render_state
+            .renderer
+            .write()
+            .callback_resources
+            .insert(renderer);
+        let max_side = render_state.device.limits().max_texture_dimension_2d as usize;
+        let input = egui_winit::State::new(
+            self.ctx.clone(),
+            ViewportId::ROOT,
+            &window,
+            Some(window.scale_factor() as f32),
+            None,
+            Some(max_side),
+        );
+        self.open = Some(Open {
+            window,
+            painter,
+            input,
+        });
+        Ok(())
+    }
+
+    fn redraw(&mut self, event_loop: &ActiveEventLoop) {
+        let Some(open) = self.open.as_mut() else {
+            return;
+        };
+        let now = Instant::now();
+        // A screenshot run steps time by a fixed 1/60 s per frame so its image is reproducible.
+        let dt = if self.options.screenshot.is_some() {
+            1.0 / 60.0
+        } else {
+            (now - self.last).as_secs_f64().min(0.1)
+        };
+        self.last = now;
+        self.state.advance(dt);
+        let raw = open.input.take_egui_input(&open.window);
+        let state = &mut self.state;
+        let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        open.input
+            .handle_platform_output(&open.window, std::mem::take(&mut output.platform_output));
+        let primitives = self
+            .ctx
+            .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
+        self.frames += 1;
+        let mut capture = Vec::new();
+        if let Some(path) = &self.options.screenshot
+            && self.frames >= self.options.frames.max(1)
+            && !self.screenshot_asked
+        {
+            self.screenshot_asked = true;
+            let path = path.clone();
+            let slot = Arc::clone(&self.screenshot);
+            capture.push(egui::ScreenshotCallback::new(move |image| {
+                let result = save_png(&path, &image);
+                if let Ok(mut s) = slot.lock() {
+                    *s = Some(result);
+                }
+            }));
+        }
+        let bg = self.state.theme().background;
+        open.painter.paint_and_update_textures(
+            ViewportId::ROOT,
+            output.pixels_per_point,
+            [bg[0], bg[1], bg[2], 1.0],
+            &primitives,
+            &mut output.textures_delta,
+            capture,
+            &open.window,
+        );
+        let done = self.screenshot.lock().ok().and_then(|mut s| s.take());
+        if let Some(result) = done {
+            if let Err(e) = result {
+                self.error = Some(e);
+            }
+            event_loop.exit();
+        }
+    }
+
+    fn busy(&self) -> bool {
+        self.state.playing || (self.options.screenshot.is_some() && self.error.is_none())
+    }
+}
+
+fn save_png(path: &std::path::Path, image: &egui::ColorImage) -> Result<()> {
+    let [w, h] = image.size;
+    let bytes: Vec<u8> = image.pixels.iter().flat_map(|c| c.to_array()).collect();
+    let mut png = Vec::new();
+    image::ImageEncoder::write_image(
+        image::codecs::png::PngEncoder::new(&mut png),
+        &bytes,
+        w as u32,
+        h as u32,
+        image::ExtendedColorType::Rgba8,
+    )
+    .map_err(|e| anyhow!("cannot encode the screenshot: {e}"))?;
+    crate::output::write_atomically(path, &png)
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.open.is_none()
+            && let Err(e) = self.open(event_loop)
+        {
+            self.error = Some(e);
+            event_loop.exit();
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let Some(open) = self.open.as_mut() else {
+            return;
+        };
+        let response = open.input.on_window_event(&open.window, &event);
+        match event {
+            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::Resized(size) => {
+                // Minimised windows have a zero size: keep the old surface until they return.
+                if let (Some(w), Some(h)) =
+                    (NonZeroU32::new(size.width), NonZeroU32::new(size.height))
+                {
+                    open.painter.on_window_resized(ViewportId::ROOT, w, h);
+                }
+            }
+            WindowEvent::RedrawRequested => self.redraw(event_loop),
+            _ => {}
+        }
+        if response.repaint
+            && let Some(open) = &self.open
+        {
+            open.window.request_redraw();
+        }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.busy()
+            && let Some(open) = &self.open
+        {
+            open.window.request_redraw();
+        }
+        event_loop.set_control_flow(ControlFlow::Wait);
+    }
+}

@@ -1,0 +1,68 @@
+//! The viewer in a real window: under Xvfb when there is no display.
+
+use std::process::Command;
+
+use crate::tempdir;
+
+/// Run `stewart view` with `args` in a virtual X display (`xvfb-run`), or fail clearly.
+fn view_under_xvfb(args: &[&str]) -> std::process::Output {
+    Command::new("xvfb-run")
+        .args([
+            "-a",
+            "-s",
+            "-screen 0 1600x900x24",
+            env!("CARGO_BIN_EXE_stewart"),
+            "view",
+        ])
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("xvfb-run is needed for this test (Debian: apt-get install xvfb xauth): {e}")
+        })
+}
+
+#[test]
+fn the_viewer_opens_draws_the_platform_and_saves_a_screenshot() {
+    let dir = tempdir();
+    let shot = dir.path().join("view.png");
+    let o = view_under_xvfb(&[
+        "--preset",
+        "paired",
+        "--screenshot",
+        &shot.display().to_string(),
+        "--frames",
+        "8",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&shot)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    assert_eq!(img.dimensions(), (1280, 720));
+    // The 3D view shows the platform (red) and the legs (blue); the panels show text.
+    let red = img
+        .pixels()
+        .filter(|p| p[0] > 150 && p[1] < 80 && p[2] < 80)
+        .count();
+    let blue = img
+        .pixels()
+        .filter(|p| p[2] > 150 && p[0] < 80 && p[1] < 120)
+        .count();
+    assert!(red > 2000, "platform pixels: {red}");
+    assert!(blue > 1000, "leg pixels: {blue}");
+}
+
+#[test]
+fn without_a_display_the_viewer_says_what_to_do() {
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["view"])
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("needs a display") && err.contains("xvfb-run"),
+        "{err}"
+    );
+}
