@@ -1,7 +1,7 @@
 //! The viewer's state: the scenario, what moves the platform, playback and camera. Plain
 //! core types: the panels edit it, the 3D view reads it. Time is injected (`advance`).
 
-use stewart_kinematics::{LegSolution, Pose, Scenario};
+use stewart_kinematics::{CheckReport, LegSolution, Pose, Scenario, check_motion};
 use stewart_render::{OrbitCamera, Theme};
 
 use crate::export::frames::default_camera;
@@ -37,6 +37,8 @@ pub struct ViewerState {
     pub light_theme: bool,
     /// Sample times and leg lengths of the trajectory, for the plot.
     pub samples: (Vec<f64>, Vec<[f64; 6]>),
+    /// The pre-flight report of the trajectory (made by `resample`).
+    pub report: Option<CheckReport>,
 }
 
 impl ViewerState {
@@ -55,6 +57,7 @@ impl ViewerState {
             camera,
             light_theme: false,
             samples: (Vec::new(), Vec::new()),
+            report: None,
         };
         s.resample();
         s
@@ -64,6 +67,12 @@ impl ViewerState {
     pub fn resample(&mut self) {
         let samples = self.scenario.motion.sample();
         let lengths = self.scenario.geometry.leg_lengths_batch(&samples.poses);
+        self.report = Some(check_motion(
+            &self.scenario.geometry,
+            &self.scenario.limits,
+            &samples,
+            &self.scenario.checks,
+        ));
         self.samples = (samples.times, lengths);
         self.time = self.time.clamp(0.0, self.duration());
     }
@@ -114,6 +123,16 @@ impl ViewerState {
             }
         }
         true
+    }
+
+    /// Look from a standard direction (azimuth, elevation in degrees), keeping the framing.
+    pub fn look_from(&mut self, azimuth_deg: f32, elevation_deg: f32) {
+        let framed = default_camera(&self.scenario);
+        self.camera = OrbitCamera {
+            azimuth_deg,
+            elevation_deg,
+            ..framed
+        };
     }
 
     /// Step playback by one trajectory sample (`direction` ±1).

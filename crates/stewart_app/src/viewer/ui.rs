@@ -25,6 +25,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     if ui.ctx().global_style().visuals != visuals {
         ui.ctx().set_visuals(visuals);
     }
+    shortcuts(ui, state);
     egui::Panel::left("controls")
         .resizable(true)
         .default_size(290.0)
@@ -37,6 +38,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                 playback_ui(ui, state);
                 ui.separator();
                 legs_ui(ui, state);
+                ui.separator();
+                diagnostics_ui(ui, state);
             });
         });
     egui::Panel::bottom("plot")
@@ -44,6 +47,55 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         .default_size(220.0)
         .show(ui, |ui| plot_ui(ui, state));
     egui::CentralPanel::default().show(ui, |ui| view_ui(ui, state));
+}
+
+/// Space: play/pause; ←/→: step; Home: back to the start.
+fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
+    if ui.ctx().text_edit_focused() {
+        return;
+    }
+    let (space, left, right, home) = ui.input(|i| {
+        (
+            i.key_pressed(egui::Key::Space),
+            i.key_pressed(egui::Key::ArrowLeft),
+            i.key_pressed(egui::Key::ArrowRight),
+            i.key_pressed(egui::Key::Home),
+        )
+    });
+    if space {
+        state.playing = !state.playing;
+        state.mode = MotionMode::Trajectory;
+    }
+    if left {
+        state.step(-1.0);
+    }
+    if right {
+        state.step(1.0);
+    }
+    if home {
+        state.time = 0.0;
+    }
+}
+
+fn diagnostics_ui(ui: &mut egui::Ui, state: &ViewerState) {
+    ui.heading("Diagnostics");
+    let Some(report) = &state.report else { return };
+    if report.architecture.singular {
+        ui.label(
+            RichText::new(report.architecture.explanation()).color(Color32::from_rgb(220, 40, 40)),
+        );
+    }
+    if report.findings.is_empty() {
+        ui.label("No problem found along the trajectory.");
+    } else {
+        ui.label(format!(
+            "{} problem(s) along the trajectory:",
+            report.findings.len()
+        ));
+        for f in report.findings.iter().take(12) {
+            ui.label(RichText::new(format!("• {f}")).small());
+        }
+    }
 }
 
 fn scenario_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -198,6 +250,21 @@ fn plot_ui(ui: &mut egui::Ui, state: &ViewerState) {
 }
 
 fn view_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
+    ui.horizontal(|ui| {
+        for (label, az, el) in [
+            ("Iso", 135.0, 20.0),
+            ("Front", 0.0, 0.0),
+            ("Side", 90.0, 0.0),
+            ("Top", 0.0, 89.5),
+        ] {
+            if ui.button(label).clicked() {
+                state.look_from(az, el);
+            }
+        }
+        if ui.button("Reset view").clicked() {
+            state.look_from(135.0, 20.0);
+        }
+    });
     let rect = ui.available_rect_before_wrap();
     let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
     if response.dragged_by(egui::PointerButton::Primary) {

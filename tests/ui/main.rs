@@ -1,0 +1,79 @@
+//! The viewer's panels driven through their accessibility labels (egui_kittest): each
+//! test changes something as a user would and checks the state it edits.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use stewart_app::viewer::state::{MotionMode, ViewerState};
+use stewart_app::viewer::ui::viewer_ui;
+use stewart_kinematics::Scenario;
+
+fn harness(scenario: &str) -> Harness<'static, ViewerState> {
+    let state = ViewerState::new(Scenario::preset(scenario).unwrap_or_else(|e| panic!("{e}")));
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(viewer_ui, state)
+}
+
+#[test]
+fn manual_mode_sliders_move_the_pose_and_the_legs() {
+    let mut h = harness("paired");
+    h.get_by_label("Manual pose").click();
+    h.run();
+    assert_eq!(h.state().mode, MotionMode::Manual);
+    let before = h.state().legs().lengths;
+    h.get_by_role_and_label(Role::Slider, "x (m)")
+        .set_value_accesskit(0.12);
+    h.get_by_role_and_label(Role::Slider, "yaw (°)")
+        .set_value_accesskit(10.0);
+    h.run();
+    let pose = h.state().pose();
+    assert!((pose.position.x - 0.12).abs() < 1e-9, "{pose:?}");
+    assert!((pose.yaw.degrees() - 10.0).abs() < 1e-9);
+    assert_ne!(h.state().legs().lengths, before);
+    h.get_by_label("Home").click();
+    h.run();
+    assert_eq!(h.state().pose(), h.state().scenario.geometry.home_pose());
+}
+
+#[test]
+fn keyboard_and_buttons_drive_playback() {
+    let mut h = harness("seed");
+    h.state_mut().playing = false;
+    h.state_mut().time = 5.0;
+    h.run();
+    h.key_press(egui::Key::Space);
+    h.run();
+    assert!(h.state().playing);
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    assert!(!h.state().playing);
+    assert!((h.state().time - 5.01).abs() < 1e-9, "{}", h.state().time);
+    h.key_press(egui::Key::Home);
+    h.run();
+    assert_eq!(h.state().time, 0.0);
+    h.get_by_label("Play").click();
+    h.run();
+    assert!(h.state().playing);
+    h.get_by_label("Top").click();
+    h.run();
+    assert_eq!(h.state().camera.elevation_deg, 89.5);
+}
+
+#[test]
+fn the_diagnostics_say_when_the_geometry_is_singular() {
+    let h = harness("seed");
+    assert!(
+        h.query_by_label_contains("This geometry is architecturally singular")
+            .is_some()
+    );
+    let h = harness("paired");
+    assert!(
+        h.query_by_label_contains("architecturally singular")
+            .is_none()
+    );
+    assert!(
+        h.query_by_label("No problem found along the trajectory.")
+            .is_some()
+    );
+}
