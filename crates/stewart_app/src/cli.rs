@@ -267,4 +267,7 @@ pub struct ViewArgs {
     /// Frames to draw before the screenshot.
     #[arg(long, default_value_t = 10)]
     pub frames: u32,
+    /// Print frame-time statistics (CPU part and total) when the window closes.
+    #[arg(long)]
+    pub frame_stats: bool,
 }

@@ -18,6 +18,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
         ViewOptions {
             screenshot: args.screenshot.clone(),
             frames: args.frames,
+            stats: args.frame_stats,
         },
     )?;
     Ok(ExitCode::SUCCESS)

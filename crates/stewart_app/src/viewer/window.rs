@@ -24,6 +24,40 @@ pub struct ViewOptions {
     pub screenshot: Option<PathBuf>,
     /// Frames to draw before the screenshot.
     pub frames: u32,
+    /// Print frame-time statistics when the window closes.
+    pub stats: bool,
+}
+
+/// Per-frame timings, milliseconds.
+#[derive(Default)]
+struct FrameTimes {
+    /// UI, kinematics, draw list and tessellation (CPU work before the GPU is involved).
+    cpu: Vec<f64>,
+    /// The whole frame, including recording, submission, uploads and presentation.
+    total: Vec<f64>,
+}
+
+impl FrameTimes {
+    fn summary(&self) -> String {
+        let stat = |v: &[f64]| {
+            let mut s = v.to_vec();
+            s.sort_by(f64::total_cmp);
+            let mean = s.iter().sum::<f64>() / s.len().max(1) as f64;
+            let p95 = s
+                .get((s.len() as f64 * 0.95) as usize)
+                .copied()
+                .unwrap_or(0.0);
+            format!("mean {mean:.2} ms, 95th percentile {p95:.2} ms")
+        };
+        // The first frames compile shaders and upload fonts: leave them out.
+        let skip = self.cpu.len().min(5);
+        format!(
+            "{} frames: CPU (UI, kinematics, draw list, tessellation) {}; total {}",
+            self.cpu.len() - skip,
+            stat(&self.cpu[skip..]),
+            stat(&self.total[skip..])
+        )
+    }
 }
 
 /// MSAA samples of the window (the 3D pipelines are built to match).
@@ -45,6 +79,7 @@ struct App {
     screenshot: Arc<Mutex<Option<Result<()>>>>,
     screenshot_asked: bool,
     error: Option<anyhow::Error>,
+    times: FrameTimes,
 }
 
 /// Open the viewer on `state` and run until the window closes.
@@ -65,10 +100,14 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         screenshot: Arc::new(Mutex::new(None)),
         screenshot_asked: false,
         error: None,
+        times: FrameTimes::default(),
     };
     event_loop
         .run_app(&mut app)
         .map_err(|e| anyhow!("the window loop failed: {e}"))?;
+    if app.options.stats {
+        eprintln!("{}", app.times.summary());
+    }
     match app.error {
         Some(e) => Err(e),
         None => Ok(()),
@@ -136,6 +175,7 @@ impl App {
             return;
         };
         let now = Instant::now();
+        let frame_start = now;
         // A screenshot run steps time by a fixed 1/60 s per frame so its image is reproducible.
         let dt = if self.options.screenshot.is_some() {
             1.0 / 60.0
@@ -152,6 +192,7 @@ impl App {
         let primitives = self
             .ctx
             .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
+        let cpu_ms = frame_start.elapsed().as_secs_f64() * 1e3;
         self.frames += 1;
         let mut capture = Vec::new();
         if let Some(path) = &self.options.screenshot
@@ -178,6 +219,10 @@ impl App {
             capture,
             &open.window,
         );
+        self.times.cpu.push(cpu_ms);
+        self.times
+            .total
+            .push(frame_start.elapsed().as_secs_f64() * 1e3);
         let done = self.screenshot.lock().ok().and_then(|mut s| s.take());
         if let Some(result) = done {
             if let Err(e) = result {
