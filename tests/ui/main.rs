@@ -77,3 +77,40 @@ fn the_diagnostics_say_when_the_geometry_is_singular() {
             .is_some()
     );
 }
+
+#[test]
+fn geometry_edits_apply_or_are_refused_with_a_reason() {
+    let mut h = harness("paired");
+    h.get_by_label("Geometry").click();
+    h.run();
+    h.get_by_role_and_label(Role::Slider, "base radius (m)")
+        .set_value_accesskit(1.2);
+    h.run();
+    assert_eq!(h.state().scenario.geometry.params().base_radius, 1.2);
+    assert!((h.state().scenario.geometry.base_joints()[0].norm() - 1.2).abs() < 1e-12);
+    // A maximum below the minimum is refused: the geometry stays, the reason is shown.
+    h.get_by_role_and_label(Role::Slider, "leg max (m)")
+        .set_value_accesskit(0.5);
+    h.run();
+    assert_eq!(h.state().scenario.geometry.stroke().max, Some(1.30));
+    assert!(
+        h.query_by_label_contains(
+            "Not applied: `leg_min` (0.55 m) must be less than `leg_max` (0.5 m)"
+        )
+        .is_some()
+    );
+    // The seed's staggered layout makes the geometry architecturally singular: the banner says so.
+    h.get_by_label("Staggered 30°").click();
+    h.run();
+    h.run();
+    assert!(
+        h.state()
+            .report
+            .as_ref()
+            .is_some_and(|r| r.architecture.singular)
+    );
+    assert!(
+        h.query_by_label_contains("This geometry is architecturally singular")
+            .is_some()
+    );
+}

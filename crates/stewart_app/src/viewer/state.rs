@@ -1,7 +1,9 @@
 //! The viewer's state: the scenario, what moves the platform, playback and camera. Plain
 //! core types: the panels edit it, the 3D view reads it. Time is injected (`advance`).
 
-use stewart_kinematics::{CheckReport, LegSolution, Pose, Scenario, check_motion};
+use stewart_kinematics::{
+    CheckReport, Geometry, GeometryParams, LegSolution, Pose, Scenario, check_motion,
+};
 use stewart_render::{OrbitCamera, Theme};
 
 use crate::export::frames::default_camera;
@@ -39,6 +41,8 @@ pub struct ViewerState {
     pub samples: (Vec<f64>, Vec<[f64; 6]>),
     /// The pre-flight report of the trajectory (made by `resample`).
     pub report: Option<CheckReport>,
+    /// Why the last geometry edit was refused (the geometry then stays as it was).
+    pub geometry_error: Option<String>,
 }
 
 impl ViewerState {
@@ -58,6 +62,7 @@ impl ViewerState {
             light_theme: false,
             samples: (Vec::new(), Vec::new()),
             report: None,
+            geometry_error: None,
         };
         s.resample();
         s
@@ -75,6 +80,19 @@ impl ViewerState {
         ));
         self.samples = (samples.times, lengths);
         self.time = self.time.clamp(0.0, self.duration());
+    }
+
+    /// Replace the geometry after validating it; a refused geometry leaves everything as it
+    /// was and records why.
+    pub fn set_geometry(&mut self, params: GeometryParams) {
+        match Geometry::new(params) {
+            Ok(g) => {
+                self.scenario.geometry = g;
+                self.geometry_error = None;
+                self.resample();
+            }
+            Err(e) => self.geometry_error = Some(e.to_string()),
+        }
     }
 
     /// Duration of the trajectory, seconds.

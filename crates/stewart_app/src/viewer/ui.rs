@@ -3,7 +3,7 @@
 use egui::{Color32, RichText};
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
 use stewart_kinematics::scene::LegStatus;
-use stewart_kinematics::{Angle, Scenario};
+use stewart_kinematics::{Angle, Layout, Scenario};
 use stewart_render::{DrawList, Overlays};
 
 use super::state::{MotionMode, ViewerState};
@@ -32,6 +32,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         .show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| {
                 scenario_ui(ui, state);
+                ui.separator();
+                geometry_ui(ui, state);
                 ui.separator();
                 motion_ui(ui, state);
                 ui.separator();
@@ -116,6 +118,59 @@ fn scenario_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         });
     ui.checkbox(&mut state.light_theme, "Presentation theme (light)");
+}
+
+fn geometry_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
+    egui::CollapsingHeader::new("Geometry")
+        .default_open(false)
+        .show(ui, |ui| {
+            let mut p = state.scenario.geometry.params().clone();
+            let mut changed = false;
+            changed |= ui
+                .add(egui::Slider::new(&mut p.base_radius, 0.2..=3.0).text("base radius (m)"))
+                .changed();
+            changed |= ui
+                .add(
+                    egui::Slider::new(&mut p.platform_radius, 0.1..=3.0)
+                        .text("platform radius (m)"),
+                )
+                .changed();
+            changed |= ui
+                .add(egui::Slider::new(&mut p.home_height, 0.1..=3.0).text("home height (m)"))
+                .changed();
+            if let Some(min) = p.stroke.min.as_mut() {
+                changed |= ui
+                    .add(egui::Slider::new(min, 0.05..=3.0).text("leg min (m)"))
+                    .changed();
+            }
+            if let Some(max) = p.stroke.max.as_mut() {
+                changed |= ui
+                    .add(egui::Slider::new(max, 0.05..=4.0).text("leg max (m)"))
+                    .changed();
+            }
+            ui.label("Layout (rewrites the joint angles):");
+            ui.horizontal(|ui| {
+                if ui.button("Staggered 30°").clicked() {
+                    (p.base_angles, p.platform_angles) = Layout::seed().angles();
+                    changed = true;
+                }
+                for separation in [10.0, 20.0, 40.0] {
+                    if ui.button(format!("Paired {separation}°")).clicked() {
+                        (p.base_angles, p.platform_angles) = Layout::paired(separation).angles();
+                        changed = true;
+                    }
+                }
+            });
+            if changed {
+                state.set_geometry(p);
+            }
+            if let Some(e) = &state.geometry_error {
+                ui.label(
+                    RichText::new(format!("Not applied: {e}"))
+                        .color(Color32::from_rgb(220, 40, 40)),
+                );
+            }
+        });
 }
 
 fn motion_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
