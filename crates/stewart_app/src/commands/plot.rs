@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use anyhow::{Result, bail};
 
 use crate::cli::PlotArgs;
-use crate::export::plot::{PlotData, svg};
+use crate::export::plot::scenario_svg;
 use crate::export::vector;
 use crate::output;
 use crate::source;
@@ -13,17 +13,7 @@ use crate::source;
 /// Run the command.
 pub fn run(args: &PlotArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    let samples = scenario.motion.sample();
-    let lengths = scenario.geometry.leg_lengths_batch(&samples.poses);
-    let stroke = scenario.geometry.stroke();
-    let text = svg(&PlotData {
-        title: &format!("Leg lengths — {}", scenario.name),
-        times: &samples.times,
-        lengths: &lengths,
-        leg_min: stroke.min,
-        leg_max: stroke.max,
-        marker: None,
-    });
+    let (_, text) = scenario_svg(&scenario);
     let bytes = match args
         .out
         .extension()

@@ -6,7 +6,7 @@ use nalgebra::Vector3;
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
 
-use super::plot::{self, PlotData};
+use super::plot;
 use super::vector;
 
 /// What to render.
@@ -49,26 +49,12 @@ struct PlotPanel {
 
 impl PlotPanel {
     fn new(scenario: &Scenario, width: u32, height: u32) -> Result<Self> {
-        let samples = scenario.motion.sample();
-        let lengths: Vec<[f64; 6]> = samples
-            .poses
-            .iter()
-            .map(|p| scenario.geometry.leg_lengths(p))
-            .collect();
-        let stroke = scenario.geometry.stroke();
-        let svg = plot::svg(&PlotData {
-            title: &format!("Leg lengths — {}", scenario.name),
-            times: &samples.times,
-            lengths: &lengths,
-            leg_min: stroke.min,
-            leg_max: stroke.max,
-            marker: None,
-        });
+        let (times, svg) = plot::scenario_svg(scenario);
         let (rgba, scale, (ox, oy)) = vector::rgba_fit(&svg, width, height)?;
         let (ml, mr, mt, mb) = plot::margins();
         let (scale, ox, oy) = (f64::from(scale), f64::from(ox), f64::from(oy));
-        let t0 = samples.times.first().copied().unwrap_or(0.0);
-        let t1 = samples.times.last().copied().unwrap_or(1.0);
+        let t0 = times.first().copied().unwrap_or(0.0);
+        let t1 = times.last().copied().unwrap_or(1.0);
         Ok(Self {
             width,
             height,

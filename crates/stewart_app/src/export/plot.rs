@@ -25,6 +25,22 @@ pub struct PlotData<'a> {
     pub marker: Option<f64>,
 }
 
+/// The plot of `scenario`'s trajectory: its sample times and the SVG.
+pub fn scenario_svg(scenario: &stewart_kinematics::Scenario) -> (Vec<f64>, String) {
+    let samples = scenario.motion.sample();
+    let lengths = scenario.geometry.leg_lengths_batch(&samples.poses);
+    let stroke = scenario.geometry.stroke();
+    let text = svg(&PlotData {
+        title: &format!("Leg lengths — {}", scenario.name),
+        times: &samples.times,
+        lengths: &lengths,
+        leg_min: stroke.min,
+        leg_max: stroke.max,
+        marker: None,
+    });
+    (samples.times, text)
+}
+
 /// Page size in CSS pixels (96 per inch): 16 cm × 9 cm.
 pub const WIDTH: f64 = 604.7;
 /// See [`WIDTH`].
