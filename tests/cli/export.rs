@@ -17,6 +17,24 @@ fn names(dir: &Path) -> Vec<String> {
     v
 }
 
+/// `stewart render --out OUT --frames 0..2` with extra environment variables.
+fn render_two_frames_with_env(
+    out: &Path,
+    env: &[(&str, &std::ffi::OsStr)],
+) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "render",
+            "--out",
+            &out.display().to_string(),
+            "--frames",
+            "0..2",
+        ])
+        .envs(env.iter().copied())
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
 #[test]
 fn a_png_sequence_has_the_right_count_names_and_size() {
     let dir = tempdir();
@@ -153,17 +171,7 @@ fn an_mp4_has_its_frames_and_duration() {
 fn mp4_without_ffmpeg_says_how_to_install_it() {
     let dir = tempdir();
     let out = dir.path().join("motion.mp4");
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "render",
-            "--out",
-            &out.display().to_string(),
-            "--frames",
-            "0..2",
-        ])
-        .env("PATH", dir.path())
-        .output()
-        .unwrap_or_else(|e| panic!("{e}"));
+    let o = render_two_frames_with_env(&out, &[("PATH", dir.path().as_os_str())]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("apt-get install ffmpeg"));
     assert!(!out.exists());
@@ -337,18 +345,14 @@ fn a_4k_frame_renders() {
 fn no_adapter_is_one_clear_error() {
     let dir = tempdir();
     let out = dir.path().join("frames");
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "render",
-            "--out",
-            &out.display().to_string(),
-            "--frames",
-            "0..2",
-        ])
-        .env("VK_ICD_FILENAMES", dir.path().join("none.json"))
-        .env("WGPU_BACKEND", "vulkan")
-        .output()
-        .unwrap_or_else(|e| panic!("{e}"));
+    let no_driver = dir.path().join("none.json");
+    let o = render_two_frames_with_env(
+        &out,
+        &[
+            ("VK_ICD_FILENAMES", no_driver.as_os_str()),
+            ("WGPU_BACKEND", "vulkan".as_ref()),
+        ],
+    );
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
@@ -356,17 +360,7 @@ fn no_adapter_is_one_clear_error() {
         "{err}"
     );
     assert!(!out.exists());
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "render",
-            "--out",
-            &out.display().to_string(),
-            "--frames",
-            "0..2",
-        ])
-        .env("WGPU_ADAPTER_NAME", "no-such-gpu")
-        .output()
-        .unwrap_or_else(|e| panic!("{e}"));
+    let o = render_two_frames_with_env(&out, &[("WGPU_ADAPTER_NAME", "no-such-gpu".as_ref())]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("WGPU_ADAPTER_NAME is `no-such-gpu`"));
 }

@@ -15,7 +15,6 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::angle::Angle;
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 
@@ -94,23 +93,11 @@ pub enum ForwardError {
 }
 
 fn coordinates(p: &Pose) -> Vector6<f64> {
-    Vector6::new(
-        p.position.x,
-        p.position.y,
-        p.position.z,
-        p.roll.radians(),
-        p.pitch.radians(),
-        p.yaw.radians(),
-    )
+    Vector6::from(p.to_coordinates())
 }
 
 fn pose_of(x: &Vector6<f64>) -> Pose {
-    Pose::new(
-        Vector3::new(x[0], x[1], x[2]),
-        Angle::from_radians(x[3]),
-        Angle::from_radians(x[4]),
-        Angle::from_radians(x[5]),
-    )
+    Pose::from_coordinates(std::array::from_fn(|i| x[i]))
 }
 
 /// The elementary rotations about x, y, z by `angles` and their derivatives with respect

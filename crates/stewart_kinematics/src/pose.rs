@@ -59,6 +59,29 @@ impl Pose {
         Self { position, ..self }
     }
 
+    /// `[x, y, z, roll, pitch, yaw]` in metres and radians: the pose as six numbers
+    /// (for solvers and interpolation).
+    pub fn to_coordinates(&self) -> [f64; 6] {
+        [
+            self.position.x,
+            self.position.y,
+            self.position.z,
+            self.roll.radians(),
+            self.pitch.radians(),
+            self.yaw.radians(),
+        ]
+    }
+
+    /// The pose from `[x, y, z, roll, pitch, yaw]` in metres and radians.
+    pub fn from_coordinates(c: [f64; 6]) -> Self {
+        Self::new(
+            Vector3::new(c[0], c[1], c[2]),
+            Angle::from_radians(c[3]),
+            Angle::from_radians(c[4]),
+            Angle::from_radians(c[5]),
+        )
+    }
+
     /// Rotation matrix `Rz(yaw) · Ry(pitch) · Rx(roll)`.
     pub fn rotation(&self) -> Matrix3<f64> {
         rotation_zyx(self.roll, self.pitch, self.yaw)

@@ -1,9 +1,7 @@
 //! Keyframed motion: poses at given times, interpolated per coordinate.
 
-use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
 use crate::pose::Pose;
 
 /// How to move between keyframes.
@@ -66,26 +64,6 @@ pub enum KeyframeError {
     },
 }
 
-fn coordinates(p: &Pose) -> [f64; 6] {
-    [
-        p.position.x,
-        p.position.y,
-        p.position.z,
-        p.roll.radians(),
-        p.pitch.radians(),
-        p.yaw.radians(),
-    ]
-}
-
-fn pose_from(c: [f64; 6]) -> Pose {
-    Pose::new(
-        Vector3::new(c[0], c[1], c[2]),
-        Angle::from_radians(c[3]),
-        Angle::from_radians(c[4]),
-        Angle::from_radians(c[5]),
-    )
-}
-
 impl Keyframes {
     /// Validate and prepare keyframes.
     pub fn new(keys: Vec<Keyframe>, interpolation: Interpolation) -> Result<Self, KeyframeError> {
@@ -107,7 +85,7 @@ impl Keyframes {
         let second_derivatives = if interpolation == Interpolation::Cubic {
             let times: Vec<f64> = keys.iter().map(|k| k.t).collect();
             std::array::from_fn(|c| {
-                let values: Vec<f64> = keys.iter().map(|k| coordinates(&k.pose)[c]).collect();
+                let values: Vec<f64> = keys.iter().map(|k| k.pose.to_coordinates()[c]).collect();
                 natural_spline_second_derivatives(&times, &values)
             })
         } else {
@@ -151,7 +129,7 @@ impl Keyframes {
         let (k0, k1) = (&self.keys[k], &self.keys[k + 1]);
         let h = k1.t - k0.t;
         let s = (t - k0.t) / h;
-        let (c0, c1) = (coordinates(&k0.pose), coordinates(&k1.pose));
+        let (c0, c1) = (k0.pose.to_coordinates(), k1.pose.to_coordinates());
         let value = |c: usize| match self.interpolation {
             Interpolation::Linear => c0[c] + (c1[c] - c0[c]) * s,
             Interpolation::Smoothstep => {
@@ -167,7 +145,7 @@ impl Keyframes {
                     + ((a * a * a - a) * m[k] + (s * s * s - s) * m[k + 1]) * h * h / 6.0
             }
         };
-        pose_from(std::array::from_fn(value))
+        Pose::from_coordinates(std::array::from_fn(value))
     }
 }
 
