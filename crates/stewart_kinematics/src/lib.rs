@@ -29,6 +29,7 @@ pub mod limits;
 pub mod pose;
 pub mod scenario;
 pub mod scene;
+pub mod settings;
 pub mod table;
 pub mod trajectory;
 pub mod workspace;

@@ -23,10 +23,11 @@ use crate::trajectory::{
     Sampling, Sinusoid, Sway, Trajectory,
 };
 
-/// Samples of a motion when the file does not say (the seed's count).
-const DEFAULT_SAMPLES: i64 = 1001;
+/// Samples of a motion when the file does not say (the seed's count, as the
+/// `trajectory.samples` setting declares).
+const DEFAULT_SAMPLES: i64 = Sampling::SEED.len() as i64;
 /// Duration of a motion when the file does not say (the seed's), seconds.
-const DEFAULT_DURATION: f64 = 10.0;
+const DEFAULT_DURATION: f64 = Sampling::SEED.duration();
 
 /// The source text and name, to turn byte spans into located errors.
 struct Source<'a> {

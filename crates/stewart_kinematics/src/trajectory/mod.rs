@@ -117,7 +117,7 @@ impl Sampling {
     }
 
     /// Number of samples.
-    pub fn len(&self) -> usize {
+    pub const fn len(&self) -> usize {
         self.samples
     }
 
@@ -127,7 +127,7 @@ impl Sampling {
     }
 
     /// Duration, seconds.
-    pub fn duration(&self) -> f64 {
+    pub const fn duration(&self) -> f64 {
         self.duration
     }
 

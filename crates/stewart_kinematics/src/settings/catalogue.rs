@@ -1,0 +1,378 @@
+//! The list of settings: keys, labels, units, slider ranges and defaults.
+//!
+//! Defaults are the seed's platform and motion; shape defaults are those of the shipped
+//! presets. Slider ranges cover sensible laboratory platforms; typed values may go
+//! beyond them wherever the model accepts them.
+
+use super::target::{ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target};
+use super::{DefaultValue, Group, Setting, Unit};
+use crate::checks::CheckSettings;
+use crate::geometry::GeometryParams;
+use crate::trajectory::{Sampling, Sinusoid};
+
+use DefaultValue::{AboveHome, Off, Value};
+use Unit::{Count, Degree, Hertz, Metre, MetrePerSecond, MetrePerSecondSquared, Ratio, Second};
+
+/// Channel names as written in files, and whether they are angles.
+const CHANNELS: [(&str, bool); 6] = [
+    ("x", false),
+    ("y", false),
+    ("z", false),
+    ("roll", true),
+    ("pitch", true),
+    ("yaw", true),
+];
+
+struct Declare {
+    list: Vec<Setting>,
+    group: Group,
+}
+
+impl Declare {
+    fn add(
+        &mut self,
+        key: impl Into<String>,
+        label: impl Into<String>,
+        unit: Unit,
+        range: (f64, f64),
+        default: DefaultValue,
+        target: Target,
+    ) {
+        self.list.push(Setting {
+            key: key.into(),
+            label: label.into(),
+            unit,
+            range: range.0..=range.1,
+            default,
+            group: self.group,
+            target,
+        });
+    }
+}
+
+pub(super) fn build() -> Vec<Setting> {
+    let mut d = Declare {
+        list: Vec::new(),
+        group: Group::Geometry,
+    };
+    geometry(&mut d);
+    d.group = Group::Trajectory;
+    trajectory(&mut d);
+    d.group = Group::Limits;
+    limits(&mut d);
+    d.group = Group::Checks;
+    checks(&mut d);
+    d.list
+}
+
+fn geometry(d: &mut Declare) {
+    use GeometryKey::*;
+    let seed = GeometryParams::seed();
+    let g = |k| Target::Geometry(k);
+    let m = (0.05, 3.0);
+    d.add(
+        "geometry.base_radius",
+        "base radius",
+        Metre,
+        m,
+        Value(seed.base_radius),
+        g(BaseRadius),
+    );
+    d.add(
+        "geometry.platform_radius",
+        "platform radius",
+        Metre,
+        m,
+        Value(seed.platform_radius),
+        g(PlatformRadius),
+    );
+    d.add(
+        "geometry.home_height",
+        "home height",
+        Metre,
+        m,
+        Value(seed.home_height),
+        g(HomeHeight),
+    );
+    d.add(
+        "geometry.leg_min",
+        "leg min",
+        Metre,
+        (0.05, 3.0),
+        Off,
+        g(LegMin),
+    );
+    d.add(
+        "geometry.leg_max",
+        "leg max",
+        Metre,
+        (0.05, 4.0),
+        Off,
+        g(LegMax),
+    );
+    for i in 0..6 {
+        let base = seed.base_angles[i].degrees();
+        let platform = seed.platform_angles[i].degrees();
+        let turn = (-180.0, 360.0);
+        let (bk, pk) = (BaseAngle(i), PlatformAngle(i));
+        let leg = i + 1;
+        d.add(
+            format!("geometry.base_angles_deg[{i}]"),
+            format!("base joint {leg}"),
+            Degree,
+            turn,
+            Value(base),
+            g(bk),
+        );
+        d.add(
+            format!("geometry.platform_angles_deg[{i}]"),
+            format!("platform joint {leg}"),
+            Degree,
+            turn,
+            Value(platform),
+            g(pk),
+        );
+    }
+    for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {
+        d.add(
+            format!("pivot.offset_m[{i}]"),
+            format!("pivot {axis}"),
+            Metre,
+            (-1.0, 1.0),
+            Value(0.0),
+            g(Pivot(i)),
+        );
+    }
+}
+
+fn trajectory(d: &mut Declare) {
+    use ChannelKey::{Amplitude, Offset, Phase};
+    use ShapeKey::{AmplitudeX, AmplitudeY, Radius, Tilt, Z, ZEnd, ZStart};
+    let seed = Sampling::SEED;
+    let sampling = |k| Target::Sampling(k);
+    d.add(
+        "trajectory.start_s",
+        "start",
+        Second,
+        (-60.0, 60.0),
+        Value(seed.start()),
+        sampling(SamplingKey::Start),
+    );
+    d.add(
+        "trajectory.duration_s",
+        "duration",
+        Second,
+        (0.5, 120.0),
+        Value(seed.duration()),
+        sampling(SamplingKey::Duration),
+    );
+    d.add(
+        "trajectory.samples",
+        "samples",
+        Count,
+        (2.0, 20_000.0),
+        Value(seed.len() as f64),
+        sampling(SamplingKey::Samples),
+    );
+
+    let channels = Sinusoid::seed(0.0);
+    for (i, ((name, angular), (_, c))) in CHANNELS.into_iter().zip(channels.channels()).enumerate()
+    {
+        let (unit, suffix, amplitude, offset) = if angular {
+            (Degree, "deg", (0.0, 45.0), (-45.0, 45.0))
+        } else {
+            (Metre, "m", (0.0, 0.5), (-0.5, 0.5))
+        };
+        let key = |part: &str, unit_suffix: &str| format!("trajectory.{name}.{part}_{unit_suffix}");
+        let label = |part: &str| format!("{name} {part}");
+        let t = |k| Target::Channel(i, k);
+        d.add(
+            key("amplitude", suffix),
+            label("amplitude"),
+            unit,
+            amplitude,
+            Value(c.amplitude),
+            t(Amplitude),
+        );
+        d.add(
+            key("frequency", "hz"),
+            label("frequency"),
+            Hertz,
+            (0.0, 2.0),
+            Value(c.frequency_hz),
+            t(ChannelKey::Frequency),
+        );
+        d.add(
+            key("phase", "deg"),
+            label("phase"),
+            Degree,
+            (-180.0, 180.0),
+            Value(c.phase.degrees()),
+            t(Phase),
+        );
+        // The z channel oscillates about the home height unless told otherwise.
+        let (offset_range, offset_default) = if name == "z" {
+            ((0.1, 3.0), AboveHome(0.0))
+        } else {
+            (offset, Value(c.offset))
+        };
+        d.add(
+            key("offset", suffix),
+            label("offset"),
+            unit,
+            offset_range,
+            offset_default,
+            t(Offset),
+        );
+    }
+
+    let s = |k| Target::Shape(k);
+    let height = (0.1, 3.0);
+    d.add(
+        "trajectory.radius_m",
+        "radius",
+        Metre,
+        (0.0, 0.5),
+        Value(0.15),
+        s(Radius),
+    );
+    d.add(
+        "trajectory.frequency_hz",
+        "frequency",
+        Hertz,
+        (0.0, 2.0),
+        Value(0.2),
+        s(ShapeKey::Frequency),
+    );
+    d.add(
+        "trajectory.z_m",
+        "height",
+        Metre,
+        height,
+        AboveHome(0.0),
+        s(Z),
+    );
+    d.add(
+        "trajectory.amplitude_x_m",
+        "x half-width",
+        Metre,
+        (0.0, 0.5),
+        Value(0.2),
+        s(AmplitudeX),
+    );
+    d.add(
+        "trajectory.amplitude_y_m",
+        "y half-width",
+        Metre,
+        (0.0, 0.5),
+        Value(0.1),
+        s(AmplitudeY),
+    );
+    d.add(
+        "trajectory.z_start_m",
+        "start height",
+        Metre,
+        height,
+        AboveHome(-0.1),
+        s(ZStart),
+    );
+    d.add(
+        "trajectory.z_end_m",
+        "end height",
+        Metre,
+        height,
+        AboveHome(0.1),
+        s(ZEnd),
+    );
+    d.add(
+        "trajectory.tilt_deg",
+        "tilt",
+        Degree,
+        (0.0, 30.0),
+        Value(5.0),
+        s(Tilt),
+    );
+}
+
+fn limits(d: &mut Declare) {
+    use LimitKey::*;
+    let l = |k| Target::Limit(k);
+    d.add(
+        "limits.leg_speed_max_m_s",
+        "max leg speed",
+        MetrePerSecond,
+        (0.01, 2.0),
+        Off,
+        l(LegSpeed),
+    );
+    d.add(
+        "limits.leg_accel_max_m_s2",
+        "max leg acceleration",
+        MetrePerSecondSquared,
+        (0.01, 20.0),
+        Off,
+        l(LegAccel),
+    );
+    d.add(
+        "limits.base_cone_deg",
+        "base joint cone",
+        Degree,
+        (1.0, 90.0),
+        Off,
+        l(BaseCone),
+    );
+    d.add(
+        "limits.platform_cone_deg",
+        "platform joint cone",
+        Degree,
+        (1.0, 90.0),
+        Off,
+        l(PlatformCone),
+    );
+    d.add(
+        "limits.leg_radius_m",
+        "leg radius",
+        Metre,
+        (0.001, 0.1),
+        Off,
+        l(LegRadius),
+    );
+}
+
+fn checks(d: &mut Declare) {
+    use CheckKey::*;
+    let c = |k| Target::Check(k);
+    let seed = CheckSettings::default();
+    d.add(
+        "checks.rigid_tolerance_m",
+        "rigid-body tolerance",
+        Metre,
+        (1e-12, 1e-3),
+        Value(seed.rigid_tolerance),
+        c(RigidTolerance),
+    );
+    d.add(
+        "checks.jump_ratio",
+        "jump ratio",
+        Ratio,
+        (1.5, 50.0),
+        Value(seed.jump_ratio),
+        c(JumpRatio),
+    );
+    d.add(
+        "checks.jump_floor_m",
+        "jump floor",
+        Metre,
+        (1e-6, 0.05),
+        Value(seed.jump_floor),
+        c(JumpFloor),
+    );
+    d.add(
+        "checks.condition_max",
+        "near-singular condition number",
+        Ratio,
+        (2.0, 1000.0),
+        Value(seed.condition_max),
+        c(ConditionMax),
+    );
+}

@@ -1,0 +1,262 @@
+//! Every adjustable number of a scenario, declared once as data: its key (the dotted path
+//! of the scenario file), label, unit, slider range and default. The viewer draws its
+//! sliders from this list, the command line's `--set KEY=VALUE` looks keys up in it,
+//! and `stewart settings` prints it, so the three always agree with the file format.
+//!
+//! Reading and writing go through [`Setting::get`] and [`Setting::set`]; a write is
+//! validated by the same constructors the file reader uses ([`crate::Geometry::new`],
+//! [`crate::Sampling::with_start`]), so a refused value leaves the scenario as it was.
+
+mod catalogue;
+mod kinds;
+mod target;
+
+use std::ops::RangeInclusive;
+use std::sync::LazyLock;
+
+use thiserror::Error;
+
+use crate::scenario::Scenario;
+pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
+pub use target::{ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target};
+
+/// The unit a setting is written in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// Metres.
+    Metre,
+    /// Degrees.
+    Degree,
+    /// Hertz.
+    Hertz,
+    /// Seconds.
+    Second,
+    /// Metres per second.
+    MetrePerSecond,
+    /// Metres per second squared.
+    MetrePerSecondSquared,
+    /// A whole number of things (samples).
+    Count,
+    /// A pure number (ratios, condition numbers).
+    Ratio,
+}
+
+impl Unit {
+    /// The symbol shown after values and in labels (empty for pure numbers).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Unit::Metre => "m",
+            Unit::Degree => "°",
+            Unit::Hertz => "Hz",
+            Unit::Second => "s",
+            Unit::MetrePerSecond => "m/s",
+            Unit::MetrePerSecondSquared => "m/s²",
+            Unit::Count | Unit::Ratio => "",
+        }
+    }
+}
+
+/// What a setting is when nobody says otherwise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DefaultValue {
+    /// A fixed number.
+    Value(f64),
+    /// The platform's home height plus this many metres.
+    AboveHome(f64),
+    /// Absent: the limit or check is not applied.
+    Off,
+}
+
+impl DefaultValue {
+    /// The number for a platform whose home height is `home_height` (`None` when off).
+    pub fn resolve(self, home_height: f64) -> Option<f64> {
+        match self {
+            DefaultValue::Value(v) => Some(v),
+            DefaultValue::AboveHome(dz) => Some(home_height + dz),
+            DefaultValue::Off => None,
+        }
+    }
+}
+
+/// One adjustable number of a scenario.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setting {
+    /// Dotted path in the scenario file, such as `geometry.base_radius` or
+    /// `trajectory.pitch.phase_deg`; what `--set` takes.
+    pub key: String,
+    /// Short words for people, such as `base radius`.
+    pub label: String,
+    /// The unit of the value.
+    pub unit: Unit,
+    /// The range a slider offers (typed values may go beyond where the model allows).
+    pub range: RangeInclusive<f64>,
+    /// The value when none is given.
+    pub default: DefaultValue,
+    /// The section of the file (and the panel of the viewer) it belongs to.
+    pub group: Group,
+    /// What it reads and writes.
+    pub target: Target,
+}
+
+/// The sections settings are grouped in, as in the scenario file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Group {
+    /// `[geometry]` and `[pivot]`.
+    Geometry,
+    /// `[trajectory]`.
+    Trajectory,
+    /// `[limits]`.
+    Limits,
+    /// `[checks]`.
+    Checks,
+}
+
+/// Why a setting could not be read or written.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SettingError {
+    /// No setting has this key.
+    #[error("unknown setting `{0}` (`stewart settings` lists every key)")]
+    Unknown(String),
+    /// `KEY=VALUE` was not of that form or the value not a number.
+    #[error("`{text}` is not KEY=VALUE with a number (or `off`) as the value")]
+    Syntax {
+        /// What was given.
+        text: String,
+    },
+    /// The key belongs to another trajectory kind.
+    #[error("`{key}` does not apply to a `{kind}` trajectory")]
+    NotApplicable {
+        /// The key.
+        key: String,
+        /// The scenario's trajectory kind.
+        kind: &'static str,
+    },
+    /// The value was refused; the scenario is unchanged.
+    #[error("`{key}` = {value} refused: {reason}")]
+    Invalid {
+        /// The key.
+        key: String,
+        /// The value given (`off` for none).
+        value: String,
+        /// Why.
+        reason: String,
+    },
+}
+
+impl Setting {
+    /// The label with its unit, as sliders show it: `base radius (m)`.
+    pub fn label_with_unit(&self) -> String {
+        match self.unit.symbol() {
+            "" => self.label.clone(),
+            unit => format!("{} ({unit})", self.label),
+        }
+    }
+
+    /// Whether the setting may be absent (`off`).
+    pub fn optional(&self) -> bool {
+        self.target.optional()
+    }
+
+    /// Whether the setting means something for this scenario (trajectory keys belong to
+    /// some trajectory kinds only).
+    pub fn applies(&self, scenario: &Scenario) -> bool {
+        self.target.applies(scenario)
+    }
+
+    /// The current value; `None` when the setting is off or does not apply.
+    pub fn get(&self, scenario: &Scenario) -> Option<f64> {
+        self.target.get(scenario)
+    }
+
+    /// The default for this scenario's platform.
+    pub fn default_for(&self, scenario: &Scenario) -> Option<f64> {
+        self.default.resolve(scenario.geometry.home_height())
+    }
+
+    /// Write `value` (`None`: switch off). Validated as the file reader validates; a
+    /// refused value leaves the scenario unchanged.
+    pub fn set(&self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), SettingError> {
+        let shown = value.map_or_else(|| "off".to_owned(), |v| v.to_string());
+        let invalid = |reason: String| SettingError::Invalid {
+            key: self.key.clone(),
+            value: shown.clone(),
+            reason,
+        };
+        if !self.applies(scenario) {
+            return Err(SettingError::NotApplicable {
+                key: self.key.clone(),
+                kind: scenario.motion.trajectory.kind_name(),
+            });
+        }
+        match value {
+            None if !self.optional() => {
+                return Err(invalid("it cannot be switched off".to_owned()));
+            }
+            Some(v) if !v.is_finite() => {
+                return Err(invalid("it must be a finite number".to_owned()));
+            }
+            Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
+                return Err(invalid("it must be a whole number".to_owned()));
+            }
+            _ => {}
+        }
+        self.target.set(scenario, value).map_err(invalid)
+    }
+}
+
+static ALL: LazyLock<Vec<Setting>> = LazyLock::new(catalogue::build);
+
+/// Every setting, in file order.
+pub fn all() -> &'static [Setting] {
+    &ALL
+}
+
+/// The setting with this key.
+pub fn find(key: &str) -> Result<&'static Setting, SettingError> {
+    all()
+        .iter()
+        .find(|s| s.key == key)
+        .ok_or_else(|| SettingError::Unknown(key.to_owned()))
+}
+
+/// The setting for a target.
+pub fn of(target: Target) -> &'static Setting {
+    all()
+        .iter()
+        .find(|s| s.target == target)
+        .unwrap_or_else(|| unreachable!("the catalogue declares every target ({target:?})"))
+}
+
+/// Parse `KEY=VALUE` (a number, or `off` for optional settings).
+pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), SettingError> {
+    let syntax = || SettingError::Syntax {
+        text: text.to_owned(),
+    };
+    let (key, value) = text.split_once('=').ok_or_else(syntax)?;
+    let setting = find(key.trim())?;
+    let value = value.trim();
+    let value = if value.eq_ignore_ascii_case("off") {
+        None
+    } else {
+        Some(value.parse::<f64>().map_err(|_| syntax())?)
+    };
+    Ok((setting, value))
+}
+
+/// Apply `KEY=VALUE` assignments in order; the first refusal stops and is returned, and
+/// the scenario is then left as it was before any of them.
+pub fn apply_all<'a>(
+    scenario: &mut Scenario,
+    assignments: impl IntoIterator<Item = &'a str>,
+) -> Result<(), SettingError> {
+    let mut edited = scenario.clone();
+    for text in assignments {
+        let (setting, value) = parse_assignment(text)?;
+        setting.set(&mut edited, value)?;
+    }
+    *scenario = edited;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,372 @@
+//! What each setting reads and writes in a [`Scenario`].
+
+use crate::angle::Angle;
+use crate::geometry::Geometry;
+use crate::scenario::Scenario;
+use crate::trajectory::{Channel, Sampling, Trajectory};
+
+/// Numbers of `[geometry]` and `[pivot]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GeometryKey {
+    /// Base joint circle radius.
+    BaseRadius,
+    /// Platform joint circle radius.
+    PlatformRadius,
+    /// Home height.
+    HomeHeight,
+    /// Shortest leg.
+    LegMin,
+    /// Longest leg.
+    LegMax,
+    /// Angle of base joint `i` (0-based).
+    BaseAngle(usize),
+    /// Angle of platform joint `i` (0-based).
+    PlatformAngle(usize),
+    /// Component `i` (x, y, z) of the pivot offset.
+    Pivot(usize),
+}
+
+/// How the trajectory is sampled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SamplingKey {
+    /// First time.
+    Start,
+    /// Duration.
+    Duration,
+    /// Number of samples.
+    Samples,
+}
+
+/// The numbers of one sinusoid channel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChannelKey {
+    /// Peak deviation.
+    Amplitude,
+    /// Frequency.
+    Frequency,
+    /// Phase at t = 0.
+    Phase,
+    /// Centre value.
+    Offset,
+}
+
+/// The numbers of the parametric shapes (each kind uses some).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShapeKey {
+    /// Circle, helix and sway radius.
+    Radius,
+    /// Revolutions (or figure-eights) per second.
+    Frequency,
+    /// Height of level shapes.
+    Z,
+    /// Figure-eight half-width along x.
+    AmplitudeX,
+    /// Figure-eight half-width along y.
+    AmplitudeY,
+    /// Helix start height.
+    ZStart,
+    /// Helix end height.
+    ZEnd,
+    /// Sway lean.
+    Tilt,
+}
+
+/// Optional actuator and joint limits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LimitKey {
+    /// Leg speed.
+    LegSpeed,
+    /// Leg acceleration.
+    LegAccel,
+    /// Base joint cone.
+    BaseCone,
+    /// Platform joint cone.
+    PlatformCone,
+    /// Leg cylinder radius.
+    LegRadius,
+}
+
+/// Thresholds of the checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheckKey {
+    /// Rigid-body tolerance.
+    RigidTolerance,
+    /// Jump ratio.
+    JumpRatio,
+    /// Jump floor.
+    JumpFloor,
+    /// Near-singular threshold.
+    ConditionMax,
+}
+
+/// What a setting reads and writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// A platform number.
+    Geometry(GeometryKey),
+    /// The sampling.
+    Sampling(SamplingKey),
+    /// Channel `i` (x, y, z, roll, pitch, yaw) of a sinusoid.
+    Channel(usize, ChannelKey),
+    /// A shape's number.
+    Shape(ShapeKey),
+    /// A limit.
+    Limit(LimitKey),
+    /// A check threshold.
+    Check(CheckKey),
+}
+
+impl Target {
+    /// Whether it may be absent.
+    pub(super) fn optional(self) -> bool {
+        matches!(
+            self,
+            Target::Limit(_) | Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+        )
+    }
+
+    pub(super) fn applies(self, scenario: &Scenario) -> bool {
+        let trajectory = &scenario.motion.trajectory;
+        match self {
+            Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
+            Target::Shape(key) => shape_value(trajectory, key).is_some(),
+            _ => true,
+        }
+    }
+
+    pub(super) fn get(self, scenario: &Scenario) -> Option<f64> {
+        let params = scenario.geometry.params();
+        match self {
+            Target::Geometry(key) => match key {
+                GeometryKey::BaseRadius => Some(params.base_radius),
+                GeometryKey::PlatformRadius => Some(params.platform_radius),
+                GeometryKey::HomeHeight => Some(params.home_height),
+                GeometryKey::LegMin => params.stroke.min,
+                GeometryKey::LegMax => params.stroke.max,
+                GeometryKey::BaseAngle(i) => params.base_angles.get(i).map(|a| a.degrees()),
+                GeometryKey::PlatformAngle(i) => params.platform_angles.get(i).map(|a| a.degrees()),
+                GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
+            },
+            Target::Sampling(key) => {
+                let s = &scenario.motion.sampling;
+                Some(match key {
+                    SamplingKey::Start => s.start(),
+                    SamplingKey::Duration => s.duration(),
+                    SamplingKey::Samples => s.len() as f64,
+                })
+            }
+            Target::Channel(i, key) => match &scenario.motion.trajectory {
+                Trajectory::Sinusoid(s) => s.channels().get(i).map(|(_, c)| match key {
+                    ChannelKey::Amplitude => c.amplitude,
+                    ChannelKey::Frequency => c.frequency_hz,
+                    ChannelKey::Phase => c.phase.degrees(),
+                    ChannelKey::Offset => c.offset,
+                }),
+                _ => None,
+            },
+            Target::Shape(key) => shape_value(&scenario.motion.trajectory, key),
+            Target::Limit(key) => {
+                let l = &scenario.limits;
+                match key {
+                    LimitKey::LegSpeed => l.leg_speed_max,
+                    LimitKey::LegAccel => l.leg_accel_max,
+                    LimitKey::BaseCone => l.base_cone.map(|a| a.degrees()),
+                    LimitKey::PlatformCone => l.platform_cone.map(|a| a.degrees()),
+                    LimitKey::LegRadius => l.leg_radius,
+                }
+            }
+            Target::Check(key) => {
+                let c = &scenario.checks;
+                Some(match key {
+                    CheckKey::RigidTolerance => c.rigid_tolerance,
+                    CheckKey::JumpRatio => c.jump_ratio,
+                    CheckKey::JumpFloor => c.jump_floor,
+                    CheckKey::ConditionMax => c.condition_max,
+                })
+            }
+        }
+    }
+
+    /// Write a value already known to be finite (or `None` for an optional one).
+    pub(super) fn set(self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), String> {
+        let v = value.unwrap_or(f64::NAN);
+        match self {
+            Target::Geometry(key) => set_geometry(scenario, key, value),
+            Target::Sampling(key) => set_sampling(scenario, key, v),
+            Target::Channel(i, key) => {
+                if let Trajectory::Sinusoid(s) = &mut scenario.motion.trajectory {
+                    let channels = [
+                        &mut s.x,
+                        &mut s.y,
+                        &mut s.z,
+                        &mut s.roll_deg,
+                        &mut s.pitch_deg,
+                        &mut s.yaw_deg,
+                    ];
+                    if let Some(c) = channels.into_iter().nth(i) {
+                        set_channel(c, key, v);
+                    }
+                }
+                Ok(())
+            }
+            Target::Shape(key) => {
+                if let Some(field) = shape_field(&mut scenario.motion.trajectory, key) {
+                    field.write(v);
+                }
+                Ok(())
+            }
+            Target::Limit(key) => set_limit(scenario, key, value),
+            Target::Check(key) => {
+                if v <= 0.0 {
+                    return Err(format!("it must be positive, got {v}"));
+                }
+                let c = &mut scenario.checks;
+                *match key {
+                    CheckKey::RigidTolerance => &mut c.rigid_tolerance,
+                    CheckKey::JumpRatio => &mut c.jump_ratio,
+                    CheckKey::JumpFloor => &mut c.jump_floor,
+                    CheckKey::ConditionMax => &mut c.condition_max,
+                } = v;
+                Ok(())
+            }
+        }
+    }
+}
+
+fn set_geometry(
+    scenario: &mut Scenario,
+    key: GeometryKey,
+    value: Option<f64>,
+) -> Result<(), String> {
+    let mut p = scenario.geometry.params().clone();
+    let v = value.unwrap_or(f64::NAN);
+    let slot = |list: &mut [Angle; 6], i: usize| {
+        if let Some(a) = list.get_mut(i) {
+            *a = Angle::from_degrees(v);
+        }
+    };
+    match key {
+        GeometryKey::BaseRadius => p.base_radius = v,
+        GeometryKey::PlatformRadius => p.platform_radius = v,
+        GeometryKey::HomeHeight => p.home_height = v,
+        GeometryKey::LegMin => p.stroke.min = value,
+        GeometryKey::LegMax => p.stroke.max = value,
+        GeometryKey::BaseAngle(i) => slot(&mut p.base_angles, i),
+        GeometryKey::PlatformAngle(i) => slot(&mut p.platform_angles, i),
+        GeometryKey::Pivot(i) => {
+            if let Some(c) = p.pivot.get_mut(i) {
+                *c = v;
+            }
+        }
+    }
+    scenario.geometry = Geometry::new(p).map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+fn set_sampling(scenario: &mut Scenario, key: SamplingKey, v: f64) -> Result<(), String> {
+    let s = scenario.motion.sampling;
+    let (mut start, mut duration, mut samples) = (s.start(), s.duration(), s.len() as f64);
+    match key {
+        SamplingKey::Start => start = v,
+        SamplingKey::Duration => duration = v,
+        SamplingKey::Samples => samples = v,
+    }
+    if samples < 2.0 {
+        return Err(format!("at least 2 samples are needed, got {samples}"));
+    }
+    scenario.motion.sampling =
+        Sampling::with_start(start, duration, samples as u64).map_err(|e| e.to_string())?;
+    // A helix climbs over the whole sampled duration (as the file reader builds it).
+    if let Trajectory::Helix(h) = &mut scenario.motion.trajectory {
+        h.duration = duration;
+    }
+    Ok(())
+}
+
+fn set_channel(c: &mut Channel, key: ChannelKey, v: f64) {
+    match key {
+        ChannelKey::Amplitude => c.amplitude = v,
+        ChannelKey::Frequency => c.frequency_hz = v,
+        ChannelKey::Phase => c.phase = Angle::from_degrees(v),
+        ChannelKey::Offset => c.offset = v,
+    }
+}
+
+fn set_limit(scenario: &mut Scenario, key: LimitKey, value: Option<f64>) -> Result<(), String> {
+    if let Some(v) = value {
+        if v <= 0.0 {
+            return Err(format!("it must be positive, got {v}"));
+        }
+        if matches!(key, LimitKey::BaseCone | LimitKey::PlatformCone) && v >= 180.0 {
+            return Err(format!("a cone must be less than 180°, got {v}"));
+        }
+    }
+    let l = &mut scenario.limits;
+    let degrees = value.map(Angle::from_degrees);
+    match key {
+        LimitKey::LegSpeed => l.leg_speed_max = value,
+        LimitKey::LegAccel => l.leg_accel_max = value,
+        LimitKey::BaseCone => l.base_cone = degrees,
+        LimitKey::PlatformCone => l.platform_cone = degrees,
+        LimitKey::LegRadius => l.leg_radius = value,
+    }
+    Ok(())
+}
+
+/// A shape's number, read in the unit of its setting.
+enum ShapeField<'a> {
+    Plain(&'a mut f64),
+    Degrees(&'a mut Angle),
+}
+
+impl ShapeField<'_> {
+    fn read(&self) -> f64 {
+        match self {
+            ShapeField::Plain(v) => **v,
+            ShapeField::Degrees(a) => a.degrees(),
+        }
+    }
+
+    fn write(self, v: f64) {
+        match self {
+            ShapeField::Plain(x) => *x = v,
+            ShapeField::Degrees(a) => *a = Angle::from_degrees(v),
+        }
+    }
+}
+
+/// The value of a shape key in this trajectory, if its kind has that key.
+fn shape_value(trajectory: &Trajectory, key: ShapeKey) -> Option<f64> {
+    if matches!(
+        trajectory,
+        Trajectory::Sinusoid(_) | Trajectory::Keyframes(_)
+    ) {
+        return None;
+    }
+    // A shape is a handful of numbers: reading through a copy keeps one table of fields.
+    let mut copy = trajectory.clone();
+    shape_field(&mut copy, key).map(|f| f.read())
+}
+
+/// The field a shape key names in this trajectory, if its kind has one.
+fn shape_field(trajectory: &mut Trajectory, key: ShapeKey) -> Option<ShapeField<'_>> {
+    use ShapeField::{Degrees, Plain};
+    match (trajectory, key) {
+        (Trajectory::Circle(c), ShapeKey::Radius) => Some(Plain(&mut c.radius)),
+        (Trajectory::Circle(c), ShapeKey::Frequency) => Some(Plain(&mut c.frequency_hz)),
+        (Trajectory::Circle(c), ShapeKey::Z) => Some(Plain(&mut c.z)),
+        (Trajectory::FigureEight(f), ShapeKey::AmplitudeX) => Some(Plain(&mut f.amplitude_x)),
+        (Trajectory::FigureEight(f), ShapeKey::AmplitudeY) => Some(Plain(&mut f.amplitude_y)),
+        (Trajectory::FigureEight(f), ShapeKey::Frequency) => Some(Plain(&mut f.frequency_hz)),
+        (Trajectory::FigureEight(f), ShapeKey::Z) => Some(Plain(&mut f.z)),
+        (Trajectory::Helix(h), ShapeKey::Radius) => Some(Plain(&mut h.radius)),
+        (Trajectory::Helix(h), ShapeKey::Frequency) => Some(Plain(&mut h.frequency_hz)),
+        (Trajectory::Helix(h), ShapeKey::ZStart) => Some(Plain(&mut h.z_start)),
+        (Trajectory::Helix(h), ShapeKey::ZEnd) => Some(Plain(&mut h.z_end)),
+        (Trajectory::Sway(s), ShapeKey::Radius) => Some(Plain(&mut s.radius)),
+        (Trajectory::Sway(s), ShapeKey::Frequency) => Some(Plain(&mut s.frequency_hz)),
+        (Trajectory::Sway(s), ShapeKey::Tilt) => Some(Degrees(&mut s.tilt)),
+        (Trajectory::Sway(s), ShapeKey::Z) => Some(Plain(&mut s.z)),
+        _ => None,
+    }
+}

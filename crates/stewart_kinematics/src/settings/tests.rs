@@ -1,0 +1,232 @@
+use super::*;
+use crate::scenario::presets;
+use crate::trajectory::Trajectory;
+
+fn preset(name: &str) -> Scenario {
+    Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The value at a dotted key such as `geometry.base_angles_deg[2]` in TOML text, read
+/// with the toml crate alone (independently of the settings' accessors).
+fn lookup(text: &str, key: &str) -> Option<f64> {
+    let mut value: toml::Value = toml::from_str(text).unwrap_or_else(|e| panic!("{e}"));
+    for part in key.split('.') {
+        let (name, index) = match part.split_once('[') {
+            Some((name, rest)) => (name, rest.trim_end_matches(']').parse::<usize>().ok()),
+            None => (part, None),
+        };
+        value = value.get(name)?.clone();
+        if let Some(i) = index {
+            value = value.get(i)?.clone();
+        }
+    }
+    value
+        .as_float()
+        .or_else(|| value.as_integer().map(|i| i as f64))
+}
+
+#[test]
+fn keys_are_unique_and_every_target_is_declared() {
+    let mut keys: Vec<&str> = all().iter().map(|s| s.key.as_str()).collect();
+    let n = keys.len();
+    keys.sort_unstable();
+    keys.dedup();
+    assert_eq!(keys.len(), n, "duplicate keys");
+    for s in all() {
+        assert_eq!(of(s.target).key, s.key);
+        assert!(s.range.start() < s.range.end(), "{}", s.key);
+    }
+}
+
+#[test]
+fn every_key_is_the_path_of_its_value_in_the_scenario_file() {
+    // For every preset, each setting that applies reads the number the file holds at
+    // its key; an absent optional setting is absent from the file.
+    for name in presets::names() {
+        let scenario = preset(name);
+        let text = scenario.to_toml();
+        let mut checked = 0;
+        for s in all().iter().filter(|s| s.applies(&scenario)) {
+            let in_file = lookup(&text, &s.key);
+            match (s.get(&scenario), in_file) {
+                (Some(v), Some(f)) => {
+                    assert!(
+                        (v - f).abs() <= 1e-12 * v.abs().max(1.0),
+                        "{name} {}: {v} vs {f}",
+                        s.key
+                    );
+                    checked += 1;
+                }
+                (None, None) => assert!(s.optional(), "{name} {}", s.key),
+                // Defaults the writer leaves out (start 0, default checks) still read back.
+                (Some(_), None) => {
+                    let back = Scenario::from_toml_str(&text, name, None)
+                        .unwrap_or_else(|e| panic!("{e}"));
+                    assert_eq!(s.get(&back), s.get(&scenario), "{name} {}", s.key);
+                }
+                (None, Some(f)) => panic!("{name} {}: file has {f}, setting reads nothing", s.key),
+            }
+        }
+        assert!(
+            checked >= 20,
+            "{name}: only {checked} keys found in the file"
+        );
+    }
+}
+
+#[test]
+fn a_value_set_survives_the_file_round_trip() {
+    let cases = [
+        ("seed", "geometry.base_radius", 1.25),
+        ("seed", "geometry.platform_angles_deg[3]", 200.0),
+        ("seed", "pivot.offset_m[2]", 0.1),
+        ("seed", "trajectory.pitch.phase_deg", -30.0),
+        ("seed", "trajectory.z.offset_m", 0.85),
+        ("seed", "trajectory.samples", 501.0),
+        ("seed", "trajectory.duration_s", 12.5),
+        ("circle", "trajectory.radius_m", 0.05),
+        ("sway", "trajectory.tilt_deg", 7.5),
+        ("helix", "trajectory.z_end_m", 0.95),
+        ("paired", "limits.platform_cone_deg", 40.0),
+        ("paired", "checks.jump_ratio", 8.0),
+    ];
+    for (name, key, value) in cases {
+        let mut scenario = preset(name);
+        let setting = find(key).unwrap_or_else(|e| panic!("{e}"));
+        setting
+            .set(&mut scenario, Some(value))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let back = Scenario::from_toml_str(&scenario.to_toml(), name, None)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let read = setting.get(&back).unwrap_or(f64::NAN);
+        assert!((read - value).abs() < 1e-12, "{name} {key}: {read}");
+        // Angles pass through radians and may differ from the typed degrees in the last bit.
+        let in_file = lookup(&scenario.to_toml(), key).unwrap_or(f64::NAN);
+        assert!((in_file - value).abs() < 1e-12, "{name} {key}: {in_file}");
+    }
+}
+
+#[test]
+fn settings_change_what_they_name() {
+    let mut s = Scenario::seed();
+    find("trajectory.x.amplitude_m")
+        .and_then(|k| k.set(&mut s, Some(0.0)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    find("trajectory.y.amplitude_m")
+        .and_then(|k| k.set(&mut s, Some(0.0)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    // With x and y still, the platform centre stays on the axis.
+    for k in 0..50 {
+        let p = s.motion.trajectory.pose_at(k as f64 * 0.2).position;
+        assert!(p.x.abs() < 1e-15 && p.y.abs() < 1e-15);
+    }
+    find("geometry.home_height")
+        .and_then(|k| k.set(&mut s, Some(1.0)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.geometry.home_pose().position.z, 1.0);
+    // Twenty samples over 2 s: a step of 2/19 s.
+    apply_all(&mut s, ["trajectory.duration_s=2", "trajectory.samples=20"])
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!((s.motion.sampling.step() - 2.0 / 19.0).abs() < 1e-15);
+    let mut helix = preset("helix");
+    apply_all(&mut helix, ["trajectory.duration_s=4"]).unwrap_or_else(|e| panic!("{e}"));
+    // The helix now reaches its end height at 4 s.
+    let end = helix.motion.trajectory.pose_at(4.0).position.z;
+    assert!((end - 0.9).abs() < 1e-12, "{end}");
+}
+
+#[test]
+fn refused_values_leave_the_scenario_unchanged_and_say_why() {
+    let cases = [
+        (
+            "geometry.base_radius=-1",
+            "`geometry.base_radius` = -1 refused: `base_radius` must be positive, got -1",
+        ),
+        ("geometry.leg_min=2", "`geometry.leg_min` = 2 refused"),
+        ("geometry.base_radius=off", "it cannot be switched off"),
+        ("geometry.platform_angles_deg[1]=50", "refused"),
+        ("trajectory.x.amplitude_m=nan", "it must be a finite number"),
+        ("trajectory.samples=2.5", "it must be a whole number"),
+        ("trajectory.samples=1", "at least 2 samples"),
+        (
+            "trajectory.duration_s=0",
+            "`duration_s` must be a positive finite number",
+        ),
+        (
+            "trajectory.radius_m=0.1",
+            "`trajectory.radius_m` does not apply to a `sinusoid` trajectory",
+        ),
+        (
+            "limits.base_cone_deg=200",
+            "a cone must be less than 180°, got 200",
+        ),
+        ("checks.jump_ratio=-3", "it must be positive, got -3"),
+        ("geometry.radius=1", "unknown setting `geometry.radius`"),
+        ("geometry.base_radius", "is not KEY=VALUE"),
+        ("geometry.base_radius=big", "is not KEY=VALUE"),
+    ];
+    for (text, expected) in cases {
+        let mut s = preset("paired");
+        let before = s.clone();
+        // A good assignment first: it too must be undone by the refusal that follows.
+        let e = apply_all(&mut s, ["geometry.home_height=0.9", text]).err();
+        let message = e.map(|e| e.to_string()).unwrap_or_default();
+        assert!(message.contains(expected), "{text}: {message}");
+        assert_eq!(s, before, "{text}");
+    }
+}
+
+#[test]
+fn optional_settings_switch_on_and_off() {
+    let mut s = preset("seed");
+    let speed = find("limits.leg_speed_max_m_s").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(speed.get(&s), None);
+    apply_all(&mut s, ["limits.leg_speed_max_m_s=0.3"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.limits.leg_speed_max, Some(0.3));
+    apply_all(&mut s, ["limits.leg_speed_max_m_s=off"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.limits.leg_speed_max, None);
+}
+
+#[test]
+fn defaults_are_the_seed_and_the_presets() {
+    let seed = Scenario::seed();
+    for s in all() {
+        if let (Some(d), true) = (s.default_for(&seed), s.applies(&seed)) {
+            let v = s.get(&seed).unwrap_or(f64::NAN);
+            assert!((v - d).abs() < 1e-12, "{}: default {d}, seed {v}", s.key);
+        }
+    }
+    // Switching the seed to a circle gives the circle preset's motion.
+    let mut s = Scenario::seed();
+    switch_trajectory(&mut s, TrajectoryChoice::Circle);
+    assert_eq!(s.motion.trajectory, preset("circle").motion.trajectory);
+    for choice in TrajectoryChoice::ALL {
+        switch_trajectory(&mut s, choice);
+        assert_eq!(TrajectoryChoice::of(&s.motion.trajectory), choice);
+        let back =
+            Scenario::from_toml_str(&s.to_toml(), "x", None).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            back.motion.trajectory.kind_name(),
+            s.motion.trajectory.kind_name()
+        );
+        if let Trajectory::Keyframes(k) = &s.motion.trajectory {
+            assert_eq!(k.time_span(), (0.0, 10.0));
+        }
+    }
+}
+
+#[test]
+fn labels_carry_their_units() {
+    assert_eq!(
+        find("geometry.base_radius").map(Setting::label_with_unit),
+        Ok("base radius (m)".to_owned())
+    );
+    assert_eq!(
+        find("trajectory.roll.amplitude_deg").map(Setting::label_with_unit),
+        Ok("roll amplitude (°)".to_owned())
+    );
+    assert_eq!(
+        find("trajectory.samples").map(Setting::label_with_unit),
+        Ok("samples".to_owned())
+    );
+}
