@@ -35,18 +35,34 @@ pub enum Command {
     Plot(PlotArgs),
     /// The interactive viewer (what `stewart` with no argument opens).
     View(ViewArgs),
+    /// Every setting `--set` accepts (the keys of scenario files and the viewer's sliders):
+    /// key, unit, slider range, default and, with a scenario, its current value.
+    Settings(SettingsArgs),
 }
 
-/// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset).
+/// Arguments of `stewart settings`.
+#[derive(Debug, Args)]
+pub struct SettingsArgs {
+    /// The scenario whose values to show.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+}
+
+/// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset),
+/// with settings changed on the way.
 #[derive(Debug, Args, Default)]
-#[group(multiple = false)]
 pub struct ScenarioArgs {
     /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes.
-    #[arg(long, value_name = "NAME")]
+    #[arg(long, value_name = "NAME", conflicts_with = "scenario")]
     pub preset: Option<String>,
     /// A scenario file (TOML).
     #[arg(long, value_name = "FILE")]
     pub scenario: Option<PathBuf>,
+    /// Change one setting of the scenario, such as `geometry.base_radius=1.2` or
+    /// `trajectory.x.amplitude_m=0.1` (`off` removes an optional limit); repeatable.
+    /// `stewart settings` lists every key with its unit, range and default.
+    #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
+    pub set: Vec<String>,
 }
 
 /// Arguments of `stewart solve`.

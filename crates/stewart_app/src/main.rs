@@ -20,6 +20,7 @@ fn main() -> ExitCode {
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Plot(args)) => commands::plot::run(&args),
         Some(Command::View(args)) => commands::view::run(&args),
+        Some(Command::Settings(args)) => commands::settings::run(&args),
         None => commands::no_command(),
     };
     match result {

@@ -1,16 +1,19 @@
-//! Resolving `--preset` / `--scenario` into a scenario.
+//! Resolving `--preset` / `--scenario` and `--set` into a scenario.
 
 use anyhow::Result;
-use stewart_kinematics::Scenario;
+use stewart_kinematics::{Scenario, settings};
 
 use crate::cli::ScenarioArgs;
 
-/// The scenario the arguments name; the `seed` preset when they name none.
+/// The scenario the arguments name (the `seed` preset when they name none), with the
+/// `--set` assignments applied in order.
 pub fn load(args: &ScenarioArgs) -> Result<Scenario> {
-    let scenario = match (&args.preset, &args.scenario) {
+    let mut scenario = match (&args.preset, &args.scenario) {
         (_, Some(path)) => Scenario::load(path)?,
         (Some(name), None) => Scenario::preset(name)?,
         (None, None) => Scenario::preset("seed")?,
     };
+    settings::apply_all(&mut scenario, args.set.iter().map(String::as_str))
+        .map_err(|e| anyhow::anyhow!("--set: {e}"))?;
     Ok(scenario)
 }

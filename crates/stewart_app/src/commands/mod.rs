@@ -5,6 +5,7 @@ pub mod fk;
 pub mod forces;
 pub mod plot;
 pub mod render;
+pub mod settings;
 pub mod solve;
 pub mod view;
 pub mod workspace;

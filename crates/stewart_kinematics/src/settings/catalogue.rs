@@ -110,28 +110,24 @@ fn geometry(d: &mut Declare) {
         Off,
         g(LegMax),
     );
-    for i in 0..6 {
-        let base = seed.base_angles[i].degrees();
-        let platform = seed.platform_angles[i].degrees();
-        let turn = (-180.0, 360.0);
-        let (bk, pk) = (BaseAngle(i), PlatformAngle(i));
-        let leg = i + 1;
-        d.add(
-            format!("geometry.base_angles_deg[{i}]"),
-            format!("base joint {leg}"),
-            Degree,
-            turn,
-            Value(base),
-            g(bk),
-        );
-        d.add(
-            format!("geometry.platform_angles_deg[{i}]"),
-            format!("platform joint {leg}"),
-            Degree,
-            turn,
-            Value(platform),
-            g(pk),
-        );
+    for (plate, angles, key) in [
+        (
+            "base",
+            seed.base_angles,
+            BaseAngle as fn(usize) -> GeometryKey,
+        ),
+        ("platform", seed.platform_angles, PlatformAngle),
+    ] {
+        for (i, angle) in angles.iter().enumerate() {
+            d.add(
+                format!("geometry.{plate}_angles_deg[{i}]"),
+                format!("{plate} joint {}", i + 1),
+                Degree,
+                (-180.0, 360.0),
+                Value(angle.degrees()),
+                g(key(i)),
+            );
+        }
     }
     for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {
         d.add(

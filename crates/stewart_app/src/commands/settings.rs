@@ -1,0 +1,82 @@
+//! `stewart settings`: every key `--set` accepts, as a table.
+
+use std::fmt::Write as _;
+use std::process::ExitCode;
+
+use anyhow::Result;
+use stewart_kinematics::{Scenario, settings};
+
+use crate::cli::SettingsArgs;
+use crate::source;
+
+/// Run the command.
+pub fn run(args: &SettingsArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    print!("{}", table(&scenario));
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The table: key, current value, unit, slider range, default.
+pub fn table(scenario: &Scenario) -> String {
+    // Ten decimals hide the last-bit noise of angles stored in radians.
+    let number = |v: Option<f64>| {
+        v.map_or_else(
+            || "off".to_owned(),
+            |v| {
+                if v != 0.0 && v.abs() < 1e-3 {
+                    return format!("{v:e}");
+                }
+                let text = format!("{v:.10}");
+                let text = text.trim_end_matches('0').trim_end_matches('.');
+                if text == "-0" {
+                    "0".to_owned()
+                } else {
+                    text.to_owned()
+                }
+            },
+        )
+    };
+    let rows: Vec<[String; 5]> = settings::all()
+        .iter()
+        .map(|s| {
+            let value = if s.applies(scenario) {
+                number(s.get(scenario))
+            } else {
+                "(other kinds)".to_owned()
+            };
+            [
+                s.key.clone(),
+                value,
+                s.unit.symbol().to_owned(),
+                format!(
+                    "{} .. {}",
+                    number(Some(*s.range.start())),
+                    number(Some(*s.range.end()))
+                ),
+                number(s.default_for(scenario)),
+            ]
+        })
+        .collect();
+    let header = ["key", "value", "unit", "slider range", "default"].map(str::to_owned);
+    let mut widths = [0; 5];
+    for row in std::iter::once(&header).chain(&rows) {
+        for (w, cell) in widths.iter_mut().zip(row) {
+            *w = (*w).max(cell.chars().count());
+        }
+    }
+    let mut out = format!(
+        "Settings of `{}` (trajectory kind `{}`); change one with --set KEY=VALUE.\n",
+        scenario.name,
+        scenario.motion.trajectory.kind_name()
+    );
+    for row in std::iter::once(&header).chain(&rows) {
+        let mut line = String::new();
+        for (w, cell) in widths.iter().zip(row) {
+            let pad = w - cell.chars().count();
+            let _ = write!(line, "{cell}{}  ", " ".repeat(pad));
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}

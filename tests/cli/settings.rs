@@ -1,0 +1,75 @@
+//! `stewart settings` and `--set KEY=VALUE`.
+
+use crate::{parse_csv, stderr, stdout, stewart};
+
+#[test]
+fn settings_lists_every_key_with_value_unit_and_default() {
+    let o = stewart(&["settings", "--preset", "circle"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let row = |key: &str| {
+        text.lines()
+            .find(|l| l.split_whitespace().next() == Some(key))
+            .unwrap_or_else(|| panic!("no row for {key} in\n{text}"))
+            .split_whitespace()
+            .map(str::to_owned)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(row("geometry.base_angles_deg[0]")[1], "10");
+    assert_eq!(row("trajectory.radius_m")[1..3], ["0.15", "m"]);
+    assert_eq!(row("trajectory.x.amplitude_m")[1], "(other");
+    assert_eq!(row("limits.leg_speed_max_m_s")[1], "off");
+    assert_eq!(row("checks.jump_floor_m").last().map(String::as_str), Some("1e-4"));
+}
+
+#[test]
+fn set_changes_the_scenario_for_every_command() {
+    // The seed with x and y still and two samples over 5 s: the platform stays on the axis.
+    let o = stewart(&[
+        "solve",
+        "--set",
+        "trajectory.x.amplitude_m=0",
+        "--set",
+        "trajectory.y.amplitude_m=0",
+        "--set",
+        "trajectory.duration_s=5",
+        "--set",
+        "trajectory.samples=2",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = parse_csv(&stdout(&o));
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[1][0], 5.0);
+    assert_eq!((rows[1][1], rows[1][2]), (0.0, 0.0));
+    // A leg minimum above every leg makes `check` find stroke problems.
+    let o = stewart(&["check", "--preset", "paired", "--set", "geometry.leg_min=1.2"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    assert!(stdout(&o).contains("min"), "{}", stdout(&o));
+}
+
+#[test]
+fn a_refused_setting_is_one_clear_error() {
+    for (args, expected) in [
+        (
+            vec!["solve", "--set", "geometry.base_radius=-1"],
+            "error: --set: `geometry.base_radius` = -1 refused: `base_radius` must be positive, got -1",
+        ),
+        (
+            vec!["solve", "--preset", "seed", "--set", "trajectory.radius_m=0.1"],
+            "error: --set: `trajectory.radius_m` does not apply to a `sinusoid` trajectory",
+        ),
+        (
+            vec!["check", "--set", "geometry.radius=1"],
+            "error: --set: unknown setting `geometry.radius` (`stewart settings` lists every key)",
+        ),
+        (
+            vec!["solve", "--set", "trajectory.samples=nan"],
+            "error: --set: `trajectory.samples` = NaN refused: it must be a finite number",
+        ),
+    ] {
+        let o = stewart(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o).trim_end(), expected, "{args:?}");
+        assert!(o.stdout.is_empty(), "{args:?}");
+    }
+}
