@@ -19,7 +19,10 @@ fn settings_lists_every_key_with_value_unit_and_default() {
     assert_eq!(row("trajectory.radius_m")[1..3], ["0.15", "m"]);
     assert_eq!(row("trajectory.x.amplitude_m")[1], "(other");
     assert_eq!(row("limits.leg_speed_max_m_s")[1], "off");
-    assert_eq!(row("checks.jump_floor_m").last().map(String::as_str), Some("1e-4"));
+    assert_eq!(
+        row("checks.jump_floor_m").last().map(String::as_str),
+        Some("1e-4")
+    );
 }
 
 #[test]
@@ -42,7 +45,13 @@ fn set_changes_the_scenario_for_every_command() {
     assert_eq!(rows[1][0], 5.0);
     assert_eq!((rows[1][1], rows[1][2]), (0.0, 0.0));
     // A leg minimum above every leg makes `check` find stroke problems.
-    let o = stewart(&["check", "--preset", "paired", "--set", "geometry.leg_min=1.2"]);
+    let o = stewart(&[
+        "check",
+        "--preset",
+        "paired",
+        "--set",
+        "geometry.leg_min=1.2",
+    ]);
     assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
     assert!(stdout(&o).contains("min"), "{}", stdout(&o));
 }
@@ -55,7 +64,13 @@ fn a_refused_setting_is_one_clear_error() {
             "error: --set: `geometry.base_radius` = -1 refused: `base_radius` must be positive, got -1",
         ),
         (
-            vec!["solve", "--preset", "seed", "--set", "trajectory.radius_m=0.1"],
+            vec![
+                "solve",
+                "--preset",
+                "seed",
+                "--set",
+                "trajectory.radius_m=0.1",
+            ],
             "error: --set: `trajectory.radius_m` does not apply to a `sinusoid` trajectory",
         ),
         (

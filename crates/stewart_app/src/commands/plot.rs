@@ -2,34 +2,17 @@
 
 use std::process::ExitCode;
 
-use anyhow::{Result, bail};
+use anyhow::Result;
 
 use crate::cli::PlotArgs;
-use crate::export::plot::scenario_svg;
-use crate::export::vector;
+use crate::export::plot::plot_file;
 use crate::output;
 use crate::source;
 
 /// Run the command.
 pub fn run(args: &PlotArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    let (_, text) = scenario_svg(&scenario);
-    let bytes = match args
-        .out
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
-        Some("svg") => text.into_bytes(),
-        Some("pdf") => vector::pdf(&text)?,
-        // 3.125 × 96 dpi = 300 dpi.
-        Some("png") => vector::png(&text, 3.125)?,
-        _ => bail!(
-            "`{}`: the plot file must end in .svg, .pdf or .png",
-            args.out.display()
-        ),
-    };
+    let bytes = plot_file(&scenario, &args.out)?;
     output::write_atomically(&args.out, &bytes)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -3,4 +3,6 @@
 pub mod encode;
 pub mod frames;
 pub mod plot;
+pub mod tables;
 pub mod vector;
+pub mod video;

@@ -284,3 +284,27 @@ mod tests {
         assert!(text.contains(r#"class="marker""#));
     }
 }
+
+/// The scenario's leg-length plot in the format `path` ends in: `.svg` (text stays
+/// text), `.pdf` (vector) or `.png` (300 dpi).
+pub fn plot_file(
+    scenario: &stewart_kinematics::Scenario,
+    path: &std::path::Path,
+) -> anyhow::Result<Vec<u8>> {
+    let (_, text) = scenario_svg(scenario);
+    match path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .as_deref()
+    {
+        Some("svg") => Ok(text.into_bytes()),
+        Some("pdf") => super::vector::pdf(&text),
+        // 3.125 × 96 dpi = 300 dpi.
+        Some("png") => super::vector::png(&text, 3.125),
+        _ => anyhow::bail!(
+            "`{}`: the plot file must end in .svg, .pdf or .png",
+            path.display()
+        ),
+    }
+}

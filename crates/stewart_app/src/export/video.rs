@@ -1,0 +1,124 @@
+//! A whole video export (frames, GIF or MP4) as the `render` command and the viewer's
+//! export panel both ask for it: which times, which camera, which colours.
+
+use std::ops::Range;
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::time::Instant;
+
+use anyhow::{Result, bail};
+use indicatif::ProgressBar;
+use stewart_kinematics::Scenario;
+use stewart_render::{OrbitCamera, Overlays, Theme};
+
+use super::encode::{self, Target};
+use super::frames::{FrameJob, FrameSource, default_camera};
+
+/// What to export.
+#[derive(Clone, Debug)]
+pub struct VideoRequest {
+    /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
+    pub out: PathBuf,
+    /// Frame width and height, pixels.
+    pub size: (u32, u32),
+    /// Frames per second; `None`: one frame per trajectory sample.
+    pub fps: Option<f64>,
+    /// Only frames `A..B` (`None` ends: from the first, to the last).
+    pub frames: (Option<usize>, Option<usize>),
+    /// Colours.
+    pub theme: Theme,
+    /// The camera; `None`: the seed's view framing the platform.
+    pub camera: Option<OrbitCamera>,
+    /// Put the leg-length plot beside the 3D view.
+    pub composite: bool,
+    /// What to draw beyond the platform.
+    pub overlays: Overlays,
+}
+
+/// What an export did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VideoReport {
+    /// Frames written.
+    pub frames: usize,
+    /// Wall time, seconds.
+    pub seconds: f64,
+    /// The GPU adapter in words.
+    pub adapter: String,
+}
+
+impl VideoRequest {
+    /// Frame times and rate: the trajectory's samples, or a new rate over its duration.
+    pub fn times(&self, scenario: &Scenario) -> Result<(Vec<f64>, f64)> {
+        let sampling = scenario.motion.sampling;
+        let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
+        let fps = self.fps.unwrap_or(native_fps);
+        if !(fps.is_finite() && fps > 0.0 && fps <= 1000.0) {
+            bail!("the frame rate must be between 0 and 1000 frames per second, got {fps}");
+        }
+        let times = match self.fps {
+            None => sampling.times().collect(),
+            Some(_) => {
+                let n = (sampling.duration() * fps).floor() as usize + 1;
+                (0..n).map(|k| sampling.start() + k as f64 / fps).collect()
+            }
+        };
+        Ok((times, fps))
+    }
+
+    /// The frame indices to write, checked against the number of frames.
+    pub fn range(&self, count: usize) -> Result<Range<usize>> {
+        let (a, b) = (self.frames.0.unwrap_or(0), self.frames.1.unwrap_or(count));
+        if a >= b || b > count {
+            bail!(
+                "frames {a}..{b} is not a non-empty range within the {count} frames (0..{count})"
+            );
+        }
+        Ok(a..b)
+    }
+
+    /// How many frames the export writes.
+    pub fn frame_count(&self, scenario: &Scenario) -> Result<usize> {
+        let (times, _) = self.times(scenario)?;
+        Ok(self.range(times.len())?.len())
+    }
+}
+
+/// Render and encode `request`, counting frames on `progress`; `stop` cancels (then
+/// nothing is written).
+pub fn export_video(
+    scenario: &Scenario,
+    request: &VideoRequest,
+    progress: &ProgressBar,
+    stop: &AtomicBool,
+) -> Result<VideoReport> {
+    let (times, fps) = request.times(scenario)?;
+    let range = request.range(times.len())?;
+    let target = Target::from_path(&request.out);
+    if matches!(target, Target::Mp4(_)) {
+        encode::check_ffmpeg()?;
+    }
+    if let Some(c) = &request.camera
+        && !(c.distance.is_finite() && c.distance > 0.0)
+    {
+        bail!("the camera distance must be positive, got {}", c.distance);
+    }
+    let (width, height) = request.size;
+    let job = FrameJob {
+        times,
+        width,
+        height,
+        theme: request.theme,
+        camera: request.camera.unwrap_or_else(|| default_camera(scenario)),
+        composite: request.composite,
+        overlays: request.overlays,
+    };
+    let mut source = FrameSource::new(scenario, &job)?;
+    progress.set_length(range.len() as u64);
+    let started = Instant::now();
+    encode::export(&mut source, range.clone(), fps, &target, progress, stop)?;
+    Ok(VideoReport {
+        frames: range.len(),
+        seconds: started.elapsed().as_secs_f64(),
+        adapter: source.adapter(),
+    })
+}
