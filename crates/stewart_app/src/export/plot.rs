@@ -250,6 +250,30 @@ fn escape(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
+/// The scenario's leg-length plot in the format `path` ends in: `.svg` (text stays
+/// text), `.pdf` (vector) or `.png` (300 dpi).
+pub fn plot_file(
+    scenario: &stewart_kinematics::Scenario,
+    path: &std::path::Path,
+) -> anyhow::Result<Vec<u8>> {
+    let (_, text) = scenario_svg(scenario);
+    match path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .as_deref()
+    {
+        Some("svg") => Ok(text.into_bytes()),
+        Some("pdf") => super::vector::pdf(&text),
+        // 3.125 × 96 dpi = 300 dpi.
+        Some("png") => super::vector::png(&text, 3.125),
+        _ => anyhow::bail!(
+            "`{}`: the plot file must end in .svg, .pdf or .png",
+            path.display()
+        ),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -282,29 +306,5 @@ mod tests {
         assert!(text.contains("stroke-dasharray") && text.contains("Lmax = 1.2 m"));
         assert!(text.contains("a &lt; b"));
         assert!(text.contains(r#"class="marker""#));
-    }
-}
-
-/// The scenario's leg-length plot in the format `path` ends in: `.svg` (text stays
-/// text), `.pdf` (vector) or `.png` (300 dpi).
-pub fn plot_file(
-    scenario: &stewart_kinematics::Scenario,
-    path: &std::path::Path,
-) -> anyhow::Result<Vec<u8>> {
-    let (_, text) = scenario_svg(scenario);
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
-        Some("svg") => Ok(text.into_bytes()),
-        Some("pdf") => super::vector::pdf(&text),
-        // 3.125 × 96 dpi = 300 dpi.
-        Some("png") => super::vector::png(&text, 3.125),
-        _ => anyhow::bail!(
-            "`{}`: the plot file must end in .svg, .pdf or .png",
-            path.display()
-        ),
     }
 }
