@@ -75,6 +75,21 @@ impl OrbitCamera {
         self.distance = (self.distance * factor).clamp(1e-3, 1e4);
     }
 
+    /// Zoom by `factor` toward the point under the cursor: `ndc` is the cursor in
+    /// normalised device coordinates (−1..1, y up) of a view `aspect` = width / height
+    /// wide. The point of the target's view plane under the cursor stays under it.
+    pub fn zoom_toward(&mut self, factor: f32, ndc: glam::Vec2, aspect: f32) {
+        let before = self.distance;
+        self.zoom(factor);
+        let applied = self.distance / before;
+        let half_h = before * (FOV_Y_DEG.to_radians() * 0.5).tan();
+        let half_w = half_h * aspect;
+        self.pan(
+            ndc.x * half_w * (1.0 - applied),
+            ndc.y * half_h * (1.0 - applied),
+        );
+    }
+
     /// Shift the target in the view plane by `right` and `up`, in metres.
     pub fn pan(&mut self, right: f32, up: f32) {
         let forward = -self.direction();
@@ -87,6 +102,31 @@ impl OrbitCamera {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn zooming_keeps_the_point_under_the_cursor() {
+        let mut c = OrbitCamera::seed_view(Vec3::new(0.0, 0.0, 0.4), 1.0);
+        let aspect = 16.0 / 9.0;
+        let cursor = glam::Vec2::new(0.5, -0.3);
+        // The point of the target's view plane under the cursor, found by unprojecting.
+        let inverse = c.view_proj(aspect).inverse();
+        let near = inverse.project_point3(cursor.extend(0.0));
+        let far = inverse.project_point3(cursor.extend(1.0));
+        let normal = c.direction();
+        let s = (c.target - near).dot(normal) / (far - near).dot(normal);
+        let point = near + (far - near) * s;
+        for factor in [0.5, 0.9, 1.3] {
+            let mut z = c;
+            z.zoom_toward(factor, cursor, aspect);
+            let seen = z.view_proj(aspect).project_point3(point);
+            assert!((seen.truncate() - cursor).length() < 1e-4, "{factor}: {seen}");
+            assert!((z.distance - c.distance * factor).abs() < 1e-5);
+        }
+        // At the centre of the view zooming does not move the target.
+        let target = c.target;
+        c.zoom_toward(0.5, glam::Vec2::ZERO, aspect);
+        assert!((c.target - target).length() < 1e-6);
+    }
 
     #[test]
     fn azimuth_follows_matlab() {
