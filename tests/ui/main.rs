@@ -4,8 +4,8 @@
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use stewart_app::viewer::panels::viewer_ui;
 use stewart_app::viewer::state::{MotionMode, ViewerState};
-use stewart_app::viewer::ui::viewer_ui;
 use stewart_kinematics::Scenario;
 
 fn harness(scenario: &str) -> Harness<'static, ViewerState> {
@@ -69,7 +69,7 @@ fn the_diagnostics_say_when_the_geometry_is_singular() {
     );
     let h = harness("paired");
     assert!(
-        h.query_by_label_contains("architecturally singular")
+        h.query_by_label_contains("This geometry is architecturally singular")
             .is_none()
     );
     assert!(
@@ -95,12 +95,12 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
     assert_eq!(h.state().scenario.geometry.stroke().max, Some(1.30));
     assert!(
         h.query_by_label_contains(
-            "Not applied: `leg_min` (0.55 m) must be less than `leg_max` (0.5 m)"
+            "Not applied: `geometry.leg_max` = 0.5 refused: `leg_min` (0.55 m) must be less than `leg_max` (0.5 m)"
         )
         .is_some()
     );
     // The seed's staggered layout makes the geometry architecturally singular: the banner says so.
-    h.get_by_label("Staggered 30°").click();
+    h.get_by_label("Staggered (seed)").click();
     h.run();
     h.run();
     assert!(

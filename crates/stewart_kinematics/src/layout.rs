@@ -75,6 +75,27 @@ impl Layout {
         }
     }
 
+    /// The named layout these joint angles follow (to 1e-9°), if any.
+    pub fn recognise(base: &[Angle; 6], platform: &[Angle; 6]) -> Option<Layout> {
+        let (b0, p0) = (base[0].degrees(), platform[0].degrees());
+        let candidates = [
+            Layout::Staggered {
+                offset_deg: p0 - b0,
+            },
+            Layout::Paired {
+                base_separation_deg: 2.0 * b0,
+                platform_separation_deg: 2.0 * (60.0 - p0),
+            },
+        ];
+        let same = |a: &[f64; 6], b: &[Angle; 6]| {
+            a.iter().zip(b).all(|(x, y)| (x - y.degrees()).abs() < 1e-9)
+        };
+        candidates.into_iter().find(|c| {
+            let (cb, cp) = c.angles_deg();
+            same(&cb, base) && same(&cp, platform)
+        })
+    }
+
     /// Base and platform joint angles as [`Angle`]s.
     pub fn angles(&self) -> ([Angle; 6], [Angle; 6]) {
         let (b, p) = self.angles_deg();
@@ -85,6 +106,29 @@ impl Layout {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn layouts_are_recognised_from_their_angles() {
+        for layout in [
+            Layout::seed(),
+            Layout::paired(20.0),
+            Layout::Paired {
+                base_separation_deg: 12.0,
+                platform_separation_deg: 30.0,
+            },
+        ] {
+            let (b, p) = layout.angles();
+            let found = Layout::recognise(&b, &p).unwrap_or_else(|| panic!("{layout:?}"));
+            let (fb, fp) = found.angles_deg();
+            let (lb, lp) = layout.angles_deg();
+            for k in 0..6 {
+                assert!((fb[k] - lb[k]).abs() < 1e-9 && (fp[k] - lp[k]).abs() < 1e-9);
+            }
+        }
+        let (mut b, p) = Layout::seed().angles();
+        b[3] = Angle::from_degrees(185.0);
+        assert_eq!(Layout::recognise(&b, &p), None);
+    }
 
     #[test]
     fn seed_layout_matches_the_article() {

@@ -119,7 +119,10 @@ mod tests {
             let mut z = c;
             z.zoom_toward(factor, cursor, aspect);
             let seen = z.view_proj(aspect).project_point3(point);
-            assert!((seen.truncate() - cursor).length() < 1e-4, "{factor}: {seen}");
+            assert!(
+                (seen.truncate() - cursor).length() < 1e-4,
+                "{factor}: {seen}"
+            );
             assert!((z.distance - c.distance * factor).abs() < 1e-5);
         }
         // At the centre of the view zooming does not move the target.

@@ -14,8 +14,8 @@ use winit::event::WindowEvent;
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::{Window, WindowId};
 
+use super::panels::viewer_ui;
 use super::state::ViewerState;
-use super::ui::viewer_ui;
 
 /// How the viewer runs.
 #[derive(Clone, Debug, Default)]
@@ -233,7 +233,7 @@ impl App {
     }
 
     fn busy(&self) -> bool {
-        self.state.playing || (self.options.screenshot.is_some() && self.error.is_none())
+        self.state.animating() || (self.options.screenshot.is_some() && self.error.is_none())
     }
 }
 

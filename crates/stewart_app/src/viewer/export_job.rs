@@ -1,0 +1,147 @@
+//! Exports started from the viewer, run on their own thread so the window stays live:
+//! progress is read from a shared counter, cancel sets a flag the exporter checks.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::thread::JoinHandle;
+use std::time::Instant;
+
+use anyhow::Result;
+use indicatif::{ProgressBar, ProgressDrawTarget};
+use stewart_kinematics::Scenario;
+
+use crate::export::plot::plot_file;
+use crate::export::tables::{legs_csv, trajectory_table};
+use crate::export::video::{VideoRequest, export_video};
+use crate::output::write_atomically;
+
+/// What to export.
+#[derive(Clone, Debug)]
+pub enum ExportWork {
+    /// Frames, a GIF or an MP4.
+    Video(Box<VideoRequest>),
+    /// The leg-length plot (SVG, PDF or PNG by extension).
+    Plot(PathBuf),
+    /// Poses and leg lengths along the trajectory, CSV.
+    Csv(PathBuf),
+}
+
+/// An export running (or finished) on its own thread.
+pub struct ExportJob {
+    handle: Option<JoinHandle<Result<String>>>,
+    progress: ProgressBar,
+    stop: Arc<AtomicBool>,
+    started: Instant,
+}
+
+impl ExportJob {
+    /// Start `work` on a copy of `scenario`.
+    pub fn start(scenario: &Scenario, work: ExportWork) -> Self {
+        let scenario = scenario.clone();
+        let progress = ProgressBar::with_draw_target(Some(1), ProgressDrawTarget::hidden());
+        let stop = Arc::new(AtomicBool::new(false));
+        let (bar, flag) = (progress.clone(), Arc::clone(&stop));
+        let handle = std::thread::spawn(move || run(&scenario, &work, &bar, &flag));
+        Self {
+            handle: Some(handle),
+            progress,
+            stop,
+            started: Instant::now(),
+        }
+    }
+
+    /// Done so far, 0 to 1.
+    pub fn fraction(&self) -> f32 {
+        let len = self.progress.length().unwrap_or(1).max(1);
+        self.progress.position() as f32 / len as f32
+    }
+
+    /// Progress in words: frames done, rate and time left.
+    pub fn describe(&self) -> String {
+        let (done, len) = (
+            self.progress.position(),
+            self.progress.length().unwrap_or(1),
+        );
+        let seconds = self.started.elapsed().as_secs_f64();
+        let rate = done as f64 / seconds.max(1e-3);
+        if len <= 1 {
+            return format!("working… {seconds:.1} s");
+        }
+        let left = (len - done) as f64 / rate.max(1e-9);
+        format!("{done}/{len} frames, {rate:.1} frames/s, {left:.0} s left")
+    }
+
+    /// Ask the export to stop; it then removes what it staged and reports the cancellation.
+    pub fn cancel(&self) {
+        self.stop.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether cancel was asked for.
+    pub fn cancelling(&self) -> bool {
+        self.stop.load(Ordering::Relaxed)
+    }
+
+    /// The outcome once the thread has finished: a sentence saying what was written, or
+    /// why nothing was.
+    pub fn poll(&mut self) -> Option<Result<String, String>> {
+        if !self.handle.as_ref().is_some_and(JoinHandle::is_finished) {
+            return None;
+        }
+        let handle = self.handle.take()?;
+        Some(match handle.join() {
+            Ok(Ok(message)) => Ok(message),
+            Ok(Err(e)) if self.cancelling() => {
+                Err(format!("Cancelled: nothing was written ({e:#})."))
+            }
+            Ok(Err(e)) => Err(format!("{e:#}")),
+            Err(_) => Err("the export thread panicked".to_owned()),
+        })
+    }
+
+    /// Wait for the end (tests and shutdown).
+    pub fn wait(&mut self) -> Result<String, String> {
+        loop {
+            if let Some(outcome) = self.poll() {
+                return outcome;
+            }
+            if self.handle.is_none() {
+                return Err("already finished".to_owned());
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+    }
+}
+
+fn run(
+    scenario: &Scenario,
+    work: &ExportWork,
+    progress: &ProgressBar,
+    stop: &AtomicBool,
+) -> Result<String> {
+    match work {
+        ExportWork::Video(request) => {
+            let report = export_video(scenario, request, progress, stop)?;
+            Ok(format!(
+                "Wrote {} frames to {} in {:.1} s ({:.1} frames/s).",
+                report.frames,
+                request.out.display(),
+                report.seconds,
+                report.frames as f64 / report.seconds.max(1e-9)
+            ))
+        }
+        ExportWork::Plot(path) => {
+            write_atomically(path, &plot_file(scenario, path)?)?;
+            Ok(format!("Wrote the plot to {}.", path.display()))
+        }
+        ExportWork::Csv(path) => {
+            let csv = legs_csv(&scenario.geometry, &trajectory_table(scenario));
+            write_atomically(path, csv.as_bytes())?;
+            Ok(format!(
+                "Wrote {} poses and leg lengths to {}.",
+                scenario.motion.sampling.len(),
+                path.display()
+            ))
+        }
+    }
+}

@@ -1,0 +1,132 @@
+//! Export: video, frames, the plot and the CSV, written on a background thread with a
+//! progress bar and a cancel button.
+
+use std::path::PathBuf;
+
+use stewart_render::{Overlays, Theme};
+
+use super::widgets;
+use crate::export::video::VideoRequest;
+use crate::viewer::export_job::{ExportJob, ExportWork};
+use crate::viewer::state::{ExportKind, ViewerState};
+
+/// Frame sizes offered.
+const SIZES: [(u32, u32); 5] = [
+    (640, 360),
+    (1280, 720),
+    (1920, 1080),
+    (2560, 1440),
+    (3840, 2160),
+];
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    egui::CollapsingHeader::new("Export").show(ui, |ui| {
+        if let Some(job) = &state.export_job {
+            ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
+            ui.label(job.describe());
+            let label = if job.cancelling() {
+                "Cancelling…"
+            } else {
+                "Cancel"
+            };
+            if ui
+                .add_enabled(!job.cancelling(), egui::Button::new(label))
+                .clicked()
+            {
+                job.cancel();
+            }
+            return;
+        }
+        form(ui, state);
+        let path = state.export.path.trim().to_owned();
+        if ui
+            .add_enabled(!path.is_empty(), egui::Button::new("Export"))
+            .clicked()
+        {
+            let work = work(state, PathBuf::from(path));
+            state.export_status = None;
+            state.export_job = Some(ExportJob::start(&state.scenario, work));
+        }
+        widgets::status(ui, &state.export_status);
+    });
+}
+
+fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let name = state.scenario.name.clone();
+    let form = &mut state.export;
+    let before = form.kind;
+    egui::ComboBox::from_label("What")
+        .selected_text(form.kind.label())
+        .show_ui(ui, |ui| {
+            for kind in ExportKind::ALL {
+                ui.selectable_value(&mut form.kind, kind, kind.label());
+            }
+        });
+    if form.kind != before || form.path.is_empty() {
+        let suffix = if form.kind == ExportKind::Frames {
+            "-frames"
+        } else {
+            ""
+        };
+        form.path = format!("{name}{suffix}{}", form.kind.extension());
+    }
+    ui.horizontal(|ui| {
+        let label = ui.label("Output");
+        ui.text_edit_singleline(&mut form.path)
+            .labelled_by(label.id);
+    });
+    if form.kind.is_video() {
+        egui::ComboBox::from_label("Size")
+            .selected_text(format!("{}×{}", form.size.0, form.size.1))
+            .show_ui(ui, |ui| {
+                for size in SIZES {
+                    ui.selectable_value(&mut form.size, size, format!("{}×{}", size.0, size.1));
+                }
+            });
+        ui.add(
+            egui::Slider::new(&mut form.fps, 0.0..=120.0)
+                .text("frame rate (frames/s, 0: one per sample)"),
+        );
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut form.light, "Light theme");
+            ui.checkbox(&mut form.composite, "Plot beside the view");
+        });
+        let frames = request(state, PathBuf::new()).frame_count(&state.scenario);
+        if let Ok(n) = frames {
+            ui.label(egui::RichText::new(format!("{n} frames")).small());
+        }
+    }
+}
+
+fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
+    let form = &state.export;
+    VideoRequest {
+        out,
+        size: form.size,
+        fps: (form.fps > 0.0).then_some(form.fps),
+        frames: (None, None),
+        theme: if form.light {
+            Theme::LIGHT
+        } else {
+            Theme::DARK
+        },
+        camera: Some(state.camera),
+        composite: form.composite,
+        overlays: Overlays {
+            platform_axes: state.platform_axes,
+            path: state.show_path,
+            ..Overlays::default()
+        },
+    }
+}
+
+fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
+    match state.export.kind {
+        ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames => {
+            ExportWork::Video(Box::new(request(state, path)))
+        }
+        ExportKind::PlotSvg | ExportKind::PlotPdf | ExportKind::PlotPng => ExportWork::Plot(path),
+        ExportKind::Csv => ExportWork::Csv(path),
+    }
+}

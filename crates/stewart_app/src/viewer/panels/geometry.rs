@@ -1,0 +1,76 @@
+//! Geometry: radii, home height, stroke, layout with its separation angles, every joint
+//! angle and the pivot.
+
+use stewart_kinematics::Layout;
+use stewart_kinematics::settings::{GeometryKey, Group, Target};
+
+use super::widgets::{edit_error, setting_slider};
+use crate::viewer::state::ViewerState;
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    egui::CollapsingHeader::new("Geometry")
+        .default_open(false)
+        .show(ui, |ui| {
+            for key in [
+                GeometryKey::BaseRadius,
+                GeometryKey::PlatformRadius,
+                GeometryKey::HomeHeight,
+                GeometryKey::LegMin,
+                GeometryKey::LegMax,
+            ] {
+                setting_slider(ui, state, Target::Geometry(key));
+            }
+            layout(ui, state);
+            egui::CollapsingHeader::new("Joint angles").show(ui, |ui| {
+                for i in 0..6 {
+                    setting_slider(ui, state, Target::Geometry(GeometryKey::BaseAngle(i)));
+                }
+                for i in 0..6 {
+                    setting_slider(ui, state, Target::Geometry(GeometryKey::PlatformAngle(i)));
+                }
+            });
+            egui::CollapsingHeader::new("Pivot (rotation centre, platform frame)").show(ui, |ui| {
+                for i in 0..3 {
+                    setting_slider(ui, state, Target::Geometry(GeometryKey::Pivot(i)));
+                }
+            });
+            edit_error(ui, state, &[Group::Geometry]);
+        });
+}
+
+/// Named layouts: choosing one, or moving its angle, rewrites all twelve joint angles.
+fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
+    ui.label("Layout (rewrites the joint angles):");
+    let mut layout = state.layout;
+    ui.horizontal(|ui| {
+        let staggered = matches!(layout, Layout::Staggered { .. });
+        if ui.selectable_label(staggered, "Staggered (seed)").clicked() {
+            layout = Layout::seed();
+        }
+        if ui.selectable_label(!staggered, "Paired").clicked() {
+            layout = Layout::paired(20.0);
+        }
+    });
+    match &mut layout {
+        Layout::Staggered { offset_deg } => {
+            ui.add(egui::Slider::new(offset_deg, 1.0..=59.0).text("platform offset (°)"));
+        }
+        Layout::Paired {
+            base_separation_deg,
+            platform_separation_deg,
+        } => {
+            ui.add(egui::Slider::new(base_separation_deg, 1.0..=110.0).text("base separation (°)"));
+            ui.add(
+                egui::Slider::new(platform_separation_deg, 1.0..=110.0)
+                    .text("platform separation (°)"),
+            );
+        }
+    }
+    if layout != state.layout {
+        state.layout = layout;
+        let mut params = state.scenario.geometry.params().clone();
+        (params.base_angles, params.platform_angles) = layout.angles();
+        state.set_geometry(params);
+    }
+}

@@ -1,0 +1,100 @@
+//! The panels: each a function of the viewer state, laid out by [`viewer_ui`].
+
+mod diagnostics;
+mod export;
+mod geometry;
+mod legs;
+mod motion;
+mod playback;
+mod plot;
+mod scenario;
+mod view;
+mod widgets;
+
+use super::state::{MotionMode, ViewerState};
+
+/// Text sizes are multiplied by this in presentation mode.
+const PRESENTATION_TEXT_SCALE: f32 = 1.5;
+
+/// The whole window.
+pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
+    style(ui.ctx(), state);
+    shortcuts(ui, state);
+    state.poll_export();
+    if !state.presentation {
+        egui::Panel::left("controls")
+            .resizable(true)
+            .default_size(320.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    scenario::show(ui, state);
+                    ui.separator();
+                    geometry::show(ui, state);
+                    ui.separator();
+                    motion::show(ui, state);
+                    ui.separator();
+                    playback::show(ui, state);
+                    ui.separator();
+                    legs::show(ui, state);
+                    ui.separator();
+                    diagnostics::show(ui, state);
+                    ui.separator();
+                    export::show(ui, state);
+                });
+            });
+    }
+    egui::Panel::bottom("plot")
+        .resizable(true)
+        .default_size(if state.presentation { 280.0 } else { 220.0 })
+        .show(ui, |ui| plot::show(ui, state));
+    egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
+}
+
+/// Light or dark visuals, and large text in presentation mode.
+fn style(ctx: &egui::Context, state: &ViewerState) {
+    let light = state.light_theme || state.presentation;
+    let visuals = if light {
+        egui::Visuals::light()
+    } else {
+        egui::Visuals::dark()
+    };
+    let mut style = egui::Style {
+        visuals,
+        ..egui::Style::default()
+    };
+    if state.presentation {
+        for font in style.text_styles.values_mut() {
+            font.size *= PRESENTATION_TEXT_SCALE;
+        }
+    }
+    if *ctx.global_style() != style {
+        ctx.set_global_style(style);
+    }
+}
+
+/// Space: play/pause; ←/→: step; Home: back to the start; P: presentation mode (Esc leaves).
+fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
+    if ui.ctx().text_edit_focused() {
+        return;
+    }
+    let pressed = |key| ui.input(|i| i.key_pressed(key));
+    if pressed(egui::Key::Space) {
+        state.playing = !state.playing;
+        state.mode = MotionMode::Trajectory;
+    }
+    if pressed(egui::Key::ArrowLeft) {
+        state.step(-1.0);
+    }
+    if pressed(egui::Key::ArrowRight) {
+        state.step(1.0);
+    }
+    if pressed(egui::Key::Home) {
+        state.time = 0.0;
+    }
+    if pressed(egui::Key::P) || pressed(egui::Key::F5) {
+        state.presentation = !state.presentation;
+    }
+    if pressed(egui::Key::Escape) {
+        state.presentation = false;
+    }
+}

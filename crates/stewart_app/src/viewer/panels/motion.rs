@@ -1,0 +1,230 @@
+//! Motion: the manual pose's six sliders, or the trajectory's kind, sampling and every
+//! number of that kind (sinusoid channels, shape parameters, keyframes).
+
+use stewart_kinematics::Pose;
+use stewart_kinematics::settings::{
+    ChannelKey, Group, SamplingKey, ShapeKey, Target, TrajectoryChoice, Unit,
+};
+use stewart_kinematics::trajectory::{Interpolation, Keyframe, Keyframes, Trajectory, Wave};
+
+use super::widgets::{edit_error, setting_slider};
+use crate::viewer::state::{MotionMode, ViewerState};
+
+/// The manual pose's sliders: name, unit and reach either side of home (z: of the home
+/// height), in the pose's coordinate order x, y, z, roll, pitch, yaw.
+const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
+    ("x", Unit::Metre, 0.3),
+    ("y", Unit::Metre, 0.3),
+    ("z", Unit::Metre, 0.3),
+    ("roll", Unit::Degree, 30.0),
+    ("pitch", Unit::Degree, 30.0),
+    ("yaw", Unit::Degree, 45.0),
+];
+
+/// Sinusoid channel names, in the order of [`Target::Channel`] indices.
+const CHANNELS: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    ui.heading("Motion");
+    ui.horizontal(|ui| {
+        ui.selectable_value(&mut state.mode, MotionMode::Trajectory, "Trajectory");
+        ui.selectable_value(&mut state.mode, MotionMode::Manual, "Manual pose");
+    });
+    match state.mode {
+        MotionMode::Manual => manual(ui, state),
+        MotionMode::Trajectory => trajectory(ui, state),
+    }
+    edit_error(ui, state, &[Group::Trajectory]);
+}
+
+fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let home = state.scenario.geometry.home_pose().to_coordinates();
+    let mut c = state.manual.to_coordinates();
+    for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
+        let angular = unit == Unit::Degree;
+        let mut value = if angular { c[k].to_degrees() } else { c[k] };
+        let centre = if angular {
+            home[k].to_degrees()
+        } else {
+            home[k]
+        };
+        let label = format!("{name} ({})", unit.symbol());
+        if ui
+            .add(egui::Slider::new(&mut value, centre - reach..=centre + reach).text(label))
+            .changed()
+        {
+            c[k] = if angular { value.to_radians() } else { value };
+        }
+    }
+    state.manual = Pose::from_coordinates(c);
+    if ui.button("Home").clicked() {
+        state.manual = state.scenario.geometry.home_pose();
+    }
+}
+
+fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let current = TrajectoryChoice::of(&state.scenario.motion.trajectory);
+    egui::ComboBox::from_label("Kind")
+        .selected_text(current.label())
+        .show_ui(ui, |ui| {
+            for choice in TrajectoryChoice::ALL {
+                if ui
+                    .selectable_label(choice == current, choice.label())
+                    .clicked()
+                {
+                    state.switch_trajectory(choice);
+                }
+            }
+        });
+    for key in [
+        SamplingKey::Duration,
+        SamplingKey::Samples,
+        SamplingKey::Start,
+    ] {
+        setting_slider(ui, state, Target::Sampling(key));
+    }
+    match &state.scenario.motion.trajectory {
+        Trajectory::Sinusoid(_) => sinusoid(ui, state),
+        Trajectory::Keyframes(_) => keyframes(ui, state),
+        _ => {
+            for key in [
+                ShapeKey::Radius,
+                ShapeKey::AmplitudeX,
+                ShapeKey::AmplitudeY,
+                ShapeKey::Frequency,
+                ShapeKey::Z,
+                ShapeKey::ZStart,
+                ShapeKey::ZEnd,
+                ShapeKey::Tilt,
+            ] {
+                setting_slider(ui, state, Target::Shape(key));
+            }
+        }
+    }
+}
+
+fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
+    for (i, name) in CHANNELS.into_iter().enumerate() {
+        egui::CollapsingHeader::new(format!("{name} channel"))
+            .default_open(i == 0)
+            .show(ui, |ui| {
+                for key in [
+                    ChannelKey::Amplitude,
+                    ChannelKey::Frequency,
+                    ChannelKey::Phase,
+                    ChannelKey::Offset,
+                ] {
+                    setting_slider(ui, state, Target::Channel(i, key));
+                }
+                if let Trajectory::Sinusoid(s) = &mut state.scenario.motion.trajectory {
+                    let channel = match i {
+                        0 => &mut s.x,
+                        1 => &mut s.y,
+                        2 => &mut s.z,
+                        3 => &mut s.roll_deg,
+                        4 => &mut s.pitch_deg,
+                        _ => &mut s.yaw_deg,
+                    };
+                    let before = channel.wave;
+                    ui.horizontal(|ui| {
+                        ui.label(format!("{name} wave"));
+                        ui.selectable_value(&mut channel.wave, Wave::Sin, "sin");
+                        ui.selectable_value(&mut channel.wave, Wave::Cos, "cos");
+                    });
+                    if channel.wave != before {
+                        state.resample();
+                    }
+                }
+            });
+    }
+}
+
+/// The keys as an editable table: time and pose of each, the interpolation, add and
+/// remove. An edit that breaks the keys (times out of order) is refused with its reason.
+fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let Trajectory::Keyframes(k) = &state.scenario.motion.trajectory else {
+        return;
+    };
+    let mut keys: Vec<Keyframe> = k.keys().to_vec();
+    let mut interpolation = k.interpolation();
+    let mut changed = false;
+    ui.horizontal(|ui| {
+        ui.label("Interpolation");
+        for (value, label) in [
+            (Interpolation::Linear, "linear"),
+            (Interpolation::Smoothstep, "smoothstep"),
+            (Interpolation::Cubic, "cubic spline"),
+        ] {
+            changed |= ui
+                .selectable_value(&mut interpolation, value, label)
+                .changed();
+        }
+    });
+    egui::Grid::new("keyframes").striped(true).show(ui, |ui| {
+        for head in [
+            "t (s)",
+            "x (m)",
+            "y (m)",
+            "z (m)",
+            "roll (°)",
+            "pitch (°)",
+            "yaw (°)",
+        ] {
+            ui.label(head);
+        }
+        ui.end_row();
+        for key in &mut keys {
+            let mut c = key.pose.to_coordinates();
+            changed |= ui
+                .add(egui::DragValue::new(&mut key.t).speed(0.05))
+                .changed();
+            for (i, value) in c.iter_mut().enumerate() {
+                if i < 3 {
+                    changed |= ui
+                        .add(egui::DragValue::new(value).speed(0.002).max_decimals(4))
+                        .changed();
+                } else {
+                    let mut deg = value.to_degrees();
+                    if ui
+                        .add(egui::DragValue::new(&mut deg).speed(0.1).max_decimals(2))
+                        .changed()
+                    {
+                        *value = deg.to_radians();
+                        changed = true;
+                    }
+                }
+            }
+            key.pose = Pose::from_coordinates(c);
+            ui.end_row();
+        }
+    });
+    ui.horizontal(|ui| {
+        if ui.button("Add key").clicked()
+            && let Some(last) = keys.last().copied()
+        {
+            keys.push(Keyframe {
+                t: last.t + 1.0,
+                ..last
+            });
+            changed = true;
+        }
+        if ui
+            .add_enabled(keys.len() > 1, egui::Button::new("Remove last key"))
+            .clicked()
+        {
+            keys.pop();
+            changed = true;
+        }
+    });
+    if changed {
+        match Keyframes::new(keys, interpolation) {
+            Ok(k) => {
+                state.scenario.motion.trajectory = Trajectory::Keyframes(k);
+                state.edit_error = None;
+                state.resample();
+            }
+            Err(e) => state.edit_error = Some((Group::Trajectory, e.to_string())),
+        }
+    }
+}

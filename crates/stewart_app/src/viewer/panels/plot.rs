@@ -1,0 +1,69 @@
+//! The live leg-length plot: the whole trajectory with a moving time marker, or in
+//! manual mode the rolling history of the last seconds.
+
+use egui::Color32;
+use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
+
+use crate::export::plot::LEG_COLOURS;
+use crate::viewer::history::History;
+use crate::viewer::state::{MotionMode, ViewerState};
+
+/// Leg `i`'s colour, as in exported plots.
+pub fn leg_colour(i: usize) -> Color32 {
+    Color32::from_hex(LEG_COLOURS[i]).unwrap_or(Color32::GRAY)
+}
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
+    let stroke = state.scenario.geometry.stroke();
+    let manual = state.mode == MotionMode::Manual;
+    let x_label = if manual {
+        "seconds ago (manual pose history)"
+    } else {
+        "time (s)"
+    };
+    let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
+        .legend(Legend::default())
+        .x_axis_label(x_label)
+        .y_axis_label("leg length (m)");
+    if manual {
+        plot = plot.include_x(-History::WINDOW).include_x(0.0);
+    }
+    plot.show(ui, |plot| {
+        for leg in 0..6 {
+            let points: PlotPoints = if manual {
+                state
+                    .history
+                    .entries()
+                    .map(|(t, l)| [t - state.clock, l[leg]])
+                    .collect()
+            } else {
+                let (times, lengths) = &state.samples;
+                times
+                    .iter()
+                    .zip(lengths)
+                    .map(|(t, l)| [*t, l[leg]])
+                    .collect()
+            };
+            plot.line(Line::new(format!("L{}", leg + 1), points).color(leg_colour(leg)));
+        }
+        for (name, limit) in [("min", stroke.min), ("max", stroke.max)] {
+            if let Some(v) = limit {
+                plot.hline(
+                    HLine::new(format!("L{name}"), v)
+                        .style(LineStyle::dashed_loose())
+                        .color(Color32::GRAY),
+                );
+            }
+        }
+        if !manual {
+            let marker = if state.light_theme || state.presentation {
+                Color32::BLACK
+            } else {
+                Color32::WHITE
+            };
+            let now = state.scenario.motion.sampling.start() + state.time;
+            plot.vline(VLine::new("now", now).color(marker));
+        }
+    });
+}

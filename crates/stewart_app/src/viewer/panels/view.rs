@@ -1,0 +1,102 @@
+//! The 3D view: standard view buttons, overlays, mouse orbit / pan / zoom toward the
+//! cursor, and the scene drawn by the renderer through a paint callback.
+
+use egui::Color32;
+use stewart_render::{DrawList, Overlays};
+
+use crate::viewer::state::{MotionMode, ViewerState};
+use crate::viewer::view3d::SceneCallback;
+
+/// Standard views: label, azimuth and elevation (MATLAB's `view(az, el)`).
+const VIEWS: [(&str, f32, f32); 4] = [
+    ("Iso", 135.0, 20.0),
+    ("Front", 0.0, 0.0),
+    ("Side", 90.0, 0.0),
+    ("Top", 0.0, 89.5),
+];
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    if state.presentation {
+        ui.label(
+            egui::RichText::new("Presentation: P or Esc to leave")
+                .small()
+                .weak(),
+        );
+    } else {
+        ui.horizontal(|ui| {
+            for (label, az, el) in VIEWS {
+                if ui.button(label).clicked() {
+                    state.look_from(az, el);
+                }
+            }
+            if ui.button("Reset view").clicked() {
+                state.look_from(VIEWS[0].1, VIEWS[0].2);
+            }
+            ui.checkbox(&mut state.show_path, "Path");
+            ui.checkbox(&mut state.platform_axes, "Platform axes");
+        });
+    }
+    let rect = ui.available_rect_before_wrap();
+    let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
+    camera_input(ui, state, &response, rect);
+    let theme = state.theme();
+    let bg = theme.background.map(|c| (c * 255.0) as u8);
+    ui.painter()
+        .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
+    let path = if state.show_path && state.mode == MotionMode::Trajectory {
+        state.path_until_now()
+    } else {
+        Vec::new()
+    };
+    let frame = state.scenario.geometry.scene_frame(&state.pose(), path);
+    let overlays = Overlays {
+        platform_axes: state.platform_axes,
+        path: state.show_path,
+        ..Overlays::default()
+    };
+    let list = DrawList::build(&frame, &theme, &overlays);
+    let aspect = rect.width() / rect.height().max(1.0);
+    ui.painter().add(egui_wgpu::Callback::new_paint_callback(
+        rect,
+        SceneCallback {
+            list,
+            camera: state.camera,
+            theme,
+            aspect,
+        },
+    ));
+}
+
+/// Left drag orbits, right or middle drag pans, the wheel zooms toward the cursor.
+fn camera_input(
+    ui: &egui::Ui,
+    state: &mut ViewerState,
+    response: &egui::Response,
+    rect: egui::Rect,
+) {
+    if response.dragged_by(egui::PointerButton::Primary) {
+        let d = response.drag_delta();
+        state.camera.orbit(-0.4 * d.x, 0.4 * d.y);
+    }
+    if response.dragged_by(egui::PointerButton::Secondary)
+        || response.dragged_by(egui::PointerButton::Middle)
+    {
+        let d = response.drag_delta();
+        let scale = state.camera.distance * 0.0015;
+        state.camera.pan(-d.x * scale, d.y * scale);
+    }
+    if let Some(pointer) = response.hover_pos() {
+        let scroll = ui.input(|i| i.smooth_scroll_delta.y);
+        if scroll != 0.0 {
+            let ndc = glam::Vec2::new(
+                2.0 * (pointer.x - rect.left()) / rect.width().max(1.0) - 1.0,
+                1.0 - 2.0 * (pointer.y - rect.top()) / rect.height().max(1.0),
+            );
+            let aspect = rect.width() / rect.height().max(1.0);
+            state
+                .camera
+                .zoom_toward((-scroll * 0.002).exp(), ndc, aspect);
+        }
+    }
+}

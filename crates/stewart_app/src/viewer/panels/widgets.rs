@@ -1,0 +1,104 @@
+//! Widgets shared by the panels: a slider for a declared setting, coloured messages.
+
+use egui::{Color32, RichText};
+use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
+
+use crate::viewer::state::{Status, ViewerState};
+
+/// Red for refusals and errors.
+pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
+/// Green for success.
+pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
+
+/// A slider for the setting of `target`, labelled with its unit; optional settings get a
+/// checkbox that switches them on (at their slider's start) and off. Right-click resets
+/// to the default. Edits go through the setting's validation.
+pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target) {
+    let setting = settings::of(target);
+    if !setting.applies(&state.scenario) {
+        return;
+    }
+    let current = setting.get(&state.scenario);
+    let mut edit: Option<Option<f64>> = None;
+    ui.horizontal(|ui| {
+        if setting.optional() {
+            let mut on = current.is_some();
+            if ui
+                .checkbox(&mut on, "")
+                .on_hover_text(format!("use a {} limit", setting.label))
+                .changed()
+            {
+                edit = Some(on.then(|| default_on(setting, state)));
+            }
+        }
+        match current {
+            Some(value) => {
+                let mut v = value;
+                let response = ui.add(slider(setting, &mut v));
+                if response.changed() {
+                    edit = Some(Some(v));
+                }
+                response.context_menu(|ui| {
+                    let default = setting.default_for(&state.scenario);
+                    let text = default.map_or_else(
+                        || "Switch off (default)".to_owned(),
+                        |d| format!("Reset to default ({d} {})", setting.unit.symbol()),
+                    );
+                    if ui.button(text).clicked() {
+                        edit = Some(default);
+                        ui.close();
+                    }
+                });
+            }
+            None => {
+                ui.label(format!("{}: off", setting.label_with_unit()));
+            }
+        }
+    });
+    if let Some(value) = edit {
+        state.apply(setting, value);
+    }
+}
+
+/// The value an optional setting takes when switched on.
+fn default_on(setting: &Setting, state: &ViewerState) -> f64 {
+    setting
+        .default_for(&state.scenario)
+        .unwrap_or(*setting.range.end())
+}
+
+fn slider<'a>(setting: &Setting, value: &'a mut f64) -> egui::Slider<'a> {
+    let range = setting.range.clone();
+    let logarithmic = *range.start() > 0.0 && range.end() / range.start() > 1000.0;
+    let s = egui::Slider::new(value, range)
+        .text(setting.label_with_unit())
+        .clamping(egui::SliderClamping::Never)
+        .logarithmic(logarithmic);
+    if setting.unit == Unit::Count {
+        s.integer()
+    } else {
+        s
+    }
+}
+
+/// The outcome of the last action, green or red.
+pub fn status(ui: &mut egui::Ui, status: &Status) {
+    match status {
+        Some(Ok(message)) => {
+            ui.label(RichText::new(message).color(OK));
+        }
+        Some(Err(message)) => {
+            ui.label(RichText::new(message).color(ERROR));
+        }
+        None => {}
+    }
+}
+
+/// Why the last edit in one of `groups` was refused, if it was.
+pub fn edit_error(ui: &mut egui::Ui, state: &ViewerState, groups: &[Group]) {
+    if let Some((group, e)) = &state.edit_error
+        && groups.contains(group)
+    {
+        ui.label(RichText::new(format!("Not applied: {e}")).color(ERROR));
+    }
+}
