@@ -1,6 +1,11 @@
 //! The viewer's panels driven through their accessibility labels (egui_kittest): each
 //! test changes something as a user would and checks the state it edits.
 
+mod export;
+mod files;
+mod modes;
+mod trajectory;
+
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -8,10 +13,17 @@ use stewart_app::viewer::panels::viewer_ui;
 use stewart_app::viewer::state::{MotionMode, ViewerState};
 use stewart_kinematics::Scenario;
 
-fn harness(scenario: &str) -> Harness<'static, ViewerState> {
+/// The viewer on a preset, 1280×800 logical pixels.
+pub fn harness(scenario: &str) -> Harness<'static, ViewerState> {
+    tall_harness(scenario, 800.0)
+}
+
+/// The viewer on a preset in a window `height` logical pixels high (widgets scrolled out
+/// of sight have no accessibility node, so panels low in the list need a tall window).
+pub fn tall_harness(scenario: &str, height: f32) -> Harness<'static, ViewerState> {
     let state = ViewerState::new(Scenario::preset(scenario).unwrap_or_else(|e| panic!("{e}")));
     Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
+        .with_size(egui::vec2(1280.0, height))
         .build_ui_state(viewer_ui, state)
 }
 

@@ -162,7 +162,7 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     egui::Grid::new("keyframes").striped(true).show(ui, |ui| {
-        for head in [
+        let heads = [
             "t (s)",
             "x (m)",
             "y (m)",
@@ -170,26 +170,22 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
             "roll (°)",
             "pitch (°)",
             "yaw (°)",
-        ] {
-            ui.label(head);
-        }
+        ];
+        let columns = heads.map(|head| ui.label(head).id);
         ui.end_row();
         for key in &mut keys {
             let mut c = key.pose.to_coordinates();
-            changed |= ui
-                .add(egui::DragValue::new(&mut key.t).speed(0.05))
-                .changed();
+            let t = ui.add(egui::DragValue::new(&mut key.t).speed(0.05));
+            changed |= t.labelled_by(columns[0]).changed();
             for (i, value) in c.iter_mut().enumerate() {
+                let column = columns[i + 1];
                 if i < 3 {
-                    changed |= ui
-                        .add(egui::DragValue::new(value).speed(0.002).max_decimals(4))
-                        .changed();
+                    let cell = ui.add(egui::DragValue::new(value).speed(0.002).max_decimals(4));
+                    changed |= cell.labelled_by(column).changed();
                 } else {
                     let mut deg = value.to_degrees();
-                    if ui
-                        .add(egui::DragValue::new(&mut deg).speed(0.1).max_decimals(2))
-                        .changed()
-                    {
+                    let cell = ui.add(egui::DragValue::new(&mut deg).speed(0.1).max_decimals(2));
+                    if cell.labelled_by(column).changed() {
                         *value = deg.to_radians();
                         changed = true;
                     }

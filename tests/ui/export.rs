@@ -1,0 +1,110 @@
+//! The Export panel: a background export with progress, and cancel.
+
+use std::time::{Duration, Instant};
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use stewart_app::viewer::state::{ExportKind, ViewerState};
+
+use crate::tall_harness;
+
+/// Tall enough for the Export panel at the bottom of the controls.
+const HEIGHT: f32 = 2400.0;
+
+/// Step the UI until the export ends; the outcome shown.
+fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
+    let started = Instant::now();
+    while h.state().export_job.is_some() {
+        assert!(
+            started.elapsed() < Duration::from_secs(120),
+            "export did not end"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+        h.run();
+    }
+    h.state()
+        .export_status
+        .clone()
+        .unwrap_or_else(|| Err("no outcome".to_owned()))
+}
+
+fn export_to(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::path::Path) {
+    h.get_by_label("Export").click();
+    h.run();
+    h.get_by_role_and_label(Role::ComboBox, "What").click();
+    h.run();
+    h.get_by_label(kind.label()).click();
+    h.run();
+    h.state_mut().export.path = path.display().to_string();
+    h.run();
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+}
+
+#[test]
+fn the_csv_and_a_short_gif_are_written_in_the_background() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("paired", HEIGHT);
+    h.get_by_role_and_label(Role::Slider, "samples")
+        .set_value_accesskit(6.0);
+    h.run();
+    let csv = dir.path().join("legs.csv");
+    export_to(&mut h, ExportKind::Csv, &csv);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome.as_ref().is_ok_and(|m| m.contains("Wrote 6 poses")),
+        "{outcome:?}"
+    );
+    let text = std::fs::read_to_string(&csv).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(text.lines().count(), 7, "{text}");
+    assert!(text.starts_with("t,x,y,z,roll_deg,pitch_deg,yaw_deg,L1"));
+
+    let gif = dir.path().join("short.gif");
+    h.state_mut().export.size = (640, 360);
+    h.state_mut().export.fps = 0.0;
+    h.get_by_role_and_label(Role::ComboBox, "What").click();
+    h.run();
+    h.get_by_label(ExportKind::Gif.label()).click();
+    h.run();
+    h.state_mut().export.path = gif.display().to_string();
+    h.run();
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+    let outcome = finish(&mut h);
+    assert!(
+        outcome.as_ref().is_ok_and(|m| m.contains("Wrote 6 frames")),
+        "{outcome:?}"
+    );
+    let bytes = std::fs::read(&gif).unwrap_or_else(|e| panic!("{e}"));
+    assert!(bytes.starts_with(b"GIF89a"));
+}
+
+#[test]
+fn cancel_stops_an_export_and_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("seed", HEIGHT);
+    let gif = dir.path().join("long.gif");
+    h.state_mut().export.size = (640, 360);
+    h.state_mut().export.fps = 0.0;
+    export_to(&mut h, ExportKind::Gif, &gif);
+    assert!(h.state().export_job.is_some());
+    assert!(
+        h.query_by_label_contains("frames/s").is_some()
+            || h.query_by_label_contains("working").is_some()
+    );
+    h.get_by_label("Cancel").click();
+    h.run();
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_err_and(|m| m.starts_with("Cancelled: nothing was written")),
+        "{outcome:?}"
+    );
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .map(|d| d.count())
+        .into_iter()
+        .collect();
+    assert_eq!(left, vec![0], "files left behind");
+}

@@ -1,0 +1,53 @@
+//! Presentation mode and the manual-mode history.
+
+use egui::accesskit::Role;
+use egui_kittest::kittest::Queryable;
+use stewart_app::viewer::state::MotionMode;
+
+use crate::harness;
+
+#[test]
+fn p_enters_presentation_mode_and_escape_leaves_it() {
+    let mut h = harness("seed");
+    assert!(h.query_by_label("Playback").is_some());
+    h.key_press(egui::Key::P);
+    h.run();
+    assert!(h.state().presentation);
+    // Control panels are hidden, the plot stays, colours are light, text is larger.
+    assert!(h.query_by_label("Playback").is_none());
+    assert!(
+        h.query_by_label("Presentation: P or Esc to leave")
+            .is_some()
+    );
+    assert_eq!(
+        h.state().theme().background,
+        stewart_render::Theme::LIGHT.background
+    );
+    let size = h.ctx.global_style().text_styles[&egui::TextStyle::Body].size;
+    assert!(size > 19.0, "{size}");
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(!h.state().presentation);
+    assert!(h.query_by_label("Playback").is_some());
+}
+
+#[test]
+fn manual_mode_keeps_a_rolling_history_of_the_legs() {
+    let mut h = harness("paired");
+    h.get_by_label("Manual pose").click();
+    h.run();
+    assert_eq!(h.state().mode, MotionMode::Manual);
+    for (k, x) in [0.0, 0.05, 0.1].into_iter().enumerate() {
+        h.get_by_role_and_label(Role::Slider, "x (m)")
+            .set_value_accesskit(x);
+        h.run();
+        h.state_mut().advance(0.5 + k as f64);
+    }
+    let entries: Vec<(f64, [f64; 6])> = h.state().history.entries().copied().collect();
+    assert_eq!(entries.len(), 3);
+    assert_ne!(entries[0].1, entries[2].1);
+    // The history scrolls while recent, then the window goes idle.
+    assert!(h.state().animating());
+    h.state_mut().clock += 20.0;
+    assert!(!h.state().animating());
+}

@@ -1,0 +1,100 @@
+//! The Motion panel's trajectory mode: kind, sampling and the kind's numbers.
+
+use egui::accesskit::Role;
+use egui_kittest::kittest::Queryable;
+use stewart_kinematics::trajectory::Trajectory;
+
+use crate::harness;
+
+#[test]
+fn switching_the_kind_and_moving_its_sliders_changes_the_motion() {
+    let mut h = harness("paired");
+    h.get_by_role_and_label(Role::ComboBox, "Kind").click();
+    h.run();
+    h.get_by_label("Circle").click();
+    h.run();
+    assert!(matches!(
+        h.state().scenario.motion.trajectory,
+        Trajectory::Circle(_)
+    ));
+    h.get_by_role_and_label(Role::Slider, "radius (m)")
+        .set_value_accesskit(0.05);
+    h.run();
+    // Every plotted sample now lies 5 cm from the axis: legs re-solved for the new circle.
+    let Trajectory::Circle(c) = &h.state().scenario.motion.trajectory else {
+        panic!("not a circle");
+    };
+    assert_eq!(c.radius, 0.05);
+    let p = h.state().scenario.motion.trajectory.pose_at(1.234).position;
+    assert!((p.xy().norm() - 0.05).abs() < 1e-12);
+    h.get_by_role_and_label(Role::Slider, "samples")
+        .set_value_accesskit(101.0);
+    h.run();
+    assert_eq!(h.state().samples.0.len(), 101);
+    assert_eq!(h.state().samples.1.len(), 101);
+}
+
+#[test]
+fn sinusoid_channels_have_every_number() {
+    let mut h = harness("seed");
+    h.get_by_label("pitch channel").click();
+    h.run();
+    for label in [
+        "pitch amplitude (°)",
+        "pitch frequency (Hz)",
+        "pitch phase (°)",
+        "pitch offset (°)",
+    ] {
+        assert!(
+            h.query_by_role_and_label(Role::Slider, label).is_some(),
+            "{label}"
+        );
+    }
+    h.get_by_role_and_label(Role::Slider, "pitch phase (°)")
+        .set_value_accesskit(0.0);
+    h.run();
+    let Trajectory::Sinusoid(s) = &h.state().scenario.motion.trajectory else {
+        panic!("not a sinusoid");
+    };
+    assert_eq!(s.pitch_deg.phase.degrees(), 0.0);
+    assert_eq!(
+        h.state()
+            .scenario
+            .motion
+            .trajectory
+            .pose_at(0.0)
+            .pitch
+            .degrees(),
+        0.0
+    );
+}
+
+#[test]
+fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
+    let mut h = harness("keyframes");
+    let keys = |h: &egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>| match &h
+        .state()
+        .scenario
+        .motion
+        .trajectory
+    {
+        Trajectory::Keyframes(k) => k.keys().len(),
+        _ => 0,
+    };
+    assert_eq!(keys(&h), 5);
+    h.get_by_label("Add key").click();
+    h.run();
+    assert_eq!(keys(&h), 6);
+    h.get_by_label("Remove last key").click();
+    h.run();
+    assert_eq!(keys(&h), 5);
+    h.get_by_label("linear").click();
+    h.run();
+    let Trajectory::Keyframes(k) = &h.state().scenario.motion.trajectory else {
+        panic!("not keyframes");
+    };
+    assert_eq!(
+        k.interpolation(),
+        stewart_kinematics::trajectory::Interpolation::Linear
+    );
+}
