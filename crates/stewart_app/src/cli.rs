@@ -269,14 +269,23 @@ pub struct PlotArgs {
 }
 
 /// Arguments of `stewart view`.
-#[derive(Debug, Args, Default)]
+#[derive(Debug, Args)]
 pub struct ViewArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
-    /// Start in the light (presentation) theme.
+    /// Start in the light theme.
     #[arg(long)]
     pub light: bool,
+    /// Start in presentation mode (light colours, large text, control panels hidden).
+    #[arg(long)]
+    pub presentation: bool,
+    /// Start with every collapsible section of the panels open.
+    #[arg(long)]
+    pub expand_panels: bool,
+    /// Window size WxH in logical pixels.
+    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
+    pub size: (u32, u32),
     /// Save the window's image here after `--frames` frames, then exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,

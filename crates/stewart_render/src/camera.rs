@@ -75,6 +75,14 @@ impl OrbitCamera {
         self.distance = (self.distance * factor).clamp(1e-3, 1e4);
     }
 
+    /// The camera for a view `aspect` = width / height: framings are made for views at
+    /// least as wide as high, so a narrower view backs off until the same width fits.
+    pub fn fitted_to(&self, aspect: f32) -> Self {
+        let mut c = *self;
+        c.distance /= aspect.clamp(1e-3, 1.0);
+        c
+    }
+
     /// Zoom by `factor` toward the point under the cursor: `ndc` is the cursor in
     /// normalised device coordinates (−1..1, y up) of a view `aspect` = width / height
     /// wide. The point of the target's view plane under the cursor stays under it.

@@ -16,5 +16,10 @@ use anyhow::Result;
 
 /// `stewart` with no subcommand: the viewer on the seed scenario.
 pub fn no_command() -> Result<ExitCode> {
-    view::run(&crate::cli::ViewArgs::default())
+    use clap::Parser;
+    let cli = crate::cli::Cli::parse_from(["stewart", "view"]);
+    match cli.command {
+        Some(crate::cli::Command::View(args)) => view::run(&args),
+        _ => unreachable!("`stewart view` parses as the view command"),
+    }
 }

@@ -13,12 +13,15 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let mut state = ViewerState::new(scenario);
     state.light_theme = args.light;
+    state.presentation = args.presentation;
+    state.expand_panels = args.expand_panels;
     run_viewer(
         state,
         ViewOptions {
             screenshot: args.screenshot.clone(),
             frames: args.frames,
             stats: args.frame_stats,
+            size: args.size,
         },
     )?;
     Ok(ExitCode::SUCCESS)

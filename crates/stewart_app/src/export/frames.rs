@@ -139,10 +139,8 @@ impl<'a> FrameSource<'a> {
         self.path.push(g.platform_centre(&pose));
         let scene = g.scene_frame(&pose, self.path.clone());
         let list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
-        // The camera frames the platform for views at least as wide as high; back off for narrower ones.
         let aspect = self.view_width as f32 / self.job.height as f32;
-        let mut camera = self.job.camera;
-        camera.distance /= aspect.min(1.0);
+        let camera = self.job.camera.fitted_to(aspect);
         let view = self.offscreen.render(
             &list,
             &camera,

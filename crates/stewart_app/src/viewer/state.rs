@@ -154,6 +154,8 @@ pub struct ViewerState {
     pub file_status: Status,
     /// Presentation mode: light colours, large text, control panels hidden.
     pub presentation: bool,
+    /// Open every collapsible section at start (for screenshots of everything).
+    pub expand_panels: bool,
     /// Draw the path the platform centre has traced.
     pub show_path: bool,
     /// Draw the platform's own axes.
@@ -194,6 +196,7 @@ impl ViewerState {
             file_path: String::new(),
             file_status: None,
             presentation: false,
+            expand_panels: false,
             show_path: true,
             platform_axes: false,
             centres: Vec::new(),

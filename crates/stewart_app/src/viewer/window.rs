@@ -18,7 +18,7 @@ use super::panels::viewer_ui;
 use super::state::ViewerState;
 
 /// How the viewer runs.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct ViewOptions {
     /// After this many frames, save the window's image here and exit.
     pub screenshot: Option<PathBuf>,
@@ -26,6 +26,8 @@ pub struct ViewOptions {
     pub frames: u32,
     /// Print frame-time statistics when the window closes.
     pub stats: bool,
+    /// Window size, logical pixels.
+    pub size: (u32, u32),
 }
 
 /// Per-frame timings, milliseconds.
@@ -121,7 +123,10 @@ impl App {
                 "Stewart platform studio — {}",
                 self.state.scenario.name
             ))
-            .with_inner_size(winit::dpi::LogicalSize::new(1280.0, 720.0));
+            .with_inner_size(winit::dpi::LogicalSize::new(
+                self.options.size.0 as f64,
+                self.options.size.1 as f64,
+            ));
         let window = Arc::new(
             event_loop
                 .create_window(attributes)

@@ -32,15 +32,17 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
     }
-    egui::CollapsingHeader::new("Limits and check thresholds").show(ui, |ui| {
-        let targets: Vec<_> = settings::all()
-            .iter()
-            .filter(|s| matches!(s.group, Group::Limits | Group::Checks))
-            .map(|s| s.target)
-            .collect();
-        for target in targets {
-            setting_slider(ui, state, target);
-        }
-        edit_error(ui, state, &[Group::Limits, Group::Checks]);
-    });
+    egui::CollapsingHeader::new("Limits and check thresholds")
+        .default_open(state.expand_panels)
+        .show(ui, |ui| {
+            let targets: Vec<_> = settings::all()
+                .iter()
+                .filter(|s| matches!(s.group, Group::Limits | Group::Checks))
+                .map(|s| s.target)
+                .collect();
+            for target in targets {
+                setting_slider(ui, state, target);
+            }
+            edit_error(ui, state, &[Group::Limits, Group::Checks]);
+        });
 }

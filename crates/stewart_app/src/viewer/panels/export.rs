@@ -21,35 +21,37 @@ const SIZES: [(u32, u32); 5] = [
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    egui::CollapsingHeader::new("Export").show(ui, |ui| {
-        if let Some(job) = &state.export_job {
-            ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
-            ui.label(job.describe());
-            let label = if job.cancelling() {
-                "Cancelling…"
-            } else {
-                "Cancel"
-            };
+    egui::CollapsingHeader::new("Export")
+        .default_open(state.expand_panels)
+        .show(ui, |ui| {
+            if let Some(job) = &state.export_job {
+                ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
+                ui.label(job.describe());
+                let label = if job.cancelling() {
+                    "Cancelling…"
+                } else {
+                    "Cancel"
+                };
+                if ui
+                    .add_enabled(!job.cancelling(), egui::Button::new(label))
+                    .clicked()
+                {
+                    job.cancel();
+                }
+                return;
+            }
+            form(ui, state);
+            let path = state.export.path.trim().to_owned();
             if ui
-                .add_enabled(!job.cancelling(), egui::Button::new(label))
+                .add_enabled(!path.is_empty(), egui::Button::new("Export"))
                 .clicked()
             {
-                job.cancel();
+                let work = work(state, PathBuf::from(path));
+                state.export_status = None;
+                state.export_job = Some(ExportJob::start(&state.scenario, work));
             }
-            return;
-        }
-        form(ui, state);
-        let path = state.export.path.trim().to_owned();
-        if ui
-            .add_enabled(!path.is_empty(), egui::Button::new("Export"))
-            .clicked()
-        {
-            let work = work(state, PathBuf::from(path));
-            state.export_status = None;
-            state.export_job = Some(ExportJob::start(&state.scenario, work));
-        }
-        widgets::status(ui, &state.export_status);
-    });
+            widgets::status(ui, &state.export_status);
+        });
 }
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {

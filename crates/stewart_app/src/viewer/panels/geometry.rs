@@ -10,7 +10,7 @@ use crate::viewer::state::ViewerState;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CollapsingHeader::new("Geometry")
-        .default_open(false)
+        .default_open(state.expand_panels)
         .show(ui, |ui| {
             for key in [
                 GeometryKey::BaseRadius,
@@ -22,19 +22,23 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 setting_slider(ui, state, Target::Geometry(key));
             }
             layout(ui, state);
-            egui::CollapsingHeader::new("Joint angles").show(ui, |ui| {
-                for i in 0..6 {
-                    setting_slider(ui, state, Target::Geometry(GeometryKey::BaseAngle(i)));
-                }
-                for i in 0..6 {
-                    setting_slider(ui, state, Target::Geometry(GeometryKey::PlatformAngle(i)));
-                }
-            });
-            egui::CollapsingHeader::new("Pivot (rotation centre, platform frame)").show(ui, |ui| {
-                for i in 0..3 {
-                    setting_slider(ui, state, Target::Geometry(GeometryKey::Pivot(i)));
-                }
-            });
+            egui::CollapsingHeader::new("Joint angles")
+                .default_open(state.expand_panels)
+                .show(ui, |ui| {
+                    for i in 0..6 {
+                        setting_slider(ui, state, Target::Geometry(GeometryKey::BaseAngle(i)));
+                    }
+                    for i in 0..6 {
+                        setting_slider(ui, state, Target::Geometry(GeometryKey::PlatformAngle(i)));
+                    }
+                });
+            egui::CollapsingHeader::new("Pivot (rotation centre, platform frame)")
+                .default_open(state.expand_panels)
+                .show(ui, |ui| {
+                    for i in 0..3 {
+                        setting_slider(ui, state, Target::Geometry(GeometryKey::Pivot(i)));
+                    }
+                });
             edit_error(ui, state, &[Group::Geometry]);
         });
 }

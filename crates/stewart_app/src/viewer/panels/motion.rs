@@ -107,7 +107,7 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
 fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
     for (i, name) in CHANNELS.into_iter().enumerate() {
         egui::CollapsingHeader::new(format!("{name} channel"))
-            .default_open(i == 0)
+            .default_open(i == 0 || state.expand_panels)
             .show(ui, |ui| {
                 for key in [
                     ChannelKey::Amplitude,

@@ -61,7 +61,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         rect,
         SceneCallback {
             list,
-            camera: state.camera,
+            camera: state.camera.fitted_to(aspect),
             theme,
             aspect,
         },
@@ -94,9 +94,12 @@ fn camera_input(
                 1.0 - 2.0 * (pointer.y - rect.top()) / rect.height().max(1.0),
             );
             let aspect = rect.width() / rect.height().max(1.0);
+            // The view is drawn from the fitted camera, farther away in narrow views: the
+            // cursor's offset in the target plane grows by the same ratio.
+            let fit = state.camera.fitted_to(aspect).distance / state.camera.distance;
             state
                 .camera
-                .zoom_toward((-scroll * 0.002).exp(), ndc, aspect);
+                .zoom_toward((-scroll * 0.002).exp(), ndc * fit, aspect);
         }
     }
 }
