@@ -16,7 +16,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         let (colour, note) = match leg.status {
             LegStatus::Normal => (Color32::from_rgb(70, 160, 90), ""),
             LegStatus::NearLimit => (Color32::from_rgb(230, 150, 20), " near limit"),
-            LegStatus::OverLimit => (ERROR, " OVER STROKE"),
+            LegStatus::OverLimit => (ERROR, " over stroke"),
         };
         ui.horizontal(|ui| {
             ui.label(
@@ -28,7 +28,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             if let Some(u) = leg.stroke_usage {
                 ui.add(
                     egui::ProgressBar::new(u.clamp(0.0, 1.0) as f32)
-                        .desired_width(110.0)
+                        .desired_width(ui.available_width().max(110.0))
                         .fill(colour)
                         .text(format!("{:.0}%{note}", 100.0 * u)),
                 );
