@@ -4,6 +4,7 @@
 mod export;
 mod files;
 mod modes;
+mod snapshots;
 mod trajectory;
 
 use egui::accesskit::Role;
@@ -22,8 +23,18 @@ pub fn harness(scenario: &str) -> Harness<'static, ViewerState> {
 /// of sight have no accessibility node, so panels low in the list need a tall window).
 pub fn tall_harness(scenario: &str, height: f32) -> Harness<'static, ViewerState> {
     let state = ViewerState::new(Scenario::preset(scenario).unwrap_or_else(|e| panic!("{e}")));
+    harness_with(state, height)
+}
+
+/// The viewer on `state` in a window `height` logical pixels high.
+pub fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerState> {
+    sized_harness(state, egui::vec2(1280.0, height))
+}
+
+/// The viewer on `state` in a window of `size` logical pixels.
+pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
     Harness::builder()
-        .with_size(egui::vec2(1280.0, height))
+        .with_size(size)
         .build_ui_state(viewer_ui, state)
 }
 
