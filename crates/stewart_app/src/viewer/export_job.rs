@@ -91,9 +91,7 @@ impl ExportJob {
         let handle = self.handle.take()?;
         Some(match handle.join() {
             Ok(Ok(message)) => Ok(message),
-            Ok(Err(e)) if self.cancelling() => {
-                Err(format!("Cancelled: nothing was written ({e:#})."))
-            }
+            Ok(Err(_)) if self.cancelling() => Err("Cancelled: nothing was written.".to_owned()),
             Ok(Err(e)) => Err(format!("{e:#}")),
             Err(_) => Err("the export thread panicked".to_owned()),
         })
