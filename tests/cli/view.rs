@@ -66,3 +66,38 @@ fn without_a_display_the_viewer_says_what_to_do() {
         "{err}"
     );
 }
+
+#[test]
+fn presentation_mode_is_light_large_and_has_no_control_panel() {
+    let dir = tempdir();
+    let shot = dir.path().join("present.png");
+    let o = view_under_xvfb(&[
+        "--preset",
+        "circle",
+        "--presentation",
+        "--size",
+        "960x540",
+        "--screenshot",
+        &shot.display().to_string(),
+        "--frames",
+        "6",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&shot)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    assert_eq!(img.dimensions(), (960, 540));
+    // Light everywhere: the left strip where the controls would be is light too, and
+    // most of the window is near white.
+    let light = |p: &image::Rgba<u8>| p[0] > 200 && p[1] > 200 && p[2] > 200;
+    let strip = (0..540).filter(|&y| light(img.get_pixel(150, y))).count();
+    assert!(strip > 300, "light pixels down x = 150: {strip}");
+    let total = img.pixels().filter(|p| light(p)).count();
+    assert!(total > 960 * 540 / 2, "light pixels: {total}");
+    // The platform is still drawn.
+    let red = img
+        .pixels()
+        .filter(|p| p[0] > 150 && p[1] < 80 && p[2] < 80)
+        .count();
+    assert!(red > 500, "platform pixels: {red}");
+}
