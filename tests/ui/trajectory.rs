@@ -98,3 +98,36 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
         stewart_kinematics::trajectory::Interpolation::Linear
     );
 }
+
+/// Press and release the primary button at `pos`.
+fn click_at(h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>, pos: egui::Pos2) {
+    h.event(egui::Event::PointerMoved(pos));
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.run();
+    }
+}
+
+#[test]
+fn clicking_on_the_plot_scrubs_the_time() {
+    let mut h = harness("seed");
+    assert!(h.state().playing);
+    // The plot fills the bottom panel right of the controls (1280 × 800 window).
+    click_at(&mut h, egui::pos2(600.0, 700.0));
+    let left = h.state().time;
+    assert!(!h.state().playing);
+    click_at(&mut h, egui::pos2(1100.0, 700.0));
+    let right = h.state().time;
+    assert!(
+        0.0 < left && left < right && right <= 10.0,
+        "{left} {right}"
+    );
+    // 500 px of a plot about 850 px wide spanning a little over 10 s.
+    assert!(right - left > 4.0, "{left} {right}");
+}

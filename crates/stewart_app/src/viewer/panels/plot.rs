@@ -13,8 +13,9 @@ pub fn leg_colour(i: usize) -> Color32 {
     Color32::from_hex(LEG_COLOURS[i]).unwrap_or(Color32::GRAY)
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
+/// The panel. In trajectory mode, clicking or dragging on the plot scrubs the time (the
+/// wheel still zooms, double-click resets the view).
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let stroke = state.scenario.geometry.stroke();
     let manual = state.mode == MotionMode::Manual;
     let x_label = if manual {
@@ -23,13 +24,14 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         "time (s)"
     };
     let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
+        .allow_drag(manual)
         .legend(Legend::default())
         .x_axis_label(x_label)
         .y_axis_label("leg length (m)");
     if manual {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
-    plot.show(ui, |plot| {
+    let shown = plot.show(ui, |plot| {
         for leg in 0..6 {
             let points: PlotPoints = if manual {
                 state
@@ -66,4 +68,14 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             plot.vline(VLine::new("now", now).color(marker));
         }
     });
+    let response = &shown.response;
+    if !manual
+        && (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
+        && let Some(pointer) = response.interact_pointer_pos()
+    {
+        let t = shown.transform.value_from_position(pointer).x;
+        let start = state.scenario.motion.sampling.start();
+        state.time = (t - start).clamp(0.0, state.duration());
+        state.playing = false;
+    }
 }
