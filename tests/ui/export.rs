@@ -108,3 +108,39 @@ fn cancel_stops_an_export_and_leaves_nothing() {
         .collect();
     assert_eq!(left, vec![0], "files left behind");
 }
+
+#[test]
+fn closing_with_an_export_running_cancels_it_and_leaves_nothing() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("seed", HEIGHT);
+    h.state_mut().export.size = (640, 360);
+    h.state_mut().export.fps = 0.0;
+    export_to(&mut h, ExportKind::Frames, &dir.path().join("frames"));
+    // Wait until frames are being written (staged next to the output).
+    let started = Instant::now();
+    while h
+        .state()
+        .export_job
+        .as_ref()
+        .is_some_and(|j| j.fraction() == 0.0)
+    {
+        assert!(
+            started.elapsed() < Duration::from_secs(60),
+            "no frame written"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+        h.run();
+    }
+    assert!(
+        h.state().export_job.is_some(),
+        "{:?}",
+        h.state().export_status
+    );
+    // The window closing drops the state: the export stops and cleans up first.
+    drop(h.into_state());
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .map(|d| d.count())
+        .into_iter()
+        .collect();
+    assert_eq!(left, vec![0], "files left behind");
+}

@@ -111,6 +111,17 @@ impl ExportJob {
     }
 }
 
+impl Drop for ExportJob {
+    /// An export still running when its job is dropped (the window closed) is cancelled
+    /// and waited for, so it removes what it staged instead of leaving files behind.
+    fn drop(&mut self) {
+        if let Some(handle) = self.handle.take() {
+            self.cancel();
+            let _ = handle.join();
+        }
+    }
+}
+
 fn run(
     scenario: &Scenario,
     work: &ExportWork,
