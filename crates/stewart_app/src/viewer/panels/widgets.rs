@@ -76,6 +76,10 @@ fn slider<'a>(setting: &Setting, value: &'a mut f64) -> egui::Slider<'a> {
         .logarithmic(logarithmic);
     if setting.unit == Unit::Count {
         s.integer()
+    } else if *setting.range.start() > 0.0 && *setting.range.start() < 1e-3 {
+        // Tolerances span decades: scientific notation reads (and types) better.
+        s.custom_formatter(|v, _| format!("{v:.2e}"))
+            .custom_parser(|text| text.trim().parse().ok())
     } else {
         s
     }
