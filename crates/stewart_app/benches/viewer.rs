@@ -23,7 +23,10 @@ fn frame(ctx: &egui::Context, state: &mut ViewerState) -> usize {
 
 fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("viewer_frame_1280x720");
-    for (name, expand) in [("seed_playing", false), ("seed_playing_all_panels_open", true)] {
+    for (name, expand) in [
+        ("seed_playing", false),
+        ("seed_playing_all_panels_open", true),
+    ] {
         let scenario = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
         let mut state = ViewerState::new(scenario);
         state.expand_panels = expand;
