@@ -326,9 +326,14 @@ impl ViewerState {
         self.scenario.geometry.inverse(&self.pose())
     }
 
+    /// Whether colours are light (the light theme, or presentation mode).
+    pub fn is_light(&self) -> bool {
+        self.light_theme || self.presentation
+    }
+
     /// The colour theme (presentation mode is always light).
     pub fn theme(&self) -> Theme {
-        if self.light_theme || self.presentation {
+        if self.is_light() {
             Theme::LIGHT
         } else {
             Theme::DARK

@@ -13,16 +13,6 @@ use crate::trajectory::{Sampling, Sinusoid};
 use DefaultValue::{AboveHome, Off, Value};
 use Unit::{Count, Degree, Hertz, Metre, MetrePerSecond, MetrePerSecondSquared, Ratio, Second};
 
-/// Channel names as written in files, and whether they are angles.
-const CHANNELS: [(&str, bool); 6] = [
-    ("x", false),
-    ("y", false),
-    ("z", false),
-    ("roll", true),
-    ("pitch", true),
-    ("yaw", true),
-];
-
 struct Declare {
     list: Vec<Setting>,
     group: Group,
@@ -172,9 +162,9 @@ fn trajectory(d: &mut Declare) {
     );
 
     let channels = Sinusoid::seed(0.0);
-    for (i, ((name, angular), (_, c))) in CHANNELS.into_iter().zip(channels.channels()).enumerate()
-    {
-        let (unit, suffix, amplitude, offset) = if angular {
+    for (i, (name, c)) in channels.channels().into_iter().enumerate() {
+        // x, y, z are lengths; roll, pitch, yaw angles.
+        let (unit, suffix, amplitude, offset) = if i >= 3 {
             (Degree, "deg", (0.0, 45.0), (-45.0, 45.0))
         } else {
             (Metre, "m", (0.0, 0.5), (-0.5, 0.5))

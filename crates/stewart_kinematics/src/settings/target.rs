@@ -194,18 +194,10 @@ impl Target {
             Target::Geometry(key) => set_geometry(scenario, key, value),
             Target::Sampling(key) => set_sampling(scenario, key, v),
             Target::Channel(i, key) => {
-                if let Trajectory::Sinusoid(s) = &mut scenario.motion.trajectory {
-                    let channels = [
-                        &mut s.x,
-                        &mut s.y,
-                        &mut s.z,
-                        &mut s.roll_deg,
-                        &mut s.pitch_deg,
-                        &mut s.yaw_deg,
-                    ];
-                    if let Some(c) = channels.into_iter().nth(i) {
-                        set_channel(c, key, v);
-                    }
+                if let Trajectory::Sinusoid(s) = &mut scenario.motion.trajectory
+                    && let Some(c) = s.channels_mut().into_iter().nth(i)
+                {
+                    set_channel(c, key, v);
                 }
                 Ok(())
             }

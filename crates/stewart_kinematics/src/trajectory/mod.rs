@@ -14,7 +14,7 @@ use crate::pose::Pose;
 pub use keyframes::{Interpolation, Keyframe, KeyframeError, Keyframes};
 pub use pose_table::{POSE_COLUMNS, PoseTable};
 pub use shapes::{Circle, FigureEight, Helix, Sway};
-pub use sinusoid::{Channel, Sinusoid, Wave};
+pub use sinusoid::{CHANNEL_NAMES, Channel, Sinusoid, Wave};
 
 /// A motion of the platform over time.
 #[derive(Clone, Debug, PartialEq)]

@@ -75,6 +75,10 @@ impl Channel {
     }
 }
 
+/// The channels' names as written in scenario files: x, y, z in metres, then roll,
+/// pitch, yaw in degrees.
+pub const CHANNEL_NAMES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+
 /// Six independent sinusoidal channels, one per degree of freedom.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Sinusoid {
@@ -119,13 +123,26 @@ impl Sinusoid {
 
     /// The six channels with their names as written in scenario files.
     pub fn channels(&self) -> [(&'static str, &Channel); 6] {
+        let c = [
+            &self.x,
+            &self.y,
+            &self.z,
+            &self.roll_deg,
+            &self.pitch_deg,
+            &self.yaw_deg,
+        ];
+        std::array::from_fn(|i| (CHANNEL_NAMES[i], c[i]))
+    }
+
+    /// The six channels, mutable, in the order of [`CHANNEL_NAMES`].
+    pub fn channels_mut(&mut self) -> [&mut Channel; 6] {
         [
-            ("x", &self.x),
-            ("y", &self.y),
-            ("z", &self.z),
-            ("roll", &self.roll_deg),
-            ("pitch", &self.pitch_deg),
-            ("yaw", &self.yaw_deg),
+            &mut self.x,
+            &mut self.y,
+            &mut self.z,
+            &mut self.roll_deg,
+            &mut self.pitch_deg,
+            &mut self.yaw_deg,
         ]
     }
 }

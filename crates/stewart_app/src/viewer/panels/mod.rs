@@ -52,8 +52,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
 
 /// Light or dark visuals, and large text in presentation mode.
 fn style(ctx: &egui::Context, state: &ViewerState) {
-    let light = state.light_theme || state.presentation;
-    let visuals = if light {
+    let visuals = if state.is_light() {
         egui::Visuals::light()
     } else {
         egui::Visuals::dark()

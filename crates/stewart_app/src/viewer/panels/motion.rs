@@ -5,7 +5,9 @@ use stewart_kinematics::Pose;
 use stewart_kinematics::settings::{
     ChannelKey, Group, SamplingKey, ShapeKey, Target, TrajectoryChoice, Unit,
 };
-use stewart_kinematics::trajectory::{Interpolation, Keyframe, Keyframes, Trajectory, Wave};
+use stewart_kinematics::trajectory::{
+    CHANNEL_NAMES, Interpolation, Keyframe, Keyframes, Trajectory, Wave,
+};
 
 use super::widgets::{edit_error, setting_slider};
 use crate::viewer::state::{MotionMode, ViewerState};
@@ -20,9 +22,6 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
     ("pitch", Unit::Degree, 30.0),
     ("yaw", Unit::Degree, 45.0),
 ];
-
-/// Sinusoid channel names, in the order of [`Target::Channel`] indices.
-const CHANNELS: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -105,7 +104,7 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
-    for (i, name) in CHANNELS.into_iter().enumerate() {
+    for (i, name) in CHANNEL_NAMES.into_iter().enumerate() {
         egui::CollapsingHeader::new(format!("{name} channel"))
             .default_open(i == 0 || state.expand_panels)
             .show(ui, |ui| {
@@ -117,24 +116,22 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
                 ] {
                     setting_slider(ui, state, Target::Channel(i, key));
                 }
-                if let Trajectory::Sinusoid(s) = &mut state.scenario.motion.trajectory {
-                    let channel = match i {
-                        0 => &mut s.x,
-                        1 => &mut s.y,
-                        2 => &mut s.z,
-                        3 => &mut s.roll_deg,
-                        4 => &mut s.pitch_deg,
-                        _ => &mut s.yaw_deg,
-                    };
-                    let before = channel.wave;
+                let mut changed = false;
+                if let Trajectory::Sinusoid(s) = &mut state.scenario.motion.trajectory
+                    && let Some(channel) = s.channels_mut().into_iter().nth(i)
+                {
                     ui.horizontal(|ui| {
                         ui.label(format!("{name} wave"));
-                        ui.selectable_value(&mut channel.wave, Wave::Sin, "sin");
-                        ui.selectable_value(&mut channel.wave, Wave::Cos, "cos");
+                        changed |= ui
+                            .selectable_value(&mut channel.wave, Wave::Sin, "sin")
+                            .changed();
+                        changed |= ui
+                            .selectable_value(&mut channel.wave, Wave::Cos, "cos")
+                            .changed();
                     });
-                    if channel.wave != before {
-                        state.resample();
-                    }
+                }
+                if changed {
+                    state.resample();
                 }
             });
     }

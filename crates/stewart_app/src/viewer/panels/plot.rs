@@ -59,7 +59,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
         if !manual {
-            let marker = if state.light_theme || state.presentation {
+            let marker = if state.is_light() {
                 Color32::BLACK
             } else {
                 Color32::WHITE
