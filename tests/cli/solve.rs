@@ -236,7 +236,7 @@ fn bad_poses_give_one_located_error_and_no_output() {
     let o = stewart(&["solve", "--poses", &bin.display().to_string()]);
     assert_eq!(o.status.code(), Some(2));
     assert!(
-        stderr(&o).contains("line 2 is not valid UTF-8"),
+        stderr(&o).contains("line 2, column 1 is not valid UTF-8"),
         "{}",
         stderr(&o)
     );

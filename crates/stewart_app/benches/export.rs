@@ -17,6 +17,7 @@ const FRAMES: usize = 60;
 fn bench(c: &mut Criterion) {
     let scenario = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
     let job = FrameJob {
+        first_index: 0,
         times: scenario.motion.sampling.times().collect(),
         width: 1280,
         height: 720,

@@ -2,7 +2,7 @@
 //! the shortest form that reads back to the same f64.
 
 use std::fmt::Write as _;
-use std::io::Read;
+use std::io::{Read, Write};
 use std::path::Path;
 
 use anyhow::{Context, Result};
@@ -29,27 +29,59 @@ pub struct CsvText {
 impl CsvText {
     /// Start with the header `columns`.
     pub fn with_header<S: AsRef<str>>(columns: &[S]) -> Self {
-        let names: Vec<&str> = columns.iter().map(AsRef::as_ref).collect();
         Self {
-            text: names.join(",") + "\n",
+            text: header_line(columns),
         }
     }
 
     /// Append one row.
     pub fn row(&mut self, values: impl IntoIterator<Item = f64>) {
-        for x in values {
-            write_number(&mut self.text, x);
-        }
-        if self.text.ends_with(',') {
-            self.text.pop();
-        }
-        self.text.push('\n');
+        push_row(&mut self.text, values);
     }
 
     /// The text.
     pub fn into_string(self) -> String {
         self.text
     }
+}
+
+/// CSV rows written straight to a writer (no whole-file string): what large tables use.
+pub struct CsvWriter<'a> {
+    out: &'a mut dyn Write,
+    line: String,
+}
+
+impl<'a> CsvWriter<'a> {
+    /// Write the header `columns` to `out`.
+    pub fn new<S: AsRef<str>>(out: &'a mut dyn Write, columns: &[S]) -> std::io::Result<Self> {
+        out.write_all(header_line(columns).as_bytes())?;
+        Ok(Self {
+            out,
+            line: String::with_capacity(256),
+        })
+    }
+
+    /// Write one row.
+    pub fn row(&mut self, values: impl IntoIterator<Item = f64>) -> std::io::Result<()> {
+        self.line.clear();
+        push_row(&mut self.line, values);
+        self.out.write_all(self.line.as_bytes())
+    }
+}
+
+fn header_line<S: AsRef<str>>(columns: &[S]) -> String {
+    let names: Vec<&str> = columns.iter().map(AsRef::as_ref).collect();
+    names.join(",") + "\n"
+}
+
+fn push_row(text: &mut String, values: impl IntoIterator<Item = f64>) {
+    for x in values {
+        write_number(text, x);
+    }
+    if text.ends_with(',') {
+        text.pop();
+    }
+    text.push('\n');
 }
 
 /// Append `x` and a comma, in the shortest form that reads back to the same f64: plain

@@ -3,6 +3,7 @@
 //! Exit status: 0 success (and, for `check`, nothing found), 1 a check found a
 //! problem, 2 unusable input or output (one sentence on standard error says which).
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -26,7 +27,8 @@ fn main() -> ExitCode {
     match result {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // Standard error may itself be unwritable (a full disk): the status still says it.
+            let _ = writeln!(std::io::stderr(), "error: {e:#}");
             ExitCode::from(2)
         }
     }

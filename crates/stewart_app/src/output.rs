@@ -1,36 +1,242 @@
-//! Output that is written whole or not at all.
+//! Output that never destroys what stands at its path: written whole or not at all onto
+//! regular files, straight into devices and pipes, through symbolic links, and never
+//! onto one of the command's own inputs.
+//!
+//! A regular file (or a new path) is written into a temporary file beside it and then
+//! renamed over it, so an interruption leaves the old file as it was. A device or FIFO
+//! (`/dev/null`, `/dev/stdout`, a named pipe) cannot be replaced by a rename without
+//! destroying it, so it is opened and written directly. A symbolic link is followed and
+//! its target written, as the shell's `>` does.
 
-use std::io::Write;
-use std::path::Path;
+use std::fs::Metadata;
+use std::io::{BufWriter, ErrorKind, Write};
+use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 
-/// Write `bytes` to `path` atomically: into a temporary file in the same folder, then
-/// renamed over `path`. An interruption leaves `path` as it was.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
-    let dir = match path.parent() {
+/// What stands at an output path once symbolic links are followed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// Nothing yet, or a regular file: staged and renamed into place.
+    File,
+    /// A folder.
+    Folder,
+    /// A device, FIFO or socket: written directly, never replaced.
+    Special,
+}
+
+/// An output path, checked before any work is done.
+#[derive(Clone, Debug)]
+pub struct Destination {
+    /// The path as the user gave it (for messages).
+    shown: PathBuf,
+    /// The path with symbolic links followed: where bytes really go.
+    real: PathBuf,
+    /// What stands there now.
+    kind: Kind,
+}
+
+/// Follow symbolic links (also dangling ones, whose target will be created).
+fn resolve_links(path: &Path) -> Result<PathBuf> {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let target = std::fs::read_link(&p)
+                    .with_context(|| format!("cannot read the link `{}`", path.display()))?;
+                p = match p.parent() {
+                    Some(dir) if target.is_relative() => dir.join(target),
+                    _ => target,
+                };
+            }
+            _ => return Ok(p),
+        }
+    }
+    bail!(
+        "cannot write `{}`: too many levels of symbolic links",
+        path.display()
+    )
+}
+
+fn kind_of(meta: &Metadata) -> Kind {
+    if meta.is_dir() {
+        Kind::Folder
+    } else if meta.is_file() {
+        Kind::File
+    } else {
+        Kind::Special
+    }
+}
+
+/// Whether two existing paths are the same file (same device and inode on Unix).
+fn same_file(a: &Metadata, b: &Path) -> bool {
+    let Ok(b) = std::fs::metadata(b) else {
+        return false;
+    };
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        a.dev() == b.dev() && a.ino() == b.ino()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (a, b);
+        false
+    }
+}
+
+/// The folder a path lies in (`.` for a bare file name).
+pub fn parent_of(path: &Path) -> &Path {
+    match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
-    };
-    let shown = path.display();
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".stewart-")
-        .suffix(".partial")
-        .tempfile_in(dir)
-        .with_context(|| {
-            format!(
-                "cannot write `{shown}`: cannot create a file in `{}`",
-                dir.display()
-            )
-        })?;
-    tmp.write_all(bytes)
-        .and_then(|()| tmp.as_file().sync_all())
-        .with_context(|| format!("cannot write `{shown}`"))?;
-    readable_by_all(tmp.path());
-    tmp.persist(path)
-        .map_err(|e| e.error)
-        .with_context(|| format!("cannot write `{shown}`"))?;
-    Ok(())
+    }
+}
+
+impl Destination {
+    /// Check `path` as an output of a command whose inputs are `inputs` (each with the
+    /// words that name it, such as `("the scenario", path)`): the output may not be one
+    /// of them. Standard input (`-`) is never a file.
+    pub fn new(path: &Path, inputs: &[(&str, &Path)]) -> Result<Self> {
+        let real = resolve_links(path)?;
+        let meta = std::fs::metadata(&real).ok();
+        if let Some(meta) = &meta {
+            for (what, input) in inputs {
+                if input.as_os_str() != "-" && kind_of(meta) == Kind::File && same_file(meta, input)
+                {
+                    bail!(
+                        "refusing to write `{}`: it is {what} this command reads; choose another output file",
+                        path.display()
+                    );
+                }
+            }
+        }
+        Ok(Self {
+            shown: path.to_path_buf(),
+            real,
+            kind: meta.as_ref().map_or(Kind::File, kind_of),
+        })
+    }
+
+    /// The path as the user gave it.
+    pub fn shown(&self) -> &Path {
+        &self.shown
+    }
+
+    /// The path written to, symbolic links followed.
+    pub fn real(&self) -> &Path {
+        &self.real
+    }
+
+    /// What stands at the path now.
+    pub fn kind(&self) -> Kind {
+        self.kind
+    }
+
+    /// The folder where staged files go: beside the output, so that the final rename
+    /// stays on one file system; the system's temporary folder for a device or FIFO.
+    pub fn staging_dir(&self) -> PathBuf {
+        match self.kind {
+            Kind::Special => std::env::temp_dir(),
+            Kind::File | Kind::Folder => parent_of(&self.real).to_path_buf(),
+        }
+    }
+
+    /// Refuse a folder where a file is wanted.
+    pub fn require_file(&self) -> Result<&Self> {
+        if self.kind == Kind::Folder {
+            bail!(
+                "cannot write `{}`: it is a folder; give a file name",
+                self.shown.display()
+            );
+        }
+        Ok(self)
+    }
+
+    /// Write what `fill` produces: staged and renamed for a regular file, directly for a
+    /// device or FIFO. On any error nothing is left at a regular path.
+    pub fn write_with(
+        &self,
+        fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+    ) -> Result<()> {
+        self.require_file()?;
+        let shown = self.shown.display();
+        if self.kind == Kind::Special {
+            let file = std::fs::OpenOptions::new()
+                .write(true)
+                .open(&self.real)
+                .with_context(|| format!("cannot write `{shown}`"))?;
+            let mut w = BufWriter::new(file);
+            return fill(&mut w)
+                .and_then(|()| w.flush())
+                .with_context(|| format!("cannot write `{shown}`"));
+        }
+        let dir = self.staging_dir();
+        let tmp = tempfile::Builder::new()
+            .prefix(".stewart-")
+            .suffix(".partial")
+            .tempfile_in(&dir)
+            .with_context(|| {
+                format!(
+                    "cannot write `{shown}`: cannot create a file in `{}`",
+                    dir.display()
+                )
+            })?;
+        let (file, tmp_path) = tmp.into_parts();
+        let mut w = BufWriter::new(file);
+        fill(&mut w)
+            .and_then(|()| w.flush())
+            .and_then(|()| w.get_ref().sync_all())
+            .with_context(|| format!("cannot write `{shown}`"))?;
+        drop(w);
+        self.deliver(tmp_path)
+    }
+
+    /// Write `bytes` (see [`Destination::write_with`]).
+    pub fn write_bytes(&self, bytes: &[u8]) -> Result<()> {
+        self.write_with(|w| w.write_all(bytes))
+    }
+
+    /// Move a finished staged file into place: renamed over a regular path (keeping an
+    /// existing file's permissions), copied into a device or FIFO. The staged file is
+    /// gone afterwards, whatever happens.
+    pub fn deliver(&self, staged: tempfile::TempPath) -> Result<()> {
+        let shown = self.shown.display();
+        match self.kind {
+            Kind::Special => {
+                let mut from = std::fs::File::open(&staged)
+                    .with_context(|| format!("cannot write `{shown}`"))?;
+                let mut to = std::fs::OpenOptions::new()
+                    .write(true)
+                    .open(&self.real)
+                    .with_context(|| format!("cannot write `{shown}`"))?;
+                std::io::copy(&mut from, &mut to)
+                    .and_then(|_| to.flush())
+                    .with_context(|| format!("cannot write `{shown}`"))?;
+                Ok(())
+            }
+            Kind::Folder => bail!("cannot write `{shown}`: it is a folder; give a file name"),
+            Kind::File => {
+                let mode = std::fs::metadata(&self.real).ok().map(|m| m.permissions());
+                match mode {
+                    Some(p) => {
+                        let _ = std::fs::set_permissions(&staged, p);
+                    }
+                    None => readable_by_all(&staged),
+                }
+                staged
+                    .persist(&self.real)
+                    .map_err(|e| e.error)
+                    .with_context(|| format!("cannot write `{shown}`"))
+            }
+        }
+    }
+}
+
+/// Write `bytes` to `path` whole or not at all (see [`Destination`]); the path may not
+/// be an input (the caller checks that with [`Destination::new`] where there are inputs).
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
+    Destination::new(path, &[])?.write_bytes(bytes)
 }
 
 /// Give a staged file or folder the usual permissions (temporary files are private).
@@ -44,17 +250,115 @@ pub fn readable_by_all(path: &Path) {
     }
 }
 
-/// Write `bytes` to `path`, or to standard output when there is no path.
-pub fn emit(path: Option<&Path>, bytes: &[u8]) -> Result<()> {
-    match path {
-        Some(p) => write_atomically(p, bytes),
-        None => {
-            let mut out = std::io::stdout().lock();
-            match out.write_all(bytes).and_then(|()| out.flush()) {
-                // A closed pipe (`stewart solve | head`) is the reader's choice, not an error.
-                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-                other => other.context("cannot write to standard output"),
-            }
-        }
+/// Write `bytes` to standard output. A closed pipe (`stewart solve | head`) is the
+/// reader's choice and ends the writing quietly; any other failure (a full disk) is an error.
+pub fn stdout(bytes: &[u8]) -> Result<()> {
+    stdout_with(|w| w.write_all(bytes))
+}
+
+/// Write what `fill` produces to standard output (see [`stdout`]).
+pub fn stdout_with(fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
+    let out = std::io::stdout().lock();
+    let mut w = BufWriter::with_capacity(1 << 16, out);
+    match fill(&mut w).and_then(|()| w.flush()) {
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
+        other => other.context("cannot write to standard output"),
+    }
+}
+
+/// Write to `out` when given (checked already), else to standard output.
+pub fn emit_with(
+    out: Option<&Destination>,
+    fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<()> {
+    match out {
+        Some(d) => d.write_with(fill),
+        None => stdout_with(fill),
+    }
+}
+
+/// Check an optional `--out` path against the command's inputs.
+pub fn destination(path: Option<&Path>, inputs: &[(&str, &Path)]) -> Result<Option<Destination>> {
+    path.map(|p| Destination::new(p, inputs)).transpose()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tmp() -> tempfile::TempDir {
+        tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn writes_regular_files_whole_and_follows_links() {
+        let dir = tmp();
+        let target = dir.path().join("target.csv");
+        std::fs::write(&target, "old").unwrap_or_else(|e| panic!("{e}"));
+        let link = dir.path().join("link.csv");
+        #[cfg(unix)]
+        std::os::unix::fs::symlink("target.csv", &link).unwrap_or_else(|e| panic!("{e}"));
+        write_atomically(&link, b"new").unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .map(|m| m.file_type().is_symlink())
+                .unwrap_or(false),
+            "the link stays a link"
+        );
+        assert_eq!(std::fs::read(&target).ok().as_deref(), Some(&b"new"[..]));
+    }
+
+    #[test]
+    fn an_input_is_never_an_output() {
+        let dir = tmp();
+        let input = dir.path().join("s.toml");
+        std::fs::write(&input, "x").unwrap_or_else(|e| panic!("{e}"));
+        let e = Destination::new(&input, &[("the scenario", &input)]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "refusing to write `{}`: it is the scenario this command reads; choose another output file",
+                input.display()
+            )
+        );
+        // Through a different spelling of the same file.
+        let other = dir.path().join(".").join("s.toml");
+        assert!(Destination::new(&other, &[("the scenario", &input)]).is_err());
+        assert_eq!(std::fs::read(&input).ok().as_deref(), Some(&b"x"[..]));
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn devices_are_written_not_replaced() {
+        let null = Path::new("/dev/null");
+        let d = Destination::new(null, &[]).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(d.kind(), Kind::Special);
+        d.write_bytes(b"anything").unwrap_or_else(|e| panic!("{e}"));
+        let m = std::fs::metadata(null).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!m.is_file(), "/dev/null is still a device");
+        let full = Destination::new(Path::new("/dev/full"), &[]).unwrap_or_else(|e| panic!("{e}"));
+        let e = full.write_bytes(&[0; 100_000]).unwrap_err();
+        assert!(
+            format!("{e:#}").starts_with("cannot write `/dev/full`: "),
+            "{e:#}"
+        );
+    }
+
+    #[test]
+    fn a_failed_write_leaves_nothing() {
+        let dir = tmp();
+        let out = dir.path().join("out.csv");
+        let d = Destination::new(&out, &[]).unwrap_or_else(|e| panic!("{e}"));
+        let e = d
+            .write_with(|w| {
+                w.write_all(b"half")?;
+                Err(std::io::Error::other("disk on fire"))
+            })
+            .unwrap_err();
+        assert!(format!("{e:#}").contains("disk on fire"));
+        let left: Vec<_> = std::fs::read_dir(dir.path())
+            .map(|d| d.flatten().map(|e| e.file_name()).collect())
+            .unwrap_or_default();
+        assert!(left.is_empty(), "{left:?}");
     }
 }

@@ -17,3 +17,12 @@ pub fn load(args: &ScenarioArgs) -> Result<Scenario> {
         .map_err(|e| anyhow::anyhow!("--set: {e}"))?;
     Ok(scenario)
 }
+
+/// The files a command reads through these arguments, with the words that name them
+/// (an output may not be one of them).
+pub fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
+    args.scenario
+        .iter()
+        .map(|p| ("the scenario file", p.as_path()))
+        .collect()
+}

@@ -12,7 +12,8 @@
 //! - [`trajectory`]: motions over time and their sampling;
 //! - [`checks`]: rigid-body, stroke and jump checks over a motion;
 //! - [`scenario`]: scenario files (TOML) and the shipped presets;
-//! - [`table`]: numeric CSV tables with located errors.
+//! - [`table`]: numeric CSV tables with located errors;
+//! - [`text`]: input text with a size cap and plain words for foreign encodings.
 
 pub mod angle;
 pub mod architecture;
@@ -31,6 +32,7 @@ pub mod scenario;
 pub mod scene;
 pub mod settings;
 pub mod table;
+pub mod text;
 pub mod trajectory;
 pub mod workspace;
 

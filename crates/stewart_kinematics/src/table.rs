@@ -99,53 +99,69 @@ pub enum TableError {
     },
 }
 
-/// One data row: its line in the file and its values, in the order the columns were asked for.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Row {
-    /// Line of the row in the file, from 1.
-    pub line: u64,
-    /// Values of the requested columns (required ones first, then the optional ones present).
-    pub values: Vec<f64>,
-}
-
-/// The requested numeric columns of a CSV table.
+/// The requested numeric columns of a CSV table, stored row after row in one flat
+/// vector (no allocation per row).
 #[derive(Clone, Debug, PartialEq)]
 pub struct NumericTable {
     /// File name, for messages.
     pub file: String,
-    /// Names of the columns held, in the order of [`Row::values`].
+    /// Names of the columns held, in the order of each row's values (required ones
+    /// first, then the optional ones present).
     pub columns: Vec<String>,
-    /// The data rows.
-    pub rows: Vec<Row>,
+    /// The values, `columns.len()` per row.
+    values: Vec<f64>,
+    /// Line of each row in the file, from 1.
+    lines: Vec<u64>,
 }
 
 impl NumericTable {
-    /// Position of column `name` in [`Row::values`], if the table has it.
+    /// Position of column `name` in each row's values, if the table has it.
     pub fn index(&self, name: &str) -> Option<usize> {
         self.columns.iter().position(|c| c == name)
     }
 
+    /// Number of data rows (never zero: a table without rows is refused).
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// Whether the table has no rows (never true for a table that was read).
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+
+    /// Values of row `k`, in the order of [`NumericTable::columns`].
+    pub fn row(&self, k: usize) -> &[f64] {
+        let n = self.columns.len();
+        &self.values[k * n..(k + 1) * n]
+    }
+
+    /// Every row's values, in order.
+    pub fn rows(&self) -> impl ExactSizeIterator<Item = &[f64]> + '_ {
+        self.values.chunks_exact(self.columns.len().max(1))
+    }
+
+    /// Line of row `k` in the file, from 1.
+    pub fn line(&self, k: usize) -> u64 {
+        self.lines[k]
+    }
+
+    /// Lines of every row in the file.
+    pub fn lines(&self) -> &[u64] {
+        &self.lines
+    }
+
     /// Read `required` columns (all must be present) and whichever `optional` columns
-    /// are present from CSV text; other columns are ignored.
+    /// are present from CSV text; other columns are ignored. Time and memory are linear
+    /// in the size of the input.
     pub fn read(
         input: impl Read,
         file: &str,
         required: &[&str],
         optional: &[&str],
     ) -> Result<Self, TableError> {
-        let text = blank_comments(&read_text(input, file)?);
-        // Lines are found from byte offsets: the csv crate's own line count skips blank lines.
-        // A record's position may point at the blank lines before it; skip those.
-        let line_of = |pos: Option<&csv::Position>| {
-            pos.map_or(1, |p| {
-                let start = p.byte() as usize;
-                let skip = text.as_bytes()[start.min(text.len())..]
-                    .iter()
-                    .take_while(|b| matches!(b, b'\n' | b'\r'))
-                    .count();
-                line_at(&text, start + skip)
-            })
-        };
+        let text = read_text(input, file)?;
+        let mut lines = LineCounter::new(&text);
         let mut reader = csv::ReaderBuilder::new()
             .trim(csv::Trim::All)
             .flexible(true)
@@ -155,7 +171,7 @@ impl NumericTable {
             message: describe_csv_error(&e),
         };
         let header = reader.headers().map_err(unreadable)?.clone();
-        let header_line = line_of(header.position());
+        let header_line = lines.of(header.position());
         for (i, name) in header.iter().enumerate() {
             if header.iter().skip(i + 1).any(|other| other == name) {
                 return Err(TableError::DuplicateColumn {
@@ -185,12 +201,13 @@ impl NumericTable {
                 positions.push(pos);
             }
         }
-        let mut rows = Vec::new();
-        for record in reader.records() {
-            let record = record.map_err(unreadable)?;
-            let line = line_of(record.position());
+        let mut values = Vec::new();
+        let mut row_lines = Vec::new();
+        let mut record = csv::StringRecord::new();
+        while reader.read_record(&mut record).map_err(unreadable)? {
+            let line = lines.of(record.position());
             if record.len() == 1 && record.get(0).is_some_and(str::is_empty) {
-                continue; // a blank line
+                continue; // a blank line, or a comment line (blanked when read)
             }
             if record.len() != header.len() {
                 return Err(TableError::FieldCount {
@@ -200,14 +217,13 @@ impl NumericTable {
                     found: record.len() as u64,
                 });
             }
-            let mut values = Vec::with_capacity(positions.len());
             for (name, &pos) in columns.iter().zip(&positions) {
                 let text = record.get(pos).unwrap_or("");
                 values.push(parse_cell(text, file, line, name)?);
             }
-            rows.push(Row { line, values });
+            row_lines.push(line);
         }
-        if rows.is_empty() {
+        if row_lines.is_empty() {
             return Err(TableError::NoRows {
                 file: file.to_owned(),
             });
@@ -215,59 +231,89 @@ impl NumericTable {
         Ok(Self {
             file: file.to_owned(),
             columns,
-            rows,
+            values,
+            lines: row_lines,
         })
     }
 }
 
-/// The whole input as text, or an error naming the first line that is not UTF-8.
-fn read_text(mut input: impl Read, file: &str) -> Result<String, TableError> {
-    let mut bytes = Vec::new();
-    input
-        .read_to_end(&mut bytes)
-        .map_err(|e| TableError::Unreadable {
-            file: file.to_owned(),
-            message: format!("cannot be read ({e})"),
-        })?;
-    String::from_utf8(bytes).map_err(|e| {
-        let valid = e.utf8_error().valid_up_to();
-        let line = 1 + e.as_bytes()[..valid]
+/// Line numbers of byte offsets that only move forward: counting resumes where the
+/// last call stopped, so a whole file costs one pass.
+struct LineCounter<'a> {
+    bytes: &'a [u8],
+    at: usize,
+    line: u64,
+}
+
+impl<'a> LineCounter<'a> {
+    fn new(text: &'a str) -> Self {
+        Self {
+            bytes: text.as_bytes(),
+            at: 0,
+            line: 1,
+        }
+    }
+
+    /// Line (from 1) of the record starting at `pos`. A record's position may point at
+    /// the blank lines before it (the csv crate skips them); those are stepped over.
+    fn of(&mut self, pos: Option<&csv::Position>) -> u64 {
+        let Some(p) = pos else { return 1 };
+        let start = (p.byte() as usize).min(self.bytes.len());
+        let skip = self.bytes[start..]
+            .iter()
+            .take_while(|b| matches!(b, b'\n' | b'\r'))
+            .count();
+        let target = start + skip;
+        if target < self.at {
+            // Never happens for records read in order; count afresh to stay correct.
+            self.at = 0;
+            self.line = 1;
+        }
+        self.line += self.bytes[self.at..target]
             .iter()
             .filter(|&&b| b == b'\n')
-            .count();
-        TableError::Unreadable {
-            file: file.to_owned(),
-            message: format!("line {line} is not valid UTF-8 text"),
-        }
-    })
+            .count() as u64;
+        self.at = target;
+        self.line
+    }
 }
 
-/// The text with every comment line (first non-blank character `#`) emptied, so that
-/// byte offsets and line numbers stay those of the file.
-fn blank_comments(text: &str) -> String {
-    text.split_inclusive('\n')
-        .map(|line| {
-            if line.trim_start().starts_with('#') {
-                if line.ends_with("\r\n") {
-                    "\r\n"
-                } else if line.ends_with('\n') {
-                    "\n"
-                } else {
-                    ""
+/// The whole input as text with comment lines blanked (see [`blank_comments`]), or an
+/// error naming the encoding or the first line that is not UTF-8.
+fn read_text(input: impl Read, file: &str) -> Result<String, TableError> {
+    let unreadable = |message: String| TableError::Unreadable {
+        file: file.to_owned(),
+        message,
+    };
+    let mut bytes =
+        crate::text::read_capped(input, crate::text::MAX_TABLE_BYTES).map_err(unreadable)?;
+    if let Some(encoding) = crate::text::foreign_encoding(&bytes) {
+        return Err(unreadable(format!("{encoding}; save it as UTF-8 text")));
+    }
+    blank_comments(&mut bytes);
+    crate::text::decode(bytes).map_err(unreadable)
+}
+
+/// Blank every comment line (first non-blank character `#`) in place, keeping its line
+/// ending, so that byte offsets and line numbers stay those of the file.
+fn blank_comments(bytes: &mut [u8]) {
+    let mut start = 0;
+    while start < bytes.len() {
+        let end = bytes[start..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(bytes.len(), |i| start + i);
+        let line = &mut bytes[start..end];
+        let first = line.iter().position(|b| !matches!(b, b' ' | b'\t'));
+        if first.is_some_and(|i| line[i] == b'#') {
+            for b in line.iter_mut() {
+                if *b != b'\r' {
+                    *b = b' ';
                 }
-            } else {
-                line
             }
-        })
-        .collect()
-}
-
-/// Line number (from 1) of byte offset `byte` in `text`.
-pub(crate) fn line_at(text: &str, byte: usize) -> u64 {
-    1 + text.as_bytes()[..byte.min(text.len())]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count() as u64
+        }
+        start = end + 1;
+    }
 }
 
 fn parse_cell(text: &str, file: &str, line: u64, column: &str) -> Result<f64, TableError> {
@@ -309,24 +355,13 @@ mod tests {
         let t =
             read("note, y ,x\n# a comment\nfoo,2,1\n\nbar,4,3\n").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(t.columns, ["x", "y"]);
-        assert_eq!(
-            t.rows[0],
-            Row {
-                line: 3,
-                values: vec![1.0, 2.0]
-            }
-        );
-        assert_eq!(
-            t.rows[1],
-            Row {
-                line: 5,
-                values: vec![3.0, 4.0]
-            }
-        );
+        assert_eq!((t.line(0), t.row(0)), (3, &[1.0, 2.0][..]));
+        assert_eq!((t.line(1), t.row(1)), (5, &[3.0, 4.0][..]));
+        assert_eq!(t.len(), 2);
         assert_eq!(t.index("t"), None);
         let t = read("t,x,y\n0.5,1,2\n").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(t.index("t"), Some(2));
-        assert_eq!(t.rows[0].values, vec![1.0, 2.0, 0.5]);
+        assert_eq!(t.row(0), &[1.0, 2.0, 0.5]);
     }
 
     #[test]
@@ -366,6 +401,9 @@ mod tests {
         );
         let bad_utf8: &[u8] = b"x,y\n1,2\n\xff,1\n";
         let e = NumericTable::read(bad_utf8, "poses.csv", &["x", "y"], &[]).unwrap_err();
-        assert_eq!(e.to_string(), "poses.csv: line 3 is not valid UTF-8 text");
+        assert_eq!(
+            e.to_string(),
+            "poses.csv: line 3, column 1 is not valid UTF-8 (byte 0xFF; the file may be in Latin-1 or another legacy encoding): save it as UTF-8 text"
+        );
     }
 }

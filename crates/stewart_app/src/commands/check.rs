@@ -46,7 +46,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
             serde_json::to_string_pretty(&doc)? + "\n"
         }
     };
-    output::emit(None, text.as_bytes())?;
+    output::stdout(text.as_bytes())?;
     Ok(if report.is_clean() {
         ExitCode::SUCCESS
     } else {

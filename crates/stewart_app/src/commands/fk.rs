@@ -1,5 +1,6 @@
 //! `stewart fk`: poses from leg lengths.
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
@@ -26,6 +27,9 @@ const POSE_OUT: [&str; 8] = [
 
 /// Run the command.
 pub fn run(args: &FkArgs) -> Result<ExitCode> {
+    let mut inputs = source::inputs(&args.scenario);
+    inputs.push(("the leg-length table", &args.legs));
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
     let geometry = &scenario.geometry;
     // Read the table first, so that a bad file is reported whatever the geometry.
@@ -37,9 +41,8 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     })?;
     let t_index = table.index("t");
     let lengths: Vec<[f64; 6]> = table
-        .rows
-        .iter()
-        .map(|r| std::array::from_fn(|i| r.values[i]))
+        .rows()
+        .map(|r| [r[0], r[1], r[2], r[3], r[4], r[5]])
         .collect();
 
     let architecture = geometry.architecture();
@@ -60,13 +63,13 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     }
     header.extend(POSE_OUT);
     let mut csv = CsvText::with_header(&header);
-    let time = |k: usize| t_index.map(|i| table.rows[k].values[i]);
+    let time = |k: usize| t_index.map(|i| table.row(k)[i]);
 
     if args.assembly_modes {
         for (k, row) in lengths.iter().enumerate() {
             let modes = geometry
                 .assembly_modes(row)
-                .map_err(|e| anyhow!("{file}, line {}: {e}", table.rows[k].line))?;
+                .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
             for (m, s) in modes.iter().enumerate() {
                 csv.row(
                     time(k)
@@ -79,18 +82,22 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     } else {
         let sequence = geometry
             .forward_sequence(&lengths, args.cold, &ForwardOptions::default())
-            .map_err(|e| anyhow!("{file}, line {}: {}", table.rows[e.index].line, e.error))?;
+            .map_err(|e| anyhow!("{file}, line {}: {}", table.line(e.index), e.error))?;
         for change in &sequence.branch_changes {
-            eprintln!(
+            let _ = writeln!(
+                std::io::stderr(),
                 "warning: {file}, line {}: the solution moved to another assembly branch (det J changed sign from {:.3e} to {:.3e})",
-                table.rows[change.index].line, change.det_before, change.det_after
+                table.line(change.index),
+                change.det_before,
+                change.det_after
             );
         }
         for (k, s) in sequence.solutions.iter().enumerate() {
             csv.row(time(k).into_iter().chain(pose_values(s)));
         }
     }
-    output::emit(args.out.as_deref(), csv.into_string().as_bytes())?;
+    let text = csv.into_string();
+    output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     Ok(ExitCode::SUCCESS)
 }
 

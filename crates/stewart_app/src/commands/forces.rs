@@ -13,6 +13,7 @@ use crate::source;
 
 /// Run the command.
 pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
+    let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let base = scenario.payload;
@@ -52,6 +53,7 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
                 .chain(series.dynamics[k]),
         );
     }
-    output::emit(args.out.as_deref(), csv.into_string().as_bytes())?;
+    let text = csv.into_string();
+    output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     Ok(ExitCode::SUCCESS)
 }

@@ -11,8 +11,10 @@ use crate::source;
 
 /// Run the command.
 pub fn run(args: &PlotArgs) -> Result<ExitCode> {
+    let out = output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
+    out.require_file()?;
     let scenario = source::load(&args.scenario)?;
     let bytes = plot_file(&scenario, &args.out)?;
-    output::write_atomically(&args.out, &bytes)?;
+    out.write_bytes(&bytes)?;
     Ok(ExitCode::SUCCESS)
 }

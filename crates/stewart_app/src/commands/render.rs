@@ -1,8 +1,7 @@
 //! `stewart render`: frames, GIF and MP4 of a trajectory, with no display.
 
+use std::io::Write as _;
 use std::process::ExitCode;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -43,13 +42,10 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         ProgressStyle::with_template("{bar:40} {pos}/{len} frames  {per_sec}  {eta} left")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
-    // Ctrl-C stops the export cleanly: staged files are removed, nothing is half-written.
-    let stop = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&stop);
-    // A handler may already be installed (a second export in one process): then Ctrl-C
-    // keeps its default meaning, which also leaves no output behind.
-    let _ = ctrlc::set_handler(move || flag.store(true, Ordering::Relaxed));
-    let report = match export_video(&scenario, &request, &progress, &stop) {
+    // Ctrl-C, SIGTERM and SIGHUP stop the export cleanly: staged files are removed,
+    // nothing is half-written.
+    let stop = crate::interrupt::flag();
+    let report = match export_video(&scenario, &request, &progress, stop) {
         Ok(r) => r,
         Err(e) => {
             progress.abandon();
@@ -58,7 +54,8 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
     };
     progress.finish_and_clear();
     let (width, height) = args.size;
-    eprintln!(
+    let _ = writeln!(
+        std::io::stderr(),
         "Wrote {} frames of {width}×{height} to {} in {:.1} s ({:.1} frames/s) on {}.",
         report.frames,
         args.out.display(),

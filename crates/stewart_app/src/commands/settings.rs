@@ -12,7 +12,7 @@ use crate::source;
 /// Run the command.
 pub fn run(args: &SettingsArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    print!("{}", table(&scenario));
+    crate::output::stdout(table(&scenario).as_bytes())?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -15,6 +15,7 @@ use crate::source;
 
 /// Run the command.
 pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
+    let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
@@ -93,9 +94,10 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         };
         let _ = writeln!(s, "  {name:<5} {line}");
     }
-    if let Some(path) = &args.out {
+    if let Some(out) = &out {
+        let path = out.shown();
         let text = points_file(path, &ws)?;
-        output::write_atomically(path, text.as_bytes())?;
+        out.write_bytes(text.as_bytes())?;
         let _ = writeln!(
             s,
             "Wrote {} boundary points to {}.",
@@ -103,7 +105,7 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
             path.display()
         );
     }
-    output::emit(None, s.as_bytes())?;
+    output::stdout(s.as_bytes())?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -6,12 +6,14 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::sync_channel;
+use std::sync::mpsc::{TrySendError, sync_channel};
 use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, anyhow, bail};
 use indicatif::ProgressBar;
 use stewart_render::Frame;
+
+use crate::output::{Destination, Kind};
 
 use super::frames::FrameSource;
 
@@ -52,6 +54,56 @@ enum Encoded {
     Raw(Vec<u8>),
 }
 
+/// A running `ffmpeg`: killed and waited for when dropped, so that no path (an error,
+/// Ctrl-C, a panic elsewhere) leaves it running or writing behind our back.
+struct FfmpegChild {
+    child: Child,
+    /// Drains ffmpeg's standard error (so it can never block on a full pipe) and keeps
+    /// the end of it for the error message.
+    stderr: Option<std::thread::JoinHandle<String>>,
+}
+
+impl FfmpegChild {
+    /// Stop ffmpeg now (a writer blocked on its input then fails at once).
+    fn kill(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+
+    /// Wait for ffmpeg to finish after its input was closed; its error output on failure.
+    fn finish(&mut self, staged: &Path, out: &Path) -> Result<()> {
+        let status = self.child.wait().context("ffmpeg did not finish")?;
+        if status.success() {
+            return Ok(());
+        }
+        bail!("ffmpeg failed: {}", self.message(staged, out));
+    }
+
+    /// ffmpeg's last words, with the staged file's name replaced by the output's.
+    fn message(&mut self, staged: &Path, out: &Path) -> String {
+        let text = self
+            .stderr
+            .take()
+            .and_then(|h| h.join().ok())
+            .unwrap_or_default();
+        let text = text.replace(&staged.display().to_string(), &out.display().to_string());
+        let text = text.trim();
+        if text.is_empty() {
+            "it stopped without saying why".to_owned()
+        } else {
+            text.to_owned()
+        }
+    }
+}
+
+impl Drop for FfmpegChild {
+    fn drop(&mut self) {
+        if let Ok(None) = self.child.try_wait() {
+            self.kill();
+        }
+    }
+}
+
 /// The folder (or file) being written, moved into place at the end.
 enum Staging {
     Folder {
@@ -60,37 +112,31 @@ enum Staging {
         digits: usize,
     },
     Gif {
-        encoder: gif::Encoder<std::fs::File>,
+        encoder: gif::Encoder<std::io::BufWriter<std::fs::File>>,
         file: tempfile::TempPath,
-        out: PathBuf,
+        out: Destination,
         delay_cs: u16,
     },
     Mp4 {
-        child: Child,
+        stdin: Option<std::process::ChildStdin>,
         file: tempfile::TempPath,
-        out: PathBuf,
+        out: Destination,
     },
 }
 
-fn parent_of(path: &Path) -> &Path {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    }
-}
-
-fn temp_file_beside(out: &Path, suffix: &str) -> Result<tempfile::NamedTempFile> {
+fn staged_file(out: &Destination, suffix: &str) -> Result<tempfile::NamedTempFile> {
     tempfile::Builder::new()
         .prefix(".stewart-")
         .suffix(suffix)
-        .tempfile_in(parent_of(out))
-        .with_context(|| format!("cannot write `{}`", out.display()))
+        .tempfile_in(out.staging_dir())
+        .with_context(|| format!("cannot write `{}`", out.shown().display()))
 }
 
 /// Check that `ffmpeg` runs, or say how to install it.
 pub fn check_ffmpeg() -> Result<()> {
     match Command::new("ffmpeg")
         .arg("-version")
+        .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .status()
@@ -102,6 +148,59 @@ pub fn check_ffmpeg() -> Result<()> {
     }
 }
 
+/// Start ffmpeg encoding raw RGBA frames from its input into `file`.
+fn spawn_ffmpeg(width: u32, height: u32, fps: f64, file: &Path) -> Result<FfmpegChild> {
+    check_ffmpeg()?;
+    let mut command = Command::new("ffmpeg");
+    command
+        .args(["-hide_banner", "-loglevel", "error", "-nostdin", "-y"])
+        .args(["-f", "rawvideo", "-pix_fmt", "rgba"])
+        .args(["-s", &format!("{width}x{height}")])
+        .args(["-framerate", &format!("{fps}"), "-i", "-"])
+        .args(["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"])
+        .args(["-c:v", "libx264", "-preset", "veryfast", "-crf", "18"])
+        .args([
+            "-pix_fmt",
+            "yuv420p",
+            "-movflags",
+            "+faststart",
+            "-f",
+            "mp4",
+        ])
+        .arg(file.as_os_str())
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped());
+    // Its own process group: Ctrl-C in a terminal reaches only us, and we stop ffmpeg
+    // ourselves (left to itself it would finish the file it was writing).
+    #[cfg(unix)]
+    std::os::unix::process::CommandExt::process_group(&mut command, 0);
+    let mut child = command.spawn().context("cannot start ffmpeg")?;
+    let stderr = child.stderr.take().map(|mut pipe| {
+        std::thread::spawn(move || {
+            let mut text = Vec::new();
+            let mut buf = [0u8; 4096];
+            while let Ok(n) = std::io::Read::read(&mut pipe, &mut buf) {
+                if n == 0 {
+                    break;
+                }
+                text.extend_from_slice(&buf[..n]);
+                if text.len() > 16384 {
+                    text.drain(..text.len() - 8192);
+                }
+            }
+            String::from_utf8_lossy(&text).into_owned()
+        })
+    });
+    Ok(FfmpegChild { child, stderr })
+}
+
+/// An output opened for writing: the staging and, for MP4, the ffmpeg process.
+struct Opened {
+    staging: Staging,
+    ffmpeg: Option<FfmpegChild>,
+}
+
 impl Staging {
     fn open(
         target: &Target,
@@ -109,99 +208,80 @@ impl Staging {
         height: u32,
         fps: f64,
         last_index: usize,
-    ) -> Result<Staging> {
+    ) -> Result<Opened> {
+        let opened = |staging| Opened {
+            staging,
+            ffmpeg: None,
+        };
         match target {
             Target::Folder(out) => {
-                if out.exists()
-                    && std::fs::read_dir(out)
-                        .map(|mut d| d.next().is_some())
-                        .unwrap_or(true)
-                {
-                    bail!(
-                        "`{}` exists and is not an empty folder: choose a new folder for the frames",
+                let dest = Destination::new(out, &[])?;
+                match dest.kind() {
+                    Kind::Folder => {
+                        let empty = std::fs::read_dir(dest.real())
+                            .map(|mut d| d.next().is_none())
+                            .unwrap_or(false);
+                        if !empty {
+                            bail!(
+                                "`{}` exists and is not an empty folder: choose a new folder for the frames",
+                                out.display()
+                            );
+                        }
+                    }
+                    Kind::Special => bail!(
+                        "`{}` is not a folder: PNG frames go into a new folder (or give a .gif or .mp4 file)",
                         out.display()
-                    );
+                    ),
+                    Kind::File if dest.real().exists() => bail!(
+                        "`{}` is a file: PNG frames go into a new folder (or give a .gif or .mp4 file)",
+                        out.display()
+                    ),
+                    Kind::File => {}
                 }
                 let dir = tempfile::Builder::new()
                     .prefix(".stewart-frames-")
-                    .tempdir_in(parent_of(out))
+                    .tempdir_in(dest.staging_dir())
                     .with_context(|| format!("cannot write `{}`", out.display()))?;
                 let digits = last_index.to_string().len().max(5);
-                Ok(Staging::Folder {
+                Ok(opened(Staging::Folder {
                     dir,
-                    out: out.clone(),
+                    out: dest.real().to_path_buf(),
                     digits,
-                })
+                }))
             }
             Target::Gif(out) => {
-                let (file, path) = temp_file_beside(out, ".gif")?.into_parts();
-                let (w, h) = (u16::try_from(width), u16::try_from(height));
-                let (Ok(w), Ok(h)) = (w, h) else {
+                let dest = Destination::new(out, &[])?;
+                dest.require_file()?;
+                let (Ok(w), Ok(h)) = (u16::try_from(width), u16::try_from(height)) else {
                     bail!("a GIF can be at most 65535 pixels wide and high")
                 };
-                let mut encoder =
-                    gif::Encoder::new(file, w, h, &[]).context("cannot start the GIF")?;
+                let (file, path) = staged_file(&dest, ".gif")?.into_parts();
+                let mut encoder = gif::Encoder::new(std::io::BufWriter::new(file), w, h, &[])
+                    .context("cannot start the GIF")?;
                 encoder
                     .set_repeat(gif::Repeat::Infinite)
                     .context("cannot start the GIF")?;
                 let delay_cs = (100.0 / fps).round().clamp(1.0, 65535.0) as u16;
-                Ok(Staging::Gif {
+                Ok(opened(Staging::Gif {
                     encoder,
                     file: path,
-                    out: out.clone(),
+                    out: dest,
                     delay_cs,
-                })
+                }))
             }
             Target::Mp4(out) => {
-                check_ffmpeg()?;
-                let file = temp_file_beside(out, ".mp4")?.into_temp_path();
-                let child = Command::new("ffmpeg")
-                    .args([
-                        "-hide_banner",
-                        "-loglevel",
-                        "error",
-                        "-y",
-                        "-f",
-                        "rawvideo",
-                        "-pix_fmt",
-                        "rgba",
-                    ])
-                    .args([
-                        "-s",
-                        &format!("{width}x{height}"),
-                        "-framerate",
-                        &format!("{fps}"),
-                        "-i",
-                        "-",
-                    ])
-                    .args([
-                        "-vf",
-                        "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                        "-c:v",
-                        "libx264",
-                        "-preset",
-                        "veryfast",
-                        "-crf",
-                        "18",
-                    ])
-                    .args([
-                        "-pix_fmt",
-                        "yuv420p",
-                        "-movflags",
-                        "+faststart",
-                        "-f",
-                        "mp4",
-                    ])
-                    .arg(file.as_os_str())
-                    .stdin(Stdio::piped())
-                    .stdout(Stdio::null())
-                    .stderr(Stdio::piped())
-                    .spawn()
-                    .context("cannot start ffmpeg")?;
-                Ok(Staging::Mp4 {
-                    child,
-                    file,
-                    out: out.clone(),
+                let dest = Destination::new(out, &[])?;
+                dest.require_file()?;
+                let file = staged_file(&dest, ".mp4")?.into_temp_path();
+                let mut ffmpeg = spawn_ffmpeg(width, height, fps, &file)?;
+                let stdin = ffmpeg.child.stdin.take();
+                Ok(Opened {
+                    staging: Staging::Mp4 {
+                        stdin,
+                        file,
+                        out: dest,
+                    },
+                    ffmpeg: Some(ffmpeg),
                 })
             }
         }
@@ -216,12 +296,14 @@ impl Staging {
         frame: Frame,
     ) -> Result<Encoded> {
         match kind {
-            Target::Folder(_) => {
+            Target::Folder(out) => {
                 let dir = dir.ok_or_else(|| anyhow!("no staging folder"))?;
-                let path = dir.join(format!("frame_{index:0digits$}.png"));
+                let name = format!("frame_{index:0digits$}.png");
+                let path = dir.join(&name);
+                let shown = out.join(&name);
                 let file = std::io::BufWriter::new(
                     std::fs::File::create(&path)
-                        .with_context(|| format!("cannot write `{}`", path.display()))?,
+                        .with_context(|| format!("cannot write `{}`", shown.display()))?,
                 );
                 let encoder = image::codecs::png::PngEncoder::new_with_quality(
                     file,
@@ -235,7 +317,7 @@ impl Staging {
                     frame.height,
                     image::ExtendedColorType::Rgba8,
                 )
-                .with_context(|| format!("cannot write `{}`", path.display()))?;
+                .with_context(|| format!("cannot write `{}`", shown.display()))?;
                 Ok(Encoded::Written)
             }
             Target::Gif(_) => {
@@ -258,16 +340,20 @@ impl Staging {
             (Staging::Folder { .. }, Encoded::Written) => Ok(()),
             (
                 Staging::Gif {
-                    encoder, delay_cs, ..
+                    encoder,
+                    delay_cs,
+                    out,
+                    ..
                 },
                 Encoded::Gif(mut frame),
             ) => {
                 frame.delay = *delay_cs;
-                encoder.write_frame(&frame).context("cannot write the GIF")
+                encoder
+                    .write_frame(&frame)
+                    .with_context(|| format!("cannot write `{}`", out.shown().display()))
             }
-            (Staging::Mp4 { child, .. }, Encoded::Raw(bytes)) => {
-                let stdin = child
-                    .stdin
+            (Staging::Mp4 { stdin, .. }, Encoded::Raw(bytes)) => {
+                let stdin = stdin
                     .as_mut()
                     .ok_or_else(|| anyhow!("ffmpeg closed its input"))?;
                 stdin
@@ -278,56 +364,59 @@ impl Staging {
         }
     }
 
-    /// Move the finished output into place.
-    fn finish(self) -> Result<()> {
+    /// Move the finished output into place (ffmpeg, when there is one, has finished).
+    fn finish(self, ffmpeg: Option<&mut FfmpegChild>) -> Result<()> {
         match self {
             Staging::Folder { dir, out, .. } => {
                 let staged = dir.keep();
                 crate::output::readable_by_all(&staged);
-                if out.exists() {
-                    std::fs::remove_dir(&out).with_context(|| {
-                        format!("cannot replace the empty folder `{}`", out.display())
-                    })?;
+                let placed = (|| {
+                    if out.exists() {
+                        std::fs::remove_dir(&out).with_context(|| {
+                            format!("cannot replace the empty folder `{}`", out.display())
+                        })?;
+                    }
+                    std::fs::rename(&staged, &out)
+                        .with_context(|| format!("cannot create `{}`", out.display()))
+                })();
+                if placed.is_err() {
+                    let _ = std::fs::remove_dir_all(&staged);
                 }
-                std::fs::rename(&staged, &out)
-                    .with_context(|| format!("cannot create `{}`", out.display()))
+                placed
             }
             Staging::Gif {
                 encoder, file, out, ..
             } => {
-                let mut f = encoder.into_inner().context("cannot finish the GIF")?;
-                f.flush().context("cannot finish the GIF")?;
-                crate::output::readable_by_all(&file);
-                file.persist(&out)
-                    .map_err(|e| e.error)
-                    .with_context(|| format!("cannot write `{}`", out.display()))
+                let shown = out.shown().display().to_string();
+                let mut w = encoder
+                    .into_inner()
+                    .with_context(|| format!("cannot write `{shown}`"))?;
+                w.flush()
+                    .and_then(|()| w.get_ref().sync_all())
+                    .with_context(|| format!("cannot write `{shown}`"))?;
+                drop(w);
+                out.deliver(file)
             }
-            Staging::Mp4 {
-                mut child,
-                file,
-                out,
-            } => {
-                drop(child.stdin.take());
-                let output = child.wait_with_output().context("ffmpeg did not finish")?;
-                if !output.status.success() {
-                    bail!(
-                        "ffmpeg failed: {}",
-                        String::from_utf8_lossy(&output.stderr).trim()
-                    );
-                }
-                crate::output::readable_by_all(&file);
-                file.persist(&out)
-                    .map_err(|e| e.error)
-                    .with_context(|| format!("cannot write `{}`", out.display()))
+            Staging::Mp4 { stdin, file, out } => {
+                drop(stdin);
+                let ffmpeg = ffmpeg.ok_or_else(|| anyhow!("internal error: no ffmpeg"))?;
+                ffmpeg.finish(&file, out.shown())?;
+                out.deliver(file)
             }
         }
     }
 }
 
+/// How long the render loop waits for a busy encoder before looking at the stop and
+/// failure flags again.
+const POLL: std::time::Duration = std::time::Duration::from_millis(20);
+
 /// Render `indices` from `source` and encode them into `target` at `fps`, reporting on `progress`.
 ///
 /// When `stop` becomes true (Ctrl-C), the export ends with an error and every staged file
-/// is removed: nothing half-written is left.
+/// is removed: nothing half-written is left. A failing sink (a full disk, a folder that
+/// vanished, an ffmpeg that quit) ends the export within a frame or two with its error,
+/// and ffmpeg is killed and waited for on every path.
 pub fn export(
     source: &mut FrameSource,
     indices: std::ops::Range<usize>,
@@ -337,7 +426,10 @@ pub fn export(
     stop: &AtomicBool,
 ) -> Result<()> {
     let first = source.frame_size();
-    let mut staging = Staging::open(target, first.0, first.1, fps, indices.end.saturating_sub(1))?;
+    let Opened {
+        mut staging,
+        mut ffmpeg,
+    } = Staging::open(target, first.0, first.1, fps, indices.end.saturating_sub(1))?;
     let staged_dir = match &staging {
         Staging::Folder { dir, .. } => Some(dir.path().to_path_buf()),
         _ => None,
@@ -349,12 +441,14 @@ pub fn export(
     let workers = std::thread::available_parallelism()
         .map_or(2, |n| n.get())
         .clamp(1, 8);
+    // Set by the writer when the sink fails, so that rendering stops at once.
+    let failed = AtomicBool::new(false);
     let (to_workers, from_render) = sync_channel::<(usize, Frame)>(2 * workers);
     let from_render = Arc::new(Mutex::new(from_render));
     let (to_writer, from_workers) = sync_channel::<(usize, Result<Encoded>)>(4 * workers);
     let start = indices.start;
     let count = indices.len();
-    std::thread::scope(|scope| -> Result<()> {
+    let (staging, written, rendered) = std::thread::scope(|scope| {
         for _ in 0..workers {
             let rx = Arc::clone(&from_render);
             let tx = to_writer.clone();
@@ -370,47 +464,111 @@ pub fn export(
                 }
             });
         }
+        // Only the workers hold the frame queue's receiver: when they have all stopped,
+        // sending fails instead of waiting forever.
+        drop(from_render);
         drop(to_writer);
-        let writer = scope.spawn(move || -> Result<Staging> {
+        let failed = &failed;
+        // The writer hands the staging back whatever happens: on an error ffmpeg must be
+        // stopped before the staged file (and ffmpeg's input) are dropped.
+        let writer = scope.spawn(move || -> (Staging, Result<()>) {
             let mut pending: BTreeMap<usize, Encoded> = BTreeMap::new();
             let mut next = start;
-            for (k, result) in from_workers {
-                pending.insert(k, result?);
-                while let Some(e) = pending.remove(&next) {
-                    staging.write(e)?;
-                    progress.inc(1);
-                    next += 1;
+            let result = (|| {
+                for (k, result) in from_workers {
+                    pending.insert(k, result?);
+                    while let Some(e) = pending.remove(&next) {
+                        staging.write(e)?;
+                        progress.inc(1);
+                        next += 1;
+                    }
                 }
+                if next != start + count {
+                    bail!("only {} of {count} frames were encoded", next - start);
+                }
+                Ok(())
+            })();
+            if result.is_err() {
+                failed.store(true, Ordering::Relaxed);
             }
-            if next != start + count {
-                bail!("only {} of {count} frames were encoded", next - start);
-            }
-            Ok(staging)
+            (staging, result)
         });
         let mut render_result = Ok(());
-        for k in indices.clone() {
+        'frames: for k in indices.clone() {
             if stop.load(Ordering::Relaxed) {
                 render_result = Err(anyhow!("interrupted: nothing was written"));
                 break;
             }
-            match source.frame(k) {
-                Ok(frame) => {
-                    if to_workers.send((k, frame)).is_err() {
-                        break; // the writer stopped: its error is reported below
-                    }
-                }
+            if failed.load(Ordering::Relaxed) {
+                break;
+            }
+            let mut item = match source.frame(k) {
+                Ok(frame) => (k, frame),
                 Err(e) => {
                     render_result = Err(e);
                     break;
                 }
+            };
+            // Hand the frame over, looking at the flags while the encoders are busy.
+            loop {
+                match to_workers.try_send(item) {
+                    Ok(()) => break,
+                    Err(TrySendError::Disconnected(_)) => break 'frames,
+                    Err(TrySendError::Full(back)) => {
+                        if stop.load(Ordering::Relaxed) {
+                            render_result = Err(anyhow!("interrupted: nothing was written"));
+                            break 'frames;
+                        }
+                        if failed.load(Ordering::Relaxed) {
+                            break 'frames;
+                        }
+                        item = back;
+                        std::thread::sleep(POLL);
+                    }
+                }
             }
         }
         drop(to_workers);
-        let written = writer
-            .join()
-            .map_err(|_| anyhow!("the encoder thread panicked"))?;
+        if render_result.is_err()
+            && let Some(f) = ffmpeg.as_mut()
+        {
+            // A writer blocked on ffmpeg's input fails at once.
+            f.kill();
+        }
+        match writer.join() {
+            Ok((staging, written)) => (Some(staging), written, render_result),
+            Err(_) => (
+                None,
+                Err(anyhow!("the encoder thread panicked")),
+                render_result,
+            ),
+        }
+    });
+    let sink_failed = rendered.is_ok() && written.is_err();
+    let failure = match (&rendered, &written) {
         // A rendering failure or an interruption explains a short output: report it first.
-        render_result?;
-        written?.finish()
-    })
+        (Err(_), _) => rendered.err(),
+        (Ok(()), Err(_)) => written.err(),
+        (Ok(()), Ok(())) if stop.load(Ordering::Relaxed) => {
+            Some(anyhow!("interrupted: nothing was written"))
+        }
+        (Ok(()), Ok(())) => None,
+    };
+    if let Some(e) = failure {
+        let mut e = e;
+        if let Some(f) = ffmpeg.as_mut() {
+            // ffmpeg that quit by itself explains a failed write better than the write does.
+            let quit =
+                sink_failed && matches!(f.child.try_wait(), Ok(Some(status)) if !status.success());
+            f.kill();
+            if quit && let Some(Staging::Mp4 { file, out, .. }) = &staging {
+                e = anyhow!("ffmpeg failed: {}", f.message(file, out.shown()));
+            }
+        }
+        // Staged files go only now, after ffmpeg is gone.
+        drop(staging);
+        return Err(e);
+    }
+    let staging = staging.ok_or_else(|| anyhow!("internal error: no output"))?;
+    staging.finish(ffmpeg.as_mut())
 }

@@ -11,7 +11,9 @@ use super::vector;
 
 /// What to render.
 pub struct FrameJob {
-    /// Frame times, seconds.
+    /// Index of the first frame (frames `first_index..first_index + times.len()`).
+    pub first_index: usize,
+    /// Times of those frames, seconds.
     pub times: Vec<f64>,
     /// Output size, pixels.
     pub width: u32,
@@ -133,7 +135,10 @@ impl<'a> FrameSource<'a> {
 
     /// Render frame `k` (frames must be asked for in order for the traced path).
     pub fn frame(&mut self, k: usize) -> Result<Frame> {
-        let t = self.job.times[k];
+        let t = k
+            .checked_sub(self.job.first_index)
+            .and_then(|i| self.job.times.get(i).copied())
+            .ok_or_else(|| anyhow!("internal error: frame {k} is not part of this export"))?;
         let g = &self.scenario.geometry;
         let pose: Pose = self.scenario.motion.trajectory.pose_at(t);
         self.path.push(g.platform_centre(&pose));

@@ -4,7 +4,9 @@
 use stewart_kinematics::trajectory::{POSE_COLUMNS, PoseTable};
 use stewart_kinematics::{Geometry, Pose, Scenario};
 
-use crate::csv_io::CsvText;
+use std::io::Write;
+
+use crate::csv_io::CsvWriter;
 
 /// The sampled trajectory as a pose table. Angles are rounded through degrees as printed,
 /// and the legs are solved for those printed poses, so that every row is a consistent
@@ -31,8 +33,12 @@ pub fn trajectory_table(scenario: &Scenario) -> PoseTable {
     }
 }
 
-/// `[t,]x,y,z,roll_deg,pitch_deg,yaw_deg,L1..L6`.
-pub fn legs_csv(geometry: &Geometry, table: &PoseTable) -> String {
+/// Write `[t,]x,y,z,roll_deg,pitch_deg,yaw_deg,L1..L6` to `out`, row by row.
+pub fn write_legs_csv(
+    out: &mut dyn Write,
+    geometry: &Geometry,
+    table: &PoseTable,
+) -> std::io::Result<()> {
     let lengths = geometry.leg_lengths_batch(&table.poses);
     let mut header: Vec<&str> = Vec::new();
     if table.times.is_some() {
@@ -40,14 +46,14 @@ pub fn legs_csv(geometry: &Geometry, table: &PoseTable) -> String {
     }
     header.extend(POSE_COLUMNS);
     header.extend(["L1", "L2", "L3", "L4", "L5", "L6"]);
-    let mut csv = CsvText::with_header(&header);
+    let mut csv = CsvWriter::new(out, &header)?;
     for (k, (v, l)) in table.values.iter().zip(&lengths).enumerate() {
         let t = table.times.as_ref().map(|t| t[k]);
         csv.row(
             t.into_iter()
                 .chain(v.iter().copied())
                 .chain(l.iter().copied()),
-        );
+        )?;
     }
-    csv.into_string()
+    Ok(())
 }

@@ -46,23 +46,63 @@ pub struct VideoReport {
     pub adapter: String,
 }
 
+/// Most frames one export may write (the most samples a trajectory may have).
+pub const MAX_FRAMES: usize = stewart_kinematics::trajectory::MAX_SAMPLES;
+
+/// The frames of an export: how many the motion gives at the rate, and when each is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FramePlan {
+    /// Frames over the whole motion.
+    pub count: usize,
+    /// Frames per second.
+    pub fps: f64,
+    /// Time of frame 0, seconds.
+    start: f64,
+    /// The trajectory's own sampling, when frames are its samples.
+    native: Option<stewart_kinematics::Sampling>,
+}
+
+impl FramePlan {
+    /// Time of frame `k`, seconds.
+    pub fn time(&self, k: usize) -> f64 {
+        match &self.native {
+            Some(sampling) => sampling.time(k),
+            None => self.start + k as f64 / self.fps,
+        }
+    }
+}
+
 impl VideoRequest {
-    /// Frame times and rate: the trajectory's samples, or a new rate over its duration.
-    pub fn times(&self, scenario: &Scenario) -> Result<(Vec<f64>, f64)> {
+    /// How many frames at which rate: the trajectory's samples, or a new rate over its
+    /// duration. Nothing is allocated, whatever the duration.
+    pub fn plan(&self, scenario: &Scenario) -> Result<FramePlan> {
         let sampling = scenario.motion.sampling;
         let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
         let fps = self.fps.unwrap_or(native_fps);
         if !(fps.is_finite() && fps > 0.0 && fps <= 1000.0) {
-            bail!("the frame rate must be between 0 and 1000 frames per second, got {fps}");
+            bail!(
+                "the frame rate must be more than 0 and at most 1000 frames per second, got {fps}"
+            );
         }
-        let times = match self.fps {
-            None => sampling.times().collect(),
+        let count = match self.fps {
+            None => sampling.len(),
             Some(_) => {
-                let n = (sampling.duration() * fps).floor() as usize + 1;
-                (0..n).map(|k| sampling.start() + k as f64 / fps).collect()
+                let n = (sampling.duration() * fps).floor() + 1.0;
+                if n.is_nan() || n > MAX_FRAMES as f64 {
+                    bail!(
+                        "{} s at {fps} frames per second is {n} frames; an export has at most {MAX_FRAMES} (choose a lower --fps or a shorter motion)",
+                        sampling.duration()
+                    );
+                }
+                n as usize
             }
         };
-        Ok((times, fps))
+        Ok(FramePlan {
+            count,
+            fps,
+            start: sampling.start(),
+            native: self.fps.is_none().then_some(sampling),
+        })
     }
 
     /// The frame indices to write, checked against the number of frames.
@@ -78,8 +118,8 @@ impl VideoRequest {
 
     /// How many frames the export writes.
     pub fn frame_count(&self, scenario: &Scenario) -> Result<usize> {
-        let (times, _) = self.times(scenario)?;
-        Ok(self.range(times.len())?.len())
+        let plan = self.plan(scenario)?;
+        Ok(self.range(plan.count)?.len())
     }
 }
 
@@ -91,8 +131,11 @@ pub fn export_video(
     progress: &ProgressBar,
     stop: &AtomicBool,
 ) -> Result<VideoReport> {
-    let (times, fps) = request.times(scenario)?;
-    let range = request.range(times.len())?;
+    let plan = request.plan(scenario)?;
+    let fps = plan.fps;
+    let range = request.range(plan.count)?;
+    // Only the exported frames' times are kept.
+    let times: Vec<f64> = range.clone().map(|k| plan.time(k)).collect();
     let target = Target::from_path(&request.out);
     if matches!(target, Target::Mp4(_)) {
         encode::check_ffmpeg()?;
@@ -104,6 +147,7 @@ pub fn export_video(
     }
     let (width, height) = request.size;
     let job = FrameJob {
+        first_index: range.start,
         times,
         width,
         height,

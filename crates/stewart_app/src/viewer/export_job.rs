@@ -12,9 +12,9 @@ use indicatif::{ProgressBar, ProgressDrawTarget};
 use stewart_kinematics::Scenario;
 
 use crate::export::plot::plot_file;
-use crate::export::tables::{legs_csv, trajectory_table};
+use crate::export::tables::{trajectory_table, write_legs_csv};
 use crate::export::video::{VideoRequest, export_video};
-use crate::output::write_atomically;
+use crate::output::{Destination, write_atomically};
 
 /// What to export.
 #[derive(Clone, Debug)]
@@ -144,8 +144,9 @@ fn run(
             Ok(format!("Wrote the plot to {}.", path.display()))
         }
         ExportWork::Csv(path) => {
-            let csv = legs_csv(&scenario.geometry, &trajectory_table(scenario));
-            write_atomically(path, csv.as_bytes())?;
+            let table = trajectory_table(scenario);
+            Destination::new(path, &[])?
+                .write_with(|w| write_legs_csv(w, &scenario.geometry, &table))?;
             Ok(format!(
                 "Wrote {} poses and leg lengths to {}.",
                 scenario.motion.sampling.len(),

@@ -1,6 +1,7 @@
 //! The window and its loop: winit 0.30, egui-winit for input, egui-wgpu's painter for the
 //! surface; the 3D view shares its device. Redraws continuously only while playing.
 
+use std::io::Write as _;
 use std::num::NonZeroU32;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
@@ -108,7 +109,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         .run_app(&mut app)
         .map_err(|e| anyhow!("the window loop failed: {e}"))?;
     if app.options.stats {
-        eprintln!("{}", app.times.summary());
+        let _ = writeln!(std::io::stderr(), "{}", app.times.summary());
     }
     match app.error {
         Some(e) => Err(e),

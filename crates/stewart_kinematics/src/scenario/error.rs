@@ -12,7 +12,7 @@ use crate::trajectory::{KeyframeError, SamplingError};
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ScenarioProblem {
     /// The file could not be read.
-    #[error("cannot be read ({0})")]
+    #[error("{0}")]
     Unreadable(String),
     /// TOML syntax, a wrong type, a missing or unknown key (the TOML parser's words).
     #[error("{0}")]

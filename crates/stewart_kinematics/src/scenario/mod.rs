@@ -91,12 +91,17 @@ impl Scenario {
     /// Load a scenario file.
     pub fn load(path: &Path) -> Result<Self, ScenarioError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| ScenarioError {
+        let unreadable = |message: String| ScenarioError {
             file: name.clone(),
             line: None,
             column: None,
-            problem: Box::new(ScenarioProblem::Unreadable(e.to_string())),
-        })?;
+            problem: Box::new(ScenarioProblem::Unreadable(message)),
+        };
+        let file =
+            std::fs::File::open(path).map_err(|e| unreadable(format!("cannot be read ({e})")))?;
+        let bytes =
+            crate::text::read_capped(file, crate::text::MAX_SCENARIO_BYTES).map_err(unreadable)?;
+        let text = crate::text::decode(bytes).map_err(unreadable)?;
         Self::from_toml_str(&text, &name, path.parent())
     }
 

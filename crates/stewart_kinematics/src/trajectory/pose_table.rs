@@ -28,21 +28,16 @@ impl PoseTable {
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
         let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
         let t_index = table.index("t");
-        let poses = table
-            .rows
-            .iter()
-            .map(|r| {
-                let v = &r.values;
-                Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]])
-            })
+        let values: Vec<[f64; 6]> = table
+            .rows()
+            .map(|v| [v[0], v[1], v[2], v[3], v[4], v[5]])
             .collect();
-        let values = table
-            .rows
+        let poses = values
             .iter()
-            .map(|r| std::array::from_fn(|i| r.values[i]))
+            .map(|v| Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]]))
             .collect();
-        let times = t_index.map(|i| table.rows.iter().map(|r| r.values[i]).collect());
-        let lines = table.rows.iter().map(|r| r.line).collect();
+        let times = t_index.map(|i| table.rows().map(|r| r[i]).collect());
+        let lines = table.lines().to_vec();
         Ok(Self {
             times,
             poses,
