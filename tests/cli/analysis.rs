@@ -154,7 +154,7 @@ fn forces_carry_the_payload() {
     let o = stewart(&["forces", "--preset", "paired", "--mass", "-3"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(
-        stderr(&o).contains("payload mass must be a positive finite number"),
+        stderr(&o).contains("the mass must be more than 0 and at most 1e6 kg, got -3"),
         "{}",
         stderr(&o)
     );

@@ -186,7 +186,10 @@ fn bad_render_options_are_refused() {
         (vec!["--size", "big"], "not a size"),
         (vec!["--frames", "5..3"], "not a non-empty range"),
         (vec!["--frames", "0..99999"], "not a non-empty range"),
-        (vec!["--fps", "0"], "frame rate must be more than 0 and at most 1000"),
+        (
+            vec!["--fps", "0"],
+            "frame rate must be more than 0 and at most 1000",
+        ),
     ] {
         let mut all = vec!["render", "--out", &out];
         all.extend(args);

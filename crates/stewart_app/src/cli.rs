@@ -1,8 +1,10 @@
 //! Command-line definitions (clap).
 
+use std::ops::RangeInclusive;
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use stewart_kinematics::bounds;
 
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
@@ -139,6 +141,93 @@ pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
     Ok([number(a)?, number(b)?, number(c)?])
 }
 
+/// Three numbers, each checked against its accepted range (see `stewart_kinematics::bounds`).
+fn parse_bounded(
+    text: &str,
+    ranges: [(&str, RangeInclusive<f64>, &str); 3],
+) -> Result<[f64; 3], String> {
+    let v = parse_triple(text)?;
+    for (x, (name, range, unit)) in v.iter().zip(&ranges) {
+        bounds::check(*x, range, unit).map_err(|e| format!("{name} {e}"))?;
+    }
+    Ok(v)
+}
+
+/// ROLL,PITCH,YAW in degrees, each within ±3600°.
+pub fn parse_angles(text: &str) -> Result<[f64; 3], String> {
+    let a = || bounds::symmetric(bounds::ANGLE_DEG);
+    parse_bounded(
+        text,
+        [("roll", a(), "°"), ("pitch", a(), "°"), ("yaw", a(), "°")],
+    )
+}
+
+/// X,Y,Z in metres, each within ±1000 m.
+pub fn parse_position(text: &str) -> Result<[f64; 3], String> {
+    let m = || bounds::symmetric(bounds::LENGTH_M);
+    parse_bounded(text, [("x", m(), "m"), ("y", m(), "m"), ("z", m(), "m")])
+}
+
+/// IXX,IYY,IZZ in kg·m², each from 0 to 1e6.
+pub fn parse_inertia(text: &str) -> Result<[f64; 3], String> {
+    let i = || 0.0..=bounds::INERTIA_KG_M2;
+    parse_bounded(
+        text,
+        [
+            ("Ixx", i(), "kg·m²"),
+            ("Iyy", i(), "kg·m²"),
+            ("Izz", i(), "kg·m²"),
+        ],
+    )
+}
+
+/// AZ,EL,DIST: degrees within ±3600°, and a distance above 0 up to 1e4 m.
+pub fn parse_camera(text: &str) -> Result<[f64; 3], String> {
+    let a = || bounds::symmetric(bounds::ANGLE_DEG);
+    let v = parse_bounded(
+        text,
+        [
+            ("azimuth", a(), "°"),
+            ("elevation", a(), "°"),
+            ("distance", 0.0..=bounds::CAMERA_DISTANCE_M, "m"),
+        ],
+    )?;
+    if v[2] <= 0.0 {
+        return Err(format!("distance must be more than 0 m, got {}", v[2]));
+    }
+    Ok(v)
+}
+
+/// A mass in kilograms: more than 0, at most 1e6.
+pub fn parse_mass(text: &str) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of kilograms"))?;
+    if v.is_finite() && v > 0.0 && v <= bounds::MASS_KG {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the mass must be more than 0 and at most 1e6 kg, got {text}"
+        ))
+    }
+}
+
+/// A frame rate: more than 0, at most 1000 frames per second.
+pub fn parse_fps(text: &str) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of frames per second"))?;
+    if v.is_finite() && v > 0.0 && v <= 1000.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the frame rate must be more than 0 and at most 1000 frames per second, got {text}"
+        ))
+    }
+}
+
 /// Arguments of `stewart workspace`.
 #[derive(Debug, Args)]
 pub struct WorkspaceArgs {
@@ -146,13 +235,13 @@ pub struct WorkspaceArgs {
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Platform orientation ROLL,PITCH,YAW in degrees.
-    #[arg(long, value_name = "ROLL,PITCH,YAW", value_parser = parse_triple, default_value = "0,0,0", allow_hyphen_values = true)]
+    #[arg(long, value_name = "ROLL,PITCH,YAW", value_parser = parse_angles, default_value = "0,0,0", allow_hyphen_values = true)]
     pub orientation: [f64; 3],
     /// Columns per side of the grid (the volume's error shrinks as it rises).
-    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u16).range(2..=4096))]
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u16).range(2..=4096), allow_hyphen_values = true)]
     pub resolution: u16,
     /// Position X,Y,Z (metres) at which to report the orientation range (default: home).
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
     pub position: Option<[f64; 3]>,
     /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
     #[arg(long, value_name = "FILE.csv|FILE.ply")]
@@ -166,13 +255,13 @@ pub struct ForcesArgs {
     #[command(flatten)]
     pub scenario: ScenarioArgs,
     /// Moving mass in kg (overrides the scenario's `[payload]`).
-    #[arg(long, value_name = "KG", allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG", allow_hyphen_values = true, value_parser = parse_mass)]
     pub mass: Option<f64>,
     /// Centre of mass X,Y,Z in the platform frame, metres.
-    #[arg(long, value_name = "X,Y,Z", value_parser = parse_triple, allow_hyphen_values = true)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
     pub com: Option<[f64; 3]>,
     /// Principal moments of inertia IXX,IYY,IZZ about the centre of mass, kg·m².
-    #[arg(long, value_name = "IXX,IYY,IZZ", value_parser = parse_triple)]
+    #[arg(long, value_name = "IXX,IYY,IZZ", value_parser = parse_inertia, allow_hyphen_values = true)]
     pub inertia: Option<[f64; 3]>,
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
@@ -229,16 +318,16 @@ pub struct RenderArgs {
     #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
     pub size: (u32, u32),
     /// Frames per second of the output (default: the trajectory's own sample rate, one frame per sample).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = parse_fps, allow_hyphen_values = true)]
     pub fps: Option<f64>,
     /// Only frames A..B (indices, B excluded).
-    #[arg(long, value_name = "A..B", value_parser = parse_frames)]
+    #[arg(long, value_name = "A..B", value_parser = parse_frames, allow_hyphen_values = true)]
     pub frames: Option<(Option<usize>, Option<usize>)>,
     /// Colours: `dark` for the screen, `light` for slides and papers.
     #[arg(long, value_enum, default_value_t = ThemeName::Dark)]
     pub theme: ThemeName,
     /// Camera AZ,EL,DIST (degrees, degrees, metres); default: the seed's view framing the platform.
-    #[arg(long, value_name = "AZ,EL,DIST", value_parser = parse_triple, allow_hyphen_values = true)]
+    #[arg(long, value_name = "AZ,EL,DIST", value_parser = parse_camera, allow_hyphen_values = true)]
     pub camera: Option<[f64; 3]>,
     /// Put the leg-length plot beside the 3D view, with a marker at the frame's time.
     #[arg(long)]
@@ -290,7 +379,7 @@ pub struct ViewArgs {
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
     /// Frames to draw before the screenshot.
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_hyphen_values = true)]
     pub frames: u32,
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]

@@ -11,7 +11,28 @@ use stewart_app::cli::{Cli, Command};
 use stewart_app::commands;
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            // One line, like every other error: clap's first line names the option and why.
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("error: bad arguments");
+            let _ = writeln!(std::io::stderr(), "{first}");
+            return ExitCode::from(2);
+        }
+        // --help and --version go to standard output; a closed pipe ends quietly, a full
+        // disk is an error.
+        Err(e) => {
+            let text = e.render().to_string();
+            return match stewart_app::output::stdout(text.as_bytes()) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(err) => {
+                    let _ = writeln!(std::io::stderr(), "error: {err:#}");
+                    ExitCode::from(2)
+                }
+            };
+        }
+    };
     let result = match cli.command {
         Some(Command::Solve(args)) => commands::solve::run(&args),
         Some(Command::Check(args)) => commands::check::run(&args),

@@ -70,28 +70,37 @@ impl Payload {
         centre_of_mass: Vector3<f64>,
         inertia: Matrix3<f64>,
     ) -> Result<Self, ForceError> {
-        if !(mass.is_finite() && mass > 0.0) {
+        use crate::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
+        if !(mass.is_finite() && mass > 0.0 && mass <= MASS_KG) {
             return Err(ForceError::BadPayload {
                 field: "mass",
-                requirement: "a positive finite number of kilograms",
+                requirement: "a positive number of kilograms, at most 1e6",
                 value: mass,
             });
         }
-        if let Some(&v) = centre_of_mass.iter().find(|v| !v.is_finite()) {
+        if let Some(&v) = centre_of_mass
+            .iter()
+            .find(|v| !(v.is_finite() && v.abs() <= LENGTH_M))
+        {
             return Err(ForceError::BadPayload {
                 field: "centre of mass",
-                requirement: "finite",
+                requirement: "finite and within ±1000 m",
                 value: v,
             });
         }
-        if let Some(&v) = inertia.iter().find(|v| !v.is_finite()) {
+        if let Some(&v) = inertia
+            .iter()
+            .find(|v| !(v.is_finite() && v.abs() <= INERTIA_KG_M2))
+        {
             return Err(ForceError::BadPayload {
                 field: "inertia",
-                requirement: "finite",
+                requirement: "finite and within ±1e6 kg·m²",
                 value: v,
             });
         }
-        let smallest = inertia.symmetric_eigenvalues().min();
+        // Bounded iterations: finite, bounded input converges in a few sweeps.
+        let smallest = nalgebra::SymmetricEigen::try_new(inertia, f64::EPSILON, 200)
+            .map_or(f64::NEG_INFINITY, |e| e.eigenvalues.min());
         if smallest < -1e-12 * inertia.amax() {
             return Err(ForceError::BadPayload {
                 field: "inertia",

@@ -113,11 +113,28 @@ impl Geometry {
     }
 }
 
+/// Most SVD sweeps: a finite 6×6 matrix converges in a few dozen.
+const SVD_MAX_ITERATIONS: usize = 1000;
+
 /// Conditioning of an inverse Jacobian with rotation columns in metres, normalised by `ell`.
 pub fn conditioning_of(j: &Matrix6<f64>, ell: f64) -> Conditioning {
     let scale = Vector6::new(1.0, 1.0, 1.0, 1.0 / ell, 1.0 / ell, 1.0 / ell);
     let normalised = j * Matrix6::from_diagonal(&scale);
-    let svd = SVD::new(normalised, false, true);
+    // Bounded: nalgebra's `SVD::new` iterates without limit and never returns on NaN.
+    // A matrix that is not finite, or does not converge, has no conditioning: singular.
+    let svd = normalised
+        .iter()
+        .all(|v| v.is_finite())
+        .then(|| SVD::try_new(normalised, false, true, f64::EPSILON, SVD_MAX_ITERATIONS))
+        .flatten();
+    let Some(svd) = svd else {
+        return Conditioning {
+            singular_values: [0.0; 6],
+            characteristic_length: ell,
+            condition_number: None,
+            weakest_twist: [0.0; 6],
+        };
+    };
     let mut order: Vec<usize> = (0..6).collect();
     order.sort_by(|&a, &b| svd.singular_values[b].total_cmp(&svd.singular_values[a]));
     let singular_values: [f64; 6] = std::array::from_fn(|k| svd.singular_values[order[k]]);

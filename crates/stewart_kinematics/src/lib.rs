@@ -18,6 +18,7 @@
 pub mod angle;
 pub mod architecture;
 pub mod batch;
+pub mod bounds;
 pub mod checks;
 mod fast_trig;
 pub mod forces;

@@ -151,6 +151,30 @@ impl NumericTable {
         &self.lines
     }
 
+    /// Check every value of column `name` (if present) against `range` (see
+    /// [`crate::bounds`]); the first value outside is an error naming its line.
+    pub fn check_range(
+        &self,
+        name: &str,
+        range: &std::ops::RangeInclusive<f64>,
+        unit: &str,
+    ) -> Result<(), TableError> {
+        let Some(c) = self.index(name) else {
+            return Ok(());
+        };
+        for (k, row) in self.rows().enumerate() {
+            if let Err(message) = crate::bounds::check(row[c], range, unit) {
+                return Err(TableError::BadValue {
+                    file: self.file.clone(),
+                    line: self.lines[k],
+                    column: name.to_owned(),
+                    message,
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// Read `required` columns (all must be present) and whichever `optional` columns
     /// are present from CSV text; other columns are ignored. Time and memory are linear
     /// in the size of the input.

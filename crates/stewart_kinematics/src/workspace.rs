@@ -345,7 +345,10 @@ impl Geometry {
             Axis::Pitch => pose.pitch,
             Axis::Yaw => pose.yaw,
         };
-        if !with(centre) {
+        // A step that cannot advance, or angles that are not numbers, would never end the
+        // search below: such a question has no answer.
+        let finite = [span, step, centre].iter().all(|a| a.radians().is_finite());
+        if !finite || step.radians() <= 0.0 || !with(centre) {
             return None;
         }
         let edge = |direction: f64| {

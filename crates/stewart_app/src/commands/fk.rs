@@ -4,6 +4,7 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
+use stewart_kinematics::bounds;
 use stewart_kinematics::forward::assembly::canonical;
 use stewart_kinematics::table::NumericTable;
 use stewart_kinematics::{ForwardOptions, ForwardSolution};
@@ -39,6 +40,10 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
             name.to_owned(),
         ))
     })?;
+    for name in LEG_COLUMNS {
+        table.check_range(name, &(0.0..=bounds::LENGTH_M), "m")?;
+    }
+    table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
     let t_index = table.index("t");
     let lengths: Vec<[f64; 6]> = table
         .rows()

@@ -46,7 +46,7 @@ pub struct VideoReport {
     pub adapter: String,
 }
 
-/// Most frames one export may write (the most samples a trajectory may have).
+/// Most frames one export may write (as many as a trajectory may have samples).
 pub const MAX_FRAMES: usize = stewart_kinematics::trajectory::MAX_SAMPLES;
 
 /// The frames of an export: how many the motion gives at the rate, and when each is.
@@ -86,16 +86,8 @@ impl VideoRequest {
         }
         let count = match self.fps {
             None => sampling.len(),
-            Some(_) => {
-                let n = (sampling.duration() * fps).floor() + 1.0;
-                if n.is_nan() || n > MAX_FRAMES as f64 {
-                    bail!(
-                        "{} s at {fps} frames per second is {n} frames; an export has at most {MAX_FRAMES} (choose a lower --fps or a shorter motion)",
-                        sampling.duration()
-                    );
-                }
-                n as usize
-            }
+            // In-range durations and rates give at most about 1e9 frames: a count, not a list.
+            Some(_) => ((sampling.duration() * fps).floor() + 1.0) as usize,
         };
         Ok(FramePlan {
             count,
@@ -111,6 +103,12 @@ impl VideoRequest {
         if a >= b || b > count {
             bail!(
                 "frames {a}..{b} is not a non-empty range within the {count} frames (0..{count})"
+            );
+        }
+        if b - a > MAX_FRAMES {
+            bail!(
+                "frames {a}..{b} are {} frames; one export writes at most {MAX_FRAMES} (choose a range with --frames, a lower --fps or a shorter motion)",
+                b - a
             );
         }
         Ok(a..b)

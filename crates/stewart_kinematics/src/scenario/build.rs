@@ -114,7 +114,7 @@ pub(super) fn parse(
             .file_stem()
             .map_or_else(|| file.to_owned(), |s| s.to_string_lossy().into_owned())
     });
-    Ok(Scenario {
+    let scenario = Scenario {
         name,
         description: parsed.description.unwrap_or_default(),
         geometry,
@@ -122,7 +122,16 @@ pub(super) fn parse(
         limits,
         payload,
         checks,
-    })
+    };
+    // Values no constructor refused may still be absurd (a 1e300 m radius).
+    if let Some((setting, reason)) = crate::settings::out_of_range(&scenario) {
+        return Err(src.invalid(
+            super::locate::span_of(text, &setting.key),
+            &setting.key,
+            reason,
+        ));
+    }
+    Ok(scenario)
 }
 
 fn angles(src: &Source, field: &str, v: &Spanned<Vec<f64>>) -> Result<[Angle; 6], ScenarioError> {
@@ -542,7 +551,9 @@ fn build_keyframes(
         // Point at the key the error names, or at the list.
         let span = match &e {
             crate::trajectory::KeyframeError::NotIncreasing { index, .. }
-            | crate::trajectory::KeyframeError::NotFinite { index } => {
+            | crate::trajectory::KeyframeError::NotFinite { index }
+            | crate::trajectory::KeyframeError::OutOfRange { index, .. }
+            | crate::trajectory::KeyframeError::TooClose { index, .. } => {
                 keys.get_ref().get(index - 1).map(Spanned::span)
             }
             crate::trajectory::KeyframeError::Empty => None,
@@ -600,15 +611,28 @@ fn build_sampling(
     };
     let duration = match &t.duration_s {
         Some(v) => src.finite("trajectory.duration_s", v)?,
+        None if default_duration <= 0.0 => {
+            return Err(src.invalid(
+                t.keys
+                    .as_ref()
+                    .map(Spanned::span)
+                    .or_else(|| t.file.as_ref().map(Spanned::span)),
+                "trajectory.keys",
+                "hold a single moment in time: add a key at another time, or give `duration_s` to hold the pose that long",
+            ));
+        }
         None => default_duration,
     };
     let samples = t.samples.as_ref().map_or(default_samples, |s| *s.get_ref());
     let samples_span = t.samples.as_ref().map(Spanned::span);
-    if samples < 2 {
+    if !(2..=crate::trajectory::MAX_SAMPLES as i64).contains(&samples) {
         return Err(src.invalid(
             samples_span,
             "trajectory.samples",
-            format!("must be at least 2, got {samples}"),
+            format!(
+                "must be a whole number from 2 to {}, got {samples}",
+                crate::trajectory::MAX_SAMPLES
+            ),
         ));
     }
     Sampling::with_start(start, duration, samples as u64).map_err(|e| {
@@ -616,7 +640,8 @@ fn build_sampling(
             crate::trajectory::SamplingError::Duration(_) => {
                 t.duration_s.as_ref().map(Spanned::span)
             }
-            crate::trajectory::SamplingError::TooFewSamples(_) => samples_span.clone(),
+            crate::trajectory::SamplingError::TooFewSamples(_)
+            | crate::trajectory::SamplingError::TooFine { .. } => samples_span.clone(),
             crate::trajectory::SamplingError::Start(_) => t.start_s.as_ref().map(Spanned::span),
         };
         src.err(span, e)

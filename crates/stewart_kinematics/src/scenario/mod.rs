@@ -31,6 +31,7 @@
 mod build;
 mod error;
 mod file;
+mod locate;
 pub mod presets;
 mod write;
 

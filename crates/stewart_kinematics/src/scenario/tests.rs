@@ -226,7 +226,7 @@ fn trajectory_errors_name_the_key() {
     );
     assert_eq!(
         t("kind = \"circle\"\nradius_m = 0.1\nfrequency_hz = 0.5\nsamples = 1\n"),
-        "s.toml, line 11, column 11: `trajectory.samples` must be at least 2, got 1"
+        "s.toml, line 11, column 11: `trajectory.samples` must be a whole number from 2 to 10000000, got 1"
     );
     assert_eq!(
         t("kind = \"circle\"\nradius_m = 0.1\nfrequency_hz = 0.5\nduration_s = -3\n"),

@@ -33,6 +33,7 @@ impl Declare {
             label: label.into(),
             unit,
             range: range.0..=range.1,
+            accepted: unit.accepted(),
             default,
             group: self.group,
             target,

@@ -54,6 +54,23 @@ impl Unit {
             Unit::Count | Unit::Ratio => "",
         }
     }
+
+    /// The values a number of this unit may take anywhere (file, `--set`, slider): see
+    /// [`crate::bounds`]. Whether a particular value makes sense (a positive radius) is
+    /// then up to the model's constructors.
+    pub fn accepted(self) -> RangeInclusive<f64> {
+        use crate::bounds::{self, symmetric};
+        match self {
+            Unit::Metre => symmetric(bounds::LENGTH_M),
+            Unit::Degree => symmetric(bounds::ANGLE_DEG),
+            Unit::Hertz => symmetric(bounds::FREQUENCY_HZ),
+            Unit::Second => symmetric(bounds::TIME_S),
+            Unit::MetrePerSecond => symmetric(bounds::SPEED_M_S),
+            Unit::MetrePerSecondSquared => symmetric(bounds::ACCEL_M_S2),
+            Unit::Count => 2.0..=crate::trajectory::MAX_SAMPLES as f64,
+            Unit::Ratio => symmetric(bounds::RATIO),
+        }
+    }
 }
 
 /// What a setting is when nobody says otherwise.
@@ -90,6 +107,8 @@ pub struct Setting {
     pub unit: Unit,
     /// The range a slider offers (typed values may go beyond where the model allows).
     pub range: RangeInclusive<f64>,
+    /// The values accepted at all (from the unit; see [`Unit::accepted`]).
+    pub accepted: RangeInclusive<f64>,
     /// The value when none is given.
     pub default: DefaultValue,
     /// The section of the file (and the panel of the viewer) it belongs to.
@@ -152,6 +171,21 @@ impl Setting {
         }
     }
 
+    /// The accepted range in words, such as `-1000 … 1000 m`.
+    pub fn accepted_words(&self) -> String {
+        let unit = self.unit.symbol();
+        let unit = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        format!(
+            "{} … {}{unit}",
+            crate::bounds::short(*self.accepted.start()),
+            crate::bounds::short(*self.accepted.end())
+        )
+    }
+
     /// Whether the setting may be absent (`off`).
     pub fn optional(&self) -> bool {
         self.target.optional()
@@ -176,7 +210,7 @@ impl Setting {
     /// Write `value` (`None`: switch off). Validated as the file reader validates; a
     /// refused value leaves the scenario unchanged.
     pub fn set(&self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), SettingError> {
-        let shown = value.map_or_else(|| "off".to_owned(), |v| v.to_string());
+        let shown = value.map_or_else(|| "off".to_owned(), crate::bounds::short);
         let invalid = |reason: String| SettingError::Invalid {
             key: self.key.clone(),
             value: shown.clone(),
@@ -196,7 +230,13 @@ impl Setting {
                 return Err(invalid("it must be a finite number".to_owned()));
             }
             Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
-                return Err(invalid("it must be a whole number".to_owned()));
+                return Err(invalid(format!(
+                    "it must be a whole number from {}",
+                    self.accepted_words()
+                )));
+            }
+            Some(v) => {
+                crate::bounds::check(v, &self.accepted, self.unit.symbol()).map_err(invalid)?;
             }
             _ => {}
         }
@@ -241,6 +281,17 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
         Some(value.parse::<f64>().map_err(|_| syntax())?)
     };
     Ok((setting, value))
+}
+
+/// The first setting of `scenario` whose value lies outside its accepted range (a file
+/// may hold values no slider offers), with the reason.
+pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
+    all().iter().find_map(|s| {
+        let v = s.get(scenario)?;
+        crate::bounds::check(v, &s.accepted, s.unit.symbol())
+            .err()
+            .map(|reason| (s, reason))
+    })
 }
 
 /// Apply `KEY=VALUE` assignments in order; the first refusal stops and is returned, and

@@ -147,7 +147,7 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
         ("geometry.platform_angles_deg[1]=50", "refused"),
         ("trajectory.x.amplitude_m=nan", "it must be a finite number"),
         ("trajectory.samples=2.5", "it must be a whole number"),
-        ("trajectory.samples=1", "at least 2 samples"),
+        ("trajectory.samples=1", "outside the accepted range 2 … 1e7"),
         (
             "trajectory.duration_s=0",
             "`duration_s` must be a positive finite number",
@@ -229,4 +229,84 @@ fn labels_carry_their_units() {
         find("trajectory.samples").map(Setting::label_with_unit),
         Ok("samples".to_owned())
     );
+}
+
+#[test]
+fn values_outside_the_accepted_range_are_refused_by_set_and_by_files() {
+    let mut s = preset("seed");
+    let before = s.clone();
+    let e = find("trajectory.duration_s")
+        .and_then(|k| k.set(&mut s, Some(1e308)))
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`trajectory.duration_s` = 1e308 refused: 1e308 is outside the accepted range -1e6 … 1e6 s"
+    );
+    assert_eq!(s, before);
+    let e = find("trajectory.samples")
+        .and_then(|k| k.set(&mut s, Some(18446744073709551615.0)))
+        .unwrap_err();
+    assert!(
+        e.to_string().contains("outside the accepted range 2 … 1e7"),
+        "{e}"
+    );
+    // A file may hold what no slider offers: the same range applies, located.
+    let text: String = s
+        .to_toml()
+        .lines()
+        .map(|l| {
+            if l.starts_with("base_radius") {
+                "base_radius = 1e300\n".to_owned()
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    let e = Scenario::from_toml_str(&text, "big.toml", None).unwrap_err();
+    let line = 1 + text[..text.find("1e300").unwrap_or(0)]
+        .matches('\n')
+        .count();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "big.toml, line {line}, column 15: `geometry.base_radius` 1e300 is outside the accepted range -1000 … 1000 m"
+        )
+    );
+}
+
+#[test]
+fn the_extremes_of_every_accepted_range_keep_every_number_finite() {
+    // For each preset and each setting, its smallest and largest accepted value (where
+    // the model accepts it at all): the sampled poses, leg lengths and conditioning stay
+    // finite. This is what the accepted ranges are for.
+    let mut tried = 0;
+    for name in presets::names() {
+        let base = preset(name);
+        for setting in all().iter().filter(|s| s.applies(&base)) {
+            for v in [*setting.accepted.start(), *setting.accepted.end()] {
+                if setting.unit == Unit::Count && v > 1e4 {
+                    continue; // ten million samples: slow here, and no different in kind
+                }
+                let mut s = base.clone();
+                if setting.set(&mut s, Some(v)).is_err() {
+                    continue;
+                }
+                tried += 1;
+                let samples = s.motion.sample();
+                for (k, pose) in samples.poses.iter().enumerate().step_by(97) {
+                    let legs = s.geometry.inverse(pose);
+                    let c = s.geometry.conditioning(pose);
+                    assert!(
+                        samples.times[k].is_finite()
+                            && pose.is_finite()
+                            && legs.lengths.iter().all(|l| l.is_finite())
+                            && c.singular_values.iter().all(|v| v.is_finite()),
+                        "{name}: {} = {v} gives a non-finite value at sample {k}",
+                        setting.key
+                    );
+                }
+            }
+        }
+    }
+    assert!(tried > 200, "only {tried} extreme values were accepted");
 }

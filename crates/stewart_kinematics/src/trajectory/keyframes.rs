@@ -62,6 +62,45 @@ pub enum KeyframeError {
         /// Key number, from 1.
         index: usize,
     },
+    /// A value outside the accepted range of its kind (see [`crate::bounds`]).
+    #[error("key {index}: {what}")]
+    OutOfRange {
+        /// Key number, from 1.
+        index: usize,
+        /// Which value and why.
+        what: String,
+    },
+    /// Two keys closer in time than [`MIN_KEY_GAP_S`].
+    #[error(
+        "key {index} is only {gap:e} s after the previous key; keys must be at least 1e-6 s apart"
+    )]
+    TooClose {
+        /// Key number, from 1.
+        index: usize,
+        /// The gap, seconds.
+        gap: f64,
+    },
+}
+
+/// The smallest time between two keys, seconds (closer keys make splines overflow).
+pub const MIN_KEY_GAP_S: f64 = 1e-6;
+
+/// Check a key's values against [`crate::bounds`]: time, position, angles.
+fn check_key_ranges(index: usize, k: &Keyframe) -> Result<(), KeyframeError> {
+    use crate::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
+    let out = |name: &str, reason: String| KeyframeError::OutOfRange {
+        index,
+        what: format!("{name} {reason}"),
+    };
+    check(k.t, &symmetric(TIME_S), "s").map_err(|r| out("t_s", r))?;
+    let c = k.pose.to_coordinates();
+    for (name, v) in ["x_m", "y_m", "z_m"].iter().zip(&c[..3]) {
+        check(*v, &symmetric(LENGTH_M), "m").map_err(|r| out(name, r))?;
+    }
+    for (name, v) in ["roll_deg", "pitch_deg", "yaw_deg"].iter().zip(&c[3..]) {
+        check(v.to_degrees(), &symmetric(ANGLE_DEG), "°").map_err(|r| out(name, r))?;
+    }
+    Ok(())
 }
 
 impl Keyframes {
@@ -74,11 +113,18 @@ impl Keyframes {
             if !k.t.is_finite() || !k.pose.is_finite() {
                 return Err(KeyframeError::NotFinite { index: i + 1 });
             }
+            check_key_ranges(i + 1, k)?;
             if i > 0 && k.t <= keys[i - 1].t {
                 return Err(KeyframeError::NotIncreasing {
                     index: i + 1,
                     t: k.t,
                     previous: keys[i - 1].t,
+                });
+            }
+            if i > 0 && k.t - keys[i - 1].t < MIN_KEY_GAP_S {
+                return Err(KeyframeError::TooClose {
+                    index: i + 1,
+                    gap: k.t - keys[i - 1].t,
                 });
             }
         }

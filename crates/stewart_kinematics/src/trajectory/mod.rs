@@ -65,9 +65,19 @@ pub enum SamplingError {
     /// Duration not a positive finite number.
     #[error("`duration_s` must be a positive finite number of seconds, got {0}")]
     Duration(f64),
-    /// Fewer than two samples.
-    #[error("`samples` must be at least 2, got {0}")]
+    /// Fewer than two samples or more than [`MAX_SAMPLES`].
+    #[error("`samples` must be a whole number from 2 to {MAX_SAMPLES}, got {0}")]
     TooFewSamples(u64),
+    /// Samples so close that their times cannot be told apart at that distance from zero.
+    #[error(
+        "the time step {step:e} s is too fine to be told apart from the times around {at:e} s (at most 1e10 steps per unit of time from zero): use fewer `samples` or a `start_s` nearer 0"
+    )]
+    TooFine {
+        /// The step, seconds.
+        step: f64,
+        /// The time farthest from zero, seconds.
+        at: f64,
+    },
     /// Start time not finite.
     #[error("`start_s` must be a finite number of seconds, got {0}")]
     Start(f64),
@@ -108,6 +118,11 @@ impl Sampling {
         }
         if !(2..=MAX_SAMPLES as u64).contains(&samples) {
             return Err(SamplingError::TooFewSamples(samples));
+        }
+        let step = duration / (samples - 1) as f64;
+        let at = start.abs().max((start + duration).abs());
+        if step < 1e-10 * at || !(start + duration).is_finite() {
+            return Err(SamplingError::TooFine { step, at });
         }
         Ok(Self {
             start,

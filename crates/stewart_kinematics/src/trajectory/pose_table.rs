@@ -26,7 +26,15 @@ pub struct PoseTable {
 impl PoseTable {
     /// Read a pose table; `file` names the source in error messages.
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
+        use crate::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, symmetric};
         let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
+        for name in &POSE_COLUMNS[..3] {
+            table.check_range(name, &symmetric(LENGTH_M), "m")?;
+        }
+        for name in &POSE_COLUMNS[3..] {
+            table.check_range(name, &symmetric(ANGLE_DEG), "°")?;
+        }
+        table.check_range("t", &symmetric(TIME_S), "s")?;
         let t_index = table.index("t");
         let values: Vec<[f64; 6]> = table
             .rows()

@@ -1,0 +1,98 @@
+//! The sane range of every kind of input number.
+//!
+//! A number can be finite and still absurd: a duration of 1e308 s makes every sample
+//! time infinite, a base radius of 1e300 m makes every leg length infinite, and an
+//! iterative solver fed such values never settles. Every number that enters the model
+//! (scenario files, `--set`, command-line options, CSV tables) is therefore checked
+//! against the range of its kind below, generous enough for any laboratory platform or
+//! motion simulator and small enough that nothing derived from in-range inputs can
+//! overflow. The settings declare their ranges from these (`stewart settings` prints
+//! them) and README.md lists them.
+
+use std::ops::RangeInclusive;
+
+/// Largest length, position or offset, metres (|value|).
+pub const LENGTH_M: f64 = 1e3;
+/// Largest angle, degrees (|value|): ten turns.
+pub const ANGLE_DEG: f64 = 3600.0;
+/// Largest time, seconds (|value|): about 11.6 days.
+pub const TIME_S: f64 = 1e6;
+/// Largest frequency, hertz.
+pub const FREQUENCY_HZ: f64 = 1e3;
+/// Largest speed limit, metres per second.
+pub const SPEED_M_S: f64 = 1e4;
+/// Largest acceleration limit, metres per second squared.
+pub const ACCEL_M_S2: f64 = 1e7;
+/// Largest pure number (ratios, condition-number thresholds).
+pub const RATIO: f64 = 1e12;
+/// Largest mass, kilograms.
+pub const MASS_KG: f64 = 1e6;
+/// Largest moment of inertia, kg·m².
+pub const INERTIA_KG_M2: f64 = 1e6;
+/// Largest camera distance, metres.
+pub const CAMERA_DISTANCE_M: f64 = 1e4;
+
+/// `-limit ..= limit`.
+pub const fn symmetric(limit: f64) -> RangeInclusive<f64> {
+    -limit..=limit
+}
+
+/// `value` if it is finite and within `range`, else a sentence (the end of one that
+/// starts with the value's name) saying which range it must lie in.
+pub fn check(value: f64, range: &RangeInclusive<f64>, unit: &str) -> Result<f64, String> {
+    if !value.is_finite() {
+        return Err(format!("must be a finite number, got {value}"));
+    }
+    if range.contains(&value) {
+        return Ok(value);
+    }
+    Err(format!(
+        "{} is outside {}",
+        short(value),
+        describe(range, unit)
+    ))
+}
+
+/// A range in words: `-1000 … 1000 m`.
+pub fn describe(range: &RangeInclusive<f64>, unit: &str) -> String {
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    format!(
+        "the accepted range {} … {}{unit}",
+        short(*range.start()),
+        short(*range.end())
+    )
+}
+
+/// A number as people write it: `1000`, `1e6`, `0.001`.
+pub fn short(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && !(1e-3..1e5).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_read_as_sentences() {
+        assert_eq!(
+            check(1e308, &symmetric(TIME_S), "s").unwrap_err(),
+            "1e308 is outside the accepted range -1e6 … 1e6 s"
+        );
+        assert_eq!(
+            check(f64::NAN, &symmetric(1.0), "").unwrap_err(),
+            "must be a finite number, got NaN"
+        );
+        assert_eq!(check(-2.5, &symmetric(LENGTH_M), "m"), Ok(-2.5));
+        assert_eq!(short(0.5), "0.5");
+        assert_eq!(short(1e-7), "1e-7");
+    }
+}
