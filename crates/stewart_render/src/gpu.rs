@@ -20,6 +20,17 @@ pub enum GpuError {
         /// The adapters found.
         available: String,
     },
+    /// An environment variable that chooses the adapter holds a value wgpu does not know
+    /// (wgpu would silently find no adapter).
+    #[error("{name} is `{value}`, which is not one of {expected}")]
+    BadSetting {
+        /// The variable.
+        name: &'static str,
+        /// Its value.
+        value: String,
+        /// What it may be.
+        expected: &'static str,
+    },
     /// The adapter refused to open a device.
     #[error("the graphics adapter `{adapter}` could not open a device: {message}")]
     Device {
@@ -42,6 +53,38 @@ pub struct Gpu {
     pub queue: wgpu::Queue,
 }
 
+/// The backend names `WGPU_BACKEND` may list (comma-separated), as wgpu reads them.
+const BACKEND_NAMES: [&str; 10] = [
+    "vulkan", "vk", "dx12", "d3d12", "metal", "mtl", "opengl", "gles", "gl", "webgpu",
+];
+
+/// Check the environment variables that choose the adapter: a misspelt `WGPU_BACKEND`
+/// (say `vulcan`) would otherwise look like a machine without any adapter.
+pub fn check_environment() -> Result<(), GpuError> {
+    if let Some(value) = std::env::var_os("WGPU_BACKEND") {
+        let text = value.to_string_lossy().into_owned();
+        let known = |name: &str| BACKEND_NAMES.contains(&name.trim().to_lowercase().as_str());
+        if text.trim().is_empty() || !text.split(',').all(known) {
+            return Err(GpuError::BadSetting {
+                name: "WGPU_BACKEND",
+                value: text,
+                expected: "vulkan, gl, metal, dx12 or webgpu (comma-separated)",
+            });
+        }
+    }
+    if let Some(value) = std::env::var_os("WGPU_POWER_PREF") {
+        let text = value.to_string_lossy().into_owned();
+        if !["low", "high", "none"].contains(&text.to_lowercase().as_str()) {
+            return Err(GpuError::BadSetting {
+                name: "WGPU_POWER_PREF",
+                value: text,
+                expected: "low, high or none",
+            });
+        }
+    }
+    Ok(())
+}
+
 impl Gpu {
     /// A device for offscreen rendering: a real GPU when present, otherwise a software
     /// adapter (lavapipe). Honours `WGPU_BACKEND` (e.g. `vulkan`, `gl`) and
@@ -51,6 +94,7 @@ impl Gpu {
     }
 
     async fn headless_async() -> Result<Gpu, GpuError> {
+        check_environment()?;
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = Self::choose_adapter(&instance).await?;

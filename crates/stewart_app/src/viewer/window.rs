@@ -92,6 +92,8 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
             "the viewer needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set: run it on a desktop, or under `xvfb-run -a stewart view` (every other command works without a display)"
         ));
     }
+    check_scale_factor_setting()?;
+    stewart_render::gpu::check_environment()?;
     let event_loop = EventLoop::new().map_err(|e| anyhow!("cannot open the window system: {e}"))?;
     let mut app = App {
         state,
@@ -117,6 +119,46 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
     }
 }
 
+/// The largest window side in physical pixels: egui-wgpu asks the GPU for textures of
+/// up to 8192 pixels a side (the depth and MSAA buffers cover the whole window).
+const MAX_SURFACE_SIDE: u32 = 8192;
+
+/// Largest HiDPI scale factor accepted from `WINIT_X11_SCALE_FACTOR`.
+const MAX_SCALE_FACTOR: f64 = 16.0;
+
+/// winit panics on a `WINIT_X11_SCALE_FACTOR` it cannot read: check it first.
+fn check_scale_factor_setting() -> Result<()> {
+    let Some(value) = std::env::var_os("WINIT_X11_SCALE_FACTOR") else {
+        return Ok(());
+    };
+    let text = value.to_string_lossy();
+    if text == "randr" {
+        return Ok(());
+    }
+    match text.parse::<f64>() {
+        Ok(f) if f.is_normal() && f > 0.0 && f <= MAX_SCALE_FACTOR => Ok(()),
+        _ => Err(anyhow!(
+            "WINIT_X11_SCALE_FACTOR is `{text}`: it must be `randr` or a number above 0 and at most {MAX_SCALE_FACTOR}"
+        )),
+    }
+}
+
+/// The logical window size that fits the largest surface at `scale` (never larger
+/// than asked).
+fn fitting_size(asked: (u32, u32), scale: f64) -> (f64, f64) {
+    let limit = f64::from(MAX_SURFACE_SIDE) / scale.max(1e-3);
+    let (w, h) = (f64::from(asked.0), f64::from(asked.1));
+    let shrink = (limit / w).min(limit / h).min(1.0);
+    ((w * shrink).floor().max(1.0), (h * shrink).floor().max(1.0))
+}
+
+/// A physical size clamped to the largest surface, so that a window stretched across
+/// several monitors cannot ask the GPU for a texture it refuses.
+fn clamp_surface(w: NonZeroU32, h: NonZeroU32) -> (NonZeroU32, NonZeroU32) {
+    let clamp = |v: NonZeroU32| v.min(NonZeroU32::MIN.saturating_add(MAX_SURFACE_SIDE - 1));
+    (clamp(w), clamp(h))
+}
+
 impl App {
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
         let attributes = Window::default_attributes()
@@ -124,15 +166,33 @@ impl App {
                 "Stewart platform studio — {}",
                 self.state.scenario.name
             ))
-            .with_inner_size(winit::dpi::LogicalSize::new(
-                self.options.size.0 as f64,
-                self.options.size.1 as f64,
+            .with_inner_size({
+                // A HiDPI scale makes the window larger in pixels than asked in points:
+                // keep it within what the GPU can draw into.
+                let scale = event_loop
+                    .primary_monitor()
+                    .map_or(1.0, |m| m.scale_factor());
+                let (w, h) = fitting_size(self.options.size, scale);
+                winit::dpi::LogicalSize::new(w, h)
+            })
+            .with_max_inner_size(winit::dpi::PhysicalSize::new(
+                MAX_SURFACE_SIDE,
+                MAX_SURFACE_SIDE,
             ));
         let window = Arc::new(
             event_loop
                 .create_window(attributes)
                 .map_err(|e| anyhow!("cannot create the window: {e}"))?,
         );
+        let size = window.inner_size();
+        if size.width > MAX_SURFACE_SIDE || size.height > MAX_SURFACE_SIDE {
+            return Err(anyhow!(
+                "the window is {}×{} pixels at scale {}; the GPU surface can be at most {MAX_SURFACE_SIDE} pixels a side: choose a smaller --size",
+                size.width,
+                size.height,
+                window.scale_factor()
+            ));
+        }
         let options = egui_wgpu::RendererOptions {
             msaa_samples: SAMPLES,
             depth_stencil_format: Some(stewart_render::renderer::DEPTH_FORMAT),
@@ -280,6 +340,7 @@ impl ApplicationHandler for App {
                 if let (Some(w), Some(h)) =
                     (NonZeroU32::new(size.width), NonZeroU32::new(size.height))
                 {
+                    let (w, h) = clamp_surface(w, h);
                     open.painter.on_window_resized(ViewportId::ROOT, w, h);
                 }
             }
@@ -300,5 +361,23 @@ impl ApplicationHandler for App {
             open.window.request_redraw();
         }
         event_loop.set_control_flow(ControlFlow::Wait);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn windows_fit_the_largest_surface_at_any_scale() {
+        assert_eq!(fitting_size((1280, 720), 1.0), (1280.0, 720.0));
+        let (w, h) = fitting_size((3000, 720), 3.0);
+        assert!(w * 3.0 <= 8192.0 && h * 3.0 <= 8192.0, "{w}×{h}");
+        assert!(
+            (w / h - 3000.0 / 720.0).abs() < 0.01,
+            "aspect kept: {w}×{h}"
+        );
+        let n = |v| NonZeroU32::new(v).unwrap_or(NonZeroU32::MIN);
+        assert_eq!(clamp_surface(n(9000), n(100)), (n(8192), n(100)));
     }
 }
