@@ -243,6 +243,10 @@ pub struct WorkspaceArgs {
     /// Position X,Y,Z (metres) at which to report the orientation range (default: home).
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
     pub position: Option<[f64; 3]>,
+    /// Run even when the estimated cost is over the budget (2 minutes, 2 GB of spans);
+    /// a long run shows progress and Ctrl-C stops it.
+    #[arg(long)]
+    pub no_budget: bool,
     /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
     #[arg(long, value_name = "FILE.csv|FILE.ply")]
     pub out: Option<PathBuf>,

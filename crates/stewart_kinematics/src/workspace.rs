@@ -15,6 +15,8 @@
 //! sampled in `z` at the column spacing and only the allowed samples count, so the
 //! result is then a sampled (not exact-in-`z`) estimate.
 
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+
 use nalgebra::Vector3;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -31,6 +33,9 @@ pub enum WorkspaceError {
     /// Without both stroke limits the workspace is unbounded or meaningless.
     #[error("the workspace needs both stroke limits (`leg_min` and `leg_max` in [geometry])")]
     NoStroke,
+    /// Stopped through [`WorkspaceControl::cancel`].
+    #[error("the workspace computation was stopped before it finished")]
+    Cancelled,
     /// Resolution out of range.
     #[error("the resolution must be between 2 and {max} columns per side, got {got}")]
     Resolution {
@@ -43,6 +48,33 @@ pub enum WorkspaceError {
 
 /// Largest resolution (columns per side): 16 million columns.
 pub const MAX_RESOLUTION: usize = 4096;
+
+/// Resolution of the probe [`Geometry::workspace_cost`] runs to estimate a request's cost.
+pub const PROBE_RESOLUTION: usize = 64;
+
+/// Progress and cancellation of a long workspace computation, shared with the thread
+/// that shows progress (or takes Ctrl-C).
+#[derive(Debug, Default)]
+pub struct WorkspaceControl {
+    /// Rows of the grid finished so far (of `resolution`).
+    pub rows_done: AtomicUsize,
+    /// Pose-limit evaluations made so far (cone and clearance samples).
+    pub evaluations: AtomicU64,
+    /// Set to stop the computation early ([`WorkspaceError::Cancelled`]).
+    pub cancel: AtomicBool,
+}
+
+/// What a workspace request will cost, estimated from a coarse probe.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorkspaceCost {
+    /// Columns of the grid.
+    pub columns: f64,
+    /// Pose-limit evaluations (cone and clearance samples): they dominate the time, and
+    /// grow as the cube of the resolution.
+    pub evaluations: f64,
+    /// Memory the reachable spans take, bytes.
+    pub bytes: f64,
+}
 
 /// At most this many separate reachable `z` intervals per column (each shell contributes
 /// at most two, and intervals only split where shells cut them).
@@ -195,6 +227,48 @@ impl Geometry {
         orientation: [Angle; 3],
         resolution: usize,
     ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
+        self.constant_orientation_workspace_with(
+            limits,
+            orientation,
+            resolution,
+            &WorkspaceControl::default(),
+        )
+    }
+
+    /// The cost of [`Geometry::constant_orientation_workspace`] at `resolution`, from a
+    /// probe at [`PROBE_RESOLUTION`]: columns scale as N², pose-limit evaluations as N³
+    /// (samples along each column are as fine as the grid), spans as N².
+    pub fn workspace_cost(
+        &self,
+        limits: &Limits,
+        orientation: [Angle; 3],
+        resolution: usize,
+    ) -> Result<WorkspaceCost, WorkspaceError> {
+        let control = WorkspaceControl::default();
+        let probe = self.constant_orientation_workspace_with(
+            limits,
+            orientation,
+            PROBE_RESOLUTION,
+            &control,
+        )?;
+        let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
+        let evaluations = control.evaluations.load(Ordering::Relaxed) as f64;
+        Ok(WorkspaceCost {
+            columns: (resolution * resolution) as f64,
+            evaluations: evaluations * ratio.powi(3),
+            bytes: (probe.spans.len() * size_of::<[f64; 4]>()) as f64 * ratio.powi(2),
+        })
+    }
+
+    /// [`Geometry::constant_orientation_workspace`], counting progress on `control` and
+    /// stopping early (with [`WorkspaceError::Cancelled`]) when its `cancel` flag is set.
+    pub fn constant_orientation_workspace_with(
+        &self,
+        limits: &Limits,
+        orientation: [Angle; 3],
+        resolution: usize,
+        control: &WorkspaceControl,
+    ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
         let (Some(min), Some(max)) = (self.stroke().min, self.stroke().max) else {
             return Err(WorkspaceError::NoStroke);
         };
@@ -228,11 +302,14 @@ impl Geometry {
                 let mut spans = [(0.0, 0.0); MAX_SPANS];
                 let mut row = Vec::new();
                 for j in 0..resolution {
+                    if control.cancel.load(Ordering::Relaxed) {
+                        break;
+                    }
                     let y = y0 + (j as f64 + 0.5) * cell;
                     let k = shells.column(x, y, &mut spans);
                     for &(z0, z1) in &spans[..k] {
                         if pose_limits {
-                            self.sample_span(
+                            let n = self.sample_span(
                                 limits,
                                 [roll, pitch, yaw],
                                 x,
@@ -242,14 +319,19 @@ impl Geometry {
                                 cell,
                                 &mut row,
                             );
+                            control.evaluations.fetch_add(n as u64, Ordering::Relaxed);
                         } else {
                             row.push([x, y, z0, z1]);
                         }
                     }
                 }
+                control.rows_done.fetch_add(1, Ordering::Relaxed);
                 row
             })
             .collect();
+        if control.cancel.load(Ordering::Relaxed) {
+            return Err(WorkspaceError::Cancelled);
+        }
         // Report platform-centre positions: with a pivot offset `c` the centre sits at
         // `p + c − R c`, a constant shift at a fixed orientation.
         let shift = self.pivot() - rotation * self.pivot();
@@ -285,7 +367,7 @@ impl Geometry {
     }
 
     /// Split the stroke-reachable span `[z0, z1]` of a column into runs of `z` samples
-    /// (spacing `dz`) that also respect the pose limits.
+    /// (spacing `dz`) that also respect the pose limits; returns the samples evaluated.
     #[allow(clippy::too_many_arguments)]
     fn sample_span(
         &self,
@@ -297,7 +379,7 @@ impl Geometry {
         z1: f64,
         dz: f64,
         out: &mut Vec<[f64; 4]>,
-    ) {
+    ) -> usize {
         let count = ((z1 - z0) / dz).ceil().max(1.0) as usize;
         let step = (z1 - z0) / count as f64;
         let mut run: Option<f64> = None;
@@ -318,6 +400,7 @@ impl Geometry {
         if let Some(start) = run {
             out.push([x, y, start, z1]);
         }
+        count
     }
 
     /// The range of one angle (others held at the given values) reachable at `pose`'s

@@ -3,10 +3,17 @@
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
-use anyhow::{Result, anyhow};
+use std::io::Write as _;
+use std::sync::atomic::Ordering;
+use std::time::{Duration, Instant};
+
+use anyhow::{Result, anyhow, bail};
+use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
-use stewart_kinematics::workspace::{Axis, ConstantOrientationWorkspace};
-use stewart_kinematics::{Angle, Pose};
+use stewart_kinematics::workspace::{
+    Axis, ConstantOrientationWorkspace, PROBE_RESOLUTION, WorkspaceControl, WorkspaceError,
+};
+use stewart_kinematics::{Angle, Geometry, Limits, Pose};
 
 use crate::cli::WorkspaceArgs;
 use crate::csv_io::CsvText;
@@ -19,10 +26,12 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
-    let ws = g.constant_orientation_workspace(
+    let ws = compute(
+        g,
         &scenario.limits,
         orientation,
         usize::from(args.resolution),
+        args.no_budget,
     )?;
     let [r, p, y] = args.orientation;
     let mut s = String::new();
@@ -107,6 +116,104 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     }
     output::stdout(s.as_bytes())?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The most time a workspace request may be estimated to take without `--no-budget`.
+pub const BUDGET_SECONDS: f64 = 120.0;
+/// The most memory its reachable spans may be estimated to take without `--no-budget`.
+pub const BUDGET_BYTES: f64 = 2.0 * 1024.0 * 1024.0 * 1024.0;
+
+/// Estimate the request's cost from a coarse probe, refuse it above the budget, and run
+/// it with a progress bar and Ctrl-C when it is long.
+fn compute(
+    g: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    resolution: usize,
+    no_budget: bool,
+) -> Result<ConstantOrientationWorkspace> {
+    let started = Instant::now();
+    let cost = g.workspace_cost(limits, orientation, resolution)?;
+    let probe_seconds = started.elapsed().as_secs_f64();
+    // Time grows as N³ with cone or clearance limits (samples along each column), else N².
+    let power = if limits.has_pose_limits() { 3 } else { 2 };
+    let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
+    let seconds = probe_seconds * ratio.powi(power);
+    let over = seconds > BUDGET_SECONDS || cost.bytes > BUDGET_BYTES;
+    let cost_words = format!(
+        "about {}, {:.2e} limit evaluations and {:.0} MB",
+        duration_words(seconds),
+        cost.evaluations,
+        cost.bytes / 1e6
+    );
+    if over && !no_budget {
+        let fits = |n: f64| {
+            let r = n / PROBE_RESOLUTION as f64;
+            probe_seconds * r.powi(power) <= BUDGET_SECONDS
+                && cost.bytes / (ratio * ratio) * r * r <= BUDGET_BYTES
+        };
+        let suggestion = (2..resolution).rev().find(|&n| fits(n as f64)).unwrap_or(2);
+        bail!(
+            "a {resolution} × {resolution} workspace{} would take {cost_words}; the budget is {} and {:.0} GB: use --resolution {suggestion} or lower, or --no-budget to run it anyway (Ctrl-C stops it)",
+            if power == 3 {
+                " with cone and clearance limits"
+            } else {
+                ""
+            },
+            duration_words(BUDGET_SECONDS),
+            BUDGET_BYTES / 1e9
+        );
+    }
+    let control = WorkspaceControl::default();
+    let stop = crate::interrupt::flag();
+    let long = seconds > 2.0;
+    if long {
+        let _ = writeln!(
+            std::io::stderr(),
+            "Computing a {resolution} × {resolution} workspace: {cost_words} (Ctrl-C stops it)."
+        );
+    }
+    let progress = if long {
+        let bar = ProgressBar::new(resolution as u64);
+        bar.set_style(
+            ProgressStyle::with_template("{bar:40} {pos}/{len} rows  {eta} left")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        bar
+    } else {
+        ProgressBar::hidden()
+    };
+    let result = std::thread::scope(|scope| {
+        let worker = scope.spawn(|| {
+            g.constant_orientation_workspace_with(limits, orientation, resolution, &control)
+        });
+        while !worker.is_finished() {
+            if stop.load(Ordering::Relaxed) {
+                control.cancel.store(true, Ordering::Relaxed);
+            }
+            progress.set_position(control.rows_done.load(Ordering::Relaxed) as u64);
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        worker.join()
+    });
+    progress.finish_and_clear();
+    match result {
+        Ok(Ok(ws)) => Ok(ws),
+        Ok(Err(WorkspaceError::Cancelled)) => bail!("interrupted: nothing was written"),
+        Ok(Err(e)) => Err(e.into()),
+        Err(_) => bail!("internal error: the workspace computation panicked"),
+    }
+}
+
+/// Seconds in words: `40 s`, `12 min`, `3.1 h`.
+fn duration_words(seconds: f64) -> String {
+    if seconds < 90.0 {
+        format!("{seconds:.0} s")
+    } else if seconds < 5400.0 {
+        format!("{:.0} min", seconds / 60.0)
+    } else {
+        format!("{:.1} h", seconds / 3600.0)
+    }
 }
 
 /// The boundary points (bottom and top of every reachable span) as CSV or PLY.
