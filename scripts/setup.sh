@@ -10,6 +10,7 @@ PACKAGES=(gcc libc6-dev pkg-config ca-certificates
   fonts-dejavu-core                                                      # text in PDF and PNG plots
   poppler-utils                                                          # pdftoppm: tests open exported PDFs
   xvfb xauth                                                             # a virtual display for the viewer's smoke test
+  time                                                                   # GNU time: peak memory in scripts/bench-inputs.sh
 )
 
 missing=()

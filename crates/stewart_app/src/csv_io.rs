@@ -45,28 +45,43 @@ impl CsvText {
     }
 }
 
-/// CSV rows written straight to a writer (no whole-file string): what large tables use.
-pub struct CsvWriter<'a> {
-    out: &'a mut dyn Write,
-    line: String,
-}
+/// Rows formatted per task when a table is written on all cores.
+const ROWS_PER_TASK: usize = 4096;
+/// Rows formatted before they are written (bounds the memory of a large table).
+const ROWS_PER_BATCH: usize = 64 * ROWS_PER_TASK;
 
-impl<'a> CsvWriter<'a> {
-    /// Write the header `columns` to `out`.
-    pub fn new<S: AsRef<str>>(out: &'a mut dyn Write, columns: &[S]) -> std::io::Result<Self> {
-        out.write_all(header_line(columns).as_bytes())?;
-        Ok(Self {
-            out,
-            line: String::with_capacity(256),
-        })
+/// Write a whole table: the header, then rows `0..count` whose values `row(k)` gives.
+/// Numbers are formatted on all cores, batch by batch, and written in order.
+pub fn write_table<F, I>(
+    out: &mut dyn Write,
+    columns: &[&str],
+    count: usize,
+    row: F,
+) -> std::io::Result<()>
+where
+    F: Fn(usize) -> I + Sync,
+    I: IntoIterator<Item = f64>,
+{
+    use rayon::prelude::*;
+    out.write_all(header_line(columns).as_bytes())?;
+    for batch in (0..count).step_by(ROWS_PER_BATCH) {
+        let end = (batch + ROWS_PER_BATCH).min(count);
+        let starts: Vec<usize> = (batch..end).step_by(ROWS_PER_TASK).collect();
+        let texts: Vec<String> = starts
+            .par_iter()
+            .map(|&first| {
+                let mut text = String::with_capacity(200 * ROWS_PER_TASK);
+                for k in first..(first + ROWS_PER_TASK).min(end) {
+                    push_row(&mut text, row(k));
+                }
+                text
+            })
+            .collect();
+        for text in texts {
+            out.write_all(text.as_bytes())?;
+        }
     }
-
-    /// Write one row.
-    pub fn row(&mut self, values: impl IntoIterator<Item = f64>) -> std::io::Result<()> {
-        self.line.clear();
-        push_row(&mut self.line, values);
-        self.out.write_all(self.line.as_bytes())
-    }
+    Ok(())
 }
 
 fn header_line<S: AsRef<str>>(columns: &[S]) -> String {

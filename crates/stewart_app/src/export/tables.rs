@@ -6,7 +6,7 @@ use stewart_kinematics::{Geometry, Pose, Scenario};
 
 use std::io::Write;
 
-use crate::csv_io::CsvWriter;
+use crate::csv_io::write_table;
 
 /// The sampled trajectory as a pose table. Angles are rounded through degrees as printed,
 /// and the legs are solved for those printed poses, so that every row is a consistent
@@ -46,14 +46,10 @@ pub fn write_legs_csv(
     }
     header.extend(POSE_COLUMNS);
     header.extend(["L1", "L2", "L3", "L4", "L5", "L6"]);
-    let mut csv = CsvWriter::new(out, &header)?;
-    for (k, (v, l)) in table.values.iter().zip(&lengths).enumerate() {
+    write_table(out, &header, table.values.len(), |k| {
         let t = table.times.as_ref().map(|t| t[k]);
-        csv.row(
-            t.into_iter()
-                .chain(v.iter().copied())
-                .chain(l.iter().copied()),
-        )?;
-    }
-    Ok(())
+        t.into_iter()
+            .chain(table.values[k].iter().copied())
+            .chain(lengths[k].iter().copied())
+    })
 }
