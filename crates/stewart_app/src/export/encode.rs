@@ -73,9 +73,17 @@ impl FfmpegChild {
     /// Wait for ffmpeg to finish after its input was closed; its error output on failure.
     fn finish(&mut self, staged: &Path, out: &Path) -> Result<()> {
         let status = self.child.wait().context("ffmpeg did not finish")?;
-        if status.success() {
+        // At `-loglevel error` anything ffmpeg says is an error, and some errors (a full
+        // disk while it rewrites the file for `+faststart`) still end with status 0.
+        let said = self
+            .stderr
+            .take()
+            .and_then(|h| h.join().ok())
+            .unwrap_or_default();
+        if status.success() && said.trim().is_empty() {
             return Ok(());
         }
+        self.stderr = Some(std::thread::spawn(move || said));
         bail!("ffmpeg failed: {}", self.message(staged, out));
     }
 
@@ -87,11 +95,16 @@ impl FfmpegChild {
             .and_then(|h| h.join().ok())
             .unwrap_or_default();
         let text = text.replace(&staged.display().to_string(), &out.display().to_string());
-        let text = text.trim();
-        if text.is_empty() {
+        // One line, like every error: ffmpeg's lines joined.
+        let lines: Vec<&str> = text
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect();
+        if lines.is_empty() {
             "it stopped without saying why".to_owned()
         } else {
-            text.to_owned()
+            lines.join("; ")
         }
     }
 }

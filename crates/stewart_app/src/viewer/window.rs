@@ -87,13 +87,13 @@ struct App {
 
 /// Open the viewer on `state` and run until the window closes.
 pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
+    check_scale_factor_setting()?;
+    stewart_render::gpu::check_environment()?;
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {
         return Err(anyhow!(
             "the viewer needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is set: run it on a desktop, or under `xvfb-run -a stewart view` (every other command works without a display)"
         ));
     }
-    check_scale_factor_setting()?;
-    stewart_render::gpu::check_environment()?;
     let event_loop = EventLoop::new().map_err(|e| anyhow!("cannot open the window system: {e}"))?;
     let mut app = App {
         state,
