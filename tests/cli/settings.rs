@@ -19,6 +19,17 @@ fn settings_lists_every_key_with_value_unit_and_default() {
     assert_eq!(row("trajectory.radius_m")[1..3], ["0.15", "m"]);
     assert_eq!(row("trajectory.x.amplitude_m")[1], "(other");
     assert_eq!(row("limits.leg_speed_max_m_s")[1], "off");
+    // The accepted range (what files, --set and sliders may hold), before the default.
+    let radius = row("geometry.base_radius");
+    assert_eq!(
+        radius[radius.len() - 4..radius.len() - 1],
+        ["-1000", "..", "1000"]
+    );
+    let samples = row("trajectory.samples");
+    assert_eq!(
+        samples[samples.len() - 4..samples.len() - 1],
+        ["2", "..", "1e7"]
+    );
     assert_eq!(
         row("checks.jump_floor_m").last().map(String::as_str),
         Some("1e-4")

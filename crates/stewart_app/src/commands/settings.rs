@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::{Scenario, settings};
+use stewart_kinematics::{Scenario, bounds, settings};
 
 use crate::cli::SettingsArgs;
 use crate::source;
@@ -16,7 +16,7 @@ pub fn run(args: &SettingsArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The table: key, current value, unit, slider range, default.
+/// The table: key, current value, unit, slider range, accepted range, default.
 pub fn table(scenario: &Scenario) -> String {
     // Ten decimals hide the last-bit noise of angles stored in radians.
     let number = |v: Option<f64>| {
@@ -36,7 +36,7 @@ pub fn table(scenario: &Scenario) -> String {
             },
         )
     };
-    let rows: Vec<[String; 5]> = settings::all()
+    let rows: Vec<[String; 6]> = settings::all()
         .iter()
         .map(|s| {
             let value = if s.applies(scenario) {
@@ -53,12 +53,25 @@ pub fn table(scenario: &Scenario) -> String {
                     number(Some(*s.range.start())),
                     number(Some(*s.range.end()))
                 ),
+                format!(
+                    "{} .. {}",
+                    bounds::short(*s.accepted.start()),
+                    bounds::short(*s.accepted.end())
+                ),
                 number(s.default_for(scenario)),
             ]
         })
         .collect();
-    let header = ["key", "value", "unit", "slider range", "default"].map(str::to_owned);
-    let mut widths = [0; 5];
+    let header = [
+        "key",
+        "value",
+        "unit",
+        "slider range",
+        "accepted",
+        "default",
+    ]
+    .map(str::to_owned);
+    let mut widths = [0; 6];
     for row in std::iter::once(&header).chain(&rows) {
         for (w, cell) in widths.iter_mut().zip(row) {
             *w = (*w).max(cell.chars().count());
