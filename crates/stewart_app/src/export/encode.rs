@@ -42,6 +42,44 @@ impl Target {
             _ => Target::Folder(path.to_path_buf()),
         }
     }
+
+    /// The output path, checked before any work: a folder of frames must be new or
+    /// empty, a video must be a file (or a device or FIFO), and none of them an input.
+    pub fn destination(&self) -> Result<Destination> {
+        match self {
+            Target::Folder(out) => {
+                let dest = Destination::new(out, &[])?;
+                match dest.kind() {
+                    Kind::Folder => {
+                        let empty = std::fs::read_dir(dest.real())
+                            .map(|mut d| d.next().is_none())
+                            .unwrap_or(false);
+                        if !empty {
+                            bail!(
+                                "`{}` exists and is not an empty folder: choose a new folder for the frames",
+                                out.display()
+                            );
+                        }
+                    }
+                    Kind::Special => bail!(
+                        "`{}` is not a folder: PNG frames go into a new folder (or give a .gif or .mp4 file)",
+                        out.display()
+                    ),
+                    Kind::File if dest.real().exists() => bail!(
+                        "`{}` is a file: PNG frames go into a new folder (or give a .gif or .mp4 file)",
+                        out.display()
+                    ),
+                    Kind::File => {}
+                }
+                Ok(dest)
+            }
+            Target::Gif(out) | Target::Mp4(out) => {
+                let dest = Destination::new(out, &[])?;
+                dest.require_file()?;
+                Ok(dest)
+            }
+        }
+    }
 }
 
 /// One frame after a worker has dealt with it.
@@ -228,29 +266,7 @@ impl Staging {
         };
         match target {
             Target::Folder(out) => {
-                let dest = Destination::new(out, &[])?;
-                match dest.kind() {
-                    Kind::Folder => {
-                        let empty = std::fs::read_dir(dest.real())
-                            .map(|mut d| d.next().is_none())
-                            .unwrap_or(false);
-                        if !empty {
-                            bail!(
-                                "`{}` exists and is not an empty folder: choose a new folder for the frames",
-                                out.display()
-                            );
-                        }
-                    }
-                    Kind::Special => bail!(
-                        "`{}` is not a folder: PNG frames go into a new folder (or give a .gif or .mp4 file)",
-                        out.display()
-                    ),
-                    Kind::File if dest.real().exists() => bail!(
-                        "`{}` is a file: PNG frames go into a new folder (or give a .gif or .mp4 file)",
-                        out.display()
-                    ),
-                    Kind::File => {}
-                }
+                let dest = target.destination()?;
                 let dir = tempfile::Builder::new()
                     .prefix(".stewart-frames-")
                     .tempdir_in(dest.staging_dir())
@@ -262,9 +278,8 @@ impl Staging {
                     digits,
                 }))
             }
-            Target::Gif(out) => {
-                let dest = Destination::new(out, &[])?;
-                dest.require_file()?;
+            Target::Gif(_) => {
+                let dest = target.destination()?;
                 let (Ok(w), Ok(h)) = (u16::try_from(width), u16::try_from(height)) else {
                     bail!("a GIF can be at most 65535 pixels wide and high")
                 };
@@ -282,9 +297,8 @@ impl Staging {
                     delay_cs,
                 }))
             }
-            Target::Mp4(out) => {
-                let dest = Destination::new(out, &[])?;
-                dest.require_file()?;
+            Target::Mp4(_) => {
+                let dest = target.destination()?;
                 let file = staged_file(&dest, ".mp4")?.into_temp_path();
                 let mut ffmpeg = spawn_ffmpeg(width, height, fps, &file)?;
                 let stdin = ffmpeg.child.stdin.take();

@@ -135,6 +135,7 @@ pub fn export_video(
     // Only the exported frames' times are kept.
     let times: Vec<f64> = range.clone().map(|k| plan.time(k)).collect();
     let target = Target::from_path(&request.out);
+    target.destination()?;
     if matches!(target, Target::Mp4(_)) {
         encode::check_ffmpeg()?;
     }
