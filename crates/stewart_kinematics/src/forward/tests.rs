@@ -43,7 +43,9 @@ proptest! {
         let lengths = g.leg_lengths(&truth);
         let start = Pose::from_xyz_rpy_deg([x + dx, y - dx, z + dx], [r + dr, p - dr, w + dr]);
         let sol = g.forward(&lengths, &start, &ForwardOptions::default()).unwrap_or_else(|e| panic!("{e}"));
-        prop_assert!(sol.iterations <= 8, "{} iterations", sol.iterations);
+        // Quadratic convergence from a nearby start, where the pose is determined well.
+        let kappa = g.conditioning(&truth).condition_number.unwrap_or(f64::INFINITY);
+        prop_assert!(sol.iterations <= 8 || kappa >= WELL_CONDITIONED, "{} iterations at κ = {kappa}", sol.iterations);
         check_solution(&g, &sol, &lengths, &truth);
     }
 
@@ -180,4 +182,29 @@ fn near_singular_poses_can_share_their_leg_lengths_with_a_neighbour() {
         .forward(&la, &a, &ForwardOptions::default())
         .unwrap_or_else(|e| panic!("{e}"));
     check_solution(&g, &sol, &la, &a);
+}
+
+#[test]
+fn a_near_singular_warm_start_still_converges() {
+    // Found by proptest: κ ≈ 159 here, and Newton needs 9 iterations instead of ≤ 8; the
+    // iteration bound of the property holds only for well-conditioned poses.
+    let g = crate::test_support::paired_geometry();
+    let truth = Pose::from_xyz_rpy_deg(
+        [-0.21302707904320878, 0.25627429016433, 0.5025641919662236],
+        [20.128164901055573, 17.741456521448413, 39.25403373045656],
+    );
+    let kappa = g
+        .conditioning(&truth)
+        .condition_number
+        .unwrap_or(f64::INFINITY);
+    assert!(kappa > WELL_CONDITIONED, "κ = {kappa}");
+    let (dx, dr) = (0.0004749692534870331, -0.4664420807893896);
+    let [x, y, z] = [truth.position.x, truth.position.y, truth.position.z];
+    let [r, p, w] = truth.rpy_degrees();
+    let start = Pose::from_xyz_rpy_deg([x + dx, y - dx, z + dx], [r + dr, p - dr, w + dr]);
+    let lengths = g.leg_lengths(&truth);
+    let sol = g
+        .forward(&lengths, &start, &ForwardOptions::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    check_solution(&g, &sol, &lengths, &truth);
 }
