@@ -212,3 +212,36 @@ fn unusable_input_gives_status_2() {
         stderr(&o)
     );
 }
+
+#[test]
+fn every_pair_of_legs_too_close_is_reported() {
+    // The paired layout's three pairs are equally close: all three are findings, not
+    // only the closest of each sample.
+    let o = stewart(&[
+        "check",
+        "--preset",
+        "paired",
+        "--set",
+        "limits.leg_radius_m=0.11",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let report = json(&o);
+    let mut pairs: Vec<Vec<u64>> = report["findings"]
+        .as_array()
+        .map(|f| {
+            f.iter()
+                .filter(|f| f["kind"] == "leg_collision")
+                .map(|f| {
+                    f["legs"]
+                        .as_array()
+                        .map(|l| l.iter().filter_map(serde_json::Value::as_u64).collect())
+                        .unwrap_or_default()
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    pairs.sort();
+    assert_eq!(pairs, vec![vec![1, 2], vec![3, 4], vec![5, 6]]);
+}

@@ -67,28 +67,48 @@ pub struct ClosestLegs {
     pub distance: f64,
 }
 
+/// The fifteen pairs of legs `(i, j)`, `i < j`, numbered from 0.
+pub const LEG_PAIRS: [(usize, usize); 15] = {
+    let mut pairs = [(0, 0); 15];
+    let mut k = 0;
+    let mut i = 0;
+    while i < 6 {
+        let mut j = i + 1;
+        while j < 6 {
+            pairs[k] = (i, j);
+            k += 1;
+            j += 1;
+        }
+        i += 1;
+    }
+    pairs
+};
+
+/// The distance between the axes (segments, base joint to platform joint) of every pair
+/// of legs, in the order of [`LEG_PAIRS`].
+pub fn pair_distances(solution: &LegSolution) -> [f64; 15] {
+    LEG_PAIRS.map(|(i, j)| {
+        segment_distance(
+            solution.platform_joints[i] - solution.legs[i],
+            solution.platform_joints[i],
+            solution.platform_joints[j] - solution.legs[j],
+            solution.platform_joints[j],
+        )
+    })
+}
+
 /// The closest pair of leg segments (base joint to platform joint).
 pub fn closest_legs(solution: &LegSolution) -> ClosestLegs {
     let mut best = ClosestLegs {
         legs: (1, 2),
         distance: f64::INFINITY,
     };
-    for i in 0..6 {
-        for j in i + 1..6 {
-            let p0 = solution.platform_joints[i] - solution.legs[i];
-            let q0 = solution.platform_joints[j] - solution.legs[j];
-            let d = segment_distance(
-                p0,
-                solution.platform_joints[i],
-                q0,
-                solution.platform_joints[j],
-            );
-            if d < best.distance {
-                best = ClosestLegs {
-                    legs: (i + 1, j + 1),
-                    distance: d,
-                };
-            }
+    for (&(i, j), &d) in LEG_PAIRS.iter().zip(&pair_distances(solution)) {
+        if d < best.distance {
+            best = ClosestLegs {
+                legs: (i + 1, j + 1),
+                distance: d,
+            };
         }
     }
     best

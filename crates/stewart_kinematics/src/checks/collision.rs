@@ -1,12 +1,13 @@
 //! Leg-to-leg clearance: legs as cylinders of the given radius around their axes.
 
 use super::FindingKind;
-use super::scan::{Bound, Collected, scan_one};
+use super::scan::{Bound, Collected, scan_columns};
 use crate::inverse::LegSolution;
-use crate::limits::{Limits, closest_legs};
+use crate::limits::{LEG_PAIRS, Limits, pair_distances};
 
-/// A finding when two legs come closer than twice the leg radius; the summary gives the
-/// smallest axis distance and the pair.
+/// A finding for every pair of legs that comes closer than twice the leg radius (pairs
+/// that are as close as each other are all reported); the summary gives the smallest
+/// axis distance and its pair.
 pub(crate) fn check(
     limits: &Limits,
     times: &[f64],
@@ -16,16 +17,17 @@ pub(crate) fn check(
     let Some(radius) = limits.leg_radius else {
         return;
     };
-    let series = solutions.iter().map(|s| {
-        let c = closest_legs(s);
-        (c.distance, vec![c.legs.0, c.legs.1])
-    });
-    scan_one(
+    let distances: Vec<[f64; 15]> = solutions.iter().map(pair_distances).collect();
+    scan_columns(
         FindingKind::LegCollision,
         "m",
         Bound::AtLeast(2.0 * radius),
         times,
-        series,
+        &distances,
+        |pair| {
+            let (i, j) = LEG_PAIRS[pair];
+            vec![i + 1, j + 1]
+        },
         out,
     );
 }

@@ -94,9 +94,25 @@ pub(crate) fn scan_legs(
     values: &[[f64; 6]],
     out: &mut Collected,
 ) {
+    scan_columns(kind, unit, bound, times, values, |leg| vec![leg + 1], out);
+}
+
+/// Scan `N` series stored column-wise (`values[k][c]` is series `c` at sample `k`,
+/// attributed to the legs `legs_of(c)`): one finding per series outside the bound, one
+/// summary of the worst sample overall.
+pub(crate) fn scan_columns<const N: usize>(
+    kind: FindingKind,
+    unit: &str,
+    bound: Bound,
+    times: &[f64],
+    values: &[[f64; N]],
+    legs_of: impl Fn(usize) -> Vec<usize>,
+    out: &mut Collected,
+) {
     let mut overall: Option<LimitSummary> = None;
-    for leg in 0..6 {
-        let series = values.iter().map(|v| (v[leg], vec![leg + 1]));
+    for c in 0..N {
+        let legs = legs_of(c);
+        let series = values.iter().map(|v| (v[c], legs.clone()));
         let (finding, summary) = scan(kind, unit, bound, times, series);
         out.findings.extend(finding);
         if let Some(s) = summary
