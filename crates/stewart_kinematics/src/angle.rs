@@ -43,7 +43,18 @@ impl Angle {
     /// The angle in degrees.
     #[inline]
     pub fn degrees(self) -> f64 {
-        self.radians.to_degrees()
+        let raw = self.radians.to_degrees();
+        // The shortest decimal (up to 12 places) that is the very same angle, so that 60°
+        // reads back as 60 and not 59.99999999999999: same radians, to the last bit.
+        let mut scale = 1.0;
+        for _ in 0..=12 {
+            let d = (raw * scale).round() / scale;
+            if d.to_radians() == self.radians {
+                return d;
+            }
+            scale *= 10.0;
+        }
+        raw
     }
 
     /// Sine and cosine of the angle.
@@ -101,6 +112,16 @@ impl fmt::Display for Angle {
 mod tests {
     use super::*;
     use std::f64::consts::PI;
+
+    #[test]
+    fn degrees_read_back_as_written() {
+        for d in [60.0, 30.0, 120.0, 12.3, 0.1, -45.5, 359.999, 1e-7, 3600.0] {
+            assert_eq!(Angle::from_degrees(d).degrees(), d);
+        }
+        // An angle that is no short decimal keeps every bit.
+        let a = Angle::from_radians(1.0);
+        assert_eq!(a.degrees().to_radians(), 1.0);
+    }
 
     #[test]
     fn degrees_and_radians_agree_on_known_values() {
