@@ -245,3 +245,22 @@ fn every_pair_of_legs_too_close_is_reported() {
     pairs.sort();
     assert_eq!(pairs, vec![vec![1, 2], vec![3, 4], vec![5, 6]]);
 }
+
+#[test]
+fn a_singular_pose_is_reported_in_words_not_as_inf() {
+    // Found by the hostile suite: a keyframe moved to t = 1e6 s makes the spline sweep
+    // through singular poses; the condition number there is infinite.
+    let dir = tempdir();
+    let text = std::fs::read_to_string(format!(
+        "{}/../../assets/presets/keyframes.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap_or_else(|e| panic!("{e}"))
+    .replacen("t_s = 8.0", "t_s = 1e6", 1);
+    let file = write(dir.path(), "kf.toml", &text);
+    let o = stewart(&["check", "--scenario", &file]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("worst singular at t ="), "{out}");
+    assert!(!out.contains("inf"), "{out}");
+}

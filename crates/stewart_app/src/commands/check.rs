@@ -84,13 +84,20 @@ fn summary_line(s: &LimitSummary) -> String {
         format!(" {}", s.unit)
     };
     let verdict = if s.margin >= 0.0 { "ok" } else { "VIOLATED" };
+    // A singular pose has an infinite condition number: say so in words.
+    let (worst, margin) = if s.worst_value.is_finite() && s.margin.is_finite() {
+        (
+            format!("{:.4}{unit}", s.worst_value),
+            format!("{:.4}{unit}", s.margin),
+        )
+    } else {
+        ("singular".to_owned(), "none".to_owned())
+    };
     format!(
-        "  {:<20} worst {:.4}{unit}{at} at t = {:.3} s, limit {}{unit}, margin {:.4}{unit}  {verdict}",
+        "  {:<20} worst {worst}{at} at t = {:.3} s, limit {}{unit}, margin {margin}  {verdict}",
         limit_name(s.kind),
-        s.worst_value,
         s.worst_time,
         s.limit,
-        s.margin
     )
 }
 
