@@ -5,7 +5,8 @@ use std::time::{Duration, Instant};
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::{ExportKind, ViewerState};
+use stewart_app::viewer::exports::ExportKind;
+use stewart_app::viewer::state::ViewerState;
 
 use crate::tall_harness;
 
@@ -15,7 +16,7 @@ const HEIGHT: f32 = 2400.0;
 /// Step the UI until the export ends; the outcome shown.
 fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
     let started = Instant::now();
-    while h.state().export_job.is_some() {
+    while h.state().exports.job.is_some() {
         assert!(
             started.elapsed() < Duration::from_secs(120),
             "export did not end"
@@ -24,7 +25,8 @@ fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
         h.run();
     }
     h.state()
-        .export_status
+        .exports
+        .status
         .clone()
         .unwrap_or_else(|| Err("no outcome".to_owned()))
 }
@@ -36,7 +38,7 @@ fn export_to(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::pat
     h.run();
     h.get_by_label(kind.label()).click();
     h.run();
-    h.state_mut().export.path = path.display().to_string();
+    h.state_mut().exports.form.path = path.display().to_string();
     h.run();
     h.get_by_role_and_label(Role::Button, "Export").click();
     h.run();
@@ -61,13 +63,13 @@ fn the_csv_and_a_short_gif_are_written_in_the_background() {
     assert!(text.starts_with("t,x,y,z,roll_deg,pitch_deg,yaw_deg,L1"));
 
     let gif = dir.path().join("short.gif");
-    h.state_mut().export.size = (640, 360);
-    h.state_mut().export.fps = 0.0;
+    h.state_mut().exports.form.size = (640, 360);
+    h.state_mut().exports.form.fps = 0.0;
     h.get_by_role_and_label(Role::ComboBox, "What").click();
     h.run();
     h.get_by_label(ExportKind::Gif.label()).click();
     h.run();
-    h.state_mut().export.path = gif.display().to_string();
+    h.state_mut().exports.form.path = gif.display().to_string();
     h.run();
     h.get_by_role_and_label(Role::Button, "Export").click();
     h.run();
@@ -85,10 +87,10 @@ fn cancel_stops_an_export_and_leaves_nothing() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut h = tall_harness("seed", HEIGHT);
     let gif = dir.path().join("long.gif");
-    h.state_mut().export.size = (640, 360);
-    h.state_mut().export.fps = 0.0;
+    h.state_mut().exports.form.size = (640, 360);
+    h.state_mut().exports.form.fps = 0.0;
     export_to(&mut h, ExportKind::Gif, &gif);
-    assert!(h.state().export_job.is_some());
+    assert!(h.state().exports.job.is_some());
     assert!(
         h.query_by_label_contains("frames/s").is_some()
             || h.query_by_label_contains("working").is_some()
@@ -113,14 +115,15 @@ fn cancel_stops_an_export_and_leaves_nothing() {
 fn closing_with_an_export_running_cancels_it_and_leaves_nothing() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut h = tall_harness("seed", HEIGHT);
-    h.state_mut().export.size = (640, 360);
-    h.state_mut().export.fps = 0.0;
+    h.state_mut().exports.form.size = (640, 360);
+    h.state_mut().exports.form.fps = 0.0;
     export_to(&mut h, ExportKind::Frames, &dir.path().join("frames"));
     // Wait until frames are being written (staged next to the output).
     let started = Instant::now();
     while h
         .state()
-        .export_job
+        .exports
+        .job
         .as_ref()
         .is_some_and(|j| j.fraction() == 0.0)
     {
@@ -132,9 +135,9 @@ fn closing_with_an_export_running_cancels_it_and_leaves_nothing() {
         h.run();
     }
     assert!(
-        h.state().export_job.is_some(),
+        h.state().exports.job.is_some(),
         "{:?}",
-        h.state().export_status
+        h.state().exports.status
     );
     // The window closing drops the state: the export stops and cleans up first.
     drop(h.into_state());

@@ -18,9 +18,12 @@ fn choosing_a_preset_loads_it() {
     h.get_by_label("figure8").click();
     h.run();
     let expected = Scenario::preset("figure8").unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(h.state().scenario, expected);
-    assert_eq!(h.state().time, 0.0);
-    assert_eq!(h.state().samples.0.len(), expected.motion.sampling.len());
+    assert_eq!(h.state().scenario(), &expected);
+    assert_eq!(h.state().playback.time, 0.0);
+    assert_eq!(
+        h.state().plot_samples().0.len(),
+        expected.motion.sampling.len()
+    );
     // The motion panel now offers the figure-eight's own numbers.
     assert!(
         h.query_by_role_and_label(Role::Slider, "x half-width (m)")
@@ -43,17 +46,17 @@ fn a_broken_file_shows_its_error_and_changes_nothing() {
     )
     .unwrap_or_else(|e| panic!("{e}"));
     let mut h = harness("paired");
-    h.state_mut().time = 3.0;
+    h.state_mut().playback.time = 3.0;
     h.run();
-    let before = h.state().scenario.clone();
+    let before = h.state().scenario().clone();
     let field = h.get_by_role_and_label(Role::TextInput, "File");
     field.focus();
     field.type_text(&path.display().to_string());
     h.run();
     h.get_by_label("Open").click();
     h.run();
-    assert_eq!(h.state().scenario, before);
-    assert_eq!(h.state().time, 3.0);
+    assert_eq!(h.state().scenario(), &before);
+    assert_eq!(h.state().playback.time, 3.0);
     let message = format!(
         "{}, line 2, column 15: `base_radius` must be positive, got -1",
         path.display()
@@ -63,11 +66,11 @@ fn a_broken_file_shows_its_error_and_changes_nothing() {
         "no `{message}` shown"
     );
     // A file that does not exist says so, and still changes nothing.
-    h.state_mut().file_path = dir.path().join("missing.toml").display().to_string();
+    h.state_mut().files.path = dir.path().join("missing.toml").display().to_string();
     h.run();
     h.get_by_label("Open").click();
     h.run();
-    assert_eq!(h.state().scenario, before);
+    assert_eq!(h.state().scenario(), &before);
     assert!(h.query_by_label_contains("missing.toml").is_some());
 }
 
@@ -81,20 +84,20 @@ fn a_saved_scenario_opens_as_it_was() {
     h.get_by_role_and_label(Role::Slider, "home height (m)")
         .set_value_accesskit(0.9);
     h.run();
-    h.state_mut().file_path = path.display().to_string();
+    h.state_mut().files.path = path.display().to_string();
     h.run();
     h.get_by_label("Save").click();
     h.run();
     assert!(h.query_by_label_contains("Saved to").is_some());
-    let saved = h.state().scenario.clone();
+    let saved = h.state().scenario().clone();
     h.get_by_role_and_label(Role::ComboBox, "Preset").click();
     h.run();
     h.get_by_label("seed").click();
     h.run();
-    assert_ne!(h.state().scenario.geometry, saved.geometry);
+    assert_ne!(h.state().scenario().geometry, saved.geometry);
     h.get_by_label("Open").click();
     h.run();
-    assert_eq!(h.state().scenario.geometry, saved.geometry);
-    assert_eq!(h.state().scenario.geometry.home_height(), 0.9);
-    assert_eq!(h.state().scenario.motion, saved.motion);
+    assert_eq!(h.state().scenario().geometry, saved.geometry);
+    assert_eq!(h.state().scenario().geometry.home_height(), 0.9);
+    assert_eq!(h.state().scenario().motion, saved.motion);
 }

@@ -11,7 +11,8 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::panels::viewer_ui;
-use stewart_app::viewer::state::{MotionMode, ViewerState};
+use stewart_app::viewer::playback::MotionMode;
+use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::Scenario;
 
 /// The viewer on a preset, 1280×800 logical pixels.
@@ -33,9 +34,18 @@ pub fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerS
 
 /// The viewer on `state` in a window of `size` logical pixels.
 pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
-    Harness::builder()
+    let mut h = Harness::builder()
         .with_size(size)
-        .build_ui_state(viewer_ui, state)
+        .build_ui_state(viewer_ui, state);
+    settle(&mut h);
+    h
+}
+
+/// Wait for the background report of the current scenario and draw again, so that the
+/// panels show a settled state (the report is computed off the UI thread).
+pub fn settle(h: &mut Harness<'static, ViewerState>) {
+    h.state_mut().wait_for_report();
+    h.run();
 }
 
 #[test]
@@ -43,7 +53,7 @@ fn manual_mode_sliders_move_the_pose_and_the_legs() {
     let mut h = harness("paired");
     h.get_by_label("Manual pose").click();
     h.run();
-    assert_eq!(h.state().mode, MotionMode::Manual);
+    assert_eq!(h.state().playback.mode, MotionMode::Manual);
     let before = h.state().legs().lengths;
     h.get_by_role_and_label(Role::Slider, "x (m)")
         .set_value_accesskit(0.12);
@@ -56,31 +66,35 @@ fn manual_mode_sliders_move_the_pose_and_the_legs() {
     assert_ne!(h.state().legs().lengths, before);
     h.get_by_label("Home").click();
     h.run();
-    assert_eq!(h.state().pose(), h.state().scenario.geometry.home_pose());
+    assert_eq!(h.state().pose(), h.state().scenario().geometry.home_pose());
 }
 
 #[test]
 fn keyboard_and_buttons_drive_playback() {
     let mut h = harness("seed");
-    h.state_mut().playing = false;
-    h.state_mut().time = 5.0;
+    h.state_mut().playback.playing = false;
+    h.state_mut().playback.time = 5.0;
     h.run();
     h.key_press(egui::Key::Space);
     h.run();
-    assert!(h.state().playing);
+    assert!(h.state().playback.playing);
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    assert!(!h.state().playing);
-    assert!((h.state().time - 5.01).abs() < 1e-9, "{}", h.state().time);
+    assert!(!h.state().playback.playing);
+    assert!(
+        (h.state().playback.time - 5.01).abs() < 1e-9,
+        "{}",
+        h.state().playback.time
+    );
     h.key_press(egui::Key::Home);
     h.run();
-    assert_eq!(h.state().time, 0.0);
+    assert_eq!(h.state().playback.time, 0.0);
     h.get_by_label("Play").click();
     h.run();
-    assert!(h.state().playing);
+    assert!(h.state().playback.playing);
     h.get_by_label("Top").click();
     h.run();
-    assert_eq!(h.state().camera.elevation_deg, 89.5);
+    assert_eq!(h.state().look.camera.elevation_deg, 89.5);
 }
 
 #[test]
@@ -109,13 +123,13 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
     h.get_by_role_and_label(Role::Slider, "base radius (m)")
         .set_value_accesskit(1.2);
     h.run();
-    assert_eq!(h.state().scenario.geometry.params().base_radius, 1.2);
-    assert!((h.state().scenario.geometry.base_joints()[0].norm() - 1.2).abs() < 1e-12);
+    assert_eq!(h.state().scenario().geometry.params().base_radius, 1.2);
+    assert!((h.state().scenario().geometry.base_joints()[0].norm() - 1.2).abs() < 1e-12);
     // A maximum below the minimum is refused: the geometry stays, the reason is shown.
     h.get_by_role_and_label(Role::Slider, "leg max (m)")
         .set_value_accesskit(0.5);
     h.run();
-    assert_eq!(h.state().scenario.geometry.stroke().max, Some(1.30));
+    assert_eq!(h.state().scenario().geometry.stroke().max, Some(1.30));
     assert!(
         h.query_by_label_contains(
             "Not applied: `geometry.leg_max` = 0.5 refused: `leg_min` (0.55 m) must be less than `leg_max` (0.5 m)"
@@ -125,13 +139,8 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
     // The seed's staggered layout makes the geometry architecturally singular: the banner says so.
     h.get_by_label("Staggered (seed)").click();
     h.run();
-    h.run();
-    assert!(
-        h.state()
-            .report
-            .as_ref()
-            .is_some_and(|r| r.architecture.singular)
-    );
+    settle(&mut h);
+    assert!(h.state().report().is_some_and(|r| r.architecture.singular));
     assert!(
         h.query_by_label_contains("This geometry is architecturally singular")
             .is_some()

@@ -2,7 +2,7 @@
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::MotionMode;
+use stewart_app::viewer::playback::MotionMode;
 
 use crate::harness;
 
@@ -12,7 +12,7 @@ fn p_enters_presentation_mode_and_escape_leaves_it() {
     assert!(h.query_by_label("Playback").is_some());
     h.key_press(egui::Key::P);
     h.run();
-    assert!(h.state().presentation);
+    assert!(h.state().look.presentation);
     // Control panels are hidden, the plot stays, colours are light, text is larger.
     assert!(h.query_by_label("Playback").is_none());
     assert!(
@@ -27,7 +27,7 @@ fn p_enters_presentation_mode_and_escape_leaves_it() {
     assert!(size > 19.0, "{size}");
     h.key_press(egui::Key::Escape);
     h.run();
-    assert!(!h.state().presentation);
+    assert!(!h.state().look.presentation);
     assert!(h.query_by_label("Playback").is_some());
 }
 
@@ -36,18 +36,18 @@ fn manual_mode_keeps_a_rolling_history_of_the_legs() {
     let mut h = harness("paired");
     h.get_by_label("Manual pose").click();
     h.run();
-    assert_eq!(h.state().mode, MotionMode::Manual);
+    assert_eq!(h.state().playback.mode, MotionMode::Manual);
     for (k, x) in [0.0, 0.05, 0.1].into_iter().enumerate() {
         h.get_by_role_and_label(Role::Slider, "x (m)")
             .set_value_accesskit(x);
         h.run();
         h.state_mut().advance(0.5 + k as f64);
     }
-    let entries: Vec<(f64, [f64; 6])> = h.state().history.entries().copied().collect();
+    let entries: Vec<(f64, [f64; 6])> = h.state().playback.history.entries().copied().collect();
     assert_eq!(entries.len(), 3);
     assert_ne!(entries[0].1, entries[2].1);
     // The history scrolls while recent, then the window goes idle.
     assert!(h.state().animating());
-    h.state_mut().clock += 20.0;
+    h.state_mut().playback.clock += 20.0;
     assert!(!h.state().animating());
 }

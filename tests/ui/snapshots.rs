@@ -5,7 +5,8 @@
 //! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui snapshots` re-blesses them.
 
 use egui_kittest::SnapshotOptions;
-use stewart_app::viewer::state::{MotionMode, ViewerState};
+use stewart_app::viewer::playback::MotionMode;
+use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::{Pose, Scenario};
 
 /// Where the reference images live (relative to the app crate, where tests run).
@@ -23,12 +24,13 @@ fn options() -> SnapshotOptions {
 fn over_stroke_legs_turn_red_and_the_history_shows_them_leaving_the_stroke() {
     let state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
     let mut h = crate::sized_harness(state, egui::vec2(960.0, 600.0));
-    h.state_mut().playing = false;
-    h.state_mut().mode = MotionMode::Manual;
+    h.state_mut().playback.playing = false;
+    h.state_mut().playback.mode = MotionMode::Manual;
     // Move x out to 0.26 m and yaw to −41° over 3 s of (simulated) wall time.
     for k in 0..=60 {
         let s = f64::from(k) / 60.0;
-        h.state_mut().manual = Pose::from_xyz_rpy_deg([0.26 * s, 0.0, 0.8], [0.0, 0.0, -41.0 * s]);
+        h.state_mut().playback.manual =
+            Pose::from_xyz_rpy_deg([0.26 * s, 0.0, 0.8], [0.0, 0.0, -41.0 * s]);
         h.state_mut().advance(0.05);
     }
     h.run();

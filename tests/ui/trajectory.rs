@@ -14,24 +14,30 @@ fn switching_the_kind_and_moving_its_sliders_changes_the_motion() {
     h.get_by_label("Circle").click();
     h.run();
     assert!(matches!(
-        h.state().scenario.motion.trajectory,
+        h.state().scenario().motion.trajectory,
         Trajectory::Circle(_)
     ));
     h.get_by_role_and_label(Role::Slider, "radius (m)")
         .set_value_accesskit(0.05);
     h.run();
     // Every plotted sample now lies 5 cm from the axis: legs re-solved for the new circle.
-    let Trajectory::Circle(c) = &h.state().scenario.motion.trajectory else {
+    let Trajectory::Circle(c) = h.state().scenario().motion.trajectory else {
         panic!("not a circle");
     };
     assert_eq!(c.radius, 0.05);
-    let p = h.state().scenario.motion.trajectory.pose_at(1.234).position;
+    let p = h
+        .state()
+        .scenario()
+        .motion
+        .trajectory
+        .pose_at(1.234)
+        .position;
     assert!((p.xy().norm() - 0.05).abs() < 1e-12);
     h.get_by_role_and_label(Role::Slider, "samples")
         .set_value_accesskit(101.0);
     h.run();
-    assert_eq!(h.state().samples.0.len(), 101);
-    assert_eq!(h.state().samples.1.len(), 101);
+    assert_eq!(h.state().plot_samples().0.len(), 101);
+    assert_eq!(h.state().plot_samples().1.len(), 101);
 }
 
 #[test]
@@ -53,13 +59,13 @@ fn sinusoid_channels_have_every_number() {
     h.get_by_role_and_label(Role::Slider, "pitch phase (°)")
         .set_value_accesskit(0.0);
     h.run();
-    let Trajectory::Sinusoid(s) = &h.state().scenario.motion.trajectory else {
+    let Trajectory::Sinusoid(s) = h.state().scenario().motion.trajectory else {
         panic!("not a sinusoid");
     };
     assert_eq!(s.pitch_deg.phase.degrees(), 0.0);
     assert_eq!(
         h.state()
-            .scenario
+            .scenario()
             .motion
             .trajectory
             .pose_at(0.0)
@@ -74,7 +80,7 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
     let mut h = harness("keyframes");
     let keys = |h: &egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>| match &h
         .state()
-        .scenario
+        .scenario()
         .motion
         .trajectory
     {
@@ -90,7 +96,7 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
     assert_eq!(keys(&h), 5);
     h.get_by_label("linear").click();
     h.run();
-    let Trajectory::Keyframes(k) = &h.state().scenario.motion.trajectory else {
+    let Trajectory::Keyframes(k) = &h.state().scenario().motion.trajectory else {
         panic!("not keyframes");
     };
     assert_eq!(
@@ -117,13 +123,13 @@ fn click_at(h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>,
 #[test]
 fn clicking_on_the_plot_scrubs_the_time() {
     let mut h = harness("seed");
-    assert!(h.state().playing);
+    assert!(h.state().playback.playing);
     // The plot fills the bottom panel right of the controls (1280 × 800 window).
     click_at(&mut h, egui::pos2(600.0, 700.0));
-    let left = h.state().time;
-    assert!(!h.state().playing);
+    let left = h.state().playback.time;
+    assert!(!h.state().playback.playing);
     click_at(&mut h, egui::pos2(1100.0, 700.0));
-    let right = h.state().time;
+    let right = h.state().playback.time;
     assert!(
         0.0 < left && left < right && right <= 10.0,
         "{left} {right}"

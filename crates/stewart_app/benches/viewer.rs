@@ -29,7 +29,7 @@ fn bench(c: &mut Criterion) {
     ] {
         let scenario = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
         let mut state = ViewerState::new(scenario);
-        state.expand_panels = expand;
+        state.look.expand_panels = expand;
         let ctx = egui::Context::default();
         // Warm up: fonts, first layout.
         for _ in 0..5 {

@@ -69,13 +69,9 @@ impl Theme {
         ],
     };
 
-    /// A theme by name: `dark` or `light`.
-    pub fn by_name(name: &str) -> Option<Theme> {
-        match name {
-            "dark" => Some(Theme::DARK),
-            "light" => Some(Theme::LIGHT),
-            _ => None,
-        }
+    /// The light theme when `light`, else the dark one.
+    pub fn from_light(light: bool) -> Theme {
+        if light { Theme::LIGHT } else { Theme::DARK }
     }
 }
 

@@ -26,10 +26,7 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         size: args.size,
         fps: args.fps,
         frames: args.frames.unwrap_or((None, None)),
-        theme: match args.theme {
-            ThemeName::Dark => Theme::DARK,
-            ThemeName::Light => Theme::LIGHT,
-        },
+        theme: Theme::from_light(args.theme == ThemeName::Light),
         camera,
         composite: args.composite,
         overlays: Overlays {

@@ -12,9 +12,9 @@ use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
 pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let mut state = ViewerState::new(scenario);
-    state.light_theme = args.light;
-    state.presentation = args.presentation;
-    state.expand_panels = args.expand_panels;
+    state.look.light_theme = args.light;
+    state.look.presentation = args.presentation;
+    state.look.expand_panels = args.expand_panels;
     run_viewer(
         state,
         ViewOptions {

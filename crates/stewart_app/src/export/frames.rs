@@ -142,8 +142,10 @@ impl<'a> FrameSource<'a> {
         let g = &self.scenario.geometry;
         let pose: Pose = self.scenario.motion.trajectory.pose_at(t);
         self.path.push(g.platform_centre(&pose));
-        let scene = g.scene_frame(&pose, self.path.clone());
+        // The path moves into the scene and back: no copy per frame.
+        let scene = g.scene_frame(&pose, std::mem::take(&mut self.path));
         let list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
+        self.path = scene.path;
         let aspect = self.view_width as f32 / self.job.height as f32;
         let camera = self.job.camera.fitted_to(aspect);
         let view = self.offscreen.render(

@@ -1,14 +1,21 @@
 //! The interactive viewer: a window with the 3D view, panels and the live plot.
 //!
-//! - [`state`]: what the viewer shows (plain core types; the panels edit it);
+//! - [`state`]: what the viewer shows, and its one edit path for the scenario;
+//! - [`derived`]: the plotted samples, path, layout and the background report;
+//! - [`playback`], [`look`], [`files`], [`exports`]: the parts of the state the panels edit;
 //! - [`panels`]: one egui function per panel;
 //! - [`view3d`]: the renderer inside egui (a paint callback);
 //! - [`history`], [`export_job`]: the manual-mode history and background exports;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
+pub mod derived;
 pub mod export_job;
+pub mod exports;
+pub mod files;
 pub mod history;
+pub mod look;
 pub mod panels;
+pub mod playback;
 pub mod state;
 pub mod view3d;
 pub mod window;

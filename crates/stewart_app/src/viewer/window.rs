@@ -83,6 +83,9 @@ struct App {
     screenshot_asked: bool,
     error: Option<anyhow::Error>,
     times: FrameTimes,
+    /// When egui asked to be drawn again (a tooltip delay, the text cursor's blink, an
+    /// animation); `None`: only on input.
+    repaint_at: Option<Instant>,
 }
 
 /// Open the viewer on `state` and run until the window closes.
@@ -106,6 +109,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         screenshot_asked: false,
         error: None,
         times: FrameTimes::default(),
+        repaint_at: None,
     };
     event_loop
         .run_app(&mut app)
@@ -164,7 +168,7 @@ impl App {
         let attributes = Window::default_attributes()
             .with_title(format!(
                 "Stewart platform studio — {}",
-                self.state.scenario.name
+                self.state.scenario().name
             ))
             .with_inner_size({
                 // A HiDPI scale makes the window larger in pixels than asked in points:
@@ -219,6 +223,7 @@ impl App {
             .write()
             .callback_resources
             .insert(renderer);
+        self.state.look.renderer_missing = None;
         let max_side = render_state.device.limits().max_texture_dimension_2d as usize;
         let input = egui_winit::State::new(
             self.ctx.clone(),
@@ -252,7 +257,16 @@ impl App {
         self.state.advance(dt);
         let raw = open.input.take_egui_input(&open.window);
         let state = &mut self.state;
+        if self.options.screenshot.is_some() {
+            // A screenshot shows the settled picture, report included.
+            state.wait_for_report();
+        }
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        // Honour egui's own repaint requests (zero: at once; otherwise after the delay).
+        self.repaint_at = output
+            .viewport_output
+            .get(&ViewportId::ROOT)
+            .and_then(|v| now.checked_add(v.repaint_delay));
         open.input
             .handle_platform_output(&open.window, std::mem::take(&mut output.platform_output));
         let primitives = self
@@ -355,12 +369,22 @@ impl ApplicationHandler for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
-        if self.busy()
-            && let Some(open) = &self.open
-        {
+        let Some(open) = &self.open else {
+            event_loop.set_control_flow(ControlFlow::Wait);
+            return;
+        };
+        let now = Instant::now();
+        let due = self.repaint_at.is_some_and(|at| at <= now);
+        if self.busy() || due {
+            self.repaint_at = None;
             open.window.request_redraw();
+            event_loop.set_control_flow(ControlFlow::Wait);
+        } else {
+            event_loop.set_control_flow(match self.repaint_at {
+                Some(at) => ControlFlow::WaitUntil(at),
+                None => ControlFlow::Wait,
+            });
         }
-        event_loop.set_control_flow(ControlFlow::Wait);
     }
 }
 

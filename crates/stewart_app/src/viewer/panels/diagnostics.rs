@@ -13,7 +13,7 @@ const LISTED: usize = 12;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.heading("Diagnostics");
-    if let Some(report) = &state.report {
+    if let Some(report) = state.report() {
         if report.architecture.singular {
             ui.label(RichText::new(report.architecture.explanation()).color(ERROR));
         }
@@ -33,7 +33,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     }
     egui::CollapsingHeader::new("Limits and check thresholds")
-        .default_open(state.expand_panels)
+        .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             let targets: Vec<_> = settings::all()
                 .iter()

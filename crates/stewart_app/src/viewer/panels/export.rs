@@ -8,7 +8,8 @@ use stewart_render::{Overlays, Theme};
 use super::widgets;
 use crate::export::video::VideoRequest;
 use crate::viewer::export_job::{ExportJob, ExportWork};
-use crate::viewer::state::{ExportKind, ViewerState};
+use crate::viewer::exports::ExportKind;
+use crate::viewer::state::ViewerState;
 
 /// Frame sizes offered.
 const SIZES: [(u32, u32); 5] = [
@@ -22,9 +23,9 @@ const SIZES: [(u32, u32); 5] = [
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CollapsingHeader::new("Export")
-        .default_open(state.expand_panels)
+        .default_open(state.look.expand_panels)
         .show(ui, |ui| {
-            if let Some(job) = &state.export_job {
+            if let Some(job) = &state.exports.job {
                 ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
                 ui.label(job.describe());
                 let label = if job.cancelling() {
@@ -41,22 +42,22 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 return;
             }
             form(ui, state);
-            let path = state.export.path.trim().to_owned();
+            let path = state.exports.form.path.trim().to_owned();
             if ui
                 .add_enabled(!path.is_empty(), egui::Button::new("Export"))
                 .clicked()
             {
                 let work = work(state, PathBuf::from(path));
-                state.export_status = None;
-                state.export_job = Some(ExportJob::start(&state.scenario, work));
+                state.exports.status = None;
+                state.exports.job = Some(ExportJob::start(state.scenario(), work));
             }
-            widgets::status(ui, &state.export_status);
+            widgets::status(ui, &state.exports.status);
         });
 }
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let name = state.scenario.name.clone();
-    let form = &mut state.export;
+    let name = state.scenario().name.clone();
+    let form = &mut state.exports.form;
     let before = form.kind;
     egui::ComboBox::from_label("What")
         .selected_text(form.kind.label())
@@ -94,7 +95,7 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.checkbox(&mut form.light, "Light theme");
             ui.checkbox(&mut form.composite, "Plot beside the view");
         });
-        let frames = request(state, PathBuf::new()).frame_count(&state.scenario);
+        let frames = request(state, PathBuf::new()).frame_count(state.scenario());
         if let Ok(n) = frames {
             ui.label(egui::RichText::new(format!("{n} frames")).small());
         }
@@ -102,29 +103,25 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
-    let form = &state.export;
+    let form = &state.exports.form;
     VideoRequest {
         out,
         size: form.size,
         fps: (form.fps > 0.0).then_some(form.fps),
         frames: (None, None),
-        theme: if form.light {
-            Theme::LIGHT
-        } else {
-            Theme::DARK
-        },
-        camera: Some(state.camera),
+        theme: Theme::from_light(form.light),
+        camera: Some(state.look.camera),
         composite: form.composite,
         overlays: Overlays {
-            platform_axes: state.platform_axes,
-            path: state.show_path,
+            platform_axes: state.look.platform_axes,
+            path: state.look.show_path,
             ..Overlays::default()
         },
     }
 }
 
 fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
-    match state.export.kind {
+    match state.exports.form.kind {
         ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames => {
             ExportWork::Video(Box::new(request(state, path)))
         }

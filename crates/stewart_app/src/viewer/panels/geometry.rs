@@ -10,7 +10,7 @@ use crate::viewer::state::ViewerState;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CollapsingHeader::new("Geometry")
-        .default_open(state.expand_panels)
+        .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             for key in [
                 GeometryKey::BaseRadius,
@@ -23,7 +23,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
             layout(ui, state);
             egui::CollapsingHeader::new("Joint angles")
-                .default_open(state.expand_panels)
+                .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
                     for i in 0..6 {
                         setting_slider(ui, state, Target::Geometry(GeometryKey::BaseAngle(i)));
@@ -33,7 +33,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                     }
                 });
             egui::CollapsingHeader::new("Pivot (rotation centre, platform frame)")
-                .default_open(state.expand_panels)
+                .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
                     for i in 0..3 {
                         setting_slider(ui, state, Target::Geometry(GeometryKey::Pivot(i)));
@@ -44,37 +44,46 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 /// Named layouts: choosing one, or moving its angle, rewrites all twelve joint angles.
+/// Angles edited one by one into no named layout show as "Custom".
 fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.label("Layout (rewrites the joint angles):");
-    let mut layout = state.layout;
+    let current = state.layout();
+    let mut chosen = current;
     ui.horizontal(|ui| {
-        let staggered = matches!(layout, Layout::Staggered { .. });
+        let staggered = matches!(current, Some(Layout::Staggered { .. }));
+        let paired = matches!(current, Some(Layout::Paired { .. }));
         if ui.selectable_label(staggered, "Staggered (seed)").clicked() {
-            layout = Layout::seed();
+            chosen = Some(Layout::seed());
         }
-        if ui.selectable_label(!staggered, "Paired").clicked() {
-            layout = Layout::paired(20.0);
+        if ui.selectable_label(paired, "Paired").clicked() {
+            chosen = Some(Layout::paired(20.0));
+        }
+        if current.is_none() {
+            let _ = ui.selectable_label(true, "Custom");
         }
     });
-    match &mut layout {
-        Layout::Staggered { offset_deg } => {
+    match &mut chosen {
+        Some(Layout::Staggered { offset_deg }) => {
             ui.add(egui::Slider::new(offset_deg, 1.0..=59.0).text("platform offset (°)"));
         }
-        Layout::Paired {
+        Some(Layout::Paired {
             base_separation_deg,
             platform_separation_deg,
-        } => {
+        }) => {
             ui.add(egui::Slider::new(base_separation_deg, 1.0..=110.0).text("base separation (°)"));
             ui.add(
                 egui::Slider::new(platform_separation_deg, 1.0..=110.0)
                     .text("platform separation (°)"),
             );
         }
+        None => {
+            ui.label(egui::RichText::new("The joint angles follow no named layout.").small());
+        }
     }
-    if layout != state.layout {
-        state.layout = layout;
-        let mut params = state.scenario.geometry.params().clone();
-        (params.base_angles, params.platform_angles) = layout.angles();
-        state.set_geometry(params);
+    if chosen != current
+        && let Some(layout) = chosen
+    {
+        // Validated like any edit: a refused layout leaves geometry and controls as they were.
+        state.set_layout(layout);
     }
 }

@@ -11,7 +11,7 @@ use crate::viewer::state::ViewerState;
 pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
     ui.heading("Legs");
     let pose = state.pose();
-    let frame = state.scenario.geometry.scene_frame(&pose, Vec::new());
+    let frame = state.scenario().geometry.scene_frame(&pose, Vec::new());
     for (i, leg) in frame.legs.iter().enumerate() {
         let (colour, note) = match leg.status {
             LegStatus::Normal => (Color32::from_rgb(70, 160, 90), ""),
@@ -35,7 +35,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             }
         });
     }
-    let c = state.scenario.geometry.conditioning(&pose);
+    let c = state.scenario().geometry.conditioning(&pose);
     match c.condition_number {
         Some(k) => ui.label(format!("Condition number {k:.2}")),
         None => ui.label(

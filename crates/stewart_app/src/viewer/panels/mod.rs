@@ -11,7 +11,8 @@ mod scenario;
 mod view;
 mod widgets;
 
-use super::state::{MotionMode, ViewerState};
+use super::playback::MotionMode;
+use super::state::ViewerState;
 
 /// Text sizes are multiplied by this in presentation mode.
 const PRESENTATION_TEXT_SCALE: f32 = 1.5;
@@ -20,8 +21,8 @@ const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     style(ui.ctx(), state);
     shortcuts(ui, state);
-    state.poll_export();
-    if !state.presentation {
+    state.poll();
+    if !state.look.presentation {
         egui::Panel::left("controls")
             .resizable(true)
             .default_size(320.0)
@@ -45,14 +46,18 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     egui::Panel::bottom("plot")
         .resizable(true)
-        .default_size(if state.presentation { 280.0 } else { 220.0 })
+        .default_size(if state.look.presentation {
+            280.0
+        } else {
+            220.0
+        })
         .show(ui, |ui| plot::show(ui, state));
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
 }
 
 /// Light or dark visuals, and large text in presentation mode.
 fn style(ctx: &egui::Context, state: &ViewerState) {
-    let visuals = if state.is_light() {
+    let visuals = if state.look.is_light() {
         egui::Visuals::light()
     } else {
         egui::Visuals::dark()
@@ -61,7 +66,7 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
         visuals,
         ..egui::Style::default()
     };
-    if state.presentation {
+    if state.look.presentation {
         for font in style.text_styles.values_mut() {
             font.size *= PRESENTATION_TEXT_SCALE;
         }
@@ -78,8 +83,8 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     if pressed(egui::Key::Space) {
-        state.playing = !state.playing;
-        state.mode = MotionMode::Trajectory;
+        state.playback.playing = !state.playback.playing;
+        state.playback.mode = MotionMode::Trajectory;
     }
     if pressed(egui::Key::ArrowLeft) {
         state.step(-1.0);
@@ -88,12 +93,12 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
         state.step(1.0);
     }
     if pressed(egui::Key::Home) {
-        state.time = 0.0;
+        state.playback.time = 0.0;
     }
     if pressed(egui::Key::P) || pressed(egui::Key::F5) {
-        state.presentation = !state.presentation;
+        state.look.presentation = !state.look.presentation;
     }
     if pressed(egui::Key::Escape) {
-        state.presentation = false;
+        state.look.presentation = false;
     }
 }

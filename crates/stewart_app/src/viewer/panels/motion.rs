@@ -10,7 +10,8 @@ use stewart_kinematics::trajectory::{
 };
 
 use super::widgets::{edit_error, setting_slider};
-use crate::viewer::state::{MotionMode, ViewerState};
+use crate::viewer::playback::MotionMode;
+use crate::viewer::state::ViewerState;
 
 /// The manual pose's sliders: name, unit and reach either side of home (z: of the home
 /// height), in the pose's coordinate order x, y, z, roll, pitch, yaw.
@@ -27,10 +28,14 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.heading("Motion");
     ui.horizontal(|ui| {
-        ui.selectable_value(&mut state.mode, MotionMode::Trajectory, "Trajectory");
-        ui.selectable_value(&mut state.mode, MotionMode::Manual, "Manual pose");
+        ui.selectable_value(
+            &mut state.playback.mode,
+            MotionMode::Trajectory,
+            "Trajectory",
+        );
+        ui.selectable_value(&mut state.playback.mode, MotionMode::Manual, "Manual pose");
     });
-    match state.mode {
+    match state.playback.mode {
         MotionMode::Manual => manual(ui, state),
         MotionMode::Trajectory => trajectory(ui, state),
     }
@@ -38,8 +43,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let home = state.scenario.geometry.home_pose().to_coordinates();
-    let mut c = state.manual.to_coordinates();
+    let home = state.scenario().geometry.home_pose().to_coordinates();
+    let mut c = state.playback.manual.to_coordinates();
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
         let angular = unit == Unit::Degree;
         let mut value = if angular { c[k].to_degrees() } else { c[k] };
@@ -56,14 +61,14 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
             c[k] = if angular { value.to_radians() } else { value };
         }
     }
-    state.manual = Pose::from_coordinates(c);
+    state.playback.manual = Pose::from_coordinates(c);
     if ui.button("Home").clicked() {
-        state.manual = state.scenario.geometry.home_pose();
+        state.playback.manual = state.scenario().geometry.home_pose();
     }
 }
 
 fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let current = TrajectoryChoice::of(&state.scenario.motion.trajectory);
+    let current = TrajectoryChoice::of(&state.scenario().motion.trajectory);
     egui::ComboBox::from_label("Kind")
         .selected_text(current.label())
         .show_ui(ui, |ui| {
@@ -83,7 +88,7 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
     ] {
         setting_slider(ui, state, Target::Sampling(key));
     }
-    match &state.scenario.motion.trajectory {
+    match state.scenario().motion.trajectory {
         Trajectory::Sinusoid(_) => sinusoid(ui, state),
         Trajectory::Keyframes(_) => keyframes(ui, state),
         _ => {
@@ -106,7 +111,7 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
 fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
     for (i, name) in CHANNEL_NAMES.into_iter().enumerate() {
         egui::CollapsingHeader::new(format!("{name} channel"))
-            .default_open(i == 0 || state.expand_panels)
+            .default_open(i == 0 || state.look.expand_panels)
             .show(ui, |ui| {
                 for key in [
                     ChannelKey::Amplitude,
@@ -116,22 +121,27 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
                 ] {
                     setting_slider(ui, state, Target::Channel(i, key));
                 }
-                let mut changed = false;
-                if let Trajectory::Sinusoid(s) = &mut state.scenario.motion.trajectory
-                    && let Some(channel) = s.channels_mut().into_iter().nth(i)
-                {
+                let wave = match state.scenario().motion.trajectory {
+                    Trajectory::Sinusoid(s) => s.channels().get(i).map(|(_, c)| c.wave),
+                    _ => None,
+                };
+                if let Some(wave) = wave {
+                    let mut chosen = wave;
                     ui.horizontal(|ui| {
                         ui.label(format!("{name} wave"));
-                        changed |= ui
-                            .selectable_value(&mut channel.wave, Wave::Sin, "sin")
-                            .changed();
-                        changed |= ui
-                            .selectable_value(&mut channel.wave, Wave::Cos, "cos")
-                            .changed();
+                        ui.selectable_value(&mut chosen, Wave::Sin, "sin");
+                        ui.selectable_value(&mut chosen, Wave::Cos, "cos");
                     });
-                }
-                if changed {
-                    state.resample();
+                    if chosen != wave {
+                        state.edit(Group::Trajectory, |s| {
+                            if let Trajectory::Sinusoid(sinusoid) = &mut s.motion.trajectory
+                                && let Some(channel) = sinusoid.channels_mut().into_iter().nth(i)
+                            {
+                                channel.wave = chosen;
+                            }
+                            Ok(())
+                        });
+                    }
                 }
             });
     }
@@ -140,7 +150,7 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// The keys as an editable table: time and pose of each, the interpolation, add and
 /// remove. An edit that breaks the keys (times out of order) is refused with its reason.
 fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let Trajectory::Keyframes(k) = &state.scenario.motion.trajectory else {
+    let Trajectory::Keyframes(k) = &state.scenario().motion.trajectory else {
         return;
     };
     let mut keys: Vec<Keyframe> = k.keys().to_vec();
@@ -211,13 +221,10 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     if changed {
-        match Keyframes::new(keys, interpolation) {
-            Ok(k) => {
-                state.scenario.motion.trajectory = Trajectory::Keyframes(k);
-                state.edit_error = None;
-                state.resample();
-            }
-            Err(e) => state.edit_error = Some((Group::Trajectory, e.to_string())),
-        }
+        state.edit(Group::Trajectory, |s| {
+            let k = Keyframes::new(keys, interpolation).map_err(|e| e.to_string())?;
+            s.motion.trajectory = Trajectory::Keyframes(k);
+            Ok(())
+        });
     }
 }

@@ -6,7 +6,8 @@ use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
 
 use crate::export::plot::LEG_COLOURS;
 use crate::viewer::history::History;
-use crate::viewer::state::{MotionMode, ViewerState};
+use crate::viewer::playback::MotionMode;
+use crate::viewer::state::ViewerState;
 
 /// Leg `i`'s colour, as in exported plots.
 pub fn leg_colour(i: usize) -> Color32 {
@@ -16,8 +17,8 @@ pub fn leg_colour(i: usize) -> Color32 {
 /// The panel. In trajectory mode, clicking or dragging on the plot scrubs the time (the
 /// wheel still zooms, double-click resets the view).
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let stroke = state.scenario.geometry.stroke();
-    let manual = state.mode == MotionMode::Manual;
+    let stroke = state.scenario().geometry.stroke();
+    let manual = state.playback.mode == MotionMode::Manual;
     let x_label = if manual {
         "seconds ago (manual pose history)"
     } else {
@@ -35,12 +36,13 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         for leg in 0..6 {
             let points: PlotPoints = if manual {
                 state
+                    .playback
                     .history
                     .entries()
-                    .map(|(t, l)| [t - state.clock, l[leg]])
+                    .map(|(t, l)| [t - state.playback.clock, l[leg]])
                     .collect()
             } else {
-                let (times, lengths) = &state.samples;
+                let (times, lengths) = state.plot_samples();
                 times
                     .iter()
                     .zip(lengths)
@@ -59,12 +61,12 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
         if !manual {
-            let marker = if state.is_light() {
+            let marker = if state.look.is_light() {
                 Color32::BLACK
             } else {
                 Color32::WHITE
             };
-            let now = state.scenario.motion.sampling.start() + state.time;
+            let now = state.scenario().motion.sampling.start() + state.playback.time;
             plot.vline(VLine::new("now", now).color(marker));
         }
     });
@@ -74,8 +76,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         && let Some(pointer) = response.interact_pointer_pos()
     {
         let t = shown.transform.value_from_position(pointer).x;
-        let start = state.scenario.motion.sampling.start();
-        state.time = (t - start).clamp(0.0, state.duration());
-        state.playing = false;
+        let start = state.scenario().motion.sampling.start();
+        state.playback.time = (t - start).clamp(0.0, state.duration());
+        state.playback.playing = false;
     }
 }

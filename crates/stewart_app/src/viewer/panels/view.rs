@@ -4,7 +4,8 @@
 use egui::Color32;
 use stewart_render::{DrawList, Overlays};
 
-use crate::viewer::state::{MotionMode, ViewerState};
+use crate::viewer::playback::MotionMode;
+use crate::viewer::state::ViewerState;
 use crate::viewer::view3d::SceneCallback;
 
 /// Standard views: label, azimuth and elevation (MATLAB's `view(az, el)`).
@@ -17,7 +18,7 @@ const VIEWS: [(&str, f32, f32); 4] = [
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    if state.presentation {
+    if state.look.presentation {
         ui.label(
             egui::RichText::new("Presentation: P or Esc to leave")
                 .small()
@@ -33,8 +34,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             if ui.button("Reset view").clicked() {
                 state.look_from(VIEWS[0].1, VIEWS[0].2);
             }
-            ui.checkbox(&mut state.show_path, "Path");
-            ui.checkbox(&mut state.platform_axes, "Platform axes");
+            ui.checkbox(&mut state.look.show_path, "Path");
+            ui.checkbox(&mut state.look.platform_axes, "Platform axes");
         });
     }
     let rect = ui.available_rect_before_wrap();
@@ -44,15 +45,26 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let bg = theme.background.map(|c| (c * 255.0) as u8);
     ui.painter()
         .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
-    let path = if state.show_path && state.mode == MotionMode::Trajectory {
+    let path = if state.look.show_path && state.playback.mode == MotionMode::Trajectory {
         state.path_until_now()
     } else {
         Vec::new()
     };
-    let frame = state.scenario.geometry.scene_frame(&state.pose(), path);
+    if let Some(missing) = &state.look.renderer_missing {
+        // Say why rather than show an empty view.
+        ui.painter().text(
+            rect.center(),
+            egui::Align2::CENTER_CENTER,
+            format!("The 3D view cannot be drawn: {missing}."),
+            egui::FontId::proportional(14.0),
+            ui.visuals().warn_fg_color,
+        );
+        return;
+    }
+    let frame = state.scenario().geometry.scene_frame(&state.pose(), path);
     let overlays = Overlays {
-        platform_axes: state.platform_axes,
-        path: state.show_path,
+        platform_axes: state.look.platform_axes,
+        path: state.look.show_path,
         ..Overlays::default()
     };
     let list = DrawList::build(&frame, &theme, &overlays);
@@ -61,7 +73,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         rect,
         SceneCallback {
             list,
-            camera: state.camera.fitted_to(aspect),
+            camera: state.look.camera.fitted_to(aspect),
             theme,
             aspect,
         },
@@ -77,14 +89,14 @@ fn camera_input(
 ) {
     if response.dragged_by(egui::PointerButton::Primary) {
         let d = response.drag_delta();
-        state.camera.orbit(-0.4 * d.x, 0.4 * d.y);
+        state.look.camera.orbit(-0.4 * d.x, 0.4 * d.y);
     }
     if response.dragged_by(egui::PointerButton::Secondary)
         || response.dragged_by(egui::PointerButton::Middle)
     {
         let d = response.drag_delta();
-        let scale = state.camera.distance * 0.0015;
-        state.camera.pan(-d.x * scale, d.y * scale);
+        let scale = state.look.camera.distance * 0.0015;
+        state.look.camera.pan(-d.x * scale, d.y * scale);
     }
     if let Some(pointer) = response.hover_pos() {
         let scroll = ui.input(|i| i.smooth_scroll_delta.y);
@@ -96,8 +108,9 @@ fn camera_input(
             let aspect = rect.width() / rect.height().max(1.0);
             // The view is drawn from the fitted camera, farther away in narrow views: the
             // cursor's offset in the target plane grows by the same ratio.
-            let fit = state.camera.fitted_to(aspect).distance / state.camera.distance;
+            let fit = state.look.camera.fitted_to(aspect).distance / state.look.camera.distance;
             state
+                .look
                 .camera
                 .zoom_toward((-scroll * 0.002).exp(), ndc * fit, aspect);
         }

@@ -3,7 +3,8 @@
 use egui::{Color32, RichText};
 use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
 
-use crate::viewer::state::{Status, ViewerState};
+use crate::viewer::files::Status;
+use crate::viewer::state::ViewerState;
 
 /// Red for refusals and errors.
 pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
@@ -15,10 +16,10 @@ pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
 /// to the default. Edits go through the setting's validation.
 pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target) {
     let setting = settings::of(target);
-    if !setting.applies(&state.scenario) {
+    if !setting.applies(state.scenario()) {
         return;
     }
-    let current = setting.get(&state.scenario);
+    let current = setting.get(state.scenario());
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
         if setting.optional() {
@@ -39,7 +40,7 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                     edit = Some(Some(v));
                 }
                 response.context_menu(|ui| {
-                    let default = setting.default_for(&state.scenario);
+                    let default = setting.default_for(state.scenario());
                     let text = default.map_or_else(
                         || "Switch off (default)".to_owned(),
                         |d| format!("Reset to default ({d} {})", setting.unit.symbol()),
@@ -63,7 +64,7 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
 /// The value an optional setting takes when switched on.
 fn default_on(setting: &Setting, state: &ViewerState) -> f64 {
     setting
-        .default_for(&state.scenario)
+        .default_for(state.scenario())
         .unwrap_or(*setting.range.end())
 }
 

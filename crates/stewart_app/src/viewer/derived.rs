@@ -1,0 +1,176 @@
+//! What the viewer derives from its scenario: the plotted samples, the traced path, the
+//! layout the geometry controls show, and the pre-flight report. Rebuilt only through
+//! [`Derived::rebuild`] (the state's one edit path calls it), so it never falls out of
+//! step; the report is computed off the UI thread, newest request first.
+
+use std::thread::JoinHandle;
+
+use nalgebra::Vector3;
+use stewart_kinematics::{CheckReport, Layout, Scenario, check_motion};
+
+/// Most samples the plot and the traced path hold (a trajectory may have ten million:
+/// the check uses them all, the picture needs far fewer).
+pub const PLOT_SAMPLES: usize = 20_000;
+
+/// The plot's and path's samples, the layout, and the report.
+pub struct Derived {
+    /// Sample times (at most [`PLOT_SAMPLES`], both ends kept), seconds.
+    pub times: Vec<f64>,
+    /// Leg lengths at those times, metres.
+    pub lengths: Vec<[f64; 6]>,
+    /// Platform-centre positions at those times, for the traced path.
+    pub centres: Vec<Vector3<f64>>,
+    /// The named layout of the joint angles, `None` when they follow none.
+    pub layout: Option<Layout>,
+    report: ReportWorker,
+}
+
+impl Derived {
+    /// Everything for `scenario` (the report is started, not waited for).
+    pub fn new(scenario: &Scenario) -> Self {
+        let mut d = Self {
+            times: Vec::new(),
+            lengths: Vec::new(),
+            centres: Vec::new(),
+            layout: None,
+            report: ReportWorker::default(),
+        };
+        d.rebuild(scenario);
+        d
+    }
+
+    /// Recompute after `scenario` changed: the thinned samples now, the report in the
+    /// background (a request made while one runs replaces any waiting one).
+    pub fn rebuild(&mut self, scenario: &Scenario) {
+        let params = scenario.geometry.params();
+        self.layout = Layout::recognise(&params.base_angles, &params.platform_angles);
+        let sampling = scenario.motion.sampling;
+        let n = sampling.len();
+        let m = n.min(PLOT_SAMPLES);
+        let index = |i: usize| {
+            if m == n {
+                i
+            } else {
+                ((i as f64) * (n - 1) as f64 / (m - 1) as f64).round() as usize
+            }
+        };
+        let g = &scenario.geometry;
+        self.times = (0..m).map(|i| sampling.time(index(i))).collect();
+        let poses: Vec<_> = self
+            .times
+            .iter()
+            .map(|&t| scenario.motion.trajectory.pose_at(t))
+            .collect();
+        self.lengths = g.leg_lengths_batch(&poses);
+        self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
+        self.report.request(scenario.clone());
+    }
+
+    /// The latest finished report of the current scenario, if it is in.
+    pub fn report(&self) -> Option<&CheckReport> {
+        self.report.current.as_ref()
+    }
+
+    /// Whether a report is being computed (or waits to be).
+    pub fn report_pending(&self) -> bool {
+        self.report.running.is_some() || self.report.waiting.is_some()
+    }
+
+    /// Collect a finished report and start the waiting request; never blocks.
+    pub fn poll(&mut self) {
+        self.report.poll(false);
+    }
+
+    /// Block until the report of the current scenario is in (screenshots and tests).
+    pub fn wait_for_report(&mut self) {
+        while self.report_pending() {
+            self.report.poll(true);
+        }
+    }
+}
+
+/// One background check at a time; the newest request waits, older ones are dropped.
+#[derive(Default)]
+struct ReportWorker {
+    /// The report of the scenario as it is now (`None` while the first is computed, or
+    /// after an edit until the new one is in).
+    current: Option<CheckReport>,
+    running: Option<JoinHandle<CheckReport>>,
+    /// Whether the running check is for an outdated scenario.
+    running_is_stale: bool,
+    waiting: Option<Scenario>,
+}
+
+impl ReportWorker {
+    fn request(&mut self, scenario: Scenario) {
+        self.current = None;
+        if self.running.is_some() {
+            self.running_is_stale = true;
+            self.waiting = Some(scenario);
+        } else {
+            self.start(scenario);
+        }
+    }
+
+    fn start(&mut self, scenario: Scenario) {
+        self.running_is_stale = false;
+        self.running = Some(std::thread::spawn(move || {
+            let samples = scenario.motion.sample();
+            check_motion(
+                &scenario.geometry,
+                &scenario.limits,
+                &samples,
+                &scenario.checks,
+            )
+        }));
+    }
+
+    fn poll(&mut self, block: bool) {
+        let finished = self
+            .running
+            .as_ref()
+            .is_some_and(|h| block || h.is_finished());
+        if finished && let Some(handle) = self.running.take() {
+            let report = handle.join().ok();
+            if !self.running_is_stale {
+                self.current = report;
+            }
+        }
+        if self.running.is_none()
+            && let Some(next) = self.waiting.take()
+        {
+            self.start(next);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_trajectories_are_thinned_for_the_plot_but_keep_their_ends() {
+        let mut s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        stewart_kinematics::settings::apply_all(&mut s, ["trajectory.samples=30000"])
+            .unwrap_or_else(|e| panic!("{e}"));
+        let mut d = Derived::new(&s);
+        assert_eq!(d.times.len(), PLOT_SAMPLES);
+        assert_eq!(d.times.first(), Some(&s.motion.sampling.start()));
+        assert_eq!(d.times.last(), Some(&s.motion.sampling.time(29_999)));
+        d.wait_for_report();
+        assert_eq!(d.report().map(|r| r.samples), Some(30_000));
+    }
+
+    #[test]
+    fn only_the_report_of_the_newest_scenario_is_kept() {
+        let seed = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        let paired = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        let mut d = Derived::new(&seed);
+        d.rebuild(&paired);
+        d.rebuild(&seed);
+        d.rebuild(&paired);
+        d.wait_for_report();
+        assert!(!d.report_pending());
+        assert!(d.report().is_some_and(|r| !r.architecture.singular));
+    }
+}

@@ -1,0 +1,48 @@
+//! How the viewer looks: the camera, colours, presentation mode, what the 3D view
+//! draws beyond the platform, and whether the 3D renderer is there at all.
+
+use stewart_render::{OrbitCamera, Theme};
+
+/// The view's settings.
+#[derive(Clone, Debug)]
+pub struct Look {
+    /// The camera.
+    pub camera: OrbitCamera,
+    /// Light (presentation) or dark colours.
+    pub light_theme: bool,
+    /// Presentation mode: light colours, large text, control panels hidden.
+    pub presentation: bool,
+    /// Open every collapsible section at start (for screenshots of everything).
+    pub expand_panels: bool,
+    /// Draw the path the platform centre has traced.
+    pub show_path: bool,
+    /// Draw the platform's own axes.
+    pub platform_axes: bool,
+    /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
+    pub renderer_missing: Option<String>,
+}
+
+impl Look {
+    /// Dark colours, path shown, looking through `camera`; no renderer yet.
+    pub fn new(camera: OrbitCamera) -> Self {
+        Self {
+            camera,
+            light_theme: false,
+            presentation: false,
+            expand_panels: false,
+            show_path: true,
+            platform_axes: false,
+            renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
+        }
+    }
+
+    /// Whether colours are light (the light theme, or presentation mode).
+    pub fn is_light(&self) -> bool {
+        self.light_theme || self.presentation
+    }
+
+    /// The colour theme (presentation mode is always light).
+    pub fn theme(&self) -> Theme {
+        Theme::from_light(self.is_light())
+    }
+}
