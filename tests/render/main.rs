@@ -28,11 +28,7 @@ pub fn render(
 
 /// The seed's view framing the platform at home.
 pub fn seed_camera(geometry: &Geometry) -> OrbitCamera {
-    let h = geometry.home_height() as f32;
-    OrbitCamera::seed_view(
-        Vec3::new(0.0, 0.0, 0.45 * h),
-        geometry.params().base_radius as f32 * 1.15,
-    )
+    OrbitCamera::seed_view_of(geometry)
 }
 
 /// Pixel coordinates of a world point.

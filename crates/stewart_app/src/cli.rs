@@ -272,6 +272,9 @@ pub struct ForcesArgs {
     pub out: Option<PathBuf>,
 }
 
+/// The smallest frame or window side, pixels.
+pub const MIN_SIDE: u32 = 16;
+
 /// `WxH`, such as `1280x720`.
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text
@@ -282,10 +285,11 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
             .trim()
             .parse()
             .map_err(|_| format!("`{s}` is not a whole number of pixels"))?;
-        if (16..=4096).contains(&v) {
+        let max = stewart_render::offscreen::MAX_SIDE;
+        if (MIN_SIDE..=max).contains(&v) {
             Ok(v)
         } else {
-            Err(format!("{v} pixels is outside 16..=4096"))
+            Err(format!("{v} pixels is outside {MIN_SIDE}..={max}"))
         }
     };
     Ok((side(w)?, side(h)?))

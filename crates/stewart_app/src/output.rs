@@ -142,6 +142,23 @@ impl Destination {
         }
     }
 
+    /// A new temporary file in [`Destination::staging_dir`] (removed when dropped), for
+    /// output that is moved into place by [`Destination::deliver`] when complete.
+    pub fn staged_file(&self, suffix: &str) -> Result<tempfile::NamedTempFile> {
+        let dir = self.staging_dir();
+        tempfile::Builder::new()
+            .prefix(".stewart-")
+            .suffix(suffix)
+            .tempfile_in(&dir)
+            .with_context(|| {
+                format!(
+                    "cannot write `{}`: cannot create a file in `{}`",
+                    self.shown.display(),
+                    dir.display()
+                )
+            })
+    }
+
     /// Refuse a folder where a file is wanted.
     pub fn require_file(&self) -> Result<&Self> {
         if self.kind == Kind::Folder {
@@ -171,18 +188,7 @@ impl Destination {
                 .and_then(|()| w.flush())
                 .with_context(|| format!("cannot write `{shown}`"));
         }
-        let dir = self.staging_dir();
-        let tmp = tempfile::Builder::new()
-            .prefix(".stewart-")
-            .suffix(".partial")
-            .tempfile_in(&dir)
-            .with_context(|| {
-                format!(
-                    "cannot write `{shown}`: cannot create a file in `{}`",
-                    dir.display()
-                )
-            })?;
-        let (file, tmp_path) = tmp.into_parts();
+        let (file, tmp_path) = self.staged_file(".partial")?.into_parts();
         let mut w = BufWriter::new(file);
         fill(&mut w)
             .and_then(|()| w.flush())
@@ -248,6 +254,13 @@ pub fn readable_by_all(path: &Path) {
         // Best effort: a file that stays private is still a correct file.
         let _ = std::fs::set_permissions(path, std::fs::Permissions::from_mode(mode));
     }
+}
+
+/// A path's extension in lower case (`None` without one): how outputs choose their format.
+pub fn extension(path: &Path) -> Option<String> {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
 }
 
 /// Write `bytes` to standard output. A closed pipe (`stewart solve | head`) is the

@@ -16,12 +16,11 @@
 //! Statics is the special case `a_c = 0`, `ω = α = 0`. Velocities and accelerations come
 //! from central differences of the sampled motion (times are arguments, never a clock).
 
-use std::ops::{Mul, Sub};
-
 use nalgebra::{Matrix3, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::differences::{first_difference, second_difference};
 use crate::geometry::Geometry;
 use crate::trajectory::Samples;
 
@@ -125,36 +124,6 @@ pub struct ForceSeries {
     pub statics: Vec<[f64; 6]>,
     /// Dynamic forces (weight and inertia) per sample.
     pub dynamics: Vec<[f64; 6]>,
-}
-
-/// Central first difference of a sampled series at sample `k` (one-sided at the ends).
-fn first_difference<T>(times: &[f64], values: &[T], k: usize) -> Option<T>
-where
-    T: Copy + Sub<Output = T> + Mul<f64, Output = T>,
-{
-    let n = values.len();
-    if n < 2 {
-        return None;
-    }
-    let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
-    Some((values[b] - values[a]) * (1.0 / (times[b] - times[a])))
-}
-
-/// Three-point second difference on an uneven grid at sample `k` (the ends take their
-/// neighbour's value). Exact for quadratics.
-fn second_difference<T>(times: &[f64], values: &[T], k: usize) -> Option<T>
-where
-    T: Copy + Sub<Output = T> + Mul<f64, Output = T>,
-{
-    let n = values.len();
-    if n < 3 {
-        return None;
-    }
-    let k = k.clamp(1, n - 2);
-    let (h0, h1) = (times[k] - times[k - 1], times[k + 1] - times[k]);
-    let ahead = (values[k + 1] - values[k]) * (1.0 / h1);
-    let back = (values[k] - values[k - 1]) * (1.0 / h0);
-    Some((ahead - back) * (2.0 / (h0 + h1)))
 }
 
 /// The vector of the skew-symmetric part of `m`: `vee((m − mᵀ)/2)`.

@@ -20,6 +20,7 @@ pub mod architecture;
 pub mod batch;
 pub mod bounds;
 pub mod checks;
+pub mod differences;
 mod fast_trig;
 pub mod forces;
 pub mod forward;

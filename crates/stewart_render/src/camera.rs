@@ -26,6 +26,18 @@ impl OrbitCamera {
         Self::framing(135.0, 20.0, centre, radius)
     }
 
+    /// The seed's view framing a platform at home: the whole base and platform with a
+    /// margin, looking at a point a little under half the home height. Exports, the
+    /// viewer's "Reset view" and the render tests all use this one framing.
+    pub fn seed_view_of(geometry: &stewart_kinematics::Geometry) -> Self {
+        let p = geometry.params();
+        let h = geometry.home_height() as f32;
+        Self::seed_view(
+            Vec3::new(0.0, 0.0, 0.45 * h),
+            p.base_radius.max(p.platform_radius) as f32 * 1.15,
+        )
+    }
+
     /// A camera at the given angles whose view holds a sphere of `radius` around `centre`
     /// (with a 10 % margin, for any aspect ratio of at least 1).
     pub fn framing(azimuth_deg: f32, elevation_deg: f32, centre: Vec3, radius: f32) -> Self {

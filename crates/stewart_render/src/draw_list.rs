@@ -176,13 +176,7 @@ impl DrawList {
     /// A square grid on z = 0 reaching `half` metres from the origin, lines every
     /// "nice" step (1, 2 or 5 × 10ⁿ) giving about ten cells per side.
     fn grid(&mut self, half: f32, theme: &Theme) {
-        let raw = half / 5.0;
-        let magnitude = 10f32.powf(raw.log10().floor());
-        let step = [1.0, 2.0, 5.0, 10.0]
-            .iter()
-            .map(|m| m * magnitude)
-            .find(|s| *s >= raw)
-            .unwrap_or(raw);
+        let step = crate::ticks::nice_step(f64::from(half) / 5.0) as f32;
         let n = (half / step).floor() as i32;
         let extent = n as f32 * step;
         let c = linear(theme.grid);

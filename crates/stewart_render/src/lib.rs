@@ -20,6 +20,7 @@ pub mod offscreen;
 pub mod renderer;
 pub mod shaders;
 pub mod theme;
+pub mod ticks;
 
 pub use camera::OrbitCamera;
 pub use draw_list::{DrawList, Overlays};

@@ -222,12 +222,7 @@ fn points_file(path: &std::path::Path, ws: &ConstantOrientationWorkspace) -> Res
         .spans
         .iter()
         .flat_map(|s| [[s[0], s[1], s[2]], [s[0], s[1], s[3]]]);
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
+    match output::extension(path).as_deref() {
         Some("csv") => {
             let mut csv = CsvText::with_header(&["x", "y", "z"]);
             for p in points {

@@ -31,12 +31,7 @@ pub enum Target {
 impl Target {
     /// `.gif` and `.mp4` paths are videos; anything else is a folder.
     pub fn from_path(path: &Path) -> Target {
-        match path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref()
-        {
+        match crate::output::extension(path).as_deref() {
             Some("gif") => Target::Gif(path.to_path_buf()),
             Some("mp4") => Target::Mp4(path.to_path_buf()),
             _ => Target::Folder(path.to_path_buf()),
@@ -175,14 +170,6 @@ enum Staging {
     },
 }
 
-fn staged_file(out: &Destination, suffix: &str) -> Result<tempfile::NamedTempFile> {
-    tempfile::Builder::new()
-        .prefix(".stewart-")
-        .suffix(suffix)
-        .tempfile_in(out.staging_dir())
-        .with_context(|| format!("cannot write `{}`", out.shown().display()))
-}
-
 /// Check that `ffmpeg` runs, or say how to install it.
 pub fn check_ffmpeg() -> Result<()> {
     match Command::new("ffmpeg")
@@ -283,7 +270,7 @@ impl Staging {
                 let (Ok(w), Ok(h)) = (u16::try_from(width), u16::try_from(height)) else {
                     bail!("a GIF can be at most 65535 pixels wide and high")
                 };
-                let (file, path) = staged_file(&dest, ".gif")?.into_parts();
+                let (file, path) = dest.staged_file(".gif")?.into_parts();
                 let mut encoder = gif::Encoder::new(std::io::BufWriter::new(file), w, h, &[])
                     .context("cannot start the GIF")?;
                 encoder
@@ -299,7 +286,7 @@ impl Staging {
             }
             Target::Mp4(_) => {
                 let dest = target.destination()?;
-                let file = staged_file(&dest, ".mp4")?.into_temp_path();
+                let file = dest.staged_file(".mp4")?.into_temp_path();
                 let mut ffmpeg = spawn_ffmpeg(width, height, fps, &file)?;
                 let stdin = ffmpeg.child.stdin.take();
                 Ok(Opened {

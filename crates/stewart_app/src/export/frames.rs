@@ -1,7 +1,6 @@
 //! Rendering a trajectory's frames headlessly, optionally beside the leg-length plot.
 
 use anyhow::{Result, anyhow};
-use glam::Vec3;
 use nalgebra::Vector3;
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
@@ -31,12 +30,7 @@ pub struct FrameJob {
 
 /// The seed's view framing `scenario`'s platform.
 pub fn default_camera(scenario: &Scenario) -> OrbitCamera {
-    let g = &scenario.geometry;
-    let h = g.home_height() as f32;
-    OrbitCamera::seed_view(
-        Vec3::new(0.0, 0.0, 0.45 * h),
-        g.params().base_radius.max(g.params().platform_radius) as f32 * 1.15,
-    )
+    OrbitCamera::seed_view_of(&scenario.geometry)
 }
 
 /// The plot half of a composite frame: the static plot once, then a marker per frame.

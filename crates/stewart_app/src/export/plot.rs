@@ -57,13 +57,7 @@ pub fn margins() -> (f64, f64, f64, f64) {
 /// About `count` "nice" ticks (1, 2, 5 × 10ⁿ apart) covering `[lo, hi]`.
 pub fn nice_ticks(lo: f64, hi: f64, count: usize) -> Vec<f64> {
     let span = (hi - lo).abs().max(1e-12);
-    let raw = span / count.max(1) as f64;
-    let magnitude = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0]
-        .iter()
-        .map(|m| m * magnitude)
-        .find(|s| *s >= raw * 0.999)
-        .unwrap_or(raw);
+    let step = stewart_render::ticks::nice_step(span / count.max(1) as f64);
     let first = (lo / step).ceil() as i64;
     let last = (hi / step).floor() as i64;
     (first..=last).map(|k| k as f64 * step).collect()
@@ -257,12 +251,7 @@ pub fn plot_file(
     path: &std::path::Path,
 ) -> anyhow::Result<Vec<u8>> {
     let (_, text) = scenario_svg(scenario);
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
+    match crate::output::extension(path).as_deref() {
         Some("svg") => Ok(text.into_bytes()),
         Some("pdf") => super::vector::pdf(&text),
         // 3.125 × 96 dpi = 300 dpi.

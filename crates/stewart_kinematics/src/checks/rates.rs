@@ -1,42 +1,34 @@
 //! Leg speed and acceleration, by finite differences of the sampled leg lengths.
 //!
-//! Interior samples use central differences on the (possibly uneven) time grid; the end
-//! samples take their neighbour's value.
+//! Interior samples use central differences on the (possibly uneven) time grid; at the
+//! end samples the speed is one-sided and the acceleration takes its neighbour's value
+//! (see [`crate::differences`]).
+
+use nalgebra::Vector6;
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_legs};
+use crate::differences::{first_difference, second_difference};
 use crate::limits::Limits;
 
-/// Leg speeds dL/dt (m/s) at every sample.
+/// Leg speeds dL/dt (m/s) at every sample (see [`crate::differences`]).
 pub fn leg_speeds(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
-    let n = lengths.len();
-    if n < 2 {
-        return vec![[0.0; 6]; n];
-    }
-    (0..n)
-        .map(|k| {
-            let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
-            std::array::from_fn(|i| (lengths[b][i] - lengths[a][i]) / (times[b] - times[a]))
-        })
-        .collect()
+    per_sample(times, lengths, first_difference)
 }
 
-/// Leg accelerations d²L/dt² (m/s²) at every sample.
+/// Leg accelerations d²L/dt² (m/s²) at every sample (see [`crate::differences`]).
 pub fn leg_accelerations(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
-    let n = lengths.len();
-    if n < 3 {
-        return vec![[0.0; 6]; n];
-    }
-    (0..n)
-        .map(|k| {
-            let k = k.clamp(1, n - 2);
-            let (h0, h1) = (times[k] - times[k - 1], times[k + 1] - times[k]);
-            std::array::from_fn(|i| {
-                let back = (lengths[k][i] - lengths[k - 1][i]) / h0;
-                let ahead = (lengths[k + 1][i] - lengths[k][i]) / h1;
-                2.0 * (ahead - back) / (h0 + h1)
-            })
-        })
+    per_sample(times, lengths, second_difference)
+}
+
+/// A finite-difference rule of [`crate::differences`] on six-vectors.
+type Difference = fn(&[f64], &[Vector6<f64>], usize) -> Option<Vector6<f64>>;
+
+/// `difference` of the six lengths at every sample (zero where there are too few samples).
+fn per_sample(times: &[f64], lengths: &[[f64; 6]], difference: Difference) -> Vec<[f64; 6]> {
+    let values: Vec<Vector6<f64>> = lengths.iter().map(|l| Vector6::from(*l)).collect();
+    (0..values.len())
+        .map(|k| difference(times, &values, k).map_or([0.0; 6], Into::into))
         .collect()
 }
 
