@@ -342,6 +342,49 @@ fn a_4k_frame_renders() {
     assert!(o.status.success(), "{}", stderr(&o));
     let img = image::open(out.join("frame_00000.png")).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!((img.width(), img.height()), (3840, 2160));
+    // The same picture, not just the same size: scaled down, the 4K frame matches the
+    // 1280×720 frame of the same pose (edges are rasterised differently; the scene is not).
+    let small = dir.path().join("hd");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &small.display().to_string(),
+        "--frames",
+        "0..1",
+        "--size",
+        "1280x720",
+        "--platform-axes",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let hd = image::open(small.join("frame_00000.png"))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    let down = image::imageops::resize(
+        &img.to_rgba8(),
+        1280,
+        720,
+        image::imageops::FilterType::Triangle,
+    );
+    let (mut total, mut far) = (0u64, 0usize);
+    for (p, q) in hd.pixels().zip(down.pixels()) {
+        let d = (0..3)
+            .map(|k| (i32::from(p[k]) - i32::from(q[k])).unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        total += u64::from(d);
+        far += usize::from(d > 64);
+    }
+    let n = (1280 * 720) as f64;
+    let mean = total as f64 / n;
+    assert!(mean < 4.0, "mean difference {mean:.2} of 255");
+    assert!(
+        (far as f64) < 0.01 * n,
+        "{far} pixels differ by more than 64"
+    );
+    // And the 4K frame is not blank: the background does not fill it.
+    let bg = hd.get_pixel(0, 0);
+    let drawn = hd.pixels().filter(|p| *p != bg).count();
+    assert!(drawn as f64 > 0.1 * n, "only {drawn} pixels drawn");
 }
 
 #[test]

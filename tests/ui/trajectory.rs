@@ -103,6 +103,25 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
         k.interpolation(),
         stewart_kinematics::trajectory::Interpolation::Linear
     );
+    // A key moved before its predecessor is refused: the keys stay, the reason shows.
+    let before = h.state().scenario().clone();
+    let times: Vec<f64> = k.keys().iter().map(|k| k.t).collect();
+    let third = h
+        .get_all_by_role_and_label(Role::SpinButton, "t (s)")
+        .nth(2)
+        .unwrap_or_else(|| panic!("no time cell of the third key"));
+    third.set_value_accesskit(times[0] - 1.0);
+    h.run();
+    assert_eq!(h.state().scenario(), &before);
+    assert!(
+        h.state()
+            .edit_error
+            .as_ref()
+            .is_some_and(|(_, e)| e.contains("times must increase")),
+        "{:?}",
+        h.state().edit_error
+    );
+    assert!(h.query_by_label_contains("times must increase").is_some());
 }
 
 /// Press and release the primary button at `pos`.

@@ -21,8 +21,10 @@ pub struct Cli {
 pub enum Command {
     /// Leg lengths for a scenario's trajectory or for a table of poses, as CSV.
     Solve(SolveArgs),
-    /// Check a scenario's motion: rigid-body consistency, stroke limits, leg-length jumps.
-    /// Exit status 0 when nothing is found, 1 when a problem is found, 2 for unusable input.
+    /// The pre-flight check of a scenario's motion: stroke, leg speed and acceleration,
+    /// joint cones, leg clearance, near-singular poses, architecture singularity, jumps and
+    /// rigid-body consistency, each located by leg and time. Exit status 0 when nothing is
+    /// found, 1 when a problem is found, 2 for unusable input.
     Check(CheckArgs),
     /// Forward kinematics: poses from a table of leg lengths, as CSV.
     Fk(FkArgs),
@@ -38,7 +40,7 @@ pub enum Command {
     /// The interactive viewer (what `stewart` with no argument opens).
     View(ViewArgs),
     /// Every setting `--set` accepts (the keys of scenario files and the viewer's sliders):
-    /// key, unit, slider range, default and, with a scenario, its current value.
+    /// key, current value, unit, slider range, accepted range and default.
     Settings(SettingsArgs),
 }
 

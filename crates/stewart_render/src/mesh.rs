@@ -164,9 +164,38 @@ impl Mesh {
 mod tests {
     use super::*;
 
+    /// Closed: every edge of a non-degenerate triangle, taken by vertex positions (the
+    /// meshes split vertices where normals differ), is walked once in each direction by
+    /// the triangles on its two sides, so the surface has no hole and no flipped face.
+    fn check_closed(m: &Mesh) {
+        use std::collections::HashMap;
+        let key = |i: u32| {
+            let p = m.vertices[i as usize].position;
+            p.map(|c| (c * 1e4).round() as i64)
+        };
+        let mut edges: HashMap<([i64; 3], [i64; 3]), i32> = HashMap::new();
+        for t in m.indices.chunks(3) {
+            let [a, b, c] = [t[0], t[1], t[2]].map(key);
+            if a == b || b == c || c == a {
+                continue; // a sliver at a pole: no area, no edge of the surface
+            }
+            for (p, q) in [(a, b), (b, c), (c, a)] {
+                *edges.entry((p, q)).or_default() += 1;
+            }
+        }
+        for (&(p, q), &n) in &edges {
+            let back = edges.get(&(q, p)).copied().unwrap_or(0);
+            assert_eq!(
+                n, back,
+                "edge {p:?} → {q:?} walked {n} times, back {back} times"
+            );
+        }
+    }
+
     fn check_closed_and_outward(m: &Mesh, inside: Vec3) {
         assert_eq!(m.indices.len() % 3, 0);
         assert!(m.indices.iter().all(|&i| (i as usize) < m.vertices.len()));
+        check_closed(m);
         // Every triangle faces away from an interior point (counter-clockwise outside).
         for t in m.indices.chunks(3) {
             let [a, b, c] = [0, 1, 2].map(|k| Vec3::from_array(m.vertices[t[k] as usize].position));
@@ -178,6 +207,16 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn the_closure_check_sees_a_hole_and_a_flipped_face() {
+        let mut open = Mesh::cylinder();
+        open.indices.truncate(open.indices.len() - 3);
+        assert!(std::panic::catch_unwind(|| check_closed(&open)).is_err());
+        let mut flipped = Mesh::cone();
+        flipped.indices.swap(0, 1);
+        assert!(std::panic::catch_unwind(|| check_closed(&flipped)).is_err());
     }
 
     #[test]
