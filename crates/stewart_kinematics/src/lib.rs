@@ -1,16 +1,21 @@
 //! Kinematics of the six-degree-of-freedom Gough–Stewart platform.
 //!
 //! Pure math on `nalgebra` (f64): no GPU, window or UI. The model follows the seed
-//! article (see `SPEC.md`): base joints `b_i` on a circle of radius `r_b` in the base
-//! plane, platform joints `a_i` on a circle of radius `r_p` in the platform plane,
-//! pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment from
-//! `b_i` to `q_i = p + R a_i`.
+//! article (README.md, "The model"): base joints `b_i` on a circle of radius `r_b` in
+//! the base plane, platform joints `a_i` on a circle of radius `r_p` in the platform
+//! plane, pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment
+//! from `b_i` to `q_i = p + c + R (a_i − c)` (`c` the pivot, zero in the seed).
 //!
 //! - [`angle`]: angles whose unit is carried by the type;
 //! - [`geometry`], [`layout`]: the platform and its named joint layouts;
 //! - [`pose`], [`inverse`], [`batch`]: poses and inverse kinematics, one or millions;
 //! - [`trajectory`]: motions over time and their sampling;
-//! - [`checks`]: rigid-body, stroke and jump checks over a motion;
+//! - [`checks`]: the pre-flight checks over a motion (stroke, rates, cones, clearance,
+//!   singularity, jumps, rigid body); [`differences`]: the finite differences they use;
+//! - [`jacobian`], [`architecture`], [`forward`], [`workspace`], [`forces`], [`limits`]:
+//!   conditioning, singular geometries, forward kinematics, reach, loads, pose limits;
+//! - [`scene`]: plain data describing what to draw (the renderer's input);
+//! - [`settings`], [`bounds`]: every adjustable number and the accepted range of each;
 //! - [`scenario`]: scenario files (TOML) and the shipped presets;
 //! - [`table`]: numeric CSV tables with located errors;
 //! - [`text`]: input text with a size cap and plain words for foreign encodings.
