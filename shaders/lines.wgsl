@@ -1,14 +1,5 @@
 // Unlit coloured lines: the ground grid and the path traced by the platform centre.
-
-struct Globals {
-    view_proj: mat4x4<f32>,
-    eye: vec4<f32>,
-    key_light: vec4<f32>,
-    fill_light: vec4<f32>,
-    shading: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> globals: Globals;
+// `globals.wgsl` is prepended.
 
 struct VertexIn {
     @location(0) position: vec3<f32>,

@@ -1,20 +1,5 @@
 // Lit, instanced meshes: legs (cylinders), joints (spheres), axes, and the plates.
-// Self-contained: the renderer's `Globals` and `MeshInstance` mirror these structs.
-
-struct Globals {
-    view_proj: mat4x4<f32>,
-    // xyz: camera position (world, metres); w unused.
-    eye: vec4<f32>,
-    // xyz: direction *towards* the key light (world); w: key light strength.
-    key_light: vec4<f32>,
-    // xyz: direction towards the fill light; w: fill strength.
-    fill_light: vec4<f32>,
-    // x: ambient, y: specular strength, z: shininess, w: 1 to encode the output as sRGB
-    // (for targets that are not sRGB formats, such as egui's), 0 to output linear.
-    shading: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> globals: Globals;
+// `globals.wgsl` is prepended; the renderer's `MeshInstance` mirrors `InstanceIn`.
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
@@ -44,9 +29,15 @@ fn vs_main(v: VertexIn, i: InstanceIn) -> VertexOut {
     var out: VertexOut;
     out.clip = globals.view_proj * world;
     out.world = world.xyz;
-    // Meshes are only scaled equally across their round axes, so the model matrix keeps
-    // normals' directions (see the renderer's mesh docs).
-    out.normal = (model * vec4<f32>(v.normal, 0.0)).xyz;
+    // Normals go through the inverse transpose of the model's linear part. Instance
+    // matrices are a rotation times a scale along the mesh's own axes (orthogonal
+    // columns), whose inverse transpose is each column divided by its squared length:
+    // right for a cone scaled to any radius and length. `gpu_types::normal_to_world`
+    // is the same formula, tested on the CPU.
+    let c0 = model[0].xyz;
+    let c1 = model[1].xyz;
+    let c2 = model[2].xyz;
+    out.normal = c0 * (v.normal.x / dot(c0, c0)) + c1 * (v.normal.y / dot(c1, c1)) + c2 * (v.normal.z / dot(c2, c2));
     out.color = i.color;
     return out;
 }

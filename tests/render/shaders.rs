@@ -1,4 +1,20 @@
-//! Every WGSL file in `shaders/` parses and validates with naga, and the renderer uses them all.
+//! Every WGSL file in `shaders/` is part of a module the renderer builds; each module
+//! parses and validates with naga; and the Rust mirror of the shared uniforms has the
+//! size naga's layout gives the WGSL struct.
+
+use naga::Module;
+
+fn parse(name: &str, source: &str) -> Module {
+    let module = naga::front::wgsl::parse_str(source)
+        .unwrap_or_else(|e| panic!("{name}: {}", e.emit_to_string(source)));
+    naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::default(),
+    )
+    .validate(&module)
+    .unwrap_or_else(|e| panic!("{name}: {e:?}"));
+    module
+}
 
 #[test]
 fn every_shader_validates() {
@@ -10,31 +26,51 @@ fn every_shader_validates() {
         .filter(|n| n.ends_with(".wgsl"))
         .collect();
     files.sort();
-    let mut known: Vec<&str> = stewart_render::shaders::ALL
+    let mut used: Vec<&str> = stewart_render::shaders::MODULES
         .iter()
-        .map(|(n, _)| *n)
+        .flat_map(|(_, parts, _)| parts.iter().copied())
         .collect();
-    known.sort();
+    used.sort();
+    used.dedup();
     assert_eq!(
-        files, known,
+        files, used,
         "every shader file must be compiled in, and only those"
     );
-    for (name, source) in stewart_render::shaders::ALL {
-        let module = naga::front::wgsl::parse_str(source)
-            .unwrap_or_else(|e| panic!("{name}: {}", e.emit_to_string(source)));
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::default(),
-        )
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{name}: {e:?}"));
-        assert!(
-            module.entry_points.iter().any(|e| e.name == "vs_main"),
-            "{name}"
-        );
-        assert!(
-            module.entry_points.iter().any(|e| e.name == "fs_main"),
-            "{name}"
-        );
+    for (name, _, source) in stewart_render::shaders::MODULES {
+        let module = parse(name, source);
+        for entry in ["vs_main", "fs_main"] {
+            assert!(
+                module.entry_points.iter().any(|e| e.name == entry),
+                "{name}: no {entry}"
+            );
+        }
+    }
+}
+
+/// Size and alignment naga's layouter gives the type of the global variable `name`.
+fn uniform_layout(module: &Module, name: &str) -> (u32, u32) {
+    let mut layouter = naga::proc::Layouter::default();
+    layouter
+        .update(module.to_ctx())
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    let (_, var) = module
+        .global_variables
+        .iter()
+        .find(|(_, v)| v.name.as_deref() == Some(name))
+        .unwrap_or_else(|| panic!("no global `{name}`"));
+    let layout = layouter[var.ty];
+    (layout.size, layout.alignment.round_up(1))
+}
+
+#[test]
+fn the_rust_globals_mirror_the_wgsl_struct() {
+    use stewart_render::gpu_types::Globals;
+    for (name, _, source) in stewart_render::shaders::MODULES {
+        let module = parse(name, source);
+        let (size, align) = uniform_layout(&module, "globals");
+        assert_eq!(size as usize, size_of::<Globals>(), "{name}: size");
+        // A uniform buffer's struct must be 16-byte aligned; the Rust struct is made of
+        // vec4 and mat4 columns only, so its fields fall where WGSL puts them.
+        assert_eq!(align, 16, "{name}: alignment");
     }
 }

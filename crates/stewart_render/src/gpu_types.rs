@@ -38,6 +38,16 @@ pub struct MeshInstance {
     pub color: [f32; 4],
 }
 
+/// A model-space normal in world space, as `mesh.wgsl`'s `vs_main` computes it: the
+/// inverse transpose of the model's linear part applied to `n`, for instance matrices
+/// whose columns are orthogonal (a rotation times a scale along the mesh's own axes):
+/// each column divided by its squared length. Not normalised (the fragment shader does).
+pub fn normal_to_world(model: &[[f32; 4]; 4], n: glam::Vec3) -> glam::Vec3 {
+    let column = |k: usize| glam::Vec3::new(model[k][0], model[k][1], model[k][2]);
+    let (c0, c1, c2) = (column(0), column(1), column(2));
+    c0 * (n.x / c0.dot(c0)) + c1 * (n.y / c1.dot(c1)) + c2 * (n.z / c2.dot(c2))
+}
+
 /// `VertexIn` in `lines.wgsl`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
@@ -53,8 +63,38 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_stretched_cone_keeps_its_side_normals_perpendicular_to_its_sides() {
+        use glam::{Mat4, Quat, Vec3};
+        // An axis arrow's tip: radius 0.026 m, length 0.06 m, tilted.
+        let model = Mat4::from_scale_rotation_translation(
+            Vec3::new(0.026, 0.026, 0.06),
+            Quat::from_rotation_arc(Vec3::Z, Vec3::new(1.0, 0.5, 0.3).normalize()),
+            Vec3::new(0.2, -0.1, 0.8),
+        );
+        let cols = model.to_cols_array_2d();
+        let cone = crate::mesh::Mesh::cone();
+        let apex = model.transform_point3(Vec3::Z);
+        let mut checked = 0;
+        for v in &cone.vertices {
+            let p = Vec3::from_array(v.position);
+            let n = Vec3::from_array(v.normal);
+            if p.z != 0.0 || n.z <= 0.0 {
+                continue; // the apex, or the base disc
+            }
+            let slant = (apex - model.transform_point3(p)).normalize();
+            let good = normal_to_world(&cols, n).normalize();
+            assert!(good.dot(slant).abs() < 1e-5, "{}", good.dot(slant));
+            // The model matrix alone (the old way) tilts them off the surface.
+            let naive = model.transform_vector3(n).normalize();
+            assert!(naive.dot(slant).abs() > 0.1, "{}", naive.dot(slant));
+            checked += 1;
+        }
+        assert_eq!(checked, 64);
+    }
+
+    #[test]
     fn sizes_match_the_wgsl_layouts() {
-        assert_eq!(size_of::<Globals>(), 64 + 4 * 16);
+        assert_eq!(size_of::<Globals>(), 64 + 4 * 16); // checked against naga in tests/render
         assert_eq!(size_of::<MeshVertex>(), 24);
         assert_eq!(size_of::<MeshInstance>(), 80);
         assert_eq!(size_of::<LineVertex>(), 28);

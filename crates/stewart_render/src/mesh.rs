@@ -1,7 +1,8 @@
 //! Triangle meshes: unit cylinder, unit cone, unit sphere, and plates built from joints.
 //!
-//! The round meshes are only ever scaled equally in x and y (radius) and freely in z
-//! (length), which keeps normals' directions under the model matrix.
+//! Instances place them with a rotation times a scale along their own axes (radius in x
+//! and y, length in z); normals are then transformed by the inverse transpose of that
+//! (see `gpu_types::normal_to_world`), so a cone's sides stay lit right at any aspect.
 
 use glam::Vec3;
 

@@ -1,9 +1,19 @@
-//! The WGSL sources, from the top-level `shaders/` folder.
+//! The WGSL sources, from the top-level `shaders/` folder. `globals.wgsl` (the uniforms
+//! every pipeline reads) is written once and prepended to each pipeline's module.
 
-/// Lit instanced meshes.
-pub const MESH: &str = include_str!("../../../shaders/mesh.wgsl");
-/// Unlit lines.
-pub const LINES: &str = include_str!("../../../shaders/lines.wgsl");
+/// Lit instanced meshes (the opaque and the translucent pipelines), globals included.
+pub const MESH: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/mesh.wgsl")
+);
+/// Unlit lines, globals included.
+pub const LINES: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/lines.wgsl")
+);
 
-/// Every shader with its file name, for validation.
-pub const ALL: [(&str, &str); 2] = [("mesh.wgsl", MESH), ("lines.wgsl", LINES)];
+/// Every pipeline's module with the shader files it is made of, for validation.
+pub const MODULES: [(&str, &[&str], &str); 2] = [
+    ("mesh", &["globals.wgsl", "mesh.wgsl"], MESH),
+    ("lines", &["globals.wgsl", "lines.wgsl"], LINES),
+];
