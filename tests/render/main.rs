@@ -171,3 +171,37 @@ fn a_bad_size_is_an_error_not_a_panic() {
     assert!(off.render(&list, &camera, &Theme::DARK, 0, 100).is_err());
     assert!(off.render(&list, &camera, &Theme::DARK, 100, 5000).is_err());
 }
+
+#[test]
+fn views_prepared_with_one_renderer_stay_independent() {
+    // Two views prepared one after the other, then drawn in the other order: each shows
+    // its own scene (per-view buffers, not one set the last prepare overwrites).
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let (w, h) = (160, 120);
+    let home = g.home_pose();
+    let moved = Pose::from_xyz_rpy_deg([0.15, 0.0, 0.8], [0.0, 0.0, 25.0]);
+    let alone = |off: &mut Offscreen, pose: &Pose| render(off, &g, pose, &Theme::DARK, w, h).0;
+    let home_alone = alone(&mut off, &home);
+    let moved_alone = alone(&mut off, &moved);
+    assert_ne!(home_alone.rgba, moved_alone.rgba);
+    let camera = seed_camera(&g);
+    let list = |pose: &Pose| {
+        DrawList::build(
+            &g.scene_frame(pose, Vec::new()),
+            &Theme::DARK,
+            &Overlays::default(),
+        )
+    };
+    let (mut a, mut b) = (off.new_view(), off.new_view());
+    off.prepare(&mut a, &list(&home), &camera, &Theme::DARK, w, h);
+    off.prepare(&mut b, &list(&moved), &camera, &Theme::DARK, w, h);
+    off.submit_prepared(&b, w, h)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let b_frame = off.read().unwrap_or_else(|e| panic!("{e}"));
+    off.submit_prepared(&a, w, h)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let a_frame = off.read().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(a_frame.rgba, home_alone.rgba);
+    assert_eq!(b_frame.rgba, moved_alone.rgba);
+}

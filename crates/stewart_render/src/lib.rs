@@ -21,6 +21,7 @@ pub mod renderer;
 pub mod shaders;
 pub mod theme;
 pub mod ticks;
+pub mod view;
 
 pub use camera::OrbitCamera;
 pub use draw_list::{DrawList, Overlays};
@@ -28,3 +29,4 @@ pub use gpu::{Gpu, GpuError};
 pub use offscreen::{Frame, Offscreen, OffscreenError};
 pub use renderer::Renderer;
 pub use theme::Theme;
+pub use view::PreparedView;

@@ -5,6 +5,7 @@ use crate::draw_list::DrawList;
 use crate::gpu::{Gpu, GpuError};
 use crate::renderer::{DEPTH_FORMAT, Renderer};
 use crate::theme::Theme;
+use crate::view::PreparedView;
 
 /// Colour format of offscreen frames (sRGB, so images match the screen).
 pub const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -137,6 +138,7 @@ pub enum OffscreenError {
 pub struct Offscreen {
     gpu: Gpu,
     renderer: Renderer,
+    view: Option<PreparedView>,
     targets: Option<Targets>,
 }
 
@@ -152,9 +154,11 @@ impl Offscreen {
             1
         };
         let renderer = Renderer::new(&gpu.device, FORMAT, samples);
+        let view = Some(renderer.new_view(&gpu.device));
         Ok(Self {
             gpu,
             renderer,
+            view,
             targets: None,
         })
     }
@@ -191,6 +195,50 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<(), OffscreenError> {
+        // The own view is taken out while drawing and put back: no buffers made per frame.
+        let mut view = match self.view.take() {
+            Some(v) => v,
+            None => self.new_view(),
+        };
+        self.prepare(&mut view, list, camera, theme, width, height);
+        let submitted = self.submit_prepared(&view, width, height);
+        self.view = Some(view);
+        submitted
+    }
+
+    /// A view of its own (several may be prepared, then drawn in any order).
+    pub fn new_view(&self) -> PreparedView {
+        self.renderer.new_view(&self.gpu.device)
+    }
+
+    /// Upload `list` seen by `camera` into `view`, for a `width × height` image.
+    pub fn prepare(
+        &self,
+        view: &mut PreparedView,
+        list: &DrawList,
+        camera: &OrbitCamera,
+        theme: &Theme,
+        width: u32,
+        height: u32,
+    ) {
+        self.renderer.prepare(
+            &self.gpu.device,
+            &self.gpu.queue,
+            view,
+            list,
+            camera,
+            theme,
+            width as f32 / height.max(1) as f32,
+        );
+    }
+
+    /// Draw a prepared `view` and start copying it to the readback buffer.
+    pub fn submit_prepared(
+        &mut self,
+        view: &PreparedView,
+        width: u32,
+        height: u32,
+    ) -> Result<(), OffscreenError> {
         if !(1..=MAX_SIDE).contains(&width) || !(1..=MAX_SIDE).contains(&height) {
             return Err(OffscreenError::Size {
                 width,
@@ -209,24 +257,17 @@ impl Offscreen {
         let Some(t) = &self.targets else {
             unreachable!("targets were just made")
         };
-        self.renderer.prepare(
-            device,
-            &self.gpu.queue,
-            list,
-            camera,
-            theme,
-            width as f32 / height as f32,
-        );
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
             label: Some("offscreen"),
         });
         match &t.msaa {
-            Some(msaa) => self
-                .renderer
-                .render(&mut encoder, msaa, Some(&t.resolve_view), &t.depth),
+            Some(msaa) => {
+                self.renderer
+                    .render(view, &mut encoder, msaa, Some(&t.resolve_view), &t.depth)
+            }
             None => self
                 .renderer
-                .render(&mut encoder, &t.resolve_view, None, &t.depth),
+                .render(view, &mut encoder, &t.resolve_view, None, &t.depth),
         }
         encoder.copy_texture_to_buffer(
             wgpu::TexelCopyTextureInfo {

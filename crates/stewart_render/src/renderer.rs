@@ -9,6 +9,7 @@ use crate::gpu_types::{Globals, LineVertex, MeshInstance, MeshVertex};
 use crate::mesh::Mesh;
 use crate::shaders;
 use crate::theme::{Theme, linear};
+use crate::view::{Batches, PreparedView};
 
 /// Depth buffer format.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
@@ -38,75 +39,18 @@ impl GpuMesh {
     }
 }
 
-/// A vertex or instance buffer rewritten every frame, grown when needed.
-struct DynamicBuffer {
-    buffer: wgpu::Buffer,
-    capacity: u64,
-    usage: wgpu::BufferUsages,
-    label: &'static str,
-}
-
-impl DynamicBuffer {
-    fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages) -> Self {
-        let capacity = 4096;
-        let usage = usage | wgpu::BufferUsages::COPY_DST;
-        Self {
-            buffer: device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: capacity,
-                usage,
-                mapped_at_creation: false,
-            }),
-            capacity,
-            usage,
-            label,
-        }
-    }
-
-    fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, bytes: &[u8]) {
-        let needed = bytes.len() as u64;
-        if needed > self.capacity {
-            self.capacity = needed.next_power_of_two();
-            self.buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(self.label),
-                size: self.capacity,
-                usage: self.usage,
-                mapped_at_creation: false,
-            });
-        }
-        if !bytes.is_empty() {
-            queue.write_buffer(&self.buffer, 0, bytes);
-        }
-    }
-}
-
-/// Ranges of the shared instance buffer, per mesh.
-#[derive(Default, Clone)]
-struct Batches {
-    cylinders: std::ops::Range<u32>,
-    spheres: std::ops::Range<u32>,
-    cones: std::ops::Range<u32>,
-    /// (first index, index count) of each plate in the plate buffer, back to front, and its instance.
-    plates: Vec<(u32, u32, u32)>,
-    lines: u32,
-}
-
-/// Pipelines, meshes and per-frame buffers for drawing a Stewart platform.
+/// Pipelines and meshes for drawing a Stewart platform: built once per device and
+/// colour format, shared by every view. What one view draws in one frame lives in a
+/// [`PreparedView`], so a window can draw several views (the 3D view, thumbnails, a
+/// workspace view) with one renderer.
 pub struct Renderer {
     opaque: wgpu::RenderPipeline,
     translucent: wgpu::RenderPipeline,
     lines: wgpu::RenderPipeline,
-    globals: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+    globals_layout: wgpu::BindGroupLayout,
     cylinder: GpuMesh,
     sphere: GpuMesh,
     cone: GpuMesh,
-    instances: DynamicBuffer,
-    plate_vertices: DynamicBuffer,
-    plate_indices: DynamicBuffer,
-    line_vertices: DynamicBuffer,
-    batches: Batches,
-    clear: wgpu::Color,
     /// MSAA sample count the pipelines were built for.
     pub samples: u32,
     /// Colour format the pipelines were built for.
@@ -116,12 +60,6 @@ pub struct Renderer {
 impl Renderer {
     /// Build the pipelines for colour `format` with `samples` (1 or 4) MSAA samples.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, samples: u32) -> Self {
-        let globals = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("globals"),
-            size: size_of::<Globals>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
             entries: &[wgpu::BindGroupLayoutEntry {
@@ -133,14 +71,6 @@ impl Renderer {
                     min_binding_size: None,
                 },
                 count: None,
-            }],
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("globals"),
-            layout: &layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: globals.as_entire_binding(),
             }],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -253,31 +183,28 @@ impl Renderer {
             opaque,
             translucent,
             lines,
-            globals,
-            bind_group,
+            globals_layout: layout,
             cylinder: GpuMesh::new(device, &Mesh::cylinder(), "cylinder"),
             sphere: GpuMesh::new(device, &Mesh::sphere(), "sphere"),
             cone: GpuMesh::new(device, &Mesh::cone(), "cone"),
-            instances: DynamicBuffer::new(device, "instances", wgpu::BufferUsages::VERTEX),
-            plate_vertices: DynamicBuffer::new(
-                device,
-                "plate vertices",
-                wgpu::BufferUsages::VERTEX,
-            ),
-            plate_indices: DynamicBuffer::new(device, "plate indices", wgpu::BufferUsages::INDEX),
-            line_vertices: DynamicBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX),
-            batches: Batches::default(),
-            clear: wgpu::Color::BLACK,
             samples,
             format,
         }
     }
 
-    /// Upload one frame: the camera for `aspect` (width / height), the theme and the draw list.
+    /// A new view's per-frame buffers (grown as its scenes need).
+    pub fn new_view(&self, device: &wgpu::Device) -> PreparedView {
+        PreparedView::new(device, &self.globals_layout)
+    }
+
+    /// Upload one frame of `view`: the camera for `aspect` (width / height), the theme and
+    /// the draw list.
+    #[allow(clippy::too_many_arguments)]
     pub fn prepare(
-        &mut self,
+        &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
+        view: &mut PreparedView,
         list: &DrawList,
         camera: &OrbitCamera,
         theme: &Theme,
@@ -301,9 +228,9 @@ impl Renderer {
                 if self.format.is_srgb() { 0.0 } else { 1.0 },
             ],
         };
-        queue.write_buffer(&self.globals, 0, bytemuck::bytes_of(&globals));
+        queue.write_buffer(&view.globals, 0, bytemuck::bytes_of(&globals));
         let bg = linear(theme.background);
-        self.clear = wgpu::Color {
+        view.clear = wgpu::Color {
             r: bg[0] as f64,
             g: bg[1] as f64,
             b: bg[2] as f64,
@@ -345,15 +272,15 @@ impl Renderer {
             });
             plates.push((first, mesh.indices.len() as u32, instance));
         }
-        self.instances
+        view.instances
             .write(device, queue, bytemuck::cast_slice(&instances));
-        self.plate_vertices
+        view.plate_vertices
             .write(device, queue, bytemuck::cast_slice(&plate_vertices));
-        self.plate_indices
+        view.plate_indices
             .write(device, queue, bytemuck::cast_slice(&plate_indices));
-        self.line_vertices
+        view.line_vertices
             .write(device, queue, bytemuck::cast_slice(&list.lines));
-        self.batches = Batches {
+        view.batches = Batches {
             cylinders,
             spheres,
             cones,
@@ -362,25 +289,20 @@ impl Renderer {
         };
     }
 
-    /// The background colour of the prepared frame (linear), for clearing.
-    pub fn clear_color(&self) -> wgpu::Color {
-        self.clear
-    }
-
-    /// Draw the prepared frame into an open render pass.
-    pub fn paint(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_bind_group(0, &self.bind_group, &[]);
-        if self.batches.lines > 0 {
+    /// Draw `view`'s prepared frame into an open render pass.
+    pub fn paint(&self, view: &PreparedView, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &view.bind_group, &[]);
+        if view.batches.lines > 0 {
             pass.set_pipeline(&self.lines);
-            pass.set_vertex_buffer(0, self.line_vertices.buffer.slice(..));
-            pass.draw(0..self.batches.lines, 0..1);
+            pass.set_vertex_buffer(0, view.line_vertices.buffer.slice(..));
+            pass.draw(0..view.batches.lines, 0..1);
         }
         pass.set_pipeline(&self.opaque);
-        pass.set_vertex_buffer(1, self.instances.buffer.slice(..));
+        pass.set_vertex_buffer(1, view.instances.buffer.slice(..));
         for (mesh, range) in [
-            (&self.cylinder, &self.batches.cylinders),
-            (&self.sphere, &self.batches.spheres),
-            (&self.cone, &self.batches.cones),
+            (&self.cylinder, &view.batches.cylinders),
+            (&self.sphere, &view.batches.spheres),
+            (&self.cone, &view.batches.cones),
         ] {
             if range.is_empty() {
                 continue;
@@ -389,14 +311,14 @@ impl Renderer {
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..mesh.count, 0, range.clone());
         }
-        if !self.batches.plates.is_empty() {
+        if !view.batches.plates.is_empty() {
             pass.set_pipeline(&self.translucent);
-            pass.set_vertex_buffer(0, self.plate_vertices.buffer.slice(..));
+            pass.set_vertex_buffer(0, view.plate_vertices.buffer.slice(..));
             pass.set_index_buffer(
-                self.plate_indices.buffer.slice(..),
+                view.plate_indices.buffer.slice(..),
                 wgpu::IndexFormat::Uint32,
             );
-            for &(first, count, instance) in &self.batches.plates {
+            for &(first, count, instance) in &view.batches.plates {
                 pass.draw_indexed(first..first + count, 0, instance..instance + 1);
             }
         }
@@ -405,6 +327,7 @@ impl Renderer {
     /// Record a whole pass: clear `target` (and `depth`), draw, resolve into `resolve` when MSAA is on.
     pub fn render(
         &self,
+        view: &PreparedView,
         encoder: &mut wgpu::CommandEncoder,
         target: &wgpu::TextureView,
         resolve: Option<&wgpu::TextureView>,
@@ -417,7 +340,7 @@ impl Renderer {
                 depth_slice: None,
                 resolve_target: resolve,
                 ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(self.clear),
+                    load: wgpu::LoadOp::Clear(view.clear),
                     store: wgpu::StoreOp::Store,
                 },
             })],
@@ -433,6 +356,6 @@ impl Renderer {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        self.paint(&mut pass);
+        self.paint(view, &mut pass);
     }
 }

@@ -222,7 +222,7 @@ impl App {
             .renderer
             .write()
             .callback_resources
-            .insert(renderer);
+            .insert(super::view3d::SceneResources::new(renderer));
         self.state.look.renderer_missing = None;
         let max_side = render_state.device.limits().max_texture_dimension_2d as usize;
         let input = egui_winit::State::new(

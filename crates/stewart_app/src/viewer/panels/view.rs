@@ -72,6 +72,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.painter().add(egui_wgpu::Callback::new_paint_callback(
         rect,
         SceneCallback {
+            view: ui.scope_id().with("scene"),
             list,
             camera: state.look.camera.fitted_to(aspect),
             theme,

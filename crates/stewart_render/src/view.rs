@@ -1,0 +1,109 @@
+//! One view's frame: its uniforms and the per-frame buffers its draw list fills. The
+//! [`crate::Renderer`] prepares and paints any number of these with one set of pipelines
+//! (as re_renderer's view builder does).
+
+use crate::gpu_types::Globals;
+
+/// A vertex or instance buffer rewritten every frame, grown when needed.
+pub(crate) struct DynamicBuffer {
+    pub(crate) buffer: wgpu::Buffer,
+    capacity: u64,
+    usage: wgpu::BufferUsages,
+    label: &'static str,
+}
+
+impl DynamicBuffer {
+    fn new(device: &wgpu::Device, label: &'static str, usage: wgpu::BufferUsages) -> Self {
+        let capacity = 4096;
+        let usage = usage | wgpu::BufferUsages::COPY_DST;
+        Self {
+            buffer: device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: capacity,
+                usage,
+                mapped_at_creation: false,
+            }),
+            capacity,
+            usage,
+            label,
+        }
+    }
+
+    pub(crate) fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, bytes: &[u8]) {
+        let needed = bytes.len() as u64;
+        if needed > self.capacity {
+            self.capacity = needed.next_power_of_two();
+            self.buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(self.label),
+                size: self.capacity,
+                usage: self.usage,
+                mapped_at_creation: false,
+            });
+        }
+        if !bytes.is_empty() {
+            queue.write_buffer(&self.buffer, 0, bytes);
+        }
+    }
+}
+
+/// Ranges of the shared instance buffer, per mesh.
+#[derive(Default, Clone)]
+pub(crate) struct Batches {
+    pub(crate) cylinders: std::ops::Range<u32>,
+    pub(crate) spheres: std::ops::Range<u32>,
+    pub(crate) cones: std::ops::Range<u32>,
+    /// (first index, index count) of each plate in the plate buffer, back to front, and its instance.
+    pub(crate) plates: Vec<(u32, u32, u32)>,
+    pub(crate) lines: u32,
+}
+
+/// The GPU side of one view: made by [`crate::Renderer::new_view`], filled by
+/// [`crate::Renderer::prepare`], drawn by [`crate::Renderer::paint`].
+pub struct PreparedView {
+    pub(crate) globals: wgpu::Buffer,
+    pub(crate) bind_group: wgpu::BindGroup,
+    pub(crate) instances: DynamicBuffer,
+    pub(crate) plate_vertices: DynamicBuffer,
+    pub(crate) plate_indices: DynamicBuffer,
+    pub(crate) line_vertices: DynamicBuffer,
+    pub(crate) batches: Batches,
+    pub(crate) clear: wgpu::Color,
+}
+
+impl PreparedView {
+    pub(crate) fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Self {
+        let globals = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("globals"),
+            size: size_of::<Globals>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("globals"),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: globals.as_entire_binding(),
+            }],
+        });
+        Self {
+            globals,
+            bind_group,
+            instances: DynamicBuffer::new(device, "instances", wgpu::BufferUsages::VERTEX),
+            plate_vertices: DynamicBuffer::new(
+                device,
+                "plate vertices",
+                wgpu::BufferUsages::VERTEX,
+            ),
+            plate_indices: DynamicBuffer::new(device, "plate indices", wgpu::BufferUsages::INDEX),
+            line_vertices: DynamicBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX),
+            batches: Batches::default(),
+            clear: wgpu::Color::BLACK,
+        }
+    }
+
+    /// The background colour of the prepared frame (linear), for clearing.
+    pub fn clear_color(&self) -> wgpu::Color {
+        self.clear
+    }
+}
