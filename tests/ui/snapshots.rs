@@ -1,6 +1,6 @@
 //! Reference images of the panels (egui rendered with wgpu on lavapipe). The 3D view is
 //! drawn by the renderer's own tests: kittest's render pass has no depth buffer, so the
-//! view's area shows only its background here.
+//! view's area shows the message that no renderer is attached.
 //!
 //! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui snapshots` re-blesses them.
 
@@ -21,7 +21,7 @@ fn options() -> SnapshotOptions {
 }
 
 #[test]
-fn over_stroke_legs_turn_red_and_the_history_shows_them_leaving_the_stroke() {
+fn over_stroke_legs_take_their_3d_warning_colour_and_the_history_shows_them_leaving_the_stroke() {
     let state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
     let mut h = crate::sized_harness(state, egui::vec2(960.0, 600.0));
     h.state_mut().playback.playing = false;

@@ -2,7 +2,7 @@
 //! Pure CPU work, tested without a GPU.
 
 use glam::{Mat3, Mat4, Quat, Vec3};
-use stewart_kinematics::scene::{LegStatus, SceneFrame};
+use stewart_kinematics::scene::SceneFrame;
 
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
@@ -94,11 +94,7 @@ impl DrawList {
             let body_length = leg
                 .min_length
                 .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
-            let (body, rod) = match leg.status {
-                LegStatus::Normal => (theme.leg_body, theme.leg_rod),
-                LegStatus::NearLimit => (theme.leg_near_limit, theme.leg_near_limit),
-                LegStatus::OverLimit => (theme.leg_over_limit, theme.leg_over_limit),
-            };
+            let (body, rod) = theme.leg_colours(leg.status);
             list.cylinders.push(along(
                 base,
                 base + dir * body_length,

@@ -1,5 +1,7 @@
 //! Colour themes: a dark one for the screen, a light one for slides and papers.
 
+use stewart_kinematics::scene::LegStatus;
+
 /// An sRGB colour with alpha, components 0..1.
 pub type Srgba = [f32; 4];
 
@@ -68,6 +70,17 @@ impl Theme {
             [0.10, 0.30, 0.85, 1.0],
         ],
     };
+
+    /// The colours of a leg in `status`: actuator body and rod (one warning colour for
+    /// both when the leg is near or over its stroke). The 3D view, exported frames and
+    /// the viewer's leg bars all take them from here.
+    pub fn leg_colours(&self, status: LegStatus) -> (Srgba, Srgba) {
+        match status {
+            LegStatus::Normal => (self.leg_body, self.leg_rod),
+            LegStatus::NearLimit => (self.leg_near_limit, self.leg_near_limit),
+            LegStatus::OverLimit => (self.leg_over_limit, self.leg_over_limit),
+        }
+    }
 
     /// The light theme when `light`, else the dark one.
     pub fn from_light(light: bool) -> Theme {

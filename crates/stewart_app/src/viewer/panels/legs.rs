@@ -12,11 +12,18 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
     ui.heading("Legs");
     let pose = state.pose();
     let frame = state.scenario().geometry.scene_frame(&pose, Vec::new());
+    let theme = state.theme();
     for (i, leg) in frame.legs.iter().enumerate() {
-        let (colour, note) = match leg.status {
-            LegStatus::Normal => (Color32::from_rgb(70, 160, 90), ""),
-            LegStatus::NearLimit => (Color32::from_rgb(230, 150, 20), " near limit"),
-            LegStatus::OverLimit => (ERROR, " over stroke"),
+        // The bar takes the colour the leg has in the 3D view.
+        let [r, g, b, _] = theme
+            .leg_colours(leg.status)
+            .0
+            .map(|c| (c * 255.0).round() as u8);
+        let colour = Color32::from_rgb(r, g, b);
+        let note = match leg.status {
+            LegStatus::Normal => "",
+            LegStatus::NearLimit => " near limit",
+            LegStatus::OverLimit => " over stroke",
         };
         ui.horizontal(|ui| {
             ui.label(
@@ -30,7 +37,15 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
                     egui::ProgressBar::new(u.clamp(0.0, 1.0) as f32)
                         .desired_width(ui.available_width().max(110.0))
                         .fill(colour)
-                        .text(format!("{:.0}%{note}", 100.0 * u)),
+                        .text({
+                            let text = RichText::new(format!("{:.0}%{note}", 100.0 * u));
+                            // Dark text on the light warning colours, to stay readable.
+                            if leg.status == LegStatus::Normal {
+                                text
+                            } else {
+                                text.color(Color32::BLACK)
+                            }
+                        }),
                 );
             }
         });
