@@ -15,6 +15,7 @@
 //! - [`jacobian`], [`architecture`], [`forward`], [`workspace`], [`forces`], [`limits`]:
 //!   conditioning, singular geometries, forward kinematics, reach, loads, pose limits;
 //! - [`scene`]: plain data describing what to draw (the renderer's input);
+//! - [`rotary`]: rotary-servo (6-RSS) actuators and their closed-form inverse kinematics;
 //! - [`settings`], [`bounds`]: every adjustable number and the accepted range of each;
 //! - [`scenario`]: scenario files (TOML) and the shipped presets;
 //! - [`table`]: numeric CSV tables with located errors;
@@ -35,6 +36,7 @@ pub mod jacobian;
 pub mod layout;
 pub mod limits;
 pub mod pose;
+pub mod rotary;
 pub mod scenario;
 pub mod scene;
 pub mod settings;

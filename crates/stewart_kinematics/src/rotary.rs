@@ -1,0 +1,313 @@
+//! Rotary-servo (6-RSS) actuators: a horn on each servo shaft and a rod of fixed length
+//! from the horn's tip to the platform joint.
+//!
+//! Servo `i`'s shaft is horizontal, through the base joint `B_i` (z = 0), perpendicular to
+//! the direction `β_i` in the base plane. Its horn tip is
+//! `H_i = B_i + a (cos θ_i cos β_i, cos θ_i sin β_i, sin θ_i)`: `θ_i = 0` is the horn
+//! horizontal along `β_i`, a positive `θ_i` lifts the tip. The rod closes
+//! `|q_i − H_i| = s` with `q_i` the platform joint in the base frame.
+//!
+//! **Inverse kinematics** in closed form, with `l = q_i − B_i`: expanding the closure,
+//! `N cos θ + M sin θ = L` where `L = |l|² − (s² − a²)`, `M = 2a·l_z` and
+//! `N = 2a (cos β_i·l_x + sin β_i·l_y)`; so `θ_i = asin(L / √(M² + N²)) − atan2(N, M)`,
+//! wrapped to (−180°, 180°] (the branch with the horn on the near side of the rod; the
+//! other root, `π − asin(…) − atan2(N, M)`, is the mirrored assembly). When
+//! `|L| > √(M² + N²)` no horn angle reaches the joint: the pose is *unreachable*.
+
+use nalgebra::Vector3;
+use thiserror::Error;
+
+use crate::angle::Angle;
+
+/// Why rotary actuators were refused. Each names the scenario key at fault.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RotaryError {
+    /// A length that is not a positive finite number.
+    #[error("`actuator.{key}` must be a positive finite number of metres, got {value}")]
+    Length {
+        /// `horn_length_m` or `rod_length_m`.
+        key: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// The horn is at least as long as the rod: the rod could fold onto the shaft.
+    #[error(
+        "`actuator.horn_length_m` ({horn} m) must be shorter than `actuator.rod_length_m` ({rod} m)"
+    )]
+    HornNotShorter {
+        /// Horn length, metres.
+        horn: f64,
+        /// Rod length, metres.
+        rod: f64,
+    },
+    /// A horn angle that is not finite.
+    #[error("`actuator.horn_angles_deg[{index}]` must be a finite number of degrees, got {value}")]
+    HornAngle {
+        /// Index from 0, as in the file.
+        index: usize,
+        /// The value given.
+        value: f64,
+    },
+    /// A servo range end outside (−180°, 180°], or a minimum not below the maximum.
+    #[error("the servo range must lie in (-180, 180] degrees with min < max, got {min} … {max}")]
+    Range {
+        /// `servo_min_deg`.
+        min: f64,
+        /// `servo_max_deg`.
+        max: f64,
+    },
+}
+
+/// No horn angle of servo `servo` reaches its platform joint.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error(
+    "servo {servo} cannot reach its platform joint: the rod would have to stretch or shrink by {excess:.6} (ratio |L|/√(M²+N²) = {ratio:.6})"
+)]
+pub struct Unreachable {
+    /// Servo number, from 1.
+    pub servo: usize,
+    /// `|L| / √(M² + N²)`, above 1 when unreachable.
+    pub ratio: f64,
+    /// `ratio − 1`: how far from reachable.
+    pub excess: f64,
+}
+
+/// The servo side of a rotary platform: horn and rod lengths, horn directions, range.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RotaryActuators {
+    horn_length: f64,
+    rod_length: f64,
+    horn_angles: [Angle; 6],
+    range: Option<(Angle, Angle)>,
+}
+
+impl RotaryActuators {
+    /// Validated actuators: positive lengths with the horn shorter than the rod, finite
+    /// horn directions `β_i`, and an optional servo range `(min, max)` within (−180°, 180°].
+    pub fn new(
+        horn_length: f64,
+        rod_length: f64,
+        horn_angles_deg: [f64; 6],
+        range_deg: Option<(f64, f64)>,
+    ) -> Result<Self, RotaryError> {
+        for (key, value) in [("horn_length_m", horn_length), ("rod_length_m", rod_length)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(RotaryError::Length { key, value });
+            }
+        }
+        if horn_length >= rod_length {
+            return Err(RotaryError::HornNotShorter {
+                horn: horn_length,
+                rod: rod_length,
+            });
+        }
+        if let Some((index, &value)) = horn_angles_deg
+            .iter()
+            .enumerate()
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(RotaryError::HornAngle { index, value });
+        }
+        if let Some((min, max)) = range_deg {
+            let inside = |v: f64| v > -180.0 && v <= 180.0;
+            if !(inside(min) && inside(max) && min < max) {
+                return Err(RotaryError::Range { min, max });
+            }
+        }
+        Ok(Self {
+            horn_length,
+            rod_length,
+            horn_angles: horn_angles_deg.map(Angle::from_degrees),
+            range: range_deg.map(|(a, b)| (Angle::from_degrees(a), Angle::from_degrees(b))),
+        })
+    }
+
+    /// Horn length `a`, metres.
+    pub fn horn_length(&self) -> f64 {
+        self.horn_length
+    }
+
+    /// Rod length `s`, metres.
+    pub fn rod_length(&self) -> f64 {
+        self.rod_length
+    }
+
+    /// Horn directions `β_i` (where horn `i` points at servo angle 0).
+    pub fn horn_angles(&self) -> &[Angle; 6] {
+        &self.horn_angles
+    }
+
+    /// The servo range `(min, max)`, if one is set.
+    pub fn range(&self) -> Option<(Angle, Angle)> {
+        self.range
+    }
+
+    /// Horn tip `H_i` of servo `i` (from 0) at angle `theta`, for shaft centre `base`.
+    pub fn horn_tip(&self, i: usize, base: &Vector3<f64>, theta: Angle) -> Vector3<f64> {
+        let (sb, cb) = self.horn_angles[i].radians().sin_cos();
+        let (st, ct) = theta.radians().sin_cos();
+        base + self.horn_length * Vector3::new(ct * cb, ct * sb, st)
+    }
+
+    /// Servo `i`'s angle (from 0) that puts its rod's end on platform joint `joint` (base
+    /// frame), for shaft centre `base`; or why none does.
+    pub fn servo_angle(
+        &self,
+        i: usize,
+        base: &Vector3<f64>,
+        joint: &Vector3<f64>,
+    ) -> Result<Angle, Unreachable> {
+        let a = self.horn_length;
+        let s = self.rod_length;
+        let l = joint - base;
+        let (sb, cb) = self.horn_angles[i].radians().sin_cos();
+        let big_l = l.norm_squared() - (s * s - a * a);
+        let m = 2.0 * a * l.z;
+        let n = 2.0 * a * (cb * l.x + sb * l.y);
+        let r = m.hypot(n);
+        let ratio = big_l.abs() / r;
+        if ratio.is_nan() || ratio > 1.0 {
+            // Also a joint on the shaft's axis (r = 0): no horn angle moves the rod end.
+            return Err(Unreachable {
+                servo: i + 1,
+                ratio,
+                excess: ratio - 1.0,
+            });
+        }
+        let theta = (big_l / r).asin() - n.atan2(m);
+        Ok(Angle::from_radians(wrap_half_turn(theta)))
+    }
+
+    /// All six servo angles for platform joints `joints` and shaft centres `bases`.
+    pub fn servo_angles(
+        &self,
+        bases: &[Vector3<f64>; 6],
+        joints: &[Vector3<f64>; 6],
+    ) -> Result<[Angle; 6], Unreachable> {
+        let mut out = [Angle::from_radians(0.0); 6];
+        for i in 0..6 {
+            out[i] = self.servo_angle(i, &bases[i], &joints[i])?;
+        }
+        Ok(out)
+    }
+}
+
+/// `x` (radians) wrapped to (−π, π].
+fn wrap_half_turn(x: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    let w = x - tau * (x / tau).round();
+    if w <= -std::f64::consts::PI {
+        w + tau
+    } else {
+        w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn hobby() -> RotaryActuators {
+        RotaryActuators::new(0.025, 0.12, [255.0, 105.0, 15.0, 225.0, 135.0, 345.0], None)
+            .unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn a_horn_level_under_a_vertical_rod_is_angle_zero() {
+        // β = 0, shaft at the origin: the tip is at (a, 0, 0); a joint straight above it
+        // at the rod's length needs θ = 0 (asin(a/√(s²+a²)) = atan(a/s) exactly).
+        let act =
+            RotaryActuators::new(0.025, 0.12, [0.0; 6], None).unwrap_or_else(|e| panic!("{e}"));
+        let b = Vector3::zeros();
+        let q = Vector3::new(0.025, 0.0, 0.12);
+        let theta = act.servo_angle(0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
+        assert!(theta.radians().abs() < 1e-15, "{}", theta.degrees());
+        // Lifted by 30°: the tip moves to a(cos 30°, 0, sin 30°); the joint above it too.
+        let tip = act.horn_tip(0, &b, Angle::from_degrees(30.0));
+        let q = tip + Vector3::new(0.0, 0.0, 0.12);
+        let theta = act.servo_angle(0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            (theta.degrees() - 30.0).abs() < 1e-12,
+            "{}",
+            theta.degrees()
+        );
+    }
+
+    #[test]
+    fn too_far_or_too_near_is_unreachable_never_nan() {
+        let act = hobby();
+        let b = Vector3::new(0.1, 0.0, 0.0);
+        for q in [
+            Vector3::new(0.1, 0.0, 0.5),  // farther than a + s
+            Vector3::new(0.1, 0.0, 0.05), // nearer than s − a
+            Vector3::new(0.1, 0.0, 0.0),  // on the shaft centre
+        ] {
+            let e = act.servo_angle(0, &b, &q).unwrap_err();
+            assert_eq!(e.servo, 1);
+            assert!(e.ratio > 1.0, "{e:?}");
+        }
+    }
+
+    #[test]
+    fn bad_actuators_name_their_key() {
+        let e = |a, s, r| {
+            RotaryActuators::new(a, s, [0.0; 6], r)
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            e(0.0, 0.1, None),
+            "`actuator.horn_length_m` must be a positive finite number of metres, got 0"
+        );
+        assert_eq!(
+            e(0.2, 0.1, None),
+            "`actuator.horn_length_m` (0.2 m) must be shorter than `actuator.rod_length_m` (0.1 m)"
+        );
+        assert!(e(0.02, 0.1, Some((10.0, -10.0))).contains("min < max"));
+        assert!(e(0.02, 0.1, Some((-180.0, 0.0))).contains("(-180, 180]"));
+        let bad_angle = RotaryActuators::new(0.02, 0.1, [0.0, f64::NAN, 0.0, 0.0, 0.0, 0.0], None);
+        assert_eq!(
+            bad_angle.unwrap_err().to_string(),
+            "`actuator.horn_angles_deg[1]` must be a finite number of degrees, got NaN"
+        );
+    }
+
+    proptest! {
+        /// Any horn angle and any rod direction: the solver's angle closes the rod
+        /// exactly, and is the very angle used where that lies on the solver's branch.
+        #[test]
+        fn the_closed_form_closes_the_rod(
+            i in 0usize..6,
+            theta_deg in -170.0f64..170.0,
+            azimuth in 0.0f64..std::f64::consts::TAU,
+            elevation in -1.4f64..1.4,
+            bx in -0.2f64..0.2, by in -0.2f64..0.2,
+        ) {
+            let act = hobby();
+            let b = Vector3::new(bx, by, 0.0);
+            let tip = act.horn_tip(i, &b, Angle::from_degrees(theta_deg));
+            let dir = Vector3::new(
+                elevation.cos() * azimuth.cos(),
+                elevation.cos() * azimuth.sin(),
+                elevation.sin(),
+            );
+            let q = tip + act.rod_length() * dir;
+            let found = act.servo_angle(i, &b, &q);
+            prop_assert!(found.is_ok(), "{found:?}");
+            let theta = found.unwrap_or(Angle::from_radians(0.0));
+            let closure = (q - act.horn_tip(i, &b, theta)).norm() - act.rod_length();
+            prop_assert!(closure.abs() < 1e-12, "closure {closure}");
+            // On the solver's branch (the rod's end on the near side), it is the same angle.
+            let l = q - b;
+            let (sb, cb) = act.horn_angles()[i].radians().sin_cos();
+            let m = 2.0 * act.horn_length() * l.z;
+            let n = 2.0 * act.horn_length() * (cb * l.x + sb * l.y);
+            let phase = wrap_half_turn(theta_deg.to_radians() + n.atan2(m));
+            if phase.abs() < std::f64::consts::FRAC_PI_2 - 1e-6 {
+                let d = wrap_half_turn(theta.radians() - theta_deg.to_radians());
+                prop_assert!(d.abs() < 1e-9, "{} vs {theta_deg}", theta.degrees());
+            }
+        }
+    }
+}
