@@ -5,6 +5,7 @@ mod analysis;
 mod check;
 mod export;
 mod fk;
+mod rotary;
 mod settings;
 mod solve;
 mod view;

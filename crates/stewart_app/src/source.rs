@@ -26,3 +26,15 @@ pub fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
         .map(|p| ("the scenario file", p.as_path()))
         .collect()
 }
+
+/// Refuse a rotary-servo scenario in a command that so far models linear legs only (its
+/// numbers would be those of legs, not of servos).
+pub fn require_linear(scenario: &Scenario, command: &str) -> Result<()> {
+    if scenario.geometry.rotary().is_some() {
+        anyhow::bail!(
+            "scenario `{}` has rotary servos (`[actuator] kind = \"rotary\"`): `stewart {command}` handles linear legs only so far; `stewart solve` gives its servo angles",
+            scenario.name
+        );
+    }
+    Ok(())
+}

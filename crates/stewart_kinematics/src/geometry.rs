@@ -6,6 +6,8 @@ use thiserror::Error;
 
 use crate::angle::Angle;
 use crate::layout::Layout;
+use crate::pose::Pose;
+use crate::rotary::{Actuator, RotaryActuators, Unreachable};
 
 /// Which of the two plates a joint belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -86,6 +88,9 @@ pub struct GeometryParams {
     /// The point the platform rotates about, in the platform frame, metres. Zero (the
     /// platform centre) reproduces the seed.
     pub pivot: Vector3<f64>,
+    /// What drives the joints: linear legs (default) or rotary servos.
+    #[serde(default)]
+    pub actuator: Actuator,
 }
 
 impl GeometryParams {
@@ -110,6 +115,7 @@ impl GeometryParams {
             platform_angles,
             stroke: StrokeLimits::default(),
             pivot: Vector3::zeros(),
+            actuator: Actuator::Linear,
         }
     }
 }
@@ -147,6 +153,14 @@ pub enum GeometryError {
         /// Their angle in degrees.
         angle_deg: f64,
     },
+    /// A stroke limit on a rotary platform (servos have a range instead).
+    #[error(
+        "`{key}` belongs to linear legs: a rotary platform's rods have a fixed length (give `actuator.servo_min_deg` and `servo_max_deg` for the servo range)"
+    )]
+    StrokeOnRotary {
+        /// `leg_min` or `leg_max`.
+        key: &'static str,
+    },
     /// The stroke limits are empty.
     #[error("`leg_min` ({min} m) must be less than `leg_max` ({max} m)")]
     StrokeOrder {
@@ -180,6 +194,16 @@ impl Geometry {
             "platform_angles_deg",
             &params.platform_angles,
         )?;
+        if matches!(params.actuator, Actuator::Rotary(_)) {
+            for (key, value) in [
+                ("leg_min", params.stroke.min),
+                ("leg_max", params.stroke.max),
+            ] {
+                if value.is_some() {
+                    return Err(GeometryError::StrokeOnRotary { key });
+                }
+            }
+        }
         if let Some(min) = params.stroke.min {
             check_positive("leg_min", min)?;
         }
@@ -232,6 +256,27 @@ impl Geometry {
     /// Rotation centre in the platform frame, metres.
     pub fn pivot(&self) -> Vector3<f64> {
         self.params.pivot
+    }
+
+    /// What drives the joints.
+    pub fn actuator(&self) -> &Actuator {
+        &self.params.actuator
+    }
+
+    /// The servos, for a rotary platform.
+    pub fn rotary(&self) -> Option<&RotaryActuators> {
+        match &self.params.actuator {
+            Actuator::Rotary(r) => Some(r),
+            Actuator::Linear => None,
+        }
+    }
+
+    /// The six servo angles that hold `pose`, for a rotary platform (`None` for linear
+    /// legs), or the first servo that cannot reach its joint.
+    pub fn servo_angles(&self, pose: &Pose) -> Option<Result<[Angle; 6], Unreachable>> {
+        let servos = self.rotary()?;
+        let joints = self.inverse(pose).platform_joints;
+        Some(servos.servo_angles(&self.base_joints, &joints))
     }
 
     /// Height of the platform centre at the home pose, metres.

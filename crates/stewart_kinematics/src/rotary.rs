@@ -15,6 +15,7 @@
 //! `|L| > √(M² + N²)` no horn angle reaches the joint: the pose is *unreachable*.
 
 use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::angle::Angle;
@@ -61,7 +62,7 @@ pub enum RotaryError {
 /// No horn angle of servo `servo` reaches its platform joint.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error(
-    "servo {servo} cannot reach its platform joint: the rod would have to stretch or shrink by {excess:.6} (ratio |L|/√(M²+N²) = {ratio:.6})"
+    "servo {servo} cannot reach its platform joint: no horn angle closes its rod (|L|/√(M²+N²) = {ratio:.4}, over 1)"
 )]
 pub struct Unreachable {
     /// Servo number, from 1.
@@ -72,8 +73,29 @@ pub struct Unreachable {
     pub excess: f64,
 }
 
+/// What moves the platform joints: linear legs (the seed's), or rotary servos with horns
+/// and rods.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum Actuator {
+    /// Legs whose length changes (stroke limits in the geometry).
+    #[default]
+    Linear,
+    /// Servos turning horns, with fixed-length rods to the platform.
+    Rotary(RotaryActuators),
+}
+
+impl Actuator {
+    /// The kind as scenario files write it: `linear` or `rotary`.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Actuator::Linear => "linear",
+            Actuator::Rotary(_) => "rotary",
+        }
+    }
+}
+
 /// The servo side of a rotary platform: horn and rod lengths, horn directions, range.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RotaryActuators {
     horn_length: f64,
     rod_length: f64,

@@ -26,6 +26,7 @@ struct JsonReport<'a> {
 /// Run the command.
 pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
+    source::require_linear(&scenario, "check")?;
     let report = check_motion(
         &scenario.geometry,
         &scenario.limits,

@@ -32,6 +32,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     inputs.push(("the leg-length table", &args.legs));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
+    source::require_linear(&scenario, "fk")?;
     let geometry = &scenario.geometry;
     // Read the table first, so that a bad file is reported whatever the geometry.
     let (table, file) = read_input(&args.legs, |r, name| {

@@ -15,6 +15,7 @@ use crate::source;
 pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
+    source::require_linear(&scenario, "forces")?;
     let g = &scenario.geometry;
     let base = scenario.payload;
     let mass = args.mass.or(base.map(|p| p.mass)).ok_or_else(|| {

@@ -7,7 +7,7 @@ use stewart_kinematics::trajectory::PoseTable;
 
 use crate::cli::SolveArgs;
 use crate::csv_io::read_input;
-use crate::export::tables::{trajectory_table, write_legs_csv};
+use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
 use crate::output;
 use crate::source;
 
@@ -19,12 +19,16 @@ pub fn run(args: &SolveArgs) -> Result<ExitCode> {
     }
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
-    let table = match &args.poses {
-        Some(path) => read_input(path, |r, name| Ok(PoseTable::read(r, name)?))?,
-        None => trajectory_table(&scenario),
+    let (table, file) = match &args.poses {
+        Some(path) => read_input(path, |r, name| {
+            Ok((PoseTable::read(r, name)?, Some(name.to_owned())))
+        })?,
+        None => (trajectory_table(&scenario), None),
     };
-    output::emit_with(out.as_ref(), |w| {
-        write_legs_csv(w, &scenario.geometry, &table)
+    let solved = solve_table(&scenario.geometry, &table, |k| match &file {
+        Some(name) => format!("{name}, line {}", table.lines.get(k).copied().unwrap_or(0)),
+        None => trajectory_place(&table, k),
     })?;
+    output::emit_with(out.as_ref(), |w| write_solved_csv(w, &table, &solved))?;
     Ok(ExitCode::SUCCESS)
 }

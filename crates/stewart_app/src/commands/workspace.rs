@@ -24,6 +24,7 @@ use crate::source;
 pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
+    source::require_linear(&scenario, "workspace")?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
     let ws = compute(

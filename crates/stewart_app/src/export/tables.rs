@@ -33,23 +33,68 @@ pub fn trajectory_table(scenario: &Scenario) -> PoseTable {
     }
 }
 
-/// Write `[t,]x,y,z,roll_deg,pitch_deg,yaw_deg,L1..L6` to `out`, row by row.
-pub fn write_legs_csv(
-    out: &mut dyn Write,
+/// What each pose needs from the actuators: six leg lengths (m) or six servo angles (°).
+pub struct Solved {
+    /// `L1..L6` or `theta1..theta6`.
+    pub columns: [&'static str; 6],
+    /// One row of six values per pose.
+    pub values: Vec<[f64; 6]>,
+}
+
+/// Leg lengths (linear legs, on all cores) or servo angles (rotary servos) of every pose
+/// of `table`. A pose no servo angle reaches is an error located by `locate(k)` (a file
+/// and line, or a time); then nothing is written.
+pub fn solve_table(
     geometry: &Geometry,
     table: &PoseTable,
+    locate: impl Fn(usize) -> String,
+) -> anyhow::Result<Solved> {
+    if geometry.rotary().is_none() {
+        return Ok(Solved {
+            columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
+            values: geometry.leg_lengths_batch(&table.poses),
+        });
+    }
+    let values = table
+        .poses
+        .iter()
+        .enumerate()
+        .map(|(k, pose)| match geometry.servo_angles(pose) {
+            Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
+            Some(Err(e)) => Err(anyhow::anyhow!("{}: {e}", locate(k))),
+            None => Err(anyhow::anyhow!("internal error: no servos")),
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    Ok(Solved {
+        columns: ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"],
+        values,
+    })
+}
+
+/// Write `[t,]x,y,z,roll_deg,pitch_deg,yaw_deg` and the six solved columns to `out`.
+pub fn write_solved_csv(
+    out: &mut dyn Write,
+    table: &PoseTable,
+    solved: &Solved,
 ) -> std::io::Result<()> {
-    let lengths = geometry.leg_lengths_batch(&table.poses);
     let mut header: Vec<&str> = Vec::new();
     if table.times.is_some() {
         header.push("t");
     }
     header.extend(POSE_COLUMNS);
-    header.extend(["L1", "L2", "L3", "L4", "L5", "L6"]);
+    header.extend(solved.columns);
     write_table(out, &header, table.values.len(), |k| {
         let t = table.times.as_ref().map(|t| t[k]);
         t.into_iter()
             .chain(table.values[k].iter().copied())
-            .chain(lengths[k].iter().copied())
+            .chain(solved.values[k].iter().copied())
     })
+}
+
+/// Where pose `k` of the scenario's own trajectory is, for messages.
+pub fn trajectory_place(table: &PoseTable, k: usize) -> String {
+    match table.times.as_ref().and_then(|t| t.get(k)) {
+        Some(t) => format!("the trajectory at t = {t} s"),
+        None => format!("pose {}", k + 1),
+    }
 }

@@ -12,7 +12,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget};
 use stewart_kinematics::Scenario;
 
 use crate::export::plot::plot_file;
-use crate::export::tables::{trajectory_table, write_legs_csv};
+use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
 use crate::export::video::{VideoRequest, export_video};
 use crate::output::{Destination, write_atomically};
 
@@ -145,8 +145,8 @@ fn run(
         }
         ExportWork::Csv(path) => {
             let table = trajectory_table(scenario);
-            Destination::new(path, &[])?
-                .write_with(|w| write_legs_csv(w, &scenario.geometry, &table))?;
+            let solved = solve_table(&scenario.geometry, &table, |k| trajectory_place(&table, k))?;
+            Destination::new(path, &[])?.write_with(|w| write_solved_csv(w, &table, &solved))?;
             Ok(format!(
                 "Wrote {} poses and leg lengths to {}.",
                 scenario.motion.sampling.len(),

@@ -131,6 +131,10 @@ impl ViewerState {
     /// scenario untouched; either way the outcome is shown in the Scenario panel.
     pub fn open_file(&mut self, path: &Path) {
         self.files.status = Some(match Scenario::load(path) {
+            Ok(s) if s.geometry.rotary().is_some() => Err(format!(
+                "{}: rotary servo platforms are not shown by the viewer yet (`stewart solve` gives their servo angles)",
+                path.display()
+            )),
             Ok(s) => {
                 let name = s.name.clone();
                 self.load_scenario(s);

@@ -9,8 +9,8 @@ use toml::Spanned;
 use super::Scenario;
 use super::error::{ScenarioError, ScenarioProblem};
 use super::file::{
-    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile, LinearChannelFile,
-    PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
+    ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
+    LinearChannelFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::angle::Angle;
 use crate::checks::CheckSettings;
@@ -18,6 +18,7 @@ use crate::forces::Payload;
 use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
 use crate::limits::Limits;
 use crate::pose::Pose;
+use crate::rotary::{Actuator, RotaryActuators, RotaryError};
 use crate::trajectory::{
     Channel, Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Motion, PoseTable,
     Sampling, Sinusoid, Sway, Trajectory,
@@ -89,7 +90,8 @@ pub(super) fn parse(
             ScenarioProblem::Syntax(e.message().trim_end().to_owned()),
         )
     })?;
-    let geometry = build_geometry(&src, &parsed.geometry, parsed.pivot.as_ref())?;
+    let actuator = build_actuator(&src, parsed.actuator.as_ref())?;
+    let geometry = build_geometry(&src, &parsed.geometry, parsed.pivot.as_ref(), actuator)?;
     let motion = match &parsed.trajectory {
         Some(t) => build_motion(&src, t, &geometry, base_dir)?,
         None => Motion::seed(geometry.home_height()),
@@ -146,10 +148,108 @@ fn angles(src: &Source, field: &str, v: &Spanned<Vec<f64>>) -> Result<[Angle; 6]
     Ok(array.map(Angle::from_degrees))
 }
 
+/// `[actuator]`: linear legs when absent; for `rotary`, the horn, rod, horn directions
+/// and the optional servo range, each checked against its accepted range.
+fn build_actuator(
+    src: &Source,
+    file: Option<&Spanned<ActuatorFile>>,
+) -> Result<Actuator, ScenarioError> {
+    use crate::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
+    let Some(file) = file else {
+        return Ok(Actuator::Linear);
+    };
+    let a = file.get_ref();
+    let rotary_keys = [
+        ("horn_length_m", a.horn_length_m.as_ref().map(Spanned::span)),
+        ("rod_length_m", a.rod_length_m.as_ref().map(Spanned::span)),
+        (
+            "horn_angles_deg",
+            a.horn_angles_deg.as_ref().map(Spanned::span),
+        ),
+        ("servo_min_deg", a.servo_min_deg.as_ref().map(Spanned::span)),
+        ("servo_max_deg", a.servo_max_deg.as_ref().map(Spanned::span)),
+    ];
+    if *a.kind.get_ref() == ActuatorKind::Linear {
+        if let Some((key, span)) = rotary_keys.iter().find(|(_, span)| span.is_some()) {
+            return Err(src.invalid(
+                span.clone(),
+                &format!("actuator.{key}"),
+                "belongs to rotary servos, not to `kind = \"linear\"`",
+            ));
+        }
+        return Ok(Actuator::Linear);
+    }
+    let missing = |key: &str| {
+        src.invalid(
+            Some(file.span()),
+            &format!("actuator.{key}"),
+            "is required by `kind = \"rotary\"` but missing",
+        )
+    };
+    let length = |key: &str, v: &Option<Spanned<f64>>| -> Result<f64, ScenarioError> {
+        let v = v.as_ref().ok_or_else(|| missing(key))?;
+        check(*v.get_ref(), &symmetric(LENGTH_M), "m")
+            .map_err(|reason| src.invalid(Some(v.span()), &format!("actuator.{key}"), reason))
+    };
+    let horn = length("horn_length_m", &a.horn_length_m)?;
+    let rod = length("rod_length_m", &a.rod_length_m)?;
+    let angles = a
+        .horn_angles_deg
+        .as_ref()
+        .ok_or_else(|| missing("horn_angles_deg"))?;
+    let list: [f64; 6] = angles.get_ref().as_slice().try_into().map_err(|_| {
+        src.invalid(
+            Some(angles.span()),
+            "actuator.horn_angles_deg",
+            format!(
+                "must list 6 angles (one per servo), got {}",
+                angles.get_ref().len()
+            ),
+        )
+    })?;
+    for (i, v) in list.iter().enumerate() {
+        check(*v, &symmetric(ANGLE_DEG), "°").map_err(|reason| {
+            src.invalid(
+                Some(angles.span()),
+                &format!("actuator.horn_angles_deg[{i}]"),
+                reason,
+            )
+        })?;
+    }
+    let range = match (&a.servo_min_deg, &a.servo_max_deg) {
+        (None, None) => None,
+        (Some(min), Some(max)) => Some((*min.get_ref(), *max.get_ref())),
+        (Some(v), None) | (None, Some(v)) => {
+            return Err(src.invalid(
+                Some(v.span()),
+                "actuator.servo_min_deg",
+                "and `servo_max_deg` go together: give both ends of the servo range, or neither",
+            ));
+        }
+    };
+    RotaryActuators::new(horn, rod, list, range)
+        .map(Actuator::Rotary)
+        .map_err(|e| {
+            let span = match &e {
+                RotaryError::Length {
+                    key: "rod_length_m",
+                    ..
+                } => a.rod_length_m.as_ref().map(Spanned::span),
+                RotaryError::Length { .. } | RotaryError::HornNotShorter { .. } => {
+                    a.horn_length_m.as_ref().map(Spanned::span)
+                }
+                RotaryError::HornAngle { .. } => Some(angles.span()),
+                RotaryError::Range { .. } => a.servo_min_deg.as_ref().map(Spanned::span),
+            };
+            src.err(span, e)
+        })
+}
+
 fn build_geometry(
     src: &Source,
     g: &GeometryFile,
     pivot: Option<&PivotFile>,
+    actuator: Actuator,
 ) -> Result<Geometry, ScenarioError> {
     let params = GeometryParams {
         base_radius: *g.base_radius.get_ref(),
@@ -162,6 +262,7 @@ fn build_geometry(
             max: g.leg_max.as_ref().map(|v| *v.get_ref()),
         },
         pivot: pivot.map_or_else(Vector3::zeros, |p| Vector3::from(*p.offset_m.get_ref())),
+        actuator,
     };
     Geometry::new(params).map_err(|e| {
         let span = geometry_error_span(g, pivot, &e);
@@ -187,6 +288,7 @@ fn geometry_error_span(
             ..
         } => "platform_angles_deg",
         GeometryError::StrokeOrder { .. } => "leg_max",
+        GeometryError::StrokeOnRotary { key } => key,
     };
     let optional = |v: &Option<Spanned<f64>>| v.as_ref().map(Spanned::span);
     match field {

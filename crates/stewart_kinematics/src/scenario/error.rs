@@ -20,6 +20,9 @@ pub enum ScenarioProblem {
     /// The geometry was refused.
     #[error(transparent)]
     Geometry(#[from] GeometryError),
+    /// The rotary actuators were refused.
+    #[error(transparent)]
+    Actuator(#[from] crate::rotary::RotaryError),
     /// The sampling was refused.
     #[error(transparent)]
     Sampling(#[from] SamplingError),

@@ -20,6 +20,8 @@ pub(crate) struct ScenarioFile {
     pub description: Option<String>,
     pub geometry: GeometryFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub actuator: Option<Spanned<ActuatorFile>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot: Option<PivotFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub trajectory: Option<Spanned<TrajectoryFile>>,
@@ -74,6 +76,30 @@ pub(crate) struct GeometryFile {
 }
 
 /// `[pivot]`: the rotation centre in the platform frame.
+/// `[actuator]`: absent means linear legs.
+#[derive(Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct ActuatorFile {
+    pub kind: Spanned<ActuatorKind>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub horn_length_m: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rod_length_m: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub horn_angles_deg: Option<Spanned<Vec<f64>>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_min_deg: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_max_deg: Option<Spanned<f64>>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub(crate) enum ActuatorKind {
+    Linear,
+    Rotary,
+}
+
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct PivotFile {

@@ -250,3 +250,25 @@ fn trajectory_errors_name_the_key() {
         "preset `spiral`: no preset is called `spiral` (presets: seed, paired, circle, figure8, helix, sway, keyframes)"
     );
 }
+
+#[test]
+fn a_rotary_scenario_reads_and_writes_back_the_same() {
+    let text = std::fs::read_to_string(format!(
+        "{}/../../tests/cli/rotary.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let s = Scenario::from_toml_str(&text, "rotary.toml", None).unwrap_or_else(|e| panic!("{e}"));
+    let servos = s.geometry.rotary().unwrap_or_else(|| panic!("not rotary"));
+    assert_eq!((servos.horn_length(), servos.rod_length()), (0.025, 0.12));
+    assert_eq!(servos.horn_angles()[2].degrees(), 15.0);
+    let range = servos.range().map(|(a, b)| (a.degrees(), b.degrees()));
+    assert_eq!(range, Some((-80.0, 80.0)));
+    let back =
+        Scenario::from_toml_str(&s.to_toml(), "again.toml", None).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.geometry, s.geometry);
+    // Linear files are untouched: no [actuator] table is written for them.
+    let seed = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+    assert!(!seed.to_toml().contains("[actuator]"));
+    assert!(seed.geometry.rotary().is_none());
+}

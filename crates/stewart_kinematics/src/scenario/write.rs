@@ -4,8 +4,8 @@ use toml::Spanned;
 
 use super::Scenario;
 use super::file::{
-    AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile, LinearChannelFile,
-    PayloadFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
+    ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
+    LinearChannelFile, PayloadFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::trajectory::{Channel, Trajectory};
 
@@ -44,6 +44,16 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         leg_min: g.stroke.min.map(s),
         leg_max: g.stroke.max.map(s),
     };
+    let actuator = scenario.geometry.rotary().map(|r| {
+        s(ActuatorFile {
+            kind: s(ActuatorKind::Rotary),
+            horn_length_m: Some(s(r.horn_length())),
+            rod_length_m: Some(s(r.rod_length())),
+            horn_angles_deg: Some(s(r.horn_angles().iter().map(|a| a.degrees()).collect())),
+            servo_min_deg: r.range().map(|(min, _)| s(min.degrees())),
+            servo_max_deg: r.range().map(|(_, max)| s(max.degrees())),
+        })
+    });
     let pivot = (g.pivot != nalgebra::Vector3::zeros()).then(|| PivotFile {
         offset_m: s([g.pivot.x, g.pivot.y, g.pivot.z]),
     });
@@ -126,6 +136,7 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         name: Some(scenario.name.clone()),
         description: (!scenario.description.is_empty()).then(|| scenario.description.clone()),
         geometry,
+        actuator,
         pivot,
         trajectory: Some(s(t)),
         limits: (*l != crate::limits::Limits::default()).then_some(limits),

@@ -1,0 +1,193 @@
+//! Rotary-servo scenarios (`[actuator] kind = "rotary"`): `solve` gives servo angles; the
+//! commands that model linear legs only so far refuse them clearly.
+
+use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
+
+/// A desktop platform with hobby servos (the test scenario next to this file).
+fn scenario() -> String {
+    format!("{}/../../tests/cli/rotary.toml", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The test scenario's numbers, transcribed: base and platform joints, horn directions.
+const RB: f64 = 0.08;
+const RP: f64 = 0.06;
+const HORN: f64 = 0.025;
+const ROD: f64 = 0.12;
+const BASE_DEG: [f64; 6] = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0];
+const PLATFORM_DEG: [f64; 6] = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0];
+const HORN_DEG: [f64; 6] = [255.0, 105.0, 15.0, 225.0, 135.0, 345.0];
+
+/// Distance from horn tip `i` at servo angle `theta_deg` to platform joint `i` of the pose
+/// (x, y, z, yaw only — the test motion has no roll or pitch): the rod's length when the
+/// angle is right. Written from the model's definition, not from the solver's formula.
+fn rod(i: usize, pose: [f64; 4], theta_deg: f64) -> f64 {
+    let [x, y, z, yaw] = pose;
+    let (b, p, h, t) = (
+        BASE_DEG[i].to_radians(),
+        PLATFORM_DEG[i].to_radians(),
+        HORN_DEG[i].to_radians(),
+        theta_deg.to_radians(),
+    );
+    let tip = [
+        RB * b.cos() + HORN * t.cos() * h.cos(),
+        RB * b.sin() + HORN * t.cos() * h.sin(),
+        HORN * t.sin(),
+    ];
+    let (ax, ay) = (RP * p.cos(), RP * p.sin());
+    let (s, c) = yaw.to_radians().sin_cos();
+    let joint = [x + c * ax - s * ay, y + s * ax + c * ay, z];
+    (0..3)
+        .map(|k| (joint[k] - tip[k]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
+#[test]
+fn solve_gives_servo_angles_that_close_every_rod() {
+    let o = stewart(&["solve", "--scenario", &scenario()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (header, rows) = parse_csv(&stdout(&o));
+    assert_eq!(
+        header,
+        [
+            "t",
+            "x",
+            "y",
+            "z",
+            "roll_deg",
+            "pitch_deg",
+            "yaw_deg",
+            "theta1",
+            "theta2",
+            "theta3",
+            "theta4",
+            "theta5",
+            "theta6"
+        ]
+    );
+    assert_eq!(rows.len(), 101);
+    for row in &rows {
+        assert_eq!((row[4], row[5]), (0.0, 0.0));
+        let pose = [row[1], row[2], row[3], row[6]];
+        for i in 0..6 {
+            let theta = row[7 + i];
+            assert!((-80.0..=80.0).contains(&theta), "{row:?}");
+            let error = rod(i, pose, theta) - ROD;
+            assert!(
+                error.abs() < 1e-12,
+                "servo {}: rod off by {error} m in {row:?}",
+                i + 1
+            );
+        }
+    }
+    // At home the six servos are alike (the layout is three-fold symmetric) and near zero.
+    let home = &rows[0][7..13];
+    assert!(
+        home.iter()
+            .all(|t| (t - home[0]).abs() < 1e-9 && t.abs() < 0.1),
+        "{home:?}"
+    );
+}
+
+#[test]
+fn an_unreachable_pose_is_one_located_error_and_nothing_is_written() {
+    let dir = tempdir();
+    let poses = write(
+        dir.path(),
+        "poses.csv",
+        "x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0.117,0,0,0\n0,0,0.5,0,0,0\n",
+    );
+    let out = dir.path().join("angles.csv");
+    let o = stewart(&[
+        "solve",
+        "--scenario",
+        &scenario(),
+        "--poses",
+        &poses,
+        "--out",
+        &out.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("poses.csv, line 3: servo 1 cannot reach its platform joint"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}
+
+#[test]
+fn rotary_keys_are_checked_and_located() {
+    let dir = tempdir();
+    let text = std::fs::read_to_string(scenario()).unwrap_or_else(|e| panic!("{e}"));
+    for (from, to, expected) in [
+        (
+            "rod_length_m = 0.12",
+            "rod_length_m = 0.02",
+            "line 12, column 17: `actuator.horn_length_m` (0.025 m) must be shorter than `actuator.rod_length_m` (0.02 m)",
+        ),
+        (
+            "home_height = 0.117",
+            "home_height = 0.117\nleg_max = 0.2",
+            "line 7, column 11: `leg_max` belongs to linear legs",
+        ),
+        (
+            "horn_angles_deg = [255, 105, 15, 225, 135, 345]",
+            "horn_angles_deg = [255, 105, 15]",
+            "`actuator.horn_angles_deg` must list 6 angles (one per servo), got 3",
+        ),
+        (
+            "servo_max_deg = 80.0",
+            "servo_max_deg = -90.0",
+            "the servo range must lie in (-180, 180] degrees with min < max, got -80 … -90",
+        ),
+        (
+            "kind = \"rotary\"",
+            "kind = \"linear\"",
+            "`actuator.horn_length_m` belongs to rotary servos, not to `kind = \"linear\"`",
+        ),
+        (
+            "horn_length_m = 0.025\n",
+            "",
+            "`actuator.horn_length_m` is required by `kind = \"rotary\"` but missing",
+        ),
+    ] {
+        assert!(text.contains(from), "{from}");
+        let file = write(dir.path(), "r.toml", &text.replacen(from, to, 1));
+        let o = stewart(&["solve", "--scenario", &file]);
+        assert_eq!(o.status.code(), Some(2), "{to}");
+        assert!(stderr(&o).contains(expected), "{to}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
+    let dir = tempdir();
+    let legs = write(dir.path(), "legs.csv", "L1,L2,L3,L4,L5,L6\n1,1,1,1,1,1\n");
+    let out = dir.path().join("out");
+    let out = out.display().to_string();
+    for args in [
+        vec!["check"],
+        vec!["fk", "--legs", &legs],
+        vec!["workspace"],
+        vec!["forces", "--mass", "1"],
+        vec!["render", "--out", &out],
+        vec!["plot", "--out", "x.svg"],
+    ] {
+        let mut all = vec![args[0], "--scenario"];
+        let s = scenario();
+        all.push(&s);
+        all.extend(&args[1..]);
+        let o = stewart(&all);
+        assert_eq!(o.status.code(), Some(2), "{all:?}");
+        assert!(
+            stderr(&o).contains(&format!(
+                "`stewart {}` handles linear legs only so far",
+                args[0]
+            )),
+            "{all:?}: {}",
+            stderr(&o)
+        );
+    }
+}
