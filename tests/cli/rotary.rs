@@ -164,12 +164,10 @@ fn rotary_keys_are_checked_and_located() {
 #[test]
 fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
     let dir = tempdir();
-    let legs = write(dir.path(), "legs.csv", "L1,L2,L3,L4,L5,L6\n1,1,1,1,1,1\n");
     let out = dir.path().join("out");
     let out = out.display().to_string();
     for args in [
         vec!["check"],
-        vec!["fk", "--legs", &legs],
         vec!["workspace"],
         vec!["forces", "--mass", "1"],
         vec!["render", "--out", &out],
@@ -190,4 +188,56 @@ fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
             stderr(&o)
         );
     }
+}
+
+#[test]
+fn fk_turns_servo_angles_back_into_the_poses() {
+    let dir = tempdir();
+    let angles = dir.path().join("angles.csv");
+    let o = stewart(&[
+        "solve",
+        "--scenario",
+        &scenario(),
+        "--out",
+        &angles.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, solved) = parse_csv(&std::fs::read_to_string(&angles).unwrap_or_default());
+    for cold in [false, true] {
+        let mut args = vec!["fk", "--scenario"];
+        let s = scenario();
+        args.push(&s);
+        let a = angles.display().to_string();
+        args.extend(["--legs", &a]);
+        if cold {
+            args.push("--cold");
+        }
+        let o = stewart(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let (header, rows) = parse_csv(&stdout(&o));
+        assert_eq!(
+            header[..7],
+            ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"]
+        );
+        assert_eq!(rows.len(), solved.len());
+        for (row, want) in rows.iter().zip(&solved) {
+            assert!(row[8] <= 1e-12, "residual {}", row[8]);
+            for c in 0..4 {
+                assert!((row[c] - want[c]).abs() < 1e-9, "{row:?} vs {want:?}");
+            }
+            for c in 4..7 {
+                assert!((row[c] - want[c]).abs() < 1e-7, "{row:?} vs {want:?}");
+            }
+        }
+    }
+    let o = stewart(&[
+        "fk",
+        "--scenario",
+        &scenario(),
+        "--legs",
+        &angles.display().to_string(),
+        "--assembly-modes",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--assembly-modes handles linear legs only so far"));
 }

@@ -110,8 +110,9 @@ pub struct FkArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
-    /// Leg lengths: a CSV with columns L1..L6 (metres) and optionally t; other columns are
-    /// ignored; `-` reads standard input.
+    /// Leg lengths: a CSV with columns L1..L6 (metres) — or theta1..theta6 (degrees) for a
+    /// rotary-servo platform — and optionally t; other columns are ignored; `-` reads
+    /// standard input.
     #[arg(long, value_name = "LEGS.csv")]
     pub legs: PathBuf,
     /// Write the CSV here (whole or not at all) instead of standard output.

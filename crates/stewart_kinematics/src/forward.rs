@@ -15,6 +15,7 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::angle::Angle;
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 
@@ -80,6 +81,17 @@ pub enum ForwardError {
         /// Largest leg-length error reached, metres.
         residual: f64,
     },
+    /// Servo angles given for a platform with linear legs.
+    #[error("servo angles were given, but the platform has linear legs (give leg lengths)")]
+    NotRotary,
+    /// A servo angle that is not a finite number.
+    #[error("servo {servo} angle {value} is not a finite number of degrees")]
+    InvalidAngle {
+        /// Servo number from 1.
+        servo: usize,
+        /// The value given, degrees.
+        value: f64,
+    },
     /// Neither a Newton nor a damped step could reduce the residual.
     #[error(
         "forward kinematics stalled at a singular pose: {iterations} iterations, leg-length residual {residual:.3e} m"
@@ -118,9 +130,12 @@ fn rotations_and_derivatives(angles: [f64; 3]) -> ([Matrix3<f64>; 3], [Matrix3<f
 }
 
 impl Geometry {
-    /// Residual `L(x) − target` and its derivative `∂L/∂x` at pose coordinates `x`.
+    /// Residual `L(x) − target` and its derivative `∂L/∂x` at pose coordinates `x`, for
+    /// legs from the fixed points `anchors` (the base joints, or a rotary platform's horn
+    /// tips) to the platform joints.
     fn residual_and_derivative(
         &self,
+        anchors: &[Vector3<f64>; 6],
         x: &Vector6<f64>,
         target: &[f64; 6],
     ) -> (Vector6<f64>, Matrix6<f64>) {
@@ -134,7 +149,7 @@ impl Geometry {
         let mut d = Matrix6::zeros();
         for i in 0..6 {
             let arm = self.platform_joints()[i] - c;
-            let leg = position + c + r * arm - self.base_joints()[i];
+            let leg = position + c + r * arm - anchors[i];
             let length = leg.norm();
             let u = leg / length;
             f[i] = length - target[i];
@@ -186,10 +201,46 @@ impl Geometry {
         start: &Pose,
         options: &ForwardOptions,
     ) -> Result<ForwardSolution, ForwardError> {
+        self.forward_from(self.base_joints(), lengths, start, options)
+    }
+
+    /// The pose of a rotary platform whose servos stand at `angles`, searched from `start`:
+    /// the horn tips are then fixed points and the rods legs of one length, so the same
+    /// damped Newton method solves it (residual: each rod's closure, metres).
+    pub fn forward_servos(
+        &self,
+        angles: &[Angle; 6],
+        start: &Pose,
+        options: &ForwardOptions,
+    ) -> Result<ForwardSolution, ForwardError> {
+        let Some(servos) = self.rotary() else {
+            return Err(ForwardError::NotRotary);
+        };
+        for (i, a) in angles.iter().enumerate() {
+            if !a.radians().is_finite() {
+                return Err(ForwardError::InvalidAngle {
+                    servo: i + 1,
+                    value: a.radians().to_degrees(),
+                });
+            }
+        }
+        let tips: [Vector3<f64>; 6] =
+            std::array::from_fn(|i| servos.horn_tip(i, &self.base_joints()[i], angles[i]));
+        self.forward_from(&tips, &[servos.rod_length(); 6], start, options)
+    }
+
+    /// The damped Newton solve for legs from `anchors` of lengths `lengths`.
+    fn forward_from(
+        &self,
+        anchors: &[Vector3<f64>; 6],
+        lengths: &[f64; 6],
+        start: &Pose,
+        options: &ForwardOptions,
+    ) -> Result<ForwardSolution, ForwardError> {
         let mut x = coordinates(start);
         let mut lambda: f64 = 1e-3;
         let mut iterations = 0;
-        let (mut f, mut d) = self.residual_and_derivative(&x, lengths);
+        let (mut f, mut d) = self.residual_and_derivative(anchors, &x, lengths);
         loop {
             let residual = f.amax();
             if !residual.is_finite() {
@@ -217,7 +268,7 @@ impl Geometry {
             // are those of the next iteration.
             if let Some(step) = d.lu().solve(&(-f))
                 && step.iter().all(|v| v.is_finite())
-                && let Some(next) = self.line_search(&x, &step, lengths, cost)
+                && let Some(next) = self.line_search(anchors, &x, &step, lengths, cost)
             {
                 (x, f, d) = next;
                 lambda = (lambda * 0.3).max(1e-12);
@@ -231,7 +282,7 @@ impl Geometry {
                 let damped = h + Matrix6::identity() * (lambda * (1.0 + h.diagonal().amax()));
                 if let Some(step) = damped.cholesky().map(|c| c.solve(&(-g))) {
                     let candidate = x + step;
-                    let (fc, dc) = self.residual_and_derivative(&candidate, lengths);
+                    let (fc, dc) = self.residual_and_derivative(anchors, &candidate, lengths);
                     if fc.norm_squared() < cost {
                         (x, f, d) = (candidate, fc, dc);
                         improved = true;
@@ -253,6 +304,7 @@ impl Geometry {
     /// accepted point with its residual and derivative.
     fn line_search(
         &self,
+        anchors: &[Vector3<f64>; 6],
         x: &Vector6<f64>,
         step: &Vector6<f64>,
         lengths: &[f64; 6],
@@ -261,7 +313,7 @@ impl Geometry {
         let mut alpha = 1.0;
         while alpha > 1e-4 {
             let candidate = x + step * alpha;
-            let (f, d) = self.residual_and_derivative(&candidate, lengths);
+            let (f, d) = self.residual_and_derivative(anchors, &candidate, lengths);
             let c = f.norm_squared();
             // Full Newton steps reduce the cost by ~2α·cost; ask for 1e-4 of that.
             if c <= cost * (1.0 - 2e-4 * alpha) || c == 0.0 {

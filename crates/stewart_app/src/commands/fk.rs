@@ -7,7 +7,7 @@ use anyhow::{Result, anyhow};
 use stewart_kinematics::bounds;
 use stewart_kinematics::forward::assembly::canonical;
 use stewart_kinematics::table::NumericTable;
-use stewart_kinematics::{ForwardOptions, ForwardSolution};
+use stewart_kinematics::{Angle, ForwardOptions, ForwardSolution};
 
 use crate::cli::FkArgs;
 use crate::csv_io::{CsvText, read_input};
@@ -32,7 +32,9 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     inputs.push(("the leg-length table", &args.legs));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "fk")?;
+    if scenario.geometry.rotary().is_some() {
+        return servos(args, &scenario, out.as_ref());
+    }
     let geometry = &scenario.geometry;
     // Read the table first, so that a bad file is reported whatever the geometry.
     let (table, file) = read_input(&args.legs, |r, name| {
@@ -104,6 +106,59 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     }
     let text = csv.into_string();
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+const SERVO_COLUMNS: [&str; 6] = ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"];
+
+/// `fk` for a rotary platform: poses from servo angles `theta1..theta6` (degrees), each
+/// row warm-started from the previous one (or from home with `--cold`).
+fn servos(
+    args: &FkArgs,
+    scenario: &stewart_kinematics::Scenario,
+    out: Option<&output::Destination>,
+) -> Result<ExitCode> {
+    if args.assembly_modes {
+        return Err(anyhow!(
+            "--assembly-modes handles linear legs only so far; scenario `{}` has rotary servos",
+            scenario.name
+        ));
+    }
+    let geometry = &scenario.geometry;
+    let (table, file) = read_input(&args.legs, |r, name| {
+        Ok((
+            NumericTable::read(r, name, &SERVO_COLUMNS, &["t"])?,
+            name.to_owned(),
+        ))
+    })?;
+    for name in SERVO_COLUMNS {
+        table.check_range(name, &bounds::symmetric(180.0), "°")?;
+    }
+    table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
+    let t_index = table.index("t");
+    let mut header: Vec<&str> = Vec::new();
+    if t_index.is_some() {
+        header.push("t");
+    }
+    header.extend(POSE_OUT);
+    let mut csv = CsvText::with_header(&header);
+    let options = ForwardOptions::default();
+    let mut start = geometry.home_pose();
+    for (k, row) in table.rows().enumerate() {
+        let angles = [row[0], row[1], row[2], row[3], row[4], row[5]].map(Angle::from_degrees);
+        let from = if args.cold {
+            geometry.home_pose()
+        } else {
+            start
+        };
+        let s = geometry
+            .forward_servos(&angles, &from, &options)
+            .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
+        start = s.pose;
+        csv.row(t_index.map(|i| row[i]).into_iter().chain(pose_values(&s)));
+    }
+    let text = csv.into_string();
+    output::emit_with(out, |w| w.write_all(text.as_bytes()))?;
     Ok(ExitCode::SUCCESS)
 }
 

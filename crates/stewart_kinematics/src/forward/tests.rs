@@ -1,5 +1,5 @@
 use super::*;
-use crate::geometry::StrokeLimits;
+use crate::geometry::{GeometryParams, StrokeLimits};
 use proptest::prelude::*;
 
 /// Normalised condition number above which a pose is taken as near-singular: there two
@@ -207,4 +207,74 @@ fn a_near_singular_warm_start_still_converges() {
         .forward(&lengths, &start, &ForwardOptions::default())
         .unwrap_or_else(|e| panic!("{e}"));
     check_solution(&g, &sol, &lengths, &truth);
+}
+
+/// The desktop servo platform of `tests/cli/rotary.toml`.
+fn servo_geometry() -> Geometry {
+    let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, crate::Layout::seed());
+    p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(Angle::from_degrees);
+    p.platform_angles = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(Angle::from_degrees);
+    p.actuator = crate::rotary::Actuator::Rotary(
+        crate::rotary::RotaryActuators::new(
+            0.025,
+            0.12,
+            [255.0, 105.0, 15.0, 225.0, 135.0, 345.0],
+            Some((-80.0, 80.0)),
+        )
+        .unwrap_or_else(|e| panic!("{e}")),
+    );
+    Geometry::new(p).unwrap_or_else(|e| panic!("{e}"))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// Servo angles of a pose, then the pose from those angles: the rods close to 1e-12 m
+    /// and the pose is the one we started from (warm start a little away, as along a
+    /// trajectory; where the pose is well determined).
+    #[test]
+    fn servo_forward_inverts_servo_inverse(
+        x in -0.015f64..0.015, y in -0.015f64..0.015, z in 0.105f64..0.13,
+        r in -8.0f64..8.0, p in -8.0f64..8.0, w in -12.0f64..12.0,
+        dx in -0.002f64..0.002, dr in -0.5f64..0.5,
+    ) {
+        let g = servo_geometry();
+        let truth = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
+        let Some(Ok(angles)) = g.servo_angles(&truth) else {
+            return Ok(()); // unreachable there: nothing to invert
+        };
+        let start = Pose::from_xyz_rpy_deg([x + dx, y - dx, z + dx], [r + dr, p - dr, w + dr]);
+        let sol = g
+            .forward_servos(&angles, &start, &ForwardOptions::default())
+            .unwrap_or_else(|e| panic!("{e}"));
+        prop_assert!(sol.residual <= 1e-12, "residual {}", sol.residual);
+        // The found pose holds the servos where they were asked to be.
+        let again = g.servo_angles(&sol.pose).and_then(Result::ok);
+        prop_assert!(again.is_some());
+        if let Some(again) = again {
+            for i in 0..6 {
+                prop_assert!((again[i].radians() - angles[i].radians()).abs() < 1e-9);
+            }
+        }
+        prop_assert!((sol.pose.position - truth.position).norm() < 1e-9, "{:?} vs {truth:?}", sol.pose);
+        prop_assert!((sol.pose.rotation() - truth.rotation()).amax() < 1e-9);
+    }
+}
+
+#[test]
+fn servo_forward_needs_a_rotary_platform_and_finite_angles() {
+    let g = crate::test_support::paired_geometry();
+    let home = g.home_pose();
+    let zero = [Angle::from_degrees(0.0); 6];
+    assert_eq!(
+        g.forward_servos(&zero, &home, &ForwardOptions::default()),
+        Err(ForwardError::NotRotary)
+    );
+    let g = servo_geometry();
+    let mut bad = zero;
+    bad[3] = Angle::from_degrees(f64::NAN);
+    assert!(matches!(
+        g.forward_servos(&bad, &g.home_pose(), &ForwardOptions::default()),
+        Err(ForwardError::InvalidAngle { servo: 4, .. })
+    ));
 }
