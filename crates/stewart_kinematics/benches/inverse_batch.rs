@@ -6,7 +6,8 @@
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::{BatchSolver, Geometry, Pose};
+use stewart_kinematics::rotary::{Actuator, RotaryActuators};
+use stewart_kinematics::{Angle, BatchSolver, Geometry, GeometryParams, Layout, Pose, ServoBatch};
 
 /// A deterministic spread of poses about the seed's home pose.
 fn poses(n: usize) -> Vec<Pose> {
@@ -59,5 +60,48 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+/// The desktop servo platform of `tests/cli/rotary.toml`, and small motions about its home.
+fn servo_bench(c: &mut Criterion) {
+    let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
+    p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(Angle::from_degrees);
+    p.platform_angles = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(Angle::from_degrees);
+    p.actuator = Actuator::Rotary(
+        RotaryActuators::new(0.025, 0.12, [255.0, 105.0, 15.0, 225.0, 135.0, 345.0], None)
+            .unwrap_or_else(|e| panic!("{e}")),
+    );
+    let geometry = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+    let solver = ServoBatch::new(&geometry).unwrap_or_else(|| panic!("not rotary"));
+    let n = 1_000_000;
+    let input: Vec<Pose> = (0..n)
+        .map(|k| {
+            let t = k as f64 * 1e-3;
+            Pose::from_xyz_rpy_deg(
+                [
+                    0.01 * (1.3 * t).sin(),
+                    0.01 * (0.7 * t).cos(),
+                    0.117 + 0.005 * (0.5 * t).sin(),
+                ],
+                [
+                    4.0 * (0.9 * t).sin(),
+                    4.0 * (1.1 * t).cos(),
+                    8.0 * (0.3 * t).sin(),
+                ],
+            )
+        })
+        .collect();
+    let mut out = vec![[0.0; 6]; n];
+    let mut group = c.benchmark_group("servo_angles");
+    group.throughput(Throughput::Elements(n as u64));
+    group.sample_size(20);
+    group.bench_function("batch_parallel_1M", |b| {
+        b.iter(|| {
+            solver
+                .solve_parallel(black_box(&input), black_box(&mut out))
+                .unwrap_or_else(|e| panic!("unreachable {e:?}"))
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench, servo_bench);
 criterion_main!(benches);

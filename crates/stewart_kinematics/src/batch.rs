@@ -43,9 +43,9 @@ impl BatchSolver {
         }
     }
 
-    /// The six leg lengths of one pose.
+    /// The six leg vectors `q_i − b_i` of one pose, by coordinate.
     #[inline]
-    pub fn lengths(&self, pose: &Pose) -> [f64; 6] {
+    fn legs(&self, pose: &Pose) -> [[f64; 6]; 3] {
         let (sr, cr) = sin_cos(pose.roll.radians());
         let (sp, cp) = sin_cos(pose.pitch.radians());
         let (sy, cy) = sin_cos(pose.yaw.radians());
@@ -60,13 +60,21 @@ impl BatchSolver {
         let r21 = cp * sr;
         let r22 = cp * cr;
         let p = &pose.position;
-        std::array::from_fn(|i| {
+        let mut out = [[0.0; 6]; 3];
+        for i in 0..6 {
             let (ax, ay, az) = (self.ax[i], self.ay[i], self.az[i]);
-            let lx = p.x + self.dx[i] + (r00 * ax + r01 * ay + r02 * az);
-            let ly = p.y + self.dy[i] + (r10 * ax + r11 * ay + r12 * az);
-            let lz = p.z + self.dz[i] + (r20 * ax + r21 * ay + r22 * az);
-            (lx * lx + ly * ly + lz * lz).sqrt()
-        })
+            out[0][i] = p.x + self.dx[i] + (r00 * ax + r01 * ay + r02 * az);
+            out[1][i] = p.y + self.dy[i] + (r10 * ax + r11 * ay + r12 * az);
+            out[2][i] = p.z + self.dz[i] + (r20 * ax + r21 * ay + r22 * az);
+        }
+        out
+    }
+
+    /// The six leg lengths of one pose.
+    #[inline]
+    pub fn lengths(&self, pose: &Pose) -> [f64; 6] {
+        let [lx, ly, lz] = self.legs(pose);
+        std::array::from_fn(|i| (lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i]).sqrt())
     }
 
     /// Leg lengths of every pose into `out` on the calling thread.
@@ -93,7 +101,107 @@ impl BatchSolver {
     }
 }
 
+/// Batch servo angles of a rotary platform: the batch leg vectors, then the closed form
+/// of [`crate::rotary`] with one square root and one `atan2` per servo:
+/// `θ = atan2(L·M − c·N, c·M + L·N)` with `c = √(M² + N² − L²)`, which is
+/// `asin(L/√(M²+N²)) − atan2(N, M)` wrapped to (−π, π].
+#[derive(Clone, Copy, Debug)]
+pub struct ServoBatch {
+    legs: BatchSolver,
+    /// `2a cos β_i`, `2a sin β_i`.
+    ncos: [f64; 6],
+    nsin: [f64; 6],
+    /// `2a`.
+    two_a: f64,
+    /// `s² − a²`.
+    rod_minus_horn: f64,
+}
+
+impl ServoBatch {
+    /// Prepare the constants of a rotary `geometry` (`None` for linear legs).
+    pub fn new(geometry: &Geometry) -> Option<Self> {
+        let servos = geometry.rotary()?;
+        let (a, s) = (servos.horn_length(), servos.rod_length());
+        let beta = servos.horn_angles();
+        Some(Self {
+            legs: BatchSolver::new(geometry),
+            ncos: std::array::from_fn(|i| 2.0 * a * beta[i].radians().cos()),
+            nsin: std::array::from_fn(|i| 2.0 * a * beta[i].radians().sin()),
+            two_a: 2.0 * a,
+            rod_minus_horn: s * s - a * a,
+        })
+    }
+
+    /// The six servo angles of one pose, radians, or the index (from 0) of the first servo
+    /// that cannot reach its joint.
+    #[inline]
+    pub fn angles(&self, pose: &Pose) -> Result<[f64; 6], usize> {
+        let [lx, ly, lz] = self.legs.legs(pose);
+        let mut out = [0.0; 6];
+        for i in 0..6 {
+            let big_l = lx[i] * lx[i] + ly[i] * ly[i] + lz[i] * lz[i] - self.rod_minus_horn;
+            let m = self.two_a * lz[i];
+            let n = self.ncos[i] * lx[i] + self.nsin[i] * ly[i];
+            let c2 = m * m + n * n - big_l * big_l;
+            if !(c2 >= 0.0) || (m == 0.0 && n == 0.0) {
+                return Err(i);
+            }
+            let c = c2.sqrt();
+            out[i] = (big_l * m - c * n).atan2(c * m + big_l * n);
+        }
+        Ok(out)
+    }
+
+    /// Servo angles (radians) of every pose into `out`, spread over all cores; the first
+    /// unreachable pose found, with its servo (from 0), is the error.
+    ///
+    /// # Panics
+    /// If `out` is shorter than `poses` (a programming error, not a user error).
+    pub fn solve_parallel(
+        &self,
+        poses: &[Pose],
+        out: &mut [[f64; 6]],
+    ) -> Result<(), (usize, usize)> {
+        assert!(out.len() >= poses.len(), "output shorter than input");
+        poses
+            .par_chunks(CHUNK)
+            .zip(out[..poses.len()].par_chunks_mut(CHUNK))
+            .enumerate()
+            .try_for_each(|(chunk, (p, o))| {
+                for (k, (pose, slot)) in p.iter().zip(o.iter_mut()).enumerate() {
+                    *slot = self
+                        .angles(pose)
+                        .map_err(|servo| (chunk * CHUNK + k, servo))?;
+                }
+                Ok(())
+            })
+    }
+}
+
 impl Geometry {
+    /// Servo angles (degrees) of many poses of a rotary platform, on all cores (`None`
+    /// for linear legs); an unreachable pose is the error, with its index and servo
+    /// (both from 0). The earliest such pose is reported.
+    pub fn servo_angles_batch(
+        &self,
+        poses: &[Pose],
+    ) -> Option<Result<Vec<[f64; 6]>, (usize, usize)>> {
+        let solver = ServoBatch::new(self)?;
+        let mut out = vec![[0.0; 6]; poses.len()];
+        Some(match solver.solve_parallel(poses, &mut out) {
+            Ok(()) => Ok(out
+                .into_iter()
+                .map(|row| row.map(|r| crate::angle::Angle::from_radians(r).degrees()))
+                .collect()),
+            // Parallel chunks may stop at a later pose first: find the earliest.
+            Err(_) => Err(poses
+                .iter()
+                .enumerate()
+                .find_map(|(k, p)| solver.angles(p).err().map(|servo| (k, servo)))
+                .unwrap_or((0, 0))),
+        })
+    }
+
     /// Leg lengths of many poses, on all cores; allocates only the result.
     pub fn leg_lengths_batch(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
         let mut out = vec![[0.0; 6]; poses.len()];
@@ -108,6 +216,76 @@ mod tests {
     use crate::geometry::GeometryParams;
     use crate::layout::Layout;
     use nalgebra::Vector3;
+
+    #[test]
+    fn batch_servo_angles_agree_with_the_closed_form_for_every_pose() {
+        let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
+        p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(crate::Angle::from_degrees);
+        p.platform_angles =
+            [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(crate::Angle::from_degrees);
+        p.actuator = crate::rotary::Actuator::Rotary(
+            crate::rotary::RotaryActuators::new(
+                0.025,
+                0.12,
+                [255.0, 105.0, 15.0, 225.0, 135.0, 345.0],
+                None,
+            )
+            .unwrap_or_else(|e| panic!("{e}")),
+        );
+        let g = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+        let poses: Vec<Pose> = (0..20_000)
+            .map(|k| {
+                let t = k as f64;
+                Pose::from_xyz_rpy_deg(
+                    [
+                        0.02 * (0.37 * t).sin(),
+                        0.02 * (0.23 * t).cos(),
+                        0.117 + 0.01 * (0.11 * t).sin(),
+                    ],
+                    [
+                        8.0 * (0.05 * t).sin(),
+                        8.0 * (0.07 * t).cos(),
+                        20.0 * (0.013 * t).sin(),
+                    ],
+                )
+            })
+            .collect();
+        // The batch form and the closed form agree on which poses are out of reach…
+        let solver = ServoBatch::new(&g).unwrap_or_else(|| panic!("not rotary"));
+        let mut out_of_reach = 0;
+        for pose in &poses {
+            let single = g.servo_angles(pose).unwrap_or_else(|| panic!("not rotary"));
+            assert_eq!(single.is_err(), solver.angles(pose).is_err(), "{pose:?}");
+            out_of_reach += usize::from(single.is_err());
+        }
+        assert!(
+            out_of_reach > 100 && out_of_reach < 10_000,
+            "{out_of_reach}"
+        );
+        // …and on the angles of the others.
+        let poses: Vec<Pose> = poses
+            .into_iter()
+            .filter(|p| g.servo_angles(p).is_some_and(|r| r.is_ok()))
+            .collect();
+        let batch = g
+            .servo_angles_batch(&poses)
+            .unwrap_or_else(|| panic!("not rotary"))
+            .unwrap_or_else(|e| panic!("unreachable {e:?}"));
+        for (pose, angles) in poses.iter().zip(&batch) {
+            let single = g
+                .servo_angles(pose)
+                .and_then(Result::ok)
+                .unwrap_or_else(|| panic!("{pose:?}"));
+            for i in 0..6 {
+                assert!((single[i].degrees() - angles[i]).abs() < 1e-9, "{pose:?}");
+            }
+        }
+        // An unreachable pose among reachable ones is found, with its servo.
+        let mut with_bad = poses[..10].to_vec();
+        with_bad[7] = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.5], [0.0, 0.0, 0.0]);
+        assert_eq!(g.servo_angles_batch(&with_bad), Some(Err((7, 0))));
+        assert!(Geometry::seed().servo_angles_batch(&poses).is_none());
+    }
 
     #[test]
     fn batch_agrees_with_single_pose_solution_for_every_pose() {

@@ -49,7 +49,7 @@ pub mod workspace;
 mod test_support;
 
 pub use angle::Angle;
-pub use batch::BatchSolver;
+pub use batch::{BatchSolver, ServoBatch};
 pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};
 pub use forward::{ForwardError, ForwardOptions, ForwardSolution};
 pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};

@@ -55,16 +55,15 @@ pub fn solve_table(
             values: geometry.leg_lengths_batch(&table.poses),
         });
     }
-    let values = table
-        .poses
-        .iter()
-        .enumerate()
-        .map(|(k, pose)| match geometry.servo_angles(pose) {
-            Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
-            Some(Err(e)) => Err(anyhow::anyhow!("{}: {e}", locate(k))),
-            None => Err(anyhow::anyhow!("internal error: no servos")),
-        })
-        .collect::<anyhow::Result<Vec<_>>>()?;
+    let values = match geometry.servo_angles_batch(&table.poses) {
+        Some(Ok(values)) => values,
+        // Say why in the closed form's words, for the earliest pose out of reach.
+        Some(Err((k, _))) => match geometry.servo_angles(&table.poses[k]) {
+            Some(Err(e)) => anyhow::bail!("{}: {e}", locate(k)),
+            _ => anyhow::bail!("{}: a servo cannot reach its platform joint", locate(k)),
+        },
+        None => anyhow::bail!("internal error: no servos"),
+    };
     Ok(Solved {
         columns: ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"],
         values,
