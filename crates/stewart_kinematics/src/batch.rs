@@ -60,14 +60,12 @@ impl BatchSolver {
         let r21 = cp * sr;
         let r22 = cp * cr;
         let p = &pose.position;
-        let mut out = [[0.0; 6]; 3];
-        for i in 0..6 {
-            let (ax, ay, az) = (self.ax[i], self.ay[i], self.az[i]);
-            out[0][i] = p.x + self.dx[i] + (r00 * ax + r01 * ay + r02 * az);
-            out[1][i] = p.y + self.dy[i] + (r10 * ax + r11 * ay + r12 * az);
-            out[2][i] = p.z + self.dz[i] + (r20 * ax + r21 * ay + r22 * az);
-        }
-        out
+        let (ax, ay, az) = (&self.ax, &self.ay, &self.az);
+        [
+            std::array::from_fn(|i| p.x + self.dx[i] + (r00 * ax[i] + r01 * ay[i] + r02 * az[i])),
+            std::array::from_fn(|i| p.y + self.dy[i] + (r10 * ax[i] + r11 * ay[i] + r12 * az[i])),
+            std::array::from_fn(|i| p.z + self.dz[i] + (r20 * ax[i] + r21 * ay[i] + r22 * az[i])),
+        ]
     }
 
     /// The six leg lengths of one pose.
@@ -100,6 +98,9 @@ impl BatchSolver {
             .for_each(|(p, o)| self.solve_serial(p, o));
     }
 }
+
+/// The first pose out of reach in a batch: its index and its servo (both from 0).
+pub type OutOfReach = (usize, usize);
 
 /// Batch servo angles of a rotary platform: the batch leg vectors, then the closed form
 /// of [`crate::rotary`] with one square root and one `atan2` per servo:
@@ -143,7 +144,7 @@ impl ServoBatch {
             let m = self.two_a * lz[i];
             let n = self.ncos[i] * lx[i] + self.nsin[i] * ly[i];
             let c2 = m * m + n * n - big_l * big_l;
-            if !(c2 >= 0.0) || (m == 0.0 && n == 0.0) {
+            if c2.is_nan() || c2 < 0.0 || (m == 0.0 && n == 0.0) {
                 return Err(i);
             }
             let c = c2.sqrt();
@@ -182,10 +183,7 @@ impl Geometry {
     /// Servo angles (degrees) of many poses of a rotary platform, on all cores (`None`
     /// for linear legs); an unreachable pose is the error, with its index and servo
     /// (both from 0). The earliest such pose is reported.
-    pub fn servo_angles_batch(
-        &self,
-        poses: &[Pose],
-    ) -> Option<Result<Vec<[f64; 6]>, (usize, usize)>> {
+    pub fn servo_angles_batch(&self, poses: &[Pose]) -> Option<Result<Vec<[f64; 6]>, OutOfReach>> {
         let solver = ServoBatch::new(self)?;
         let mut out = vec![[0.0; 6]; poses.len()];
         Some(match solver.solve_parallel(poses, &mut out) {
