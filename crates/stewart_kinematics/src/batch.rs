@@ -217,20 +217,7 @@ mod tests {
 
     #[test]
     fn batch_servo_angles_agree_with_the_closed_form_for_every_pose() {
-        let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
-        p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(crate::Angle::from_degrees);
-        p.platform_angles =
-            [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(crate::Angle::from_degrees);
-        p.actuator = crate::rotary::Actuator::Rotary(
-            crate::rotary::RotaryActuators::new(
-                0.025,
-                0.12,
-                [255.0, 105.0, 15.0, 225.0, 135.0, 345.0],
-                None,
-            )
-            .unwrap_or_else(|e| panic!("{e}")),
-        );
-        let g = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+        let g = crate::test_support::servo_geometry();
         let poses: Vec<Pose> = (0..20_000)
             .map(|k| {
                 let t = k as f64;

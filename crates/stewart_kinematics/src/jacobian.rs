@@ -107,6 +107,45 @@ impl Geometry {
         self.params().platform_radius
     }
 
+    /// The 6×6 map from a platform twist `(v, ω)` about the pivot point to the six servo
+    /// rates (rad/s) of a rotary platform (`None` for linear legs), or the servo that
+    /// cannot reach its joint. Differentiating the rod closure `|q_i − H_i(θ_i)|² = s²`
+    /// with rod vector `d_i = q_i − H_i` and horn tip velocity per radian
+    /// `h_i = ∂H_i/∂θ_i = a(−sin θ cos β, −sin θ sin β, cos θ)` gives the row
+    /// `[d_iᵀ, (r_i × d_i)ᵀ] / (d_i · h_i)`. Where `d_i · h_i = 0` the rod pulls across the
+    /// horn's motion and the servo loses control of it: that row is infinite, and the
+    /// conditioning says singular.
+    pub fn servo_jacobian(
+        &self,
+        pose: &Pose,
+    ) -> Option<Result<Matrix6<f64>, crate::rotary::Unreachable>> {
+        let servos = self.rotary()?;
+        let angles =
+            match servos.servo_angles(self.base_joints(), &self.inverse(pose).platform_joints) {
+                Ok(a) => a,
+                Err(e) => return Some(Err(e)),
+            };
+        let r = pose.rotation();
+        let c = self.pivot();
+        let joints = self.inverse(pose).platform_joints;
+        let mut j = Matrix6::zeros();
+        for i in 0..6 {
+            let tip = servos.horn_tip(i, &self.base_joints()[i], angles[i]);
+            let d = joints[i] - tip;
+            let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
+            let (st, ct) = angles[i].radians().sin_cos();
+            let h = servos.horn_length() * Vector3::new(-st * cb, -st * sb, ct);
+            let arm = r * (self.platform_joints()[i] - c);
+            let scale = 1.0 / d.dot(&h);
+            let m = arm.cross(&d);
+            j.fixed_view_mut::<1, 3>(i, 0)
+                .copy_from(&(d.transpose() * scale));
+            j.fixed_view_mut::<1, 3>(i, 3)
+                .copy_from(&(m.transpose() * scale));
+        }
+        Some(Ok(j))
+    }
+
     /// Singular values, condition number and weakest twist of the normalised Jacobian.
     pub fn conditioning(&self, pose: &Pose) -> Conditioning {
         conditioning_of(&self.jacobian(pose), self.characteristic_length())
@@ -197,6 +236,42 @@ mod tests {
             let analytic = g.jacobian(&pose) * Vector6::new(vx, vy, vz, wx, wy, wz);
             let numeric = numeric_rates(&g, &pose, v, om);
             prop_assert!((analytic - numeric).abs().max() < 1e-7, "{analytic} vs {numeric}");
+        }
+    }
+
+    proptest! {
+        /// The servo Jacobian against finite differences of the closed-form servo angles.
+        #[test]
+        fn servo_jacobian_matches_finite_differences_of_servo_angles(
+            x in -0.01f64..0.01, y in -0.01f64..0.01, z in 0.11f64..0.125,
+            r in -5.0f64..5.0, p in -5.0f64..5.0, w in -10.0f64..10.0,
+            vx in -1.0f64..1.0, vy in -1.0f64..1.0, vz in -1.0f64..1.0,
+            wx in -1.0f64..1.0, wy in -1.0f64..1.0, wz in -1.0f64..1.0,
+        ) {
+            let g = crate::test_support::servo_geometry();
+            let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
+            let Some(Ok(j)) = g.servo_jacobian(&pose) else {
+                return Ok(()); // out of reach
+            };
+            let h = 1e-7;
+            let angles_after = |s: f64| {
+                let rot = nalgebra::Rotation3::new(Vector3::new(wx, wy, wz) * s * h).matrix()
+                    * pose.rotation();
+                let c = g.pivot();
+                let pivot_point = pose.position + c;
+                let joints: [Vector3<f64>; 6] = std::array::from_fn(|i| {
+                    pivot_point + Vector3::new(vx, vy, vz) * s * h + rot * (g.platform_joints()[i] - c)
+                });
+                let servos = g.rotary().unwrap_or_else(|| panic!("not rotary"));
+                servos.servo_angles(g.base_joints(), &joints).map(|a| Vector6::from_fn(|i, _| a[i].radians()))
+            };
+            let (Ok(after), Ok(before)) = (angles_after(1.0), angles_after(-1.0)) else {
+                return Ok(());
+            };
+            let numeric = (after - before) / (2.0 * h);
+            let analytic = j * Vector6::new(vx, vy, vz, wx, wy, wz);
+            let scale = 1.0 + numeric.abs().max();
+            prop_assert!((analytic - numeric).abs().max() < 1e-5 * scale, "{analytic} vs {numeric}");
         }
     }
 

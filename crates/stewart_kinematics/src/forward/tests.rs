@@ -1,5 +1,5 @@
 use super::*;
-use crate::geometry::{GeometryParams, StrokeLimits};
+use crate::geometry::StrokeLimits;
 use proptest::prelude::*;
 
 /// Normalised condition number above which a pose is taken as near-singular: there two
@@ -209,23 +209,6 @@ fn a_near_singular_warm_start_still_converges() {
     check_solution(&g, &sol, &lengths, &truth);
 }
 
-/// The desktop servo platform of `tests/cli/rotary.toml`.
-fn servo_geometry() -> Geometry {
-    let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, crate::Layout::seed());
-    p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(Angle::from_degrees);
-    p.platform_angles = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(Angle::from_degrees);
-    p.actuator = crate::rotary::Actuator::Rotary(
-        crate::rotary::RotaryActuators::new(
-            0.025,
-            0.12,
-            [255.0, 105.0, 15.0, 225.0, 135.0, 345.0],
-            Some((-80.0, 80.0)),
-        )
-        .unwrap_or_else(|e| panic!("{e}")),
-    );
-    Geometry::new(p).unwrap_or_else(|e| panic!("{e}"))
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
@@ -238,7 +221,7 @@ proptest! {
         r in -8.0f64..8.0, p in -8.0f64..8.0, w in -12.0f64..12.0,
         dx in -0.002f64..0.002, dr in -0.5f64..0.5,
     ) {
-        let g = servo_geometry();
+        let g = crate::test_support::servo_geometry();
         let truth = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let Some(Ok(angles)) = g.servo_angles(&truth) else {
             return Ok(()); // unreachable there: nothing to invert
@@ -270,7 +253,7 @@ fn servo_forward_needs_a_rotary_platform_and_finite_angles() {
         g.forward_servos(&zero, &home, &ForwardOptions::default()),
         Err(ForwardError::NotRotary)
     );
-    let g = servo_geometry();
+    let g = crate::test_support::servo_geometry();
     let mut bad = zero;
     bad[3] = Angle::from_degrees(f64::NAN);
     assert!(matches!(
