@@ -7,7 +7,7 @@
 
 use rayon::prelude::*;
 
-use crate::fast_trig::sin_cos;
+use crate::fast_trig::{atan2, sin_cos};
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 
@@ -148,7 +148,7 @@ impl ServoBatch {
                 return Err(i);
             }
             let c = c2.sqrt();
-            out[i] = (big_l * m - c * n).atan2(c * m + big_l * n);
+            out[i] = atan2(big_l * m - c * n, c * m + big_l * n);
         }
         Ok(out)
     }

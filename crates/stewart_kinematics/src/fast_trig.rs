@@ -66,6 +66,82 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     }
 }
 
+// fdlibm's `atan`: arctangents of its breakpoints in two parts (high, low; 1/2, 1, 3/2,
+// ∞) and the minimax coefficients of (atan(x) − x)/x³ on [−7/16, 7/16].
+const ATAN_HI: [f64; 4] = [
+    4.636_476_090_008_061e-1,
+    7.853_981_633_974_483e-1,
+    9.827_937_232_473_29e-1,
+    1.570_796_326_794_896_6,
+];
+const ATAN_LO: [f64; 4] = [
+    2.269_877_745_296_168_7e-17,
+    3.061_616_997_868_383e-17,
+    1.390_331_103_123_099_8e-17,
+    6.123_233_995_736_766e-17,
+];
+const AT: [f64; 11] = [
+    3.333_333_333_333_293e-1,
+    -1.999_999_999_987_648_3e-1,
+    1.428_571_427_250_346_6e-1,
+    -1.111_111_040_546_235_6e-1,
+    9.090_887_133_436_507e-2,
+    -7.691_876_205_044_83e-2,
+    6.661_073_137_387_531e-2,
+    -5.833_570_133_790_573e-2,
+    4.976_877_994_615_932e-2,
+    -3.653_157_274_421_691_5e-2,
+    1.628_582_011_536_578_2e-2,
+];
+/// π's low part: π = `PI` + `PI_LO`.
+const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
+
+/// `atan(t)` on |t| ≤ 7/16 with a low part added at the base angle `hi + lo`:
+/// `hi + lo + atan(t)`, fdlibm's polynomial and its way of adding the parts.
+#[inline(always)]
+fn atan_reduced(t: f64, hi: f64, lo: f64) -> f64 {
+    let z = t * t;
+    let w = z * z;
+    let s1 = z * (AT[0] + w * (AT[2] + w * (AT[4] + w * (AT[6] + w * (AT[8] + w * AT[10])))));
+    let s2 = w * (AT[1] + w * (AT[3] + w * (AT[5] + w * (AT[7] + w * AT[9]))));
+    hi - ((t * (s1 + s2) - lo) - t)
+}
+
+/// `atan2(y, x)` for finite `y`, `x` not both zero, in (−π, π], to about one unit in
+/// the last place: the batch servo-angle loop's one transcendental. Branch-light (the
+/// choices compile to selects): the ratio `a = min/max` of `|y|`, `|x|` lies in [0, 1];
+/// above tan(π/8) it is reduced by `(a − 1)/(a + 1)` around π/4, so fdlibm's `atan`
+/// polynomial (valid on |t| ≤ 7/16) covers it; then octant and quadrant symmetries.
+#[inline(always)]
+pub fn atan2(y: f64, x: f64) -> f64 {
+    if !(y.is_finite() && x.is_finite()) || (y == 0.0 && x == 0.0) {
+        return y.atan2(x);
+    }
+    let (ay, ax) = (y.abs(), x.abs());
+    let steep = ay > ax;
+    let a = if steep { ax / ay } else { ay / ax };
+    let big = a > std::f64::consts::SQRT_2 - 1.0;
+    let t = if big { (a - 1.0) / (a + 1.0) } else { a };
+    let (hi, lo) = if big {
+        (ATAN_HI[1], ATAN_LO[1])
+    } else {
+        (0.0, 0.0)
+    };
+    let r = atan_reduced(t, hi, lo);
+    // Past 45°: π/2 − r, with π/2's low part.
+    let r = if steep {
+        (ATAN_HI[3] - r) + ATAN_LO[3]
+    } else {
+        r
+    };
+    let r = if x < 0.0 {
+        std::f64::consts::PI - (r - PI_LO)
+    } else {
+        r
+    };
+    if y.is_sign_negative() { -r } else { r }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -81,6 +157,35 @@ mod tests {
             x += 0.137_931_034_482_758_6;
         }
         assert!(worst < 3e-16, "worst difference {worst:e}");
+    }
+
+    #[test]
+    fn atan2_agrees_with_the_standard_library() {
+        let mut worst: f64 = 0.0;
+        let mut k = 0u64;
+        // A deterministic spread of angles and magnitudes over all four quadrants.
+        for i in 0..200_000 {
+            k = k
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let angle = (k >> 11) as f64 / (1u64 << 53) as f64 * std::f64::consts::TAU
+                - std::f64::consts::PI;
+            let r = 10f64.powi((i % 13) - 6);
+            let (y, x) = (r * angle.sin(), r * angle.cos());
+            let d = (atan2(y, x) - y.atan2(x)).abs();
+            worst = worst.max(d / y.atan2(x).abs().max(1e-300) * y.atan2(x).abs().max(1.0));
+        }
+        for (y, x) in [
+            (0.0, 1.0),
+            (1.0, 0.0),
+            (0.0, -1.0),
+            (-1.0, 0.0),
+            (1.0, 1.0),
+            (-1e-300, -1.0),
+        ] {
+            assert_eq!(atan2(y, x), y.atan2(x), "({y}, {x})");
+        }
+        assert!(worst < 5e-16, "worst difference {worst:e}");
     }
 
     #[test]
