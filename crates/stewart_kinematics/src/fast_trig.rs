@@ -66,20 +66,10 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     }
 }
 
-// fdlibm's `atan`: arctangents of its breakpoints in two parts (high, low; 1/2, 1, 3/2,
-// ∞) and the minimax coefficients of (atan(x) − x)/x³ on [−7/16, 7/16].
-const ATAN_HI: [f64; 4] = [
-    4.636_476_090_008_061e-1,
-    7.853_981_633_974_483e-1,
-    9.827_937_232_473_29e-1,
-    1.570_796_326_794_896_6,
-];
-const ATAN_LO: [f64; 4] = [
-    2.269_877_745_296_168_7e-17,
-    3.061_616_997_868_383e-17,
-    1.390_331_103_123_099_8e-17,
-    6.123_233_995_736_766e-17,
-];
+// The low parts of π/4 and π/2 (π/4 = FRAC_PI_4 + PI_4_LO), and fdlibm's minimax
+// coefficients of (atan(x) − x)/x³ on [−7/16, 7/16].
+const PI_4_LO: f64 = 3.061_616_997_868_383e-17;
+const PI_2_LO: f64 = 6.123_233_995_736_766e-17;
 const AT: [f64; 11] = [
     3.333_333_333_333_293e-1,
     -1.999_999_999_987_648_3e-1,
@@ -130,7 +120,7 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     let r = atan_reduced(t, hi, lo);
     // Past 45°: π/2 − r, with π/2's low part.
     let r = if steep {
-        (ATAN_HI[3] - r) + ATAN_LO[3]
+        (std::f64::consts::FRAC_PI_2 - r) + PI_2_LO
     } else {
         r
     };
