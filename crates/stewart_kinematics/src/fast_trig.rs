@@ -113,7 +113,7 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     let big = a > std::f64::consts::SQRT_2 - 1.0;
     let t = if big { (a - 1.0) / (a + 1.0) } else { a };
     let (hi, lo) = if big {
-        (ATAN_HI[1], ATAN_LO[1])
+        (std::f64::consts::FRAC_PI_4, PI_4_LO)
     } else {
         (0.0, 0.0)
     };
