@@ -4,7 +4,9 @@
 //! presets. Slider ranges cover sensible laboratory platforms; typed values may go
 //! beyond them wherever the model accepts them.
 
-use super::target::{ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target};
+use super::target::{
+    ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
+};
 use super::{DefaultValue, Group, Setting, Unit};
 use crate::checks::CheckSettings;
 use crate::geometry::GeometryParams;
@@ -47,6 +49,7 @@ pub(super) fn build() -> Vec<Setting> {
         group: Group::Geometry,
     };
     geometry(&mut d);
+    actuator(&mut d);
     d.group = Group::Trajectory;
     trajectory(&mut d);
     d.group = Group::Limits;
@@ -130,6 +133,58 @@ fn geometry(d: &mut Declare) {
             g(Pivot(i)),
         );
     }
+}
+
+/// A rotary platform's servos (they apply to rotary scenarios only). Defaults: hobby
+/// servos with 25 mm horns and 120 mm rods.
+fn actuator(d: &mut Declare) {
+    use ActuatorKey::*;
+    let a = |k| Target::Actuator(k);
+    d.add(
+        "actuator.horn_length_m",
+        "horn length",
+        Metre,
+        (0.005, 0.3),
+        Value(0.025),
+        a(HornLength),
+    );
+    d.add(
+        "actuator.rod_length_m",
+        "rod length",
+        Metre,
+        (0.02, 1.5),
+        Value(0.12),
+        a(RodLength),
+    );
+    for (i, default) in [255.0, 105.0, 15.0, 225.0, 135.0, 345.0]
+        .into_iter()
+        .enumerate()
+    {
+        d.add(
+            format!("actuator.horn_angles_deg[{i}]"),
+            format!("horn {} direction", i + 1),
+            Degree,
+            (0.0, 360.0),
+            Value(default),
+            a(HornAngle(i)),
+        );
+    }
+    d.add(
+        "actuator.servo_min_deg",
+        "servo minimum",
+        Degree,
+        (-179.0, 0.0),
+        Off,
+        a(ServoMin),
+    );
+    d.add(
+        "actuator.servo_max_deg",
+        "servo maximum",
+        Degree,
+        (0.0, 180.0),
+        Off,
+        a(ServoMax),
+    );
 }
 
 fn trajectory(d: &mut Declare) {

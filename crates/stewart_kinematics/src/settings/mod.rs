@@ -18,7 +18,9 @@ use thiserror::Error;
 
 use crate::scenario::Scenario;
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
-pub use target::{ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target};
+pub use target::{
+    ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
+};
 
 /// The unit a setting is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -150,6 +152,12 @@ pub enum SettingError {
         /// The scenario's trajectory kind.
         kind: &'static str,
     },
+    /// An actuator key on a platform with linear legs.
+    #[error("`{key}` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)")]
+    NotRotary {
+        /// The key.
+        key: String,
+    },
     /// The value was refused; the scenario is unchanged.
     #[error("`{key}` = {value} refused: {reason}")]
     Invalid {
@@ -216,6 +224,11 @@ impl Setting {
             value: shown.clone(),
             reason,
         };
+        if matches!(self.target, Target::Actuator(_)) && scenario.geometry.rotary().is_none() {
+            return Err(SettingError::NotRotary {
+                key: self.key.clone(),
+            });
+        }
         if !self.applies(scenario) {
             return Err(SettingError::NotApplicable {
                 key: self.key.clone(),

@@ -2,6 +2,7 @@
 
 use crate::angle::Angle;
 use crate::geometry::Geometry;
+use crate::rotary::{Actuator, RotaryActuators};
 use crate::scenario::Scenario;
 use crate::trajectory::{Channel, Sampling, Trajectory};
 
@@ -24,6 +25,21 @@ pub enum GeometryKey {
     PlatformAngle(usize),
     /// Component `i` (x, y, z) of the pivot offset.
     Pivot(usize),
+}
+
+/// The numbers of a rotary platform's `[actuator]` table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ActuatorKey {
+    /// `horn_length_m`.
+    HornLength,
+    /// `rod_length_m`.
+    RodLength,
+    /// `horn_angles_deg[i]`.
+    HornAngle(usize),
+    /// `servo_min_deg` (with `servo_max_deg`, optional).
+    ServoMin,
+    /// `servo_max_deg`.
+    ServoMax,
 }
 
 /// How the trajectory is sampled.
@@ -104,6 +120,8 @@ pub enum CheckKey {
 pub enum Target {
     /// A platform number.
     Geometry(GeometryKey),
+    /// A rotary platform's actuator number.
+    Actuator(ActuatorKey),
     /// The sampling.
     Sampling(SamplingKey),
     /// Channel `i` (x, y, z, roll, pitch, yaw) of a sinusoid.
@@ -121,7 +139,9 @@ impl Target {
     pub(super) fn optional(self) -> bool {
         matches!(
             self,
-            Target::Limit(_) | Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+            Target::Limit(_)
+                | Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+                | Target::Actuator(ActuatorKey::ServoMin | ActuatorKey::ServoMax)
         )
     }
 
@@ -130,6 +150,7 @@ impl Target {
         match self {
             Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
             Target::Shape(key) => shape_value(trajectory, key).is_some(),
+            Target::Actuator(_) => scenario.geometry.rotary().is_some(),
             _ => true,
         }
     }
@@ -147,6 +168,16 @@ impl Target {
                 GeometryKey::PlatformAngle(i) => params.platform_angles.get(i).map(|a| a.degrees()),
                 GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
             },
+            Target::Actuator(key) => {
+                let r = scenario.geometry.rotary()?;
+                match key {
+                    ActuatorKey::HornLength => Some(r.horn_length()),
+                    ActuatorKey::RodLength => Some(r.rod_length()),
+                    ActuatorKey::HornAngle(i) => r.horn_angles().get(i).map(|a| a.degrees()),
+                    ActuatorKey::ServoMin => r.range().map(|(min, _)| min.degrees()),
+                    ActuatorKey::ServoMax => r.range().map(|(_, max)| max.degrees()),
+                }
+            }
             Target::Sampling(key) => {
                 let s = &scenario.motion.sampling;
                 Some(match key {
@@ -192,6 +223,7 @@ impl Target {
         let v = value.unwrap_or(f64::NAN);
         match self {
             Target::Geometry(key) => set_geometry(scenario, key, value),
+            Target::Actuator(key) => set_actuator(scenario, key, value),
             Target::Sampling(key) => set_sampling(scenario, key, v),
             Target::Channel(i, key) => {
                 if let Trajectory::Sinusoid(s) = &mut scenario.motion.trajectory
@@ -251,6 +283,39 @@ fn set_geometry(
             }
         }
     }
+    scenario.geometry = Geometry::new(p).map_err(|e| e.to_string())?;
+    Ok(())
+}
+
+/// Rebuild the servos with one number changed. Setting one end of an absent servo range
+/// makes the range symmetric (min = −max); `off` on either end removes the range.
+fn set_actuator(
+    scenario: &mut Scenario,
+    key: ActuatorKey,
+    value: Option<f64>,
+) -> Result<(), String> {
+    let Some(r) = scenario.geometry.rotary() else {
+        return Err("the platform has linear legs".to_owned());
+    };
+    let v = value.unwrap_or(f64::NAN);
+    let (mut horn, mut rod) = (r.horn_length(), r.rod_length());
+    let mut angles = r.horn_angles().map(|a| a.degrees());
+    let mut range = r.range().map(|(a, b)| (a.degrees(), b.degrees()));
+    match key {
+        ActuatorKey::HornLength => horn = v,
+        ActuatorKey::RodLength => rod = v,
+        ActuatorKey::HornAngle(i) => {
+            if let Some(a) = angles.get_mut(i) {
+                *a = v;
+            }
+        }
+        ActuatorKey::ServoMin | ActuatorKey::ServoMax if value.is_none() => range = None,
+        ActuatorKey::ServoMin => range = Some((v, range.map_or(-v, |(_, max)| max))),
+        ActuatorKey::ServoMax => range = Some((range.map_or(-v, |(min, _)| min), v)),
+    }
+    let servos = RotaryActuators::new(horn, rod, angles, range).map_err(|e| e.to_string())?;
+    let mut p = scenario.geometry.params().clone();
+    p.actuator = Actuator::Rotary(servos);
     scenario.geometry = Geometry::new(p).map_err(|e| e.to_string())?;
     Ok(())
 }

@@ -310,3 +310,57 @@ fn the_extremes_of_every_accepted_range_keep_every_number_finite() {
     }
     assert!(tried > 200, "only {tried} extreme values were accepted");
 }
+
+#[test]
+fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
+    let text = std::fs::read_to_string(format!(
+        "{}/../../tests/cli/rotary.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let mut s =
+        Scenario::from_toml_str(&text, "rotary.toml", None).unwrap_or_else(|e| panic!("{e}"));
+    let keys: Vec<&Setting> = all()
+        .iter()
+        .filter(|k| k.key.starts_with("actuator."))
+        .collect();
+    assert_eq!(keys.len(), 10);
+    for k in &keys {
+        assert!(k.applies(&s), "{}", k.key);
+        assert_eq!(k.get(&s), lookup(&text, &k.key), "{}", k.key);
+    }
+    apply_all(
+        &mut s,
+        [
+            "actuator.horn_length_m=0.03",
+            "actuator.horn_angles_deg[4]=140",
+            "actuator.servo_min_deg=off",
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let back =
+        Scenario::from_toml_str(&s.to_toml(), "again", None).unwrap_or_else(|e| panic!("{e}"));
+    let r = back
+        .geometry
+        .rotary()
+        .unwrap_or_else(|| panic!("not rotary"));
+    assert_eq!(r.horn_length(), 0.03);
+    assert_eq!(r.horn_angles()[4].degrees(), 140.0);
+    assert_eq!(r.range(), None);
+    // One end of an absent range makes it symmetric.
+    apply_all(&mut s, ["actuator.servo_max_deg=70"]).unwrap_or_else(|e| panic!("{e}"));
+    let range = s.geometry.rotary().and_then(|r| r.range());
+    assert_eq!(
+        range.map(|(a, b)| (a.degrees(), b.degrees())),
+        Some((-70.0, 70.0))
+    );
+    // Refusals name the rule; the linear seed has no servos at all.
+    let e = apply_all(&mut s, ["actuator.rod_length_m=0.01"]).unwrap_err();
+    assert!(e.to_string().contains("must be shorter than"), "{e}");
+    let mut seed = preset("seed");
+    let e = apply_all(&mut seed, ["actuator.horn_length_m=0.03"]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`actuator.horn_length_m` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)"
+    );
+}
