@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 
-use crate::run::{cases, names, path, run, tempdir, write};
+use crate::run::{names, path, run, tempdir, write};
 
 /// Values a hostile file puts where a number was.
 const EXTREMES: [&str; 16] = [
@@ -141,11 +141,7 @@ fn preset_text(name: &str) -> Vec<u8> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: cases(24),
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    })]
+    #![proptest_config(crate::run::config())]
 
     /// A preset with a few random mutations, through `check` and `solve --out`.
     #[test]

@@ -200,3 +200,13 @@ pub fn cases(default: u32) -> u32 {
         .and_then(|v| v.parse().ok())
         .unwrap_or(default)
 }
+
+/// The random-case settings of every property: [`cases`] cases (24 by default), no
+/// failure files written into the source tree.
+pub fn config() -> proptest::test_runner::Config {
+    proptest::test_runner::Config {
+        cases: cases(24),
+        failure_persistence: None,
+        ..proptest::test_runner::Config::default()
+    }
+}

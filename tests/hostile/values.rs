@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use stewart_kinematics::{Scenario, settings};
 
-use crate::run::{cases, names, path, run, tempdir};
+use crate::run::{names, path, run, tempdir};
 
 /// Values that are finite but absurd, or not numbers at all.
 const OVERFLOW: [&str; 8] = [
@@ -181,11 +181,7 @@ fn option_case() -> impl Strategy<Value = Vec<String>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: cases(24),
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    })]
+    #![proptest_config(crate::run::config())]
 
     /// Random values of the numeric options: refused in one line naming the option, or
     /// a finite result; an output file only on success.

@@ -54,17 +54,18 @@ pub fn check(value: f64, range: &RangeInclusive<f64>, unit: &str) -> Result<f64,
 }
 
 /// A range in words: `-1000 … 1000 m`.
-pub fn describe(range: &RangeInclusive<f64>, unit: &str) -> String {
+pub fn range_words(range: &RangeInclusive<f64>, unit: &str) -> String {
     let unit = if unit.is_empty() {
         String::new()
     } else {
         format!(" {unit}")
     };
-    format!(
-        "the accepted range {} … {}{unit}",
-        short(*range.start()),
-        short(*range.end())
-    )
+    format!("{} … {}{unit}", short(*range.start()), short(*range.end()))
+}
+
+/// The rule a value broke, in words: `the accepted range -1000 … 1000 m`.
+pub fn describe(range: &RangeInclusive<f64>, unit: &str) -> String {
+    format!("the accepted range {}", range_words(range, unit))
 }
 
 /// A number as people write it: `1000`, `1e6`, `0.001`.

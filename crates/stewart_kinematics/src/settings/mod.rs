@@ -181,17 +181,7 @@ impl Setting {
 
     /// The accepted range in words, such as `-1000 … 1000 m`.
     pub fn accepted_words(&self) -> String {
-        let unit = self.unit.symbol();
-        let unit = if unit.is_empty() {
-            String::new()
-        } else {
-            format!(" {unit}")
-        };
-        format!(
-            "{} … {}{unit}",
-            crate::bounds::short(*self.accepted.start()),
-            crate::bounds::short(*self.accepted.end())
-        )
+        crate::bounds::range_words(&self.accepted, self.unit.symbol())
     }
 
     /// Whether the setting may be absent (`off`).
