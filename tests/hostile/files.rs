@@ -122,7 +122,8 @@ fn apply(text: &mut Vec<u8>, m: &Mutation) {
     }
 }
 
-const PRESETS: [&str; 7] = [
+/// The files mutated: every preset, and the rotary-servo test scenario.
+const PRESETS: [&str; 8] = [
     "seed",
     "paired",
     "circle",
@@ -130,13 +131,16 @@ const PRESETS: [&str; 7] = [
     "helix",
     "sway",
     "keyframes",
+    "rotary",
 ];
 
 fn preset_text(name: &str) -> Vec<u8> {
-    let file = format!(
-        "{}/../../assets/presets/{name}.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
+    let root = env!("CARGO_MANIFEST_DIR");
+    let file = if name == "rotary" {
+        format!("{root}/../../tests/cli/rotary.toml")
+    } else {
+        format!("{root}/../../assets/presets/{name}.toml")
+    };
     std::fs::read(file).unwrap_or_else(|e| panic!("{e}"))
 }
 

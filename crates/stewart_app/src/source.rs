@@ -38,3 +38,13 @@ pub fn require_linear(scenario: &Scenario, command: &str) -> Result<()> {
     }
     Ok(())
 }
+
+/// The scenario the arguments name, in words for messages: its file as given, or
+/// `preset NAME`.
+pub fn describe(args: &ScenarioArgs) -> String {
+    match (&args.scenario, &args.preset) {
+        (Some(path), _) => path.display().to_string(),
+        (None, Some(name)) => format!("preset `{name}`"),
+        (None, None) => "preset `seed`".to_owned(),
+    }
+}

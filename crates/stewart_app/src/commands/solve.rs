@@ -27,7 +27,11 @@ pub fn run(args: &SolveArgs) -> Result<ExitCode> {
     };
     let solved = solve_table(&scenario.geometry, &table, |k| match &file {
         Some(name) => format!("{name}, line {}", table.lines.get(k).copied().unwrap_or(0)),
-        None => trajectory_place(&table, k),
+        None => format!(
+            "{}: {}",
+            source::describe(&args.scenario),
+            trajectory_place(&table, k)
+        ),
     })?;
     output::emit_with(out.as_ref(), |w| write_solved_csv(w, &table, &solved))?;
     Ok(ExitCode::SUCCESS)
