@@ -241,3 +241,43 @@ fn fk_turns_servo_angles_back_into_the_poses() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--assembly-modes handles linear legs only so far"));
 }
+
+#[test]
+fn settings_lists_the_actuator_and_offers_the_level_home_height() {
+    let o = stewart(&["settings", "--scenario", &scenario()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    for key in [
+        "actuator.horn_length_m",
+        "actuator.horn_angles_deg[5]",
+        "actuator.servo_max_deg",
+    ] {
+        assert!(text.lines().any(|l| l.starts_with(key)), "{key} in\n{text}");
+    }
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("Automatic home height"))
+        .unwrap_or_else(|| panic!("{text}"));
+    let h: f64 = line
+        .split("home_height=")
+        .nth(1)
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or_else(|| panic!("{line}"));
+    // Set it: the servos then stand level at home.
+    let o = stewart(&[
+        "solve",
+        "--scenario",
+        &scenario(),
+        "--set",
+        &format!("geometry.home_height={h}"),
+        "--set",
+        &format!("trajectory.z.offset_m={h}"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = parse_csv(&stdout(&o));
+    assert!(
+        rows[0][7..13].iter().all(|t| t.abs() < 1e-3),
+        "{:?}",
+        &rows[0]
+    );
+}

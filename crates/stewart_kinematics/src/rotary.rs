@@ -295,6 +295,26 @@ mod tests {
         );
     }
 
+    #[test]
+    fn the_automatic_home_height_levels_the_horns() {
+        // With every horn level (θ = 0) the tip is at B + a(cos β, sin β, 0), and the rod
+        // reaches the platform joint straight from there: h = √(s² − d²), d the horizontal
+        // distance from tip to joint (the test layout is three-fold symmetric, so one
+        // servo's h is every servo's).
+        let g = crate::test_support::servo_geometry();
+        let servos = g.rotary().unwrap_or_else(|| panic!("not rotary"));
+        let tip = servos.horn_tip(0, &g.base_joints()[0], Angle::ZERO);
+        let joint = g.platform_joints()[0];
+        let d2 = (joint.x - tip.x).powi(2) + (joint.y - tip.y).powi(2);
+        let expected = (servos.rod_length().powi(2) - d2).sqrt();
+        let h = g
+            .servo_home_height()
+            .unwrap_or_else(|| panic!("no level height"));
+        assert!((h - expected).abs() < 1e-12, "{h} vs {expected}");
+        assert!((0.115..0.12).contains(&h), "{h}");
+        assert!(crate::Geometry::seed().servo_home_height().is_none());
+    }
+
     proptest! {
         /// Any horn angle and any rod direction: the solver's angle closes the rod
         /// exactly, and is the very angle used where that lies on the solver's branch.

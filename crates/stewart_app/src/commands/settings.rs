@@ -91,5 +91,17 @@ pub fn table(scenario: &Scenario) -> String {
         out.push_str(line.trim_end());
         out.push('\n');
     }
+    if scenario.geometry.rotary().is_some() {
+        let _ = match scenario.geometry.servo_home_height() {
+            Some(h) => writeln!(
+                out,
+                "Automatic home height (servos level with the platform centred and level): {h:.6} m; use it with --set geometry.home_height={h:.6}"
+            ),
+            None => writeln!(
+                out,
+                "No home height levels the servos with the platform centred and level."
+            ),
+        };
+    }
     out
 }
