@@ -146,6 +146,21 @@ impl Geometry {
         Some(Ok(j))
     }
 
+    /// Conditioning of a rotary platform at `pose` (`None` for linear legs, or when a
+    /// servo cannot reach its joint): the servo Jacobian with its rows scaled by the horn
+    /// length (servo rates as horn-tip speeds, m/s per m/s) and its rotation columns by
+    /// the characteristic length, as for legs. Near the edge of a servo's reach the rod
+    /// turns across its horn's motion, that row grows without bound, and the verdict
+    /// becomes singular.
+    pub fn servo_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
+        let servos = self.rotary()?;
+        let j = self.servo_jacobian(pose)?.ok()?;
+        Some(conditioning_of(
+            &(j * servos.horn_length()),
+            self.characteristic_length(),
+        ))
+    }
+
     /// Singular values, condition number and weakest twist of the normalised Jacobian.
     pub fn conditioning(&self, pose: &Pose) -> Conditioning {
         conditioning_of(&self.jacobian(pose), self.characteristic_length())
@@ -273,6 +288,44 @@ mod tests {
             let scale = 1.0 + numeric.abs().max();
             prop_assert!((analytic - numeric).abs().max() < 1e-5 * scale, "{analytic} vs {numeric}");
         }
+    }
+
+    #[test]
+    fn servo_conditioning_is_good_at_home_and_degrades_at_the_edge_of_reach() {
+        let g = crate::test_support::servo_geometry();
+        let home = g
+            .servo_conditioning(&g.home_pose())
+            .unwrap_or_else(|| panic!("no conditioning at home"));
+        let kappa_home = home.condition_number.unwrap_or(f64::INFINITY);
+        assert!(kappa_home < 20.0, "{kappa_home}");
+        // Slide the platform sideways until a servo cannot follow: just before, its rod
+        // pulls almost across its horn's motion (the others do not, so that row alone
+        // grows and the matrix loses rank).
+        let h = g.home_height();
+        let at = |x: f64| g.servo_conditioning(&Pose::from_xyz_rpy_deg([x, 0.0, h], [0.0; 3]));
+        let (mut inside, mut outside) = (0.0, 0.2);
+        assert!(at(outside).is_none(), "still reachable at 0.2 m");
+        for _ in 0..60 {
+            let mid = 0.5 * (inside + outside);
+            if at(mid).is_some() {
+                inside = mid
+            } else {
+                outside = mid
+            }
+        }
+        let x = inside;
+        let last = at(x)
+            .and_then(|c| c.condition_number)
+            .unwrap_or(f64::INFINITY);
+        assert!(
+            last > 30.0 * kappa_home,
+            "{last} at x = {x} (home {kappa_home})"
+        );
+        assert!(
+            Geometry::seed()
+                .servo_conditioning(&Geometry::seed().home_pose())
+                .is_none()
+        );
     }
 
     #[test]
