@@ -38,13 +38,17 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
                         .desired_width(ui.available_width().max(110.0))
                         .fill(colour)
                         .text({
-                            let text = RichText::new(format!("{:.0}%{note}", 100.0 * u));
-                            // Dark text on the light warning colours, to stay readable.
-                            if leg.status == LegStatus::Normal {
-                                text
+                            // Dark text on light fills (the warning colours), white on
+                            // dark ones (the legs' blue), in either theme.
+                            let luminance = 0.2126 * f32::from(r)
+                                + 0.7152 * f32::from(g)
+                                + 0.0722 * f32::from(b);
+                            let ink = if luminance > 140.0 {
+                                Color32::BLACK
                             } else {
-                                text.color(Color32::BLACK)
-                            }
+                                Color32::WHITE
+                            };
+                            RichText::new(format!("{:.0}%{note}", 100.0 * u)).color(ink)
                         }),
                 );
             }
