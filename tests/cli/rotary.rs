@@ -281,3 +281,52 @@ fn settings_lists_the_actuator_and_offers_the_level_home_height() {
         &rows[0]
     );
 }
+
+#[test]
+fn commanded_angles_apply_reversal_and_trim() {
+    let dir = tempdir();
+    let text = std::fs::read_to_string(scenario()).unwrap_or_else(|e| panic!("{e}"));
+    let mounted = text.replacen(
+        "servo_max_deg = 80.0",
+        "servo_max_deg = 80.0\nservo_reversed = [false, true, false, false, false, false]\nservo_trim_deg = [5.0, -3.0, 0, 0, 0, 0]",
+        1,
+    );
+    let file = write(dir.path(), "mounted.toml", &mounted);
+    let model = stewart(&["solve", "--scenario", &file]);
+    let cmd = stewart(&["solve", "--scenario", &file, "--commanded"]);
+    assert!(
+        model.status.success() && cmd.status.success(),
+        "{}",
+        stderr(&cmd)
+    );
+    let (_, m) = parse_csv(&stdout(&model));
+    let (header, c) = parse_csv(&stdout(&cmd));
+    assert_eq!(
+        header[7..],
+        ["cmd1", "cmd2", "cmd3", "cmd4", "cmd5", "cmd6"]
+    );
+    for (m, c) in m.iter().zip(&c) {
+        assert!((c[7] - (m[7] + 5.0)).abs() < 1e-9, "{m:?} {c:?}");
+        assert!((c[8] - (-m[8] - 3.0)).abs() < 1e-9, "{m:?} {c:?}");
+        assert!((c[9] - m[9]).abs() < 1e-9);
+    }
+    let o = stewart(&["solve", "--commanded"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--commanded applies to rotary servo platforms"));
+    let bad = write(
+        dir.path(),
+        "bad.toml",
+        &text.replacen(
+            "servo_max_deg = 80.0",
+            "servo_max_deg = 80.0\nservo_trim_deg = [1, 2]",
+            1,
+        ),
+    );
+    let o = stewart(&["solve", "--scenario", &bad]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("`actuator.servo_trim_deg` must list 6 values (one per servo), got 2"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -82,6 +82,10 @@ pub struct SolveArgs {
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// For a rotary platform: write the angles the servos are commanded — mirrored for
+    /// `servo_reversed`, plus `servo_trim_deg` — as cmd1..cmd6 instead of theta1..theta6.
+    #[arg(long)]
+    pub commanded: bool,
 }
 
 /// Report formats of `stewart check`.

@@ -49,6 +49,16 @@ pub enum RotaryError {
         /// The value given.
         value: f64,
     },
+    /// A trim that is not a finite number within ±180°.
+    #[error(
+        "`actuator.servo_trim_deg[{index}]` must be a finite number of degrees within ±180, got {value}"
+    )]
+    Trim {
+        /// Index from 0, as in the file.
+        index: usize,
+        /// The value given.
+        value: f64,
+    },
     /// A servo range end outside (−180°, 180°], or a minimum not below the maximum.
     #[error("the servo range must lie in (-180, 180] degrees with min < max, got {min} … {max}")]
     Range {
@@ -101,6 +111,12 @@ pub struct RotaryActuators {
     rod_length: f64,
     horn_angles: [Angle; 6],
     range: Option<(Angle, Angle)>,
+    /// Servos mounted mirrored: their commanded angle runs the other way.
+    #[serde(default)]
+    reversed: [bool; 6],
+    /// Mounting offsets added to the commanded angle.
+    #[serde(default)]
+    trims: [Angle; 6],
 }
 
 impl RotaryActuators {
@@ -141,7 +157,56 @@ impl RotaryActuators {
             rod_length,
             horn_angles: horn_angles_deg.map(Angle::from_degrees),
             range: range_deg.map(|(a, b)| (Angle::from_degrees(a), Angle::from_degrees(b))),
+            reversed: [false; 6],
+            trims: [Angle::ZERO; 6],
         })
+    }
+
+    /// The same servos with their mounting: which run mirrored, and the trim (degrees,
+    /// within ±180°) added to each commanded angle.
+    pub fn with_mounting(
+        mut self,
+        reversed: [bool; 6],
+        trims_deg: [f64; 6],
+    ) -> Result<Self, RotaryError> {
+        if let Some((index, &value)) = trims_deg
+            .iter()
+            .enumerate()
+            .find(|(_, v)| !(v.is_finite() && v.abs() <= 180.0))
+        {
+            return Err(RotaryError::Trim { index, value });
+        }
+        self.reversed = reversed;
+        self.trims = trims_deg.map(Angle::from_degrees);
+        Ok(self)
+    }
+
+    /// Which servos run mirrored.
+    pub fn reversed(&self) -> &[bool; 6] {
+        &self.reversed
+    }
+
+    /// The trims added to the commanded angles.
+    pub fn trims(&self) -> &[Angle; 6] {
+        &self.trims
+    }
+
+    /// The angle servo `i` (from 0) is commanded for model angle `theta`: mirrored when
+    /// the servo is reversed, then trimmed, wrapped to (−180°, 180°].
+    pub fn commanded(&self, i: usize, theta: Angle) -> Angle {
+        let sign = if self.reversed[i] { -1.0 } else { 1.0 };
+        Angle::from_radians(wrap_half_turn(
+            sign * theta.radians() + self.trims[i].radians(),
+        ))
+    }
+
+    /// The model angle of servo `i` commanded to `command` ([`RotaryActuators::commanded`]
+    /// undone).
+    pub fn model_angle(&self, i: usize, command: Angle) -> Angle {
+        let sign = if self.reversed[i] { -1.0 } else { 1.0 };
+        Angle::from_radians(wrap_half_turn(
+            sign * (command.radians() - self.trims[i].radians()),
+        ))
     }
 
     /// Horn length `a`, metres.
@@ -313,6 +378,31 @@ mod tests {
         assert!((h - expected).abs() < 1e-12, "{h} vs {expected}");
         assert!((0.115..0.12).contains(&h), "{h}");
         assert!(crate::Geometry::seed().servo_home_height().is_none());
+    }
+
+    #[test]
+    fn mounting_maps_model_angles_to_commands_and_back() {
+        let act = hobby()
+            .with_mounting(
+                [false, true, false, false, false, false],
+                [5.0, -3.0, 0.0, 0.0, 0.0, 0.0],
+            )
+            .unwrap_or_else(|e| panic!("{e}"));
+        let theta = Angle::from_degrees(20.0);
+        assert!((act.commanded(0, theta).degrees() - 25.0).abs() < 1e-12);
+        assert!((act.commanded(1, theta).degrees() - (-23.0)).abs() < 1e-12);
+        for i in 0..6 {
+            for d in [-170.0, -20.0, 0.0, 33.0, 179.0] {
+                let t = Angle::from_degrees(d);
+                let back = act.model_angle(i, act.commanded(i, t));
+                assert!(wrap_half_turn(back.radians() - t.radians()).abs() < 1e-12);
+            }
+        }
+        let e = hobby().with_mounting([false; 6], [0.0, 0.0, 200.0, 0.0, 0.0, 0.0]);
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "`actuator.servo_trim_deg[2]` must be a finite number of degrees within ±180, got 200"
+        );
     }
 
     proptest! {

@@ -7,7 +7,9 @@ use stewart_kinematics::trajectory::PoseTable;
 
 use crate::cli::SolveArgs;
 use crate::csv_io::read_input;
-use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
+use crate::export::tables::{
+    Solved, solve_table, trajectory_place, trajectory_table, write_solved_csv,
+};
 use crate::output;
 use crate::source;
 
@@ -33,6 +35,36 @@ pub fn run(args: &SolveArgs) -> Result<ExitCode> {
             trajectory_place(&table, k)
         ),
     })?;
+    let solved = if args.commanded {
+        commanded(&scenario, solved)?
+    } else {
+        solved
+    };
     output::emit_with(out.as_ref(), |w| write_solved_csv(w, &table, &solved))?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Model servo angles (degrees) turned into the angles the servos are commanded.
+fn commanded(scenario: &stewart_kinematics::Scenario, solved: Solved) -> Result<Solved> {
+    let Some(servos) = scenario.geometry.rotary() else {
+        anyhow::bail!(
+            "--commanded applies to rotary servo platforms; scenario `{}` has linear legs",
+            scenario.name
+        );
+    };
+    let values = solved
+        .values
+        .iter()
+        .map(|row| {
+            std::array::from_fn(|i| {
+                servos
+                    .commanded(i, stewart_kinematics::Angle::from_degrees(row[i]))
+                    .degrees()
+            })
+        })
+        .collect();
+    Ok(Solved {
+        columns: ["cmd1", "cmd2", "cmd3", "cmd4", "cmd5", "cmd6"],
+        values,
+    })
 }

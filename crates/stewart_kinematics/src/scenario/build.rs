@@ -168,6 +168,14 @@ fn build_actuator(
         ),
         ("servo_min_deg", a.servo_min_deg.as_ref().map(Spanned::span)),
         ("servo_max_deg", a.servo_max_deg.as_ref().map(Spanned::span)),
+        (
+            "servo_reversed",
+            a.servo_reversed.as_ref().map(Spanned::span),
+        ),
+        (
+            "servo_trim_deg",
+            a.servo_trim_deg.as_ref().map(Spanned::span),
+        ),
     ];
     if *a.kind.get_ref() == ActuatorKind::Linear {
         if let Some((key, span)) = rotary_keys.iter().find(|(_, span)| span.is_some()) {
@@ -227,7 +235,31 @@ fn build_actuator(
             ));
         }
     };
+    let six = |key: &str, len: usize, span: Range<usize>| {
+        src.invalid(
+            Some(span),
+            &format!("actuator.{key}"),
+            format!("must list 6 values (one per servo), got {len}"),
+        )
+    };
+    let reversed: [bool; 6] = match &a.servo_reversed {
+        None => [false; 6],
+        Some(v) => v
+            .get_ref()
+            .as_slice()
+            .try_into()
+            .map_err(|_| six("servo_reversed", v.get_ref().len(), v.span()))?,
+    };
+    let trims: [f64; 6] = match &a.servo_trim_deg {
+        None => [0.0; 6],
+        Some(v) => v
+            .get_ref()
+            .as_slice()
+            .try_into()
+            .map_err(|_| six("servo_trim_deg", v.get_ref().len(), v.span()))?,
+    };
     RotaryActuators::new(horn, rod, list, range)
+        .and_then(|r| r.with_mounting(reversed, trims))
         .map(Actuator::Rotary)
         .map_err(|e| {
             let span = match &e {
@@ -240,6 +272,7 @@ fn build_actuator(
                 }
                 RotaryError::HornAngle { .. } => Some(angles.span()),
                 RotaryError::Range { .. } => a.servo_min_deg.as_ref().map(Spanned::span),
+                RotaryError::Trim { .. } => a.servo_trim_deg.as_ref().map(Spanned::span),
             };
             src.err(span, e)
         })

@@ -91,6 +91,10 @@ pub(crate) struct ActuatorFile {
     pub servo_min_deg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub servo_max_deg: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_reversed: Option<Spanned<Vec<bool>>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_trim_deg: Option<Spanned<Vec<f64>>>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]

@@ -52,6 +52,16 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             horn_angles_deg: Some(s(r.horn_angles().iter().map(|a| a.degrees()).collect())),
             servo_min_deg: r.range().map(|(min, _)| s(min.degrees())),
             servo_max_deg: r.range().map(|(_, max)| s(max.degrees())),
+            servo_reversed: r
+                .reversed()
+                .iter()
+                .any(|&b| b)
+                .then(|| s(r.reversed().to_vec())),
+            servo_trim_deg: r
+                .trims()
+                .iter()
+                .any(|t| t.radians() != 0.0)
+                .then(|| s(r.trims().iter().map(|t| t.degrees()).collect())),
         })
     });
     let pivot = (g.pivot != nalgebra::Vector3::zeros()).then(|| PivotFile {

@@ -185,6 +185,16 @@ fn actuator(d: &mut Declare) {
         Off,
         a(ServoMax),
     );
+    for i in 0..6 {
+        d.add(
+            format!("actuator.servo_trim_deg[{i}]"),
+            format!("servo {} trim", i + 1),
+            Degree,
+            (-30.0, 30.0),
+            Value(0.0),
+            a(Trim(i)),
+        );
+    }
 }
 
 fn trajectory(d: &mut Declare) {

@@ -40,6 +40,8 @@ pub enum ActuatorKey {
     ServoMin,
     /// `servo_max_deg`.
     ServoMax,
+    /// `servo_trim_deg[i]`.
+    Trim(usize),
 }
 
 /// How the trajectory is sampled.
@@ -176,6 +178,7 @@ impl Target {
                     ActuatorKey::HornAngle(i) => r.horn_angles().get(i).map(|a| a.degrees()),
                     ActuatorKey::ServoMin => r.range().map(|(min, _)| min.degrees()),
                     ActuatorKey::ServoMax => r.range().map(|(_, max)| max.degrees()),
+                    ActuatorKey::Trim(i) => r.trims().get(i).map(|a| a.degrees()),
                 }
             }
             Target::Sampling(key) => {
@@ -301,6 +304,8 @@ fn set_actuator(
     let (mut horn, mut rod) = (r.horn_length(), r.rod_length());
     let mut angles = r.horn_angles().map(|a| a.degrees());
     let mut range = r.range().map(|(a, b)| (a.degrees(), b.degrees()));
+    let reversed = *r.reversed();
+    let mut trims = r.trims().map(|a| a.degrees());
     match key {
         ActuatorKey::HornLength => horn = v,
         ActuatorKey::RodLength => rod = v,
@@ -312,8 +317,15 @@ fn set_actuator(
         ActuatorKey::ServoMin | ActuatorKey::ServoMax if value.is_none() => range = None,
         ActuatorKey::ServoMin => range = Some((v, range.map_or(-v, |(_, max)| max))),
         ActuatorKey::ServoMax => range = Some((range.map_or(-v, |(min, _)| min), v)),
+        ActuatorKey::Trim(i) => {
+            if let Some(t) = trims.get_mut(i) {
+                *t = v;
+            }
+        }
     }
-    let servos = RotaryActuators::new(horn, rod, angles, range).map_err(|e| e.to_string())?;
+    let servos = RotaryActuators::new(horn, rod, angles, range)
+        .and_then(|r| r.with_mounting(reversed, trims))
+        .map_err(|e| e.to_string())?;
     let mut p = scenario.geometry.params().clone();
     p.actuator = Actuator::Rotary(servos);
     scenario.geometry = Geometry::new(p).map_err(|e| e.to_string())?;
