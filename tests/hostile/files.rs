@@ -123,16 +123,9 @@ fn apply(text: &mut Vec<u8>, m: &Mutation) {
 }
 
 /// The files mutated: every preset, and the rotary-servo test scenario.
-const PRESETS: [&str; 8] = [
-    "seed",
-    "paired",
-    "circle",
-    "figure8",
-    "helix",
-    "sway",
-    "keyframes",
-    "rotary",
-];
+fn mutated_file(k: usize) -> &'static str {
+    crate::run::PRESETS.get(k).copied().unwrap_or("rotary")
+}
 
 fn preset_text(name: &str) -> Vec<u8> {
     let root = env!("CARGO_MANIFEST_DIR");
@@ -150,11 +143,11 @@ proptest! {
     /// A preset with a few random mutations, through `check` and `solve --out`.
     #[test]
     fn mutated_scenarios_end_with_a_result_or_one_located_error(
-        preset in 0..PRESETS.len(),
+        preset in 0..=crate::run::PRESETS.len(),
         mutations in proptest::collection::vec(mutation(), 1..4),
     ) {
         let dir = tempdir();
-        let mut text = preset_text(PRESETS[preset]);
+        let mut text = preset_text(mutated_file(preset));
         for m in &mutations {
             apply(&mut text, m);
         }

@@ -210,3 +210,14 @@ pub fn config() -> proptest::test_runner::Config {
         ..proptest::test_runner::Config::default()
     }
 }
+
+/// Every shipped preset.
+pub const PRESETS: [&str; 7] = [
+    "seed",
+    "paired",
+    "circle",
+    "figure8",
+    "helix",
+    "sway",
+    "keyframes",
+];

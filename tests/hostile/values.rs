@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use stewart_kinematics::{Scenario, settings};
 
-use crate::run::{names, path, run, tempdir};
+use crate::run::{PRESETS, names, path, run, tempdir};
 
 /// Values that are finite but absurd, or not numbers at all.
 const OVERFLOW: [&str; 8] = [
@@ -16,16 +16,6 @@ const OVERFLOW: [&str; 8] = [
     "1e-320",
     "-1",
     "18446744073709551615",
-];
-
-const PRESETS: [&str; 7] = [
-    "seed",
-    "paired",
-    "circle",
-    "figure8",
-    "helix",
-    "sway",
-    "keyframes",
 ];
 
 /// A preset the setting applies to.

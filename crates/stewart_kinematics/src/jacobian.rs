@@ -120,14 +120,13 @@ impl Geometry {
         pose: &Pose,
     ) -> Option<Result<Matrix6<f64>, crate::rotary::Unreachable>> {
         let servos = self.rotary()?;
-        let angles =
-            match servos.servo_angles(self.base_joints(), &self.inverse(pose).platform_joints) {
-                Ok(a) => a,
-                Err(e) => return Some(Err(e)),
-            };
+        let joints = self.inverse(pose).platform_joints;
+        let angles = match servos.servo_angles(self.base_joints(), &joints) {
+            Ok(a) => a,
+            Err(e) => return Some(Err(e)),
+        };
         let r = pose.rotation();
         let c = self.pivot();
-        let joints = self.inverse(pose).platform_joints;
         let mut j = Matrix6::zeros();
         for i in 0..6 {
             let tip = servos.horn_tip(i, &self.base_joints()[i], angles[i]);

@@ -108,37 +108,41 @@ impl FfmpegChild {
         let status = self.child.wait().context("ffmpeg did not finish")?;
         // At `-loglevel error` anything ffmpeg says is an error, and some errors (a full
         // disk while it rewrites the file for `+faststart`) still end with status 0.
-        let said = self
-            .stderr
-            .take()
-            .and_then(|h| h.join().ok())
-            .unwrap_or_default();
+        let said = self.said();
         if status.success() && said.trim().is_empty() {
             return Ok(());
         }
-        self.stderr = Some(std::thread::spawn(move || said));
-        bail!("ffmpeg failed: {}", self.message(staged, out));
+        bail!("ffmpeg failed: {}", one_line(&said, staged, out));
+    }
+
+    /// What ffmpeg wrote to its standard error (once; empty afterwards).
+    fn said(&mut self) -> String {
+        self.stderr
+            .take()
+            .and_then(|h| h.join().ok())
+            .unwrap_or_default()
     }
 
     /// ffmpeg's last words, with the staged file's name replaced by the output's.
     fn message(&mut self, staged: &Path, out: &Path) -> String {
-        let text = self
-            .stderr
-            .take()
-            .and_then(|h| h.join().ok())
-            .unwrap_or_default();
-        let text = text.replace(&staged.display().to_string(), &out.display().to_string());
-        // One line, like every error: ffmpeg's lines joined.
-        let lines: Vec<&str> = text
-            .lines()
-            .map(str::trim)
-            .filter(|l| !l.is_empty())
-            .collect();
-        if lines.is_empty() {
-            "it stopped without saying why".to_owned()
-        } else {
-            lines.join("; ")
-        }
+        let said = self.said();
+        one_line(&said, staged, out)
+    }
+}
+
+/// ffmpeg's words on one line, like every error, naming the output instead of the
+/// staged file.
+fn one_line(said: &str, staged: &Path, out: &Path) -> String {
+    let text = said.replace(&staged.display().to_string(), &out.display().to_string());
+    let lines: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
+    if lines.is_empty() {
+        "it stopped without saying why".to_owned()
+    } else {
+        lines.join("; ")
     }
 }
 
