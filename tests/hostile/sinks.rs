@@ -230,3 +230,48 @@ fn a_full_disk_is_an_error_and_leaves_nothing() {
         }
     }
 }
+
+#[test]
+fn a_signal_during_a_long_table_write_leaves_nothing_half_written() {
+    // A million poses: the CSV takes a while to write. Whenever SIGTERM lands — while
+    // sampling, while writing, or after — there is never a staged file left, and an
+    // output that exists is whole.
+    for delay_ms in [800, 1600, 2400, 3200] {
+        let dir = tempdir();
+        let out = path(dir.path(), "legs.csv");
+        let args = [
+            "solve",
+            "--preset",
+            "paired",
+            "--set",
+            "trajectory.samples=1000000",
+            "--out",
+            &out,
+        ];
+        let started = Instant::now();
+        let child = command(&args).spawn().unwrap_or_else(|e| panic!("{e}"));
+        std::thread::sleep(Duration::from_millis(delay_ms));
+        let _ = std::process::Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status();
+        let o = collect(child, &args, started);
+        assert!(
+            matches!(o.code, None | Some(0) | Some(2)),
+            "{delay_ms} ms: {:?} {}",
+            o.code,
+            o.stderr
+        );
+        let left = names(dir.path());
+        assert!(
+            left.iter().all(|n| !n.starts_with(".stewart-")),
+            "{delay_ms} ms: {left:?}"
+        );
+        if let Ok(text) = std::fs::read_to_string(&out) {
+            assert_eq!(
+                text.lines().count(),
+                1_000_001,
+                "{delay_ms} ms: a partial file"
+            );
+        }
+    }
+}

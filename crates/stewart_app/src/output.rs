@@ -188,11 +188,14 @@ impl Destination {
                 .and_then(|()| w.flush())
                 .with_context(|| format!("cannot write `{shown}`"));
         }
+        // From here Ctrl-C, SIGTERM and SIGHUP stop the writing (see `StopOnSignal`), so
+        // the staged file is removed instead of being left behind by a killed process.
+        crate::interrupt::flag();
         let (file, tmp_path) = self.staged_file(".partial")?.into_parts();
-        let mut w = BufWriter::new(file);
+        let mut w = BufWriter::new(StopOnSignal(file));
         fill(&mut w)
             .and_then(|()| w.flush())
-            .and_then(|()| w.get_ref().sync_all())
+            .and_then(|()| w.get_ref().0.sync_all())
             .with_context(|| format!("cannot write `{shown}`"))?;
         drop(w);
         self.deliver(tmp_path)
@@ -236,6 +239,23 @@ impl Destination {
                     .with_context(|| format!("cannot write `{shown}`"))
             }
         }
+    }
+}
+
+/// A writer that fails once a stop was asked for ([`crate::interrupt`]), ending a long
+/// write early; the staged file is then dropped (removed) and the command exits 2.
+struct StopOnSignal<W>(W);
+
+impl<W: Write> Write for StopOnSignal<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if crate::interrupt::requested() {
+            return Err(std::io::Error::other("interrupted: nothing was written"));
+        }
+        self.0.write(buf)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.0.flush()
     }
 }
 
