@@ -29,7 +29,7 @@ const POSE_OUT: [&str; 8] = [
 /// Run the command.
 pub fn run(args: &FkArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario);
-    inputs.push(("the leg-length table", &args.legs));
+    inputs.push(("the table", &args.legs));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
     if scenario.geometry.rotary().is_some() {
