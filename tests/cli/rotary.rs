@@ -167,7 +167,6 @@ fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
     let out = dir.path().join("out");
     let out = out.display().to_string();
     for args in [
-        vec!["check"],
         vec!["workspace"],
         vec!["forces", "--mass", "1"],
         vec!["render", "--out", &out],
@@ -328,5 +327,67 @@ fn commanded_angles_apply_reversal_and_trim() {
         stderr(&o).contains("`actuator.servo_trim_deg` must list 6 values (one per servo), got 2"),
         "{}",
         stderr(&o)
+    );
+}
+
+#[test]
+fn check_reports_servo_angles_and_names_the_servo_past_its_range() {
+    let s = scenario();
+    let o = stewart(&["check", "--scenario", &s]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.contains("Servo angles over the motion:"), "{text}");
+    assert!(text.contains("servo reach"), "{text}");
+    assert!(text.contains("No problem found."), "{text}");
+    // A narrow range and a speed limit: exit 1, each servo named, JSON says the same.
+    let o = stewart(&[
+        "check",
+        "--scenario",
+        &s,
+        "--set",
+        "actuator.servo_max_deg=12",
+        "--set",
+        "limits.servo_speed_max_deg_s=10",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let doc: serde_json::Value =
+        serde_json::from_str(&stdout(&o)).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(doc["actuator"], "rotary");
+    assert_eq!(doc["servo_max_deg"], 12.0);
+    assert!(doc.get("leg_max_m").is_none());
+    let findings = doc["findings"].as_array().cloned().unwrap_or_default();
+    let kinds: Vec<&str> = findings.iter().filter_map(|f| f["kind"].as_str()).collect();
+    assert!(
+        kinds.contains(&"servo_max") && kinds.contains(&"servo_speed"),
+        "{kinds:?}"
+    );
+    let ranges = doc["servo_ranges_deg"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
+    assert_eq!(ranges.len(), 6);
+    // Servo 5 turns furthest (17.7°, see the plain report), so it is over the 12° top.
+    assert!(
+        findings
+            .iter()
+            .any(|f| f["kind"] == "servo_max" && f["legs"][0] == 5)
+    );
+    let o = stewart(&[
+        "check",
+        "--scenario",
+        &s,
+        "--set",
+        "actuator.servo_max_deg=12",
+    ]);
+    let text = stdout(&o);
+    assert!(
+        text.contains("servo S5 turns past its maximum 12°"),
+        "{text}"
+    );
+    assert!(
+        text.contains("servo angle (max)    worst 17.7287 deg (S5)"),
+        "{text}"
     );
 }

@@ -22,12 +22,13 @@ use crate::pose::Pose;
 /// Whether a geometry is singular at every pose, and why.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ArchitectureReport {
-    /// True when the Jacobian is rank deficient at every probed pose.
+    /// True when the Jacobian (the servo Jacobian, for a rotary platform) is rank deficient
+    /// at every probed pose.
     pub singular: bool,
     /// True when the platform joints are the image of the base joints under a plane
     /// projective map (a similarity, for two regular hexagons).
     pub projective_correspondence: bool,
-    /// Conditioning at the home pose.
+    /// Conditioning at the home pose (all zero when a servo cannot reach home).
     pub home: Conditioning,
     /// Smallest inverse condition number over the probed poses (0 when singular).
     pub worst_inverse_condition: f64,
@@ -73,18 +74,28 @@ impl Geometry {
         ];
         let mut worst = f64::INFINITY;
         let mut all_singular = true;
+        let mut probed = 0;
         for p in probes {
             let pose =
                 Pose::from_xyz_rpy_deg([p[0] * s, p[1] * s, h + p[2] * s], [p[3], p[4], p[5]]);
-            let c = self.conditioning(&pose);
+            // A probe some servo cannot reach says nothing about the architecture.
+            let Some(c) = self.actuated_conditioning(&pose) else {
+                continue;
+            };
+            probed += 1;
             worst = worst.min(c.inverse_condition());
             all_singular &= c.is_singular();
         }
+        let rotary = self.rotary().is_some();
         ArchitectureReport {
-            singular: all_singular,
-            projective_correspondence: joints_projectively_related(self),
-            home: self.conditioning(&home),
-            worst_inverse_condition: worst,
+            singular: probed > 0 && all_singular,
+            // The projective test is about leg lines from the base joints; a rotary
+            // platform's rods start at the horn tips instead.
+            projective_correspondence: !rotary && joints_projectively_related(self),
+            home: self
+                .actuated_conditioning(&home)
+                .unwrap_or_else(|| Conditioning::unreachable(self.characteristic_length())),
+            worst_inverse_condition: if probed > 0 { worst } else { 0.0 },
         }
     }
 }

@@ -23,6 +23,10 @@ pub const FREQUENCY_HZ: f64 = 1e3;
 pub const SPEED_M_S: f64 = 1e4;
 /// Largest acceleration limit, metres per second squared.
 pub const ACCEL_M_S2: f64 = 1e7;
+/// Largest angular speed limit, degrees per second.
+pub const ANGULAR_SPEED_DEG_S: f64 = 1e6;
+/// Largest angular acceleration limit, degrees per second squared.
+pub const ANGULAR_ACCEL_DEG_S2: f64 = 1e9;
 /// Largest pure number (ratios, condition-number thresholds).
 pub const RATIO: f64 = 1e12;
 /// Largest mass, kilograms.

@@ -46,6 +46,17 @@ pub struct Conditioning {
 }
 
 impl Conditioning {
+    /// What stands for the conditioning of a pose some servo cannot reach: no singular
+    /// values, no condition number.
+    pub fn unreachable(characteristic_length: f64) -> Self {
+        Self {
+            singular_values: [0.0; 6],
+            characteristic_length,
+            condition_number: None,
+            weakest_twist: [0.0; 6],
+        }
+    }
+
     /// Whether the pose is singular (rank-deficient Jacobian).
     pub fn is_singular(&self) -> bool {
         self.condition_number.is_none()
@@ -158,6 +169,17 @@ impl Geometry {
             &(j * servos.horn_length()),
             self.characteristic_length(),
         ))
+    }
+
+    /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
+    /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
+    /// reach its joint).
+    pub fn actuated_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
+        if self.rotary().is_some() {
+            self.servo_conditioning(pose)
+        } else {
+            Some(self.conditioning(pose))
+        }
     }
 
     /// Singular values, condition number and weakest twist of the normalised Jacobian.

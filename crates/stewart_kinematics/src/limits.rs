@@ -16,12 +16,18 @@ pub struct Limits {
     pub leg_speed_max: Option<f64>,
     /// Largest leg acceleration |d²L/dt²|, m/s².
     pub leg_accel_max: Option<f64>,
+    /// Largest servo speed |dθ/dt| of a rotary platform, degrees per second.
+    #[serde(default)]
+    pub servo_speed_max: Option<f64>,
+    /// Largest servo acceleration |d²θ/dt²| of a rotary platform, degrees per second squared.
+    #[serde(default)]
+    pub servo_accel_max: Option<f64>,
     /// Largest angle between a leg and the base normal at its base joint.
     pub base_cone: Option<Angle>,
     /// Largest angle between a leg and the platform normal at its platform joint.
     pub platform_cone: Option<Angle>,
-    /// Radius of a leg seen as a cylinder, metres (two legs collide when their axes come
-    /// closer than twice this).
+    /// Radius of a leg (or of a rotary platform's rod and horn) seen as a cylinder,
+    /// metres (two legs collide when their axes come closer than twice this).
     pub leg_radius: Option<f64>,
 }
 

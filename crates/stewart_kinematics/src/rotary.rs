@@ -236,6 +236,29 @@ impl RotaryActuators {
         base + self.horn_length * Vector3::new(ct * cb, ct * sb, st)
     }
 
+    /// The closure terms `(L, M, N)` of servo `i` for platform joint `joint`: the horn
+    /// angle θ closes the rod when `N cos θ + M sin θ = L`.
+    fn closure_terms(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> [f64; 3] {
+        let a = self.horn_length;
+        let s = self.rod_length;
+        let l = joint - base;
+        let (sb, cb) = self.horn_angles[i].radians().sin_cos();
+        [
+            l.norm_squared() - (s * s - a * a),
+            2.0 * a * l.z,
+            2.0 * a * (cb * l.x + sb * l.y),
+        ]
+    }
+
+    /// How far servo `i`'s joint is from the edge of its reach: `|L| / √(M² + N²)`, at
+    /// most 1 when some horn angle closes the rod (1: the horn and rod are in line), and
+    /// infinite for a joint on the shaft's axis.
+    pub fn reach_ratio(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> f64 {
+        let [big_l, m, n] = self.closure_terms(i, base, joint);
+        let ratio = big_l.abs() / m.hypot(n);
+        if ratio.is_nan() { f64::INFINITY } else { ratio }
+    }
+
     /// Servo `i`'s angle (from 0) that puts its rod's end on platform joint `joint` (base
     /// frame), for shaft centre `base`; or why none does.
     pub fn servo_angle(
@@ -244,13 +267,7 @@ impl RotaryActuators {
         base: &Vector3<f64>,
         joint: &Vector3<f64>,
     ) -> Result<Angle, Unreachable> {
-        let a = self.horn_length;
-        let s = self.rod_length;
-        let l = joint - base;
-        let (sb, cb) = self.horn_angles[i].radians().sin_cos();
-        let big_l = l.norm_squared() - (s * s - a * a);
-        let m = 2.0 * a * l.z;
-        let n = 2.0 * a * (cb * l.x + sb * l.y);
+        let [big_l, m, n] = self.closure_terms(i, base, joint);
         let r = m.hypot(n);
         let ratio = big_l.abs() / r;
         if ratio.is_nan() || ratio > 1.0 {

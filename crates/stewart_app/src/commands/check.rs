@@ -17,8 +17,15 @@ use crate::source;
 struct JsonReport<'a> {
     scenario: &'a str,
     clean: bool,
+    actuator: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
     leg_min_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     leg_max_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    servo_min_deg: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    servo_max_deg: Option<f64>,
     #[serde(flatten)]
     report: &'a CheckReport,
 }
@@ -26,7 +33,6 @@ struct JsonReport<'a> {
 /// Run the command.
 pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "check")?;
     let report = check_motion(
         &scenario.geometry,
         &scenario.limits,
@@ -37,11 +43,15 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
         Format::Text => text_report(&scenario, &report),
         Format::Json => {
             let stroke = scenario.geometry.stroke();
+            let range = scenario.geometry.rotary().and_then(|r| r.range());
             let doc = JsonReport {
                 scenario: &scenario.name,
                 clean: report.is_clean(),
+                actuator: scenario.geometry.actuator().kind_name(),
                 leg_min_m: stroke.min,
                 leg_max_m: stroke.max,
+                servo_min_deg: range.map(|(min, _)| min.degrees()),
+                servo_max_deg: range.map(|(_, max)| max.degrees()),
                 report: &report,
             };
             serde_json::to_string_pretty(&doc)? + "\n"
@@ -69,11 +79,44 @@ fn limit_name(kind: FindingKind) -> &'static str {
         FindingKind::ArchitectureSingular => "architecture",
         FindingKind::Jump => "jumps",
         FindingKind::RigidBody => "rigid body",
+        FindingKind::Unreachable => "servo reach",
+        FindingKind::ServoMax => "servo angle (max)",
+        FindingKind::ServoMin => "servo angle (min)",
+        FindingKind::ServoSpeed => "servo speed",
+        FindingKind::ServoAccel => "servo acceleration",
+        FindingKind::HornCone => "horn joint cone",
+        FindingKind::RodPlatformCone => "platform joint cone",
+        FindingKind::RodCollision => "rod clearance",
+        FindingKind::RodHornCollision => "rod-horn clearance",
+        FindingKind::ServoJump => "servo jumps",
+    }
+}
+
+/// The letter numbering the things a limit is about: legs, servos, rods.
+fn part_letters(kind: FindingKind) -> [char; 2] {
+    match kind {
+        FindingKind::Unreachable
+        | FindingKind::ServoMax
+        | FindingKind::ServoMin
+        | FindingKind::ServoSpeed
+        | FindingKind::ServoAccel
+        | FindingKind::ServoJump => ['S', 'S'],
+        FindingKind::HornCone | FindingKind::RodPlatformCone | FindingKind::RodCollision => {
+            ['R', 'R']
+        }
+        FindingKind::RodHornCollision => ['R', 'S'],
+        _ => ['L', 'L'],
     }
 }
 
 fn summary_line(s: &LimitSummary) -> String {
-    let legs: Vec<String> = s.legs.iter().map(|l| format!("L{l}")).collect();
+    let letters = part_letters(s.kind);
+    let legs: Vec<String> = s
+        .legs
+        .iter()
+        .zip(letters.iter().chain(std::iter::repeat(&letters[1])))
+        .map(|(l, c)| format!("{c}{l}"))
+        .collect();
     let at = if legs.is_empty() {
         String::new()
     } else {
@@ -111,9 +154,20 @@ fn text_report(scenario: &Scenario, report: &CheckReport) -> String {
         "Scenario `{}`: {} samples from t = {t0} s to t = {t1} s.",
         scenario.name, report.samples
     );
-    let _ = writeln!(s, "Leg lengths over the motion:");
-    for (i, [lo, hi]) in report.leg_ranges.iter().enumerate() {
-        let _ = writeln!(s, "  L{}: {lo:.4} m … {hi:.4} m", i + 1);
+    if let Some(ranges) = &report.servo_ranges_deg {
+        let _ = writeln!(s, "Servo angles over the motion:");
+        for (i, [lo, hi]) in ranges.iter().enumerate() {
+            if lo.is_nan() {
+                let _ = writeln!(s, "  S{}: never reaches its joint", i + 1);
+            } else {
+                let _ = writeln!(s, "  S{}: {lo:.2}° … {hi:.2}°", i + 1);
+            }
+        }
+    } else {
+        let _ = writeln!(s, "Leg lengths over the motion:");
+        for (i, [lo, hi]) in report.leg_ranges.iter().enumerate() {
+            let _ = writeln!(s, "  L{}: {lo:.4} m … {hi:.4} m", i + 1);
+        }
     }
     let _ = writeln!(s, "Limits (worst over the motion, and the margin left):");
     for l in &report.limits {

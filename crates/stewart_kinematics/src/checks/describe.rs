@@ -12,6 +12,9 @@ impl fmt::Display for Finding {
             1 => format!("leg {}", legs[0]),
             _ => format!("legs {}", legs.join(" and ")),
         };
+        let number = |k: usize| self.legs.get(k).copied().unwrap_or(0);
+        let servo = format!("servo S{}", number(0));
+        let rod = format!("rod R{}", number(0));
         let span = if self.count > 1 {
             format!(
                 "from t = {:.3} s to t = {:.3} s ({} samples)",
@@ -76,6 +79,57 @@ impl fmt::Display for Finding {
                 "{leg} length jumps {span}; worst step {:.2} mm at t = {when:.3} s, where the steps around it allow at most {:.3} mm",
                 worst * 1e3,
                 limit * 1e3
+            ),
+            FindingKind::Unreachable => write!(
+                f,
+                "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; worst |L|/√(M²+N²) = {worst:.4} at t = {when:.3} s, {:.2} % beyond reach",
+                over * 100.0
+            ),
+            FindingKind::ServoMax => write!(
+                f,
+                "{servo} turns past its maximum {limit}° {span}; worst {worst:.2}° at t = {when:.3} s, {over:.2}° over"
+            ),
+            FindingKind::ServoMin => write!(
+                f,
+                "{servo} turns past its minimum {limit}° {span}; worst {worst:.2}° at t = {when:.3} s, {over:.2}° under"
+            ),
+            FindingKind::ServoSpeed => write!(
+                f,
+                "{servo} turns faster than {limit}°/s {span}; worst {worst:.1}°/s at t = {when:.3} s, {over:.1}°/s over"
+            ),
+            FindingKind::ServoAccel => write!(
+                f,
+                "{servo} accelerates beyond {limit}°/s² {span}; worst {worst:.0}°/s² at t = {when:.3} s, {over:.0}°/s² over"
+            ),
+            FindingKind::HornCone => write!(
+                f,
+                "{rod} leans more than {limit}° from the base normal at its horn joint {span}; worst {worst:.2}° at t = {when:.3} s, {over:.2}° over"
+            ),
+            FindingKind::RodPlatformCone => write!(
+                f,
+                "{rod} leans more than {limit}° from the platform normal at its platform joint {span}; worst {worst:.2}° at t = {when:.3} s, {over:.2}° over"
+            ),
+            FindingKind::RodCollision => write!(
+                f,
+                "rods R{} and R{} come closer than {:.1} mm (twice the rod radius) {span}; closest {:.1} mm at t = {when:.3} s, {:.1} mm of overlap",
+                number(0),
+                number(1),
+                limit * 1e3,
+                worst * 1e3,
+                over * 1e3
+            ),
+            FindingKind::RodHornCollision => write!(
+                f,
+                "rod R{} comes closer than {:.1} mm (twice the rod radius) to the horn of servo S{} {span}; closest {:.1} mm at t = {when:.3} s, {:.1} mm of overlap",
+                number(0),
+                limit * 1e3,
+                number(1),
+                worst * 1e3,
+                over * 1e3
+            ),
+            FindingKind::ServoJump => write!(
+                f,
+                "{servo} angle jumps {span}; worst step {worst:.2}° at t = {when:.3} s, where the steps around it allow at most {limit:.3}°"
             ),
             FindingKind::RigidBody => write!(
                 f,

@@ -12,47 +12,69 @@ const NEIGHBOURS: usize = 4;
 
 /// One finding per leg that jumps, with the first and last jump and the largest.
 pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> Vec<Finding> {
-    let n = lengths.len();
+    check_series(
+        FindingKind::Jump,
+        "m",
+        times,
+        lengths,
+        settings.jump_ratio,
+        settings.jump_floor,
+    )
+}
+
+/// One finding of `kind` per column of `values` (in `unit`) that jumps: a step more than
+/// `ratio` times the median of its neighbours and more than `floor`. Steps next to a
+/// missing (NaN) value are not judged.
+pub(crate) fn check_series(
+    kind: FindingKind,
+    unit: &str,
+    times: &[f64],
+    values: &[[f64; 6]],
+    ratio: f64,
+    floor: f64,
+) -> Vec<Finding> {
+    let n = values.len();
     if n < 2 {
         return Vec::new();
     }
     let mut findings = Vec::new();
     let mut steps = vec![0.0; n - 1];
     for leg in 0..6 {
-        for (s, pair) in steps.iter_mut().zip(lengths.windows(2)) {
+        for (s, pair) in steps.iter_mut().zip(values.windows(2)) {
             *s = (pair[1][leg] - pair[0][leg]).abs();
         }
         let mut found: Option<Finding> = None;
         for k in 0..steps.len() {
             let step = steps[k];
-            if step <= settings.jump_floor {
+            // A NaN step (or neighbourhood) is never a jump.
+            if step.is_nan() || step <= floor {
                 continue;
             }
             let typical = median_of_neighbours(&steps, k);
-            let limit = settings.jump_ratio * typical;
-            if step <= limit {
+            let limit = ratio * typical;
+            if limit.is_nan() || step <= limit {
                 continue;
             }
             // The jump happens between samples k and k + 1; it is dated at k + 1.
             let t = times[k + 1];
             let f = found.get_or_insert_with(|| Finding {
-                kind: FindingKind::Jump,
+                kind,
                 legs: vec![leg + 1],
                 first_time: t,
                 last_time: t,
                 count: 0,
                 worst_time: t,
                 worst_value: step,
-                limit: limit.max(settings.jump_floor),
-                margin: limit.max(settings.jump_floor) - step,
-                unit: "m".to_owned(),
+                limit: limit.max(floor),
+                margin: limit.max(floor) - step,
+                unit: unit.to_owned(),
             });
             f.last_time = t;
             f.count += 1;
             if step > f.worst_value {
                 f.worst_value = step;
                 f.worst_time = t;
-                f.limit = limit.max(settings.jump_floor);
+                f.limit = limit.max(floor);
                 f.margin = f.limit - step;
             }
         }

@@ -7,7 +7,9 @@
 //! - [`cones`]: the angle of each leg at its joints;
 //! - [`collision`]: the distance between legs seen as cylinders;
 //! - [`singularity`]: near-singular poses and architecture singularity;
-//! - [`jumps`]: no leg length jumps between two samples.
+//! - [`jumps`]: no leg length jumps between two samples;
+//! - [`servos`]: for rotary platforms, reach, servo range and rates, the rods' joint
+//!   angles, rod and horn clearance, and servo-angle jumps (instead of the leg checks).
 
 pub mod collision;
 pub mod cones;
@@ -16,6 +18,9 @@ pub mod jumps;
 pub mod rates;
 pub mod rigid;
 mod scan;
+pub mod servos;
+#[cfg(test)]
+mod servos_tests;
 pub mod singularity;
 pub mod stroke;
 
@@ -76,6 +81,26 @@ pub enum FindingKind {
     Jump,
     /// Platform joints whose mutual distances changed: the platform was not moved rigidly.
     RigidBody,
+    /// A servo whose horn cannot reach its platform joint (rotary platforms).
+    Unreachable,
+    /// A servo past the top of its range.
+    ServoMax,
+    /// A servo past the bottom of its range.
+    ServoMin,
+    /// A servo turning faster than its speed limit.
+    ServoSpeed,
+    /// A servo accelerating beyond its limit.
+    ServoAccel,
+    /// A rod leaning beyond the cone of its ball joint on the horn (from the base normal).
+    HornCone,
+    /// A rod leaning beyond the cone of its platform joint.
+    RodPlatformCone,
+    /// Two rods closer than twice the rod radius.
+    RodCollision,
+    /// A rod closer than twice the radius to another servo's horn.
+    RodHornCollision,
+    /// A servo angle changing abruptly between two samples.
+    ServoJump,
 }
 
 /// One problem, located: which leg(s), from when to when, how bad.
@@ -129,8 +154,13 @@ pub struct CheckReport {
     pub samples: usize,
     /// Time of the first and last sample, seconds.
     pub time_span: [f64; 2],
-    /// Shortest and longest length of each leg over the motion, metres.
+    /// Shortest and longest length of each leg over the motion, metres (for a rotary
+    /// platform: the distance from each servo's shaft centre to its platform joint).
     pub leg_ranges: [[f64; 2]; 6],
+    /// For a rotary platform, the smallest and largest model angle of each servo over the
+    /// samples it reaches, degrees (NaN, written `null`, for a servo that reaches none).
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub servo_ranges_deg: Option<[[f64; 2]; 6]>,
     /// Largest change of any platform-joint distance seen, metres (rounding only, if all is well).
     pub rigid_worst_deviation: f64,
     /// Every limit that applies, with its worst value and margin.
@@ -169,10 +199,30 @@ pub fn check_motion(
     let (rigid_worst_deviation, rigid) =
         rigid::check(geometry, times, &solutions, settings.rigid_tolerance);
     out.findings.extend(rigid);
-    stroke::check(&geometry.stroke(), times, &lengths, &mut out);
-    rates::check(limits, times, &lengths, &mut out);
-    cones::check(limits, times, &samples.poses, &solutions, &mut out);
-    collision::check(limits, times, &solutions, &mut out);
+    let servo_ranges_deg = match geometry.rotary() {
+        None => {
+            stroke::check(&geometry.stroke(), times, &lengths, &mut out);
+            rates::check(limits, times, &lengths, &mut out);
+            cones::check(limits, times, &samples.poses, &solutions, &mut out);
+            collision::check(limits, times, &solutions, &mut out);
+            None
+        }
+        Some(servos) => {
+            let motion = servos::ServoMotion::solve(geometry, servos, &solutions);
+            servos::check(
+                geometry,
+                servos,
+                limits,
+                settings,
+                times,
+                &samples.poses,
+                &solutions,
+                &motion,
+                &mut out,
+            );
+            Some(motion.ranges())
+        }
+    };
     let architecture = geometry.architecture();
     singularity::check(
         geometry,
@@ -182,7 +232,9 @@ pub fn check_motion(
         settings,
         &mut out,
     );
-    out.findings.extend(jumps::check(times, &lengths, settings));
+    if geometry.rotary().is_none() {
+        out.findings.extend(jumps::check(times, &lengths, settings));
+    }
     CheckReport {
         samples: samples.len(),
         time_span: [
@@ -190,6 +242,7 @@ pub fn check_motion(
             times.last().copied().unwrap_or(0.0),
         ],
         leg_ranges,
+        servo_ranges_deg,
         rigid_worst_deviation,
         limits: out.limits,
         architecture,

@@ -22,10 +22,14 @@ pub fn leg_accelerations(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
 }
 
 /// A finite-difference rule of [`crate::differences`] on six-vectors.
-type Difference = fn(&[f64], &[Vector6<f64>], usize) -> Option<Vector6<f64>>;
+pub(crate) type Difference = fn(&[f64], &[Vector6<f64>], usize) -> Option<Vector6<f64>>;
 
 /// `difference` of the six lengths at every sample (zero where there are too few samples).
-fn per_sample(times: &[f64], lengths: &[[f64; 6]], difference: Difference) -> Vec<[f64; 6]> {
+pub(crate) fn per_sample(
+    times: &[f64],
+    lengths: &[[f64; 6]],
+    difference: Difference,
+) -> Vec<[f64; 6]> {
     let values: Vec<Vector6<f64>> = lengths.iter().map(|l| Vector6::from(*l)).collect();
     (0..values.len())
         .map(|k| difference(times, &values, k).map_or([0.0; 6], Into::into))

@@ -46,6 +46,10 @@ pub(crate) fn scan(
     let mut summary: Option<LimitSummary> = None;
     let mut finding: Option<Finding> = None;
     for (k, (v, legs)) in values.enumerate() {
+        // A missing value (a pose a servo cannot reach) is reported by its own check.
+        if v.is_nan() {
+            continue;
+        }
         let margin = bound.margin(v);
         if summary.as_ref().is_none_or(|s| margin < s.margin) {
             summary = Some(LimitSummary {

@@ -8,7 +8,8 @@ use crate::pose::Pose;
 
 /// An architecture-singular geometry gives one finding for the whole motion (every pose
 /// is singular, so per-pose findings would say nothing more); otherwise the normalised
-/// condition number is scanned against `condition_max` (a singular pose counts as infinite).
+/// condition number (of the servo Jacobian for a rotary platform) is scanned against
+/// `condition_max` (a singular pose counts as infinite).
 pub(crate) fn check(
     geometry: &Geometry,
     architecture: &ArchitectureReport,
@@ -32,9 +33,13 @@ pub(crate) fn check(
         });
         return;
     }
+    // A pose a servo cannot reach has no conditioning (NaN, skipped): the reach check
+    // reports it.
     let series = poses.iter().map(|p| {
-        let c = geometry.conditioning(p);
-        (c.condition_number.unwrap_or(f64::INFINITY), Vec::new())
+        let value = geometry
+            .actuated_conditioning(p)
+            .map_or(f64::NAN, |c| c.condition_number.unwrap_or(f64::INFINITY));
+        (value, Vec::new())
     });
     scan_one(
         FindingKind::NearSingular,

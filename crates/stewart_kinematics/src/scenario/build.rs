@@ -97,7 +97,7 @@ pub(super) fn parse(
         None => Motion::seed(geometry.home_height()),
     };
     let checks = build_checks(&src, parsed.checks.as_ref())?;
-    let limits = build_limits(&src, parsed.limits.as_ref())?;
+    let limits = build_limits(&src, parsed.limits.as_ref(), geometry.rotary().is_some())?;
     let payload = parsed
         .payload
         .as_ref()
@@ -374,10 +374,35 @@ fn build_checks(src: &Source, c: Option<&ChecksFile>) -> Result<CheckSettings, S
     Ok(settings)
 }
 
-fn build_limits(src: &Source, l: Option<&LimitsFile>) -> Result<Limits, ScenarioError> {
+fn build_limits(
+    src: &Source,
+    l: Option<&LimitsFile>,
+    rotary: bool,
+) -> Result<Limits, ScenarioError> {
     let Some(l) = l else {
         return Ok(Limits::default());
     };
+    // Leg rates belong to linear legs, servo rates to servos.
+    let (misplaced, why) = if rotary {
+        (
+            [
+                ("limits.leg_speed_max_m_s", &l.leg_speed_max_m_s),
+                ("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2),
+            ],
+            "applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s` and `servo_accel_max_deg_s2`",
+        )
+    } else {
+        (
+            [
+                ("limits.servo_speed_max_deg_s", &l.servo_speed_max_deg_s),
+                ("limits.servo_accel_max_deg_s2", &l.servo_accel_max_deg_s2),
+            ],
+            "applies to rotary platforms only (`[actuator] kind = \"rotary\"`)",
+        )
+    };
+    if let Some((field, Some(v))) = misplaced.iter().find(|(_, v)| v.is_some()) {
+        return Err(src.invalid(Some(v.span()), field, why.to_owned()));
+    }
     let positive = |field: &str, v: &Option<Spanned<f64>>| -> Result<Option<f64>, ScenarioError> {
         let Some(v) = v else { return Ok(None) };
         let x = src.finite(field, v)?;
@@ -399,6 +424,8 @@ fn build_limits(src: &Source, l: Option<&LimitsFile>) -> Result<Limits, Scenario
     Ok(Limits {
         leg_speed_max: positive("limits.leg_speed_max_m_s", &l.leg_speed_max_m_s)?,
         leg_accel_max: positive("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2)?,
+        servo_speed_max: positive("limits.servo_speed_max_deg_s", &l.servo_speed_max_deg_s)?,
+        servo_accel_max: positive("limits.servo_accel_max_deg_s2", &l.servo_accel_max_deg_s2)?,
         base_cone: cone("limits.base_cone_deg", &l.base_cone_deg)?,
         platform_cone: cone("limits.platform_cone_deg", &l.platform_cone_deg)?,
         leg_radius: positive("limits.leg_radius_m", &l.leg_radius_m)?,

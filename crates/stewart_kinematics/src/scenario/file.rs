@@ -53,6 +53,10 @@ pub(crate) struct LimitsFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub leg_accel_max_m_s2: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_speed_max_deg_s: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_accel_max_deg_s2: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub base_cone_deg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub platform_cone_deg: Option<Spanned<f64>>,

@@ -272,3 +272,38 @@ fn a_rotary_scenario_reads_and_writes_back_the_same() {
     assert!(!seed.to_toml().contains("[actuator]"));
     assert!(seed.geometry.rotary().is_none());
 }
+
+#[test]
+fn rate_limits_belong_to_their_actuator_kind() {
+    let rotary = std::fs::read_to_string(format!(
+        "{}/../../tests/cli/rotary.toml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let lines = rotary.lines().count();
+    let e = error(&format!("{rotary}\n[limits]\nleg_speed_max_m_s = 0.5\n"));
+    assert_eq!(
+        e,
+        format!(
+            "s.toml, line {}, column 21: `limits.leg_speed_max_m_s` applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s` and `servo_accel_max_deg_s2`",
+            lines + 3
+        )
+    );
+    let e = error(&format!(
+        "{GEOMETRY}[limits]\nservo_accel_max_deg_s2 = 900\n"
+    ));
+    assert_eq!(
+        e,
+        "s.toml, line 8, column 26: `limits.servo_accel_max_deg_s2` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)"
+    );
+    let s = parse(&format!(
+        "{rotary}\n[limits]\nservo_speed_max_deg_s = 300\nservo_accel_max_deg_s2 = 5000\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        (s.limits.servo_speed_max, s.limits.servo_accel_max),
+        (Some(300.0), Some(5000.0))
+    );
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.limits, s.limits);
+}

@@ -13,7 +13,10 @@ use crate::geometry::GeometryParams;
 use crate::trajectory::{Sampling, Sinusoid};
 
 use DefaultValue::{AboveHome, Off, Value};
-use Unit::{Count, Degree, Hertz, Metre, MetrePerSecond, MetrePerSecondSquared, Ratio, Second};
+use Unit::{
+    Count, Degree, DegreePerSecond, DegreePerSecondSquared, Hertz, Metre, MetrePerSecond,
+    MetrePerSecondSquared, Ratio, Second,
+};
 
 struct Declare {
     list: Vec<Setting>,
@@ -366,6 +369,22 @@ fn limits(d: &mut Declare) {
         l(LegAccel),
     );
     d.add(
+        "limits.servo_speed_max_deg_s",
+        "max servo speed",
+        DegreePerSecond,
+        (10.0, 2000.0),
+        Off,
+        l(ServoSpeed),
+    );
+    d.add(
+        "limits.servo_accel_max_deg_s2",
+        "max servo acceleration",
+        DegreePerSecondSquared,
+        (100.0, 100_000.0),
+        Off,
+        l(ServoAccel),
+    );
+    d.add(
         "limits.base_cone_deg",
         "base joint cone",
         Degree,
@@ -383,7 +402,7 @@ fn limits(d: &mut Declare) {
     );
     d.add(
         "limits.leg_radius_m",
-        "leg radius",
+        "leg / rod radius",
         Metre,
         (0.001, 0.1),
         Off,

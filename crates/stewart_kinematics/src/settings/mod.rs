@@ -19,7 +19,8 @@ use thiserror::Error;
 use crate::scenario::Scenario;
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
-    ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
+    ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,
+    Target,
 };
 
 /// The unit a setting is written in.
@@ -37,6 +38,10 @@ pub enum Unit {
     MetrePerSecond,
     /// Metres per second squared.
     MetrePerSecondSquared,
+    /// Degrees per second.
+    DegreePerSecond,
+    /// Degrees per second squared.
+    DegreePerSecondSquared,
     /// A whole number of things (samples).
     Count,
     /// A pure number (ratios, condition numbers).
@@ -53,6 +58,8 @@ impl Unit {
             Unit::Second => "s",
             Unit::MetrePerSecond => "m/s",
             Unit::MetrePerSecondSquared => "m/s²",
+            Unit::DegreePerSecond => "°/s",
+            Unit::DegreePerSecondSquared => "°/s²",
             Unit::Count | Unit::Ratio => "",
         }
     }
@@ -69,6 +76,8 @@ impl Unit {
             Unit::Second => symmetric(bounds::TIME_S),
             Unit::MetrePerSecond => symmetric(bounds::SPEED_M_S),
             Unit::MetrePerSecondSquared => symmetric(bounds::ACCEL_M_S2),
+            Unit::DegreePerSecond => symmetric(bounds::ANGULAR_SPEED_DEG_S),
+            Unit::DegreePerSecondSquared => symmetric(bounds::ANGULAR_ACCEL_DEG_S2),
             Unit::Count => 2.0..=crate::trajectory::MAX_SAMPLES as f64,
             Unit::Ratio => symmetric(bounds::RATIO),
         }
@@ -158,6 +167,12 @@ pub enum SettingError {
         /// The key.
         key: String,
     },
+    /// A linear-leg key (stroke, leg speed) on a rotary platform.
+    #[error("`{key}` applies to linear legs only; a rotary platform has servo limits instead")]
+    NotLinear {
+        /// The key.
+        key: String,
+    },
     /// The value was refused; the scenario is unchanged.
     #[error("`{key}` = {value} refused: {reason}")]
     Invalid {
@@ -214,10 +229,18 @@ impl Setting {
             value: shown.clone(),
             reason,
         };
-        if matches!(self.target, Target::Actuator(_)) && scenario.geometry.rotary().is_none() {
-            return Err(SettingError::NotRotary {
-                key: self.key.clone(),
-            });
+        match self.target.actuator_kind() {
+            Some(ActuatorKind::Rotary) if scenario.geometry.rotary().is_none() => {
+                return Err(SettingError::NotRotary {
+                    key: self.key.clone(),
+                });
+            }
+            Some(ActuatorKind::Linear) if scenario.geometry.rotary().is_some() => {
+                return Err(SettingError::NotLinear {
+                    key: self.key.clone(),
+                });
+            }
+            _ => {}
         }
         if !self.applies(scenario) {
             return Err(SettingError::NotApplicable {

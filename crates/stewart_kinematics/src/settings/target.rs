@@ -102,6 +102,19 @@ pub enum LimitKey {
     PlatformCone,
     /// Leg cylinder radius.
     LegRadius,
+    /// Servo speed (rotary platforms).
+    ServoSpeed,
+    /// Servo acceleration (rotary platforms).
+    ServoAccel,
+}
+
+/// The actuator kinds a setting belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ActuatorKind {
+    /// Linear legs only (stroke, leg speed and acceleration).
+    Linear,
+    /// Rotary servos only (horns, rods, servo range and rates).
+    Rotary,
 }
 
 /// Thresholds of the checks.
@@ -147,12 +160,29 @@ impl Target {
         )
     }
 
+    /// The actuator kind it belongs to (`None`: both).
+    pub fn actuator_kind(self) -> Option<ActuatorKind> {
+        match self {
+            Target::Actuator(_) | Target::Limit(LimitKey::ServoSpeed | LimitKey::ServoAccel) => {
+                Some(ActuatorKind::Rotary)
+            }
+            Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+            | Target::Limit(LimitKey::LegSpeed | LimitKey::LegAccel) => Some(ActuatorKind::Linear),
+            _ => None,
+        }
+    }
+
     pub(super) fn applies(self, scenario: &Scenario) -> bool {
         let trajectory = &scenario.motion.trajectory;
+        let rotary = scenario.geometry.rotary().is_some();
+        match self.actuator_kind() {
+            Some(ActuatorKind::Rotary) if !rotary => return false,
+            Some(ActuatorKind::Linear) if rotary => return false,
+            _ => {}
+        }
         match self {
             Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
             Target::Shape(key) => shape_value(trajectory, key).is_some(),
-            Target::Actuator(_) => scenario.geometry.rotary().is_some(),
             _ => true,
         }
     }
@@ -207,6 +237,8 @@ impl Target {
                     LimitKey::BaseCone => l.base_cone.map(|a| a.degrees()),
                     LimitKey::PlatformCone => l.platform_cone.map(|a| a.degrees()),
                     LimitKey::LegRadius => l.leg_radius,
+                    LimitKey::ServoSpeed => l.servo_speed_max,
+                    LimitKey::ServoAccel => l.servo_accel_max,
                 }
             }
             Target::Check(key) => {
@@ -378,6 +410,8 @@ fn set_limit(scenario: &mut Scenario, key: LimitKey, value: Option<f64>) -> Resu
         LimitKey::BaseCone => l.base_cone = degrees,
         LimitKey::PlatformCone => l.platform_cone = degrees,
         LimitKey::LegRadius => l.leg_radius = value,
+        LimitKey::ServoSpeed => l.servo_speed_max = value,
+        LimitKey::ServoAccel => l.servo_accel_max = value,
     }
     Ok(())
 }

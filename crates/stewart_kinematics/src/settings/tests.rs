@@ -369,4 +369,22 @@ fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
         e.to_string(),
         "`actuator.horn_length_m` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)"
     );
+    // Leg limits belong to linear legs: refused on servos, and not listed for them.
+    let e = apply_all(&mut s, ["geometry.leg_max=0.2"]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`geometry.leg_max` applies to linear legs only; a rotary platform has servo limits instead"
+    );
+    assert!(
+        !find("limits.leg_speed_max_m_s")
+            .unwrap_or_else(|e| panic!("{e}"))
+            .applies(&s)
+    );
+    apply_all(&mut s, ["limits.servo_speed_max_deg_s=250"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.limits.servo_speed_max, Some(250.0));
+    let e = apply_all(&mut seed, ["limits.servo_speed_max_deg_s=250"]).unwrap_err();
+    assert!(
+        e.to_string().contains("applies to rotary platforms only"),
+        "{e}"
+    );
 }

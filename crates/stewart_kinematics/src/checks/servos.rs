@@ -1,0 +1,278 @@
+//! The checks of a rotary platform: reach, servo range, servo speed and acceleration,
+//! the rods' angles at their ball joints, rod-to-rod and rod-to-horn clearance, and jumps
+//! of a servo angle.
+//!
+//! A sample where a servo cannot reach its joint has no angle and no horn tip for that
+//! servo: it is reported once, by the reach check, and left out of every other check of
+//! that servo (its values are NaN, which the scans skip).
+
+use nalgebra::Vector3;
+
+use super::scan::{Bound, Collected, scan_columns, scan_legs};
+use super::{CheckSettings, FindingKind, jumps};
+use crate::differences::{first_difference, second_difference};
+use crate::geometry::Geometry;
+use crate::inverse::LegSolution;
+use crate::limits::{LEG_PAIRS, Limits, segment_distance};
+use crate::pose::Pose;
+use crate::rotary::RotaryActuators;
+
+/// The servo side of every sample of a motion.
+pub struct ServoMotion {
+    /// `|L| / √(M² + N²)` of each servo: above 1 where it cannot reach its joint.
+    pub reach: Vec<[f64; 6]>,
+    /// Model angle θ of each servo, degrees (NaN where it cannot reach).
+    pub angles_deg: Vec<[f64; 6]>,
+    /// Horn tips in the base frame, metres (NaN where the servo cannot reach).
+    pub tips: Vec<[Vector3<f64>; 6]>,
+}
+
+impl ServoMotion {
+    /// Solve every servo of every sample (`solutions` are the platform joints of each
+    /// sample's pose).
+    pub fn solve(geometry: &Geometry, servos: &RotaryActuators, solutions: &[LegSolution]) -> Self {
+        let bases = geometry.base_joints();
+        let missing = Vector3::repeat(f64::NAN);
+        let mut reach = Vec::with_capacity(solutions.len());
+        let mut angles_deg = Vec::with_capacity(solutions.len());
+        let mut tips = Vec::with_capacity(solutions.len());
+        for s in solutions {
+            let mut r = [0.0; 6];
+            let mut a = [f64::NAN; 6];
+            let mut t = [missing; 6];
+            for i in 0..6 {
+                r[i] = servos.reach_ratio(i, &bases[i], &s.platform_joints[i]);
+                if let Ok(theta) = servos.servo_angle(i, &bases[i], &s.platform_joints[i]) {
+                    a[i] = theta.degrees();
+                    t[i] = servos.horn_tip(i, &bases[i], theta);
+                }
+            }
+            reach.push(r);
+            angles_deg.push(a);
+            tips.push(t);
+        }
+        Self {
+            reach,
+            angles_deg,
+            tips,
+        }
+    }
+
+    /// Smallest and largest angle of each servo over the samples it reaches, degrees
+    /// (NaN for a servo that reaches none).
+    pub fn ranges(&self) -> [[f64; 2]; 6] {
+        let mut ranges = [[f64::NAN; 2]; 6];
+        for row in &self.angles_deg {
+            for (range, &v) in ranges.iter_mut().zip(row) {
+                if v.is_nan() {
+                    continue;
+                }
+                range[0] = if range[0].is_nan() {
+                    v
+                } else {
+                    range[0].min(v)
+                };
+                range[1] = if range[1].is_nan() {
+                    v
+                } else {
+                    range[1].max(v)
+                };
+            }
+        }
+        ranges
+    }
+}
+
+/// Every servo check over a motion; `motion` comes from [`ServoMotion::solve`].
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn check(
+    geometry: &Geometry,
+    servos: &RotaryActuators,
+    limits: &Limits,
+    settings: &CheckSettings,
+    times: &[f64],
+    poses: &[Pose],
+    solutions: &[LegSolution],
+    motion: &ServoMotion,
+    out: &mut Collected,
+) {
+    scan_legs(
+        FindingKind::Unreachable,
+        "",
+        Bound::AtMost(1.0),
+        times,
+        &motion.reach,
+        out,
+    );
+    if let Some((min, max)) = servos.range() {
+        for (kind, bound) in [
+            (FindingKind::ServoMax, Bound::AtMost(max.degrees())),
+            (FindingKind::ServoMin, Bound::AtLeast(min.degrees())),
+        ] {
+            scan_legs(kind, "deg", bound, times, &motion.angles_deg, out);
+        }
+    }
+    rates(limits, times, &motion.angles_deg, out);
+    cones(limits, times, poses, solutions, motion, out);
+    clearance(geometry, limits, times, solutions, motion, out);
+    // A jump of the horn tip by the floor's length counts as a jump of its angle.
+    let floor_deg = (settings.jump_floor / servos.horn_length()).to_degrees();
+    out.findings.extend(jumps::check_series(
+        FindingKind::ServoJump,
+        "deg",
+        times,
+        &motion.angles_deg,
+        settings.jump_ratio,
+        floor_deg,
+    ));
+}
+
+/// Servo speed and acceleration (finite differences of the angles, degrees).
+fn rates(limits: &Limits, times: &[f64], angles_deg: &[[f64; 6]], out: &mut Collected) {
+    let per_sample = |rule: super::rates::Difference| -> Vec<[f64; 6]> {
+        super::rates::per_sample(times, angles_deg, rule)
+            .into_iter()
+            .map(|r| r.map(f64::abs))
+            .collect()
+    };
+    if let Some(max) = limits.servo_speed_max {
+        scan_legs(
+            FindingKind::ServoSpeed,
+            "deg/s",
+            Bound::AtMost(max),
+            times,
+            &per_sample(first_difference),
+            out,
+        );
+    }
+    if let Some(max) = limits.servo_accel_max {
+        scan_legs(
+            FindingKind::ServoAccel,
+            "deg/s²",
+            Bound::AtMost(max),
+            times,
+            &per_sample(second_difference),
+            out,
+        );
+    }
+}
+
+/// The rods' angles at the horn joint (from the base normal, as a linear leg's base joint)
+/// and at the platform joint (from the platform normal).
+fn cones(
+    limits: &Limits,
+    times: &[f64],
+    poses: &[Pose],
+    solutions: &[LegSolution],
+    motion: &ServoMotion,
+    out: &mut Collected,
+) {
+    let angle = |u: Vector3<f64>, n: Vector3<f64>| u.dot(&n).clamp(-1.0, 1.0).acos().to_degrees();
+    let rods = |k: usize| -> Vec<[f64; 6]> {
+        poses
+            .iter()
+            .zip(solutions)
+            .zip(&motion.tips)
+            .map(|((pose, s), tips)| {
+                let normal = if k == 0 {
+                    Vector3::z()
+                } else {
+                    pose.rotation() * Vector3::z()
+                };
+                std::array::from_fn(|i| angle((s.platform_joints[i] - tips[i]).normalize(), normal))
+            })
+            .collect()
+    };
+    for (k, kind, limit) in [
+        (0, FindingKind::HornCone, limits.base_cone),
+        (1, FindingKind::RodPlatformCone, limits.platform_cone),
+    ] {
+        if let Some(max) = limit {
+            scan_legs(
+                kind,
+                "deg",
+                Bound::AtMost(max.degrees()),
+                times,
+                &rods(k),
+                out,
+            );
+        }
+    }
+}
+
+/// The thirty (rod, other servo's horn) pairs `(i, j)`, `i ≠ j`, numbered from 0.
+const ROD_HORN_PAIRS: [(usize, usize); 30] = {
+    let mut pairs = [(0, 0); 30];
+    let mut k = 0;
+    let mut i = 0;
+    while i < 6 {
+        let mut j = 0;
+        while j < 6 {
+            if i != j {
+                pairs[k] = (i, j);
+                k += 1;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    pairs
+};
+
+/// Rods (horn tip to platform joint) and horns (shaft centre to horn tip) as cylinders of
+/// the leg radius: every pair of rods, and every rod with another servo's horn, must stay
+/// twice the radius apart.
+fn clearance(
+    geometry: &Geometry,
+    limits: &Limits,
+    times: &[f64],
+    solutions: &[LegSolution],
+    motion: &ServoMotion,
+    out: &mut Collected,
+) {
+    let Some(radius) = limits.leg_radius else {
+        return;
+    };
+    let bases = geometry.base_joints();
+    let rods: Vec<[f64; 15]> = solutions
+        .iter()
+        .zip(&motion.tips)
+        .map(|(s, tips)| {
+            LEG_PAIRS.map(|(i, j)| {
+                segment_distance(tips[i], s.platform_joints[i], tips[j], s.platform_joints[j])
+            })
+        })
+        .collect();
+    scan_columns(
+        FindingKind::RodCollision,
+        "m",
+        Bound::AtLeast(2.0 * radius),
+        times,
+        &rods,
+        |pair| {
+            let (i, j) = LEG_PAIRS[pair];
+            vec![i + 1, j + 1]
+        },
+        out,
+    );
+    let horns: Vec<[f64; 30]> = solutions
+        .iter()
+        .zip(&motion.tips)
+        .map(|(s, tips)| {
+            ROD_HORN_PAIRS
+                .map(|(i, j)| segment_distance(tips[i], s.platform_joints[i], bases[j], tips[j]))
+        })
+        .collect();
+    scan_columns(
+        FindingKind::RodHornCollision,
+        "m",
+        Bound::AtLeast(2.0 * radius),
+        times,
+        &horns,
+        |pair| {
+            let (i, j) = ROD_HORN_PAIRS[pair];
+            vec![i + 1, j + 1]
+        },
+        out,
+    );
+}
