@@ -163,15 +163,7 @@ fn rotary_keys_are_checked_and_located() {
 
 #[test]
 fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
-    let dir = tempdir();
-    let out = dir.path().join("out");
-    let out = out.display().to_string();
-    for args in [
-        vec!["workspace"],
-        vec!["forces", "--mass", "1"],
-        vec!["render", "--out", &out],
-        vec!["plot", "--out", "x.svg"],
-    ] {
+    for args in [vec!["workspace"], vec!["forces", "--mass", "1"]] {
         let mut all = vec![args[0], "--scenario"];
         let s = scenario();
         all.push(&s);
@@ -389,5 +381,40 @@ fn check_reports_servo_angles_and_names_the_servo_past_its_range() {
     assert!(
         text.contains("servo angle (max)    worst 17.7287 deg (S5)"),
         "{text}"
+    );
+}
+
+#[test]
+fn plot_and_render_draw_servo_angles_and_servos() {
+    let dir = tempdir();
+    let s = scenario();
+    let svg = dir.path().join("servos.svg");
+    let o = stewart(&[
+        "plot",
+        "--scenario",
+        &s,
+        "--out",
+        &svg.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap_or_else(|e| panic!("{e}"));
+    assert!(text.contains("Servo angle θ (°)") && text.contains("θmax = 80°"));
+    assert_eq!(text.matches(r#"class="leg S"#).count(), 6);
+    let frames = dir.path().join("frames");
+    let o = stewart(&[
+        "render",
+        "--scenario",
+        &s,
+        "--out",
+        &frames.display().to_string(),
+        "--size",
+        "320x180",
+        "--frames",
+        "0..2",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_dir(&frames).map(|d| d.count()).unwrap_or(0),
+        2
     );
 }

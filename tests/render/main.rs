@@ -158,6 +158,83 @@ fn a_leg_over_its_stroke_shows_the_warning_colour() {
     );
 }
 
+/// Distance (largest channel difference, 0–255) from the pixel nearest `colour` among the
+/// pixels at `points` (world coordinates).
+fn closest_to(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
+    let target = [0, 1, 2].map(|k| (colour[k] * 255.0) as i32);
+    points
+        .iter()
+        .map(|&p| {
+            let (x, y) = project(camera, p, frame.width, frame.height);
+            let q = frame.pixel(x, y);
+            (0..3)
+                .map(|k| (q[k] as i32 - target[k]).abs())
+                .max()
+                .unwrap_or(255)
+        })
+        .min()
+        .unwrap_or(255)
+}
+
+#[test]
+fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
+    use stewart_kinematics::Scenario;
+    let mut off = offscreen();
+    let s = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let g = &s.geometry;
+    let pose = g.home_pose();
+    let (w, h) = (480, 320);
+    let (frame, camera) = render(&mut off, g, &pose, &Theme::LIGHT, w, h);
+    let scene = g.scene_frame(&pose, Vec::new());
+    let servos = scene.servos.unwrap_or_else(|| panic!("rotary scene"));
+    let v = |p: nalgebra::Vector3<f64>| Vec3::new(p.x as f32, p.y as f32, p.z as f32);
+    let horn_middles: Vec<Vec3> = servos
+        .iter()
+        .map(|s| v((s.shaft + s.horn_tip) * 0.5))
+        .collect();
+    let best = closest_to(&frame, &camera, &horn_middles, Theme::LIGHT.horn);
+    assert!(
+        best < 40,
+        "no horn pixel near the horn colour (closest {best})"
+    );
+    // The rods' middles show the rod colour, not the horn's.
+    let rod_middles: Vec<Vec3> = scene
+        .legs
+        .iter()
+        .map(|l| v((l.base + l.top) * 0.5))
+        .collect();
+    let best = closest_to(&frame, &camera, &rod_middles, Theme::LIGHT.leg_rod);
+    assert!(
+        best < 40,
+        "no rod pixel near the rod colour (closest {best})"
+    );
+    // A range of ±1°: every servo at home is past it, and its horn turns the warning colour.
+    let mut narrow = s.clone();
+    stewart_kinematics::settings::apply_all(
+        &mut narrow,
+        ["actuator.servo_min_deg=-1", "actuator.servo_max_deg=1"],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let lifted = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.125], [0.0; 3]);
+    let (warned, camera) = render(&mut off, &narrow.geometry, &lifted, &Theme::LIGHT, w, h);
+    let scene = narrow.geometry.scene_frame(&lifted, Vec::new());
+    let servos = scene.servos.unwrap_or_else(|| panic!("rotary scene"));
+    assert!(
+        servos
+            .iter()
+            .all(|s| s.status == stewart_kinematics::scene::LegStatus::OverLimit)
+    );
+    let horn_middles: Vec<Vec3> = servos
+        .iter()
+        .map(|s| v((s.shaft + s.horn_tip) * 0.5))
+        .collect();
+    let best = closest_to(&warned, &camera, &horn_middles, Theme::LIGHT.leg_over_limit);
+    assert!(
+        best < 40,
+        "no horn pixel near the warning colour (closest {best})"
+    );
+}
+
 #[test]
 fn a_bad_size_is_an_error_not_a_panic() {
     let mut off = offscreen();

@@ -78,11 +78,13 @@ fn check(name: &str, frame: &Frame) {
 }
 
 #[test]
-fn seed_and_paired_match_their_references_in_both_themes() {
+fn presets_match_their_references() {
     let mut off = offscreen();
     let seed = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
     let paired = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
     let tilted = Pose::from_xyz_rpy_deg([0.08, -0.05, 0.85], [6.0, -4.0, 12.0]);
+    let servo = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let servo_pose = Pose::from_xyz_rpy_deg([0.01, -0.008, 0.118], [5.0, -4.0, 8.0]);
     for (name, s, pose, theme) in [
         (
             "seed_home_dark",
@@ -98,6 +100,7 @@ fn seed_and_paired_match_their_references_in_both_themes() {
         ),
         ("paired_tilted_dark", &paired, tilted, Theme::DARK),
         ("paired_tilted_light", &paired, tilted, Theme::LIGHT),
+        ("servo_desk_tilted_dark", &servo, servo_pose, Theme::DARK),
     ] {
         let (frame, _) = render(&mut off, &s.geometry, &pose, &theme, SIZE.0, SIZE.1);
         check(name, &frame);

@@ -21,6 +21,7 @@
 //! - [`table`]: numeric CSV tables with located errors;
 //! - [`text`]: input text with a size cap and plain words for foreign encodings.
 
+pub mod actuation;
 pub mod angle;
 pub mod architecture;
 pub mod batch;

@@ -259,6 +259,22 @@ impl RotaryActuators {
         if ratio.is_nan() { f64::INFINITY } else { ratio }
     }
 
+    /// The angle of servo `i` whose horn tip comes closest to platform joint `joint` when
+    /// no angle reaches it: the horn pointing towards the joint (`L > 0`, joint too far)
+    /// or away from it (`L < 0`, too near). Where the joint can be reached this is where
+    /// the rod would be in line with the horn.
+    pub fn closest_angle(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> Angle {
+        let [big_l, m, n] = self.closure_terms(i, base, joint);
+        // N cos θ + M sin θ is largest at θ = atan2(M, N), smallest half a turn away.
+        let towards = m.atan2(n);
+        let theta = if big_l >= 0.0 {
+            towards
+        } else {
+            towards + std::f64::consts::PI
+        };
+        Angle::from_radians(wrap_half_turn(theta))
+    }
+
     /// Servo `i`'s angle (from 0) that puts its rod's end on platform joint `joint` (base
     /// frame), for shaft centre `base`; or why none does.
     pub fn servo_angle(

@@ -2,7 +2,7 @@
 //! Pure CPU work, tested without a GPU.
 
 use glam::{Mat3, Mat4, Quat, Vec3};
-use stewart_kinematics::scene::SceneFrame;
+use stewart_kinematics::scene::{LegStatus, SceneFrame, ServoFrame};
 
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
@@ -41,11 +41,18 @@ pub struct DrawList {
     pub spheres: Vec<MeshInstance>,
     /// Instances of the unit cone.
     pub cones: Vec<MeshInstance>,
+    /// Instances of the unit box (servo bodies).
+    pub boxes: Vec<MeshInstance>,
     /// Translucent plates: mesh (world coordinates), linear colour, centre (for sorting).
     pub plates: Vec<(Mesh, [f32; 4], Vec3)>,
     /// Line segments (pairs of vertices).
     pub lines: Vec<LineVertex>,
 }
+
+/// Radii, as fractions of the larger plate's radius.
+const BODY_RADIUS: f32 = 0.030;
+const ROD_RADIUS: f32 = 0.017;
+const JOINT_RADIUS: f32 = 0.040;
 
 fn v3(v: &nalgebra::Vector3<f64>) -> Vec3 {
     Vec3::new(v.x as f32, v.y as f32, v.z as f32)
@@ -80,35 +87,14 @@ impl DrawList {
     pub fn build(frame: &SceneFrame, theme: &Theme, overlays: &Overlays) -> DrawList {
         let mut list = DrawList::default();
         let s = frame.base_radius.max(frame.platform_radius) as f32;
-        let body_radius = 0.030 * s;
-        let rod_radius = 0.017 * s;
-        let joint_radius = 0.040 * s;
+        let joint_radius = JOINT_RADIUS * s;
         let plate_thickness = 0.025 * s;
 
-        // Legs: an actuator body from the base joint and a thinner rod from the platform
-        // joint; the body is as long as the shortest leg (or 55 % of the leg).
-        for leg in &frame.legs {
-            let (base, top) = (v3(&leg.base), v3(&leg.top));
-            let length = leg.length as f32;
-            let dir = (top - base).normalize_or(Vec3::Z);
-            let body_length = leg
-                .min_length
-                .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
-            let (body, rod) = theme.leg_colours(leg.status);
-            list.cylinders.push(along(
-                base,
-                base + dir * body_length,
-                body_radius,
-                linear(body),
-            ));
-            list.cylinders.push(along(
-                base + dir * (body_length - 0.02 * s),
-                top,
-                rod_radius,
-                linear(rod),
-            ));
+        match &frame.servos {
+            None => list.linear_legs(frame, theme, s),
+            Some(servos) => list.servos(frame, servos, theme, s),
         }
-        for p in frame.base_joints.iter().chain(&frame.platform_joints) {
+        for p in &frame.platform_joints {
             list.spheres
                 .push(ball(v3(p), joint_radius, linear(theme.joint)));
         }
@@ -155,6 +141,88 @@ impl DrawList {
             }
         }
         list
+    }
+
+    /// Linear legs: an actuator body from the base joint and a thinner rod from the
+    /// platform joint; the body is as long as the shortest leg (or 55 % of the leg).
+    /// `s` is the size of the larger plate.
+    fn linear_legs(&mut self, frame: &SceneFrame, theme: &Theme, s: f32) {
+        for leg in &frame.legs {
+            let (base, top) = (v3(&leg.base), v3(&leg.top));
+            let length = leg.length as f32;
+            let dir = (top - base).normalize_or(Vec3::Z);
+            let body_length = leg
+                .min_length
+                .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
+            let (body, rod) = theme.leg_colours(leg.status);
+            self.cylinders.push(along(
+                base,
+                base + dir * body_length,
+                BODY_RADIUS * s,
+                linear(body),
+            ));
+            self.cylinders.push(along(
+                base + dir * (body_length - 0.02 * s),
+                top,
+                ROD_RADIUS * s,
+                linear(rod),
+            ));
+        }
+        for p in &frame.base_joints {
+            self.spheres
+                .push(ball(v3(p), JOINT_RADIUS * s, linear(theme.joint)));
+        }
+    }
+
+    /// Rotary servos: a servo body (box) beside each shaft on the side facing the base
+    /// centre, a short shaft, the horn (thick, in the horn colour) from shaft to tip, a
+    /// ball joint on the tip and the thin rod to the platform joint. Body, horn and rod
+    /// take the warning colours when the servo is near or past its range.
+    fn servos(&mut self, frame: &SceneFrame, servos: &[ServoFrame; 6], theme: &Theme, s: f32) {
+        for (servo, leg) in servos.iter().zip(&frame.legs) {
+            let shaft = v3(&servo.shaft);
+            let tip = v3(&servo.horn_tip);
+            let horn = (tip - shaft).length().max(1e-6);
+            let axis = v3(&servo.axis).normalize_or(Vec3::Y);
+            let side = if (-shaft).dot(axis) >= 0.0 {
+                axis
+            } else {
+                -axis
+            };
+            let (body, rod) = theme.leg_colours(servo.status);
+            let horn_colour = if servo.status == LegStatus::Normal {
+                theme.horn
+            } else {
+                body
+            };
+            // The body: 1.3 horns long along the horn's zero direction, 1.1 high, 0.6
+            // deep along the shaft, the shaft near its front end.
+            let forward = Vec3::Z.cross(side);
+            let gap = 0.18 * horn;
+            let origin = shaft + side * gap - forward * (0.35 * horn) - Vec3::Z * (0.15 * horn);
+            let model = Mat4::from_cols(
+                (forward * 1.3 * horn).extend(0.0),
+                (Vec3::Z * 1.1 * horn).extend(0.0),
+                (side * 0.6 * horn).extend(0.0),
+                origin.extend(1.0),
+            );
+            self.boxes.push(MeshInstance {
+                model: model.to_cols_array_2d(),
+                color: linear(body),
+            });
+            self.cylinders.push(along(
+                shaft - side * (0.06 * horn),
+                shaft + side * gap,
+                0.10 * horn,
+                linear(theme.joint),
+            ));
+            self.cylinders
+                .push(along(shaft, tip, 0.13 * horn, linear(horn_colour)));
+            self.cylinders
+                .push(along(tip, v3(&leg.top), ROD_RADIUS * s, linear(rod)));
+            self.spheres
+                .push(ball(tip, 0.16 * horn, linear(theme.joint)));
+        }
     }
 
     /// Three arrows (shaft and cone) along the columns of `axes`.
@@ -250,5 +318,41 @@ mod tests {
         assert!((end - v3(&frame.platform_joints[0])).length() < 1e-5);
         let body = Mat4::from_cols_array_2d(&list.cylinders[0].model);
         assert!((body.transform_point3(Vec3::ZERO) - v3(&frame.base_joints[0])).length() < 1e-6);
+    }
+
+    #[test]
+    fn servos_get_a_body_a_horn_from_shaft_to_tip_and_a_rod_to_the_joint() {
+        let s =
+            stewart_kinematics::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let g = &s.geometry;
+        let frame = g.scene_frame(&g.home_pose(), Vec::new());
+        let overlays = Overlays {
+            grid: false,
+            base_axes: false,
+            platform_axes: false,
+            path: false,
+        };
+        let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
+        let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));
+        assert_eq!(list.boxes.len(), 6);
+        // Per servo: shaft stub, horn, rod; balls on the horn tips and platform joints.
+        assert_eq!(list.cylinders.len(), 18);
+        assert_eq!(list.spheres.len(), 12);
+        let horn_colour = linear(Theme::LIGHT.horn);
+        for (k, servo) in servos.iter().enumerate() {
+            let horn = &list.cylinders[3 * k + 1];
+            assert_eq!(horn.color, horn_colour);
+            let m = Mat4::from_cols_array_2d(&horn.model);
+            assert!((m.transform_point3(Vec3::ZERO) - v3(&servo.shaft)).length() < 1e-6);
+            assert!((m.transform_point3(Vec3::Z) - v3(&servo.horn_tip)).length() < 1e-6);
+            let rod = Mat4::from_cols_array_2d(&list.cylinders[3 * k + 2].model);
+            let end = rod.transform_point3(Vec3::Z);
+            assert!((end - v3(&frame.platform_joints[k])).length() < 1e-6);
+            // The body sits beside the shaft, not on the horn's swing plane.
+            let body = Mat4::from_cols_array_2d(&list.boxes[k].model);
+            let centre = body.transform_point3(Vec3::new(0.0, 0.0, 0.5));
+            let along_shaft = (centre - v3(&servo.shaft)).dot(v3(&servo.axis)).abs();
+            assert!(along_shaft > 0.3 * 0.025, "{along_shaft}");
+        }
     }
 }

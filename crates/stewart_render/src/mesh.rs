@@ -1,4 +1,5 @@
-//! Triangle meshes: unit cylinder, unit cone, unit sphere, and plates built from joints.
+//! Triangle meshes: unit cylinder, unit cone, unit sphere, unit box, and plates built
+//! from joints.
 //!
 //! Instances place them with a rotation times a scale along their own axes (radius in x
 //! and y, length in z); normals are then transformed by the inverse transpose of that
@@ -109,6 +110,35 @@ impl Mesh {
                 let (a, b) = (r * row + k, r * row + k + 1);
                 let (c, d) = ((r + 1) * row + k, (r + 1) * row + k + 1);
                 m.indices.extend([a, c, d, a, d, b]);
+            }
+        }
+        m
+    }
+
+    /// A box from (−0.5, −0.5, 0) to (0.5, 0.5, 1): flat faces with their own normals
+    /// (four vertices each), placed like the cylinder (size in x and y, length in z).
+    pub fn cuboid() -> Mesh {
+        let mut m = Mesh::default();
+        for axis in 0..3 {
+            // u × v = e_axis: counter-clockwise in (u, v) faces +e_axis.
+            let (mut u, mut v) = (Vec3::ZERO, Vec3::ZERO);
+            u[(axis + 1) % 3] = 1.0;
+            v[(axis + 2) % 3] = 1.0;
+            for sign in [-1.0f32, 1.0] {
+                let mut n = Vec3::ZERO;
+                n[axis] = sign;
+                let centre = Vec3::new(0.0, 0.0, 0.5) + 0.5 * n;
+                let first = m.vertices.len() as u32;
+                for (a, b) in [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)] {
+                    m.vertex(centre + a * u + b * v, n);
+                }
+                if sign > 0.0 {
+                    m.indices
+                        .extend([first, first + 1, first + 2, first, first + 2, first + 3]);
+                } else {
+                    m.indices
+                        .extend([first, first + 2, first + 1, first, first + 3, first + 2]);
+                }
             }
         }
         m
@@ -225,6 +255,7 @@ mod tests {
         check_closed_and_outward(&Mesh::cylinder(), Vec3::new(0.0, 0.0, 0.5));
         check_closed_and_outward(&Mesh::cone(), Vec3::new(0.0, 0.0, 0.2));
         check_closed_and_outward(&Mesh::sphere(), Vec3::ZERO);
+        check_closed_and_outward(&Mesh::cuboid(), Vec3::new(0.0, 0.0, 0.5));
         let corners: Vec<Vec3> = [5, 1, 3, 0, 2, 4]
             .iter()
             .map(|&k| {

@@ -51,6 +51,7 @@ pub struct Renderer {
     cylinder: GpuMesh,
     sphere: GpuMesh,
     cone: GpuMesh,
+    cuboid: GpuMesh,
     /// MSAA sample count the pipelines were built for.
     pub samples: u32,
     /// Colour format the pipelines were built for.
@@ -187,6 +188,7 @@ impl Renderer {
             cylinder: GpuMesh::new(device, &Mesh::cylinder(), "cylinder"),
             sphere: GpuMesh::new(device, &Mesh::sphere(), "sphere"),
             cone: GpuMesh::new(device, &Mesh::cone(), "cone"),
+            cuboid: GpuMesh::new(device, &Mesh::cuboid(), "box"),
             samples,
             format,
         }
@@ -237,9 +239,13 @@ impl Renderer {
             a: 1.0,
         };
 
-        // Instances: cylinders, spheres, cones, then one identity instance per plate.
+        // Instances: cylinders, spheres, cones, boxes, then one identity instance per plate.
         let mut instances: Vec<MeshInstance> = Vec::with_capacity(
-            list.cylinders.len() + list.spheres.len() + list.cones.len() + list.plates.len(),
+            list.cylinders.len()
+                + list.spheres.len()
+                + list.cones.len()
+                + list.boxes.len()
+                + list.plates.len(),
         );
         let range = |items: &[MeshInstance], all: &mut Vec<MeshInstance>| {
             let start = all.len() as u32;
@@ -249,6 +255,7 @@ impl Renderer {
         let cylinders = range(&list.cylinders, &mut instances);
         let spheres = range(&list.spheres, &mut instances);
         let cones = range(&list.cones, &mut instances);
+        let boxes = range(&list.boxes, &mut instances);
         // Plates back to front from the eye.
         let mut order: Vec<usize> = (0..list.plates.len()).collect();
         order.sort_by(|&a, &b| {
@@ -284,6 +291,7 @@ impl Renderer {
             cylinders,
             spheres,
             cones,
+            boxes,
             plates,
             lines: list.lines.len() as u32,
         };
@@ -303,6 +311,7 @@ impl Renderer {
             (&self.cylinder, &view.batches.cylinders),
             (&self.sphere, &view.batches.spheres),
             (&self.cone, &view.batches.cones),
+            (&self.cuboid, &view.batches.boxes),
         ] {
             if range.is_empty() {
                 continue;

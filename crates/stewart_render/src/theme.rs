@@ -24,6 +24,8 @@ pub struct Theme {
     pub leg_near_limit: Srgba,
     /// A leg over its stroke.
     pub leg_over_limit: Srgba,
+    /// Servo horns of a rotary platform (rods take `leg_rod`, servo bodies `leg_body`).
+    pub horn: Srgba,
     /// Joints.
     pub joint: Srgba,
     /// The path traced by the platform centre.
@@ -43,6 +45,7 @@ impl Theme {
         leg_rod: [0.75, 0.80, 0.88, 1.0],
         leg_near_limit: [1.0, 0.60, 0.10, 1.0],
         leg_over_limit: [1.0, 0.88, 0.0, 1.0],
+        horn: [0.96, 0.96, 0.93, 1.0],
         joint: [0.90, 0.90, 0.92, 1.0],
         path: [0.35, 0.85, 0.95, 1.0],
         axes: [
@@ -62,6 +65,7 @@ impl Theme {
         leg_rod: [0.45, 0.50, 0.58, 1.0],
         leg_near_limit: [0.95, 0.50, 0.0, 1.0],
         leg_over_limit: [1.0, 0.80, 0.0, 1.0],
+        horn: [0.15, 0.62, 0.52, 1.0],
         joint: [0.20, 0.20, 0.22, 1.0],
         path: [0.05, 0.55, 0.70, 1.0],
         axes: [

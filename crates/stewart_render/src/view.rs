@@ -52,6 +52,7 @@ pub(crate) struct Batches {
     pub(crate) cylinders: std::ops::Range<u32>,
     pub(crate) spheres: std::ops::Range<u32>,
     pub(crate) cones: std::ops::Range<u32>,
+    pub(crate) boxes: std::ops::Range<u32>,
     /// (first index, index count) of each plate in the plate buffer, back to front, and its instance.
     pub(crate) plates: Vec<(u32, u32, u32)>,
     pub(crate) lines: u32,

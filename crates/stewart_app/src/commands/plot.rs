@@ -14,7 +14,6 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode> {
     let out = output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     out.require_file()?;
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "plot")?;
     let bytes = plot_file(&scenario, &args.out)?;
     out.write_bytes(&bytes)?;
     Ok(ExitCode::SUCCESS)

@@ -15,7 +15,6 @@ use crate::source;
 /// Run the command.
 pub fn run(args: &RenderArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "render")?;
     let camera = args.camera.map(|[az, el, dist]| OrbitCamera {
         azimuth_deg: az as f32,
         elevation_deg: el as f32,

@@ -1,8 +1,10 @@
-//! The leg-length plot as SVG: axes with units, ticks, legend L1…L6, stroke limits as
-//! dashed lines, white background, sized for a paper (16 cm × 9 cm). Text is SVG text and
+//! The actuator plot as SVG — leg lengths L1…L6 (m) or servo angles θ1…θ6 (°): axes
+//! with units, ticks, a legend, the stroke or servo range as dashed lines, white background, sized for a paper (16 cm × 9 cm). Text is SVG text and
 //! every curve a `<polyline>`, so the vector outputs are real vectors.
 
 use std::fmt::Write as _;
+
+use stewart_kinematics::actuation::Quantity;
 
 /// Okabe–Ito colours: distinguishable with colour-blindness and in grey print.
 pub const LEG_COLOURS: [&str; 6] = [
@@ -15,12 +17,12 @@ pub struct PlotData<'a> {
     pub title: &'a str,
     /// Sample times, seconds.
     pub times: &'a [f64],
-    /// Six leg lengths per sample, metres.
-    pub lengths: &'a [[f64; 6]],
-    /// Stroke limits, metres.
-    pub leg_min: Option<f64>,
-    /// Stroke limits, metres.
-    pub leg_max: Option<f64>,
+    /// Six values per sample in the quantity's unit (NaN: no value, a gap in the curve).
+    pub values: &'a [[f64; 6]],
+    /// What the values are: leg lengths or servo angles.
+    pub quantity: Quantity,
+    /// The quantity's limits (stroke or servo range), each end optional.
+    pub limits: [Option<f64>; 2],
     /// A vertical marker at this time (the current frame of a video), seconds.
     pub marker: Option<f64>,
 }
@@ -28,17 +30,27 @@ pub struct PlotData<'a> {
 /// The plot of `scenario`'s trajectory: its sample times and the SVG.
 pub fn scenario_svg(scenario: &stewart_kinematics::Scenario) -> (Vec<f64>, String) {
     let samples = scenario.motion.sample();
-    let lengths = scenario.geometry.leg_lengths_batch(&samples.poses);
-    let stroke = scenario.geometry.stroke();
+    let g = &scenario.geometry;
+    let values = g.actuator_values(&samples.poses);
+    let quantity = g.quantity();
     let text = svg(&PlotData {
-        title: &format!("Leg lengths — {}", scenario.name),
+        title: &format!("{}s — {}", capitalised(quantity.name), scenario.name),
         times: &samples.times,
-        lengths: &lengths,
-        leg_min: stroke.min,
-        leg_max: stroke.max,
+        values: &values,
+        quantity,
+        limits: g.quantity_limits(),
         marker: None,
     });
     (samples.times, text)
+}
+
+/// `text` with its first letter in upper case.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map(|c| c.to_uppercase().chain(chars).collect())
+        .unwrap_or_default()
 }
 
 /// Page size in CSS pixels (96 per inch): 16 cm × 9 cm.
@@ -78,11 +90,11 @@ pub fn svg(data: &PlotData) -> String {
     let t1 = data.times.last().copied().unwrap_or(1.0).max(t0 + 1e-9);
     let mut lo = f64::INFINITY;
     let mut hi = f64::NEG_INFINITY;
-    for l in data.lengths.iter().flatten() {
+    for l in data.values.iter().flatten().filter(|v| !v.is_nan()) {
         lo = lo.min(*l);
         hi = hi.max(*l);
     }
-    for limit in [data.leg_min, data.leg_max].into_iter().flatten() {
+    for limit in data.limits.into_iter().flatten() {
         lo = lo.min(limit);
         hi = hi.max(limit);
     }
@@ -96,6 +108,12 @@ pub fn svg(data: &PlotData) -> String {
     let sx = |t: f64| x0 + (t - t0) / (t1 - t0) * (x1 - x0);
     let sy = |l: f64| y0 + (l - lo) / (hi - lo) * (y1 - y0);
 
+    let q = data.quantity;
+    let unit_suffix = if q.unit == "°" {
+        "°".to_owned()
+    } else {
+        format!(" {}", q.unit)
+    };
     let mut s = String::new();
     // Writing to a String cannot fail.
     let _ = writeln!(
@@ -178,11 +196,15 @@ pub fn svg(data: &PlotData) -> String {
     );
     let _ = writeln!(
         s,
-        r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">Leg length L (m)</text>"#,
-        0.5 * (y0 + y1)
+        r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">{1} {2} ({3})</text>"#,
+        0.5 * (y0 + y1),
+        capitalised(q.name),
+        q.symbol,
+        q.unit
     );
-    // Stroke limits.
-    for (name, limit) in [("min", data.leg_min), ("max", data.leg_max)] {
+    // Stroke or servo range.
+    let [min, max] = data.limits;
+    for (name, limit) in [("min", min), ("max", max)] {
         if let Some(l) = limit {
             let y = sy(l);
             let _ = writeln!(
@@ -191,25 +213,38 @@ pub fn svg(data: &PlotData) -> String {
             );
             let _ = writeln!(
                 s,
-                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">L{name} = {l} m</text>"##,
+                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">{}{name} = {l}{}</text>"##,
                 x1 - 4.0,
-                y - 3.0
+                y - 3.0,
+                q.symbol,
+                unit_suffix
             );
         }
     }
-    // Curves.
+    // Curves: one polyline per run of values (a servo out of reach breaks its curve).
     for leg in 0..6 {
-        let mut points = String::with_capacity(data.lengths.len() * 16);
-        for (t, l) in data.times.iter().zip(data.lengths) {
-            let _ = write!(points, "{:.2},{:.2} ", sx(*t), sy(l[leg]));
+        let mut points = String::with_capacity(data.values.len() * 16);
+        let flush = |points: &mut String, s: &mut String| {
+            if !points.is_empty() {
+                let _ = writeln!(
+                    s,
+                    r#"<polyline class="leg {}{}" fill="none" stroke="{}" stroke-width="1.4" stroke-linejoin="round" points="{}"/>"#,
+                    q.letter,
+                    leg + 1,
+                    LEG_COLOURS[leg],
+                    points.trim_end()
+                );
+                points.clear();
+            }
+        };
+        for (t, l) in data.times.iter().zip(data.values) {
+            if l[leg].is_nan() {
+                flush(&mut points, &mut s);
+            } else {
+                let _ = write!(points, "{:.2},{:.2} ", sx(*t), sy(l[leg]));
+            }
         }
-        let _ = writeln!(
-            s,
-            r#"<polyline class="leg L{}" fill="none" stroke="{}" stroke-width="1.4" stroke-linejoin="round" points="{}"/>"#,
-            leg + 1,
-            LEG_COLOURS[leg],
-            points.trim_end()
-        );
+        flush(&mut points, &mut s);
     }
     if let Some(t) = data.marker {
         let x = sx(t.clamp(t0, t1));
@@ -224,12 +259,13 @@ pub fn svg(data: &PlotData) -> String {
         let y = y1 + 14.0 + 16.0 * leg as f64;
         let _ = writeln!(
             s,
-            r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="{}" stroke-width="2"/><text x="{:.2}" y="{:.2}">L{}</text>"#,
+            r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="{}" stroke-width="2"/><text x="{:.2}" y="{:.2}">{}{}</text>"#,
             x1 + 8.0,
             x1 + 26.0,
             colour,
             x1 + 31.0,
             y + 4.0,
+            q.symbol,
             leg + 1
         );
     }
@@ -285,9 +321,9 @@ mod tests {
         let text = svg(&PlotData {
             title: "a < b",
             times: &times,
-            lengths: &lengths,
-            leg_min: Some(0.9),
-            leg_max: Some(1.2),
+            values: &lengths,
+            quantity: stewart_kinematics::actuation::LEG_LENGTH,
+            limits: [Some(0.9), Some(1.2)],
             marker: Some(5.0),
         });
         assert_eq!(text.matches("<polyline").count(), 6);
@@ -295,5 +331,27 @@ mod tests {
         assert!(text.contains("stroke-dasharray") && text.contains("Lmax = 1.2 m"));
         assert!(text.contains("a &lt; b"));
         assert!(text.contains(r#"class="marker""#));
+    }
+
+    #[test]
+    fn servo_angles_plot_in_degrees_with_gaps_where_out_of_reach() {
+        let times: Vec<f64> = (0..11).map(|k| k as f64).collect();
+        let mut angles: Vec<[f64; 6]> = times.iter().map(|t| [2.0 * t - 10.0; 6]).collect();
+        // Servo 3 cannot reach at t = 4 and 5: its curve breaks in two.
+        angles[4][2] = f64::NAN;
+        angles[5][2] = f64::NAN;
+        let text = svg(&PlotData {
+            title: "servos",
+            times: &times,
+            values: &angles,
+            quantity: stewart_kinematics::actuation::SERVO_ANGLE,
+            limits: [Some(-80.0), Some(80.0)],
+            marker: None,
+        });
+        assert_eq!(text.matches("<polyline").count(), 7);
+        assert_eq!(text.matches(r#"class="leg S3""#).count(), 2);
+        assert!(text.contains("Servo angle θ (°)"), "{text}");
+        assert!(text.contains("θmax = 80°") && text.contains(">θ6</text>"));
+        assert!(!text.contains("NaN"));
     }
 }

@@ -1,7 +1,7 @@
 //! Scenario presets shipped in `assets/presets/` and compiled into the program.
 
 /// Every preset: its name and its TOML text.
-pub const PRESETS: [(&str, &str); 7] = [
+pub const PRESETS: [(&str, &str); 9] = [
     ("seed", include_str!("../../../../assets/presets/seed.toml")),
     (
         "paired",
@@ -23,6 +23,14 @@ pub const PRESETS: [(&str, &str); 7] = [
     (
         "keyframes",
         include_str!("../../../../assets/presets/keyframes.toml"),
+    ),
+    (
+        "servo-desk",
+        include_str!("../../../../assets/presets/servo-desk.toml"),
+    ),
+    (
+        "crank-rig",
+        include_str!("../../../../assets/presets/crank-rig.toml"),
     ),
 ];
 

@@ -1,0 +1,112 @@
+//! What the actuators do, whatever their kind: the quantity that drives each joint (a
+//! leg's length, or a servo's angle), its name and unit, its limits, and its value along
+//! a motion. The plots, leg bars and readouts read it from here.
+
+use crate::geometry::Geometry;
+use crate::pose::Pose;
+
+/// The quantity that drives each joint, in words.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Quantity {
+    /// `leg length` or `servo angle`.
+    pub name: &'static str,
+    /// `L` or `θ`: with the actuator's number, the curve's label (`L1`, `θ1`).
+    pub symbol: &'static str,
+    /// What each actuator is called, for labels such as `leg L3` / `servo S3`.
+    pub part: &'static str,
+    /// `L` or `S`: with the number, the actuator's name (`L3`, `S3`).
+    pub letter: &'static str,
+    /// `m` or `°`.
+    pub unit: &'static str,
+}
+
+/// Linear legs: lengths in metres.
+pub const LEG_LENGTH: Quantity = Quantity {
+    name: "leg length",
+    symbol: "L",
+    part: "leg",
+    letter: "L",
+    unit: "m",
+};
+
+/// Rotary servos: angles in degrees.
+pub const SERVO_ANGLE: Quantity = Quantity {
+    name: "servo angle",
+    symbol: "θ",
+    part: "servo",
+    letter: "S",
+    unit: "°",
+};
+
+impl Geometry {
+    /// The quantity that drives the joints: leg length or servo angle.
+    pub fn quantity(&self) -> Quantity {
+        if self.rotary().is_some() {
+            SERVO_ANGLE
+        } else {
+            LEG_LENGTH
+        }
+    }
+
+    /// The limits of that quantity: the stroke (m) or the servo range (°), each end
+    /// optional.
+    pub fn quantity_limits(&self) -> [Option<f64>; 2] {
+        match self.rotary() {
+            Some(servos) => match servos.range() {
+                Some((min, max)) => [Some(min.degrees()), Some(max.degrees())],
+                None => [None, None],
+            },
+            None => [self.stroke().min, self.stroke().max],
+        }
+    }
+
+    /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
+    /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
+    pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
+        let Some(servos) = self.rotary() else {
+            return self.leg_lengths_batch(poses);
+        };
+        if let Some(Ok(all)) = self.servo_angles_batch(poses) {
+            return all;
+        }
+        let bases = self.base_joints();
+        poses
+            .iter()
+            .map(|p| {
+                let joints = self.inverse(p).platform_joints;
+                std::array::from_fn(|i| {
+                    servos
+                        .servo_angle(i, &bases[i], &joints[i])
+                        .map_or(f64::NAN, |a| a.degrees())
+                })
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::servo_geometry;
+
+    #[test]
+    fn values_are_lengths_or_angles_with_gaps_where_out_of_reach() {
+        let seed = Geometry::seed();
+        let home = seed.home_pose();
+        assert_eq!(seed.actuator_values(&[home]), vec![seed.leg_lengths(&home)]);
+        assert_eq!(seed.quantity(), LEG_LENGTH);
+        assert_eq!(seed.quantity_limits(), [None, None]);
+        let g = servo_geometry();
+        assert_eq!(g.quantity().symbol, "θ");
+        let high = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.3], [0.0; 3]);
+        let values = g.actuator_values(&[g.home_pose(), high]);
+        let angles = g
+            .servo_angles(&g.home_pose())
+            .and_then(Result::ok)
+            .unwrap_or_else(|| panic!("home reachable"));
+        for i in 0..6 {
+            assert!((values[0][i] - angles[i].degrees()).abs() < 1e-9);
+            assert!(values[1][i].is_nan());
+        }
+    }
+}
