@@ -4,6 +4,7 @@
 mod export;
 mod files;
 mod modes;
+mod rotary;
 mod snapshots;
 mod trajectory;
 

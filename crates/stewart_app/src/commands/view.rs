@@ -11,7 +11,6 @@ use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
 /// Run the command.
 pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "view")?;
     let mut state = ViewerState::new(scenario);
     state.look.light_theme = args.light;
     state.look.presentation = args.presentation;

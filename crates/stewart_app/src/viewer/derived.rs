@@ -16,7 +16,7 @@ pub const PLOT_SAMPLES: usize = 20_000;
 pub struct Derived {
     /// Sample times (at most [`PLOT_SAMPLES`], both ends kept), seconds.
     pub times: Vec<f64>,
-    /// Leg lengths at those times, metres.
+    /// Leg lengths (m) or servo angles (°, NaN out of reach) at those times.
     pub lengths: Vec<[f64; 6]>,
     /// Platform-centre positions at those times, for the traced path.
     pub centres: Vec<Vector3<f64>>,
@@ -61,7 +61,7 @@ impl Derived {
             .iter()
             .map(|&t| scenario.motion.trajectory.pose_at(t))
             .collect();
-        self.lengths = g.leg_lengths_batch(&poses);
+        self.lengths = g.actuator_values(&poses);
         self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
         self.report.request(scenario.clone());
     }

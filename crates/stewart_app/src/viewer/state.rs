@@ -131,10 +131,6 @@ impl ViewerState {
     /// scenario untouched; either way the outcome is shown in the Scenario panel.
     pub fn open_file(&mut self, path: &Path) {
         self.files.status = Some(match Scenario::load(path) {
-            Ok(s) if s.geometry.rotary().is_some() => Err(format!(
-                "{}: rotary servo platforms are not shown by the viewer yet (`stewart solve` gives their servo angles)",
-                path.display()
-            )),
             Ok(s) => {
                 let name = s.name.clone();
                 self.load_scenario(s);
@@ -239,9 +235,10 @@ impl ViewerState {
     pub fn advance(&mut self, dt: f64) -> bool {
         self.playback.clock += dt;
         if self.playback.mode == MotionMode::Manual {
-            let lengths = self.legs().lengths;
+            let pose = self.pose();
+            let values = self.scenario.geometry.actuator_values(&[pose]);
             let clock = self.playback.clock;
-            self.playback.history.push(clock, lengths);
+            self.playback.history.push(clock, values[0]);
             return false;
         }
         let duration = self.duration();

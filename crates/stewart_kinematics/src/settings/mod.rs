@@ -7,6 +7,7 @@
 //! validated by the same constructors the file reader uses ([`crate::Geometry::new`],
 //! [`crate::Sampling::with_start`]), so a refused value leaves the scenario as it was.
 
+mod actuator_kind;
 mod catalogue;
 mod kinds;
 mod target;
@@ -17,6 +18,7 @@ use std::sync::LazyLock;
 use thiserror::Error;
 
 use crate::scenario::Scenario;
+pub use actuator_kind::switch_actuator;
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
     ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,

@@ -1,8 +1,11 @@
-//! Geometry: radii, home height, stroke, layout with its separation angles, every joint
-//! angle and the pivot.
+//! Geometry: radii, home height, the actuator kind (linear legs with their stroke, or
+//! rotary servos with horns, rods, range and trims), layout with its separation angles,
+//! every joint angle and the pivot.
 
 use stewart_kinematics::Layout;
-use stewart_kinematics::settings::{GeometryKey, Group, Target};
+use stewart_kinematics::settings::{
+    self, ActuatorKey, ActuatorKind, GeometryKey, Group, Target, switch_actuator,
+};
 
 use super::widgets::{edit_error, setting_slider};
 use crate::viewer::state::ViewerState;
@@ -16,11 +19,10 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 GeometryKey::BaseRadius,
                 GeometryKey::PlatformRadius,
                 GeometryKey::HomeHeight,
-                GeometryKey::LegMin,
-                GeometryKey::LegMax,
             ] {
                 setting_slider(ui, state, Target::Geometry(key));
             }
+            actuators(ui, state);
             layout(ui, state);
             egui::CollapsingHeader::new("Joint angles")
                 .default_open(state.look.expand_panels)
@@ -40,6 +42,61 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                     }
                 });
             edit_error(ui, state, &[Group::Geometry]);
+        });
+}
+
+/// The actuator kind and its numbers: the stroke of linear legs (sliders that apply to
+/// legs only), or the servos' horns, rods, range, directions and trims, and the level
+/// home height.
+fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let rotary = state.scenario().geometry.rotary().is_some();
+    let mut chosen = None;
+    ui.horizontal(|ui| {
+        ui.label("Actuators:");
+        if ui.selectable_label(!rotary, "Linear legs").clicked() && rotary {
+            chosen = Some(ActuatorKind::Linear);
+        }
+        if ui.selectable_label(rotary, "Rotary servos").clicked() && !rotary {
+            chosen = Some(ActuatorKind::Rotary);
+        }
+    });
+    if let Some(kind) = chosen {
+        state.edit(Group::Geometry, |s| switch_actuator(s, kind));
+    }
+    // Each slider shows only for the kind it belongs to.
+    for key in [GeometryKey::LegMin, GeometryKey::LegMax] {
+        setting_slider(ui, state, Target::Geometry(key));
+    }
+    for key in [
+        ActuatorKey::HornLength,
+        ActuatorKey::RodLength,
+        ActuatorKey::ServoMin,
+        ActuatorKey::ServoMax,
+    ] {
+        setting_slider(ui, state, Target::Actuator(key));
+    }
+    let Some(level) = state.scenario().geometry.servo_home_height() else {
+        return;
+    };
+    let home = settings::of(Target::Geometry(GeometryKey::HomeHeight));
+    if ui
+        .button(format!("Level home height ({level:.4} m)"))
+        .on_hover_text(
+            "the height where the servos stand level with the platform centred and level",
+        )
+        .clicked()
+    {
+        state.apply(home, Some(level));
+    }
+    egui::CollapsingHeader::new("Horn directions and trims")
+        .default_open(state.look.expand_panels)
+        .show(ui, |ui| {
+            for i in 0..6 {
+                setting_slider(ui, state, Target::Actuator(ActuatorKey::HornAngle(i)));
+            }
+            for i in 0..6 {
+                setting_slider(ui, state, Target::Actuator(ActuatorKey::Trim(i)));
+            }
         });
 }
 

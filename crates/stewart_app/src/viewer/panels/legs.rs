@@ -1,4 +1,5 @@
-//! Legs: the six lengths now, with stroke-usage bars, and the pose's conditioning.
+//! Legs: the six lengths now (or a rotary platform's six servo angles), with bars of the
+//! stroke or servo range used, and the pose's conditioning.
 
 use egui::{Color32, RichText};
 use stewart_kinematics::scene::LegStatus;
@@ -9,29 +10,38 @@ use crate::viewer::state::ViewerState;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
-    ui.heading("Legs");
+    let geometry = &state.scenario().geometry;
+    let rotary = geometry.rotary().is_some();
+    ui.heading(if rotary { "Servos" } else { "Legs" });
     let pose = state.pose();
-    let frame = state.scenario().geometry.scene_frame(&pose, Vec::new());
+    let frame = geometry.scene_frame(&pose, Vec::new());
+    let letter = geometry.quantity().letter;
     let theme = state.theme();
     for (i, leg) in frame.legs.iter().enumerate() {
+        let angle = frame.servos.map(|s| s[i].angle_deg);
         // The bar takes the colour the leg has in the 3D view.
         let [r, g, b, _] = theme
             .leg_colours(leg.status)
             .0
             .map(|c| (c * 255.0).round() as u8);
         let colour = Color32::from_rgb(r, g, b);
-        let note = match leg.status {
-            LegStatus::Normal => "",
-            LegStatus::NearLimit => " near limit",
-            LegStatus::OverLimit => " over stroke",
+        let note = match (leg.status, rotary) {
+            (LegStatus::Normal, _) => "",
+            (LegStatus::NearLimit, _) => " near limit",
+            (LegStatus::OverLimit, false) => " over stroke",
+            (LegStatus::OverLimit, true) => " past range",
         };
         ui.horizontal(|ui| {
             ui.label(
-                RichText::new(format!("L{}", i + 1))
+                RichText::new(format!("{letter}{}", i + 1))
                     .color(leg_colour(i))
                     .strong(),
             );
-            ui.label(format!("{:.4} m", leg.length));
+            match angle {
+                None => ui.label(format!("{:.4} m", leg.length)),
+                Some(Some(a)) => ui.label(format!("{a:+.2}°")),
+                Some(None) => ui.label(RichText::new("out of reach").color(ERROR)),
+            };
             if let Some(u) = leg.stroke_usage {
                 ui.add(
                     egui::ProgressBar::new(u.clamp(0.0, 1.0) as f32)
@@ -54,11 +64,21 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             }
         });
     }
-    let c = state.scenario().geometry.conditioning(&pose);
-    match c.condition_number {
-        Some(k) => ui.label(format!("Condition number {k:.2}")),
+    match geometry
+        .actuated_conditioning(&pose)
+        .map(|c| c.condition_number)
+    {
+        Some(Some(k)) => ui.label(format!("Condition number {k:.2}")),
+        Some(None) => ui.label(
+            RichText::new(if rotary {
+                "Singular pose: the servos cannot control the platform in one direction"
+            } else {
+                "Singular pose: the legs cannot control the platform in one direction"
+            })
+            .color(ERROR),
+        ),
         None => ui.label(
-            RichText::new("Singular pose: the legs cannot control the platform in one direction")
+            RichText::new("A servo cannot reach its platform joint: no horn angle closes its rod")
                 .color(ERROR),
         ),
     };

@@ -1,5 +1,5 @@
-//! The live leg-length plot: the whole trajectory with a moving time marker, or in
-//! manual mode the rolling history of the last seconds.
+//! The live plot of leg lengths (or servo angles): the whole trajectory with a moving
+//! time marker, or in manual mode the rolling history of the last seconds.
 
 use egui::Color32;
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
@@ -17,7 +17,9 @@ pub fn leg_colour(i: usize) -> Color32 {
 /// The panel. In trajectory mode, clicking or dragging on the plot scrubs the time (the
 /// wheel still zooms, double-click resets the view).
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let stroke = state.scenario().geometry.stroke();
+    let geometry = &state.scenario().geometry;
+    let quantity = geometry.quantity();
+    let [min, max] = geometry.quantity_limits();
     let manual = state.playback.mode == MotionMode::Manual;
     let x_label = if manual {
         "seconds ago (manual pose history)"
@@ -28,13 +30,13 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         .allow_drag(manual)
         .legend(Legend::default())
         .x_axis_label(x_label)
-        .y_axis_label("leg length (m)");
+        .y_axis_label(format!("{} ({})", quantity.name, quantity.unit));
     if manual {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
     let shown = plot.show(ui, |plot| {
         for leg in 0..6 {
-            let points: PlotPoints = if manual {
+            let points: Vec<[f64; 2]> = if manual {
                 state
                     .playback
                     .history
@@ -49,12 +51,17 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .map(|(t, l)| [*t, l[leg]])
                     .collect()
             };
-            plot.line(Line::new(format!("L{}", leg + 1), points).color(leg_colour(leg)));
+            // A servo out of reach has no angle: its curve breaks there.
+            let name = format!("{}{}", quantity.symbol, leg + 1);
+            for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
+                let run: PlotPoints = run.iter().copied().collect();
+                plot.line(Line::new(name.clone(), run).color(leg_colour(leg)));
+            }
         }
-        for (name, limit) in [("min", stroke.min), ("max", stroke.max)] {
+        for (name, limit) in [("min", min), ("max", max)] {
             if let Some(v) = limit {
                 plot.hline(
-                    HLine::new(format!("L{name}"), v)
+                    HLine::new(format!("{}{name}", quantity.symbol), v)
                         .style(LineStyle::dashed_loose())
                         .color(Color32::GRAY),
                 );
