@@ -15,6 +15,11 @@
 //!
 //! Statics is the special case `a_c = 0`, `ω = α = 0`. Velocities and accelerations come
 //! from central differences of the sampled motion (times are arguments, never a clock).
+//!
+//! **Rotary servos** take the servo Jacobian `J_s` (twist → servo rates, see
+//! [`Geometry::servo_jacobian`]) in place of `J`: by virtual work `τᵀ θ̇ = wᵀ t` for every
+//! twist `t`, so the servo torques that exert the wrench `w` are `J_sᵀ τ = w`, in N·m,
+//! positive in the direction of positive θ (lifting the horn).
 
 use nalgebra::{Matrix3, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
@@ -43,11 +48,19 @@ pub struct Payload {
 pub enum ForceError {
     /// The Jacobian cannot be inverted at this sample.
     #[error(
-        "the platform is at a singular pose at t = {time} s: the leg forces are not determined there"
+        "the platform is at a singular pose at t = {time} s: the actuator forces are not determined there"
     )]
     Singular {
         /// Time of the sample, seconds.
         time: f64,
+    },
+    /// A servo cannot reach its platform joint at this sample.
+    #[error("at t = {time} s servo {servo} cannot reach its platform joint: no torque holds it")]
+    Unreachable {
+        /// Time of the sample, seconds.
+        time: f64,
+        /// Servo number, from 1.
+        servo: usize,
     },
     /// A payload value that is not usable.
     #[error("payload {field} must be {requirement}, got {value}")]
@@ -115,7 +128,8 @@ impl Payload {
     }
 }
 
-/// Leg forces along a motion, newtons, positive in compression.
+/// Leg forces along a motion, newtons, positive in compression (servo torques, N·m, for
+/// a rotary platform).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ForceSeries {
     /// Sample times, seconds.
@@ -147,8 +161,9 @@ impl Geometry {
         )
     }
 
-    /// Leg forces at `pose` for a centre-of-mass acceleration `a_c` and angular
-    /// velocity `omega` and acceleration `alpha` (base frame). `None` at a singular pose.
+    /// Leg forces (N; servo torques in N·m for a rotary platform) at `pose` for a
+    /// centre-of-mass acceleration `a_c` and angular velocity `omega` and acceleration
+    /// `alpha` (base frame). `None` at a singular pose or one a servo cannot reach.
     pub fn leg_forces(
         &self,
         pose: &crate::pose::Pose,
@@ -164,12 +179,23 @@ impl Geometry {
         let force = payload.mass * (a_c - g);
         let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
         let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
-        let j = self.jacobian(pose);
-        let f = j.transpose().lu().solve(&wrench)?;
-        let cond = crate::jacobian::conditioning_of(&j, self.characteristic_length());
+        let (j, cond) = match self.rotary() {
+            None => {
+                let j = self.jacobian(pose);
+                (
+                    j,
+                    crate::jacobian::conditioning_of(&j, self.characteristic_length()),
+                )
+            }
+            Some(_) => (
+                self.servo_jacobian(pose)?.ok()?,
+                self.servo_conditioning(pose)?,
+            ),
+        };
         if cond.is_singular() {
             return None;
         }
+        let f = j.transpose().lu().solve(&wrench)?;
         Some(std::array::from_fn(|i| f[i]))
     }
 
@@ -203,7 +229,13 @@ impl Geometry {
         let mut statics = Vec::with_capacity(times.len());
         let mut dynamics = Vec::with_capacity(times.len());
         for (k, pose) in samples.poses.iter().enumerate() {
-            let singular = || ForceError::Singular { time: times[k] };
+            let singular = || match self.servo_angles(pose) {
+                Some(Err(e)) => ForceError::Unreachable {
+                    time: times[k],
+                    servo: e.servo,
+                },
+                _ => ForceError::Singular { time: times[k] },
+            };
             let a_c = second_difference(times, &centres, k).unwrap_or(zero_v);
             let alpha = skew_vector(
                 &(second_difference(times, &rotations, k).unwrap_or(zero_m)

@@ -1,4 +1,5 @@
-//! `stewart forces`: leg forces for a payload along the trajectory.
+//! `stewart forces`: leg forces (N) — or a rotary platform's servo torques (N·m) — for a
+//! payload along the trajectory.
 
 use std::process::ExitCode;
 
@@ -15,7 +16,6 @@ use crate::source;
 pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "forces")?;
     let g = &scenario.geometry;
     let base = scenario.payload;
     let mass = args.mass.or(base.map(|p| p.mass)).ok_or_else(|| {
@@ -37,14 +37,16 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
     let payload = Payload::new(mass, com, inertia)?;
     if g.architecture().singular {
         return Err(anyhow!(
-            "scenario `{}` is architecturally singular, so the leg forces are not determined at any pose (use a paired layout)",
+            "scenario `{}` is architecturally singular, so the actuator forces are not determined at any pose (use a paired layout)",
             scenario.name
         ));
     }
     let series = g.forces_along(&scenario.motion.sample(), &payload)?;
+    // Leg forces F (N) or servo torques T (N·m).
+    let letter = if g.rotary().is_some() { "T" } else { "F" };
     let mut header = vec!["t".to_owned()];
-    header.extend((1..=6).map(|i| format!("F{i}_static")));
-    header.extend((1..=6).map(|i| format!("F{i}")));
+    header.extend((1..=6).map(|i| format!("{letter}{i}_static")));
+    header.extend((1..=6).map(|i| format!("{letter}{i}")));
     let mut csv = CsvText::with_header(&header);
     for k in 0..series.times.len() {
         csv.row(

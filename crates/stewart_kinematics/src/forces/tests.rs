@@ -138,3 +138,66 @@ fn bad_payloads_and_singular_geometry_are_refused() {
         None
     );
 }
+
+/// Static servo torques by virtual work through the forward kinematics alone: turning
+/// servo i by δ moves the platform (found by the forward solver) and with it the load;
+/// the torque that holds the load is the work of its weight per radian,
+/// τ_i = m g Δz_c / δ (central difference). No Jacobian is involved.
+#[test]
+fn servo_torques_are_the_weights_work_per_radian() {
+    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let g = &s.geometry;
+    let load = payload(0.8, [0.01, -0.005, 0.03]);
+    for pose in [
+        g.home_pose(),
+        Pose::from_xyz_rpy_deg([0.01, -0.006, 0.118], [4.0, -3.0, 7.0]),
+    ] {
+        let tau = g
+            .static_forces(&pose, &load)
+            .unwrap_or_else(|| panic!("singular"));
+        let angles = g
+            .servo_angles(&pose)
+            .and_then(Result::ok)
+            .unwrap_or_else(|| panic!("reachable"));
+        let com_height = |p: &Pose| (p.position + p.rotation() * load.centre_of_mass).z;
+        let delta = 1e-6;
+        for i in 0..6 {
+            let moved = |d: f64| {
+                let mut a = angles;
+                a[i] = Angle::from_radians(a[i].radians() + d);
+                g.forward_servos(&a, &pose, &crate::ForwardOptions::default())
+                    .unwrap_or_else(|e| panic!("{e}"))
+                    .pose
+            };
+            let dz = com_height(&moved(delta)) - com_height(&moved(-delta));
+            let expected = load.mass * STANDARD_GRAVITY * dz / (2.0 * delta);
+            assert!(
+                (tau[i] - expected).abs() < 1e-6 * (1.0 + expected.abs()),
+                "servo {}: {} vs {expected}",
+                i + 1,
+                tau[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn a_servo_out_of_reach_is_named_in_the_torque_error() {
+    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let g = &s.geometry;
+    let samples = crate::trajectory::Samples {
+        times: vec![0.0, 0.1, 0.2],
+        poses: vec![
+            g.home_pose(),
+            Pose::from_xyz_rpy_deg([0.0, 0.0, 0.3], [0.0; 3]),
+            g.home_pose(),
+        ],
+    };
+    let e = g
+        .forces_along(&samples, &payload(1.0, [0.0; 3]))
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "at t = 0.1 s servo 1 cannot reach its platform joint: no torque holds it"
+    );
+}
