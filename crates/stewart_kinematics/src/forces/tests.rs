@@ -185,7 +185,7 @@ fn servo_torques_are_the_weights_work_per_radian() {
 fn a_servo_out_of_reach_is_named_in_the_torque_error() {
     let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
-    let samples = crate::trajectory::Samples {
+    let samples = Samples {
         times: vec![0.0, 0.1, 0.2],
         poses: vec![
             g.home_pose(),
