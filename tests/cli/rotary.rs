@@ -1,5 +1,5 @@
-//! Rotary-servo scenarios (`[actuator] kind = "rotary"`): `solve` gives servo angles; the
-//! commands that model linear legs only so far refuse them clearly.
+//! Rotary-servo scenarios (`[actuator] kind = "rotary"`) through every command: servo
+//! angles, forward kinematics, checks, torques, workspace, plots and frames.
 
 use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
@@ -162,23 +162,13 @@ fn rotary_keys_are_checked_and_located() {
 }
 
 #[test]
-fn commands_for_linear_legs_refuse_a_rotary_scenario_clearly() {
-    for args in [vec!["workspace"]] {
-        let mut all = vec![args[0], "--scenario"];
-        let s = scenario();
-        all.push(&s);
-        all.extend(&args[1..]);
-        let o = stewart(&all);
-        assert_eq!(o.status.code(), Some(2), "{all:?}");
-        assert!(
-            stderr(&o).contains(&format!(
-                "`stewart {}` handles linear legs only so far",
-                args[0]
-            )),
-            "{all:?}: {}",
-            stderr(&o)
-        );
-    }
+fn workspace_of_a_servo_platform_has_volume_and_orientation_ranges() {
+    let o = stewart(&["workspace", "--preset", "servo-desk", "--resolution", "32"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.contains("servo reach and range sampled"), "{text}");
+    assert!(text.contains("extent x"), "{text}");
+    assert!(!text.contains("not reachable"), "{text}");
 }
 
 #[test]

@@ -27,18 +27,6 @@ pub fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
         .collect()
 }
 
-/// Refuse a rotary-servo scenario in a command that so far models linear legs only (its
-/// numbers would be those of legs, not of servos).
-pub fn require_linear(scenario: &Scenario, command: &str) -> Result<()> {
-    if scenario.geometry.rotary().is_some() {
-        anyhow::bail!(
-            "scenario `{}` has rotary servos (`[actuator] kind = \"rotary\"`): `stewart {command}` handles linear legs only so far; `stewart solve` gives its servo angles",
-            scenario.name
-        );
-    }
-    Ok(())
-}
-
 /// The scenario the arguments name, in words for messages: its file as given, or
 /// `preset NAME`.
 pub fn describe(args: &ScenarioArgs) -> String {

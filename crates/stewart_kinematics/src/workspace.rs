@@ -11,6 +11,8 @@
 //! Richardson's idea: the same sum on an `N/2` grid; the difference (which overstates
 //! the error of the finer grid) is reported as the error bound.
 //!
+//! Rotary platforms are computed by sampling and bisection instead (see `rotary.rs`).
+//!
 //! When cone-angle or collision limits are set, each column's intervals are further
 //! sampled in `z` at the column spacing and only the allowed samples count, so the
 //! result is then a sampled (not exact-in-`z`) estimate.
@@ -208,9 +210,14 @@ fn volume_on_grid(shells: &Shells, bounds: &[[f64; 2]; 2], n: usize) -> f64 {
 }
 
 impl Geometry {
-    /// Whether `pose` keeps every leg within its stroke and respects `limits`.
+    /// Whether `pose` keeps every leg within its stroke and respects `limits` — for a
+    /// rotary platform: every servo reaches its joint within its range, and the rods
+    /// respect the cone and clearance limits.
     pub fn pose_within_limits(&self, limits: &Limits, pose: &Pose) -> bool {
         let solution = self.inverse(pose);
+        if let Some(servos) = self.rotary() {
+            return rotary::servos_allowed(self, servos, limits, pose, &solution.platform_joints);
+        }
         let stroke = self.stroke();
         solution
             .lengths
@@ -269,15 +276,18 @@ impl Geometry {
         resolution: usize,
         control: &WorkspaceControl,
     ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
-        let (Some(min), Some(max)) = (self.stroke().min, self.stroke().max) else {
-            return Err(WorkspaceError::NoStroke);
-        };
         if !(2..=MAX_RESOLUTION).contains(&resolution) {
             return Err(WorkspaceError::Resolution {
                 got: resolution,
                 max: MAX_RESOLUTION,
             });
         }
+        if let Some(servos) = self.rotary() {
+            return rotary::workspace(self, servos, limits, orientation, resolution, control);
+        }
+        let (Some(min), Some(max)) = (self.stroke().min, self.stroke().max) else {
+            return Err(WorkspaceError::NoStroke);
+        };
         let [roll, pitch, yaw] = orientation;
         let rotation = crate::pose::rotation_zyx(roll, pitch, yaw);
         let shells = Shells::new(self, &rotation, min, max);
@@ -471,5 +481,6 @@ pub enum Axis {
     Yaw,
 }
 
+mod rotary;
 #[cfg(test)]
 mod tests;

@@ -24,7 +24,6 @@ use crate::source;
 pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
-    source::require_linear(&scenario, "workspace")?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
     let ws = compute(
@@ -43,7 +42,14 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         scenario.name
     );
     let n = ws.resolution;
-    let method = if scenario.limits.has_pose_limits() {
+    let method = if g.rotary().is_some() {
+        format!(
+            "servo reach and range sampled every {:.2} mm in z per column, edges bisected to 1e-12 m; error estimate from the {} × {} grid",
+            ws.cell * 1e3,
+            n / 2,
+            n / 2
+        )
+    } else if scenario.limits.has_pose_limits() {
         format!(
             "stroke intervals exact per column, then sampled every {:.2} mm in z for the cone and clearance limits; error estimate one sample per interval end",
             ws.cell * 1e3

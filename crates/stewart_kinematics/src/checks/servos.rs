@@ -157,8 +157,23 @@ fn rates(limits: &Limits, times: &[f64], angles_deg: &[[f64; 6]], out: &mut Coll
     }
 }
 
-/// The rods' angles at the horn joint (from the base normal, as a linear leg's base joint)
-/// and at the platform joint (from the platform normal).
+/// The rods' angles (degrees) at the horn joint, from the base normal as at a linear
+/// leg's base joint (`[0]`), and at the platform joint, from the platform normal (`[1]`).
+pub fn rod_cone_angles(
+    pose: &Pose,
+    joints: &[Vector3<f64>; 6],
+    tips: &[Vector3<f64>; 6],
+) -> [[f64; 6]; 2] {
+    let angle = |u: Vector3<f64>, n: Vector3<f64>| u.dot(&n).clamp(-1.0, 1.0).acos().to_degrees();
+    let platform_normal = pose.rotation() * Vector3::z();
+    let rods: [Vector3<f64>; 6] = std::array::from_fn(|i| (joints[i] - tips[i]).normalize());
+    [
+        rods.map(|u| angle(u, Vector3::z())),
+        rods.map(|u| angle(u, platform_normal)),
+    ]
+}
+
+/// Cone limits on the rods' ball joints (see [`rod_cone_angles`]).
 fn cones(
     limits: &Limits,
     times: &[f64],
@@ -167,33 +182,27 @@ fn cones(
     motion: &ServoMotion,
     out: &mut Collected,
 ) {
-    let angle = |u: Vector3<f64>, n: Vector3<f64>| u.dot(&n).clamp(-1.0, 1.0).acos().to_degrees();
-    let rods = |k: usize| -> Vec<[f64; 6]> {
-        poses
-            .iter()
-            .zip(solutions)
-            .zip(&motion.tips)
-            .map(|((pose, s), tips)| {
-                let normal = if k == 0 {
-                    Vector3::z()
-                } else {
-                    pose.rotation() * Vector3::z()
-                };
-                std::array::from_fn(|i| angle((s.platform_joints[i] - tips[i]).normalize(), normal))
-            })
-            .collect()
-    };
+    if limits.base_cone.is_none() && limits.platform_cone.is_none() {
+        return;
+    }
+    let angles: Vec<[[f64; 6]; 2]> = poses
+        .iter()
+        .zip(solutions)
+        .zip(&motion.tips)
+        .map(|((pose, s), tips)| rod_cone_angles(pose, &s.platform_joints, tips))
+        .collect();
     for (k, kind, limit) in [
         (0, FindingKind::HornCone, limits.base_cone),
         (1, FindingKind::RodPlatformCone, limits.platform_cone),
     ] {
         if let Some(max) = limit {
+            let series: Vec<[f64; 6]> = angles.iter().map(|a| a[k]).collect();
             scan_legs(
                 kind,
                 "deg",
                 Bound::AtMost(max.degrees()),
                 times,
-                &rods(k),
+                &series,
                 out,
             );
         }
@@ -201,7 +210,7 @@ fn cones(
 }
 
 /// The thirty (rod, other servo's horn) pairs `(i, j)`, `i ≠ j`, numbered from 0.
-const ROD_HORN_PAIRS: [(usize, usize); 30] = {
+pub const ROD_HORN_PAIRS: [(usize, usize); 30] = {
     let mut pairs = [(0, 0); 30];
     let mut k = 0;
     let mut i = 0;
@@ -219,6 +228,40 @@ const ROD_HORN_PAIRS: [(usize, usize); 30] = {
     pairs
 };
 
+/// Distances between every pair of rods (in the order of [`LEG_PAIRS`]) and between every
+/// rod and every other servo's horn (in the order of [`ROD_HORN_PAIRS`]), metres.
+pub fn rod_distances(
+    bases: &[Vector3<f64>; 6],
+    joints: &[Vector3<f64>; 6],
+    tips: &[Vector3<f64>; 6],
+) -> ([f64; 15], [f64; 30]) {
+    (
+        LEG_PAIRS.map(|(i, j)| segment_distance(tips[i], joints[i], tips[j], joints[j])),
+        ROD_HORN_PAIRS.map(|(i, j)| segment_distance(tips[i], joints[i], bases[j], tips[j])),
+    )
+}
+
+/// Whether a pose whose servos all reach (horn tips `tips`) respects the cone and
+/// clearance limits, as [`Limits::pose_allowed`] does for legs.
+pub fn rods_allowed(
+    limits: &Limits,
+    pose: &Pose,
+    bases: &[Vector3<f64>; 6],
+    joints: &[Vector3<f64>; 6],
+    tips: &[Vector3<f64>; 6],
+) -> bool {
+    let angles = rod_cone_angles(pose, joints, tips);
+    let cone_ok = |limit: Option<crate::Angle>, k: usize| {
+        limit.is_none_or(|max| angles[k].iter().all(|&a| a <= max.degrees()))
+    };
+    cone_ok(limits.base_cone, 0)
+        && cone_ok(limits.platform_cone, 1)
+        && limits.leg_radius.is_none_or(|r| {
+            let (rods, horns) = rod_distances(bases, joints, tips);
+            rods.iter().chain(&horns).all(|&d| d >= 2.0 * r)
+        })
+}
+
 /// Rods (horn tip to platform joint) and horns (shaft centre to horn tip) as cylinders of
 /// the leg radius: every pair of rods, and every rod with another servo's horn, must stay
 /// twice the radius apart.
@@ -234,15 +277,11 @@ fn clearance(
         return;
     };
     let bases = geometry.base_joints();
-    let rods: Vec<[f64; 15]> = solutions
+    let (rods, horns): (Vec<[f64; 15]>, Vec<[f64; 30]>) = solutions
         .iter()
         .zip(&motion.tips)
-        .map(|(s, tips)| {
-            LEG_PAIRS.map(|(i, j)| {
-                segment_distance(tips[i], s.platform_joints[i], tips[j], s.platform_joints[j])
-            })
-        })
-        .collect();
+        .map(|(s, tips)| rod_distances(bases, &s.platform_joints, tips))
+        .unzip();
     scan_columns(
         FindingKind::RodCollision,
         "m",
@@ -255,14 +294,6 @@ fn clearance(
         },
         out,
     );
-    let horns: Vec<[f64; 30]> = solutions
-        .iter()
-        .zip(&motion.tips)
-        .map(|(s, tips)| {
-            ROD_HORN_PAIRS
-                .map(|(i, j)| segment_distance(tips[i], s.platform_joints[i], bases[j], tips[j]))
-        })
-        .collect();
     scan_columns(
         FindingKind::RodHornCollision,
         "m",
