@@ -4,7 +4,7 @@
 set -euo pipefail
 
 # Every system package the build, the program and the tests need.
-PACKAGES=(gcc libc6-dev pkg-config ca-certificates
+PACKAGES=(gcc g++ libc6-dev pkg-config ca-certificates                  # g++: tests build the firmware header as C++ too
   mesa-vulkan-drivers libvulkan1 libegl1 libegl-mesa0 libgl1-mesa-dri   # software GPU (lavapipe) for headless rendering
   ffmpeg                                                                 # MP4 export, ffprobe in tests
   fonts-dejavu-core                                                      # text in PDF and PNG plots

@@ -4,6 +4,7 @@
 mod analysis;
 mod check;
 mod export;
+mod firmware;
 mod fk;
 mod rotary;
 mod settings;

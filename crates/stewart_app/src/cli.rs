@@ -42,6 +42,20 @@ pub enum Command {
     /// Every setting `--set` accepts (the keys of scenario files and the viewer's sliders):
     /// key, current value, unit, slider range, accepted range and default.
     Settings(SettingsArgs),
+    /// The scenario's geometry as a C header for controller firmware (Arduino, STM32):
+    /// joints, horn and rod lengths, horn directions, servo range, reversal and trims.
+    Firmware(FirmwareArgs),
+}
+
+/// Arguments of `stewart firmware`.
+#[derive(Debug, Args)]
+pub struct FirmwareArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Write the header here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
 /// Arguments of `stewart settings`.
@@ -56,7 +70,8 @@ pub struct SettingsArgs {
 /// with settings changed on the way.
 #[derive(Debug, Args, Default)]
 pub struct ScenarioArgs {
-    /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes.
+    /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes, servo-desk,
+    /// crank-rig.
     #[arg(long, value_name = "NAME", conflicts_with = "scenario")]
     pub preset: Option<String>,
     /// A scenario file (TOML).

@@ -43,6 +43,7 @@ fn main() -> ExitCode {
         Some(Command::Plot(args)) => commands::plot::run(&args),
         Some(Command::View(args)) => commands::view::run(&args),
         Some(Command::Settings(args)) => commands::settings::run(&args),
+        Some(Command::Firmware(args)) => commands::firmware::run(&args),
         None => commands::no_command(),
     };
     match result {

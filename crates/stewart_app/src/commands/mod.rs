@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod check;
+pub mod firmware;
 pub mod fk;
 pub mod forces;
 pub mod plot;

@@ -1,6 +1,8 @@
-//! Exports: frame sequences, GIF and MP4 videos, and the leg-length plot.
+//! Exports: frame sequences, GIF and MP4 videos, the actuator plot, and the geometry as
+//! a C header for firmware.
 
 pub mod encode;
+pub mod firmware;
 pub mod frames;
 pub mod plot;
 pub mod tables;
