@@ -105,6 +105,7 @@ fn help_lists_every_command() {
             "plot",
             "view",
             "settings",
+            "firmware",
             "help"
         ]
     );

@@ -1,12 +1,12 @@
 //! Forward kinematics speed: one warm-started solve (from the previous sample's pose, as
 //! along a trajectory or in a control loop) and one cold solve from home.
 //!
-//! `cargo bench -p stewart_kinematics --bench forward`. The target: a warm solve
-//! under 2 µs.
+//! `cargo bench -p stewart_kinematics --bench forward`. Targets: a warm solve under 2 µs
+//! for legs, a solve under 5 µs for servo angles (the `servo-desk` preset).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::{ForwardOptions, Pose, Scenario};
+use stewart_kinematics::{Angle, ForwardOptions, Pose, Scenario};
 
 fn bench(c: &mut Criterion) {
     let scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
@@ -37,5 +37,41 @@ fn bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+/// Forward kinematics of a rotary platform from its servo angles, warm and cold.
+fn servo_bench(c: &mut Criterion) {
+    let scenario = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let g = scenario.geometry;
+    let samples = scenario.motion.sample();
+    let angles: Vec<[Angle; 6]> = samples
+        .poses
+        .iter()
+        .map(|p| {
+            g.servo_angles(p)
+                .and_then(Result::ok)
+                .unwrap_or_else(|| panic!("the preset's motion is reachable"))
+        })
+        .collect();
+    let options = ForwardOptions::default();
+    let n = samples.poses.len();
+    c.bench_function("servo_forward_warm_start_per_solve", |b| {
+        let mut k = 1;
+        b.iter(|| {
+            let start: &Pose = &samples.poses[k - 1];
+            let s = g.forward_servos(black_box(&angles[k]), start, &options);
+            k = if k + 1 < n { k + 1 } else { 1 };
+            s
+        })
+    });
+    c.bench_function("servo_forward_cold_start_from_home", |b| {
+        let home = g.home_pose();
+        let mut k = 0;
+        b.iter(|| {
+            let s = g.forward_servos(black_box(&angles[k]), &home, &options);
+            k = (k + 1) % n;
+            s
+        })
+    });
+}
+
+criterion_group!(benches, bench, servo_bench);
 criterion_main!(benches);

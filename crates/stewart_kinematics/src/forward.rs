@@ -213,6 +213,16 @@ impl Geometry {
         start: &Pose,
         options: &ForwardOptions,
     ) -> Result<ForwardSolution, ForwardError> {
+        let (tips, rod) = self.servo_anchors(angles)?;
+        self.forward_from(&tips, &[rod; 6], start, options)
+    }
+
+    /// The horn tips of a rotary platform whose servos stand at `angles`, and the rod
+    /// length: the fixed anchors and the leg length of its forward problem.
+    pub(crate) fn servo_anchors(
+        &self,
+        angles: &[Angle; 6],
+    ) -> Result<([Vector3<f64>; 6], f64), ForwardError> {
         let Some(servos) = self.rotary() else {
             return Err(ForwardError::NotRotary);
         };
@@ -224,13 +234,12 @@ impl Geometry {
                 });
             }
         }
-        let tips: [Vector3<f64>; 6] =
-            std::array::from_fn(|i| servos.horn_tip(i, &self.base_joints()[i], angles[i]));
-        self.forward_from(&tips, &[servos.rod_length(); 6], start, options)
+        let tips = std::array::from_fn(|i| servos.horn_tip(i, &self.base_joints()[i], angles[i]));
+        Ok((tips, servos.rod_length()))
     }
 
     /// The damped Newton solve for legs from `anchors` of lengths `lengths`.
-    fn forward_from(
+    pub(crate) fn forward_from(
         &self,
         anchors: &[Vector3<f64>; 6],
         lengths: &[f64; 6],

@@ -118,12 +118,6 @@ fn servos(
     scenario: &stewart_kinematics::Scenario,
     out: Option<&output::Destination>,
 ) -> Result<ExitCode> {
-    if args.assembly_modes {
-        return Err(anyhow!(
-            "--assembly-modes handles linear legs only so far; scenario `{}` has rotary servos",
-            scenario.name
-        ));
-    }
     let geometry = &scenario.geometry;
     let (table, file) = read_input(&args.legs, |r, name| {
         Ok((
@@ -140,12 +134,30 @@ fn servos(
     if t_index.is_some() {
         header.push("t");
     }
+    if args.assembly_modes {
+        header.push("mode");
+    }
     header.extend(POSE_OUT);
     let mut csv = CsvText::with_header(&header);
     let options = ForwardOptions::default();
     let mut start = geometry.home_pose();
     for (k, row) in table.rows().enumerate() {
         let angles = [row[0], row[1], row[2], row[3], row[4], row[5]].map(Angle::from_degrees);
+        if args.assembly_modes {
+            let modes = geometry
+                .servo_assembly_modes(&angles)
+                .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
+            for (m, s) in modes.iter().enumerate() {
+                csv.row(
+                    t_index
+                        .map(|i| row[i])
+                        .into_iter()
+                        .chain([(m + 1) as f64])
+                        .chain(pose_values(s)),
+                );
+            }
+            continue;
+        }
         let from = if args.cold {
             geometry.home_pose()
         } else {

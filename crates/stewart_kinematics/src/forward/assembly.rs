@@ -53,13 +53,33 @@ impl Geometry {
     /// [`ForwardError::NotConverged`] when no start converges.
     pub fn assembly_modes(&self, lengths: &[f64; 6]) -> Result<Vec<ForwardSolution>, ForwardError> {
         self.check_lengths(lengths)?;
+        self.search_modes(self.base_joints(), lengths)
+    }
+
+    /// Every distinct real assembly the search finds for a rotary platform whose servos
+    /// stand at `angles` (the horn tips are then fixed and the rods legs of one length),
+    /// sorted by height. Fails like [`Geometry::forward_servos`].
+    pub fn servo_assembly_modes(
+        &self,
+        angles: &[crate::Angle; 6],
+    ) -> Result<Vec<ForwardSolution>, ForwardError> {
+        let (tips, rod) = self.servo_anchors(angles)?;
+        self.search_modes(&tips, &[rod; 6])
+    }
+
+    /// The search for legs of `lengths` from fixed `anchors`.
+    fn search_modes(
+        &self,
+        anchors: &[nalgebra::Vector3<f64>; 6],
+        lengths: &[f64; 6],
+    ) -> Result<Vec<ForwardSolution>, ForwardError> {
         let options = ForwardOptions {
             max_iterations: 200,
             ..ForwardOptions::default()
         };
         let found: Vec<ForwardSolution> = starts(self)
             .par_iter()
-            .filter_map(|s| self.forward_unchecked(lengths, s, &options).ok())
+            .filter_map(|s| self.forward_from(anchors, lengths, s, &options).ok())
             .collect();
         let mut distinct: Vec<ForwardSolution> = Vec::new();
         for s in found {

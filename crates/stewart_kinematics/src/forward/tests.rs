@@ -261,3 +261,35 @@ fn servo_forward_needs_a_rotary_platform_and_finite_angles() {
         Err(ForwardError::InvalidAngle { servo: 4, .. })
     ));
 }
+
+/// Every assembly mode of a rotary platform closes every rod at the horn tips of the given
+/// servo angles, and the pose those angles were solved from is among them.
+#[test]
+fn servo_assembly_modes_close_every_rod_and_include_the_pose() {
+    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let g = &s.geometry;
+    let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
+    let pose = Pose::from_xyz_rpy_deg([0.008, -0.004, 0.115], [3.0, -2.0, 6.0]);
+    let angles = g
+        .servo_angles(&pose)
+        .and_then(Result::ok)
+        .unwrap_or_else(|| panic!("reachable"));
+    let modes = g
+        .servo_assembly_modes(&angles)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(modes.len() >= 2, "{}", modes.len());
+    for m in &modes {
+        let joints = g.inverse(&m.pose).platform_joints;
+        for i in 0..6 {
+            let tip = servos.horn_tip(i, &g.base_joints()[i], angles[i]);
+            assert!(((joints[i] - tip).norm() - servos.rod_length()).abs() < 1e-9);
+        }
+    }
+    assert!(
+        modes
+            .iter()
+            .any(|m| assembly::same_placement(&m.pose, &pose))
+    );
+    // The mirror image below the base closes the rods too: the search finds it.
+    assert!(modes.iter().any(|m| m.pose.position.z < 0.0));
+}
