@@ -1,6 +1,7 @@
 //! Constant-orientation workspace at a million samples (1000 × 1000 columns, each
 //! solved exactly in z), stroke limits only. The target: under 100 ms on the
 //! 2-core reference machine. `cargo bench -p stewart_kinematics --bench workspace`.
+//! Also a rotary platform's workspace, which is sampled rather than exact per column.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -26,5 +27,21 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+/// A rotary platform's workspace (columns sampled in z and bisected at the edges),
+/// 200 × 200 columns of the `servo-desk` preset, servo range only.
+fn servo_bench(c: &mut Criterion) {
+    let g = Scenario::preset("servo-desk")
+        .unwrap_or_else(|e| panic!("{e}"))
+        .geometry;
+    let mut group = c.benchmark_group("workspace");
+    group.sample_size(10);
+    group.bench_function("servo_desk_200x200_columns", |b| {
+        b.iter(|| {
+            g.constant_orientation_workspace(&Limits::default(), black_box([Angle::ZERO; 3]), 200)
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench, servo_bench);
 criterion_main!(benches);

@@ -38,6 +38,7 @@ pub(super) fn servos_allowed(
     joints: &[Vector3<f64>; 6],
 ) -> bool {
     let bases = geometry.base_joints();
+    let pose_limits = limits.has_pose_limits();
     let mut tips = [Vector3::zeros(); 6];
     for i in 0..6 {
         let Ok(theta) = servos.servo_angle(i, &bases[i], &joints[i]) else {
@@ -48,9 +49,11 @@ pub(super) fn servos_allowed(
         {
             return false;
         }
-        tips[i] = servos.horn_tip(i, &bases[i], theta);
+        if pose_limits {
+            tips[i] = servos.horn_tip(i, &bases[i], theta);
+        }
     }
-    !limits.has_pose_limits() || rods_allowed(limits, pose, bases, joints, &tips)
+    !pose_limits || rods_allowed(limits, pose, bases, joints, &tips)
 }
 
 /// One orientation of a rotary platform: what a column needs.
