@@ -33,6 +33,8 @@ fn devices_stay_devices() {
             "/dev/null",
         ],
         vec!["forces", "--preset", "paired", "--out", "/dev/null"],
+        vec!["forces", "--preset", "crank-rig", "--out", "/dev/null"],
+        vec!["firmware", "--preset", "servo-desk", "--out", "/dev/null"],
         vec!["plot", "--out", "/dev/null"],
         vec![
             "workspace",
@@ -53,10 +55,15 @@ fn devices_stay_devices() {
             o.shown()
         );
     }
-    let o = run(&["solve", "--out", "/dev/full"]);
-    o.assert_refused();
-    assert!(o.stderr.contains("No space left"), "{}", o.stderr);
-    assert!(is_char_device(Path::new("/dev/full")));
+    for args in [
+        vec!["solve", "--out", "/dev/full"],
+        vec!["firmware", "--preset", "servo-desk", "--out", "/dev/full"],
+    ] {
+        let o = run(&args);
+        o.assert_refused();
+        assert!(o.stderr.contains("No space left"), "{}", o.stderr);
+        assert!(is_char_device(Path::new("/dev/full")));
+    }
 }
 
 #[test]
@@ -131,6 +138,7 @@ fn an_input_is_never_an_output() {
         vec!["solve", "--poses", &legs, "--out", &legs],
         vec!["fk", "--scenario", &s, "--legs", &legs, "--out", &legs],
         vec!["forces", "--scenario", &s, "--out", &s],
+        vec!["firmware", "--scenario", &s, "--out", &s],
         vec!["plot", "--scenario", &s, "--out", &s],
         vec![
             "workspace",
