@@ -1,15 +1,21 @@
 //! The set-point link to a real platform: what goes on the wire.
 //!
+//! - [`channels`]: which actuator goes out on which channel, scaled, mirrored, as µm,
+//!   0.01° or servo pulse µs;
 //! - [`crc`]: CRC-16/CCITT-FALSE, the frame checksum;
 //! - [`frame`]: the binary frame (sync, version, kind, sequence, flags, unit, six
 //!   fixed-point values, CRC) with its encoder and a resynchronising stream decoder;
+//! - [`safety`]: the DISARMED → ARMING → ARMED → STOPPING state machine that decides,
+//!   tick by tick, what may be sent;
 //! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches.
 //!
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.
 
+pub mod channels;
 pub mod crc;
 pub mod frame;
+pub mod safety;
 pub mod text;
 
 pub use frame::{DecodeError, Decoder, Flags, Frame, FrameKind, Unit};
