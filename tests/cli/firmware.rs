@@ -46,6 +46,24 @@ int main(int argc, char **argv) {
 }
 "#;
 
+/// Build `source` into `program` with `compiler` and `flags` plus strict warnings; a failed
+/// build fails the test with the compiler's words.
+fn build(compiler: &str, flags: &[&str], source: &str, program: &std::path::Path) {
+    let built = std::process::Command::new(compiler)
+        .args(flags)
+        .args(["-Wall", "-Wextra", "-Werror", "-o"])
+        .arg(program)
+        .arg(source)
+        .arg("-lm")
+        .output()
+        .unwrap_or_else(|e| panic!("{compiler}: {e}"));
+    assert!(
+        built.status.success(),
+        "{compiler}: {}",
+        String::from_utf8_lossy(&built.stderr)
+    );
+}
+
 #[test]
 fn the_header_compiles_and_gives_the_commanded_angles_of_solve() {
     let dir = tempdir();
@@ -75,34 +93,12 @@ fn the_header_compiles_and_gives_the_commanded_angles_of_solve() {
     );
     for (compiler, flags) in [("cc", vec!["-std=c99"]), ("c++", vec!["-x", "c++"])] {
         let out = dir.path().join(format!("empty-{compiler}"));
-        let status = std::process::Command::new(compiler)
-            .args(&flags)
-            .args(["-Wall", "-Wextra", "-Werror", "-o"])
-            .arg(&out)
-            .arg(&empty)
-            .output()
-            .unwrap_or_else(|e| panic!("{compiler}: {e}"));
-        assert!(
-            status.status.success(),
-            "{compiler}: {}",
-            String::from_utf8_lossy(&status.stderr)
-        );
+        build(compiler, &flags, &empty, &out);
     }
     // The program's angles equal solve's commanded angles.
     let source = write(dir.path(), "angles.c", PROGRAM);
     let program = dir.path().join("angles");
-    let built = std::process::Command::new("cc")
-        .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-o"])
-        .arg(&program)
-        .arg(&source)
-        .arg("-lm")
-        .output()
-        .unwrap_or_else(|e| panic!("cc: {e}"));
-    assert!(
-        built.status.success(),
-        "{}",
-        String::from_utf8_lossy(&built.stderr)
-    );
+    build("cc", &["-std=c99", "-O2"], &source, &program);
     let poses = [
         [0.0, 0.0, 0.112, 0.0, 0.0, 0.0],
         [0.01, -0.008, 0.118, 5.0, -4.0, 8.0],
@@ -170,17 +166,7 @@ fn a_linear_platform_gets_its_joints_and_stroke() {
         "#include \"servo_geometry.h\"\nint main(void) { return STEWART_BASE_JOINTS_M[0][0] > 0.0 ? 0 : 1; }\n",
     );
     let program = dir.path().join("use");
-    let built = std::process::Command::new("cc")
-        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-o"])
-        .arg(&program)
-        .arg(&source)
-        .output()
-        .unwrap_or_else(|e| panic!("cc: {e}"));
-    assert!(
-        built.status.success(),
-        "{}",
-        String::from_utf8_lossy(&built.stderr)
-    );
+    build("cc", &["-std=c99"], &source, &program);
     let ran = std::process::Command::new(&program).status();
     assert!(ran.is_ok_and(|s| s.success()));
 }

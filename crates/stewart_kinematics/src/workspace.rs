@@ -189,6 +189,32 @@ fn grid(bounds: &[[f64; 2]; 2], n: usize) -> (f64, f64, f64) {
     (cell, x0, y0)
 }
 
+/// Spans of platform positions as spans of platform-centre positions: with a pivot offset
+/// `c` the centre sits at `p + c − R c`, a constant `shift` at a fixed orientation.
+fn shifted(spans: impl Iterator<Item = [f64; 4]>, shift: Vector3<f64>) -> Vec<[f64; 4]> {
+    spans
+        .map(|[x, y, z0, z1]| [x + shift.x, y + shift.y, z0 + shift.z, z1 + shift.z])
+        .collect()
+}
+
+/// The volume of `spans` in columns of side `cell`.
+fn volume_of(spans: &[[f64; 4]], cell: f64) -> f64 {
+    spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell
+}
+
+/// The box around `spans` (column centres in x and y, span ends in z), `None` when empty.
+fn extent_of(spans: &[[f64; 4]]) -> Option<[[f64; 2]; 3]> {
+    (!spans.is_empty()).then(|| {
+        let mut e = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
+        for s in spans {
+            e[0] = [e[0][0].min(s[0]), e[0][1].max(s[0])];
+            e[1] = [e[1][0].min(s[1]), e[1][1].max(s[1])];
+            e[2] = [e[2][0].min(s[2]), e[2][1].max(s[3])];
+        }
+        e
+    })
+}
+
 /// Volume only, for the error estimate.
 fn volume_on_grid(shells: &Shells, bounds: &[[f64; 2]; 2], n: usize) -> f64 {
     let (cell, x0, y0) = grid(bounds, n);
@@ -344,28 +370,18 @@ impl Geometry {
         }
         // Report platform-centre positions: with a pivot offset `c` the centre sits at
         // `p + c − R c`, a constant shift at a fixed orientation.
-        let shift = self.pivot() - rotation * self.pivot();
-        let spans: Vec<[f64; 4]> = rows
-            .into_iter()
-            .flatten()
-            .map(|[x, y, z0, z1]| [x + shift.x, y + shift.y, z0 + shift.z, z1 + shift.z])
-            .collect();
-        let volume = spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell;
+        let spans = shifted(
+            rows.into_iter().flatten(),
+            self.pivot() - rotation * self.pivot(),
+        );
+        let volume = volume_of(&spans, cell);
         let coarse = if pose_limits {
             // The sampled estimate's own error is about one sample per span end.
             spans.len() as f64 * cell * cell * cell
         } else {
             (volume - volume_on_grid(&shells, &bounds, (resolution / 2).max(1))).abs()
         };
-        let extent = (!spans.is_empty()).then(|| {
-            let mut e = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
-            for s in &spans {
-                e[0] = [e[0][0].min(s[0]), e[0][1].max(s[0])];
-                e[1] = [e[1][0].min(s[1]), e[1][1].max(s[1])];
-                e[2] = [e[2][0].min(s[2]), e[2][1].max(s[3])];
-            }
-            e
-        });
+        let extent = extent_of(&spans);
         Ok(ConstantOrientationWorkspace {
             cell,
             volume,

@@ -44,6 +44,17 @@ fn with_range(g: &Geometry, min: f64, max: f64) -> Geometry {
     Geometry::new(p).unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// The servos of `g`, their angles and the platform joints at the home pose.
+fn at_home(g: &Geometry) -> (&RotaryActuators, [Angle; 6], [Vector3<f64>; 6]) {
+    let pose = g.home_pose();
+    let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
+    let angles = g
+        .servo_angles(&pose)
+        .and_then(Result::ok)
+        .unwrap_or_else(|| panic!("reachable"));
+    (servos, angles, g.inverse(&pose).platform_joints)
+}
+
 /// Brute-force distance between two segments: the closest of 2001 × 2001 point pairs.
 fn sampled_distance(p0: Vector3<f64>, p1: Vector3<f64>, q0: Vector3<f64>, q1: Vector3<f64>) -> f64 {
     let n = 2000;
@@ -223,13 +234,7 @@ fn servo_speed_is_the_jacobian_rate() {
 fn horn_cone_is_the_rods_lean_from_vertical() {
     let g = servo_geometry();
     let samples = heave(&g, 0.0, 1.0, 3, 0.1);
-    let pose = g.home_pose();
-    let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
-    let angles = g
-        .servo_angles(&pose)
-        .and_then(Result::ok)
-        .unwrap_or_else(|| panic!("reachable"));
-    let joints = g.inverse(&pose).platform_joints;
+    let (servos, angles, joints) = at_home(&g);
     // The rod rises from the horn tip (height a·sin θ) to the joint (height z); its lean
     // from vertical is acos(rise / s).
     let lean: Vec<f64> = (0..6)
@@ -261,13 +266,7 @@ fn horn_cone_is_the_rods_lean_from_vertical() {
 fn rod_and_horn_clearances_match_brute_force_distances() {
     let g = servo_geometry();
     let samples = heave(&g, 0.0, 1.0, 2, 0.1);
-    let pose = g.home_pose();
-    let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
-    let angles = g
-        .servo_angles(&pose)
-        .and_then(Result::ok)
-        .unwrap_or_else(|| panic!("reachable"));
-    let joints = g.inverse(&pose).platform_joints;
+    let (servos, angles, joints) = at_home(&g);
     let bases = g.base_joints();
     let tips: Vec<Vector3<f64>> = (0..6)
         .map(|i| servos.horn_tip(i, &bases[i], angles[i]))

@@ -20,7 +20,10 @@ use std::sync::atomic::Ordering;
 use nalgebra::Vector3;
 use rayon::prelude::*;
 
-use super::{ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, grid};
+use super::{
+    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid, shifted,
+    volume_of,
+};
 use crate::angle::Angle;
 use crate::checks::servos::rods_allowed;
 use crate::geometry::Geometry;
@@ -204,28 +207,15 @@ pub(super) fn workspace(
     if control.cancel.load(Ordering::Relaxed) {
         return Err(WorkspaceError::Cancelled);
     }
-    let volume = spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell;
+    let volume = volume_of(&spans, cell);
     let (coarse_cell, coarse) = columns.spans(
         &bounds,
         (resolution / 2).max(2),
         &WorkspaceControl::default(),
     );
-    let coarse_volume = coarse.iter().map(|s| s[3] - s[2]).sum::<f64>() * coarse_cell * coarse_cell;
-    // Positions of the platform centre: a constant shift at a fixed orientation.
-    let shift = c - rotation * c;
-    let spans: Vec<[f64; 4]> = spans
-        .into_iter()
-        .map(|[x, y, z0, z1]| [x + shift.x, y + shift.y, z0 + shift.z, z1 + shift.z])
-        .collect();
-    let extent = (!spans.is_empty()).then(|| {
-        let mut e = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
-        for s in &spans {
-            e[0] = [e[0][0].min(s[0]), e[0][1].max(s[0])];
-            e[1] = [e[1][0].min(s[1]), e[1][1].max(s[1])];
-            e[2] = [e[2][0].min(s[2]), e[2][1].max(s[3])];
-        }
-        e
-    });
+    let coarse_volume = volume_of(&coarse, coarse_cell);
+    let spans = shifted(spans.into_iter(), c - rotation * c);
+    let extent = extent_of(&spans);
     Ok(ConstantOrientationWorkspace {
         cell,
         volume,
