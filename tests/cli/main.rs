@@ -6,6 +6,7 @@ mod check;
 mod export;
 mod firmware;
 mod fk;
+mod link;
 mod rotary;
 mod settings;
 mod solve;
@@ -106,6 +107,7 @@ fn help_lists_every_command() {
             "view",
             "settings",
             "firmware",
+            "link",
             "help"
         ]
     );

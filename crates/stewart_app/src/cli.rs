@@ -45,6 +45,90 @@ pub enum Command {
     /// The scenario's geometry as a C header for controller firmware (Arduino, STM32):
     /// joints, horn and rod lengths, horn directions, servo range, reversal and trims.
     Firmware(FirmwareArgs),
+    /// Stream the trajectory's set-points to a controller (UDP, or a dry run), through the
+    /// safety supervisor: arming ramp, range and rate limits, Ctrl-C as e-stop.
+    Link(LinkArgs),
+}
+
+/// Where `stewart link` sends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LinkTransport {
+    /// UDP datagrams to `--address`.
+    Udp,
+    /// A record of what would be sent, with times (`--out`, or standard output).
+    File,
+}
+
+/// What `stewart link` writes on the wire.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LinkFormat {
+    /// 34-byte frames with a CRC (docs/PROTOCOL.md).
+    Binary,
+    /// `S,seq,v1,…,v6` lines.
+    Text,
+}
+
+/// Arguments of `stewart link`.
+#[derive(Debug, Args)]
+pub struct LinkArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Where to send (with --dry-run: `file`).
+    #[arg(long, value_enum)]
+    pub transport: Option<LinkTransport>,
+    /// The UDP peer, HOST:PORT.
+    #[arg(long, value_name = "HOST:PORT")]
+    pub address: Option<String>,
+    /// Record the dry run here instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Set-points per second, 10 to 1000.
+    #[arg(long, value_name = "HZ", default_value = "100", value_parser = parse_link_rate)]
+    pub rate: f64,
+    /// Seconds to stream (default: the trajectory's duration; with --loop, until Ctrl-C).
+    #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
+    pub duration: Option<f64>,
+    /// Play the trajectory again and again.
+    #[arg(long = "loop")]
+    pub repeat: bool,
+    /// Send nothing anywhere: record what would be sent (the same as `--transport file`).
+    #[arg(long)]
+    pub dry_run: bool,
+    /// Frames or text lines.
+    #[arg(long, value_enum, default_value = "binary")]
+    pub format: LinkFormat,
+    /// Seconds of the arming ramp from home to the trajectory.
+    #[arg(long, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
+    pub ramp: f64,
+}
+
+/// A set-point rate, 10 to 1000 Hz.
+pub fn parse_link_rate(text: &str) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of hertz"))?;
+    if (10.0..=1000.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the rate must be between 10 and 1000 Hz, got {text}"
+        ))
+    }
+}
+
+/// A number of seconds for the link, 0 to 1e6.
+pub fn parse_link_seconds(text: &str) -> Result<f64, String> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of seconds"))?;
+    if (0.0..=bounds::TIME_S).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("seconds must be between 0 and 1e6, got {text}"))
+    }
 }
 
 /// Arguments of `stewart firmware`.

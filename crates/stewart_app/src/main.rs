@@ -44,6 +44,7 @@ fn main() -> ExitCode {
         Some(Command::View(args)) => commands::view::run(&args),
         Some(Command::Settings(args)) => commands::settings::run(&args),
         Some(Command::Firmware(args)) => commands::firmware::run(&args),
+        Some(Command::Link(args)) => commands::link::run(&args),
         None => commands::no_command(),
     };
     match result {

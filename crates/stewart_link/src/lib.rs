@@ -7,7 +7,9 @@
 //!   fixed-point values, CRC) with its encoder and a resynchronising stream decoder;
 //! - [`safety`]: the DISARMED → ARMING → ARMED → STOPPING state machine that decides,
 //!   tick by tick, what may be sent;
-//! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches.
+//! - [`sender`]: the real-time thread: absolute deadlines, the supervisor, the wire;
+//! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches;
+//! - [`transport`]: UDP, or a dry-run record of what would be sent.
 //!
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.
@@ -16,6 +18,8 @@ pub mod channels;
 pub mod crc;
 pub mod frame;
 pub mod safety;
+pub mod sender;
 pub mod text;
+pub mod transport;
 
 pub use frame::{DecodeError, Decoder, Flags, Frame, FrameKind, Unit};

@@ -4,6 +4,7 @@ pub mod check;
 pub mod firmware;
 pub mod fk;
 pub mod forces;
+pub mod link;
 pub mod plot;
 pub mod render;
 pub mod settings;

@@ -1,0 +1,351 @@
+//! The real-time sender: a thread that wakes at absolute deadlines (`start + k / rate`, not
+//! the UI's frame clock), asks for the target at that time, lets the [`Supervisor`] decide
+//! what may be sent, maps it to the wire and sends it. Commands (arm, e-stop, stop) come in
+//! through a channel; the status (state, last note, frames, timing) is shared.
+
+use std::sync::mpsc::{self, Receiver, TryRecvError};
+use std::sync::{Arc, Mutex, PoisonError};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+use crate::channels::ChannelMap;
+use crate::frame::{Flags, Frame, FrameKind};
+use crate::safety::{LinkState, Supervisor};
+use crate::text;
+use crate::transport::Transport;
+
+/// Binary frames or text lines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// The 34-byte frame.
+    Binary,
+    /// The `S,seq,…` line.
+    Text,
+}
+
+/// What the sender is asked to do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// Start arming (ramp from the last values).
+    Arm,
+    /// Emergency stop.
+    EStop,
+    /// Bring the platform to rest as the stop mode says, disarm, and end the stream.
+    Stop,
+}
+
+/// How late the wake-ups were, microseconds.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Timing {
+    /// Wake-ups measured.
+    pub count: u64,
+    /// Mean lateness.
+    pub mean_us: f64,
+    /// 99th percentile (to the histogram's 1 µs bins).
+    pub p99_us: f64,
+    /// Latest.
+    pub max_us: f64,
+}
+
+/// Lateness histogram: 1 µs bins up to 20 ms, the rest in the last bin.
+#[derive(Clone, Debug)]
+struct Lateness {
+    bins: Vec<u64>,
+    count: u64,
+    sum: f64,
+    max: f64,
+}
+
+impl Lateness {
+    fn new() -> Self {
+        Self {
+            bins: vec![0; 20_001],
+            count: 0,
+            sum: 0.0,
+            max: 0.0,
+        }
+    }
+
+    fn add(&mut self, us: f64) {
+        let bin = (us.max(0.0) as usize).min(self.bins.len() - 1);
+        self.bins[bin] += 1;
+        self.count += 1;
+        self.sum += us;
+        self.max = self.max.max(us);
+    }
+
+    fn timing(&self) -> Timing {
+        let wanted = (self.count as f64 * 0.99).ceil() as u64;
+        let mut seen = 0;
+        let mut p99 = 0.0;
+        for (k, &n) in self.bins.iter().enumerate() {
+            seen += n;
+            if seen >= wanted.max(1) {
+                p99 = k as f64 + 1.0;
+                break;
+            }
+        }
+        Timing {
+            count: self.count,
+            mean_us: if self.count > 0 {
+                self.sum / self.count as f64
+            } else {
+                0.0
+            },
+            p99_us: if self.count > 0 { p99 } else { 0.0 },
+            max_us: self.max,
+        }
+    }
+}
+
+/// What the sender shows while it runs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Status {
+    /// The supervisor's state.
+    pub state: LinkState,
+    /// The latest note (held, limited, disarmed because …).
+    pub note: Option<String>,
+    /// Frames sent.
+    pub frames: u64,
+    /// Stream time of the last tick, seconds.
+    pub time: f64,
+    /// Wake-up lateness so far.
+    pub timing: Timing,
+}
+
+/// How the stream ended.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Summary {
+    /// The status at the end.
+    pub status: Status,
+    /// Why it ended early (a write failed, the map refused a value), if it did.
+    pub failure: Option<String>,
+}
+
+/// The sender's settings.
+pub struct SenderConfig {
+    /// Ticks per second (10–1000).
+    pub rate_hz: f64,
+    /// Frames or lines.
+    pub format: Format,
+    /// Values to wire.
+    pub map: ChannelMap,
+    /// The safety state machine (starts disarmed).
+    pub supervisor: Supervisor,
+    /// Arm at the first tick.
+    pub arm_at_start: bool,
+    /// After this many seconds of stream, stop as [`Command::Stop`] does.
+    pub stop_after: Option<f64>,
+}
+
+/// A running sender.
+pub struct Sender {
+    commands: mpsc::Sender<Command>,
+    status: Arc<Mutex<Status>>,
+    handle: JoinHandle<Summary>,
+}
+
+/// The target at a stream time: six actuator values in natural units, or why there is none.
+pub type Target = Box<dyn FnMut(f64) -> Result<[f64; 6], String> + Send>;
+
+/// The lowest and highest rates, hertz.
+pub const RATES_HZ: (f64, f64) = (10.0, 1000.0);
+
+impl Sender {
+    /// Start the thread. Refuses a rate outside [`RATES_HZ`].
+    pub fn spawn(
+        config: SenderConfig,
+        target: Target,
+        transport: Box<dyn Transport>,
+    ) -> Result<Sender, String> {
+        let (lo, hi) = RATES_HZ;
+        if !(lo..=hi).contains(&config.rate_hz) {
+            return Err(format!(
+                "the rate must be between {lo} and {hi} Hz, got {}",
+                config.rate_hz
+            ));
+        }
+        let (commands, inbox) = mpsc::channel();
+        let status = Arc::new(Mutex::new(Status {
+            state: LinkState::Disarmed,
+            note: None,
+            frames: 0,
+            time: 0.0,
+            timing: Timing::default(),
+        }));
+        let shared = Arc::clone(&status);
+        let handle = std::thread::Builder::new()
+            .name("stewart-link".to_owned())
+            .spawn(move || run(config, target, transport, &inbox, &shared))
+            .map_err(|e| format!("cannot start the sender thread: {e}"))?;
+        Ok(Sender {
+            commands,
+            status,
+            handle,
+        })
+    }
+
+    /// Send a command (ignored once the stream has ended).
+    pub fn command(&self, command: Command) {
+        let _ = self.commands.send(command);
+    }
+
+    /// The current status.
+    pub fn status(&self) -> Status {
+        self.status
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone()
+    }
+
+    /// Whether the stream has ended.
+    pub fn finished(&self) -> bool {
+        self.handle.is_finished()
+    }
+
+    /// Stop (as [`Command::Stop`]) and wait for the end.
+    pub fn stop_and_join(self) -> Summary {
+        self.command(Command::Stop);
+        self.join()
+    }
+
+    /// Wait for the stream to end by itself.
+    pub fn join(self) -> Summary {
+        let status = self.status();
+        self.handle.join().unwrap_or_else(|_| Summary {
+            status,
+            failure: Some("the sender thread failed".to_owned()),
+        })
+    }
+}
+
+/// Sleep until `deadline`: the system sleep to within half a millisecond, then a short spin.
+fn sleep_until(deadline: Instant) {
+    loop {
+        let now = Instant::now();
+        let Some(left) = deadline.checked_duration_since(now) else {
+            return;
+        };
+        if left > Duration::from_micros(500) {
+            std::thread::sleep(left - Duration::from_micros(400));
+        } else {
+            std::hint::spin_loop();
+        }
+    }
+}
+
+fn run(
+    mut config: SenderConfig,
+    mut target: Target,
+    mut transport: Box<dyn Transport>,
+    inbox: &Receiver<Command>,
+    shared: &Mutex<Status>,
+) -> Summary {
+    let period = 1.0 / config.rate_hz;
+    let start = Instant::now();
+    let mut lateness = Lateness::new();
+    let mut sequence: u16 = 0;
+    let mut frames = 0u64;
+    let mut stopping = false;
+    let mut failure = None;
+    let mut note = None;
+    let sv = &mut config.supervisor;
+    let mut k: u64 = 0;
+    loop {
+        let t = k as f64 * period;
+        let deadline = start + Duration::from_secs_f64(t);
+        sleep_until(deadline);
+        lateness.add(
+            Instant::now()
+                .saturating_duration_since(deadline)
+                .as_secs_f64()
+                * 1e6,
+        );
+        if k == 0 && config.arm_at_start {
+            let from = *sv.last();
+            sv.arm(t, from);
+        }
+        loop {
+            match inbox.try_recv() {
+                Ok(Command::Arm) => {
+                    let from = *sv.last();
+                    sv.arm(t, from);
+                }
+                Ok(Command::EStop) => sv.estop(),
+                Ok(Command::Stop) => stopping = true,
+                Err(TryRecvError::Empty) => break,
+                // Whoever commanded the stream is gone: stop it.
+                Err(TryRecvError::Disconnected) => {
+                    stopping = true;
+                    break;
+                }
+            }
+        }
+        if config.stop_after.is_some_and(|d| t >= d) {
+            stopping = true;
+        }
+        if stopping && matches!(sv.state(), LinkState::Arming | LinkState::Armed) {
+            sv.estop();
+        }
+        let tick = sv.tick(t, target(t));
+        if tick.note.is_some() {
+            note = tick.note.clone();
+        }
+        match config.map.wire(&tick.values) {
+            Ok(values) => {
+                let frame = Frame {
+                    kind: FrameKind::SetPoint,
+                    sequence,
+                    flags: Flags {
+                        armed: tick.armed,
+                        estop: tick.estop,
+                        home: false,
+                    },
+                    unit: config.map.output().unit(),
+                    values,
+                };
+                let bytes = match config.format {
+                    Format::Binary => Some(frame.encode().to_vec()),
+                    Format::Text => text::line(&frame).map(String::into_bytes),
+                };
+                if let Some(bytes) = bytes {
+                    if let Err(e) = transport.send(t, &bytes) {
+                        let why = format!("{e}; disarmed");
+                        sv.fault(why.clone());
+                        failure = Some(why);
+                    } else {
+                        frames += 1;
+                        sequence = sequence.wrapping_add(1);
+                    }
+                }
+            }
+            Err(e) => {
+                let why = format!("{e}; disarmed");
+                sv.fault(why.clone());
+                failure = Some(why);
+            }
+        }
+        {
+            let mut s = shared.lock().unwrap_or_else(PoisonError::into_inner);
+            *s = Status {
+                state: sv.state(),
+                note: note.clone(),
+                frames,
+                time: t,
+                timing: lateness.timing(),
+            };
+        }
+        if failure.is_some() || (stopping && sv.state() == LinkState::Disarmed) {
+            break;
+        }
+        k += 1;
+    }
+    let status = shared
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clone();
+    Summary { status, failure }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,196 @@
+//! The sender on a capturing transport: frames in order with the supervisor's values, a
+//! stream that stops home and disarmed, a transport that fails mid-stream, refused rates.
+
+use std::sync::{Arc, Mutex};
+
+use super::*;
+use crate::channels::Output;
+use crate::frame::{Decoder, Unit};
+use crate::safety::{ActuatorLimits, StopMode};
+use crate::transport::TransportError;
+
+/// What a capture received: (stream time, bytes) per send.
+type Sent = Arc<Mutex<Vec<(f64, Vec<u8>)>>>;
+
+/// Keeps what it is given; fails from the `fail_at`-th send on, when set.
+struct Capture {
+    sent: Sent,
+    fail_at: Option<usize>,
+}
+
+impl Transport for Capture {
+    fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        let mut sent = self.sent.lock().unwrap_or_else(PoisonError::into_inner);
+        if self.fail_at.is_some_and(|n| sent.len() >= n) {
+            return Err(TransportError::Io {
+                what: "sending to the test device".to_owned(),
+                source: std::io::Error::other("the device went away"),
+            });
+        }
+        sent.push((t, bytes.to_vec()));
+        Ok(())
+    }
+
+    fn describe(&self) -> String {
+        "capture".to_owned()
+    }
+}
+
+fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
+    SenderConfig {
+        rate_hz,
+        format: Format::Binary,
+        map: ChannelMap::identity(Output::ServoCentidegree),
+        supervisor: Supervisor::new(
+            ActuatorLimits {
+                range: [(-60.0, 60.0); 6],
+                speed: None,
+                accel: None,
+            },
+            0.05,
+            StopMode::Home { speed: 400.0 },
+            [0.0; 6],
+        ),
+        arm_at_start: true,
+        stop_after,
+    }
+}
+
+fn frames(sent: &[(f64, Vec<u8>)]) -> Vec<(f64, Frame)> {
+    let mut d = Decoder::new();
+    sent.iter()
+        .map(|(t, b)| {
+            let f = b.iter().filter_map(|&x| d.push(x)).next();
+            (
+                *t,
+                f.and_then(Result::ok)
+                    .unwrap_or_else(|| panic!("not a frame")),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: None,
+    };
+    // Servo k goes to 10·(k+1)° … well, 10, 20, … 60.
+    let target: Target = Box::new(|_t| Ok(std::array::from_fn(|k| 10.0 * (k as f64 + 1.0))));
+    let sender = Sender::spawn(config(200.0, Some(0.2)), target, Box::new(transport))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let summary = sender.join();
+    assert_eq!(summary.failure, None);
+    assert_eq!(summary.status.state, LinkState::Disarmed);
+    let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
+    let frames = frames(&sent);
+    // 0.2 s at 200 Hz, then the way home (60° at 400°/s: 0.15 s, 30 ticks) and a last frame.
+    assert!(frames.len() > 60 && frames.len() < 80, "{}", frames.len());
+    for (k, (t, f)) in frames.iter().enumerate() {
+        assert_eq!(f.sequence as usize, k);
+        assert_eq!(f.unit, Unit::Centidegree);
+        assert!(
+            (t - k as f64 / 200.0).abs() < 1e-12,
+            "times are the deadlines"
+        );
+    }
+    // Arming from home, then the target itself (0.05 s ramp: ten ticks).
+    assert!(frames[0].1.flags.armed && frames[0].1.values == [0; 6]);
+    let at = |k: usize| frames[k].1.values;
+    assert_eq!(at(20), [1000, 2000, 3000, 4000, 5000, 6000]);
+    // The stop: e-stop flag once, then home at 400°/s (2°, 200 centidegrees, a tick).
+    let stop = frames
+        .iter()
+        .position(|(_, f)| f.flags.estop)
+        .unwrap_or_else(|| panic!("no e-stop frame"));
+    assert!((frames[stop].0 - 0.2).abs() < 1e-12);
+    assert_eq!(frames[stop].1.values[5], 6000 - 200);
+    let last = frames
+        .last()
+        .map(|f| f.1)
+        .unwrap_or_else(|| panic!("no frames"));
+    assert_eq!(last.values, [0; 6]);
+    assert!(!last.flags.armed);
+    assert!(summary.status.timing.count as usize >= frames.len());
+}
+
+#[test]
+fn a_transport_that_fails_disarms_and_ends_the_stream() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: Some(5),
+    };
+    let target: Target = Box::new(|_t| Ok([5.0; 6]));
+    let sender = Sender::spawn(config(500.0, None), target, Box::new(transport))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let summary = sender.join();
+    assert_eq!(
+        summary.failure.as_deref(),
+        Some("sending to the test device: the device went away; disarmed")
+    );
+    assert_eq!(summary.status.state, LinkState::Disarmed);
+    assert_eq!(summary.status.frames, 5);
+}
+
+#[test]
+fn an_estop_command_stops_the_platform() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: None,
+    };
+    let target: Target = Box::new(|_t| Ok([20.0; 6]));
+    let mut cfg = config(200.0, None);
+    cfg.supervisor = Supervisor::new(
+        ActuatorLimits {
+            range: [(-60.0, 60.0); 6],
+            speed: None,
+            accel: None,
+        },
+        0.01,
+        StopMode::Hold,
+        [0.0; 6],
+    );
+    let sender = Sender::spawn(cfg, target, Box::new(transport)).unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(100));
+    sender.command(Command::EStop);
+    std::thread::sleep(Duration::from_millis(50));
+    assert_eq!(sender.status().state, LinkState::Disarmed);
+    let summary = sender.stop_and_join();
+    assert_eq!(summary.failure, None);
+    let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
+    let frames = frames(&sent);
+    let stop = frames
+        .iter()
+        .position(|(_, f)| f.flags.estop)
+        .unwrap_or_else(|| panic!("no e-stop frame"));
+    // Held where it was, and never armed again.
+    assert_eq!(frames[stop].1.values, [2000; 6]);
+    assert!(
+        frames[stop..]
+            .iter()
+            .all(|(_, f)| !f.flags.armed && f.values == [2000; 6])
+    );
+}
+
+#[test]
+fn rates_outside_10_to_1000_hz_are_refused() {
+    for rate in [0.0, 5.0, 1500.0, f64::NAN] {
+        let sent = Arc::new(Mutex::new(Vec::new()));
+        let transport = Capture {
+            sent,
+            fail_at: None,
+        };
+        let target: Target = Box::new(|_t| Ok([0.0; 6]));
+        let e = Sender::spawn(config(rate, None), target, Box::new(transport))
+            .err()
+            .unwrap_or_default();
+        assert!(
+            e.starts_with("the rate must be between 10 and 1000 Hz"),
+            "{e}"
+        );
+    }
+}

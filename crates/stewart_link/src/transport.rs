@@ -1,0 +1,168 @@
+//! Where the bytes go: a UDP peer, or a dry-run record of exactly what would be sent.
+
+use std::io::Write;
+use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
+
+use thiserror::Error;
+
+/// Why a transport could not be opened or used.
+#[derive(Debug, Error)]
+pub enum TransportError {
+    /// The address is not `host:port`.
+    #[error("`{address}` is not an address like 192.168.1.20:9000 or localhost:9000: {reason}")]
+    Address {
+        /// What was given.
+        address: String,
+        /// Why it did not resolve.
+        reason: String,
+    },
+    /// The operating system refused.
+    #[error("{what}: {source}")]
+    Io {
+        /// What was being done.
+        what: String,
+        /// The system's words.
+        source: std::io::Error,
+    },
+}
+
+/// A way to send frames or lines.
+pub trait Transport: Send {
+    /// Send one frame (or one text line) sampled at `t` seconds since the stream began.
+    fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError>;
+    /// What it sends to, for messages.
+    fn describe(&self) -> String;
+}
+
+/// UDP datagrams to one peer, one frame per datagram.
+pub struct Udp {
+    socket: UdpSocket,
+    peer: SocketAddr,
+}
+
+impl Udp {
+    /// A socket on an ephemeral local port, aimed at `address` (`host:port`).
+    pub fn connect(address: &str) -> Result<Self, TransportError> {
+        let bad = |reason: String| TransportError::Address {
+            address: address.to_owned(),
+            reason,
+        };
+        let peer = address
+            .to_socket_addrs()
+            .map_err(|e| bad(e.to_string()))?
+            .next()
+            .ok_or_else(|| bad("it names no address".to_owned()))?;
+        let local: SocketAddr = if peer.is_ipv4() {
+            ([0, 0, 0, 0], 0).into()
+        } else {
+            ([0u16; 8], 0).into()
+        };
+        let io = |what: &str| {
+            let what = format!("{what} {peer}");
+            move |source| TransportError::Io { what, source }
+        };
+        let socket = UdpSocket::bind(local).map_err(io("cannot open a UDP socket for"))?;
+        socket.connect(peer).map_err(io("cannot aim UDP at"))?;
+        Ok(Self { socket, peer })
+    }
+}
+
+impl Transport for Udp {
+    fn send(&mut self, _t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        self.socket
+            .send(bytes)
+            .map(|_| ())
+            .map_err(|source| TransportError::Io {
+                what: format!("sending to {}", self.peer),
+                source,
+            })
+    }
+
+    fn describe(&self) -> String {
+        format!("UDP {}", self.peer)
+    }
+}
+
+/// A dry run: each frame as a line `t_s <TAB> bytes in hex` (or the text line itself,
+/// after the time), into any writer (a file, standard output).
+pub struct Record<W: Write + Send> {
+    out: W,
+    name: String,
+}
+
+impl<W: Write + Send> Record<W> {
+    /// Record into `out`, called `name` in messages.
+    pub fn new(out: W, name: impl Into<String>) -> Self {
+        Self {
+            out,
+            name: name.into(),
+        }
+    }
+
+    /// The writer back (to flush or inspect it).
+    pub fn into_inner(self) -> W {
+        self.out
+    }
+}
+
+impl<W: Write + Send> Transport for Record<W> {
+    fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        let body = if bytes.ends_with(b"\n") && bytes.is_ascii() {
+            String::from_utf8_lossy(bytes).trim_end().to_owned()
+        } else {
+            bytes
+                .iter()
+                .map(|b| format!("{b:02X}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        writeln!(self.out, "{t:.6}\t{body}")
+            .and_then(|()| self.out.flush())
+            .map_err(|source| TransportError::Io {
+                what: format!("writing the dry run to {}", self.name),
+                source,
+            })
+    }
+
+    fn describe(&self) -> String {
+        format!("dry run into {}", self.name)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn udp_reaches_a_local_peer_and_bad_addresses_are_named() {
+        let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+        let address = peer
+            .local_addr()
+            .unwrap_or_else(|e| panic!("{e}"))
+            .to_string();
+        let mut udp = Udp::connect(&address).unwrap_or_else(|e| panic!("{e}"));
+        udp.send(0.0, &[1, 2, 3]).unwrap_or_else(|e| panic!("{e}"));
+        let mut buf = [0u8; 64];
+        let n = peer.recv(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(&buf[..n], &[1, 2, 3]);
+        assert_eq!(udp.describe(), format!("UDP {address}"));
+        for bad in ["nowhere", "1.2.3.4", "1.2.3.4:99999", "host:port"] {
+            let e = Udp::connect(bad)
+                .err()
+                .map(|e| e.to_string())
+                .unwrap_or_default();
+            assert!(e.starts_with(&format!("`{bad}` is not an address")), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_dry_run_records_frames_in_hex_and_lines_as_they_are() {
+        let mut r = Record::new(Vec::new(), "memory");
+        r.send(0.5, &[0xA5, 0x5A, 0x01])
+            .unwrap_or_else(|e| panic!("{e}"));
+        r.send(0.51, b"S,1,1,2,3,4,5,6\n")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let text = String::from_utf8(r.into_inner()).unwrap_or_default();
+        assert_eq!(text, "0.500000\tA5 5A 01\n0.510000\tS,1,1,2,3,4,5,6\n");
+    }
+}

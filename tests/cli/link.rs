@@ -1,0 +1,193 @@
+//! `stewart link`: a dry run records frames at the deadlines with the trajectory's servo
+//! angles once armed; a UDP stream on loopback arrives whole, in order, CRC-checked, and
+//! ends home and disarmed; bad options are one clear error.
+
+use std::net::UdpSocket;
+use std::time::Duration;
+
+use stewart_link::{Decoder, Frame, Unit};
+
+use crate::{parse_csv, stderr, stdout, stewart};
+
+/// The frames of a dry-run record: (time, frame) per line.
+fn recorded(text: &str) -> Vec<(f64, Frame)> {
+    text.lines()
+        .map(|line| {
+            let (t, hex) = line.split_once('\t').unwrap_or_else(|| panic!("{line}"));
+            let mut d = Decoder::new();
+            let frame = hex
+                .split_whitespace()
+                .filter_map(|h| d.push(u8::from_str_radix(h, 16).unwrap_or_default()))
+                .next()
+                .and_then(Result::ok)
+                .unwrap_or_else(|| panic!("not a frame: {line}"));
+            (t.parse().unwrap_or(f64::NAN), frame)
+        })
+        .collect()
+}
+
+#[test]
+fn a_dry_run_records_the_servo_angles_once_armed() {
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "servo-desk",
+        "--dry-run",
+        "--duration",
+        "1",
+        "--rate",
+        "50",
+        "--ramp",
+        "0.2",
+        "--set",
+        "limits.servo_accel_max_deg_s2=off",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).starts_with("link: "), "{}", stderr(&o));
+    let frames = recorded(&stdout(&o));
+    // The servo angles of the same times, from `solve` on a table of the trajectory's poses.
+    let solved = stewart(&["solve", "--preset", "servo-desk"]);
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let theta = header.iter().position(|c| c == "theta1").unwrap_or(7);
+    for (k, (t, f)) in frames.iter().enumerate() {
+        assert_eq!(f.sequence as usize, k);
+        assert_eq!(f.unit, Unit::Centidegree);
+        assert!((t - k as f64 / 50.0).abs() < 1e-9, "{t}");
+        // After the ramp and before the stop, the values are the trajectory's angles (the
+        // solve table has a sample every 10 ms: t = 0.02 k lands on one).
+        if *t >= 0.2 && *t < 1.0 {
+            let row = &rows[(t * 100.0).round() as usize];
+            assert!((row[0] - t).abs() < 1e-9);
+            for i in 0..6 {
+                let want = (row[theta + i] * 100.0).round() as i32;
+                assert_eq!(f.values[i], want, "t = {t}, servo {}", i + 1);
+            }
+            assert!(f.flags.armed);
+        }
+    }
+    // It ends disarmed at home.
+    let last = frames
+        .last()
+        .map(|f| f.1)
+        .unwrap_or_else(|| panic!("no frames"));
+    assert!(!last.flags.armed);
+    assert!(frames.iter().any(|(_, f)| f.flags.estop));
+}
+
+#[test]
+fn a_udp_stream_arrives_in_order_and_ends_disarmed() {
+    let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    // The stream is over when nothing comes for a second.
+    peer.set_read_timeout(Some(Duration::from_secs(1)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let address = peer
+        .local_addr()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_string();
+    let receiver = std::thread::spawn(move || {
+        let mut frames = Vec::new();
+        let mut buf = [0u8; 64];
+        while let Ok(n) = peer.recv(&mut buf) {
+            let mut d = Decoder::new();
+            let f = buf[..n].iter().filter_map(|&b| d.push(b)).next();
+            frames.push(
+                f.and_then(Result::ok)
+                    .unwrap_or_else(|| panic!("bad datagram")),
+            );
+        }
+        frames
+    });
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "0.5",
+        "--rate",
+        "200",
+        "--ramp",
+        "0.1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let frames = receiver
+        .join()
+        .unwrap_or_else(|_| panic!("receiver failed"));
+    assert!(frames.len() > 100, "{}", frames.len());
+    for (k, f) in frames.iter().enumerate() {
+        assert_eq!(f.sequence as usize, k, "lost or reordered");
+        assert_eq!(f.unit, Unit::Micrometre);
+        // Every leg length sent is inside the paired preset's stroke (0.55 … 1.30 m).
+        assert!(
+            f.values.iter().all(|&v| (550_000..=1_300_000).contains(&v)),
+            "{f:?}"
+        );
+    }
+    assert!(!frames.last().is_some_and(|f| f.flags.armed));
+    assert!(frames.iter().any(|f| f.flags.estop));
+}
+
+#[test]
+fn a_peer_that_goes_away_disarms_the_link_with_a_clear_error() {
+    // A port nobody listens on: loopback answers with "connection refused", which the
+    // sender sees on a following send.
+    let gone = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let address = gone
+        .local_addr()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_string();
+    drop(gone);
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "2",
+        "--rate",
+        "100",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("error: the link stopped: sending to"), "{err}");
+    assert!(err.trim_end().ends_with("disarmed"), "{err}");
+}
+
+#[test]
+fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
+    for (args, expected) in [
+        (vec!["link"], "choose where to send"),
+        (
+            vec!["link", "--transport", "udp"],
+            "--transport udp needs --address HOST:PORT",
+        ),
+        (
+            vec!["link", "--transport", "udp", "--address", "nowhere"],
+            "`nowhere` is not an address",
+        ),
+        (
+            vec!["link", "--dry-run", "--rate", "0"],
+            "the rate must be between 10 and 1000 Hz",
+        ),
+        (
+            vec!["link", "--dry-run", "--rate", "1001"],
+            "the rate must be between 10 and 1000 Hz",
+        ),
+        (
+            vec!["link", "--dry-run", "--transport", "udp"],
+            "--dry-run sends nothing",
+        ),
+    ] {
+        let o = stewart(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = stderr(&o);
+        assert!(err.contains(expected), "{args:?}: {err}");
+        assert!(stdout(&o).is_empty(), "{args:?} sent something");
+    }
+}
