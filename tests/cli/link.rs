@@ -191,3 +191,99 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
         assert!(stdout(&o).is_empty(), "{args:?} sent something");
     }
 }
+
+/// A free loopback port (bound and released; the device simulator binds it next).
+fn free_port() -> String {
+    let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    s.local_addr().unwrap_or_else(|e| panic!("{e}")).to_string()
+}
+
+/// `stewart device-sim` on `address` in the background, with `extra` options.
+fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "device-sim",
+            "--udp",
+            address,
+            "--idle",
+            "1",
+            "--duration",
+            "30",
+        ])
+        .args(extra)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    // Give it time to bind before anything is sent.
+    std::thread::sleep(Duration::from_millis(300));
+    child
+}
+
+#[test]
+fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits() {
+    let address = free_port();
+    let sim = device_sim(&address, &[]);
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "servo-desk",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "0.5",
+        "--rate",
+        "200",
+        "--ramp",
+        "0.1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent: usize = stderr(&o)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    assert_eq!(sim.status.code(), Some(0), "{log}");
+    assert!(
+        log.contains(&format!(
+            "device-sim: {sent} frames, 0 damaged, 0 lost, 0 values outside"
+        )),
+        "{log}"
+    );
+    let (header, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+    assert_eq!(
+        header[..6],
+        ["t_s", "seq", "armed", "estop", "home", "unit"].map(String::from)
+    );
+    assert_eq!(rows.len(), sent);
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row[1] as usize, k);
+    }
+    // Limits on the device: ±30° (3000 in 0.01°) is passed by the servo-desk's motion.
+    let address = free_port();
+    let sim = device_sim(&address, &["--min", "-3000", "--max", "3000"]);
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "servo-desk",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "3",
+        "--rate",
+        "100",
+        "--ramp",
+        "0.1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(sim.status.code(), Some(1));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    assert!(!log.contains(" 0 values outside"), "{log}");
+}

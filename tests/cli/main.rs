@@ -108,6 +108,7 @@ fn help_lists_every_command() {
             "settings",
             "firmware",
             "link",
+            "device-sim",
             "help"
         ]
     );

@@ -48,6 +48,33 @@ pub enum Command {
     /// Stream the trajectory's set-points to a controller (UDP, or a dry run), through the
     /// safety supervisor: arming ramp, range and rate limits, Ctrl-C as e-stop.
     Link(LinkArgs),
+    /// A stand-in controller for tests and demos: receives frames over UDP, checks their
+    /// CRC, sequence and limits, and records them as CSV. Exit status 1 when a frame was
+    /// damaged, lost or outside the limits.
+    DeviceSim(DeviceSimArgs),
+}
+
+/// Arguments of `stewart device-sim`.
+#[derive(Debug, Args)]
+pub struct DeviceSimArgs {
+    /// Listen here, HOST:PORT (port 0: any free port, printed on standard error).
+    #[arg(long, value_name = "HOST:PORT")]
+    pub udp: String,
+    /// Write the record here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// End after this many seconds without a datagram (once the first has come).
+    #[arg(long, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
+    pub idle: f64,
+    /// End after this many seconds in any case.
+    #[arg(long, value_name = "S", default_value = "600", value_parser = parse_link_seconds)]
+    pub duration: f64,
+    /// Smallest value accepted on any channel, in the wire's unit (µm, 0.01° or µs).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub min: Option<i32>,
+    /// Largest value accepted on any channel, in the wire's unit.
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub max: Option<i32>,
 }
 
 /// Where `stewart link` sends.

@@ -45,6 +45,7 @@ fn main() -> ExitCode {
         Some(Command::Settings(args)) => commands::settings::run(&args),
         Some(Command::Firmware(args)) => commands::firmware::run(&args),
         Some(Command::Link(args)) => commands::link::run(&args),
+        Some(Command::DeviceSim(args)) => commands::device_sim::run(&args),
         None => commands::no_command(),
     };
     match result {

@@ -1,0 +1,124 @@
+//! `stewart device-sim`: a stand-in controller. It listens for UDP datagrams, decodes the
+//! frames, counts damaged and lost ones and values outside the limits, and records every
+//! frame as a CSV row: `t_s,seq,armed,estop,home,unit,v1,…,v6` (`t_s` since the first
+//! frame; `unit` the wire code: 0 µm, 1 0.01°, 2 µs of pulse).
+
+use std::io::Write as _;
+use std::net::UdpSocket;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use anyhow::{Result, anyhow};
+use stewart_link::{Decoder, Frame, Unit};
+
+use crate::cli::DeviceSimArgs;
+use crate::output;
+
+/// What was received.
+#[derive(Default)]
+struct Tally {
+    rows: String,
+    frames: u64,
+    bad: u64,
+    lost: u64,
+    outside: u64,
+    last_sequence: Option<u16>,
+}
+
+/// Run the command.
+pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
+    let out = output::destination(args.out.as_deref(), &[])?;
+    let socket =
+        UdpSocket::bind(&args.udp).map_err(|e| anyhow!("cannot listen on `{}`: {e}", args.udp))?;
+    let local = socket.local_addr()?;
+    let _ = writeln!(std::io::stderr(), "device-sim: listening on {local}");
+    socket.set_read_timeout(Some(Duration::from_millis(50)))?;
+    let started = Instant::now();
+    let mut first: Option<Instant> = None;
+    let mut last = Instant::now();
+    let mut tally = Tally {
+        rows: "t_s,seq,armed,estop,home,unit,v1,v2,v3,v4,v5,v6\n".to_owned(),
+        ..Tally::default()
+    };
+    let stop = crate::interrupt::flag();
+    let mut buf = [0u8; 2048];
+    loop {
+        if stop.load(std::sync::atomic::Ordering::Relaxed)
+            || started.elapsed().as_secs_f64() >= args.duration
+            || first.is_some() && last.elapsed().as_secs_f64() >= args.idle
+        {
+            break;
+        }
+        let n = match socket.recv(&mut buf) {
+            Ok(n) => n,
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
+                ) =>
+            {
+                continue;
+            }
+            Err(e) => return Err(anyhow!("receiving on {local}: {e}")),
+        };
+        let now = Instant::now();
+        let t0 = *first.get_or_insert(now);
+        last = now;
+        let mut decoder = Decoder::new();
+        let mut any = false;
+        for &b in &buf[..n] {
+            match decoder.push(b) {
+                Some(Ok(frame)) => {
+                    any = true;
+                    record(&mut tally, (now - t0).as_secs_f64(), &frame, args);
+                }
+                Some(Err(_)) => tally.bad += 1,
+                None => {}
+            }
+        }
+        if !any {
+            // A datagram with no whole frame in it is damaged too.
+            tally.bad += u64::from(n > 0);
+        }
+    }
+    let rows = std::mem::take(&mut tally.rows);
+    output::emit_with(out.as_ref(), |w| w.write_all(rows.as_bytes()))?;
+    let _ = writeln!(
+        std::io::stderr(),
+        "device-sim: {} frames, {} damaged, {} lost, {} values outside the limits",
+        tally.frames,
+        tally.bad,
+        tally.lost,
+        tally.outside
+    );
+    Ok(if tally.bad + tally.lost + tally.outside == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// Count and record one good frame.
+fn record(tally: &mut Tally, t: f64, f: &Frame, args: &DeviceSimArgs) {
+    tally.frames += 1;
+    if let Some(previous) = tally.last_sequence {
+        tally.lost += u64::from(f.sequence.wrapping_sub(previous).wrapping_sub(1));
+    }
+    tally.last_sequence = Some(f.sequence);
+    let outside = |v: &i32| args.min.is_some_and(|m| *v < m) || args.max.is_some_and(|m| *v > m);
+    tally.outside += f.values.iter().filter(|v| outside(v)).count() as u64;
+    let unit = match f.unit {
+        Unit::Micrometre => 0,
+        Unit::Centidegree => 1,
+        Unit::PulseMicrosecond => 2,
+    };
+    let values: Vec<String> = f.values.iter().map(i32::to_string).collect();
+    tally.rows.push_str(&format!(
+        "{t:.6},{},{},{},{},{unit},{}\n",
+        f.sequence,
+        u8::from(f.flags.armed),
+        u8::from(f.flags.estop),
+        u8::from(f.flags.home),
+        values.join(",")
+    ));
+}
