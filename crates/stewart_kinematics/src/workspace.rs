@@ -103,6 +103,21 @@ pub struct ConstantOrientationWorkspace {
     pub spans: Vec<[f64; 4]>,
 }
 
+impl ConstantOrientationWorkspace {
+    /// No reachable position at `orientation`, on a grid of `resolution` columns a side.
+    fn empty(orientation: [Angle; 3], resolution: usize) -> Self {
+        Self {
+            orientation,
+            resolution,
+            cell: 0.0,
+            volume: 0.0,
+            volume_error: 0.0,
+            extent: None,
+            spans: Vec::new(),
+        }
+    }
+}
+
 /// Geometry constants of one orientation.
 struct Shells {
     /// Shell centres `−d_i`.
@@ -317,15 +332,7 @@ impl Geometry {
         let [roll, pitch, yaw] = orientation;
         let rotation = crate::pose::rotation_zyx(roll, pitch, yaw);
         let shells = Shells::new(self, &rotation, min, max);
-        let empty = ConstantOrientationWorkspace {
-            orientation,
-            resolution,
-            cell: 0.0,
-            volume: 0.0,
-            volume_error: 0.0,
-            extent: None,
-            spans: Vec::new(),
-        };
+        let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
         let Some(bounds) = shells.xy_bounds() else {
             return Ok(empty);
         };

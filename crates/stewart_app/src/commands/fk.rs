@@ -62,15 +62,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
         ));
     }
 
-    let mut header: Vec<&str> = Vec::new();
-    if t_index.is_some() {
-        header.push("t");
-    }
-    if args.assembly_modes {
-        header.push("mode");
-    }
-    header.extend(POSE_OUT);
-    let mut csv = CsvText::with_header(&header);
+    let mut csv = pose_table(t_index.is_some(), args.assembly_modes);
     let time = |k: usize| t_index.map(|i| table.row(k)[i]);
 
     if args.assembly_modes {
@@ -78,14 +70,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
             let modes = geometry
                 .assembly_modes(row)
                 .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
-            for (m, s) in modes.iter().enumerate() {
-                csv.row(
-                    time(k)
-                        .into_iter()
-                        .chain([(m + 1) as f64])
-                        .chain(pose_values(s)),
-                );
-            }
+            mode_rows(&mut csv, time(k), &modes);
         }
     } else {
         let sequence = geometry
@@ -130,15 +115,7 @@ fn servos(
     }
     table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
     let t_index = table.index("t");
-    let mut header: Vec<&str> = Vec::new();
-    if t_index.is_some() {
-        header.push("t");
-    }
-    if args.assembly_modes {
-        header.push("mode");
-    }
-    header.extend(POSE_OUT);
-    let mut csv = CsvText::with_header(&header);
+    let mut csv = pose_table(t_index.is_some(), args.assembly_modes);
     let options = ForwardOptions::default();
     let mut start = geometry.home_pose();
     for (k, row) in table.rows().enumerate() {
@@ -147,15 +124,7 @@ fn servos(
             let modes = geometry
                 .servo_assembly_modes(&angles)
                 .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
-            for (m, s) in modes.iter().enumerate() {
-                csv.row(
-                    t_index
-                        .map(|i| row[i])
-                        .into_iter()
-                        .chain([(m + 1) as f64])
-                        .chain(pose_values(s)),
-                );
-            }
+            mode_rows(&mut csv, t_index.map(|i| row[i]), &modes);
             continue;
         }
         let from = if args.cold {
@@ -172,6 +141,31 @@ fn servos(
     let text = csv.into_string();
     output::emit_with(out, |w| w.write_all(text.as_bytes()))?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The output table: `t` when the input has times, `mode` when assembly modes are listed,
+/// then the pose columns.
+fn pose_table(times: bool, modes: bool) -> CsvText {
+    let mut header: Vec<&str> = Vec::new();
+    if times {
+        header.push("t");
+    }
+    if modes {
+        header.push("mode");
+    }
+    header.extend(POSE_OUT);
+    CsvText::with_header(&header)
+}
+
+/// One row per assembly mode of an input row, numbered from 1.
+fn mode_rows(csv: &mut CsvText, time: Option<f64>, modes: &[ForwardSolution]) {
+    for (m, s) in modes.iter().enumerate() {
+        csv.row(
+            time.into_iter()
+                .chain([(m + 1) as f64])
+                .chain(pose_values(s)),
+        );
+    }
 }
 
 /// `x, y, z, roll_deg, pitch_deg, yaw_deg, iterations, residual` of a solution, angles in

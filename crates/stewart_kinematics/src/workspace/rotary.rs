@@ -191,15 +191,7 @@ pub(super) fn workspace(
         offsets,
         z_top: (servos.horn_length() + servos.rod_length() - lowest_offset).max(0.0),
     };
-    let empty = ConstantOrientationWorkspace {
-        orientation,
-        resolution,
-        cell: 0.0,
-        volume: 0.0,
-        volume_error: 0.0,
-        extent: None,
-        spans: Vec::new(),
-    };
+    let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
     let Some(bounds) = columns.xy_bounds() else {
         return Ok(empty);
     };
