@@ -9,6 +9,32 @@ use stewart_link::{Decoder, Frame, Unit};
 
 use crate::{parse_csv, stderr, stdout, stewart};
 
+/// `stewart link` streaming `preset` over UDP to `address` for `duration` seconds at
+/// `rate` Hz with an arming ramp of `ramp` seconds.
+fn udp_link(
+    preset: &str,
+    address: &str,
+    duration: &str,
+    rate: &str,
+    ramp: &str,
+) -> std::process::Output {
+    stewart(&[
+        "link",
+        "--preset",
+        preset,
+        "--transport",
+        "udp",
+        "--address",
+        address,
+        "--duration",
+        duration,
+        "--rate",
+        rate,
+        "--ramp",
+        ramp,
+    ])
+}
+
 /// The frames of a dry-run record: (time, frame) per line.
 fn recorded(text: &str) -> Vec<(f64, Frame)> {
     text.lines()
@@ -97,21 +123,7 @@ fn a_udp_stream_arrives_in_order_and_ends_disarmed() {
         }
         frames
     });
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "paired",
-        "--transport",
-        "udp",
-        "--address",
-        &address,
-        "--duration",
-        "0.5",
-        "--rate",
-        "200",
-        "--ramp",
-        "0.1",
-    ]);
+    let o = udp_link("paired", &address, "0.5", "200", "0.1");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let frames = receiver
         .join()
@@ -140,19 +152,7 @@ fn a_peer_that_goes_away_disarms_the_link_with_a_clear_error() {
         .unwrap_or_else(|e| panic!("{e}"))
         .to_string();
     drop(gone);
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "paired",
-        "--transport",
-        "udp",
-        "--address",
-        &address,
-        "--duration",
-        "2",
-        "--rate",
-        "100",
-    ]);
+    let o = udp_link("paired", &address, "2", "100", "2");
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("error: the link stopped: sending to"), "{err}");
@@ -224,21 +224,7 @@ fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
 fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits() {
     let address = free_port();
     let sim = device_sim(&address, &[]);
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "servo-desk",
-        "--transport",
-        "udp",
-        "--address",
-        &address,
-        "--duration",
-        "0.5",
-        "--rate",
-        "200",
-        "--ramp",
-        "0.1",
-    ]);
+    let o = udp_link("servo-desk", &address, "0.5", "200", "0.1");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent: usize = stderr(&o)
         .split_whitespace()
@@ -266,24 +252,71 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
     // Limits on the device: ±30° (3000 in 0.01°) is passed by the servo-desk's motion.
     let address = free_port();
     let sim = device_sim(&address, &["--min", "-3000", "--max", "3000"]);
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "servo-desk",
-        "--transport",
-        "udp",
-        "--address",
-        &address,
-        "--duration",
-        "3",
-        "--rate",
-        "100",
-        "--ramp",
-        "0.1",
-    ]);
+    let o = udp_link("servo-desk", &address, "3", "100", "0.1");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(sim.status.code(), Some(1));
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert!(!log.contains(" 0 values outside"), "{log}");
+}
+
+#[test]
+fn a_dry_run_into_a_file_never_lands_on_an_input_and_leaves_nothing_half_written() {
+    let dir = crate::tempdir();
+    let preset = format!(
+        "{}/../../assets/presets/servo-desk.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let scenario = dir.path().join("s.toml");
+    std::fs::copy(&preset, &scenario).unwrap_or_else(|e| panic!("{e}"));
+    let s = scenario.display().to_string();
+    let o = stewart(&[
+        "link",
+        "--scenario",
+        &s,
+        "--dry-run",
+        "--duration",
+        "0.1",
+        "--out",
+        &s,
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("it is the scenario file this command reads"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read(&scenario).ok(), std::fs::read(&preset).ok());
+    let record = dir.path().join("record.txt");
+    let r = record.display().to_string();
+    let o = stewart(&[
+        "link",
+        "--scenario",
+        &s,
+        "--dry-run",
+        "--duration",
+        "0.1",
+        "--out",
+        &r,
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!recorded(&std::fs::read_to_string(&record).unwrap_or_default()).is_empty());
+    // Only the two files: no staged leftovers.
+    assert_eq!(
+        std::fs::read_dir(dir.path())
+            .map(|d| d.count())
+            .unwrap_or(0),
+        2
+    );
+    // A full disk stops the stream with one error.
+    let o = stewart(&[
+        "link",
+        "--dry-run",
+        "--duration",
+        "0.1",
+        "--out",
+        "/dev/full",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("No space left"), "{}", stderr(&o));
 }

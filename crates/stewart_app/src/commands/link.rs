@@ -13,12 +13,12 @@ use stewart_link::sender::{Command, Format, Sender, SenderConfig, Target};
 use stewart_link::transport::{Record, Transport, Udp};
 
 use crate::cli::{LinkArgs, LinkFormat, LinkTransport};
-use crate::source;
+use crate::{output, source};
 
 /// Run the command.
 pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    let transport = open_transport(args)?;
+    let (transport, staged) = open_transport(args)?;
     let geometry = scenario.geometry.clone();
     let home = actuator_values(&geometry, &geometry.home_pose())
         .map_err(|why| anyhow!("the home pose of `{}`: {why}", scenario.name))?;
@@ -78,7 +78,12 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             .unwrap_or_default()
     );
     if let Some(failure) = summary.failure {
+        // A record that could not be finished is not left behind (the staged file goes).
         bail!("the link stopped: {failure}");
+    }
+    // The record of a stream that ended (also by e-stop) is whole: put it in place.
+    if let Some((destination, path)) = staged {
+        destination.deliver(path)?;
     }
     if stopped_by_user {
         bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
@@ -86,8 +91,13 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The transport the arguments ask for.
-fn open_transport(args: &LinkArgs) -> Result<Box<dyn Transport>> {
+/// A dry-run record being written beside its destination, put in place when the stream
+/// has ended.
+type Staged = Option<(output::Destination, tempfile::TempPath)>;
+
+/// The transport the arguments ask for (and, for a dry run into a regular file, the staged
+/// file to deliver at the end).
+fn open_transport(args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
     let kind = match (args.dry_run, args.transport) {
         (true, None | Some(LinkTransport::File)) => LinkTransport::File,
         (true, Some(LinkTransport::Udp)) => {
@@ -98,23 +108,30 @@ fn open_transport(args: &LinkArgs) -> Result<Box<dyn Transport>> {
             "choose where to send: --dry-run (a record of what would be sent), or --transport udp --address HOST:PORT"
         ),
     };
-    Ok(match kind {
-        LinkTransport::Udp => {
-            let address = args
-                .address
-                .as_deref()
-                .ok_or_else(|| anyhow!("--transport udp needs --address HOST:PORT"))?;
-            Box::new(Udp::connect(address)?)
-        }
-        LinkTransport::File => match &args.out {
-            Some(path) => {
-                let file = std::fs::File::create(path)
-                    .map_err(|e| anyhow!("cannot write the dry run to {}: {e}", path.display()))?;
-                Box::new(Record::new(file, path.display().to_string()))
-            }
-            None => Box::new(Record::new(QuietPipe(std::io::stdout()), "standard output")),
-        },
-    })
+    if kind == LinkTransport::Udp {
+        let address = args
+            .address
+            .as_deref()
+            .ok_or_else(|| anyhow!("--transport udp needs --address HOST:PORT"))?;
+        return Ok((Box::new(Udp::connect(address)?), None));
+    }
+    // The record never lands on an input, and a regular file is written whole or not at all.
+    let inputs = source::inputs(&args.scenario);
+    let Some(destination) = output::destination(args.out.as_deref(), &inputs)? else {
+        let stdout = Record::new(QuietPipe(std::io::stdout()), "standard output");
+        return Ok((Box::new(stdout), None));
+    };
+    destination.require_file()?;
+    let name = destination.shown().display().to_string();
+    if destination.kind() == output::Kind::Special {
+        let device = std::fs::OpenOptions::new()
+            .write(true)
+            .open(destination.real())
+            .map_err(|e| anyhow!("cannot write `{name}`: {e}"))?;
+        return Ok((Box::new(Record::new(device, name)), None));
+    }
+    let (file, path) = destination.staged_file(".partial")?.into_parts();
+    Ok((Box::new(Record::new(file, name)), Some((destination, path))))
 }
 
 /// Standard output for a dry run: a reader that closed the pipe (`| head`) ends the stream;
@@ -173,23 +190,19 @@ fn target(scenario: &Scenario, repeat: bool) -> Target {
 fn supervisor(scenario: &Scenario, home: [f64; 6], ramp: f64) -> Supervisor {
     let g = &scenario.geometry;
     let l = &scenario.limits;
-    let (range, speed, accel) = match g.rotary() {
-        Some(_) => {
-            let [lo, hi] = g.quantity_limits();
-            (
-                (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
-                l.servo_speed_max,
-                l.servo_accel_max,
-            )
-        }
-        None => {
-            let [lo, hi] = g.quantity_limits();
-            (
-                (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
-                l.leg_speed_max,
-                l.leg_accel_max,
-            )
-        }
+    let [lo, hi] = g.quantity_limits();
+    let (range, speed, accel) = if g.rotary().is_some() {
+        (
+            (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
+            l.servo_speed_max,
+            l.servo_accel_max,
+        )
+    } else {
+        (
+            (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
+            l.leg_speed_max,
+            l.leg_accel_max,
+        )
     };
     let home_speed = speed.map_or(0.05 * (range.1 - range.0).min(1000.0), |s| 0.1 * s);
     Supervisor::new(
