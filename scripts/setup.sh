@@ -11,6 +11,8 @@ PACKAGES=(gcc g++ libc6-dev pkg-config ca-certificates                  # g++: t
   poppler-utils                                                          # pdftoppm: tests open exported PDFs
   xvfb xauth                                                             # a virtual display for the viewer's smoke test
   time                                                                   # GNU time: peak memory in scripts/bench-inputs.sh
+  libudev-dev                                                            # serial port and gamepad discovery (serialport, gilrs)
+  socat                                                                  # a pseudo-terminal pair stands in for a serial cable in tests
 )
 
 missing=()

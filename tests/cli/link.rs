@@ -162,10 +162,35 @@ fn a_peer_that_goes_away_disarms_the_link_with_a_clear_error() {
 #[test]
 fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
     for (args, expected) in [
-        (vec!["link"], "choose where to send"),
+        (
+            vec!["link", "--transport", "serial"],
+            "the serial transport needs a port",
+        ),
+        (
+            vec![
+                "link",
+                "--transport",
+                "serial",
+                "--port",
+                "/dev/no-such-port",
+            ],
+            "cannot open the serial port /dev/no-such-port",
+        ),
+        (
+            vec!["link", "--transport", "tcp"],
+            "`tcp` is not one of serial, udp, file",
+        ),
+        (
+            vec!["link", "--set", "link.actuator.2=1", "--dry-run"],
+            "channels 1 and 2 both carry actuator 1",
+        ),
+        (
+            vec!["link", "--set", "link.output=pulse", "--dry-run"],
+            "`link.output = pulse` drives hobby servos",
+        ),
         (
             vec!["link", "--transport", "udp"],
-            "--transport udp needs --address HOST:PORT",
+            "the UDP transport needs an address",
         ),
         (
             vec!["link", "--transport", "udp", "--address", "nowhere"],
@@ -174,6 +199,10 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
         (
             vec!["link", "--dry-run", "--rate", "0"],
             "the rate must be between 10 and 1000 Hz",
+        ),
+        (
+            vec!["link", "--dry-run", "--set", "link.rate_hz=5"],
+            "`link.rate_hz` = 5 refused: must be between 10 and 1000 Hz",
         ),
         (
             vec!["link", "--dry-run", "--rate", "1001"],
@@ -198,18 +227,18 @@ fn free_port() -> String {
     s.local_addr().unwrap_or_else(|e| panic!("{e}")).to_string()
 }
 
-/// `stewart device-sim` on `address` in the background, with `extra` options.
+/// `stewart device-sim` on UDP `address` in the background, with `extra` options.
 fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
+    device_sim_on(&["--udp", address], extra)
+}
+
+/// `stewart device-sim` reading `source` (`--udp ADDR` or `--serial PORT`) in the
+/// background, with `extra` options.
+pub fn device_sim_on(source: &[&str], extra: &[&str]) -> std::process::Child {
     let child = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "device-sim",
-            "--udp",
-            address,
-            "--idle",
-            "1",
-            "--duration",
-            "30",
-        ])
+        .arg("device-sim")
+        .args(source)
+        .args(["--idle", "1", "--duration", "30"])
         .args(extra)
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())

@@ -8,6 +8,7 @@ mod firmware;
 mod fk;
 mod link;
 mod rotary;
+mod serial;
 mod settings;
 mod solve;
 mod view;

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use stewart_kinematics::bounds;
+use stewart_kinematics::link_settings::{LinkFormat, LinkTransport, Word};
 
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
@@ -45,10 +46,11 @@ pub enum Command {
     /// The scenario's geometry as a C header for controller firmware (Arduino, STM32):
     /// joints, horn and rod lengths, horn directions, servo range, reversal and trims.
     Firmware(FirmwareArgs),
-    /// Stream the trajectory's set-points to a controller (UDP, or a dry run), through the
-    /// safety supervisor: arming ramp, range and rate limits, Ctrl-C as e-stop.
+    /// Stream the trajectory's set-points to a controller (serial, UDP, or a dry run),
+    /// through the safety supervisor: arming ramp, range and rate limits, Ctrl-C as e-stop.
     Link(LinkArgs),
-    /// A stand-in controller for tests and demos: receives frames over UDP, checks their
+    /// A stand-in controller for tests and demos: receives frames over UDP or a serial
+    /// port, checks their
     /// CRC, sequence and limits, and records them as CSV. Exit status 1 when a frame was
     /// damaged, lost or outside the limits.
     DeviceSim(DeviceSimArgs),
@@ -58,8 +60,14 @@ pub enum Command {
 #[derive(Debug, Args)]
 pub struct DeviceSimArgs {
     /// Listen here, HOST:PORT (port 0: any free port, printed on standard error).
-    #[arg(long, value_name = "HOST:PORT")]
-    pub udp: String,
+    #[arg(long, value_name = "HOST:PORT", conflicts_with = "serial")]
+    pub udp: Option<String>,
+    /// Read this serial port instead (a pseudo-terminal stands in for a cable in tests).
+    #[arg(long, value_name = "PORT")]
+    pub serial: Option<String>,
+    /// The serial line speed, bits per second.
+    #[arg(long, value_name = "BITS/S", default_value = "115200")]
+    pub baud: u32,
     /// Write the record here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
@@ -77,42 +85,33 @@ pub struct DeviceSimArgs {
     pub max: Option<i32>,
 }
 
-/// Where `stewart link` sends.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum LinkTransport {
-    /// UDP datagrams to `--address`.
-    Udp,
-    /// A record of what would be sent, with times (`--out`, or standard output).
-    File,
-}
-
-/// What `stewart link` writes on the wire.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum LinkFormat {
-    /// 34-byte frames with a CRC (docs/PROTOCOL.md).
-    Binary,
-    /// `S,seq,v1,…,v6` lines.
-    Text,
-}
-
-/// Arguments of `stewart link`.
+/// Arguments of `stewart link`. Each option overrides the scenario's `[link]` table.
 #[derive(Debug, Args)]
 pub struct LinkArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
-    /// Where to send (with --dry-run: `file`).
-    #[arg(long, value_enum)]
+    /// List the serial ports the system offers and exit.
+    #[arg(long)]
+    pub list_ports: bool,
+    /// Where to send: serial, udp, or file (a dry run).
+    #[arg(long, value_parser = parse_word::<LinkTransport>)]
     pub transport: Option<LinkTransport>,
+    /// The serial port (`/dev/ttyUSB0`, `COM3`; see --list-ports).
+    #[arg(long, value_name = "PORT")]
+    pub port: Option<String>,
+    /// The serial line speed, bits per second (default 115200).
+    #[arg(long, value_name = "BITS/S")]
+    pub baud: Option<u32>,
     /// The UDP peer, HOST:PORT.
     #[arg(long, value_name = "HOST:PORT")]
     pub address: Option<String>,
     /// Record the dry run here instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
-    /// Set-points per second, 10 to 1000.
-    #[arg(long, value_name = "HZ", default_value = "100", value_parser = parse_link_rate)]
-    pub rate: f64,
+    /// Set-points per second, 10 to 1000 (default 100).
+    #[arg(long, value_name = "HZ", value_parser = parse_link_rate)]
+    pub rate: Option<f64>,
     /// Seconds to stream (default: the trajectory's duration; with --loop, until Ctrl-C).
     #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
     pub duration: Option<f64>,
@@ -122,12 +121,17 @@ pub struct LinkArgs {
     /// Send nothing anywhere: record what would be sent (the same as `--transport file`).
     #[arg(long)]
     pub dry_run: bool,
-    /// Frames or text lines.
-    #[arg(long, value_enum, default_value = "binary")]
-    pub format: LinkFormat,
-    /// Seconds of the arming ramp from home to the trajectory.
-    #[arg(long, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
-    pub ramp: f64,
+    /// binary (34-byte frames with a CRC, docs/PROTOCOL.md) or text (`S,seq,v1,…,v6` lines).
+    #[arg(long, value_parser = parse_word::<LinkFormat>)]
+    pub format: Option<LinkFormat>,
+    /// Seconds of the arming ramp from home to the trajectory (default 2).
+    #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
+    pub ramp: Option<f64>,
+}
+
+/// A choice of the `[link]` table spelled as in files.
+pub fn parse_word<T: Word>(text: &str) -> Result<T, String> {
+    T::from_word(text).ok_or_else(|| format!("`{text}` is not one of {}", T::choices()))
 }
 
 /// A set-point rate, 10 to 1000 Hz.

@@ -5,6 +5,7 @@ pub mod cli;
 pub mod commands;
 pub mod csv_io;
 pub mod export;
+pub mod hardware;
 pub mod interrupt;
 pub mod output;
 pub mod source;

@@ -16,6 +16,7 @@
 //!   conditioning, singular geometries, forward kinematics, reach, loads, pose limits;
 //! - [`scene`]: plain data describing what to draw (the renderer's input);
 //! - [`rotary`]: rotary-servo (6-RSS) actuators and their closed-form inverse kinematics;
+//! - [`link_settings`]: the `[link]` table (transport, rate, channel map) for real hardware;
 //! - [`settings`], [`bounds`]: every adjustable number and the accepted range of each;
 //! - [`scenario`]: scenario files (TOML) and the shipped presets;
 //! - [`table`]: numeric CSV tables with located errors;
@@ -36,6 +37,7 @@ pub mod inverse;
 pub mod jacobian;
 pub mod layout;
 pub mod limits;
+pub mod link_settings;
 pub mod pose;
 pub mod rotary;
 pub mod scenario;

@@ -1,4 +1,9 @@
-//! Where the bytes go: a UDP peer, or a dry-run record of exactly what would be sent.
+//! Where the bytes go: a serial port, a UDP peer, or a dry-run record of exactly what
+//! would be sent.
+
+mod serial;
+
+pub use serial::{PortInfo, Serial, list_ports, max_rate_hz};
 
 use std::io::Write;
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
@@ -16,6 +21,9 @@ pub enum TransportError {
         /// Why it did not resolve.
         reason: String,
     },
+    /// A setting cannot work (a baud rate of 0).
+    #[error("{0}")]
+    Setting(String),
     /// The operating system refused.
     #[error("{what}: {source}")]
     Io {

@@ -1,5 +1,5 @@
-//! `stewart device-sim`: a stand-in controller. It listens for UDP datagrams, decodes the
-//! frames, counts damaged and lost ones and values outside the limits, and records every
+//! `stewart device-sim`: a stand-in controller. It listens for UDP datagrams or reads a
+//! serial port (a pseudo-terminal in tests), decodes the frames, counts damaged and lost ones and values outside the limits, and records every
 //! frame as a CSV row: `t_s,seq,armed,estop,home,unit,v1,…,v6` (`t_s` since the first
 //! frame; `unit` the wire code: 0 µm, 1 0.01°, 2 µs of pulse).
 
@@ -8,7 +8,8 @@ use std::net::UdpSocket;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use anyhow::{Result, anyhow};
+use anyhow::{Result, anyhow, bail};
+use stewart_link::transport::Serial;
 use stewart_link::{Decoder, Frame, Unit};
 
 use crate::cli::DeviceSimArgs;
@@ -28,11 +29,8 @@ struct Tally {
 /// Run the command.
 pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &[])?;
-    let socket =
-        UdpSocket::bind(&args.udp).map_err(|e| anyhow!("cannot listen on `{}`: {e}", args.udp))?;
-    let local = socket.local_addr()?;
-    let _ = writeln!(std::io::stderr(), "device-sim: listening on {local}");
-    socket.set_read_timeout(Some(Duration::from_millis(50)))?;
+    let mut input = Input::open(args)?;
+    let _ = writeln!(std::io::stderr(), "device-sim: listening on {}", input.name);
     let started = Instant::now();
     let mut first: Option<Instant> = None;
     let mut last = Instant::now();
@@ -42,6 +40,8 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     };
     let stop = crate::interrupt::flag();
     let mut buf = [0u8; 2048];
+    // A serial line is one stream (frames may span reads); each datagram stands alone.
+    let mut stream = Decoder::new();
     loop {
         if stop.load(std::sync::atomic::Ordering::Relaxed)
             || started.elapsed().as_secs_f64() >= args.duration
@@ -49,22 +49,19 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         {
             break;
         }
-        let n = match socket.recv(&mut buf) {
-            Ok(n) => n,
-            Err(e)
-                if matches!(
-                    e.kind(),
-                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
-                ) =>
-            {
-                continue;
-            }
-            Err(e) => return Err(anyhow!("receiving on {local}: {e}")),
-        };
+        let n = input.receive(&mut buf)?;
+        if n == 0 {
+            continue;
+        }
         let now = Instant::now();
         let t0 = *first.get_or_insert(now);
         last = now;
-        let mut decoder = Decoder::new();
+        let mut datagram = Decoder::new();
+        let decoder = if input.datagrams {
+            &mut datagram
+        } else {
+            &mut stream
+        };
         let mut any = false;
         for &b in &buf[..n] {
             match decoder.push(b) {
@@ -76,9 +73,9 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                 None => {}
             }
         }
-        if !any {
+        if input.datagrams && !any {
             // A datagram with no whole frame in it is damaged too.
-            tally.bad += u64::from(n > 0);
+            tally.bad += 1;
         }
     }
     let rows = std::mem::take(&mut tally.rows);
@@ -96,6 +93,61 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// Where frames come from.
+struct Input {
+    source: Source,
+    name: String,
+    /// Whether each read is a datagram that stands alone.
+    datagrams: bool,
+}
+
+enum Source {
+    Udp(UdpSocket),
+    Serial(Serial),
+}
+
+impl Input {
+    fn open(args: &DeviceSimArgs) -> Result<Self> {
+        match (&args.udp, &args.serial) {
+            (Some(address), None) => {
+                let socket = UdpSocket::bind(address)
+                    .map_err(|e| anyhow!("cannot listen on `{address}`: {e}"))?;
+                socket.set_read_timeout(Some(Duration::from_millis(50)))?;
+                Ok(Self {
+                    name: socket.local_addr()?.to_string(),
+                    source: Source::Udp(socket),
+                    datagrams: true,
+                })
+            }
+            (None, Some(port)) => Ok(Self {
+                source: Source::Serial(Serial::open(port, args.baud, Duration::from_millis(50))?),
+                name: format!("{port} at {} baud", args.baud),
+                datagrams: false,
+            }),
+            _ => bail!("give one of --udp HOST:PORT or --serial PORT"),
+        }
+    }
+
+    /// Bytes that arrived within 50 ms (0 when none).
+    fn receive(&mut self, buf: &mut [u8]) -> Result<usize> {
+        match &mut self.source {
+            Source::Udp(socket) => match socket.recv(buf) {
+                Ok(n) => Ok(n),
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
+                    ) =>
+                {
+                    Ok(0)
+                }
+                Err(e) => Err(anyhow!("receiving on {}: {e}", self.name)),
+            },
+            Source::Serial(port) => Ok(port.receive(buf)?),
+        }
+    }
 }
 
 /// Count and record one good frame.

@@ -1,27 +1,30 @@
 //! `stewart link`: stream the trajectory's set-points to a controller through the safety
-//! supervisor, or record what would be sent (a dry run).
+//! supervisor, or record what would be sent (a dry run). The scenario's `[link]` table
+//! says where and how; the options override it.
 
-use std::io::Write as _;
+use std::io::{IsTerminal as _, Write as _};
 use std::process::ExitCode;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_kinematics::{Geometry, Scenario, bounds};
-use stewart_link::channels::{ChannelMap, Output};
-use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::{Command, Format, Sender, SenderConfig, Target};
-use stewart_link::transport::{Record, Transport, Udp};
+use stewart_kinematics::Scenario;
+use stewart_kinematics::link_settings::{LinkSettings, LinkTransport, Word as _};
+use stewart_link::sender::{Command, Sender, SenderConfig, Status, Target};
+use stewart_link::transport::{Record, Transport, list_ports};
 
-use crate::cli::{LinkArgs, LinkFormat, LinkTransport};
+use crate::cli::LinkArgs;
+use crate::hardware::{self, actuator_values};
 use crate::{output, source};
 
 /// Run the command.
 pub fn run(args: &LinkArgs) -> Result<ExitCode> {
-    let scenario = source::load(&args.scenario)?;
-    let (transport, staged) = open_transport(args)?;
-    let geometry = scenario.geometry.clone();
-    let home = actuator_values(&geometry, &geometry.home_pose())
-        .map_err(|why| anyhow!("the home pose of `{}`: {why}", scenario.name))?;
+    if args.list_ports {
+        return print_ports();
+    }
+    let mut scenario = source::load(&args.scenario)?;
+    scenario.link = settings(&scenario.link, args)?;
+    let (transport, staged) = open_transport(&scenario, args)?;
+    let home = hardware::home_values(&scenario)?;
     let duration = scenario.motion.sampling.duration();
     let stream_for = match (args.duration, args.repeat) {
         (Some(d), _) => Some(d),
@@ -29,17 +32,10 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         (None, true) => None,
     };
     let config = SenderConfig {
-        rate_hz: args.rate,
-        format: match args.format {
-            LinkFormat::Binary => Format::Binary,
-            LinkFormat::Text => Format::Text,
-        },
-        map: ChannelMap::identity(if geometry.rotary().is_some() {
-            Output::ServoCentidegree
-        } else {
-            Output::LegMicrometre
-        }),
-        supervisor: supervisor(&scenario, home, args.ramp),
+        rate_hz: scenario.link.rate_hz,
+        format: hardware::format(&scenario.link),
+        map: hardware::channel_map(&scenario)?,
+        supervisor: hardware::supervisor(&scenario, home),
         arm_at_start: true,
         stop_after: stream_for,
     };
@@ -49,13 +45,26 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     // Ctrl-C is the e-stop: stop at once, return home at the safe speed, disarm.
     let stop = crate::interrupt::flag();
     let mut stopped_by_user = false;
+    let progress = std::io::stderr().is_terminal();
+    let mut shown = Instant::now();
     while !sender.finished() {
         if stop.load(std::sync::atomic::Ordering::Relaxed) && !stopped_by_user {
             sender.command(Command::EStop);
             sender.command(Command::Stop);
             stopped_by_user = true;
         }
+        if progress && shown.elapsed() >= Duration::from_millis(200) {
+            shown = Instant::now();
+            let _ = write!(
+                std::io::stderr(),
+                "\r{}\x1b[K",
+                progress_line(&sender.status(), stream_for)
+            );
+        }
         std::thread::sleep(Duration::from_millis(20));
+    }
+    if progress {
+        let _ = write!(std::io::stderr(), "\r\x1b[K");
     }
     let summary = sender.join();
     if PIPE_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
@@ -68,7 +77,7 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         "link: {} frames to {described} over {:.2} s at {} Hz; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs{}",
         s.frames,
         s.time,
-        args.rate,
+        scenario.link.rate_hz,
         timing.mean_us,
         timing.p99_us,
         timing.max_us,
@@ -91,29 +100,81 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// The progress line: state, stream time, frames, lateness so far.
+fn progress_line(s: &Status, total: Option<f64>) -> String {
+    let of = total.map(|d| format!(" / {d:.1}")).unwrap_or_default();
+    format!(
+        "link: {:<9} {:7.2}{of} s  {} frames  p99 {:.0} µs{}",
+        format!("{:?}", s.state).to_uppercase(),
+        s.time,
+        s.frames,
+        s.timing.p99_us,
+        s.note
+            .as_ref()
+            .map(|n| format!("  ({n})"))
+            .unwrap_or_default()
+    )
+}
+
+/// `--list-ports`: the serial ports the system offers, one per line.
+fn print_ports() -> Result<ExitCode> {
+    let ports = list_ports()?;
+    let mut text = String::new();
+    for p in &ports {
+        text.push_str(&format!("{}\t{}\n", p.name, p.kind));
+    }
+    output::stdout(text.as_bytes())?;
+    if ports.is_empty() {
+        let _ = writeln!(std::io::stderr(), "link: no serial ports found");
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The scenario's `[link]` with the options laid over it (checked as `--set link.…` is).
+fn settings(base: &LinkSettings, args: &LinkArgs) -> Result<LinkSettings> {
+    let mut link = base.clone();
+    let rate = args.rate.map(|r| r.to_string());
+    let baud = args.baud.map(|b| b.to_string());
+    let ramp = args.ramp.map(|r| r.to_string());
+    let overrides = [
+        ("transport", args.transport.map(|t| t.word().to_owned())),
+        ("port", args.port.clone()),
+        ("address", args.address.clone()),
+        ("baud", baud),
+        ("rate_hz", rate),
+        ("format", args.format.map(|f| f.word().to_owned())),
+        ("ramp_s", ramp),
+    ];
+    for (key, value) in overrides {
+        if let Some(value) = value {
+            link.set_text(key, &value)
+                .map_err(|p| anyhow!("`{}` = {value}: {}", p.key, p.reason))?;
+        }
+    }
+    if args.dry_run {
+        if args.transport.is_some_and(|t| t != LinkTransport::File) {
+            bail!("--dry-run sends nothing: leave out `--transport`, or drop --dry-run");
+        }
+        link.transport = LinkTransport::File;
+    }
+    Ok(link)
+}
+
 /// A dry-run record being written beside its destination, put in place when the stream
 /// has ended.
 type Staged = Option<(output::Destination, tempfile::TempPath)>;
 
-/// The transport the arguments ask for (and, for a dry run into a regular file, the staged
+/// The transport the settings ask for (and, for a dry run into a regular file, the staged
 /// file to deliver at the end).
-fn open_transport(args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
-    let kind = match (args.dry_run, args.transport) {
-        (true, None | Some(LinkTransport::File)) => LinkTransport::File,
-        (true, Some(LinkTransport::Udp)) => {
-            bail!("--dry-run sends nothing: leave out `--transport udp`, or drop --dry-run")
+fn open_transport(scenario: &Scenario, args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
+    if scenario.link.transport != LinkTransport::File {
+        if args.out.is_some() {
+            bail!(
+                "--out records a dry run; a {} link sends to the device instead",
+                scenario.link.transport.word()
+            );
         }
-        (false, Some(kind)) => kind,
-        (false, None) => bail!(
-            "choose where to send: --dry-run (a record of what would be sent), or --transport udp --address HOST:PORT"
-        ),
-    };
-    if kind == LinkTransport::Udp {
-        let address = args
-            .address
-            .as_deref()
-            .ok_or_else(|| anyhow!("--transport udp needs --address HOST:PORT"))?;
-        return Ok((Box::new(Udp::connect(address)?), None));
+        return Ok((hardware::open_device(&scenario.link)?, None));
     }
     // The record never lands on an input, and a regular file is written whole or not at all.
     let inputs = source::inputs(&args.scenario);
@@ -157,15 +218,6 @@ fn note_closed(e: &std::io::Error) {
     }
 }
 
-/// The quantity the link sends for `pose`: leg lengths (m) or servo angles (°).
-fn actuator_values(g: &Geometry, pose: &stewart_kinematics::Pose) -> Result<[f64; 6], String> {
-    match g.servo_angles(pose) {
-        None => Ok(g.leg_lengths(pose)),
-        Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
-        Some(Err(e)) => Err(e.to_string()),
-    }
-}
-
 /// The trajectory as a target of stream time (from the sampling's start; wrapping with
 /// `repeat`, else holding its last pose).
 fn target(scenario: &Scenario, repeat: bool) -> Target {
@@ -181,38 +233,4 @@ fn target(scenario: &Scenario, repeat: bool) -> Target {
         };
         actuator_values(&geometry, &trajectory.pose_at(start + local))
     })
-}
-
-/// The supervisor for the scenario's limits: the stroke or servo range (or the accepted
-/// range of any length or angle when none is set), the leg or servo rate limits, a ramp of
-/// `ramp` seconds, and a stop that returns home at a tenth of the speed limit (or 5 % of
-/// the range per second).
-fn supervisor(scenario: &Scenario, home: [f64; 6], ramp: f64) -> Supervisor {
-    let g = &scenario.geometry;
-    let l = &scenario.limits;
-    let [lo, hi] = g.quantity_limits();
-    let (range, speed, accel) = if g.rotary().is_some() {
-        (
-            (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
-            l.servo_speed_max,
-            l.servo_accel_max,
-        )
-    } else {
-        (
-            (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
-            l.leg_speed_max,
-            l.leg_accel_max,
-        )
-    };
-    let home_speed = speed.map_or(0.05 * (range.1 - range.0).min(1000.0), |s| 0.1 * s);
-    Supervisor::new(
-        ActuatorLimits {
-            range: [range; 6],
-            speed,
-            accel,
-        },
-        ramp,
-        StopMode::Home { speed: home_speed },
-        home,
-    )
 }

@@ -91,6 +91,15 @@ pub fn table(scenario: &Scenario) -> String {
         out.push_str(line.trim_end());
         out.push('\n');
     }
+    let _ = writeln!(
+        out,
+        "\nThe link to hardware ([link]; words or numbers, --set link.KEY=VALUE, K = channel 1..6):"
+    );
+    let entries = scenario.link.entries();
+    let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
+    for (key, value) in entries {
+        let _ = writeln!(out, "{key:width$}  {value}");
+    }
     if scenario.geometry.rotary().is_some() {
         let _ = match scenario.geometry.servo_home_height() {
             Some(h) => writeln!(

@@ -111,6 +111,16 @@ pub(super) fn parse(
             .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
         })
         .transpose()?;
+    let link = match &parsed.link {
+        Some(link) => {
+            if let Some(p) = link.get_ref().problem() {
+                let span = super::locate::span_of(text, &p.key).or_else(|| Some(link.span()));
+                return Err(src.invalid(span, &p.key, p.reason));
+            }
+            link.get_ref().clone()
+        }
+        None => crate::link_settings::LinkSettings::default(),
+    };
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
             .file_stem()
@@ -124,6 +134,7 @@ pub(super) fn parse(
         limits,
         payload,
         checks,
+        link,
     };
     // Values no constructor refused may still be absurd (a 1e300 m radius).
     if let Some((setting, reason)) = crate::settings::out_of_range(&scenario) {

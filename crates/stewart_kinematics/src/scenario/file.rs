@@ -31,6 +31,8 @@ pub(crate) struct ScenarioFile {
     pub payload: Option<Spanned<PayloadFile>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checks: Option<ChecksFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub link: Option<Spanned<crate::link_settings::LinkSettings>>,
 }
 
 /// `[payload]`: the moving mass (platform and load).

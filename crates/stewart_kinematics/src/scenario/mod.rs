@@ -24,6 +24,9 @@
 //! inertia_kg_m2 = [3.0, 3.0, 5.0]  # principal, about the centre of mass, platform axes
 //! [checks]                         # optional thresholds
 //! jump_ratio = 5.0
+//! [link]                           # optional: sending set-points to hardware
+//! transport = "udp"                # see crate::link_settings for every key
+//! address = "192.168.1.20:9000"
 //! ```
 //!
 //! See `assets/presets/` for a file of every trajectory kind and README.md for every key.
@@ -43,6 +46,7 @@ use crate::checks::CheckSettings;
 use crate::forces::Payload;
 use crate::geometry::Geometry;
 use crate::limits::Limits;
+use crate::link_settings::LinkSettings;
 use crate::trajectory::Motion;
 
 /// A platform, its motion and the check thresholds: everything a run needs.
@@ -62,6 +66,8 @@ pub struct Scenario {
     pub payload: Option<Payload>,
     /// Thresholds of the checks.
     pub checks: CheckSettings,
+    /// How set-points reach real hardware (`[link]`).
+    pub link: LinkSettings,
 }
 
 impl Scenario {
@@ -76,6 +82,7 @@ impl Scenario {
             payload: None,
             geometry,
             checks: CheckSettings::default(),
+            link: LinkSettings::default(),
         }
     }
 

@@ -307,3 +307,46 @@ fn rate_limits_belong_to_their_actuator_kind() {
     let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(back.limits, s.limits);
 }
+
+#[test]
+fn the_link_table_reads_writes_back_and_names_bad_values() {
+    use crate::link_settings::{LinkOutput, LinkTransport};
+    let s = parse(&format!(
+        "{GEOMETRY}[link]\ntransport = \"serial\"\nport = \"/dev/ttyACM0\"\nbaud = 1000000\nrate_hz = 500\noutput = \"pulse\"\nactuator = [2, 1, 3, 4, 5, 6]\nreversed = [true, false, false, false, false, true]\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.link.transport, LinkTransport::Serial);
+    assert_eq!(s.link.port.as_deref(), Some("/dev/ttyACM0"));
+    assert_eq!((s.link.baud, s.link.rate_hz), (1_000_000, 500.0));
+    assert_eq!(s.link.output, LinkOutput::Pulse);
+    assert_eq!(s.link.actuator, [2, 1, 3, 4, 5, 6]);
+    // Keys not written keep their defaults.
+    assert_eq!(s.link.pulse_zero_us, 1500.0);
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.link, s.link);
+    // A scenario without a link writes no [link] table.
+    assert!(
+        !parse(GEOMETRY)
+            .map(|s| s.to_toml())
+            .unwrap_or_default()
+            .contains("[link]")
+    );
+    assert_eq!(
+        error(&format!("{GEOMETRY}[link]\nrate_hz = 5000\n")),
+        "s.toml, line 8, column 11: `link.rate_hz` must be between 10 and 1000 Hz, got 5000"
+    );
+    assert_eq!(
+        error(&format!(
+            "{GEOMETRY}[link]\nactuator = [1, 2, 3, 4, 5, 1]\n"
+        )),
+        "s.toml, line 8, column 28: `link.actuator[5]` channels 1 and 6 both carry actuator 1: each actuator needs its own channel"
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[link]\ntransport = \"tcp\"\n"))
+            .starts_with("s.toml, line 8, column 13: unknown variant `tcp`"),
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[link]\nscale = [1, 1]\n"))
+            .starts_with("s.toml, line 8, column 9: "),
+    );
+}

@@ -165,6 +165,8 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             jump_floor_m: Some(s(c.jump_floor)),
             condition_max: Some(s(c.condition_max)),
         }),
+        link: (scenario.link != crate::link_settings::LinkSettings::default())
+            .then(|| s(scenario.link.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
     toml::to_string(&file).unwrap_or_else(|e| unreachable!("scenario serialisation: {e}"))

@@ -322,7 +322,8 @@ pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
     })
 }
 
-/// Apply `KEY=VALUE` assignments in order; the first refusal stops and is returned, and
+/// Apply `KEY=VALUE` assignments in order (`link.*` keys take words, see
+/// [`crate::link_settings::LinkSettings::set_text`]); the first refusal stops and is returned, and
 /// the scenario is then left as it was before any of them.
 pub fn apply_all<'a>(
     scenario: &mut Scenario,
@@ -330,6 +331,19 @@ pub fn apply_all<'a>(
 ) -> Result<(), SettingError> {
     let mut edited = scenario.clone();
     for text in assignments {
+        if let Some((key, value)) = text.split_once('=')
+            && let Some(link_key) = key.trim().strip_prefix("link.")
+        {
+            edited
+                .link
+                .set_text(link_key, value)
+                .map_err(|p| SettingError::Invalid {
+                    key: p.key,
+                    value: value.trim().to_owned(),
+                    reason: p.reason,
+                })?;
+            continue;
+        }
         let (setting, value) = parse_assignment(text)?;
         setting.set(&mut edited, value)?;
     }

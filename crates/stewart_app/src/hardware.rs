@@ -1,0 +1,149 @@
+//! From a scenario to the link's parts: the channel map, the safety supervisor, the wire
+//! format and the transport. The command line (`stewart link`) and the viewer's link
+//! panel build their senders here, so both send the same thing for the same scenario.
+
+use anyhow::{Result, anyhow, bail};
+use stewart_kinematics::link_settings::{
+    LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
+};
+use stewart_kinematics::{Geometry, Pose, Scenario, bounds};
+use stewart_link::channels::{Channel, ChannelMap, Output};
+use stewart_link::frame::FRAME_LEN;
+use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
+use stewart_link::sender::Format;
+use stewart_link::transport::{Serial, Transport, Udp, max_rate_hz};
+
+/// How long a serial write may block before the link counts the device as gone.
+const SERIAL_WRITE_TIMEOUT: std::time::Duration = std::time::Duration::from_millis(200);
+
+/// The quantity the link sends for `pose`: leg lengths (m) or servo angles (°), or why
+/// the pose cannot be reached.
+pub fn actuator_values(g: &Geometry, pose: &Pose) -> Result<[f64; 6], String> {
+    match g.servo_angles(pose) {
+        None => Ok(g.leg_lengths(pose)),
+        Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
+        Some(Err(e)) => Err(e.to_string()),
+    }
+}
+
+/// The actuator values at the home pose.
+pub fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
+    let g = &scenario.geometry;
+    actuator_values(g, &g.home_pose())
+        .map_err(|why| anyhow!("the home pose of `{}`: {why}", scenario.name))
+}
+
+/// The channel map of `[link]`: leg lengths in µm or servo angles in 0.01° (`native`), or
+/// servo pulses (`pulse`, servos only).
+pub fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
+    let link = &scenario.link;
+    let rotary = scenario.geometry.rotary().is_some();
+    let output = match (link.output, rotary) {
+        (LinkOutput::Native, false) => Output::LegMicrometre,
+        (LinkOutput::Native, true) => Output::ServoCentidegree,
+        (LinkOutput::Pulse, true) => Output::ServoPulse {
+            zero_us: link.pulse_zero_us,
+            us_per_degree: link.pulse_us_per_deg,
+        },
+        (LinkOutput::Pulse, false) => {
+            bail!(
+                "`link.output = pulse` drives hobby servos; a platform with linear legs sends `native` (µm)"
+            )
+        }
+    };
+    let channels = std::array::from_fn(|k| Channel {
+        source: usize::from(link.actuator[k]).saturating_sub(1),
+        scale: link.scale[k],
+        offset: link.offset[k],
+        reversed: link.reversed[k],
+    });
+    ChannelMap::new(channels, output).map_err(|e| anyhow!("[link] {e}"))
+}
+
+/// The wire format of `[link]`.
+pub fn format(link: &LinkSettings) -> Format {
+    match link.format {
+        LinkFormat::Binary => Format::Binary,
+        LinkFormat::Text => Format::Text,
+    }
+}
+
+/// The supervisor for the scenario's limits: the stroke or servo range (or the accepted
+/// range of any length or angle when none is set), the leg or servo rate limits, the ramp
+/// of `[link]`, and a stop that holds or returns home at a tenth of the speed limit (or
+/// 5 % of the range per second when no limit is set).
+pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
+    let g = &scenario.geometry;
+    let l = &scenario.limits;
+    let [lo, hi] = g.quantity_limits();
+    let (range, speed, accel) = if g.rotary().is_some() {
+        (
+            (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
+            l.servo_speed_max,
+            l.servo_accel_max,
+        )
+    } else {
+        (
+            (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
+            l.leg_speed_max,
+            l.leg_accel_max,
+        )
+    };
+    let stop = match scenario.link.stop {
+        LinkStop::Hold => StopMode::Hold,
+        LinkStop::Home => StopMode::Home {
+            speed: speed.map_or(0.05 * (range.1 - range.0).min(1000.0), |s| 0.1 * s),
+        },
+    };
+    Supervisor::new(
+        ActuatorLimits {
+            range: [range; 6],
+            speed,
+            accel,
+        },
+        scenario.link.ramp_s,
+        stop,
+        home,
+    )
+}
+
+/// Open the serial port or UDP peer `[link]` names (a `file` transport is the caller's:
+/// the command line records into a file, the viewer into its panel).
+pub fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
+    match link.transport {
+        LinkTransport::Udp => {
+            let address = link.address.as_deref().ok_or_else(|| {
+                anyhow!(
+                    "the UDP transport needs an address (`--address HOST:PORT` or `link.address`)"
+                )
+            })?;
+            Ok(Box::new(Udp::connect(address)?))
+        }
+        LinkTransport::Serial => {
+            let port = link
+                .port
+                .as_deref()
+                .ok_or_else(|| anyhow!("the serial transport needs a port (`--port /dev/ttyUSB0` or `link.port`; `stewart link --list-ports` lists them)"))?;
+            let bytes = match link.format {
+                LinkFormat::Binary => FRAME_LEN,
+                // The longest text line: `S,65535,` and six signed 11-character values.
+                LinkFormat::Text => 8 + 6 * 12,
+            };
+            let most = max_rate_hz(link.baud, bytes);
+            if link.rate_hz > most {
+                bail!(
+                    "{} Hz does not fit {port} at {} baud: each set-point takes {bytes} bytes, so at most {:.0} Hz; raise `link.baud` (--baud) or lower the rate",
+                    link.rate_hz,
+                    link.baud,
+                    most.floor()
+                );
+            }
+            Ok(Box::new(Serial::open(
+                port,
+                link.baud,
+                SERIAL_WRITE_TIMEOUT,
+            )?))
+        }
+        LinkTransport::File => bail!("a dry run records what would be sent; it opens no device"),
+    }
+}

@@ -1,0 +1,155 @@
+//! `stewart link` over a serial line: a pseudo-terminal pair made by `socat` stands in for
+//! the cable; `stewart device-sim --serial` is the controller at the other end.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::link::device_sim_on;
+use crate::{parse_csv, stderr, stewart};
+
+/// Two connected pseudo-terminals, `a` and `b`; the pair goes when this is dropped.
+struct PtyPair {
+    socat: Child,
+    a: PathBuf,
+    b: PathBuf,
+    _dir: tempfile::TempDir,
+}
+
+impl PtyPair {
+    fn new() -> Self {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+        let end = |p: &Path| format!("pty,raw,echo=0,link={}", p.display());
+        let socat = Command::new("socat")
+            .args([end(&a), end(&b)])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap_or_else(|e| panic!("socat (scripts/setup.sh installs it): {e}"));
+        let started = Instant::now();
+        while !(a.exists() && b.exists()) {
+            assert!(
+                started.elapsed() < Duration::from_secs(10),
+                "socat made no pty pair"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        Self {
+            socat,
+            a,
+            b,
+            _dir: dir,
+        }
+    }
+
+    fn path(p: &Path) -> &str {
+        p.to_str().unwrap_or_else(|| panic!("{p:?}"))
+    }
+
+    /// Unplug the cable.
+    fn cut(&mut self) {
+        let _ = self.socat.kill();
+        let _ = self.socat.wait();
+    }
+}
+
+impl Drop for PtyPair {
+    fn drop(&mut self) {
+        self.cut();
+    }
+}
+
+/// `stewart link` of `preset` to serial `port` for `duration` s at `rate` Hz.
+fn serial_link(preset: &str, port: &str, duration: &str, rate: &str) -> std::process::Output {
+    stewart(&[
+        "link",
+        "--preset",
+        preset,
+        "--transport",
+        "serial",
+        "--port",
+        port,
+        "--baud",
+        "1000000",
+        "--duration",
+        duration,
+        "--rate",
+        rate,
+        "--ramp",
+        "0.2",
+    ])
+}
+
+#[test]
+fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
+    let pair = PtyPair::new();
+    let sim = device_sim_on(
+        &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
+        &[],
+    );
+    let o = serial_link("servo-desk", PtyPair::path(&pair.a), "1", "500");
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent: usize = stderr(&o)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(sent > 500, "{}", stderr(&o));
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    assert_eq!(sim.status.code(), Some(0), "{log}");
+    assert!(
+        log.contains(&format!("device-sim: {sent} frames, 0 damaged, 0 lost")),
+        "{log}"
+    );
+    let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+    assert_eq!(rows.len(), sent);
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row[1] as usize, k, "sequence");
+        // Unit 1: hundredths of a degree; every angle inside the servo-desk's ±70°.
+        assert_eq!(row[5], 1.0);
+        assert!(row[6..12].iter().all(|v| v.abs() <= 7000.0), "{row:?}");
+    }
+    // Armed from the first frame, disarmed on the last.
+    assert_eq!((rows[0][2], rows[sent - 1][2]), (1.0, 0.0));
+}
+
+#[test]
+fn a_cable_pulled_mid_stream_disarms_with_a_clear_error() {
+    let mut pair = PtyPair::new();
+    let port = PtyPair::path(&pair.a).to_owned();
+    let link = std::thread::spawn(move || serial_link("paired", &port, "10", "100"));
+    std::thread::sleep(Duration::from_millis(800));
+    pair.cut();
+    let o = link.join().unwrap_or_else(|_| panic!("link thread"));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(
+        err.contains("error: the link stopped: writing to "),
+        "{err}"
+    );
+    assert!(err.trim_end().ends_with("disarmed"), "{err}");
+}
+
+#[test]
+fn a_rate_the_line_cannot_carry_is_refused_before_anything_is_sent() {
+    let pair = PtyPair::new();
+    let o = stewart(&[
+        "link",
+        "--transport",
+        "serial",
+        "--port",
+        PtyPair::path(&pair.a),
+        "--baud",
+        "9600",
+        "--rate",
+        "100",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("100 Hz does not fit") && stderr(&o).contains("at most 28 Hz"),
+        "{}",
+        stderr(&o)
+    );
+}
