@@ -3,6 +3,7 @@
 
 mod export;
 mod files;
+mod link;
 mod modes;
 mod rotary;
 mod snapshots;

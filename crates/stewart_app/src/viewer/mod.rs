@@ -6,6 +6,7 @@
 //! - [`panels`]: one egui function per panel;
 //! - [`view3d`]: the renderer inside egui (a paint callback);
 //! - [`history`], [`export_job`]: the manual-mode history and background exports;
+//! - [`live_link`]: the stream to hardware, following what the viewer shows;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
 pub mod derived;
@@ -13,6 +14,7 @@ pub mod export_job;
 pub mod exports;
 pub mod files;
 pub mod history;
+pub mod live_link;
 pub mod look;
 pub mod panels;
 pub mod playback;

@@ -11,6 +11,7 @@ use std::path::Path;
 
 use nalgebra::Vector3;
 
+use stewart_kinematics::link_settings::LinkSettings;
 use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
@@ -18,6 +19,7 @@ use stewart_render::{OrbitCamera, Theme};
 use super::derived::Derived;
 use super::exports::Exports;
 use super::files::Files;
+use super::live_link::{Drive, LiveLink};
 use super::look::Look;
 use super::playback::{MotionMode, Playback};
 use crate::export::frames::default_camera;
@@ -36,6 +38,10 @@ pub struct ViewerState {
     pub exports: Exports,
     /// Why the last edit was refused (the scenario then stayed as it was).
     pub edit_error: Option<(Group, String)>,
+    /// The link to hardware.
+    pub link: LiveLink,
+    /// Why the last edit of `[link]` was refused.
+    pub link_error: Option<String>,
 }
 
 impl ViewerState {
@@ -48,8 +54,44 @@ impl ViewerState {
             files: Files::default(),
             exports: Exports::default(),
             edit_error: None,
+            link: LiveLink::default(),
+            link_error: None,
             scenario,
         }
+    }
+
+    /// Change the `[link]` table: `change` works on a copy, kept only when the table is
+    /// sound (else the reason shows in the Link panel).
+    pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
+        let mut link = self.scenario.link.clone();
+        change(&mut link);
+        match link.problem() {
+            None => {
+                self.scenario.link = link;
+                self.link_error = None;
+            }
+            Some(p) => self.link_error = Some(format!("`{}` {}", p.key, p.reason)),
+        }
+    }
+
+    /// What drives the platform, for the link's sender.
+    pub fn drive(&self) -> Drive {
+        if self.playback.mode == MotionMode::Trajectory && self.playback.playing {
+            Drive::Playing {
+                time: self.playback.time,
+                anchor: std::time::Instant::now(),
+                speed: self.playback.speed,
+            }
+        } else {
+            Drive::Still(self.pose())
+        }
+    }
+
+    /// Start the link to hardware from the `[link]` table, following what the viewer shows.
+    pub fn connect_link(&mut self) {
+        let drive = self.drive();
+        let looping = self.playback.looping;
+        self.link.connect(&self.scenario, drive, looping);
     }
 
     /// The scenario shown.
@@ -116,8 +158,10 @@ impl ViewerState {
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
-    /// presentation, file path, export settings).
+    /// presentation, file path, export settings). A running link is stopped first: it was
+    /// built for the other platform.
     pub fn load_scenario(&mut self, scenario: Scenario) {
+        self.link.disconnect();
         self.look.camera = default_camera(&scenario);
         self.playback.manual = scenario.geometry.home_pose();
         self.playback.time = 0.0;
@@ -186,6 +230,8 @@ impl ViewerState {
     pub fn poll(&mut self) {
         self.derived.poll();
         self.exports.poll();
+        self.link.poll();
+        self.link.follow(self.drive(), self.playback.looping);
     }
 
     /// Duration of the trajectory, seconds.
@@ -225,9 +271,13 @@ impl ViewerState {
     }
 
     /// Whether the window must keep drawing: playback runs, the manual-mode history is
-    /// still scrolling, an export runs, or a report is being computed.
+    /// still scrolling, an export runs, a report is being computed, or the link streams
+    /// (its state is shown live).
     pub fn animating(&self) -> bool {
-        self.playback.animating() || self.exports.job.is_some() || self.report_pending()
+        self.playback.animating()
+            || self.exports.job.is_some()
+            || self.report_pending()
+            || self.link.connected()
     }
 
     /// Move on by `dt` seconds of wall time: playback, and in manual mode the history.

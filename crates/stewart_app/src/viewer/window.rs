@@ -348,7 +348,11 @@ impl ApplicationHandler for App {
         };
         let response = open.input.on_window_event(&open.window, &event);
         match event {
-            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::CloseRequested => {
+                // The stream to hardware stops first: e-stop, home or hold, disarmed.
+                self.state.link.disconnect_now();
+                event_loop.exit();
+            }
             WindowEvent::Resized(size) => {
                 // Minimised windows have a zero size: keep the old surface until they return.
                 if let (Some(w), Some(h)) =

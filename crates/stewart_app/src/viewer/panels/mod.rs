@@ -4,6 +4,7 @@ mod diagnostics;
 mod export;
 mod geometry;
 mod legs;
+mod link;
 mod motion;
 mod playback;
 mod plot;
@@ -41,6 +42,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     diagnostics::show(ui, state);
                     ui.separator();
                     export::show(ui, state);
+                    ui.separator();
+                    link::show(ui, state);
                 });
             });
     }
@@ -53,6 +56,42 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         })
         .show(ui, |ui| plot::show(ui, state));
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
+    if state.link.connected() {
+        link_badge(ui.ctx(), state);
+    }
+}
+
+/// While a link streams, its state and an e-stop stay on screen whatever panels show
+/// (presentation mode hides the controls).
+fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
+    let Some(status) = state.link.sender_status() else {
+        return;
+    };
+    egui::Area::new(egui::Id::unique("link-badge"))
+        .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-12.0, 12.0))
+        .show(ctx, |ui| {
+            egui::Frame::new()
+                .fill(link::state_colour(status.state))
+                .inner_margin(8.0)
+                .corner_radius(4.0)
+                .show(ui, |ui| {
+                    ui.label(
+                        egui::RichText::new(link::state_words(status.state))
+                            .size(20.0)
+                            .strong()
+                            .color(egui::Color32::WHITE),
+                    );
+                    let stop = egui::Button::new(
+                        egui::RichText::new("E-STOP (Esc)")
+                            .strong()
+                            .color(egui::Color32::WHITE),
+                    )
+                    .fill(egui::Color32::from_rgb(200, 20, 20));
+                    if ui.add(stop).clicked() {
+                        state.link.estop();
+                    }
+                });
+        });
 }
 
 /// Light or dark visuals, and large text in presentation mode.
@@ -76,12 +115,18 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
     }
 }
 
-/// Space: play/pause; ←/→: step; Home: back to the start; P: presentation mode (Esc leaves).
+/// Esc: e-stop of the link (and leaves presentation mode); Space: play/pause; ←/→: step;
+/// Home: back to the start; P: presentation mode.
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let pressed = |key| ui.input(|i| i.key_pressed(key));
+    // The e-stop works whatever has the keyboard focus.
+    if pressed(egui::Key::Escape) {
+        state.link.estop();
+        state.look.presentation = false;
+    }
     if ui.ctx().text_edit_focused() {
         return;
     }
-    let pressed = |key| ui.input(|i| i.key_pressed(key));
     if pressed(egui::Key::Space) {
         state.playback.playing = !state.playback.playing;
         state.playback.mode = MotionMode::Trajectory;
@@ -97,8 +142,5 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if pressed(egui::Key::P) || pressed(egui::Key::F5) {
         state.look.presentation = !state.look.presentation;
-    }
-    if pressed(egui::Key::Escape) {
-        state.look.presentation = false;
     }
 }

@@ -8,6 +8,8 @@ use crate::viewer::state::ViewerState;
 
 /// Red for refusals and errors.
 pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
+/// Amber for notes that limit but do not refuse.
+pub const WARNING: Color32 = Color32::from_rgb(230, 150, 20);
 /// Green for success.
 pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
 

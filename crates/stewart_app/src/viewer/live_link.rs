@@ -1,0 +1,408 @@
+//! The viewer's link to hardware: a sender (its own thread, absolute deadlines) built from
+//! the scenario's `[link]` table, sampling what the viewer shows — the trajectory at the
+//! playback time, extrapolated on the sender's clock between frames, or the manual
+//! (teleoperated) pose. The UI only says what drives the platform; it never paces the
+//! stream. Dropping the link stops the stream first (e-stop, then home or hold as the
+//! table says, then disarmed).
+
+use std::collections::VecDeque;
+use std::io::Write;
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Instant;
+
+use stewart_kinematics::link_settings::LinkTransport;
+use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
+use stewart_link::sender::{Command, Sender, SenderConfig, Status};
+use stewart_link::transport::{Record, Transport};
+
+use crate::hardware::{self, actuator_values};
+
+/// Lines of a dry run kept for the panel.
+const RECENT_LINES: usize = 8;
+/// Playback further than this from the sender's extrapolation (a seek, a pause) re-anchors
+/// the sender's clock, seconds.
+const RESYNC_S: f64 = 0.05;
+
+/// What drives the platform, as the sender sees it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Drive {
+    /// The trajectory playing: at `anchor` it was at playback time `time`, moving at `speed`.
+    Playing {
+        /// Playback time at the anchor, seconds.
+        time: f64,
+        /// Wall-clock instant of the anchor.
+        anchor: Instant,
+        /// Playback speed.
+        speed: f64,
+    },
+    /// A pose held (paused playback, manual mode, teleoperation).
+    Still(Pose),
+}
+
+/// Everything the sender's target needs, shared with its thread.
+struct Source {
+    geometry: Geometry,
+    trajectory: Trajectory,
+    start: f64,
+    duration: f64,
+    looping: bool,
+    drive: Drive,
+}
+
+impl Source {
+    fn pose(&self) -> Pose {
+        match self.drive {
+            Drive::Still(pose) => pose,
+            Drive::Playing {
+                time,
+                anchor,
+                speed,
+            } => {
+                let t = time + anchor.elapsed().as_secs_f64() * speed;
+                let t = if self.looping && self.duration > 0.0 {
+                    t.rem_euclid(self.duration)
+                } else {
+                    t.clamp(0.0, self.duration)
+                };
+                self.trajectory.pose_at(self.start + t)
+            }
+        }
+    }
+}
+
+/// A running stream.
+struct Running {
+    sender: Sender,
+    source: Arc<Mutex<Source>>,
+    described: String,
+    stopping: bool,
+}
+
+/// The link panel's state: the stream when connected, the outcome of the last one.
+#[derive(Default)]
+pub struct LiveLink {
+    running: Option<Running>,
+    /// The outcome of the last connect or stream (shown until the next).
+    pub status: crate::viewer::files::Status,
+    /// The last lines of a dry run (newest last).
+    recent: Arc<Mutex<VecDeque<String>>>,
+}
+
+/// A dry run's writer: keeps the last whole lines for the panel (a line may come in
+/// several writes).
+struct RecentLines {
+    lines: Arc<Mutex<VecDeque<String>>>,
+    partial: Vec<u8>,
+}
+
+impl Write for RecentLines {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.partial.extend_from_slice(buf);
+        while let Some(end) = self.partial.iter().position(|&b| b == b'\n') {
+            let line: Vec<u8> = self.partial.drain(..=end).collect();
+            let mut lines = self.lines.lock().unwrap_or_else(PoisonError::into_inner);
+            if lines.len() == RECENT_LINES {
+                lines.pop_front();
+            }
+            lines.push_back(String::from_utf8_lossy(&line).trim_end().to_owned());
+        }
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl LiveLink {
+    /// Start streaming (disarmed until [`LiveLink::arm`]) to where `[link]` says, driven by
+    /// `drive`. A transport that cannot open is shown in the status; nothing is sent.
+    pub fn connect(&mut self, scenario: &Scenario, drive: Drive, looping: bool) {
+        self.disconnect_now();
+        self.status = Some(self.start(scenario, drive, looping));
+    }
+
+    fn start(
+        &mut self,
+        scenario: &Scenario,
+        drive: Drive,
+        looping: bool,
+    ) -> Result<String, String> {
+        let fail = |e: anyhow::Error| format!("{e:#}");
+        let transport: Box<dyn Transport> = if scenario.link.transport == LinkTransport::File {
+            self.recent
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .clear();
+            Box::new(Record::new(
+                RecentLines {
+                    lines: Arc::clone(&self.recent),
+                    partial: Vec::new(),
+                },
+                "this panel",
+            ))
+        } else {
+            hardware::open_device(&scenario.link).map_err(fail)?
+        };
+        let home = hardware::home_values(scenario).map_err(fail)?;
+        let config = SenderConfig {
+            rate_hz: scenario.link.rate_hz,
+            format: hardware::format(&scenario.link),
+            map: hardware::channel_map(scenario).map_err(fail)?,
+            supervisor: hardware::supervisor(scenario, home),
+            arm_at_start: false,
+            stop_after: None,
+        };
+        let source = Arc::new(Mutex::new(Source {
+            geometry: scenario.geometry.clone(),
+            trajectory: scenario.motion.trajectory.clone(),
+            start: scenario.motion.sampling.start(),
+            duration: scenario.motion.sampling.duration(),
+            looping,
+            drive,
+        }));
+        let shared = Arc::clone(&source);
+        let target = Box::new(move |_t: f64| {
+            let s = shared.lock().unwrap_or_else(PoisonError::into_inner);
+            actuator_values(&s.geometry, &s.pose())
+        });
+        let described = transport.describe();
+        let sender = Sender::spawn(config, target, transport)?;
+        self.running = Some(Running {
+            sender,
+            source,
+            described: described.clone(),
+            stopping: false,
+        });
+        Ok(format!(
+            "Connected: {described} at {} Hz (started disarmed).",
+            scenario.link.rate_hz
+        ))
+    }
+
+    /// Whether a stream runs (also while it stops).
+    pub fn connected(&self) -> bool {
+        self.running.is_some()
+    }
+
+    /// Whether the stream is being stopped (after Disconnect).
+    pub fn stopping(&self) -> bool {
+        self.running.as_ref().is_some_and(|r| r.stopping)
+    }
+
+    /// What the stream goes to, when connected.
+    pub fn described(&self) -> Option<&str> {
+        self.running.as_ref().map(|r| r.described.as_str())
+    }
+
+    /// The sender's status, when connected.
+    pub fn sender_status(&self) -> Option<Status> {
+        self.running.as_ref().map(|r| r.sender.status())
+    }
+
+    /// The last lines of a dry run, oldest first.
+    pub fn recent_lines(&self) -> Vec<String> {
+        self.recent
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .iter()
+            .cloned()
+            .collect()
+    }
+
+    /// Ramp from where the platform is to the target, then follow it.
+    pub fn arm(&self) {
+        if let Some(r) = &self.running {
+            r.sender.command(Command::Arm);
+        }
+    }
+
+    /// Emergency stop: at once; then hold or home as `[link]` says, and disarm.
+    pub fn estop(&self) {
+        if let Some(r) = &self.running {
+            r.sender.command(Command::EStop);
+        }
+    }
+
+    /// Stop the stream (e-stop, home or hold, disarm, end) without waiting; [`LiveLink::poll`]
+    /// collects the end.
+    pub fn disconnect(&mut self) {
+        if let Some(r) = &mut self.running {
+            r.sender.command(Command::EStop);
+            r.sender.command(Command::Stop);
+            r.stopping = true;
+        }
+    }
+
+    /// Stop the stream and wait for its end (closing the window).
+    pub fn disconnect_now(&mut self) {
+        self.disconnect();
+        if let Some(r) = self.running.take() {
+            self.status = Some(outcome(&r.described, r.sender.join()));
+        }
+    }
+
+    /// Tell the sender what drives the platform now (called every frame). While playing,
+    /// the sender keeps its own clock; it is re-anchored only when playback jumped
+    /// (seek, pause, speed change).
+    pub fn follow(&self, drive: Drive, looping: bool) {
+        let Some(r) = &self.running else {
+            return;
+        };
+        let mut s = r.source.lock().unwrap_or_else(PoisonError::into_inner);
+        s.looping = looping;
+        let resync = match (s.drive, drive) {
+            (
+                Drive::Playing {
+                    time,
+                    anchor,
+                    speed,
+                },
+                Drive::Playing {
+                    time: now,
+                    speed: new_speed,
+                    ..
+                },
+            ) => {
+                let predicted = time + anchor.elapsed().as_secs_f64() * speed;
+                let gap = if looping && s.duration > 0.0 {
+                    let d = (predicted - now).rem_euclid(s.duration);
+                    d.min(s.duration - d)
+                } else {
+                    (predicted.clamp(0.0, s.duration) - now).abs()
+                };
+                speed != new_speed || gap > RESYNC_S
+            }
+            _ => true,
+        };
+        if resync {
+            s.drive = drive;
+        }
+    }
+
+    /// Collect a stream that ended (stopped, or failed: a lost port, a write error).
+    pub fn poll(&mut self) {
+        if self.running.as_ref().is_some_and(|r| r.sender.finished())
+            && let Some(r) = self.running.take()
+        {
+            self.status = Some(outcome(&r.described, r.sender.join()));
+        }
+    }
+}
+
+/// The words for how a stream ended.
+fn outcome(described: &str, summary: stewart_link::sender::Summary) -> Result<String, String> {
+    match summary.failure {
+        Some(failure) => Err(format!("The link to {described} stopped: {failure}")),
+        None => Ok(format!(
+            "Disconnected from {described}: {} frames sent, ended disarmed.",
+            summary.status.frames
+        )),
+    }
+}
+
+impl Drop for LiveLink {
+    fn drop(&mut self) {
+        self.disconnect_now();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_link::safety::LinkState;
+
+    fn wait_for(link: &LiveLink, what: impl Fn(&Status) -> bool) -> Status {
+        let started = Instant::now();
+        loop {
+            let s = link
+                .sender_status()
+                .unwrap_or_else(|| panic!("not connected"));
+            if what(&s) {
+                return s;
+            }
+            assert!(started.elapsed().as_secs() < 10, "waited in vain: {s:?}");
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+    }
+
+    #[test]
+    fn a_dry_run_arms_follows_the_manual_pose_stops_on_estop_and_disconnects_disarmed() {
+        let mut scenario = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        scenario.link.ramp_s = 0.05;
+        scenario.link.rate_hz = 200.0;
+        let home = scenario.geometry.home_pose();
+        let mut link = LiveLink::default();
+        link.connect(&scenario, Drive::Still(home), true);
+        assert!(link.connected(), "{:?}", link.status);
+        wait_for(&link, |s| s.frames >= 3 && s.state == LinkState::Disarmed);
+        link.arm();
+        wait_for(&link, |s| s.state == LinkState::Armed);
+        let mut raised = home;
+        raised.position.z += 0.05;
+        link.follow(Drive::Still(raised), true);
+        // The last dry-run line carries the raised pose's legs (µm) once it has got there.
+        let want = scenario.geometry.leg_lengths(&raised)[0] * 1e6;
+        let started = Instant::now();
+        loop {
+            let last = link.recent_lines().last().cloned().unwrap_or_default();
+            let first_value = last
+                .split_whitespace()
+                .skip(1)
+                .collect::<Vec<_>>()
+                .get(8..12)
+                .map(|b| {
+                    let bytes: Vec<u8> = b
+                        .iter()
+                        .map(|h| u8::from_str_radix(h, 16).unwrap_or(0))
+                        .collect();
+                    f64::from(i32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]]))
+                })
+                .unwrap_or(0.0);
+            if (first_value - want).abs() <= 1.0 {
+                break;
+            }
+            assert!(
+                started.elapsed().as_secs() < 10,
+                "never reached {want}: {last}"
+            );
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        link.estop();
+        wait_for(&link, |s| s.state == LinkState::Disarmed);
+        link.disconnect();
+        let started = Instant::now();
+        while link.connected() {
+            link.poll();
+            assert!(started.elapsed().as_secs() < 10);
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        let ended = link
+            .status
+            .clone()
+            .unwrap_or_else(|| Err("no status".into()));
+        assert!(
+            ended.as_ref().is_ok_and(|m| m.contains("ended disarmed")),
+            "{ended:?}"
+        );
+    }
+
+    #[test]
+    fn a_device_that_cannot_open_is_said_and_nothing_runs() {
+        let mut scenario = Scenario::seed();
+        scenario.link.transport = LinkTransport::Serial;
+        scenario.link.port = Some("/dev/no-such-port".into());
+        let mut link = LiveLink::default();
+        link.connect(&scenario, Drive::Still(scenario.geometry.home_pose()), true);
+        assert!(!link.connected());
+        let e = link
+            .status
+            .clone()
+            .and_then(Result::err)
+            .unwrap_or_default();
+        assert!(
+            e.contains("cannot open the serial port /dev/no-such-port"),
+            "{e}"
+        );
+    }
+}
