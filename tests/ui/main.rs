@@ -7,6 +7,7 @@ mod link;
 mod modes;
 mod rotary;
 mod snapshots;
+mod teleop;
 mod trajectory;
 
 use egui::accesskit::Role;

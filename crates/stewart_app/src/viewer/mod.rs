@@ -7,18 +7,22 @@
 //! - [`view3d`]: the renderer inside egui (a paint callback);
 //! - [`history`], [`export_job`]: the manual-mode history and background exports;
 //! - [`live_link`]: the stream to hardware, following what the viewer shows;
+//! - [`teleop`], [`gamepad`]: keyboard and gamepad moves of the manual pose, stopped at
+//!   the edge of the reachable set;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
 pub mod derived;
 pub mod export_job;
 pub mod exports;
 pub mod files;
+pub mod gamepad;
 pub mod history;
 pub mod live_link;
 pub mod look;
 pub mod panels;
 pub mod playback;
 pub mod state;
+pub mod teleop;
 pub mod view3d;
 pub mod window;
 

@@ -22,6 +22,7 @@ use super::files::Files;
 use super::live_link::{Drive, LiveLink};
 use super::look::Look;
 use super::playback::{MotionMode, Playback};
+use super::teleop::{self, Command, PadState, Rates};
 use crate::export::frames::default_camera;
 
 /// Everything the viewer shows.
@@ -42,6 +43,23 @@ pub struct ViewerState {
     pub link: LiveLink,
     /// Why the last edit of `[link]` was refused.
     pub link_error: Option<String>,
+    /// Keyboard and gamepad moves of the manual pose.
+    pub teleop: Teleop,
+}
+
+/// Teleoperation's state.
+#[derive(Clone, Debug)]
+pub struct Teleop {
+    /// How fast a full command moves.
+    pub rates: Rates,
+    /// Why the last move stopped at the edge of the reachable set.
+    pub blocked: Option<String>,
+    /// Whether input is moving the platform (the window keeps drawing).
+    pub moving: bool,
+    /// The gamepad's state this frame (set by the window; `None` without one).
+    pub pad: Option<PadState>,
+    /// The gamepad's name, or why there is none.
+    pub pad_words: Option<String>,
 }
 
 impl ViewerState {
@@ -56,6 +74,13 @@ impl ViewerState {
             edit_error: None,
             link: LiveLink::default(),
             link_error: None,
+            teleop: Teleop {
+                rates: Rates::for_geometry(&scenario.geometry),
+                blocked: None,
+                moving: false,
+                pad: None,
+                pad_words: None,
+            },
             scenario,
         }
     }
@@ -72,6 +97,24 @@ impl ViewerState {
             }
             Some(p) => self.link_error = Some(format!("`{}` {}", p.key, p.reason)),
         }
+    }
+
+    /// Move the manual pose by a velocity command for `dt` seconds (keyboard and gamepad),
+    /// stopping at the edge of the reachable set. Only in manual mode.
+    pub fn teleoperate(&mut self, command: Command, dt: f64) {
+        self.teleop.moving = command.moving() && self.playback.mode == MotionMode::Manual;
+        if !self.teleop.moving {
+            return;
+        }
+        let (pose, blocked) = teleop::step(
+            &self.scenario.geometry,
+            &self.playback.manual,
+            &command,
+            self.teleop.rates,
+            dt,
+        );
+        self.playback.manual = pose;
+        self.teleop.blocked = blocked;
     }
 
     /// What drives the platform, for the link's sender.
@@ -162,6 +205,8 @@ impl ViewerState {
     /// built for the other platform.
     pub fn load_scenario(&mut self, scenario: Scenario) {
         self.link.disconnect();
+        self.teleop.rates = Rates::for_geometry(&scenario.geometry);
+        self.teleop.blocked = None;
         self.look.camera = default_camera(&scenario);
         self.playback.manual = scenario.geometry.home_pose();
         self.playback.time = 0.0;
@@ -275,6 +320,7 @@ impl ViewerState {
     /// (its state is shown live).
     pub fn animating(&self) -> bool {
         self.playback.animating()
+            || self.teleop.moving
             || self.exports.job.is_some()
             || self.report_pending()
             || self.link.connected()

@@ -86,6 +86,8 @@ struct App {
     /// When egui asked to be drawn again (a tooltip delay, the text cursor's blink, an
     /// animation); `None`: only on input.
     repaint_at: Option<Instant>,
+    /// Gamepads for teleoperation.
+    gamepads: super::gamepad::Gamepads,
 }
 
 /// Open the viewer on `state` and run until the window closes.
@@ -110,6 +112,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         error: None,
         times: FrameTimes::default(),
         repaint_at: None,
+        gamepads: super::gamepad::Gamepads::new(),
     };
     event_loop
         .run_app(&mut app)
@@ -255,6 +258,12 @@ impl App {
         };
         self.last = now;
         self.state.advance(dt);
+        let pad = self.gamepads.poll();
+        self.state.teleop.pad_words = match &pad {
+            Some((_, name)) => Some(format!("Gamepad: {name} (hold the left bumper to move)")),
+            None => self.gamepads.note.clone(),
+        };
+        self.state.teleop.pad = pad.map(|(state, _)| state);
         let raw = open.input.take_egui_input(&open.window);
         let state = &mut self.state;
         if self.options.screenshot.is_some() {

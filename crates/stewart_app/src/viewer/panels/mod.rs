@@ -14,6 +14,7 @@ mod widgets;
 
 use super::playback::MotionMode;
 use super::state::ViewerState;
+use super::teleop;
 
 /// Text sizes are multiplied by this in presentation mode.
 const PRESENTATION_TEXT_SCALE: f32 = 1.5;
@@ -22,6 +23,9 @@ const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     style(ui.ctx(), state);
     shortcuts(ui, state);
+    if !ui.ctx().text_edit_focused() {
+        teleoperate(ui, state);
+    }
     state.poll();
     if !state.look.presentation {
         egui::Panel::left("controls")
@@ -92,6 +96,30 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
                     }
                 });
         });
+}
+
+/// Manual mode: the keys held and the gamepad move the pose (see [`crate::viewer::teleop`]).
+fn teleoperate(ui: &mut egui::Ui, state: &mut ViewerState) {
+    if state.playback.mode != MotionMode::Manual {
+        state.teleop.moving = false;
+        return;
+    }
+    let (keys, dt) = ui.input(|i| {
+        (
+            teleop::from_keys(|k| i.key_down(k), i.modifiers.shift),
+            f64::from(i.stable_dt).min(0.1),
+        )
+    });
+    let pad = state
+        .teleop
+        .pad
+        .as_ref()
+        .map(teleop::from_pad)
+        .unwrap_or_default();
+    state.teleoperate(keys.plus(pad), dt);
+    if state.teleop.moving {
+        ui.ctx().request_repaint();
+    }
 }
 
 /// Light or dark visuals, and large text in presentation mode.

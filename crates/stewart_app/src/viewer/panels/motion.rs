@@ -9,9 +9,10 @@ use stewart_kinematics::trajectory::{
     CHANNEL_NAMES, Interpolation, Keyframe, Keyframes, Trajectory, Wave,
 };
 
-use super::widgets::{edit_error, setting_slider};
+use super::widgets::{self, edit_error, setting_slider};
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
+use crate::viewer::teleop;
 
 /// The manual pose's sliders: name, unit and reach either side of home (z: of the home
 /// height), in the pose's coordinate order x, y, z, roll, pitch, yaw.
@@ -64,7 +65,33 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
     state.playback.manual = Pose::from_coordinates(c);
     if ui.button("Home").clicked() {
         state.playback.manual = state.scenario().geometry.home_pose();
+        state.teleop.blocked = None;
     }
+    reach(ui, state);
+    ui.label("Keys: W/S x, A/D y, R/F z, J/L roll, I/K pitch, Q/E yaw; Shift: fine")
+        .on_hover_text("Held keys move the pose at the rates below; a gamepad moves it while its left bumper is held (sticks: x/y, z/yaw; D-pad: roll/pitch). When the link is armed, the platform follows.");
+    let rates = &mut state.teleop.rates;
+    ui.add(
+        egui::Slider::new(&mut rates.linear_m_s, 0.001..=1.0)
+            .logarithmic(true)
+            .text("move rate (m/s)"),
+    );
+    ui.add(egui::Slider::new(&mut rates.angular_deg_s, 1.0..=90.0).text("turn rate (°/s)"));
+    if let Some(words) = &state.teleop.pad_words {
+        ui.label(words);
+    }
+}
+
+/// The reachability indicator: green while the pose can be taken, red with the reason
+/// when a move stopped at the edge or the pose is out of reach.
+fn reach(ui: &mut egui::Ui, state: &ViewerState) {
+    let now = teleop::unreachable(&state.scenario().geometry, &state.playback.manual);
+    let (colour, words) = match (now, &state.teleop.blocked) {
+        (Some(why), _) => (widgets::ERROR, format!("Out of reach: {why}")),
+        (None, Some(why)) => (widgets::ERROR, format!("Stopped at the edge: {why}")),
+        (None, None) => (widgets::OK, "Reachable".to_owned()),
+    };
+    ui.label(egui::RichText::new(words).color(colour).strong());
 }
 
 fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
