@@ -94,6 +94,11 @@ pub struct LinkArgs {
     /// List the serial ports the system offers and exit.
     #[arg(long)]
     pub list_ports: bool,
+    /// Measure the sender's timing: stream to a receiver on UDP loopback at 500 Hz and
+    /// 1 kHz (or --rate) for --duration seconds each (default 10) and print the period
+    /// error and wake-up lateness (mean, p99, max).
+    #[arg(long, conflicts_with_all = ["list_ports", "dry_run", "transport", "out"])]
+    pub bench: bool,
     /// Where to send: serial, udp, or file (a dry run).
     #[arg(long, value_parser = parse_word::<LinkTransport>)]
     pub transport: Option<LinkTransport>,

@@ -109,8 +109,12 @@ pub struct Status {
     pub frames: u64,
     /// Stream time of the last tick, seconds.
     pub time: f64,
-    /// Wake-up lateness so far.
+    /// Wake-up lateness so far (how long after its deadline each tick woke).
     pub timing: Timing,
+    /// Period error so far: how far each interval between two sends was from the period.
+    pub period_error: Timing,
+    /// How the sender thread is scheduled (real-time where permitted).
+    pub scheduling: String,
 }
 
 /// How the stream ended.
@@ -172,6 +176,8 @@ impl Sender {
             frames: 0,
             time: 0.0,
             timing: Timing::default(),
+            period_error: Timing::default(),
+            scheduling: String::new(),
         }));
         let shared = Arc::clone(&status);
         let handle = std::thread::Builder::new()
@@ -219,16 +225,41 @@ impl Sender {
     }
 }
 
-/// Sleep until `deadline`: the system sleep to within half a millisecond, then a short spin.
-fn sleep_until(deadline: Instant) {
-    loop {
+/// Waits for deadlines: the system sleep until `margin` before the deadline, then a spin.
+/// The margin follows how late the system's sleep wakes (it jumps up to 1.5 × the latest
+/// oversleep and decays by a thousandth per tick), between 100 µs and a quarter of the
+/// period, at most 2 ms: a machine whose sleeps wake late (a virtual machine, a loaded
+/// desktop) costs more spinning instead of late set-points.
+struct Waiter {
+    margin: f64,
+    most: f64,
+}
+
+impl Waiter {
+    const LEAST_S: f64 = 100e-6;
+
+    fn new(period: f64) -> Self {
+        let most = (0.25 * period).clamp(Self::LEAST_S, 2e-3);
+        Self {
+            margin: (4e-4_f64).min(most),
+            most,
+        }
+    }
+
+    fn sleep_until(&mut self, deadline: Instant) {
         let now = Instant::now();
-        let Some(left) = deadline.checked_duration_since(now) else {
-            return;
-        };
-        if left > Duration::from_micros(500) {
-            std::thread::sleep(left - Duration::from_micros(400));
-        } else {
+        if let Some(left) = deadline.checked_duration_since(now) {
+            let nap = left.as_secs_f64() - self.margin;
+            if nap > 0.0 {
+                let wake = now + Duration::from_secs_f64(nap);
+                std::thread::sleep(Duration::from_secs_f64(nap));
+                let late = Instant::now().saturating_duration_since(wake).as_secs_f64();
+                self.margin = (self.margin * 0.999)
+                    .max(1.5 * late)
+                    .clamp(Self::LEAST_S, self.most);
+            }
+        }
+        while Instant::now() < deadline {
             std::hint::spin_loop();
         }
     }
@@ -242,8 +273,19 @@ fn run(
     shared: &Mutex<Status>,
 ) -> Summary {
     let period = 1.0 / config.rate_hz;
+    let mut waiter = Waiter::new(period);
+    let scheduling = priority::raise();
+    shared
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .scheduling
+        .clone_from(&scheduling);
     let start = Instant::now();
     let mut lateness = Lateness::new();
+    let mut period_error = Lateness::new();
+    let mut last_send: Option<Instant> = None;
+    // The shared status's timing figures are summed up ten times a second (not every tick).
+    let summary_every = ((config.rate_hz / 10.0).round() as u64).max(1);
     let mut sequence: u16 = 0;
     let mut frames = 0u64;
     let mut stopping = false;
@@ -254,7 +296,7 @@ fn run(
     loop {
         let t = k as f64 * period;
         let deadline = start + Duration::from_secs_f64(t);
-        sleep_until(deadline);
+        waiter.sleep_until(deadline);
         lateness.add(
             Instant::now()
                 .saturating_duration_since(deadline)
@@ -304,19 +346,29 @@ fn run(
                     unit: config.map.output().unit(),
                     values,
                 };
-                let bytes = match config.format {
-                    Format::Binary => Some(frame.encode().to_vec()),
-                    Format::Text => text::line(&frame).map(String::into_bytes),
+                let sent = match config.format {
+                    Format::Binary => Some(transport.send(t, &frame.encode())),
+                    Format::Text => {
+                        text::line(&frame).map(|line| transport.send(t, line.as_bytes()))
+                    }
                 };
-                if let Some(bytes) = bytes {
-                    if let Err(e) = transport.send(t, &bytes) {
+                match sent {
+                    Some(Err(e)) => {
                         let why = format!("{e}; disarmed");
                         sv.fault(why.clone());
                         failure = Some(why);
-                    } else {
+                    }
+                    Some(Ok(())) => {
+                        let now = Instant::now();
+                        if let Some(previous) = last_send {
+                            let interval = now.saturating_duration_since(previous).as_secs_f64();
+                            period_error.add((interval - period).abs() * 1e6);
+                        }
+                        last_send = Some(now);
                         frames += 1;
                         sequence = sequence.wrapping_add(1);
                     }
+                    None => {}
                 }
             }
             Err(e) => {
@@ -325,17 +377,19 @@ fn run(
                 failure = Some(why);
             }
         }
+        let last = failure.is_some() || (stopping && sv.state() == LinkState::Disarmed);
         {
             let mut s = shared.lock().unwrap_or_else(PoisonError::into_inner);
-            *s = Status {
-                state: sv.state(),
-                note: note.clone(),
-                frames,
-                time: t,
-                timing: lateness.timing(),
-            };
+            s.state = sv.state();
+            s.note.clone_from(&note);
+            s.frames = frames;
+            s.time = t;
+            if last || k.is_multiple_of(summary_every) {
+                s.timing = lateness.timing();
+                s.period_error = period_error.timing();
+            }
         }
-        if failure.is_some() || (stopping && sv.state() == LinkState::Disarmed) {
+        if last {
             break;
         }
         k += 1;
@@ -347,5 +401,6 @@ fn run(
     Summary { status, failure }
 }
 
+mod priority;
 #[cfg(test)]
 mod tests;

@@ -21,6 +21,9 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     if args.list_ports {
         return print_ports();
     }
+    if args.bench {
+        return bench(args);
+    }
     let mut scenario = source::load(&args.scenario)?;
     scenario.link = settings(&scenario.link, args)?;
     let (transport, staged) = open_transport(&scenario, args)?;
@@ -74,10 +77,13 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     let timing = &s.timing;
     let _ = writeln!(
         std::io::stderr(),
-        "link: {} frames to {described} over {:.2} s at {} Hz; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs{}",
+        "link: {} frames to {described} over {:.2} s at {} Hz; period error mean {:.0} µs, p99 {:.0} µs, max {:.0} µs; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs{}",
         s.frames,
         s.time,
         scenario.link.rate_hz,
+        s.period_error.mean_us,
+        s.period_error.p99_us,
+        s.period_error.max_us,
         timing.mean_us,
         timing.p99_us,
         timing.max_us,
@@ -114,6 +120,67 @@ fn progress_line(s: &Status, total: Option<f64>) -> String {
             .map(|n| format!("  ({n})"))
             .unwrap_or_default()
     )
+}
+
+/// `--bench`: the scenario streamed over UDP loopback to a receiver thread at each rate;
+/// one table row per rate.
+fn bench(args: &LinkArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    let rates = args.rate.map_or_else(|| vec![500.0, 1000.0], |r| vec![r]);
+    let seconds = args.duration.unwrap_or(10.0);
+    let mut table = String::from(
+        "rate_hz,seconds,frames,received,period_error_mean_us,period_error_p99_us,period_error_max_us,lateness_mean_us,lateness_p99_us,lateness_max_us,scheduling\n",
+    );
+    for rate in rates {
+        let receiver = std::net::UdpSocket::bind("127.0.0.1:0")?;
+        receiver.set_read_timeout(Some(Duration::from_millis(200)))?;
+        let address = receiver.local_addr()?.to_string();
+        let counter = std::thread::spawn(move || {
+            let mut buf = [0u8; 256];
+            let mut n = 0u64;
+            while receiver.recv(&mut buf).is_ok() {
+                n += 1;
+            }
+            n
+        });
+        let mut s = scenario.clone();
+        s.link.transport = LinkTransport::Udp;
+        s.link.address = Some(address);
+        s.link.rate_hz = rate;
+        let config = SenderConfig {
+            rate_hz: rate,
+            format: hardware::format(&s.link),
+            map: hardware::channel_map(&s)?,
+            supervisor: hardware::supervisor(&s, hardware::home_values(&s)?),
+            arm_at_start: true,
+            stop_after: Some(seconds),
+        };
+        let sender = Sender::spawn(config, target(&s, true), hardware::open_device(&s.link)?)
+            .map_err(|e| anyhow!(e))?;
+        let summary = sender.join();
+        let received = counter
+            .join()
+            .map_err(|_| anyhow!("the receiver thread failed"))?;
+        if let Some(failure) = summary.failure {
+            bail!("the benchmark stream stopped: {failure}");
+        }
+        let st = &summary.status;
+        let (p, l) = (&st.period_error, &st.timing);
+        table.push_str(&format!(
+            "{rate},{:.2},{},{received},{:.1},{:.0},{:.0},{:.1},{:.0},{:.0},{}\n",
+            st.time,
+            st.frames,
+            p.mean_us,
+            p.p99_us,
+            p.max_us,
+            l.mean_us,
+            l.p99_us,
+            l.max_us,
+            st.scheduling
+        ));
+    }
+    output::stdout(table.as_bytes())?;
+    Ok(ExitCode::SUCCESS)
 }
 
 /// `--list-ports`: the serial ports the system offers, one per line.

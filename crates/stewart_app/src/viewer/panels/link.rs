@@ -100,8 +100,12 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         state.link.arm();
     }
     ui.label(format!(
-        "{} frames, {:.1} s; wake-up lateness p99 {:.0} µs, max {:.0} µs",
-        status.frames, status.time, status.timing.p99_us, status.timing.max_us
+        "{} frames, {:.1} s; period error p99 {:.0} µs, max {:.0} µs; {}",
+        status.frames,
+        status.time,
+        status.period_error.p99_us,
+        status.period_error.max_us,
+        status.scheduling
     ));
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
