@@ -107,7 +107,7 @@ pub struct Flags {
     pub armed: bool,
     /// Emergency stop: stop at once, whatever the values say.
     pub estop: bool,
-    /// Return to the home pose (the values are the home set-points).
+    /// Returning home after a stop: the values lead home at a safe speed; follow them.
     pub home: bool,
 }
 

@@ -76,8 +76,10 @@ pub struct Tick {
     pub values: [f64; 6],
     /// Whether the frame goes out armed.
     pub armed: bool,
-    /// Whether the frame carries the e-stop flag.
+    /// Whether the frame carries the e-stop flag (the first frame after an e-stop).
     pub estop: bool,
+    /// Whether the values lead home after a stop (the frame carries the home flag).
+    pub home: bool,
     /// Why the values differ from the target, when they do (held, limited), or why the link
     /// disarmed.
     pub note: Option<String>,
@@ -172,11 +174,14 @@ impl Supervisor {
         }
         self.last = values;
         self.last_time = Some(t);
+        // On the way home the controller must follow the values: the frames stay armed.
+        let home = self.state == LinkState::Stopping && matches!(self.stop, StopMode::Home { .. });
         Tick {
             state: self.state,
             values,
-            armed: matches!(self.state, LinkState::Arming | LinkState::Armed),
+            armed: home || matches!(self.state, LinkState::Arming | LinkState::Armed),
             estop,
+            home,
             note,
         }
     }

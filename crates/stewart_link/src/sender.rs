@@ -341,7 +341,7 @@ fn run(
                     flags: Flags {
                         armed: tick.armed,
                         estop: tick.estop,
-                        home: false,
+                        home: tick.home,
                     },
                     unit: config.map.output().unit(),
                     values,

@@ -3,7 +3,7 @@
 //! - `S,seq,v1,v2,v3,v4,v5,v6\n` — set-points, armed (values in the link's unit, whole
 //!   numbers: µm, 0.01° or µs);
 //! - `E,seq\n` — emergency stop: stop at once;
-//! - `H,seq,v1,…,v6\n` — return home (the values are the home set-points).
+//! - `H,seq,v1,…,v6\n` — returning home after a stop: follow the values home.
 //!
 //! A disarmed link sends nothing in this form (the text form has no disarmed frame).
 

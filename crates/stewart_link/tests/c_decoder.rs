@@ -3,16 +3,10 @@
 //! produced: good frames in order, noise, a damaged frame, a field it must refuse, and a
 //! sequence gap. Its C encoder must write the bytes the Rust encoder writes.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+mod common;
 
 use stewart_link::crc::crc16;
 use stewart_link::{Flags, Frame, FrameKind, Unit};
-
-fn firmware_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/firmware")
-}
 
 /// A harness around the decoder: bytes on standard input, one line per outcome.
 const HARNESS: &str = r#"
@@ -61,33 +55,6 @@ fn frame(sequence: u16, values: [i32; 6]) -> Frame {
 
 #[test]
 fn the_c_decoder_reads_what_the_rust_encoder_writes() {
-    let dir = std::env::temp_dir().join(format!("stewart-c-decoder-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
-    let harness = dir.join("harness.c");
-    std::fs::write(&harness, HARNESS).unwrap_or_else(|e| panic!("{e}"));
-    let program = dir.join("harness");
-    let built = Command::new("cc")
-        .args([
-            "-std=c99",
-            "-Wall",
-            "-Wextra",
-            "-Wpedantic",
-            "-Werror",
-            "-I",
-        ])
-        .arg(firmware_dir())
-        .arg("-o")
-        .arg(&program)
-        .arg(&harness)
-        .arg(firmware_dir().join("stewart_link.c"))
-        .output()
-        .unwrap_or_else(|e| panic!("cc: {e}"));
-    assert!(
-        built.status.success(),
-        "{}",
-        String::from_utf8_lossy(&built.stderr)
-    );
-
     let frames = [
         frame(65534, [1250, -300, 0, 4500, -9000, 17]),
         frame(65535, [i32::MIN, i32::MAX, -1, 1, 0, 123_456]),
@@ -111,19 +78,14 @@ fn the_c_decoder_reads_what_the_rust_encoder_writes() {
     stream.extend([0x5A, 0xA5]);
     stream.extend(frames[3].encode());
 
-    let mut child = Command::new(&program)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    child
-        .stdin
-        .take()
-        .map(|mut s| s.write_all(&stream))
-        .unwrap_or_else(|| panic!("no stdin"))
-        .unwrap_or_else(|e| panic!("{e}"));
-    let out = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    let text = common::build_and_run(
+        "cc",
+        &["-std=c99"],
+        &common::firmware_dir(""),
+        &[common::firmware_dir("stewart_link.c")],
+        HARNESS,
+        &stream,
+    );
     let lines: Vec<&str> = text.lines().collect();
     let hex = |f: &Frame| {
         f.encode()
@@ -149,5 +111,4 @@ fn the_c_decoder_reads_what_the_rust_encoder_writes() {
         "lost 2 bad 2".to_owned(),
     ];
     assert_eq!(lines, expected, "{text}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -107,12 +107,21 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
         .unwrap_or_else(|| panic!("no e-stop frame"));
     assert!((frames[stop].0 - 0.2).abs() < 1e-12);
     assert_eq!(frames[stop].1.values[5], 6000 - 200);
+    // On the way home every frame is armed with the home flag (the controller follows the
+    // values home), the e-stop flag only on the first; the values close in on home.
+    let way_home = &frames[stop..frames.len() - 1];
+    assert!(way_home.len() > 20, "{}", way_home.len());
+    for (i, (_, f)) in way_home.iter().enumerate() {
+        assert!(f.flags.armed && f.flags.home, "{f:?}");
+        assert_eq!(f.flags.estop, i == 0);
+        assert!(i == 0 || f.values[5] < way_home[i - 1].1.values[5]);
+    }
     let last = frames
         .last()
         .map(|f| f.1)
         .unwrap_or_else(|| panic!("no frames"));
     assert_eq!(last.values, [0; 6]);
-    assert!(!last.flags.armed);
+    assert!(!last.flags.armed && !last.flags.home && !last.flags.estop);
     assert!(summary.status.timing.count as usize >= frames.len());
 }
 
