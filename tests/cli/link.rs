@@ -349,3 +349,97 @@ fn a_dry_run_into_a_file_never_lands_on_an_input_and_leaves_nothing_half_written
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("No space left"), "{}", stderr(&o));
 }
+
+#[test]
+fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_brings_it_home() {
+    // The servo-desk's motion turns its servos beyond ±20°: with the range narrowed to ±20°
+    // the link must hold instead of sending those values.
+    let narrow = [
+        "--set",
+        "actuator.servo_min_deg=-20",
+        "--set",
+        "actuator.servo_max_deg=20",
+    ];
+    let solved = stewart(&[&["solve", "--preset", "servo-desk"][..], &narrow[..]].concat());
+    assert_eq!(solved.status.code(), Some(0), "{}", stderr(&solved));
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let first = header
+        .iter()
+        .position(|h| h == "theta1")
+        .unwrap_or_else(|| panic!("{header:?}"));
+    let widest = rows
+        .iter()
+        .flat_map(|r| r[first..first + 6].iter())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    assert!(
+        widest > 25.0,
+        "the motion stays within ±{widest}°: nothing to refuse"
+    );
+
+    let address = free_port();
+    let sim = device_sim(&address, &["--min", "-2000", "--max", "2000"]);
+    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "link",
+            "--preset",
+            "servo-desk",
+            "--transport",
+            "udp",
+            "--address",
+        ])
+        .arg(&address)
+        .args(["--rate", "100", "--ramp", "0.5", "--loop"])
+        .args(narrow)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(3000));
+    let interrupted = std::process::Command::new("kill")
+        .args(["-INT", &link.id().to_string()])
+        .status()
+        .map(|s| s.success());
+    assert_eq!(interrupted.ok(), Some(true));
+    let started = std::time::Instant::now();
+    while link.try_wait().ok().flatten().is_none() {
+        assert!(started.elapsed().as_secs() < 30, "the link did not stop");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("stopped by the user (e-stop)"),
+        "{}",
+        stderr(&o)
+    );
+
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    // Nothing outside ±20° arrived, none lost or damaged.
+    assert_eq!(sim.status.code(), Some(0), "{log}");
+    let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+    let values = |r: &Vec<f64>| r[6..12].to_vec();
+    // The ramp starts at home and no step is faster than 300°/s (3° a frame at 100 Hz).
+    let home = values(&rows[0]);
+    for pair in rows.windows(2) {
+        for k in 0..6 {
+            assert!((pair[1][6 + k] - pair[0][6 + k]).abs() <= 301.0, "{pair:?}");
+        }
+    }
+    // Held: while the motion was beyond the range, the same set-points went out again and
+    // again (armed, before the stop) instead of values outside it.
+    let held = rows.windows(10).any(|w| {
+        w.iter()
+            .all(|r| r[2] == 1.0 && r[3] == 0.0 && r[6..12] == w[0][6..12])
+    });
+    assert!(held, "nothing was held");
+    // The stop: one e-stop frame, then armed frames with the home flag, then disarmed at home.
+    let stop = rows
+        .iter()
+        .position(|r| r[3] == 1.0)
+        .unwrap_or_else(|| panic!("no e-stop frame"));
+    assert_eq!(rows.iter().filter(|r| r[3] == 1.0).count(), 1);
+    let last = rows.len() - 1;
+    assert!(rows[stop..last].iter().all(|r| r[2] == 1.0 && r[4] == 1.0));
+    assert_eq!(rows[last][2], 0.0);
+    assert_eq!(values(&rows[last]), home);
+}

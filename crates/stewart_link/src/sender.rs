@@ -107,6 +107,9 @@ pub struct Status {
     pub note: Option<String>,
     /// Frames sent.
     pub frames: u64,
+    /// Deadlines passed without a frame because the thread woke after the next one had
+    /// passed too (a stalled machine): only the latest is sent, never a burst.
+    pub skipped: u64,
     /// Stream time of the last tick, seconds.
     pub time: f64,
     /// Wake-up lateness so far (how long after its deadline each tick woke).
@@ -174,6 +177,7 @@ impl Sender {
             state: LinkState::Disarmed,
             note: None,
             frames: 0,
+            skipped: 0,
             time: 0.0,
             timing: Timing::default(),
             period_error: Timing::default(),
@@ -293,17 +297,33 @@ fn run(
     let mut note = None;
     let sv = &mut config.supervisor;
     let mut k: u64 = 0;
+    let mut skipped = 0u64;
+    let mut first_tick = true;
     loop {
-        let t = k as f64 * period;
-        let deadline = start + Duration::from_secs_f64(t);
+        let mut t = k as f64 * period;
+        let mut deadline = start + Duration::from_secs_f64(t);
         waiter.sleep_until(deadline);
+        // Woken so late that later deadlines have passed too (the machine stalled): a late
+        // set-point is a wrong one, so send only for the latest deadline passed, not a burst.
+        let behind = (Instant::now()
+            .saturating_duration_since(deadline)
+            .as_secs_f64()
+            / period)
+            .floor() as u64;
+        if behind > 0 {
+            skipped += behind;
+            k += behind;
+            t = k as f64 * period;
+            deadline = start + Duration::from_secs_f64(t);
+        }
         lateness.add(
             Instant::now()
                 .saturating_duration_since(deadline)
                 .as_secs_f64()
                 * 1e6,
         );
-        if k == 0 && config.arm_at_start {
+        // Arm on the first tick, whichever deadline that is (a stalled start skips some).
+        if std::mem::take(&mut first_tick) && config.arm_at_start {
             let from = *sv.last();
             sv.arm(t, from);
         }
@@ -383,6 +403,7 @@ fn run(
             s.state = sv.state();
             s.note.clone_from(&note);
             s.frames = frames;
+            s.skipped = skipped;
             s.time = t;
             if last || k.is_multiple_of(summary_every) {
                 s.timing = lateness.timing();

@@ -86,15 +86,19 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
     assert_eq!(summary.status.state, LinkState::Disarmed);
     let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
     let frames = frames(&sent);
-    // 0.2 s at 200 Hz, then the way home (60° at 400°/s: 0.15 s, 30 ticks) and a last frame.
-    assert!(frames.len() > 60 && frames.len() < 80, "{}", frames.len());
+    // 0.2 s at 200 Hz, then the way home (60° at 400°/s: 0.15 s, 30 ticks) and a last frame
+    // (fewer when a stalled machine made the sender skip deadlines, which it counts).
+    let ticks = frames.len() as u64 + summary.status.skipped;
+    assert!(ticks > 60 && ticks < 80, "{ticks}");
     for (k, (t, f)) in frames.iter().enumerate() {
         assert_eq!(f.sequence as usize, k);
         assert_eq!(f.unit, Unit::Centidegree);
+        // On the deadline grid, one tick apart unless the machine stalled (then later).
         assert!(
-            (t - k as f64 / 200.0).abs() < 1e-12,
+            (t * 200.0 - (t * 200.0).round()).abs() < 1e-9,
             "times are the deadlines"
         );
+        assert!(k == 0 || *t > frames[k - 1].0);
     }
     // Arming from home, then the target itself (0.05 s ramp: ten ticks).
     assert!(frames[0].1.flags.armed && frames[0].1.values == [0; 6]);
@@ -105,7 +109,7 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
         .iter()
         .position(|(_, f)| f.flags.estop)
         .unwrap_or_else(|| panic!("no e-stop frame"));
-    assert!((frames[stop].0 - 0.2).abs() < 1e-12);
+    assert!(frames[stop].0 >= 0.2 - 1e-12 && frames[stop - 1].0 < 0.2 - 1e-12);
     assert_eq!(frames[stop].1.values[5], 6000 - 200);
     // On the way home every frame is armed with the home flag (the controller follows the
     // values home), the e-stop flag only on the first; the values close in on home.
@@ -202,4 +206,36 @@ fn rates_outside_10_to_1000_hz_are_refused() {
             "{e}"
         );
     }
+}
+
+#[test]
+fn a_stall_skips_the_deadlines_it_missed_instead_of_sending_a_burst() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: None,
+    };
+    // The target takes 40 ms once, at the tick of 0.05 s (eight 5 ms deadlines pass).
+    let mut stalled = false;
+    let target: Target = Box::new(move |t| {
+        if t >= 0.05 && !stalled {
+            stalled = true;
+            std::thread::sleep(Duration::from_millis(40));
+        }
+        Ok([1.0; 6])
+    });
+    let summary = Sender::spawn(config(200.0, Some(0.15)), target, Box::new(transport))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .join();
+    assert!(summary.status.skipped >= 7, "{:?}", summary.status);
+    let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
+    let times: Vec<f64> = sent.iter().map(|(t, _)| *t).collect();
+    let after = times
+        .iter()
+        .position(|&t| t > 0.05 + 1e-9)
+        .unwrap_or_else(|| panic!("nothing after the stall"));
+    // The first frame after the stall is for a deadline at least 40 ms later, and frames
+    // follow one per deadline again: no burst of stale set-points.
+    assert!(times[after] >= 0.09 - 1e-9, "{times:?}");
+    assert_eq!(summary.status.frames as usize, times.len());
 }
