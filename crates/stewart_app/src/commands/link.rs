@@ -129,7 +129,7 @@ fn bench(args: &LinkArgs) -> Result<ExitCode> {
     let rates = args.rate.map_or_else(|| vec![500.0, 1000.0], |r| vec![r]);
     let seconds = args.duration.unwrap_or(10.0);
     let mut table = String::from(
-        "rate_hz,seconds,frames,received,period_error_mean_us,period_error_p99_us,period_error_max_us,lateness_mean_us,lateness_p99_us,lateness_max_us,scheduling\n",
+        "rate_hz,seconds,frames,received,skipped,period_error_mean_us,period_error_p99_us,period_error_max_us,lateness_mean_us,lateness_p99_us,lateness_max_us,scheduling\n",
     );
     for rate in rates {
         let receiver = std::net::UdpSocket::bind("127.0.0.1:0")?;
@@ -167,9 +167,10 @@ fn bench(args: &LinkArgs) -> Result<ExitCode> {
         let st = &summary.status;
         let (p, l) = (&st.period_error, &st.timing);
         table.push_str(&format!(
-            "{rate},{:.2},{},{received},{:.1},{:.0},{:.0},{:.1},{:.0},{:.0},{}\n",
+            "{rate},{:.2},{},{received},{},{:.1},{:.0},{:.0},{:.1},{:.0},{:.0},{}\n",
             st.time,
             st.frames,
+            st.skipped,
             p.mean_us,
             p.p99_us,
             p.max_us,
