@@ -252,9 +252,15 @@ pub fn device_sim_on(source: &[&str], extra: &[&str]) -> std::process::Child {
 #[test]
 fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits() {
     let address = free_port();
-    let sim = device_sim(&address, &[]);
+    let sim = device_sim(&address, &["--telemetry"]);
     let o = udp_link("servo-desk", &address, "0.5", "200", "0.1");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // The device's telemetry came back over the same socket.
+    assert!(
+        stderr(&o).contains("telemetry frames from the controller; the last at"),
+        "{}",
+        stderr(&o)
+    );
     let sent: usize = stderr(&o)
         .split_whitespace()
         .nth(1)

@@ -86,7 +86,7 @@ fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
     let pair = PtyPair::new();
     let sim = device_sim_on(
         &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
-        &[],
+        &["--telemetry"],
     );
     let o = serial_link("servo-desk", PtyPair::path(&pair.a), "1", "500");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -96,6 +96,18 @@ fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
         .and_then(|n| n.parse().ok())
         .unwrap_or(0);
     assert!(sent > 500, "{}", stderr(&o));
+    // The device answered every frame with telemetry; the last came back disarmed, at home.
+    let told = stderr(&o);
+    let line = told
+        .lines()
+        .find(|l| l.contains("telemetry frames from the controller"))
+        .unwrap_or_else(|| panic!("no telemetry: {told}"));
+    let count: usize = line
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(count + 5 >= sent && count <= sent, "{line}");
     let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert_eq!(sim.status.code(), Some(0), "{log}");

@@ -83,6 +83,10 @@ pub struct DeviceSimArgs {
     /// Largest value accepted on any channel, in the wire's unit.
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub max: Option<i32>,
+    /// Answer each set-point with a telemetry frame (kind 02) carrying the values and
+    /// flags received, as a controller reporting where it is would.
+    #[arg(long)]
+    pub telemetry: bool,
 }
 
 /// Arguments of `stewart link`. Each option overrides the scenario's `[link]` table.

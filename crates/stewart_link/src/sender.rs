@@ -9,7 +9,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use crate::channels::ChannelMap;
-use crate::frame::{Flags, Frame, FrameKind};
+use crate::frame::{Decoder, Flags, Frame, FrameKind};
 use crate::safety::{LinkState, Supervisor};
 use crate::text;
 use crate::transport::Transport;
@@ -118,6 +118,10 @@ pub struct Status {
     pub period_error: Timing,
     /// How the sender thread is scheduled (real-time where permitted).
     pub scheduling: String,
+    /// Telemetry frames the controller sent back.
+    pub telemetry_frames: u64,
+    /// The latest of them, with the stream time it came at.
+    pub telemetry: Option<(f64, Frame)>,
 }
 
 /// How the stream ended.
@@ -182,6 +186,8 @@ impl Sender {
             timing: Timing::default(),
             period_error: Timing::default(),
             scheduling: String::new(),
+            telemetry_frames: 0,
+            telemetry: None,
         }));
         let shared = Arc::clone(&status);
         let handle = std::thread::Builder::new()
@@ -226,6 +232,41 @@ impl Sender {
             status,
             failure: Some("the sender thread failed".to_owned()),
         })
+    }
+}
+
+/// Telemetry coming back from the controller, decoded as it arrives.
+#[derive(Default)]
+struct Telemetry {
+    decoder: Decoder,
+    frames: u64,
+    latest: Option<(f64, Frame)>,
+}
+
+impl Telemetry {
+    /// Read what has come back (never waiting) and keep the latest telemetry frame.
+    fn collect(
+        &mut self,
+        transport: &mut dyn Transport,
+        t: f64,
+    ) -> Result<(), crate::transport::TransportError> {
+        let mut buf = [0u8; 256];
+        // A bounded number of reads per tick: a chatty controller cannot stall the sender.
+        for _ in 0..8 {
+            let n = transport.receive(&mut buf)?;
+            if n == 0 {
+                break;
+            }
+            for &b in &buf[..n] {
+                if let Some(Ok(frame)) = self.decoder.push(b)
+                    && frame.kind == FrameKind::Telemetry
+                {
+                    self.frames += 1;
+                    self.latest = Some((t, frame));
+                }
+            }
+        }
+        Ok(())
     }
 }
 
@@ -299,6 +340,7 @@ fn run(
     let mut k: u64 = 0;
     let mut skipped = 0u64;
     let mut first_tick = true;
+    let mut telemetry = Telemetry::default();
     loop {
         let mut t = k as f64 * period;
         let mut deadline = start + Duration::from_secs_f64(t);
@@ -390,6 +432,13 @@ fn run(
                     }
                     None => {}
                 }
+                if failure.is_none()
+                    && let Err(e) = telemetry.collect(transport.as_mut(), t)
+                {
+                    let why = format!("{e}; disarmed");
+                    sv.fault(why.clone());
+                    failure = Some(why);
+                }
             }
             Err(e) => {
                 let why = format!("{e}; disarmed");
@@ -404,6 +453,8 @@ fn run(
             s.note.clone_from(&note);
             s.frames = frames;
             s.skipped = skipped;
+            s.telemetry_frames = telemetry.frames;
+            s.telemetry = telemetry.latest;
             s.time = t;
             if last || k.is_multiple_of(summary_every) {
                 s.timing = lateness.timing();

@@ -40,6 +40,12 @@ pub trait Transport: Send {
     fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError>;
     /// What it sends to, for messages.
     fn describe(&self) -> String;
+
+    /// Bytes that have come back (telemetry), without waiting; `Ok(0)` when none (and for
+    /// transports that carry nothing back).
+    fn receive(&mut self, _buf: &mut [u8]) -> Result<usize, TransportError> {
+        Ok(0)
+    }
 }
 
 /// UDP datagrams to one peer, one frame per datagram.
@@ -71,6 +77,9 @@ impl Udp {
         };
         let socket = UdpSocket::bind(local).map_err(io("cannot open a UDP socket for"))?;
         socket.connect(peer).map_err(io("cannot aim UDP at"))?;
+        socket
+            .set_nonblocking(true)
+            .map_err(io("cannot set up UDP to"))?;
         Ok(Self { socket, peer })
     }
 }
@@ -88,6 +97,25 @@ impl Transport for Udp {
 
     fn describe(&self) -> String {
         format!("UDP {}", self.peer)
+    }
+
+    fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
+        match self.socket.recv(buf) {
+            Ok(n) => Ok(n),
+            // Nothing yet; a peer that is not listening is reported by the next send.
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::ConnectionRefused
+                ) =>
+            {
+                Ok(0)
+            }
+            Err(source) => Err(TransportError::Io {
+                what: format!("receiving from {}", self.peer),
+                source,
+            }),
+        }
     }
 }
 

@@ -10,7 +10,8 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
 use stewart_link::transport::Serial;
-use stewart_link::{Decoder, Frame, Unit};
+use stewart_link::transport::Transport as _;
+use stewart_link::{Decoder, Frame, FrameKind, Unit};
 
 use crate::cli::DeviceSimArgs;
 use crate::output;
@@ -42,6 +43,7 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     let mut buf = [0u8; 2048];
     // A serial line is one stream (frames may span reads); each datagram stands alone.
     let mut stream = Decoder::new();
+    let mut telemetry_sequence: u16 = 0;
     loop {
         if stop.load(std::sync::atomic::Ordering::Relaxed)
             || started.elapsed().as_secs_f64() >= args.duration
@@ -56,6 +58,7 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         let now = Instant::now();
         let t0 = *first.get_or_insert(now);
         last = now;
+        let mut replies = Vec::new();
         let mut datagram = Decoder::new();
         let decoder = if input.datagrams {
             &mut datagram
@@ -68,6 +71,14 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                 Some(Ok(frame)) => {
                     any = true;
                     record(&mut tally, (now - t0).as_secs_f64(), &frame, args);
+                    if args.telemetry {
+                        replies.push(Frame {
+                            kind: FrameKind::Telemetry,
+                            sequence: telemetry_sequence,
+                            ..frame
+                        });
+                        telemetry_sequence = telemetry_sequence.wrapping_add(1);
+                    }
                 }
                 Some(Err(_)) => tally.bad += 1,
                 None => {}
@@ -76,6 +87,9 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         if input.datagrams && !any {
             // A datagram with no whole frame in it is damaged too.
             tally.bad += 1;
+        }
+        for reply in replies {
+            input.reply(&reply.encode())?;
         }
     }
     let rows = std::mem::take(&mut tally.rows);
@@ -99,6 +113,8 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
 struct Input {
     source: Source,
     name: String,
+    /// Where the last datagram came from (telemetry goes back there).
+    peer: Option<std::net::SocketAddr>,
     /// Whether each read is a datagram that stands alone.
     datagrams: bool,
 }
@@ -117,6 +133,7 @@ impl Input {
                 socket.set_read_timeout(Some(Duration::from_millis(50)))?;
                 Ok(Self {
                     name: socket.local_addr()?.to_string(),
+                    peer: None,
                     source: Source::Udp(socket),
                     datagrams: true,
                 })
@@ -124,17 +141,36 @@ impl Input {
             (None, Some(port)) => Ok(Self {
                 source: Source::Serial(Serial::open(port, args.baud, Duration::from_millis(50))?),
                 name: format!("{port} at {} baud", args.baud),
+                peer: None,
                 datagrams: false,
             }),
             _ => bail!("give one of --udp HOST:PORT or --serial PORT"),
         }
     }
 
+    /// Send `bytes` back to the host (telemetry).
+    fn reply(&mut self, bytes: &[u8]) -> Result<()> {
+        match &mut self.source {
+            Source::Udp(socket) => {
+                if let Some(peer) = self.peer {
+                    socket
+                        .send_to(bytes, peer)
+                        .map_err(|e| anyhow!("answering {peer}: {e}"))?;
+                }
+            }
+            Source::Serial(port) => port.send(0.0, bytes)?,
+        }
+        Ok(())
+    }
+
     /// Bytes that arrived within 50 ms (0 when none).
     fn receive(&mut self, buf: &mut [u8]) -> Result<usize> {
         match &mut self.source {
-            Source::Udp(socket) => match socket.recv(buf) {
-                Ok(n) => Ok(n),
+            Source::Udp(socket) => match socket.recv_from(buf) {
+                Ok((n, from)) => {
+                    self.peer = Some(from);
+                    Ok(n)
+                }
                 Err(e)
                     if matches!(
                         e.kind(),
@@ -145,7 +181,7 @@ impl Input {
                 }
                 Err(e) => Err(anyhow!("receiving on {}: {e}", self.name)),
             },
-            Source::Serial(port) => Ok(port.receive(buf)?),
+            Source::Serial(port) => Ok(port.read_waiting(buf)?),
         }
     }
 }

@@ -92,6 +92,14 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             .map(|n| format!("; last note: {n}"))
             .unwrap_or_default()
     );
+    if let Some((t, frame)) = &s.telemetry {
+        let _ = writeln!(
+            std::io::stderr(),
+            "link: {} telemetry frames from the controller; the last at {t:.2} s: {}",
+            s.telemetry_frames,
+            telemetry_words(frame)
+        );
+    }
     if let Some(failure) = summary.failure {
         // A record that could not be finished is not left behind (the staged file goes).
         bail!("the link stopped: {failure}");
@@ -104,6 +112,30 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// A telemetry frame in words: flags, then the six values in their unit.
+pub fn telemetry_words(frame: &stewart_link::Frame) -> String {
+    let f = frame.flags;
+    let flags: Vec<&str> = [(f.armed, "armed"), (f.estop, "e-stop"), (f.home, "home")]
+        .into_iter()
+        .filter_map(|(on, word)| on.then_some(word))
+        .collect();
+    let unit = match frame.unit {
+        stewart_link::Unit::Micrometre => "µm",
+        stewart_link::Unit::Centidegree => "0.01°",
+        stewart_link::Unit::PulseMicrosecond => "µs",
+    };
+    let values: Vec<String> = frame.values.iter().map(i32::to_string).collect();
+    format!(
+        "{} [{}] {unit}",
+        if flags.is_empty() {
+            "disarmed".to_owned()
+        } else {
+            flags.join(", ")
+        },
+        values.join(", ")
+    )
 }
 
 /// The progress line: state, stream time, frames, lateness so far.

@@ -82,7 +82,7 @@ impl Serial {
 
     /// Read what has arrived (telemetry, or frames for a stand-in device) into `buf`,
     /// waiting at most the port's timeout; `Ok(0)` when nothing came.
-    pub fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
+    pub fn read_waiting(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
         use std::io::Read as _;
         match self.port.read(buf) {
             Ok(n) => Ok(n),
@@ -114,6 +114,18 @@ impl Transport for Serial {
 
     fn describe(&self) -> String {
         format!("serial {}", self.name)
+    }
+
+    fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
+        let waiting = self.port.bytes_to_read().map_err(|e| TransportError::Io {
+            what: format!("reading from {}", self.name),
+            source: e.into(),
+        })? as usize;
+        if waiting == 0 {
+            return Ok(0);
+        }
+        let n = waiting.min(buf.len());
+        self.read_waiting(&mut buf[..n])
     }
 }
 

@@ -107,6 +107,14 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         status.period_error.max_us,
         status.scheduling
     ));
+    if let Some((t, frame)) = &status.telemetry {
+        ui.label(format!(
+            "Controller reports: {} ({} frames, the last {:.1} s ago)",
+            crate::commands::link::telemetry_words(frame),
+            status.telemetry_frames,
+            (status.time - t).max(0.0)
+        ));
+    }
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
     }
