@@ -177,6 +177,14 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
             "cannot open the serial port /dev/no-such-port",
         ),
         (
+            vec!["link", "--transport", "serial", "--port", "/dev/null"],
+            "cannot open the serial port /dev/null",
+        ),
+        (
+            vec!["link", "--transport", "udp", "--address", "127.0.0.1:0"],
+            "port 0 names no peer",
+        ),
+        (
             vec!["link", "--transport", "tcp"],
             "`tcp` is not one of serial, udp, file",
         ),
@@ -217,6 +225,10 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         let err = stderr(&o);
         assert!(err.contains(expected), "{args:?}: {err}");
+        // One line, and the system's words said once (not again as a chained cause).
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        let parts: Vec<&str> = err.trim_end().rsplitn(3, ": ").collect();
+        assert!(parts.len() < 2 || parts[0] != parts[1], "{err}");
         assert!(stdout(&o).is_empty(), "{args:?} sent something");
     }
 }

@@ -25,12 +25,12 @@ pub enum TransportError {
     #[error("{0}")]
     Setting(String),
     /// The operating system refused.
-    #[error("{what}: {source}")]
+    #[error("{what}: {cause}")]
     Io {
         /// What was being done.
         what: String,
-        /// The system's words.
-        source: std::io::Error,
+        /// The system's words (part of the message, not a separate cause: said once).
+        cause: std::io::Error,
     },
 }
 
@@ -66,6 +66,9 @@ impl Udp {
             .map_err(|e| bad(e.to_string()))?
             .next()
             .ok_or_else(|| bad("it names no address".to_owned()))?;
+        if peer.port() == 0 {
+            return Err(bad("port 0 names no peer".to_owned()));
+        }
         let local: SocketAddr = if peer.is_ipv4() {
             ([0, 0, 0, 0], 0).into()
         } else {
@@ -73,7 +76,7 @@ impl Udp {
         };
         let io = |what: &str| {
             let what = format!("{what} {peer}");
-            move |source| TransportError::Io { what, source }
+            move |cause| TransportError::Io { what, cause }
         };
         let socket = UdpSocket::bind(local).map_err(io("cannot open a UDP socket for"))?;
         socket.connect(peer).map_err(io("cannot aim UDP at"))?;
@@ -89,9 +92,9 @@ impl Transport for Udp {
         self.socket
             .send(bytes)
             .map(|_| ())
-            .map_err(|source| TransportError::Io {
+            .map_err(|cause| TransportError::Io {
                 what: format!("sending to {}", self.peer),
-                source,
+                cause,
             })
     }
 
@@ -111,9 +114,9 @@ impl Transport for Udp {
             {
                 Ok(0)
             }
-            Err(source) => Err(TransportError::Io {
+            Err(cause) => Err(TransportError::Io {
                 what: format!("receiving from {}", self.peer),
-                source,
+                cause,
             }),
         }
     }
@@ -154,9 +157,9 @@ impl<W: Write + Send> Transport for Record<W> {
         };
         writeln!(self.out, "{t:.6}\t{body}")
             .and_then(|()| self.out.flush())
-            .map_err(|source| TransportError::Io {
+            .map_err(|cause| TransportError::Io {
                 what: format!("writing the dry run to {}", self.name),
-                source,
+                cause,
             })
     }
 
@@ -182,7 +185,13 @@ mod tests {
         let n = peer.recv(&mut buf).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(&buf[..n], &[1, 2, 3]);
         assert_eq!(udp.describe(), format!("UDP {address}"));
-        for bad in ["nowhere", "1.2.3.4", "1.2.3.4:99999", "host:port"] {
+        for bad in [
+            "nowhere",
+            "1.2.3.4",
+            "1.2.3.4:99999",
+            "host:port",
+            "127.0.0.1:0",
+        ] {
             let e = Udp::connect(bad)
                 .err()
                 .map(|e| e.to_string())

@@ -24,7 +24,7 @@ impl Transport for Capture {
         if self.fail_at.is_some_and(|n| sent.len() >= n) {
             return Err(TransportError::Io {
                 what: "sending to the test device".to_owned(),
-                source: std::io::Error::other("the device went away"),
+                cause: std::io::Error::other("the device went away"),
             });
         }
         sent.push((t, bytes.to_vec()));

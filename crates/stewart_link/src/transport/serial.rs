@@ -5,6 +5,11 @@ use std::time::Duration;
 
 use super::{Transport, TransportError};
 
+/// The system's words for a serial port error.
+fn system_error(e: serialport::Error) -> std::io::Error {
+    e.into()
+}
+
 /// The bits on the line per byte: start, eight data bits, stop (8N1).
 const BITS_PER_BYTE: f64 = 10.0;
 
@@ -27,7 +32,7 @@ pub struct PortInfo {
 pub fn list_ports() -> Result<Vec<PortInfo>, TransportError> {
     let ports = serialport::available_ports().map_err(|e| TransportError::Io {
         what: "listing the serial ports".to_owned(),
-        source: e.into(),
+        cause: system_error(e),
     })?;
     let mut list: Vec<PortInfo> = ports
         .into_iter()
@@ -72,7 +77,7 @@ impl Serial {
             .open()
             .map_err(|e| TransportError::Io {
                 what: format!("cannot open the serial port {port}"),
-                source: e.into(),
+                cause: system_error(e),
             })?;
         Ok(Self {
             port: opened,
@@ -94,9 +99,9 @@ impl Serial {
             {
                 Ok(0)
             }
-            Err(source) => Err(TransportError::Io {
+            Err(cause) => Err(TransportError::Io {
                 what: format!("reading from {}", self.name),
-                source,
+                cause,
             }),
         }
     }
@@ -106,9 +111,9 @@ impl Transport for Serial {
     fn send(&mut self, _t: f64, bytes: &[u8]) -> Result<(), TransportError> {
         self.port
             .write_all(bytes)
-            .map_err(|source| TransportError::Io {
+            .map_err(|cause| TransportError::Io {
                 what: format!("writing to {}", self.name),
-                source,
+                cause,
             })
     }
 
@@ -119,7 +124,7 @@ impl Transport for Serial {
     fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
         let waiting = self.port.bytes_to_read().map_err(|e| TransportError::Io {
             what: format!("reading from {}", self.name),
-            source: e.into(),
+            cause: system_error(e),
         })? as usize;
         if waiting == 0 {
             return Ok(0);
