@@ -34,6 +34,28 @@ pub enum TransportError {
     },
 }
 
+/// A read's outcome as a byte count: what came, 0 when nothing came in time (or when the
+/// error is one of `nothing_yet`), else the error with what was being done.
+pub fn bytes_read(
+    read: std::io::Result<usize>,
+    nothing_yet: &[std::io::ErrorKind],
+    what: impl FnOnce() -> String,
+) -> Result<usize, TransportError> {
+    match read {
+        Ok(n) => Ok(n),
+        Err(e) if nothing_yet.contains(&e.kind()) => Ok(0),
+        Err(cause) => Err(TransportError::Io {
+            what: what(),
+            cause,
+        }),
+    }
+}
+
+/// The errors that mean "nothing has come yet" for a read that does not wait (or waits
+/// with a timeout).
+pub const NOTHING_YET: [std::io::ErrorKind; 2] =
+    [std::io::ErrorKind::WouldBlock, std::io::ErrorKind::TimedOut];
+
 /// A way to send frames or lines.
 pub trait Transport: Send {
     /// Send one frame (or one text line) sampled at `t` seconds since the stream began.
@@ -103,22 +125,14 @@ impl Transport for Udp {
     }
 
     fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
-        match self.socket.recv(buf) {
-            Ok(n) => Ok(n),
-            // Nothing yet; a peer that is not listening is reported by the next send.
-            Err(e)
-                if matches!(
-                    e.kind(),
-                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::ConnectionRefused
-                ) =>
-            {
-                Ok(0)
-            }
-            Err(cause) => Err(TransportError::Io {
-                what: format!("receiving from {}", self.peer),
-                cause,
-            }),
-        }
+        // A peer that is not listening is reported by the next send, not here.
+        let nothing_yet = [
+            std::io::ErrorKind::WouldBlock,
+            std::io::ErrorKind::ConnectionRefused,
+        ];
+        bytes_read(self.socket.recv(buf), &nothing_yet, || {
+            format!("receiving from {}", self.peer)
+        })
     }
 }
 

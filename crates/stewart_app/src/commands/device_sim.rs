@@ -9,8 +9,8 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_link::transport::Serial;
 use stewart_link::transport::Transport as _;
+use stewart_link::transport::{NOTHING_YET, Serial, bytes_read};
 use stewart_link::{Decoder, Frame, FrameKind, Unit};
 
 use crate::cli::DeviceSimArgs;
@@ -166,21 +166,16 @@ impl Input {
     /// Bytes that arrived within 50 ms (0 when none).
     fn receive(&mut self, buf: &mut [u8]) -> Result<usize> {
         match &mut self.source {
-            Source::Udp(socket) => match socket.recv_from(buf) {
-                Ok((n, from)) => {
+            Source::Udp(socket) => {
+                let got = socket.recv_from(buf).map(|(n, from)| {
                     self.peer = Some(from);
-                    Ok(n)
-                }
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
-                    ) =>
-                {
-                    Ok(0)
-                }
-                Err(e) => Err(anyhow!("receiving on {}: {e}", self.name)),
-            },
+                    n
+                });
+                let name = &self.name;
+                Ok(bytes_read(got, &NOTHING_YET, || {
+                    format!("receiving on {name}")
+                })?)
+            }
             Source::Serial(port) => Ok(port.read_waiting(buf)?),
         }
     }

@@ -89,21 +89,9 @@ impl Serial {
     /// waiting at most the port's timeout; `Ok(0)` when nothing came.
     pub fn read_waiting(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
         use std::io::Read as _;
-        match self.port.read(buf) {
-            Ok(n) => Ok(n),
-            Err(e)
-                if matches!(
-                    e.kind(),
-                    std::io::ErrorKind::TimedOut | std::io::ErrorKind::WouldBlock
-                ) =>
-            {
-                Ok(0)
-            }
-            Err(cause) => Err(TransportError::Io {
-                what: format!("reading from {}", self.name),
-                cause,
-            }),
-        }
+        super::bytes_read(self.port.read(buf), &super::NOTHING_YET, || {
+            format!("reading from {}", self.name)
+        })
     }
 }
 
