@@ -125,13 +125,15 @@ impl Transport for Udp {
     }
 
     fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
-        // A peer that is not listening is reported by the next send, not here.
-        let nothing_yet = [
-            std::io::ErrorKind::WouldBlock,
-            std::io::ErrorKind::ConnectionRefused,
-        ];
-        bytes_read(self.socket.recv(buf), &nothing_yet, || {
-            format!("receiving from {}", self.peer)
+        let got = self.socket.recv(buf);
+        // A peer that is not listening answers a datagram with "connection refused", which
+        // the system reports on the next call on the socket, this one: it is the send's.
+        let what = match &got {
+            Err(e) if e.kind() == std::io::ErrorKind::ConnectionRefused => "sending to",
+            _ => "receiving from",
+        };
+        bytes_read(got, &[std::io::ErrorKind::WouldBlock], || {
+            format!("{what} {}", self.peer)
         })
     }
 }
