@@ -6,6 +6,7 @@ mod snapshots;
 
 use glam::Vec3;
 use stewart_kinematics::{Geometry, GeometryParams, Pose, StrokeLimits};
+use stewart_render::theme::series;
 use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
 
 /// Render `pose` of `geometry` at `width × height` with the seed view.
@@ -17,9 +18,31 @@ pub fn render(
     width: u32,
     height: u32,
 ) -> (Frame, OrbitCamera) {
-    let frame = geometry.scene_frame(pose, Vec::new());
-    let list = DrawList::build(&frame, theme, &Overlays::default());
     let camera = seed_camera(geometry);
+    let overlays = Overlays::default();
+    render_with(
+        offscreen,
+        geometry,
+        pose,
+        theme,
+        (width, height),
+        &overlays,
+        camera,
+    )
+}
+
+/// [`render`] with chosen overlays and camera.
+pub fn render_with(
+    offscreen: &mut Offscreen,
+    geometry: &Geometry,
+    pose: &Pose,
+    theme: &Theme,
+    (width, height): (u32, u32),
+    overlays: &Overlays,
+    camera: OrbitCamera,
+) -> (Frame, OrbitCamera) {
+    let frame = geometry.scene_frame(pose, Vec::new());
+    let list = DrawList::build(&frame, theme, overlays);
     let image = offscreen
         .render(&list, &camera, theme, width, height)
         .unwrap_or_else(|e| panic!("{e}"));
@@ -176,6 +199,31 @@ fn closest_to(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32
         .unwrap_or(255)
 }
 
+/// As [`closest_to`], searching a few pixels around each point (across a cylinder, its
+/// shading runs from dark edges to a highlight on the axis).
+fn closest_near(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
+    let target = [0, 1, 2].map(|k| (colour[k] * 255.0) as i32);
+    let mut best = 255;
+    for &p in points {
+        let (x, y) = project(camera, p, frame.width, frame.height);
+        for dy in -4i32..=4 {
+            for dx in -4i32..=4 {
+                let (px, py) = (x as i32 + dx, y as i32 + dy);
+                if px < 0 || py < 0 || px >= frame.width as i32 || py >= frame.height as i32 {
+                    continue;
+                }
+                let q = frame.pixel(px as u32, py as u32);
+                let d = (0..3)
+                    .map(|k| (q[k] as i32 - target[k]).abs())
+                    .max()
+                    .unwrap_or(255);
+                best = best.min(d);
+            }
+        }
+    }
+    best
+}
+
 #[test]
 fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
     use stewart_kinematics::Scenario;
@@ -184,7 +232,12 @@ fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
     let g = &s.geometry;
     let pose = g.home_pose();
     let (w, h) = (480, 320);
-    let (frame, camera) = render(&mut off, g, &pose, &Theme::LIGHT, w, h);
+    let single = Overlays {
+        coloured_legs: false,
+        ..Overlays::default()
+    };
+    let camera = seed_camera(g);
+    let (frame, camera) = render_with(&mut off, g, &pose, &Theme::LIGHT, (w, h), &single, camera);
     let scene = g.scene_frame(&pose, Vec::new());
     let servos = scene.servos.unwrap_or_else(|| panic!("rotary scene"));
     let v = |p: nalgebra::Vector3<f64>| Vec3::new(p.x as f32, p.y as f32, p.z as f32);
@@ -233,6 +286,68 @@ fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
         best < 40,
         "no horn pixel near the warning colour (closest {best})"
     );
+}
+
+#[test]
+fn leg_k_shows_the_plots_colour_k_in_both_themes_and_one_colour_when_asked() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let pose = Pose::from_xyz_rpy_deg([0.05, 0.0, 0.85], [0.0, 0.0, 10.0]);
+    let sol = g.inverse(&pose);
+    // Points along each leg's actuator body, near the base joint.
+    let body = |k: usize| -> Vec<Vec3> {
+        (1..7)
+            .map(|i| {
+                let base = sol.platform_joints[k] - sol.legs[k];
+                let p = base + sol.legs[k] * (0.05 * i as f64);
+                Vec3::new(p.x as f32, p.y as f32, p.z as f32)
+            })
+            .collect()
+    };
+    // From above: the legs spread apart, and their bodies (near the base joints, outside
+    // the smaller platform) are not seen through the translucent platform, which tints.
+    let low = OrbitCamera {
+        elevation_deg: 89.0,
+        ..seed_camera(&g)
+    };
+    let coloured = Overlays::default();
+    for theme in [Theme::DARK, Theme::LIGHT] {
+        let (frame, camera) = render_with(&mut off, &g, &pose, &theme, (640, 480), &coloured, low);
+        for k in 0..6 {
+            // Shading and the translucent plates shift the colour a little; it must stay
+            // nearer its own plot colour than any other leg's.
+            let near = |j: usize| closest_near(&frame, &camera, &body(k), series(j));
+            let best = near(k);
+            assert!(
+                best < 50,
+                "leg {} is not in plot colour {} (closest {best})",
+                k + 1,
+                k + 1
+            );
+            for j in (0..6).filter(|&j| j != k) {
+                assert!(
+                    near(j) > best,
+                    "leg {} looks like leg {}'s colour",
+                    k + 1,
+                    j + 1
+                );
+            }
+        }
+        // One colour for all: every body in the theme's leg colour.
+        let single = Overlays {
+            coloured_legs: false,
+            ..Overlays::default()
+        };
+        let (frame, camera) = render_with(&mut off, &g, &pose, &theme, (640, 480), &single, low);
+        for k in 0..6 {
+            let best = closest_near(&frame, &camera, &body(k), theme.leg_body);
+            assert!(
+                best < 50,
+                "leg {} is not in the leg colour (closest {best})",
+                k + 1
+            );
+        }
+    }
 }
 
 #[test]

@@ -489,6 +489,10 @@ pub struct RenderArgs {
     /// Draw the platform's own axes at its centre.
     #[arg(long)]
     pub platform_axes: bool,
+    /// Draw every leg in one colour (by default each leg takes the colour of its curve
+    /// in the plot).
+    #[arg(long)]
+    pub single_colour: bool,
 }
 
 /// The colour themes.

@@ -19,6 +19,8 @@ pub struct Overlays {
     pub platform_axes: bool,
     /// The path traced by the platform centre.
     pub path: bool,
+    /// Each actuator in its own colour (the plot's); off: all in the theme's leg colour.
+    pub coloured_legs: bool,
 }
 
 impl Default for Overlays {
@@ -28,6 +30,7 @@ impl Default for Overlays {
             base_axes: true,
             platform_axes: false,
             path: true,
+            coloured_legs: true,
         }
     }
 }
@@ -82,6 +85,27 @@ fn ball(at: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
     }
 }
 
+/// How actuators are coloured.
+struct LegColours<'a> {
+    theme: &'a Theme,
+    coloured: bool,
+}
+
+impl LegColours<'_> {
+    /// Body and rod of actuator `k` in `status`. Coloured: the body always in the
+    /// actuator's own colour (so it can be told apart), the rod neutral or, near or over
+    /// a limit, the warning colour. Single-coloured: the theme's colours, the warning
+    /// colour on both.
+    fn of(&self, k: usize, status: LegStatus) -> (crate::theme::Srgba, crate::theme::Srgba) {
+        let (body, rod) = self.theme.leg_colours(status);
+        if self.coloured {
+            (crate::theme::series(k), rod)
+        } else {
+            (body, rod)
+        }
+    }
+}
+
 impl DrawList {
     /// Build the draw list of `frame` in `theme`.
     pub fn build(frame: &SceneFrame, theme: &Theme, overlays: &Overlays) -> DrawList {
@@ -90,9 +114,13 @@ impl DrawList {
         let joint_radius = JOINT_RADIUS * s;
         let plate_thickness = 0.025 * s;
 
+        let colours = LegColours {
+            theme,
+            coloured: overlays.coloured_legs,
+        };
         match &frame.servos {
-            None => list.linear_legs(frame, theme, s),
-            Some(servos) => list.servos(frame, servos, theme, s),
+            None => list.linear_legs(frame, &colours, s),
+            Some(servos) => list.servos(frame, servos, &colours, s),
         }
         for p in &frame.platform_joints {
             list.spheres
@@ -146,15 +174,16 @@ impl DrawList {
     /// Linear legs: an actuator body from the base joint and a thinner rod from the
     /// platform joint; the body is as long as the shortest leg (or 55 % of the leg).
     /// `s` is the size of the larger plate.
-    fn linear_legs(&mut self, frame: &SceneFrame, theme: &Theme, s: f32) {
-        for leg in &frame.legs {
+    fn linear_legs(&mut self, frame: &SceneFrame, colours: &LegColours, s: f32) {
+        let theme = colours.theme;
+        for (k, leg) in frame.legs.iter().enumerate() {
             let (base, top) = (v3(&leg.base), v3(&leg.top));
             let length = leg.length as f32;
             let dir = (top - base).normalize_or(Vec3::Z);
             let body_length = leg
                 .min_length
                 .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
-            let (body, rod) = theme.leg_colours(leg.status);
+            let (body, rod) = colours.of(k, leg.status);
             self.cylinders.push(along(
                 base,
                 base + dir * body_length,
@@ -178,8 +207,15 @@ impl DrawList {
     /// centre, a short shaft, the horn (thick, in the horn colour) from shaft to tip, a
     /// ball joint on the tip and the thin rod to the platform joint. Body, horn and rod
     /// take the warning colours when the servo is near or past its range.
-    fn servos(&mut self, frame: &SceneFrame, servos: &[ServoFrame; 6], theme: &Theme, s: f32) {
-        for (servo, leg) in servos.iter().zip(&frame.legs) {
+    fn servos(
+        &mut self,
+        frame: &SceneFrame,
+        servos: &[ServoFrame; 6],
+        colours: &LegColours,
+        s: f32,
+    ) {
+        let theme = colours.theme;
+        for (k, (servo, leg)) in servos.iter().zip(&frame.legs).enumerate() {
             let shaft = v3(&servo.shaft);
             let tip = v3(&servo.horn_tip);
             let horn = (tip - shaft).length().max(1e-6);
@@ -189,11 +225,12 @@ impl DrawList {
             } else {
                 -axis
             };
-            let (body, rod) = theme.leg_colours(servo.status);
-            let horn_colour = if servo.status == LegStatus::Normal {
-                theme.horn
-            } else {
-                body
+            let (body, rod) = colours.of(k, servo.status);
+            let horn_colour = match (servo.status, colours.coloured) {
+                (LegStatus::Normal, true) => body,
+                (LegStatus::Normal, false) => theme.horn,
+                // Near or past the range: the horn shows it.
+                (_, _) => theme.leg_colours(servo.status).0,
             };
             // The body: 1.3 horns long along the horn's zero direction, 1.1 high, 0.6
             // deep along the shaft, the shaft near its front end.
@@ -279,8 +316,26 @@ mod tests {
             &Overlays::default(),
         );
         let warning = linear(Theme::DARK.leg_over_limit);
+        // Coloured legs: the rods warn, the bodies keep each leg's colour.
         assert_eq!(
             list.cylinders.iter().filter(|c| c.color == warning).count(),
+            6
+        );
+        // Single-coloured: body and rod both warn.
+        let single = DrawList::build(
+            &g.scene_frame(&g.home_pose(), Vec::new()),
+            &Theme::DARK,
+            &Overlays {
+                coloured_legs: false,
+                ..Overlays::default()
+            },
+        );
+        assert_eq!(
+            single
+                .cylinders
+                .iter()
+                .filter(|c| c.color == warning)
+                .count(),
             12
         );
         let g = Geometry::seed();
@@ -307,9 +362,18 @@ mod tests {
                 base_axes: false,
                 platform_axes: false,
                 path: false,
+                coloured_legs: true,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
+        // Coloured legs: body k in series colour k, rods neutral.
+        for k in 0..6 {
+            assert_eq!(list.cylinders[2 * k].color, linear(crate::theme::series(k)));
+            assert_eq!(
+                list.cylinders[2 * k + 1].color,
+                linear(Theme::LIGHT.leg_rod)
+            );
+        }
         assert_eq!(list.spheres.len(), 12);
         assert!(list.lines.is_empty() && list.cones.is_empty());
         // The rod's far end (model · (0, 0, 1)) is the platform joint.
@@ -331,6 +395,7 @@ mod tests {
             base_axes: false,
             platform_axes: false,
             path: false,
+            coloured_legs: false,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

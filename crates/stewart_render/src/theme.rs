@@ -5,6 +5,29 @@ use stewart_kinematics::scene::LegStatus;
 /// An sRGB colour with alpha, components 0..1.
 pub type Srgba = [f32; 4];
 
+/// The six actuators' own colours (Okabe–Ito: told apart with colour-blindness and in grey
+/// print), as sRGB bytes: the plot's curves, the 3D legs and the leg bars all use them, in
+/// both themes.
+pub const SERIES_RGB: [[u8; 3]; 6] = [
+    [0x00, 0x72, 0xB2],
+    [0xD5, 0x5E, 0x00],
+    [0x00, 0x9E, 0x73],
+    [0xCC, 0x79, 0xA7],
+    [0xE6, 0x9F, 0x00],
+    [0x56, 0xB4, 0xE9],
+];
+
+/// Actuator `k`'s colour (0–5, wrapping), opaque sRGB.
+pub fn series(k: usize) -> Srgba {
+    let [r, g, b] = SERIES_RGB[k % 6];
+    [
+        f32::from(r) / 255.0,
+        f32::from(g) / 255.0,
+        f32::from(b) / 255.0,
+        1.0,
+    ]
+}
+
 /// Every colour the renderer uses, in sRGB.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {

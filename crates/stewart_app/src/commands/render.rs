@@ -31,6 +31,7 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         composite: args.composite,
         overlays: Overlays {
             platform_axes: args.platform_axes,
+            coloured_legs: !args.single_colour,
             ..Overlays::default()
         },
     };

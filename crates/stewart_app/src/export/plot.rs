@@ -6,10 +6,12 @@ use std::fmt::Write as _;
 
 use stewart_kinematics::actuation::Quantity;
 
-/// Okabe–Ito colours: distinguishable with colour-blindness and in grey print.
-pub const LEG_COLOURS: [&str; 6] = [
-    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9",
-];
+/// Actuator `k`'s colour as `#RRGGBB`: the renderer's series colours (Okabe–Ito), so a
+/// curve has the colour of its leg in the 3D view.
+pub fn leg_colour_hex(k: usize) -> String {
+    let [r, g, b] = stewart_render::theme::SERIES_RGB[k % 6];
+    format!("#{r:02X}{g:02X}{b:02X}")
+}
 
 /// What to plot.
 pub struct PlotData<'a> {
@@ -231,7 +233,7 @@ pub fn svg(data: &PlotData) -> String {
                     r#"<polyline class="leg {}{}" fill="none" stroke="{}" stroke-width="1.4" stroke-linejoin="round" points="{}"/>"#,
                     q.letter,
                     leg + 1,
-                    LEG_COLOURS[leg],
+                    leg_colour_hex(leg),
                     points.trim_end()
                 );
                 points.clear();
@@ -255,7 +257,7 @@ pub fn svg(data: &PlotData) -> String {
     }
     // Legend, right of the axes.
     let _ = writeln!(s, r#"<g class="legend">"#);
-    for (leg, colour) in LEG_COLOURS.iter().enumerate() {
+    for (leg, colour) in (0..6).map(|k| (k, leg_colour_hex(k))) {
         let y = y1 + 14.0 + 16.0 * leg as f64;
         let _ = writeln!(
             s,

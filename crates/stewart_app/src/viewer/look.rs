@@ -18,6 +18,8 @@ pub struct Look {
     pub show_path: bool,
     /// Draw the platform's own axes.
     pub platform_axes: bool,
+    /// Each leg in its plot colour (off: the single-colour look).
+    pub coloured_legs: bool,
     /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
     pub renderer_missing: Option<String>,
 }
@@ -32,6 +34,7 @@ impl Look {
             expand_panels: false,
             show_path: true,
             platform_axes: false,
+            coloured_legs: true,
             renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
         }
     }

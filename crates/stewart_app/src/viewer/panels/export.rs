@@ -115,6 +115,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
         overlays: Overlays {
             platform_axes: state.look.platform_axes,
             path: state.look.show_path,
+            coloured_legs: state.look.coloured_legs,
             ..Overlays::default()
         },
     }

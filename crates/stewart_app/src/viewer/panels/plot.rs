@@ -4,14 +4,14 @@
 use egui::Color32;
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
 
-use crate::export::plot::LEG_COLOURS;
 use crate::viewer::history::History;
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
 
 /// Leg `i`'s colour, as in exported plots.
 pub fn leg_colour(i: usize) -> Color32 {
-    Color32::from_hex(LEG_COLOURS[i]).unwrap_or(Color32::GRAY)
+    let [r, g, b] = stewart_render::theme::SERIES_RGB[i % 6];
+    Color32::from_rgb(r, g, b)
 }
 
 /// The panel. In trajectory mode, clicking or dragging on the plot scrubs the time (the

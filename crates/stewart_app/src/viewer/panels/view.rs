@@ -36,6 +36,10 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
             ui.checkbox(&mut state.look.show_path, "Path");
             ui.checkbox(&mut state.look.platform_axes, "Platform axes");
+            ui.checkbox(&mut state.look.coloured_legs, "Leg colours")
+                .on_hover_text(
+                    "Each leg in the colour of its curve in the plot; off: one colour for all",
+                );
         });
     }
     let rect = ui.available_rect_before_wrap();
@@ -65,6 +69,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let overlays = Overlays {
         platform_axes: state.look.platform_axes,
         path: state.look.show_path,
+        coloured_legs: state.look.coloured_legs,
         ..Overlays::default()
     };
     let list = DrawList::build(&frame, &theme, &overlays);
