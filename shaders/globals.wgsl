@@ -1,4 +1,4 @@
-// The uniforms every pipeline shares: camera, lights, shading. Prepended to each shader
+// The uniforms every pipeline shares (camera, lights, shading) and the sRGB encoding. Prepended to each shader
 // module by `stewart_render::shaders`; the renderer's `gpu_types::Globals` mirrors it
 // (a test compares their sizes through naga's layout).
 
@@ -16,3 +16,14 @@ struct Globals {
 };
 
 @group(0) @binding(0) var<uniform> globals: Globals;
+
+// Linear to sRGB when the target does not do it (see `Globals::shading.w`).
+fn encode(linear: vec3<f32>) -> vec3<f32> {
+    if globals.shading.w < 0.5 {
+        return linear;
+    }
+    let c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
+    let low = c * 12.92;
+    let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
+    return select(high, low, c <= vec3<f32>(0.0031308));
+}

@@ -24,14 +24,3 @@ fn vs_main(v: VertexIn) -> VertexOut {
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     return vec4<f32>(encode(in.color.rgb), in.color.a);
 }
-
-// Linear to sRGB when the target does not do it (`shading.w` = 1, as in mesh.wgsl).
-fn encode(linear: vec3<f32>) -> vec3<f32> {
-    if globals.shading.w < 0.5 {
-        return linear;
-    }
-    let c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
-    let low = c * 12.92;
-    let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
-    return select(high, low, c <= vec3<f32>(0.0031308));
-}

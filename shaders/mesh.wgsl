@@ -58,14 +58,3 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     let lit = in.color.rgb * (globals.shading.x + diffuse) + vec3<f32>(specular);
     return vec4<f32>(encode(lit), in.color.a);
 }
-
-// Linear to sRGB when the target does not do it (see `Globals::shading.w`).
-fn encode(linear: vec3<f32>) -> vec3<f32> {
-    if globals.shading.w < 0.5 {
-        return linear;
-    }
-    let c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
-    let low = c * 12.92;
-    let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
-    return select(high, low, c <= vec3<f32>(0.0031308));
-}

@@ -351,6 +351,64 @@ fn leg_k_shows_the_plots_colour_k_in_both_themes_and_one_colour_when_asked() {
 }
 
 #[test]
+fn each_leg_carries_its_numbered_label_in_its_colour_and_labels_can_be_switched_off() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let pose = g.home_pose();
+    let (w, h) = (1280, 720);
+    let camera = seed_camera(&g);
+    let (with, _) = render_with(
+        &mut off,
+        &g,
+        &pose,
+        &Theme::DARK,
+        (w, h),
+        &Overlays::default(),
+        camera,
+    );
+    let bare = Overlays {
+        labels: false,
+        ..Overlays::default()
+    };
+    let (without, _) = render_with(&mut off, &g, &pose, &Theme::DARK, (w, h), &bare, camera);
+    let sol = g.inverse(&pose);
+    let em = 0.034 * h as f32;
+    for k in 0..6 {
+        // The label's box starts 0.6 em right of the point 45 % up the leg.
+        let p = sol.platform_joints[k] - sol.legs[k] * 0.55;
+        let (x, y) = project(&camera, Vec3::new(p.x as f32, p.y as f32, p.z as f32), w, h);
+        let target = series(k).map(|c| (c * 255.0) as i32);
+        let mut best = 255;
+        let mut changed = 0;
+        for dy in -(em as i32)..=(em as i32) {
+            for dx in 0..(3.0 * em) as i32 {
+                let (px, py) = (x as i32 + dx, y as i32 + dy);
+                if px < 0 || py < 0 || px >= w as i32 || py >= h as i32 {
+                    continue;
+                }
+                let q = with.pixel(px as u32, py as u32);
+                changed += usize::from(q != without.pixel(px as u32, py as u32));
+                let d = (0..3)
+                    .map(|c| (q[c] as i32 - target[c]).abs())
+                    .max()
+                    .unwrap_or(255);
+                best = best.min(d);
+            }
+        }
+        assert!(
+            changed > 50,
+            "no label beside leg {} ({changed} pixels changed)",
+            k + 1
+        );
+        assert!(
+            best < 40,
+            "label {} is not in its leg's colour (closest {best})",
+            k + 1
+        );
+    }
+}
+
+#[test]
 fn a_bad_size_is_an_error_not_a_panic() {
     let mut off = offscreen();
     let g = Geometry::seed();

@@ -1,4 +1,4 @@
-//! Presentation mode and the manual-mode history.
+//! Presentation mode, the manual-mode history and the view toolbar switches.
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
@@ -50,4 +50,14 @@ fn manual_mode_keeps_a_rolling_history_of_the_legs() {
     assert!(h.state().animating());
     h.state_mut().playback.clock += 20.0;
     assert!(!h.state().animating());
+}
+
+#[test]
+fn the_view_toolbar_switches_leg_colours_and_labels() {
+    let mut h = harness("seed");
+    assert!(h.state().look.coloured_legs && h.state().look.labels);
+    h.get_by_label("Leg colours").click();
+    h.get_by_label("Labels").click();
+    h.run();
+    assert!(!h.state().look.coloured_legs && !h.state().look.labels);
 }

@@ -493,6 +493,9 @@ pub struct RenderArgs {
     /// in the plot).
     #[arg(long)]
     pub single_colour: bool,
+    /// Leave out the numbered labels (L1…L6, S1…S6) beside the legs.
+    #[arg(long)]
+    pub no_labels: bool,
 }
 
 /// The colour themes.

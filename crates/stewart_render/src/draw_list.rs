@@ -21,6 +21,8 @@ pub struct Overlays {
     pub path: bool,
     /// Each actuator in its own colour (the plot's); off: all in the theme's leg colour.
     pub coloured_legs: bool,
+    /// Numbered labels (L1…L6 for legs, S1…S6 for servos) beside the actuators.
+    pub labels: bool,
 }
 
 impl Default for Overlays {
@@ -31,6 +33,7 @@ impl Default for Overlays {
             platform_axes: false,
             path: true,
             coloured_legs: true,
+            labels: true,
         }
     }
 }
@@ -50,6 +53,8 @@ pub struct DrawList {
     pub plates: Vec<(Mesh, [f32; 4], Vec3)>,
     /// Line segments (pairs of vertices).
     pub lines: Vec<LineVertex>,
+    /// Text drawn over the scene (leg labels, readouts), in screen space.
+    pub texts: Vec<crate::text::TextItem>,
 }
 
 /// Radii, as fractions of the larger plate's radius.
@@ -121,6 +126,9 @@ impl DrawList {
         match &frame.servos {
             None => list.linear_legs(frame, &colours, s),
             Some(servos) => list.servos(frame, servos, &colours, s),
+        }
+        if overlays.labels {
+            list.labels(frame, &colours);
         }
         for p in &frame.platform_joints {
             list.spheres
@@ -262,6 +270,30 @@ impl DrawList {
         }
     }
 
+    /// "L1"…"L6" (or "S1"…"S6") beside each actuator's middle, in its colour (or the
+    /// theme's joint colour when legs are single-coloured), on a box of the background
+    /// colour so that it reads over anything.
+    fn labels(&mut self, frame: &SceneFrame, colours: &LegColours) {
+        let letter = if frame.servos.is_some() { 'S' } else { 'L' };
+        for (k, leg) in frame.legs.iter().enumerate() {
+            let middle = v3(&(leg.base + (leg.top - leg.base) * 0.45));
+            let [r, g, b, _] = colours.theme.background;
+            let colour = if colours.coloured {
+                crate::theme::series(k)
+            } else {
+                colours.theme.joint
+            };
+            self.texts.push(crate::text::TextItem {
+                text: format!("{letter}{}", k + 1),
+                anchor: crate::text::Anchor::World(middle, [0.6, 0.0]),
+                align: [0.0, 0.5],
+                size: crate::text::TextSize::OfHeight(0.034),
+                colour,
+                background: Some([r, g, b, 0.75]),
+            });
+        }
+    }
+
     /// Three arrows (shaft and cone) along the columns of `axes`.
     fn axes(&mut self, origin: Vec3, axes: Mat3, length: f32, radius: f32, theme: &Theme) {
         for k in 0..3 {
@@ -363,9 +395,14 @@ mod tests {
                 platform_axes: false,
                 path: false,
                 coloured_legs: true,
+                labels: true,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
+        // One label per leg, in its colour.
+        let labels: Vec<&str> = list.texts.iter().map(|t| t.text.as_str()).collect();
+        assert_eq!(labels, ["L1", "L2", "L3", "L4", "L5", "L6"]);
+        assert_eq!(list.texts[2].colour, crate::theme::series(2));
         // Coloured legs: body k in series colour k, rods neutral.
         for k in 0..6 {
             assert_eq!(list.cylinders[2 * k].color, linear(crate::theme::series(k)));
@@ -396,6 +433,7 @@ mod tests {
             platform_axes: false,
             path: false,
             coloured_legs: false,
+            labels: false,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

@@ -58,6 +58,18 @@ pub struct LineVertex {
     pub color: [f32; 4],
 }
 
+/// `VertexIn` in `text.wgsl`: a corner of a glyph or box quad.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct TextVertex {
+    /// Normalised device coordinates.
+    pub position: [f32; 2],
+    /// Atlas coordinates, 0..1.
+    pub uv: [f32; 2],
+    /// Linear RGB and alpha.
+    pub color: [f32; 4],
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

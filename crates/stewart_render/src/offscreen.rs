@@ -228,7 +228,7 @@ impl Offscreen {
             list,
             camera,
             theme,
-            width as f32 / height.max(1) as f32,
+            [width as f32, height as f32],
         );
     }
 

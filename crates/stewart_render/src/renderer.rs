@@ -5,9 +5,10 @@ use wgpu::util::DeviceExt;
 
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
-use crate::gpu_types::{Globals, LineVertex, MeshInstance, MeshVertex};
+use crate::gpu_types::{Globals, LineVertex, MeshInstance, MeshVertex, TextVertex};
 use crate::mesh::Mesh;
 use crate::shaders;
+use crate::text::{ATLAS_SIZE, Fonts, GlyphAtlas};
 use crate::theme::{Theme, linear};
 use crate::view::{Batches, PreparedView};
 
@@ -52,6 +53,11 @@ pub struct Renderer {
     sphere: GpuMesh,
     cone: GpuMesh,
     cuboid: GpuMesh,
+    text: wgpu::RenderPipeline,
+    atlas_texture: wgpu::Texture,
+    atlas_bind_group: wgpu::BindGroup,
+    atlas: std::sync::Mutex<GlyphAtlas>,
+    fonts: &'static Fonts,
     /// MSAA sample count the pipelines were built for.
     pub samples: u32,
     /// Colour format the pipelines were built for.
@@ -180,10 +186,17 @@ impl Renderer {
             multiview_mask: None,
             cache: None,
         });
+        let (text, atlas_texture, atlas_bind_group) =
+            text_pipeline(device, &layout, multisample, format);
         Self {
             opaque,
             translucent,
             lines,
+            text,
+            atlas_texture,
+            atlas_bind_group,
+            atlas: std::sync::Mutex::new(GlyphAtlas::new()),
+            fonts: Fonts::system(),
             globals_layout: layout,
             cylinder: GpuMesh::new(device, &Mesh::cylinder(), "cylinder"),
             sphere: GpuMesh::new(device, &Mesh::sphere(), "sphere"),
@@ -199,8 +212,13 @@ impl Renderer {
         PreparedView::new(device, &self.globals_layout)
     }
 
-    /// Upload one frame of `view`: the camera for `aspect` (width / height), the theme and
-    /// the draw list.
+    /// The fonts text is drawn with (found on the system once).
+    pub fn fonts(&self) -> &'static Fonts {
+        self.fonts
+    }
+
+    /// Upload one frame of `view`: the camera for a `viewport` of width × height pixels,
+    /// the theme and the draw list (text laid out in those pixels).
     #[allow(clippy::too_many_arguments)]
     pub fn prepare(
         &self,
@@ -210,8 +228,10 @@ impl Renderer {
         list: &DrawList,
         camera: &OrbitCamera,
         theme: &Theme,
-        aspect: f32,
+        viewport: [f32; 2],
     ) {
+        let viewport = [viewport[0].max(1.0), viewport[1].max(1.0)];
+        let aspect = viewport[0] / viewport[1];
         let eye = camera.eye();
         // Key light over the viewer's right shoulder and above; fill from the other side.
         let forward = -camera.direction();
@@ -287,6 +307,9 @@ impl Renderer {
             .write(device, queue, bytemuck::cast_slice(&plate_indices));
         view.line_vertices
             .write(device, queue, bytemuck::cast_slice(&list.lines));
+        let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport);
+        view.text_vertices
+            .write(device, queue, bytemuck::cast_slice(&text));
         view.batches = Batches {
             cylinders,
             spheres,
@@ -294,7 +317,49 @@ impl Renderer {
             boxes,
             plates,
             lines: list.lines.len() as u32,
+            text: text.len() as u32,
         };
+    }
+
+    /// Lay out the draw list's text and upload the glyphs it added to the atlas.
+    fn prepare_text(
+        &self,
+        queue: &wgpu::Queue,
+        list: &DrawList,
+        view_proj: glam::Mat4,
+        viewport: [f32; 2],
+    ) -> Vec<TextVertex> {
+        if list.texts.is_empty() {
+            return Vec::new();
+        }
+        let mut atlas = self
+            .atlas
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let vertices = atlas.layout(self.fonts, &list.texts, view_proj, viewport);
+        if atlas.dirty {
+            queue.write_texture(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &self.atlas_texture,
+                    mip_level: 0,
+                    origin: wgpu::Origin3d::ZERO,
+                    aspect: wgpu::TextureAspect::All,
+                },
+                &atlas.pixels,
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(ATLAS_SIZE),
+                    rows_per_image: Some(ATLAS_SIZE),
+                },
+                wgpu::Extent3d {
+                    width: ATLAS_SIZE,
+                    height: ATLAS_SIZE,
+                    depth_or_array_layers: 1,
+                },
+            );
+            atlas.dirty = false;
+        }
+        vertices
     }
 
     /// Draw `view`'s prepared frame into an open render pass.
@@ -330,6 +395,12 @@ impl Renderer {
             for &(first, count, instance) in &view.batches.plates {
                 pass.draw_indexed(first..first + count, 0, instance..instance + 1);
             }
+        }
+        if view.batches.text > 0 {
+            pass.set_pipeline(&self.text);
+            pass.set_bind_group(1, &self.atlas_bind_group, &[]);
+            pass.set_vertex_buffer(0, view.text_vertices.buffer.slice(..));
+            pass.draw(0..view.batches.text, 0..1);
         }
     }
 
@@ -367,4 +438,115 @@ impl Renderer {
         });
         self.paint(view, &mut pass);
     }
+}
+
+/// The text pipeline (screen-space quads over everything, alpha-blended), the glyph atlas
+/// texture and its bind group.
+fn text_pipeline(
+    device: &wgpu::Device,
+    globals: &wgpu::BindGroupLayout,
+    multisample: wgpu::MultisampleState,
+    format: wgpu::TextureFormat,
+) -> (wgpu::RenderPipeline, wgpu::Texture, wgpu::BindGroup) {
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("glyph atlas"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            },
+            wgpu::BindGroupLayoutEntry {
+                binding: 1,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                count: None,
+            },
+        ],
+    });
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("glyph atlas"),
+        size: wgpu::Extent3d {
+            width: ATLAS_SIZE,
+            height: ATLAS_SIZE,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::R8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    // Glyphs are placed on whole pixels at their own size: nearest sampling keeps them crisp.
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some("glyph atlas"),
+        ..wgpu::SamplerDescriptor::default()
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("glyph atlas"),
+        layout: &layout,
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(
+                    &texture.create_view(&wgpu::TextureViewDescriptor::default()),
+                ),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: wgpu::BindingResource::Sampler(&sampler),
+            },
+        ],
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("text"),
+        bind_group_layouts: &[Some(globals), Some(&layout)],
+        immediate_size: 0,
+    });
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("text.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shaders::TEXT.into()),
+    });
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("text"),
+        layout: Some(&pipeline_layout),
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs_main"),
+            compilation_options: Default::default(),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<TextVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x2, 1 => Float32x2, 2 => Float32x4],
+            })],
+        },
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(false),
+            depth_compare: Some(wgpu::CompareFunction::Always),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample,
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs_main"),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format,
+                blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    (pipeline, texture, bind_group)
 }

@@ -12,8 +12,15 @@ pub const LINES: &str = concat!(
     include_str!("../../../shaders/lines.wgsl")
 );
 
+/// Screen-space text and boxes from the glyph atlas, globals included.
+pub const TEXT: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/text.wgsl")
+);
+
 /// Every pipeline's module with the shader files it is made of, for validation.
-pub const MODULES: [(&str, &[&str], &str); 2] = [
+pub const MODULES: [(&str, &[&str], &str); 3] = [
     ("mesh", &["globals.wgsl", "mesh.wgsl"], MESH),
     ("lines", &["globals.wgsl", "lines.wgsl"], LINES),
+    ("text", &["globals.wgsl", "text.wgsl"], TEXT),
 ];

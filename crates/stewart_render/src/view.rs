@@ -56,6 +56,8 @@ pub(crate) struct Batches {
     /// (first index, index count) of each plate in the plate buffer, back to front, and its instance.
     pub(crate) plates: Vec<(u32, u32, u32)>,
     pub(crate) lines: u32,
+    /// Vertices of text quads.
+    pub(crate) text: u32,
 }
 
 /// The GPU side of one view: made by [`crate::Renderer::new_view`], filled by
@@ -67,6 +69,7 @@ pub struct PreparedView {
     pub(crate) plate_vertices: DynamicBuffer,
     pub(crate) plate_indices: DynamicBuffer,
     pub(crate) line_vertices: DynamicBuffer,
+    pub(crate) text_vertices: DynamicBuffer,
     pub(crate) batches: Batches,
     pub(crate) clear: wgpu::Color,
 }
@@ -98,6 +101,7 @@ impl PreparedView {
             ),
             plate_indices: DynamicBuffer::new(device, "plate indices", wgpu::BufferUsages::INDEX),
             line_vertices: DynamicBuffer::new(device, "lines", wgpu::BufferUsages::VERTEX),
+            text_vertices: DynamicBuffer::new(device, "text", wgpu::BufferUsages::VERTEX),
             batches: Batches::default(),
             clear: wgpu::Color::BLACK,
         }

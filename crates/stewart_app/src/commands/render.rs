@@ -32,6 +32,7 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         overlays: Overlays {
             platform_axes: args.platform_axes,
             coloured_legs: !args.single_colour,
+            labels: !args.no_labels,
             ..Overlays::default()
         },
     };

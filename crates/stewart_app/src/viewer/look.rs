@@ -20,6 +20,8 @@ pub struct Look {
     pub platform_axes: bool,
     /// Each leg in its plot colour (off: the single-colour look).
     pub coloured_legs: bool,
+    /// Numbered labels beside the legs.
+    pub labels: bool,
     /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
     pub renderer_missing: Option<String>,
 }
@@ -35,6 +37,7 @@ impl Look {
             show_path: true,
             platform_axes: false,
             coloured_legs: true,
+            labels: true,
             renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
         }
     }

@@ -33,8 +33,8 @@ pub struct SceneCallback {
     pub camera: OrbitCamera,
     /// In these colours.
     pub theme: Theme,
-    /// Width / height of the view.
-    pub aspect: f32,
+    /// Size of the view, physical pixels (text is laid out in them).
+    pub viewport: [f32; 2],
 }
 
 impl egui_wgpu::CallbackTrait for SceneCallback {
@@ -57,7 +57,7 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
                 &self.list,
                 &self.camera,
                 &self.theme,
-                self.aspect,
+                self.viewport,
             );
         }
         Vec::new()

@@ -116,6 +116,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             platform_axes: state.look.platform_axes,
             path: state.look.show_path,
             coloured_legs: state.look.coloured_legs,
+            labels: state.look.labels,
             ..Overlays::default()
         },
     }

@@ -40,6 +40,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 .on_hover_text(
                     "Each leg in the colour of its curve in the plot; off: one colour for all",
                 );
+            ui.checkbox(&mut state.look.labels, "Labels")
+                .on_hover_text("L1…L6 (S1…S6 for servos) beside the legs");
         });
     }
     let rect = ui.available_rect_before_wrap();
@@ -70,6 +72,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         platform_axes: state.look.platform_axes,
         path: state.look.show_path,
         coloured_legs: state.look.coloured_legs,
+        labels: state.look.labels,
         ..Overlays::default()
     };
     let list = DrawList::build(&frame, &theme, &overlays);
@@ -81,7 +84,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             list,
             camera: state.look.camera.fitted_to(aspect),
             theme,
-            aspect,
+            viewport: (rect.size() * ui.ctx().pixels_per_point()).into(),
         },
     ));
 }
