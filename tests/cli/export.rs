@@ -410,3 +410,58 @@ fn no_adapter_is_one_clear_error() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("WGPU_ADAPTER_NAME is `no-such-gpu`"));
 }
+
+#[test]
+fn the_overlay_burns_the_readout_into_the_top_left_corner_at_any_size() {
+    let dir = tempdir();
+    for size in ["1280x720", "3840x2160"] {
+        let frame = |name: &str, extra: &[&str]| {
+            let out = dir.path().join(format!("{name}-{size}"));
+            let o = stewart(
+                &[
+                    &[
+                        "render",
+                        "--preset",
+                        "servo-desk",
+                        "--out",
+                        &out.display().to_string(),
+                        "--frames",
+                        "40..41",
+                        "--size",
+                        size,
+                    ][..],
+                    extra,
+                ]
+                .concat(),
+            );
+            assert!(o.status.success(), "{}", stderr(&o));
+            image::open(out.join("frame_00040.png"))
+                .unwrap_or_else(|e| panic!("{e}"))
+                .to_rgba8()
+        };
+        let plain = frame("plain", &[]);
+        let with = frame("overlay", &["--title", "Defense demo"]);
+        let (w, h) = plain.dimensions();
+        // Changed pixels, as fractions of the corner (a third wide, a quarter high) and of
+        // the rest: the readout is there, and only there.
+        let (mut corner, mut rest) = (0usize, 0usize);
+        for (x, y, p) in plain.enumerate_pixels() {
+            if p != with.get_pixel(x, y) {
+                if x < w / 3 && y < h / 4 {
+                    corner += 1;
+                } else {
+                    rest += 1;
+                }
+            }
+        }
+        let corner_share = corner as f64 / f64::from(w / 3 * (h / 4));
+        assert!(
+            corner_share > 0.04,
+            "{size}: only {corner_share:.3} of the corner changed"
+        );
+        assert!(
+            rest == 0,
+            "{size}: {rest} pixels changed outside the corner"
+        );
+    }
+}

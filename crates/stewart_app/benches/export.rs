@@ -25,6 +25,7 @@ fn bench(c: &mut Criterion) {
         camera: default_camera(&scenario),
         composite: false,
         overlays: Overlays::default(),
+        readout: None,
     };
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut group = c.benchmark_group("export_1280x720");

@@ -496,6 +496,13 @@ pub struct RenderArgs {
     /// Leave out the numbered labels (L1…L6, S1…S6) beside the legs.
     #[arg(long)]
     pub no_labels: bool,
+    /// Burn a readout into the frames: a title, the time, the pose and the six leg
+    /// lengths or servo angles, top left.
+    #[arg(long)]
+    pub overlay: bool,
+    /// The readout's title line (default: the scenario's name); implies --overlay.
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
 }
 
 /// The colour themes.

@@ -8,5 +8,6 @@ pub mod export;
 pub mod hardware;
 pub mod interrupt;
 pub mod output;
+pub mod readout;
 pub mod source;
 pub mod viewer;

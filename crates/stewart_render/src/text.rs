@@ -21,6 +21,8 @@ pub const ATLAS_SIZE: u32 = 1024;
 pub enum Anchor {
     /// Pixels from the view's top-left corner.
     Screen([f32; 2]),
+    /// Fractions of the view's width and height from its top-left corner.
+    Fraction([f32; 2]),
     /// A world point (projected), moved by an offset in units of the text size (x right,
     /// y down).
     World(Vec3, [f32; 2]),
@@ -355,6 +357,7 @@ fn line_width(fonts: &Fonts, line: &str, px: f32) -> f32 {
 fn anchor_px(anchor: Anchor, view_proj: Mat4, viewport: [f32; 2], px: f32) -> Option<[f32; 2]> {
     match anchor {
         Anchor::Screen(p) => Some(p),
+        Anchor::Fraction([fx, fy]) => Some([fx * viewport[0], fy * viewport[1]]),
         Anchor::World(p, offset) => {
             let clip = view_proj * p.extend(1.0);
             if clip.w <= 1e-6 {

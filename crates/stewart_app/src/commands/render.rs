@@ -35,6 +35,8 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
             labels: !args.no_labels,
             ..Overlays::default()
         },
+        readout: (args.overlay || args.title.is_some())
+            .then(|| args.title.clone().unwrap_or_else(|| scenario.name.clone())),
     };
     let progress = ProgressBar::new(0);
     progress.set_style(

@@ -26,6 +26,8 @@ pub struct FrameJob {
     pub composite: bool,
     /// Grid, axes, path.
     pub overlays: Overlays,
+    /// The readout's title, when the readout is burnt in.
+    pub readout: Option<String>,
 }
 
 /// The seed's view framing `scenario`'s platform.
@@ -138,8 +140,12 @@ impl<'a> FrameSource<'a> {
         self.path.push(g.platform_centre(&pose));
         // The path moves into the scene and back: no copy per frame.
         let scene = g.scene_frame(&pose, std::mem::take(&mut self.path));
-        let list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
+        let mut list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
         self.path = scene.path;
+        if let Some(title) = &self.job.readout {
+            let text = crate::readout::lines(title, g, Some(t), &pose);
+            list.texts.push(crate::readout::item(text, &self.job.theme));
+        }
         let aspect = self.view_width as f32 / self.job.height as f32;
         let camera = self.job.camera.fitted_to(aspect);
         let view = self.offscreen.render(

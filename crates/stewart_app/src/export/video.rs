@@ -33,6 +33,8 @@ pub struct VideoRequest {
     pub composite: bool,
     /// What to draw beyond the platform.
     pub overlays: Overlays,
+    /// Burn the readout (time, pose, the six values) into the frames under this title.
+    pub readout: Option<String>,
 }
 
 /// What an export did.
@@ -154,6 +156,7 @@ pub fn export_video(
         camera: request.camera.unwrap_or_else(|| default_camera(scenario)),
         composite: request.composite,
         overlays: request.overlays,
+        readout: request.readout.clone(),
     };
     let mut source = FrameSource::new(scenario, &job)?;
     progress.set_length(range.len() as u64);

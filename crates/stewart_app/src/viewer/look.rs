@@ -22,6 +22,8 @@ pub struct Look {
     pub coloured_legs: bool,
     /// Numbered labels beside the legs.
     pub labels: bool,
+    /// The head-up readout (time, pose, values) over the view and in exported frames.
+    pub readouts: bool,
     /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
     pub renderer_missing: Option<String>,
 }
@@ -38,6 +40,7 @@ impl Look {
             platform_axes: false,
             coloured_legs: true,
             labels: true,
+            readouts: false,
             renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
         }
     }

@@ -119,6 +119,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             labels: state.look.labels,
             ..Overlays::default()
         },
+        readout: state.look.readouts.then(|| state.scenario().name.clone()),
     }
 }
 

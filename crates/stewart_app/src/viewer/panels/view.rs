@@ -42,6 +42,10 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 );
             ui.checkbox(&mut state.look.labels, "Labels")
                 .on_hover_text("L1…L6 (S1…S6 for servos) beside the legs");
+            ui.checkbox(&mut state.look.readouts, "Readouts")
+                .on_hover_text(
+                    "Time, pose and the six values over the view (and in exported frames)",
+                );
         });
     }
     let rect = ui.available_rect_before_wrap();
@@ -75,7 +79,19 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         labels: state.look.labels,
         ..Overlays::default()
     };
-    let list = DrawList::build(&frame, &theme, &overlays);
+    let mut list = DrawList::build(&frame, &theme, &overlays);
+    if state.look.readouts {
+        let start = state.scenario().motion.sampling.start();
+        let time =
+            (state.playback.mode == MotionMode::Trajectory).then_some(start + state.playback.time);
+        let text = crate::readout::lines(
+            &state.scenario().name,
+            &state.scenario().geometry,
+            time,
+            &state.pose(),
+        );
+        list.texts.push(crate::readout::item(text, &theme));
+    }
     let aspect = rect.width() / rect.height().max(1.0);
     ui.painter().add(egui_wgpu::Callback::new_paint_callback(
         rect,

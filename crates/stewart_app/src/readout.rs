@@ -1,0 +1,94 @@
+//! The head-up readout drawn over the 3D view and burnt into exported frames: a title,
+//! the time, the pose and the six leg lengths or servo angles, in the top-left corner
+//! (the default framing keeps the platform in the middle), on a box of the background
+//! colour.
+
+use stewart_kinematics::{Geometry, Pose};
+use stewart_render::{Anchor, TextItem, TextSize, Theme};
+
+/// Line height as a fraction of the view's height (legible at 720p and 4K alike).
+const SIZE: f32 = 0.027;
+
+/// The readout's lines: `title`, the time (`None`: the manual pose), the pose, the six
+/// actuator values (or why the pose is out of reach).
+pub fn lines(title: &str, geometry: &Geometry, time: Option<f64>, pose: &Pose) -> String {
+    let [x, y, z, roll, pitch, yaw] = pose.to_coordinates();
+    let mut out = Vec::new();
+    if !title.trim().is_empty() {
+        out.push(title.trim().to_owned());
+    }
+    out.push(match time {
+        Some(t) => format!("t = {t:.3} s"),
+        None => "manual pose".to_owned(),
+    });
+    out.push(format!("x {x:+.4}  y {y:+.4}  z {z:+.4} m"));
+    out.push(format!(
+        "roll {:+.2}°  pitch {:+.2}°  yaw {:+.2}°",
+        roll.to_degrees(),
+        pitch.to_degrees(),
+        yaw.to_degrees()
+    ));
+    let values = match geometry.servo_angles(pose) {
+        None => Ok((geometry.leg_lengths(pose), 'L', " m", 4)),
+        Some(Ok(a)) => Ok((a.map(|a| a.degrees()), 'θ', "°", 2)),
+        Some(Err(e)) => Err(e.to_string()),
+    };
+    match values {
+        Ok((v, letter, unit, decimals)) => {
+            for half in [0..3, 3..6] {
+                let row: Vec<String> = half
+                    .map(|k| format!("{letter}{} {:.*}", k + 1, decimals, v[k]))
+                    .collect();
+                out.push(format!("{}{unit}", row.join("  ")));
+            }
+        }
+        Err(why) => out.push(why),
+    }
+    out.join("\n")
+}
+
+/// The readout as text for the renderer, in `theme`'s colours.
+pub fn item(text: String, theme: &Theme) -> TextItem {
+    let [r, g, b, _] = theme.background;
+    TextItem {
+        text,
+        anchor: Anchor::Fraction([0.015, 0.02]),
+        align: [0.0, 0.0],
+        size: TextSize::OfHeight(SIZE),
+        colour: theme.joint,
+        background: Some([r, g, b, 0.8]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_kinematics::Scenario;
+
+    #[test]
+    fn the_readout_says_time_pose_and_the_six_values() {
+        let s = Scenario::seed();
+        let pose = Pose::from_xyz_rpy_deg([0.01, -0.02, 0.85], [1.0, -2.0, 3.0]);
+        let text = lines("seed", &s.geometry, Some(1.5), &pose);
+        let rows: Vec<&str> = text.lines().collect();
+        assert_eq!(rows[0], "seed");
+        assert_eq!(rows[1], "t = 1.500 s");
+        assert_eq!(rows[2], "x +0.0100  y -0.0200  z +0.8500 m");
+        assert_eq!(rows[3], "roll +1.00°  pitch -2.00°  yaw +3.00°");
+        let l = s.geometry.leg_lengths(&pose);
+        assert_eq!(
+            rows[4],
+            format!("L1 {:.4}  L2 {:.4}  L3 {:.4} m", l[0], l[1], l[2])
+        );
+        assert!(rows[5].starts_with("L4 ") && rows[5].ends_with(" m"));
+        let servo = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let home = servo.geometry.home_pose();
+        let text = lines("", &servo.geometry, None, &home);
+        assert!(text.starts_with("manual pose\n"), "{text}");
+        assert!(text.contains("θ1 ") && text.ends_with('°'), "{text}");
+        // Out of reach: the reason instead of numbers.
+        let far = Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [0.0; 3]);
+        let text = lines("", &servo.geometry, Some(0.0), &far);
+        assert!(!text.contains("θ1"), "{text}");
+    }
+}
