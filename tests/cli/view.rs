@@ -101,3 +101,67 @@ fn presentation_mode_is_light_large_and_has_no_control_panel() {
         .count();
     assert!(red > 500, "platform pixels: {red}");
 }
+
+#[test]
+fn the_viewer_remembers_its_session_and_a_broken_one_is_no_crash() {
+    let dir = tempdir();
+    let config = dir.path().join("config");
+    // An interactive run, closed by SIGTERM as a window manager or Ctrl-C would.
+    let o = Command::new("xvfb-run")
+        .args(["-a", "-s", "-screen 0 1600x900x24", "sh", "-c"])
+        .arg(format!(
+            "{} view --preset servo-desk --light --size 1000x600 & pid=$!; sleep 6; kill -TERM $pid; wait $pid",
+            env!("CARGO_BIN_EXE_stewart")
+        ))
+        .env("STEWART_CONFIG_DIR", &config)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let saved: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(config.join("session.json")).unwrap_or_else(|e| panic!("{e}")),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(saved["origin"], "preset servo-desk");
+    assert_eq!(saved["light_theme"], true);
+    assert_eq!(saved["window"], serde_json::json!([1000, 600]));
+    assert!(
+        saved["scenario"]
+            .as_str()
+            .is_some_and(|t| t.contains("kind = \"rotary\""))
+    );
+    // The next run without a scenario starts there: the servo platform, light, 1000×600.
+    let shot = dir.path().join("again.png");
+    let again = |shot: &std::path::Path| {
+        Command::new("xvfb-run")
+            .args([
+                "-a",
+                "-s",
+                "-screen 0 1600x900x24",
+                env!("CARGO_BIN_EXE_stewart"),
+                "view",
+            ])
+            .args(["--screenshot", &shot.display().to_string(), "--frames", "6"])
+            .env("STEWART_CONFIG_DIR", &config)
+            .output()
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let o = again(&shot);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&shot)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    assert_eq!(img.dimensions(), (1000, 600));
+    let white = img
+        .pixels()
+        .filter(|p| p[0] > 245 && p[1] > 245 && p[2] > 245)
+        .count();
+    assert!(white > 100_000, "not the light theme: {white} white pixels");
+    // A damaged session: a fresh start at the default size, no crash.
+    std::fs::write(config.join("session.json"), "{ damaged").unwrap_or_else(|e| panic!("{e}"));
+    let o = again(&shot);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&shot)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    assert_eq!(img.dimensions(), (1280, 720));
+}

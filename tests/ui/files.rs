@@ -1,4 +1,4 @@
-//! The Scenario panel: presets, opening and saving files.
+//! The Scenario panel: presets, opening and saving files, forgetting the saved session.
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
@@ -100,4 +100,29 @@ fn a_saved_scenario_opens_as_it_was() {
     assert_eq!(h.state().scenario().geometry, saved.geometry);
     assert_eq!(h.state().scenario().geometry.home_height(), 0.9);
     assert_eq!(h.state().scenario().motion, saved.motion);
+}
+
+#[test]
+fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(stewart_app::viewer::session::file_in(dir.path()), "{}")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut state = stewart_app::viewer::ViewerState::new(
+        Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
+    );
+    state.session.folder = Some(dir.path().to_path_buf());
+    state.look.light_theme = true;
+    state.look.labels = false;
+    state.look.camera.azimuth_deg = 10.0;
+    let mut h = crate::harness_with(state, 800.0);
+    h.get_by_label("Reset to defaults").click();
+    h.run();
+    assert!(!stewart_app::viewer::session::file_in(dir.path()).exists());
+    let look = &h.state().look;
+    assert!(!look.light_theme && look.labels);
+    assert_eq!(look.camera.azimuth_deg, 135.0);
+    assert!(
+        h.state().session.forgotten,
+        "nothing is saved at exit after a reset"
+    );
 }

@@ -540,9 +540,13 @@ pub struct ViewArgs {
     /// Start with every collapsible section of the panels open.
     #[arg(long)]
     pub expand_panels: bool,
-    /// Window size WxH in logical pixels.
-    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
-    pub size: (u32, u32),
+    /// Window size WxH in logical pixels (default: the last session's, else 1280x720).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Start without the saved session (the last scenario, camera, panels, theme and
+    /// window size); it is still saved at exit.
+    #[arg(long)]
+    pub fresh: bool,
     /// Save the window's image here after `--frames` frames, then exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,

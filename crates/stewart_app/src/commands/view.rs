@@ -1,28 +1,109 @@
-//! `stewart view`: the interactive viewer.
+//! `stewart view`: the interactive viewer, started where the last session left off unless
+//! told otherwise.
 
 use std::process::ExitCode;
 
 use anyhow::Result;
+use stewart_kinematics::Scenario;
 
 use crate::cli::ViewArgs;
 use crate::source;
+use crate::viewer::session::{self, Session};
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
+
+/// The window size when neither the options nor a saved session say.
+const DEFAULT_SIZE: (u32, u32) = (1280, 720);
 
 /// Run the command.
 pub fn run(args: &ViewArgs) -> Result<ExitCode> {
-    let scenario = source::load(&args.scenario)?;
+    // Screenshot runs are reproducible: no session is read (unless a config folder is
+    // named explicitly, as tests do) and none is written.
+    let folder = match (
+        args.screenshot.is_some(),
+        std::env::var_os("STEWART_CONFIG_DIR"),
+    ) {
+        (true, None) => None,
+        _ => session::folder(),
+    };
+    let (saved, mut note) = match (&folder, args.fresh) {
+        (Some(f), false) => match session::load(f) {
+            Ok(s) => (s, None),
+            Err(n) => (None, Some(n)),
+        },
+        _ => (None, None),
+    };
+    let given = args.scenario.preset.is_some()
+        || args.scenario.scenario.is_some()
+        || !args.scenario.set.is_empty();
+    let from_session: Option<(Scenario, String)> = match (&saved, given) {
+        (Some(s), false) => match s.scenario() {
+            Ok(scenario) => Some((scenario, s.origin.clone())),
+            Err(e) => {
+                note = Some(format!(
+                    "the saved scenario no longer reads ({e}); starting from the seed"
+                ));
+                None
+            }
+        },
+        _ => None,
+    };
+    let restored = from_session.is_some();
+    let (scenario, origin) = match from_session {
+        Some(pair) => pair,
+        None => {
+            let scenario = source::load(&args.scenario)?;
+            let origin = origin_of(args, &scenario);
+            (scenario, origin)
+        }
+    };
     let mut state = ViewerState::new(scenario);
-    state.look.light_theme = args.light;
+    if let Some(s) = &saved {
+        restore(&mut state, s, restored);
+    }
+    if args.light {
+        state.look.light_theme = true;
+    }
     state.look.presentation = args.presentation;
     state.look.expand_panels = args.expand_panels;
+    state.session.folder = folder;
+    state.session.origin = origin;
+    state.session.note = note;
+    let size = args
+        .size
+        .or_else(|| {
+            saved
+                .as_ref()
+                .map(|s| (s.window[0].clamp(320, 8192), s.window[1].clamp(240, 8192)))
+        })
+        .unwrap_or(DEFAULT_SIZE);
     run_viewer(
         state,
         ViewOptions {
             screenshot: args.screenshot.clone(),
             frames: args.frames,
             stats: args.frame_stats,
-            size: args.size,
+            size,
         },
     )?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The saved look and panels; the camera too when the scenario is the saved one (another
+/// platform wants its own framing).
+fn restore(state: &mut ViewerState, saved: &Session, same_scenario: bool) {
+    let camera = state.look.camera;
+    saved.restore_look(&mut state.look);
+    if !same_scenario {
+        state.look.camera = camera;
+    }
+    state.session.panels = saved.panels.clone();
+}
+
+/// Where the scenario of `args` came from, in words.
+fn origin_of(args: &ViewArgs, scenario: &Scenario) -> String {
+    match (&args.scenario.scenario, &args.scenario.preset) {
+        (Some(path), _) => path.display().to_string(),
+        (None, Some(name)) => format!("preset {name}"),
+        (None, None) => format!("preset {}", scenario.name),
+    }
 }

@@ -9,6 +9,7 @@
 //! - [`live_link`]: the stream to hardware, following what the viewer shows;
 //! - [`teleop`], [`gamepad`]: keyboard and gamepad moves of the manual pose, stopped at
 //!   the edge of the reachable set;
+//! - [`session`]: what the viewer remembers between runs;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
 pub mod derived;
@@ -21,6 +22,7 @@ pub mod live_link;
 pub mod look;
 pub mod panels;
 pub mod playback;
+pub mod session;
 pub mod state;
 pub mod teleop;
 pub mod view3d;

@@ -45,6 +45,24 @@ pub struct ViewerState {
     pub link_error: Option<String>,
     /// Keyboard and gamepad moves of the manual pose.
     pub teleop: Teleop,
+    /// What is remembered between runs.
+    pub session: SessionState,
+}
+
+/// The saved session's state in this run.
+#[derive(Clone, Debug, Default)]
+pub struct SessionState {
+    /// Where sessions are kept; `None`: this run neither reads nor writes one (screenshots,
+    /// tests, `--fresh`).
+    pub folder: Option<std::path::PathBuf>,
+    /// Where the scenario came from, in words (a preset, a file).
+    pub origin: String,
+    /// What happened to the saved session at start (broken, too old), shown once.
+    pub note: Option<String>,
+    /// *Reset to defaults* was pressed: nothing is saved when the window closes.
+    pub forgotten: bool,
+    /// egui's memory from the saved session, applied at the first frame.
+    pub panels: Option<String>,
 }
 
 /// Teleoperation's state.
@@ -80,6 +98,10 @@ impl ViewerState {
                 moving: false,
                 pad: None,
                 pad_words: None,
+            },
+            session: SessionState {
+                origin: format!("preset {}", scenario.name),
+                ..SessionState::default()
             },
             scenario,
         }
@@ -216,12 +238,27 @@ impl ViewerState {
         self.rebuild();
     }
 
+    /// Forget the saved session and return the look, camera and panels to their defaults
+    /// (the scenario stays); nothing is saved at exit.
+    pub fn reset_to_defaults(&mut self) {
+        if let Some(folder) = &self.session.folder
+            && let Err(e) = super::session::forget(folder)
+        {
+            self.session.note = Some(e);
+        }
+        self.session.forgotten = true;
+        let missing = self.look.renderer_missing.take();
+        self.look = Look::new(default_camera(&self.scenario));
+        self.look.renderer_missing = missing;
+    }
+
     /// Open a scenario file. A file that cannot be read or is invalid leaves the current
     /// scenario untouched; either way the outcome is shown in the Scenario panel.
     pub fn open_file(&mut self, path: &Path) {
         self.files.status = Some(match Scenario::load(path) {
             Ok(s) => {
                 let name = s.name.clone();
+                self.session.origin = path.display().to_string();
                 self.load_scenario(s);
                 Ok(format!("Opened `{name}` from {}.", path.display()))
             }

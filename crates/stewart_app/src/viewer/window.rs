@@ -86,6 +86,9 @@ struct App {
     /// When egui asked to be drawn again (a tooltip delay, the text cursor's blink, an
     /// animation); `None`: only on input.
     repaint_at: Option<Instant>,
+    /// The window's size, logical pixels, as last reported (kept so that saving the
+    /// session at exit asks the window system nothing: it may be gone).
+    logical_size: [u32; 2],
     /// Gamepads for teleoperation.
     gamepads: super::gamepad::Gamepads,
 }
@@ -100,9 +103,24 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         ));
     }
     let event_loop = EventLoop::new().map_err(|e| anyhow!("cannot open the window system: {e}"))?;
+    let mut state = state;
+    // Signals are watched from the start (see `about_to_wait`).
+    let _ = crate::interrupt::flag();
+    let ctx = egui::Context::default();
+    // The panels' open states from the saved session (a memory that does not read is
+    // dropped: the panels start closed, as on a first run).
+    if let Some(memory) = state
+        .session
+        .panels
+        .take()
+        .and_then(|text| ron::from_str::<egui::Memory>(&text).ok())
+    {
+        ctx.memory_mut(|m| *m = memory);
+    }
+    let options_size = options.size;
     let mut app = App {
         state,
-        ctx: egui::Context::default(),
+        ctx,
         options,
         open: None,
         frames: 0,
@@ -112,6 +130,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         error: None,
         times: FrameTimes::default(),
         repaint_at: None,
+        logical_size: [options_size.0, options_size.1],
         gamepads: super::gamepad::Gamepads::new(),
     };
     event_loop
@@ -321,6 +340,26 @@ impl App {
         }
     }
 
+    /// Remember the scenario, look, panels and window size for the next run (unless this
+    /// run keeps no session or *Reset to defaults* was pressed).
+    fn save_session(&self) {
+        let session = &self.state.session;
+        let (Some(folder), false) = (&session.folder, session.forgotten) else {
+            return;
+        };
+        let panels = self.ctx.memory(|m| ron::to_string(m).ok());
+        let saved = super::session::Session::capture(
+            self.state.scenario(),
+            &session.origin,
+            &self.state.look,
+            self.logical_size,
+            panels,
+        );
+        if let Err(e) = super::session::save(folder, &saved) {
+            let _ = writeln!(std::io::stderr(), "viewer: the session was not saved: {e}");
+        }
+    }
+
     fn busy(&self) -> bool {
         self.state.animating() || (self.options.screenshot.is_some() && self.error.is_none())
     }
@@ -360,9 +399,12 @@ impl ApplicationHandler for App {
             WindowEvent::CloseRequested => {
                 // The stream to hardware stops first: e-stop, home or hold, disarmed.
                 self.state.link.disconnect_now();
+                self.save_session();
                 event_loop.exit();
             }
             WindowEvent::Resized(size) => {
+                let logical = size.to_logical::<f64>(open.window.scale_factor());
+                self.logical_size = [logical.width.round() as u32, logical.height.round() as u32];
                 // Minimised windows have a zero size: keep the old surface until they return.
                 if let (Some(w), Some(h)) =
                     (NonZeroU32::new(size.width), NonZeroU32::new(size.height))
@@ -382,21 +424,30 @@ impl ApplicationHandler for App {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        // Ctrl-C, SIGTERM or SIGHUP close the window as its close button does: the link
+        // stops first and the session is saved.
+        if crate::interrupt::requested() {
+            self.state.link.disconnect_now();
+            self.save_session();
+            event_loop.exit();
+            return;
+        }
         let Some(open) = &self.open else {
             event_loop.set_control_flow(ControlFlow::Wait);
             return;
         };
         let now = Instant::now();
+        // Idle, the loop still looks at the stop flag four times a second.
+        let watch = now + std::time::Duration::from_millis(250);
         let due = self.repaint_at.is_some_and(|at| at <= now);
         if self.busy() || due {
             self.repaint_at = None;
             open.window.request_redraw();
             event_loop.set_control_flow(ControlFlow::Wait);
         } else {
-            event_loop.set_control_flow(match self.repaint_at {
-                Some(at) => ControlFlow::WaitUntil(at),
-                None => ControlFlow::Wait,
-            });
+            event_loop.set_control_flow(ControlFlow::WaitUntil(
+                self.repaint_at.map_or(watch, |at| at.min(watch)),
+            ));
         }
     }
 }

@@ -20,6 +20,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                     match Scenario::preset(name) {
                         Ok(s) => {
                             state.load_scenario(s);
+                            state.session.origin = format!("preset {name}");
                             state.files.status = None;
                         }
                         Err(e) => state.files.status = Some(Err(e.to_string())),
@@ -75,4 +76,18 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.checkbox(&mut state.look.presentation, "Presentation (P)")
             .on_hover_text("Light colours, large text, control panels hidden; P or Esc leaves");
     });
+    if state.session.folder.is_some()
+        && ui
+            .button("Reset to defaults")
+            .on_hover_text(
+                "Forget the saved session (scenario, camera, panels, theme, window size) and return the look to its defaults",
+            )
+            .clicked()
+    {
+        state.reset_to_defaults();
+        ui.ctx().memory_mut(|m| *m = egui::Memory::default());
+    }
+    if let Some(note) = &state.session.note {
+        ui.label(egui::RichText::new(note).color(widgets::WARNING).small());
+    }
 }

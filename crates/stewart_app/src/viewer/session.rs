@@ -1,0 +1,243 @@
+//! The viewer's saved session: the last scenario (where it came from, and as shown, unsaved
+//! edits included), the camera, the look switches, the panels' open/closed states and the
+//! window size, kept in the platform's config folder (`~/.config/stewart/session.json` on
+//! Linux, `%APPDATA%\stewart` on Windows, `~/Library/Application Support/stewart` on
+//! macOS; `STEWART_CONFIG_DIR` overrides it). A broken or older file is set aside with a
+//! note, never a crash; *Reset to defaults* forgets it.
+
+use std::path::PathBuf;
+
+use serde::{Deserialize, Serialize};
+use stewart_kinematics::Scenario;
+use stewart_render::OrbitCamera;
+
+use super::look::Look;
+
+/// The session file's format; a file of another version is ignored.
+pub const VERSION: u32 = 1;
+
+/// What the viewer remembers.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Session {
+    /// [`VERSION`] when written.
+    pub version: u32,
+    /// Where the scenario came from: a preset name or a file path, in words.
+    pub origin: String,
+    /// The scenario as shown (TOML, edits included).
+    pub scenario: String,
+    /// Camera azimuth, elevation (degrees), distance and target (metres).
+    pub camera: [f32; 6],
+    /// Light theme.
+    pub light_theme: bool,
+    /// The traced path.
+    pub show_path: bool,
+    /// The platform's axes.
+    pub platform_axes: bool,
+    /// Legs in their plot colours.
+    pub coloured_legs: bool,
+    /// Leg labels.
+    pub labels: bool,
+    /// The head-up readout.
+    pub readouts: bool,
+    /// Window size, logical pixels.
+    pub window: [u32; 2],
+    /// egui's memory (open panels, scroll positions), as egui writes it.
+    pub panels: Option<String>,
+}
+
+impl Session {
+    /// The session of what the viewer shows now.
+    pub fn capture(
+        scenario: &Scenario,
+        origin: &str,
+        look: &Look,
+        window: [u32; 2],
+        panels: Option<String>,
+    ) -> Self {
+        let c = &look.camera;
+        Self {
+            version: VERSION,
+            origin: origin.to_owned(),
+            scenario: scenario.to_toml(),
+            camera: [
+                c.azimuth_deg,
+                c.elevation_deg,
+                c.distance,
+                c.target.x,
+                c.target.y,
+                c.target.z,
+            ],
+            light_theme: look.light_theme,
+            show_path: look.show_path,
+            platform_axes: look.platform_axes,
+            coloured_legs: look.coloured_legs,
+            labels: look.labels,
+            readouts: look.readouts,
+            window,
+            panels,
+        }
+    }
+
+    /// The saved scenario, or why it no longer reads.
+    pub fn scenario(&self) -> Result<Scenario, String> {
+        Scenario::from_toml_str(&self.scenario, "the saved session", None)
+            .map_err(|e| e.to_string())
+    }
+
+    /// Put the saved look (and camera, when it is a usable one) on `look`.
+    pub fn restore_look(&self, look: &mut Look) {
+        let [azimuth_deg, elevation_deg, distance, x, y, z] = self.camera;
+        if self.camera.iter().all(|v| v.is_finite()) && distance > 0.0 {
+            look.camera = OrbitCamera {
+                azimuth_deg,
+                elevation_deg: elevation_deg.clamp(-89.5, 89.5),
+                distance,
+                target: glam::Vec3::new(x, y, z),
+            };
+        }
+        look.light_theme = self.light_theme;
+        look.show_path = self.show_path;
+        look.platform_axes = self.platform_axes;
+        look.coloured_legs = self.coloured_legs;
+        look.labels = self.labels;
+        look.readouts = self.readouts;
+    }
+}
+
+/// The folder the session lives in (`None`: the platform has none).
+pub fn folder() -> Option<PathBuf> {
+    match std::env::var_os("STEWART_CONFIG_DIR") {
+        Some(dir) if !dir.is_empty() => Some(PathBuf::from(dir)),
+        _ => dirs::config_dir().map(|d| d.join("stewart")),
+    }
+}
+
+/// The session file in `folder`.
+pub fn file_in(folder: &std::path::Path) -> PathBuf {
+    folder.join("session.json")
+}
+
+/// The saved session in `folder`: `Ok(None)` when there is none; `Err(note)` when the file
+/// is broken, of another version or unreadable (it is then left alone and the viewer
+/// starts fresh).
+pub fn load(folder: &std::path::Path) -> Result<Option<Session>, String> {
+    let path = file_in(folder);
+    let text = match std::fs::read_to_string(&path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => {
+            return Err(format!(
+                "the saved session {} cannot be read ({e}); starting fresh",
+                path.display()
+            ));
+        }
+    };
+    let session: Session = serde_json::from_str(&text).map_err(|e| {
+        format!(
+            "the saved session {} is damaged ({e}); starting fresh",
+            path.display()
+        )
+    })?;
+    if session.version != VERSION {
+        return Err(format!(
+            "the saved session {} is of another version ({}, this viewer writes {VERSION}); starting fresh",
+            path.display(),
+            session.version
+        ));
+    }
+    Ok(Some(session))
+}
+
+/// Write the session into `folder` (whole or not at all).
+pub fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
+    std::fs::create_dir_all(folder)
+        .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
+    let text = serde_json::to_string_pretty(session).map_err(|e| e.to_string())?;
+    // Staged beside the file, then renamed over it. Not through the output rules: a session
+    // is saved also when a signal asked the viewer to close.
+    let path = file_in(folder);
+    let fail = |e: std::io::Error| format!("cannot write {}: {e}", path.display());
+    let mut staged = tempfile::NamedTempFile::new_in(folder).map_err(fail)?;
+    std::io::Write::write_all(&mut staged, text.as_bytes()).map_err(fail)?;
+    staged.persist(&path).map_err(|e| fail(e.error))?;
+    Ok(())
+}
+
+/// Forget the session saved in `folder`.
+pub fn forget(folder: &std::path::Path) -> Result<(), String> {
+    let path = file_in(folder);
+    match std::fs::remove_file(&path) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
+        Err(e) => Err(format!("cannot remove {}: {e}", path.display())),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_session_round_trips_and_restores_the_look() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(load(dir.path()), Ok(None));
+        let mut scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        stewart_kinematics::settings::apply_all(&mut scenario, ["geometry.base_radius=1.1"])
+            .unwrap_or_else(|e| panic!("{e}"));
+        let mut look = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
+        look.camera.azimuth_deg = 40.0;
+        look.light_theme = true;
+        look.labels = false;
+        look.readouts = true;
+        let session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
+        save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
+        let back = load(dir.path())
+            .unwrap_or_else(|e| panic!("{e}"))
+            .unwrap_or_else(|| panic!("nothing saved"));
+        assert_eq!(back, session);
+        // The unsaved edit comes back with the scenario.
+        let restored = back.scenario().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(restored.geometry, scenario.geometry);
+        let mut fresh = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
+        back.restore_look(&mut fresh);
+        assert_eq!(fresh.camera.azimuth_deg, 40.0);
+        assert!(fresh.light_theme && !fresh.labels && fresh.readouts);
+        forget(dir.path()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(load(dir.path()), Ok(None));
+    }
+
+    #[test]
+    fn a_broken_or_older_session_is_a_note_not_a_crash() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let file = file_in(dir.path());
+        for (text, words) in [
+            ("{ not json", "is damaged"),
+            ("{\"version\": 1}", "is damaged"),
+            ("\u{0}\u{1}binary", "is damaged"),
+        ] {
+            std::fs::write(&file, text).unwrap_or_else(|e| panic!("{e}"));
+            let note = load(dir.path()).err().unwrap_or_default();
+            assert!(
+                note.contains(words) && note.ends_with("starting fresh"),
+                "{note}"
+            );
+        }
+        let scenario = Scenario::seed();
+        let look = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
+        let mut old = Session::capture(&scenario, "preset seed", &look, [800, 600], None);
+        old.version = 0;
+        std::fs::write(&file, serde_json::to_string(&old).unwrap_or_default())
+            .unwrap_or_else(|e| panic!("{e}"));
+        let note = load(dir.path()).err().unwrap_or_default();
+        assert!(note.contains("another version (0"), "{note}");
+        // A saved scenario that no longer reads, and a camera of NaNs, restore nothing.
+        let mut bad = Session::capture(&scenario, "preset seed", &look, [800, 600], None);
+        bad.scenario = "[geometry]\nbase_radius = -1".to_owned();
+        bad.camera = [f32::NAN; 6];
+        assert!(bad.scenario().is_err());
+        let mut kept = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
+        let camera = kept.camera;
+        bad.restore_look(&mut kept);
+        assert_eq!(kept.camera, camera);
+    }
+}
