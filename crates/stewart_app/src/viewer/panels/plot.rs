@@ -2,7 +2,7 @@
 //! time marker, or in manual mode the rolling history of the last seconds.
 
 use egui::Color32;
-use egui_plot::{HLine, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
+use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoints, VLine};
 
 use crate::viewer::history::History;
 use crate::viewer::playback::MotionMode;
@@ -14,9 +14,88 @@ pub fn leg_colour(i: usize) -> Color32 {
     Color32::from_rgb(r, g, b)
 }
 
-/// The panel. In trajectory mode, clicking or dragging on the plot scrubs the time (the
-/// wheel still zooms, double-click resets the view).
+/// Curve width in points (presentation mode: the projector's, twice as wide).
+fn line_width(state: &ViewerState) -> f32 {
+    if state.look.presentation { 3.5 } else { 1.5 }
+}
+
+/// The panel: the plot, and its legend beside it (outside the curves). In trajectory mode,
+/// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
+/// resets the view).
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let legend_width = if state.look.presentation { 110.0 } else { 76.0 };
+    let size = ui.available_size();
+    ui.horizontal(|ui| {
+        ui.allocate_ui(
+            egui::vec2((size.x - legend_width).max(100.0), size.y),
+            |ui| {
+                plot(ui, state);
+            },
+        );
+        ui.vertical(|ui| legend(ui, state));
+    });
+}
+
+/// The legend: a swatch and the name of each curve, the limits and the time marker.
+fn legend(ui: &mut egui::Ui, state: &ViewerState) {
+    let quantity = state.scenario().geometry.quantity();
+    let width = line_width(state);
+    let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
+        ui.horizontal(|ui| {
+            let (rect, _) = ui.allocate_exact_size(egui::vec2(22.0, 12.0), egui::Sense::hover());
+            let y = rect.center().y;
+            let stroke = egui::Stroke::new(width, colour);
+            if dashed {
+                for k in 0..3 {
+                    let x = rect.left() + 8.0 * k as f32;
+                    ui.painter()
+                        .line_segment([egui::pos2(x, y), egui::pos2(x + 4.0, y)], stroke);
+                }
+            } else {
+                ui.painter().line_segment(
+                    [egui::pos2(rect.left(), y), egui::pos2(rect.right(), y)],
+                    stroke,
+                );
+            }
+            ui.label(text);
+        });
+    };
+    for leg in 0..6 {
+        swatch(
+            ui,
+            leg_colour(leg),
+            format!("{}{}", quantity.symbol, leg + 1),
+            false,
+        );
+    }
+    let [min, max] = state.scenario().geometry.quantity_limits();
+    for (name, limit) in [("max", max), ("min", min)] {
+        if limit.is_some() {
+            swatch(
+                ui,
+                Color32::GRAY,
+                format!("{}{name}", quantity.symbol),
+                true,
+            );
+        }
+    }
+    if state.playback.mode == MotionMode::Trajectory {
+        swatch(ui, marker_colour(state), "now".to_owned(), false);
+    }
+}
+
+/// The time marker's colour: black on light, white on dark.
+fn marker_colour(state: &ViewerState) -> Color32 {
+    if state.look.is_light() {
+        Color32::BLACK
+    } else {
+        Color32::WHITE
+    }
+}
+
+/// The plot itself.
+fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let width = line_width(state);
     let geometry = &state.scenario().geometry;
     let quantity = geometry.quantity();
     let [min, max] = geometry.quantity_limits();
@@ -28,7 +107,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     };
     let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
         .allow_drag(manual)
-        .legend(Legend::default())
         .x_axis_label(x_label)
         .y_axis_label(format!("{} ({})", quantity.name, quantity.unit));
     if manual {
@@ -55,7 +133,11 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             let name = format!("{}{}", quantity.symbol, leg + 1);
             for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
                 let run: PlotPoints = run.iter().copied().collect();
-                plot.line(Line::new(name.clone(), run).color(leg_colour(leg)));
+                plot.line(
+                    Line::new(name.clone(), run)
+                        .color(leg_colour(leg))
+                        .width(width),
+                );
             }
         }
         for (name, limit) in [("min", min), ("max", max)] {
@@ -63,18 +145,18 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 plot.hline(
                     HLine::new(format!("{}{name}", quantity.symbol), v)
                         .style(LineStyle::dashed_loose())
-                        .color(Color32::GRAY),
+                        .color(Color32::GRAY)
+                        .width(width * 0.7),
                 );
             }
         }
         if !manual {
-            let marker = if state.look.is_light() {
-                Color32::BLACK
-            } else {
-                Color32::WHITE
-            };
             let now = state.scenario().motion.sampling.start() + state.playback.time;
-            plot.vline(VLine::new("now", now).color(marker));
+            plot.vline(
+                VLine::new("now", now)
+                    .color(marker_colour(state))
+                    .width(width),
+            );
         }
     });
     let response = &shown.response;
@@ -86,5 +168,18 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         let start = state.scenario().motion.sampling.start();
         state.playback.time = (t - start).clamp(0.0, state.duration());
         state.playback.playing = false;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presentation_mode_draws_wider_curves() {
+        let mut state = ViewerState::new(stewart_kinematics::Scenario::seed());
+        let screen = line_width(&state);
+        state.look.presentation = true;
+        assert!(line_width(&state) >= 2.0 * screen);
     }
 }

@@ -25,7 +25,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 .weak(),
         );
     } else {
-        ui.horizontal(|ui| {
+        // Wrapped: a narrow window keeps every switch reachable.
+        ui.horizontal_wrapped(|ui| {
             for (label, az, el) in VIEWS {
                 if ui.button(label).clicked() {
                     state.look_from(az, el);
