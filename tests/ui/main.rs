@@ -6,6 +6,7 @@ mod files;
 mod link;
 mod modes;
 mod rotary;
+mod shots;
 mod snapshots;
 mod teleop;
 mod trajectory;

@@ -256,7 +256,7 @@ impl Renderer {
             r: bg[0] as f64,
             g: bg[1] as f64,
             b: bg[2] as f64,
-            a: 1.0,
+            a: f64::from(theme.background[3]),
         };
 
         // Instances: cylinders, spheres, cones, boxes, then one identity instance per plate.

@@ -24,6 +24,8 @@ pub struct Look {
     pub labels: bool,
     /// The head-up readout (time, pose, values) over the view and in exported frames.
     pub readouts: bool,
+    /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
+    pub view_px: [u32; 2],
     /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
     pub renderer_missing: Option<String>,
 }
@@ -41,6 +43,7 @@ impl Look {
             coloured_legs: true,
             labels: true,
             readouts: false,
+            view_px: [1280, 720],
             renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
         }
     }

@@ -10,6 +10,7 @@
 //! - [`teleop`], [`gamepad`]: keyboard and gamepad moves of the manual pose, stopped at
 //!   the edge of the reachable set;
 //! - [`session`]: what the viewer remembers between runs;
+//! - [`shots`]: screenshots of the 3D view (any size, transparent) or the window;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
 pub mod derived;
@@ -23,6 +24,7 @@ pub mod look;
 pub mod panels;
 pub mod playback;
 pub mod session;
+pub mod shots;
 pub mod state;
 pub mod teleop;
 pub mod view3d;

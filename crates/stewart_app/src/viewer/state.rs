@@ -47,6 +47,8 @@ pub struct ViewerState {
     pub teleop: Teleop,
     /// What is remembered between runs.
     pub session: SessionState,
+    /// Screenshots.
+    pub shots: super::shots::Shots,
 }
 
 /// The saved session's state in this run.
@@ -103,6 +105,7 @@ impl ViewerState {
                 origin: format!("preset {}", scenario.name),
                 ..SessionState::default()
             },
+            shots: super::shots::Shots::default(),
             scenario,
         }
     }
@@ -137,6 +140,57 @@ impl ViewerState {
         );
         self.playback.manual = pose;
         self.teleop.blocked = blocked;
+    }
+
+    /// What the 3D view draws now in `theme`: the platform at the pose shown, the path so
+    /// far, the switches of the look and, when on, the readout. The view and its
+    /// screenshots draw the same list.
+    pub fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
+        let trajectory = self.playback.mode == MotionMode::Trajectory;
+        let path = if self.look.show_path && trajectory {
+            self.path_until_now()
+        } else {
+            Vec::new()
+        };
+        let frame = self.scenario.geometry.scene_frame(&self.pose(), path);
+        let overlays = stewart_render::Overlays {
+            platform_axes: self.look.platform_axes,
+            path: self.look.show_path,
+            coloured_legs: self.look.coloured_legs,
+            labels: self.look.labels,
+            ..stewart_render::Overlays::default()
+        };
+        let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
+        if self.look.readouts {
+            let start = self.scenario.motion.sampling.start();
+            let time = trajectory.then_some(start + self.playback.time);
+            let text = crate::readout::lines(
+                &self.scenario.name,
+                &self.scenario.geometry,
+                time,
+                &self.pose(),
+            );
+            list.texts.push(crate::readout::item(text, theme));
+        }
+        list
+    }
+
+    /// Take a screenshot as the Screenshot menu says (F12): the 3D view rendered again off
+    /// screen on a thread of its own, or the whole window at the next frame. Playback goes
+    /// on; the outcome shows in the menu.
+    pub fn take_screenshot(&mut self) {
+        use super::shots::{ShotKind, next_path};
+        let path = next_path(&self.shots.folder, &self.scenario.name);
+        match self.shots.kind {
+            ShotKind::Window => self.shots.window_request = Some(path),
+            ShotKind::View => {
+                let theme = self.theme();
+                let list = self.draw_list(&theme);
+                let size = self.shots.scale.size(self.look.view_px);
+                let camera = self.look.camera;
+                self.shots.start_view(list, camera, theme, size, path);
+            }
+        }
     }
 
     /// What drives the platform, for the link's sender.
@@ -314,6 +368,7 @@ impl ViewerState {
         self.exports.poll();
         self.link.poll();
         self.link.follow(self.drive(), self.playback.looping);
+        self.shots.poll();
     }
 
     /// Duration of the trajectory, seconds.
@@ -361,6 +416,7 @@ impl ViewerState {
             || self.exports.job.is_some()
             || self.report_pending()
             || self.link.connected()
+            || self.shots.busy()
     }
 
     /// Move on by `dt` seconds of wall time: playback, and in manual mode the history.

@@ -81,6 +81,8 @@ struct App {
     last: Instant,
     screenshot: Arc<Mutex<Option<Result<()>>>>,
     screenshot_asked: bool,
+    /// The outcome of a whole-window shot asked for from the Screenshot menu.
+    window_shot: Arc<Mutex<Option<Result<String, String>>>>,
     error: Option<anyhow::Error>,
     times: FrameTimes,
     /// When egui asked to be drawn again (a tooltip delay, the text cursor's blink, an
@@ -127,6 +129,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         last: Instant::now(),
         screenshot: Arc::new(Mutex::new(None)),
         screenshot_asked: false,
+        window_shot: Arc::new(Mutex::new(None)),
         error: None,
         times: FrameTimes::default(),
         repaint_at: None,
@@ -317,6 +320,18 @@ impl App {
                 }
             }));
         }
+        if let Some(path) = self.state.shots.window_request.take() {
+            let slot = Arc::clone(&self.window_shot);
+            capture.push(egui::ScreenshotCallback::new(move |image| {
+                let [w, h] = image.size;
+                let status = save_png(&path, &image)
+                    .map(|()| format!("Saved the window ({w}×{h}) to {}.", path.display()))
+                    .map_err(|e| format!("{e:#}"));
+                if let Ok(mut s) = slot.lock() {
+                    *s = Some(status);
+                }
+            }));
+        }
         let bg = self.state.theme().background;
         open.painter.paint_and_update_textures(
             ViewportId::ROOT,
@@ -331,6 +346,9 @@ impl App {
         self.times
             .total
             .push(frame_start.elapsed().as_secs_f64() * 1e3);
+        if let Some(status) = self.window_shot.lock().ok().and_then(|mut s| s.take()) {
+            self.state.shots.status = Some(status);
+        }
         let done = self.screenshot.lock().ok().and_then(|mut s| s.take());
         if let Some(result) = done {
             if let Err(e) = result {

@@ -144,7 +144,7 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
 }
 
 /// Esc: e-stop of the link (and leaves presentation mode); Space: play/pause; ←/→: step;
-/// Home: back to the start; P: presentation mode.
+/// Home: back to the start; P: presentation mode; F12: screenshot.
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     // The e-stop works whatever has the keyboard focus.
@@ -167,6 +167,9 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if pressed(egui::Key::Home) {
         state.playback.time = 0.0;
+    }
+    if pressed(egui::Key::F12) && !state.shots.busy() {
+        state.take_screenshot();
     }
     if pressed(egui::Key::P) || pressed(egui::Key::F5) {
         state.look.presentation = !state.look.presentation;

@@ -2,9 +2,7 @@
 //! cursor, and the scene drawn by the renderer through a paint callback.
 
 use egui::Color32;
-use stewart_render::{DrawList, Overlays};
 
-use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
 use crate::viewer::view3d::SceneCallback;
 
@@ -15,6 +13,33 @@ const VIEWS: [(&str, f32, f32); 4] = [
     ("Side", 90.0, 0.0),
     ("Top", 0.0, 89.5),
 ];
+
+/// The Screenshot menu: what, how large, background; Save (or F12 with these choices).
+fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
+    use crate::viewer::shots::{ShotKind, ShotScale};
+    let shots = &mut state.shots;
+    ui.radio_value(&mut shots.kind, ShotKind::View, "3D view");
+    ui.radio_value(
+        &mut shots.kind,
+        ShotKind::Window,
+        "Whole window (as on screen)",
+    );
+    ui.add_enabled_ui(shots.kind == ShotKind::View, |ui| {
+        ui.horizontal(|ui| {
+            for (scale, words) in ShotScale::ALL {
+                ui.radio_value(&mut shots.scale, scale, words);
+            }
+        });
+        ui.checkbox(&mut shots.transparent, "Transparent background");
+    });
+    if ui
+        .add_enabled(!shots.busy(), egui::Button::new("Save PNG"))
+        .clicked()
+    {
+        state.take_screenshot();
+        ui.close();
+    }
+}
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -47,7 +72,9 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 .on_hover_text(
                     "Time, pose and the six values over the view (and in exported frames)",
                 );
+            ui.menu_button("Screenshot (F12)", |ui| screenshot_menu(ui, state));
         });
+        super::widgets::status(ui, &state.shots.status);
     }
     let rect = ui.available_rect_before_wrap();
     let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
@@ -56,11 +83,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let bg = theme.background.map(|c| (c * 255.0) as u8);
     ui.painter()
         .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
-    let path = if state.look.show_path && state.playback.mode == MotionMode::Trajectory {
-        state.path_until_now()
-    } else {
-        Vec::new()
-    };
     if let Some(missing) = &state.look.renderer_missing {
         // Say why rather than show an empty view.
         ui.painter().text(
@@ -72,27 +94,11 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         );
         return;
     }
-    let frame = state.scenario().geometry.scene_frame(&state.pose(), path);
-    let overlays = Overlays {
-        platform_axes: state.look.platform_axes,
-        path: state.look.show_path,
-        coloured_legs: state.look.coloured_legs,
-        labels: state.look.labels,
-        ..Overlays::default()
-    };
-    let mut list = DrawList::build(&frame, &theme, &overlays);
-    if state.look.readouts {
-        let start = state.scenario().motion.sampling.start();
-        let time =
-            (state.playback.mode == MotionMode::Trajectory).then_some(start + state.playback.time);
-        let text = crate::readout::lines(
-            &state.scenario().name,
-            &state.scenario().geometry,
-            time,
-            &state.pose(),
-        );
-        list.texts.push(crate::readout::item(text, &theme));
-    }
+    let list = state.draw_list(&theme);
+    state.look.view_px = [
+        (rect.width() * ui.ctx().pixels_per_point()).round() as u32,
+        (rect.height() * ui.ctx().pixels_per_point()).round() as u32,
+    ];
     let aspect = rect.width() / rect.height().max(1.0);
     ui.painter().add(egui_wgpu::Callback::new_paint_callback(
         rect,

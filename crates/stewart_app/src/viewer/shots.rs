@@ -1,0 +1,201 @@
+//! Screenshots from the viewer (the *Screenshot* menu and F12): the 3D view alone at 1×,
+//! 2× or 4K, on the theme's background or transparent (for slides), rendered off screen
+//! on a thread of its own so that playback goes on; or the whole window as it is on
+//! screen.
+
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{self, Receiver};
+
+use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
+
+use super::files::Status;
+
+/// What to capture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShotKind {
+    /// The 3D view alone, rendered again at the chosen size.
+    View,
+    /// The whole window, as on screen.
+    Window,
+}
+
+/// How large a 3D-view shot is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShotScale {
+    /// The view's size on screen.
+    One,
+    /// Twice that.
+    Two,
+    /// 3840 × 2160.
+    Uhd,
+}
+
+impl ShotScale {
+    /// Every scale, with its words.
+    pub const ALL: [(ShotScale, &'static str); 3] = [
+        (ShotScale::One, "1×"),
+        (ShotScale::Two, "2×"),
+        (ShotScale::Uhd, "4K"),
+    ];
+
+    /// The image size for a view of `view_px` pixels.
+    pub fn size(self, view_px: [u32; 2]) -> (u32, u32) {
+        let [w, h] = view_px.map(|v| v.max(16));
+        match self {
+            ShotScale::One => (w, h),
+            ShotScale::Two => ((2 * w).min(8192), (2 * h).min(8192)),
+            ShotScale::Uhd => (3840, 2160),
+        }
+    }
+}
+
+/// The Screenshot menu's choices and the shot in progress.
+pub struct Shots {
+    /// 3D view or whole window.
+    pub kind: ShotKind,
+    /// The 3D view's size.
+    pub scale: ShotScale,
+    /// A transparent background (3D view only).
+    pub transparent: bool,
+    /// Where the last shot went or why it failed.
+    pub status: Status,
+    /// A whole-window shot the window is to take at its next frame.
+    pub window_request: Option<PathBuf>,
+    /// The folder shots are saved in (the current folder).
+    pub folder: PathBuf,
+    running: Option<Receiver<Status>>,
+}
+
+impl Default for Shots {
+    fn default() -> Self {
+        Self {
+            kind: ShotKind::View,
+            scale: ShotScale::One,
+            transparent: false,
+            status: None,
+            window_request: None,
+            folder: PathBuf::from("."),
+            running: None,
+        }
+    }
+}
+
+/// The first `NAME-shot-NN.png` in `folder` that does not exist yet.
+pub fn next_path(folder: &Path, name: &str) -> PathBuf {
+    let stem: String = name
+        .chars()
+        .map(|c| {
+            if c.is_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    (1..10_000)
+        .map(|k| folder.join(format!("{stem}-shot-{k:02}.png")))
+        .find(|p| !p.exists())
+        .unwrap_or_else(|| folder.join(format!("{stem}-shot.png")))
+}
+
+impl Shots {
+    /// Whether a shot is being rendered.
+    pub fn busy(&self) -> bool {
+        self.running.is_some() || self.window_request.is_some()
+    }
+
+    /// Render `list` seen by `camera` in `theme` into a PNG at `path` on a thread of its
+    /// own, `size` pixels; the outcome shows in `status` once [`Shots::poll`] collects it.
+    pub fn start_view(
+        &mut self,
+        list: DrawList,
+        camera: OrbitCamera,
+        theme: Theme,
+        size: (u32, u32),
+        path: PathBuf,
+    ) {
+        let (done, outcome) = mpsc::channel();
+        let transparent = self.transparent;
+        let spawned = std::thread::Builder::new()
+            .name("stewart-screenshot".to_owned())
+            .spawn(move || {
+                let _ = done.send(Some(render_view(
+                    &list,
+                    camera,
+                    theme,
+                    transparent,
+                    size,
+                    &path,
+                )));
+            });
+        match spawned {
+            Ok(_) => self.running = Some(outcome),
+            Err(e) => self.status = Some(Err(format!("cannot start the screenshot: {e}"))),
+        }
+    }
+
+    /// Collect a finished shot.
+    pub fn poll(&mut self) {
+        if let Some(outcome) = &self.running
+            && let Ok(status) = outcome.try_recv()
+        {
+            self.status = status;
+            self.running = None;
+        }
+    }
+}
+
+/// Render and write one 3D-view shot.
+fn render_view(
+    list: &DrawList,
+    camera: OrbitCamera,
+    theme: Theme,
+    transparent: bool,
+    (w, h): (u32, u32),
+    path: &Path,
+) -> Result<String, String> {
+    let mut theme = theme;
+    if transparent {
+        theme.background[3] = 0.0;
+    }
+    let mut offscreen = Offscreen::new().map_err(|e| e.to_string())?;
+    let camera = camera.fitted_to(w as f32 / h as f32);
+    let frame = offscreen
+        .render(list, &camera, &theme, w, h)
+        .map_err(|e| e.to_string())?;
+    let mut png = Vec::new();
+    image::ImageEncoder::write_image(
+        image::codecs::png::PngEncoder::new(&mut png),
+        &frame.rgba,
+        w,
+        h,
+        image::ExtendedColorType::Rgba8,
+    )
+    .map_err(|e| format!("cannot encode the screenshot: {e}"))?;
+    crate::output::write_atomically(path, &png).map_err(|e| format!("{e:#}"))?;
+    Ok(format!(
+        "Saved the 3D view ({w}×{h}) to {}.",
+        path.display()
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scales_and_names() {
+        assert_eq!(ShotScale::One.size([1000, 600]), (1000, 600));
+        assert_eq!(ShotScale::Two.size([1000, 600]), (2000, 1200));
+        assert_eq!(ShotScale::Uhd.size([1000, 600]), (3840, 2160));
+        assert_eq!(ShotScale::Two.size([6000, 100]), (8192, 200));
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let p = next_path(dir.path(), "seed / test");
+        assert_eq!(p, dir.path().join("seed___test-shot-01.png"));
+        std::fs::write(&p, b"").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            next_path(dir.path(), "seed / test"),
+            dir.path().join("seed___test-shot-02.png")
+        );
+    }
+}
