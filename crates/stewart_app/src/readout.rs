@@ -6,7 +6,7 @@
 use stewart_kinematics::{Geometry, Pose};
 use stewart_render::{Anchor, TextItem, TextSize, Theme};
 
-/// Line height as a fraction of the view's height (legible at 720p and 4K alike).
+/// Line height as a fraction of the view's shorter side (legible at 720p and 4K alike).
 const SIZE: f32 = 0.027;
 
 /// The readout's lines: `title`, the time (`None`: the manual pose), the pose, the six
@@ -54,7 +54,7 @@ pub fn item(text: String, theme: &Theme) -> TextItem {
         text,
         anchor: Anchor::Fraction([0.015, 0.02]),
         align: [0.0, 0.0],
-        size: TextSize::OfHeight(SIZE),
+        size: TextSize::OfView(SIZE),
         colour: theme.joint,
         background: Some([r, g, b, 0.8]),
     }

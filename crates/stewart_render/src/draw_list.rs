@@ -287,7 +287,7 @@ impl DrawList {
                 text: format!("{letter}{}", k + 1),
                 anchor: crate::text::Anchor::World(middle, [0.6, 0.0]),
                 align: [0.0, 0.5],
-                size: crate::text::TextSize::OfHeight(0.034),
+                size: crate::text::TextSize::OfView(0.034),
                 colour,
                 background: Some([r, g, b, 0.75]),
             });

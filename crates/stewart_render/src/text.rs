@@ -33,17 +33,17 @@ pub enum Anchor {
 pub enum TextSize {
     /// Line height in pixels.
     Px(f32),
-    /// Line height as a fraction of the view's height (the same look at 720p and 4K), at
-    /// least 11 pixels.
-    OfHeight(f32),
+    /// Line height as a fraction of the view's shorter side (the same look at 720p and 4K,
+    /// and in a tall narrow view), at least 11 pixels.
+    OfView(f32),
 }
 
 impl TextSize {
-    /// The line height in pixels for a view `height` pixels high.
-    pub fn px(self, height: f32) -> f32 {
+    /// The line height in pixels for a view of `viewport` pixels.
+    pub fn px(self, viewport: [f32; 2]) -> f32 {
         match self {
             TextSize::Px(p) => p,
-            TextSize::OfHeight(f) => (f * height).max(11.0),
+            TextSize::OfView(f) => (f * viewport[0].min(viewport[1])).max(11.0),
         }
         .clamp(4.0, 400.0)
     }
@@ -285,7 +285,7 @@ impl GlyphAtlas {
     ) -> Vec<TextVertex> {
         let mut out = Vec::new();
         for item in items {
-            let px = item.size.px(viewport[1]);
+            let px = item.size.px(viewport);
             let Some(origin) = anchor_px(item.anchor, view_proj, viewport, px) else {
                 continue;
             };
