@@ -180,6 +180,7 @@ fn mp4_without_ffmpeg_says_how_to_install_it() {
 #[test]
 fn bad_render_options_are_refused() {
     let dir = tempdir();
+    let long = "x".repeat(201);
     let out = dir.path().join("x.gif").display().to_string();
     for (args, expected) in [
         (vec!["--size", "10x10"], "outside 16..=4096"),
@@ -190,6 +191,11 @@ fn bad_render_options_are_refused() {
             vec!["--fps", "0"],
             "frame rate must be more than 0 and at most 1000",
         ),
+        (
+            vec!["--title", "two\nlines"],
+            "without control characters (found U+000A)",
+        ),
+        (vec!["--title", &long], "at most 200 fit a line"),
     ] {
         let mut all = vec!["render", "--out", &out];
         all.extend(args);

@@ -421,6 +421,26 @@ pub struct ForcesArgs {
 /// The smallest frame or window side, pixels.
 pub const MIN_SIDE: u32 = 16;
 
+/// The longest title a readout takes, characters.
+pub const MAX_TITLE_CHARS: usize = 200;
+
+/// A title for the readout: one line of at most [`MAX_TITLE_CHARS`] characters.
+pub fn parse_title(text: &str) -> Result<String, String> {
+    let n = text.chars().count();
+    if n > MAX_TITLE_CHARS {
+        return Err(format!(
+            "the title has {n} characters; at most {MAX_TITLE_CHARS} fit a line"
+        ));
+    }
+    if let Some(c) = text.chars().find(|c| c.is_control()) {
+        return Err(format!(
+            "the title must be one line of text, without control characters (found U+{:04X})",
+            u32::from(c)
+        ));
+    }
+    Ok(text.to_owned())
+}
+
 /// `WxH`, such as `1280x720`.
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text
@@ -501,7 +521,7 @@ pub struct RenderArgs {
     #[arg(long)]
     pub overlay: bool,
     /// The readout's title line (default: the scenario's name); implies --overlay.
-    #[arg(long, value_name = "TEXT")]
+    #[arg(long, value_name = "TEXT", value_parser = parse_title)]
     pub title: Option<String>,
 }
 

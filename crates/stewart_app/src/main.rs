@@ -14,9 +14,15 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
-            // One line, like every other error: clap's first line names the option and why.
+            // One line, like every other error: clap's first paragraph names the option
+            // and why (a value with line breaks in it shows them as `\n`).
             let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("error: bad arguments");
+            let first = text
+                .split("\n\n")
+                .next()
+                .map(|p| p.trim_end().replace('\n', "\\n"))
+                .filter(|p| !p.is_empty())
+                .unwrap_or_else(|| "error: bad arguments".to_owned());
             let _ = writeln!(std::io::stderr(), "{first}");
             return ExitCode::from(2);
         }
