@@ -4,9 +4,10 @@ use std::process::Command;
 
 use crate::tempdir;
 
-/// Run `stewart view` with `args` in a virtual X display (`xvfb-run`), or fail clearly.
-fn view_under_xvfb(args: &[&str]) -> std::process::Output {
-    Command::new("xvfb-run")
+/// `stewart view` with `args` in a virtual X display (`xvfb-run`), to be run.
+fn xvfb_view(args: &[&str]) -> Command {
+    let mut command = Command::new("xvfb-run");
+    command
         .args([
             "-a",
             "-s",
@@ -14,11 +15,15 @@ fn view_under_xvfb(args: &[&str]) -> std::process::Output {
             env!("CARGO_BIN_EXE_stewart"),
             "view",
         ])
-        .args(args)
-        .output()
-        .unwrap_or_else(|e| {
-            panic!("xvfb-run is needed for this test (Debian: apt-get install xvfb xauth): {e}")
-        })
+        .args(args);
+    command
+}
+
+/// Run `stewart view` with `args` in a virtual X display, or fail clearly.
+fn view_under_xvfb(args: &[&str]) -> std::process::Output {
+    xvfb_view(args).output().unwrap_or_else(|e| {
+        panic!("xvfb-run is needed for this test (Debian: apt-get install xvfb xauth): {e}")
+    })
 }
 
 #[test]
@@ -132,15 +137,7 @@ fn the_viewer_remembers_its_session_and_a_broken_one_is_no_crash() {
     // The next run without a scenario starts there: the servo platform, light, 1000×600.
     let shot = dir.path().join("again.png");
     let again = |shot: &std::path::Path| {
-        Command::new("xvfb-run")
-            .args([
-                "-a",
-                "-s",
-                "-screen 0 1600x900x24",
-                env!("CARGO_BIN_EXE_stewart"),
-                "view",
-            ])
-            .args(["--screenshot", &shot.display().to_string(), "--frames", "6"])
+        xvfb_view(&["--screenshot", &shot.display().to_string(), "--frames", "6"])
             .env("STEWART_CONFIG_DIR", &config)
             .output()
             .unwrap_or_else(|e| panic!("{e}"))

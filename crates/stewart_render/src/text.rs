@@ -456,26 +456,20 @@ mod tests {
     fn world_anchors_project_and_points_behind_the_camera_are_skipped() {
         let fonts = Fonts::system();
         let mut atlas = GlyphAtlas::new();
-        let view_proj = crate::OrbitCamera {
+        // Looking along +y at the origin from 5 m.
+        let camera = crate::OrbitCamera {
             azimuth_deg: -90.0,
             elevation_deg: 0.0,
             distance: 5.0,
             target: Vec3::ZERO,
-        }
-        .view_proj(2.0);
+        };
+        let view_proj = camera.view_proj(2.0);
         let ahead = item("A", Anchor::World(Vec3::ZERO, [0.0, 0.0]));
         let quads = atlas.layout(fonts, &[ahead], view_proj, [400.0, 200.0]);
         // The origin projects to the middle of the view: the glyph starts there.
         let x = quads.iter().map(|v| v.position[0]).fold(f32::MAX, f32::min);
         assert!(x > -0.05 && x < 0.1, "{x}");
-        let eye = crate::OrbitCamera {
-            azimuth_deg: -90.0,
-            elevation_deg: 0.0,
-            distance: 5.0,
-            target: Vec3::ZERO,
-        }
-        .eye();
-        let behind = item("A", Anchor::World(eye * 2.0, [0.0, 0.0]));
+        let behind = item("A", Anchor::World(camera.eye() * 2.0, [0.0, 0.0]));
         assert!(
             atlas
                 .layout(fonts, &[behind], view_proj, [400.0, 200.0])
