@@ -7,7 +7,8 @@ set -euo pipefail
 PACKAGES=(gcc g++ libc6-dev pkg-config ca-certificates                  # g++: tests build the firmware header as C++ too
   mesa-vulkan-drivers libvulkan1 libegl1 libegl-mesa0 libgl1-mesa-dri   # software GPU (lavapipe) for headless rendering
   ffmpeg                                                                 # MP4 export, ffprobe in tests
-  fonts-dejavu-core                                                      # text in PDF and PNG plots
+  fonts-dejavu-core                                                      # text in PDF and PNG plots, labels and readouts
+  fonts-wqy-microhei                                                     # Chinese text (1.6 MB): titles now, the Chinese interface next
   poppler-utils                                                          # pdftoppm: tests open exported PDFs
   xvfb xauth                                                             # a virtual display for the viewer's smoke test
   time                                                                   # GNU time: peak memory in scripts/bench-inputs.sh

@@ -446,7 +446,13 @@ fn the_overlay_burns_the_readout_into_the_top_left_corner_at_any_size() {
                 .to_rgba8()
         };
         let plain = frame("plain", &[]);
-        let with = frame("overlay", &["--title", "Defense demo"]);
+        // A Latin title at 720p, a Chinese one at 4K (drawn with the system's Chinese font).
+        let title = if size == "1280x720" {
+            "Defense demo"
+        } else {
+            "斯图尔特平台 答辩演示"
+        };
+        let with = frame("overlay", &["--title", title]);
         let (w, h) = plain.dimensions();
         // Changed pixels, as fractions of the corner (a third wide, a quarter high) and of
         // the rest: the readout is there, and only there.

@@ -414,6 +414,12 @@ mod tests {
             "no system font (scripts/setup.sh installs DejaVu)"
         );
         assert!(fonts.covers("L1 S6 x = 0.125 m, roll 3.5°"));
+        // Chinese from the fallback font (scripts/setup.sh installs WenQuanYi Micro Hei).
+        assert!(
+            fonts.covers("腿长 位姿 行程 奇异位形 工作空间"),
+            "fonts: {:?}",
+            fonts.names
+        );
         let mut atlas = GlyphAtlas::new();
         let viewport = [400.0, 200.0];
         let quads = atlas.layout(
