@@ -149,11 +149,12 @@ pub fn parse_link_rate(text: &str) -> Result<f64, String> {
         .trim()
         .parse()
         .map_err(|_| format!("`{text}` is not a number of hertz"))?;
-    if (10.0..=1000.0).contains(&v) {
+    let (lo, hi) = stewart_kinematics::link_settings::RATES_HZ;
+    if (lo..=hi).contains(&v) {
         Ok(v)
     } else {
         Err(format!(
-            "the rate must be between 10 and 1000 Hz, got {text}"
+            "the rate must be between {lo} and {hi} Hz, got {text}"
         ))
     }
 }

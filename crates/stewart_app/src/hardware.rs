@@ -6,7 +6,7 @@ use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
-use stewart_kinematics::{Geometry, Pose, Scenario, bounds};
+use stewart_kinematics::{Scenario, bounds};
 use stewart_link::channels::{Channel, ChannelMap, Output};
 use stewart_link::frame::FRAME_LEN;
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
@@ -16,20 +16,10 @@ use stewart_link::transport::{Serial, Transport, Udp, max_rate_hz};
 /// How long a serial write may block before the link counts the device as gone.
 const SERIAL_WRITE_TIMEOUT: std::time::Duration = std::time::Duration::from_millis(200);
 
-/// The quantity the link sends for `pose`: leg lengths (m) or servo angles (°), or why
-/// the pose cannot be reached.
-pub fn actuator_values(g: &Geometry, pose: &Pose) -> Result<[f64; 6], String> {
-    match g.servo_angles(pose) {
-        None => Ok(g.leg_lengths(pose)),
-        Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
-        Some(Err(e)) => Err(e.to_string()),
-    }
-}
-
 /// The actuator values at the home pose.
 pub fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
     let g = &scenario.geometry;
-    actuator_values(g, &g.home_pose())
+    g.actuator_values_at(&g.home_pose())
         .map_err(|why| anyhow!("the home pose of `{}`: {why}", scenario.name))
 }
 

@@ -28,16 +28,15 @@ pub fn lines(title: &str, geometry: &Geometry, time: Option<f64>, pose: &Pose) -
         pitch.to_degrees(),
         yaw.to_degrees()
     ));
-    let values = match geometry.servo_angles(pose) {
-        None => Ok((geometry.leg_lengths(pose), 'L', " m", 4)),
-        Some(Ok(a)) => Ok((a.map(|a| a.degrees()), 'θ', "°", 2)),
-        Some(Err(e)) => Err(e.to_string()),
-    };
-    match values {
-        Ok((v, letter, unit, decimals)) => {
+    let q = geometry.quantity();
+    // Four decimals of a metre, two of a degree.
+    let decimals = if q.unit == "m" { 4 } else { 2 };
+    let unit = if q.unit == "m" { " m" } else { q.unit };
+    match geometry.actuator_values_at(pose) {
+        Ok(v) => {
             for half in [0..3, 3..6] {
                 let row: Vec<String> = half
-                    .map(|k| format!("{letter}{} {:.*}", k + 1, decimals, v[k]))
+                    .map(|k| format!("{}{} {:.*}", q.symbol, k + 1, decimals, v[k]))
                     .collect();
                 out.push(format!("{}{unit}", row.join("  ")));
             }

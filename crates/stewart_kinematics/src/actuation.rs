@@ -60,6 +60,16 @@ impl Geometry {
         }
     }
 
+    /// The quantity at one pose: leg lengths (m) or servo angles (°), or why a servo cannot
+    /// reach its joint.
+    pub fn actuator_values_at(&self, pose: &Pose) -> Result<[f64; 6], String> {
+        match self.servo_angles(pose) {
+            None => Ok(self.leg_lengths(pose)),
+            Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
+            Some(Err(e)) => Err(e.to_string()),
+        }
+    }
+
     /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
     /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
     pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
@@ -94,6 +104,7 @@ mod tests {
         let seed = Geometry::seed();
         let home = seed.home_pose();
         assert_eq!(seed.actuator_values(&[home]), vec![seed.leg_lengths(&home)]);
+        assert_eq!(seed.actuator_values_at(&home), Ok(seed.leg_lengths(&home)));
         assert_eq!(seed.quantity(), LEG_LENGTH);
         assert_eq!(seed.quantity_limits(), [None, None]);
         let g = servo_geometry();

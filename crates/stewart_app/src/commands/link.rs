@@ -13,7 +13,7 @@ use stewart_link::sender::{Command, Sender, SenderConfig, Status, Target};
 use stewart_link::transport::{Record, Transport, list_ports};
 
 use crate::cli::LinkArgs;
-use crate::hardware::{self, actuator_values};
+use crate::hardware;
 use crate::{output, source};
 
 /// Run the command.
@@ -331,6 +331,6 @@ fn target(scenario: &Scenario, repeat: bool) -> Target {
         } else {
             t.min(duration)
         };
-        actuator_values(&geometry, &trajectory.pose_at(start + local))
+        geometry.actuator_values_at(&trajectory.pose_at(start + local))
     })
 }

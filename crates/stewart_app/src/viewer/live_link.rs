@@ -15,7 +15,7 @@ use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::sender::{Command, Sender, SenderConfig, Status};
 use stewart_link::transport::{Record, Transport};
 
-use crate::hardware::{self, actuator_values};
+use crate::hardware;
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
@@ -164,7 +164,7 @@ impl LiveLink {
         let shared = Arc::clone(&source);
         let target = Box::new(move |_t: f64| {
             let s = shared.lock().unwrap_or_else(PoisonError::into_inner);
-            actuator_values(&s.geometry, &s.pose())
+            s.geometry.actuator_values_at(&s.pose())
         });
         let described = transport.describe();
         let sender = Sender::spawn(config, target, transport)?;

@@ -133,10 +133,11 @@ pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<String> {
         return Some("the pose is not a number".to_owned());
     }
     let [lo, hi] = g.quantity_limits();
-    let (values, name, unit) = match g.servo_angles(pose) {
-        Some(Err(e)) => return Some(e.to_string()),
-        Some(Ok(angles)) => (angles.map(|a| a.degrees()), "servo", "°"),
-        None => (g.leg_lengths(pose), "leg", " m"),
+    let q = g.quantity();
+    let (name, unit) = (q.part, if q.unit == "m" { " m" } else { q.unit });
+    let values = match g.actuator_values_at(pose) {
+        Ok(v) => v,
+        Err(why) => return Some(why),
     };
     values.iter().enumerate().find_map(|(k, &v)| {
         let n = k + 1;
