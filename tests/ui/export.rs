@@ -5,6 +5,7 @@ use std::time::{Duration, Instant};
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use stewart_app::i18n::Lang;
 use stewart_app::viewer::exports::ExportKind;
 use stewart_app::viewer::state::ViewerState;
 
@@ -36,7 +37,7 @@ fn export_to(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::pat
     h.run();
     h.get_by_role_and_label(Role::ComboBox, "What").click();
     h.run();
-    h.get_by_label(kind.label()).click();
+    h.get_by_label(kind.label(Lang::En)).click();
     h.run();
     h.state_mut().exports.form.path = path.display().to_string();
     h.run();
@@ -67,7 +68,7 @@ fn the_csv_and_a_short_gif_are_written_in_the_background() {
     h.state_mut().exports.form.fps = 0.0;
     h.get_by_role_and_label(Role::ComboBox, "What").click();
     h.run();
-    h.get_by_label(ExportKind::Gif.label()).click();
+    h.get_by_label(ExportKind::Gif.label(Lang::En)).click();
     h.run();
     h.state_mut().exports.form.path = gif.display().to_string();
     h.run();

@@ -26,6 +26,7 @@ fn bench(c: &mut Criterion) {
         composite: false,
         overlays: Overlays::default(),
         readout: None,
+        lang: stewart_app::i18n::Lang::En,
     };
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut group = c.benchmark_group("export_1280x720");

@@ -7,6 +7,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use stewart_kinematics::bounds;
 use stewart_kinematics::link_settings::{LinkFormat, LinkTransport, Word};
 
+use crate::i18n::Lang;
+
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
 #[derive(Debug, Parser)]
@@ -442,6 +444,18 @@ pub fn parse_title(text: &str) -> Result<String, String> {
     Ok(text.to_owned())
 }
 
+/// A language code: `zh` or `en` (`zh-CN`, `zh_CN` and any case accepted).
+pub fn parse_lang(text: &str) -> Result<Lang, String> {
+    let code = text.trim().to_ascii_lowercase();
+    match code.split(['-', '_', '.']).next() {
+        Some("zh") => Ok(Lang::Zh),
+        Some("en") => Ok(Lang::En),
+        _ => Err(format!(
+            "`{text}` is not a language this program speaks: zh (Simplified Chinese) or en (English)"
+        )),
+    }
+}
+
 /// `WxH`, such as `1280x720`.
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text
@@ -524,6 +538,10 @@ pub struct RenderArgs {
     /// The readout's title line (default: the scenario's name); implies --overlay.
     #[arg(long, value_name = "TEXT", value_parser = parse_title)]
     pub title: Option<String>,
+    /// The language of the words drawn: `zh` (Simplified Chinese) or `en` (default: the
+    /// environment's, Chinese for LANG=zh_CN.UTF-8).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
+    pub lang: Option<Lang>,
 }
 
 /// The colour themes.
@@ -544,6 +562,10 @@ pub struct PlotArgs {
     /// `.svg`, `.pdf` or `.png`.
     #[arg(long, value_name = "FILE")]
     pub out: PathBuf,
+    /// The language of the words drawn: `zh` (Simplified Chinese) or `en` (default: the
+    /// environment's, Chinese for LANG=zh_CN.UTF-8).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
+    pub lang: Option<Lang>,
 }
 
 /// Arguments of `stewart view`.
@@ -568,6 +590,10 @@ pub struct ViewArgs {
     /// window size); it is still saved at exit.
     #[arg(long)]
     pub fresh: bool,
+    /// The interface's language: `zh` (Simplified Chinese) or `en` (default: the last
+    /// session's, else the environment's, Chinese for LANG=zh_CN.UTF-8).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
+    pub lang: Option<Lang>,
     /// Save the window's image here after `--frames` frames, then exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,

@@ -6,6 +6,7 @@ pub mod commands;
 pub mod csv_io;
 pub mod export;
 pub mod hardware;
+pub mod i18n;
 pub mod interrupt;
 pub mod output;
 pub mod readout;

@@ -6,12 +6,21 @@
 use stewart_kinematics::{Geometry, Pose};
 use stewart_render::{Anchor, TextItem, TextSize, Theme};
 
+use crate::i18n::Lang;
+use crate::i18n::words::coordinate;
+
 /// Line height as a fraction of the view's shorter side (legible at 720p and 4K alike).
 const SIZE: f32 = 0.027;
 
-/// The readout's lines: `title`, the time (`None`: the manual pose), the pose, the six
-/// actuator values (or why the pose is out of reach).
-pub fn lines(title: &str, geometry: &Geometry, time: Option<f64>, pose: &Pose) -> String {
+/// The readout's lines in `lang`: `title`, the time (`None`: the manual pose), the pose,
+/// the six actuator values (or why the pose is out of reach).
+pub fn lines(
+    lang: Lang,
+    title: &str,
+    geometry: &Geometry,
+    time: Option<f64>,
+    pose: &Pose,
+) -> String {
     let [x, y, z, roll, pitch, yaw] = pose.to_coordinates();
     let mut out = Vec::new();
     if !title.trim().is_empty() {
@@ -19,11 +28,13 @@ pub fn lines(title: &str, geometry: &Geometry, time: Option<f64>, pose: &Pose) -
     }
     out.push(match time {
         Some(t) => format!("t = {t:.3} s"),
-        None => "manual pose".to_owned(),
+        None => lang.tr("readout.manual").to_owned(),
     });
     out.push(format!("x {x:+.4}  y {y:+.4}  z {z:+.4} m"));
+    let [roll_name, pitch_name, yaw_name] =
+        ["roll", "pitch", "yaw"].map(|name| coordinate(lang, name));
     out.push(format!(
-        "roll {:+.2}°  pitch {:+.2}°  yaw {:+.2}°",
+        "{roll_name} {:+.2}°  {pitch_name} {:+.2}°  {yaw_name} {:+.2}°",
         roll.to_degrees(),
         pitch.to_degrees(),
         yaw.to_degrees()
@@ -41,7 +52,13 @@ pub fn lines(title: &str, geometry: &Geometry, time: Option<f64>, pose: &Pose) -
                 out.push(format!("{}{unit}", row.join("  ")));
             }
         }
-        Err(why) => out.push(why),
+        Err(why) => out.push(match geometry.servo_angles(pose) {
+            Some(Err(e)) => lang.fmt(
+                "teleop.servo_unreachable",
+                &[("n", &e.servo), ("ratio", &format!("{:.4}", e.ratio))],
+            ),
+            _ => why,
+        }),
     }
     out.join("\n")
 }
@@ -68,7 +85,7 @@ mod tests {
     fn the_readout_says_time_pose_and_the_six_values() {
         let s = Scenario::seed();
         let pose = Pose::from_xyz_rpy_deg([0.01, -0.02, 0.85], [1.0, -2.0, 3.0]);
-        let text = lines("seed", &s.geometry, Some(1.5), &pose);
+        let text = lines(Lang::En, "seed", &s.geometry, Some(1.5), &pose);
         let rows: Vec<&str> = text.lines().collect();
         assert_eq!(rows[0], "seed");
         assert_eq!(rows[1], "t = 1.500 s");
@@ -82,12 +99,12 @@ mod tests {
         assert!(rows[5].starts_with("L4 ") && rows[5].ends_with(" m"));
         let servo = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
         let home = servo.geometry.home_pose();
-        let text = lines("", &servo.geometry, None, &home);
+        let text = lines(Lang::En, "", &servo.geometry, None, &home);
         assert!(text.starts_with("manual pose\n"), "{text}");
         assert!(text.contains("θ1 ") && text.ends_with('°'), "{text}");
         // Out of reach: the reason instead of numbers.
         let far = Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [0.0; 3]);
-        let text = lines("", &servo.geometry, Some(0.0), &far);
+        let text = lines(Lang::En, "", &servo.geometry, Some(0.0), &far);
         assert!(!text.contains("θ1"), "{text}");
     }
 }

@@ -84,8 +84,9 @@ const LATIN: [&str; 6] = [
     "Arial",
     "Segoe UI",
 ];
-/// Families with Simplified Chinese, tried for characters the first font lacks.
-const CJK: [&str; 8] = [
+/// Families with Simplified Chinese, tried for characters the first font lacks (the
+/// viewer's interface font searches the same list).
+pub const CJK: [&str; 8] = [
     "WenQuanYi Micro Hei",
     "WenQuanYi Zen Hei",
     "Noto Sans CJK SC",

@@ -14,7 +14,8 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode> {
     let out = output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     out.require_file()?;
     let scenario = source::load(&args.scenario)?;
-    let bytes = plot_file(&scenario, &args.out)?;
+    let lang = crate::i18n::for_command(args.lang, "plot");
+    let bytes = plot_file(&scenario, &args.out, lang)?;
     out.write_bytes(&bytes)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -6,7 +6,10 @@ use std::process::ExitCode;
 use anyhow::Result;
 use stewart_kinematics::Scenario;
 
+use std::io::Write as _;
+
 use crate::cli::ViewArgs;
+use crate::i18n::{Lang, fonts};
 use crate::source;
 use crate::viewer::session::{self, Session};
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
@@ -25,8 +28,9 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
         (true, None) => None,
         _ => session::folder(),
     };
+    let wanted = args.lang.unwrap_or_else(Lang::from_env);
     let (saved, mut note) = match (&folder, args.fresh) {
-        (Some(f), false) => match session::load(f) {
+        (Some(f), false) => match session::load(f, wanted) {
             Ok(s) => (s, None),
             Err(n) => (None, Some(n)),
         },
@@ -39,9 +43,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
         (Some(s), false) => match s.scenario() {
             Ok(scenario) => Some((scenario, s.origin.clone())),
             Err(e) => {
-                note = Some(format!(
-                    "the saved scenario no longer reads ({e}); starting from the seed"
-                ));
+                note = Some(wanted.fmt("session.scenario_broken", &[("why", &e)]));
                 None
             }
         },
@@ -63,6 +65,17 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     if args.light {
         state.look.light_theme = true;
     }
+    // --lang, else the session's, else the environment's; Chinese only with a font for it.
+    let asked = args
+        .lang
+        .or_else(|| saved.as_ref().and_then(|s| s.lang))
+        .unwrap_or(wanted);
+    let (lang, font_note) = fonts::usable_here(asked);
+    if let Some(n) = &font_note {
+        let _ = writeln!(std::io::stderr(), "view: {n}");
+    }
+    state.look.lang = lang;
+    note = note.or(font_note);
     state.look.presentation = args.presentation;
     state.look.expand_panels = args.expand_panels;
     state.session.folder = folder;

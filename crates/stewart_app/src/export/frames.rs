@@ -7,6 +7,7 @@ use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
 
 use super::plot;
 use super::vector;
+use crate::i18n::Lang;
 
 /// What to render.
 pub struct FrameJob {
@@ -28,6 +29,8 @@ pub struct FrameJob {
     pub overlays: Overlays,
     /// The readout's title, when the readout is burnt in.
     pub readout: Option<String>,
+    /// The language of the readout and the plot.
+    pub lang: Lang,
 }
 
 /// The seed's view framing `scenario`'s platform.
@@ -46,8 +49,8 @@ struct PlotPanel {
 }
 
 impl PlotPanel {
-    fn new(scenario: &Scenario, width: u32, height: u32) -> Result<Self> {
-        let (times, svg) = plot::scenario_svg(scenario);
+    fn new(scenario: &Scenario, lang: Lang, width: u32, height: u32) -> Result<Self> {
+        let (times, svg) = plot::scenario_svg(scenario, lang);
         let (rgba, scale, (ox, oy)) = vector::rgba_fit(&svg, width, height)?;
         let (ml, mr, mt, mb) = plot::margins();
         let (scale, ox, oy) = (f64::from(scale), f64::from(ox), f64::from(oy));
@@ -101,7 +104,12 @@ impl<'a> FrameSource<'a> {
             let view = (job.width as f64 * 0.55).round() as u32;
             (
                 view,
-                Some(PlotPanel::new(scenario, job.width - view, job.height)?),
+                Some(PlotPanel::new(
+                    scenario,
+                    job.lang,
+                    job.width - view,
+                    job.height,
+                )?),
             )
         } else {
             (job.width, None)
@@ -143,7 +151,7 @@ impl<'a> FrameSource<'a> {
         let mut list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
         self.path = scene.path;
         if let Some(title) = &self.job.readout {
-            let text = crate::readout::lines(title, g, Some(t), &pose);
+            let text = crate::readout::lines(self.job.lang, title, g, Some(t), &pose);
             list.texts.push(crate::readout::item(text, &self.job.theme));
         }
         let aspect = self.view_width as f32 / self.job.height as f32;

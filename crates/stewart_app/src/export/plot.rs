@@ -6,6 +6,9 @@ use std::fmt::Write as _;
 
 use stewart_kinematics::actuation::Quantity;
 
+use crate::i18n::Lang;
+use crate::i18n::words::quantity_name;
+
 /// Actuator `k`'s colour as `#RRGGBB`: the renderer's series colours (Okabe–Ito), so a
 /// curve has the colour of its leg in the 3D view.
 pub fn leg_colour_hex(k: usize) -> String {
@@ -27,23 +30,51 @@ pub struct PlotData<'a> {
     pub limits: [Option<f64>; 2],
     /// A vertical marker at this time (the current frame of a video), seconds.
     pub marker: Option<f64>,
+    /// The language of the axis labels and the limits' names.
+    pub lang: Lang,
 }
 
-/// The plot of `scenario`'s trajectory: its sample times and the SVG.
-pub fn scenario_svg(scenario: &stewart_kinematics::Scenario) -> (Vec<f64>, String) {
+/// The plot of `scenario`'s trajectory in `lang`: its sample times and the SVG.
+pub fn scenario_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> (Vec<f64>, String) {
     let samples = scenario.motion.sample();
     let g = &scenario.geometry;
     let values = g.actuator_values(&samples.poses);
     let quantity = g.quantity();
     let text = svg(&PlotData {
-        title: &format!("{}s — {}", capitalised(quantity.name), scenario.name),
+        title: &lang.fmt(
+            if quantity.unit == "m" {
+                "plot.title_legs"
+            } else {
+                "plot.title_servos"
+            },
+            &[("name", &scenario.name)],
+        ),
         times: &samples.times,
         values: &values,
         quantity,
         limits: g.quantity_limits(),
         marker: None,
+        lang,
     });
     (samples.times, text)
+}
+
+/// The fonts SVG text asks for: a Latin sans-serif first, then the Chinese families (the
+/// one this system has first) for characters the Latin font lacks. A PDF embeds the
+/// glyphs it uses; an SVG names the families for the reader's system.
+fn font_families() -> String {
+    let mut families: Vec<&str> = vec!["DejaVu Sans", "Arial", "Helvetica"];
+    if let Some(found) = crate::i18n::fonts::cjk() {
+        families.push(&found.family);
+    }
+    for name in stewart_render::text::CJK {
+        if !families.contains(&name) {
+            families.push(name);
+        }
+    }
+    let mut list: Vec<String> = families.iter().map(|f| format!("'{f}'")).collect();
+    list.push("sans-serif".to_owned());
+    list.join(", ")
 }
 
 /// `text` with its first letter in upper case.
@@ -120,7 +151,8 @@ pub fn svg(data: &PlotData) -> String {
     // Writing to a String cannot fail.
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="160mm" height="90mm" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="DejaVu Sans, Arial, Helvetica, sans-serif" font-size="11">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="160mm" height="90mm" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="{}" font-size="11">"#,
+        font_families()
     );
     let _ = writeln!(
         s,
@@ -192,15 +224,16 @@ pub fn svg(data: &PlotData) -> String {
     );
     let _ = writeln!(
         s,
-        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">Time t (s)</text>"#,
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
         0.5 * (x0 + x1),
-        HEIGHT - 8.0
+        HEIGHT - 8.0,
+        data.lang.tr("plot.time_axis")
     );
     let _ = writeln!(
         s,
         r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">{1} {2} ({3})</text>"#,
         0.5 * (y0 + y1),
-        capitalised(q.name),
+        capitalised(quantity_name(data.lang, &q)),
         q.symbol,
         q.unit
     );
@@ -215,10 +248,11 @@ pub fn svg(data: &PlotData) -> String {
             );
             let _ = writeln!(
                 s,
-                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">{}{name} = {l}{}</text>"##,
+                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">{}{} = {l}{}</text>"##,
                 x1 - 4.0,
                 y - 3.0,
                 q.symbol,
+                data.lang.tr(&format!("plot.{name}")),
                 unit_suffix
             );
         }
@@ -287,8 +321,9 @@ fn escape(text: &str) -> String {
 pub fn plot_file(
     scenario: &stewart_kinematics::Scenario,
     path: &std::path::Path,
+    lang: Lang,
 ) -> anyhow::Result<Vec<u8>> {
-    let (_, text) = scenario_svg(scenario);
+    let (_, text) = scenario_svg(scenario, lang);
     match crate::output::extension(path).as_deref() {
         Some("svg") => Ok(text.into_bytes()),
         Some("pdf") => super::vector::pdf(&text),
@@ -327,6 +362,7 @@ mod tests {
             quantity: stewart_kinematics::actuation::LEG_LENGTH,
             limits: [Some(0.9), Some(1.2)],
             marker: Some(5.0),
+            lang: Lang::En,
         });
         assert_eq!(text.matches("<polyline").count(), 6);
         assert!(text.contains("Time t (s)") && text.contains("Leg length L (m)"));
@@ -349,6 +385,7 @@ mod tests {
             quantity: stewart_kinematics::actuation::SERVO_ANGLE,
             limits: [Some(-80.0), Some(80.0)],
             marker: None,
+            lang: Lang::En,
         });
         assert_eq!(text.matches("<polyline").count(), 7);
         assert_eq!(text.matches(r#"class="leg S3""#).count(), 2);

@@ -6,11 +6,11 @@ use anyhow::{Context, Result};
 use resvg::{tiny_skia, usvg};
 
 /// The system fonts, loaded once (DejaVu Sans on Debian: `fonts-dejavu-core`).
-fn fonts() -> Arc<usvg::fontdb::Database> {
-    static FONTS: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
+fn fonts() -> Arc<fontdb::Database> {
+    static FONTS: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
     FONTS
         .get_or_init(|| {
-            let mut db = usvg::fontdb::Database::new();
+            let mut db = fontdb::Database::new();
             db.load_system_fonts();
             Arc::new(db)
         })

@@ -35,6 +35,8 @@ pub struct VideoRequest {
     pub overlays: Overlays,
     /// Burn the readout (time, pose, the six values) into the frames under this title.
     pub readout: Option<String>,
+    /// The language of the readout and the composite's plot.
+    pub lang: crate::i18n::Lang,
 }
 
 /// What an export did.
@@ -157,6 +159,7 @@ pub fn export_video(
         composite: request.composite,
         overlays: request.overlays,
         readout: request.readout.clone(),
+        lang: request.lang,
     };
     let mut source = FrameSource::new(scenario, &job)?;
     progress.set_length(range.len() as u64);

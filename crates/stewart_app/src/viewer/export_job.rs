@@ -14,6 +14,7 @@ use stewart_kinematics::Scenario;
 use crate::export::plot::plot_file;
 use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
 use crate::export::video::{VideoRequest, export_video};
+use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
 
 /// What to export.
@@ -33,21 +34,23 @@ pub struct ExportJob {
     progress: ProgressBar,
     stop: Arc<AtomicBool>,
     started: Instant,
+    lang: Lang,
 }
 
 impl ExportJob {
-    /// Start `work` on a copy of `scenario`.
-    pub fn start(scenario: &Scenario, work: ExportWork) -> Self {
+    /// Start `work` on a copy of `scenario`; messages (and the plot's words) in `lang`.
+    pub fn start(scenario: &Scenario, work: ExportWork, lang: Lang) -> Self {
         let scenario = scenario.clone();
         let progress = ProgressBar::with_draw_target(Some(1), ProgressDrawTarget::hidden());
         let stop = Arc::new(AtomicBool::new(false));
         let (bar, flag) = (progress.clone(), Arc::clone(&stop));
-        let handle = std::thread::spawn(move || run(&scenario, &work, &bar, &flag));
+        let handle = std::thread::spawn(move || run(&scenario, &work, lang, &bar, &flag));
         Self {
             handle: Some(handle),
             progress,
             stop,
             started: Instant::now(),
+            lang,
         }
     }
 
@@ -66,10 +69,20 @@ impl ExportJob {
         let seconds = self.started.elapsed().as_secs_f64();
         let rate = done as f64 / seconds.max(1e-3);
         if len <= 1 {
-            return format!("working… {seconds:.1} s");
+            return self
+                .lang
+                .fmt("export.working", &[("seconds", &format!("{seconds:.1}"))]);
         }
         let left = (len - done) as f64 / rate.max(1e-9);
-        format!("{done}/{len} frames, {rate:.1} frames/s, {left:.0} s left")
+        self.lang.fmt(
+            "export.progress",
+            &[
+                ("done", &done),
+                ("len", &len),
+                ("rate", &format!("{rate:.1}")),
+                ("left", &format!("{left:.0}")),
+            ],
+        )
     }
 
     /// Ask the export to stop; it then removes what it staged and reports the cancellation.
@@ -91,9 +104,9 @@ impl ExportJob {
         let handle = self.handle.take()?;
         Some(match handle.join() {
             Ok(Ok(message)) => Ok(message),
-            Ok(Err(_)) if self.cancelling() => Err("Cancelled: nothing was written.".to_owned()),
+            Ok(Err(_)) if self.cancelling() => Err(self.lang.tr("export.cancelled").to_owned()),
             Ok(Err(e)) => Err(format!("{e:#}")),
-            Err(_) => Err("the export thread panicked".to_owned()),
+            Err(_) => Err(self.lang.tr("export.panicked").to_owned()),
         })
     }
 
@@ -125,32 +138,40 @@ impl Drop for ExportJob {
 fn run(
     scenario: &Scenario,
     work: &ExportWork,
+    lang: Lang,
     progress: &ProgressBar,
     stop: &AtomicBool,
 ) -> Result<String> {
     match work {
         ExportWork::Video(request) => {
             let report = export_video(scenario, request, progress, stop)?;
-            Ok(format!(
-                "Wrote {} frames to {} in {:.1} s ({:.1} frames/s).",
-                report.frames,
-                request.out.display(),
-                report.seconds,
-                report.frames as f64 / report.seconds.max(1e-9)
+            Ok(lang.fmt(
+                "export.wrote_frames",
+                &[
+                    ("frames", &report.frames),
+                    ("path", &request.out.display()),
+                    ("seconds", &format!("{:.1}", report.seconds)),
+                    (
+                        "rate",
+                        &format!("{:.1}", report.frames as f64 / report.seconds.max(1e-9)),
+                    ),
+                ],
             ))
         }
         ExportWork::Plot(path) => {
-            write_atomically(path, &plot_file(scenario, path)?)?;
-            Ok(format!("Wrote the plot to {}.", path.display()))
+            write_atomically(path, &plot_file(scenario, path, lang)?)?;
+            Ok(lang.fmt("export.wrote_plot", &[("path", &path.display())]))
         }
         ExportWork::Csv(path) => {
             let table = trajectory_table(scenario);
             let solved = solve_table(&scenario.geometry, &table, |k| trajectory_place(&table, k))?;
             Destination::new(path, &[])?.write_with(|w| write_solved_csv(w, &table, &solved))?;
-            Ok(format!(
-                "Wrote {} poses and leg lengths to {}.",
-                scenario.motion.sampling.len(),
-                path.display()
+            Ok(lang.fmt(
+                "export.wrote_csv",
+                &[
+                    ("count", &scenario.motion.sampling.len()),
+                    ("path", &path.display()),
+                ],
             ))
         }
     }

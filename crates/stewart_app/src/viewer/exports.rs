@@ -3,6 +3,7 @@
 
 use super::export_job::ExportJob;
 use super::files::Status;
+use crate::i18n::Lang;
 
 /// What the export panel will write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,16 +37,16 @@ impl ExportKind {
     ];
 
     /// Words for the menu.
-    pub fn label(self) -> &'static str {
-        match self {
-            ExportKind::Gif => "Video: GIF",
-            ExportKind::Mp4 => "Video: MP4",
-            ExportKind::Frames => "Frames: PNG folder",
-            ExportKind::PlotSvg => "Plot: SVG",
-            ExportKind::PlotPdf => "Plot: PDF",
-            ExportKind::PlotPng => "Plot: PNG (300 dpi)",
-            ExportKind::Csv => "Poses and legs: CSV",
-        }
+    pub fn label(self, lang: Lang) -> &'static str {
+        lang.tr(match self {
+            ExportKind::Gif => "export.kind_gif",
+            ExportKind::Mp4 => "export.kind_mp4",
+            ExportKind::Frames => "export.kind_frames",
+            ExportKind::PlotSvg => "export.kind_svg",
+            ExportKind::PlotPdf => "export.kind_pdf",
+            ExportKind::PlotPng => "export.kind_png",
+            ExportKind::Csv => "export.kind_csv",
+        })
     }
 
     /// What the output's name ends in (`""` for a folder).

@@ -8,7 +8,7 @@ use super::teleop::PadState;
 /// Gamepad input, when the system offers it.
 pub struct Gamepads {
     gilrs: Option<Gilrs>,
-    /// Why there is no gamepad support (said once in the Motion panel).
+    /// Why there is no gamepad support, the system's words (said in the Motion panel).
     pub note: Option<String>,
 }
 
@@ -22,7 +22,7 @@ impl Gamepads {
             },
             Err(e) => Self {
                 gilrs: None,
-                note: Some(format!("no gamepad support: {e}")),
+                note: Some(e.to_string()),
             },
         }
     }

@@ -16,6 +16,7 @@ use stewart_link::sender::{Command, Sender, SenderConfig, Status};
 use stewart_link::transport::{Record, Transport};
 
 use crate::hardware;
+use crate::i18n::Lang;
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
@@ -86,6 +87,8 @@ pub struct LiveLink {
     pub status: crate::viewer::files::Status,
     /// The last lines of a dry run (newest last).
     recent: Arc<Mutex<VecDeque<String>>>,
+    /// The language of the status messages (the viewer's).
+    pub lang: Lang,
 }
 
 /// A dry run's writer: keeps the last whole lines for the panel (a line may come in
@@ -166,7 +169,15 @@ impl LiveLink {
             let s = shared.lock().unwrap_or_else(PoisonError::into_inner);
             s.geometry.actuator_values_at(&s.pose())
         });
-        let described = transport.describe();
+        // Where the frames go, in the reader's words (a UDP address reads the same in both).
+        let described = match scenario.link.transport {
+            LinkTransport::File => self.lang.tr("link.dry_run_here").to_owned(),
+            LinkTransport::Serial => self.lang.fmt(
+                "link.serial_port",
+                &[("port", &scenario.link.port.clone().unwrap_or_default())],
+            ),
+            LinkTransport::Udp => transport.describe(),
+        };
         let sender = Sender::spawn(config, target, transport)?;
         self.running = Some(Running {
             sender,
@@ -174,9 +185,9 @@ impl LiveLink {
             described: described.clone(),
             stopping: false,
         });
-        Ok(format!(
-            "Connected: {described} at {} Hz (started disarmed).",
-            scenario.link.rate_hz
+        Ok(self.lang.fmt(
+            "link.connected",
+            &[("to", &described), ("rate", &scenario.link.rate_hz)],
         ))
     }
 
@@ -238,7 +249,7 @@ impl LiveLink {
     pub fn disconnect_now(&mut self) {
         self.disconnect();
         if let Some(r) = self.running.take() {
-            self.status = Some(outcome(&r.described, r.sender.join()));
+            self.status = Some(outcome(self.lang, &r.described, r.sender.join()));
         }
     }
 
@@ -285,18 +296,22 @@ impl LiveLink {
         if self.running.as_ref().is_some_and(|r| r.sender.finished())
             && let Some(r) = self.running.take()
         {
-            self.status = Some(outcome(&r.described, r.sender.join()));
+            self.status = Some(outcome(self.lang, &r.described, r.sender.join()));
         }
     }
 }
 
 /// The words for how a stream ended.
-fn outcome(described: &str, summary: stewart_link::sender::Summary) -> Result<String, String> {
+fn outcome(
+    lang: Lang,
+    described: &str,
+    summary: stewart_link::sender::Summary,
+) -> Result<String, String> {
     match summary.failure {
-        Some(failure) => Err(format!("The link to {described} stopped: {failure}")),
-        None => Ok(format!(
-            "Disconnected from {described}: {} frames sent, ended disarmed.",
-            summary.status.frames
+        Some(failure) => Err(lang.fmt("link.stopped", &[("to", &described), ("why", &failure)])),
+        None => Ok(lang.fmt(
+            "link.disconnected",
+            &[("to", &described), ("frames", &summary.status.frames)],
         )),
     }
 }

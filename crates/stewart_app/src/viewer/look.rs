@@ -3,11 +3,15 @@
 
 use stewart_render::{OrbitCamera, Theme};
 
+use crate::i18n::Lang;
+
 /// The view's settings.
 #[derive(Clone, Debug)]
 pub struct Look {
     /// The camera.
     pub camera: OrbitCamera,
+    /// The interface's language.
+    pub lang: Lang,
     /// Light (presentation) or dark colours.
     pub light_theme: bool,
     /// Presentation mode: light colours, large text, control panels hidden.
@@ -26,7 +30,8 @@ pub struct Look {
     pub readouts: bool,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub view_px: [u32; 2],
-    /// Why the 3D view cannot be drawn (`None` once the window registered its renderer).
+    /// Why the 3D view cannot be drawn, empty for "no renderer yet" (`None` once the window
+    /// registered its renderer).
     pub renderer_missing: Option<String>,
 }
 
@@ -35,6 +40,7 @@ impl Look {
     pub fn new(camera: OrbitCamera) -> Self {
         Self {
             camera,
+            lang: Lang::En,
             light_theme: false,
             presentation: false,
             expand_panels: false,
@@ -44,7 +50,7 @@ impl Look {
             labels: true,
             readouts: false,
             view_px: [1280, 720],
-            renderer_missing: Some("no GPU renderer is attached to this view".to_owned()),
+            renderer_missing: Some(String::new()),
         }
     }
 

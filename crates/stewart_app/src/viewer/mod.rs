@@ -17,6 +17,7 @@ pub mod derived;
 pub mod export_job;
 pub mod exports;
 pub mod files;
+pub mod fonts;
 pub mod gamepad;
 pub mod history;
 pub mod live_link;

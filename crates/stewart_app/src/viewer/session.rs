@@ -12,6 +12,7 @@ use stewart_kinematics::Scenario;
 use stewart_render::OrbitCamera;
 
 use super::look::Look;
+use crate::i18n::Lang;
 
 /// The session file's format; a file of another version is ignored.
 pub const VERSION: u32 = 1;
@@ -43,6 +44,9 @@ pub struct Session {
     pub window: [u32; 2],
     /// egui's memory (open panels, scroll positions), as egui writes it.
     pub panels: Option<String>,
+    /// The interface's language (absent in sessions written before it was remembered).
+    #[serde(default)]
+    pub lang: Option<Lang>,
 }
 
 impl Session {
@@ -75,6 +79,7 @@ impl Session {
             readouts: look.readouts,
             window,
             panels,
+            lang: Some(look.lang),
         }
     }
 
@@ -101,6 +106,9 @@ impl Session {
         look.coloured_legs = self.coloured_legs;
         look.labels = self.labels;
         look.readouts = self.readouts;
+        if let Some(lang) = self.lang {
+            look.lang = lang;
+        }
     }
 }
 
@@ -120,29 +128,28 @@ pub fn file_in(folder: &std::path::Path) -> PathBuf {
 /// The saved session in `folder`: `Ok(None)` when there is none; `Err(note)` when the file
 /// is broken, of another version or unreadable (it is then left alone and the viewer
 /// starts fresh).
-pub fn load(folder: &std::path::Path) -> Result<Option<Session>, String> {
+pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, String> {
     let path = file_in(folder);
     let text = match std::fs::read_to_string(&path) {
         Ok(text) => text,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
         Err(e) => {
-            return Err(format!(
-                "the saved session {} cannot be read ({e}); starting fresh",
-                path.display()
+            return Err(lang.fmt(
+                "session.unreadable",
+                &[("path", &path.display()), ("why", &e)],
             ));
         }
     };
-    let session: Session = serde_json::from_str(&text).map_err(|e| {
-        format!(
-            "the saved session {} is damaged ({e}); starting fresh",
-            path.display()
-        )
-    })?;
+    let session: Session = serde_json::from_str(&text)
+        .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
     if session.version != VERSION {
-        return Err(format!(
-            "the saved session {} is of another version ({}, this viewer writes {VERSION}); starting fresh",
-            path.display(),
-            session.version
+        return Err(lang.fmt(
+            "session.other_version",
+            &[
+                ("path", &path.display()),
+                ("found", &session.version),
+                ("version", &VERSION),
+            ],
         ));
     }
     Ok(Some(session))
@@ -180,7 +187,7 @@ mod tests {
     #[test]
     fn a_session_round_trips_and_restores_the_look() {
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(load(dir.path()), Ok(None));
+        assert_eq!(load(dir.path(), Lang::En), Ok(None));
         let mut scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
         stewart_kinematics::settings::apply_all(&mut scenario, ["geometry.base_radius=1.1"])
             .unwrap_or_else(|e| panic!("{e}"));
@@ -191,7 +198,7 @@ mod tests {
         look.readouts = true;
         let session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
         save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
-        let back = load(dir.path())
+        let back = load(dir.path(), Lang::En)
             .unwrap_or_else(|e| panic!("{e}"))
             .unwrap_or_else(|| panic!("nothing saved"));
         assert_eq!(back, session);
@@ -203,7 +210,7 @@ mod tests {
         assert_eq!(fresh.camera.azimuth_deg, 40.0);
         assert!(fresh.light_theme && !fresh.labels && fresh.readouts);
         forget(dir.path()).unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(load(dir.path()), Ok(None));
+        assert_eq!(load(dir.path(), Lang::En), Ok(None));
     }
 
     #[test]
@@ -216,7 +223,7 @@ mod tests {
             ("\u{0}\u{1}binary", "is damaged"),
         ] {
             std::fs::write(&file, text).unwrap_or_else(|e| panic!("{e}"));
-            let note = load(dir.path()).err().unwrap_or_default();
+            let note = load(dir.path(), Lang::En).err().unwrap_or_default();
             assert!(
                 note.contains(words) && note.ends_with("starting fresh"),
                 "{note}"
@@ -228,7 +235,7 @@ mod tests {
         old.version = 0;
         std::fs::write(&file, serde_json::to_string(&old).unwrap_or_default())
             .unwrap_or_else(|e| panic!("{e}"));
-        let note = load(dir.path()).err().unwrap_or_default();
+        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
         assert!(note.contains("another version (0"), "{note}");
         // A saved scenario that no longer reads, and a camera of NaNs, restore nothing.
         let mut bad = Session::capture(&scenario, "preset seed", &look, [800, 600], None);

@@ -9,6 +9,7 @@ use std::sync::mpsc::{self, Receiver};
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
 use super::files::Status;
+use crate::i18n::Lang;
 
 /// What to capture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -113,6 +114,7 @@ impl Shots {
         theme: Theme,
         size: (u32, u32),
         path: PathBuf,
+        lang: Lang,
     ) {
         let (done, outcome) = mpsc::channel();
         let transparent = self.transparent;
@@ -126,11 +128,14 @@ impl Shots {
                     transparent,
                     size,
                     &path,
+                    lang,
                 )));
             });
         match spawned {
             Ok(_) => self.running = Some(outcome),
-            Err(e) => self.status = Some(Err(format!("cannot start the screenshot: {e}"))),
+            Err(e) => {
+                self.status = Some(Err(lang.fmt("shots.cannot_start", &[("why", &e)])));
+            }
         }
     }
 
@@ -153,6 +158,7 @@ fn render_view(
     transparent: bool,
     (w, h): (u32, u32),
     path: &Path,
+    lang: Lang,
 ) -> Result<String, String> {
     let mut theme = theme;
     if transparent {
@@ -173,9 +179,9 @@ fn render_view(
     )
     .map_err(|e| format!("cannot encode the screenshot: {e}"))?;
     crate::output::write_atomically(path, &png).map_err(|e| format!("{e:#}"))?;
-    Ok(format!(
-        "Saved the 3D view ({w}×{h}) to {}.",
-        path.display()
+    Ok(lang.fmt(
+        "shots.saved_view",
+        &[("w", &w), ("h", &h), ("path", &path.display())],
     ))
 }
 

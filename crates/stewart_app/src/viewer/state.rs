@@ -73,7 +73,7 @@ pub struct Teleop {
     /// How fast a full command moves.
     pub rates: Rates,
     /// Why the last move stopped at the edge of the reachable set.
-    pub blocked: Option<String>,
+    pub blocked: Option<teleop::OutOfReach>,
     /// Whether input is moving the platform (the window keeps drawing).
     pub moving: bool,
     /// The gamepad's state this frame (set by the window; `None` without one).
@@ -165,6 +165,7 @@ impl ViewerState {
             let start = self.scenario.motion.sampling.start();
             let time = trajectory.then_some(start + self.playback.time);
             let text = crate::readout::lines(
+                self.look.lang,
                 &self.scenario.name,
                 &self.scenario.geometry,
                 time,
@@ -188,7 +189,8 @@ impl ViewerState {
                 let list = self.draw_list(&theme);
                 let size = self.shots.scale.size(self.look.view_px);
                 let camera = self.look.camera;
-                self.shots.start_view(list, camera, theme, size, path);
+                self.shots
+                    .start_view(list, camera, theme, size, path, self.look.lang);
             }
         }
     }
@@ -314,7 +316,10 @@ impl ViewerState {
                 let name = s.name.clone();
                 self.session.origin = path.display().to_string();
                 self.load_scenario(s);
-                Ok(format!("Opened `{name}` from {}.", path.display()))
+                Ok(self.look.lang.fmt(
+                    "scenario.opened",
+                    &[("name", &name), ("path", &path.display())],
+                ))
             }
             Err(e) => Err(e.to_string()),
         });
@@ -323,9 +328,10 @@ impl ViewerState {
     /// Save the scenario as TOML (whole or not at all).
     pub fn save_file(&mut self, path: &Path) {
         let text = self.scenario.to_toml();
+        let lang = self.look.lang;
         self.files.status = Some(
             crate::output::write_atomically(path, text.as_bytes())
-                .map(|()| format!("Saved to {}.", path.display()))
+                .map(|()| lang.fmt("scenario.saved", &[("path", &path.display())]))
                 .map_err(|e| format!("{e:#}")),
         );
     }
@@ -366,6 +372,7 @@ impl ViewerState {
     pub fn poll(&mut self) {
         self.derived.poll();
         self.exports.poll();
+        self.link.lang = self.look.lang;
         self.link.poll();
         self.link.follow(self.drive(), self.playback.looping);
         self.shots.poll();

@@ -10,6 +10,8 @@
 
 use stewart_kinematics::{Geometry, Pose};
 
+use crate::i18n::Lang;
+
 /// A fine move is this fraction of the full rate.
 const FINE: f64 = 0.2;
 /// Stick travel below this is ignored (sticks rarely rest at zero).
@@ -125,29 +127,99 @@ impl Rates {
     }
 }
 
+/// Why a pose cannot be taken.
+#[derive(Clone, Debug, PartialEq)]
+pub enum OutOfReach {
+    /// A coordinate is NaN or infinite.
+    NotANumber,
+    /// No horn angle of servo `servo` (from 1) closes its rod; `ratio` is |L|/√(M²+N²).
+    Servo {
+        /// Servo number from 1.
+        servo: usize,
+        /// Above 1 when unreachable.
+        ratio: f64,
+    },
+    /// Actuator `n` (from 1) would pass its `limit`: below it when `below`.
+    Limit {
+        /// Actuator number from 1.
+        n: usize,
+        /// The value it would take (m or °).
+        value: f64,
+        /// The limit passed.
+        limit: f64,
+        /// Whether it is the lower limit.
+        below: bool,
+        /// Whether the actuators are servos (degrees) rather than legs (metres).
+        servo: bool,
+    },
+}
+
+impl OutOfReach {
+    /// The reason in `lang`.
+    pub fn words(&self, lang: Lang) -> String {
+        match *self {
+            OutOfReach::NotANumber => lang.tr("teleop.not_a_number").to_owned(),
+            OutOfReach::Servo { servo, ratio } => lang.fmt(
+                "teleop.servo_unreachable",
+                &[("n", &servo), ("ratio", &format!("{ratio:.4}"))],
+            ),
+            OutOfReach::Limit {
+                n,
+                value,
+                limit,
+                below,
+                servo,
+            } => {
+                let key = match (servo, below) {
+                    (false, true) => "teleop.leg_below",
+                    (false, false) => "teleop.leg_above",
+                    (true, true) => "teleop.servo_below",
+                    (true, false) => "teleop.servo_above",
+                };
+                lang.fmt(
+                    key,
+                    &[
+                        ("n", &n),
+                        ("value", &format!("{value:.3}")),
+                        ("limit", &format!("{limit:.3}")),
+                    ],
+                )
+            }
+        }
+    }
+}
+
 /// Why `pose` cannot be taken: a leg outside its stroke, a servo outside its range or
 /// unable to reach; `None` when it can.
-pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<String> {
+pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
     let c = pose.to_coordinates();
     if c.iter().any(|v| !v.is_finite()) {
-        return Some("the pose is not a number".to_owned());
+        return Some(OutOfReach::NotANumber);
     }
     let [lo, hi] = g.quantity_limits();
-    let q = g.quantity();
-    let (name, unit) = (q.part, if q.unit == "m" { " m" } else { q.unit });
-    let values = match g.actuator_values_at(pose) {
-        Ok(v) => v,
-        Err(why) => return Some(why),
+    let servo = g.rotary().is_some();
+    let values = match g.servo_angles(pose) {
+        None => g.leg_lengths(pose),
+        Some(Ok(angles)) => angles.map(|a| a.degrees()),
+        Some(Err(e)) => {
+            return Some(OutOfReach::Servo {
+                servo: e.servo,
+                ratio: e.ratio,
+            });
+        }
     };
-    values.iter().enumerate().find_map(|(k, &v)| {
+    values.iter().enumerate().find_map(|(k, &value)| {
         let n = k + 1;
+        let limit = |limit, below| OutOfReach::Limit {
+            n,
+            value,
+            limit,
+            below,
+            servo,
+        };
         match (lo, hi) {
-            (Some(lo), _) if v < lo => Some(format!(
-                "{name} {n} would be {v:.3}{unit}, below its limit {lo:.3}{unit}"
-            )),
-            (_, Some(hi)) if v > hi => Some(format!(
-                "{name} {n} would be {v:.3}{unit}, above its limit {hi:.3}{unit}"
-            )),
+            (Some(lo), _) if value < lo => Some(limit(lo, true)),
+            (_, Some(hi)) if value > hi => Some(limit(hi, false)),
             _ => None,
         }
     })
@@ -162,7 +234,7 @@ pub fn step(
     command: &Command,
     rates: Rates,
     dt: f64,
-) -> (Pose, Option<String>) {
+) -> (Pose, Option<OutOfReach>) {
     if !(command.moving() && dt.is_finite() && dt > 0.0) {
         return (*pose, None);
     }
@@ -260,7 +332,7 @@ mod tests {
             fine: false,
         };
         let (p, why) = step(g, &home, &straight_up, rates, 10.0);
-        let why = why.unwrap_or_else(|| panic!("not stopped"));
+        let why = why.unwrap_or_else(|| panic!("not stopped")).words(Lang::En);
         assert!(why.contains("above its limit 1.300 m"), "{why}");
         let longest = g.leg_lengths(&p).into_iter().fold(0.0, f64::max);
         assert!((longest - 1.3).abs() < 1e-6, "{longest}");

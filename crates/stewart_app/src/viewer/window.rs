@@ -109,6 +109,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
     // Signals are watched from the start (see `about_to_wait`).
     let _ = crate::interrupt::flag();
     let ctx = egui::Context::default();
+    super::fonts::install(&ctx);
     // The panels' open states from the saved session (a memory that does not read is
     // dropped: the panels start closed, as on a first run).
     if let Some(memory) = state
@@ -191,10 +192,12 @@ fn clamp_surface(w: NonZeroU32, h: NonZeroU32) -> (NonZeroU32, NonZeroU32) {
 impl App {
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
         let attributes = Window::default_attributes()
-            .with_title(format!(
-                "Stewart platform studio — {}",
-                self.state.scenario().name
-            ))
+            .with_title(
+                self.state
+                    .look
+                    .lang
+                    .fmt("window.title", &[("name", &self.state.scenario().name)]),
+            )
             .with_inner_size({
                 // A HiDPI scale makes the window larger in pixels than asked in points:
                 // keep it within what the GPU can draw into.
@@ -282,8 +285,18 @@ impl App {
         self.state.advance(dt);
         let pad = self.gamepads.poll();
         self.state.teleop.pad_words = match &pad {
-            Some((_, name)) => Some(format!("Gamepad: {name} (hold the left bumper to move)")),
-            None => self.gamepads.note.clone(),
+            Some((_, name)) => Some(
+                self.state
+                    .look
+                    .lang
+                    .fmt("motion.gamepad", &[("name", name)]),
+            ),
+            None => self.gamepads.note.as_ref().map(|why| {
+                self.state
+                    .look
+                    .lang
+                    .fmt("motion.no_gamepad", &[("why", why)])
+            }),
         };
         self.state.teleop.pad = pad.map(|(state, _)| state);
         let raw = open.input.take_egui_input(&open.window);
@@ -322,10 +335,16 @@ impl App {
         }
         if let Some(path) = self.state.shots.window_request.take() {
             let slot = Arc::clone(&self.window_shot);
+            let lang = self.state.look.lang;
             capture.push(egui::ScreenshotCallback::new(move |image| {
                 let [w, h] = image.size;
                 let status = save_png(&path, &image)
-                    .map(|()| format!("Saved the window ({w}×{h}) to {}.", path.display()))
+                    .map(|()| {
+                        lang.fmt(
+                            "shots.saved_window",
+                            &[("w", &w), ("h", &h), ("path", &path.display())],
+                        )
+                    })
                     .map_err(|e| format!("{e:#}"));
                 if let Ok(mut s) = slot.lock() {
                     *s = Some(status);

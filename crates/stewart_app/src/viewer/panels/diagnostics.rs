@@ -5,6 +5,7 @@ use egui::RichText;
 use stewart_kinematics::settings::{self, Group};
 
 use super::widgets::{ERROR, edit_error, setting_slider};
+use crate::i18n::words;
 use crate::viewer::state::ViewerState;
 
 /// Findings listed before "and N more".
@@ -12,27 +13,28 @@ const LISTED: usize = 12;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    ui.heading("Diagnostics");
+    let t = state.look.lang;
+    ui.heading(t.tr("diagnostics.heading"));
     if let Some(report) = state.report() {
         if report.architecture.singular {
-            ui.label(RichText::new(report.architecture.explanation()).color(ERROR));
+            ui.label(RichText::new(words::architecture(t, &report.architecture)).color(ERROR));
         }
         if report.findings.is_empty() {
-            ui.label("No problem found along the trajectory.");
+            ui.label(t.tr("diagnostics.none"));
         } else {
-            ui.label(format!(
-                "{} problem(s) along the trajectory:",
-                report.findings.len()
-            ));
+            ui.label(t.fmt("diagnostics.count", &[("count", &report.findings.len())]));
             for f in report.findings.iter().take(LISTED) {
-                ui.label(RichText::new(format!("• {f}")).small());
+                ui.label(RichText::new(format!("• {}", words::finding(t, f))).small());
             }
             if report.findings.len() > LISTED {
-                ui.label(format!("… and {} more", report.findings.len() - LISTED));
+                ui.label(t.fmt(
+                    "diagnostics.more",
+                    &[("count", &(report.findings.len() - LISTED))],
+                ));
             }
         }
     }
-    egui::CollapsingHeader::new("Limits and check thresholds")
+    egui::CollapsingHeader::new(t.tr("diagnostics.limits"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             let targets: Vec<_> = settings::all()

@@ -22,16 +22,17 @@ const SIZES: [(u32, u32); 5] = [
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    egui::CollapsingHeader::new("Export")
+    let t = state.look.lang;
+    egui::CollapsingHeader::new(t.tr("export.heading"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             if let Some(job) = &state.exports.job {
                 ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
                 ui.label(job.describe());
                 let label = if job.cancelling() {
-                    "Cancelling…"
+                    t.tr("export.cancelling")
                 } else {
-                    "Cancel"
+                    t.tr("export.cancel")
                 };
                 if ui
                     .add_enabled(!job.cancelling(), egui::Button::new(label))
@@ -44,12 +45,12 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             form(ui, state);
             let path = state.exports.form.path.trim().to_owned();
             if ui
-                .add_enabled(!path.is_empty(), egui::Button::new("Export"))
+                .add_enabled(!path.is_empty(), egui::Button::new(t.tr("export.export")))
                 .clicked()
             {
                 let work = work(state, PathBuf::from(path));
                 state.exports.status = None;
-                state.exports.job = Some(ExportJob::start(state.scenario(), work));
+                state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
             }
             widgets::status(ui, &state.exports.status);
         });
@@ -57,13 +58,14 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     let name = state.scenario().name.clone();
+    let t = state.look.lang;
     let form = &mut state.exports.form;
     let before = form.kind;
-    egui::ComboBox::from_label("What")
-        .selected_text(form.kind.label())
+    egui::ComboBox::from_label(t.tr("export.what"))
+        .selected_text(form.kind.label(t))
         .show_ui(ui, |ui| {
             for kind in ExportKind::ALL {
-                ui.selectable_value(&mut form.kind, kind, kind.label());
+                ui.selectable_value(&mut form.kind, kind, kind.label(t));
             }
         });
     if form.kind != before || form.path.is_empty() {
@@ -75,29 +77,26 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
         form.path = format!("{name}{suffix}{}", form.kind.extension());
     }
     ui.horizontal(|ui| {
-        let label = ui.label("Output");
+        let label = ui.label(t.tr("export.output"));
         ui.text_edit_singleline(&mut form.path)
             .labelled_by(label.id);
     });
     if form.kind.is_video() {
-        egui::ComboBox::from_label("Size")
+        egui::ComboBox::from_label(t.tr("export.size"))
             .selected_text(format!("{}×{}", form.size.0, form.size.1))
             .show_ui(ui, |ui| {
                 for size in SIZES {
                     ui.selectable_value(&mut form.size, size, format!("{}×{}", size.0, size.1));
                 }
             });
-        ui.add(
-            egui::Slider::new(&mut form.fps, 0.0..=120.0)
-                .text("frame rate (frames/s, 0: one per sample)"),
-        );
+        ui.add(egui::Slider::new(&mut form.fps, 0.0..=120.0).text(t.tr("export.fps")));
         ui.horizontal(|ui| {
-            ui.checkbox(&mut form.light, "Light theme");
-            ui.checkbox(&mut form.composite, "Plot beside the view");
+            ui.checkbox(&mut form.light, t.tr("export.light"));
+            ui.checkbox(&mut form.composite, t.tr("export.composite"));
         });
         let frames = request(state, PathBuf::new()).frame_count(state.scenario());
         if let Ok(n) = frames {
-            ui.label(egui::RichText::new(format!("{n} frames")).small());
+            ui.label(egui::RichText::new(t.fmt("export.frames", &[("count", &n)])).small());
         }
     }
 }
@@ -120,6 +119,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             ..Overlays::default()
         },
         readout: state.look.readouts.then(|| state.scenario().name.clone()),
+        lang: state.look.lang,
     }
 }
 

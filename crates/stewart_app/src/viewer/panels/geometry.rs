@@ -12,7 +12,8 @@ use crate::viewer::state::ViewerState;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    egui::CollapsingHeader::new("Geometry")
+    let t = state.look.lang;
+    egui::CollapsingHeader::new(t.tr("geometry.heading"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             for key in [
@@ -24,7 +25,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
             actuators(ui, state);
             layout(ui, state);
-            egui::CollapsingHeader::new("Joint angles")
+            egui::CollapsingHeader::new(t.tr("geometry.joint_angles"))
                 .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
                     for i in 0..6 {
@@ -34,7 +35,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                         setting_slider(ui, state, Target::Geometry(GeometryKey::PlatformAngle(i)));
                     }
                 });
-            egui::CollapsingHeader::new("Pivot (rotation centre, platform frame)")
+            egui::CollapsingHeader::new(t.tr("geometry.pivot"))
                 .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
                     for i in 0..3 {
@@ -49,14 +50,23 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// legs only), or the servos' horns, rods, range, directions and trims, and the level
 /// home height.
 fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     let rotary = state.scenario().geometry.rotary().is_some();
     let mut chosen = None;
     ui.horizontal(|ui| {
-        ui.label("Actuators:");
-        if ui.selectable_label(!rotary, "Linear legs").clicked() && rotary {
+        ui.label(t.tr("geometry.actuators"));
+        if ui
+            .selectable_label(!rotary, t.tr("geometry.linear"))
+            .clicked()
+            && rotary
+        {
             chosen = Some(ActuatorKind::Linear);
         }
-        if ui.selectable_label(rotary, "Rotary servos").clicked() && !rotary {
+        if ui
+            .selectable_label(rotary, t.tr("geometry.rotary"))
+            .clicked()
+            && !rotary
+        {
             chosen = Some(ActuatorKind::Rotary);
         }
     });
@@ -80,15 +90,13 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
     };
     let home = settings::of(Target::Geometry(GeometryKey::HomeHeight));
     if ui
-        .button(format!("Level home height ({level:.4} m)"))
-        .on_hover_text(
-            "the height where the servos stand level with the platform centred and level",
-        )
+        .button(t.fmt("geometry.level_home", &[("value", &format!("{level:.4}"))]))
+        .on_hover_text(t.tr("geometry.level_home_tip"))
         .clicked()
     {
         state.apply(home, Some(level));
     }
-    egui::CollapsingHeader::new("Horn directions and trims")
+    egui::CollapsingHeader::new(t.tr("geometry.horns"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
             for i in 0..6 {
@@ -103,38 +111,50 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// Named layouts: choosing one, or moving its angle, rewrites all twelve joint angles.
 /// Angles edited one by one into no named layout show as "Custom".
 fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
-    ui.label("Layout (rewrites the joint angles):");
+    let t = state.look.lang;
+    ui.label(t.tr("geometry.layout"));
     let current = state.layout();
     let mut chosen = current;
     ui.horizontal(|ui| {
         let staggered = matches!(current, Some(Layout::Staggered { .. }));
         let paired = matches!(current, Some(Layout::Paired { .. }));
-        if ui.selectable_label(staggered, "Staggered (seed)").clicked() {
+        if ui
+            .selectable_label(staggered, t.tr("geometry.staggered"))
+            .clicked()
+        {
             chosen = Some(Layout::seed());
         }
-        if ui.selectable_label(paired, "Paired").clicked() {
+        if ui
+            .selectable_label(paired, t.tr("geometry.paired"))
+            .clicked()
+        {
             chosen = Some(Layout::paired(20.0));
         }
         if current.is_none() {
-            let _ = ui.selectable_label(true, "Custom");
+            let _ = ui.selectable_label(true, t.tr("geometry.custom"));
         }
     });
     match &mut chosen {
         Some(Layout::Staggered { offset_deg }) => {
-            ui.add(egui::Slider::new(offset_deg, 1.0..=59.0).text("platform offset (°)"));
+            ui.add(
+                egui::Slider::new(offset_deg, 1.0..=59.0).text(t.tr("geometry.platform_offset")),
+            );
         }
         Some(Layout::Paired {
             base_separation_deg,
             platform_separation_deg,
         }) => {
-            ui.add(egui::Slider::new(base_separation_deg, 1.0..=110.0).text("base separation (°)"));
+            ui.add(
+                egui::Slider::new(base_separation_deg, 1.0..=110.0)
+                    .text(t.tr("geometry.base_separation")),
+            );
             ui.add(
                 egui::Slider::new(platform_separation_deg, 1.0..=110.0)
-                    .text("platform separation (°)"),
+                    .text(t.tr("geometry.platform_separation")),
             );
         }
         None => {
-            ui.label(egui::RichText::new("The joint angles follow no named layout.").small());
+            ui.label(egui::RichText::new(t.tr("geometry.no_layout")).small());
         }
     }
     if chosen != current

@@ -12,7 +12,8 @@ use crate::viewer::state::ViewerState;
 pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
     let geometry = &state.scenario().geometry;
     let rotary = geometry.rotary().is_some();
-    ui.heading(if rotary { "Servos" } else { "Legs" });
+    let t = state.look.lang;
+    ui.heading(t.tr(if rotary { "legs.servos" } else { "legs.legs" }));
     let pose = state.pose();
     let frame = geometry.scene_frame(&pose, Vec::new());
     let letter = geometry.quantity().letter;
@@ -27,9 +28,9 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         let colour = Color32::from_rgb(r, g, b);
         let note = match (leg.status, rotary) {
             (LegStatus::Normal, _) => "",
-            (LegStatus::NearLimit, _) => " near limit",
-            (LegStatus::OverLimit, false) => " over stroke",
-            (LegStatus::OverLimit, true) => " past range",
+            (LegStatus::NearLimit, _) => t.tr("legs.near_limit"),
+            (LegStatus::OverLimit, false) => t.tr("legs.over_stroke"),
+            (LegStatus::OverLimit, true) => t.tr("legs.past_range"),
         };
         ui.horizontal(|ui| {
             ui.label(
@@ -40,7 +41,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             match angle {
                 None => ui.label(format!("{:.4} m", leg.length)),
                 Some(Some(a)) => ui.label(format!("{a:+.2}°")),
-                Some(None) => ui.label(RichText::new("out of reach").color(ERROR)),
+                Some(None) => ui.label(RichText::new(t.tr("legs.out_of_reach")).color(ERROR)),
             };
             if let Some(u) = leg.stroke_usage {
                 ui.add(
@@ -58,7 +59,8 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
                             } else {
                                 Color32::WHITE
                             };
-                            RichText::new(format!("{:.0}%{note}", 100.0 * u)).color(ink)
+                            RichText::new(format!("{:.0}% {note}", 100.0 * u).trim_end().to_owned())
+                                .color(ink)
                         }),
                 );
             }
@@ -68,18 +70,15 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         .actuated_conditioning(&pose)
         .map(|c| c.condition_number)
     {
-        Some(Some(k)) => ui.label(format!("Condition number {k:.2}")),
+        Some(Some(k)) => ui.label(t.fmt("legs.condition", &[("k", &format!("{k:.2}"))])),
         Some(None) => ui.label(
-            RichText::new(if rotary {
-                "Singular pose: the servos cannot control the platform in one direction"
+            RichText::new(t.tr(if rotary {
+                "legs.singular_servos"
             } else {
-                "Singular pose: the legs cannot control the platform in one direction"
-            })
+                "legs.singular_legs"
+            }))
             .color(ERROR),
         ),
-        None => ui.label(
-            RichText::new("A servo cannot reach its platform joint: no horn angle closes its rod")
-                .color(ERROR),
-        ),
+        None => ui.label(RichText::new(t.tr("legs.servo_unreachable")).color(ERROR)),
     };
 }

@@ -11,6 +11,7 @@ use stewart_link::safety::LinkState;
 use stewart_link::transport::list_ports;
 
 use super::widgets;
+use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
 
 /// The colour of each state: grey, amber, green, red.
@@ -24,18 +25,19 @@ pub fn state_colour(state: LinkState) -> Color32 {
 }
 
 /// The state in words.
-pub fn state_words(state: LinkState) -> &'static str {
-    match state {
-        LinkState::Disarmed => "DISARMED",
-        LinkState::Arming => "ARMING",
-        LinkState::Armed => "ARMED",
-        LinkState::Stopping => "STOPPING",
-    }
+pub fn state_words(lang: Lang, state: LinkState) -> &'static str {
+    lang.tr(match state {
+        LinkState::Disarmed => "link.disarmed",
+        LinkState::Arming => "link.arming",
+        LinkState::Armed => "link.armed",
+        LinkState::Stopping => "link.stopping",
+    })
 }
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    egui::CollapsingHeader::new("Link to hardware")
+    let t = state.look.lang;
+    egui::CollapsingHeader::new(t.tr("link.heading"))
         .default_open(state.look.expand_panels || state.link.connected())
         .show(ui, |ui| {
             if state.link.connected() {
@@ -43,8 +45,8 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             } else {
                 settings(ui, state);
                 if ui
-                    .button(RichText::new("Connect").strong())
-                    .on_hover_text("Start the stream, disarmed: nothing moves until ARM")
+                    .button(RichText::new(t.tr("link.connect")).strong())
+                    .on_hover_text(t.tr("link.connect_tip"))
                     .clicked()
                 {
                     state.connect_link();
@@ -59,6 +61,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     let Some(status) = state.link.sender_status() else {
         return;
     };
+    let t = state.look.lang;
     let colour = state_colour(status.state);
     egui::Frame::new()
         .fill(colour)
@@ -67,7 +70,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
             ui.label(
-                RichText::new(state_words(status.state))
+                RichText::new(state_words(t, status.state))
                     .size(28.0)
                     .strong()
                     .color(Color32::WHITE),
@@ -86,33 +89,40 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         .min_size(egui::vec2(width, 44.0))
     };
     if ui
-        .add(big("E-STOP  (Esc)", Color32::from_rgb(200, 20, 20)))
+        .add(big(t.tr("link.estop"), Color32::from_rgb(200, 20, 20)))
         .clicked()
     {
         state.link.estop();
     }
     let can_arm = status.state == LinkState::Disarmed && !state.link.stopping();
     if ui
-        .add_enabled(can_arm, big("ARM", Color32::from_rgb(30, 140, 60)))
-        .on_hover_text("Ramp from where the platform is to the pose shown, then follow it")
+        .add_enabled(
+            can_arm,
+            big(t.tr("link.arm"), Color32::from_rgb(30, 140, 60)),
+        )
+        .on_hover_text(t.tr("link.arm_tip"))
         .clicked()
     {
         state.link.arm();
     }
-    ui.label(format!(
-        "{} frames, {:.1} s; period error p99 {:.0} µs, max {:.0} µs; {}",
-        status.frames,
-        status.time,
-        status.period_error.p99_us,
-        status.period_error.max_us,
-        status.scheduling
+    ui.label(t.fmt(
+        "link.figures",
+        &[
+            ("frames", &status.frames),
+            ("time", &format!("{:.1}", status.time)),
+            ("p99", &format!("{:.0}", status.period_error.p99_us)),
+            ("max", &format!("{:.0}", status.period_error.max_us)),
+            ("scheduling", &scheduling_words(t, &status.scheduling)),
+        ],
     ));
-    if let Some((t, frame)) = &status.telemetry {
-        ui.label(format!(
-            "Controller reports: {} ({} frames, the last {:.1} s ago)",
-            crate::commands::link::telemetry_words(frame),
-            status.telemetry_frames,
-            (status.time - t).max(0.0)
+    if let Some((at, frame)) = &status.telemetry {
+        ui.label(t.fmt(
+            "link.telemetry",
+            &[
+                ("words", &crate::commands::link::telemetry_words(frame)),
+                ("frames", &status.telemetry_frames),
+                ("ago", &format!("{:.1}", (status.time - at).max(0.0))),
+            ],
         ));
     }
     if let Some(note) = &status.note {
@@ -120,33 +130,53 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     let lines = state.link.recent_lines();
     if !lines.is_empty() {
-        ui.label("Last frames (dry run):");
+        ui.label(t.tr("link.last_frames"));
         for line in lines.iter().rev().take(4) {
             ui.label(RichText::new(line).monospace().size(10.0));
         }
     }
     let label = if state.link.stopping() {
-        "Stopping…"
+        t.tr("link.stopping_button")
     } else {
-        "Disconnect"
+        t.tr("link.disconnect")
     };
     if ui
         .add_enabled(!state.link.stopping(), egui::Button::new(label))
-        .on_hover_text("E-stop, return home or hold as set, disarm, then close the port")
+        .on_hover_text(t.tr("link.disconnect_tip"))
         .clicked()
     {
         state.link.disconnect();
     }
 }
 
+/// How the sender thread is scheduled, in `lang` (the link crate says it in English).
+fn scheduling_words(lang: Lang, words: &str) -> String {
+    if let Some(rest) = words.strip_prefix("real-time (FIFO ") {
+        lang.fmt(
+            "link.scheduling_fifo",
+            &[("priority", &rest.trim_end_matches(')'))],
+        )
+    } else if words.starts_with("highest normal priority") {
+        lang.tr("link.scheduling_highest").to_owned()
+    } else if let Some(why) = words.strip_prefix("normal priority (could not raise it: ") {
+        lang.fmt(
+            "link.scheduling_normal",
+            &[("why", &why.trim_end_matches(')'))],
+        )
+    } else {
+        words.to_owned()
+    }
+}
+
 /// A combo box over a word choice; returns the new choice when changed.
-fn choice<T: Word>(ui: &mut egui::Ui, label: &str, current: T) -> Option<T> {
+fn choice<T: Word>(ui: &mut egui::Ui, lang: Lang, label: &str, current: T) -> Option<T> {
     let mut chosen = current;
-    egui::ComboBox::from_label(label)
-        .selected_text(current.word())
+    let words = |word: &str| lang.tr(&format!("link.word.{word}"));
+    egui::ComboBox::from_label(lang.tr(label))
+        .selected_text(words(current.word()))
         .show_ui(ui, |ui| {
             for (value, word) in T::WORDS {
-                ui.selectable_value(&mut chosen, *value, *word);
+                ui.selectable_value(&mut chosen, *value, words(word));
             }
         });
     (chosen != current).then_some(chosen)
@@ -156,14 +186,15 @@ fn choice<T: Word>(ui: &mut egui::Ui, label: &str, current: T) -> Option<T> {
 fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
     let link = state.scenario().link.clone();
     let rotary = state.scenario().geometry.rotary().is_some();
-    if let Some(t) = choice::<LinkTransport>(ui, "Transport", link.transport) {
-        state.edit_link(|l| l.transport = t);
+    let t = state.look.lang;
+    if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
+        state.edit_link(|l| l.transport = chosen);
     }
     match link.transport {
         LinkTransport::Serial => {
             let mut port = link.port.clone().unwrap_or_default();
             ui.horizontal(|ui| {
-                let label = ui.label("Port");
+                let label = ui.label(t.tr("link.port"));
                 if ui
                     .text_edit_singleline(&mut port)
                     .labelled_by(label.id)
@@ -173,9 +204,9 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                     state.edit_link(|l| l.port = port);
                 }
             });
-            ui.menu_button("Choose a port…", |ui| match list_ports() {
+            ui.menu_button(t.tr("link.choose_port"), |ui| match list_ports() {
                 Ok(ports) if ports.is_empty() => {
-                    ui.label("No serial ports found.");
+                    ui.label(t.tr("link.no_ports"));
                 }
                 Ok(ports) => {
                     for p in ports {
@@ -194,7 +225,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                 .add(
                     egui::DragValue::new(&mut baud)
                         .range(1..=12_000_000)
-                        .suffix(" baud"),
+                        .suffix(t.tr("link.baud_suffix")),
                 )
                 .changed()
             {
@@ -204,11 +235,11 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
         LinkTransport::Udp => {
             let mut address = link.address.clone().unwrap_or_default();
             ui.horizontal(|ui| {
-                let label = ui.label("Address");
+                let label = ui.label(t.tr("link.address"));
                 if ui
                     .text_edit_singleline(&mut address)
                     .labelled_by(label.id)
-                    .on_hover_text("HOST:PORT, such as 192.168.1.20:9000")
+                    .on_hover_text(t.tr("link.address_tip"))
                     .changed()
                 {
                     let address = (!address.trim().is_empty()).then(|| address.trim().to_owned());
@@ -217,31 +248,33 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
             });
         }
         LinkTransport::File => {
-            ui.label("Dry run: the frames are shown here; nothing leaves the computer.");
+            ui.label(t.tr("link.dry_run"));
         }
     }
     let mut rate = link.rate_hz;
     if ui
         .add(
             egui::Slider::new(&mut rate, RATES_HZ.0..=RATES_HZ.1)
-                .text("rate (Hz)")
+                .text(t.tr("link.rate"))
                 .logarithmic(true),
         )
         .changed()
     {
         state.edit_link(|l| l.rate_hz = rate.round());
     }
-    if let Some(f) = choice::<LinkFormat>(ui, "Format", link.format) {
+    if let Some(f) = choice::<LinkFormat>(ui, t, "link.format", link.format) {
         state.edit_link(|l| l.format = f);
     }
     if rotary {
-        if let Some(o) = choice::<LinkOutput>(ui, "Values sent", link.output) {
+        if let Some(o) = choice::<LinkOutput>(ui, t, "link.output", link.output) {
             state.edit_link(|l| l.output = o);
         }
         if link.output == LinkOutput::Pulse {
             let (mut zero, mut per) = (link.pulse_zero_us, link.pulse_us_per_deg);
-            let a = ui.add(egui::Slider::new(&mut zero, 500.0..=2500.0).text("pulse at 0° (µs)"));
-            let b = ui.add(egui::Slider::new(&mut per, -20.0..=20.0).text("µs per degree"));
+            let a =
+                ui.add(egui::Slider::new(&mut zero, 500.0..=2500.0).text(t.tr("link.pulse_zero")));
+            let b =
+                ui.add(egui::Slider::new(&mut per, -20.0..=20.0).text(t.tr("link.pulse_per_deg")));
             if a.changed() || b.changed() {
                 state.edit_link(|l| (l.pulse_zero_us, l.pulse_us_per_deg) = (zero, per));
             }
@@ -249,23 +282,24 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     let mut ramp = link.ramp_s;
     if ui
-        .add(egui::Slider::new(&mut ramp, 0.0..=10.0).text("arming ramp (s)"))
+        .add(egui::Slider::new(&mut ramp, 0.0..=10.0).text(t.tr("link.ramp")))
         .changed()
     {
         state.edit_link(|l| l.ramp_s = ramp);
     }
-    if let Some(stop) = choice::<LinkStop>(ui, "On e-stop", link.stop) {
+    if let Some(stop) = choice::<LinkStop>(ui, t, "link.stop", link.stop) {
         state.edit_link(|l| l.stop = stop);
     }
-    egui::CollapsingHeader::new("Channels").show(ui, |ui| channels(ui, state));
+    egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, state));
     if let Some(e) = &state.link_error {
-        ui.label(RichText::new(format!("Not applied: {e}")).color(widgets::ERROR));
+        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(widgets::ERROR));
     }
 }
 
 /// Channel k: which actuator, scale, offset, reversed.
 fn channels(ui: &mut egui::Ui, state: &mut ViewerState) {
     let link = state.scenario().link.clone();
+    let t = state.look.lang;
     let unit = if state.scenario().geometry.rotary().is_some() {
         "°"
     } else {
@@ -275,11 +309,11 @@ fn channels(ui: &mut egui::Ui, state: &mut ViewerState) {
         .striped(true)
         .show(ui, |ui| {
             for head in [
-                "ch",
-                "actuator",
-                "scale",
-                &format!("offset ({unit})"),
-                "reversed",
+                t.tr("link.col_channel"),
+                t.tr("link.col_actuator"),
+                t.tr("link.col_scale"),
+                &t.fmt("link.col_offset", &[("unit", &unit)]),
+                t.tr("link.col_reversed"),
             ] {
                 ui.label(head);
             }

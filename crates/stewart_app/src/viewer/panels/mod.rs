@@ -80,13 +80,13 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
                 .corner_radius(4.0)
                 .show(ui, |ui| {
                     ui.label(
-                        egui::RichText::new(link::state_words(status.state))
+                        egui::RichText::new(link::state_words(state.look.lang, status.state))
                             .size(20.0)
                             .strong()
                             .color(egui::Color32::WHITE),
                     );
                     let stop = egui::Button::new(
-                        egui::RichText::new("E-STOP (Esc)")
+                        egui::RichText::new(state.look.lang.tr("link.estop"))
                             .strong()
                             .color(egui::Color32::WHITE),
                     )

@@ -10,6 +10,7 @@ use stewart_kinematics::trajectory::{
 };
 
 use super::widgets::{self, edit_error, setting_slider};
+use crate::i18n::words;
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
 use crate::viewer::teleop;
@@ -27,14 +28,19 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    ui.heading("Motion");
+    let t = state.look.lang;
+    ui.heading(t.tr("motion.heading"));
     ui.horizontal(|ui| {
         ui.selectable_value(
             &mut state.playback.mode,
             MotionMode::Trajectory,
-            "Trajectory",
+            t.tr("motion.trajectory"),
         );
-        ui.selectable_value(&mut state.playback.mode, MotionMode::Manual, "Manual pose");
+        ui.selectable_value(
+            &mut state.playback.mode,
+            MotionMode::Manual,
+            t.tr("motion.manual"),
+        );
     });
     match state.playback.mode {
         MotionMode::Manual => manual(ui, state),
@@ -44,6 +50,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     let home = state.scenario().geometry.home_pose().to_coordinates();
     let mut c = state.playback.manual.to_coordinates();
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
@@ -54,7 +61,7 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
         } else {
             home[k]
         };
-        let label = format!("{name} ({})", unit.symbol());
+        let label = format!("{} ({})", words::coordinate(t, name), unit.symbol());
         if ui
             .add(egui::Slider::new(&mut value, centre - reach..=centre + reach).text(label))
             .changed()
@@ -63,20 +70,20 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     }
     state.playback.manual = Pose::from_coordinates(c);
-    if ui.button("Home").clicked() {
+    if ui.button(t.tr("motion.home")).clicked() {
         state.playback.manual = state.scenario().geometry.home_pose();
         state.teleop.blocked = None;
     }
     reach(ui, state);
-    ui.label("Keys: W/S x, A/D y, R/F z, J/L roll, I/K pitch, Q/E yaw; Shift: fine")
-        .on_hover_text("Held keys move the pose at the rates below; a gamepad moves it while its left bumper is held (sticks: x/y, z/yaw; D-pad: roll/pitch). When the link is armed, the platform follows.");
+    ui.label(t.tr("motion.keys"))
+        .on_hover_text(t.tr("motion.keys_tip"));
     let rates = &mut state.teleop.rates;
     ui.add(
         egui::Slider::new(&mut rates.linear_m_s, 0.001..=1.0)
             .logarithmic(true)
-            .text("move rate (m/s)"),
+            .text(t.tr("motion.move_rate")),
     );
-    ui.add(egui::Slider::new(&mut rates.angular_deg_s, 1.0..=90.0).text("turn rate (°/s)"));
+    ui.add(egui::Slider::new(&mut rates.angular_deg_s, 1.0..=90.0).text(t.tr("motion.turn_rate")));
     if let Some(words) = &state.teleop.pad_words {
         ui.label(words);
     }
@@ -85,23 +92,31 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// The reachability indicator: green while the pose can be taken, red with the reason
 /// when a move stopped at the edge or the pose is out of reach.
 fn reach(ui: &mut egui::Ui, state: &ViewerState) {
+    let t = state.look.lang;
     let now = teleop::unreachable(&state.scenario().geometry, &state.playback.manual);
     let (colour, words) = match (now, &state.teleop.blocked) {
-        (Some(why), _) => (widgets::ERROR, format!("Out of reach: {why}")),
-        (None, Some(why)) => (widgets::ERROR, format!("Stopped at the edge: {why}")),
-        (None, None) => (widgets::OK, "Reachable".to_owned()),
+        (Some(why), _) => (
+            widgets::ERROR,
+            t.fmt("motion.out_of_reach", &[("why", &why.words(t))]),
+        ),
+        (None, Some(why)) => (
+            widgets::ERROR,
+            t.fmt("motion.at_edge", &[("why", &why.words(t))]),
+        ),
+        (None, None) => (widgets::OK, t.tr("motion.reachable").to_owned()),
     };
     ui.label(egui::RichText::new(words).color(colour).strong());
 }
 
 fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     let current = TrajectoryChoice::of(&state.scenario().motion.trajectory);
-    egui::ComboBox::from_label("Kind")
-        .selected_text(current.label())
+    egui::ComboBox::from_label(t.tr("motion.kind"))
+        .selected_text(words::trajectory_choice(t, current))
         .show_ui(ui, |ui| {
             for choice in TrajectoryChoice::ALL {
                 if ui
-                    .selectable_label(choice == current, choice.label())
+                    .selectable_label(choice == current, words::trajectory_choice(t, choice))
                     .clicked()
                 {
                     state.switch_trajectory(choice);
@@ -136,8 +151,10 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     for (i, name) in CHANNEL_NAMES.into_iter().enumerate() {
-        egui::CollapsingHeader::new(format!("{name} channel"))
+        let name = words::coordinate(t, name);
+        egui::CollapsingHeader::new(t.fmt("motion.channel", &[("axis", &name)]))
             .default_open(i == 0 || state.look.expand_panels)
             .show(ui, |ui| {
                 for key in [
@@ -155,7 +172,7 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
                 if let Some(wave) = wave {
                     let mut chosen = wave;
                     ui.horizontal(|ui| {
-                        ui.label(format!("{name} wave"));
+                        ui.label(t.fmt("motion.wave", &[("axis", &name)]));
                         ui.selectable_value(&mut chosen, Wave::Sin, "sin");
                         ui.selectable_value(&mut chosen, Wave::Cos, "cos");
                     });
@@ -180,32 +197,29 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
     let Trajectory::Keyframes(k) = &state.scenario().motion.trajectory else {
         return;
     };
+    let t = state.look.lang;
     let mut keys: Vec<Keyframe> = k.keys().to_vec();
     let mut interpolation = k.interpolation();
     let mut changed = false;
     ui.horizontal(|ui| {
-        ui.label("Interpolation");
+        ui.label(t.tr("motion.interpolation"));
         for (value, label) in [
-            (Interpolation::Linear, "linear"),
-            (Interpolation::Smoothstep, "smoothstep"),
-            (Interpolation::Cubic, "cubic spline"),
+            (Interpolation::Linear, "motion.linear"),
+            (Interpolation::Smoothstep, "motion.smoothstep"),
+            (Interpolation::Cubic, "motion.cubic"),
         ] {
             changed |= ui
-                .selectable_value(&mut interpolation, value, label)
+                .selectable_value(&mut interpolation, value, t.tr(label))
                 .changed();
         }
     });
     egui::Grid::new("keyframes").striped(true).show(ui, |ui| {
-        let heads = [
-            "t (s)",
-            "x (m)",
-            "y (m)",
-            "z (m)",
-            "roll (°)",
-            "pitch (°)",
-            "yaw (°)",
-        ];
-        let columns = heads.map(|head| ui.label(head).id);
+        let mut heads = vec!["t (s)".to_owned()];
+        for (k, name) in words::COORDINATES.into_iter().enumerate() {
+            let unit = if k < 3 { "m" } else { "°" };
+            heads.push(format!("{} ({unit})", words::coordinate(t, name)));
+        }
+        let columns: Vec<egui::Id> = heads.into_iter().map(|head| ui.label(head).id).collect();
         ui.end_row();
         for key in &mut keys {
             let mut c = key.pose.to_coordinates();
@@ -230,7 +244,7 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     ui.horizontal(|ui| {
-        if ui.button("Add key").clicked()
+        if ui.button(t.tr("motion.add_key")).clicked()
             && let Some(last) = keys.last().copied()
         {
             keys.push(Keyframe {
@@ -240,7 +254,7 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
             changed = true;
         }
         if ui
-            .add_enabled(keys.len() > 1, egui::Button::new("Remove last key"))
+            .add_enabled(keys.len() > 1, egui::Button::new(t.tr("motion.remove_key")))
             .clicked()
         {
             keys.pop();

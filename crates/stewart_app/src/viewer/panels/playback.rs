@@ -5,33 +5,50 @@ use crate::viewer::state::ViewerState;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    ui.heading("Playback");
+    let t = state.look.lang;
+    ui.heading(t.tr("playback.heading"));
     ui.horizontal(|ui| {
         let label = if state.playback.playing {
-            "Pause"
+            t.tr("playback.pause")
         } else {
-            "Play"
+            t.tr("playback.play")
         };
-        if ui.button(label).on_hover_text("Space").clicked() {
+        if ui
+            .button(label)
+            .on_hover_text(t.tr("playback.key_space"))
+            .clicked()
+        {
             state.playback.playing = !state.playback.playing;
             state.playback.mode = MotionMode::Trajectory;
         }
-        if ui.button("Step back").on_hover_text("←").clicked() {
+        if ui
+            .button(t.tr("playback.step_back"))
+            .on_hover_text("←")
+            .clicked()
+        {
             state.step(-1.0);
         }
-        if ui.button("Step").on_hover_text("→").clicked() {
+        if ui
+            .button(t.tr("playback.step"))
+            .on_hover_text("→")
+            .clicked()
+        {
             state.step(1.0);
         }
-        if ui.button("Start").on_hover_text("Home").clicked() {
+        if ui
+            .button(t.tr("playback.start"))
+            .on_hover_text(t.tr("playback.key_home"))
+            .clicked()
+        {
             state.playback.time = 0.0;
         }
-        ui.checkbox(&mut state.playback.looping, "Loop");
+        ui.checkbox(&mut state.playback.looping, t.tr("playback.loop"));
     });
     let duration = state.duration();
-    ui.add(egui::Slider::new(&mut state.playback.time, 0.0..=duration).text("time (s)"));
+    ui.add(egui::Slider::new(&mut state.playback.time, 0.0..=duration).text(t.tr("playback.time")));
     ui.add(
         egui::Slider::new(&mut state.playback.speed, 0.1..=4.0)
             .logarithmic(true)
-            .text("speed (×)"),
+            .text(t.tr("playback.speed")),
     );
 }

@@ -4,6 +4,7 @@
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoints, VLine};
 
+use crate::i18n::words;
 use crate::viewer::history::History;
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
@@ -39,6 +40,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// The legend: a swatch and the name of each curve, the limits and the time marker.
 fn legend(ui: &mut egui::Ui, state: &ViewerState) {
     let quantity = state.scenario().geometry.quantity();
+    let t = state.look.lang;
     let width = line_width(state);
     let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
         ui.horizontal(|ui| {
@@ -69,18 +71,18 @@ fn legend(ui: &mut egui::Ui, state: &ViewerState) {
         );
     }
     let [min, max] = state.scenario().geometry.quantity_limits();
-    for (name, limit) in [("max", max), ("min", min)] {
+    for (name, limit) in [("plot.max", max), ("plot.min", min)] {
         if limit.is_some() {
             swatch(
                 ui,
                 Color32::GRAY,
-                format!("{}{name}", quantity.symbol),
+                format!("{}{}", quantity.symbol, t.tr(name)),
                 true,
             );
         }
     }
     if state.playback.mode == MotionMode::Trajectory {
-        swatch(ui, marker_colour(state), "now".to_owned(), false);
+        swatch(ui, marker_colour(state), t.tr("plot.now").to_owned(), false);
     }
 }
 
@@ -100,15 +102,20 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
     let quantity = geometry.quantity();
     let [min, max] = geometry.quantity_limits();
     let manual = state.playback.mode == MotionMode::Manual;
-    let x_label = if manual {
-        "seconds ago (manual pose history)"
+    let t = state.look.lang;
+    let x_label = t.tr(if manual {
+        "plot.seconds_ago"
     } else {
-        "time (s)"
-    };
+        "plot.time"
+    });
     let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
         .allow_drag(manual)
         .x_axis_label(x_label)
-        .y_axis_label(format!("{} ({})", quantity.name, quantity.unit));
+        .y_axis_label(format!(
+            "{} ({})",
+            words::quantity_name(t, &quantity),
+            quantity.unit
+        ));
     if manual {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
@@ -140,10 +147,10 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
                 );
             }
         }
-        for (name, limit) in [("min", min), ("max", max)] {
+        for (name, limit) in [("plot.min", min), ("plot.max", max)] {
             if let Some(v) = limit {
                 plot.hline(
-                    HLine::new(format!("{}{name}", quantity.symbol), v)
+                    HLine::new(format!("{}{}", quantity.symbol, t.tr(name)), v)
                         .style(LineStyle::dashed_loose())
                         .color(Color32::GRAY)
                         .width(width * 0.7),
@@ -153,7 +160,7 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
         if !manual {
             let now = state.scenario().motion.sampling.start() + state.playback.time;
             plot.vline(
-                VLine::new("now", now)
+                VLine::new(t.tr("plot.now"), now)
                     .color(marker_colour(state))
                     .width(width),
             );

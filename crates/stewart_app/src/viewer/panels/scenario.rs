@@ -6,13 +6,15 @@ use stewart_kinematics::Scenario;
 use stewart_kinematics::scenario::presets;
 
 use super::widgets;
+use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    ui.heading("Scenario");
+    let t = state.look.lang;
+    ui.heading(t.tr("scenario.heading"));
     let current = state.scenario().name.clone();
-    egui::ComboBox::from_label("Preset")
+    egui::ComboBox::from_label(t.tr("scenario.preset"))
         .selected_text(&current)
         .show_ui(ui, |ui| {
             for name in presets::names() {
@@ -32,7 +34,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.label(egui::RichText::new(&state.scenario().description).small());
     }
     ui.horizontal(|ui| {
-        let label = ui.label("File");
+        let label = ui.label(t.tr("scenario.file"));
         ui.add(
             egui::TextEdit::singleline(&mut state.files.path)
                 .hint_text("scenario.toml")
@@ -42,25 +44,25 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         let path = PathBuf::from(state.files.path.trim());
         let has_path = !state.files.path.trim().is_empty();
         if ui
-            .add_enabled(has_path, egui::Button::new("Open"))
+            .add_enabled(has_path, egui::Button::new(t.tr("scenario.open")))
             .clicked()
         {
             state.open_file(&path);
         }
         if ui
-            .add_enabled(has_path, egui::Button::new("Save"))
+            .add_enabled(has_path, egui::Button::new(t.tr("scenario.save")))
             .clicked()
         {
             state.save_file(&path);
         }
     });
-    egui::ComboBox::from_label("Scenarios in this folder")
-        .selected_text("choose…")
+    egui::ComboBox::from_label(t.tr("scenario.in_folder"))
+        .selected_text(t.tr("scenario.choose"))
         .show_ui(ui, |ui| {
             // Read while the list is open, at most once a second.
             let here = state.files.scenario_files().to_vec();
             if here.is_empty() {
-                ui.label("no scenario file (.toml with [geometry]) here");
+                ui.label(t.tr("scenario.none_here"));
             }
             for file in here {
                 let name = file.display().to_string();
@@ -72,16 +74,15 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         });
     widgets::status(ui, &state.files.status);
     ui.horizontal(|ui| {
-        ui.checkbox(&mut state.look.light_theme, "Light theme");
-        ui.checkbox(&mut state.look.presentation, "Presentation (P)")
-            .on_hover_text("Light colours, large text, control panels hidden; P or Esc leaves");
+        ui.checkbox(&mut state.look.light_theme, t.tr("scenario.light_theme"));
+        ui.checkbox(&mut state.look.presentation, t.tr("scenario.presentation"))
+            .on_hover_text(t.tr("scenario.presentation_tip"));
     });
+    language(ui, state);
     if state.session.folder.is_some()
         && ui
-            .button("Reset to defaults")
-            .on_hover_text(
-                "Forget the saved session (scenario, camera, panels, theme, window size) and return the look to its defaults",
-            )
+            .button(t.tr("scenario.reset"))
+            .on_hover_text(t.tr("scenario.reset_tip"))
             .clicked()
     {
         state.reset_to_defaults();
@@ -90,4 +91,25 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     if let Some(note) = &state.session.note {
         ui.label(egui::RichText::new(note).color(widgets::WARNING).small());
     }
+}
+
+/// The interface's language: English or Chinese (Chinese only with a font that has it).
+fn language(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let has_font = crate::i18n::fonts::cjk().is_some();
+    ui.horizontal(|ui| {
+        ui.label(t.tr("scenario.language"));
+        for lang in Lang::ALL {
+            let usable = lang == Lang::En || has_font;
+            let button = ui
+                .add_enabled(
+                    usable,
+                    egui::Button::selectable(state.look.lang == lang, lang.own_name()),
+                )
+                .on_disabled_hover_text(t.tr("scenario.no_cjk_font"));
+            if button.clicked() {
+                state.look.lang = lang;
+            }
+        }
+    });
 }

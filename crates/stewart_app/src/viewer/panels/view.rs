@@ -6,34 +6,31 @@ use egui::Color32;
 use crate::viewer::state::ViewerState;
 use crate::viewer::view3d::SceneCallback;
 
-/// Standard views: label, azimuth and elevation (MATLAB's `view(az, el)`).
+/// Standard views: the label's key, azimuth and elevation (MATLAB's `view(az, el)`).
 const VIEWS: [(&str, f32, f32); 4] = [
-    ("Iso", 135.0, 20.0),
-    ("Front", 0.0, 0.0),
-    ("Side", 90.0, 0.0),
-    ("Top", 0.0, 89.5),
+    ("view.iso", 135.0, 20.0),
+    ("view.front", 0.0, 0.0),
+    ("view.side", 90.0, 0.0),
+    ("view.top", 0.0, 89.5),
 ];
 
 /// The Screenshot menu: what, how large, background; Save (or F12 with these choices).
 fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
     use crate::viewer::shots::{ShotKind, ShotScale};
+    let t = state.look.lang;
     let shots = &mut state.shots;
-    ui.radio_value(&mut shots.kind, ShotKind::View, "3D view");
-    ui.radio_value(
-        &mut shots.kind,
-        ShotKind::Window,
-        "Whole window (as on screen)",
-    );
+    ui.radio_value(&mut shots.kind, ShotKind::View, t.tr("view.shot_view"));
+    ui.radio_value(&mut shots.kind, ShotKind::Window, t.tr("view.shot_window"));
     ui.add_enabled_ui(shots.kind == ShotKind::View, |ui| {
         ui.horizontal(|ui| {
             for (scale, words) in ShotScale::ALL {
                 ui.radio_value(&mut shots.scale, scale, words);
             }
         });
-        ui.checkbox(&mut shots.transparent, "Transparent background");
+        ui.checkbox(&mut shots.transparent, t.tr("view.transparent"));
     });
     if ui
-        .add_enabled(!shots.busy(), egui::Button::new("Save PNG"))
+        .add_enabled(!shots.busy(), egui::Button::new(t.tr("view.save_png")))
         .clicked()
     {
         state.take_screenshot();
@@ -43,9 +40,10 @@ fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     if state.look.presentation {
         ui.label(
-            egui::RichText::new("Presentation: P or Esc to leave")
+            egui::RichText::new(t.tr("view.presentation_note"))
                 .small()
                 .weak(),
         );
@@ -53,26 +51,22 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         // Wrapped: a narrow window keeps every switch reachable.
         ui.horizontal_wrapped(|ui| {
             for (label, az, el) in VIEWS {
-                if ui.button(label).clicked() {
+                if ui.button(t.tr(label)).clicked() {
                     state.look_from(az, el);
                 }
             }
-            if ui.button("Reset view").clicked() {
+            if ui.button(t.tr("view.reset")).clicked() {
                 state.look_from(VIEWS[0].1, VIEWS[0].2);
             }
-            ui.checkbox(&mut state.look.show_path, "Path");
-            ui.checkbox(&mut state.look.platform_axes, "Platform axes");
-            ui.checkbox(&mut state.look.coloured_legs, "Leg colours")
-                .on_hover_text(
-                    "Each leg in the colour of its curve in the plot; off: one colour for all",
-                );
-            ui.checkbox(&mut state.look.labels, "Labels")
-                .on_hover_text("L1…L6 (S1…S6 for servos) beside the legs");
-            ui.checkbox(&mut state.look.readouts, "Readouts")
-                .on_hover_text(
-                    "Time, pose and the six values over the view (and in exported frames)",
-                );
-            ui.menu_button("Screenshot (F12)", |ui| screenshot_menu(ui, state));
+            ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
+            ui.checkbox(&mut state.look.platform_axes, t.tr("view.platform_axes"));
+            ui.checkbox(&mut state.look.coloured_legs, t.tr("view.leg_colours"))
+                .on_hover_text(t.tr("view.leg_colours_tip"));
+            ui.checkbox(&mut state.look.labels, t.tr("view.labels"))
+                .on_hover_text(t.tr("view.labels_tip"));
+            ui.checkbox(&mut state.look.readouts, t.tr("view.readouts"))
+                .on_hover_text(t.tr("view.readouts_tip"));
+            ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state));
         });
         super::widgets::status(ui, &state.shots.status);
     }
@@ -88,7 +82,17 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.painter().text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
-            format!("The 3D view cannot be drawn: {missing}."),
+            t.fmt(
+                "view.cannot_draw",
+                &[(
+                    "why",
+                    &if missing.is_empty() {
+                        t.tr("view.no_renderer")
+                    } else {
+                        missing.as_str()
+                    },
+                )],
+            ),
             egui::FontId::proportional(14.0),
             ui.visuals().warn_fg_color,
         );

@@ -3,6 +3,8 @@
 use egui::{Color32, RichText};
 use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
 
+use crate::i18n::Lang;
+use crate::i18n::words::{setting_label, setting_label_with_unit};
 use crate::viewer::files::Status;
 use crate::viewer::state::ViewerState;
 
@@ -22,13 +24,14 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
         return;
     }
     let current = setting.get(state.scenario());
+    let t = state.look.lang;
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
         if setting.optional() {
             let mut on = current.is_some();
             if ui
                 .checkbox(&mut on, "")
-                .on_hover_text(format!("use a {} limit", setting.label))
+                .on_hover_text(t.fmt("widgets.use_limit", &[("name", &setting_label(t, setting))]))
                 .changed()
             {
                 edit = Some(on.then(|| default_on(setting, state)));
@@ -37,15 +40,20 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
         match current {
             Some(value) => {
                 let mut v = value;
-                let response = ui.add(slider(setting, &mut v));
+                let response = ui.add(slider(t, setting, &mut v));
                 if response.changed() {
                     edit = Some(Some(v));
                 }
                 response.context_menu(|ui| {
                     let default = setting.default_for(state.scenario());
                     let text = default.map_or_else(
-                        || "Switch off (default)".to_owned(),
-                        |d| format!("Reset to default ({d} {})", setting.unit.symbol()),
+                        || t.tr("widgets.switch_off").to_owned(),
+                        |d| {
+                            t.fmt(
+                                "widgets.reset_to",
+                                &[("value", &d), ("unit", &setting.unit.symbol())],
+                            )
+                        },
                     );
                     if ui.button(text).clicked() {
                         edit = Some(default);
@@ -54,7 +62,10 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                 });
             }
             None => {
-                ui.label(format!("{}: off", setting.label_with_unit()));
+                ui.label(t.fmt(
+                    "widgets.off",
+                    &[("name", &setting_label_with_unit(t, setting))],
+                ));
             }
         }
     });
@@ -70,11 +81,11 @@ fn default_on(setting: &Setting, state: &ViewerState) -> f64 {
         .unwrap_or(*setting.range.end())
 }
 
-fn slider<'a>(setting: &Setting, value: &'a mut f64) -> egui::Slider<'a> {
+fn slider<'a>(lang: Lang, setting: &Setting, value: &'a mut f64) -> egui::Slider<'a> {
     let range = setting.range.clone();
     let logarithmic = *range.start() > 0.0 && range.end() / range.start() > 1000.0;
     let s = egui::Slider::new(value, range)
-        .text(setting.label_with_unit())
+        .text(setting_label_with_unit(lang, setting))
         .clamping(egui::SliderClamping::Never)
         .logarithmic(logarithmic);
     if setting.unit == Unit::Count {
@@ -106,6 +117,8 @@ pub fn edit_error(ui: &mut egui::Ui, state: &ViewerState, groups: &[Group]) {
     if let Some((group, e)) = &state.edit_error
         && groups.contains(group)
     {
-        ui.label(RichText::new(format!("Not applied: {e}")).color(ERROR));
+        ui.label(
+            RichText::new(state.look.lang.fmt("widgets.not_applied", &[("why", e)])).color(ERROR),
+        );
     }
 }

@@ -1,0 +1,68 @@
+//! Chinese needs a font the system has (egui's own fonts have no CJK glyphs): the first of
+//! the renderer's Chinese families that fontdb finds (WenQuanYi Micro Hei on Debian,
+//! Microsoft YaHei on Windows, PingFang SC on macOS, …). Without one, Chinese falls back
+//! to English with a note, never to boxes.
+
+use std::sync::OnceLock;
+
+use super::Lang;
+
+/// A font with Simplified Chinese.
+pub struct CjkFont {
+    /// Its family name, as SVG and PDF name it.
+    pub family: String,
+    /// The font file's bytes.
+    pub data: Vec<u8>,
+    /// The face's index in a collection (`.ttc`).
+    pub index: u32,
+}
+
+/// The system's Chinese font (searched once per process; `FONTCONFIG_FILE` narrows the
+/// search as it does for every fontconfig program).
+pub fn cjk() -> Option<&'static CjkFont> {
+    static FONT: OnceLock<Option<CjkFont>> = OnceLock::new();
+    FONT.get_or_init(|| {
+        let mut db = fontdb::Database::new();
+        db.load_system_fonts();
+        find(&db)
+    })
+    .as_ref()
+}
+
+/// The first family of [`stewart_render::text::CJK`] that `db` has, regular weight.
+pub fn find(db: &fontdb::Database) -> Option<CjkFont> {
+    stewart_render::text::CJK.iter().find_map(|name| {
+        let id = db.query(&fontdb::Query {
+            families: &[fontdb::Family::Name(name)],
+            ..fontdb::Query::default()
+        })?;
+        let family = db.face(id)?.families.first()?.0.clone();
+        db.with_face_data(id, |data, index| CjkFont {
+            family,
+            data: data.to_vec(),
+            index,
+        })
+    })
+}
+
+/// The language to use when `wanted` was asked for and a Chinese font is (or is not)
+/// there: Chinese without a font falls back to English, with the note to show once.
+pub fn usable(wanted: Lang, font_found: bool) -> (Lang, Option<String>) {
+    if wanted == Lang::Zh && !font_found {
+        (
+            Lang::En,
+            Some(
+                "no font with Chinese characters was found (on Debian: apt-get install fonts-wqy-microhei); \
+                 showing English instead"
+                    .to_owned(),
+            ),
+        )
+    } else {
+        (wanted, None)
+    }
+}
+
+/// [`usable`] with this system's fonts.
+pub fn usable_here(wanted: Lang) -> (Lang, Option<String>) {
+    usable(wanted, wanted == Lang::En || cjk().is_some())
+}

@@ -1,0 +1,385 @@
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use stewart_kinematics::{Finding, FindingKind, Geometry, Layout, Scenario, settings};
+
+use super::words::{architecture, finding, setting_label};
+use super::{Lang, catalogue, fill, keys};
+
+/// The `{name}` placeholders of a text.
+fn placeholders(text: &str) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    let mut rest = text;
+    while let Some(open) = rest.find('{') {
+        let after = &rest[open + 1..];
+        let Some(close) = after.find('}') else { break };
+        out.insert(after[..close].to_owned());
+        rest = &after[close + 1..];
+    }
+    out
+}
+
+#[test]
+fn both_catalogues_have_the_same_keys_and_placeholders() {
+    let en: BTreeSet<&str> = keys(Lang::En).collect();
+    let zh: BTreeSet<&str> = keys(Lang::Zh).collect();
+    let only_en: Vec<_> = en.difference(&zh).collect();
+    let only_zh: Vec<_> = zh.difference(&en).collect();
+    assert!(only_en.is_empty(), "missing from zh.toml: {only_en:?}");
+    assert!(only_zh.is_empty(), "missing from en.toml: {only_zh:?}");
+    assert!(en.len() > 250, "{} keys", en.len());
+    for key in en {
+        assert_eq!(
+            placeholders(Lang::En.tr(key)),
+            placeholders(Lang::Zh.tr(key)),
+            "`{key}` has other placeholders in zh.toml"
+        );
+    }
+}
+
+#[test]
+fn the_chinese_catalogue_is_chinese() {
+    // Every entry with words in it carries Chinese characters (symbols, units and
+    // letters such as `x` stand alone).
+    for key in keys(Lang::Zh) {
+        let text = Lang::Zh.tr(key);
+        let stripped: String = fill_blank(text);
+        let has_word = stripped
+            .split(|c: char| !c.is_ascii_alphabetic())
+            .any(|w| w.len() >= 3 && !ALLOWED_LATIN.contains(&w));
+        let has_han = text.chars().any(is_han);
+        assert!(!has_word || has_han, "`{key}` = {text:?} reads as English");
+    }
+}
+
+/// Latin words that are the same in Chinese technical text: file types, units, keys,
+/// protocol names.
+const ALLOWED_LATIN: [&str; 12] = [
+    "GIF", "MP4", "PNG", "SVG", "PDF", "CSV", "dpi", "UDP", "GPU", "Home", "Esc", "Shift",
+];
+
+/// `text` without its placeholders.
+fn fill_blank(text: &str) -> String {
+    let names = placeholders(text);
+    let values: Vec<(&str, &dyn std::fmt::Display)> =
+        names.iter().map(|n| (n.as_str(), &"" as _)).collect();
+    fill(text, &values)
+}
+
+fn is_han(c: char) -> bool {
+    ('\u{4e00}'..='\u{9fff}').contains(&c)
+}
+
+#[test]
+fn placeholders_are_filled_and_unknown_ones_left() {
+    assert_eq!(
+        fill("{a} and {b}, {a}", &[("a", &1), ("b", &"two")]),
+        "1 and two, 1"
+    );
+    assert_eq!(fill("{gone} {", &[]), "{gone} {");
+    assert_eq!(fill("no braces", &[("a", &1)]), "no braces");
+    assert_eq!(fill("数 {n} 个", &[("n", &6)]), "数 6 个");
+}
+
+#[test]
+fn a_missing_key_shows_as_itself() {
+    assert_eq!(Lang::Zh.tr("no.such.key"), "no.such.key");
+    assert!(catalogue::lookup(Lang::Zh, "no.such.key").is_none());
+}
+
+#[test]
+fn the_locale_names_the_language() {
+    assert_eq!(Lang::from_locale("zh_CN.UTF-8"), Lang::Zh);
+    assert_eq!(Lang::from_locale("zh_TW"), Lang::Zh);
+    assert_eq!(Lang::from_locale("ZH"), Lang::Zh);
+    assert_eq!(Lang::from_locale("en_GB.UTF-8"), Lang::En);
+    assert_eq!(Lang::from_locale("C"), Lang::En);
+    assert_eq!(Lang::from_locale(""), Lang::En);
+}
+
+#[test]
+fn chinese_without_a_font_falls_back_to_english_with_a_note() {
+    assert_eq!(super::fonts::usable(Lang::Zh, true), (Lang::Zh, None));
+    assert_eq!(super::fonts::usable(Lang::En, false), (Lang::En, None));
+    let (lang, note) = super::fonts::usable(Lang::Zh, false);
+    assert_eq!(lang, Lang::En);
+    assert!(note.is_some_and(|n| n.contains("fonts-wqy-microhei")));
+}
+
+#[test]
+fn english_setting_labels_are_the_cores_and_chinese_ones_exist() {
+    for setting in settings::all() {
+        assert_eq!(
+            setting_label(Lang::En, setting),
+            setting.label,
+            "{}",
+            setting.key
+        );
+        let zh = setting_label(Lang::Zh, setting);
+        assert!(
+            !zh.starts_with("setting."),
+            "no Chinese label for {}",
+            setting.key
+        );
+        assert!(zh.chars().any(is_han), "{}: {zh}", setting.key);
+        assert!(!zh.contains('{'), "{}: {zh}", setting.key);
+    }
+}
+
+/// One finding of every kind, with one leg, two legs and no leg, over one and many samples.
+fn findings() -> Vec<Finding> {
+    use FindingKind::*;
+    let kinds = [
+        StrokeMax,
+        StrokeMin,
+        LegSpeed,
+        LegAccel,
+        BaseCone,
+        PlatformCone,
+        LegCollision,
+        NearSingular,
+        ArchitectureSingular,
+        Jump,
+        RigidBody,
+        Unreachable,
+        ServoMax,
+        ServoMin,
+        ServoSpeed,
+        ServoAccel,
+        HornCone,
+        RodPlatformCone,
+        RodCollision,
+        RodHornCollision,
+        ServoJump,
+    ];
+    let mut out = Vec::new();
+    for (k, kind) in kinds.into_iter().enumerate() {
+        for (legs, count) in [(vec![3], 1), (vec![2, 5], 17), (vec![], 4)] {
+            for worst in [1.234_567 + k as f64, f64::INFINITY] {
+                out.push(Finding {
+                    kind,
+                    legs: legs.clone(),
+                    first_time: 0.125 * k as f64,
+                    last_time: 2.5,
+                    count,
+                    worst_time: 1.0625,
+                    worst_value: worst,
+                    limit: 0.987_654_3,
+                    margin: -0.012_345_6,
+                    unit: String::new(),
+                });
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn english_findings_read_exactly_as_the_core_writes_them() {
+    for f in findings() {
+        assert_eq!(finding(Lang::En, &f), f.to_string(), "{:?}", f.kind);
+    }
+}
+
+#[test]
+fn every_finding_has_a_chinese_sentence() {
+    for f in findings() {
+        let zh = finding(Lang::Zh, &f);
+        assert!(!zh.starts_with("finding."), "{:?}", f.kind);
+        assert!(!zh.contains('{'), "{:?}: {zh}", f.kind);
+        assert!(zh.chars().filter(|c| is_han(*c)).count() >= 6, "{zh}");
+    }
+}
+
+#[test]
+fn the_architecture_verdict_reads_as_the_core_writes_it() {
+    let seed = Geometry::seed().architecture();
+    assert!(seed.singular);
+    let paired = {
+        let mut params = stewart_kinematics::GeometryParams::seed();
+        (params.base_angles, params.platform_angles) = Layout::paired(20.0).angles();
+        Geometry::new(params)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .architecture()
+    };
+    assert!(!paired.singular);
+    for report in [seed, paired] {
+        assert_eq!(architecture(Lang::En, &report), report.explanation());
+        let zh = architecture(Lang::Zh, &report);
+        assert!(zh.contains("结构奇异"), "{zh}");
+        assert!(!zh.contains('{') && !zh.contains("architecture."), "{zh}");
+    }
+}
+
+/// The program's sources (not its tests).
+fn sources() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            return;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                out.push(path);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"), &mut out);
+    out.sort();
+    out
+}
+
+/// A file's text up to its unit tests.
+fn program_text(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    match text.find("#[cfg(test)]") {
+        Some(k) => text[..k].to_owned(),
+        None => text,
+    }
+}
+
+/// The string literals of `text` (plain `"…"` ones; raw strings hold SVG, not words).
+fn literals(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let bytes: Vec<char> = text.chars().collect();
+    let mut k = 0;
+    while k < bytes.len() {
+        let c = bytes[k];
+        if c == '/' && bytes.get(k + 1) == Some(&'/') {
+            while k < bytes.len() && bytes[k] != '\n' {
+                k += 1;
+            }
+        } else if c == '\'' && bytes.get(k + 2) == Some(&'\'') {
+            k += 3; // a char literal such as '"'
+        } else if c == 'r' && matches!(bytes.get(k + 1), Some('#' | '"')) {
+            let hashes = bytes[k + 1..].iter().take_while(|c| **c == '#').count();
+            let close: String = std::iter::once('"')
+                .chain(std::iter::repeat_n('#', hashes))
+                .collect();
+            let rest: String = bytes[k + 2 + hashes..].iter().collect();
+            k += 2 + hashes + rest.find(&close).map_or(rest.len(), |e| e + close.len());
+        } else if c == '"' {
+            let mut s = String::new();
+            k += 1;
+            while k < bytes.len() && bytes[k] != '"' {
+                if bytes[k] == '\\' {
+                    k += 1;
+                }
+                if let Some(&c) = bytes.get(k) {
+                    s.push(c);
+                }
+                k += 1;
+            }
+            out.push(s);
+            k += 1;
+        } else {
+            k += 1;
+        }
+    }
+    out
+}
+
+#[test]
+fn every_key_the_code_names_is_in_the_catalogues() {
+    let sections: BTreeSet<&str> = keys(Lang::En).filter_map(|k| k.split('.').next()).collect();
+    let mut named = 0;
+    for path in sources() {
+        for lit in literals(&program_text(&path)) {
+            let Some((section, rest)) = lit.split_once('.') else {
+                continue;
+            };
+            // Keys are lower-case words joined by dots; file names and templates are not.
+            let key_like = sections.contains(section)
+                && !rest.is_empty()
+                && rest
+                    .chars()
+                    .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.');
+            if !key_like || ["toml", "csv", "json", "png"].contains(&rest) {
+                continue;
+            }
+            named += 1;
+            for lang in Lang::ALL {
+                assert!(
+                    catalogue::lookup(lang, &lit).is_some(),
+                    "{}: `{lit}` is not in {}.toml",
+                    path.display(),
+                    lang.code()
+                );
+            }
+        }
+    }
+    assert!(named > 200, "only {named} keys found in the sources");
+}
+
+#[test]
+fn no_widget_takes_its_words_from_the_code() {
+    // Calls that put text on screen, taking a literal (or a format! of one) directly.
+    const CALLS: [&str; 22] = [
+        ".label(",
+        ".button(",
+        ".heading(",
+        ".small_button(",
+        ".on_hover_text(",
+        ".on_disabled_hover_text(",
+        ".hint_text(",
+        ".suffix(",
+        ".prefix(",
+        ".text(",
+        ".selected_text(",
+        ".x_axis_label(",
+        ".y_axis_label(",
+        ".menu_button(",
+        "from_label(",
+        "CollapsingHeader::new(",
+        "RichText::new(",
+        "Button::new(",
+        "Button::selectable(",
+        "ProgressBar::new(",
+        ".checkbox(",
+        "_value(",
+    ];
+    let ui_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/viewer");
+    let mut offences = Vec::new();
+    for path in sources().into_iter().filter(|p| p.starts_with(&ui_dir)) {
+        let text = program_text(&path);
+        for call in CALLS {
+            for (at, _) in text.match_indices(call) {
+                // The call's first line of arguments, up to the end of the statement.
+                let args: String = text[at + call.len()..]
+                    .chars()
+                    .take_while(|c| *c != ';' && *c != '{')
+                    .take(160)
+                    .collect();
+                for lit in literals(&args).into_iter().take(1) {
+                    let words = fill_blank(&lit)
+                        .split(|c: char| !c.is_ascii_alphabetic())
+                        .any(|w| w.len() >= 2);
+                    let key = lit.contains('.')
+                        && lit
+                            .chars()
+                            .all(|c| c.is_ascii_lowercase() || c == '_' || c == '.');
+                    // Function names read the same in Chinese mathematics.
+                    let maths = ["sin", "cos"].contains(&lit.as_str());
+                    if words && !key && !maths {
+                        offences.push(format!("{}: {call}\"{lit}\"", path.display()));
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        offences.is_empty(),
+        "widgets with words from the code, not the catalogues:\n{}",
+        offences.join("\n")
+    );
+}
+
+#[test]
+fn the_readout_speaks_chinese() {
+    let s = Scenario::seed();
+    let text = crate::readout::lines(Lang::Zh, "", &s.geometry, None, &s.geometry.home_pose());
+    assert!(text.contains("手动位姿") && text.contains("横滚") && text.contains("偏航"));
+}

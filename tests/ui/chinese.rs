@@ -1,0 +1,130 @@
+//! The Chinese interface: every word a person reads comes from the Chinese catalogue (the
+//! accessibility tree of every panel, opened, holds no English word), its font is loaded
+//! (the snapshot shows characters, not boxes), and the language switch changes it at once.
+//!
+//! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui chinese` re-blesses the image.
+
+use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::{Harness, SnapshotOptions};
+use stewart_app::i18n::Lang;
+use stewart_app::viewer::playback::MotionMode;
+use stewart_app::viewer::state::ViewerState;
+use stewart_kinematics::Scenario;
+
+/// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
+/// names of languages and of mathematical functions.
+const KEPT: [&str; 22] = [
+    "PNG", "GIF", "MP4", "SVG", "PDF", "CSV", "dpi", "UDP", "Hz", "Esc", "Shift", "Home",
+    "English", "sin", "cos", "FIFO", "mm", "toml", "geometry", "µs", "ms", "ch",
+];
+
+/// The viewer on `preset` in Chinese with every section open.
+fn chinese(preset: &str) -> Harness<'static, ViewerState> {
+    let mut state = ViewerState::new(Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}")));
+    state.look.lang = Lang::Zh;
+    state.look.expand_panels = true;
+    crate::harness_with(state, 3600.0)
+}
+
+/// English words (three letters or more, not in [`KEPT`]) in the labels and values of
+/// the accessibility tree, except `allowed` texts (the scenario's own name and notes).
+fn english_words(h: &Harness<'static, ViewerState>, allowed: &[&str]) -> Vec<String> {
+    let mut found = Vec::new();
+    for node in h.root().children_recursive() {
+        let a = node.accesskit_node();
+        for text in [a.label(), a.value()].into_iter().flatten() {
+            let text = text.to_string();
+            // egui's own accessibility names (never drawn) and the scenario's own words.
+            if text == "Resize panel"
+                || allowed
+                    .iter()
+                    .any(|s| !s.is_empty() && (text.contains(s) || s.contains(text.trim())))
+            {
+                continue;
+            }
+            let english = text
+                .split(|c: char| !c.is_ascii_alphabetic())
+                .any(|w| w.len() >= 3 && !KEPT.contains(&w));
+            if english {
+                found.push(text);
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn every_panel_reads_in_chinese() {
+    for preset in ["seed", "paired", "servo-desk", "keyframes", "circle"] {
+        let h = chinese(preset);
+        let s = h.state().scenario();
+        let allowed = [s.name.as_str(), s.description.as_str()];
+        let english = english_words(&h, &allowed);
+        assert!(
+            english.is_empty(),
+            "{preset}: English left in the Chinese interface: {english:#?}"
+        );
+        // And it is the Chinese interface, not an empty one.
+        assert!(h.query_by_label("场景").is_some());
+        assert!(h.query_by_label("诊断").is_some());
+    }
+}
+
+#[test]
+fn manual_mode_and_the_link_read_in_chinese_too() {
+    let mut h = chinese("seed");
+    h.state_mut().playback.mode = MotionMode::Manual;
+    h.run();
+    h.state_mut().connect_link();
+    h.run();
+    h.run();
+    let s = h.state().scenario();
+    let allowed = [s.name.as_str(), s.description.as_str()];
+    let english = english_words(&h, &allowed);
+    assert!(english.is_empty(), "{english:#?}");
+    assert!(
+        h.query_all_by_label("未使能").count() >= 2,
+        "the link's state in Chinese, in the panel and on the badge"
+    );
+    h.state_mut().link.disconnect();
+}
+
+#[test]
+fn the_english_interface_is_english() {
+    // The same scan finds English where there is English: it would catch a bypass.
+    let mut state = ViewerState::new(Scenario::seed());
+    state.look.expand_panels = true;
+    let h = crate::harness_with(state, 3600.0);
+    assert!(english_words(&h, &[]).len() > 50);
+}
+
+#[test]
+fn the_language_switch_changes_the_interface_at_once() {
+    let mut state = ViewerState::new(Scenario::seed());
+    state.look.lang = Lang::En;
+    let mut h = crate::harness_with(state, 1600.0);
+    assert!(h.query_by_label("Scenario").is_some());
+    h.get_by_label("中文").click();
+    h.run();
+    assert_eq!(h.state().look.lang, Lang::Zh);
+    assert!(h.query_by_label("场景").is_some() && h.query_by_label("Scenario").is_none());
+    h.get_by_label("English").click();
+    h.run();
+    assert_eq!(h.state().look.lang, Lang::En);
+}
+
+#[test]
+fn the_chinese_interface_looks_right() {
+    let mut state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
+    state.look.lang = Lang::Zh;
+    state.playback.playing = false;
+    state.playback.time = 2.5;
+    let mut h = crate::sized_harness(state, egui::vec2(1100.0, 760.0));
+    h.run();
+    h.snapshot_options(
+        "chinese-interface",
+        &SnapshotOptions::new()
+            .output_path("../../tests/snapshots/ui")
+            .max_failed_pixels(8),
+    );
+}
