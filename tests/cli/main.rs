@@ -3,6 +3,7 @@
 
 mod analysis;
 mod check;
+mod chinese;
 mod export;
 mod firmware;
 mod fk;
@@ -23,8 +24,22 @@ pub fn stewart(args: &[&str]) -> Output {
 
 /// Run `stewart` with `args`, feeding `input` on standard input.
 pub fn stewart_with_input(args: &[&str], input: &[u8]) -> Output {
+    stewart_in(&[], args, input)
+}
+
+/// Run `stewart` with `args` and the environment variables `env`, feeding `input`. The
+/// locale is English unless `env` says otherwise (the words drawn follow LANG).
+pub fn stewart_in(env: &[(&str, &str)], args: &[&str], input: &[u8]) -> Output {
     use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let mut command = Command::new(env!("CARGO_BIN_EXE_stewart"));
+    command
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", "C.UTF-8");
+    for (name, value) in env {
+        command.env(name, value);
+    }
+    let mut child = command
         .args(args)
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())

@@ -383,3 +383,22 @@ fn the_readout_speaks_chinese() {
     let text = crate::readout::lines(Lang::Zh, "", &s.geometry, None, &s.geometry.home_pose());
     assert!(text.contains("手动位姿") && text.contains("横滚") && text.contains("偏航"));
 }
+
+#[test]
+fn every_chinese_text_has_its_glyphs() {
+    // The fonts the renderer draws with (a Latin sans, then the system's Chinese font,
+    // which egui takes too): no character of the catalogue may fall back to a box.
+    assert!(
+        super::fonts::cjk().is_some(),
+        "no Chinese font: scripts/setup.sh installs fonts-wqy-microhei"
+    );
+    let fonts = stewart_render::Fonts::system();
+    for key in keys(Lang::Zh) {
+        let text = Lang::Zh.tr(key);
+        let missing: String = text
+            .chars()
+            .filter(|c| !fonts.covers(&c.to_string()))
+            .collect();
+        assert!(missing.is_empty(), "`{key}`: no glyph for {missing:?}");
+    }
+}
