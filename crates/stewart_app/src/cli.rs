@@ -8,6 +8,7 @@ use stewart_kinematics::bounds;
 use stewart_kinematics::link_settings::{LinkFormat, LinkTransport, Word};
 
 use crate::i18n::Lang;
+use crate::viewer::shots::ShotScale;
 
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
@@ -444,6 +445,16 @@ pub fn parse_title(text: &str) -> Result<String, String> {
     Ok(text.to_owned())
 }
 
+/// A screenshot scale: `1`, `2` or `4k`.
+pub fn parse_shot_scale(text: &str) -> Result<ShotScale, String> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "1" | "1x" => Ok(ShotScale::One),
+        "2" | "2x" => Ok(ShotScale::Two),
+        "4k" => Ok(ShotScale::Uhd),
+        _ => Err(format!("`{text}` is not a screenshot scale: 1, 2 or 4k")),
+    }
+}
+
 /// A language code: `zh` or `en` (`zh-CN`, `zh_CN` and any case accepted).
 pub fn parse_lang(text: &str) -> Result<Lang, String> {
     let code = text.trim().to_ascii_lowercase();
@@ -600,6 +611,10 @@ pub struct ViewArgs {
     /// Frames to draw before the screenshot.
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_hyphen_values = true)]
     pub frames: u32,
+    /// The screenshot's size: `1` as on screen, `2` twice that (text drawn anew, not
+    /// upscaled), `4k` 3840 pixels wide.
+    #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = parse_shot_scale, requires = "screenshot")]
+    pub screenshot_scale: ShotScale,
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]
     pub frame_stats: bool,

@@ -94,6 +94,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
         ViewOptions {
             screenshot: args.screenshot.clone(),
             frames: args.frames,
+            screenshot_scale: args.screenshot_scale,
             stats: args.frame_stats,
             size,
         },

@@ -30,6 +30,7 @@ pub mod state;
 pub mod teleop;
 pub mod view3d;
 pub mod window;
+pub mod window_shot;
 
 pub use state::ViewerState;
 pub use window::{ViewOptions, run};

@@ -196,6 +196,7 @@ mod tests {
         look.light_theme = true;
         look.labels = false;
         look.readouts = true;
+        look.lang = Lang::Zh;
         let session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
         save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
         let back = load(dir.path(), Lang::En)
@@ -209,6 +210,15 @@ mod tests {
         back.restore_look(&mut fresh);
         assert_eq!(fresh.camera.azimuth_deg, 40.0);
         assert!(fresh.light_theme && !fresh.labels && fresh.readouts);
+        assert_eq!(fresh.lang, Lang::Zh, "the language is remembered");
+        // A session written before the language was remembered keeps the current one.
+        let mut json: serde_json::Value =
+            serde_json::to_value(&session).unwrap_or_else(|e| panic!("{e}"));
+        json.as_object_mut().map(|o| o.remove("lang"));
+        let older: Session = serde_json::from_value(json).unwrap_or_else(|e| panic!("{e}"));
+        let mut english = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
+        older.restore_look(&mut english);
+        assert_eq!(english.lang, Lang::En);
         forget(dir.path()).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(load(dir.path(), Lang::En), Ok(None));
     }

@@ -61,7 +61,7 @@ pub struct Shots {
     /// Where the last shot went or why it failed.
     pub status: Status,
     /// A whole-window shot the window is to take at its next frame.
-    pub window_request: Option<PathBuf>,
+    pub window_request: Option<(PathBuf, ShotScale)>,
     /// The folder shots are saved in (the current folder).
     pub folder: PathBuf,
     running: Option<Receiver<Status>>,

@@ -183,7 +183,7 @@ impl ViewerState {
         use super::shots::{ShotKind, next_path};
         let path = next_path(&self.shots.folder, &self.scenario.name);
         match self.shots.kind {
-            ShotKind::Window => self.shots.window_request = Some(path),
+            ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
             ShotKind::View => {
                 let theme = self.theme();
                 let list = self.draw_list(&theme);

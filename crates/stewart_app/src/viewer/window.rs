@@ -16,6 +16,7 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::{Window, WindowId};
 
 use super::panels::viewer_ui;
+use super::shots::ShotScale;
 use super::state::ViewerState;
 
 /// How the viewer runs.
@@ -25,6 +26,8 @@ pub struct ViewOptions {
     pub screenshot: Option<PathBuf>,
     /// Frames to draw before the screenshot.
     pub frames: u32,
+    /// The screenshot's size: as on screen, twice that, or 3840 pixels wide.
+    pub screenshot_scale: ShotScale,
     /// Print frame-time statistics when the window closes.
     pub stats: bool,
     /// Window size, logical pixels.
@@ -64,7 +67,7 @@ impl FrameTimes {
 }
 
 /// MSAA samples of the window (the 3D pipelines are built to match).
-const SAMPLES: u32 = 4;
+pub(super) const SAMPLES: u32 = 4;
 
 struct Open {
     window: Arc<Window>,
@@ -319,6 +322,15 @@ impl App {
         let cpu_ms = frame_start.elapsed().as_secs_f64() * 1e3;
         self.frames += 1;
         let mut capture = Vec::new();
+        let mut scaled = None;
+        if let Some(path) = &self.options.screenshot
+            && self.frames >= self.options.frames.max(1)
+            && !self.screenshot_asked
+            && self.options.screenshot_scale != ShotScale::One
+        {
+            self.screenshot_asked = true;
+            scaled = Some((path.clone(), self.options.screenshot_scale, true));
+        }
         if let Some(path) = &self.options.screenshot
             && self.frames >= self.options.frames.max(1)
             && !self.screenshot_asked
@@ -333,23 +345,27 @@ impl App {
                 }
             }));
         }
-        if let Some(path) = self.state.shots.window_request.take() {
-            let slot = Arc::clone(&self.window_shot);
-            let lang = self.state.look.lang;
-            capture.push(egui::ScreenshotCallback::new(move |image| {
-                let [w, h] = image.size;
-                let status = save_png(&path, &image)
-                    .map(|()| {
-                        lang.fmt(
-                            "shots.saved_window",
-                            &[("w", &w), ("h", &h), ("path", &path.display())],
-                        )
-                    })
-                    .map_err(|e| format!("{e:#}"));
-                if let Ok(mut s) = slot.lock() {
-                    *s = Some(status);
-                }
-            }));
+        if let Some((path, scale)) = self.state.shots.window_request.take() {
+            if scale != ShotScale::One {
+                scaled = Some((path, scale, false));
+            } else {
+                let slot = Arc::clone(&self.window_shot);
+                let lang = self.state.look.lang;
+                capture.push(egui::ScreenshotCallback::new(move |image| {
+                    let [w, h] = image.size;
+                    let status = save_png(&path, &image)
+                        .map(|()| {
+                            lang.fmt(
+                                "shots.saved_window",
+                                &[("w", &w), ("h", &h), ("path", &path.display())],
+                            )
+                        })
+                        .map_err(|e| format!("{e:#}"));
+                    if let Ok(mut s) = slot.lock() {
+                        *s = Some(status);
+                    }
+                }));
+            }
         }
         let bg = self.state.theme().background;
         open.painter.paint_and_update_textures(
@@ -365,6 +381,18 @@ impl App {
         self.times
             .total
             .push(frame_start.elapsed().as_secs_f64() * 1e3);
+        if let Some((path, scale, exit)) = scaled {
+            let outcome = self.scaled_window_shot(&path, scale);
+            if exit {
+                // A --screenshot run: done (or failed) once the image is written.
+                let result = outcome.map(|_| ()).map_err(|e| anyhow!(e));
+                if let Ok(mut s) = self.screenshot.lock() {
+                    *s = Some(result);
+                }
+            } else {
+                self.state.shots.status = Some(outcome);
+            }
+        }
         if let Some(status) = self.window_shot.lock().ok().and_then(|mut s| s.take()) {
             self.state.shots.status = Some(status);
         }
@@ -395,6 +423,71 @@ impl App {
         if let Err(e) = super::session::save(folder, &saved) {
             let _ = writeln!(std::io::stderr(), "viewer: the session was not saved: {e}");
         }
+    }
+
+    /// The whole window at `scale` (2×, 4K): the UI laid out again in the same points at
+    /// that pixel density and drawn off screen (see [`super::window_shot`]).
+    fn scaled_window_shot(
+        &mut self,
+        path: &std::path::Path,
+        scale: ShotScale,
+    ) -> Result<String, String> {
+        let Some(open) = self.open.as_ref() else {
+            return Err("the window is gone".to_owned());
+        };
+        let Some(rs) = open.painter.render_state() else {
+            return Err("no GPU device for the window".to_owned());
+        };
+        let native = open.window.scale_factor() as f32;
+        let k = super::window_shot::factor(scale, open.window.inner_size().width);
+        let rect = self.ctx.content_rect();
+        let mut raw = egui::RawInput {
+            screen_rect: Some(rect),
+            ..egui::RawInput::default()
+        };
+        raw.viewports.insert(
+            ViewportId::ROOT,
+            egui::ViewportInfo {
+                native_pixels_per_point: Some(native * k),
+                ..egui::ViewportInfo::default()
+            },
+        );
+        let state = &mut self.state;
+        let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        let ppp = output.pixels_per_point;
+        let primitives = self.ctx.tessellate(std::mem::take(&mut output.shapes), ppp);
+        let size = [
+            (rect.width() * ppp).round() as u32,
+            (rect.height() * ppp).round() as u32,
+        ];
+        let bg = self.state.theme().background;
+        let image = super::window_shot::render(
+            &rs,
+            &primitives,
+            &mut output.textures_delta,
+            size,
+            ppp,
+            [bg[0], bg[1], bg[2], 1.0],
+        );
+        {
+            let mut renderer = rs.renderer.write();
+            for id in &output.textures_delta.free {
+                renderer.free_texture(id);
+            }
+        }
+        // Applied (or, when the image could not be drawn, superseded by the next frame's).
+        output.textures_delta.clear();
+        // The next frame is drawn at the window's own density again.
+        if let Some(open) = &self.open {
+            open.window.request_redraw();
+        }
+        let image = image?;
+        let [w, h] = image.size;
+        save_png(path, &image).map_err(|e| format!("{e:#}"))?;
+        Ok(self.state.look.lang.fmt(
+            "shots.saved_window",
+            &[("w", &w), ("h", &h), ("path", &path.display())],
+        ))
     }
 
     fn busy(&self) -> bool {

@@ -21,12 +21,12 @@ fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
     let shots = &mut state.shots;
     ui.radio_value(&mut shots.kind, ShotKind::View, t.tr("view.shot_view"));
     ui.radio_value(&mut shots.kind, ShotKind::Window, t.tr("view.shot_window"));
+    ui.horizontal(|ui| {
+        for (scale, words) in ShotScale::ALL {
+            ui.radio_value(&mut shots.scale, scale, words);
+        }
+    });
     ui.add_enabled_ui(shots.kind == ShotKind::View, |ui| {
-        ui.horizontal(|ui| {
-            for (scale, words) in ShotScale::ALL {
-                ui.radio_value(&mut shots.scale, scale, words);
-            }
-        });
         ui.checkbox(&mut shots.transparent, t.tr("view.transparent"));
     });
     if ui

@@ -1,0 +1,196 @@
+//! Whole-window screenshots larger than the screen (2×, 4K): the window's UI is laid out
+//! again in the same points at a higher pixel density — text rasterised anew, not
+//! upscaled — and drawn off screen with the window's own egui and 3D renderers (same
+//! colour format, MSAA and depth as the window's pass), then read back.
+
+use egui::epaint::ClippedPrimitive;
+use egui::epaint::textures::TexturesDelta;
+
+/// The pixel density factor that makes a window `width` physical pixels wide come out at
+/// `scale`: 1 (as on screen), 2, or 3840 pixels wide for 4K.
+pub fn factor(scale: super::shots::ShotScale, width: u32) -> f32 {
+    use super::shots::ShotScale;
+    match scale {
+        ShotScale::One => 1.0,
+        ShotScale::Two => 2.0,
+        ShotScale::Uhd => 3840.0 / width.max(1) as f32,
+    }
+}
+
+/// The render targets of one off-screen pass.
+struct Targets {
+    msaa: wgpu::Texture,
+    depth: wgpu::Texture,
+    resolve: wgpu::Texture,
+}
+
+impl Targets {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, [w, h]: [u32; 2]) -> Self {
+        let texture = |label, format, samples, usage| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d {
+                    width: w,
+                    height: h,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: samples,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage,
+                view_formats: &[],
+            })
+        };
+        let samples = super::window::SAMPLES;
+        Self {
+            msaa: texture(
+                "window-shot msaa",
+                format,
+                samples,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            ),
+            depth: texture(
+                "window-shot depth",
+                stewart_render::renderer::DEPTH_FORMAT,
+                samples,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            ),
+            resolve: texture(
+                "window-shot resolve",
+                format,
+                1,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            ),
+        }
+    }
+}
+
+/// Draw `primitives` (tessellated at `pixels_per_point`) into a `size`-pixel image on
+/// `clear`, applying `textures` (the font atlas at this density) first.
+pub fn render(
+    rs: &egui_wgpu::RenderState,
+    primitives: &[ClippedPrimitive],
+    textures: &mut TexturesDelta,
+    size: [u32; 2],
+    pixels_per_point: f32,
+    clear: [f32; 4],
+) -> Result<egui::ColorImage, String> {
+    let max = rs.device.limits().max_texture_dimension_2d;
+    if size[0] == 0 || size[1] == 0 || size[0] > max || size[1] > max {
+        return Err(format!(
+            "a {}×{} image exceeds what this GPU draws ({max} pixels a side)",
+            size[0], size[1]
+        ));
+    }
+    let (device, queue) = (&rs.device, &rs.queue);
+    let targets = Targets::new(device, rs.target_format, size);
+    let screen = egui_wgpu::ScreenDescriptor {
+        size_in_pixels: size,
+        pixels_per_point,
+    };
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("window-shot"),
+    });
+    let mut commands = {
+        let mut renderer = rs.renderer.write();
+        for (id, deltas) in &textures.set {
+            for delta in deltas {
+                renderer.update_texture(device, queue, *id, delta);
+            }
+        }
+        renderer.update_buffers(device, queue, &mut encoder, primitives, &screen)
+    };
+    {
+        let msaa = targets.msaa.create_view(&Default::default());
+        let resolve = targets.resolve.create_view(&Default::default());
+        let depth = targets.depth.create_view(&Default::default());
+        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("window-shot"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &msaa,
+                resolve_target: Some(&resolve),
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color {
+                        r: f64::from(clear[0]),
+                        g: f64::from(clear[1]),
+                        b: f64::from(clear[2]),
+                        a: f64::from(clear[3]),
+                    }),
+                    store: wgpu::StoreOp::Store,
+                },
+                depth_slice: None,
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        let renderer = rs.renderer.read();
+        renderer.render(&mut pass.forget_lifetime(), primitives, &screen);
+    }
+    let row = (4 * size[0]).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
+        * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("window-shot readback"),
+        size: u64::from(row) * u64::from(size[1]),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        targets.resolve.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(row),
+                rows_per_image: Some(size[1]),
+            },
+        },
+        wgpu::Extent3d {
+            width: size[0],
+            height: size[1],
+            depth_or_array_layers: 1,
+        },
+    );
+    commands.push(encoder.finish());
+    queue.submit(commands);
+    let slice = buffer.slice(..);
+    let (done, mapped) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = done.send(r);
+    });
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| format!("the GPU did not finish the screenshot: {e}"))?;
+    mapped
+        .recv()
+        .map_err(|e| e.to_string())?
+        .map_err(|e| format!("cannot read the screenshot back: {e}"))?;
+    let bgra = matches!(
+        rs.target_format,
+        wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
+    );
+    let data = slice
+        .get_mapped_range()
+        .map_err(|e| format!("cannot read the screenshot back: {e}"))?;
+    let mut pixels = Vec::with_capacity((size[0] * size[1]) as usize);
+    for y in 0..size[1] as usize {
+        let line = &data[y * row as usize..][..4 * size[0] as usize];
+        for p in line.chunks_exact(4) {
+            let (r, b) = if bgra { (p[2], p[0]) } else { (p[0], p[2]) };
+            pixels.push(egui::Color32::from_rgba_premultiplied(r, p[1], b, 255));
+        }
+    }
+    Ok(egui::ColorImage::new(
+        [size[0] as usize, size[1] as usize],
+        pixels,
+    ))
+}
