@@ -4,6 +4,7 @@
 mod analysis;
 mod check;
 mod chinese;
+mod design;
 mod export;
 mod firmware;
 mod fk;
@@ -118,6 +119,7 @@ fn help_lists_every_command() {
             "fk",
             "workspace",
             "forces",
+            "design",
             "render",
             "plot",
             "view",

@@ -37,6 +37,10 @@ pub enum Command {
     Workspace(WorkspaceArgs),
     /// Leg forces for a payload along the trajectory (static and dynamic), as CSV.
     Forces(ForcesArgs),
+    /// The stroke (or servo range) a motion envelope needs: the smallest and largest
+    /// value of each leg length (servo angle) over a 6-D box of poses, where each occurs,
+    /// and the worst conditioning inside the box.
+    Design(DesignArgs),
     /// Render the trajectory headlessly: a PNG sequence (folder), a GIF or an MP4.
     Render(RenderArgs),
     /// The leg-length plot for a paper: SVG, PDF or PNG.
@@ -246,6 +250,22 @@ pub struct CheckArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+/// Arguments of `stewart design`.
+#[derive(Debug, Args)]
+pub struct DesignArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// The box of poses: x, y, z (m) and roll, pitch, yaw (°), each `±A` about home,
+    /// `A..B`, or one value; those left out stay at home. Example:
+    /// `x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15`.
+    #[arg(long, value_name = "NAME=RANGE,…", allow_hyphen_values = true)]
+    pub envelope: String,
     /// Report format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,

@@ -45,6 +45,7 @@ fn main() -> ExitCode {
         Some(Command::Fk(args)) => commands::fk::run(&args),
         Some(Command::Workspace(args)) => commands::workspace::run(&args),
         Some(Command::Forces(args)) => commands::forces::run(&args),
+        Some(Command::Design(args)) => commands::design::run(&args),
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Plot(args)) => commands::plot::run(&args),
         Some(Command::View(args)) => commands::view::run(&args),

@@ -28,6 +28,7 @@ pub mod architecture;
 pub mod batch;
 pub mod bounds;
 pub mod checks;
+pub mod design;
 pub mod differences;
 mod fast_trig;
 pub mod forces;

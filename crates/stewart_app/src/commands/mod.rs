@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod check;
+pub mod design;
 pub mod device_sim;
 pub mod firmware;
 pub mod fk;
