@@ -14,6 +14,7 @@
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
 pub mod derived;
+pub mod design;
 pub mod export_job;
 pub mod exports;
 pub mod files;

@@ -49,6 +49,8 @@ pub struct ViewerState {
     pub session: SessionState,
     /// Screenshots.
     pub shots: super::shots::Shots,
+    /// The stroke an envelope of poses needs.
+    pub design: super::design::DesignTool,
 }
 
 /// The saved session's state in this run.
@@ -106,6 +108,7 @@ impl ViewerState {
                 ..SessionState::default()
             },
             shots: super::shots::Shots::default(),
+            design: super::design::DesignTool::default(),
             scenario,
         }
     }
@@ -376,6 +379,7 @@ impl ViewerState {
         self.link.poll();
         self.link.follow(self.drive(), self.playback.looping);
         self.shots.poll();
+        self.design.poll();
     }
 
     /// Duration of the trajectory, seconds.

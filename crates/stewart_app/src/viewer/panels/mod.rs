@@ -1,5 +1,6 @@
 //! The panels: each a function of the viewer state, laid out by [`viewer_ui`].
 
+mod design;
 mod diagnostics;
 mod export;
 mod geometry;
@@ -44,6 +45,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     legs::show(ui, state);
                     ui.separator();
                     diagnostics::show(ui, state);
+                    design::show(ui, state);
                     ui.separator();
                     export::show(ui, state);
                     ui.separator();

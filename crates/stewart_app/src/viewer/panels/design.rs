@@ -1,0 +1,114 @@
+//! Design: the stroke (or servo range) a box of poses needs, searched as by `stewart
+//! design`, with a button that writes it into the limits.
+
+use egui::RichText;
+use stewart_kinematics::settings::{self, ActuatorKey, GeometryKey, Target};
+
+use super::widgets::{ERROR, OK, WARNING};
+use crate::viewer::state::ViewerState;
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    egui::CollapsingHeader::new(t.tr("design.heading"))
+        .default_open(state.look.expand_panels)
+        .show(ui, |ui| {
+            ui.horizontal(|ui| {
+                let label = ui.label(t.tr("design.envelope"));
+                ui.add(egui::TextEdit::singleline(&mut state.design.text).desired_width(230.0))
+                    .labelled_by(label.id)
+                    .on_hover_text(t.tr("design.envelope_tip"));
+            });
+            let busy = state.design.busy();
+            if ui
+                .add_enabled(!busy, egui::Button::new(t.tr("design.compute")))
+                .clicked()
+            {
+                let geometry = state.scenario().geometry.clone();
+                state.design.start(&geometry);
+            }
+            if busy {
+                ui.label(t.tr("design.searching"));
+                ui.ctx()
+                    .request_repaint_after(std::time::Duration::from_millis(50));
+            }
+            result(ui, state);
+        });
+}
+
+/// The outcome: each actuator's range, the range needed, whether it fits, the worst
+/// conditioning, and the button that writes the range into the limits.
+fn result(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let report = match &state.design.result {
+        None => return,
+        Some(Err(e)) => {
+            ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
+            return;
+        }
+        Some(Ok(report)) => report.clone(),
+    };
+    let g = &state.scenario().geometry;
+    let q = g.quantity();
+    let (decimals, unit) = if q.unit == "m" { (4, " m") } else { (2, "°") };
+    let range = |lo: f64, hi: f64| format!("{lo:.decimals$} .. {hi:.decimals$}{unit}");
+    for (i, [lo, hi]) in report.actuators.iter().enumerate() {
+        ui.label(
+            RichText::new(format!(
+                "{}{}  {}",
+                q.letter,
+                i + 1,
+                range(lo.value, hi.value)
+            ))
+            .color(super::plot::leg_colour(i)),
+        );
+    }
+    let Some([lo, hi]) = report.overall() else {
+        ui.label(RichText::new(t.tr("design.none_reachable")).color(ERROR));
+        return;
+    };
+    ui.label(t.fmt("design.needed", &[("range", &range(lo.value, hi.value))]));
+    let [min, max] = g.quantity_limits();
+    let fits = min.is_none_or(|m| lo.value >= m) && max.is_none_or(|m| hi.value <= m);
+    if min.is_some() || max.is_some() {
+        let (key, colour) = if fits {
+            ("design.fits", OK)
+        } else {
+            ("design.does_not_fit", ERROR)
+        };
+        ui.label(RichText::new(t.tr(key)).color(colour));
+    }
+    if report.unreachable.is_some() {
+        ui.label(RichText::new(t.tr("design.some_unreachable")).color(WARNING));
+    }
+    if let Some(w) = &report.worst_condition {
+        let value = if w.value.is_finite() {
+            format!("{:.2}", w.value)
+        } else {
+            t.tr("finding.singular_value").to_owned()
+        };
+        ui.label(t.fmt("design.worst_condition", &[("value", &value)]));
+    }
+    if ui
+        .button(t.tr("design.use_as_limits"))
+        .on_hover_text(t.tr("design.use_as_limits_tip"))
+        .clicked()
+    {
+        let rotary = g.rotary().is_some();
+        let (low, high) = if rotary {
+            (
+                Target::Actuator(ActuatorKey::ServoMin),
+                Target::Actuator(ActuatorKey::ServoMax),
+            )
+        } else {
+            (
+                Target::Geometry(GeometryKey::LegMin),
+                Target::Geometry(GeometryKey::LegMax),
+            )
+        };
+        // Widen first, so that no intermediate stroke is inverted.
+        state.apply(settings::of(high), Some(hi.value.max(lo.value)));
+        state.apply(settings::of(low), Some(lo.value));
+        state.apply(settings::of(high), Some(hi.value));
+    }
+}

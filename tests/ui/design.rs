@@ -1,0 +1,52 @@
+//! The Design panel: an envelope in, the stroke it needs out, and into the limits.
+
+use egui_kittest::kittest::Queryable;
+use stewart_app::viewer::state::ViewerState;
+use stewart_kinematics::Scenario;
+
+#[test]
+fn the_stroke_an_envelope_needs_goes_into_the_limits() {
+    let mut state = ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
+    state.look.expand_panels = true;
+    let mut h = crate::harness_with(state, 3600.0);
+    h.state_mut().design.text = "x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15".to_owned();
+    h.run();
+    h.get_by_label("Compute").click();
+    // The search runs on its own thread; the panel keeps drawing meanwhile.
+    h.step();
+    h.state_mut().design.wait();
+    h.run();
+    assert!(h.query_by_label("Needed: 0.6551 .. 1.3520 m").is_some());
+    assert!(
+        h.query_by_label("It does not fit the current limits.")
+            .is_some()
+    );
+    h.get_by_label("Use as limits").click();
+    h.run();
+    let stroke = h.state().scenario().geometry.stroke();
+    assert!(
+        (stroke.min.unwrap_or(0.0) - 0.6551).abs() < 1e-4,
+        "{stroke:?}"
+    );
+    assert!(
+        (stroke.max.unwrap_or(0.0) - 1.3520).abs() < 1e-4,
+        "{stroke:?}"
+    );
+    assert!(h.query_by_label("It fits the current limits.").is_some());
+}
+
+#[test]
+fn a_bad_envelope_says_why() {
+    let mut state = ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
+    state.look.expand_panels = true;
+    let mut h = crate::harness_with(state, 3600.0);
+    h.state_mut().design.text = "z=0.9..0.7".to_owned();
+    h.run();
+    h.get_by_label("Compute").click();
+    h.run();
+    assert!(
+        h.query_by_label_contains("the range is inverted").is_some(),
+        "the reason is shown"
+    );
+    assert!(!h.state().design.busy());
+}
