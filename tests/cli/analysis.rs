@@ -159,3 +159,78 @@ fn forces_carry_the_payload() {
         stderr(&o)
     );
 }
+
+#[test]
+fn workspace_plot_draws_two_slices_coloured_by_conditioning() {
+    let dir = tempdir();
+    let svg = dir.path().join("ws.svg");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "paired",
+        "--resolution",
+        "100",
+        "--plot",
+        &svg.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap_or_default();
+    assert_eq!(text.matches(r#"class="boundary""#).count(), 2, "two slices");
+    assert_eq!(text.matches(r#"class="centre""#).count(), 2);
+    assert!(text.contains("Horizontal slice at z = 0.800 m"));
+    assert!(text.contains("Vertical slice at y = 0.000 m"));
+    assert!(text.contains("condition number") && text.contains("x (m)"));
+    assert!(!text.contains("<image"), "cells are vector rectangles");
+    assert!(text.matches("<rect").count() > 100, "coloured cells");
+    // In Chinese, as a PDF that renders.
+    let pdf = dir.path().join("ws.pdf");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "paired",
+        "--resolution",
+        "100",
+        "--lang",
+        "zh",
+        "--plot",
+        &pdf.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let r = std::process::Command::new("pdftotext")
+        .args(["-q"])
+        .arg(&pdf)
+        .arg("-")
+        .output()
+        .unwrap_or_else(|e| panic!("pdftotext: {e}"));
+    let words = String::from_utf8_lossy(&r.stdout).replace(char::is_whitespace, "");
+    assert!(
+        words.contains("水平截面") && words.contains("条件数"),
+        "{words}"
+    );
+}
+
+#[test]
+fn workspace_plot_refuses_a_bad_file_before_computing() {
+    let dir = tempdir();
+    let bad = dir.path().join("ws.txt");
+    let o = stewart(&["workspace", "--plot", &bad.display().to_string()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("must end in .svg, .pdf or .png"));
+    assert!(!bad.exists());
+    // Nothing reachable: one error, nothing written.
+    let svg = dir.path().join("empty.svg");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "paired",
+        "--orientation",
+        "80,0,0",
+        "--resolution",
+        "50",
+        "--plot",
+        &svg.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nothing to plot"));
+    assert!(!svg.exists());
+}

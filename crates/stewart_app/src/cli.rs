@@ -420,6 +420,13 @@ pub struct WorkspaceArgs {
     /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
     #[arg(long, value_name = "FILE.csv|FILE.ply")]
     pub out: Option<PathBuf>,
+    /// Draw a horizontal slice (at the position's height) and a vertical slice (through
+    /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png`.
+    #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png")]
+    pub plot: Option<PathBuf>,
+    /// The language of the figure's words: `zh` or `en` (default: the environment's).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
+    pub lang: Option<Lang>,
 }
 
 /// Arguments of `stewart forces`.

@@ -505,5 +505,8 @@ pub enum Axis {
 }
 
 mod rotary;
+pub mod slice;
 #[cfg(test)]
 mod tests;
+
+pub use slice::{Plane, Slice};

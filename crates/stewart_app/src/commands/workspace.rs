@@ -23,6 +23,15 @@ use crate::source;
 /// Run the command.
 pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
+    let plot_out = match &args.plot {
+        Some(path) => {
+            let d = output::Destination::new(path, &source::inputs(&args.scenario))?;
+            d.require_file()?;
+            crate::export::vector::check_extension(path)?;
+            Some(d)
+        }
+        None => None,
+    };
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
@@ -110,6 +119,13 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         };
         let _ = writeln!(s, "  {name:<5} {line}");
     }
+    if let Some(plot) = &plot_out {
+        let path = plot.shown();
+        let lang = crate::i18n::for_command(args.lang, "workspace");
+        let bytes = figure(&scenario, &ws, orientation, position, lang, path)?;
+        plot.write_bytes(&bytes)?;
+        let _ = writeln!(s, "Wrote the slices to {}.", path.display());
+    }
     if let Some(out) = &out {
         let path = out.shown();
         let text = points_file(path, &ws)?;
@@ -123,6 +139,67 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     }
     output::stdout(s.as_bytes())?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Cells across the horizontal slice (the vertical one has the same cell size).
+const SLICE_CELLS: usize = 200;
+
+/// The two slices through the workspace at `position` as a figure in the format `path`
+/// ends in.
+fn figure(
+    scenario: &stewart_kinematics::Scenario,
+    ws: &ConstantOrientationWorkspace,
+    orientation: [Angle; 3],
+    position: [f64; 3],
+    lang: crate::i18n::Lang,
+    path: &std::path::Path,
+) -> Result<Vec<u8>> {
+    use stewart_kinematics::workspace::Plane;
+    let g = &scenario.geometry;
+    let Some([ex, ey, ez]) = ws.extent else {
+        bail!("no position is reachable at this orientation: there is nothing to plot");
+    };
+    let pad = |[lo, hi]: [f64; 2]| {
+        let m = (0.1 * (hi - lo)).max(0.02);
+        [lo - m, hi + m]
+    };
+    let (x, y, z) = (pad(ex), pad(ey), pad(ez));
+    let cell = (x[1] - x[0]) / SLICE_CELLS as f64;
+    let count = |r: [f64; 2]| (((r[1] - r[0]) / cell).round() as usize).max(2);
+    let horizontal = g.workspace_slice(
+        &scenario.limits,
+        orientation,
+        Plane::Horizontal,
+        position[2],
+        [x, y],
+        [count(x), count(y)],
+    );
+    let vertical = g.workspace_slice(
+        &scenario.limits,
+        orientation,
+        Plane::Vertical,
+        position[1],
+        [x, z],
+        [count(x), count(z)],
+    );
+    let [r, p, yaw] = orientation.map(|a| format!("{:.1}", a.degrees()));
+    let title = lang.fmt(
+        "workspace.title",
+        &[
+            ("name", &scenario.name),
+            ("roll", &r),
+            ("pitch", &p),
+            ("yaw", &yaw),
+        ],
+    );
+    let svg = crate::export::workspace_plot::svg(&crate::export::workspace_plot::WorkspaceFigure {
+        title: &title,
+        slices: [&horizontal, &vertical],
+        centre: position,
+        condition_max: scenario.checks.condition_max,
+        lang,
+    });
+    crate::export::vector::by_extension(svg, path)
 }
 
 /// The most time a workspace request may be estimated to take without `--no-budget`.

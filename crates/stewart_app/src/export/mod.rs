@@ -8,3 +8,4 @@ pub mod plot;
 pub mod tables;
 pub mod vector;
 pub mod video;
+pub mod workspace_plot;

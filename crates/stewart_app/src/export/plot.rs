@@ -62,7 +62,7 @@ pub fn scenario_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> (Vec
 /// The fonts SVG text asks for: a Latin sans-serif first, then the Chinese families (the
 /// one this system has first) for characters the Latin font lacks. A PDF embeds the
 /// glyphs it uses; an SVG names the families for the reader's system.
-fn font_families() -> String {
+pub(crate) fn font_families() -> String {
     let mut families: Vec<&str> = vec!["DejaVu Sans", "Arial", "Helvetica"];
     if let Some(found) = crate::i18n::fonts::cjk() {
         families.push(&found.family);
@@ -310,7 +310,7 @@ pub fn svg(data: &PlotData) -> String {
     s
 }
 
-fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -324,16 +324,7 @@ pub fn plot_file(
     lang: Lang,
 ) -> anyhow::Result<Vec<u8>> {
     let (_, text) = scenario_svg(scenario, lang);
-    match crate::output::extension(path).as_deref() {
-        Some("svg") => Ok(text.into_bytes()),
-        Some("pdf") => super::vector::pdf(&text),
-        // 3.125 × 96 dpi = 300 dpi.
-        Some("png") => super::vector::png(&text, 3.125),
-        _ => anyhow::bail!(
-            "`{}`: the plot file must end in .svg, .pdf or .png",
-            path.display()
-        ),
-    }
+    super::vector::by_extension(text, path)
 }
 
 #[cfg(test)]

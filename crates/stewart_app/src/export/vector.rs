@@ -26,6 +26,29 @@ pub fn tree(svg: &str) -> Result<usvg::Tree> {
     usvg::Tree::from_str(svg, &options).context("the plot's SVG could not be parsed")
 }
 
+/// Refuse a figure path that does not end in `.svg`, `.pdf` or `.png`.
+pub fn check_extension(path: &std::path::Path) -> Result<()> {
+    match crate::output::extension(path).as_deref() {
+        Some("svg" | "pdf" | "png") => Ok(()),
+        _ => anyhow::bail!(
+            "`{}`: the plot file must end in .svg, .pdf or .png",
+            path.display()
+        ),
+    }
+}
+
+/// `svg` in the format `path` ends in: SVG as it is (text stays text), PDF (vector) or
+/// PNG at 300 dpi.
+pub fn by_extension(svg: String, path: &std::path::Path) -> Result<Vec<u8>> {
+    check_extension(path)?;
+    match crate::output::extension(path).as_deref() {
+        Some("pdf") => pdf(&svg),
+        // 3.125 × 96 dpi = 300 dpi.
+        Some("png") => png(&svg, 3.125),
+        _ => Ok(svg.into_bytes()),
+    }
+}
+
 /// The SVG as a one-page PDF of the same size.
 pub fn pdf(svg: &str) -> Result<Vec<u8>> {
     // svg2pdf's usvg is the same version as resvg's, so one tree serves both.

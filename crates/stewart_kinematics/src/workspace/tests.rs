@@ -291,3 +291,39 @@ fn rotary_workspace_agrees_with_a_brute_force_grid() {
     let [lo, hi] = range.unwrap_or_else(|| panic!("home reachable"));
     assert!(lo.degrees() < -10.0 && hi.degrees() > 10.0, "{lo:?} {hi:?}");
 }
+
+#[test]
+fn a_horizontal_slice_has_the_area_the_column_spans_give() {
+    use super::{Plane, slice::MAX_SLICE_CELLS};
+    let g = paired();
+    let limits = Limits::default();
+    let level = [Angle::from_degrees(0.0); 3];
+    let ws = g
+        .constant_orientation_workspace(&limits, level, 200)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let z = 0.85;
+    // Area from the workspace: columns whose reachable interval holds z.
+    let from_spans =
+        ws.spans.iter().filter(|s| s[2] <= z && z <= s[3]).count() as f64 * ws.cell * ws.cell;
+    let [[x0, x1], [y0, y1], _] = ws.extent.unwrap_or_else(|| panic!("empty"));
+    let pad = 0.05;
+    let range = [[x0 - pad, x1 + pad], [y0 - pad, y1 + pad]];
+    let n = 200.min(MAX_SLICE_CELLS);
+    let slice = g.workspace_slice(&limits, level, Plane::Horizontal, z, range, [n, n]);
+    let cell = [
+        (range[0][1] - range[0][0]) / n as f64,
+        (range[1][1] - range[1][0]) / n as f64,
+    ];
+    let from_slice = slice.values.iter().filter(|v| v.is_some()).count() as f64 * cell[0] * cell[1];
+    assert!(from_spans > 0.1, "{from_spans}");
+    let relative = (from_slice - from_spans).abs() / from_spans;
+    assert!(relative < 0.01, "slice {from_slice} vs spans {from_spans}");
+    // Every reachable cell is conditioned, and the paired layout is not singular there.
+    assert!(
+        slice
+            .values
+            .iter()
+            .flatten()
+            .all(|c| *c >= 1.0 && c.is_finite())
+    );
+}

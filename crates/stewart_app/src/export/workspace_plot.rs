@@ -1,0 +1,383 @@
+//! The workspace figure: a horizontal and a vertical slice through the constant-orientation
+//! workspace side by side, each cell coloured by the normalised condition number (viridis,
+//! logarithmic from 1 to the near-singular threshold; past it a marked colour), the
+//! reachable boundary as a line, the platform centre as a cross, axes in metres and a
+//! colour bar. Cells are merged into runs of one colour, so the SVG and PDF stay vectors.
+
+use std::fmt::Write as _;
+
+use stewart_kinematics::workspace::{Plane, Slice};
+
+use super::plot::nice_ticks;
+use crate::i18n::Lang;
+
+/// Page size in CSS pixels: 16 cm × 8 cm.
+const WIDTH: f64 = 604.7;
+const HEIGHT: f64 = 302.4;
+
+/// Viridis at nine stops (perceptually uniform, colour-blind safe).
+const VIRIDIS: [[f64; 3]; 9] = [
+    [68.0, 1.0, 84.0],
+    [71.0, 44.0, 122.0],
+    [59.0, 81.0, 139.0],
+    [44.0, 113.0, 142.0],
+    [33.0, 144.0, 141.0],
+    [39.0, 173.0, 129.0],
+    [92.0, 200.0, 99.0],
+    [170.0, 220.0, 50.0],
+    [253.0, 231.0, 37.0],
+];
+
+/// Cells past the near-singular threshold (and singular ones).
+const PAST: &str = "#D01C8B";
+
+/// What the figure shows.
+pub struct WorkspaceFigure<'a> {
+    /// The title line.
+    pub title: &'a str,
+    /// The horizontal slice and the vertical one.
+    pub slices: [&'a Slice; 2],
+    /// The platform centre, metres.
+    pub centre: [f64; 3],
+    /// The near-singular threshold (`checks.condition_max`).
+    pub condition_max: f64,
+    /// The language of the words.
+    pub lang: Lang,
+}
+
+/// Colour of condition number `k`: 0 at 1, 1 at `max` on a log scale.
+fn colour(k: f64, max: f64) -> String {
+    if !k.is_finite() || k > max {
+        return PAST.to_owned();
+    }
+    let s = (k.max(1.0).ln() / max.max(1.0 + 1e-9).ln()).clamp(0.0, 1.0);
+    // Quantised to 48 levels so that neighbouring cells merge into runs.
+    let s = (s * 48.0).round() / 48.0;
+    let x = s * (VIRIDIS.len() - 1) as f64;
+    let i = (x.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = x - i as f64;
+    let c: [u8; 3] = std::array::from_fn(|k| {
+        (VIRIDIS[i][k] + f * (VIRIDIS[i + 1][k] - VIRIDIS[i][k])).round() as u8
+    });
+    format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2])
+}
+
+/// Where one slice is drawn: the box on the page and the metre-to-page scale.
+struct Frame {
+    left: f64,
+    bottom: f64,
+    scale: f64,
+    range: [[f64; 2]; 2],
+}
+
+impl Frame {
+    fn x(&self, v: f64) -> f64 {
+        self.left + (v - self.range[0][0]) * self.scale
+    }
+    fn y(&self, v: f64) -> f64 {
+        self.bottom - (v - self.range[1][0]) * self.scale
+    }
+}
+
+/// The figure as an SVG document.
+pub fn svg(fig: &WorkspaceFigure) -> String {
+    let t = fig.lang;
+    let mut s = String::new();
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="160mm" height="80mm" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="{}" font-size="10">"#,
+        super::plot::font_families()
+    );
+    let _ = writeln!(
+        s,
+        r#"<rect x="0" y="0" width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.1}" y="16" text-anchor="middle" font-size="12">{}</text>"#,
+        WIDTH / 2.0,
+        super::plot::escape(fig.title)
+    );
+    // Two panels with one metre-to-page scale, so both read alike.
+    let (top, bottom, bar) = (32.0, HEIGHT - 36.0, 104.0);
+    let gap = 58.0;
+    let avail = [(WIDTH - bar - 3.0 * gap) / 2.0, bottom - top];
+    let span = |sl: &Slice| {
+        [
+            sl.range[0][1] - sl.range[0][0],
+            sl.range[1][1] - sl.range[1][0],
+        ]
+    };
+    let scale = fig
+        .slices
+        .iter()
+        .map(|sl| {
+            let [w, h] = span(sl);
+            (avail[0] / w.max(1e-9)).min(avail[1] / h.max(1e-9))
+        })
+        .fold(f64::INFINITY, f64::min);
+    let mut left = gap;
+    for sl in fig.slices {
+        let frame = Frame {
+            left,
+            bottom: bottom - 0.5 * (avail[1] - span(sl)[1] * scale),
+            scale,
+            range: sl.range,
+        };
+        panel(&mut s, fig, sl, &frame);
+        left += avail[0] + gap;
+    }
+    colour_bar(
+        &mut s,
+        fig,
+        WIDTH - bar + 6.0,
+        top + 10.0,
+        bottom - top - 40.0,
+    );
+    let _ = t;
+    s.push_str("</svg>\n");
+    s
+}
+
+/// One slice: coloured runs, boundary, centre, axes.
+fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+    let t = fig.lang;
+    let [nx, ny] = sl.cells;
+    let cw = (sl.range[0][1] - sl.range[0][0]) / nx as f64;
+    let ch = (sl.range[1][1] - sl.range[1][0]) / ny as f64;
+    let _ = writeln!(s, r#"<g class="cells" shape-rendering="crispEdges">"#);
+    for j in 0..ny {
+        let mut i = 0;
+        while i < nx {
+            let Some(k) = sl.get(i, j) else {
+                i += 1;
+                continue;
+            };
+            let c = colour(k, fig.condition_max);
+            let start = i;
+            while i + 1 < nx
+                && sl
+                    .get(i + 1, j)
+                    .is_some_and(|k| colour(k, fig.condition_max) == c)
+            {
+                i += 1;
+            }
+            let x0 = sl.range[0][0] + start as f64 * cw;
+            let y1 = sl.range[1][0] + (j + 1) as f64 * ch;
+            let _ = writeln!(
+                s,
+                r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{c}"/>"#,
+                f.x(x0),
+                f.y(y1),
+                (i + 1 - start) as f64 * cw * f.scale + 0.3,
+                ch * f.scale + 0.3
+            );
+            i += 1;
+        }
+    }
+    let _ = writeln!(s, "</g>");
+    // The boundary: every cell edge between a reachable cell and one out of reach.
+    let reach = |i: isize, j: isize| {
+        i >= 0
+            && j >= 0
+            && (i as usize) < nx
+            && (j as usize) < ny
+            && sl.get(i as usize, j as usize).is_some()
+    };
+    let mut d = String::new();
+    for j in 0..ny as isize {
+        for i in 0..nx as isize {
+            if !reach(i, j) {
+                continue;
+            }
+            let (x0, x1) = (
+                sl.range[0][0] + i as f64 * cw,
+                sl.range[0][0] + (i + 1) as f64 * cw,
+            );
+            let (y0, y1) = (
+                sl.range[1][0] + j as f64 * ch,
+                sl.range[1][0] + (j + 1) as f64 * ch,
+            );
+            for (di, dj, a, b) in [
+                (-1, 0, [x0, y0], [x0, y1]),
+                (1, 0, [x1, y0], [x1, y1]),
+                (0, -1, [x0, y0], [x1, y0]),
+                (0, 1, [x0, y1], [x1, y1]),
+            ] {
+                if !reach(i + di, j + dj) {
+                    let _ = write!(
+                        d,
+                        "M{:.2} {:.2}L{:.2} {:.2}",
+                        f.x(a[0]),
+                        f.y(a[1]),
+                        f.x(b[0]),
+                        f.y(b[1])
+                    );
+                }
+            }
+        }
+    }
+    let _ = writeln!(
+        s,
+        r#"<path class="boundary" d="{d}" stroke="black" stroke-width="0.9" fill="none"/>"#
+    );
+    // The platform centre.
+    let (cx, cy) = match sl.plane {
+        Plane::Horizontal => (fig.centre[0], fig.centre[1]),
+        Plane::Vertical => (fig.centre[0], fig.centre[2]),
+    };
+    let (px, py) = (f.x(cx), f.y(cy));
+    let _ = writeln!(
+        s,
+        r#"<path class="centre" d="M{:.2} {py:.2}H{:.2}M{px:.2} {:.2}V{:.2}" stroke="black" stroke-width="1.2"/>"#,
+        px - 5.0,
+        px + 5.0,
+        py - 5.0,
+        py + 5.0
+    );
+    // Axes: a frame, ticks in metres, labels.
+    let (x0, x1) = (f.x(sl.range[0][0]), f.x(sl.range[0][1]));
+    let (y0, y1) = (f.y(sl.range[1][0]), f.y(sl.range[1][1]));
+    let _ = writeln!(
+        s,
+        r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="black" stroke-width="0.7"/>"#,
+        x1 - x0,
+        y0 - y1
+    );
+    for v in ticks(sl.range[0]) {
+        let x = f.x(v);
+        let _ = writeln!(
+            s,
+            r#"<line x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{:.2}" stroke="black" stroke-width="0.7"/><text x="{x:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
+            y0 + 3.0,
+            y0 + 13.0,
+            tick(v)
+        );
+    }
+    for v in ticks(sl.range[1]) {
+        let y = f.y(v);
+        let _ = writeln!(
+            s,
+            r#"<line x1="{:.2}" y1="{y:.2}" x2="{x0:.2}" y2="{y:.2}" stroke="black" stroke-width="0.7"/><text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
+            x0 - 3.0,
+            x0 - 5.0,
+            y + 3.5,
+            tick(v)
+        );
+    }
+    let (across, up, title) = match sl.plane {
+        Plane::Horizontal => (
+            "x (m)",
+            "y (m)",
+            t.fmt("workspace.horizontal", &[("at", &format!("{:.3}", sl.at))]),
+        ),
+        Plane::Vertical => (
+            "x (m)",
+            "z (m)",
+            t.fmt("workspace.vertical", &[("at", &format!("{:.3}", sl.at))]),
+        ),
+    };
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{across}</text>"#,
+        0.5 * (x0 + x1),
+        y0 + 26.0
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{0:.2}" y="{1:.2}" text-anchor="middle" transform="rotate(-90 {0:.2} {1:.2})">{up}</text>"#,
+        x0 - 36.0,
+        0.5 * (y0 + y1)
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{:.2}" y="{:.2}" text-anchor="middle" font-size="10.5">{}</text>"#,
+        0.5 * (x0 + x1),
+        y1 - 6.0,
+        super::plot::escape(&title)
+    );
+}
+
+/// Nice ticks over `[lo, hi]`, at least three (a narrow range gets finer steps).
+fn ticks([lo, hi]: [f64; 2]) -> Vec<f64> {
+    [4, 6, 8, 12, 16]
+        .into_iter()
+        .map(|n| nice_ticks(lo, hi, n))
+        .find(|t| t.len() >= 3)
+        .unwrap_or_else(|| nice_ticks(lo, hi, 16))
+}
+
+/// A tick label: as many decimals as the value needs, up to three.
+fn tick(v: f64) -> String {
+    let text = format!("{v:.3}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" {
+        "0".to_owned()
+    } else {
+        text.to_owned()
+    }
+}
+
+/// The colour bar: condition number from 1 to the threshold (log scale), the colour past
+/// it, and the boundary's key.
+fn colour_bar(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64, height: f64) {
+    let t = fig.lang;
+    let max = fig.condition_max.max(1.5);
+    let _ = writeln!(
+        s,
+        r#"<text x="{x:.2}" y="{:.2}" font-size="9">{}</text>"#,
+        top - 6.0,
+        t.tr("workspace.condition")
+    );
+    let steps = 48;
+    for k in 0..steps {
+        let f0 = k as f64 / steps as f64;
+        let value = max.powf(f0 + 0.5 / steps as f64);
+        let y = top + height * (1.0 - (k + 1) as f64 / steps as f64);
+        let _ = writeln!(
+            s,
+            r#"<rect x="{x:.2}" y="{y:.2}" width="12" height="{:.2}" fill="{}"/>"#,
+            height / steps as f64 + 0.3,
+            colour(value, max)
+        );
+    }
+    let _ = writeln!(
+        s,
+        r#"<rect x="{x:.2}" y="{top:.2}" width="12" height="{height:.2}" fill="none" stroke="black" stroke-width="0.6"/>"#
+    );
+    let mut marks = vec![1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0];
+    marks.retain(|m| *m < max * 0.95);
+    marks.push(max);
+    for m in marks {
+        let y = top + height * (1.0 - m.ln() / max.ln());
+        let _ = writeln!(
+            s,
+            r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="black" stroke-width="0.6"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+            x + 12.0,
+            x + 15.0,
+            x + 17.0,
+            y + 3.0,
+            tick(m)
+        );
+    }
+    let y = top + height + 12.0;
+    let _ = writeln!(
+        s,
+        r#"<rect x="{x:.2}" y="{y:.2}" width="12" height="8" fill="{PAST}"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        x + 15.0,
+        y + 7.5,
+        t.fmt("workspace.past", &[("max", &tick(max))])
+    );
+    let y = y + 14.0;
+    let _ = writeln!(
+        s,
+        r#"<line x1="{x:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="0.9"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        y + 4.0,
+        x + 12.0,
+        y + 4.0,
+        x + 15.0,
+        y + 7.0,
+        t.tr("workspace.boundary")
+    );
+}

@@ -1,0 +1,96 @@
+//! Plane slices through the constant-orientation workspace for figures: on a grid over a
+//! horizontal (x, y at a height) or vertical (x, z at a y) plane, whether each point is
+//! reachable within the stroke and limits, and how well conditioned it is there.
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::angle::Angle;
+use crate::geometry::Geometry;
+use crate::limits::Limits;
+use crate::pose::Pose;
+
+/// Which plane a slice lies in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Plane {
+    /// x (across) and y (up the page) at a height z.
+    Horizontal,
+    /// x (across) and z (up the page) at a lateral offset y.
+    Vertical,
+}
+
+/// A slice: a grid of cells, row by row from the bottom, each the normalised condition
+/// number at its centre (infinite when singular) or `None` when out of reach.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Slice {
+    /// The plane.
+    pub plane: Plane,
+    /// The fixed coordinate: z for a horizontal slice, y for a vertical one, metres.
+    pub at: f64,
+    /// The ranges across and up, metres (cell edges).
+    pub range: [[f64; 2]; 2],
+    /// Cells across and up.
+    pub cells: [usize; 2],
+    /// The cells, `cells[0]` per row, bottom row first.
+    pub values: Vec<Option<f64>>,
+}
+
+impl Slice {
+    /// The centre of cell (`i` across, `j` up), metres.
+    pub fn centre(&self, i: usize, j: usize) -> [f64; 2] {
+        std::array::from_fn(|a| {
+            let k = if a == 0 { i } else { j };
+            let [lo, hi] = self.range[a];
+            lo + (k as f64 + 0.5) * (hi - lo) / self.cells[a] as f64
+        })
+    }
+
+    /// The value of cell (`i`, `j`).
+    pub fn get(&self, i: usize, j: usize) -> Option<f64> {
+        self.values[j * self.cells[0] + i]
+    }
+}
+
+/// The largest grid a slice takes, cells a side.
+pub const MAX_SLICE_CELLS: usize = 1024;
+
+impl Geometry {
+    /// The slice through the workspace at `orientation` in `plane` at `at` over `range`,
+    /// `cells` a side (each 2 ..= [`MAX_SLICE_CELLS`]).
+    pub fn workspace_slice(
+        &self,
+        limits: &Limits,
+        orientation: [Angle; 3],
+        plane: Plane,
+        at: f64,
+        range: [[f64; 2]; 2],
+        cells: [usize; 2],
+    ) -> Slice {
+        let cells = cells.map(|c| c.clamp(2, MAX_SLICE_CELLS));
+        let mut slice = Slice {
+            plane,
+            at,
+            range,
+            cells,
+            values: Vec::new(),
+        };
+        let [roll, pitch, yaw] = orientation;
+        slice.values = (0..cells[0] * cells[1])
+            .into_par_iter()
+            .map(|k| {
+                let [a, b] = slice.centre(k % cells[0], k / cells[0]);
+                let position = match plane {
+                    Plane::Horizontal => [a, b, at],
+                    Plane::Vertical => [a, at, b],
+                };
+                let pose = Pose::new(position.into(), roll, pitch, yaw);
+                if !self.pose_within_limits(limits, &pose) {
+                    return None;
+                }
+                let c = self.actuated_conditioning(&pose)?;
+                Some(c.condition_number.unwrap_or(f64::INFINITY))
+            })
+            .collect();
+        slice
+    }
+}
