@@ -158,7 +158,7 @@ fn an_unknown_language_is_refused_by_name() {
     let o = stewart(&["plot", "--lang", "fr", "--out", "x.svg"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("`fr` is not a language this program speaks"));
-    for command in ["view", "render", "plot"] {
+    for command in ["view", "render", "plot", "workspace"] {
         let o = stewart(&[command, "--help"]);
         assert!(
             crate::stdout(&o).contains("--lang <zh|en>"),
