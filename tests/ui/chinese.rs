@@ -26,9 +26,20 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     crate::harness_with(state, 3600.0)
 }
 
+/// Words that are the user's own, shown as written: the scenario's name and description,
+/// and the envelope typed in the command line's syntax (x, roll, …).
+fn own_words(state: &ViewerState) -> Vec<String> {
+    let s = state.scenario();
+    vec![
+        s.name.clone(),
+        s.description.clone(),
+        state.design.text.clone(),
+    ]
+}
+
 /// English words (three letters or more, not in [`KEPT`]) in the labels and values of
 /// the accessibility tree, except `allowed` texts (the scenario's own name and notes).
-fn english_words(h: &Harness<'static, ViewerState>, allowed: &[&str]) -> Vec<String> {
+fn english_words(h: &Harness<'static, ViewerState>, allowed: &[String]) -> Vec<String> {
     let mut found = Vec::new();
     for node in h.root().children_recursive() {
         let a = node.accesskit_node();
@@ -57,14 +68,7 @@ fn english_words(h: &Harness<'static, ViewerState>, allowed: &[&str]) -> Vec<Str
 fn every_panel_reads_in_chinese() {
     for preset in ["seed", "paired", "servo-desk", "keyframes", "circle"] {
         let h = chinese(preset);
-        let s = h.state().scenario();
-        // The envelope is typed in the command line's syntax (x, roll, …).
-        let allowed = [
-            s.name.as_str(),
-            s.description.as_str(),
-            h.state().design.text.as_str(),
-        ];
-        let english = english_words(&h, &allowed);
+        let english = english_words(&h, &own_words(h.state()));
         assert!(
             english.is_empty(),
             "{preset}: English left in the Chinese interface: {english:#?}"
@@ -83,13 +87,7 @@ fn manual_mode_and_the_link_read_in_chinese_too() {
     h.state_mut().connect_link();
     h.run();
     h.run();
-    let s = h.state().scenario();
-    let allowed = [
-        s.name.as_str(),
-        s.description.as_str(),
-        h.state().design.text.as_str(),
-    ];
-    let english = english_words(&h, &allowed);
+    let english = english_words(&h, &own_words(h.state()));
     assert!(english.is_empty(), "{english:#?}");
     assert!(
         h.query_all_by_label("未使能").count() >= 2,

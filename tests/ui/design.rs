@@ -1,14 +1,20 @@
 //! The Design panel: an envelope in, the stroke it needs out, and into the limits.
 
+use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::Scenario;
 
-#[test]
-fn the_stroke_an_envelope_needs_goes_into_the_limits() {
+/// The viewer on the seed preset with every section open.
+fn seed_with_panels_open() -> Harness<'static, ViewerState> {
     let mut state = ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
     state.look.expand_panels = true;
-    let mut h = crate::harness_with(state, 3600.0);
+    crate::harness_with(state, 3600.0)
+}
+
+#[test]
+fn the_stroke_an_envelope_needs_goes_into_the_limits() {
+    let mut h = seed_with_panels_open();
     h.state_mut().design.text = "x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15".to_owned();
     h.run();
     h.get_by_label("Compute").click();
@@ -37,9 +43,7 @@ fn the_stroke_an_envelope_needs_goes_into_the_limits() {
 
 #[test]
 fn a_bad_envelope_says_why() {
-    let mut state = ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
-    state.look.expand_panels = true;
-    let mut h = crate::harness_with(state, 3600.0);
+    let mut h = seed_with_panels_open();
     h.state_mut().design.text = "z=0.9..0.7".to_owned();
     h.run();
     h.get_by_label("Compute").click();
