@@ -5,6 +5,7 @@ mod chinese;
 mod design;
 mod export;
 mod files;
+mod legs;
 mod link;
 mod modes;
 mod rotary;

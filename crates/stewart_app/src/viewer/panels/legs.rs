@@ -70,7 +70,10 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         .actuated_conditioning(&pose)
         .map(|c| c.condition_number)
     {
-        Some(Some(k)) => ui.label(t.fmt("legs.condition", &[("k", &format!("{k:.2}"))])),
+        Some(Some(k)) => {
+            singularity_gauge(ui, state, k);
+            ui.label(t.fmt("legs.condition", &[("k", &format!("{k:.2}"))]))
+        }
         Some(None) => ui.label(
             RichText::new(t.tr(if rotary {
                 "legs.singular_servos"
@@ -81,4 +84,30 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         ),
         None => ui.label(RichText::new(t.tr("legs.servo_unreachable")).color(ERROR)),
     };
+}
+
+/// How far the pose is from a singularity: the inverse condition number 1/κ as a bar (1 at
+/// a perfectly conditioned pose, 0 at a singular one), red past the near-singular threshold
+/// `checks.condition_max`, amber within twice it.
+fn singularity_gauge(ui: &mut egui::Ui, state: &ViewerState, k: f64) {
+    let t = state.look.lang;
+    let max = state.scenario().checks.condition_max;
+    let distance = (1.0 / k).clamp(0.0, 1.0);
+    let fill = if k > max {
+        ERROR
+    } else if k > 0.5 * max {
+        super::widgets::WARNING
+    } else {
+        super::widgets::OK
+    };
+    ui.horizontal(|ui| {
+        ui.label(t.tr("legs.distance"))
+            .on_hover_text(t.fmt("legs.distance_tip", &[("max", &max)]));
+        ui.add(
+            egui::ProgressBar::new(distance as f32)
+                .fill(fill)
+                .desired_width(ui.available_width().max(80.0))
+                .text(RichText::new(format!("1/κ = {distance:.3}")).color(Color32::WHITE)),
+        );
+    });
 }
