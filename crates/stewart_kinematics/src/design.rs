@@ -153,6 +153,16 @@ pub struct DesignReport {
 }
 
 impl DesignReport {
+    /// Whether the needed range ([`DesignReport::overall`]) lies within `limits` (min,
+    /// max; either may be absent); `None` when there is no limit or no reachable pose.
+    pub fn fits(&self, [lo, hi]: [Option<f64>; 2]) -> Option<bool> {
+        let [a, b] = self.overall()?;
+        if lo.is_none() && hi.is_none() {
+            return None;
+        }
+        Some(lo.is_none_or(|l| a.value >= l) && hi.is_none_or(|h| b.value <= h))
+    }
+
     /// The smallest and largest value over all actuators: the stroke (or servo range) the
     /// envelope needs.
     pub fn overall(&self) -> Option<[Extreme; 2]> {

@@ -46,7 +46,7 @@ pub fn run(args: &DesignArgs) -> Result<ExitCode> {
                 envelope: &envelope,
                 needed,
                 limits,
-                fits: fits(needed, limits),
+                fits: report.fits(limits),
                 report: &report,
             };
             serde_json::to_string_pretty(&json)? + "\n"
@@ -54,15 +54,6 @@ pub fn run(args: &DesignArgs) -> Result<ExitCode> {
     };
     output::stdout(text.as_bytes())?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// Whether the needed range lies within the limits (`None` without limits).
-fn fits(needed: Option<[Extreme; 2]>, [lo, hi]: [Option<f64>; 2]) -> Option<bool> {
-    let [a, b] = needed?;
-    if lo.is_none() && hi.is_none() {
-        return None;
-    }
-    Some(lo.is_none_or(|l| a.value >= l) && hi.is_none_or(|h| b.value <= h))
 }
 
 /// A pose in words: `x +0.1000 y -0.1000 z 0.9000 m, roll +10.00° pitch …`.
@@ -130,7 +121,7 @@ fn text(scenario: &Scenario, envelope: &Envelope, report: &DesignReport) -> Stri
             let limits = g.quantity_limits();
             let limit_words =
                 |v: Option<f64>| v.map_or("none".to_owned(), |v| format!("{v}{unit}"));
-            match fits(Some([lo, hi]), limits) {
+            match report.fits(limits) {
                 Some(true) => {
                     let _ = writeln!(
                         s,

@@ -1,26 +1,11 @@
 //! SVG to PDF (svg2pdf: text stays text, curves stay paths) and to PNG (resvg).
-
-use std::sync::{Arc, OnceLock};
-
 use anyhow::{Context, Result};
 use resvg::{tiny_skia, usvg};
-
-/// The system fonts, loaded once (DejaVu Sans on Debian: `fonts-dejavu-core`).
-fn fonts() -> Arc<fontdb::Database> {
-    static FONTS: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
-    FONTS
-        .get_or_init(|| {
-            let mut db = fontdb::Database::new();
-            db.load_system_fonts();
-            Arc::new(db)
-        })
-        .clone()
-}
 
 /// Parse an SVG document with the system fonts.
 pub fn tree(svg: &str) -> Result<usvg::Tree> {
     let options = usvg::Options {
-        fontdb: fonts(),
+        fontdb: crate::i18n::fonts::system(),
         ..usvg::Options::default()
     };
     usvg::Tree::from_str(svg, &options).context("the plot's SVG could not be parsed")

@@ -3,7 +3,7 @@
 //! Microsoft YaHei on Windows, PingFang SC on macOS, …). Without one, Chinese falls back
 //! to English with a note, never to boxes.
 
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use super::Lang;
 
@@ -17,16 +17,24 @@ pub struct CjkFont {
     pub index: u32,
 }
 
-/// The system's Chinese font (searched once per process; `FONTCONFIG_FILE` narrows the
-/// search as it does for every fontconfig program).
+/// The system's fonts, read once per process and shared by the plots (resvg, svg2pdf)
+/// and the Chinese font search (`FONTCONFIG_FILE` narrows them as it does for every
+/// fontconfig program; DejaVu Sans on Debian: `fonts-dejavu-core`).
+pub fn system() -> Arc<fontdb::Database> {
+    static FONTS: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
+    FONTS
+        .get_or_init(|| {
+            let mut db = fontdb::Database::new();
+            db.load_system_fonts();
+            Arc::new(db)
+        })
+        .clone()
+}
+
+/// The system's Chinese font (searched once per process).
 pub fn cjk() -> Option<&'static CjkFont> {
     static FONT: OnceLock<Option<CjkFont>> = OnceLock::new();
-    FONT.get_or_init(|| {
-        let mut db = fontdb::Database::new();
-        db.load_system_fonts();
-        find(&db)
-    })
-    .as_ref()
+    FONT.get_or_init(|| find(&system())).as_ref()
 }
 
 /// The first family of [`stewart_render::text::CJK`] that `db` has, regular weight.

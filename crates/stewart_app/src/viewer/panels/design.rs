@@ -68,9 +68,7 @@ fn result(ui: &mut egui::Ui, state: &mut ViewerState) {
         return;
     };
     ui.label(t.fmt("design.needed", &[("range", &range(lo.value, hi.value))]));
-    let [min, max] = g.quantity_limits();
-    let fits = min.is_none_or(|m| lo.value >= m) && max.is_none_or(|m| hi.value <= m);
-    if min.is_some() || max.is_some() {
+    if let Some(fits) = report.fits(g.quantity_limits()) {
         let (key, colour) = if fits {
             ("design.fits", OK)
         } else {
