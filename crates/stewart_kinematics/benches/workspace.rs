@@ -1,10 +1,12 @@
 //! Constant-orientation workspace at a million samples (1000 × 1000 columns, each
 //! solved exactly in z), stroke limits only. The target: under 100 ms on the
 //! 2-core reference machine. `cargo bench -p stewart_kinematics --bench workspace`.
-//! Also a rotary platform's workspace, which is sampled rather than exact per column.
+//! Also a rotary platform's workspace, which is sampled rather than exact per column, and
+//! the viewer's coarse and refined workspace surfaces.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use stewart_kinematics::workspace::WorkspaceSurface;
 use stewart_kinematics::{Angle, Limits, Scenario};
 
 fn bench(c: &mut Criterion) {
@@ -43,5 +45,30 @@ fn servo_bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, servo_bench);
+/// What the viewer computes while a slider is dragged: the workspace and its surface mesh,
+/// first on a 128 × 128 column grid, then refined on 512 × 512. Targets: under 30 ms and
+/// 300 ms on the 2-core reference machine.
+fn viewer_bench(c: &mut Criterion) {
+    let mut group = c.benchmark_group("workspace_surface");
+    group.sample_size(20);
+    for preset in ["seed", "paired"] {
+        let g = Scenario::preset(preset)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .geometry;
+        let orientation = [5.0, -3.0, 10.0].map(Angle::from_degrees);
+        for n in [128, 512] {
+            group.bench_function(format!("{preset}_tilted_{n}x{n}"), |b| {
+                b.iter(|| {
+                    let ws = g
+                        .constant_orientation_workspace(&Limits::default(), orientation, n)
+                        .unwrap_or_else(|e| panic!("{e}"));
+                    WorkspaceSurface::from_workspace(black_box(&ws))
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, servo_bench, viewer_bench);
 criterion_main!(benches);

@@ -506,7 +506,9 @@ pub enum Axis {
 
 mod rotary;
 pub mod slice;
+pub mod surface;
 #[cfg(test)]
 mod tests;
 
 pub use slice::{Plane, Slice};
+pub use surface::WorkspaceSurface;
