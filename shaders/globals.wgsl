@@ -1,4 +1,5 @@
-// The uniforms every pipeline shares (camera, lights, shading) and the sRGB encoding. Prepended to each shader
+// The uniforms every pipeline shares (camera, lights, shading), the sRGB encoding and the
+// lighting of lit surfaces. Prepended to each shader
 // module by `stewart_render::shaders`; the renderer's `gpu_types::Globals` mirrors it
 // (a test compares their sizes through naga's layout).
 
@@ -26,4 +27,21 @@ fn encode(linear: vec3<f32>) -> vec3<f32> {
     let low = c * 12.92;
     let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
     return select(high, low, c <= vec3<f32>(0.0031308));
+}
+
+// Lit colour of a surface point: ambient, key and fill diffuse, a specular highlight.
+// Two-sided: the face that looks at the camera is lit (plates and the workspace surface
+// are seen from both sides).
+fn shade(color: vec3<f32>, world: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
+    let to_eye = normalize(globals.eye.xyz - world);
+    var n = normalize(normal);
+    if dot(n, to_eye) < 0.0 {
+        n = -n;
+    }
+    let key = normalize(globals.key_light.xyz);
+    let fill = normalize(globals.fill_light.xyz);
+    let diffuse = globals.key_light.w * max(dot(n, key), 0.0) + globals.fill_light.w * max(dot(n, fill), 0.0);
+    let half_vector = normalize(key + to_eye);
+    let specular = globals.shading.y * pow(max(dot(n, half_vector), 0.0), globals.shading.z);
+    return color * (globals.shading.x + diffuse) + vec3<f32>(specular);
 }

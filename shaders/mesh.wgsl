@@ -44,17 +44,5 @@ fn vs_main(v: VertexIn, i: InstanceIn) -> VertexOut {
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    let to_eye = normalize(globals.eye.xyz - in.world);
-    var n = normalize(in.normal);
-    // Two-sided: light the face that looks at the camera (plates are seen from below too).
-    if dot(n, to_eye) < 0.0 {
-        n = -n;
-    }
-    let key = normalize(globals.key_light.xyz);
-    let fill = normalize(globals.fill_light.xyz);
-    let diffuse = globals.key_light.w * max(dot(n, key), 0.0) + globals.fill_light.w * max(dot(n, fill), 0.0);
-    let half_vector = normalize(key + to_eye);
-    let specular = globals.shading.y * pow(max(dot(n, half_vector), 0.0), globals.shading.z);
-    let lit = in.color.rgb * (globals.shading.x + diffuse) + vec3<f32>(specular);
-    return vec4<f32>(encode(lit), in.color.a);
+    return vec4<f32>(encode(shade(in.color.rgb, in.world, in.normal)), in.color.a);
 }

@@ -3,6 +3,7 @@
 
 mod shaders;
 mod snapshots;
+mod workspace;
 
 use glam::Vec3;
 use stewart_kinematics::{Geometry, GeometryParams, Pose, StrokeLimits};

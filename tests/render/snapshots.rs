@@ -20,7 +20,7 @@ const CHANNEL_TOLERANCE: i32 = 24;
 /// Most pixels that may differ from a reference.
 const MAX_DIFFERING: usize = 40;
 /// Size of the reference images.
-const SIZE: (u32, u32) = (480, 360);
+pub(crate) const SIZE: (u32, u32) = (480, 360);
 
 /// Pixels of `new` that differ from `reference` by more than the channel tolerance, and
 /// a picture of where (magenta).
@@ -44,7 +44,8 @@ fn compare(reference: &image::RgbaImage, new: &image::RgbaImage) -> (usize, imag
     (differing, diff)
 }
 
-fn check(name: &str, frame: &Frame) {
+/// Compare `frame` with the reference image `name` (see the module docs).
+pub(crate) fn check(name: &str, frame: &Frame) {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../tests/snapshots");
     let path = dir.join(format!("{name}.png"));
     let new = image::RgbaImage::from_raw(frame.width, frame.height, frame.rgba.clone())

@@ -55,6 +55,10 @@ pub struct DrawList {
     pub lines: Vec<LineVertex>,
     /// Text drawn over the scene (leg labels, readouts), in screen space.
     pub texts: Vec<crate::text::TextItem>,
+    /// Translucent analysis meshes (workspace surface, conditioning slice), drawn in this
+    /// order after the opaque scene; a view keeps each on the GPU while the same `Arc`
+    /// comes back.
+    pub analysis: Vec<std::sync::Arc<crate::analysis::AnalysisMesh>>,
 }
 
 /// Radii, as fractions of the larger plate's radius.

@@ -28,6 +28,18 @@ pub struct MeshVertex {
     pub normal: [f32; 3],
 }
 
+/// `VertexIn` in `analysis.wgsl`: a world position, a normal and a linear colour.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
+pub struct ColouredVertex {
+    /// Position, world space.
+    pub position: [f32; 3],
+    /// Normal, world space (not necessarily unit length).
+    pub normal: [f32; 3],
+    /// Linear RGB and alpha.
+    pub color: [f32; 4],
+}
+
 /// `InstanceIn` in `mesh.wgsl`: a model matrix (columns) and a linear colour.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]

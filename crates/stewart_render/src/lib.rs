@@ -7,11 +7,14 @@
 //!
 //! - [`camera`]: the orbit camera (glam);
 //! - [`draw_list`]: scene frame → instances, plates and lines (CPU);
+//! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
 //! - [`renderer`]: pipelines and the one draw entry point;
 //! - [`offscreen`]: headless targets and read-back;
 //! - [`gpu`]: adapter choice (a GPU, else lavapipe), honouring `WGPU_BACKEND` / `WGPU_ADAPTER_NAME`.
 
+pub mod analysis;
 pub mod camera;
+pub mod colormap;
 pub mod draw_list;
 pub mod gpu;
 pub mod gpu_types;

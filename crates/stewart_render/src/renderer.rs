@@ -5,7 +5,7 @@ use wgpu::util::DeviceExt;
 
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
-use crate::gpu_types::{Globals, LineVertex, MeshInstance, MeshVertex, TextVertex};
+use crate::gpu_types::{ColouredVertex, Globals, LineVertex, MeshInstance, MeshVertex, TextVertex};
 use crate::mesh::Mesh;
 use crate::shaders;
 use crate::text::{ATLAS_SIZE, Fonts, GlyphAtlas};
@@ -16,7 +16,7 @@ use crate::view::{Batches, PreparedView};
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// A static mesh on the GPU.
-struct GpuMesh {
+pub(crate) struct GpuMesh {
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
     count: u32,
@@ -24,18 +24,33 @@ struct GpuMesh {
 
 impl GpuMesh {
     fn new(device: &wgpu::Device, mesh: &Mesh, label: &str) -> Self {
+        Self::from_parts(
+            device,
+            bytemuck::cast_slice(&mesh.vertices),
+            &mesh.indices,
+            label,
+        )
+    }
+
+    /// Upload vertex bytes and triangle indices.
+    pub(crate) fn from_parts(
+        device: &wgpu::Device,
+        vertices: &[u8],
+        indices: &[u32],
+        label: &str,
+    ) -> Self {
         Self {
             vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(label),
-                contents: bytemuck::cast_slice(&mesh.vertices),
+                contents: vertices,
                 usage: wgpu::BufferUsages::VERTEX,
             }),
             indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(label),
-                contents: bytemuck::cast_slice(&mesh.indices),
+                contents: bytemuck::cast_slice(indices),
                 usage: wgpu::BufferUsages::INDEX,
             }),
-            count: mesh.indices.len() as u32,
+            count: indices.len() as u32,
         }
     }
 }
@@ -47,6 +62,7 @@ impl GpuMesh {
 pub struct Renderer {
     opaque: wgpu::RenderPipeline,
     translucent: wgpu::RenderPipeline,
+    analysis: wgpu::RenderPipeline,
     lines: wgpu::RenderPipeline,
     globals_layout: wgpu::BindGroupLayout,
     cylinder: GpuMesh,
@@ -152,6 +168,7 @@ impl Renderer {
         // Translucent plates: depth-tested against the opaque scene, not written, both
         // faces drawn, back to front.
         let translucent = mesh_pipeline("translucent plates", false, None);
+        let analysis = analysis_pipeline(device, &pipeline_layout, multisample, &blend_target);
         let lines = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("lines"),
             layout: Some(&pipeline_layout),
@@ -191,6 +208,7 @@ impl Renderer {
         Self {
             opaque,
             translucent,
+            analysis,
             lines,
             text,
             atlas_texture,
@@ -307,6 +325,7 @@ impl Renderer {
             .write(device, queue, bytemuck::cast_slice(&plate_indices));
         view.line_vertices
             .write(device, queue, bytemuck::cast_slice(&list.lines));
+        view.keep_analysis(device, &list.analysis);
         let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport);
         view.text_vertices
             .write(device, queue, bytemuck::cast_slice(&text));
@@ -385,6 +404,14 @@ impl Renderer {
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..mesh.count, 0, range.clone());
         }
+        if !view.analysis.is_empty() {
+            pass.set_pipeline(&self.analysis);
+            for (_, mesh) in &view.analysis {
+                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.count, 0, 0..1);
+            }
+        }
         if !view.batches.plates.is_empty() {
             pass.set_pipeline(&self.translucent);
             pass.set_vertex_buffer(0, view.plate_vertices.buffer.slice(..));
@@ -438,6 +465,55 @@ impl Renderer {
         });
         self.paint(view, &mut pass);
     }
+}
+
+/// The analysis pipeline: translucent world-space meshes with a colour per vertex,
+/// depth-tested against the opaque scene but not written, both faces drawn.
+fn analysis_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+    targets: &[Option<wgpu::ColorTargetState>],
+) -> wgpu::RenderPipeline {
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("analysis.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
+    });
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("analysis meshes"),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs_main"),
+            compilation_options: Default::default(),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<ColouredVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
+            })],
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            cull_mode: None,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(false),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample,
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs_main"),
+            compilation_options: Default::default(),
+            targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
 }
 
 /// The text pipeline (screen-space quads over everything, alpha-blended), the glyph atlas

@@ -18,9 +18,17 @@ pub const TEXT: &str = concat!(
     include_str!("../../../shaders/text.wgsl")
 );
 
+/// Translucent analysis meshes with a colour per vertex (workspace surface, conditioning
+/// slice), globals included.
+pub const ANALYSIS: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/analysis.wgsl")
+);
+
 /// Every pipeline's module with the shader files it is made of, for validation.
-pub const MODULES: [(&str, &[&str], &str); 3] = [
+pub const MODULES: [(&str, &[&str], &str); 4] = [
     ("mesh", &["globals.wgsl", "mesh.wgsl"], MESH),
+    ("analysis", &["globals.wgsl", "analysis.wgsl"], ANALYSIS),
     ("lines", &["globals.wgsl", "lines.wgsl"], LINES),
     ("text", &["globals.wgsl", "text.wgsl"], TEXT),
 ];

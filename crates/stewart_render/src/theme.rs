@@ -55,6 +55,8 @@ pub struct Theme {
     pub path: Srgba,
     /// x, y, z axes.
     pub axes: [Srgba; 3],
+    /// The reachable workspace's surface (translucent).
+    pub workspace: Srgba,
 }
 
 impl Theme {
@@ -76,6 +78,7 @@ impl Theme {
             [0.30, 0.80, 0.30, 1.0],
             [0.30, 0.50, 0.95, 1.0],
         ],
+        workspace: [0.40, 0.80, 0.95, 0.16],
     };
 
     /// White background, dark lines: for slides and papers.
@@ -96,6 +99,7 @@ impl Theme {
             [0.10, 0.60, 0.10, 1.0],
             [0.10, 0.30, 0.85, 1.0],
         ],
+        workspace: [0.10, 0.45, 0.65, 0.16],
     };
 
     /// The colours of a leg in `status`: actuator body and rod (one warning colour for

@@ -2,7 +2,11 @@
 //! [`crate::Renderer`] prepares and paints any number of these with one set of pipelines
 //! (as re_renderer's view builder does).
 
+use std::sync::Arc;
+
+use crate::analysis::AnalysisMesh;
 use crate::gpu_types::Globals;
+use crate::renderer::GpuMesh;
 
 /// A vertex or instance buffer rewritten every frame, grown when needed.
 pub(crate) struct DynamicBuffer {
@@ -72,6 +76,9 @@ pub struct PreparedView {
     pub(crate) text_vertices: DynamicBuffer,
     pub(crate) batches: Batches,
     pub(crate) clear: wgpu::Color,
+    /// The draw list's analysis meshes on the GPU, in drawing order, each kept while the
+    /// same `Arc` comes back.
+    pub(crate) analysis: Vec<(Arc<AnalysisMesh>, GpuMesh)>,
 }
 
 impl PreparedView {
@@ -104,7 +111,26 @@ impl PreparedView {
             text_vertices: DynamicBuffer::new(device, "text", wgpu::BufferUsages::VERTEX),
             batches: Batches::default(),
             clear: wgpu::Color::BLACK,
+            analysis: Vec::new(),
         }
+    }
+
+    /// Keep `meshes` on the GPU: upload those not there yet, drop those no longer drawn.
+    pub(crate) fn keep_analysis(&mut self, device: &wgpu::Device, meshes: &[Arc<AnalysisMesh>]) {
+        let mut kept = Vec::with_capacity(meshes.len());
+        for mesh in meshes.iter().filter(|m| !m.is_empty()) {
+            let gpu = match self.analysis.iter().position(|(m, _)| Arc::ptr_eq(m, mesh)) {
+                Some(k) => self.analysis.swap_remove(k).1,
+                None => GpuMesh::from_parts(
+                    device,
+                    bytemuck::cast_slice(&mesh.vertices),
+                    &mesh.indices,
+                    "analysis",
+                ),
+            };
+            kept.push((Arc::clone(mesh), gpu));
+        }
+        self.analysis = kept;
     }
 
     /// The background colour of the prepared frame (linear), for clearing.

@@ -8,6 +8,8 @@ use std::fmt::Write as _;
 
 use stewart_kinematics::workspace::{Plane, Slice};
 
+use stewart_render::colormap;
+
 use super::plot::nice_ticks;
 use crate::i18n::Lang;
 
@@ -15,21 +17,15 @@ use crate::i18n::Lang;
 const WIDTH: f64 = 604.7;
 const HEIGHT: f64 = 302.4;
 
-/// Viridis at nine stops (perceptually uniform, colour-blind safe).
-const VIRIDIS: [[f64; 3]; 9] = [
-    [68.0, 1.0, 84.0],
-    [71.0, 44.0, 122.0],
-    [59.0, 81.0, 139.0],
-    [44.0, 113.0, 142.0],
-    [33.0, 144.0, 141.0],
-    [39.0, 173.0, 129.0],
-    [92.0, 200.0, 99.0],
-    [170.0, 220.0, 50.0],
-    [253.0, 231.0, 37.0],
-];
+/// Cells past the near-singular threshold (and singular ones), as an SVG colour.
+fn past() -> String {
+    hex(colormap::PAST)
+}
 
-/// Cells past the near-singular threshold (and singular ones).
-const PAST: &str = "#D01C8B";
+/// `#RRGGBB`.
+fn hex([r, g, b]: [u8; 3]) -> String {
+    format!("#{r:02X}{g:02X}{b:02X}")
+}
 
 /// What the figure shows.
 pub struct WorkspaceFigure<'a> {
@@ -45,21 +41,14 @@ pub struct WorkspaceFigure<'a> {
     pub lang: Lang,
 }
 
-/// Colour of condition number `k`: 0 at 1, 1 at `max` on a log scale.
+/// Colour of condition number `k`: viridis from 1 to `max` on a log scale
+/// (`stewart_render::colormap`), quantised to 48 levels so that neighbouring cells merge
+/// into runs.
 fn colour(k: f64, max: f64) -> String {
-    if !k.is_finite() || k > max {
-        return PAST.to_owned();
-    }
-    let s = (k.max(1.0).ln() / max.max(1.0 + 1e-9).ln()).clamp(0.0, 1.0);
-    // Quantised to 48 levels so that neighbouring cells merge into runs.
-    let s = (s * 48.0).round() / 48.0;
-    let x = s * (VIRIDIS.len() - 1) as f64;
-    let i = (x.floor() as usize).min(VIRIDIS.len() - 2);
-    let f = x - i as f64;
-    let c: [u8; 3] = std::array::from_fn(|k| {
-        (VIRIDIS[i][k] + f * (VIRIDIS[i + 1][k] - VIRIDIS[i][k])).round() as u8
-    });
-    format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2])
+    let Some(s) = colormap::condition_fraction(k, max) else {
+        return past();
+    };
+    hex(colormap::viridis((s * 48.0).round() / 48.0))
 }
 
 /// Where one slice is drawn: the box on the page and the metre-to-page scale.
@@ -364,7 +353,8 @@ fn colour_bar(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64, height: f
     let y = top + height + 12.0;
     let _ = writeln!(
         s,
-        r#"<rect x="{x:.2}" y="{y:.2}" width="12" height="8" fill="{PAST}"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        r#"<rect x="{x:.2}" y="{y:.2}" width="12" height="8" fill="{}"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        past(),
         x + 15.0,
         y + 7.5,
         t.fmt("workspace.past", &[("max", &tick(max))])
