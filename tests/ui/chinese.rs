@@ -23,7 +23,13 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     let mut state = ViewerState::new(Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}")));
     state.look.lang = Lang::Zh;
     state.look.expand_panels = true;
-    crate::harness_with(state, 3600.0)
+    // The Workspace panel's numbers and slice too (coarse: a debug build).
+    state.workspace = stewart_app::viewer::workspace::WorkspaceTool::with_resolutions(16, 48);
+    state.workspace.show = true;
+    let mut h = crate::harness_with(state, 4200.0);
+    h.state_mut().settle_workspace();
+    h.run();
+    h
 }
 
 /// Words that are the user's own, shown as written: the scenario's name and description,

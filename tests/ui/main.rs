@@ -13,6 +13,7 @@ mod shots;
 mod snapshots;
 mod teleop;
 mod trajectory;
+mod workspace;
 
 use egui::accesskit::Role;
 use egui_kittest::Harness;

@@ -1,6 +1,7 @@
 //! The viewer's CPU work per frame — UI layout of every panel, kinematics, the scene's
 //! draw list and egui's tessellation — for the seed playing at 1280×720, without a
-//! window or GPU (the same work `stewart view --frame-stats` reports as the CPU part).
+//! window or GPU (the same work `stewart view --frame-stats` reports as the CPU part);
+//! and with the workspace surface recomputed off the UI thread as the pose plays.
 //! `cargo bench -p stewart_app --bench viewer`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -37,6 +38,18 @@ fn bench(c: &mut Criterion) {
         }
         group.bench_function(name, |b| b.iter(|| frame(&ctx, &mut state)));
     }
+    // The workspace shown at the playing pose's orientation: every frame asks for a new
+    // surface (the worker computes on its own thread; the frame only swaps results in).
+    let scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+    let mut state = ViewerState::new(scenario);
+    state.workspace.show = true;
+    let ctx = egui::Context::default();
+    for _ in 0..5 {
+        frame(&ctx, &mut state);
+    }
+    group.bench_function("paired_playing_workspace_following", |b| {
+        b.iter(|| frame(&ctx, &mut state))
+    });
     group.finish();
 }
 

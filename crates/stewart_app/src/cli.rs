@@ -621,6 +621,9 @@ pub struct ViewArgs {
     /// Start with every collapsible section of the panels open.
     #[arg(long)]
     pub expand_panels: bool,
+    /// Show the reachable workspace (surface and conditioning slice) from the start.
+    #[arg(long)]
+    pub workspace: bool,
     /// Window size WxH in logical pixels (default: the last session's, else 1280x720).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     pub size: Option<(u32, u32)>,

@@ -118,6 +118,36 @@ impl ConstantOrientationWorkspace {
     }
 }
 
+impl ConstantOrientationWorkspace {
+    /// Every `stride`-th column in `x` and `y` (a lighter mesh of the same workspace, for
+    /// drawing): the kept columns' spans on a grid `stride` times coarser, with the volume
+    /// and extent they give and an error bound widened by their difference from this
+    /// volume. `stride` 0 or 1 keeps everything.
+    pub fn every(&self, stride: usize) -> Self {
+        let Some([ex, ey, _]) = self.extent.filter(|_| stride > 1) else {
+            return self.clone();
+        };
+        let index = |v: f64, lo: f64| ((v - lo) / self.cell).round() as usize;
+        let spans: Vec<[f64; 4]> = self
+            .spans
+            .iter()
+            .filter(|s| index(s[0], ex[0]) % stride == 0 && index(s[1], ey[0]) % stride == 0)
+            .copied()
+            .collect();
+        let cell = self.cell * stride as f64;
+        let volume = volume_of(&spans, cell);
+        Self {
+            orientation: self.orientation,
+            resolution: self.resolution.div_ceil(stride),
+            cell,
+            volume,
+            volume_error: self.volume_error + (volume - self.volume).abs(),
+            extent: extent_of(&spans),
+            spans,
+        }
+    }
+}
+
 /// Geometry constants of one orientation.
 struct Shells {
     /// Shell centres `−d_i`.

@@ -56,7 +56,8 @@ pub struct DrawList {
     /// Text drawn over the scene (leg labels, readouts), in screen space.
     pub texts: Vec<crate::text::TextItem>,
     /// Translucent analysis meshes (workspace surface, conditioning slice), drawn in this
-    /// order after the opaque scene; a view keeps each on the GPU while the same `Arc`
+    /// order after the opaque scene and the plates (a slice at the platform's height shows
+    /// over it); a view keeps each on the GPU while the same `Arc`
     /// comes back.
     pub analysis: Vec<std::sync::Arc<crate::analysis::AnalysisMesh>>,
 }

@@ -404,14 +404,6 @@ impl Renderer {
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..mesh.count, 0, range.clone());
         }
-        if !view.analysis.is_empty() {
-            pass.set_pipeline(&self.analysis);
-            for (_, mesh) in &view.analysis {
-                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-                pass.draw_indexed(0..mesh.count, 0, 0..1);
-            }
-        }
         if !view.batches.plates.is_empty() {
             pass.set_pipeline(&self.translucent);
             pass.set_vertex_buffer(0, view.plate_vertices.buffer.slice(..));
@@ -421,6 +413,14 @@ impl Renderer {
             );
             for &(first, count, instance) in &view.batches.plates {
                 pass.draw_indexed(first..first + count, 0, instance..instance + 1);
+            }
+        }
+        if !view.analysis.is_empty() {
+            pass.set_pipeline(&self.analysis);
+            for (_, mesh) in &view.analysis {
+                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.count, 0, 0..1);
             }
         }
         if view.batches.text > 0 {

@@ -78,7 +78,7 @@ impl Theme {
             [0.30, 0.80, 0.30, 1.0],
             [0.30, 0.50, 0.95, 1.0],
         ],
-        workspace: [0.40, 0.80, 0.95, 0.16],
+        workspace: [0.40, 0.80, 0.95, 0.26],
     };
 
     /// White background, dark lines: for slides and papers.
@@ -99,7 +99,7 @@ impl Theme {
             [0.10, 0.60, 0.10, 1.0],
             [0.10, 0.30, 0.85, 1.0],
         ],
-        workspace: [0.10, 0.45, 0.65, 0.16],
+        workspace: [0.10, 0.45, 0.65, 0.26],
     };
 
     /// The colours of a leg in `status`: actuator body and rod (one warning colour for

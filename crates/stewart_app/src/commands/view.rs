@@ -78,6 +78,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     note = note.or(font_note);
     state.look.presentation = args.presentation;
     state.look.expand_panels = args.expand_panels;
+    state.workspace.show |= args.workspace;
     state.session.folder = folder;
     state.session.origin = origin;
     state.session.note = note;

@@ -32,6 +32,7 @@ pub mod teleop;
 pub mod view3d;
 pub mod window;
 pub mod window_shot;
+pub mod workspace;
 
 pub use state::ViewerState;
 pub use window::{ViewOptions, run};

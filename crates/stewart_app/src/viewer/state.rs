@@ -51,6 +51,8 @@ pub struct ViewerState {
     pub shots: super::shots::Shots,
     /// The stroke an envelope of poses needs.
     pub design: super::design::DesignTool,
+    /// The workspace surface and the conditioning slice in the 3D view.
+    pub workspace: super::workspace::WorkspaceTool,
 }
 
 /// The saved session's state in this run.
@@ -109,6 +111,7 @@ impl ViewerState {
             },
             shots: super::shots::Shots::default(),
             design: super::design::DesignTool::default(),
+            workspace: super::workspace::WorkspaceTool::default(),
             scenario,
         }
     }
@@ -164,6 +167,14 @@ impl ViewerState {
             ..stewart_render::Overlays::default()
         };
         let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
+        if self.workspace.show
+            && let Some(outcome) = &self.workspace.latest
+        {
+            list.analysis.push(outcome.surface.clone());
+            if let Some(slice) = outcome.slice.as_ref().filter(|_| self.workspace.show_slice) {
+                list.analysis.push(slice.mesh.clone());
+            }
+        }
         if self.look.readouts {
             let start = self.scenario.motion.sampling.start();
             let time = trajectory.then_some(start + self.playback.time);
@@ -380,6 +391,58 @@ impl ViewerState {
         self.link.follow(self.drive(), self.playback.looping);
         self.shots.poll();
         self.design.poll();
+        if self.workspace.show {
+            let request = self.workspace_request();
+            self.workspace.request(request);
+        }
+        self.workspace.poll();
+    }
+
+    /// When the workspace is shown, wait (at most ten seconds) for its refinement at the
+    /// pose shown (screenshots and tests want a settled picture).
+    pub fn settle_workspace(&mut self) {
+        if self.workspace.show {
+            let request = self.workspace_request();
+            self.workspace.request(request);
+            self.workspace.wait(std::time::Duration::from_secs(10));
+        }
+    }
+
+    /// The orientation the workspace is shown at: the pose's, or the one chosen.
+    pub fn workspace_orientation(&self) -> [stewart_kinematics::Angle; 3] {
+        if self.workspace.follow_pose {
+            let p = self.pose();
+            [p.roll, p.pitch, p.yaw]
+        } else {
+            self.workspace
+                .orientation_deg
+                .map(stewart_kinematics::Angle::from_degrees)
+        }
+    }
+
+    /// The platform centre of the pose shown, metres.
+    pub fn centre(&self) -> Vector3<f64> {
+        self.scenario.geometry.platform_centre(&self.pose())
+    }
+
+    /// What the workspace is computed for now.
+    fn workspace_request(&self) -> super::workspace::Request {
+        let w = &self.workspace;
+        let slice_at = w.show_slice.then(|| {
+            if w.slice_follows {
+                self.centre().z
+            } else {
+                w.slice_height
+            }
+        });
+        super::workspace::Request {
+            geometry: self.scenario.geometry.clone(),
+            limits: self.scenario.limits,
+            orientation: self.workspace_orientation(),
+            slice_at,
+            condition_max: self.scenario.checks.condition_max,
+            colour: stewart_render::theme::linear(self.theme().workspace),
+        }
     }
 
     /// Duration of the trajectory, seconds.
@@ -428,6 +491,7 @@ impl ViewerState {
             || self.report_pending()
             || self.link.connected()
             || self.shots.busy()
+            || (self.workspace.show && self.workspace.busy())
     }
 
     /// Move on by `dt` seconds of wall time: playback, and in manual mode the history.

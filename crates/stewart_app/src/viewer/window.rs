@@ -305,8 +305,9 @@ impl App {
         let raw = open.input.take_egui_input(&open.window);
         let state = &mut self.state;
         if self.options.screenshot.is_some() {
-            // A screenshot shows the settled picture, report included.
+            // A screenshot shows the settled picture, report and workspace included.
             state.wait_for_report();
+            state.settle_workspace();
         }
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
         // Honour egui's own repaint requests (zero: at once; otherwise after the delay).

@@ -12,6 +12,7 @@ mod plot;
 mod scenario;
 mod view;
 mod widgets;
+mod workspace;
 
 use super::playback::MotionMode;
 use super::state::ViewerState;
@@ -46,6 +47,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     ui.separator();
                     diagnostics::show(ui, state);
                     design::show(ui, state);
+                    ui.separator();
+                    workspace::show(ui, state);
                     ui.separator();
                     export::show(ui, state);
                     ui.separator();

@@ -212,3 +212,24 @@ fn the_upper_surface_holds_every_columns_highest_reachable_point() {
         assert!(!g.pose_within_limits(&Limits::default(), &pose([p[0], p[1], p[2] + 1e-6])));
     }
 }
+
+#[test]
+fn every_other_column_is_a_lighter_mesh_of_the_same_workspace() {
+    let g = preset("paired");
+    let orientation = [5.0, -3.0, 10.0].map(Angle::from_degrees);
+    let fine = g
+        .constant_orientation_workspace(&Limits::default(), orientation, 256)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(fine.every(1), fine);
+    let light = fine.every(2);
+    assert_eq!(light.resolution, 128);
+    assert!((light.cell - 2.0 * fine.cell).abs() < 1e-15);
+    // About a quarter of the columns, the same volume within its widened bound.
+    let ratio = light.spans.len() as f64 / fine.spans.len() as f64;
+    assert!((ratio - 0.25).abs() < 0.02, "{ratio}");
+    assert!((light.volume - fine.volume).abs() <= light.volume_error);
+    assert!((light.volume - fine.volume).abs() < 2e-3 * fine.volume);
+    let s = WorkspaceSurface::from_workspace(&light);
+    assert_closed(&s);
+    assert!((s.enclosed_volume() - fine.volume).abs() < 2e-3 * fine.volume);
+}

@@ -1,0 +1,219 @@
+//! Workspace: the reachable volume at an orientation drawn in the 3D view, its volume and
+//! extent, whether the platform centre lies inside, and a horizontal slice coloured by
+//! the condition number with its colour bar.
+
+use egui::{Color32, RichText};
+use stewart_render::colormap;
+
+use super::widgets::{ERROR, OK, WARNING};
+use crate::viewer::state::ViewerState;
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    egui::CollapsingHeader::new(t.tr("workspace_panel.heading"))
+        .default_open(state.look.expand_panels)
+        .show(ui, |ui| {
+            ui.checkbox(&mut state.workspace.show, t.tr("workspace_panel.show"))
+                .on_hover_text(t.tr("workspace_panel.show_tip"));
+            if !state.workspace.show {
+                return;
+            }
+            orientation(ui, state);
+            numbers(ui, state);
+            ui.separator();
+            slice(ui, state);
+        });
+}
+
+/// At the pose's orientation, or at one chosen with three drag values.
+fn orientation(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let w = &mut state.workspace;
+    ui.radio_value(&mut w.follow_pose, true, t.tr("workspace_panel.follow"));
+    ui.horizontal(|ui| {
+        ui.radio_value(&mut w.follow_pose, false, t.tr("workspace_panel.chosen"));
+        for (k, key) in ["pose.roll", "pose.pitch", "pose.yaw"].iter().enumerate() {
+            ui.add_enabled(
+                !w.follow_pose,
+                egui::DragValue::new(&mut w.orientation_deg[k])
+                    .range(-90.0..=90.0)
+                    .speed(0.25)
+                    .suffix("°"),
+            )
+            .on_hover_text(t.tr(key));
+        }
+    });
+}
+
+/// Progress, volume, extent, and where the platform centre lies.
+fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
+    let t = state.look.lang;
+    let w = &state.workspace;
+    if let Some(e) = &w.error {
+        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
+        return;
+    }
+    let Some(o) = &w.latest else {
+        ui.label(t.tr("workspace_panel.computing"));
+        return;
+    };
+    let ms = format!("{:.0}", o.elapsed.as_secs_f64() * 1e3);
+    let columns = o.resolution.to_string();
+    let key = if w.busy() {
+        "workspace_panel.refining"
+    } else {
+        "workspace_panel.columns"
+    };
+    ui.label(RichText::new(t.fmt(key, &[("n", &columns), ("ms", &ms)])).small());
+    let Some(extent) = o.extent else {
+        ui.label(RichText::new(t.tr("workspace_panel.empty")).color(ERROR));
+        return;
+    };
+    ui.label(t.fmt(
+        "workspace_panel.volume",
+        &[
+            ("volume", &format!("{:.6}", o.volume)),
+            ("error", &format!("{:.6}", o.volume_error)),
+        ],
+    ));
+    for (axis, [lo, hi]) in ["x", "y", "z"].iter().zip(extent) {
+        ui.label(
+            RichText::new(t.fmt(
+                "workspace_panel.extent",
+                &[
+                    ("axis", axis),
+                    ("min", &format!("{lo:.4}")),
+                    ("max", &format!("{hi:.4}")),
+                ],
+            ))
+            .monospace(),
+        );
+    }
+    let (key, colour) = if centre_inside(state) {
+        ("workspace_panel.inside", OK)
+    } else {
+        ("workspace_panel.outside", ERROR)
+    };
+    ui.label(RichText::new(t.tr(key)).color(colour));
+    if o.split_columns > 0 {
+        ui.label(
+            RichText::new(t.fmt("workspace_panel.split", &[("count", &o.split_columns)])).small(),
+        );
+    }
+}
+
+/// Whether the platform centre of the pose shown is reachable at the workspace's
+/// orientation (the pose itself when the orientation follows it).
+pub fn centre_inside(state: &ViewerState) -> bool {
+    let pose = state.pose();
+    let [roll, pitch, yaw] = state.workspace_orientation();
+    let g = &state.scenario().geometry;
+    // The same centre at the workspace's orientation.
+    let probe = stewart_kinematics::Pose::new(pose.position, roll, pitch, yaw);
+    let shift = state.centre() - g.platform_centre(&probe);
+    let probe = probe.with_position(pose.position + shift);
+    g.pose_within_limits(&state.scenario().limits, &probe)
+}
+
+/// The slice's switches, its colour bar and the cells past the threshold.
+fn slice(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let centre_z = state.centre().z;
+    let top = state
+        .workspace
+        .latest
+        .as_ref()
+        .and_then(|o| o.extent)
+        .map_or(2.0 * centre_z.max(0.1), |e| e[2][1]);
+    let w = &mut state.workspace;
+    ui.checkbox(&mut w.show_slice, t.tr("workspace_panel.slice"))
+        .on_hover_text(t.tr("workspace_panel.slice_tip"));
+    if !w.show_slice {
+        return;
+    }
+    ui.checkbox(&mut w.slice_follows, t.tr("workspace_panel.slice_follows"));
+    if w.slice_follows {
+        w.slice_height = centre_z;
+    }
+    ui.add_enabled(
+        !w.slice_follows,
+        egui::Slider::new(&mut w.slice_height, 0.0..=top.max(0.01))
+            .suffix(" m")
+            .text(t.tr("workspace_panel.slice_height")),
+    );
+    let condition_max = state.scenario().checks.condition_max;
+    colour_bar(ui, condition_max);
+    if let Some(s) = state
+        .workspace
+        .latest
+        .as_ref()
+        .and_then(|o| o.slice.as_ref())
+    {
+        let colour = if s.past > 0 { WARNING } else { OK };
+        ui.label(
+            RichText::new(t.fmt(
+                "workspace_panel.past",
+                &[
+                    ("max", &format!("{condition_max}")),
+                    ("past", &s.past),
+                    ("cells", &s.reachable),
+                ],
+            ))
+            .color(colour),
+        );
+    }
+}
+
+/// Viridis from 1 to `condition_max` (log scale) with ticks, then the colour past it.
+fn colour_bar(ui: &mut egui::Ui, condition_max: f64) {
+    let width = ui.available_width().clamp(120.0, 280.0);
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, 30.0), egui::Sense::hover());
+    let painter = ui.painter_at(rect);
+    let bar = egui::Rect::from_min_size(rect.min, egui::vec2(width - 22.0, 12.0));
+    let steps = 64;
+    for k in 0..steps {
+        let s = (k as f64 + 0.5) / steps as f64;
+        let [r, g, b] = colormap::viridis(s);
+        let x0 = bar.left() + bar.width() * k as f32 / steps as f32;
+        let x1 = bar.left() + bar.width() * (k + 1) as f32 / steps as f32;
+        painter.rect_filled(
+            egui::Rect::from_x_y_ranges(x0..=x1 + 0.5, bar.y_range()),
+            0.0,
+            Color32::from_rgb(r, g, b),
+        );
+    }
+    let [r, g, b] = colormap::PAST;
+    painter.rect_filled(
+        egui::Rect::from_min_size(
+            egui::pos2(bar.right() + 6.0, bar.top()),
+            egui::vec2(16.0, 12.0),
+        ),
+        0.0,
+        Color32::from_rgb(r, g, b),
+    );
+    let text = ui.visuals().text_color();
+    let max = condition_max.max(1.5);
+    let mut marks: Vec<f64> = [1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0]
+        .into_iter()
+        .filter(|m| *m < max * 0.8)
+        .collect();
+    marks.push(max);
+    for m in marks {
+        let x = bar.left() + bar.width() * (m.ln() / max.ln()) as f32;
+        painter.line_segment(
+            [
+                egui::pos2(x, bar.bottom()),
+                egui::pos2(x, bar.bottom() + 3.0),
+            ],
+            egui::Stroke::new(1.0, text),
+        );
+        painter.text(
+            egui::pos2(x, bar.bottom() + 3.0),
+            egui::Align2::CENTER_TOP,
+            format!("{m}"),
+            egui::FontId::proportional(10.0),
+            text,
+        );
+    }
+}

@@ -1,0 +1,476 @@
+//! The Workspace panel's state: the reachable workspace at an orientation shown in the 3D
+//! view as a translucent surface, and a horizontal slice coloured by the condition
+//! number, both computed off the UI thread.
+//!
+//! One worker thread takes the newest request only. A request is computed coarse first
+//! (its result shown at once), then refined; a newer request — a slider dragged on —
+//! cancels the refinement in flight ([`WorkspaceControl::cancel`]) and the worker moves to
+//! the newest. The UI thread only swaps in finished results (`poll`, never blocking); the
+//! meshes are built on the worker too, so the UI's share is uploading them once.
+
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
+
+use nalgebra::Vector3;
+use stewart_kinematics::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
+use stewart_kinematics::{Angle, Geometry, Limits, Pose};
+use stewart_render::analysis::AnalysisMesh;
+
+/// Columns a side of the first, coarse workspace.
+pub const COARSE_COLUMNS: usize = 128;
+/// Columns a side of the refinement.
+pub const FINE_COLUMNS: usize = 512;
+/// Columns a side of the surface mesh drawn at most (every other column of the
+/// refinement).
+pub const DRAWN_COLUMNS: usize = 256;
+
+/// Cells a side of the conditioning slice with a workspace of `columns` a side: 40 with
+/// the coarse pass, 160 with the refinement (each cell needs a Jacobian's singular values,
+/// a column only six square roots).
+fn slice_cells(columns: usize) -> usize {
+    (columns * 5 / 16).clamp(8, 160)
+}
+
+/// What a surface is computed for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Request {
+    /// The platform.
+    pub geometry: Geometry,
+    /// Its limits.
+    pub limits: Limits,
+    /// Roll, pitch, yaw.
+    pub orientation: [Angle; 3],
+    /// The slice's height, metres (`None`: no slice).
+    pub slice_at: Option<f64>,
+    /// The near-singular threshold the slice is coloured to.
+    pub condition_max: f64,
+    /// Linear colour of the surface.
+    pub colour: [f32; 4],
+}
+
+/// One finished computation: the workspace's numbers and the meshes to draw.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// What it was computed for.
+    pub request: Request,
+    /// Columns a side.
+    pub resolution: usize,
+    /// Volume and its error bound, m³.
+    pub volume: f64,
+    /// Error bound of `volume`, m³.
+    pub volume_error: f64,
+    /// `[[x_min, x_max], [y_min, y_max], [z_min, z_max]]`, `None` when nothing is reachable.
+    pub extent: Option<[[f64; 2]; 3]>,
+    /// Columns whose reachable heights split (drawn with their gaps as cavities).
+    pub split_columns: usize,
+    /// The surface.
+    pub surface: Arc<AnalysisMesh>,
+    /// The slice, when asked for.
+    pub slice: Option<SliceOutcome>,
+    /// Time the computation took.
+    pub elapsed: Duration,
+    /// Whether this is the refinement (else the coarse first look).
+    pub refined: bool,
+}
+
+/// The conditioning slice's mesh and its counts.
+#[derive(Clone, Debug)]
+pub struct SliceOutcome {
+    /// Height, metres.
+    pub at: f64,
+    /// The coloured cells.
+    pub mesh: Arc<AnalysisMesh>,
+    /// Reachable cells.
+    pub reachable: usize,
+    /// Reachable cells past the near-singular threshold (or singular).
+    pub past: usize,
+}
+
+/// What the worker and the UI share.
+#[derive(Default)]
+struct Shared {
+    /// The newest request not yet taken with its number, and whether the tool was dropped.
+    next: Mutex<(Option<(u64, Request)>, bool)>,
+    wake: Condvar,
+    /// Requests numbered as they come.
+    numbered: AtomicU64,
+    /// The computation in flight and its request's number (its `cancel` is set when a
+    /// newer request comes).
+    control: Mutex<Option<(u64, Arc<WorkspaceControl>)>>,
+    /// Computations stopped (or skipped before their refinement) for a newer request.
+    cancelled: AtomicUsize,
+}
+
+/// The Workspace panel's switches, the worker and the newest result.
+pub struct WorkspaceTool {
+    /// Draw the surface in the 3D view.
+    pub show: bool,
+    /// Use the pose's own orientation (else `orientation_deg`).
+    pub follow_pose: bool,
+    /// The chosen roll, pitch, yaw, degrees.
+    pub orientation_deg: [f64; 3],
+    /// Draw the conditioning slice.
+    pub show_slice: bool,
+    /// Put the slice at the platform centre's height (else `slice_height`).
+    pub slice_follows: bool,
+    /// The chosen slice height, metres.
+    pub slice_height: f64,
+    /// The newest finished result.
+    pub latest: Option<Outcome>,
+    /// Why the last request could not be computed.
+    pub error: Option<String>,
+    /// The request last sent.
+    sent: Option<Request>,
+    shared: Arc<Shared>,
+    results: Option<Receiver<Result<Outcome, String>>>,
+    resolutions: [usize; 2],
+}
+
+impl Default for WorkspaceTool {
+    fn default() -> Self {
+        Self::with_resolutions(COARSE_COLUMNS, FINE_COLUMNS)
+    }
+}
+
+impl WorkspaceTool {
+    /// A tool computing `coarse` then `fine` columns a side (tests choose slow ones).
+    pub fn with_resolutions(coarse: usize, fine: usize) -> Self {
+        Self {
+            show: false,
+            follow_pose: true,
+            orientation_deg: [0.0; 3],
+            show_slice: true,
+            slice_follows: true,
+            slice_height: 0.0,
+            latest: None,
+            error: None,
+            sent: None,
+            shared: Arc::default(),
+            results: None,
+            resolutions: [coarse, fine],
+        }
+    }
+
+    /// Ask for `request` unless it was the last one asked: a refinement in flight for an
+    /// older request stops, and the worker takes this one next. Never blocks.
+    pub fn request(&mut self, request: Request) {
+        if self.sent.as_ref() == Some(&request) {
+            return;
+        }
+        self.sent = Some(request.clone());
+        if self.results.is_none() {
+            let (send, receive) = mpsc::channel();
+            let shared = Arc::clone(&self.shared);
+            let resolutions = self.resolutions;
+            let spawned = std::thread::Builder::new()
+                .name("workspace".into())
+                .spawn(move || work(&shared, resolutions, &send));
+            if let Err(e) = spawned {
+                self.error = Some(e.to_string());
+                return;
+            }
+            self.results = Some(receive);
+        }
+        // The request first, then the stop: a worker between the coarse pass and the
+        // refinement either sees the request waiting or has its refinement stopped; one
+        // that has already taken this request keeps it.
+        let number = self.shared.numbered.fetch_add(1, Ordering::Relaxed) + 1;
+        self.shared.next.lock().unwrap_or_else(|e| e.into_inner()).0 = Some((number, request));
+        self.shared.wake.notify_one();
+        self.stop_older_than(number);
+    }
+
+    /// Stop the computation in flight if it is for a request older than `number`.
+    fn stop_older_than(&self, number: u64) {
+        if let Some((running, control)) = self
+            .shared
+            .control
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .as_ref()
+            && *running < number
+        {
+            control.cancel.store(true, Ordering::Relaxed);
+        }
+    }
+
+    /// Take the newest finished result (older ones that arrived meanwhile are skipped).
+    pub fn poll(&mut self) {
+        let Some(results) = &self.results else {
+            return;
+        };
+        while let Ok(result) = results.try_recv() {
+            match result {
+                Ok(outcome) => {
+                    self.latest = Some(outcome);
+                    self.error = None;
+                }
+                Err(e) => self.error = Some(e),
+            }
+        }
+    }
+
+    /// Whether the newest request is not yet refined.
+    pub fn busy(&self) -> bool {
+        self.sent.is_some()
+            && !self
+                .latest
+                .as_ref()
+                .is_some_and(|o| o.refined && Some(&o.request) == self.sent.as_ref())
+            && self.error.is_none()
+    }
+
+    /// Wait until the newest request is refined (tests, screenshots), at most `limit`.
+    pub fn wait(&mut self, limit: Duration) {
+        let start = Instant::now();
+        while self.busy() && start.elapsed() < limit {
+            self.poll();
+            std::thread::sleep(Duration::from_millis(2));
+        }
+    }
+
+    /// Columns a side of the coarse pass and of the refinement.
+    pub fn resolutions(&self) -> [usize; 2] {
+        self.resolutions
+    }
+
+    /// Computations stopped (or refinements skipped) because a newer request came.
+    pub fn cancelled(&self) -> usize {
+        self.shared.cancelled.load(Ordering::Relaxed)
+    }
+}
+
+impl Drop for WorkspaceTool {
+    fn drop(&mut self) {
+        self.stop_older_than(u64::MAX);
+        self.shared.next.lock().unwrap_or_else(|e| e.into_inner()).1 = true;
+        self.shared.wake.notify_one();
+    }
+}
+
+/// The worker: the newest request, coarse then refined, until the tool is dropped.
+fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Outcome, String>>) {
+    loop {
+        let (number, request) = {
+            let mut next = shared.next.lock().unwrap_or_else(|e| e.into_inner());
+            loop {
+                if next.1 {
+                    return;
+                }
+                if let Some(r) = next.0.take() {
+                    break r;
+                }
+                next = shared.wake.wait(next).unwrap_or_else(|e| e.into_inner());
+            }
+        };
+        for (k, resolution) in [coarse, fine].into_iter().enumerate() {
+            let control = Arc::new(WorkspaceControl::default());
+            *shared.control.lock().unwrap_or_else(|e| e.into_inner()) =
+                Some((number, Arc::clone(&control)));
+            // A newer request already waiting: skip to it.
+            if shared
+                .next
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .0
+                .is_some()
+            {
+                if k == 1 {
+                    shared.cancelled.fetch_add(1, Ordering::Relaxed);
+                }
+                break;
+            }
+            match compute(&request, resolution, slice_cells(resolution), &control) {
+                Ok(mut outcome) => {
+                    outcome.refined = k == 1;
+                    if results.send(Ok(outcome)).is_err() {
+                        return;
+                    }
+                }
+                Err(None) => {
+                    shared.cancelled.fetch_add(1, Ordering::Relaxed);
+                    break;
+                }
+                Err(Some(e)) => {
+                    let _ = results.send(Err(e));
+                    break;
+                }
+            }
+        }
+    }
+}
+
+/// The workspace, its surface and the slice for `request` at `resolution`; `Err(None)`
+/// when cancelled.
+fn compute(
+    request: &Request,
+    resolution: usize,
+    slice_cells: usize,
+    control: &WorkspaceControl,
+) -> Result<Outcome, Option<String>> {
+    use stewart_kinematics::workspace::WorkspaceError;
+    let start = Instant::now();
+    let ws = request
+        .geometry
+        .constant_orientation_workspace_with(
+            &request.limits,
+            request.orientation,
+            resolution,
+            control,
+        )
+        .map_err(|e| match e {
+            WorkspaceError::Cancelled => None,
+            e => Some(e.to_string()),
+        })?;
+    // The mesh drawn has at most DRAWN_COLUMNS a side (lighter to upload and draw); the
+    // numbers are the full grid's.
+    let surface = WorkspaceSurface::from_workspace(&ws.every(resolution.div_ceil(DRAWN_COLUMNS)));
+    let mesh = AnalysisMesh::surface(&surface, request.colour);
+    let slice = match (request.slice_at, ws.extent) {
+        (Some(at), Some([ex, ey, _])) => {
+            if control.cancel.load(Ordering::Relaxed) {
+                return Err(None);
+            }
+            // The workspace is of platform centres; poses place the platform's reference
+            // point, which sits `shift` from the centre at this orientation.
+            let [roll, pitch, yaw] = request.orientation;
+            let level = Pose::new(Vector3::zeros(), roll, pitch, yaw);
+            let shift = request.geometry.platform_centre(&level);
+            // A square over the extent, two cells' margin around it.
+            let half = 0.5 * (ex[1] - ex[0]).max(ey[1] - ey[0]) + 2.0 * ws.cell;
+            let centre = [0.5 * (ex[0] + ex[1]), 0.5 * (ey[0] + ey[1])];
+            let cut = request.geometry.workspace_slice(
+                &request.limits,
+                request.orientation,
+                Plane::Horizontal,
+                at - shift.z,
+                [0, 1].map(|k| [centre[k] - shift[k] - half, centre[k] - shift[k] + half]),
+                [slice_cells; 2],
+            );
+            let mut mesh = AnalysisMesh::slice(&cut, request.condition_max, 0.85);
+            for v in &mut mesh.vertices {
+                for k in 0..3 {
+                    v.position[k] += shift[k] as f32;
+                }
+            }
+            let reachable: Vec<f64> = cut.values.iter().flatten().copied().collect();
+            let past = reachable
+                .iter()
+                .filter(|&&k| {
+                    stewart_render::colormap::condition_fraction(k, request.condition_max).is_none()
+                })
+                .count();
+            Some(SliceOutcome {
+                at,
+                mesh: Arc::new(mesh),
+                reachable: reachable.len(),
+                past,
+            })
+        }
+        _ => None,
+    };
+    Ok(Outcome {
+        request: request.clone(),
+        resolution,
+        volume: ws.volume,
+        volume_error: ws.volume_error,
+        extent: ws.extent,
+        split_columns: surface.split_columns,
+        surface: Arc::new(mesh),
+        slice,
+        elapsed: start.elapsed(),
+        refined: false,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_kinematics::Scenario;
+
+    fn request(preset: &str, yaw: f64) -> Request {
+        let s = Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
+        Request {
+            geometry: s.geometry,
+            limits: s.limits,
+            orientation: [0.0, 0.0, yaw].map(Angle::from_degrees),
+            slice_at: Some(0.8),
+            condition_max: s.checks.condition_max,
+            colour: [0.5, 0.5, 0.5, 0.3],
+        }
+    }
+
+    #[test]
+    fn coarse_comes_first_then_the_refinement_with_the_exact_volume() {
+        let mut tool = WorkspaceTool::with_resolutions(32, 128);
+        let r = request("paired", 0.0);
+        tool.request(r.clone());
+        tool.wait(Duration::from_secs(60));
+        let o = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
+        assert!(o.refined && o.resolution == 128 && o.request == r);
+        let ws = r
+            .geometry
+            .constant_orientation_workspace(&r.limits, r.orientation, 128)
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(o.volume, ws.volume);
+        assert_eq!(o.volume_error, ws.volume_error);
+        let slice = o.slice.as_ref().unwrap_or_else(|| panic!("no slice"));
+        assert!(slice.reachable > 100 && slice.past == 0, "{slice:?}");
+        assert!(!o.surface.is_empty());
+    }
+
+    #[test]
+    fn a_new_request_cancels_the_refinement_in_flight() {
+        // A refinement slow enough (2048² columns) to be caught in flight.
+        let mut tool = WorkspaceTool::with_resolutions(16, 2048);
+        let first = request("paired", 0.0);
+        tool.request(first.clone());
+        let start = Instant::now();
+        while tool.latest.is_none() && start.elapsed() < Duration::from_secs(30) {
+            tool.poll();
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        assert!(
+            tool.latest
+                .as_ref()
+                .is_some_and(|o| !o.refined && o.request == first)
+        );
+        // The geometry changes while the first refinement runs.
+        std::thread::sleep(Duration::from_millis(20));
+        let second = request("seed", 10.0);
+        tool.request(second.clone());
+        let mut seen = Vec::new();
+        let start = Instant::now();
+        while tool.busy() && start.elapsed() < Duration::from_secs(120) {
+            tool.poll();
+            if let Some(o) = &tool.latest {
+                seen.push((o.request == first, o.refined));
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        let last = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
+        assert!(last.refined && last.request == second && last.resolution == 2048);
+        assert!(
+            !seen.contains(&(true, true)),
+            "the first request's refinement was shown"
+        );
+        assert_eq!(tool.cancelled(), 1);
+        assert!(tool.error.is_none());
+    }
+
+    #[test]
+    fn the_same_request_twice_is_computed_once() {
+        let mut tool = WorkspaceTool::with_resolutions(16, 32);
+        let r = request("paired", 5.0);
+        tool.request(r.clone());
+        tool.wait(Duration::from_secs(30));
+        let first = tool.latest.as_ref().map(|o| Arc::clone(&o.surface));
+        tool.request(r);
+        tool.poll();
+        assert!(!tool.busy());
+        let again = tool.latest.as_ref().map(|o| Arc::clone(&o.surface));
+        assert!(first.zip(again).is_some_and(|(a, b)| Arc::ptr_eq(&a, &b)));
+    }
+}

@@ -1,0 +1,208 @@
+//! The Workspace panel: the surface follows the scenario and the pose, its numbers agree
+//! with `stewart workspace`, the platform centre is placed inside or outside, and the
+//! conditioning slice counts the cells past the threshold — in English and in Chinese.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use stewart_app::i18n::Lang;
+use stewart_app::viewer::playback::MotionMode;
+use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::workspace::WorkspaceTool;
+use stewart_kinematics::{Angle, Pose, Scenario};
+
+/// Columns a side of the refinement in these tests (the viewer's 512 are slow in a debug
+/// build).
+const FINE: usize = 96;
+
+/// The viewer on `preset` in manual mode at home, every section open, the workspace
+/// (computed at 32 then [`FINE`] columns) not yet shown.
+fn viewer(preset: &str) -> ViewerState {
+    let mut state = ViewerState::new(Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}")));
+    state.workspace = WorkspaceTool::with_resolutions(32, FINE);
+    state.look.expand_panels = true;
+    state.playback.mode = MotionMode::Manual;
+    state
+}
+
+/// [`viewer`] with the workspace shown and refined, in `lang`.
+fn shown(preset: &str, lang: Lang) -> Harness<'static, ViewerState> {
+    let mut state = viewer(preset);
+    state.look.lang = lang;
+    state.workspace.show = true;
+    let mut h = crate::harness_with(state, 4200.0);
+    settle(&mut h);
+    h
+}
+
+fn settle(h: &mut Harness<'static, ViewerState>) {
+    h.state_mut().settle_workspace();
+    h.run();
+}
+
+/// The volume line as the panel writes it, from a workspace computed here.
+fn volume_line(s: &Scenario, orientation: [Angle; 3]) -> String {
+    let ws = s
+        .geometry
+        .constant_orientation_workspace(&s.limits, orientation, FINE)
+        .unwrap_or_else(|e| panic!("{e}"));
+    format!("Volume {:.6} m³ ± {:.6} m³", ws.volume, ws.volume_error)
+}
+
+#[test]
+fn the_checkbox_shows_the_surface_and_its_numbers() {
+    let mut h = crate::harness_with(viewer("paired"), 4200.0);
+    let theme = h.state().theme();
+    assert!(h.state().draw_list(&theme).analysis.is_empty());
+    h.get_by_label("Show the reachable workspace").click();
+    h.run();
+    settle(&mut h);
+    let s = h.state().scenario().clone();
+    assert!(
+        h.query_by_label(&volume_line(&s, [Angle::ZERO; 3]))
+            .is_some(),
+        "the volume of `stewart workspace` at {FINE} columns"
+    );
+    assert!(h.query_by_label_contains("96 × 96 columns in").is_some());
+    assert!(
+        h.query_by_label("The platform centre is inside the workspace.")
+            .is_some()
+    );
+    assert!(h.query_by_label("Past κ = 30 or singular: 0 of").is_none());
+    assert!(
+        h.query_by_label_contains("Past κ = 30 or singular: 0 of")
+            .is_some()
+    );
+    // Surface and slice are drawn.
+    assert_eq!(h.state().draw_list(&theme).analysis.len(), 2);
+    h.get_by_label("Conditioning slice").click();
+    h.run();
+    assert_eq!(h.state().draw_list(&theme).analysis.len(), 1);
+}
+
+#[test]
+fn the_surface_follows_the_geometry_and_the_pose() {
+    let mut h = shown("paired", Lang::En);
+    let before = h
+        .state()
+        .workspace
+        .latest
+        .clone()
+        .unwrap_or_else(|| panic!("none"));
+    // A longer stroke: a larger workspace.
+    let mut s = h.state().scenario().clone();
+    let mut params = s.geometry.params().clone();
+    params.stroke.max = Some(1.4);
+    h.state_mut().set_geometry(params.clone());
+    h.run();
+    settle(&mut h);
+    let after = h
+        .state()
+        .workspace
+        .latest
+        .clone()
+        .unwrap_or_else(|| panic!("none"));
+    assert!(
+        after.volume > before.volume * 1.1,
+        "{} → {}",
+        before.volume,
+        after.volume
+    );
+    s.geometry = stewart_kinematics::Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        h.query_by_label(&volume_line(&s, [Angle::ZERO; 3]))
+            .is_some()
+    );
+    // The pose turns: the surface is recomputed at its orientation.
+    let pose = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.8], [0.0, 0.0, 20.0]);
+    h.state_mut().playback.manual = pose;
+    h.run();
+    eprintln!(
+        "pose now {:?} mode {:?}",
+        h.state().pose().rpy_degrees(),
+        h.state().playback.mode
+    );
+    settle(&mut h);
+    let turned = h
+        .state()
+        .workspace
+        .latest
+        .clone()
+        .unwrap_or_else(|| panic!("none"));
+    assert_eq!(turned.request.orientation[2], Angle::from_degrees(20.0));
+    assert!(
+        h.query_by_label(&volume_line(
+            &s,
+            [Angle::ZERO, Angle::ZERO, Angle::from_degrees(20.0)]
+        ))
+        .is_some()
+    );
+}
+
+#[test]
+fn a_chosen_orientation_can_leave_the_centre_outside() {
+    let mut h = shown("paired", Lang::En);
+    let s = h.state().scenario().clone();
+    let at = |roll: f64| Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [roll, 0.0, 0.0]);
+    let level = at(0.0);
+    assert!(s.geometry.pose_within_limits(&s.limits, &level));
+    // The first roll (5° steps) at which this centre is out of reach; the workspace
+    // there is not empty.
+    let roll = (1..18)
+        .map(|k| 5.0 * k as f64)
+        .find(|&r| !s.geometry.pose_within_limits(&s.limits, &at(r)))
+        .unwrap_or_else(|| panic!("always reachable"));
+    h.state_mut().playback.manual = level;
+    h.run();
+    settle(&mut h);
+    assert!(
+        h.query_by_label("The platform centre is inside the workspace.")
+            .is_some()
+    );
+    // Rolled so far the legs cannot hold the centre there.
+    h.state_mut().workspace.follow_pose = false;
+    h.state_mut().workspace.orientation_deg = [roll, 0.0, 0.0];
+    h.run();
+    settle(&mut h);
+    assert!(
+        h.query_by_label_contains("Volume ").is_some(),
+        "empty at roll {roll}°"
+    );
+    assert!(
+        h.query_by_label("The platform centre is outside the workspace.")
+            .is_some()
+    );
+}
+
+#[test]
+fn a_singular_platform_marks_every_slice_cell() {
+    // The seed's layout is singular everywhere: every reachable cell is past the threshold.
+    let h = shown("seed", Lang::En);
+    let slice = h
+        .state()
+        .workspace
+        .latest
+        .as_ref()
+        .and_then(|o| o.slice.clone())
+        .unwrap_or_else(|| panic!("no slice"));
+    assert!(
+        slice.reachable > 0 && slice.past == slice.reachable,
+        "{slice:?}"
+    );
+    let line = format!(
+        "Past κ = 30 or singular: {} of {} cells",
+        slice.reachable, slice.reachable
+    );
+    assert!(h.query_by_label(&line).is_some(), "{line}");
+}
+
+#[test]
+fn the_panel_reads_in_chinese() {
+    let h = shown("paired", Lang::Zh);
+    assert!(h.query_by_label("显示可达工作空间").is_some());
+    assert!(h.query_by_label("动平台中心在工作空间内。").is_some());
+    assert!(h.query_by_label_contains("体积 ").is_some());
+    assert!(
+        h.query_by_label_contains("超过 κ = 30 或奇异：0 / ")
+            .is_some()
+    );
+}
