@@ -8,6 +8,7 @@ mod files;
 mod legs;
 mod link;
 mod modes;
+mod reach;
 mod rotary;
 mod shots;
 mod snapshots;

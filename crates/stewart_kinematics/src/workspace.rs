@@ -534,11 +534,13 @@ pub enum Axis {
     Yaw,
 }
 
+pub mod reach;
 mod rotary;
 pub mod slice;
 pub mod surface;
 #[cfg(test)]
 mod tests;
 
+pub use reach::ReachMap;
 pub use slice::{Plane, Slice};
 pub use surface::WorkspaceSurface;

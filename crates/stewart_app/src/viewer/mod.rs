@@ -25,6 +25,7 @@ pub mod live_link;
 pub mod look;
 pub mod panels;
 pub mod playback;
+pub mod reach;
 pub mod session;
 pub mod shots;
 pub mod state;

@@ -53,6 +53,8 @@ pub struct ViewerState {
     pub design: super::design::DesignTool,
     /// The workspace surface and the conditioning slice in the 3D view.
     pub workspace: super::workspace::WorkspaceTool,
+    /// Reach at the pose shown (orientation panel, manual sliders), cached.
+    reach: super::reach::ReachCache,
 }
 
 /// The saved session's state in this run.
@@ -112,6 +114,7 @@ impl ViewerState {
             shots: super::shots::Shots::default(),
             design: super::design::DesignTool::default(),
             workspace: super::workspace::WorkspaceTool::default(),
+            reach: super::reach::ReachCache::default(),
             scenario,
         }
     }
@@ -406,6 +409,26 @@ impl ViewerState {
             self.workspace.request(request);
             self.workspace.wait(std::time::Duration::from_secs(10));
         }
+    }
+
+    /// Each manual-pose coordinate's reachable interval within its slider's `bounds` (pose
+    /// coordinates: metres, radians), the others held.
+    pub fn slider_reach(&mut self, bounds: [[f64; 2]; 6]) -> [Option<[f64; 2]>; 6] {
+        let pose = self.pose();
+        self.reach.sliders(
+            &self.scenario.geometry,
+            &self.scenario.limits,
+            &pose,
+            bounds,
+        )
+    }
+
+    /// Roll, pitch, yaw alone and the roll–pitch map at the pose shown.
+    pub fn orientation_reach(&mut self) -> super::reach::OrientationReach {
+        let pose = self.pose();
+        self.reach
+            .orientation(&self.scenario.geometry, &self.scenario.limits, &pose)
+            .clone()
     }
 
     /// The orientation the workspace is shown at: the pose's, or the one chosen.

@@ -9,6 +9,7 @@ mod link;
 mod motion;
 mod playback;
 mod plot;
+mod reach;
 mod scenario;
 mod view;
 mod widgets;
@@ -49,6 +50,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     design::show(ui, state);
                     ui.separator();
                     workspace::show(ui, state);
+                    reach::show(ui, state);
                     ui.separator();
                     export::show(ui, state);
                     ui.separator();

@@ -53,6 +53,18 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
     let home = state.scenario().geometry.home_pose().to_coordinates();
     let mut c = state.playback.manual.to_coordinates();
+    // Each slider's bounds in pose coordinates, and the part of them reachable with the
+    // other coordinates held.
+    let bounds: [[f64; 2]; 6] = std::array::from_fn(|k| {
+        let (_, unit, reach) = POSE_SLIDERS[k];
+        let reach = if unit == Unit::Degree {
+            reach.to_radians()
+        } else {
+            reach
+        };
+        [home[k] - reach, home[k] + reach]
+    });
+    let reachable = state.slider_reach(bounds);
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
         let angular = unit == Unit::Degree;
         let mut value = if angular { c[k].to_degrees() } else { c[k] };
@@ -62,12 +74,27 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
             home[k]
         };
         let label = format!("{} ({})", words::coordinate(t, name), unit.symbol());
+        let to_slider = |v: f64| if angular { v.to_degrees() } else { v };
         if ui
             .add(egui::Slider::new(&mut value, centre - reach..=centre + reach).text(label))
+            .on_hover_text(t.tr("motion.reach_tip"))
             .changed()
         {
             c[k] = if angular { value.to_radians() } else { value };
         }
+        // Under the rail: the reachable part of the slider's range.
+        let handle = ui.spacing().interact_size.y / 2.5;
+        ui.add_space(-ui.spacing().item_spacing.y);
+        ui.horizontal(|ui| {
+            ui.add_space(handle);
+            super::reach::range_bar(
+                ui,
+                [centre - reach, centre + reach],
+                reachable[k].map(|r| r.map(to_slider)),
+                value,
+                ui.spacing().slider_width - 2.0 * handle,
+            );
+        });
     }
     state.playback.manual = Pose::from_coordinates(c);
     if ui.button(t.tr("motion.home")).clicked() {

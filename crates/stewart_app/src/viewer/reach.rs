@@ -1,0 +1,108 @@
+//! Reach at the pose shown, for the Orientation reach panel and the manual-pose sliders:
+//! each pose coordinate's reachable interval alone, and the roll–pitch reach map. Cached
+//! by what they depend on, so a still pose costs nothing and a moving one a few thousand
+//! inverse solutions a frame.
+
+use stewart_kinematics::workspace::ReachMap;
+use stewart_kinematics::{Angle, Geometry, Limits, Pose};
+
+/// Roll, pitch and yaw are searched over ± this many degrees.
+pub const ANGLE_SPAN_DEG: f64 = 90.0;
+/// The roll–pitch map covers ± this many degrees.
+pub const MAP_SPAN_DEG: f64 = 45.0;
+/// Cells a side of the roll–pitch map (odd: one cell sits on level).
+pub const MAP_CELLS: usize = 41;
+/// Steps of the outward search across a coordinate's bounds.
+const STEPS: usize = 120;
+
+/// Reach around the pose at its position: roll, pitch and yaw alone (radians), and the
+/// roll–pitch map at its yaw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OrientationReach {
+    /// Roll, pitch, yaw intervals; `None` when the pose is out of reach.
+    pub angles: [Option<[f64; 2]>; 3],
+    /// The map.
+    pub map: ReachMap,
+}
+
+/// What a reach was computed for.
+#[derive(Clone, Debug, PartialEq)]
+struct Key {
+    geometry: Geometry,
+    limits: Limits,
+    pose: Pose,
+    bounds: [[f64; 2]; 6],
+}
+
+/// The cached answers.
+#[derive(Clone, Debug, Default)]
+pub struct ReachCache {
+    sliders: Option<(Key, [Option<[f64; 2]>; 6])>,
+    orientation: Option<(Key, OrientationReach)>,
+}
+
+impl ReachCache {
+    /// Each coordinate's reachable interval within its slider's `bounds` (pose
+    /// coordinates: metres and radians).
+    pub fn sliders(
+        &mut self,
+        geometry: &Geometry,
+        limits: &Limits,
+        pose: &Pose,
+        bounds: [[f64; 2]; 6],
+    ) -> [Option<[f64; 2]>; 6] {
+        let key = Key {
+            geometry: geometry.clone(),
+            limits: *limits,
+            pose: *pose,
+            bounds,
+        };
+        if let Some((k, ranges)) = &self.sliders
+            && *k == key
+        {
+            return *ranges;
+        }
+        let ranges =
+            std::array::from_fn(|k| geometry.coordinate_range(limits, pose, k, bounds[k], STEPS));
+        self.sliders = Some((key, ranges));
+        ranges
+    }
+
+    /// Roll, pitch and yaw alone over ±[`ANGLE_SPAN_DEG`] and the roll–pitch map.
+    pub fn orientation(
+        &mut self,
+        geometry: &Geometry,
+        limits: &Limits,
+        pose: &Pose,
+    ) -> &OrientationReach {
+        let span = ANGLE_SPAN_DEG.to_radians();
+        let key = Key {
+            geometry: geometry.clone(),
+            limits: *limits,
+            pose: *pose,
+            bounds: [[-span, span]; 6],
+        };
+        if self.orientation.as_ref().is_some_and(|(k, _)| *k != key) {
+            self.orientation = None;
+        }
+        &self
+            .orientation
+            .get_or_insert_with(|| {
+                let reach = OrientationReach {
+                    angles: std::array::from_fn(|a| {
+                        let c = pose.to_coordinates()[3 + a];
+                        // Around the pose's own angle, as far as the span either side.
+                        geometry.coordinate_range(limits, pose, 3 + a, [c - span, c + span], STEPS)
+                    }),
+                    map: geometry.roll_pitch_map(
+                        limits,
+                        pose,
+                        Angle::from_degrees(MAP_SPAN_DEG),
+                        MAP_CELLS,
+                    ),
+                };
+                (key, reach)
+            })
+            .1
+    }
+}
