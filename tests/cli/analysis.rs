@@ -234,3 +234,79 @@ fn workspace_plot_refuses_a_bad_file_before_computing() {
     assert!(stderr(&o).contains("nothing to plot"));
     assert!(!svg.exists());
 }
+
+#[test]
+fn workspace_surface_is_a_closed_ply_mesh_enclosing_the_volume() {
+    let dir = tempdir();
+    let ply = dir.path().join("ws.ply");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "seed",
+        "--resolution",
+        "120",
+        "--surface",
+        &ply.display().to_string(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    let volume = number_after(&out, "volume");
+    let bound = number_after(&out, "m³ ±");
+    let enclosing = number_after(&out, "enclosing");
+    // The mesh's enclosed volume agrees with the column sum within twice its bound (its
+    // own bound, from the half-resolution mesh, is of the same size).
+    assert!((enclosing - volume).abs() <= 2.0 * bound + 1e-6, "{out}");
+    let bytes = std::fs::read(&ply).unwrap_or_default();
+    let end = b"end_header\n";
+    let at = bytes
+        .windows(end.len())
+        .position(|w| w == end)
+        .unwrap_or_else(|| panic!("no header end"))
+        + end.len();
+    let header = String::from_utf8_lossy(&bytes[..at]).into_owned();
+    assert!(header.starts_with("ply\nformat binary_little_endian 1.0\n"));
+    let count = |what: &str| -> usize {
+        header
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("element {what} ")))
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("no {what} count in {header}"))
+    };
+    let (vertices, faces) = (count("vertex"), count("face"));
+    assert!(out.contains(&format!("Wrote the surface ({faces} triangles")));
+    // float x, y, z per vertex; a count byte and three ints per face; nothing more.
+    assert_eq!(bytes.len() - at, 12 * vertices + 13 * faces);
+    // Every face is a triangle of valid indices.
+    for f in bytes[at + 12 * vertices..].chunks(13) {
+        assert_eq!(f[0], 3);
+        for k in 0..3 {
+            let i = i32::from_le_bytes([f[1 + 4 * k], f[2 + 4 * k], f[3 + 4 * k], f[4 + 4 * k]]);
+            assert!(i >= 0 && (i as usize) < vertices);
+        }
+    }
+}
+
+#[test]
+fn workspace_surface_refuses_a_bad_file_and_an_empty_workspace() {
+    let dir = tempdir();
+    let stl = dir.path().join("ws.stl");
+    let o = stewart(&["workspace", "--surface", &stl.display().to_string()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("must end in .ply"), "{}", stderr(&o));
+    assert!(!stl.exists());
+    let ply = dir.path().join("empty.ply");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "paired",
+        "--orientation",
+        "80,0,0",
+        "--resolution",
+        "50",
+        "--surface",
+        &ply.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("no surface to write"));
+    assert!(!ply.exists());
+}

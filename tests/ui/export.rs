@@ -35,6 +35,11 @@ fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
 fn export_to(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::path::Path) {
     h.get_by_label("Export").click();
     h.run();
+    export_again(h, kind, path);
+}
+
+/// [`export_to`] with the Export panel already open.
+fn export_again(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::path::Path) {
     h.get_by_role_and_label(Role::ComboBox, "What").click();
     h.run();
     h.get_by_label(kind.label(Lang::En)).click();
@@ -147,4 +152,61 @@ fn closing_with_an_export_running_cancels_it_and_leaves_nothing() {
         .into_iter()
         .collect();
     assert_eq!(left, vec![0], "files left behind");
+}
+
+#[test]
+fn the_workspace_figure_surface_and_view_are_exported() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    // The seed: stroke limits only, so its 512² workspace is quick even in a debug build.
+    let mut h = tall_harness("seed", 3000.0);
+    let svg = dir.path().join("ws.svg");
+    export_to(&mut h, ExportKind::WorkspaceSvg, &svg);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_ok_and(|m| m.contains("workspace slices")),
+        "{outcome:?}"
+    );
+    let text = std::fs::read_to_string(&svg).unwrap_or_default();
+    assert_eq!(text.matches(r#"class="boundary""#).count(), 2, "two slices");
+    let ply = dir.path().join("ws.ply");
+    export_again(&mut h, ExportKind::SurfacePly, &ply);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome.as_ref().is_ok_and(|m| m.contains("triangles")),
+        "{outcome:?}"
+    );
+    let bytes = std::fs::read(&ply).unwrap_or_default();
+    assert!(bytes.starts_with(b"ply\nformat binary_little_endian 1.0\n"));
+    let png = dir.path().join("view.png");
+    h.state_mut().exports.form.size = (640, 360);
+    export_again(&mut h, ExportKind::SurfacePng, &png);
+    let outcome = finish(&mut h);
+    // Without a GPU adapter the render fails with its reason; with one it writes the image.
+    match outcome {
+        Ok(m) => {
+            assert!(m.contains("640 × 360"), "{m}");
+            let image = image::open(&png).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!((image.width(), image.height()), (640, 360));
+        }
+        Err(e) => assert!(!png.exists(), "{e}"),
+    }
+    // An orientation nothing reaches (the paired platform rolled 80°): one error, nothing
+    // written. (The seed, without joint-cone limits, reaches any roll near its base.)
+    let mut h = tall_harness("paired", 3000.0);
+    h.get_by_label("Export").click();
+    h.run();
+    h.state_mut().workspace.follow_pose = false;
+    h.state_mut().workspace.orientation_deg = [80.0, 0.0, 0.0];
+    let empty = dir.path().join("empty.ply");
+    export_again(&mut h, ExportKind::SurfacePly, &empty);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_err_and(|e| e.contains("nothing to write")),
+        "{outcome:?}"
+    );
+    assert!(!empty.exists());
 }

@@ -424,6 +424,10 @@ pub struct WorkspaceArgs {
     /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png`.
     #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png")]
     pub plot: Option<PathBuf>,
+    /// Write the workspace's surface (a closed triangle mesh around the reachable
+    /// positions, from the same columns) as a binary PLY file.
+    #[arg(long, value_name = "FILE.ply")]
+    pub surface: Option<PathBuf>,
     /// The language of the figure's words: `zh` or `en` (default: the environment's).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
     pub lang: Option<Lang>,

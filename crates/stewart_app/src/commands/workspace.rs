@@ -32,6 +32,20 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         }
         None => None,
     };
+    let surface_out = match &args.surface {
+        Some(path) => {
+            let d = output::Destination::new(path, &source::inputs(&args.scenario))?;
+            d.require_file()?;
+            if !path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("ply"))
+            {
+                bail!("{}: the surface file must end in .ply", path.display());
+            }
+            Some(d)
+        }
+        None => None,
+    };
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
@@ -122,9 +136,40 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     if let Some(plot) = &plot_out {
         let path = plot.shown();
         let lang = crate::i18n::for_command(args.lang, "workspace");
-        let bytes = figure(&scenario, &ws, orientation, position, lang, path)?;
+        let bytes = crate::export::workspace_plot::figure_file(
+            &scenario,
+            &ws,
+            orientation,
+            position,
+            lang,
+            path,
+        )?;
         plot.write_bytes(&bytes)?;
         let _ = writeln!(s, "Wrote the slices to {}.", path.display());
+    }
+    if let Some(file) = &surface_out {
+        let path = file.shown();
+        let Some(_) = ws.extent else {
+            bail!("no position is reachable at this orientation: there is no surface to write");
+        };
+        let surface = stewart_kinematics::workspace::WorkspaceSurface::from_workspace(&ws);
+        let bytes = crate::export::ply::ply(
+            &surface,
+            &crate::export::ply::PlyHeader {
+                name: &scenario.name,
+                orientation_deg: args.orientation,
+                volume: [ws.volume, ws.volume_error],
+                resolution: ws.resolution,
+            },
+        );
+        file.write_bytes(&bytes)?;
+        let _ = writeln!(
+            s,
+            "Wrote the surface ({} triangles, enclosing {:.6} m³) to {}.",
+            surface.triangles.len(),
+            surface.enclosed_volume(),
+            path.display()
+        );
     }
     if let Some(out) = &out {
         let path = out.shown();
@@ -139,67 +184,6 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     }
     output::stdout(s.as_bytes())?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// Cells across the horizontal slice (the vertical one has the same cell size).
-const SLICE_CELLS: usize = 200;
-
-/// The two slices through the workspace at `position` as a figure in the format `path`
-/// ends in.
-fn figure(
-    scenario: &stewart_kinematics::Scenario,
-    ws: &ConstantOrientationWorkspace,
-    orientation: [Angle; 3],
-    position: [f64; 3],
-    lang: crate::i18n::Lang,
-    path: &std::path::Path,
-) -> Result<Vec<u8>> {
-    use stewart_kinematics::workspace::Plane;
-    let g = &scenario.geometry;
-    let Some([ex, ey, ez]) = ws.extent else {
-        bail!("no position is reachable at this orientation: there is nothing to plot");
-    };
-    let pad = |[lo, hi]: [f64; 2]| {
-        let m = (0.1 * (hi - lo)).max(0.02);
-        [lo - m, hi + m]
-    };
-    let (x, y, z) = (pad(ex), pad(ey), pad(ez));
-    let cell = (x[1] - x[0]) / SLICE_CELLS as f64;
-    let count = |r: [f64; 2]| (((r[1] - r[0]) / cell).round() as usize).max(2);
-    let horizontal = g.workspace_slice(
-        &scenario.limits,
-        orientation,
-        Plane::Horizontal,
-        position[2],
-        [x, y],
-        [count(x), count(y)],
-    );
-    let vertical = g.workspace_slice(
-        &scenario.limits,
-        orientation,
-        Plane::Vertical,
-        position[1],
-        [x, z],
-        [count(x), count(z)],
-    );
-    let [r, p, yaw] = orientation.map(|a| format!("{:.1}", a.degrees()));
-    let title = lang.fmt(
-        "workspace.title",
-        &[
-            ("name", &scenario.name),
-            ("roll", &r),
-            ("pitch", &p),
-            ("yaw", &yaw),
-        ],
-    );
-    let svg = crate::export::workspace_plot::svg(&crate::export::workspace_plot::WorkspaceFigure {
-        title: &title,
-        slices: [&horizontal, &vertical],
-        centre: position,
-        condition_max: scenario.checks.condition_max,
-        lang,
-    });
-    crate::export::vector::by_extension(svg, path)
 }
 
 /// The most time a workspace request may be estimated to take without `--no-budget`.

@@ -6,7 +6,9 @@
 
 use std::fmt::Write as _;
 
-use stewart_kinematics::workspace::{Plane, Slice};
+use anyhow::Result;
+use stewart_kinematics::Angle;
+use stewart_kinematics::workspace::{ConstantOrientationWorkspace, Plane, Slice};
 
 use stewart_render::colormap;
 
@@ -49,6 +51,66 @@ fn colour(k: f64, max: f64) -> String {
         return past();
     };
     hex(colormap::viridis((s * 48.0).round() / 48.0))
+}
+
+/// Cells across the horizontal slice (the vertical one has the same cell size).
+const SLICE_CELLS: usize = 200;
+
+/// The two slices through the workspace `ws` at `position` (a horizontal one at its
+/// height, a vertical one through its y) as a figure in the format `path` ends in.
+pub fn figure_file(
+    scenario: &stewart_kinematics::Scenario,
+    ws: &ConstantOrientationWorkspace,
+    orientation: [Angle; 3],
+    position: [f64; 3],
+    lang: Lang,
+    path: &std::path::Path,
+) -> Result<Vec<u8>> {
+    let g = &scenario.geometry;
+    let Some([ex, ey, ez]) = ws.extent else {
+        anyhow::bail!("no position is reachable at this orientation: there is nothing to plot");
+    };
+    let pad = |[lo, hi]: [f64; 2]| {
+        let m = (0.1 * (hi - lo)).max(0.02);
+        [lo - m, hi + m]
+    };
+    let (x, y, z) = (pad(ex), pad(ey), pad(ez));
+    let cell = (x[1] - x[0]) / SLICE_CELLS as f64;
+    let count = |r: [f64; 2]| (((r[1] - r[0]) / cell).round() as usize).max(2);
+    let horizontal = g.workspace_slice(
+        &scenario.limits,
+        orientation,
+        Plane::Horizontal,
+        position[2],
+        [x, y],
+        [count(x), count(y)],
+    );
+    let vertical = g.workspace_slice(
+        &scenario.limits,
+        orientation,
+        Plane::Vertical,
+        position[1],
+        [x, z],
+        [count(x), count(z)],
+    );
+    let [r, p, yaw] = orientation.map(|a| format!("{:.1}", a.degrees()));
+    let title = lang.fmt(
+        "workspace.title",
+        &[
+            ("name", &scenario.name),
+            ("roll", &r),
+            ("pitch", &p),
+            ("yaw", &yaw),
+        ],
+    );
+    let svg = svg(&WorkspaceFigure {
+        title: &title,
+        slices: [&horizontal, &vertical],
+        centre: position,
+        condition_max: scenario.checks.condition_max,
+        lang,
+    });
+    super::vector::by_extension(svg, path)
 }
 
 /// Where one slice is drawn: the box on the page and the metre-to-page scale.

@@ -7,13 +7,18 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
 use std::time::Instant;
 
-use anyhow::Result;
+use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget};
-use stewart_kinematics::Scenario;
+use stewart_kinematics::workspace::{
+    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceSurface,
+};
+use stewart_kinematics::{Angle, Scenario};
 
 use crate::export::plot::plot_file;
+use crate::export::ply::{PlyHeader, ply};
 use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
 use crate::export::video::{VideoRequest, export_video};
+use crate::export::workspace_plot::figure_file;
 use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
 
@@ -26,6 +31,48 @@ pub enum ExportWork {
     Plot(PathBuf),
     /// Poses and leg lengths along the trajectory, CSV.
     Csv(PathBuf),
+    /// The workspace's slices through `position` at `orientation` (SVG, PDF or PNG by
+    /// extension).
+    WorkspaceFigure {
+        /// Where.
+        path: PathBuf,
+        /// Roll, pitch, yaw.
+        orientation: [Angle; 3],
+        /// Where the slices cross, metres.
+        position: [f64; 3],
+    },
+    /// The workspace surface at `orientation` as PLY.
+    SurfacePly {
+        /// Where.
+        path: PathBuf,
+        /// Roll, pitch, yaw.
+        orientation: [Angle; 3],
+    },
+    /// The 3D view with the workspace, PNG.
+    SurfacePng(Box<SurfaceView>),
+}
+
+/// The 3D view with the workspace surface (and slice) the export computes.
+#[derive(Clone, Debug)]
+pub struct SurfaceView {
+    /// Where.
+    pub path: PathBuf,
+    /// The workspace to draw.
+    pub request: crate::viewer::workspace::Request,
+    /// The scene without analysis.
+    pub list: stewart_render::DrawList,
+    /// The camera.
+    pub camera: stewart_render::OrbitCamera,
+    /// The colours.
+    pub theme: stewart_render::Theme,
+    /// Pixels.
+    pub size: (u32, u32),
+}
+
+/// Columns a side of the workspace the exports compute for `limits`: the viewer's
+/// refinement.
+fn export_columns(limits: &stewart_kinematics::Limits) -> usize {
+    crate::viewer::workspace::fine_columns(limits, crate::viewer::workspace::FINE_COLUMNS)
 }
 
 /// An export running (or finished) on its own thread.
@@ -174,5 +221,106 @@ fn run(
                 ],
             ))
         }
+        ExportWork::WorkspaceFigure {
+            path,
+            orientation,
+            position,
+        } => {
+            let ws = workspace(scenario, *orientation, stop, lang)?;
+            let bytes = figure_file(scenario, &ws, *orientation, *position, lang, path)?;
+            write_atomically(path, &bytes)?;
+            Ok(lang.fmt("export.wrote_workspace", &[("path", &path.display())]))
+        }
+        ExportWork::SurfacePly { path, orientation } => {
+            let ws = workspace(scenario, *orientation, stop, lang)?;
+            let surface = WorkspaceSurface::from_workspace(&ws);
+            let bytes = ply(
+                &surface,
+                &PlyHeader {
+                    name: &scenario.name,
+                    orientation_deg: orientation.map(Angle::degrees),
+                    volume: [ws.volume, ws.volume_error],
+                    resolution: ws.resolution,
+                },
+            );
+            write_atomically(path, &bytes)?;
+            Ok(lang.fmt(
+                "export.wrote_surface",
+                &[
+                    ("triangles", &surface.triangles.len()),
+                    ("volume", &format!("{:.6}", surface.enclosed_volume())),
+                    ("path", &path.display()),
+                ],
+            ))
+        }
+        ExportWork::SurfacePng(view) => {
+            let control = WorkspaceControl::default();
+            let outcome = std::thread::scope(|s| {
+                // Ctrl-C or Cancel stops the computation.
+                let watch = s.spawn(|| {
+                    while !stop.load(Ordering::Relaxed) && !control.cancel.load(Ordering::Relaxed) {
+                        std::thread::sleep(std::time::Duration::from_millis(20));
+                    }
+                    control.cancel.store(true, Ordering::Relaxed);
+                });
+                let outcome = crate::viewer::workspace::compute(
+                    &view.request,
+                    export_columns(&view.request.limits),
+                    160,
+                    &control,
+                );
+                control.cancel.store(true, Ordering::Relaxed);
+                let _ = watch.join();
+                outcome
+            })
+            .map_err(|e| anyhow!(e.unwrap_or_else(|| lang.tr("export.cancelled").to_owned())))?;
+            if outcome.extent.is_none() {
+                bail!("{}", lang.tr("export.no_workspace"));
+            }
+            let mut list = view.list.clone();
+            list.analysis.push(outcome.surface);
+            if let Some(slice) = outcome.slice {
+                list.analysis.push(slice.mesh);
+            }
+            crate::viewer::shots::render_view(
+                &list,
+                view.camera,
+                view.theme,
+                false,
+                view.size,
+                &view.path,
+                lang,
+            )
+            .map_err(|e| anyhow!(e))?;
+            let (w, h) = view.size;
+            Ok(lang.fmt(
+                "export.wrote_view",
+                &[("w", &w), ("h", &h), ("path", &view.path.display())],
+            ))
+        }
     }
+}
+
+/// The workspace of `scenario` at `orientation` on [`export_columns`] columns, stopped
+/// when `stop` is set; nothing reachable is an error.
+fn workspace(
+    scenario: &Scenario,
+    orientation: [Angle; 3],
+    stop: &AtomicBool,
+    lang: Lang,
+) -> Result<ConstantOrientationWorkspace> {
+    let control = WorkspaceControl::default();
+    if stop.load(Ordering::Relaxed) {
+        control.cancel.store(true, Ordering::Relaxed);
+    }
+    let ws = scenario.geometry.constant_orientation_workspace_with(
+        &scenario.limits,
+        orientation,
+        export_columns(&scenario.limits),
+        &control,
+    )?;
+    if ws.extent.is_none() {
+        bail!("{}", lang.tr("export.no_workspace"));
+    }
+    Ok(ws)
 }

@@ -22,11 +22,21 @@ pub enum ExportKind {
     PlotPng,
     /// Poses and leg lengths, CSV.
     Csv,
+    /// The workspace's two conditioning slices as SVG.
+    WorkspaceSvg,
+    /// The same as PDF.
+    WorkspacePdf,
+    /// The same as a 300 dpi PNG.
+    WorkspacePng,
+    /// The workspace surface as a PLY mesh.
+    SurfacePly,
+    /// The 3D view with the workspace surface and slice, PNG.
+    SurfacePng,
 }
 
 impl ExportKind {
     /// Every kind, in menu order.
-    pub const ALL: [ExportKind; 7] = [
+    pub const ALL: [ExportKind; 12] = [
         ExportKind::Gif,
         ExportKind::Mp4,
         ExportKind::Frames,
@@ -34,6 +44,11 @@ impl ExportKind {
         ExportKind::PlotPdf,
         ExportKind::PlotPng,
         ExportKind::Csv,
+        ExportKind::WorkspaceSvg,
+        ExportKind::WorkspacePdf,
+        ExportKind::WorkspacePng,
+        ExportKind::SurfacePly,
+        ExportKind::SurfacePng,
     ];
 
     /// Words for the menu.
@@ -46,6 +61,11 @@ impl ExportKind {
             ExportKind::PlotPdf => "export.kind_pdf",
             ExportKind::PlotPng => "export.kind_png",
             ExportKind::Csv => "export.kind_csv",
+            ExportKind::WorkspaceSvg => "export.kind_workspace_svg",
+            ExportKind::WorkspacePdf => "export.kind_workspace_pdf",
+            ExportKind::WorkspacePng => "export.kind_workspace_png",
+            ExportKind::SurfacePly => "export.kind_surface_ply",
+            ExportKind::SurfacePng => "export.kind_surface_png",
         })
     }
 
@@ -55,10 +75,24 @@ impl ExportKind {
             ExportKind::Gif => ".gif",
             ExportKind::Mp4 => ".mp4",
             ExportKind::Frames => "",
-            ExportKind::PlotSvg => ".svg",
-            ExportKind::PlotPdf => ".pdf",
-            ExportKind::PlotPng => ".png",
+            ExportKind::PlotSvg | ExportKind::WorkspaceSvg => ".svg",
+            ExportKind::PlotPdf | ExportKind::WorkspacePdf => ".pdf",
+            ExportKind::PlotPng | ExportKind::WorkspacePng | ExportKind::SurfacePng => ".png",
             ExportKind::Csv => ".csv",
+            ExportKind::SurfacePly => ".ply",
+        }
+    }
+
+    /// What the default file name adds to the scenario's name.
+    pub fn suffix(self) -> &'static str {
+        match self {
+            ExportKind::Frames => "-frames",
+            ExportKind::WorkspaceSvg
+            | ExportKind::WorkspacePdf
+            | ExportKind::WorkspacePng
+            | ExportKind::SurfacePly
+            | ExportKind::SurfacePng => "-workspace",
+            _ => "",
         }
     }
 

@@ -151,7 +151,7 @@ impl Shots {
 }
 
 /// Render and write one 3D-view shot.
-fn render_view(
+pub(crate) fn render_view(
     list: &DrawList,
     camera: OrbitCamera,
     theme: Theme,

@@ -449,7 +449,7 @@ impl ViewerState {
     }
 
     /// What the workspace is computed for now.
-    fn workspace_request(&self) -> super::workspace::Request {
+    pub fn workspace_request(&self) -> super::workspace::Request {
         let w = &self.workspace;
         let slice_at = w.show_slice.then(|| {
             if w.slice_follows {

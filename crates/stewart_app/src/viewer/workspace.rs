@@ -22,6 +22,21 @@ use stewart_render::analysis::AnalysisMesh;
 pub const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
 pub const FINE_COLUMNS: usize = 512;
+/// Columns a side of the refinement at most when cone or clearance limits are set: each
+/// column is then sampled along its height too, so the cost grows as the cube (512 would
+/// take seconds).
+pub const POSE_LIMITED_COLUMNS: usize = 256;
+
+/// Columns a side of the refinement for `limits`: `fine`, or at most
+/// [`POSE_LIMITED_COLUMNS`] with cone or clearance limits.
+pub fn fine_columns(limits: &Limits, fine: usize) -> usize {
+    if limits.has_pose_limits() {
+        fine.min(POSE_LIMITED_COLUMNS)
+    } else {
+        fine
+    }
+}
+
 /// Columns a side of the surface mesh drawn at most (every other column of the
 /// refinement).
 pub const DRAWN_COLUMNS: usize = 256;
@@ -265,7 +280,8 @@ fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Out
                 next = shared.wake.wait(next).unwrap_or_else(|e| e.into_inner());
             }
         };
-        for (k, resolution) in [coarse, fine].into_iter().enumerate() {
+        let fine = fine_columns(&request.limits, fine);
+        for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
             let control = Arc::new(WorkspaceControl::default());
             *shared.control.lock().unwrap_or_else(|e| e.into_inner()) =
                 Some((number, Arc::clone(&control)));
@@ -304,7 +320,7 @@ fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Out
 
 /// The workspace, its surface and the slice for `request` at `resolution`; `Err(None)`
 /// when cancelled.
-fn compute(
+pub(crate) fn compute(
     request: &Request,
     resolution: usize,
     slice_cells: usize,

@@ -7,7 +7,7 @@ use stewart_render::{Overlays, Theme};
 
 use super::widgets;
 use crate::export::video::VideoRequest;
-use crate::viewer::export_job::{ExportJob, ExportWork};
+use crate::viewer::export_job::{ExportJob, ExportWork, SurfaceView};
 use crate::viewer::exports::ExportKind;
 use crate::viewer::state::ViewerState;
 
@@ -63,25 +63,33 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     let before = form.kind;
     egui::ComboBox::from_label(t.tr("export.what"))
         .selected_text(form.kind.label(t))
+        // Every kind in view at once.
+        .height(400.0)
         .show_ui(ui, |ui| {
             for kind in ExportKind::ALL {
                 ui.selectable_value(&mut form.kind, kind, kind.label(t));
             }
         });
     if form.kind != before || form.path.is_empty() {
-        let suffix = if form.kind == ExportKind::Frames {
-            "-frames"
-        } else {
-            ""
-        };
-        form.path = format!("{name}{suffix}{}", form.kind.extension());
+        form.path = format!("{name}{}{}", form.kind.suffix(), form.kind.extension());
     }
     ui.horizontal(|ui| {
         let label = ui.label(t.tr("export.output"));
         ui.text_edit_singleline(&mut form.path)
             .labelled_by(label.id);
     });
-    if form.kind.is_video() {
+    let workspace = matches!(
+        form.kind,
+        ExportKind::WorkspaceSvg
+            | ExportKind::WorkspacePdf
+            | ExportKind::WorkspacePng
+            | ExportKind::SurfacePly
+            | ExportKind::SurfacePng
+    );
+    if workspace {
+        ui.label(egui::RichText::new(t.tr("export.workspace_note")).small());
+    }
+    if form.kind.is_video() || form.kind == ExportKind::SurfacePng {
         egui::ComboBox::from_label(t.tr("export.size"))
             .selected_text(format!("{}×{}", form.size.0, form.size.1))
             .show_ui(ui, |ui| {
@@ -89,6 +97,8 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
                     ui.selectable_value(&mut form.size, size, format!("{}×{}", size.0, size.1));
                 }
             });
+    }
+    if form.kind.is_video() {
         ui.add(egui::Slider::new(&mut form.fps, 0.0..=120.0).text(t.tr("export.fps")));
         ui.horizontal(|ui| {
             ui.checkbox(&mut form.light, t.tr("export.light"));
@@ -123,6 +133,20 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
     }
 }
 
+/// Where the workspace figure's slices cross: the platform's position, at the slice's
+/// height when the Workspace panel sets one.
+fn workspace_position(state: &ViewerState) -> [f64; 3] {
+    let p = state.pose().position;
+    let w = &state.workspace;
+    let z = if w.show_slice && !w.slice_follows {
+        // The panel's height is the platform centre's; a pose places the reference point.
+        p.z + w.slice_height - state.centre().z
+    } else {
+        p.z
+    };
+    [p.x, p.y, z]
+}
+
 fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
     match state.exports.form.kind {
         ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames => {
@@ -130,5 +154,32 @@ fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
         }
         ExportKind::PlotSvg | ExportKind::PlotPdf | ExportKind::PlotPng => ExportWork::Plot(path),
         ExportKind::Csv => ExportWork::Csv(path),
+        ExportKind::WorkspaceSvg | ExportKind::WorkspacePdf | ExportKind::WorkspacePng => {
+            ExportWork::WorkspaceFigure {
+                path,
+                orientation: state.workspace_orientation(),
+                position: workspace_position(state),
+            }
+        }
+        ExportKind::SurfacePly => ExportWork::SurfacePly {
+            path,
+            orientation: state.workspace_orientation(),
+        },
+        ExportKind::SurfacePng => {
+            let theme = state.theme();
+            ExportWork::SurfacePng(Box::new(SurfaceView {
+                path,
+                request: state.workspace_request(),
+                list: {
+                    // The job draws the surface it computes, not the one on screen.
+                    let mut list = state.draw_list(&theme);
+                    list.analysis.clear();
+                    list
+                },
+                camera: state.look.camera,
+                theme,
+                size: state.exports.form.size,
+            }))
+        }
     }
 }
