@@ -12,7 +12,7 @@ use crate::viewer::state::ViewerState;
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
     egui::CollapsingHeader::new(t.tr("workspace_panel.heading"))
-        .default_open(state.look.expand_panels)
+        .default_open(state.look.expand_panels || state.workspace.show)
         .show(ui, |ui| {
             ui.checkbox(&mut state.workspace.show, t.tr("workspace_panel.show"))
                 .on_hover_text(t.tr("workspace_panel.show_tip"));
