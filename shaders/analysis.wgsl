@@ -9,16 +9,9 @@ struct VertexIn {
     @location(2) color: vec4<f32>,
 };
 
-struct VertexOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) color: vec4<f32>,
-};
-
 @vertex
-fn vs_main(v: VertexIn) -> VertexOut {
-    var out: VertexOut;
+fn vs_main(v: VertexIn) -> LitOut {
+    var out: LitOut;
     out.clip = globals.view_proj * vec4<f32>(v.position, 1.0);
     out.world = v.position;
     out.normal = v.normal;
@@ -27,6 +20,6 @@ fn vs_main(v: VertexIn) -> VertexOut {
 }
 
 @fragment
-fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    return vec4<f32>(encode(shade(in.color.rgb, in.world, in.normal)), in.color.a);
+fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
+    return lit(in);
 }

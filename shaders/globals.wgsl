@@ -45,3 +45,17 @@ fn shade(color: vec3<f32>, world: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
     let specular = globals.shading.y * pow(max(dot(n, half_vector), 0.0), globals.shading.z);
     return color * (globals.shading.x + diffuse) + vec3<f32>(specular);
 }
+
+// What a lit triangle's vertex stage hands its fragment stage (mesh.wgsl, analysis.wgsl).
+struct LitOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    // Linear RGB and alpha.
+    @location(2) color: vec4<f32>,
+};
+
+// The lit, encoded colour of a fragment of a lit triangle.
+fn lit(in: LitOut) -> vec4<f32> {
+    return vec4<f32>(encode(shade(in.color.rgb, in.world, in.normal)), in.color.a);
+}

@@ -15,18 +15,11 @@ struct InstanceIn {
     @location(6) color: vec4<f32>,
 };
 
-struct VertexOut {
-    @builtin(position) clip: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) color: vec4<f32>,
-};
-
 @vertex
-fn vs_main(v: VertexIn, i: InstanceIn) -> VertexOut {
+fn vs_main(v: VertexIn, i: InstanceIn) -> LitOut {
     let model = mat4x4<f32>(i.model_0, i.model_1, i.model_2, i.model_3);
     let world = model * vec4<f32>(v.position, 1.0);
-    var out: VertexOut;
+    var out: LitOut;
     out.clip = globals.view_proj * world;
     out.world = world.xyz;
     // Normals go through the inverse transpose of the model's linear part. Instance
@@ -43,6 +36,6 @@ fn vs_main(v: VertexIn, i: InstanceIn) -> VertexOut {
 }
 
 @fragment
-fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
-    return vec4<f32>(encode(shade(in.color.rgb, in.world, in.normal)), in.color.a);
+fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
+    return lit(in);
 }

@@ -217,8 +217,12 @@ fn workspace_plot_refuses_a_bad_file_before_computing() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("must end in .svg, .pdf or .png"));
     assert!(!bad.exists());
-    // Nothing reachable: one error, nothing written.
-    let svg = dir.path().join("empty.svg");
+    refuses_an_empty_workspace("--plot", &dir.path().join("empty.svg"), "nothing to plot");
+}
+
+/// Nothing reachable (the paired platform rolled 80°): one error naming it, exit 2,
+/// nothing written to `file` given with `flag`.
+fn refuses_an_empty_workspace(flag: &str, file: &std::path::Path, message: &str) {
     let o = stewart(&[
         "workspace",
         "--preset",
@@ -227,12 +231,12 @@ fn workspace_plot_refuses_a_bad_file_before_computing() {
         "80,0,0",
         "--resolution",
         "50",
-        "--plot",
-        &svg.display().to_string(),
+        flag,
+        &file.display().to_string(),
     ]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("nothing to plot"));
-    assert!(!svg.exists());
+    assert!(stderr(&o).contains(message), "{}", stderr(&o));
+    assert!(!file.exists());
 }
 
 #[test]
@@ -294,19 +298,9 @@ fn workspace_surface_refuses_a_bad_file_and_an_empty_workspace() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("must end in .ply"), "{}", stderr(&o));
     assert!(!stl.exists());
-    let ply = dir.path().join("empty.ply");
-    let o = stewart(&[
-        "workspace",
-        "--preset",
-        "paired",
-        "--orientation",
-        "80,0,0",
-        "--resolution",
-        "50",
+    refuses_an_empty_workspace(
         "--surface",
-        &ply.display().to_string(),
-    ]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("no surface to write"));
-    assert!(!ply.exists());
+        &dir.path().join("empty.ply"),
+        "no surface to write",
+    );
 }

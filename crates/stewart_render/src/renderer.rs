@@ -132,43 +132,46 @@ impl Renderer {
             write_mask: wgpu::ColorWrites::ALL,
         })];
         let mesh_pipeline = |label: &str, depth_write: bool, cull: Option<wgpu::Face>| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
+            triangle_pipeline(
+                device,
+                TriangleStages {
+                    label,
+                    layout: &pipeline_layout,
                     module: &mesh_module,
-                    entry_point: Some("vs_main"),
-                    compilation_options: Default::default(),
                     buffers: &mesh_buffers,
                 },
-                primitive: wgpu::PrimitiveState {
-                    topology: wgpu::PrimitiveTopology::TriangleList,
-                    cull_mode: cull,
-                    ..Default::default()
-                },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(depth_write),
-                    depth_compare: Some(wgpu::CompareFunction::Less),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
+                depth_write,
+                cull,
                 multisample,
-                fragment: Some(wgpu::FragmentState {
-                    module: &mesh_module,
-                    entry_point: Some("fs_main"),
-                    compilation_options: Default::default(),
-                    targets: &blend_target,
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
+                &blend_target,
+            )
         };
         let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
         // Translucent plates: depth-tested against the opaque scene, not written, both
         // faces drawn, back to front.
         let translucent = mesh_pipeline("translucent plates", false, None);
-        let analysis = analysis_pipeline(device, &pipeline_layout, multisample, &blend_target);
+        let analysis_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("analysis.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
+        });
+        // Analysis meshes: translucent, world coordinates, a colour per vertex.
+        let analysis = triangle_pipeline(
+            device,
+            TriangleStages {
+                label: "analysis meshes",
+                layout: &pipeline_layout,
+                module: &analysis_module,
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<ColouredVertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
+                })],
+            },
+            false,
+            None,
+            multisample,
+            &blend_target,
+        );
         let lines = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("lines"),
             layout: Some(&pipeline_layout),
@@ -467,46 +470,48 @@ impl Renderer {
     }
 }
 
-/// The analysis pipeline: translucent world-space meshes with a colour per vertex,
-/// depth-tested against the opaque scene but not written, both faces drawn.
-fn analysis_pipeline(
+/// What a triangle pipeline is made of: its name, layout, shader module (`vs_main`,
+/// `fs_main`) and vertex buffers.
+struct TriangleStages<'a> {
+    label: &'a str,
+    layout: &'a wgpu::PipelineLayout,
+    module: &'a wgpu::ShaderModule,
+    buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+}
+
+/// A lit triangle pipeline, depth-tested (`Less`) and writing depth or not, culling `cull`.
+fn triangle_pipeline(
     device: &wgpu::Device,
-    layout: &wgpu::PipelineLayout,
+    stages: TriangleStages<'_>,
+    depth_write: bool,
+    cull: Option<wgpu::Face>,
     multisample: wgpu::MultisampleState,
     targets: &[Option<wgpu::ColorTargetState>],
 ) -> wgpu::RenderPipeline {
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("analysis.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
-    });
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("analysis meshes"),
-        layout: Some(layout),
+        label: Some(stages.label),
+        layout: Some(stages.layout),
         vertex: wgpu::VertexState {
-            module: &module,
+            module: stages.module,
             entry_point: Some("vs_main"),
             compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<ColouredVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
-            })],
+            buffers: stages.buffers,
         },
         primitive: wgpu::PrimitiveState {
             topology: wgpu::PrimitiveTopology::TriangleList,
-            cull_mode: None,
+            cull_mode: cull,
             ..Default::default()
         },
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
-            depth_write_enabled: Some(false),
+            depth_write_enabled: Some(depth_write),
             depth_compare: Some(wgpu::CompareFunction::Less),
             stencil: Default::default(),
             bias: Default::default(),
         }),
         multisample,
         fragment: Some(wgpu::FragmentState {
-            module: &module,
+            module: stages.module,
             entry_point: Some("fs_main"),
             compilation_options: Default::default(),
             targets,
