@@ -28,6 +28,9 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     state.workspace.show = true;
     let mut h = crate::harness_with(state, 4200.0);
     h.state_mut().settle_workspace();
+    h.state_mut()
+        .workspace
+        .wait(std::time::Duration::from_secs(120));
     h.run();
     h
 }

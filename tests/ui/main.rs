@@ -45,8 +45,11 @@ pub fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerS
 pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
     // The system's Chinese font as the window loads it; kittest panics on a glyph no font
     // has, so no test passes with boxes for characters.
+    // Up to eight frames to settle: a tall window with every section open lays out new
+    // rows (a search result, a reach map) over a few passes.
     let mut h = Harness::builder()
         .with_size(size)
+        .with_max_steps(8)
         .with_context_setup(|ctx| {
             stewart_app::viewer::fonts::install(ctx);
         })

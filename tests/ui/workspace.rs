@@ -7,7 +7,7 @@ use egui_kittest::kittest::Queryable;
 use stewart_app::i18n::Lang;
 use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::workspace::WorkspaceTool;
+use stewart_app::viewer::workspace::{WorkspaceTool, format_volume};
 use stewart_kinematics::{Angle, Pose, Scenario};
 
 /// Columns a side of the refinement in these tests (the viewer's 512 are slow in a debug
@@ -34,8 +34,13 @@ fn shown(preset: &str, lang: Lang) -> Harness<'static, ViewerState> {
     h
 }
 
+/// Wait for the refinement (a debug build sharing two cores with the other tests can take
+/// a while), then draw.
 fn settle(h: &mut Harness<'static, ViewerState>) {
     h.state_mut().settle_workspace();
+    h.state_mut()
+        .workspace
+        .wait(std::time::Duration::from_secs(120));
     h.run();
 }
 
@@ -45,7 +50,11 @@ fn volume_line(s: &Scenario, orientation: [Angle; 3]) -> String {
         .geometry
         .constant_orientation_workspace(&s.limits, orientation, FINE)
         .unwrap_or_else(|e| panic!("{e}"));
-    format!("Volume {:.6} m³ ± {:.6} m³", ws.volume, ws.volume_error)
+    format!(
+        "Volume {} m³ ± {} m³",
+        format_volume(ws.volume),
+        format_volume(ws.volume_error)
+    )
 }
 
 #[test]

@@ -69,10 +69,13 @@ pub struct SurfaceView {
     pub size: (u32, u32),
 }
 
-/// Columns a side of the workspace the exports compute for `limits`: the viewer's
-/// refinement.
-fn export_columns(limits: &stewart_kinematics::Limits) -> usize {
-    crate::viewer::workspace::fine_columns(limits, crate::viewer::workspace::FINE_COLUMNS)
+/// Columns a side of the workspace the exports compute for `geometry` under `limits`: the
+/// viewer's refinement.
+fn export_columns(
+    geometry: &stewart_kinematics::Geometry,
+    limits: &stewart_kinematics::Limits,
+) -> usize {
+    crate::viewer::workspace::fine_columns(geometry, limits, crate::viewer::workspace::FINE_COLUMNS)
 }
 
 /// An export running (or finished) on its own thread.
@@ -265,7 +268,7 @@ fn run(
                 });
                 let outcome = crate::viewer::workspace::compute(
                     &view.request,
-                    export_columns(&view.request.limits),
+                    export_columns(&view.request.geometry, &view.request.limits),
                     160,
                     &control,
                 );
@@ -316,7 +319,7 @@ fn workspace(
     let ws = scenario.geometry.constant_orientation_workspace_with(
         &scenario.limits,
         orientation,
-        export_columns(&scenario.limits),
+        export_columns(&scenario.geometry, &scenario.limits),
         &control,
     )?;
     if ws.extent.is_none() {

@@ -401,13 +401,13 @@ impl ViewerState {
         self.workspace.poll();
     }
 
-    /// When the workspace is shown, wait (at most ten seconds) for its refinement at the
+    /// When the workspace is shown, wait (at most thirty seconds) for its refinement at the
     /// pose shown (screenshots and tests want a settled picture).
     pub fn settle_workspace(&mut self) {
         if self.workspace.show {
             let request = self.workspace_request();
             self.workspace.request(request);
-            self.workspace.wait(std::time::Duration::from_secs(10));
+            self.workspace.wait(std::time::Duration::from_secs(30));
         }
     }
 

@@ -22,16 +22,16 @@ use stewart_render::analysis::AnalysisMesh;
 pub const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
 pub const FINE_COLUMNS: usize = 512;
-/// Columns a side of the refinement at most when cone or clearance limits are set: each
-/// column is then sampled along its height too, so the cost grows as the cube (512 would
-/// take seconds).
-pub const POSE_LIMITED_COLUMNS: usize = 256;
+/// Columns a side of the refinement at most when each column is sampled along its height
+/// too — a rotary platform, or cone or clearance limits — so that the cost grows as the
+/// cube (512 would take seconds).
+pub const SAMPLED_COLUMNS: usize = 256;
 
-/// Columns a side of the refinement for `limits`: `fine`, or at most
-/// [`POSE_LIMITED_COLUMNS`] with cone or clearance limits.
-pub fn fine_columns(limits: &Limits, fine: usize) -> usize {
-    if limits.has_pose_limits() {
-        fine.min(POSE_LIMITED_COLUMNS)
+/// Columns a side of the refinement of `geometry` under `limits`: `fine`, or at most
+/// [`SAMPLED_COLUMNS`] when columns are sampled along their height.
+pub fn fine_columns(geometry: &Geometry, limits: &Limits, fine: usize) -> usize {
+    if geometry.rotary().is_some() || limits.has_pose_limits() {
+        fine.min(SAMPLED_COLUMNS)
     } else {
         fine
     }
@@ -46,6 +46,16 @@ pub const DRAWN_COLUMNS: usize = 256;
 /// a column only six square roots).
 fn slice_cells(columns: usize) -> usize {
     (columns * 5 / 16).clamp(8, 160)
+}
+
+/// A volume in m³ to four significant digits (a desk platform's workspace is a fraction
+/// of a litre, a motion simulator's a cubic metre).
+pub fn format_volume(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let decimals = (3 - v.abs().log10().floor() as i32).clamp(0, 12) as usize;
+    format!("{v:.decimals$}")
 }
 
 /// What a surface is computed for.
@@ -280,7 +290,7 @@ fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Out
                 next = shared.wake.wait(next).unwrap_or_else(|e| e.into_inner());
             }
         };
-        let fine = fine_columns(&request.limits, fine);
+        let fine = fine_columns(&request.geometry, &request.limits, fine);
         for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
             let control = Arc::new(WorkspaceControl::default());
             *shared.control.lock().unwrap_or_else(|e| e.into_inner()) =
@@ -416,6 +426,14 @@ mod tests {
             condition_max: s.checks.condition_max,
             colour: [0.5, 0.5, 0.5, 0.3],
         }
+    }
+
+    #[test]
+    fn volumes_keep_four_significant_digits() {
+        assert_eq!(format_volume(0.170_704), "0.1707");
+        assert_eq!(format_volume(0.000_221_37), "0.0002214");
+        assert_eq!(format_volume(12.345_67), "12.35");
+        assert_eq!(format_volume(0.0), "0");
     }
 
     #[test]

@@ -7,6 +7,7 @@ use stewart_render::colormap;
 
 use super::widgets::{ERROR, OK, WARNING};
 use crate::viewer::state::ViewerState;
+use crate::viewer::workspace::format_volume;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -73,8 +74,8 @@ fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
     ui.label(t.fmt(
         "workspace_panel.volume",
         &[
-            ("volume", &format!("{:.6}", o.volume)),
-            ("error", &format!("{:.6}", o.volume_error)),
+            ("volume", &format_volume(o.volume)),
+            ("error", &format_volume(o.volume_error)),
         ],
     ));
     for (axis, [lo, hi]) in ["x", "y", "z"].iter().zip(extent) {
