@@ -261,7 +261,7 @@ fn workspace_surface_is_a_closed_ply_mesh_enclosing_the_volume() {
     // own bound, from the half-resolution mesh, is of the same size).
     assert!((enclosing - volume).abs() <= 2.0 * bound + 1e-6, "{out}");
     let bytes = std::fs::read(&ply).unwrap_or_default();
-    let end = b"end_header\n";
+    let end = b"\nend_header\n";
     let at = bytes
         .windows(end.len())
         .position(|w| w == end)

@@ -66,7 +66,8 @@ mod tests {
 
     /// Read back what [`ply`] writes: header lines, vertices, triangles.
     fn read(bytes: &[u8]) -> (Vec<String>, Vec<[f32; 3]>, Vec<[i32; 3]>) {
-        let end = b"end_header\n";
+        // The header ends at the line `end_header` (a comment may mention the words).
+        let end = b"\nend_header\n";
         let at = bytes
             .windows(end.len())
             .position(|w| w == end)
@@ -132,10 +133,15 @@ mod tests {
         let (header, vertices, faces) = read(&bytes);
         assert_eq!(header[0], "ply");
         assert_eq!(header[1], "format binary_little_endian 1.0");
-        // A name cannot end the header early.
+        // A name cannot end the header early: it stays on its comment line.
         assert_eq!(
             header.iter().filter(|l| l.as_str() == "end_header").count(),
             1
+        );
+        assert!(
+            header
+                .iter()
+                .any(|l| l == "comment stewart workspace surface of pairedend_header")
         );
         assert_eq!(vertices.len(), surface.positions.len());
         assert_eq!(faces.len(), surface.triangles.len());
