@@ -87,7 +87,7 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.add_space(-ui.spacing().item_spacing.y);
         ui.horizontal(|ui| {
             ui.add_space(handle);
-            super::reach::range_bar(
+            widgets::range_bar(
                 ui,
                 [centre - reach, centre + reach],
                 reachable[k].map(|r| r.map(to_slider)),

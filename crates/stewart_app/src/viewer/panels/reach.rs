@@ -2,15 +2,12 @@
 //! alone, and a map of the roll–pitch pairs reachable at its yaw; updated as the pose
 //! moves.
 
-use egui::{Color32, RichText, Stroke};
+use egui::{RichText, Stroke};
 
-use super::widgets::{ERROR, OK};
+use super::widgets::{ERROR, OK, UNREACHABLE, range_bar};
 use crate::i18n::words;
 use crate::viewer::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG};
 use crate::viewer::state::ViewerState;
-
-/// Unreachable cells of the map.
-const OUT: Color32 = Color32::from_rgb(70, 40, 45);
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -59,39 +56,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         });
 }
 
-/// A bar over `full` (slider units) with the `reachable` part in green and the `value`
-/// marked: drawn under a slider of that `width`, or alone.
-pub fn range_bar(
-    ui: &mut egui::Ui,
-    full: [f64; 2],
-    reachable: Option<[f64; 2]>,
-    value: f64,
-    width: f32,
-) {
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, 5.0), egui::Sense::hover());
-    let painter = ui.painter_at(rect);
-    let x = |v: f64| {
-        let f = ((v - full[0]) / (full[1] - full[0])).clamp(0.0, 1.0) as f32;
-        rect.left() + f * rect.width()
-    };
-    painter.rect_filled(rect, 1.0, OUT);
-    if let Some([lo, hi]) = reachable {
-        painter.rect_filled(
-            egui::Rect::from_x_y_ranges(x(lo)..=x(hi), rect.y_range()),
-            1.0,
-            OK,
-        );
-    }
-    let vx = x(value);
-    painter.line_segment(
-        [
-            egui::pos2(vx, rect.top() - 1.0),
-            egui::pos2(vx, rect.bottom() + 1.0),
-        ],
-        Stroke::new(2.0, ui.visuals().strong_text_color()),
-    );
-}
-
 /// The roll–pitch map: reachable cells green, the others dark, the pose's own angles as a
 /// cross, ticks at −span, 0, +span.
 fn map(
@@ -114,7 +78,7 @@ fn map(
     let cell = side / map.cells as f32;
     for j in 0..map.cells {
         for i in 0..map.cells {
-            let colour = if map.get(i, j) { OK } else { OUT };
+            let colour = if map.get(i, j) { OK } else { UNREACHABLE };
             let min = egui::pos2(
                 plot.left() + i as f32 * cell,
                 plot.bottom() - (j + 1) as f32 * cell,

@@ -14,6 +14,8 @@ pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
 pub const WARNING: Color32 = Color32::from_rgb(230, 150, 20);
 /// Green for success.
 pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
+/// What lies out of reach (reach bars, the roll–pitch map).
+pub const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 
 /// A slider for the setting of `target`, labelled with its unit; optional settings get a
 /// checkbox that switches them on (at their slider's start) and off. Right-click resets
@@ -121,4 +123,37 @@ pub fn edit_error(ui: &mut egui::Ui, state: &ViewerState, groups: &[Group]) {
             RichText::new(state.look.lang.fmt("widgets.not_applied", &[("why", e)])).color(ERROR),
         );
     }
+}
+
+/// A bar over `full` (slider units) with the `reachable` part in green and the `value`
+/// marked: drawn under a slider of that `width`, or alone.
+pub fn range_bar(
+    ui: &mut egui::Ui,
+    full: [f64; 2],
+    reachable: Option<[f64; 2]>,
+    value: f64,
+    width: f32,
+) {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, 5.0), egui::Sense::hover());
+    let painter = ui.painter_at(rect);
+    let x = |v: f64| {
+        let f = ((v - full[0]) / (full[1] - full[0])).clamp(0.0, 1.0) as f32;
+        rect.left() + f * rect.width()
+    };
+    painter.rect_filled(rect, 1.0, UNREACHABLE);
+    if let Some([lo, hi]) = reachable {
+        painter.rect_filled(
+            egui::Rect::from_x_y_ranges(x(lo)..=x(hi), rect.y_range()),
+            1.0,
+            OK,
+        );
+    }
+    let vx = x(value);
+    painter.line_segment(
+        [
+            egui::pos2(vx, rect.top() - 1.0),
+            egui::pos2(vx, rect.bottom() + 1.0),
+        ],
+        egui::Stroke::new(2.0, ui.visuals().strong_text_color()),
+    );
 }
