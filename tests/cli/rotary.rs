@@ -166,7 +166,10 @@ fn workspace_of_a_servo_platform_has_volume_and_orientation_ranges() {
     let o = stewart(&["workspace", "--preset", "servo-desk", "--resolution", "32"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let text = stdout(&o);
-    assert!(text.contains("servo reach and range sampled"), "{text}");
+    assert!(
+        text.contains("servo reach, range, rod cones exact per column; rod clearance sampled"),
+        "{text}"
+    );
     assert!(text.contains("extent x"), "{text}");
     assert!(!text.contains("not reachable"), "{text}");
 }

@@ -70,5 +70,39 @@ fn viewer_bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, servo_bench, viewer_bench);
+/// The same under each preset's own limits: the paired platform's joint cones and leg
+/// clearance (cones exact per column, clearance by the certified scan), and the servo
+/// desk's servo range and rod cones (exact per column) with and without its rod clearance
+/// (sampled along each column, so 256 × 256 at most in the viewer).
+fn limited_bench(c: &mut Criterion) {
+    let mut group = c.benchmark_group("workspace_surface_limits");
+    group.sample_size(10);
+    let orientation = [5.0, -3.0, 10.0].map(Angle::from_degrees);
+    for (preset, clearance, sizes) in [
+        ("paired", true, [128, 512]),
+        ("servo-desk", false, [128, 512]),
+        ("servo-desk", true, [128, 256]),
+    ] {
+        let s = Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
+        let mut limits = s.limits;
+        if !clearance {
+            limits.leg_radius = None;
+        }
+        let label = if clearance { "" } else { "_no_clearance" };
+        for n in sizes {
+            group.bench_function(format!("{preset}{label}_tilted_{n}x{n}"), |b| {
+                b.iter(|| {
+                    let ws = s
+                        .geometry
+                        .constant_orientation_workspace(&limits, orientation, n)
+                        .unwrap_or_else(|e| panic!("{e}"));
+                    WorkspaceSurface::from_workspace(black_box(&ws))
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, servo_bench, viewer_bench, limited_bench);
 criterion_main!(benches);

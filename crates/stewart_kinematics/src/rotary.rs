@@ -238,7 +238,12 @@ impl RotaryActuators {
 
     /// The closure terms `(L, M, N)` of servo `i` for platform joint `joint`: the horn
     /// angle θ closes the rod when `N cos θ + M sin θ = L`.
-    fn closure_terms(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> [f64; 3] {
+    pub(crate) fn closure_terms(
+        &self,
+        i: usize,
+        base: &Vector3<f64>,
+        joint: &Vector3<f64>,
+    ) -> [f64; 3] {
         let a = self.horn_length;
         let s = self.rod_length;
         let l = joint - base;

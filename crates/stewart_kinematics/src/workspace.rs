@@ -11,11 +11,15 @@
 //! Richardson's idea: the same sum on an `N/2` grid; the difference (which overstates
 //! the error of the finer grid) is reported as the error bound.
 //!
-//! Rotary platforms are computed by sampling and bisection instead (see `rotary.rs`).
+//! Rotary platforms are computed from the roots of each servo's boundary polynomials along
+//! the column instead (see `rotary.rs`).
 //!
-//! When cone-angle or collision limits are set, each column's intervals are further
-//! sampled in `z` at the column spacing and only the allowed samples count, so the
-//! result is then a sampled (not exact-in-`z`) estimate.
+//! When cone-angle or collision limits are set, each column's intervals are narrowed
+//! further (see `limited.rs`): a cone can only be entered or left at the roots of a
+//! quadratic in `z`, so the column stays exact; the leg clearance is resolved by a scan
+//! that the Lipschitz bound of the legs' distance certifies, with edges bisected to
+//! 1e-12 m (only a violation thinner than the column spacing can slip through it). The
+//! error estimate is then the difference from the half-resolution grid as well.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
@@ -60,7 +64,7 @@ pub const PROBE_RESOLUTION: usize = 64;
 pub struct WorkspaceControl {
     /// Rows of the grid finished so far (of `resolution`).
     pub rows_done: AtomicUsize,
-    /// Pose-limit evaluations made so far (cone and clearance samples).
+    /// Limit evaluations made so far (pieces decided, samples and bisection steps).
     pub evaluations: AtomicU64,
     /// Set to stop the computation early ([`WorkspaceError::Cancelled`]).
     pub cancel: AtomicBool,
@@ -71,9 +75,12 @@ pub struct WorkspaceControl {
 pub struct WorkspaceCost {
     /// Columns of the grid.
     pub columns: f64,
-    /// Pose-limit evaluations (cone and clearance samples): they dominate the time, and
-    /// grow as the cube of the resolution.
+    /// Limit evaluations (pieces decided, samples and bisection steps).
     pub evaluations: f64,
+    /// The time grows as the resolution to this power: 2 where every column is solved
+    /// from its boundary polynomials or a certified scan, 3 where a rotary platform's rod
+    /// clearance is sampled along each column at the column spacing.
+    pub time_exponent: i32,
     /// Memory the reachable spans take, bytes.
     pub bytes: f64,
 }
@@ -244,7 +251,8 @@ fn shifted(spans: impl Iterator<Item = [f64; 4]>, shift: Vector3<f64>) -> Vec<[f
 
 /// The volume of `spans` in columns of side `cell`.
 fn volume_of(spans: &[[f64; 4]], cell: f64) -> f64 {
-    spans.iter().map(|s| s[3] - s[2]).sum::<f64>() * cell * cell
+    // Folded from +0 (an empty sum of floats is −0, which would print as "-0.000000").
+    spans.iter().fold(0.0, |sum, s| sum + (s[3] - s[2])) * cell * cell
 }
 
 /// The box around `spans` (column centres in x and y, span ends in z), `None` when empty.
@@ -258,6 +266,52 @@ fn extent_of(spans: &[[f64; 4]]) -> Option<[[f64; 2]; 3]> {
         }
         e
     })
+}
+
+/// Scratch space of a column under cone and clearance limits.
+#[derive(Default)]
+struct LimitedScratch {
+    spans: column::Spans,
+    limits: limited::Scratch,
+}
+
+/// Every column of an `n × n` grid over `bounds`, rows in parallel: `column(x, y, dz, scratch,
+/// row)` appends the spans `(x, y, z0, z1)` of the column at `(x, y)` to `row` (`dz` is the
+/// grid's spacing) and returns the limit evaluations it made. Stops early when `control`
+/// is cancelled; counts rows and evaluations on it when `count` is set. Returns the column
+/// spacing and the spans.
+fn grid_spans<S: Default>(
+    bounds: &[[f64; 2]; 2],
+    n: usize,
+    control: &WorkspaceControl,
+    count: bool,
+    column: impl Fn(f64, f64, f64, &mut S, &mut Vec<[f64; 4]>) -> usize + Sync,
+) -> (f64, Vec<[f64; 4]>) {
+    let (cell, x0, y0) = grid(bounds, n);
+    let rows: Vec<Vec<[f64; 4]>> = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let x = x0 + (i as f64 + 0.5) * cell;
+            let mut row = Vec::new();
+            let mut scratch = S::default();
+            let mut evaluations = 0;
+            for j in 0..n {
+                if control.cancel.load(Ordering::Relaxed) {
+                    break;
+                }
+                let y = y0 + (j as f64 + 0.5) * cell;
+                evaluations += column(x, y, cell, &mut scratch, &mut row);
+            }
+            if count {
+                control
+                    .evaluations
+                    .fetch_add(evaluations as u64, Ordering::Relaxed);
+                control.rows_done.fetch_add(1, Ordering::Relaxed);
+            }
+            row
+        })
+        .collect();
+    (cell, rows.into_iter().flatten().collect())
 }
 
 /// Volume only, for the error estimate.
@@ -314,8 +368,8 @@ impl Geometry {
     }
 
     /// The cost of [`Geometry::constant_orientation_workspace`] at `resolution`, from a
-    /// probe at [`PROBE_RESOLUTION`]: columns scale as N², pose-limit evaluations as N³
-    /// (samples along each column are as fine as the grid), spans as N².
+    /// probe at [`PROBE_RESOLUTION`]: columns and spans scale as N², evaluations and time
+    /// as N to the [`WorkspaceCost::time_exponent`].
     pub fn workspace_cost(
         &self,
         limits: &Limits,
@@ -331,11 +385,23 @@ impl Geometry {
         )?;
         let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
         let evaluations = control.evaluations.load(Ordering::Relaxed) as f64;
+        let time_exponent = self.workspace_cost_exponent(limits);
         Ok(WorkspaceCost {
             columns: (resolution * resolution) as f64,
-            evaluations: evaluations * ratio.powi(3),
+            evaluations: evaluations * ratio.powi(time_exponent),
+            time_exponent,
             bytes: (probe.spans.len() * size_of::<[f64; 4]>()) as f64 * ratio.powi(2),
         })
+    }
+
+    /// How the time of [`Geometry::constant_orientation_workspace`] grows with the
+    /// resolution N: as N to this power (see [`WorkspaceCost::time_exponent`]).
+    pub fn workspace_cost_exponent(&self, limits: &Limits) -> i32 {
+        if self.rotary().is_some() && limits.leg_radius.is_some() {
+            3
+        } else {
+            2
+        }
     }
 
     /// [`Geometry::constant_orientation_workspace`], counting progress on `control` and
@@ -366,104 +432,58 @@ impl Geometry {
         let Some(bounds) = shells.xy_bounds() else {
             return Ok(empty);
         };
-        let (cell, x0, y0) = grid(&bounds, resolution);
-        let pose_limits = limits.has_pose_limits();
-        let rows: Vec<Vec<[f64; 4]>> = (0..resolution)
-            .into_par_iter()
-            .map(|i| {
-                let x = x0 + (i as f64 + 0.5) * cell;
-                let mut spans = [(0.0, 0.0); MAX_SPANS];
-                let mut row = Vec::new();
-                for j in 0..resolution {
-                    if control.cancel.load(Ordering::Relaxed) {
-                        break;
-                    }
-                    let y = y0 + (j as f64 + 0.5) * cell;
-                    let k = shells.column(x, y, &mut spans);
-                    for &(z0, z1) in &spans[..k] {
-                        if pose_limits {
-                            let n = self.sample_span(
-                                limits,
-                                [roll, pitch, yaw],
-                                x,
-                                y,
-                                z0,
-                                z1,
-                                cell,
-                                &mut row,
-                            );
-                            control.evaluations.fetch_add(n as u64, Ordering::Relaxed);
-                        } else {
-                            row.push([x, y, z0, z1]);
-                        }
-                    }
-                }
-                control.rows_done.fetch_add(1, Ordering::Relaxed);
-                row
-            })
-            .collect();
+        let (spans, cell, volume_error) = if limits.has_pose_limits() {
+            let limited = limited::LegLimits::new(self, limits, &rotation);
+            let column =
+                |x: f64, y: f64, dz: f64, scratch: &mut LimitedScratch, row: &mut Vec<[f64; 4]>| {
+                    let mut stroke = [(0.0, 0.0); MAX_SPANS];
+                    let k = shells.column(x, y, &mut stroke);
+                    scratch.spans.clear();
+                    scratch.spans.extend_from_slice(&stroke[..k]);
+                    let n = limited.narrow(x, y, dz, &mut scratch.spans, &mut scratch.limits);
+                    row.extend(scratch.spans.iter().map(|&(z0, z1)| [x, y, z0, z1]));
+                    n
+                };
+            let (cell, spans) = grid_spans(&bounds, resolution, control, true, column);
+            if control.cancel.load(Ordering::Relaxed) {
+                return Err(WorkspaceError::Cancelled);
+            }
+            // Richardson's estimate, as for the stroke alone: the same on the half grid.
+            let (coarse_cell, coarse) =
+                grid_spans(&bounds, (resolution / 2).max(2), control, false, column);
+            let error = (volume_of(&spans, cell) - volume_of(&coarse, coarse_cell)).abs();
+            (spans, cell, error)
+        } else {
+            let (cell, spans) = grid_spans(
+                &bounds,
+                resolution,
+                control,
+                true,
+                |x, y, _, _: &mut (), row| {
+                    let mut stroke = [(0.0, 0.0); MAX_SPANS];
+                    let k = shells.column(x, y, &mut stroke);
+                    row.extend(stroke[..k].iter().map(|&(z0, z1)| [x, y, z0, z1]));
+                    0
+                },
+            );
+            let volume = volume_of(&spans, cell);
+            let error = (volume - volume_on_grid(&shells, &bounds, (resolution / 2).max(1))).abs();
+            (spans, cell, error)
+        };
         if control.cancel.load(Ordering::Relaxed) {
             return Err(WorkspaceError::Cancelled);
         }
         // Report platform-centre positions: with a pivot offset `c` the centre sits at
         // `p + c − R c`, a constant shift at a fixed orientation.
-        let spans = shifted(
-            rows.into_iter().flatten(),
-            self.pivot() - rotation * self.pivot(),
-        );
-        let volume = volume_of(&spans, cell);
-        let coarse = if pose_limits {
-            // The sampled estimate's own error is about one sample per span end.
-            spans.len() as f64 * cell * cell * cell
-        } else {
-            (volume - volume_on_grid(&shells, &bounds, (resolution / 2).max(1))).abs()
-        };
-        let extent = extent_of(&spans);
+        let spans = shifted(spans.into_iter(), self.pivot() - rotation * self.pivot());
         Ok(ConstantOrientationWorkspace {
             cell,
-            volume,
-            volume_error: coarse,
-            extent,
+            volume: volume_of(&spans, cell),
+            volume_error,
+            extent: extent_of(&spans),
             spans,
             ..empty
         })
-    }
-
-    /// Split the stroke-reachable span `[z0, z1]` of a column into runs of `z` samples
-    /// (spacing `dz`) that also respect the pose limits; returns the samples evaluated.
-    #[allow(clippy::too_many_arguments)]
-    fn sample_span(
-        &self,
-        limits: &Limits,
-        rpy: [Angle; 3],
-        x: f64,
-        y: f64,
-        z0: f64,
-        z1: f64,
-        dz: f64,
-        out: &mut Vec<[f64; 4]>,
-    ) -> usize {
-        let count = ((z1 - z0) / dz).ceil().max(1.0) as usize;
-        let step = (z1 - z0) / count as f64;
-        let mut run: Option<f64> = None;
-        for k in 0..count {
-            let z = z0 + (k as f64 + 0.5) * step;
-            let pose = Pose::new(Vector3::new(x, y, z), rpy[0], rpy[1], rpy[2]);
-            let solution = self.inverse(&pose);
-            let ok = limits.pose_allowed(&pose, &solution);
-            match (ok, run) {
-                (true, None) => run = Some(z0 + k as f64 * step),
-                (false, Some(start)) => {
-                    out.push([x, y, start, z0 + k as f64 * step]);
-                    run = None;
-                }
-                _ => {}
-            }
-        }
-        if let Some(start) = run {
-            out.push([x, y, start, z1]);
-        }
-        count
     }
 
     /// The range of one angle (others held at the given values) reachable at `pose`'s
@@ -534,7 +554,12 @@ pub enum Axis {
     Yaw,
 }
 
+mod column;
+#[cfg(test)]
+mod limit_tests;
+mod limited;
 pub mod reach;
+mod roots;
 mod rotary;
 pub mod slice;
 pub mod surface;

@@ -65,17 +65,31 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         scenario.name
     );
     let n = ws.resolution;
+    let limits = &scenario.limits;
     let method = if g.rotary().is_some() {
+        let cones = if limits.base_cone.is_some() || limits.platform_cone.is_some() {
+            ", rod cones"
+        } else {
+            ""
+        };
+        let clearance = if limits.leg_radius.is_some() {
+            format!(
+                "; rod clearance sampled every {:.2} mm in z, edges bisected to 1e-12 m",
+                ws.cell * 1e3
+            )
+        } else {
+            String::new()
+        };
         format!(
-            "servo reach and range sampled every {:.2} mm in z per column, edges bisected to 1e-12 m; error estimate from the {} × {} grid",
-            ws.cell * 1e3,
+            "servo reach, range{cones} exact per column{clearance}; error estimate from the {} × {} grid",
             n / 2,
             n / 2
         )
-    } else if scenario.limits.has_pose_limits() {
+    } else if limits.has_pose_limits() {
         format!(
-            "stroke intervals exact per column, then sampled every {:.2} mm in z for the cone and clearance limits; error estimate one sample per interval end",
-            ws.cell * 1e3
+            "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m; error estimate from the {} × {} grid",
+            n / 2,
+            n / 2
         )
     } else {
         format!(
@@ -203,8 +217,7 @@ fn compute(
     let started = Instant::now();
     let cost = g.workspace_cost(limits, orientation, resolution)?;
     let probe_seconds = started.elapsed().as_secs_f64();
-    // Time grows as N³ with cone or clearance limits (samples along each column), else N².
-    let power = if limits.has_pose_limits() { 3 } else { 2 };
+    let power = cost.time_exponent;
     let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
     let seconds = probe_seconds * ratio.powi(power);
     let over = seconds > BUDGET_SECONDS || cost.bytes > BUDGET_BYTES;
@@ -224,7 +237,7 @@ fn compute(
         bail!(
             "a {resolution} × {resolution} workspace{} would take {cost_words}; the budget is {} and {:.0} GB: use --resolution {suggestion} or lower, or --no-budget to run it anyway (Ctrl-C stops it)",
             if power == 3 {
-                " with cone and clearance limits"
+                " with rod clearance sampled along each column"
             } else {
                 ""
             },

@@ -23,14 +23,15 @@ pub const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
 pub const FINE_COLUMNS: usize = 512;
 /// Columns a side of the refinement at most when each column is sampled along its height
-/// too — a rotary platform, or cone or clearance limits — so that the cost grows as the
-/// cube (512 would take seconds).
+/// — a rotary platform's rod clearance — so that the cost grows as the cube (512 would
+/// take seconds).
 pub const SAMPLED_COLUMNS: usize = 256;
 
 /// Columns a side of the refinement of `geometry` under `limits`: `fine`, or at most
 /// [`SAMPLED_COLUMNS`] when columns are sampled along their height.
 pub fn fine_columns(geometry: &Geometry, limits: &Limits, fine: usize) -> usize {
-    if geometry.rotary().is_some() || limits.has_pose_limits() {
+    let cost = geometry.workspace_cost_exponent(limits);
+    if cost > 2 {
         fine.min(SAMPLED_COLUMNS)
     } else {
         fine

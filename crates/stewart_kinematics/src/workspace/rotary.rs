@@ -1,27 +1,33 @@
 //! The constant-orientation workspace of a rotary platform.
 //!
 //! **Method.** With the orientation fixed, platform joint `i` sits at `p + d_i` (`d_i`
-//! constant). Servo `i` holds it when some horn angle in its range closes the rod: the
-//! closed form says so directly (reach ratio at most 1, angle within the range). The
-//! reachable set is no longer an intersection of spherical shells, so each column of the
-//! `xy` grid is *sampled* in `z` at the column spacing, from the base plane to the highest
-//! a joint can be (horn + rod above its shaft), and every change between reachable and
-//! unreachable samples is refined by bisection to 1e-12 m. The ends found are exact up to
-//! that; what can be missed is a reachable (or unreachable) piece thinner than one sample
-//! spacing in `z` (the reachable set of a servo is a thick shell around its horn's arc, so
-//! such pieces occur only at grazing edges), and the `xy` discretisation errs as for legs.
-//! The reported error estimate is the difference from the same computation on the
-//! half-resolution grid (whose sampling in `z` is twice as coarse too), which overstates
-//! the error of the finer grid as the grid converges; a test compares it with a
-//! brute-force grid of positions.
+//! constant). Servo `i` holds it when some horn angle in its range closes the rod, and
+//! along a column of the `xy` grid this can change only at a few points, all in closed
+//! form: the edge of reach, where the joint is exactly a rod's length from the nearest or
+//! the farthest point of the horn tip's circle (up to four heights, from the joint's
+//! distances to the circle's plane and centre); an end of the range, where the joint is
+//! one rod length from the horn tip at that end (a sphere: a quadratic); and the one
+//! height where the angle's formula can jump (the closure term `M` changes sign). Rod
+//! cones add the roots of a quartic each (see `Columns::rod_cone_boundary`). Between
+//! consecutive such points each piece is decided at its
+//! midpoint by the servo's own closed form, so the column's held intervals are exact (to
+//! the roots' precision, about 1e-15 m) from the base plane to the highest a joint can be
+//! (horn + rod above its shaft). Cone and clearance limits on the rods, when set, are
+//! sampled inside those intervals at the column spacing and every change is bisected to
+//! 1e-12 m: a piece thinner than one spacing can be missed there. The `xy`
+//! discretisation errs as for legs; the reported error estimate is the difference from
+//! the same computation on the half-resolution grid, which overstates the error of the
+//! finer grid as the grid converges; a test compares it with a brute-force grid of
+//! positions.
 
 use std::sync::atomic::Ordering;
 
 use nalgebra::Vector3;
-use rayon::prelude::*;
 
+use super::column::{Spans, keep_between_cuts};
+use super::roots::{Poly, mul, roots_in, sub};
 use super::{
-    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid, shifted,
+    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid_spans, shifted,
     volume_of,
 };
 use crate::angle::Angle;
@@ -30,6 +36,9 @@ use crate::geometry::Geometry;
 use crate::limits::Limits;
 use crate::pose::Pose;
 use crate::rotary::RotaryActuators;
+use clearance::Clearance;
+
+mod clearance;
 
 /// Whether every servo of `servos` holds platform joints `joints` of `pose` within its
 /// range, and the rods respect the pose limits.
@@ -64,21 +73,48 @@ struct Columns<'a> {
     geometry: &'a Geometry,
     servos: &'a RotaryActuators,
     limits: &'a Limits,
-    orientation: [Angle; 3],
     /// `d_i`: platform joint `i` minus the platform position, base frame.
     offsets: [Vector3<f64>; 6],
     /// Highest platform position a joint allows, metres.
     z_top: f64,
+    /// The platform's normal, base frame.
+    platform_normal: Vector3<f64>,
 }
 
 impl Columns<'_> {
-    /// Whether the platform position `(x, y, z)` is held.
-    fn allowed(&self, x: f64, y: f64, z: f64) -> bool {
-        let p = Vector3::new(x, y, z);
-        let joints = self.offsets.map(|d| p + d);
-        let [roll, pitch, yaw] = self.orientation;
-        let pose = Pose::new(p, roll, pitch, yaw);
-        servos_allowed(self.geometry, self.servos, self.limits, &pose, &joints)
+    /// Polynomials in `z` whose roots include every height at which servo `i`'s rod meets
+    /// the cone of half-angle `alpha` about the unit axis `n`, for the column whose joint
+    /// is at `joint0` at `z = 0`. The rod from the horn tip `T(θ)` to the joint `J` is on
+    /// the cone where `(J − T)·n = s cos α`, i.e. `A cos θ + C sin θ = D(z)`; with the
+    /// closure `N cos θ + M sin θ = L(z)` this fixes `cos θ` and `sin θ` by Cramer's rule,
+    /// and `cos² + sin² = 1` is a quartic in `z`. Where the two equations are dependent
+    /// (their determinant, linear in `z`, vanishes) Cramer's rule fails: those roots too.
+    fn rod_cone_boundary(
+        &self,
+        i: usize,
+        base: &Vector3<f64>,
+        joint0: &Vector3<f64>,
+        n: &Vector3<f64>,
+        alpha: f64,
+    ) -> [Poly; 2] {
+        let (a, s) = (self.servos.horn_length(), self.servos.rod_length());
+        let q = joint0 - base;
+        let [l0, m0, big_n] = self.servos.closure_terms(i, base, joint0);
+        let l: Poly = [l0, 2.0 * q.z, 1.0, 0.0, 0.0];
+        let m: Poly = [m0, 2.0 * a, 0.0, 0.0, 0.0];
+        // The horn at θ = 0 points along (cos β, sin β, 0): T(θ) − B = a (cos θ h + sin θ ẑ).
+        let coef_a = (self.servos.horn_tip(i, base, Angle::ZERO) - base).dot(n);
+        let coef_c = a * n.z;
+        let d: Poly = [q.dot(n) - s * alpha.cos(), n.z, 0.0, 0.0, 0.0];
+        let scale = |p: &Poly, k: f64| p.map(|c| c * k);
+        let det = sub(&scale(&m, coef_a), &[coef_c * big_n, 0.0, 0.0, 0.0, 0.0]);
+        let cos_num = sub(&mul(&d, &m), &scale(&l, coef_c));
+        let sin_num = sub(&scale(&l, coef_a), &scale(&d, big_n));
+        let circle = sub(
+            &sub(&mul(&det, &det), &mul(&cos_num, &cos_num)),
+            &mul(&sin_num, &sin_num),
+        );
+        [circle, det]
     }
 
     /// The `xy` box outside which some joint is beyond horn + rod of its shaft.
@@ -95,78 +131,124 @@ impl Columns<'_> {
         (b[0][0] < b[0][1] && b[1][0] < b[1][1]).then_some(b)
     }
 
-    /// The held `z` intervals of the column at `(x, y)`, sampled every `dz` and refined
-    /// by bisection, appended to `out`; returns the positions evaluated.
-    fn column(&self, x: f64, y: f64, dz: f64, out: &mut Vec<[f64; 4]>) -> usize {
-        let count = (self.z_top / dz).ceil().max(1.0) as usize;
-        let step = self.z_top / count as f64;
-        let mut evaluations = count + 1;
-        let mut edge = |lo: f64, hi: f64, lo_inside: bool| {
-            let (mut a, mut b) = (lo, hi);
-            while b - a > 1e-12 {
-                let mid = 0.5 * (a + b);
-                evaluations += 1;
-                if self.allowed(x, y, mid) == lo_inside {
-                    a = mid;
-                } else {
-                    b = mid;
+    /// Append the held `z` intervals of the column at `(x, y)` to `row` (see the module
+    /// docs; `dz` is the sampling of the rod limits); returns the evaluations made.
+    fn column(
+        &self,
+        x: f64,
+        y: f64,
+        dz: f64,
+        scratch: &mut Scratch,
+        row: &mut Vec<[f64; 4]>,
+    ) -> usize {
+        let Scratch { spans, spare, cuts } = scratch;
+        spans.clear();
+        spans.push((0.0, self.z_top));
+        let mut evaluations = 0;
+        let (a, s) = (self.servos.horn_length(), self.servos.rod_length());
+        for (i, base) in self.geometry.base_joints().iter().enumerate() {
+            let Some(&(lo, _)) = spans.first() else {
+                return evaluations;
+            };
+            let hi = spans.last().map_or(lo, |span| span.1);
+            let joint0 = Vector3::new(x, y, 0.0) + self.offsets[i];
+            let q = joint0 - base;
+            // The horn tip runs on a circle of radius a about the shaft centre, in the
+            // vertical plane along the horn's zero direction h. A joint at in-plane distance
+            // r from the centre and w off the plane is between √((r − a)² + w²) and
+            // √((r + a)² + w²) from the circle's points, so the rod closes while
+            // |√(s² − w²) − a| ≤ r ≤ √(s² − w²) + a; with r² = u² + v², u = q·h and
+            // v = q_z + z, the edges of reach are where v² = (those bounds)² − u².
+            let h = (self.servos.horn_tip(i, base, Angle::ZERO) - base) / a;
+            let (u, w) = (q.dot(&h), q.x * -h.y + q.y * h.x);
+            let in_plane = s * s - w * w;
+            if in_plane < 0.0 {
+                spans.clear();
+                return evaluations;
+            }
+            cuts.clear();
+            let root = in_plane.sqrt();
+            for bound in [(root - a).abs(), root + a] {
+                let v2 = bound * bound - u * u;
+                if v2 >= 0.0 {
+                    let v = v2.sqrt();
+                    cuts.extend([-v - q.z, v - q.z]);
                 }
             }
-            0.5 * (a + b)
-        };
-        let mut start: Option<f64> = None;
-        let mut previous = self.allowed(x, y, 0.0);
-        if previous {
-            start = Some(0.0);
-        }
-        for k in 1..=count {
-            let z = k as f64 * step;
-            let now = self.allowed(x, y, z);
-            if now != previous {
-                let at = edge(z - step, z, previous);
-                if now {
-                    start = Some(at);
-                } else if let Some(s) = start.take() {
-                    out.push([x, y, s, at]);
+            // The angle leaves its range where the joint is a rod's length from the horn tip
+            // at the range's end; where M changes sign with N = 0 it jumps.
+            if let Some((min, max)) = self.servos.range() {
+                for end in [min, max] {
+                    let v = joint0 - self.servos.horn_tip(i, base, end);
+                    let sphere: Poly = [v.norm_squared() - s * s, 2.0 * v.z, 1.0, 0.0, 0.0];
+                    roots_in(&sphere, lo, hi, cuts);
                 }
             }
-            previous = now;
+            // Where v = 0 too (M = 0).
+            cuts.push(-q.z);
+            let held = |z: f64| {
+                let joint = joint0 + Vector3::new(0.0, 0.0, z);
+                self.servos.servo_angle(i, base, &joint).is_ok_and(|theta| {
+                    self.servos.range().is_none_or(|(min, max)| {
+                        (min.radians()..=max.radians()).contains(&theta.radians())
+                    })
+                })
+            };
+            evaluations += keep_between_cuts(spans, cuts, held, spare);
+            std::mem::swap(spans, spare);
         }
-        if let Some(s) = start {
-            out.push([x, y, s, self.z_top]);
+        let cones = [
+            (self.limits.base_cone, Vector3::z()),
+            (self.limits.platform_cone, self.platform_normal),
+        ];
+        if cones.iter().any(|(limit, _)| limit.is_some()) {
+            for (i, base) in self.geometry.base_joints().iter().enumerate() {
+                let Some(&(lo, _)) = spans.first() else {
+                    return evaluations;
+                };
+                let hi = spans.last().map_or(lo, |span| span.1);
+                let joint0 = Vector3::new(x, y, 0.0) + self.offsets[i];
+                cuts.clear();
+                for (limit, n) in &cones {
+                    if let Some(alpha) = limit {
+                        for p in self.rod_cone_boundary(i, base, &joint0, n, alpha.radians()) {
+                            roots_in(&p, lo, hi, cuts);
+                        }
+                    }
+                }
+                let within = |z: f64| {
+                    let joint = joint0 + Vector3::new(0.0, 0.0, z);
+                    self.servos.servo_angle(i, base, &joint).is_ok_and(|theta| {
+                        let rod = (joint - self.servos.horn_tip(i, base, theta)).normalize();
+                        cones.iter().all(|(limit, n)| {
+                            limit.is_none_or(|a| rod.dot(n).clamp(-1.0, 1.0).acos() <= a.radians())
+                        })
+                    })
+                };
+                evaluations += keep_between_cuts(spans, cuts, within, spare);
+                std::mem::swap(spans, spare);
+            }
         }
+        if let Some(radius) = self.limits.leg_radius {
+            let clearance = Clearance {
+                servos: self.servos,
+                bases: self.geometry.base_joints(),
+                offsets: &self.offsets,
+                least: 2.0 * radius,
+            };
+            evaluations += clearance.narrow(x, y, dz, spans, spare);
+        }
+        row.extend(spans.iter().map(|&(z0, z1)| [x, y, z0, z1]));
         evaluations
     }
+}
 
-    /// Every column of an `n × n` grid over `bounds`, with progress and cancellation.
-    fn spans(
-        &self,
-        bounds: &[[f64; 2]; 2],
-        n: usize,
-        control: &WorkspaceControl,
-    ) -> (f64, Vec<[f64; 4]>) {
-        let (cell, x0, y0) = grid(bounds, n);
-        let rows: Vec<Vec<[f64; 4]>> = (0..n)
-            .into_par_iter()
-            .map(|i| {
-                let x = x0 + (i as f64 + 0.5) * cell;
-                let mut row = Vec::new();
-                for j in 0..n {
-                    if control.cancel.load(Ordering::Relaxed) {
-                        break;
-                    }
-                    let y = y0 + (j as f64 + 0.5) * cell;
-                    let evaluated = self.column(x, y, cell, &mut row);
-                    control
-                        .evaluations
-                        .fetch_add(evaluated as u64, Ordering::Relaxed);
-                }
-                control.rows_done.fetch_add(1, Ordering::Relaxed);
-                row
-            })
-            .collect();
-        (cell, rows.into_iter().flatten().collect())
-    }
+/// Scratch space a row of columns reuses.
+#[derive(Default)]
+struct Scratch {
+    spans: Spans,
+    spare: Spans,
+    cuts: Vec<f64>,
 }
 
 /// The workspace of a rotary platform at `orientation` (see the module docs).
@@ -187,24 +269,24 @@ pub(super) fn workspace(
         geometry,
         servos,
         limits,
-        orientation,
         offsets,
         z_top: (servos.horn_length() + servos.rod_length() - lowest_offset).max(0.0),
+        platform_normal: rotation * Vector3::z(),
     };
     let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
     let Some(bounds) = columns.xy_bounds() else {
         return Ok(empty);
     };
-    let (cell, spans) = columns.spans(&bounds, resolution, control);
+    let column = |x, y, dz, scratch: &mut Scratch, row: &mut Vec<[f64; 4]>| {
+        columns.column(x, y, dz, scratch, row)
+    };
+    let (cell, spans) = grid_spans(&bounds, resolution, control, true, column);
     if control.cancel.load(Ordering::Relaxed) {
         return Err(WorkspaceError::Cancelled);
     }
     let volume = volume_of(&spans, cell);
-    let (coarse_cell, coarse) = columns.spans(
-        &bounds,
-        (resolution / 2).max(2),
-        &WorkspaceControl::default(),
-    );
+    let (coarse_cell, coarse) =
+        grid_spans(&bounds, (resolution / 2).max(2), control, false, column);
     let coarse_volume = volume_of(&coarse, coarse_cell);
     let spans = shifted(spans.into_iter(), c - rotation * c);
     let extent = extent_of(&spans);
