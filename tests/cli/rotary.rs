@@ -167,7 +167,7 @@ fn workspace_of_a_servo_platform_has_volume_and_orientation_ranges() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let text = stdout(&o);
     assert!(
-        text.contains("servo reach, range, rod cones exact per column; rod clearance sampled"),
+        text.contains("servo reach, range, rod cones exact per column; rod clearance by branch"),
         "{text}"
     );
     assert!(text.contains("extent x"), "{text}");

@@ -81,7 +81,7 @@ fn limited_bench(c: &mut Criterion) {
     for (preset, clearance, sizes) in [
         ("paired", true, [128, 512]),
         ("servo-desk", false, [128, 512]),
-        ("servo-desk", true, [128, 256]),
+        ("servo-desk", true, [128, 512]),
     ] {
         let s = Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
         let mut limits = s.limits;

@@ -231,9 +231,25 @@ impl RotaryActuators {
 
     /// Horn tip `H_i` of servo `i` (from 0) at angle `theta`, for shaft centre `base`.
     pub fn horn_tip(&self, i: usize, base: &Vector3<f64>, theta: Angle) -> Vector3<f64> {
+        self.tip_along(&self.horn_direction(i), base, theta)
+    }
+
+    /// Unit vector along which horn `i` points at servo angle 0: `(cos β_i, sin β_i, 0)`.
+    pub(crate) fn horn_direction(&self, i: usize) -> Vector3<f64> {
         let (sb, cb) = self.horn_angles[i].radians().sin_cos();
+        Vector3::new(cb, sb, 0.0)
+    }
+
+    /// The horn tip at angle `theta` of a servo whose horn points along `h` at angle 0
+    /// (see [`RotaryActuators::horn_direction`]).
+    pub(crate) fn tip_along(
+        &self,
+        h: &Vector3<f64>,
+        base: &Vector3<f64>,
+        theta: Angle,
+    ) -> Vector3<f64> {
         let (st, ct) = theta.radians().sin_cos();
-        base + self.horn_length * Vector3::new(ct * cb, ct * sb, st)
+        base + self.horn_length * Vector3::new(ct * h.x, ct * h.y, st)
     }
 
     /// The closure terms `(L, M, N)` of servo `i` for platform joint `joint`: the horn
@@ -244,14 +260,18 @@ impl RotaryActuators {
         base: &Vector3<f64>,
         joint: &Vector3<f64>,
     ) -> [f64; 3] {
+        self.terms_along(&self.horn_direction(i), &(joint - base))
+    }
+
+    /// The closure terms for a joint at `l` from the shaft centre, the horn pointing along
+    /// `h` at angle 0.
+    pub(crate) fn terms_along(&self, h: &Vector3<f64>, l: &Vector3<f64>) -> [f64; 3] {
         let a = self.horn_length;
         let s = self.rod_length;
-        let l = joint - base;
-        let (sb, cb) = self.horn_angles[i].radians().sin_cos();
         [
             l.norm_squared() - (s * s - a * a),
             2.0 * a * l.z,
-            2.0 * a * (cb * l.x + sb * l.y),
+            2.0 * a * (h.x * l.x + h.y * l.y),
         ]
     }
 
@@ -288,7 +308,12 @@ impl RotaryActuators {
         base: &Vector3<f64>,
         joint: &Vector3<f64>,
     ) -> Result<Angle, Unreachable> {
-        let [big_l, m, n] = self.closure_terms(i, base, joint);
+        Self::angle_from_terms(i, self.closure_terms(i, base, joint))
+    }
+
+    /// Servo `i`'s angle from its closure terms (see [`RotaryActuators::servo_angle`]).
+    pub(crate) fn angle_from_terms(i: usize, terms: [f64; 3]) -> Result<Angle, Unreachable> {
+        let [big_l, m, n] = terms;
         let r = m.hypot(n);
         let ratio = big_l.abs() / r;
         if ratio.is_nan() || ratio > 1.0 {

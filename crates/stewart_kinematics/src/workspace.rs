@@ -19,7 +19,8 @@
 //! quadratic in `z`, so the column stays exact; the leg clearance is resolved by a scan
 //! that the Lipschitz bound of the legs' distance certifies, with edges bisected to
 //! 1e-12 m (only a violation thinner than the column spacing can slip through it). The
-//! error estimate is then the difference from the half-resolution grid as well.
+//! error estimate is then the difference from every other column (the grid twice as
+//! coarse, not computed again).
 
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
@@ -77,10 +78,6 @@ pub struct WorkspaceCost {
     pub columns: f64,
     /// Limit evaluations (pieces decided, samples and bisection steps).
     pub evaluations: f64,
-    /// The time grows as the resolution to this power: 2 where every column is solved
-    /// from its boundary polynomials or a certified scan, 3 where a rotary platform's rod
-    /// clearance is sampled along each column at the column spacing.
-    pub time_exponent: i32,
     /// Memory the reachable spans take, bytes.
     pub bytes: f64,
 }
@@ -314,6 +311,19 @@ fn grid_spans<S: Default>(
     (cell, rows.into_iter().flatten().collect())
 }
 
+/// The volume of `spans` (on an `n × n` grid over `bounds`) from every other column in `x`
+/// and `y` alone, each standing for four: the grid twice as coarse, for the error
+/// estimate of the columns that cost a limit search each (not computed again).
+fn every_other_column(spans: &[[f64; 4]], bounds: &[[f64; 2]; 2], n: usize) -> f64 {
+    let (cell, x0, y0) = grid(bounds, n);
+    let even = |v: f64, origin: f64| ((v - origin) / cell - 0.5).round() as i64 % 2 == 0;
+    let height = spans
+        .iter()
+        .filter(|s| even(s[0], x0) && even(s[1], y0))
+        .fold(0.0, |sum, s| sum + (s[3] - s[2]));
+    height * 4.0 * cell * cell
+}
+
 /// Volume only, for the error estimate.
 fn volume_on_grid(shells: &Shells, bounds: &[[f64; 2]; 2], n: usize) -> f64 {
     let (cell, x0, y0) = grid(bounds, n);
@@ -368,8 +378,9 @@ impl Geometry {
     }
 
     /// The cost of [`Geometry::constant_orientation_workspace`] at `resolution`, from a
-    /// probe at [`PROBE_RESOLUTION`]: columns and spans scale as N², evaluations and time
-    /// as N to the [`WorkspaceCost::time_exponent`].
+    /// probe at [`PROBE_RESOLUTION`]: columns, spans and evaluations scale as N² (each
+    /// column is solved from its boundary polynomials or by a certified scan whose cost
+    /// barely grows with the resolution).
     pub fn workspace_cost(
         &self,
         limits: &Limits,
@@ -385,23 +396,11 @@ impl Geometry {
         )?;
         let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
         let evaluations = control.evaluations.load(Ordering::Relaxed) as f64;
-        let time_exponent = self.workspace_cost_exponent(limits);
         Ok(WorkspaceCost {
             columns: (resolution * resolution) as f64,
-            evaluations: evaluations * ratio.powi(time_exponent),
-            time_exponent,
+            evaluations: evaluations * ratio * ratio,
             bytes: (probe.spans.len() * size_of::<[f64; 4]>()) as f64 * ratio.powi(2),
         })
-    }
-
-    /// How the time of [`Geometry::constant_orientation_workspace`] grows with the
-    /// resolution N: as N to this power (see [`WorkspaceCost::time_exponent`]).
-    pub fn workspace_cost_exponent(&self, limits: &Limits) -> i32 {
-        if self.rotary().is_some() && limits.leg_radius.is_some() {
-            3
-        } else {
-            2
-        }
     }
 
     /// [`Geometry::constant_orientation_workspace`], counting progress on `control` and
@@ -448,10 +447,9 @@ impl Geometry {
             if control.cancel.load(Ordering::Relaxed) {
                 return Err(WorkspaceError::Cancelled);
             }
-            // Richardson's estimate, as for the stroke alone: the same on the half grid.
-            let (coarse_cell, coarse) =
-                grid_spans(&bounds, (resolution / 2).max(2), control, false, column);
-            let error = (volume_of(&spans, cell) - volume_of(&coarse, coarse_cell)).abs();
+            // Richardson's estimate, as for the stroke alone, from the grid twice as coarse.
+            let error =
+                (volume_of(&spans, cell) - every_other_column(&spans, &bounds, resolution)).abs();
             (spans, cell, error)
         } else {
             let (cell, spans) = grid_spans(

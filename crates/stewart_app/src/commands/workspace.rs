@@ -74,20 +74,20 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         };
         let clearance = if limits.leg_radius.is_some() {
             format!(
-                "; rod clearance sampled every {:.2} mm in z, edges bisected to 1e-12 m",
+                "; rod clearance by branch and bound (pieces settled by how far rods and horns can move, sampled below {:.2} mm), edges bisected to 1e-12 m",
                 ws.cell * 1e3
             )
         } else {
             String::new()
         };
         format!(
-            "servo reach, range{cones} exact per column{clearance}; error estimate from the {} × {} grid",
+            "servo reach, range{cones} exact per column{clearance}; error estimate from every other column (the {} × {} grid)",
             n / 2,
             n / 2
         )
     } else if limits.has_pose_limits() {
         format!(
-            "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m; error estimate from the {} × {} grid",
+            "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m; error estimate from every other column (the {} × {} grid)",
             n / 2,
             n / 2
         )
@@ -217,9 +217,9 @@ fn compute(
     let started = Instant::now();
     let cost = g.workspace_cost(limits, orientation, resolution)?;
     let probe_seconds = started.elapsed().as_secs_f64();
-    let power = cost.time_exponent;
+    // Time grows as N² (each column costs about the same at any resolution).
     let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
-    let seconds = probe_seconds * ratio.powi(power);
+    let seconds = probe_seconds * ratio * ratio;
     let over = seconds > BUDGET_SECONDS || cost.bytes > BUDGET_BYTES;
     let cost_words = format!(
         "about {}, {:.2e} limit evaluations and {:.0} MB",
@@ -230,17 +230,12 @@ fn compute(
     if over && !no_budget {
         let fits = |n: f64| {
             let r = n / PROBE_RESOLUTION as f64;
-            probe_seconds * r.powi(power) <= BUDGET_SECONDS
+            probe_seconds * r * r <= BUDGET_SECONDS
                 && cost.bytes / (ratio * ratio) * r * r <= BUDGET_BYTES
         };
         let suggestion = (2..resolution).rev().find(|&n| fits(n as f64)).unwrap_or(2);
         bail!(
-            "a {resolution} × {resolution} workspace{} would take {cost_words}; the budget is {} and {:.0} GB: use --resolution {suggestion} or lower, or --no-budget to run it anyway (Ctrl-C stops it)",
-            if power == 3 {
-                " with rod clearance sampled along each column"
-            } else {
-                ""
-            },
+            "a {resolution} × {resolution} workspace would take {cost_words}; the budget is {} and {:.0} GB: use --resolution {suggestion} or lower, or --no-budget to run it anyway (Ctrl-C stops it)",
             duration_words(BUDGET_SECONDS),
             BUDGET_BYTES / 1e9
         );

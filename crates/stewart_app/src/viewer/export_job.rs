@@ -69,15 +69,6 @@ pub struct SurfaceView {
     pub size: (u32, u32),
 }
 
-/// Columns a side of the workspace the exports compute for `geometry` under `limits`: the
-/// viewer's refinement.
-fn export_columns(
-    geometry: &stewart_kinematics::Geometry,
-    limits: &stewart_kinematics::Limits,
-) -> usize {
-    crate::viewer::workspace::fine_columns(geometry, limits, crate::viewer::workspace::FINE_COLUMNS)
-}
-
 /// An export running (or finished) on its own thread.
 pub struct ExportJob {
     handle: Option<JoinHandle<Result<String>>>,
@@ -268,7 +259,7 @@ fn run(
                 });
                 let outcome = crate::viewer::workspace::compute(
                     &view.request,
-                    export_columns(&view.request.geometry, &view.request.limits),
+                    crate::viewer::workspace::FINE_COLUMNS,
                     160,
                     &control,
                 );
@@ -304,7 +295,7 @@ fn run(
     }
 }
 
-/// The workspace of `scenario` at `orientation` on [`export_columns`] columns, stopped
+/// The workspace of `scenario` at `orientation` on the viewer's refinement, stopped
 /// when `stop` is set; nothing reachable is an error.
 fn workspace(
     scenario: &Scenario,
@@ -319,7 +310,7 @@ fn workspace(
     let ws = scenario.geometry.constant_orientation_workspace_with(
         &scenario.limits,
         orientation,
-        export_columns(&scenario.geometry, &scenario.limits),
+        crate::viewer::workspace::FINE_COLUMNS,
         &control,
     )?;
     if ws.extent.is_none() {

@@ -22,22 +22,6 @@ use stewart_render::analysis::AnalysisMesh;
 pub const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
 pub const FINE_COLUMNS: usize = 512;
-/// Columns a side of the refinement at most when each column is sampled along its height
-/// — a rotary platform's rod clearance — so that the cost grows as the cube (512 would
-/// take seconds).
-pub const SAMPLED_COLUMNS: usize = 256;
-
-/// Columns a side of the refinement of `geometry` under `limits`: `fine`, or at most
-/// [`SAMPLED_COLUMNS`] when columns are sampled along their height.
-pub fn fine_columns(geometry: &Geometry, limits: &Limits, fine: usize) -> usize {
-    let cost = geometry.workspace_cost_exponent(limits);
-    if cost > 2 {
-        fine.min(SAMPLED_COLUMNS)
-    } else {
-        fine
-    }
-}
-
 /// Columns a side of the surface mesh drawn at most (every other column of the
 /// refinement).
 pub const DRAWN_COLUMNS: usize = 256;
@@ -291,7 +275,6 @@ fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Out
                 next = shared.wake.wait(next).unwrap_or_else(|e| e.into_inner());
             }
         };
-        let fine = fine_columns(&request.geometry, &request.limits, fine);
         for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
             let control = Arc::new(WorkspaceControl::default());
             *shared.control.lock().unwrap_or_else(|e| e.into_inner()) =

@@ -21,7 +21,7 @@ pub(super) type Spans = Vec<(f64, f64)>;
 const EDGE_TOLERANCE: f64 = 1e-12;
 
 /// Append `(a, b)` to `out`, joining it to the last interval when they touch.
-fn push_joined(out: &mut Spans, a: f64, b: f64) {
+pub(super) fn push_joined(out: &mut Spans, a: f64, b: f64) {
     match out.last_mut() {
         Some(last) if last.1 >= a => last.1 = last.1.max(b),
         _ => out.push((a, b)),

@@ -12,13 +12,12 @@
 //! consecutive such points each piece is decided at its
 //! midpoint by the servo's own closed form, so the column's held intervals are exact (to
 //! the roots' precision, about 1e-15 m) from the base plane to the highest a joint can be
-//! (horn + rod above its shaft). Cone and clearance limits on the rods, when set, are
-//! sampled inside those intervals at the column spacing and every change is bisected to
-//! 1e-12 m: a piece thinner than one spacing can be missed there. The `xy`
-//! discretisation errs as for legs; the reported error estimate is the difference from
-//! the same computation on the half-resolution grid, which overstates the error of the
-//! finer grid as the grid converges; a test compares it with a brute-force grid of
-//! positions.
+//! (horn + rod above its shaft). The rods' clearance, when limited, is settled by branch
+//! and bound (`rotary/clearance.rs`); only a collision thinner than one column spacing
+//! can be missed there. The `xy` discretisation errs as for legs; the reported error
+//! estimate is the difference from every other column (the grid twice as coarse), which
+//! overstates the error of the finer grid as the grid converges; tests compare the volume
+//! with a brute-force grid of positions.
 
 use std::sync::atomic::Ordering;
 
@@ -27,8 +26,8 @@ use nalgebra::Vector3;
 use super::column::{Spans, keep_between_cuts};
 use super::roots::{Poly, mul, roots_in, sub};
 use super::{
-    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid_spans, shifted,
-    volume_of,
+    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, every_other_column, extent_of,
+    grid_spans, shifted, volume_of,
 };
 use crate::angle::Angle;
 use crate::checks::servos::rods_allowed;
@@ -36,7 +35,8 @@ use crate::geometry::Geometry;
 use crate::limits::Limits;
 use crate::pose::Pose;
 use crate::rotary::RotaryActuators;
-use clearance::Clearance;
+use clearance::{Clearance, Column};
+use std::f64::consts::FRAC_PI_2;
 
 mod clearance;
 
@@ -77,11 +77,19 @@ struct Columns<'a> {
     offsets: [Vector3<f64>; 6],
     /// Highest platform position a joint allows, metres.
     z_top: f64,
+    /// Each horn's direction at angle 0.
+    horns: [Vector3<f64>; 6],
     /// The platform's normal, base frame.
     platform_normal: Vector3<f64>,
 }
 
 impl Columns<'_> {
+    /// Servo `i`'s angle holding platform joint `joint` (shaft centre `base`), if any.
+    fn angle(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> Option<Angle> {
+        let terms = self.servos.terms_along(&self.horns[i], &(joint - base));
+        RotaryActuators::angle_from_terms(i, terms).ok()
+    }
+
     /// Polynomials in `z` whose roots include every height at which servo `i`'s rod meets
     /// the cone of half-angle `alpha` about the unit axis `n`, for the column whose joint
     /// is at `joint0` at `z = 0`. The rod from the horn tip `T(θ)` to the joint `J` is on
@@ -103,7 +111,7 @@ impl Columns<'_> {
         let l: Poly = [l0, 2.0 * q.z, 1.0, 0.0, 0.0];
         let m: Poly = [m0, 2.0 * a, 0.0, 0.0, 0.0];
         // The horn at θ = 0 points along (cos β, sin β, 0): T(θ) − B = a (cos θ h + sin θ ẑ).
-        let coef_a = (self.servos.horn_tip(i, base, Angle::ZERO) - base).dot(n);
+        let coef_a = a * self.horns[i].dot(n);
         let coef_c = a * n.z;
         let d: Poly = [q.dot(n) - s * alpha.cos(), n.z, 0.0, 0.0, 0.0];
         let scale = |p: &Poly, k: f64| p.map(|c| c * k);
@@ -141,7 +149,12 @@ impl Columns<'_> {
         scratch: &mut Scratch,
         row: &mut Vec<[f64; 4]>,
     ) -> usize {
-        let Scratch { spans, spare, cuts } = scratch;
+        let Scratch {
+            spans,
+            spare,
+            cuts,
+            turning,
+        } = scratch;
         spans.clear();
         spans.push((0.0, self.z_top));
         let mut evaluations = 0;
@@ -159,7 +172,7 @@ impl Columns<'_> {
             // √((r + a)² + w²) from the circle's points, so the rod closes while
             // |√(s² − w²) − a| ≤ r ≤ √(s² − w²) + a; with r² = u² + v², u = q·h and
             // v = q_z + z, the edges of reach are where v² = (those bounds)² − u².
-            let h = (self.servos.horn_tip(i, base, Angle::ZERO) - base) / a;
+            let h = self.horns[i];
             let (u, w) = (q.dot(&h), q.x * -h.y + q.y * h.x);
             let in_plane = s * s - w * w;
             if in_plane < 0.0 {
@@ -188,7 +201,7 @@ impl Columns<'_> {
             cuts.push(-q.z);
             let held = |z: f64| {
                 let joint = joint0 + Vector3::new(0.0, 0.0, z);
-                self.servos.servo_angle(i, base, &joint).is_ok_and(|theta| {
+                self.angle(i, base, &joint).is_some_and(|theta| {
                     self.servos.range().is_none_or(|(min, max)| {
                         (min.radians()..=max.radians()).contains(&theta.radians())
                     })
@@ -218,8 +231,9 @@ impl Columns<'_> {
                 }
                 let within = |z: f64| {
                     let joint = joint0 + Vector3::new(0.0, 0.0, z);
-                    self.servos.servo_angle(i, base, &joint).is_ok_and(|theta| {
-                        let rod = (joint - self.servos.horn_tip(i, base, theta)).normalize();
+                    self.angle(i, base, &joint).is_some_and(|theta| {
+                        let tip = self.servos.tip_along(&self.horns[i], base, theta);
+                        let rod = (joint - tip).normalize();
                         cones.iter().all(|(limit, n)| {
                             limit.is_none_or(|a| rod.dot(n).clamp(-1.0, 1.0).acos() <= a.radians())
                         })
@@ -231,12 +245,26 @@ impl Columns<'_> {
         }
         if let Some(radius) = self.limits.leg_radius {
             let clearance = Clearance {
+                columns: self,
                 servos: self.servos,
                 bases: self.geometry.base_joints(),
                 offsets: &self.offsets,
                 least: 2.0 * radius,
             };
-            evaluations += clearance.narrow(x, y, dz, spans, spare);
+            let Some(&(lo, _)) = spans.first() else {
+                return evaluations;
+            };
+            let hi = spans.last().map_or(lo, |span| span.1);
+            for (i, base) in self.geometry.base_joints().iter().enumerate() {
+                let joint0 = Vector3::new(x, y, 0.0) + self.offsets[i];
+                turning[i].clear();
+                // The angle turns where a sin θ = q_z + z: a rod "cone" about ẑ at 90°.
+                let [quartic, _] =
+                    self.rod_cone_boundary(i, base, &joint0, &Vector3::z(), FRAC_PI_2);
+                roots_in(&quartic, lo, hi, &mut turning[i]);
+            }
+            let column = Column { x, y, dz, turning };
+            evaluations += clearance.narrow(&column, spans, spare);
         }
         row.extend(spans.iter().map(|&(z0, z1)| [x, y, z0, z1]));
         evaluations
@@ -249,6 +277,7 @@ struct Scratch {
     spans: Spans,
     spare: Spans,
     cuts: Vec<f64>,
+    turning: [Vec<f64>; 6],
 }
 
 /// The workspace of a rotary platform at `orientation` (see the module docs).
@@ -272,6 +301,7 @@ pub(super) fn workspace(
         offsets,
         z_top: (servos.horn_length() + servos.rod_length() - lowest_offset).max(0.0),
         platform_normal: rotation * Vector3::z(),
+        horns: std::array::from_fn(|i| servos.horn_direction(i)),
     };
     let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
     let Some(bounds) = columns.xy_bounds() else {
@@ -285,9 +315,7 @@ pub(super) fn workspace(
         return Err(WorkspaceError::Cancelled);
     }
     let volume = volume_of(&spans, cell);
-    let (coarse_cell, coarse) =
-        grid_spans(&bounds, (resolution / 2).max(2), control, false, column);
-    let coarse_volume = volume_of(&coarse, coarse_cell);
+    let coarse_volume = every_other_column(&spans, &bounds, resolution);
     let spans = shifted(spans.into_iter(), c - rotation * c);
     let extent = extent_of(&spans);
     Ok(ConstantOrientationWorkspace {
