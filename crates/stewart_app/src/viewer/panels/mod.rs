@@ -9,6 +9,7 @@ mod link;
 mod motion;
 mod playback;
 mod plot;
+mod plot_ticks;
 mod reach;
 mod scenario;
 mod view;

@@ -110,6 +110,8 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
     });
     let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
         .allow_drag(manual)
+        .y_grid_spacer(super::plot_ticks::marks)
+        .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
         .x_axis_label(x_label)
         .y_axis_label(format!(
             "{} ({})",
