@@ -28,6 +28,15 @@ pub(super) fn push_joined(out: &mut Spans, a: f64, b: f64) {
     }
 }
 
+/// A change of the constraint at `edge` while walking up a column: an interval opened at
+/// `start` closes there, or one opens.
+fn cross(start: &mut Option<f64>, edge: f64, out: &mut Spans) {
+    match start.take() {
+        Some(s) => push_joined(out, s, edge),
+        None => *start = Some(edge),
+    }
+}
+
 /// The parts of `spans` where `allowed` holds, for a constraint that can change only at
 /// `cuts` (in any order; those outside every span are ignored).
 pub(super) fn keep_between_cuts(
@@ -100,10 +109,7 @@ pub(super) fn keep_where_margin(
             }
             let edge = bisect(p.at, q.at, p.value >= 0.0, &mut |z| margin(z) >= 0.0);
             evaluations += edge.1;
-            match start.take() {
-                Some(s) => push_joined(out, s, edge.0),
-                None => start = Some(edge.0),
-            }
+            cross(&mut start, edge.0, out);
         }
         if let Some(s) = start {
             push_joined(out, s, b);
@@ -168,10 +174,7 @@ pub(super) fn keep_sampled(
             if now != previous {
                 let (edge, n) = bisect(z - step, z, previous, &mut allowed);
                 evaluations += n;
-                match start.take() {
-                    Some(s) => push_joined(out, s, edge),
-                    None => start = Some(edge),
-                }
+                cross(&mut start, edge, out);
             }
             previous = now;
         }

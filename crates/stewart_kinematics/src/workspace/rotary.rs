@@ -246,9 +246,6 @@ impl Columns<'_> {
         if let Some(radius) = self.limits.leg_radius {
             let clearance = Clearance {
                 columns: self,
-                servos: self.servos,
-                bases: self.geometry.base_joints(),
-                offsets: &self.offsets,
                 least: 2.0 * radius,
             };
             let Some(&(lo, _)) = spans.first() else {

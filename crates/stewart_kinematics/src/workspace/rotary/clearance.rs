@@ -19,7 +19,6 @@ use super::Columns;
 use crate::angle::Angle;
 use crate::checks::servos::ROD_HORN_PAIRS;
 use crate::limits::{LEG_PAIRS, segment_distance};
-use crate::rotary::RotaryActuators;
 
 /// Two parts that must keep apart.
 #[derive(Clone, Copy)]
@@ -35,11 +34,8 @@ const PAIRS: usize = 45;
 
 /// The clearance limit at one orientation.
 pub(super) struct Clearance<'a> {
+    /// The orientation's servos, joints and horn directions.
     pub(super) columns: &'a Columns<'a>,
-    pub(super) servos: &'a RotaryActuators,
-    pub(super) bases: &'a [Vector3<f64>; 6],
-    /// `d_i`: platform joint `i` minus the platform position, base frame.
-    pub(super) offsets: &'a [Vector3<f64>; 6],
     /// The least distance allowed (twice the leg radius), metres.
     pub(super) least: f64,
 }
@@ -66,10 +62,15 @@ struct Piece {
 }
 
 impl Clearance<'_> {
+    /// Servo `i`'s shaft centre.
+    fn base(&self, i: usize) -> &Vector3<f64> {
+        &self.columns.geometry.base_joints()[i]
+    }
+
     /// Servo `i`'s angle (radians) at platform position `p`, `None` out of reach.
     fn angle(&self, i: usize, p: &Vector3<f64>) -> Option<f64> {
-        let joint = p + self.offsets[i];
-        let theta = self.columns.angle(i, &self.bases[i], &joint)?;
+        let joint = p + self.columns.offsets[i];
+        let theta = self.columns.angle(i, self.base(i), &joint)?;
         Some(theta.radians())
     }
 
@@ -88,9 +89,10 @@ impl Clearance<'_> {
             }
             let theta = Angle::from_radians(angles[i]);
             let tip = self
+                .columns
                 .servos
-                .tip_along(&self.columns.horns[i], &self.bases[i], theta);
-            rods[i] = (tip, p + self.offsets[i]);
+                .tip_along(&self.columns.horns[i], self.base(i), theta);
+            rods[i] = (tip, p + self.columns.offsets[i]);
         }
         Some(rods)
     }
@@ -99,7 +101,7 @@ impl Clearance<'_> {
     fn distance(&self, pair: Pair, rods: &Rods) -> f64 {
         match pair {
             Pair::Rods(i, j) => segment_distance(rods[i].0, rods[i].1, rods[j].0, rods[j].1),
-            Pair::RodHorn(i, j) => segment_distance(rods[i].0, rods[i].1, self.bases[j], rods[j].0),
+            Pair::RodHorn(i, j) => segment_distance(rods[i].0, rods[i].1, *self.base(j), rods[j].0),
         }
     }
 
@@ -171,7 +173,7 @@ impl Clearance<'_> {
                     };
                 }
                 tip[i] = 2.0
-                    * self.servos.horn_length()
+                    * self.columns.servos.horn_length()
                     * (0.5 * spread.min(std::f64::consts::PI)).sin();
                 moved[i] = half.max(tip[i]);
             }
