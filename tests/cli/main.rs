@@ -8,11 +8,13 @@ mod design;
 mod export;
 mod firmware;
 mod fk;
+mod framing;
 mod link;
 mod rotary;
 mod serial;
 mod settings;
 mod solve;
+mod video_timing;
 mod view;
 
 use std::path::Path;

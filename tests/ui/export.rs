@@ -77,15 +77,36 @@ fn the_csv_and_a_short_gif_are_written_in_the_background() {
     h.run();
     h.state_mut().exports.form.path = gif.display().to_string();
     h.run();
+    // The format's own rate by default, as `stewart render` has it: the 10 s motion at
+    // 25 frames/s.
+    h.get_by_label("250 frames at 25 frames/s, playing 10.00 s");
+    // A rate a GIF cannot play is rounded, and the panel says so.
+    h.state_mut().exports.form.fps = 60.0;
+    h.run();
+    h.get_by_label("500 frames at 50 frames/s, playing 10.00 s");
+    h.get_by_label_contains("60 frames/s becomes 50 frames/s (2 cs a frame)");
+    // A short one to write: half a frame a second, 2 s a frame.
+    h.state_mut().exports.form.fps = 0.5;
+    h.run();
+    h.get_by_label("5 frames at 0.5 frames/s, playing 10.00 s");
     h.get_by_role_and_label(Role::Button, "Export").click();
     h.run();
     let outcome = finish(&mut h);
     assert!(
-        outcome.as_ref().is_ok_and(|m| m.contains("Wrote 6 frames")),
+        outcome.as_ref().is_ok_and(
+            |m| m.contains("Wrote 5 frames") && m.contains("0.5 frames/s, plays 10.00 s")
+        ),
         "{outcome:?}"
     );
-    let bytes = std::fs::read(&gif).unwrap_or_else(|e| panic!("{e}"));
-    assert!(bytes.starts_with(b"GIF89a"));
+    let file = std::fs::File::open(&gif).unwrap_or_else(|e| panic!("{e}"));
+    let mut decoder = gif::DecodeOptions::new()
+        .read_info(file)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut delays = Vec::new();
+    while let Some(f) = decoder.read_next_frame().unwrap_or_else(|e| panic!("{e}")) {
+        delays.push(f.delay);
+    }
+    assert_eq!(delays, [200; 5]);
 }
 
 #[test]

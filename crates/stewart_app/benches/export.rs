@@ -1,6 +1,6 @@
 //! Export throughput: the seed trajectory rendered at 1280×720 and encoded to PNG files
-//! by the same pipeline as `stewart render` (GPU render and read-back on one thread, PNG
-//! encoding on worker threads). Each iteration exports 60 frames; criterion reports
+//! or a GIF by the same pipeline as `stewart render` (GPU render and read-back on one
+//! thread, PNG encoding or GIF quantising on worker threads). Each iteration exports 60 frames; criterion reports
 //! frames per second. `cargo bench -p stewart_app --bench export`.
 
 use std::sync::atomic::AtomicBool;
@@ -22,7 +22,7 @@ fn bench(c: &mut Criterion) {
         width: 1280,
         height: 720,
         theme: Theme::DARK,
-        camera: default_camera(&scenario),
+        camera: Some(default_camera(&scenario)),
         composite: false,
         overlays: Overlays::default(),
         readout: None,
@@ -33,22 +33,26 @@ fn bench(c: &mut Criterion) {
     group.sample_size(10);
     group.throughput(Throughput::Elements(FRAMES as u64));
     let mut run = 0;
-    group.bench_function("png_frames", |b| {
-        b.iter(|| {
-            let mut source = FrameSource::new(&scenario, &job).unwrap_or_else(|e| panic!("{e}"));
-            run += 1;
-            let out = dir.path().join(format!("run{run}"));
-            export(
-                &mut source,
-                0..FRAMES,
-                100.0,
-                &Target::Folder(out),
-                &ProgressBar::hidden(),
-                &AtomicBool::new(false),
-            )
-            .unwrap_or_else(|e| panic!("{e}"));
-        })
-    });
+    // One frame per 100 Hz sample for PNG files, the GIF's default 25 frames/s.
+    for (name, extension, fps) in [("png_frames", "", 100.0), ("gif", ".gif", 25.0)] {
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let mut source =
+                    FrameSource::new(&scenario, &job).unwrap_or_else(|e| panic!("{e}"));
+                run += 1;
+                let out = dir.path().join(format!("run{run}{extension}"));
+                export(
+                    &mut source,
+                    0..FRAMES,
+                    fps,
+                    &Target::from_path(&out),
+                    &ProgressBar::hidden(),
+                    &AtomicBool::new(false),
+                )
+                .unwrap_or_else(|e| panic!("{e}"));
+            })
+        });
+    }
     group.finish();
 }
 

@@ -548,7 +548,10 @@ pub struct RenderArgs {
     /// Frame size WxH in pixels (up to 3840x2160 and beyond, 4096 a side at most).
     #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
     pub size: (u32, u32),
-    /// Frames per second of the output (default: the trajectory's own sample rate, one frame per sample).
+    /// Frames per second of the output, the motion resampled (default: 25 for a GIF, 50
+    /// for an MP4, one frame per trajectory sample for a folder of frames). A GIF's
+    /// frame lasts whole hundredths of a second, at least 2: other rates are rounded
+    /// to the nearest such one, with a note.
     #[arg(long, value_name = "N", value_parser = parse_fps, allow_hyphen_values = true)]
     pub fps: Option<f64>,
     /// Only frames A..B (indices, B excluded).

@@ -4,7 +4,7 @@
 use glam::{Mat4, Vec3};
 
 /// Vertical field of view, degrees.
-const FOV_Y_DEG: f32 = 30.0;
+pub(crate) const FOV_Y_DEG: f32 = 30.0;
 
 /// A camera orbiting `target`. Angles follow MATLAB's `view(az, el)`: azimuth measured
 /// counter-clockwise (seen from above) from the −y axis, elevation above the xy plane.

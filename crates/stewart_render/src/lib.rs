@@ -5,7 +5,7 @@
 //! colour view: a window's surface, a texture inside the UI, or an offscreen texture
 //! read back for export and tests. It knows nothing of egui or winit.
 //!
-//! - [`camera`]: the orbit camera (glam);
+//! - [`camera`]: the orbit camera (glam), and the camera that frames a cloud of points;
 //! - [`draw_list`]: scene frame → instances, plates and lines (CPU);
 //! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
 //! - [`renderer`]: pipelines and the one draw entry point;
@@ -14,8 +14,10 @@
 
 pub mod analysis;
 pub mod camera;
+mod camera_fit;
 pub mod colormap;
 pub mod draw_list;
+mod extent;
 pub mod gpu;
 pub mod gpu_types;
 pub mod mesh;

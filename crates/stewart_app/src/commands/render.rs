@@ -8,8 +8,9 @@ use indicatif::{ProgressBar, ProgressStyle};
 use stewart_render::{OrbitCamera, Overlays, Theme};
 
 use crate::cli::{RenderArgs, ThemeName};
+use crate::export::encode::Target;
 use crate::export::frames::default_camera;
-use crate::export::video::{VideoRequest, export_video};
+use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_words};
 use crate::source;
 
 /// Run the command.
@@ -56,11 +57,25 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
     };
     progress.finish_and_clear();
     let (width, height) = args.size;
+    let mut err = std::io::stderr();
+    if let Some(note) = report.note {
+        let _ = writeln!(err, "Note: {note}.");
+    }
+    // A video plays for a time; a folder of frames samples the motion at a rate.
+    let timing = match Target::from_path(&args.out) {
+        Target::Folder(_) => format!("{} frames/s of motion", rate_in_words(report.fps)),
+        _ => format!(
+            "{} frames/s, plays {:.2} s",
+            rate_in_words(report.fps),
+            report.duration
+        ),
+    };
     let _ = writeln!(
-        std::io::stderr(),
-        "Wrote {} frames of {width}×{height} to {} in {:.1} s ({:.1} frames/s) on {}.",
+        err,
+        "Wrote {} frames of {width}×{height} to {} ({timing}, {}) in {:.1} s ({:.1} frames/s) on {}.",
         report.frames,
         args.out.display(),
+        bytes_in_words(report.bytes),
         report.seconds,
         report.frames as f64 / report.seconds,
         report.adapter

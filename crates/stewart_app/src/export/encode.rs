@@ -84,7 +84,7 @@ enum Encoded {
     /// A quantised GIF frame.
     Gif(gif::Frame<'static>),
     /// Raw RGBA for ffmpeg.
-    Raw(Vec<u8>),
+    Raw(Arc<Frame>),
 }
 
 /// A running `ffmpeg`: killed and waited for when dropped, so that no path (an error,
@@ -280,7 +280,7 @@ impl Staging {
                 encoder
                     .set_repeat(gif::Repeat::Infinite)
                     .context("cannot start the GIF")?;
-                let delay_cs = (100.0 / fps).round().clamp(1.0, 65535.0) as u16;
+                let delay_cs = gif_delay_cs(fps);
                 Ok(opened(Staging::Gif {
                     encoder,
                     file: path,
@@ -311,7 +311,8 @@ impl Staging {
         dir: Option<&Path>,
         digits: usize,
         index: usize,
-        frame: Frame,
+        frame: Arc<Frame>,
+        previous: Option<&Frame>,
     ) -> Result<Encoded> {
         match kind {
             Target::Folder(out) => {
@@ -338,17 +339,11 @@ impl Staging {
                 .with_context(|| format!("cannot write `{}`", shown.display()))?;
                 Ok(Encoded::Written)
             }
-            Target::Gif(_) => {
-                let mut rgba = frame.rgba;
-                let (Ok(w), Ok(h)) = (u16::try_from(frame.width), u16::try_from(frame.height))
-                else {
-                    bail!("a GIF can be at most 65535 pixels wide and high")
-                };
-                Ok(Encoded::Gif(gif::Frame::from_rgba_speed(
-                    w, h, &mut rgba, 10,
-                )))
-            }
-            Target::Mp4(_) => Ok(Encoded::Raw(frame.rgba)),
+            // The size was checked when the GIF was opened.
+            Target::Gif(_) => Ok(Encoded::Gif(super::gif_delta::delta_frame(
+                previous, &frame,
+            ))),
+            Target::Mp4(_) => Ok(Encoded::Raw(frame)),
         }
     }
 
@@ -370,12 +365,12 @@ impl Staging {
                     .write_frame(&frame)
                     .with_context(|| format!("cannot write `{}`", out.shown().display()))
             }
-            (Staging::Mp4 { stdin, .. }, Encoded::Raw(bytes)) => {
+            (Staging::Mp4 { stdin, .. }, Encoded::Raw(frame)) => {
                 let stdin = stdin
                     .as_mut()
                     .ok_or_else(|| anyhow!("ffmpeg closed its input"))?;
                 stdin
-                    .write_all(&bytes)
+                    .write_all(&frame.rgba)
                     .context("ffmpeg stopped reading frames")
             }
             _ => bail!("internal error: a frame of the wrong kind"),
@@ -425,6 +420,21 @@ impl Staging {
     }
 }
 
+/// A frame to encode: its index, its pixels and, for a GIF, the frame before it.
+type Job = (usize, Arc<Frame>, Option<Arc<Frame>>);
+
+/// Shortest GIF frame delay that plays as written: browsers and most viewers show a
+/// delay of 0 or 1 centisecond as 10.
+pub const GIF_MIN_DELAY_CS: u16 = 2;
+
+/// A GIF frame's delay for `fps` frames per second: whole centiseconds, at least
+/// [`GIF_MIN_DELAY_CS`].
+pub fn gif_delay_cs(fps: f64) -> u16 {
+    (100.0 / fps)
+        .round()
+        .clamp(f64::from(GIF_MIN_DELAY_CS), 65535.0) as u16
+}
+
 /// How long the render loop waits for a busy encoder before looking at the stop and
 /// failure flags again.
 const POLL: std::time::Duration = std::time::Duration::from_millis(20);
@@ -461,7 +471,8 @@ pub fn export(
         .clamp(1, 8);
     // Set by the writer when the sink fails, so that rendering stops at once.
     let failed = AtomicBool::new(false);
-    let (to_workers, from_render) = sync_channel::<(usize, Frame)>(2 * workers);
+    // Each frame goes with the one before it when the GIF needs it for its changed part.
+    let (to_workers, from_render) = sync_channel::<Job>(2 * workers);
     let from_render = Arc::new(Mutex::new(from_render));
     let (to_writer, from_workers) = sync_channel::<(usize, Result<Encoded>)>(4 * workers);
     let start = indices.start;
@@ -474,8 +485,17 @@ pub fn export(
             scope.spawn(move || {
                 loop {
                     let next = rx.lock().map(|r| r.recv());
-                    let Ok(Ok((k, frame))) = next else { break };
-                    let result = Staging::encode(target, dir.as_deref(), digits, k, frame);
+                    let Ok(Ok((k, frame, previous))) = next else {
+                        break;
+                    };
+                    let result = Staging::encode(
+                        target,
+                        dir.as_deref(),
+                        digits,
+                        k,
+                        frame,
+                        previous.as_deref(),
+                    );
                     if tx.send((k, result)).is_err() {
                         break;
                     }
@@ -512,6 +532,8 @@ pub fn export(
             (staging, result)
         });
         let mut render_result = Ok(());
+        let keeps_previous = matches!(target, Target::Gif(_));
+        let mut previous: Option<Arc<Frame>> = None;
         'frames: for k in indices.clone() {
             if stop.load(Ordering::Relaxed) {
                 render_result = Err(anyhow!("interrupted: nothing was written"));
@@ -521,7 +543,14 @@ pub fn export(
                 break;
             }
             let mut item = match source.frame(k) {
-                Ok(frame) => (k, frame),
+                Ok(frame) => {
+                    let frame = Arc::new(frame);
+                    let before = std::mem::replace(
+                        &mut previous,
+                        keeps_previous.then(|| Arc::clone(&frame)),
+                    );
+                    (k, frame, before)
+                }
                 Err(e) => {
                     render_result = Err(e);
                     break;

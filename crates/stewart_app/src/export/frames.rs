@@ -21,8 +21,9 @@ pub struct FrameJob {
     pub height: u32,
     /// Colours.
     pub theme: Theme,
-    /// The camera.
-    pub camera: OrbitCamera,
+    /// The camera (for a view as wide as high; narrower views back off); `None`: the
+    /// seed's angles, framing the whole motion over `times`.
+    pub camera: Option<OrbitCamera>,
     /// The 3D view and the plot side by side.
     pub composite: bool,
     /// Grid, axes, path.
@@ -36,6 +37,39 @@ pub struct FrameJob {
 /// The seed's view framing `scenario`'s platform.
 pub fn default_camera(scenario: &Scenario) -> OrbitCamera {
     OrbitCamera::seed_view_of(&scenario.geometry)
+}
+
+/// Share of the view's half-width and half-height kept free around a framed motion.
+const MOTION_MARGIN: f32 = 0.08;
+
+/// Most poses sampled to frame a motion; longer exports take evenly spaced ones.
+const FRAMING_POSES: usize = 1024;
+
+/// The seed's angles, with the view (`aspect` = width / height) framing every solid the
+/// motion sweeps at `times` (plates, legs, joints, servos, axes as `overlays` draw them),
+/// centred.
+pub fn motion_camera(
+    scenario: &Scenario,
+    times: &[f64],
+    overlays: &Overlays,
+    aspect: f32,
+) -> OrbitCamera {
+    let seed = default_camera(scenario);
+    let g = &scenario.geometry;
+    let mut points = Vec::new();
+    let step = times.len().div_ceil(FRAMING_POSES).max(1);
+    for &t in times.iter().step_by(step).chain(times.last()) {
+        let frame = g.scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
+        DrawList::build(&frame, &Theme::DARK, overlays).solid_extent(&mut points);
+    }
+    OrbitCamera::fitting_points(
+        seed.azimuth_deg,
+        seed.elevation_deg,
+        &points,
+        aspect,
+        MOTION_MARGIN,
+    )
+    .unwrap_or_else(|| seed.fitted_to(aspect))
 }
 
 /// The plot half of a composite frame: the static plot once, then a marker per frame.
@@ -94,6 +128,7 @@ pub struct FrameSource<'a> {
     panel: Option<PlotPanel>,
     path: Vec<Vector3<f64>>,
     view_width: u32,
+    camera: OrbitCamera,
 }
 
 impl<'a> FrameSource<'a> {
@@ -117,6 +152,11 @@ impl<'a> FrameSource<'a> {
         if view_width == 0 {
             return Err(anyhow!("the frame is too narrow for the composite layout"));
         }
+        let aspect = view_width as f32 / job.height as f32;
+        let camera = match job.camera {
+            Some(c) => c.fitted_to(aspect),
+            None => motion_camera(scenario, &job.times, &job.overlays, aspect),
+        };
         Ok(Self {
             scenario,
             job,
@@ -124,6 +164,7 @@ impl<'a> FrameSource<'a> {
             panel,
             path: Vec::new(),
             view_width,
+            camera,
         })
     }
 
@@ -154,11 +195,9 @@ impl<'a> FrameSource<'a> {
             let text = crate::readout::lines(self.job.lang, title, g, Some(t), &pose);
             list.texts.push(crate::readout::item(text, &self.job.theme));
         }
-        let aspect = self.view_width as f32 / self.job.height as f32;
-        let camera = self.job.camera.fitted_to(aspect);
         let view = self.offscreen.render(
             &list,
-            &camera,
+            &self.camera,
             &self.job.theme,
             self.view_width,
             self.job.height,

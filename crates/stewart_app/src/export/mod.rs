@@ -4,6 +4,7 @@
 pub mod encode;
 pub mod firmware;
 pub mod frames;
+pub mod gif_delta;
 pub mod plot;
 pub mod ply;
 pub mod tables;

@@ -12,7 +12,7 @@ use stewart_kinematics::Scenario;
 use stewart_render::{OrbitCamera, Overlays, Theme};
 
 use super::encode::{self, Target};
-use super::frames::{FrameJob, FrameSource, default_camera};
+use super::frames::{FrameJob, FrameSource};
 
 /// What to export.
 #[derive(Clone, Debug)]
@@ -21,13 +21,15 @@ pub struct VideoRequest {
     pub out: PathBuf,
     /// Frame width and height, pixels.
     pub size: (u32, u32),
-    /// Frames per second; `None`: one frame per trajectory sample.
+    /// Frames per second; `None`: the format's default ([`GIF_FPS`], [`MP4_FPS`], one
+    /// frame per trajectory sample for a folder of frames).
     pub fps: Option<f64>,
     /// Only frames `A..B` (`None` ends: from the first, to the last).
     pub frames: (Option<usize>, Option<usize>),
     /// Colours.
     pub theme: Theme,
-    /// The camera; `None`: the seed's view framing the platform.
+    /// The camera; `None`: the seed's angles, framing the whole motion of the exported
+    /// frames with a margin, centred in the 3D view.
     pub camera: Option<OrbitCamera>,
     /// Put the leg-length plot beside the 3D view.
     pub composite: bool,
@@ -44,10 +46,67 @@ pub struct VideoRequest {
 pub struct VideoReport {
     /// Frames written.
     pub frames: usize,
+    /// Frames per second of the output.
+    pub fps: f64,
+    /// How long the written frames play, seconds.
+    pub duration: f64,
+    /// Bytes written (the file, or every frame in the folder).
+    pub bytes: u64,
+    /// Why the frame rate differs from the one asked for, if it does.
+    pub note: Option<RateNote>,
     /// Wall time, seconds.
     pub seconds: f64,
     /// The GPU adapter in words.
     pub adapter: String,
+}
+
+/// Frames per second of a GIF unless asked otherwise: 4 centiseconds a frame, which every
+/// browser and slide program plays as written, smooth enough for a platform's motion, and
+/// a quarter of the frames (and bytes) of one frame per 100 Hz sample.
+pub const GIF_FPS: f64 = 25.0;
+
+/// Frames per second of an MP4 unless asked otherwise: every other sample of a 100 Hz
+/// trajectory, within what 60 Hz displays, browsers and slide software play frame for
+/// frame, and within H.264 level 4.2 at 1920×1080.
+pub const MP4_FPS: f64 = 50.0;
+
+/// Why an export's frame rate is not the one asked for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RateNote {
+    /// A GIF's frame delay is a whole number of centiseconds, at least
+    /// [`encode::GIF_MIN_DELAY_CS`] (shorter delays play as 10 cs in browsers): the rate
+    /// asked for became the nearest such rate.
+    GifRounded {
+        /// The rate asked for.
+        asked: f64,
+        /// The rate written.
+        fps: f64,
+        /// Each frame's delay, centiseconds.
+        delay_cs: u16,
+    },
+}
+
+impl std::fmt::Display for RateNote {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RateNote::GifRounded {
+                asked,
+                fps,
+                delay_cs,
+            } => write!(
+                f,
+                "a GIF frame lasts a whole number of hundredths of a second, at least {} (browsers play shorter delays as 10): {asked} frames/s became {} frames/s ({delay_cs} cs a frame)",
+                encode::GIF_MIN_DELAY_CS,
+                rate_in_words(*fps)
+            ),
+        }
+    }
+}
+
+/// A frame rate with the decimals it needs (25, 33.33).
+pub fn rate_in_words(fps: f64) -> String {
+    let text = format!("{fps:.2}");
+    text.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
 /// Most frames one export may write (as many as a trajectory may have samples).
@@ -60,6 +119,8 @@ pub struct FramePlan {
     pub count: usize,
     /// Frames per second.
     pub fps: f64,
+    /// Why `fps` is not the rate asked for, if it is not.
+    pub note: Option<RateNote>,
     /// Time of frame 0, seconds.
     start: f64,
     /// The trajectory's own sampling, when frames are its samples.
@@ -79,25 +140,50 @@ impl FramePlan {
 impl VideoRequest {
     /// How many frames at which rate: the trajectory's samples, or a new rate over its
     /// duration. Nothing is allocated, whatever the duration.
+    ///
+    /// A GIF plays exactly the motion's duration: its frames start at the motion's start,
+    /// one delay apart, and the last one is shown until the loop begins again. Other
+    /// outputs end on the motion's last pose.
     pub fn plan(&self, scenario: &Scenario) -> Result<FramePlan> {
         let sampling = scenario.motion.sampling;
         let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
-        let fps = self.fps.unwrap_or(native_fps);
+        let target = Target::from_path(&self.out);
+        let asked = self.fps.or(match target {
+            Target::Gif(_) => Some(GIF_FPS),
+            Target::Mp4(_) => Some(MP4_FPS),
+            Target::Folder(_) => None,
+        });
+        let fps = asked.unwrap_or(native_fps);
         if !(fps.is_finite() && fps > 0.0 && fps <= 1000.0) {
             bail!(
                 "the frame rate must be more than 0 and at most 1000 frames per second, got {fps}"
             );
         }
-        let count = match self.fps {
-            None => sampling.len(),
-            // In-range durations and rates give at most about 1e9 frames: a count, not a list.
-            Some(_) => ((sampling.duration() * fps).floor() + 1.0) as usize,
+        let (fps, note) = match target {
+            Target::Gif(_) => {
+                let delay_cs = encode::gif_delay_cs(fps);
+                let played = 100.0 / f64::from(delay_cs);
+                let note = ((played - fps).abs() > 1e-9 * fps).then_some(RateNote::GifRounded {
+                    asked: fps,
+                    fps: played,
+                    delay_cs,
+                });
+                (played, note)
+            }
+            _ => (fps, None),
+        };
+        // In-range durations and rates give at most about 1e9 frames: a count, not a list.
+        let count = match (&target, asked) {
+            (_, None) => sampling.len(),
+            (Target::Gif(_), Some(_)) => ((sampling.duration() * fps).round() as usize).max(1),
+            (_, Some(_)) => ((sampling.duration() * fps).floor() + 1.0) as usize,
         };
         Ok(FramePlan {
             count,
             fps,
+            note,
             start: sampling.start(),
-            native: self.fps.is_none().then_some(sampling),
+            native: asked.is_none().then_some(sampling),
         })
     }
 
@@ -155,7 +241,7 @@ pub fn export_video(
         width,
         height,
         theme: request.theme,
-        camera: request.camera.unwrap_or_else(|| default_camera(scenario)),
+        camera: request.camera,
         composite: request.composite,
         overlays: request.overlays,
         readout: request.readout.clone(),
@@ -167,7 +253,36 @@ pub fn export_video(
     encode::export(&mut source, range.clone(), fps, &target, progress, stop)?;
     Ok(VideoReport {
         frames: range.len(),
+        fps,
+        duration: range.len() as f64 / fps,
+        bytes: written_bytes(&request.out),
+        note: plan.note,
         seconds: started.elapsed().as_secs_f64(),
         adapter: source.adapter(),
     })
+}
+
+/// The size of a written file, or of the files in a written folder, bytes.
+fn written_bytes(out: &std::path::Path) -> u64 {
+    match std::fs::metadata(out) {
+        Ok(m) if m.is_dir() => std::fs::read_dir(out)
+            .map(|entries| {
+                entries
+                    .filter_map(|e| e.ok()?.metadata().ok())
+                    .map(|m| m.len())
+                    .sum()
+            })
+            .unwrap_or(0),
+        Ok(m) => m.len(),
+        Err(_) => 0,
+    }
+}
+
+/// A size in bytes for people: 3.4 MB, 812 kB.
+pub fn bytes_in_words(bytes: u64) -> String {
+    match bytes {
+        b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
+        b if b >= 1_000 => format!("{} kB", b / 1_000),
+        b => format!("{b} bytes"),
+    }
 }

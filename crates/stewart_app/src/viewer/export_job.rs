@@ -17,7 +17,7 @@ use stewart_kinematics::{Angle, Scenario};
 use crate::export::plot::plot_file;
 use crate::export::ply::{PlyHeader, ply};
 use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
-use crate::export::video::{VideoRequest, export_video};
+use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_words};
 use crate::export::workspace_plot::figure_file;
 use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
@@ -191,6 +191,9 @@ fn run(
                 &[
                     ("frames", &report.frames),
                     ("path", &request.out.display()),
+                    ("fps", &rate_in_words(report.fps)),
+                    ("duration", &format!("{:.2}", report.duration)),
+                    ("size", &bytes_in_words(report.bytes)),
                     ("seconds", &format!("{:.1}", report.seconds)),
                     (
                         "rate",

@@ -111,7 +111,8 @@ pub struct ExportForm {
     pub path: String,
     /// Frame size, pixels.
     pub size: (u32, u32),
-    /// Frames per second; 0: one frame per trajectory sample.
+    /// Frames per second; 0: the format's default (25 for GIF, 50 for MP4, one frame
+    /// per trajectory sample for PNG frames).
     pub fps: f64,
     /// Light colours.
     pub light: bool,
@@ -125,7 +126,7 @@ impl Default for ExportForm {
             kind: ExportKind::Gif,
             path: String::new(),
             size: (1280, 720),
-            fps: 30.0,
+            fps: 0.0,
             light: false,
             composite: false,
         }

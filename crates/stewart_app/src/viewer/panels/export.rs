@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use stewart_render::{Overlays, Theme};
 
 use super::widgets;
-use crate::export::video::VideoRequest;
+use crate::export::video::{RateNote, VideoRequest, rate_in_words};
 use crate::viewer::export_job::{ExportJob, ExportWork, SurfaceView};
 use crate::viewer::exports::ExportKind;
 use crate::viewer::state::ViewerState;
@@ -104,9 +104,36 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.checkbox(&mut form.light, t.tr("export.light"));
             ui.checkbox(&mut form.composite, t.tr("export.composite"));
         });
-        let frames = request(state, PathBuf::new()).frame_count(state.scenario());
-        if let Ok(n) = frames {
-            ui.label(egui::RichText::new(t.fmt("export.frames", &[("count", &n)])).small());
+        // What the export will write, planned for the path as typed (its extension
+        // decides the format and so the default rate).
+        let request = request(state, PathBuf::from(state.exports.form.path.trim()));
+        let scenario = state.scenario();
+        if let (Ok(plan), Ok(n)) = (request.plan(scenario), request.frame_count(scenario)) {
+            let words = t.fmt(
+                "export.frames",
+                &[
+                    ("count", &n),
+                    ("fps", &rate_in_words(plan.fps)),
+                    ("seconds", &format!("{:.2}", n as f64 / plan.fps)),
+                ],
+            );
+            ui.label(egui::RichText::new(words).small());
+            if let Some(RateNote::GifRounded {
+                asked,
+                fps,
+                delay_cs,
+            }) = plan.note
+            {
+                let words = t.fmt(
+                    "export.gif_rounded",
+                    &[
+                        ("asked", &rate_in_words(asked)),
+                        ("fps", &rate_in_words(fps)),
+                        ("delay", &delay_cs),
+                    ],
+                );
+                ui.label(egui::RichText::new(words).small());
+            }
         }
     }
 }
