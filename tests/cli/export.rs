@@ -189,7 +189,15 @@ fn bad_render_options_are_refused() {
         (vec!["--frames", "0..99999"], "not a non-empty range"),
         (
             vec!["--fps", "0"],
-            "frame rate must be more than 0 and at most 1000",
+            "frame rate must be from 0.01 to 1000 frames per second, got 0",
+        ),
+        (
+            vec!["--fps", "0.001"],
+            "frame rate must be from 0.01 to 1000 frames per second, got 0.001",
+        ),
+        (
+            vec!["--fps", "1e-300"],
+            "frame rate must be from 0.01 to 1000 frames per second, got 1e-300",
         ),
         (
             vec!["--title", "two\nlines"],

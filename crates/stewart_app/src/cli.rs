@@ -383,19 +383,17 @@ pub fn parse_mass(text: &str) -> Result<f64, String> {
     }
 }
 
-/// A frame rate: more than 0, at most 1000 frames per second.
+/// A frame rate: from 0.01 to 1000 frames per second.
 pub fn parse_fps(text: &str) -> Result<f64, String> {
     let v: f64 = text
         .trim()
         .parse()
         .map_err(|_| format!("`{text}` is not a number of frames per second"))?;
-    if v.is_finite() && v > 0.0 && v <= 1000.0 {
-        Ok(v)
-    } else {
-        Err(format!(
-            "the frame rate must be more than 0 and at most 1000 frames per second, got {text}"
-        ))
-    }
+    crate::export::video::check_rate(v)
+        .map(|()| v)
+        .map_err(|_| {
+            format!("the frame rate must be from 0.01 to 1000 frames per second, got {text}")
+        })
 }
 
 /// Arguments of `stewart workspace`.

@@ -105,8 +105,27 @@ impl std::fmt::Display for RateNote {
 
 /// A frame rate with the decimals it needs (25, 33.33).
 pub fn rate_in_words(fps: f64) -> String {
-    let text = format!("{fps:.2}");
+    // Two decimals, or four significant digits below 1 (0.3003, 0.01).
+    let decimals = (3.0 - fps.abs().log10().floor()).clamp(2.0, 12.0) as usize;
+    let text = format!("{fps:.decimals$}");
     text.trim_end_matches('0').trim_end_matches('.').to_owned()
+}
+
+/// Slowest frame rate an export may ask for: one frame per 100 s of motion.
+pub const MIN_FPS: f64 = 0.01;
+
+/// Fastest frame rate an export may ask for.
+pub const MAX_FPS: f64 = 1000.0;
+
+/// A frame rate asked for, checked: finite, from [`MIN_FPS`] to [`MAX_FPS`].
+pub fn check_rate(fps: f64) -> Result<(), String> {
+    if fps.is_finite() && (MIN_FPS..=MAX_FPS).contains(&fps) {
+        Ok(())
+    } else {
+        Err(format!(
+            "the frame rate must be from {MIN_FPS} to {MAX_FPS} frames per second, got {fps}"
+        ))
+    }
 }
 
 /// Most frames one export may write (as many as a trajectory may have samples).
@@ -153,12 +172,10 @@ impl VideoRequest {
             Target::Mp4(_) => Some(MP4_FPS),
             Target::Folder(_) => None,
         });
-        let fps = asked.unwrap_or(native_fps);
-        if !(fps.is_finite() && fps > 0.0 && fps <= 1000.0) {
-            bail!(
-                "the frame rate must be more than 0 and at most 1000 frames per second, got {fps}"
-            );
+        if let Some(fps) = asked {
+            check_rate(fps).map_err(anyhow::Error::msg)?;
         }
+        let fps = asked.unwrap_or(native_fps);
         let (fps, note) = match target {
             Target::Gif(_) => {
                 let delay_cs = encode::gif_delay_cs(fps);
@@ -284,5 +301,78 @@ pub fn bytes_in_words(bytes: u64) -> String {
         b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
         b if b >= 1_000 => format!("{} kB", b / 1_000),
         b => format!("{b} bytes"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn request(out: &str, fps: Option<f64>) -> VideoRequest {
+        VideoRequest {
+            out: PathBuf::from(out),
+            size: (64, 48),
+            fps,
+            frames: (None, None),
+            theme: Theme::DARK,
+            camera: None,
+            composite: false,
+            overlays: Overlays::default(),
+            readout: None,
+            lang: crate::i18n::Lang::En,
+        }
+    }
+
+    #[test]
+    fn each_format_has_its_rate_and_a_gif_lasts_the_motion() {
+        let seed = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        let samples = seed.motion.sampling.len();
+        let plan = |out: &str, fps| {
+            request(out, fps)
+                .plan(&seed)
+                .unwrap_or_else(|e| panic!("{e}"))
+        };
+        // The seed: 10 s sampled at 100 Hz.
+        let gif = plan("a.gif", None);
+        assert_eq!((gif.count, gif.fps, gif.note), (250, 25.0, None));
+        assert!((gif.time(1) - gif.time(0) - 0.04).abs() < 1e-12);
+        let mp4 = plan("a.mp4", None);
+        assert_eq!((mp4.count, mp4.fps), (501, 50.0));
+        let pngs = plan("frames", None);
+        assert_eq!((pngs.count, pngs.fps), (samples, 100.0));
+        // 30 frames/s is 3.33 cs: 3 cs, 33.33 frames/s, 333 frames of 3 cs (9.99 s).
+        let odd = plan("a.gif", Some(30.0));
+        assert_eq!(odd.count, 333);
+        assert_eq!(
+            odd.note,
+            Some(RateNote::GifRounded {
+                asked: 30.0,
+                fps: 100.0 / 3.0,
+                delay_cs: 3
+            })
+        );
+        // Faster than 2 cs is rounded to 2 cs; MP4 takes any rate as asked.
+        assert_eq!(plan("a.gif", Some(1000.0)).fps, 50.0);
+        assert_eq!(plan("a.mp4", Some(1000.0)).note, None);
+        for bad in [0.0, 0.005, 1000.5, f64::NAN, f64::INFINITY] {
+            let e = request("a.gif", Some(bad)).plan(&seed);
+            assert!(e.is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn rates_and_sizes_read_as_people_write_them() {
+        for (fps, words) in [
+            (25.0, "25"),
+            (100.0 / 3.0, "33.33"),
+            (0.5, "0.5"),
+            (100.0 / 333.0, "0.3003"),
+            (0.01, "0.01"),
+        ] {
+            assert_eq!(rate_in_words(fps), words);
+        }
+        assert_eq!(bytes_in_words(999), "999 bytes");
+        assert_eq!(bytes_in_words(812_400), "812 kB");
+        assert_eq!(bytes_in_words(8_812_400), "8.8 MB");
     }
 }
