@@ -3,7 +3,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use crate::{stderr, stewart, tempdir};
+use crate::{probe, stderr, stewart, tempdir};
 
 fn names(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = std::fs::read_dir(dir)
@@ -135,35 +135,13 @@ fn an_mp4_has_its_frames_and_duration() {
         "--composite",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let probe = Command::new("ffprobe")
-        .args([
-            "-v",
-            "error",
-            "-count_frames",
-            "-select_streams",
-            "v:0",
-            "-show_entries",
-            "stream=nb_read_frames,width,height,codec_name",
-            "-show_entries",
-            "format=duration",
-            "-of",
-            "default=noprint_wrappers=1",
-        ])
-        .arg(&out)
-        .output()
-        .unwrap_or_else(|e| panic!("ffprobe: {e}"));
-    let text = String::from_utf8_lossy(&probe.stdout).into_owned();
+    let (text, duration) = probe(&out, "nb_read_frames,width,height,codec_name", true);
     assert!(text.contains("codec_name=h264"), "{text}");
     assert!(
         text.contains("width=320") && text.contains("height=180"),
         "{text}"
     );
     assert!(text.contains("nb_read_frames=50"), "{text}");
-    let duration: f64 = text
-        .lines()
-        .find_map(|l| l.strip_prefix("duration="))
-        .and_then(|d| d.parse().ok())
-        .unwrap_or(0.0);
     assert!((duration - 2.0).abs() < 0.05, "{text}");
 }
 

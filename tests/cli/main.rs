@@ -76,6 +76,31 @@ pub fn write(dir: &Path, name: &str, text: &str) -> String {
     path.display().to_string()
 }
 
+/// What `ffprobe` says of a video's first stream (`stream` entries, such as
+/// `nb_read_frames,width`) and its container's duration, as `key=value` lines, with the
+/// duration in seconds.
+pub fn probe(video: &Path, stream: &str, count_frames: bool) -> (String, f64) {
+    let mut command = Command::new("ffprobe");
+    command.args(["-v", "error", "-select_streams", "v:0"]);
+    if count_frames {
+        command.arg("-count_frames");
+    }
+    let output = command
+        .args(["-show_entries", &format!("stream={stream}")])
+        .args(["-show_entries", "format=duration"])
+        .args(["-of", "default=noprint_wrappers=1"])
+        .arg(video)
+        .output()
+        .unwrap_or_else(|e| panic!("ffprobe: {e}"));
+    let text = String::from_utf8_lossy(&output.stdout).into_owned();
+    let duration = text
+        .lines()
+        .find_map(|l| l.strip_prefix("duration="))
+        .and_then(|d| d.parse().ok())
+        .unwrap_or(f64::NAN);
+    (text, duration)
+}
+
 /// A fresh temporary folder.
 pub fn tempdir() -> tempfile::TempDir {
     tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"))

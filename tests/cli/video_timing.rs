@@ -2,9 +2,8 @@
 //! the MP4's default rates, read back from the written files.
 
 use std::path::Path;
-use std::process::Command;
 
-use crate::{stderr, stdout, stewart, tempdir};
+use crate::{probe, stderr, stdout, stewart, tempdir};
 
 /// A GIF's frames as written, (delay in centiseconds, width × height) each, and the
 /// picture's size.
@@ -142,29 +141,8 @@ fn the_default_mp4_is_fifty_frames_a_second() {
         "160x96",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let probe = Command::new("ffprobe")
-        .args([
-            "-v",
-            "error",
-            "-select_streams",
-            "v:0",
-            "-show_entries",
-            "stream=r_frame_rate,profile,level",
-            "-show_entries",
-            "format=duration",
-            "-of",
-            "default=noprint_wrappers=1",
-        ])
-        .arg(&out)
-        .output()
-        .unwrap_or_else(|e| panic!("ffprobe: {e}"));
-    let text = String::from_utf8_lossy(&probe.stdout).into_owned();
+    let (text, duration) = probe(&out, "r_frame_rate", false);
     assert!(text.contains("r_frame_rate=50/1"), "{text}");
-    let duration: f64 = text
-        .lines()
-        .find_map(|l| l.strip_prefix("duration="))
-        .and_then(|d| d.parse().ok())
-        .unwrap_or(0.0);
     assert!((duration - 0.5).abs() < 0.03, "{text}");
     assert!(
         stderr(&o).contains("50 frames/s, plays 0.50 s"),
