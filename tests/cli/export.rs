@@ -421,6 +421,10 @@ fn the_overlay_burns_the_readout_into_the_top_left_corner_at_any_size() {
                         "40..41",
                         "--size",
                         size,
+                        // One camera for both (by default a readout moves the framing
+                        // down, out of its way).
+                        "--camera",
+                        "135,20,0.6",
                     ][..],
                     extra,
                 ]

@@ -1,7 +1,6 @@
 //! The head-up readout drawn over the 3D view and burnt into exported frames: a title,
 //! the time, the pose and the six leg lengths or servo angles, in the top-left corner
-//! (the default framing keeps the platform in the middle), on a box of the background
-//! colour.
+//! (exports frame the platform below it), on a box of the background colour.
 
 use stewart_kinematics::{Geometry, Pose};
 use stewart_render::{Anchor, TextItem, TextSize, Theme};
@@ -11,6 +10,18 @@ use crate::i18n::words::coordinate;
 
 /// Line height as a fraction of the view's shorter side (legible at 720p and 4K alike).
 const SIZE: f32 = 0.027;
+
+/// Where the readout starts: fractions of the view's width and height from its top-left.
+const CORNER: [f32; 2] = [0.015, 0.02];
+
+/// The share of a view's height (`view`: width and height, pixels) that the readout
+/// `text` covers from the top, its box included.
+pub fn height_share(text: &str, view: [f32; 2]) -> f32 {
+    let px = TextSize::OfView(SIZE).px(view);
+    let rows = text.split('\n').count() as f32;
+    // The renderer's box reaches a quarter line below the last row.
+    (CORNER[1] * view[1] + px * (rows + 0.25)) / view[1].max(1.0)
+}
 
 /// The readout's lines in `lang`: `title`, the time (`None`: the manual pose), the pose,
 /// the six actuator values (or why the pose is out of reach).
@@ -68,7 +79,7 @@ pub fn item(text: String, theme: &Theme) -> TextItem {
     let [r, g, b, _] = theme.background;
     TextItem {
         text,
-        anchor: Anchor::Fraction([0.015, 0.02]),
+        anchor: Anchor::Fraction(CORNER),
         align: [0.0, 0.0],
         size: TextSize::OfView(SIZE),
         colour: theme.joint,
@@ -80,6 +91,16 @@ pub fn item(text: String, theme: &Theme) -> TextItem {
 mod tests {
     use super::*;
     use stewart_kinematics::Scenario;
+
+    #[test]
+    fn the_readout_band_is_its_rows_below_the_corner() {
+        // 6 rows of 0.027 × 720 px, a quarter row of box below, from 2 % down.
+        let share = height_share("a\nb\nc\nd\ne\nf", [1280.0, 720.0]);
+        let expected = (0.02 * 720.0 + 0.027 * 720.0 * 6.25) / 720.0;
+        assert!((share - expected).abs() < 1e-6, "{share} {expected}");
+        // A narrow view sizes text by its width, so the band is a smaller share.
+        assert!(height_share("a\nb", [400.0, 800.0]) < height_share("a\nb", [800.0, 800.0]));
+    }
 
     #[test]
     fn the_readout_says_time_pose_and_the_six_values() {

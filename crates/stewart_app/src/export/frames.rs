@@ -47,12 +47,13 @@ const FRAMING_POSES: usize = 1024;
 
 /// The seed's angles, with the view (`aspect` = width / height) framing every solid the
 /// motion sweeps at `times` (plates, legs, joints, servos, axes as `overlays` draw them),
-/// centred.
+/// centred below the `top` share of the height (kept for a readout).
 pub fn motion_camera(
     scenario: &Scenario,
     times: &[f64],
     overlays: &Overlays,
     aspect: f32,
+    top: f32,
 ) -> OrbitCamera {
     let seed = default_camera(scenario);
     let g = &scenario.geometry;
@@ -68,6 +69,7 @@ pub fn motion_camera(
         &points,
         aspect,
         MOTION_MARGIN,
+        top.clamp(0.0, 0.5),
     )
     .unwrap_or_else(|| seed.fitted_to(aspect))
 }
@@ -153,9 +155,19 @@ impl<'a> FrameSource<'a> {
             return Err(anyhow!("the frame is too narrow for the composite layout"));
         }
         let aspect = view_width as f32 / job.height as f32;
+        // A burnt-in readout keeps its band at the top free of the platform.
+        let top = match (&job.readout, job.times.first()) {
+            (Some(title), Some(&t)) => {
+                let pose = scenario.motion.trajectory.pose_at(t);
+                let text =
+                    crate::readout::lines(job.lang, title, &scenario.geometry, Some(t), &pose);
+                crate::readout::height_share(&text, [view_width as f32, job.height as f32])
+            }
+            _ => 0.0,
+        };
         let camera = match job.camera {
             Some(c) => c.fitted_to(aspect),
-            None => motion_camera(scenario, &job.times, &job.overlays, aspect),
+            None => motion_camera(scenario, &job.times, &job.overlays, aspect, top),
         };
         Ok(Self {
             scenario,
@@ -219,5 +231,45 @@ impl<'a> FrameSource<'a> {
             height: self.job.height,
             rgba,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_motion_is_framed_below_a_kept_band() {
+        let scenario = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let times: Vec<f64> = scenario.motion.sampling.times().step_by(10).collect();
+        let overlays = Overlays::default();
+        for (aspect, top) in [(16.0 / 9.0, 0.0), (16.0 / 9.0, 0.2), (0.98, 0.3)] {
+            let camera = motion_camera(&scenario, &times, &overlays, aspect, top);
+            let vp = camera.view_proj(aspect);
+            let (mut low, mut high) = (f32::INFINITY, f32::NEG_INFINITY);
+            for &t in &times {
+                let frame = scenario
+                    .geometry
+                    .scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
+                let mut points = Vec::new();
+                DrawList::build(&frame, &Theme::DARK, &overlays).solid_extent(&mut points);
+                for p in points {
+                    let y = vp.project_point3(p).y;
+                    low = low.min(y);
+                    high = high.max(y);
+                }
+            }
+            // Normalised y runs from −1 (bottom) to 1 (top): the band is above 1 − 2·top.
+            assert!(
+                high <= 1.0 - 2.0 * top - 0.05,
+                "{aspect} {top}: up to {high}"
+            );
+            assert!(low >= -0.99, "{aspect} {top}: down to {low}");
+            let middle = 0.5 * (low + high);
+            assert!(
+                (middle + top).abs() < 0.02,
+                "{aspect} {top}: centred at {middle}"
+            );
+        }
     }
 }
