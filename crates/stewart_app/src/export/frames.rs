@@ -57,11 +57,18 @@ pub fn motion_camera(
 ) -> OrbitCamera {
     let seed = default_camera(scenario);
     let g = &scenario.geometry;
+    // Only solids count: no grid lines, path or label text to build for each pose.
+    let solids = Overlays {
+        grid: false,
+        path: false,
+        labels: false,
+        ..*overlays
+    };
     let mut points = Vec::new();
     let step = times.len().div_ceil(FRAMING_POSES).max(1);
     for &t in times.iter().step_by(step).chain(times.last()) {
         let frame = g.scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
-        DrawList::build(&frame, &Theme::DARK, overlays).solid_extent(&mut points);
+        DrawList::build(&frame, &Theme::DARK, &solids).solid_extent(&mut points);
     }
     OrbitCamera::fitting_points(
         seed.azimuth_deg,
