@@ -98,6 +98,58 @@ fn a_fifo_is_written_into_and_stays_a_fifo() {
 }
 
 #[test]
+fn a_fifo_nobody_reads_gives_way_to_sigterm() {
+    let dir = tempdir();
+    let fifo = dir.path().join("pipe");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|s| s.success());
+    assert!(made, "mkfifo failed");
+    // The table and a GIF both wait for a reader that never comes, until SIGTERM.
+    let gif = dir.path().join("pipe.gif");
+    std::os::unix::fs::symlink(&fifo, &gif).unwrap_or_else(|e| panic!("{e}"));
+    for args in [
+        vec!["solve", "--out", &fifo.to_str().unwrap_or_default()],
+        vec![
+            "render",
+            "--frames",
+            "0..2",
+            "--size",
+            "64x48",
+            "--out",
+            gif.to_str().unwrap_or_default(),
+        ],
+    ] {
+        let started = Instant::now();
+        let child = command(&args)
+            .spawn()
+            .unwrap_or_else(|e| panic!("cannot start stewart: {e}"));
+        std::thread::sleep(std::time::Duration::from_millis(1500));
+        let sent = std::process::Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status()
+            .is_ok_and(|s| s.success());
+        assert!(sent);
+        let o = collect(child, &args, started);
+        o.assert_refused();
+        assert!(
+            o.stderr.contains("interrupted"),
+            "{}: {}",
+            o.shown(),
+            o.stderr
+        );
+        assert!(
+            o.elapsed.as_secs_f64() < 10.0,
+            "{}: {:?}",
+            o.shown(),
+            o.elapsed
+        );
+    }
+    assert_eq!(names(dir.path()), vec!["pipe", "pipe.gif"]);
+}
+
+#[test]
 fn links_are_followed_and_kept() {
     let dir = tempdir();
     let target = write(dir.path(), "target.csv", b"old");

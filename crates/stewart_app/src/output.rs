@@ -5,7 +5,8 @@
 //! A regular file (or a new path) is written into a temporary file beside it and then
 //! renamed over it, so an interruption leaves the old file as it was. A device or FIFO
 //! (`/dev/null`, `/dev/stdout`, a named pipe) cannot be replaced by a rename without
-//! destroying it, so it is opened and written directly. A symbolic link is followed and
+//! destroying it, so it is opened and written directly, waiting for a FIFO's reader
+//! only until Ctrl-C, SIGTERM or SIGHUP. A symbolic link is followed and
 //! its target written, as the shell's `>` does.
 
 use std::fs::Metadata;
@@ -13,6 +14,9 @@ use std::io::{BufWriter, ErrorKind, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
+
+mod special;
+use special::SpecialFile;
 
 /// What stands at an output path once symbolic links are followed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -179,10 +183,9 @@ impl Destination {
         self.require_file()?;
         let shown = self.shown.display();
         if self.kind == Kind::Special {
-            let file = std::fs::OpenOptions::new()
-                .write(true)
-                .open(&self.real)
-                .with_context(|| format!("cannot write `{shown}`"))?;
+            crate::interrupt::flag();
+            let file =
+                SpecialFile::open(&self.real).with_context(|| format!("cannot write `{shown}`"))?;
             let mut w = BufWriter::new(file);
             return fill(&mut w)
                 .and_then(|()| w.flush())
@@ -215,9 +218,8 @@ impl Destination {
             Kind::Special => {
                 let mut from = std::fs::File::open(&staged)
                     .with_context(|| format!("cannot write `{shown}`"))?;
-                let mut to = std::fs::OpenOptions::new()
-                    .write(true)
-                    .open(&self.real)
+                crate::interrupt::flag();
+                let mut to = SpecialFile::open(&self.real)
                     .with_context(|| format!("cannot write `{shown}`"))?;
                 std::io::copy(&mut from, &mut to)
                     .and_then(|_| to.flush())
