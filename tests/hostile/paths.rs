@@ -184,7 +184,13 @@ fn an_input_is_never_an_output() {
     );
     let legs_before = std::fs::read(&legs).unwrap_or_default();
     let alias = dir.path().join(".").join("s.toml").display().to_string();
+    // A scenario file named like a video: rendering must not write over it.
+    let as_gif = dir.path().join("s.gif");
+    std::fs::copy(&scenario, &as_gif).unwrap_or_else(|e| panic!("{e}"));
+    let g = as_gif.display().to_string();
     for args in [
+        vec!["render", "--scenario", &g, "--out", &g, "--frames", "0..2"],
+        vec!["render", "--scenario", &s, "--out", &s, "--frames", "0..2"],
         vec!["solve", "--scenario", &s, "--out", &s],
         vec!["solve", "--scenario", &s, "--out", &alias],
         vec!["solve", "--poses", &legs, "--out", &legs],
@@ -212,6 +218,7 @@ fn an_input_is_never_an_output() {
         );
     }
     assert_eq!(std::fs::read(&scenario).unwrap_or_default(), original);
+    assert_eq!(std::fs::read(&as_gif).unwrap_or_default(), original);
     assert_eq!(std::fs::read(&legs).unwrap_or_default(), legs_before);
 }
 

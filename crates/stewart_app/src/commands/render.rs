@@ -15,6 +15,8 @@ use crate::source;
 
 /// Run the command.
 pub fn run(args: &RenderArgs) -> Result<ExitCode> {
+    // The output is never one of the inputs (a scenario file named `x.gif`, say).
+    crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let camera = args.camera.map(|[az, el, dist]| OrbitCamera {
         azimuth_deg: az as f32,
