@@ -9,7 +9,9 @@
 //! is within [`ForwardOptions::tolerance`] of its target (default 1e-12 m).
 
 pub mod assembly;
+pub(crate) mod homotopy;
 pub mod sequence;
+pub(crate) mod study;
 
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
@@ -91,6 +93,14 @@ pub enum ForwardError {
         servo: usize,
         /// The value given, degrees.
         value: f64,
+    },
+    /// No real pose has these leg lengths (every solution of the forward problem is complex).
+    #[error(
+        "no real pose has these leg lengths: the forward problem's {complex_solutions} solutions are all complex"
+    )]
+    NoRealPose {
+        /// Isolated complex solutions found.
+        complex_solutions: usize,
     },
     /// Neither a Newton nor a damped step could reduce the residual.
     #[error(

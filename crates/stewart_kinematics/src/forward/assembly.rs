@@ -1,13 +1,15 @@
 //! Assembly modes: the different poses a platform can take with the same leg lengths.
 //!
 //! The forward problem has up to 40 complex solutions; the real ones are the ways the
-//! platform can be assembled. They are found here by starting the solver from many
-//! initial poses (heights above and below the base, tilts and turns) and keeping the
-//! distinct converged poses. A search cannot prove that it found all of them; it finds
-//! every one whose basin of attraction contains a start.
+//! platform can be assembled. All of them are found by polynomial homotopy continuation
+//! ([`super::homotopy`]), a method that finds every isolated solution with probability
+//! one; each real one is then polished by the damped Newton solver to the leg-length
+//! tolerance. Tests compare the count with a dense multi-start search.
 
-use rayon::prelude::*;
+use nalgebra::{Matrix3, Vector3};
 
+use super::homotopy;
+use super::study::{LegParams, placement_of};
 use super::{ForwardError, ForwardOptions, ForwardSolution};
 use crate::geometry::Geometry;
 use crate::pose::Pose;
@@ -15,102 +17,110 @@ use crate::pose::Pose;
 /// Two solutions closer than this (metres, and rotation-matrix entries) are the same.
 const SAME_POSE: f64 = 1e-7;
 
+/// A solution whose coordinates have imaginary parts below this (relative) is real.
+const REAL: f64 = 1e-8;
+
 /// Whether two poses are the same placement (compares rotation matrices, so Euler angle
 /// representations that differ by full turns count as equal).
 pub fn same_placement(a: &Pose, b: &Pose) -> bool {
     (a.position - b.position).amax() < SAME_POSE && (a.rotation() - b.rotation()).amax() < SAME_POSE
 }
 
-/// Initial poses of the search: heights from ±0.25 to ±2 home heights (above and below
-/// the base plane), level and tilted by ±45° about x and y, turned by 0, ±60°, 180°.
-fn starts(geometry: &Geometry) -> Vec<Pose> {
-    let h = geometry.home_height();
-    let mut v = Vec::new();
-    for z in [0.25, 0.6, 1.0, 1.5, 2.0] {
-        for sign in [1.0, -1.0] {
-            for (r, p) in [
-                (0.0, 0.0),
-                (45.0, 0.0),
-                (-45.0, 0.0),
-                (0.0, 45.0),
-                (0.0, -45.0),
-            ] {
-                for yaw in [0.0, 60.0, -60.0, 180.0] {
-                    v.push(Pose::from_xyz_rpy_deg(
-                        [0.0, 0.0, sign * z * h],
-                        [r, p, yaw],
-                    ));
-                }
-            }
-        }
-    }
-    v
+/// Every assembly mode of one set of legs: the real poses, and how many complex
+/// solutions the forward problem has in all.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AssemblyModes {
+    /// The real poses, highest first.
+    pub modes: Vec<ForwardSolution>,
+    /// Isolated complex solutions found, real ones included (40 for a general platform).
+    pub complex_solutions: usize,
 }
 
 impl Geometry {
-    /// Every distinct real assembly the search finds for `lengths`, sorted by height
-    /// (highest first). Fails like [`Geometry::forward`] for invalid lengths, and with
-    /// [`ForwardError::NotConverged`] when no start converges.
+    /// Every real assembly for `lengths`, sorted by height (highest first). Fails like
+    /// [`Geometry::forward`] for invalid lengths, and with [`ForwardError::NoRealPose`]
+    /// when no real pose has these lengths.
     pub fn assembly_modes(&self, lengths: &[f64; 6]) -> Result<Vec<ForwardSolution>, ForwardError> {
-        self.check_lengths(lengths)?;
-        self.search_modes(self.base_joints(), lengths)
+        Ok(self.all_assembly_modes(lengths)?.modes)
     }
 
-    /// Every distinct real assembly the search finds for a rotary platform whose servos
-    /// stand at `angles` (the horn tips are then fixed and the rods legs of one length),
-    /// sorted by height. Fails like [`Geometry::forward_servos`].
+    /// [`Geometry::assembly_modes`] with the count of complex solutions.
+    pub fn all_assembly_modes(&self, lengths: &[f64; 6]) -> Result<AssemblyModes, ForwardError> {
+        self.check_lengths(lengths)?;
+        self.solve_modes(self.base_joints(), lengths)
+    }
+
+    /// Every real assembly of a rotary platform whose servos stand at `angles` (the horn
+    /// tips are then fixed and the rods legs of one length), sorted by height. Fails like
+    /// [`Geometry::forward_servos`].
     pub fn servo_assembly_modes(
         &self,
         angles: &[crate::Angle; 6],
     ) -> Result<Vec<ForwardSolution>, ForwardError> {
         let (tips, rod) = self.servo_anchors(angles)?;
-        self.search_modes(&tips, &[rod; 6])
+        Ok(self.solve_modes(&tips, &[rod; 6])?.modes)
     }
 
-    /// The search for legs of `lengths` from fixed `anchors`.
-    fn search_modes(
+    /// All solutions for legs of `lengths` from fixed `anchors`, by homotopy.
+    fn solve_modes(
         &self,
-        anchors: &[nalgebra::Vector3<f64>; 6],
+        anchors: &[Vector3<f64>; 6],
         lengths: &[f64; 6],
-    ) -> Result<Vec<ForwardSolution>, ForwardError> {
+    ) -> Result<AssemblyModes, ForwardError> {
+        let legs = std::array::from_fn(|i| {
+            LegParams::real(&self.platform_joints()[i], &anchors[i], lengths[i])
+        });
+        let solutions = homotopy::all_solutions(&legs).ok_or(ForwardError::NoRealPose {
+            complex_solutions: 0,
+        })?;
         let options = ForwardOptions {
-            max_iterations: 200,
+            max_iterations: 50,
             ..ForwardOptions::default()
         };
-        let found: Vec<ForwardSolution> = starts(self)
-            .par_iter()
-            .filter_map(|s| self.forward_from(anchors, lengths, s, &options).ok())
-            .collect();
-        let mut distinct: Vec<ForwardSolution> = Vec::new();
-        for s in found {
-            let pose = canonical(&s.pose);
-            if !distinct.iter().any(|d| same_placement(&d.pose, &pose)) {
-                distinct.push(ForwardSolution { pose, ..s });
+        let c = self.pivot();
+        let mut modes: Vec<ForwardSolution> = Vec::new();
+        for z in homotopy::real_solutions(&solutions, REAL) {
+            let (r, t) = placement_of(&z);
+            // q = R a + t = p + c + R (a − c), so p = t − c + R c.
+            let start = from_rotation(t - c + r * c, &r);
+            let Ok(polished) = self.forward_from(anchors, lengths, &start, &options) else {
+                continue;
+            };
+            let pose = canonical(&polished.pose);
+            if !modes.iter().any(|m| same_placement(&m.pose, &pose)) {
+                modes.push(ForwardSolution { pose, ..polished });
             }
         }
-        if distinct.is_empty() {
-            return Err(ForwardError::NotConverged {
-                iterations: options.max_iterations,
-                residual: f64::NAN,
+        if modes.is_empty() {
+            return Err(ForwardError::NoRealPose {
+                complex_solutions: solutions.len(),
             });
         }
-        distinct.sort_by(|a, b| b.pose.position.z.total_cmp(&a.pose.position.z));
-        Ok(distinct)
+        modes.sort_by(|a, b| b.pose.position.z.total_cmp(&a.pose.position.z));
+        Ok(AssemblyModes {
+            modes,
+            complex_solutions: solutions.len(),
+        })
     }
+}
+
+/// The pose at `position` with rotation matrix `r`, Euler angles in the principal ranges.
+fn from_rotation(position: Vector3<f64>, r: &Matrix3<f64>) -> Pose {
+    let rot = nalgebra::Rotation3::from_matrix_unchecked(*r);
+    let (roll, pitch, yaw) = rot.euler_angles();
+    Pose::new(
+        position,
+        crate::Angle::from_radians(roll),
+        crate::Angle::from_radians(pitch),
+        crate::Angle::from_radians(yaw),
+    )
 }
 
 /// The same placement with its Euler angles in the principal ranges (roll and yaw in
 /// (−180°, 180°], pitch in [−90°, 90°]).
 pub fn canonical(pose: &Pose) -> Pose {
     let r = pose.rotation();
-    let rot = nalgebra::Rotation3::from_matrix_unchecked(r);
-    let (roll, pitch, yaw) = rot.euler_angles();
-    let out = Pose::new(
-        pose.position,
-        crate::Angle::from_radians(roll),
-        crate::Angle::from_radians(pitch),
-        crate::Angle::from_radians(yaw),
-    );
+    let out = from_rotation(pose.position, &r);
     // nalgebra's euler_angles are the roll-pitch-yaw of R = Rz(yaw)·Ry(pitch)·Rx(roll).
     debug_assert!((out.rotation() - r).amax() < 1e-9);
     out
@@ -132,10 +142,10 @@ mod tests {
         // The mirror image through the base plane (z → −z; a reflection composed with
         // the platform's own, since its joints are planar) has the same leg lengths:
         // position (x, y, −z), rotation M·R·M with M = diag(1, 1, −1).
-        let m = nalgebra::Matrix3::from_diagonal(&nalgebra::Vector3::new(1.0, 1.0, -1.0));
+        let m = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
         let mirror_r = m * truth.rotation() * m;
         assert!(modes.iter().any(|s| {
-            (s.pose.position - nalgebra::Vector3::new(0.05, -0.03, -0.85)).amax() < 1e-7
+            (s.pose.position - Vector3::new(0.05, -0.03, -0.85)).amax() < 1e-7
                 && (s.pose.rotation() - mirror_r).amax() < 1e-7
         }));
         // Every mode really has the lengths asked for.
