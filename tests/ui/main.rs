@@ -140,7 +140,13 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
     h.get_by_role_and_label(Role::Slider, "base radius (m)")
         .set_value_accesskit(1.2);
     h.run();
-    assert_eq!(h.state().scenario().geometry.params().base_radius, 1.2);
+    assert_eq!(
+        h.state()
+            .scenario()
+            .geometry
+            .plate_radius(stewart_kinematics::Plate::Base),
+        1.2
+    );
     assert!((h.state().scenario().geometry.base_joints()[0].norm() - 1.2).abs() < 1e-12);
     // A maximum below the minimum is refused: the geometry stays, the reason is shown.
     h.get_by_role_and_label(Role::Slider, "leg max (m)")

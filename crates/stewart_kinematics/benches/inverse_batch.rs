@@ -7,7 +7,9 @@
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use stewart_kinematics::rotary::{Actuator, RotaryActuators};
-use stewart_kinematics::{Angle, BatchSolver, Geometry, GeometryParams, Layout, Pose, ServoBatch};
+use stewart_kinematics::{
+    Angle, BatchSolver, Geometry, GeometryParams, Layout, PlateJoints, Pose, ServoBatch,
+};
 
 /// A deterministic spread of poses about the seed's home pose.
 fn poses(n: usize) -> Vec<Pose> {
@@ -63,8 +65,14 @@ fn bench(c: &mut Criterion) {
 /// The desktop servo platform of `tests/cli/rotary.toml`, and small motions about its home.
 fn servo_bench(c: &mut Criterion) {
     let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
-    p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(Angle::from_degrees);
-    p.platform_angles = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(Angle::from_degrees);
+    p.base = PlateJoints::Circle {
+        radius: 0.08,
+        angles: [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(Angle::from_degrees),
+    };
+    p.platform = PlateJoints::Circle {
+        radius: 0.06,
+        angles: [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(Angle::from_degrees),
+    };
     p.actuator = Actuator::Rotary(
         RotaryActuators::new(0.025, 0.12, [255.0, 105.0, 15.0, 225.0, 135.0, 345.0], None)
             .unwrap_or_else(|e| panic!("{e}")),

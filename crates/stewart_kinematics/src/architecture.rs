@@ -12,7 +12,7 @@
 //! architecturally singular when it is rank deficient at every one of them. The
 //! projective test is reported alongside as the explanation.
 
-use nalgebra::{SMatrix, SVector, Vector2};
+use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
 use crate::geometry::Geometry;
@@ -62,7 +62,7 @@ impl Geometry {
     pub fn architecture(&self) -> ArchitectureReport {
         let home = self.home_pose();
         let h = self.home_height();
-        let s = self.params().platform_radius;
+        let s = self.plate_radius(crate::geometry::Plate::Platform);
         // A spread of poses around home: small translations and rotations in every axis.
         let probes = [
             [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -100,13 +100,41 @@ impl Geometry {
     }
 }
 
+/// Coordinates of six points in their common plane, scaled to a unit size, or `None`
+/// when they are not coplanar (to 1e-9 of their size). The axes are the principal
+/// directions: a projective map does not depend on which affine axes are used.
+fn plane_coordinates(points: &[Vector3<f64>; 6]) -> Option<[Vector2<f64>; 6]> {
+    let centre = points.iter().sum::<Vector3<f64>>() / 6.0;
+    let spread: Matrix3<f64> = Matrix3::from_fn(|r, c| {
+        points
+            .iter()
+            .map(|p| (p[r] - centre[r]) * (p[c] - centre[c]))
+            .sum()
+    });
+    let eigen = spread.symmetric_eigen();
+    let mut order = [0, 1, 2];
+    let values: [f64; 3] = eigen.eigenvalues.into();
+    order.sort_by(|&i, &j| values[j].total_cmp(&values[i]));
+    let (largest, smallest) = (values[order[0]], values[order[2]]);
+    if largest.is_nan() || largest <= 0.0 || smallest.max(0.0).sqrt() > 1e-9 * largest.sqrt() {
+        return None;
+    }
+    let size = largest.sqrt();
+    let u = eigen.eigenvectors.column(order[0]).into_owned();
+    let v = eigen.eigenvectors.column(order[1]).into_owned();
+    Some(points.map(|p| Vector2::new((p - centre).dot(&u), (p - centre).dot(&v)) / size))
+}
+
 /// Whether a plane projective map (homography) takes the six base joints to the six
-/// platform joints: fit it to joints 1–4, then test joints 5 and 6.
+/// platform joints: fit it to joints 1–4, then test joints 5 and 6. Only planar plates
+/// can be related so; a plate whose joints are not coplanar answers `false`.
 fn joints_projectively_related(g: &Geometry) -> bool {
-    let rb = g.params().base_radius;
-    let rp = g.params().platform_radius;
-    let base: Vec<Vector2<f64>> = g.base_joints().iter().map(|b| b.xy() / rb).collect();
-    let plat: Vec<Vector2<f64>> = g.platform_joints().iter().map(|a| a.xy() / rp).collect();
+    let (Some(base), Some(plat)) = (
+        plane_coordinates(g.base_joints()),
+        plane_coordinates(g.platform_joints()),
+    ) else {
+        return false;
+    };
     // h = (h11, h12, h13, h21, h22, h23, h31, h32), h33 = 1:
     // u = (h11 x + h12 y + h13) / (h31 x + h32 y + 1), v likewise.
     let mut m = SMatrix::<f64, 8, 8>::zeros();

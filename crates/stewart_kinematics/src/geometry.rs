@@ -1,4 +1,5 @@
-//! Platform geometry: radii, home height, joint angles, stroke limits, pivot.
+//! Platform geometry: where the joints are (on circles, or at any 3-D points), home
+//! height, stroke limits, pivot.
 
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -70,19 +71,53 @@ impl StrokeLimits {
     }
 }
 
+/// Where the six joints of one plate are, in the plate's own frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlateJoints {
+    /// On a circle about the plate's origin in its plane `z = 0`.
+    Circle {
+        /// Radius of the circle, metres.
+        radius: f64,
+        /// Angle of joint `i` about the plate's z axis, from its x axis.
+        angles: [Angle; 6],
+    },
+    /// At six points `(x, y, z)`, metres: any as-built layout.
+    Points([Vector3<f64>; 6]),
+}
+
+impl PlateJoints {
+    /// The six joint positions in the plate's frame, metres.
+    pub fn points(&self) -> [Vector3<f64>; 6] {
+        match self {
+            PlateJoints::Circle { radius, angles } => joints_on_circle(*radius, angles),
+            PlateJoints::Points(p) => *p,
+        }
+    }
+
+    /// Radius and angles, for joints on a circle.
+    pub fn circle(&self) -> Option<(f64, &[Angle; 6])> {
+        match self {
+            PlateJoints::Circle { radius, angles } => Some((*radius, angles)),
+            PlateJoints::Points(_) => None,
+        }
+    }
+
+    /// The same joints as points (a circle's joints computed).
+    pub fn as_points(&self) -> Self {
+        PlateJoints::Points(self.points())
+    }
+}
+
 /// Everything that describes a platform, as a user writes it down. Validate it with [`Geometry::new`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct GeometryParams {
-    /// Radius of the circle through the base joints, metres.
-    pub base_radius: f64,
-    /// Radius of the circle through the platform joints, metres.
-    pub platform_radius: f64,
+    /// The base joints (leg `i` starts at base joint `i`), base frame.
+    pub base: PlateJoints,
+    /// The platform joints (leg `i` ends at platform joint `i`), platform frame.
+    pub platform: PlateJoints,
     /// Height of the platform centre above the base centre at the home pose, metres.
     pub home_height: f64,
-    /// Angle of base joint `i` (leg `i` starts there).
-    pub base_angles: [Angle; 6],
-    /// Angle of platform joint `i` in the platform frame (leg `i` ends there).
-    pub platform_angles: [Angle; 6],
     /// Leg stroke limits.
     pub stroke: StrokeLimits,
     /// The point the platform rotates about, in the platform frame, metres. Zero (the
@@ -99,6 +134,22 @@ impl GeometryParams {
         Self::from_layout(1.0, 0.6, 0.8, Layout::seed())
     }
 
+    /// The joints of `plate`.
+    pub fn plate(&self, plate: Plate) -> &PlateJoints {
+        match plate {
+            Plate::Base => &self.base,
+            Plate::Platform => &self.platform,
+        }
+    }
+
+    /// The joints of `plate`, to change them.
+    pub fn plate_mut(&mut self, plate: Plate) -> &mut PlateJoints {
+        match plate {
+            Plate::Base => &mut self.base,
+            Plate::Platform => &mut self.platform,
+        }
+    }
+
     /// A platform with the given radii, home height and layout, no stroke limits, no pivot offset.
     pub fn from_layout(
         base_radius: f64,
@@ -108,11 +159,15 @@ impl GeometryParams {
     ) -> Self {
         let (base_angles, platform_angles) = layout.angles();
         Self {
-            base_radius,
-            platform_radius,
+            base: PlateJoints::Circle {
+                radius: base_radius,
+                angles: base_angles,
+            },
+            platform: PlateJoints::Circle {
+                radius: platform_radius,
+                angles: platform_angles,
+            },
             home_height,
-            base_angles,
-            platform_angles,
             stroke: StrokeLimits::default(),
             pivot: Vector3::zeros(),
             actuator: Actuator::Linear,
@@ -153,6 +208,24 @@ pub enum GeometryError {
         /// Their angle in degrees.
         angle_deg: f64,
     },
+    /// Two joints of one plate given as coordinates are at the same point.
+    #[error(
+        "{plate} joints {first} and {second} coincide (both at ({x}, {y}, {z}) m): the six joints of a plate must be distinct"
+    )]
+    CoincidentJoints {
+        /// The plate.
+        plate: Plate,
+        /// Joint number, from 1.
+        first: usize,
+        /// Joint number, from 1.
+        second: usize,
+        /// Where, metres.
+        x: f64,
+        /// Where, metres.
+        y: f64,
+        /// Where, metres.
+        z: f64,
+    },
     /// A stroke limit on a rotary platform (servos have a range instead).
     #[error(
         "`{key}` belongs to linear legs: a rotary platform's rods have a fixed length (give `actuator.servo_min_deg` and `servo_max_deg` for the servo range)"
@@ -185,15 +258,9 @@ const SAME_JOINT_ANGLE: f64 = 1e-9;
 impl Geometry {
     /// Validate `params` and compute the joint positions.
     pub fn new(params: GeometryParams) -> Result<Self, GeometryError> {
-        check_positive("base_radius", params.base_radius)?;
-        check_positive("platform_radius", params.platform_radius)?;
+        check_plate(Plate::Base, &params.base)?;
+        check_plate(Plate::Platform, &params.platform)?;
         check_positive("home_height", params.home_height)?;
-        check_angles(Plate::Base, "base_angles_deg", &params.base_angles)?;
-        check_angles(
-            Plate::Platform,
-            "platform_angles_deg",
-            &params.platform_angles,
-        )?;
         if matches!(params.actuator, Actuator::Rotary(_)) {
             for (key, value) in [
                 ("leg_min", params.stroke.min),
@@ -218,8 +285,8 @@ impl Geometry {
         for (axis, v) in ["x", "y", "z"].iter().zip(params.pivot.iter()) {
             check_finite(&format!("pivot.{axis}"), *v)?;
         }
-        let base_joints = joints_on_circle(params.base_radius, &params.base_angles);
-        let platform_joints = joints_on_circle(params.platform_radius, &params.platform_angles);
+        let base_joints = params.base.points();
+        let platform_joints = params.platform.points();
         Ok(Self {
             params,
             base_joints,
@@ -246,6 +313,23 @@ impl Geometry {
     /// Platform joint positions `a_i` in the platform frame, metres.
     pub fn platform_joints(&self) -> &[Vector3<f64>; 6] {
         &self.platform_joints
+    }
+
+    /// The joints of `plate` in its own frame.
+    pub fn joints(&self, plate: Plate) -> &[Vector3<f64>; 6] {
+        match plate {
+            Plate::Base => &self.base_joints,
+            Plate::Platform => &self.platform_joints,
+        }
+    }
+
+    /// The size of `plate`: the largest distance of one of its joints from the plate's
+    /// origin, metres (the radius, for joints on a circle).
+    pub fn plate_radius(&self, plate: Plate) -> f64 {
+        self.joints(plate)
+            .iter()
+            .map(|j| j.norm())
+            .fold(0.0, f64::max)
     }
 
     /// Leg stroke limits.
@@ -362,6 +446,42 @@ fn check_positive(field: &str, value: f64) -> Result<(), GeometryError> {
     }
 }
 
+/// Two joints closer than this (metres) count as the same joint.
+const SAME_JOINT_DISTANCE: f64 = 1e-9;
+
+/// Check one plate's joints: a positive radius and distinct angles, or six finite and
+/// distinct points. Fields are named as in scenario files.
+fn check_plate(plate: Plate, joints: &PlateJoints) -> Result<(), GeometryError> {
+    match joints {
+        PlateJoints::Circle { radius, angles } => {
+            check_positive(&format!("{plate}_radius"), *radius)?;
+            check_angles(plate, &format!("{plate}_angles_deg"), angles)
+        }
+        PlateJoints::Points(points) => {
+            for (i, p) in points.iter().enumerate() {
+                for (k, v) in p.iter().enumerate() {
+                    check_finite(&format!("{plate}_joints_m[{i}][{k}]"), *v)?;
+                }
+            }
+            for i in 0..6 {
+                for j in i + 1..6 {
+                    if (points[i] - points[j]).norm() < SAME_JOINT_DISTANCE {
+                        return Err(GeometryError::CoincidentJoints {
+                            plate,
+                            first: i + 1,
+                            second: j + 1,
+                            x: points[i].x,
+                            y: points[i].y,
+                            z: points[i].z,
+                        });
+                    }
+                }
+            }
+            Ok(())
+        }
+    }
+}
+
 fn check_angles(plate: Plate, field: &str, angles: &[Angle; 6]) -> Result<(), GeometryError> {
     for (i, a) in angles.iter().enumerate() {
         check_finite(&format!("{field}[{i}]"), a.degrees())?;
@@ -403,7 +523,10 @@ mod tests {
     #[test]
     fn validation_names_the_field_and_value() {
         let mut p = GeometryParams::seed();
-        p.base_radius = -1.0;
+        p.base = PlateJoints::Circle {
+            radius: -1.0,
+            angles: Layout::seed().angles().0,
+        };
         assert_eq!(
             Geometry::new(p).unwrap_err().to_string(),
             "`base_radius` must be positive, got -1"
@@ -417,7 +540,12 @@ mod tests {
         ));
 
         let mut p = GeometryParams::seed();
-        p.platform_angles[4] = Angle::from_degrees(30.0 + 360.0);
+        let (_, mut angles) = Layout::seed().angles();
+        angles[4] = Angle::from_degrees(30.0 + 360.0);
+        p.platform = PlateJoints::Circle {
+            radius: 0.6,
+            angles,
+        };
         assert!(matches!(
             Geometry::new(p),
             Err(GeometryError::DuplicateJoint {
@@ -445,13 +573,54 @@ mod tests {
         );
 
         let mut p = GeometryParams::seed();
-        p.base_angles[2] = Angle::from_degrees(f64::NAN);
+        let (mut angles, _) = Layout::seed().angles();
+        angles[2] = Angle::from_degrees(f64::NAN);
+        p.base = PlateJoints::Circle {
+            radius: 1.0,
+            angles,
+        };
         assert!(
             Geometry::new(p)
                 .unwrap_err()
                 .to_string()
                 .contains("base_angles_deg[2]")
         );
+
+        let mut p = GeometryParams::seed();
+        let mut points = p.platform.points();
+        points[3].y = f64::INFINITY;
+        p.platform = PlateJoints::Points(points);
+        assert_eq!(
+            Geometry::new(p).unwrap_err().to_string(),
+            "`platform_joints_m[3][1]` must be a finite number, got inf"
+        );
+
+        let mut p = GeometryParams::seed();
+        let mut points = p.base.points();
+        points[5] = points[1];
+        p.base = PlateJoints::Points(points);
+        assert!(matches!(
+            Geometry::new(p),
+            Err(GeometryError::CoincidentJoints {
+                plate: Plate::Base,
+                first: 2,
+                second: 6,
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn a_circle_given_as_points_is_the_same_platform() {
+        let circle = Geometry::seed();
+        let mut p = GeometryParams::seed();
+        p.base = p.base.as_points();
+        p.platform = p.platform.as_points();
+        let points = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(circle.base_joints(), points.base_joints());
+        assert_eq!(circle.platform_joints(), points.platform_joints());
+        assert!((points.plate_radius(Plate::Base) - 1.0).abs() < 1e-15);
+        assert!((points.plate_radius(Plate::Platform) - 0.6).abs() < 1e-15);
     }
 
     #[test]

@@ -113,9 +113,17 @@ impl Geometry {
         j
     }
 
-    /// The characteristic length used to normalise rotations: the platform radius.
+    /// The characteristic length used to normalise rotations: the root-mean-square
+    /// distance of the platform joints from the platform frame's origin (the radius, for
+    /// joints on a circle). A rotation by 1 rad then moves the joints by about as much as
+    /// a translation by this length.
     pub fn characteristic_length(&self) -> f64 {
-        self.params().platform_radius
+        let sum: f64 = self
+            .platform_joints()
+            .iter()
+            .map(|a| a.norm_squared())
+            .sum();
+        (sum / 6.0).sqrt()
     }
 
     /// The 6×6 map from a platform twist `(v, ω)` about the pivot point to the six servo
@@ -379,8 +387,8 @@ mod tests {
         // The same platform in millimetres has the same normalised singular values.
         let g = crate::test_support::paired_geometry();
         let mut mm = g.params().clone();
-        mm.base_radius *= 1000.0;
-        mm.platform_radius *= 1000.0;
+        mm.base = crate::PlateJoints::Points(mm.base.points().map(|p| p * 1000.0));
+        mm.platform = crate::PlateJoints::Points(mm.platform.points().map(|p| p * 1000.0));
         mm.home_height *= 1000.0;
         let g_mm = Geometry::new(mm).unwrap_or_else(|e| panic!("{e}"));
         let a = g.conditioning(&g.home_pose()).singular_values;

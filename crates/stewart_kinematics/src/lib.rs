@@ -56,7 +56,7 @@ pub use angle::Angle;
 pub use batch::{BatchSolver, ServoBatch};
 pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};
 pub use forward::{ForwardError, ForwardOptions, ForwardSolution};
-pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
+pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits};
 pub use inverse::LegSolution;
 pub use jacobian::Conditioning;
 pub use layout::Layout;

@@ -64,9 +64,10 @@ pub struct SceneFrame {
     pub platform_centre: Vector3<f64>,
     /// The platform's orientation (its axes are the columns).
     pub platform_rotation: Matrix3<f64>,
-    /// Radius of the base joint circle.
+    /// Size of the base: the largest distance of a base joint from its origin (the
+    /// circle's radius, for joints on a circle).
     pub base_radius: f64,
-    /// Radius of the platform joint circle.
+    /// Size of the platform, likewise.
     pub platform_radius: f64,
     /// The legs; for a rotary platform the rods, from horn tip to platform joint (their
     /// `stroke_usage` and `status` are the servo's).
@@ -112,8 +113,8 @@ impl Geometry {
             platform_joints: solution.platform_joints,
             platform_centre: self.platform_centre(pose),
             platform_rotation: pose.rotation(),
-            base_radius: self.params().base_radius,
-            platform_radius: self.params().platform_radius,
+            base_radius: self.plate_radius(crate::geometry::Plate::Base),
+            platform_radius: self.plate_radius(crate::geometry::Plate::Platform),
             legs,
             servos,
             path,

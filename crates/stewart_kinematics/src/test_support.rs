@@ -20,8 +20,14 @@ pub(crate) fn paired_geometry() -> Geometry {
 /// 120 mm rods), without a servo range.
 pub(crate) fn servo_geometry() -> Geometry {
     let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
-    p.base_angles = [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(crate::Angle::from_degrees);
-    p.platform_angles = [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(crate::Angle::from_degrees);
+    p.base = crate::PlateJoints::Circle {
+        radius: 0.08,
+        angles: [350.0, 10.0, 110.0, 130.0, 230.0, 250.0].map(crate::Angle::from_degrees),
+    };
+    p.platform = crate::PlateJoints::Circle {
+        radius: 0.06,
+        angles: [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(crate::Angle::from_degrees),
+    };
     p.actuator = crate::rotary::Actuator::Rotary(
         crate::rotary::RotaryActuators::new(
             0.025,

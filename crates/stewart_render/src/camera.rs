@@ -27,14 +27,24 @@ impl OrbitCamera {
     }
 
     /// The seed's view framing a platform at home: the whole base and platform with a
-    /// margin, looking at a point a little under half the home height. Exports, the
-    /// viewer's "Reset view" and the render tests all use this one framing.
+    /// margin, looking at a point a little under half the home height above the base
+    /// joints' centroid. Exports, the viewer's "Reset view" and the render tests all use
+    /// this one framing.
     pub fn seed_view_of(geometry: &stewart_kinematics::Geometry) -> Self {
-        let p = geometry.params();
         let h = geometry.home_height() as f32;
+        let base = geometry.base_joints();
+        let centre = base.iter().sum::<nalgebra::Vector3<f64>>() / 6.0;
+        let top = geometry.inverse(&geometry.home_pose()).platform_joints;
+        // The farthest joint from the centroid, horizontally (the larger plate's radius
+        // for joints on circles).
+        let reach = base
+            .iter()
+            .chain(top.iter())
+            .map(|j| (j - centre).xy().norm())
+            .fold(0.0, f64::max);
         Self::seed_view(
-            Vec3::new(0.0, 0.0, 0.45 * h),
-            p.base_radius.max(p.platform_radius) as f32 * 1.15,
+            Vec3::new(centre.x as f32, centre.y as f32, 0.45 * h),
+            reach as f32 * 1.15,
         )
     }
 

@@ -6,6 +6,7 @@ use stewart_kinematics::scene::{LegStatus, SceneFrame, ServoFrame};
 
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
+use crate::plate_shape::plate_shape;
 use crate::theme::{Theme, linear};
 
 /// What to show besides the platform itself.
@@ -140,24 +141,37 @@ impl DrawList {
                 .push(ball(v3(p), joint_radius, linear(theme.joint)));
         }
 
-        // Plates: the polygons through the joints, the base's top face at z = 0.
-        let base_corners: Vec<Vec3> = frame.base_joints.iter().map(v3).collect();
-        list.plates.push((
-            Mesh::plate(Vec3::ZERO, Vec3::Z, &base_corners, plate_thickness),
-            linear(theme.base_plate),
-            Vec3::ZERO,
-        ));
+        // Plates: the convex hull of the joints in each plate's z = 0 plane (the base's
+        // top face at z = 0), joints off that plane on posts.
         let rotation = Mat3::from_cols_array(&std::array::from_fn(|k| {
             frame.platform_rotation[(k % 3, k / 3)] as f32
         }));
-        let normal = rotation * Vec3::Z;
         let centre = v3(&frame.platform_centre);
-        let corners: Vec<Vec3> = frame.platform_joints.iter().map(v3).collect();
-        list.plates.push((
-            Mesh::plate(centre, normal, &corners, plate_thickness),
-            linear(theme.platform),
-            centre,
-        ));
+        for (origin, axes, joints, colour) in [
+            (
+                Vec3::ZERO,
+                Mat3::IDENTITY,
+                &frame.base_joints,
+                theme.base_plate,
+            ),
+            (centre, rotation, &frame.platform_joints, theme.platform),
+        ] {
+            let world: Vec<Vec3> = joints.iter().map(v3).collect();
+            let shape = plate_shape(origin, axes, &world, plate_thickness);
+            list.plates.push((
+                Mesh::plate(shape.centre, shape.normal, &shape.corners, plate_thickness),
+                linear(colour),
+                origin,
+            ));
+            for (foot, joint) in shape.posts {
+                list.cylinders.push(along(
+                    foot,
+                    joint,
+                    0.6 * ROD_RADIUS * s,
+                    linear([colour[0], colour[1], colour[2], 1.0]),
+                ));
+            }
+        }
 
         if overlays.base_axes {
             list.axes(Vec3::ZERO, Mat3::IDENTITY, 0.45 * s, 0.012 * s, theme);

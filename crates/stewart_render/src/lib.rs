@@ -22,6 +22,7 @@ pub mod gpu;
 pub mod gpu_types;
 pub mod mesh;
 pub mod offscreen;
+pub mod plate_shape;
 pub mod renderer;
 pub mod shaders;
 pub mod text;

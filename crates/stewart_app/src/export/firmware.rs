@@ -4,8 +4,8 @@
 
 use std::fmt::Write as _;
 
-use stewart_kinematics::Scenario;
 use stewart_kinematics::rotary::RotaryActuators;
+use stewart_kinematics::{Plate, Scenario};
 
 /// A number as a C double literal that reads back to the same `f64` (shortest
 /// round-trip digits, always with a decimal point or exponent).
@@ -82,12 +82,12 @@ pub fn header(scenario: &Scenario) -> String {
     let _ = writeln!(
         s,
         "#define STEWART_BASE_RADIUS_M {}",
-        c_define(p.base_radius)
+        c_define(g.plate_radius(Plate::Base))
     );
     let _ = writeln!(
         s,
         "#define STEWART_PLATFORM_RADIUS_M {}",
-        c_define(p.platform_radius)
+        c_define(g.plate_radius(Plate::Platform))
     );
     let _ = writeln!(
         s,

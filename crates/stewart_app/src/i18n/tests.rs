@@ -196,8 +196,8 @@ fn the_architecture_verdict_reads_as_the_core_writes_it() {
     let seed = Geometry::seed().architecture();
     assert!(seed.singular);
     let paired = {
-        let mut params = stewart_kinematics::GeometryParams::seed();
-        (params.base_angles, params.platform_angles) = Layout::paired(20.0).angles();
+        let params =
+            stewart_kinematics::GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0));
         Geometry::new(params)
             .unwrap_or_else(|e| panic!("{e}"))
             .architecture()

@@ -22,29 +22,31 @@ pub fn coordinate(lang: Lang, name: &str) -> &'static str {
 /// horn or servo number from 1, `{axis}` the pivot axis or trajectory channel.
 fn setting_key(setting: &Setting) -> (String, usize, String) {
     let key = setting.key.as_str();
-    let (base, index) = match key.split_once('[') {
+    let (base, indexes) = match key.split_once('[') {
         Some((base, rest)) => (
             base,
-            rest.trim_end_matches(']').parse::<usize>().unwrap_or(0),
+            rest.trim_end_matches(']')
+                .split("][")
+                .map(|i| i.parse::<usize>().unwrap_or(0))
+                .collect::<Vec<_>>(),
         ),
-        None => (key, 0),
+        None => (key, Vec::new()),
     };
+    let index = indexes.first().copied().unwrap_or(0);
     let parts: Vec<&str> = base.split('.').collect();
+    let axis_of = |k: usize| ["x", "y", "z"].get(k).copied().unwrap_or("x").to_owned();
     match parts.as_slice() {
+        ["geometry", joints] if joints.ends_with("_joints_m") => (
+            format!("setting.{base}"),
+            index + 1,
+            axis_of(indexes.get(1).copied().unwrap_or(0)),
+        ),
         ["trajectory", channel, part] if COORDINATES.contains(channel) => (
             format!("setting.trajectory.channel.{part}"),
             index + 1,
             (*channel).to_owned(),
         ),
-        ["pivot", _] => (
-            format!("setting.{base}"),
-            index + 1,
-            ["x", "y", "z"]
-                .get(index)
-                .copied()
-                .unwrap_or("x")
-                .to_owned(),
-        ),
+        ["pivot", _] => (format!("setting.{base}"), index + 1, axis_of(index)),
         _ => (format!("setting.{base}"), index + 1, String::new()),
     }
 }

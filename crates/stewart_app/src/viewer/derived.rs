@@ -43,7 +43,10 @@ impl Derived {
     /// background (a request made while one runs replaces any waiting one).
     pub fn rebuild(&mut self, scenario: &Scenario) {
         let params = scenario.geometry.params();
-        self.layout = Layout::recognise(&params.base_angles, &params.platform_angles);
+        self.layout = match (params.base.circle(), params.platform.circle()) {
+            (Some((_, base)), Some((_, platform))) => Layout::recognise(base, platform),
+            _ => None,
+        };
         let sampling = scenario.motion.sampling;
         let n = sampling.len();
         let m = n.min(PLOT_SAMPLES);

@@ -13,7 +13,9 @@ use nalgebra::Vector3;
 
 use stewart_kinematics::link_settings::LinkSettings;
 use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
-use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
+use stewart_kinematics::{
+    CheckReport, GeometryParams, Layout, LegSolution, Plate, PlateJoints, Pose, Scenario,
+};
 use stewart_render::{OrbitCamera, Theme};
 
 use super::derived::Derived;
@@ -280,10 +282,20 @@ impl ViewerState {
         });
     }
 
-    /// Rewrite all twelve joint angles from a named layout.
+    /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
+    /// goes back to a circle of its size).
     pub fn set_layout(&mut self, layout: Layout) {
-        let mut params = self.scenario.geometry.params().clone();
-        (params.base_angles, params.platform_angles) = layout.angles();
+        let g = &self.scenario.geometry;
+        let mut params = g.params().clone();
+        let (base, platform) = layout.angles();
+        params.base = PlateJoints::Circle {
+            radius: g.plate_radius(Plate::Base),
+            angles: base,
+        };
+        params.platform = PlateJoints::Circle {
+            radius: g.plate_radius(Plate::Platform),
+            angles: platform,
+        };
         self.set_geometry(params);
     }
 
@@ -588,7 +600,9 @@ mod tests {
         let layout = s.layout();
         // Two joints on one spot: the geometry constructor refuses it.
         let mut params = before.geometry.params().clone();
-        params.base_angles[1] = params.base_angles[0];
+        let mut points = params.base.points();
+        points[1] = points[0];
+        params.base = PlateJoints::Points(points);
         s.set_geometry(params);
         assert_eq!(s.scenario(), &before);
         assert_eq!(

@@ -121,7 +121,7 @@ impl Rates {
     /// A quarter of the platform radius per second, 15° per second.
     pub fn for_geometry(g: &Geometry) -> Self {
         Self {
-            linear_m_s: 0.25 * g.params().platform_radius,
+            linear_m_s: 0.25 * g.plate_radius(stewart_kinematics::Plate::Platform),
             angular_deg_s: 15.0,
         }
     }

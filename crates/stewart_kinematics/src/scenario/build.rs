@@ -10,12 +10,12 @@ use super::Scenario;
 use super::error::{ScenarioError, ScenarioProblem};
 use super::file::{
     ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
-    LinearChannelFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
+    LinearChannelFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
 use crate::angle::Angle;
 use crate::checks::CheckSettings;
 use crate::forces::Payload;
-use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, StrokeLimits};
+use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits};
 use crate::limits::Limits;
 use crate::pose::Pose;
 use crate::rotary::{Actuator, RotaryActuators, RotaryError};
@@ -289,18 +289,119 @@ fn build_actuator(
         })
 }
 
+/// Six points `[[x, y, z], …]` in metres, each coordinate finite.
+fn points(src: &Source, field: &str, v: &PointsFile) -> Result<[Vector3<f64>; 6], ScenarioError> {
+    let list = v.get_ref();
+    if list.len() != 6 {
+        return Err(src.invalid(
+            Some(v.span()),
+            field,
+            format!(
+                "must list 6 points [x, y, z] (one per leg), got {}",
+                list.len()
+            ),
+        ));
+    }
+    let mut out = [Vector3::zeros(); 6];
+    for (i, point) in list.iter().enumerate() {
+        let xyz = point.get_ref();
+        if xyz.len() != 3 {
+            return Err(src.invalid(
+                Some(point.span()),
+                &format!("{field}[{i}]"),
+                format!(
+                    "must be a point [x, y, z] in metres, got {} numbers",
+                    xyz.len()
+                ),
+            ));
+        }
+        for (k, c) in xyz.iter().enumerate() {
+            out[i][k] = src.finite(&format!("{field}[{i}][{k}]"), c)?;
+        }
+    }
+    Ok(out)
+}
+
+/// One plate's joints from its keys in `[geometry]`: on a circle (`{plate}_radius` and
+/// `{plate}_angles_deg`) or as coordinates (`{plate}_joints_m`), never both.
+fn plate_joints(
+    src: &Source,
+    table: &Range<usize>,
+    plate: Plate,
+    radius: Option<&Spanned<f64>>,
+    angle_list: Option<&Spanned<Vec<f64>>>,
+    point_list: Option<&PointsFile>,
+) -> Result<PlateJoints, ScenarioError> {
+    let key = |suffix: &str| format!("{plate}_{suffix}");
+    if let Some(p) = point_list {
+        let circle_key = radius
+            .map(|r| ("radius", r.span()))
+            .or_else(|| angle_list.map(|a| ("angles_deg", a.span())));
+        if let Some((suffix, span)) = circle_key {
+            return Err(src.invalid(
+                Some(span),
+                &key(suffix),
+                format!(
+                    "and `{}` both describe the {plate} joints: give either their coordinates or a radius and angles, not both",
+                    key("joints_m")
+                ),
+            ));
+        }
+        return Ok(PlateJoints::Points(points(src, &key("joints_m"), p)?));
+    }
+    match (radius, angle_list) {
+        (Some(r), Some(a)) => Ok(PlateJoints::Circle {
+            radius: *r.get_ref(),
+            angles: angles(src, &key("angles_deg"), a)?,
+        }),
+        (Some(r), None) => Err(src.invalid(
+            Some(r.span()),
+            &key("angles_deg"),
+            format!("is missing: `{}` needs the six joint angles", key("radius")),
+        )),
+        (None, Some(a)) => Err(src.invalid(
+            Some(a.span()),
+            &key("radius"),
+            format!("is missing: `{}` needs the circle's radius", key("angles_deg")),
+        )),
+        (None, None) => Err(src.invalid(
+            Some(table.clone()),
+            &key("joints_m"),
+            format!(
+                "is missing: give the {plate} joints as `{}` (six points [x, y, z] in metres) or as `{}` and `{}`",
+                key("joints_m"),
+                key("radius"),
+                key("angles_deg")
+            ),
+        )),
+    }
+}
+
 fn build_geometry(
     src: &Source,
-    g: &GeometryFile,
+    table: &Spanned<GeometryFile>,
     pivot: Option<&PivotFile>,
     actuator: Actuator,
 ) -> Result<Geometry, ScenarioError> {
+    let g = table.get_ref();
     let params = GeometryParams {
-        base_radius: *g.base_radius.get_ref(),
-        platform_radius: *g.platform_radius.get_ref(),
+        base: plate_joints(
+            src,
+            &table.span(),
+            Plate::Base,
+            g.base_radius.as_ref(),
+            g.base_angles_deg.as_ref(),
+            g.base_joints_m.as_ref(),
+        )?,
+        platform: plate_joints(
+            src,
+            &table.span(),
+            Plate::Platform,
+            g.platform_radius.as_ref(),
+            g.platform_angles_deg.as_ref(),
+            g.platform_joints_m.as_ref(),
+        )?,
         home_height: *g.home_height.get_ref(),
-        base_angles: angles(src, "base_angles_deg", &g.base_angles_deg)?,
-        platform_angles: angles(src, "platform_angles_deg", &g.platform_angles_deg)?,
         stroke: StrokeLimits {
             min: g.leg_min.as_ref().map(|v| *v.get_ref()),
             max: g.leg_max.as_ref().map(|v| *v.get_ref()),
@@ -331,18 +432,29 @@ fn geometry_error_span(
             plate: Plate::Platform,
             ..
         } => "platform_angles_deg",
+        GeometryError::CoincidentJoints { plate, second, .. } => {
+            let list = match plate {
+                Plate::Base => &g.base_joints_m,
+                Plate::Platform => &g.platform_joints_m,
+            };
+            return list
+                .as_ref()
+                .and_then(|l| l.get_ref().get(second - 1).map(Spanned::span));
+        }
         GeometryError::StrokeOrder { .. } => "leg_max",
         GeometryError::StrokeOnRotary { key } => key,
     };
     let optional = |v: &Option<Spanned<f64>>| v.as_ref().map(Spanned::span);
     match field {
-        "base_radius" => Some(g.base_radius.span()),
-        "platform_radius" => Some(g.platform_radius.span()),
+        "base_radius" => optional(&g.base_radius),
+        "platform_radius" => optional(&g.platform_radius),
         "home_height" => Some(g.home_height.span()),
         "leg_min" => optional(&g.leg_min),
         "leg_max" => optional(&g.leg_max),
-        f if f.starts_with("base_angles_deg") => Some(g.base_angles_deg.span()),
-        f if f.starts_with("platform_angles_deg") => Some(g.platform_angles_deg.span()),
+        f if f.starts_with("base_angles_deg") => g.base_angles_deg.as_ref().map(Spanned::span),
+        f if f.starts_with("platform_angles_deg") => {
+            g.platform_angles_deg.as_ref().map(Spanned::span)
+        }
         f if f.starts_with("pivot") => pivot.map(|p| p.offset_m.span()),
         _ => None,
     }

@@ -18,7 +18,7 @@ pub(crate) struct ScenarioFile {
     pub name: Option<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub description: Option<String>,
-    pub geometry: GeometryFile,
+    pub geometry: Spanned<GeometryFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub actuator: Option<Spanned<ActuatorFile>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -66,15 +66,27 @@ pub(crate) struct LimitsFile {
     pub leg_radius_m: Option<Spanned<f64>>,
 }
 
-/// `[geometry]`: exactly the keys the product specifies.
+/// Six joints as `[[x, y, z], …]`, each point with its own place in the file.
+pub(crate) type PointsFile = Spanned<Vec<Spanned<Vec<Spanned<f64>>>>>;
+
+/// `[geometry]`: each plate's joints either on a circle (`*_radius` and `*_angles_deg`)
+/// or as coordinates (`*_joints_m`), the home height and the stroke.
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct GeometryFile {
-    pub base_radius: Spanned<f64>,
-    pub platform_radius: Spanned<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base_radius: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub platform_radius: Option<Spanned<f64>>,
     pub home_height: Spanned<f64>,
-    pub base_angles_deg: Spanned<Vec<f64>>,
-    pub platform_angles_deg: Spanned<Vec<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base_angles_deg: Option<Spanned<Vec<f64>>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub platform_angles_deg: Option<Spanned<Vec<f64>>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub base_joints_m: Option<PointsFile>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub platform_joints_m: Option<PointsFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub leg_min: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

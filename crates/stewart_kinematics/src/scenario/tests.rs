@@ -199,7 +199,7 @@ fn errors_name_the_line_and_the_value() {
     );
     let missing = error("[geometry]\nbase_radius = 1.0\n");
     assert!(
-        missing.starts_with("s.toml, line 1, column 1: missing field `platform_radius`"),
+        missing.starts_with("s.toml, line 1, column 1: missing field `home_height`"),
         "{missing}"
     );
     let wrong_type = error(&GEOMETRY.replace("platform_radius = 0.6", "platform_radius = \"0.6\""));
@@ -349,4 +349,82 @@ fn the_link_table_reads_writes_back_and_names_bad_values() {
         error(&format!("{GEOMETRY}[link]\nscale = [1, 1]\n"))
             .starts_with("s.toml, line 8, column 9: "),
     );
+}
+
+/// The seed's platform with both plates written as coordinates (from its circles).
+const COORDINATES: &str = "[geometry]
+home_height = 0.8
+base_joints_m = [
+  [1.0, 0.0, 0.0],
+  [0.5, 0.8660254037844386, 0.0],
+  [-0.5, 0.8660254037844387, 0.0],
+  [-1.0, 0.0, 0.0],
+  [-0.5, -0.8660254037844386, 0.0],
+  [0.5, -0.8660254037844387, 0.0],
+]
+platform_joints_m = [[0.52, 0.3, 0.0], [0.0, 0.6, 0.0], [-0.52, 0.3, 0.0], [-0.52, -0.3, 0.0], [0.0, -0.6, 0.0], [0.52, -0.3, 0.05]]
+";
+
+#[test]
+fn joints_given_as_coordinates_are_read_checked_and_written_back() {
+    let s = parse(COORDINATES).unwrap_or_else(|e| panic!("{e}"));
+    let seed = parse(GEOMETRY).unwrap_or_else(|e| panic!("{e}"));
+    for i in 0..6 {
+        assert!((s.geometry.base_joints()[i] - seed.geometry.base_joints()[i]).norm() < 1e-15);
+    }
+    assert_eq!(s.geometry.platform_joints()[5].z, 0.05);
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.geometry, s.geometry);
+    assert!(s.to_toml().contains("base_joints_m"), "{}", s.to_toml());
+    assert!(!s.to_toml().contains("base_radius"));
+
+    // One form per plate: mixing them names both keys, at the circle key's line.
+    let mixed =
+        error(&COORDINATES.replace("home_height = 0.8", "home_height = 0.8\nbase_radius = 1.0"));
+    assert_eq!(
+        mixed,
+        "s.toml, line 3, column 15: `base_radius` and `base_joints_m` both describe the base joints: give either their coordinates or a radius and angles, not both"
+    );
+    // Each plate may use either form.
+    let one_each = format!(
+        "[geometry]\nhome_height = 0.8\nbase_radius = 1.0\nbase_angles_deg = [0, 60, 120, 180, 240, 300]\n{}",
+        &COORDINATES[COORDINATES.find("platform_joints_m").unwrap_or(0)..]
+    );
+    assert!(parse(&one_each).is_ok());
+    // Five points, a point of two numbers, a NaN, two points at one place.
+    let five = error(&COORDINATES.replace("  [1.0, 0.0, 0.0],\n", ""));
+    assert!(
+        five.starts_with("s.toml, line 3, column 17: `base_joints_m` must list 6 points [x, y, z] (one per leg), got 5"),
+        "{five}"
+    );
+    let two = error(&COORDINATES.replace("[-1.0, 0.0, 0.0]", "[-1.0, 0.0]"));
+    assert_eq!(
+        two,
+        "s.toml, line 7, column 3: `base_joints_m[3]` must be a point [x, y, z] in metres, got 2 numbers"
+    );
+    let nan = error(&COORDINATES.replace("[-1.0, 0.0, 0.0]", "[-1.0, nan, 0.0]"));
+    assert_eq!(
+        nan,
+        "s.toml, line 7, column 10: `base_joints_m[3][1]` must be a finite number, got NaN"
+    );
+    let same = error(&COORDINATES.replace("[-1.0, 0.0, 0.0]", "[1.0, 0.0, 0.0]"));
+    assert_eq!(
+        same,
+        "s.toml, line 7, column 3: base joints 1 and 4 coincide (both at (1, 0, 0) m): the six joints of a plate must be distinct"
+    );
+    // A plate with neither form, or half a circle.
+    let neither = error(
+        "[geometry]\nhome_height = 0.8\nbase_radius = 1.0\nbase_angles_deg = [0, 60, 120, 180, 240, 300]\n",
+    );
+    assert!(
+        neither.contains(
+            "`platform_joints_m` is missing: give the platform joints as `platform_joints_m`"
+        ),
+        "{neither}"
+    );
+    let half = error(&COORDINATES.replace(
+        "base_joints_m = [",
+        "base_radius = 1.0\nplatform_angles_deg = [1, 2, 3, 4, 5, 6]\nxbase_joints_m = [",
+    ));
+    assert!(half.contains("unknown field `xbase_joints_m`"), "{half}");
 }

@@ -5,12 +5,39 @@ use toml::Spanned;
 use super::Scenario;
 use super::file::{
     ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
-    LinearChannelFile, PayloadFile, PivotFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
+    LinearChannelFile, PayloadFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile,
+    TrajectoryKind,
 };
+use crate::geometry::PlateJoints;
 use crate::trajectory::{Channel, Trajectory};
 
 fn s<T>(v: T) -> Spanned<T> {
     Spanned::new(0..0, v)
+}
+
+/// A plate's keys: `(radius, angles_deg, joints_m)`, one form or the other.
+type PlateKeys = (
+    Option<Spanned<f64>>,
+    Option<Spanned<Vec<f64>>>,
+    Option<PointsFile>,
+);
+
+fn plate_keys(joints: &PlateJoints) -> PlateKeys {
+    match joints {
+        PlateJoints::Circle { radius, angles } => (
+            Some(s(*radius)),
+            Some(s(angles.iter().map(|a| a.degrees()).collect())),
+            None,
+        ),
+        PlateJoints::Points(points) => (
+            None,
+            None,
+            Some(s(points
+                .iter()
+                .map(|p| s(p.iter().map(|&c| s(c)).collect()))
+                .collect())),
+        ),
+    }
 }
 
 fn linear(c: &Channel) -> Option<Spanned<LinearChannelFile>> {
@@ -35,15 +62,19 @@ fn angular(c: &Channel) -> Option<Spanned<AngularChannelFile>> {
 
 pub(super) fn to_toml(scenario: &Scenario) -> String {
     let g = scenario.geometry.params();
-    let geometry = GeometryFile {
-        base_radius: s(g.base_radius),
-        platform_radius: s(g.platform_radius),
+    let (base_radius, base_angles_deg, base_joints_m) = plate_keys(&g.base);
+    let (platform_radius, platform_angles_deg, platform_joints_m) = plate_keys(&g.platform);
+    let geometry = s(GeometryFile {
+        base_radius,
+        platform_radius,
         home_height: s(g.home_height),
-        base_angles_deg: s(g.base_angles.iter().map(|a| a.degrees()).collect()),
-        platform_angles_deg: s(g.platform_angles.iter().map(|a| a.degrees()).collect()),
+        base_angles_deg,
+        platform_angles_deg,
+        base_joints_m,
+        platform_joints_m,
         leg_min: g.stroke.min.map(s),
         leg_max: g.stroke.max.map(s),
-    };
+    });
     let actuator = scenario.geometry.rotary().map(|r| {
         s(ActuatorFile {
             kind: s(ActuatorKind::Rotary),

@@ -43,10 +43,13 @@ pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<()
 /// Servos sized for `geometry`'s plates (see [`switch_actuator`]).
 fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, String> {
     let p = geometry.params();
-    let horn = 0.3 * p.base_radius;
+    let _ = p;
+    let horn = 0.3 * geometry.plate_radius(crate::geometry::Plate::Base);
+    // Each horn at right angles to its joint's direction from the base centre.
     let directions: [f64; 6] = std::array::from_fn(|i| {
         let turn = if i % 2 == 0 { -90.0 } else { 90.0 };
-        (p.base_angles[i].degrees() + turn).rem_euclid(360.0)
+        let b = geometry.base_joints()[i];
+        (b.y.atan2(b.x).to_degrees() + turn).rem_euclid(360.0)
     });
     let joints = geometry.inverse(&geometry.home_pose()).platform_joints;
     let rods: Vec<f64> = (0..6)

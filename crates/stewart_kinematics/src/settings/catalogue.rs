@@ -9,7 +9,7 @@ use super::target::{
 };
 use super::{DefaultValue, Group, Setting, Unit};
 use crate::checks::CheckSettings;
-use crate::geometry::GeometryParams;
+use crate::geometry::{GeometryParams, Plate};
 use crate::trajectory::{Sampling, Sinusoid};
 
 use DefaultValue::{AboveHome, Off, Value};
@@ -72,7 +72,7 @@ fn geometry(d: &mut Declare) {
         "base radius",
         Metre,
         m,
-        Value(seed.base_radius),
+        Value(1.0),
         g(BaseRadius),
     );
     d.add(
@@ -80,7 +80,7 @@ fn geometry(d: &mut Declare) {
         "platform radius",
         Metre,
         m,
-        Value(seed.platform_radius),
+        Value(0.6),
         g(PlatformRadius),
     );
     d.add(
@@ -107,13 +107,10 @@ fn geometry(d: &mut Declare) {
         Off,
         g(LegMax),
     );
+    let (base_angles, platform_angles) = crate::layout::Layout::seed().angles();
     for (plate, angles, key) in [
-        (
-            "base",
-            seed.base_angles,
-            BaseAngle as fn(usize) -> GeometryKey,
-        ),
-        ("platform", seed.platform_angles, PlatformAngle),
+        ("base", base_angles, BaseAngle as fn(usize) -> GeometryKey),
+        ("platform", platform_angles, PlatformAngle),
     ] {
         for (i, angle) in angles.iter().enumerate() {
             d.add(
@@ -124,6 +121,23 @@ fn geometry(d: &mut Declare) {
                 Value(angle.degrees()),
                 g(key(i)),
             );
+        }
+    }
+    for (plate, joints) in [
+        (Plate::Base, seed.base.points()),
+        (Plate::Platform, seed.platform.points()),
+    ] {
+        for (i, point) in joints.iter().enumerate() {
+            for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
+                d.add(
+                    format!("geometry.{plate}_joints_m[{i}][{k}]"),
+                    format!("{plate} joint {} {axis}", i + 1),
+                    Metre,
+                    (-3.0, 3.0),
+                    Value(point[k]),
+                    g(Joint(plate, i, k)),
+                );
+            }
         }
     }
     for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {

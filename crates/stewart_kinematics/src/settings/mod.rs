@@ -163,6 +163,16 @@ pub enum SettingError {
         /// The scenario's trajectory kind.
         kind: &'static str,
     },
+    /// A circle key (radius, angle) for a plate whose joints are given as coordinates.
+    #[error(
+        "`{key}` does not apply: the {plate} joints are given as coordinates (`geometry.{plate}_joints_m`); set those instead"
+    )]
+    PlateGivenAsPoints {
+        /// The key.
+        key: String,
+        /// The plate.
+        plate: crate::geometry::Plate,
+    },
     /// An actuator key on a platform with linear legs.
     #[error("`{key}` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)")]
     NotRotary {
@@ -243,6 +253,15 @@ impl Setting {
                 });
             }
             _ => {}
+        }
+        if let Target::Geometry(key) = self.target
+            && let Some(plate) = key.circle_plate()
+            && scenario.geometry.params().plate(plate).circle().is_none()
+        {
+            return Err(SettingError::PlateGivenAsPoints {
+                key: self.key.clone(),
+                plate,
+            });
         }
         if !self.applies(scenario) {
             return Err(SettingError::NotApplicable {

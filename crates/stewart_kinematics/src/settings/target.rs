@@ -1,7 +1,7 @@
 //! What each setting reads and writes in a [`Scenario`].
 
 use crate::angle::Angle;
-use crate::geometry::Geometry;
+use crate::geometry::{Geometry, Plate, PlateJoints};
 use crate::rotary::{Actuator, RotaryActuators};
 use crate::scenario::Scenario;
 use crate::trajectory::{Channel, Sampling, Trajectory};
@@ -23,6 +23,8 @@ pub enum GeometryKey {
     BaseAngle(usize),
     /// Angle of platform joint `i` (0-based).
     PlatformAngle(usize),
+    /// Coordinate `k` (x, y, z) of joint `i` (0-based) of a plate, metres.
+    Joint(Plate, usize, usize),
     /// Component `i` (x, y, z) of the pivot offset.
     Pivot(usize),
 }
@@ -183,6 +185,10 @@ impl Target {
         match self {
             Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
             Target::Shape(key) => shape_value(trajectory, key).is_some(),
+            Target::Geometry(key) => match key.circle_plate() {
+                Some(plate) => scenario.geometry.params().plate(plate).circle().is_some(),
+                None => true,
+            },
             _ => true,
         }
     }
@@ -191,13 +197,24 @@ impl Target {
         let params = scenario.geometry.params();
         match self {
             Target::Geometry(key) => match key {
-                GeometryKey::BaseRadius => Some(params.base_radius),
-                GeometryKey::PlatformRadius => Some(params.platform_radius),
+                GeometryKey::BaseRadius => params.base.circle().map(|c| c.0),
+                GeometryKey::PlatformRadius => params.platform.circle().map(|c| c.0),
                 GeometryKey::HomeHeight => Some(params.home_height),
                 GeometryKey::LegMin => params.stroke.min,
                 GeometryKey::LegMax => params.stroke.max,
-                GeometryKey::BaseAngle(i) => params.base_angles.get(i).map(|a| a.degrees()),
-                GeometryKey::PlatformAngle(i) => params.platform_angles.get(i).map(|a| a.degrees()),
+                GeometryKey::BaseAngle(i) => params
+                    .base
+                    .circle()
+                    .and_then(|c| c.1.get(i).map(|a| a.degrees())),
+                GeometryKey::PlatformAngle(i) => params
+                    .platform
+                    .circle()
+                    .and_then(|c| c.1.get(i).map(|a| a.degrees())),
+                GeometryKey::Joint(plate, i, k) => scenario
+                    .geometry
+                    .joints(plate)
+                    .get(i)
+                    .and_then(|p| p.get(k).copied()),
                 GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
             },
             Target::Actuator(key) => {
@@ -299,19 +316,35 @@ fn set_geometry(
 ) -> Result<(), String> {
     let mut p = scenario.geometry.params().clone();
     let v = value.unwrap_or(f64::NAN);
-    let slot = |list: &mut [Angle; 6], i: usize| {
-        if let Some(a) = list.get_mut(i) {
+    let radius = |joints: &mut PlateJoints| {
+        if let PlateJoints::Circle { radius, .. } = joints {
+            *radius = v;
+        }
+    };
+    let angle = |joints: &mut PlateJoints, i: usize| {
+        if let PlateJoints::Circle { angles, .. } = joints
+            && let Some(a) = angles.get_mut(i)
+        {
             *a = Angle::from_degrees(v);
         }
     };
     match key {
-        GeometryKey::BaseRadius => p.base_radius = v,
-        GeometryKey::PlatformRadius => p.platform_radius = v,
+        GeometryKey::BaseRadius => radius(&mut p.base),
+        GeometryKey::PlatformRadius => radius(&mut p.platform),
         GeometryKey::HomeHeight => p.home_height = v,
         GeometryKey::LegMin => p.stroke.min = value,
         GeometryKey::LegMax => p.stroke.max = value,
-        GeometryKey::BaseAngle(i) => slot(&mut p.base_angles, i),
-        GeometryKey::PlatformAngle(i) => slot(&mut p.platform_angles, i),
+        GeometryKey::BaseAngle(i) => angle(&mut p.base, i),
+        GeometryKey::PlatformAngle(i) => angle(&mut p.platform, i),
+        GeometryKey::Joint(plate, i, k) => {
+            // A coordinate turns a plate on a circle into the coordinate form.
+            let joints = p.plate_mut(plate);
+            let mut points = joints.points();
+            if let Some(c) = points.get_mut(i).and_then(|pt| pt.get_mut(k)) {
+                *c = v;
+            }
+            *joints = PlateJoints::Points(points);
+        }
         GeometryKey::Pivot(i) => {
             if let Some(c) = p.pivot.get_mut(i) {
                 *c = v;
@@ -320,6 +353,18 @@ fn set_geometry(
     }
     scenario.geometry = Geometry::new(p).map_err(|e| e.to_string())?;
     Ok(())
+}
+
+impl GeometryKey {
+    /// The plate whose circle this key describes (radius and angles), if any: such keys
+    /// apply only while that plate's joints are given on a circle.
+    pub fn circle_plate(self) -> Option<Plate> {
+        match self {
+            GeometryKey::BaseRadius | GeometryKey::BaseAngle(_) => Some(Plate::Base),
+            GeometryKey::PlatformRadius | GeometryKey::PlatformAngle(_) => Some(Plate::Platform),
+            _ => None,
+        }
+    }
 }
 
 /// Rebuild the servos with one number changed. Setting one end of an absent servo range

@@ -2,10 +2,10 @@
 //! rotary servos with horns, rods, range and trims), layout with its separation angles,
 //! every joint angle and the pivot.
 
-use stewart_kinematics::Layout;
 use stewart_kinematics::settings::{
     self, ActuatorKey, ActuatorKind, GeometryKey, Group, Target, switch_actuator,
 };
+use stewart_kinematics::{Layout, Plate};
 
 use super::widgets::{edit_error, setting_slider};
 use crate::viewer::state::ViewerState;
@@ -28,13 +28,33 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             egui::CollapsingHeader::new(t.tr("geometry.joint_angles"))
                 .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
-                    for i in 0..6 {
-                        setting_slider(ui, state, Target::Geometry(GeometryKey::BaseAngle(i)));
-                    }
-                    for i in 0..6 {
-                        setting_slider(ui, state, Target::Geometry(GeometryKey::PlatformAngle(i)));
+                    for (plate, key) in [
+                        (
+                            Plate::Base,
+                            GeometryKey::BaseAngle as fn(usize) -> GeometryKey,
+                        ),
+                        (Plate::Platform, GeometryKey::PlatformAngle),
+                    ] {
+                        if state
+                            .scenario()
+                            .geometry
+                            .params()
+                            .plate(plate)
+                            .circle()
+                            .is_none()
+                        {
+                            ui.label(egui::RichText::new(t.tr(points_note(plate))).small());
+                        }
+                        for i in 0..6 {
+                            setting_slider(ui, state, Target::Geometry(key(i)));
+                        }
                     }
                 });
+            egui::CollapsingHeader::new(t.tr("geometry.coordinates"))
+                .default_open(state.look.expand_panels)
+                .show(ui, |ui| joint_table(ui, state))
+                .header_response
+                .on_hover_text(t.tr("geometry.coordinates_tip"));
             egui::CollapsingHeader::new(t.tr("geometry.pivot"))
                 .default_open(state.look.expand_panels)
                 .show(ui, |ui| {
@@ -44,6 +64,62 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 });
             edit_error(ui, state, &[Group::Geometry]);
         });
+}
+
+/// The note under the joint angles for a plate whose joints are coordinates.
+fn points_note(plate: Plate) -> &'static str {
+    match plate {
+        Plate::Base => "geometry.base_points",
+        Plate::Platform => "geometry.platform_points",
+    }
+}
+
+/// The twelve joints as an editable table: one row per joint, x, y and z in metres.
+/// An edit goes through the setting `geometry.{plate}_joints_m[i][k]`, validated like a
+/// typed `--set`.
+fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let mut edit = None;
+    egui::Grid::new("joint_table")
+        .num_columns(4)
+        .striped(true)
+        .show(ui, |ui| {
+            ui.label(t.tr("geometry.joint"));
+            let columns = ["x", "y", "z"].map(|axis| ui.label(axis).id);
+            ui.end_row();
+            for plate in [Plate::Base, Plate::Platform] {
+                let joints = *state.scenario().geometry.joints(plate);
+                let letter = match plate {
+                    Plate::Base => "B",
+                    Plate::Platform => "P",
+                };
+                for (i, joint) in joints.iter().enumerate() {
+                    let row = ui.label(format!("{letter}{}", i + 1)).id;
+                    for (k, column) in columns.iter().enumerate() {
+                        let mut v = joint[k];
+                        let response = ui
+                            .add(
+                                egui::DragValue::new(&mut v)
+                                    .speed(0.001)
+                                    .max_decimals(6)
+                                    .min_decimals(3),
+                            )
+                            .labelled_by(row)
+                            .labelled_by(*column);
+                        if response.changed() {
+                            edit = Some((plate, i, k, v));
+                        }
+                    }
+                    ui.end_row();
+                }
+            }
+        });
+    if let Some((plate, i, k, v)) = edit {
+        state.apply(
+            settings::of(Target::Geometry(GeometryKey::Joint(plate, i, k))),
+            Some(v),
+        );
+    }
 }
 
 /// The actuator kind and its numbers: the stroke of linear legs (sliders that apply to
