@@ -71,6 +71,113 @@ fn assembly_modes_lists_several_solutions_per_row() {
     );
 }
 
+/// Dietmaier's published platform and legs (`dietmaier.toml`, `dietmaier_legs.csv`).
+const DIETMAIER_BASE: [[f64; 3]; 6] = [
+    [0.0, 0.0, 0.0],
+    [1.107915, 0.0, 0.0],
+    [0.549094, 0.756063, 0.0],
+    [0.735077, -0.223935, 0.525991],
+    [0.514188, -0.526063, -0.368418],
+    [0.590473, 0.094733, -0.205018],
+];
+const DIETMAIER_PLATFORM: [[f64; 3]; 6] = [
+    [0.0, 0.0, 0.0],
+    [0.542805, 0.0, 0.0],
+    [0.956919, -0.528915, 0.0],
+    [0.665885, -0.353482, 1.402538],
+    [0.478359, 1.158742, 0.107672],
+    [-0.137087, -0.235121, 0.353913],
+];
+const DIETMAIER_LEGS: [f64; 6] = [1.0, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071];
+
+/// The legs of a pose row `x, y, z, roll, pitch, yaw` (degrees), computed here from
+/// the rotation `Rz(yaw)·Ry(pitch)·Rx(roll)` written out by hand.
+fn dietmaier_legs_at(row: &[f64]) -> [f64; 6] {
+    let [r, p, y] = [row[3], row[4], row[5]].map(f64::to_radians);
+    let (sr, cr, sp, cp, sy, cy) = (r.sin(), r.cos(), p.sin(), p.cos(), y.sin(), y.cos());
+    let m = [
+        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+        [-sp, cp * sr, cp * cr],
+    ];
+    std::array::from_fn(|i| {
+        let a = DIETMAIER_PLATFORM[i];
+        let b = DIETMAIER_BASE[i];
+        let d: Vec<f64> = (0..3)
+            .map(|k| row[k] + m[k][0] * a[0] + m[k][1] * a[1] + m[k][2] * a[2] - b[k])
+            .collect();
+        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+    })
+}
+
+#[test]
+fn dietmaiers_platform_has_forty_real_assembly_modes() {
+    let scenario = format!(
+        "{}/../../tests/cli/dietmaier.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let legs = scenario.replace("dietmaier.toml", "dietmaier_legs.csv");
+    let o = stewart(&[
+        "fk",
+        "--scenario",
+        &scenario,
+        "--legs",
+        &legs,
+        "--assembly-modes",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (header, rows) = parse_csv(&stdout(&o));
+    assert_eq!(
+        header.join(","),
+        "mode,x,y,z,roll_deg,pitch_deg,yaw_deg,iterations,residual"
+    );
+    assert_eq!(rows.len(), 40);
+    for (k, row) in rows.iter().enumerate() {
+        assert_eq!(row[0], (k + 1) as f64);
+        assert!(row[8] < 1e-12, "mode {}: residual {}", k + 1, row[8]);
+        // Each pose really has Dietmaier's legs (to the printed precision).
+        let l = dietmaier_legs_at(&row[1..7]);
+        for i in 0..6 {
+            assert!(
+                (l[i] - DIETMAIER_LEGS[i]).abs() < 1e-12,
+                "mode {}: {l:?}",
+                k + 1
+            );
+        }
+    }
+    // Forty different placements: any two differ by more than a millimetre somewhere.
+    for i in 0..40 {
+        for j in i + 1..40 {
+            let apart = (1..7).any(|c| (rows[i][c] - rows[j][c]).abs() > 1e-3);
+            assert!(apart, "modes {} and {} coincide", i + 1, j + 1);
+        }
+    }
+    // The preset has those legs at home, so its modes are the same forty.
+    let dir = tempdir();
+    let home = write(
+        dir.path(),
+        "legs.csv",
+        "L1,L2,L3,L4,L5,L6\n1.0,0.645275,1.086284,1.503439,1.281933,0.771071\n",
+    );
+    let o = stewart(&[
+        "fk",
+        "--preset",
+        "dietmaier",
+        "--legs",
+        &home,
+        "--assembly-modes",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, preset_rows) = parse_csv(&stdout(&o));
+    assert_eq!(preset_rows.len(), 40);
+    assert!(preset_rows.iter().any(|r| {
+        r[1..7]
+            .iter()
+            .zip([0.0, 0.0, 0.372525366226035, 0.0, 0.0, 0.0])
+            .all(|(a, b)| (a - b).abs() < 1e-9)
+    }));
+}
+
 #[test]
 fn fk_refuses_an_architecturally_singular_geometry_and_bad_rows() {
     let dir = tempdir();

@@ -203,7 +203,7 @@ pub struct SettingsArgs {
 #[derive(Debug, Args, Default)]
 pub struct ScenarioArgs {
     /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes, servo-desk,
-    /// crank-rig.
+    /// crank-rig, dietmaier.
     #[arg(long, value_name = "NAME", conflicts_with = "scenario")]
     pub preset: Option<String>,
     /// A scenario file (TOML).

@@ -129,6 +129,84 @@ pub fn canonical(pose: &Pose) -> Pose {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::forward::homotopy::SplitMix;
+    use crate::geometry::{GeometryParams, PlateJoints};
+
+    /// A random general platform: joints anywhere in a 2 m box (the platform's within
+    /// 1.5 m), and a random pose above the base whose legs are the ones to solve.
+    fn random_platform(seed: u64) -> (Geometry, Pose) {
+        let mut rng = SplitMix(seed);
+        let mut point = |scale: f64| Vector3::new(rng.next(), rng.next(), 0.3 * rng.next()) * scale;
+        let base = std::array::from_fn(|_| point(1.0));
+        let platform = std::array::from_fn(|_| point(0.7));
+        let mut p = GeometryParams::seed();
+        p.base = PlateJoints::Points(base);
+        p.platform = PlateJoints::Points(platform);
+        let g = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+        let truth = Pose::from_xyz_rpy_deg(
+            [0.2 * rng.next(), 0.2 * rng.next(), 0.9 + 0.2 * rng.next()],
+            [20.0 * rng.next(), 20.0 * rng.next(), 90.0 * rng.next()],
+        );
+        (g, truth)
+    }
+
+    /// An independent search: Newton from `n` random poses (positions in a 4 m box,
+    /// uniformly random orientations), the distinct converged ones.
+    fn multi_start(g: &Geometry, lengths: &[f64; 6], n: usize, seed: u64) -> Vec<Pose> {
+        let mut rng = SplitMix(seed);
+        let options = ForwardOptions {
+            max_iterations: 200,
+            ..ForwardOptions::default()
+        };
+        let mut found: Vec<Pose> = Vec::new();
+        for _ in 0..n {
+            let q = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                rng.next(),
+                rng.next(),
+                rng.next(),
+                rng.next(),
+            ));
+            let position = Vector3::new(rng.next(), rng.next(), rng.next()) * 2.0;
+            let start = from_rotation(position, q.to_rotation_matrix().matrix());
+            if let Ok(s) = g.forward_from(g.base_joints(), lengths, &start, &options)
+                && !found.iter().any(|f| same_placement(f, &s.pose))
+            {
+                found.push(canonical(&s.pose));
+            }
+        }
+        found
+    }
+
+    #[test]
+    fn the_homotopy_finds_every_mode_a_dense_multi_start_search_finds() {
+        for seed in 1..=4 {
+            let (g, truth) = random_platform(seed);
+            let lengths = g.leg_lengths(&truth);
+            let all = g
+                .all_assembly_modes(&lengths)
+                .unwrap_or_else(|e| panic!("{e}"));
+            // A general platform: 40 complex solutions, the non-real ones in conjugate
+            // pairs, so an even number of real ones; the pose the legs came from is one.
+            assert_eq!(all.complex_solutions, 40, "platform {seed}");
+            assert_eq!(all.modes.len() % 2, 0, "platform {seed}");
+            assert!(all.modes.iter().any(|m| same_placement(&m.pose, &truth)));
+            assert!(all.modes.iter().all(|m| m.residual <= 1e-12));
+            let searched = multi_start(&g, &lengths, 1500, 100 + seed);
+            for s in &searched {
+                assert!(
+                    all.modes.iter().any(|m| same_placement(&m.pose, s)),
+                    "platform {seed}: the search found a mode the homotopy missed: {s:?}"
+                );
+            }
+            // The search is no proof, but on these platforms it finds most of them.
+            assert!(
+                2 * searched.len() >= all.modes.len(),
+                "platform {seed}: {} searched, {} modes",
+                searched.len(),
+                all.modes.len()
+            );
+        }
+    }
 
     #[test]
     fn finds_the_pose_and_its_mirror_image_below_the_base() {

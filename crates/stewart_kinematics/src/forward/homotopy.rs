@@ -210,10 +210,11 @@ fn track<H: Homotopy>(h: &H, start: &Coords) -> PathEnd {
 
 /// A small deterministic random generator (SplitMix64): the start platform and `γ` are
 /// fixed by a seed, so every run tracks the same paths.
-struct SplitMix(u64);
+pub(crate) struct SplitMix(pub(crate) u64);
 
 impl SplitMix {
-    fn next(&mut self) -> f64 {
+    /// The next number, uniform in [−1, 1).
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut x = self.0;
         x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);

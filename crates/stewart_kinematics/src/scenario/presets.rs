@@ -1,7 +1,7 @@
 //! Scenario presets shipped in `assets/presets/` and compiled into the program.
 
 /// Every preset: its name and its TOML text.
-pub const PRESETS: [(&str, &str); 9] = [
+pub const PRESETS: [(&str, &str); 10] = [
     ("seed", include_str!("../../../../assets/presets/seed.toml")),
     (
         "paired",
@@ -31,6 +31,10 @@ pub const PRESETS: [(&str, &str); 9] = [
     (
         "crank-rig",
         include_str!("../../../../assets/presets/crank-rig.toml"),
+    ),
+    (
+        "dietmaier",
+        include_str!("../../../../assets/presets/dietmaier.toml"),
     ),
 ];
 

@@ -247,7 +247,7 @@ fn trajectory_errors_name_the_key() {
     assert!(missing_file.starts_with("s.toml, line 9, column 8: `trajectory.file` names `nowhere.csv`, which cannot be opened"), "{missing_file}");
     assert_eq!(
         Scenario::preset("spiral").unwrap_err().to_string(),
-        "preset `spiral`: no preset is called `spiral` (presets: seed, paired, circle, figure8, helix, sway, keyframes, servo-desk, crank-rig)"
+        "preset `spiral`: no preset is called `spiral` (presets: seed, paired, circle, figure8, helix, sway, keyframes, servo-desk, crank-rig, dietmaier)"
     );
 }
 
