@@ -99,3 +99,66 @@ fn a_refused_setting_is_one_clear_error() {
         assert!(o.stdout.is_empty(), "{args:?}");
     }
 }
+
+#[test]
+fn as_coordinates_writes_the_same_platform_with_every_joint_a_point() {
+    let dir = crate::tempdir();
+    let file = dir.path().join("paired-xyz.toml");
+    let file = file.to_string_lossy().into_owned();
+    let o = stewart(&[
+        "settings",
+        "--preset",
+        "paired",
+        "--as-coordinates",
+        "--out",
+        &file,
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{e}"));
+    assert!(text.contains("base_joints_m = [\n  ["), "{text}");
+    assert!(text.contains("platform_joints_m = [\n  ["), "{text}");
+    assert!(
+        !text.contains("base_radius") && !text.contains("angles_deg"),
+        "{text}"
+    );
+    // The same legs over the whole motion, to the last bit of the printed numbers.
+    let a = stewart(&["solve", "--preset", "paired"]);
+    let b = stewart(&["solve", "--scenario", &file]);
+    assert!(b.status.success(), "{}", stderr(&b));
+    let (_, rows_a) = parse_csv(&stdout(&a));
+    let (_, rows_b) = parse_csv(&stdout(&b));
+    assert_eq!(rows_a.len(), rows_b.len());
+    for (x, y) in rows_a.iter().zip(&rows_b) {
+        for (u, v) in x.iter().zip(y) {
+            assert!((u - v).abs() < 1e-14, "{x:?} vs {y:?}");
+        }
+    }
+    // Its table says where the circle keys went.
+    let o = stewart(&["settings", "--scenario", &file]);
+    let table = stdout(&o);
+    let radius = table
+        .lines()
+        .find(|l| l.starts_with("geometry.base_radius "))
+        .unwrap_or_else(|| panic!("{table}"));
+    assert!(radius.contains("(joints as coordinates)"), "{radius}");
+    assert!(
+        table.contains("geometry.platform_joints_m[5][2]"),
+        "{table}"
+    );
+    // One coordinate changed on the command line moves that joint only.
+    let moved = stewart(&[
+        "solve",
+        "--scenario",
+        &file,
+        "--set",
+        "geometry.base_joints_m[2][1]=0.45",
+    ]);
+    assert!(moved.status.success(), "{}", stderr(&moved));
+    let (header, rows_m) = parse_csv(&stdout(&moved));
+    let leg = |name: &str| header.iter().position(|h| h == name).unwrap_or(0);
+    assert_ne!(rows_m[0][leg("L3")], rows_b[0][leg("L3")]);
+    assert_eq!(rows_m[0][leg("L1")], rows_b[0][leg("L1")]);
+    // --out needs --as-coordinates.
+    let o = stewart(&["settings", "--preset", "seed", "--out", &file]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}

@@ -196,6 +196,14 @@ pub struct SettingsArgs {
     /// The scenario whose values to show.
     #[command(flatten)]
     pub scenario: ScenarioArgs,
+    /// Instead of the table, write the scenario with every joint as coordinates
+    /// (`base_joints_m`, `platform_joints_m`): the same platform, ready to edit as built.
+    #[arg(long)]
+    pub as_coordinates: bool,
+    /// Write the scenario here (whole or not at all) instead of standard output; with
+    /// `--as-coordinates`.
+    #[arg(long, value_name = "FILE", requires = "as_coordinates")]
+    pub out: Option<PathBuf>,
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset),

@@ -4,15 +4,23 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
+use stewart_kinematics::settings::Target;
 use stewart_kinematics::{Scenario, bounds, settings};
 
 use crate::cli::SettingsArgs;
-use crate::source;
+use crate::{output, source};
 
 /// Run the command.
 pub fn run(args: &SettingsArgs) -> Result<ExitCode> {
+    if args.as_coordinates {
+        let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
+        let scenario = source::load(&args.scenario)?;
+        let text = scenario.as_coordinates().to_toml();
+        output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let scenario = source::load(&args.scenario)?;
-    crate::output::stdout(table(&scenario).as_bytes())?;
+    output::stdout(table(&scenario).as_bytes())?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -41,6 +49,10 @@ pub fn table(scenario: &Scenario) -> String {
         .map(|s| {
             let value = if s.applies(scenario) {
                 number(s.get(scenario))
+            } else if let Target::Geometry(key) = s.target
+                && key.circle_plate().is_some()
+            {
+                "(joints as coordinates)".to_owned()
             } else {
                 "(other kinds)".to_owned()
             };

@@ -8,6 +8,8 @@
 //! home_height = 0.8                # m
 //! base_angles_deg = [0, 60, 120, 180, 240, 300]
 //! platform_angles_deg = [30, 90, 150, 210, 270, 330]
+//! # or, for either plate, its six joints as points (base frame / platform frame), m:
+//! # base_joints_m = [[1.0, 0.0, 0.0], [0.5, 0.866, 0.05], …]   (instead of radius and angles)
 //! leg_min = 0.55                   # m, optional
 //! leg_max = 1.30                   # m, optional
 //! [pivot]                          # optional: rotation centre in the platform frame
@@ -131,6 +133,20 @@ impl Scenario {
     /// scenario. A pose table is written out as inline keyframes.
     pub fn to_toml(&self) -> String {
         write::to_toml(self)
+    }
+
+    /// The same scenario with both plates' joints given as coordinates
+    /// (`base_joints_m`, `platform_joints_m`): the same platform, so the same legs.
+    pub fn as_coordinates(&self) -> Scenario {
+        let mut params = self.geometry.params().clone();
+        params.base = params.base.as_points();
+        params.platform = params.platform.as_points();
+        let geometry = crate::Geometry::new(params)
+            .unwrap_or_else(|e| unreachable!("the same joints validate again: {e}"));
+        Scenario {
+            geometry,
+            ..self.clone()
+        }
     }
 }
 

@@ -200,5 +200,31 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             .then(|| s(scenario.link.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
-    toml::to_string(&file).unwrap_or_else(|e| unreachable!("scenario serialisation: {e}"))
+    let text =
+        toml::to_string(&file).unwrap_or_else(|e| unreachable!("scenario serialisation: {e}"));
+    one_point_per_line(&text)
+}
+
+/// `key = [[x, y, z], [x, y, z], …]` written one point per line, as people write them.
+fn one_point_per_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 64);
+    for line in text.lines() {
+        match line.split_once(" = [[") {
+            Some((key, rest)) if key.ends_with("_joints_m") && rest.ends_with("]]") => {
+                out.push_str(key);
+                out.push_str(" = [\n");
+                for point in rest.trim_end_matches("]]").split("], [") {
+                    out.push_str("  [");
+                    out.push_str(point);
+                    out.push_str("],\n");
+                }
+                out.push_str("]\n");
+            }
+            _ => {
+                out.push_str(line);
+                out.push('\n');
+            }
+        }
+    }
+    out
 }

@@ -11,12 +11,18 @@ fn preset(name: &str) -> Scenario {
 fn lookup(text: &str, key: &str) -> Option<f64> {
     let mut value: toml::Value = toml::from_str(text).unwrap_or_else(|e| panic!("{e}"));
     for part in key.split('.') {
-        let (name, index) = match part.split_once('[') {
-            Some((name, rest)) => (name, rest.trim_end_matches(']').parse::<usize>().ok()),
-            None => (part, None),
+        let (name, indexes) = match part.split_once('[') {
+            Some((name, rest)) => (
+                name,
+                rest.trim_end_matches(']')
+                    .split("][")
+                    .filter_map(|i| i.parse::<usize>().ok())
+                    .collect(),
+            ),
+            None => (part, Vec::new()),
         };
         value = value.get(name)?.clone();
-        if let Some(i) = index {
+        for i in indexes {
             value = value.get(i)?.clone();
         }
     }
@@ -387,4 +393,74 @@ fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
         e.to_string().contains("applies to rotary platforms only"),
         "{e}"
     );
+}
+
+#[test]
+fn every_joint_coordinate_is_a_setting_and_editing_one_makes_the_plate_coordinates() {
+    let mut s = preset("seed");
+    // On a circle, the coordinates are read from it.
+    let y = find("geometry.base_joints_m[2][1]").unwrap_or_else(|e| panic!("{e}"));
+    let expected = s.geometry.base_joints()[2].y;
+    assert_eq!(y.get(&s), Some(expected));
+    assert!(find("geometry.base_radius").is_ok_and(|r| r.applies(&s)));
+    apply_all(&mut s, ["geometry.base_joints_m[2][1]=0.45"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.geometry.base_joints()[2].y, 0.45);
+    // The other joints did not move; the platform is still on its circle.
+    let seed = preset("seed");
+    for i in [0, 1, 3, 4, 5] {
+        assert_eq!(s.geometry.base_joints()[i], seed.geometry.base_joints()[i]);
+    }
+    assert!(s.geometry.params().platform.circle().is_some());
+    // The base's circle keys no longer apply, and say why when set.
+    let radius = find("geometry.base_radius").unwrap_or_else(|e| panic!("{e}"));
+    assert!(!radius.applies(&s));
+    let err = apply_all(&mut s, ["geometry.base_radius=1.2"]).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "`geometry.base_radius` does not apply: the base joints are given as coordinates (`geometry.base_joints_m`); set those instead"
+    );
+    // Written and read back: the file holds the coordinate form, read by the toml crate.
+    let text = s.to_toml();
+    assert_eq!(lookup(&text, "geometry.base_joints_m[2][1]"), Some(0.45));
+    assert_eq!(lookup(&text, "geometry.base_radius"), None);
+    assert_eq!(lookup(&text, "geometry.platform_radius"), Some(0.6));
+    // Coordinates refused like the file reader refuses them.
+    let err = apply_all(&mut s, ["geometry.base_joints_m[4][0]=nan"]).unwrap_err();
+    assert!(err.to_string().contains("finite"), "{err}");
+    let same = format!(
+        "geometry.platform_joints_m[1][0]={}",
+        s.geometry.platform_joints()[0].x
+    );
+    let mut twins = s.clone();
+    apply_all(
+        &mut twins,
+        [same.as_str(), "geometry.platform_joints_m[1][1]=0.123"],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let same_y = format!(
+        "geometry.platform_joints_m[1][1]={}",
+        s.geometry.platform_joints()[0].y
+    );
+    let err = apply_all(&mut twins, [same_y.as_str()]).unwrap_err();
+    assert!(err.to_string().contains("coincide"), "{err}");
+}
+
+#[test]
+fn a_scenario_as_coordinates_is_the_same_platform() {
+    for name in presets::names() {
+        let s = preset(name);
+        let c = s.as_coordinates();
+        assert!(c.geometry.params().base.circle().is_none());
+        assert!(c.geometry.params().platform.circle().is_none());
+        assert_eq!(c.geometry.base_joints(), s.geometry.base_joints());
+        assert_eq!(c.geometry.platform_joints(), s.geometry.platform_joints());
+        let back = Scenario::from_toml_str(&c.to_toml(), "c.toml", None)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(back.geometry, c.geometry, "{name}");
+        let pose = s.geometry.home_pose();
+        assert_eq!(
+            back.geometry.leg_lengths(&pose),
+            s.geometry.leg_lengths(&pose)
+        );
+    }
 }
