@@ -141,7 +141,7 @@ impl Scenario {
         let mut params = self.geometry.params().clone();
         params.base = params.base.as_points();
         params.platform = params.platform.as_points();
-        let geometry = crate::Geometry::new(params)
+        let geometry = Geometry::new(params)
             .unwrap_or_else(|e| unreachable!("the same joints validate again: {e}"));
         Scenario {
             geometry,
