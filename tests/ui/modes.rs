@@ -3,6 +3,7 @@
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::playback::MotionMode;
+use stewart_kinematics::forward::assembly::same_placement;
 
 use crate::harness;
 
@@ -60,4 +61,62 @@ fn the_view_toolbar_switches_leg_colours_and_labels() {
     h.get_by_label("Labels").click();
     h.run();
     assert!(!h.state().look.coloured_legs && !h.state().look.labels);
+}
+
+#[test]
+fn next_assembly_mode_steps_through_all_forty_of_dietmaiers_platform() {
+    let mut h = crate::tall_harness("dietmaier", 1000.0);
+    // At home the legs are Dietmaier's.
+    h.get_by_label("Manual pose").click();
+    h.run();
+    let start = h.state().pose();
+    assert_eq!(start, h.state().scenario().geometry.home_pose());
+    let legs = h.state().scenario().geometry.leg_lengths(&start);
+    let mut seen: Vec<stewart_kinematics::Pose> = vec![start];
+    for step in 1..=40 {
+        h.get_by_label("Next assembly mode").click();
+        h.run();
+        assert_eq!(h.state().playback.mode, MotionMode::Manual);
+        let pose = h.state().pose();
+        let now = h.state().scenario().geometry.leg_lengths(&pose);
+        for i in 0..6 {
+            assert!(
+                (now[i] - legs[i]).abs() < 1e-9,
+                "step {step}: {now:?} vs {legs:?}"
+            );
+        }
+        let (_, n) = h
+            .state()
+            .assembly
+            .shown
+            .unwrap_or_else(|| panic!("no mode shown"));
+        assert_eq!(n, 40);
+        if step < 40 {
+            assert!(
+                !seen.iter().any(|p| same_placement(p, &pose)),
+                "step {step} came back early"
+            );
+            seen.push(pose);
+        } else {
+            // Forty steps: every mode once, and back where it started.
+            assert!(same_placement(&pose, &start));
+        }
+    }
+    assert!(
+        h.query_by_label_contains("of 40 with these legs").is_some(),
+        "the count is shown"
+    );
+}
+
+#[test]
+fn an_architecturally_singular_platform_has_no_modes_to_step_through() {
+    let mut h = harness("seed");
+    h.get_by_label("Next assembly mode").click();
+    h.run();
+    assert!(h.state().assembly_error.is_some());
+    assert!(
+        h.query_by_label_contains("architecturally singular: the legs do not determine")
+            .is_some()
+    );
+    assert_eq!(h.state().playback.mode, MotionMode::Trajectory);
 }

@@ -13,6 +13,7 @@
 //! - [`shots`]: screenshots of the 3D view (any size, transparent) or the window;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that.
 
+pub mod assembly;
 pub mod derived;
 pub mod design;
 pub mod export_job;

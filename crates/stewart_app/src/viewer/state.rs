@@ -55,6 +55,10 @@ pub struct ViewerState {
     pub design: super::design::DesignTool,
     /// The workspace surface and the conditioning slice in the 3D view.
     pub workspace: super::workspace::WorkspaceTool,
+    /// The assembly modes of the legs shown, stepped through one by one.
+    pub assembly: super::assembly::AssemblyBrowser,
+    /// Why the last step to another assembly mode found none.
+    pub assembly_error: Option<String>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     reach: super::reach::ReachCache,
 }
@@ -116,6 +120,8 @@ impl ViewerState {
             shots: super::shots::Shots::default(),
             design: super::design::DesignTool::default(),
             workspace: super::workspace::WorkspaceTool::default(),
+            assembly: super::assembly::AssemblyBrowser::default(),
+            assembly_error: None,
             reach: super::reach::ReachCache::default(),
             scenario,
         }
@@ -495,6 +501,23 @@ impl ViewerState {
                     .motion
                     .trajectory
                     .pose_at(start + self.playback.time)
+            }
+        }
+    }
+
+    /// Show the next assembly mode of the legs (or servo angles) shown now: the platform
+    /// in another pose with the same actuators, in manual mode.
+    pub fn next_assembly_mode(&mut self) {
+        let pose = self.pose();
+        match self.assembly.next(&self.scenario.geometry, &pose) {
+            Ok(next) => {
+                self.playback.mode = MotionMode::Manual;
+                self.playback.manual = next;
+                self.assembly_error = None;
+            }
+            Err(why) => {
+                self.assembly.shown = None;
+                self.assembly_error = Some(why);
             }
         }
     }

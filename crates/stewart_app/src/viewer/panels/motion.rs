@@ -42,11 +42,40 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             t.tr("motion.manual"),
         );
     });
+    assembly_modes(ui, state);
     match state.playback.mode {
         MotionMode::Manual => manual(ui, state),
         MotionMode::Trajectory => trajectory(ui, state),
     }
     edit_error(ui, state, &[Group::Trajectory]);
+}
+
+/// The button that shows the next assembly mode of the legs shown, and which one it is.
+fn assembly_modes(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    ui.horizontal(|ui| {
+        if ui
+            .button(t.tr("motion.next_mode"))
+            .on_hover_text(t.tr("motion.next_mode_tip"))
+            .clicked()
+        {
+            state.next_assembly_mode();
+        }
+        let shown = state.assembly.shown.filter(|_| {
+            state.playback.mode == MotionMode::Manual && state.assembly_error.is_none()
+        });
+        if let Some((k, n)) = shown {
+            ui.label(t.fmt("motion.mode_of", &[("k", &(k + 1)), ("n", &n)]));
+        }
+    });
+    if let Some(why) = &state.assembly_error {
+        let text = if why == "architecture" {
+            t.tr("motion.modes_singular").to_owned()
+        } else {
+            t.fmt("motion.no_modes", &[("why", why)])
+        };
+        ui.colored_label(ui.visuals().warn_fg_color, text);
+    }
 }
 
 fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {

@@ -1,0 +1,69 @@
+//! Stepping through the assembly modes of the legs shown: every other pose the platform
+//! can take with the same six leg lengths (or, for servos, the same six servo angles),
+//! found by the core's homotopy solver.
+
+use stewart_kinematics::forward::assembly::same_placement;
+use stewart_kinematics::{Angle, Geometry, Pose};
+
+/// What the modes were computed for: the geometry and the legs (or servo angles).
+#[derive(Clone, Debug, PartialEq)]
+struct Key {
+    geometry: Geometry,
+    actuation: [f64; 6],
+}
+
+/// The modes of the last legs asked about, and which one is shown.
+#[derive(Clone, Debug, Default)]
+pub struct AssemblyBrowser {
+    key: Option<Key>,
+    modes: Vec<Pose>,
+    /// Index of the mode shown and how many there are, after a step.
+    pub shown: Option<(usize, usize)>,
+}
+
+/// Two actuations closer than this (metres or radians) are the same legs.
+const SAME_ACTUATION: f64 = 1e-9;
+
+impl AssemblyBrowser {
+    /// The mode after the one at `pose`, among the modes of the legs (or servo angles)
+    /// that hold `pose` on `geometry`: the pose to show, or why there is none.
+    pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, String> {
+        if geometry.architecture().singular {
+            return Err("architecture".to_owned());
+        }
+        let actuation = match geometry.servo_angles(pose) {
+            Some(Ok(angles)) => angles.map(|a| a.radians()),
+            Some(Err(e)) => return Err(e.to_string()),
+            None => geometry.leg_lengths(pose),
+        };
+        let same = self.key.as_ref().is_some_and(|k| {
+            k.geometry == *geometry
+                && k.actuation
+                    .iter()
+                    .zip(&actuation)
+                    .all(|(a, b)| (a - b).abs() < SAME_ACTUATION)
+        });
+        if !same {
+            let solved = if geometry.rotary().is_some() {
+                geometry.servo_assembly_modes(&actuation.map(Angle::from_radians))
+            } else {
+                geometry.assembly_modes(&actuation)
+            };
+            self.modes = solved
+                .map_err(|e| e.to_string())?
+                .iter()
+                .map(|m| m.pose)
+                .collect();
+            self.key = Some(Key {
+                geometry: geometry.clone(),
+                actuation,
+            });
+        }
+        let n = self.modes.len();
+        let here = self.modes.iter().position(|m| same_placement(m, pose));
+        let next = here.map_or(0, |i| (i + 1) % n.max(1));
+        let pose = *self.modes.get(next).ok_or("no real pose")?;
+        self.shown = Some((next, n));
+        Ok(pose)
+    }
+}
