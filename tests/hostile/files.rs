@@ -260,3 +260,68 @@ fn endless_inputs_are_cut_off_not_read_forever() {
     o.assert_refused();
     assert!(o.stderr.contains("larger than 16 MiB"), "{}", o.stderr);
 }
+
+#[test]
+fn bad_joint_coordinates_are_one_located_error_and_nothing_is_written() {
+    let dir = tempdir();
+    let good = String::from_utf8(preset_text("dietmaier")).unwrap_or_else(|e| panic!("{e}"));
+    let first = "  [0.0, 0.0, 0.0],\n";
+    for (name, text, expected) in [
+        (
+            "mixed.toml",
+            good.replace("home_height =", "base_radius = 1.0\nhome_height ="),
+            "line 12, column 15: `base_radius` and `base_joints_m` both describe the base joints",
+        ),
+        (
+            "five.toml",
+            good.replacen(first, "", 1),
+            "`base_joints_m` must list 6 points [x, y, z] (one per leg), got 5",
+        ),
+        (
+            "seven.toml",
+            good.replacen(first, &format!("{first}{first}"), 1),
+            "got 7",
+        ),
+        (
+            "two.toml",
+            good.replacen("[0.0, 0.0, 0.0]", "[0.0, 0.0]", 1),
+            "line 14, column 3: `base_joints_m[0]` must be a point [x, y, z] in metres, got 2 numbers",
+        ),
+        (
+            "nan.toml",
+            good.replacen("[1.107915, 0.0, 0.0]", "[1.107915, nan, 0.0]", 1),
+            "line 15, column 14: `base_joints_m[1][1]` must be a finite number, got NaN",
+        ),
+        (
+            "inf.toml",
+            good.replacen("[1.107915, 0.0, 0.0]", "[1.107915, 0.0, -inf]", 1),
+            "`base_joints_m[1][2]` must be a finite number, got -inf",
+        ),
+        (
+            "same.toml",
+            good.replacen("[1.107915, 0.0, 0.0]", "[0.0, 0.0, 0.0]", 1),
+            "line 15, column 3: base joints 1 and 2 coincide",
+        ),
+        (
+            "far.toml",
+            good.replacen("[1.107915, 0.0, 0.0]", "[1e300, 0.0, 0.0]", 1),
+            "geometry.base_joints_m[1][0]",
+        ),
+    ] {
+        let scenario = write(dir.path(), name, text.as_bytes());
+        let out = path(dir.path(), "out.csv");
+        let o = run(&["solve", "--scenario", &scenario, "--out", &out]);
+        o.assert_refused();
+        assert!(
+            o.stderr.contains(name) && o.stderr.contains(expected),
+            "{name}: {}",
+            o.stderr
+        );
+        assert_eq!(o.stderr.lines().count(), 1, "{name}: {}", o.stderr);
+        assert!(
+            !std::path::Path::new(&out).exists(),
+            "{name}: an output was written"
+        );
+        std::fs::remove_file(&scenario).unwrap_or_else(|e| panic!("{e}"));
+    }
+}

@@ -211,8 +211,8 @@ pub fn config() -> proptest::test_runner::Config {
     }
 }
 
-/// Every shipped preset.
-pub const PRESETS: [&str; 7] = [
+/// Shipped presets with linear legs (`dietmaier` with its joints as coordinates).
+pub const PRESETS: [&str; 8] = [
     "seed",
     "paired",
     "circle",
@@ -220,4 +220,5 @@ pub const PRESETS: [&str; 7] = [
     "helix",
     "sway",
     "keyframes",
+    "dietmaier",
 ];
