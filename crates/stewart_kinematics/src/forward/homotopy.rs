@@ -352,28 +352,23 @@ mod tests {
     use nalgebra::Vector3;
 
     /// P. Dietmaier's platform (1998) whose 40 assembly modes are all real: base joints,
-    /// platform joints and leg lengths as published.
+    /// platform joints and leg lengths as published (the CLI tests' files).
     pub(crate) fn dietmaier() -> ([Vector3<f64>; 6], [Vector3<f64>; 6], [f64; 6]) {
-        let base = [
-            [0.0, 0.0, 0.0],
-            [1.107915, 0.0, 0.0],
-            [0.549094, 0.756063, 0.0],
-            [0.735077, -0.223935, 0.525991],
-            [0.514188, -0.526063, -0.368418],
-            [0.590473, 0.094733, -0.205018],
-        ];
-        let platform = [
-            [0.0, 0.0, 0.0],
-            [0.542805, 0.0, 0.0],
-            [0.956919, -0.528915, 0.0],
-            [0.665885, -0.353482, 1.402538],
-            [0.478359, 1.158742, 0.107672],
-            [-0.137087, -0.235121, 0.353913],
-        ];
-        let lengths = [1.0, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071];
+        let text = include_str!("../../../../tests/cli/dietmaier.toml");
+        let s = crate::Scenario::from_toml_str(text, "dietmaier.toml", None)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let legs = include_str!("../../../../tests/cli/dietmaier_legs.csv");
+        let row: Vec<f64> = legs
+            .lines()
+            .nth(1)
+            .unwrap_or_default()
+            .split(',')
+            .map(|v| v.parse().unwrap_or(f64::NAN))
+            .collect();
+        let lengths = std::array::from_fn(|i| row.get(i).copied().unwrap_or(f64::NAN));
         (
-            base.map(Vector3::from),
-            platform.map(Vector3::from),
+            *s.geometry.base_joints(),
+            *s.geometry.platform_joints(),
             lengths,
         )
     }
