@@ -103,6 +103,19 @@ impl FfmpegChild {
         let _ = self.child.wait();
     }
 
+    /// Whether ffmpeg exits with a failure within `patience` (polled, never blocking
+    /// longer): after its input broke, this tells an ffmpeg that quit from one that hangs.
+    fn exited_with_failure(&mut self, patience: std::time::Duration) -> bool {
+        let until = std::time::Instant::now() + patience;
+        loop {
+            match self.child.try_wait() {
+                Ok(Some(status)) => return !status.success(),
+                Ok(None) if std::time::Instant::now() < until => std::thread::sleep(POLL),
+                _ => return false,
+            }
+        }
+    }
+
     /// Wait for ffmpeg to finish after its input was closed; its error output on failure.
     fn finish(&mut self, staged: &Path, out: &Path) -> Result<()> {
         let status = self.child.wait().context("ffmpeg did not finish")?;
@@ -604,9 +617,9 @@ pub fn export(
     if let Some(e) = failure {
         let mut e = e;
         if let Some(f) = ffmpeg.as_mut() {
-            // ffmpeg that quit by itself explains a failed write better than the write does.
-            let quit =
-                sink_failed && matches!(f.child.try_wait(), Ok(Some(status)) if !status.success());
+            // ffmpeg that quit by itself explains a failed write better than the write does;
+            // its input may close a moment before it exits, so give it a little time.
+            let quit = sink_failed && f.exited_with_failure(std::time::Duration::from_secs(2));
             f.kill();
             if quit && let Some(Staging::Mp4 { file, out, .. }) = &staging {
                 e = anyhow!("ffmpeg failed: {}", f.message(file, out.shown()));
