@@ -167,11 +167,11 @@ fn correct<H: Homotopy>(h: &H, z: &Coords, s: f64, iterations: usize) -> Option<
     None
 }
 
-/// Follow the path from `start` at `s = 0` to `s = 1`.
-fn track<H: Homotopy>(h: &H, start: &Coords) -> PathEnd {
+/// Follow the path from `start` at `s = 0` to `s = 1`, in steps of at most `max_step`.
+fn track<H: Homotopy>(h: &H, start: &Coords, max_step: f64) -> PathEnd {
     let mut z = *start;
     let mut s = 0.0;
-    let mut ds: f64 = 0.02;
+    let mut ds: f64 = 0.02_f64.min(max_step);
     let mut good = 0;
     for _ in 0..MAX_STEPS {
         if s >= 1.0 {
@@ -185,7 +185,7 @@ fn track<H: Homotopy>(h: &H, start: &Coords) -> PathEnd {
                 s = if ds >= 1.0 - s { 1.0 } else { s + ds };
                 good += 1;
                 if good >= 2 {
-                    ds *= 2.0;
+                    ds = (ds * 2.0).min(max_step);
                     good = 0;
                 }
             }
@@ -206,6 +206,41 @@ fn track<H: Homotopy>(h: &H, start: &Coords) -> PathEnd {
         Some(z) => PathEnd { z, finished: true },
         None => PathEnd { z, finished: false },
     }
+}
+
+/// Follow every path; where two end at the same nonsingular solution, one of them
+/// jumped to another path on the way: follow those again with smaller steps.
+fn track_all<H: Homotopy>(h: &H, starts: &[Coords]) -> Vec<PathEnd> {
+    let mut ends: Vec<PathEnd> = starts.par_iter().map(|s| track(h, s, 1.0)).collect();
+    for max_step in [0.02, 0.002] {
+        let again = crowded(&ends);
+        if again.is_empty() {
+            break;
+        }
+        let retracked: Vec<(usize, PathEnd)> = again
+            .par_iter()
+            .map(|&i| (i, track(h, &starts[i], max_step)))
+            .collect();
+        for (i, end) in retracked {
+            ends[i] = end;
+        }
+    }
+    ends
+}
+
+/// The paths whose proper end another path shares.
+fn crowded(ends: &[PathEnd]) -> Vec<usize> {
+    let proper = |e: &PathEnd| e.finished && is_proper(&e.z);
+    (0..ends.len())
+        .filter(|&i| {
+            proper(&ends[i])
+                && ends.iter().enumerate().any(|(j, other)| {
+                    j != i
+                        && proper(other)
+                        && (other.z - ends[i].z).norm() < SAME_SOLUTION * (1.0 + ends[i].z.norm())
+                })
+        })
+        .collect()
 }
 
 /// A small deterministic random generator (SplitMix64): the start platform and `γ` are
@@ -292,7 +327,7 @@ fn generic_start(seed: u64) -> Option<StartSystem> {
             v / patch.dot(&v)
         })
         .collect();
-    let ends: Vec<PathEnd> = starts.par_iter().map(|s| track(&homotopy, s)).collect();
+    let ends = track_all(&homotopy, &starts);
     let solutions = distinct_ends(&ends);
     (solutions.len() == GENERIC_SOLUTIONS).then_some(StartSystem {
         legs,
@@ -321,11 +356,7 @@ pub fn all_solutions(legs: &[LegParams; 6]) -> Option<Vec<Coords>> {
         to: *legs,
         patch: start.patch,
     };
-    let ends: Vec<PathEnd> = start
-        .solutions
-        .par_iter()
-        .map(|s| track(&homotopy, s))
-        .collect();
+    let ends = track_all(&homotopy, &start.solutions);
     Some(distinct_ends(&ends))
 }
 
@@ -392,6 +423,23 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn paths_that_share_an_end_are_found_for_retracking() {
+        let at = |v: f64| Coords::from_element(C::new(v, 0.5));
+        let end = |z: Coords, finished: bool| PathEnd { z, finished };
+        let ends = [
+            end(at(1.0), true),
+            end(at(2.0), true),
+            end(at(1.0 + 1e-12), true),
+            end(at(2.0), false),
+            end(Coords::zeros(), true),
+            end(Coords::zeros(), true),
+        ];
+        // 0 and 2 end together; 1 shares its end only with an unfinished path; the last
+        // two are on the spurious set e = 0, where many paths end.
+        assert_eq!(crowded(&ends), vec![0, 2]);
     }
 
     #[test]
