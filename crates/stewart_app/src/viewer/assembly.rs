@@ -21,19 +21,25 @@ pub struct AssemblyBrowser {
     pub shown: Option<(usize, usize)>,
 }
 
+/// Why no other mode can be shown.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NoMode {
+    /// The geometry is architecturally singular: the legs do not determine the pose.
+    Singular,
+    /// The solver's or the servos' reason, in the core's words.
+    Other(String),
+}
+
 /// Two actuations closer than this (metres or radians) are the same legs.
 const SAME_ACTUATION: f64 = 1e-9;
 
 impl AssemblyBrowser {
     /// The mode after the one at `pose`, among the modes of the legs (or servo angles)
     /// that hold `pose` on `geometry`: the pose to show, or why there is none.
-    pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, String> {
-        if geometry.architecture().singular {
-            return Err("architecture".to_owned());
-        }
+    pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, NoMode> {
         let actuation = match geometry.servo_angles(pose) {
             Some(Ok(angles)) => angles.map(|a| a.radians()),
-            Some(Err(e)) => return Err(e.to_string()),
+            Some(Err(e)) => return Err(NoMode::Other(e.to_string())),
             None => geometry.leg_lengths(pose),
         };
         let same = self.key.as_ref().is_some_and(|k| {
@@ -44,13 +50,17 @@ impl AssemblyBrowser {
                     .all(|(a, b)| (a - b).abs() < SAME_ACTUATION)
         });
         if !same {
+            // Checked once per geometry and legs, like the modes themselves.
+            if geometry.architecture().singular {
+                return Err(NoMode::Singular);
+            }
             let solved = if geometry.rotary().is_some() {
                 geometry.servo_assembly_modes(&actuation.map(Angle::from_radians))
             } else {
                 geometry.assembly_modes(&actuation)
             };
             self.modes = solved
-                .map_err(|e| e.to_string())?
+                .map_err(|e| NoMode::Other(e.to_string()))?
                 .iter()
                 .map(|m| m.pose)
                 .collect();
@@ -62,7 +72,10 @@ impl AssemblyBrowser {
         let n = self.modes.len();
         let here = self.modes.iter().position(|m| same_placement(m, pose));
         let next = here.map_or(0, |i| (i + 1) % n.max(1));
-        let pose = *self.modes.get(next).ok_or("no real pose")?;
+        let pose = *self
+            .modes
+            .get(next)
+            .ok_or_else(|| NoMode::Other("no real pose".to_owned()))?;
         self.shown = Some((next, n));
         Ok(pose)
     }

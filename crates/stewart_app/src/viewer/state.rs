@@ -58,7 +58,7 @@ pub struct ViewerState {
     /// The assembly modes of the legs shown, stepped through one by one.
     pub assembly: super::assembly::AssemblyBrowser,
     /// Why the last step to another assembly mode found none.
-    pub assembly_error: Option<String>,
+    pub assembly_error: Option<super::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     reach: super::reach::ReachCache,
 }

@@ -42,8 +42,6 @@ pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<()
 
 /// Servos sized for `geometry`'s plates (see [`switch_actuator`]).
 fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, String> {
-    let p = geometry.params();
-    let _ = p;
     let horn = 0.3 * geometry.plate_radius(crate::geometry::Plate::Base);
     // Each horn at right angles to its joint's direction from the base centre.
     let directions: [f64; 6] = std::array::from_fn(|i| {

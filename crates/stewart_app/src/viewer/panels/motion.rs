@@ -11,6 +11,7 @@ use stewart_kinematics::trajectory::{
 
 use super::widgets::{self, edit_error, setting_slider};
 use crate::i18n::words;
+use crate::viewer::assembly::NoMode;
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
 use crate::viewer::teleop;
@@ -69,10 +70,9 @@ fn assembly_modes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     if let Some(why) = &state.assembly_error {
-        let text = if why == "architecture" {
-            t.tr("motion.modes_singular").to_owned()
-        } else {
-            t.fmt("motion.no_modes", &[("why", why)])
+        let text = match why {
+            NoMode::Singular => t.tr("motion.modes_singular").to_owned(),
+            NoMode::Other(why) => t.fmt("motion.no_modes", &[("why", why)]),
         };
         ui.colored_label(ui.visuals().warn_fg_color, text);
     }
