@@ -2,6 +2,7 @@
 //! prints, writes and returns.
 
 mod analysis;
+mod calibrate;
 mod check;
 mod chinese;
 mod design;
@@ -144,6 +145,7 @@ fn help_lists_every_command() {
             "solve",
             "check",
             "fk",
+            "calibrate",
             "workspace",
             "forces",
             "design",

@@ -32,6 +32,11 @@ pub enum Command {
     Check(CheckArgs),
     /// Forward kinematics: poses from a table of leg lengths, as CSV.
     Fk(FkArgs),
+    /// Calibrate a built platform: its joint coordinates and actuator offsets from
+    /// measured poses and the leg lengths (or servo angles) commanded for them, by
+    /// nonlinear least squares; reports what the measurements determine and writes the
+    /// calibrated scenario with its joints as coordinates.
+    Calibrate(CalibrateArgs),
     /// Reachable workspace at a fixed orientation (volume, extent, points) and the
     /// orientation range at a position.
     Workspace(WorkspaceArgs),
@@ -300,6 +305,40 @@ pub struct FkArgs {
     /// them, highest platform first) instead of following one branch.
     #[arg(long, conflicts_with = "cold")]
     pub assembly_modes: bool,
+}
+
+/// Arguments of `stewart calibrate`.
+#[derive(Debug, Args)]
+pub struct CalibrateArgs {
+    /// The platform as designed: a preset or a file (the starting values).
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// Measured poses and what was commanded for each: a CSV with columns x, y, z
+    /// (metres), roll_deg, pitch_deg, yaw_deg (the scenario's base and platform frames),
+    /// and L1..L6 (metres) — or theta1..theta6 (model servo angles in degrees, as
+    /// `stewart solve` gives them) for a rotary-servo platform; other columns are
+    /// ignored; `-` reads standard input.
+    #[arg(long, value_name = "MEASUREMENTS.csv")]
+    pub measurements: PathBuf,
+    /// Write the calibrated scenario here (whole or not at all): joints as coordinates,
+    /// servo offsets in the trims, leg-length offsets in the link's channel offsets.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Keep a group of parameters at the scenario's values (known from elsewhere);
+    /// repeat for several.
+    #[arg(long, value_enum, value_name = "GROUP")]
+    pub hold: Vec<HoldGroup>,
+}
+
+/// A group of calibration parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HoldGroup {
+    /// The six base joints.
+    Base,
+    /// The six platform joints.
+    Platform,
+    /// The six actuator offsets.
+    Offsets,
 }
 
 /// Three comma-separated finite numbers, such as `0,0,0.8`.

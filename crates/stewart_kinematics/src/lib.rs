@@ -18,6 +18,7 @@
 //! - [`rotary`]: rotary-servo (6-RSS) actuators and their closed-form inverse kinematics;
 //! - [`link_settings`]: the `[link]` table (transport, rate, channel map) for real hardware;
 //! - [`settings`], [`bounds`]: every adjustable number and the accepted range of each;
+//! - [`calibration`]: joints and actuator offsets of a built platform from measured poses;
 //! - [`scenario`]: scenario files (TOML) and the shipped presets;
 //! - [`table`]: numeric CSV tables with located errors;
 //! - [`text`]: input text with a size cap and plain words for foreign encodings.
@@ -27,6 +28,7 @@ pub mod angle;
 pub mod architecture;
 pub mod batch;
 pub mod bounds;
+pub mod calibration;
 pub mod checks;
 pub mod design;
 pub mod differences;

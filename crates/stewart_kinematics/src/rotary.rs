@@ -343,7 +343,7 @@ impl RotaryActuators {
 }
 
 /// `x` (radians) wrapped to (−π, π].
-fn wrap_half_turn(x: f64) -> f64 {
+pub(crate) fn wrap_half_turn(x: f64) -> f64 {
     let tau = std::f64::consts::TAU;
     let w = x - tau * (x / tau).round();
     if w <= -std::f64::consts::PI {

@@ -1,5 +1,6 @@
 //! One module per subcommand.
 
+pub mod calibrate;
 pub mod check;
 pub mod design;
 pub mod device_sim;
