@@ -167,7 +167,7 @@ proptest! {
     }
 
     /// Random CSV tables (cells from numbers, extremes, garbage, quotes; ragged rows;
-    /// random bytes) through `solve --poses` and `fk --legs`.
+    /// random bytes) through `solve --poses`, `fk --legs` and `calibrate --measurements`.
     #[test]
     fn random_tables_end_with_a_result_or_one_located_error(
         header in prop_oneof![
@@ -175,6 +175,7 @@ proptest! {
             Just("t,x,y,z,roll_deg,pitch_deg,yaw_deg".to_owned()),
             Just("L1,L2,L3,L4,L5,L6".to_owned()),
             Just("t,L1,L2,L3,L4,L5,L6".to_owned()),
+            Just("x,y,z,roll_deg,pitch_deg,yaw_deg,L1,L2,L3,L4,L5,L6".to_owned()),
             "[a-zA-Z0-9_,\"]{0,40}",
         ],
         rows in proptest::collection::vec(
@@ -204,6 +205,7 @@ proptest! {
         for command in [
             vec!["solve", "--preset", "paired", "--poses", &table],
             vec!["fk", "--preset", "paired", "--legs", &table],
+            vec!["calibrate", "--preset", "paired", "--measurements", &table],
         ] {
             let out = path(dir.path(), "out.csv");
             let mut args = command.clone();
