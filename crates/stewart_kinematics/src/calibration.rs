@@ -188,6 +188,16 @@ pub enum CalibrationError {
         /// What happened.
         reason: &'static str,
     },
+    /// A residual is not a finite number (a platform joint on its anchor).
+    #[error(
+        "leg {leg}: a residual is not a finite number {at} (a platform joint exactly on its base joint or horn tip)"
+    )]
+    NotFinite {
+        /// The leg, from 1.
+        leg: usize,
+        /// Where: at the nominal or at the fitted joints.
+        at: &'static str,
+    },
     /// The calibrated joints are not a valid platform.
     #[error("the calibrated geometry is not a valid platform: {0}")]
     Invalid(GeometryError),

@@ -87,20 +87,23 @@ impl<'a> LegProblem<'a> {
         j
     }
 
-    /// The identification at `x`; a non-finite residual is an error naming `when`.
+    /// The identification at `x` (`at`: where, in words, for the error when a residual
+    /// is not finite there).
     fn identify(
         &self,
         leg: usize,
         model: &LegModel,
         x: &[f64; PARAMETERS],
-        when: &'static str,
+        at: &'static str,
     ) -> Result<Identification, CalibrationError> {
-        identifiability::identify(&self.scaled_jacobian(model, x)).ok_or(
-            CalibrationError::NotConverged {
-                leg: leg + 1,
-                reason: when,
-            },
-        )
+        identifiability::identify(&self.scaled_jacobian(model, x))
+            .ok_or(CalibrationError::NotFinite { leg: leg + 1, at })
+    }
+
+    /// The outcome when `id` leaves some combination undetermined.
+    fn undetermined(&self, leg: usize, id: &Identification) -> Option<LegOutcome> {
+        (!id.undetermined.is_empty())
+            .then(|| LegOutcome::Undetermined(combination_words(leg, &self.free, &id.undetermined)))
     }
 
     /// Calibrate leg `leg` (from 0).
@@ -109,18 +112,9 @@ impl<'a> LegProblem<'a> {
         let nominal = self.nominal(leg);
         // Identifiability at the nominal parameters first: a rank-deficient problem is
         // refused before any fit wanders along its free directions.
-        let at_nominal = self.identify(
-            leg,
-            &model,
-            &nominal,
-            "a residual is not finite at the nominal joints",
-        )?;
-        if !at_nominal.undetermined.is_empty() {
-            return Ok(LegOutcome::Undetermined(combination_words(
-                leg,
-                &self.free,
-                &at_nominal.undetermined,
-            )));
+        let at_nominal = self.identify(leg, &model, &nominal, "at the nominal joints")?;
+        if let Some(outcome) = self.undetermined(leg, &at_nominal) {
+            return Ok(outcome);
         }
         let fit = least_squares::fit(&model, nominal, &self.free, &self.reach).map_err(|f| {
             CalibrationError::NotConverged {
@@ -134,18 +128,9 @@ impl<'a> LegProblem<'a> {
                 },
             }
         })?;
-        let id = self.identify(
-            leg,
-            &model,
-            &fit.x,
-            "a residual is not finite at the fitted joints",
-        )?;
-        if !id.undetermined.is_empty() {
-            return Ok(LegOutcome::Undetermined(combination_words(
-                leg,
-                &self.free,
-                &id.undetermined,
-            )));
+        let id = self.identify(leg, &model, &fit.x, "at the fitted joints")?;
+        if let Some(outcome) = self.undetermined(leg, &id) {
+            return Ok(outcome);
         }
         let m = self.measurements.len();
         let cost_after = model.cost(&fit.x);
