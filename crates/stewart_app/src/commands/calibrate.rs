@@ -8,6 +8,7 @@ use stewart_kinematics::calibration::{
     Calibration, Held, Measurement, Parameter, ParameterUnit, calibrate, calibrated_scenario,
 };
 use stewart_kinematics::table::NumericTable;
+use stewart_kinematics::trajectory::{POSE_COLUMNS, check_pose_ranges};
 use stewart_kinematics::{Pose, Scenario, bounds};
 
 use crate::cli::{CalibrateArgs, HoldGroup};
@@ -15,7 +16,6 @@ use crate::csv_io::read_input;
 use crate::output;
 use crate::source;
 
-const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
 const LEG_COLUMNS: [&str; 6] = ["L1", "L2", "L3", "L4", "L5", "L6"];
 const SERVO_COLUMNS: [&str; 6] = ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"];
 /// A measurement whose largest residual after calibration exceeds this many times the RMS
@@ -43,12 +43,7 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
             name.to_owned(),
         ))
     })?;
-    for name in ["x", "y", "z"] {
-        table.check_range(name, &bounds::symmetric(bounds::LENGTH_M), "m")?;
-    }
-    for name in ["roll_deg", "pitch_deg", "yaw_deg"] {
-        table.check_range(name, &bounds::symmetric(180.0), "°")?;
-    }
+    check_pose_ranges(&table)?;
     for name in commanded_columns {
         if rotary {
             table.check_range(name, &bounds::symmetric(180.0), "°")?;

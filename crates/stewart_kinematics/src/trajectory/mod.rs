@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use crate::pose::Pose;
 pub use keyframes::{Interpolation, Keyframe, KeyframeError, Keyframes};
-pub use pose_table::{POSE_COLUMNS, PoseTable};
+pub use pose_table::{POSE_COLUMNS, PoseTable, check_pose_ranges};
 pub use shapes::{Circle, FigureEight, Helix, Sway};
 pub use sinusoid::{CHANNEL_NAMES, Channel, Sinusoid, Wave};
 

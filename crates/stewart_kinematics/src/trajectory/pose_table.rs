@@ -23,17 +23,25 @@ pub struct PoseTable {
     pub lines: Vec<u64>,
 }
 
+/// Check a table's pose columns ([`POSE_COLUMNS`]) against the accepted ranges of
+/// lengths and angles; the first value outside is an error naming its line.
+pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
+    use crate::bounds::{ANGLE_DEG, LENGTH_M, symmetric};
+    for name in &POSE_COLUMNS[..3] {
+        table.check_range(name, &symmetric(LENGTH_M), "m")?;
+    }
+    for name in &POSE_COLUMNS[3..] {
+        table.check_range(name, &symmetric(ANGLE_DEG), "°")?;
+    }
+    Ok(())
+}
+
 impl PoseTable {
     /// Read a pose table; `file` names the source in error messages.
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
-        use crate::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, symmetric};
+        use crate::bounds::{TIME_S, symmetric};
         let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
-        for name in &POSE_COLUMNS[..3] {
-            table.check_range(name, &symmetric(LENGTH_M), "m")?;
-        }
-        for name in &POSE_COLUMNS[3..] {
-            table.check_range(name, &symmetric(ANGLE_DEG), "°")?;
-        }
+        check_pose_ranges(&table)?;
         table.check_range("t", &symmetric(TIME_S), "s")?;
         let t_index = table.index("t");
         let values: Vec<[f64; 6]> = table
