@@ -67,6 +67,8 @@ fn a_dry_run_records_the_servo_angles_once_armed() {
         "0.2",
         "--set",
         "limits.servo_accel_max_deg_s2=off",
+        "--set",
+        "limits.servo_speed_max_deg_s=off",
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stderr(&o).starts_with("link: "), "{}", stderr(&o));
@@ -89,8 +91,9 @@ fn a_dry_run_records_the_servo_angles_once_armed() {
         );
         assert!(*t > previous, "{t} after {previous}");
         previous = *t;
-        // After the ramp and before the stop, the values are the trajectory's angles (the
-        // solve table has a sample every 10 ms: t = 0.02 k lands on one).
+        // After the ramp (0.2 s: with no rate limit, none lengthens it) and before the stop,
+        // the values are the trajectory's angles (the solve table has a sample every 10 ms:
+        // t = 0.02 k lands on one).
         if *t >= 0.2 && *t < 1.0 {
             let row = &rows[(t * 100.0).round() as usize];
             assert!((row[0] - t).abs() < 1e-9);
@@ -478,4 +481,107 @@ fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_bri
     assert!(rows[stop..last].iter().all(|r| r[2] == 1.0 && r[4] == 1.0));
     assert_eq!(rows[last][2], 0.0);
     assert_eq!(values(&rows[last]), home);
+}
+
+/// Send SIGINT to a child process.
+fn interrupt(child: &std::process::Child) {
+    let sent = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .map(|s| s.success());
+    assert_eq!(sent.ok(), Some(true));
+}
+
+#[test]
+fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let record = dir.path().join("frames.txt");
+    // The paired preset at 200 Hz: 4 s in, its legs are centimetres from home, and home is
+    // a tenth of the 0.5 m/s limit away: the way home takes seconds.
+    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["link", "--preset", "paired", "--dry-run", "--loop"])
+        .args(["--rate", "200", "--out"])
+        .arg(&record)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(4000));
+    interrupt(&link);
+    std::thread::sleep(Duration::from_millis(300));
+    interrupt(&link);
+    let started = std::time::Instant::now();
+    while link.try_wait().ok().flatten().is_none() {
+        assert!(started.elapsed().as_secs() < 20, "the link did not stop");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    let line = err
+        .lines()
+        .find(|l| l.starts_with("link: emergency stop"))
+        .unwrap_or_else(|| panic!("no emergency line: {err}"));
+    assert!(
+        line.contains("left at x = ") && line.contains(", L6 = "),
+        "{line}"
+    );
+    let frames = recorded(&std::fs::read_to_string(&record).unwrap_or_default());
+    let stops: Vec<usize> = (0..frames.len())
+        .filter(|&k| frames[k].1.flags.estop)
+        .collect();
+    assert_eq!(stops.len(), 2, "{stops:?}");
+    // Between the stops the way home (armed, home flag); from the second, disarmed frames
+    // with the values where the platform was, for 250 ms, and nothing after.
+    assert!(
+        frames[stops[0]..stops[1]]
+            .iter()
+            .all(|(_, f)| f.flags.armed && f.flags.home)
+    );
+    let tail = &frames[stops[1]..];
+    assert!(
+        tail.iter()
+            .all(|(_, f)| !f.flags.armed && f.values == tail[0].1.values)
+    );
+    let lasted = tail[tail.len() - 1].0 - tail[0].0;
+    assert!((0.25 - 1e-9..0.3).contains(&lasted), "{lasted}");
+    // The line names the values of the last frame (µm in the frame, metres in the line).
+    let l1 = f64::from(tail[0].1.values[0]) * 1e-6;
+    assert!(line.contains(&format!("L1 = {l1:.6} m")), "{line} vs {l1}");
+    // Not home: the way home was cut short.
+    let home_frame = frames[0].1.values;
+    assert_ne!(tail[0].1.values, home_frame);
+}
+
+#[test]
+fn once_armed_the_values_sent_are_the_checked_trajectory() {
+    // The case: paired, default limits (0.5 m/s, 5 m/s²), which `check` passes.
+    let checked = stewart(&["check", "--preset", "paired"]);
+    assert_eq!(checked.status.code(), Some(0), "{}", stderr(&checked));
+    let solved = stewart(&["solve", "--preset", "paired"]);
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let l1 = header.iter().position(|c| c == "L1").unwrap_or(7);
+    let step = rows[1][0] - rows[0][0];
+    for rate in ["200", "1000"] {
+        let o = stewart(&["link", "--preset", "paired", "--dry-run", "--rate", rate]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let frames = recorded(&stdout(&o));
+        let mut compared = 0;
+        let mut worst: f64 = 0.0;
+        for (t, f) in &frames {
+            // After the ramp (2 s asked, a little longer for the limits), until the stop; on
+            // the solve table's own sample times.
+            let k = (t / step).round() as usize;
+            if *t < 3.0 || k + 1 >= rows.len() || (t - rows[k][0]).abs() > 1e-9 {
+                continue;
+            }
+            for i in 0..6 {
+                let want = rows[k][l1 + i] * 1e6;
+                worst = worst.max((f64::from(f.values[i]) - want).abs());
+            }
+            compared += 1;
+        }
+        assert!(compared > 100, "{rate} Hz: {compared}");
+        // Within the rounding to the micrometre of the wire.
+        assert!(worst <= 0.5 + 1e-6, "{rate} Hz: {worst} µm");
+    }
 }

@@ -66,17 +66,19 @@ pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
     let g = &scenario.geometry;
     let l = &scenario.limits;
     let [lo, hi] = g.quantity_limits();
-    let (range, speed, accel) = if g.rotary().is_some() {
+    let (range, speed, accel, jerk) = if g.rotary().is_some() {
         (
             (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
             l.servo_speed_max,
             l.servo_accel_max,
+            l.servo_jerk_max,
         )
     } else {
         (
             (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
             l.leg_speed_max,
             l.leg_accel_max,
+            l.leg_jerk_max,
         )
     };
     let stop = match scenario.link.stop {
@@ -90,6 +92,7 @@ pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
             range: [range; 6],
             speed,
             accel,
+            jerk,
         },
         scenario.link.ramp_s,
         stop,

@@ -8,6 +8,7 @@ pub mod export;
 pub mod hardware;
 pub mod i18n;
 pub mod interrupt;
+pub mod link_plan;
 pub mod output;
 pub mod readout;
 pub mod source;

@@ -70,6 +70,24 @@ impl Geometry {
         }
     }
 
+    /// The pose whose actuator values are `values` (leg lengths in metres or servo angles
+    /// in degrees): forward kinematics searched from `near` (the last pose known, or
+    /// home), or why there is none.
+    pub fn pose_from_actuator_values(
+        &self,
+        values: &[f64; 6],
+        near: &Pose,
+    ) -> Result<Pose, String> {
+        let options = crate::forward::ForwardOptions::default();
+        let solution = if self.rotary().is_some() {
+            let angles = values.map(crate::angle::Angle::from_degrees);
+            self.forward_servos(&angles, near, &options)
+        } else {
+            self.forward(values, near, &options)
+        };
+        solution.map(|s| s.pose).map_err(|e| e.to_string())
+    }
+
     /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
     /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
     pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
@@ -119,5 +137,32 @@ mod tests {
             assert!((values[0][i] - angles[i].degrees()).abs() < 1e-9);
             assert!(values[1][i].is_nan());
         }
+    }
+
+    #[test]
+    fn the_pose_from_the_values_at_a_pose_is_that_pose() {
+        let lifted = |g: &Geometry| {
+            let h = g.home_pose().to_coordinates();
+            Pose::from_coordinates([h[0] + 0.004, h[1] - 0.003, h[2] + 0.005, 0.03, -0.02, 0.05])
+        };
+        // The paired preset (the seed's layout is singular at home) and a rotary platform.
+        let paired = crate::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        for g in [paired.geometry, servo_geometry()] {
+            let pose = lifted(&g);
+            let values = g
+                .actuator_values_at(&pose)
+                .unwrap_or_else(|e| panic!("{e}"));
+            let back = g
+                .pose_from_actuator_values(&values, &g.home_pose())
+                .unwrap_or_else(|e| panic!("{e}"));
+            for (a, b) in back.to_coordinates().iter().zip(pose.to_coordinates()) {
+                assert!((a - b).abs() < 1e-9, "{a} vs {b}");
+            }
+        }
+        assert!(
+            Geometry::seed()
+                .pose_from_actuator_values(&[f64::NAN; 6], &Geometry::seed().home_pose())
+                .is_err()
+        );
     }
 }

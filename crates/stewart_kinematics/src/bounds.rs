@@ -27,6 +27,10 @@ pub const ACCEL_M_S2: f64 = 1e7;
 pub const ANGULAR_SPEED_DEG_S: f64 = 1e6;
 /// Largest angular acceleration limit, degrees per second squared.
 pub const ANGULAR_ACCEL_DEG_S2: f64 = 1e9;
+/// Largest jerk limit, metres per second cubed.
+pub const JERK_M_S3: f64 = 1e10;
+/// Largest angular jerk limit, degrees per second cubed.
+pub const ANGULAR_JERK_DEG_S3: f64 = 1e12;
 /// Largest pure number (ratios, condition-number thresholds).
 pub const RATIO: f64 = 1e12;
 /// Largest mass, kilograms.

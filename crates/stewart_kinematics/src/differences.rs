@@ -1,5 +1,5 @@
 //! Finite differences of a sampled series on a (possibly uneven) time grid: what leg
-//! speeds and accelerations (`checks::rates`) and the payload's velocities and
+//! speeds, accelerations and jerks (`checks::rates`) and the payload's velocities and
 //! accelerations (`forces`) are made of.
 //!
 //! Interior samples use central differences; at the two end samples the first
@@ -40,6 +40,24 @@ where
     Some((ahead - back) * (2.0 / (h0 + h1)))
 }
 
+/// Third derivative at sample `k` from the four samples around it (`k − 1 … k + 2`,
+/// shifted inside at the ends): six times their third divided difference, exact for cubics
+/// on an uneven grid. `None` with fewer than four samples.
+pub fn third_difference<T>(times: &[f64], values: &[T], k: usize) -> Option<T>
+where
+    T: Copy + Sub<Output = T> + Mul<f64, Output = T>,
+{
+    let n = values.len();
+    if n < 4 {
+        return None;
+    }
+    let a = k.saturating_sub(1).min(n - 4);
+    let (t, v) = (&times[a..a + 4], &values[a..a + 4]);
+    let first = |i: usize| (v[i + 1] - v[i]) * (1.0 / (t[i + 1] - t[i]));
+    let second = |i: usize| (first(i + 1) - first(i)) * (1.0 / (t[i + 2] - t[i]));
+    Some((second(1) - second(0)) * (6.0 / (t[3] - t[0])))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -63,5 +81,26 @@ mod tests {
         assert!((d0 - (v[1] - v[0]) / 0.1).abs() < 1e-15);
         assert_eq!(first_difference(&[0.0], &[1.0], 0), None);
         assert_eq!(second_difference(&[0.0, 1.0], &[1.0, 2.0], 0), None);
+    }
+
+    #[test]
+    fn the_third_difference_is_exact_for_a_cubic_on_an_uneven_grid() {
+        // v = 2 − t + 0.5 t² + 1.5 t³: its third derivative is 9 everywhere.
+        let times = [0.0, 0.07, 0.2, 0.26, 0.5, 0.55];
+        let values: Vec<f64> = times
+            .iter()
+            .map(|&t| 2.0 - t + 0.5 * t * t + 1.5 * t * t * t)
+            .collect();
+        for k in 0..times.len() {
+            let j = third_difference(&times, &values, k).unwrap_or(f64::NAN);
+            assert!((j - 9.0).abs() < 1e-9, "{k}: {j}");
+        }
+        // A parabola has none.
+        let p: Vec<f64> = times.iter().map(|&t| 3.0 * t * t).collect();
+        assert!(third_difference(&times, &p, 2).is_some_and(|j| j.abs() < 1e-9));
+        assert_eq!(
+            third_difference(&[0.0, 1.0, 2.0], &[1.0, 2.0, 3.0], 1),
+            None
+        );
     }
 }

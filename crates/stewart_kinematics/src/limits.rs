@@ -1,4 +1,4 @@
-//! Limits beyond the stroke: actuator speed and acceleration, joint cone angles, leg size.
+//! Limits beyond the stroke: actuator speed, acceleration and jerk, joint cone angles, leg size.
 //!
 //! Every limit is optional; an absent limit is not checked.
 
@@ -16,12 +16,18 @@ pub struct Limits {
     pub leg_speed_max: Option<f64>,
     /// Largest leg acceleration |d²L/dt²|, m/s².
     pub leg_accel_max: Option<f64>,
+    /// Largest leg jerk |d³L/dt³|, m/s³ (the link's trajectory generator keeps it too).
+    #[serde(default)]
+    pub leg_jerk_max: Option<f64>,
     /// Largest servo speed |dθ/dt| of a rotary platform, degrees per second.
     #[serde(default)]
     pub servo_speed_max: Option<f64>,
     /// Largest servo acceleration |d²θ/dt²| of a rotary platform, degrees per second squared.
     #[serde(default)]
     pub servo_accel_max: Option<f64>,
+    /// Largest servo jerk |d³θ/dt³| of a rotary platform, degrees per second cubed.
+    #[serde(default)]
+    pub servo_jerk_max: Option<f64>,
     /// Largest angle between a leg and the base normal at its base joint.
     pub base_cone: Option<Angle>,
     /// Largest angle between a leg and the platform normal at its platform joint.

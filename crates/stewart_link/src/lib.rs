@@ -5,6 +5,9 @@
 //! - [`crc`]: CRC-16/CCITT-FALSE, the frame checksum;
 //! - [`frame`]: the binary frame (sync, version, kind, sequence, flags, unit, six
 //!   fixed-point values, CRC) with its encoder and a resynchronising stream decoder;
+//! - [`generator`]: online trajectory generation (Ruckig's algorithm): each actuator
+//!   follows its target exactly when the target moves within the limits, else as fast as
+//!   the speed, acceleration and jerk limits allow, never leaving its range;
 //! - [`safety`]: the DISARMED → ARMING → ARMED → STOPPING state machine that decides,
 //!   tick by tick, what may be sent;
 //! - [`sender`]: the real-time thread: absolute deadlines, the supervisor, the wire;
@@ -17,6 +20,7 @@
 pub mod channels;
 pub mod crc;
 pub mod frame;
+pub mod generator;
 pub mod safety;
 pub mod sender;
 pub mod text;

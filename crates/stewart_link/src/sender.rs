@@ -10,6 +10,7 @@ use std::time::{Duration, Instant};
 
 use crate::channels::ChannelMap;
 use crate::frame::{Decoder, Flags, Frame, FrameKind};
+use crate::generator::Sample;
 use crate::safety::{LinkState, Supervisor};
 use crate::text;
 use crate::transport::Transport;
@@ -28,9 +29,11 @@ pub enum Format {
 pub enum Command {
     /// Start arming (ramp from the last values).
     Arm,
-    /// Emergency stop.
+    /// Emergency stop (a second one on the way home: disarm where the platform is, send
+    /// disarmed frames for [`EMERGENCY_TAIL_S`] and end the stream).
     EStop,
-    /// Bring the platform to rest as the stop mode says, disarm, and end the stream.
+    /// Bring the platform to rest as the stop mode says, disarm, and end the stream (a
+    /// second one on the way home is an emergency, as a second [`Command::EStop`]).
     Stop,
 }
 
@@ -122,6 +125,11 @@ pub struct Status {
     pub telemetry_frames: u64,
     /// The latest of them, with the stream time it came at.
     pub telemetry: Option<(f64, Frame)>,
+    /// The last values sent, natural units (where the platform was left, once disarmed).
+    pub values: [f64; 6],
+    /// A second stop ended the way home: the platform was left where [`Status::values`]
+    /// says.
+    pub emergency: bool,
 }
 
 /// How the stream ended.
@@ -156,8 +164,12 @@ pub struct Sender {
     handle: JoinHandle<Summary>,
 }
 
-/// The target at a stream time: six actuator values in natural units, or why there is none.
-pub type Target = Box<dyn FnMut(f64) -> Result<[f64; 6], String> + Send>;
+/// The target at a stream time: six actuator values in natural units (with their velocity
+/// and acceleration when the source knows them), or why there is none.
+pub type Target = Box<dyn FnMut(f64) -> Result<Sample, String> + Send>;
+
+/// How long disarmed frames follow an emergency stop before the stream ends, seconds.
+pub const EMERGENCY_TAIL_S: f64 = 0.25;
 
 /// The lowest and highest rates, hertz.
 pub const RATES_HZ: (f64, f64) = (10.0, 1000.0);
@@ -188,6 +200,8 @@ impl Sender {
             scheduling: String::new(),
             telemetry_frames: 0,
             telemetry: None,
+            values: *config.supervisor.last(),
+            emergency: false,
         }));
         let shared = Arc::clone(&status);
         let handle = std::thread::Builder::new()
@@ -310,14 +324,116 @@ impl Waiter {
     }
 }
 
+/// One stream between its ticks: the target, the supervisor's decisions mapped to the wire,
+/// encoded and sent, and what came back. The sender's thread drives it at its deadlines;
+/// [`Stream::tick`] is also what the benchmarks time.
+pub struct Stream {
+    config: SenderConfig,
+    target: Target,
+    transport: Box<dyn Transport>,
+    sequence: u16,
+    frames: u64,
+    failure: Option<String>,
+    note: Option<String>,
+    telemetry: Telemetry,
+    values: [f64; 6],
+}
+
+impl Stream {
+    /// A stream that has sent nothing yet.
+    pub fn new(config: SenderConfig, target: Target, transport: Box<dyn Transport>) -> Self {
+        let values = *config.supervisor.last();
+        Self {
+            config,
+            target,
+            transport,
+            sequence: 0,
+            frames: 0,
+            failure: None,
+            note: None,
+            telemetry: Telemetry::default(),
+            values,
+        }
+    }
+
+    /// The supervisor (to arm or stop it).
+    pub fn supervisor(&mut self) -> &mut Supervisor {
+        &mut self.config.supervisor
+    }
+
+    /// Why the stream failed, once it has (it then sends nothing more).
+    pub fn failure(&self) -> Option<&str> {
+        self.failure.as_deref()
+    }
+
+    /// One tick at stream time `t`: the target, the supervisor's decision, the frame (or
+    /// line) sent, the telemetry read. Returns whether something was sent. A failure (the
+    /// map refused a value, the transport failed) disarms the supervisor with its reason.
+    pub fn tick(&mut self, t: f64) -> bool {
+        let sv = &mut self.config.supervisor;
+        let tick = sv.tick_sample(t, (self.target)(t));
+        if tick.note.is_some() {
+            self.note = tick.note.clone();
+        }
+        self.values = tick.values;
+        let values = match self.config.map.wire(&tick.values) {
+            Ok(values) => values,
+            Err(e) => {
+                self.fail(format!("{e}; disarmed"));
+                return false;
+            }
+        };
+        let frame = Frame {
+            kind: FrameKind::SetPoint,
+            sequence: self.sequence,
+            flags: Flags {
+                armed: tick.armed,
+                estop: tick.estop,
+                home: tick.home,
+            },
+            unit: self.config.map.output().unit(),
+            values,
+        };
+        let sent = match self.config.format {
+            Format::Binary => Some(self.transport.send(t, &frame.encode())),
+            Format::Text => text::line(&frame).map(|line| self.transport.send(t, line.as_bytes())),
+        };
+        let delivered = match sent {
+            Some(Err(e)) => {
+                self.fail(format!("{e}; disarmed"));
+                return false;
+            }
+            Some(Ok(())) => {
+                self.frames += 1;
+                self.sequence = self.sequence.wrapping_add(1);
+                true
+            }
+            None => false,
+        };
+        if let Err(e) = self.telemetry.collect(self.transport.as_mut(), t) {
+            self.fail(format!("{e}; disarmed"));
+        }
+        delivered
+    }
+
+    fn fail(&mut self, why: String) {
+        self.config.supervisor.fault(why.clone());
+        self.failure = Some(why);
+    }
+}
+
 fn run(
-    mut config: SenderConfig,
-    mut target: Target,
-    mut transport: Box<dyn Transport>,
+    config: SenderConfig,
+    target: Target,
+    transport: Box<dyn Transport>,
     inbox: &Receiver<Command>,
     shared: &Mutex<Status>,
 ) -> Summary {
-    let period = 1.0 / config.rate_hz;
+    let rate_hz = config.rate_hz;
+    let period = 1.0 / rate_hz;
+    let arm_at_start = config.arm_at_start;
+    let stop_after = config.stop_after;
+    let mut stream = Stream::new(config, target, transport);
     let mut waiter = Waiter::new(period);
     let scheduling = priority::raise();
     shared
@@ -330,17 +446,13 @@ fn run(
     let mut period_error = Lateness::new();
     let mut last_send: Option<Instant> = None;
     // The shared status's timing figures are summed up ten times a second (not every tick).
-    let summary_every = ((config.rate_hz / 10.0).round() as u64).max(1);
-    let mut sequence: u16 = 0;
-    let mut frames = 0u64;
+    let summary_every = ((rate_hz / 10.0).round() as u64).max(1);
     let mut stopping = false;
-    let mut failure = None;
-    let mut note = None;
-    let sv = &mut config.supervisor;
     let mut k: u64 = 0;
     let mut skipped = 0u64;
     let mut first_tick = true;
-    let mut telemetry = Telemetry::default();
+    // After an emergency stop: when the disarmed tail ends.
+    let mut tail_until: Option<f64> = None;
     loop {
         let mut t = k as f64 * period;
         let mut deadline = start + Duration::from_secs_f64(t);
@@ -364,8 +476,9 @@ fn run(
                 .as_secs_f64()
                 * 1e6,
         );
+        let sv = stream.supervisor();
         // Arm on the first tick, whichever deadline that is (a stalled start skips some).
-        if std::mem::take(&mut first_tick) && config.arm_at_start {
+        if std::mem::take(&mut first_tick) && arm_at_start {
             let from = *sv.last();
             sv.arm(t, from);
         }
@@ -376,7 +489,13 @@ fn run(
                     sv.arm(t, from);
                 }
                 Ok(Command::EStop) => sv.estop(),
-                Ok(Command::Stop) => stopping = true,
+                Ok(Command::Stop) => {
+                    // A second stop on the way home is an emergency.
+                    if stopping && sv.state() == LinkState::Stopping {
+                        sv.estop();
+                    }
+                    stopping = true;
+                }
                 Err(TryRecvError::Empty) => break,
                 // Whoever commanded the stream is gone: stop it.
                 Err(TryRecvError::Disconnected) => {
@@ -385,77 +504,40 @@ fn run(
                 }
             }
         }
-        if config.stop_after.is_some_and(|d| t >= d) {
+        if stop_after.is_some_and(|d| t >= d) {
             stopping = true;
         }
         if stopping && matches!(sv.state(), LinkState::Arming | LinkState::Armed) {
             sv.estop();
         }
-        let tick = sv.tick(t, target(t));
-        if tick.note.is_some() {
-            note = tick.note.clone();
-        }
-        match config.map.wire(&tick.values) {
-            Ok(values) => {
-                let frame = Frame {
-                    kind: FrameKind::SetPoint,
-                    sequence,
-                    flags: Flags {
-                        armed: tick.armed,
-                        estop: tick.estop,
-                        home: tick.home,
-                    },
-                    unit: config.map.output().unit(),
-                    values,
-                };
-                let sent = match config.format {
-                    Format::Binary => Some(transport.send(t, &frame.encode())),
-                    Format::Text => {
-                        text::line(&frame).map(|line| transport.send(t, line.as_bytes()))
-                    }
-                };
-                match sent {
-                    Some(Err(e)) => {
-                        let why = format!("{e}; disarmed");
-                        sv.fault(why.clone());
-                        failure = Some(why);
-                    }
-                    Some(Ok(())) => {
-                        let now = Instant::now();
-                        if let Some(previous) = last_send {
-                            let interval = now.saturating_duration_since(previous).as_secs_f64();
-                            period_error.add((interval - period).abs() * 1e6);
-                        }
-                        last_send = Some(now);
-                        frames += 1;
-                        sequence = sequence.wrapping_add(1);
-                    }
-                    None => {}
-                }
-                if failure.is_none()
-                    && let Err(e) = telemetry.collect(transport.as_mut(), t)
-                {
-                    let why = format!("{e}; disarmed");
-                    sv.fault(why.clone());
-                    failure = Some(why);
-                }
+        if stream.tick(t) {
+            let now = Instant::now();
+            if let Some(previous) = last_send {
+                let interval = now.saturating_duration_since(previous).as_secs_f64();
+                period_error.add((interval - period).abs() * 1e6);
             }
-            Err(e) => {
-                let why = format!("{e}; disarmed");
-                sv.fault(why.clone());
-                failure = Some(why);
-            }
+            last_send = Some(now);
         }
-        let last = failure.is_some() || (stopping && sv.state() == LinkState::Disarmed);
+        let sv = &stream.config.supervisor;
+        if sv.emergency() && tail_until.is_none() {
+            tail_until = Some(t + EMERGENCY_TAIL_S);
+        }
+        let last = stream.failure.is_some()
+            || match tail_until {
+                Some(end) => t >= end - 1e-9,
+                None => stopping && sv.state() == LinkState::Disarmed,
+            };
         {
             let mut s = shared.lock().unwrap_or_else(PoisonError::into_inner);
             s.state = sv.state();
-            s.note.clone_from(&note);
-            s.frames = frames;
+            s.note.clone_from(&stream.note);
+            s.frames = stream.frames;
             s.skipped = skipped;
-            s.telemetry_frames = telemetry.frames;
-            s.telemetry = telemetry.latest;
+            s.telemetry_frames = stream.telemetry.frames;
+            s.telemetry = stream.telemetry.latest;
             s.time = t;
+            s.values = stream.values;
+            s.emergency = sv.emergency();
             if last || k.is_multiple_of(summary_every) {
                 s.timing = lateness.timing();
                 s.period_error = period_error.timing();
@@ -470,7 +552,10 @@ fn run(
         .lock()
         .unwrap_or_else(PoisonError::into_inner)
         .clone();
-    Summary { status, failure }
+    Summary {
+        status,
+        failure: stream.failure,
+    }
 }
 
 mod priority;

@@ -72,6 +72,7 @@ fn limit_name(kind: FindingKind) -> &'static str {
         FindingKind::StrokeMin => "leg length (min)",
         FindingKind::LegSpeed => "leg speed",
         FindingKind::LegAccel => "leg acceleration",
+        FindingKind::LegJerk => "leg jerk",
         FindingKind::BaseCone => "base joint cone",
         FindingKind::PlatformCone => "platform joint cone",
         FindingKind::LegCollision => "leg clearance",
@@ -84,6 +85,7 @@ fn limit_name(kind: FindingKind) -> &'static str {
         FindingKind::ServoMin => "servo angle (min)",
         FindingKind::ServoSpeed => "servo speed",
         FindingKind::ServoAccel => "servo acceleration",
+        FindingKind::ServoJerk => "servo jerk",
         FindingKind::HornCone => "horn joint cone",
         FindingKind::RodPlatformCone => "platform joint cone",
         FindingKind::RodCollision => "rod clearance",
@@ -100,6 +102,7 @@ fn part_letters(kind: FindingKind) -> [char; 2] {
         | FindingKind::ServoMin
         | FindingKind::ServoSpeed
         | FindingKind::ServoAccel
+        | FindingKind::ServoJerk
         | FindingKind::ServoJump => ['S', 'S'],
         FindingKind::HornCone | FindingKind::RodPlatformCone | FindingKind::RodCollision => {
             ['R', 'R']

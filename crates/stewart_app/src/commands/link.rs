@@ -7,13 +7,12 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_kinematics::Scenario;
 use stewart_kinematics::link_settings::{LinkSettings, LinkTransport, Word as _};
-use stewart_link::sender::{Command, Sender, SenderConfig, Status, Target};
+use stewart_link::sender::{Command, Sender, Status};
 use stewart_link::transport::{Record, Transport, list_ports};
 
 use crate::cli::LinkArgs;
-use crate::hardware;
+use crate::link_plan::LinkPlan;
 use crate::{output, source};
 
 /// Run the command.
@@ -26,35 +25,36 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     }
     let mut scenario = source::load(&args.scenario)?;
     scenario.link = settings(&scenario.link, args)?;
-    let (transport, staged) = open_transport(&scenario, args)?;
-    let home = hardware::home_values(&scenario)?;
-    let duration = scenario.motion.sampling.duration();
+    let plan = LinkPlan::new(&scenario)?;
+    let (transport, staged) = open_transport(&plan, args)?;
     let stream_for = match (args.duration, args.repeat) {
         (Some(d), _) => Some(d),
-        (None, false) => Some(duration),
+        (None, false) => Some(plan.span.1),
         (None, true) => None,
     };
-    let config = SenderConfig {
-        rate_hz: scenario.link.rate_hz,
-        format: hardware::format(&scenario.link),
-        map: hardware::channel_map(&scenario)?,
-        supervisor: hardware::supervisor(&scenario, home),
-        arm_at_start: true,
-        stop_after: stream_for,
-    };
     let described = transport.describe();
-    let sender =
-        Sender::spawn(config, target(&scenario, args.repeat), transport).map_err(|e| anyhow!(e))?;
-    // Ctrl-C is the e-stop: stop at once, return home at the safe speed, disarm.
-    let stop = crate::interrupt::flag();
-    let mut stopped_by_user = false;
+    let sender = Sender::spawn(
+        plan.sender_config(true, stream_for),
+        plan.trajectory_target(args.repeat),
+        transport,
+    )
+    .map_err(|e| anyhow!(e))?;
+    // Ctrl-C is the e-stop: stop at once, return home at the safe speed, disarm. A second
+    // one on the way home is an emergency stop: disarm where the platform is.
+    let stops_before = crate::interrupt::count();
+    let mut stops_seen = 0;
     let progress = std::io::stderr().is_terminal();
     let mut shown = Instant::now();
     while !sender.finished() {
-        if stop.load(std::sync::atomic::Ordering::Relaxed) && !stopped_by_user {
-            sender.command(Command::EStop);
-            sender.command(Command::Stop);
-            stopped_by_user = true;
+        let stops = crate::interrupt::count() - stops_before;
+        if stops > stops_seen {
+            if stops_seen == 0 {
+                sender.command(Command::EStop);
+                sender.command(Command::Stop);
+            } else {
+                sender.command(Command::EStop);
+            }
+            stops_seen = stops;
         }
         if progress && shown.elapsed() >= Duration::from_millis(200) {
             shown = Instant::now();
@@ -108,10 +108,23 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     if let Some((destination, path)) = staged {
         destination.deliver(path)?;
     }
-    if stopped_by_user {
+    if s.emergency {
+        let _ = writeln!(std::io::stderr(), "{}", left_where(&plan, &s.values));
+        return Ok(ExitCode::from(2));
+    }
+    if stops_seen > 0 {
         bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The line after an emergency stop: where the platform was left, as a pose (forward
+/// kinematics of the values, from home) and as the actuator values themselves.
+fn left_where(plan: &LinkPlan, values: &[f64; 6]) -> String {
+    let (pose, actuators) = plan.left_at(values);
+    format!(
+        "link: emergency stop (a second stop on the way home): disarmed where the platform was, not at home; left at {pose}; {actuators}"
+    )
 }
 
 /// A telemetry frame in words: flags, then the six values in their unit.
@@ -179,16 +192,13 @@ fn bench(args: &LinkArgs) -> Result<ExitCode> {
         s.link.transport = LinkTransport::Udp;
         s.link.address = Some(address);
         s.link.rate_hz = rate;
-        let config = SenderConfig {
-            rate_hz: rate,
-            format: hardware::format(&s.link),
-            map: hardware::channel_map(&s)?,
-            supervisor: hardware::supervisor(&s, hardware::home_values(&s)?),
-            arm_at_start: true,
-            stop_after: Some(seconds),
-        };
-        let sender = Sender::spawn(config, target(&s, true), hardware::open_device(&s.link)?)
-            .map_err(|e| anyhow!(e))?;
+        let plan = LinkPlan::new(&s)?;
+        let sender = Sender::spawn(
+            plan.sender_config(true, Some(seconds)),
+            plan.trajectory_target(true),
+            plan.open_device()?,
+        )
+        .map_err(|e| anyhow!(e))?;
         let summary = sender.join();
         let received = counter
             .join()
@@ -266,15 +276,15 @@ type Staged = Option<(output::Destination, tempfile::TempPath)>;
 
 /// The transport the settings ask for (and, for a dry run into a regular file, the staged
 /// file to deliver at the end).
-fn open_transport(scenario: &Scenario, args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
-    if scenario.link.transport != LinkTransport::File {
+fn open_transport(plan: &LinkPlan, args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
+    if plan.settings.transport != LinkTransport::File {
         if args.out.is_some() {
             bail!(
                 "--out records a dry run; a {} link sends to the device instead",
-                scenario.link.transport.word()
+                plan.settings.transport.word()
             );
         }
-        return Ok((hardware::open_device(&scenario.link)?, None));
+        return Ok((plan.open_device()?, None));
     }
     // The record never lands on an input, and a regular file is written whole or not at all.
     let inputs = source::inputs(&args.scenario);
@@ -316,21 +326,4 @@ fn note_closed(e: &std::io::Error) {
     if e.kind() == std::io::ErrorKind::BrokenPipe {
         PIPE_CLOSED.store(true, std::sync::atomic::Ordering::Relaxed);
     }
-}
-
-/// The trajectory as a target of stream time (from the sampling's start; wrapping with
-/// `repeat`, else holding its last pose).
-fn target(scenario: &Scenario, repeat: bool) -> Target {
-    let geometry = scenario.geometry.clone();
-    let trajectory = scenario.motion.trajectory.clone();
-    let start = scenario.motion.sampling.start();
-    let duration = scenario.motion.sampling.duration();
-    Box::new(move |t| {
-        let local = if repeat {
-            t.rem_euclid(duration)
-        } else {
-            t.min(duration)
-        };
-        geometry.actuator_values_at(&trajectory.pose_at(start + local))
-    })
 }

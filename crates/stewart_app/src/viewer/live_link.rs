@@ -12,11 +12,12 @@ use std::time::Instant;
 
 use stewart_kinematics::link_settings::LinkTransport;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
-use stewart_link::sender::{Command, Sender, SenderConfig, Status};
+use stewart_link::generator::Sample;
+use stewart_link::sender::{Command, Sender, Status};
 use stewart_link::transport::{Record, Transport};
 
-use crate::hardware;
 use crate::i18n::Lang;
+use crate::link_plan::{LinkPlan, moving_sample};
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
@@ -51,21 +52,30 @@ struct Source {
 }
 
 impl Source {
-    fn pose(&self) -> Pose {
+    /// The target now: a still pose's values, or the playing trajectory's with their
+    /// velocity and acceleration on the wall clock (at rest past either end).
+    fn sample(&self) -> Result<Sample, String> {
         match self.drive {
-            Drive::Still(pose) => pose,
+            Drive::Still(pose) => self.geometry.actuator_values_at(&pose).map(Sample::At),
             Drive::Playing {
                 time,
                 anchor,
                 speed,
             } => {
                 let t = time + anchor.elapsed().as_secs_f64() * speed;
-                let t = if self.looping && self.duration > 0.0 {
-                    t.rem_euclid(self.duration)
+                let (t, speed) = if self.looping && self.duration > 0.0 {
+                    (t.rem_euclid(self.duration), speed)
+                } else if (0.0..self.duration).contains(&t) {
+                    (t, speed)
                 } else {
-                    t.clamp(0.0, self.duration)
+                    (t.clamp(0.0, self.duration), 0.0)
                 };
-                self.trajectory.pose_at(self.start + t)
+                moving_sample(
+                    &self.geometry,
+                    |tau| self.trajectory.pose_at(self.start + tau),
+                    t,
+                    speed,
+                )
             }
         }
     }
@@ -77,6 +87,8 @@ struct Running {
     source: Arc<Mutex<Source>>,
     described: String,
     stopping: bool,
+    /// What the stream was built from (for where an emergency stop left the platform).
+    plan: LinkPlan,
 }
 
 /// The link panel's state: the stream when connected, the outcome of the last one.
@@ -132,6 +144,7 @@ impl LiveLink {
         looping: bool,
     ) -> Result<String, String> {
         let fail = |e: anyhow::Error| format!("{e:#}");
+        let plan = LinkPlan::new(scenario).map_err(fail)?;
         let transport: Box<dyn Transport> = if scenario.link.transport == LinkTransport::File {
             self.recent
                 .lock()
@@ -145,29 +158,23 @@ impl LiveLink {
                 "this panel",
             ))
         } else {
-            hardware::open_device(&scenario.link).map_err(fail)?
+            plan.open_device().map_err(fail)?
         };
-        let home = hardware::home_values(scenario).map_err(fail)?;
-        let config = SenderConfig {
-            rate_hz: scenario.link.rate_hz,
-            format: hardware::format(&scenario.link),
-            map: hardware::channel_map(scenario).map_err(fail)?,
-            supervisor: hardware::supervisor(scenario, home),
-            arm_at_start: false,
-            stop_after: None,
-        };
+        let config = plan.sender_config(false, None);
         let source = Arc::new(Mutex::new(Source {
-            geometry: scenario.geometry.clone(),
-            trajectory: scenario.motion.trajectory.clone(),
-            start: scenario.motion.sampling.start(),
-            duration: scenario.motion.sampling.duration(),
+            geometry: plan.geometry.clone(),
+            trajectory: plan.trajectory.clone(),
+            start: plan.span.0,
+            duration: plan.span.1,
             looping,
             drive,
         }));
         let shared = Arc::clone(&source);
         let target = Box::new(move |_t: f64| {
-            let s = shared.lock().unwrap_or_else(PoisonError::into_inner);
-            s.geometry.actuator_values_at(&s.pose())
+            shared
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .sample()
         });
         // Where the frames go, in the reader's words (a UDP address reads the same in both).
         let described = match scenario.link.transport {
@@ -184,6 +191,7 @@ impl LiveLink {
             source,
             described: described.clone(),
             stopping: false,
+            plan,
         });
         Ok(self.lang.fmt(
             "link.connected",
@@ -236,20 +244,26 @@ impl LiveLink {
     }
 
     /// Stop the stream (e-stop, home or hold, disarm, end) without waiting; [`LiveLink::poll`]
-    /// collects the end.
+    /// collects the end. Pressed again while the platform is on its way home, an emergency
+    /// stop: disarm where it is.
     pub fn disconnect(&mut self) {
         if let Some(r) = &mut self.running {
             r.sender.command(Command::EStop);
-            r.sender.command(Command::Stop);
+            if !r.stopping {
+                r.sender.command(Command::Stop);
+            }
             r.stopping = true;
         }
     }
 
-    /// Stop the stream and wait for its end (closing the window).
+    /// Stop the stream and wait for its end (closing the window): a stream already stopping
+    /// goes on home.
     pub fn disconnect_now(&mut self) {
-        self.disconnect();
+        if !self.stopping() {
+            self.disconnect();
+        }
         if let Some(r) = self.running.take() {
-            self.status = Some(outcome(self.lang, &r.described, r.sender.join()));
+            self.status = Some(outcome(self.lang, r));
         }
     }
 
@@ -296,17 +310,27 @@ impl LiveLink {
         if self.running.as_ref().is_some_and(|r| r.sender.finished())
             && let Some(r) = self.running.take()
         {
-            self.status = Some(outcome(self.lang, &r.described, r.sender.join()));
+            self.status = Some(outcome(self.lang, r));
         }
     }
 }
 
 /// The words for how a stream ended.
-fn outcome(
-    lang: Lang,
-    described: &str,
-    summary: stewart_link::sender::Summary,
-) -> Result<String, String> {
+fn outcome(lang: Lang, running: Running) -> Result<String, String> {
+    let Running {
+        sender,
+        described,
+        plan,
+        ..
+    } = running;
+    let summary = sender.join();
+    if summary.status.emergency {
+        let (pose, values) = plan.left_at(&summary.status.values);
+        return Err(lang.fmt(
+            "link.emergency",
+            &[("to", &described), ("pose", &pose), ("values", &values)],
+        ));
+    }
     match summary.failure {
         Some(failure) => Err(lang.fmt("link.stopped", &[("to", &described), ("why", &failure)])),
         None => Ok(lang.fmt(

@@ -44,6 +44,10 @@ impl fmt::Display for Finding {
                 f,
                 "{leg} accelerates beyond {limit} m/s² {span}; worst {worst:.2} m/s² at t = {when:.3} s, {over:.2} m/s² over"
             ),
+            FindingKind::LegJerk => write!(
+                f,
+                "{leg} jerks beyond {limit} m/s³ {span}; worst {worst:.2} m/s³ at t = {when:.3} s, {over:.2} m/s³ over"
+            ),
             FindingKind::BaseCone => write!(
                 f,
                 "{leg} leans more than {limit}° from the base normal at its base joint {span}; worst {worst:.2}° at t = {when:.3} s, {over:.2}° over"
@@ -100,6 +104,10 @@ impl fmt::Display for Finding {
             FindingKind::ServoAccel => write!(
                 f,
                 "{servo} accelerates beyond {limit}°/s² {span}; worst {worst:.0}°/s² at t = {when:.3} s, {over:.0}°/s² over"
+            ),
+            FindingKind::ServoJerk => write!(
+                f,
+                "{servo} jerks beyond {limit}°/s³ {span}; worst {worst:.0}°/s³ at t = {when:.3} s, {over:.0}°/s³ over"
             ),
             FindingKind::HornCone => write!(
                 f,

@@ -3,7 +3,7 @@
 //!
 //! - [`rigid`]: the platform joints keep their mutual distances (the seed's self-consistency test);
 //! - [`stroke`]: every leg stays within its stroke;
-//! - [`rates`]: leg speed and acceleration limits;
+//! - [`rates`]: leg speed, acceleration and jerk limits;
 //! - [`cones`]: the angle of each leg at its joints;
 //! - [`collision`]: the distance between legs seen as cylinders;
 //! - [`singularity`]: near-singular poses and architecture singularity;
@@ -67,6 +67,8 @@ pub enum FindingKind {
     LegSpeed,
     /// A leg accelerating beyond the actuator's limit.
     LegAccel,
+    /// A leg whose acceleration changes faster than the actuator's jerk limit.
+    LegJerk,
     /// A leg leaning beyond the base joint's cone.
     BaseCone,
     /// A leg leaning beyond the platform joint's cone.
@@ -91,6 +93,8 @@ pub enum FindingKind {
     ServoSpeed,
     /// A servo accelerating beyond its limit.
     ServoAccel,
+    /// A servo whose acceleration changes faster than its jerk limit.
+    ServoJerk,
     /// A rod leaning beyond the cone of its ball joint on the horn (from the base normal).
     HornCone,
     /// A rod leaning beyond the cone of its platform joint.

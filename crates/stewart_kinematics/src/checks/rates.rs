@@ -1,4 +1,4 @@
-//! Leg speed and acceleration, by finite differences of the sampled leg lengths.
+//! Leg speed, acceleration and jerk, by finite differences of the sampled leg lengths.
 //!
 //! Interior samples use central differences on the (possibly uneven) time grid; at the
 //! end samples the speed is one-sided and the acceleration takes its neighbour's value
@@ -8,7 +8,7 @@ use nalgebra::Vector6;
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_legs};
-use crate::differences::{first_difference, second_difference};
+use crate::differences::{first_difference, second_difference, third_difference};
 use crate::limits::Limits;
 
 /// Leg speeds dL/dt (m/s) at every sample (see [`crate::differences`]).
@@ -19,6 +19,11 @@ pub fn leg_speeds(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
 /// Leg accelerations d²L/dt² (m/s²) at every sample (see [`crate::differences`]).
 pub fn leg_accelerations(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
     per_sample(times, lengths, second_difference)
+}
+
+/// Leg jerks d³L/dt³ (m/s³) at every sample (see [`crate::differences`]).
+pub fn leg_jerks(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
+    per_sample(times, lengths, third_difference)
 }
 
 /// A finite-difference rule of [`crate::differences`] on six-vectors.
@@ -36,7 +41,7 @@ pub(crate) fn per_sample(
         .collect()
 }
 
-/// Findings and summaries for the speed and acceleration limits that are set.
+/// Findings and summaries for the speed, acceleration and jerk limits that are set.
 pub(crate) fn check(limits: &Limits, times: &[f64], lengths: &[[f64; 6]], out: &mut Collected) {
     let abs = |v: Vec<[f64; 6]>| v.into_iter().map(|r| r.map(f64::abs)).collect::<Vec<_>>();
     if let Some(max) = limits.leg_speed_max {
@@ -56,6 +61,16 @@ pub(crate) fn check(limits: &Limits, times: &[f64], lengths: &[[f64; 6]], out: &
             Bound::AtMost(max),
             times,
             &abs(leg_accelerations(times, lengths)),
+            out,
+        );
+    }
+    if let Some(max) = limits.leg_jerk_max {
+        scan_legs(
+            FindingKind::LegJerk,
+            "m/s³",
+            Bound::AtMost(max),
+            times,
+            &abs(leg_jerks(times, lengths)),
             out,
         );
     }

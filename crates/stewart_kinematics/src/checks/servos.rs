@@ -10,7 +10,7 @@ use nalgebra::Vector3;
 
 use super::scan::{Bound, Collected, scan_columns, scan_legs};
 use super::{CheckSettings, FindingKind, jumps};
-use crate::differences::{first_difference, second_difference};
+use crate::differences::{first_difference, second_difference, third_difference};
 use crate::geometry::Geometry;
 use crate::inverse::LegSolution;
 use crate::limits::{LEG_PAIRS, Limits, segment_distance};
@@ -127,7 +127,7 @@ pub(crate) fn check(
     ));
 }
 
-/// Servo speed and acceleration (finite differences of the angles, degrees).
+/// Servo speed, acceleration and jerk (finite differences of the angles, degrees).
 fn rates(limits: &Limits, times: &[f64], angles_deg: &[[f64; 6]], out: &mut Collected) {
     let per_sample = |rule: super::rates::Difference| -> Vec<[f64; 6]> {
         super::rates::per_sample(times, angles_deg, rule)
@@ -152,6 +152,16 @@ fn rates(limits: &Limits, times: &[f64], angles_deg: &[[f64; 6]], out: &mut Coll
             Bound::AtMost(max),
             times,
             &per_sample(second_difference),
+            out,
+        );
+    }
+    if let Some(max) = limits.servo_jerk_max {
+        scan_legs(
+            FindingKind::ServoJerk,
+            "deg/s³",
+            Bound::AtMost(max),
+            times,
+            &per_sample(third_difference),
             out,
         );
     }

@@ -511,14 +511,16 @@ fn build_limits(
             [
                 ("limits.leg_speed_max_m_s", &l.leg_speed_max_m_s),
                 ("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2),
+                ("limits.leg_jerk_max_m_s3", &l.leg_jerk_max_m_s3),
             ],
-            "applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s` and `servo_accel_max_deg_s2`",
+            "applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s`, `servo_accel_max_deg_s2` and `servo_jerk_max_deg_s3`",
         )
     } else {
         (
             [
                 ("limits.servo_speed_max_deg_s", &l.servo_speed_max_deg_s),
                 ("limits.servo_accel_max_deg_s2", &l.servo_accel_max_deg_s2),
+                ("limits.servo_jerk_max_deg_s3", &l.servo_jerk_max_deg_s3),
             ],
             "applies to rotary platforms only (`[actuator] kind = \"rotary\"`)",
         )
@@ -549,6 +551,8 @@ fn build_limits(
         leg_accel_max: positive("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2)?,
         servo_speed_max: positive("limits.servo_speed_max_deg_s", &l.servo_speed_max_deg_s)?,
         servo_accel_max: positive("limits.servo_accel_max_deg_s2", &l.servo_accel_max_deg_s2)?,
+        leg_jerk_max: positive("limits.leg_jerk_max_m_s3", &l.leg_jerk_max_m_s3)?,
+        servo_jerk_max: positive("limits.servo_jerk_max_deg_s3", &l.servo_jerk_max_deg_s3)?,
         base_cone: cone("limits.base_cone_deg", &l.base_cone_deg)?,
         platform_cone: cone("limits.platform_cone_deg", &l.platform_cone_deg)?,
         leg_radius: positive("limits.leg_radius_m", &l.leg_radius_m)?,

@@ -55,9 +55,13 @@ pub(crate) struct LimitsFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub leg_accel_max_m_s2: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leg_jerk_max_m_s3: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub servo_speed_max_deg_s: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub servo_accel_max_deg_s2: Option<Spanned<f64>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub servo_jerk_max_deg_s3: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub base_cone_deg: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -285,7 +285,7 @@ fn rate_limits_belong_to_their_actuator_kind() {
     assert_eq!(
         e,
         format!(
-            "s.toml, line {}, column 21: `limits.leg_speed_max_m_s` applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s` and `servo_accel_max_deg_s2`",
+            "s.toml, line {}, column 21: `limits.leg_speed_max_m_s` applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s`, `servo_accel_max_deg_s2` and `servo_jerk_max_deg_s3`",
             lines + 3
         )
     );

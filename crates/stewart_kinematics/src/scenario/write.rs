@@ -170,6 +170,8 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         leg_accel_max_m_s2: l.leg_accel_max.map(s),
         servo_speed_max_deg_s: l.servo_speed_max.map(s),
         servo_accel_max_deg_s2: l.servo_accel_max.map(s),
+        leg_jerk_max_m_s3: l.leg_jerk_max.map(s),
+        servo_jerk_max_deg_s3: l.servo_jerk_max.map(s),
         base_cone_deg: l.base_cone.map(|a| s(a.degrees())),
         platform_cone_deg: l.platform_cone.map(|a| s(a.degrees())),
         leg_radius_m: l.leg_radius.map(s),

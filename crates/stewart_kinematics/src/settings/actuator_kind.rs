@@ -27,12 +27,14 @@ pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<()
             params.actuator = Actuator::Linear;
             limits.servo_speed_max = None;
             limits.servo_accel_max = None;
+            limits.servo_jerk_max = None;
         }
         ActuatorKind::Rotary => {
             params.stroke = Default::default();
             params.actuator = Actuator::Rotary(fitted_servos(&scenario.geometry)?);
             limits.leg_speed_max = None;
             limits.leg_accel_max = None;
+            limits.leg_jerk_max = None;
         }
     }
     scenario.geometry = Geometry::new(params).map_err(|e| e.to_string())?;

@@ -14,8 +14,8 @@ use crate::trajectory::{Sampling, Sinusoid};
 
 use DefaultValue::{AboveHome, Off, Value};
 use Unit::{
-    Count, Degree, DegreePerSecond, DegreePerSecondSquared, Hertz, Metre, MetrePerSecond,
-    MetrePerSecondSquared, Ratio, Second,
+    Count, Degree, DegreePerSecond, DegreePerSecondCubed, DegreePerSecondSquared, Hertz, Metre,
+    MetrePerSecond, MetrePerSecondCubed, MetrePerSecondSquared, Ratio, Second,
 };
 
 struct Declare {
@@ -383,6 +383,14 @@ fn limits(d: &mut Declare) {
         l(LegAccel),
     );
     d.add(
+        "limits.leg_jerk_max_m_s3",
+        "max leg jerk",
+        MetrePerSecondCubed,
+        (0.1, 1000.0),
+        Off,
+        l(LegJerk),
+    );
+    d.add(
         "limits.servo_speed_max_deg_s",
         "max servo speed",
         DegreePerSecond,
@@ -397,6 +405,14 @@ fn limits(d: &mut Declare) {
         (100.0, 100_000.0),
         Off,
         l(ServoAccel),
+    );
+    d.add(
+        "limits.servo_jerk_max_deg_s3",
+        "max servo jerk",
+        DegreePerSecondCubed,
+        (1000.0, 10_000_000.0),
+        Off,
+        l(ServoJerk),
     );
     d.add(
         "limits.base_cone_deg",

@@ -40,10 +40,14 @@ pub enum Unit {
     MetrePerSecond,
     /// Metres per second squared.
     MetrePerSecondSquared,
+    /// Metres per second cubed.
+    MetrePerSecondCubed,
     /// Degrees per second.
     DegreePerSecond,
     /// Degrees per second squared.
     DegreePerSecondSquared,
+    /// Degrees per second cubed.
+    DegreePerSecondCubed,
     /// A whole number of things (samples).
     Count,
     /// A pure number (ratios, condition numbers).
@@ -62,6 +66,8 @@ impl Unit {
             Unit::MetrePerSecondSquared => "m/s²",
             Unit::DegreePerSecond => "°/s",
             Unit::DegreePerSecondSquared => "°/s²",
+            Unit::MetrePerSecondCubed => "m/s³",
+            Unit::DegreePerSecondCubed => "°/s³",
             Unit::Count | Unit::Ratio => "",
         }
     }
@@ -80,6 +86,8 @@ impl Unit {
             Unit::MetrePerSecondSquared => symmetric(bounds::ACCEL_M_S2),
             Unit::DegreePerSecond => symmetric(bounds::ANGULAR_SPEED_DEG_S),
             Unit::DegreePerSecondSquared => symmetric(bounds::ANGULAR_ACCEL_DEG_S2),
+            Unit::MetrePerSecondCubed => symmetric(bounds::JERK_M_S3),
+            Unit::DegreePerSecondCubed => symmetric(bounds::ANGULAR_JERK_DEG_S3),
             Unit::Count => 2.0..=crate::trajectory::MAX_SAMPLES as f64,
             Unit::Ratio => symmetric(bounds::RATIO),
         }

@@ -98,6 +98,8 @@ pub enum LimitKey {
     LegSpeed,
     /// Leg acceleration.
     LegAccel,
+    /// Leg jerk.
+    LegJerk,
     /// Base joint cone.
     BaseCone,
     /// Platform joint cone.
@@ -108,12 +110,14 @@ pub enum LimitKey {
     ServoSpeed,
     /// Servo acceleration (rotary platforms).
     ServoAccel,
+    /// Servo jerk (rotary platforms).
+    ServoJerk,
 }
 
 /// The actuator kinds a setting belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ActuatorKind {
-    /// Linear legs only (stroke, leg speed and acceleration).
+    /// Linear legs only (stroke, leg speed, acceleration and jerk).
     Linear,
     /// Rotary servos only (horns, rods, servo range and rates).
     Rotary,
@@ -165,11 +169,14 @@ impl Target {
     /// The actuator kind it belongs to (`None`: both).
     pub fn actuator_kind(self) -> Option<ActuatorKind> {
         match self {
-            Target::Actuator(_) | Target::Limit(LimitKey::ServoSpeed | LimitKey::ServoAccel) => {
+            Target::Actuator(_)
+            | Target::Limit(LimitKey::ServoSpeed | LimitKey::ServoAccel | LimitKey::ServoJerk) => {
                 Some(ActuatorKind::Rotary)
             }
             Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
-            | Target::Limit(LimitKey::LegSpeed | LimitKey::LegAccel) => Some(ActuatorKind::Linear),
+            | Target::Limit(LimitKey::LegSpeed | LimitKey::LegAccel | LimitKey::LegJerk) => {
+                Some(ActuatorKind::Linear)
+            }
             _ => None,
         }
     }
@@ -251,11 +258,13 @@ impl Target {
                 match key {
                     LimitKey::LegSpeed => l.leg_speed_max,
                     LimitKey::LegAccel => l.leg_accel_max,
+                    LimitKey::LegJerk => l.leg_jerk_max,
                     LimitKey::BaseCone => l.base_cone.map(|a| a.degrees()),
                     LimitKey::PlatformCone => l.platform_cone.map(|a| a.degrees()),
                     LimitKey::LegRadius => l.leg_radius,
                     LimitKey::ServoSpeed => l.servo_speed_max,
                     LimitKey::ServoAccel => l.servo_accel_max,
+                    LimitKey::ServoJerk => l.servo_jerk_max,
                 }
             }
             Target::Check(key) => {
@@ -452,11 +461,13 @@ fn set_limit(scenario: &mut Scenario, key: LimitKey, value: Option<f64>) -> Resu
     match key {
         LimitKey::LegSpeed => l.leg_speed_max = value,
         LimitKey::LegAccel => l.leg_accel_max = value,
+        LimitKey::LegJerk => l.leg_jerk_max = value,
         LimitKey::BaseCone => l.base_cone = degrees,
         LimitKey::PlatformCone => l.platform_cone = degrees,
         LimitKey::LegRadius => l.leg_radius = value,
         LimitKey::ServoSpeed => l.servo_speed_max = value,
         LimitKey::ServoAccel => l.servo_accel_max = value,
+        LimitKey::ServoJerk => l.servo_jerk_max = value,
     }
     Ok(())
 }

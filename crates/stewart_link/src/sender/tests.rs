@@ -6,6 +6,7 @@ use std::sync::{Arc, Mutex};
 use super::*;
 use crate::channels::Output;
 use crate::frame::{Decoder, Unit};
+use crate::generator::Sample;
 use crate::safety::{ActuatorLimits, StopMode};
 use crate::transport::TransportError;
 
@@ -46,6 +47,7 @@ fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
                 range: [(-60.0, 60.0); 6],
                 speed: None,
                 accel: None,
+                jerk: None,
             },
             0.05,
             StopMode::Home { speed: 400.0 },
@@ -78,7 +80,8 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
         fail_at: None,
     };
     // Servo k goes to 10·(k+1)° … well, 10, 20, … 60.
-    let target: Target = Box::new(|_t| Ok(std::array::from_fn(|k| 10.0 * (k as f64 + 1.0))));
+    let target: Target =
+        Box::new(|_t| Ok(Sample::At(std::array::from_fn(|k| 10.0 * (k as f64 + 1.0)))));
     let sender = Sender::spawn(config(200.0, Some(0.2)), target, Box::new(transport))
         .unwrap_or_else(|e| panic!("{e}"));
     let summary = sender.join();
@@ -112,14 +115,20 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
     assert!(frames[stop].0 >= 0.2 - 1e-12 && frames[stop - 1].0 < 0.2 - 1e-12);
     assert_eq!(frames[stop].1.values[5], 6000 - 200);
     // On the way home every frame is armed with the home flag (the controller follows the
-    // values home), the e-stop flag only on the first; the values close in on home.
+    // values home), the e-stop flag only on the first; the values close in on home, and the
+    // last armed frame is home exactly (a controller that holds when disarmed is home).
     let way_home = &frames[stop..frames.len() - 1];
     assert!(way_home.len() > 20, "{}", way_home.len());
+    let values: Vec<i32> = way_home.iter().map(|f| f.1.values[5]).collect();
     for (i, (_, f)) in way_home.iter().enumerate() {
         assert!(f.flags.armed && f.flags.home, "{f:?}");
         assert_eq!(f.flags.estop, i == 0);
-        assert!(i == 0 || f.values[5] < way_home[i - 1].1.values[5]);
+        assert!(
+            i == 0 || values[i] < values[i - 1] || values[i] == 0,
+            "{values:?}"
+        );
     }
+    assert_eq!(way_home[way_home.len() - 1].1.values, [0; 6]);
     let last = frames
         .last()
         .map(|f| f.1)
@@ -136,7 +145,7 @@ fn a_transport_that_fails_disarms_and_ends_the_stream() {
         sent: Arc::clone(&sent),
         fail_at: Some(5),
     };
-    let target: Target = Box::new(|_t| Ok([5.0; 6]));
+    let target: Target = Box::new(|_t| Ok(Sample::At([5.0; 6])));
     let sender = Sender::spawn(config(500.0, None), target, Box::new(transport))
         .unwrap_or_else(|e| panic!("{e}"));
     let summary = sender.join();
@@ -155,13 +164,14 @@ fn an_estop_command_stops_the_platform() {
         sent: Arc::clone(&sent),
         fail_at: None,
     };
-    let target: Target = Box::new(|_t| Ok([20.0; 6]));
+    let target: Target = Box::new(|_t| Ok(Sample::At([20.0; 6])));
     let mut cfg = config(200.0, None);
     cfg.supervisor = Supervisor::new(
         ActuatorLimits {
             range: [(-60.0, 60.0); 6],
             speed: None,
             accel: None,
+            jerk: None,
         },
         0.01,
         StopMode::Hold,
@@ -197,7 +207,7 @@ fn rates_outside_10_to_1000_hz_are_refused() {
             sent,
             fail_at: None,
         };
-        let target: Target = Box::new(|_t| Ok([0.0; 6]));
+        let target: Target = Box::new(|_t| Ok(Sample::At([0.0; 6])));
         let e = Sender::spawn(config(rate, None), target, Box::new(transport))
             .err()
             .unwrap_or_default();
@@ -222,7 +232,7 @@ fn a_stall_skips_the_deadlines_it_missed_instead_of_sending_a_burst() {
             stalled = true;
             std::thread::sleep(Duration::from_millis(40));
         }
-        Ok([1.0; 6])
+        Ok(Sample::At([1.0; 6]))
     });
     let summary = Sender::spawn(config(200.0, Some(0.15)), target, Box::new(transport))
         .unwrap_or_else(|e| panic!("{e}"))
@@ -238,4 +248,65 @@ fn a_stall_skips_the_deadlines_it_missed_instead_of_sending_a_burst() {
     // follow one per deadline again: no burst of stale set-points.
     assert!(times[after] >= 0.09 - 1e-9, "{times:?}");
     assert_eq!(summary.status.frames as usize, times.len());
+}
+
+#[test]
+fn a_second_stop_on_the_way_home_is_an_emergency_stop() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: None,
+    };
+    let target: Target = Box::new(|_t| Ok(Sample::At([50.0; 6])));
+    let mut cfg = config(200.0, None);
+    // Home at 20°/s: 50° takes 2.5 s, so the second stop comes well before home.
+    cfg.supervisor = Supervisor::new(
+        ActuatorLimits {
+            range: [(-60.0, 60.0); 6],
+            speed: None,
+            accel: None,
+            jerk: None,
+        },
+        0.01,
+        StopMode::Home { speed: 20.0 },
+        [0.0; 6],
+    );
+    let sender = Sender::spawn(cfg, target, Box::new(transport)).unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(100));
+    sender.command(Command::Stop);
+    std::thread::sleep(Duration::from_millis(200));
+    assert_eq!(sender.status().state, LinkState::Stopping);
+    sender.command(Command::Stop);
+    let summary = sender.join();
+    assert_eq!(summary.failure, None);
+    assert!(summary.status.emergency);
+    assert_eq!(summary.status.state, LinkState::Disarmed);
+    let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
+    let frames = frames(&sent);
+    // Two e-stop frames: the first stop's (then armed on the way home), the second's
+    // (disarmed where the platform was), then disarmed frames for 250 ms, and the end.
+    let stops: Vec<usize> = (0..frames.len())
+        .filter(|&k| frames[k].1.flags.estop)
+        .collect();
+    assert_eq!(stops.len(), 2, "{stops:?}");
+    let (first, second) = (stops[0], stops[1]);
+    assert!(frames[first].1.flags.home && frames[first].1.flags.armed);
+    let left = frames[second].1;
+    assert!(!left.flags.armed && !left.flags.home);
+    // Left part of the way home, and reported so.
+    assert!(left.values[0] > 0 && left.values[0] < 5000, "{left:?}");
+    let wire = ChannelMap::identity(Output::ServoCentidegree)
+        .wire(&summary.status.values)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(wire, left.values);
+    let tail = &frames[second..];
+    assert!(
+        tail.iter()
+            .all(|(_, f)| !f.flags.armed && f.values == left.values)
+    );
+    let lasted = tail[tail.len() - 1].0 - tail[0].0;
+    assert!(
+        (EMERGENCY_TAIL_S - 1e-9..EMERGENCY_TAIL_S + 0.05).contains(&lasted),
+        "{lasted}"
+    );
 }

@@ -1,0 +1,168 @@
+//! The link's plan: everything a stream needs, read once from the scenario — the wire
+//! format and rate, the channel map, the supervisor (limits, home, ramp, stop), where the
+//! frames go, and the motion as a target with its velocity and acceleration. The command
+//! line (`stewart link`) and the viewer's Link panel both start their senders from a plan,
+//! so the same scenario sends the same thing from either.
+
+use anyhow::Result;
+use stewart_kinematics::link_settings::LinkSettings;
+use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
+use stewart_link::channels::ChannelMap;
+use stewart_link::generator::{Motion, Sample};
+use stewart_link::safety::Supervisor;
+use stewart_link::sender::{SenderConfig, Target};
+use stewart_link::transport::Transport;
+
+use crate::hardware;
+
+/// The step of the central differences that give the target's velocity and acceleration,
+/// seconds (their error is ~h⁴ of the motion's fifth and sixth derivatives, their rounding
+/// ~1e-16/h² of its size: both far below a micrometre per second squared).
+const DIFFERENCE_STEP_S: f64 = 1e-3;
+
+/// A stream's plan, built once from a scenario.
+#[derive(Clone, Debug)]
+pub struct LinkPlan {
+    /// The scenario's `[link]` table (with any command-line overrides).
+    pub settings: LinkSettings,
+    /// The actuator values at the home pose: where arming starts and the way home ends.
+    pub home: [f64; 6],
+    /// Values to wire.
+    pub map: ChannelMap,
+    /// The safety state machine for the scenario's limits (disarmed, at home).
+    pub supervisor: Supervisor,
+    /// The platform, for the target's actuator values.
+    pub geometry: Geometry,
+    /// The motion streamed.
+    pub trajectory: Trajectory,
+    /// The motion's first sample time and length, seconds.
+    pub span: (f64, f64),
+}
+
+impl LinkPlan {
+    /// The plan for `scenario` (its `[link]` as it stands). Fails, naming the setting,
+    /// when the channel map is refused or the home pose has no actuator values.
+    pub fn new(scenario: &Scenario) -> Result<Self> {
+        let home = hardware::home_values(scenario)?;
+        Ok(Self {
+            settings: scenario.link.clone(),
+            home,
+            map: hardware::channel_map(scenario)?,
+            supervisor: hardware::supervisor(scenario, home),
+            geometry: scenario.geometry.clone(),
+            trajectory: scenario.motion.trajectory.clone(),
+            span: (
+                scenario.motion.sampling.start(),
+                scenario.motion.sampling.duration(),
+            ),
+        })
+    }
+
+    /// The sender's settings: arm at the first tick or wait for an arm command; stop after
+    /// so many seconds, or run until stopped.
+    pub fn sender_config(&self, arm_at_start: bool, stop_after: Option<f64>) -> SenderConfig {
+        SenderConfig {
+            rate_hz: self.settings.rate_hz,
+            format: hardware::format(&self.settings),
+            map: self.map,
+            supervisor: self.supervisor.clone(),
+            arm_at_start,
+            stop_after,
+        }
+    }
+
+    /// Where a platform whose actuators stand at `values` is, in words: its pose (forward
+    /// kinematics from home, or why there is none) and the values themselves.
+    pub fn left_at(&self, values: &[f64; 6]) -> (String, String) {
+        let rotary = self.geometry.rotary().is_some();
+        let (letter, unit, digits) = if rotary {
+            ('S', "°", 3)
+        } else {
+            ('L', " m", 6)
+        };
+        let actuators: Vec<String> = values
+            .iter()
+            .enumerate()
+            .map(|(k, v)| format!("{letter}{} = {v:.digits$}{unit}", k + 1))
+            .collect();
+        let pose = match self
+            .geometry
+            .pose_from_actuator_values(values, &self.geometry.home_pose())
+        {
+            Ok(p) => {
+                let [x, y, z] = [p.position.x, p.position.y, p.position.z];
+                let [roll, pitch, yaw] = p.rpy_degrees();
+                format!(
+                    "x = {x:.6} m, y = {y:.6} m, z = {z:.6} m, roll = {roll:.4}°, pitch = {pitch:.4}°, yaw = {yaw:.4}°"
+                )
+            }
+            Err(why) => format!("pose unknown ({why})"),
+        };
+        (pose, actuators.join(", "))
+    }
+
+    /// Open the serial port or UDP peer the settings name.
+    pub fn open_device(&self) -> Result<Box<dyn Transport>> {
+        hardware::open_device(&self.settings)
+    }
+
+    /// The motion as a target of stream time (from the motion's first sample; wrapping
+    /// with `repeat`, else at rest at its last pose), with the actuators' velocity and
+    /// acceleration.
+    pub fn trajectory_target(&self, repeat: bool) -> Target {
+        let geometry = self.geometry.clone();
+        let trajectory = self.trajectory.clone();
+        let (start, duration) = self.span;
+        Box::new(move |t| {
+            if !repeat && t >= duration {
+                let values = geometry.actuator_values_at(&trajectory.pose_at(start + duration))?;
+                return Ok(Sample::Moving(Motion::at_rest(values)));
+            }
+            let local = if repeat && duration > 0.0 {
+                t.rem_euclid(duration)
+            } else {
+                t
+            };
+            moving_sample(&geometry, |s| trajectory.pose_at(start + s), local, 1.0)
+        })
+    }
+}
+
+/// The actuator values at `pose_at(time)` with their velocity and acceleration per second of
+/// stream when `pose_at`'s clock runs `speed` times as fast: five-point central
+/// differences. Where a neighbouring pose has no values (the motion leaves the workspace
+/// there), the values alone.
+pub fn moving_sample(
+    geometry: &Geometry,
+    pose_at: impl Fn(f64) -> Pose,
+    time: f64,
+    speed: f64,
+) -> Result<Sample, String> {
+    let centre = geometry.actuator_values_at(&pose_at(time))?;
+    if speed == 0.0 {
+        return Ok(Sample::Moving(Motion::at_rest(centre)));
+    }
+    let h = DIFFERENCE_STEP_S;
+    let mut around = [[0.0; 6]; 4];
+    for (slot, k) in around.iter_mut().zip([-2.0, -1.0, 1.0, 2.0]) {
+        match geometry.actuator_values_at(&pose_at(time + k * h)) {
+            Ok(v) => *slot = v,
+            Err(_) => return Ok(Sample::At(centre)),
+        }
+    }
+    let [m2, m1, p1, p2] = around;
+    let velocity =
+        std::array::from_fn(|j| speed * (m2[j] - 8.0 * m1[j] + 8.0 * p1[j] - p2[j]) / (12.0 * h));
+    let acceleration = std::array::from_fn(|j| {
+        speed * speed * (-m2[j] + 16.0 * m1[j] - 30.0 * centre[j] + 16.0 * p1[j] - p2[j])
+            / (12.0 * h * h)
+    });
+    Ok(Sample::Moving(Motion {
+        position: centre,
+        velocity,
+        acceleration,
+    }))
+}
+
+#[cfg(test)]
+mod tests;
