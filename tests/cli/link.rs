@@ -304,7 +304,7 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
     assert_eq!(sim.status.code(), Some(0), "{log}");
     assert!(
         log.contains(&format!(
-            "device-sim: {sent} frames, 0 damaged, 0 lost, 0 values outside"
+            "device-sim: {sent} frames, 0 damaged, 0 lost, 0 out of order, 0 values outside"
         )),
         "{log}"
     );
@@ -584,4 +584,119 @@ fn once_armed_the_values_sent_are_the_checked_trajectory() {
         // Within the rounding to the micrometre of the wire.
         assert!(worst <= 0.5 + 1e-6, "{rate} Hz: {worst} µm");
     }
+}
+
+/// The simulated actuators' response, computed here from the simulator's own record (the
+/// set-points as they arrived, with their times): a first-order lag of `lag_s` integrated
+/// exactly over each interval under the set-point held, the step capped at `speed`·Δt, no
+/// motion within `dead_band` (wire units). Returns, per sequence number, the positions
+/// when that set-point arrived (before it is taken), rounded as the wire rounds.
+pub fn model_response_of(
+    sim_csv: &str,
+    lag_s: f64,
+    speed: f64,
+    dead_band: f64,
+) -> std::collections::HashMap<u16, [f64; 6]> {
+    let (_, rows) = parse_csv(sim_csv);
+    let mut out = std::collections::HashMap::new();
+    let mut state: Option<([f64; 6], [f64; 6], f64)> = None;
+    for r in rows {
+        let (t, seq) = (r[0], r[1] as u16);
+        let armed = r[2] == 1.0 && r[3] == 0.0;
+        let values: [f64; 6] = std::array::from_fn(|k| r[6 + k]);
+        let (mut x, held, since) = state.unwrap_or((values, values, t));
+        let dt = t - since;
+        for k in 0..6 {
+            let gap = held[k] - x[k];
+            if gap.abs() > dead_band {
+                let lagged = gap * (1.0 - (-dt / lag_s).exp());
+                x[k] += lagged.clamp(-speed * dt, speed * dt);
+            }
+        }
+        out.insert(seq, x.map(f64::round));
+        state = Some((x, if armed { values } else { x }, t));
+    }
+    out
+}
+
+/// The measured values of `stewart link --record` (metres) against the model's response to
+/// the commanded ones (µm): every answered set-point within one wire unit (the two roundings
+/// may fall on either side; the record's times are to the microsecond), and most answered.
+pub fn measured_follow_the_model(record: &str, model: &std::collections::HashMap<u16, [f64; 6]>) {
+    let (header, rows) = parse_csv(record);
+    assert_eq!(header.len(), 15, "{header:?}");
+    assert_eq!(header[2], "cmd1_m");
+    assert_eq!(header[8], "meas1_m");
+    assert!(
+        rows.len() * 10 >= model.len() * 9,
+        "{} of {}",
+        rows.len(),
+        model.len()
+    );
+    let mut lagging = 0.0_f64;
+    for r in &rows {
+        let seq = r[1] as u16;
+        let want = model
+            .get(&seq)
+            .unwrap_or_else(|| panic!("set-point {seq} answered but never received"));
+        for k in 0..6 {
+            let measured = r[8 + k] * 1e6;
+            assert!(
+                (measured - want[k]).abs() <= 1.5,
+                "seq {seq}, actuator {}: measured {measured} µm, the model {} µm",
+                k + 1,
+                want[k]
+            );
+            lagging = lagging.max((r[2 + k] - r[8 + k]).abs());
+        }
+        assert!(r[14] >= 0.0 && r[14] < 100.0, "latency {} ms", r[14]);
+    }
+    // The lag shows: measured differs from commanded by more than rounding somewhere.
+    assert!(
+        lagging > 1e-4,
+        "the measured values equal the commanded ones"
+    );
+}
+
+#[test]
+fn telemetry_over_udp_is_recorded_beside_the_commands_and_follows_the_actuator_model() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let record = dir.path().join("measured.csv");
+    let address = free_port();
+    let model = [
+        "--telemetry",
+        "--lag-s",
+        "0.05",
+        "--speed-max",
+        "100000",
+        "--dead-band",
+        "2",
+    ];
+    let sim = device_sim(&address, &model);
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "3",
+        "--rate",
+        "200",
+        "--ramp",
+        "0.5",
+        "--record",
+        record.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("link: telemetry answered "), "{err}");
+    assert!(err.contains("(0 unanswered, 0 stale)"), "{err}");
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim_csv = String::from_utf8_lossy(&sim.stdout).into_owned();
+    let response = model_response_of(&sim_csv, 0.05, 100_000.0, 2.0);
+    let recorded = std::fs::read_to_string(&record).unwrap_or_else(|e| panic!("{e}"));
+    measured_follow_the_model(&recorded, &response);
 }

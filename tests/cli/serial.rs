@@ -165,3 +165,40 @@ fn a_rate_the_line_cannot_carry_is_refused_before_anything_is_sent() {
         stderr(&o)
     );
 }
+
+#[test]
+fn telemetry_over_a_serial_line_follows_the_actuator_model() {
+    use crate::link::{measured_follow_the_model, model_response_of};
+    let pair = PtyPair::new();
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let record = dir.path().join("measured.csv");
+    let sim = device_sim_on(
+        &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
+        &["--telemetry", "--lag-s", "0.08", "--speed-max", "50000"],
+    );
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "serial",
+        "--port",
+        PtyPair::path(&pair.a),
+        "--baud",
+        "1000000",
+        "--duration",
+        "2",
+        "--rate",
+        "100",
+        "--ramp",
+        "0.3",
+        "--record",
+        record.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim_csv = String::from_utf8_lossy(&sim.stdout).into_owned();
+    let response = model_response_of(&sim_csv, 0.08, 50_000.0, 0.0);
+    let recorded = std::fs::read_to_string(&record).unwrap_or_else(|e| panic!("{e}"));
+    measured_follow_the_model(&recorded, &response);
+}

@@ -95,10 +95,29 @@ pub struct DeviceSimArgs {
     /// Largest value accepted on any channel, in the wire's unit.
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub max: Option<i32>,
-    /// Answer each set-point with a telemetry frame (kind 02) carrying the values and
-    /// flags received, as a controller reporting where it is would.
+    /// Answer each set-point with a telemetry frame (kind 02): its sequence number, the
+    /// flags received, and where the simulated actuators are (the values received when no
+    /// model option is given), as a controller reporting what it measured would.
     #[arg(long)]
     pub telemetry: bool,
+    /// The simulated actuators' first-order lag: time constant, seconds (0: none).
+    #[arg(long, value_name = "S", default_value = "0", value_parser = parse_model_number)]
+    pub lag_s: f64,
+    /// The simulated actuators' speed limit, wire units per second (µm/s, 0.01°/s, µs/s).
+    #[arg(long, value_name = "N", value_parser = parse_model_number)]
+    pub speed_max: Option<f64>,
+    /// The simulated actuators do not move while the set-point is this close, wire units.
+    #[arg(long, value_name = "N", default_value = "0", value_parser = parse_model_number)]
+    pub dead_band: f64,
+}
+
+/// A model option: a finite number, not negative.
+fn parse_model_number(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
+        Ok(v) => Err(format!("must be a finite number, not negative, got {v}")),
+        Err(_) => Err(format!("`{text}` is not a number")),
+    }
 }
 
 /// Arguments of `stewart link`. Each option overrides the scenario's `[link]` table.
@@ -113,7 +132,7 @@ pub struct LinkArgs {
     /// Measure the sender's timing: stream to a receiver on UDP loopback at 500 Hz and
     /// 1 kHz (or --rate) for --duration seconds each (default 10) and print the period
     /// error and wake-up lateness (mean, p99, max).
-    #[arg(long, conflicts_with_all = ["list_ports", "dry_run", "transport", "out"])]
+    #[arg(long, conflicts_with_all = ["list_ports", "dry_run", "transport", "out", "record"])]
     pub bench: bool,
     /// Where to send: serial, udp, or file (a dry run).
     #[arg(long, value_parser = parse_word::<LinkTransport>)]
@@ -148,6 +167,10 @@ pub struct LinkArgs {
     /// Seconds of the arming ramp from home to the trajectory (default 2).
     #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
     pub ramp: Option<f64>,
+    /// Record each set-point the controller answered with telemetry here (CSV: time,
+    /// sequence, six commanded and six measured values, round-trip latency).
+    #[arg(long, value_name = "FILE.csv")]
+    pub record: Option<PathBuf>,
 }
 
 /// A choice of the `[link]` table spelled as in files.

@@ -68,6 +68,7 @@ impl LinkPlan {
             supervisor: self.supervisor.clone(),
             arm_at_start,
             stop_after,
+            record: None,
         }
     }
 

@@ -81,6 +81,7 @@ fn stream() -> Stream {
         supervisor,
         arm_at_start: true,
         stop_after: None,
+        record: None,
     };
     let target: Target = Box::new(|t| Ok(motion(t, MOTIONS[0].1)));
     let udp = Udp::connect(&address).unwrap_or_else(|e| panic!("{e}"));

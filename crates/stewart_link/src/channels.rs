@@ -212,6 +212,26 @@ impl ChannelMap {
         }
         Ok(out)
     }
+
+    /// The actuator values, natural units, that `wire` integers stand for: [`ChannelMap::wire`]
+    /// undone (to the wire's rounding), for the values a controller reports back.
+    pub fn natural(&self, wire: &[i32; 6]) -> [f64; 6] {
+        let unit = self.output.unit();
+        let mut out = [0.0; 6];
+        for (k, c) in self.channels.iter().enumerate() {
+            let natural = f64::from(wire[k]) / unit.per_natural_unit();
+            let v = match self.output {
+                Output::ServoPulse {
+                    zero_us,
+                    us_per_degree,
+                } => (natural - zero_us) / us_per_degree,
+                _ => natural,
+            };
+            let sign = if c.reversed { -1.0 } else { 1.0 };
+            out[c.source] = sign * (v - c.offset) / c.scale;
+        }
+        out
+    }
 }
 
 #[cfg(test)]
@@ -286,5 +306,35 @@ mod tests {
         let mut channels = std::array::from_fn(Channel::straight);
         channels[0].source = 6;
         assert!(ChannelMap::new(channels, Output::LegMicrometre).is_err());
+    }
+
+    #[test]
+    fn the_wire_read_back_gives_the_values_to_its_rounding() {
+        let mut channels = std::array::from_fn(Channel::straight);
+        channels[0] = Channel {
+            source: 3,
+            reversed: true,
+            scale: 1.5,
+            offset: -2.0,
+        };
+        channels[3] = Channel::straight(0);
+        let values = [12.345, -7.5, 0.0, 33.3, -45.0, 8.125];
+        for output in [
+            Output::ServoCentidegree,
+            Output::ServoPulse {
+                zero_us: 1500.0,
+                us_per_degree: -10.0,
+            },
+        ] {
+            let map = ChannelMap::new(channels, output).unwrap_or_else(|e| panic!("{e}"));
+            let wire = map.wire(&values).unwrap_or_else(|e| panic!("{e}"));
+            let back = map.natural(&wire);
+            for (a, b) in back.iter().zip(&values) {
+                assert!((a - b).abs() < 0.1, "{output:?}: {back:?} vs {values:?}");
+            }
+        }
+        let legs = ChannelMap::identity(Output::LegMicrometre);
+        assert_eq!(legs.natural(&[1_000_000, 0, -5, 1, 2, 3])[0], 1.0);
+        assert_eq!(legs.natural(&[1_000_000, 0, -5, 1, 2, 3])[2], -5e-6);
     }
 }

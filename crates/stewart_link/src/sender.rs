@@ -12,6 +12,7 @@ use crate::channels::ChannelMap;
 use crate::frame::{Decoder, Flags, Frame, FrameKind};
 use crate::generator::Sample;
 use crate::safety::{LinkState, Supervisor};
+use crate::telemetry::{Matcher, Row, TelemetryStats};
 use crate::text;
 use crate::transport::Transport;
 
@@ -123,6 +124,11 @@ pub struct Status {
     pub scheduling: String,
     /// Telemetry frames the controller sent back.
     pub telemetry_frames: u64,
+    /// The telemetry matched to the set-points: answered, unanswered, stale, latency.
+    pub telemetry_stats: TelemetryStats,
+    /// Seconds since the last telemetry frame, once one has come (a controller that
+    /// stopped answering shows here).
+    pub telemetry_silent_s: Option<f64>,
     /// The latest of them, with the stream time it came at.
     pub telemetry: Option<(f64, Frame)>,
     /// The last values sent, natural units (where the platform was left, once disarmed).
@@ -155,6 +161,9 @@ pub struct SenderConfig {
     pub arm_at_start: bool,
     /// After this many seconds of stream, stop as [`Command::Stop`] does.
     pub stop_after: Option<f64>,
+    /// Where each set-point answered by telemetry goes, with its measured values (a
+    /// recorder on another thread; nothing is written on the sender's).
+    pub record: Option<mpsc::Sender<Row>>,
 }
 
 /// A running sender.
@@ -200,6 +209,8 @@ impl Sender {
             scheduling: String::new(),
             telemetry_frames: 0,
             telemetry: None,
+            telemetry_stats: TelemetryStats::default(),
+            telemetry_silent_s: None,
             values: *config.supervisor.last(),
             emergency: false,
         }));
@@ -249,12 +260,16 @@ impl Sender {
     }
 }
 
-/// Telemetry coming back from the controller, decoded as it arrives.
+/// Telemetry coming back from the controller, decoded as it arrives and matched to the
+/// set-points it answers.
 #[derive(Default)]
 struct Telemetry {
     decoder: Decoder,
     frames: u64,
     latest: Option<(f64, Frame)>,
+    last_at: Option<Instant>,
+    matcher: Matcher,
+    record: Option<mpsc::Sender<Row>>,
 }
 
 impl Telemetry {
@@ -263,6 +278,7 @@ impl Telemetry {
         &mut self,
         transport: &mut dyn Transport,
         t: f64,
+        map: &ChannelMap,
     ) -> Result<(), crate::transport::TransportError> {
         let mut buf = [0u8; 256];
         // A bounded number of reads per tick: a chatty controller cannot stall the sender.
@@ -275,8 +291,16 @@ impl Telemetry {
                 if let Some(Ok(frame)) = self.decoder.push(b)
                     && frame.kind == FrameKind::Telemetry
                 {
+                    let now = Instant::now();
                     self.frames += 1;
                     self.latest = Some((t, frame));
+                    self.last_at = Some(now);
+                    if let Some(row) = self.matcher.answer(&frame, now, map)
+                        && let Some(record) = &self.record
+                    {
+                        // A recorder that has gone away records nothing more.
+                        let _ = record.send(row);
+                    }
                 }
             }
         }
@@ -341,8 +365,12 @@ pub struct Stream {
 
 impl Stream {
     /// A stream that has sent nothing yet.
-    pub fn new(config: SenderConfig, target: Target, transport: Box<dyn Transport>) -> Self {
+    pub fn new(mut config: SenderConfig, target: Target, transport: Box<dyn Transport>) -> Self {
         let values = *config.supervisor.last();
+        let telemetry = Telemetry {
+            record: config.record.take(),
+            ..Telemetry::default()
+        };
         Self {
             config,
             target,
@@ -351,7 +379,7 @@ impl Stream {
             frames: 0,
             failure: None,
             note: None,
-            telemetry: Telemetry::default(),
+            telemetry,
             values,
         }
     }
@@ -404,13 +432,17 @@ impl Stream {
                 return false;
             }
             Some(Ok(())) => {
+                self.telemetry
+                    .matcher
+                    .sent(self.sequence, t, Instant::now(), tick.values);
                 self.frames += 1;
                 self.sequence = self.sequence.wrapping_add(1);
                 true
             }
             None => false,
         };
-        if let Err(e) = self.telemetry.collect(self.transport.as_mut(), t) {
+        let map = self.config.map;
+        if let Err(e) = self.telemetry.collect(self.transport.as_mut(), t, &map) {
             self.fail(format!("{e}; disarmed"));
         }
         delivered
@@ -535,6 +567,11 @@ fn run(
             s.skipped = skipped;
             s.telemetry_frames = stream.telemetry.frames;
             s.telemetry = stream.telemetry.latest;
+            s.telemetry_stats = stream.telemetry.matcher.stats();
+            s.telemetry_silent_s = stream
+                .telemetry
+                .last_at
+                .map(|at| at.elapsed().as_secs_f64());
             s.time = t;
             s.values = stream.values;
             s.emergency = sv.emergency();

@@ -198,6 +198,35 @@ impl DrawList {
         list
     }
 
+    /// The platform as the controller measured it (`frame`: the scene at the pose its
+    /// measured values give), drawn beside the commanded one as a ghost: a translucent
+    /// plate in the theme's ghost colour and thin lines along its legs (rods for servos).
+    pub fn ghost(&mut self, frame: &SceneFrame, theme: &Theme) {
+        let s = frame.base_radius.max(frame.platform_radius) as f32;
+        let rotation = Mat3::from_cols_array(&std::array::from_fn(|k| {
+            frame.platform_rotation[(k % 3, k / 3)] as f32
+        }));
+        let centre = v3(&frame.platform_centre);
+        let world: Vec<Vec3> = frame.platform_joints.iter().map(v3).collect();
+        let thickness = 0.02 * s;
+        let shape = plate_shape(centre, rotation, &world, thickness);
+        self.plates.push((
+            Mesh::plate(shape.centre, shape.normal, &shape.corners, thickness),
+            linear(theme.ghost),
+            centre,
+        ));
+        let c = linear(theme.ghost);
+        let line = [c[0], c[1], c[2], 1.0];
+        for leg in &frame.legs {
+            for p in [&leg.base, &leg.top] {
+                self.lines.push(LineVertex {
+                    position: v3(p).to_array(),
+                    color: line,
+                });
+            }
+        }
+    }
+
     /// Linear legs: an actuator body from the base joint and a thinner rod from the
     /// platform joint; the body is as long as the shortest leg (or 55 % of the leg).
     /// `s` is the size of the larger plate.

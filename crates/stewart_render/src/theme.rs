@@ -57,6 +57,8 @@ pub struct Theme {
     pub axes: [Srgba; 3],
     /// The reachable workspace's surface (translucent).
     pub workspace: Srgba,
+    /// The platform as the controller measured it (translucent ghost).
+    pub ghost: Srgba,
 }
 
 impl Theme {
@@ -79,6 +81,7 @@ impl Theme {
             [0.30, 0.50, 0.95, 1.0],
         ],
         workspace: [0.40, 0.80, 0.95, 0.26],
+        ghost: [0.55, 0.95, 0.55, 0.35],
     };
 
     /// White background, dark lines: for slides and papers.
@@ -100,6 +103,7 @@ impl Theme {
             [0.10, 0.30, 0.85, 1.0],
         ],
         workspace: [0.10, 0.45, 0.65, 0.26],
+        ghost: [0.10, 0.60, 0.20, 0.35],
     };
 
     /// The colours of a leg in `status`: actuator body and rod (one warning colour for

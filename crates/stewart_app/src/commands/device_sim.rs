@@ -1,7 +1,11 @@
 //! `stewart device-sim`: a stand-in controller. It listens for UDP datagrams or reads a
-//! serial port (a pseudo-terminal in tests), decodes the frames, counts damaged and lost ones and values outside the limits, and records every
-//! frame as a CSV row: `t_s,seq,armed,estop,home,unit,v1,…,v6` (`t_s` since the first
-//! frame; `unit` the wire code: 0 µm, 1 0.01°, 2 µs of pulse).
+//! serial port (a pseudo-terminal in tests), decodes the frames, counts damaged and lost
+//! ones and values outside the limits, and records every set-point frame as a CSV row:
+//! `t_s,seq,armed,estop,home,unit,v1,…,v6` (`t_s` since the first frame; `unit` the wire
+//! code: 0 µm, 1 0.01°, 2 µs of pulse). With `--telemetry` it answers each set-point with a
+//! telemetry frame: the set-point's sequence number, and where its simulated actuators are
+//! ([`model`]: a first-order lag, a speed limit, a dead band; without them, the values
+//! received).
 
 use std::io::Write as _;
 use std::net::UdpSocket;
@@ -16,6 +20,10 @@ use stewart_link::{Decoder, Frame, FrameKind, Unit};
 use crate::cli::DeviceSimArgs;
 use crate::output;
 
+pub mod model;
+
+use model::{ActuatorModel, Actuators};
+
 /// What was received.
 #[derive(Default)]
 struct Tally {
@@ -23,12 +31,19 @@ struct Tally {
     frames: u64,
     bad: u64,
     lost: u64,
+    /// Frames whose sequence number stepped back (a duplicate, a reordering, a new link).
+    out_of_order: u64,
     outside: u64,
     last_sequence: Option<u16>,
 }
 
 /// Run the command.
 pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
+    if let (Some(min), Some(max)) = (args.min, args.max)
+        && min > max
+    {
+        bail!("--min {min} is above --max {max}: no value could be accepted");
+    }
     let out = output::destination(args.out.as_deref(), &[])?;
     let mut input = Input::open(args)?;
     let _ = writeln!(std::io::stderr(), "device-sim: listening on {}", input.name);
@@ -43,7 +58,13 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     let mut buf = [0u8; 2048];
     // A serial line is one stream (frames may span reads); each datagram stands alone.
     let mut stream = Decoder::new();
-    let mut telemetry_sequence: u16 = 0;
+    let model = ActuatorModel {
+        lag_s: args.lag_s,
+        speed_max: args.speed_max,
+        dead_band: args.dead_band,
+    };
+    let modelled = model != ActuatorModel::default();
+    let mut actuators = Actuators::new(model);
     loop {
         if stop.load(std::sync::atomic::Ordering::Relaxed)
             || started.elapsed().as_secs_f64() >= args.duration
@@ -66,26 +87,34 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
             &mut stream
         };
         let mut any = false;
+        let mut damaged = false;
+        let t = (now - t0).as_secs_f64();
         for &b in &buf[..n] {
             match decoder.push(b) {
+                // Another host's telemetry is not a set-point: not recorded, not answered.
+                Some(Ok(frame)) if frame.kind == FrameKind::Telemetry => any = true,
                 Some(Ok(frame)) => {
                     any = true;
-                    record(&mut tally, (now - t0).as_secs_f64(), &frame, args);
+                    record(&mut tally, t, &frame, args);
+                    let armed = frame.flags.armed && !frame.flags.estop;
+                    let measured = actuators.frame(t, &frame.values, armed);
                     if args.telemetry {
                         replies.push(Frame {
                             kind: FrameKind::Telemetry,
-                            sequence: telemetry_sequence,
+                            values: if modelled { measured } else { frame.values },
                             ..frame
                         });
-                        telemetry_sequence = telemetry_sequence.wrapping_add(1);
                     }
                 }
-                Some(Err(_)) => tally.bad += 1,
+                Some(Err(_)) => {
+                    tally.bad += 1;
+                    damaged = true;
+                }
                 None => {}
             }
         }
-        if input.datagrams && !any {
-            // A datagram with no whole frame in it is damaged too.
+        if input.datagrams && !any && !damaged {
+            // A datagram with no frame in it at all is damaged too (once).
             tally.bad += 1;
         }
         for reply in replies {
@@ -96,10 +125,11 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     output::emit_with(out.as_ref(), |w| w.write_all(rows.as_bytes()))?;
     let _ = writeln!(
         std::io::stderr(),
-        "device-sim: {} frames, {} damaged, {} lost, {} values outside the limits",
+        "device-sim: {} frames, {} damaged, {} lost, {} out of order, {} values outside the limits",
         tally.frames,
         tally.bad,
         tally.lost,
+        tally.out_of_order,
         tally.outside
     );
     Ok(if tally.bad + tally.lost + tally.outside == 0 {
@@ -185,7 +215,14 @@ impl Input {
 fn record(tally: &mut Tally, t: f64, f: &Frame, args: &DeviceSimArgs) {
     tally.frames += 1;
     if let Some(previous) = tally.last_sequence {
-        tally.lost += u64::from(f.sequence.wrapping_sub(previous).wrapping_sub(1));
+        // Ahead by less than half the circle: the frames skipped were lost; else it stepped
+        // back (counted apart, not as 65 535 lost).
+        let ahead = f.sequence.wrapping_sub(previous);
+        if ahead == 0 || ahead >= 0x8000 {
+            tally.out_of_order += 1;
+        } else {
+            tally.lost += u64::from(ahead - 1);
+        }
     }
     tally.last_sequence = Some(f.sequence);
     let outside = |v: &i32| args.min.is_some_and(|m| *v < m) || args.max.is_some_and(|m| *v > m);

@@ -9,11 +9,14 @@ use std::time::{Duration, Instant};
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::link_settings::{LinkSettings, LinkTransport, Word as _};
 use stewart_link::sender::{Command, Sender, Status};
+use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};
 
 use crate::cli::LinkArgs;
 use crate::link_plan::LinkPlan;
 use crate::{output, source};
+
+mod record;
 
 /// Run the command.
 pub fn run(args: &LinkArgs) -> Result<ExitCode> {
@@ -33,12 +36,28 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         (None, true) => None,
     };
     let described = transport.describe();
-    let sender = Sender::spawn(
-        plan.sender_config(true, stream_for),
-        plan.trajectory_target(args.repeat),
-        transport,
-    )
-    .map_err(|e| anyhow!(e))?;
+    let mut config = plan.sender_config(true, stream_for);
+    let recorder = match args.record.as_deref() {
+        Some(path) => {
+            let mut inputs = source::inputs(&args.scenario);
+            if let Some(out) = args.out.as_deref() {
+                inputs.push(("the dry run's record", out));
+            }
+            let destination = output::destination(Some(path), &inputs)?
+                .ok_or_else(|| anyhow!("--record needs a file name"))?;
+            let unit = if plan.geometry.rotary().is_some() {
+                "deg"
+            } else {
+                "m"
+            };
+            let (rows, recorder) = record::Recorder::start(destination, unit)?;
+            config.record = Some(rows);
+            Some(recorder)
+        }
+        None => None,
+    };
+    let sender = Sender::spawn(config, plan.trajectory_target(args.repeat), transport)
+        .map_err(|e| anyhow!(e))?;
     // Ctrl-C is the e-stop: stop at once, return home at the safe speed, disarm. A second
     // one on the way home is an emergency stop: disarm where the platform is.
     let stops_before = crate::interrupt::count();
@@ -99,6 +118,16 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             s.telemetry_frames,
             telemetry_words(frame)
         );
+        let _ = writeln!(std::io::stderr(), "{}", telemetry_summary(s));
+    }
+    if let Some(recorder) = recorder {
+        let rows = recorder.finish()?;
+        if rows == 0 {
+            let _ = writeln!(
+                std::io::stderr(),
+                "link: no telemetry answered the set-points: the record holds its header only"
+            );
+        }
     }
     if let Some(failure) = summary.failure {
         // A record that could not be finished is not left behind (the staged file goes).
@@ -124,6 +153,25 @@ fn left_where(plan: &LinkPlan, values: &[f64; 6]) -> String {
     let (pose, actuators) = plan.left_at(values);
     format!(
         "link: emergency stop (a second stop on the way home): disarmed where the platform was, not at home; left at {pose}; {actuators}"
+    )
+}
+
+/// The telemetry matched to the set-points, in words: answered, unanswered and stale
+/// counts, the round trip, and a controller that fell silent before the end.
+fn telemetry_summary(s: &Status) -> String {
+    let st = &s.telemetry_stats;
+    let silent = s
+        .telemetry_silent_s
+        .filter(|&quiet| quiet > STALE_AFTER_S)
+        .map(|quiet| format!("; nothing came for the last {quiet:.2} s of the stream (stale)"))
+        .unwrap_or_default();
+    format!(
+        "link: telemetry answered {} set-points ({} unanswered, {} stale); round trip mean {:.2} ms, max {:.2} ms{silent}",
+        st.answered,
+        st.unanswered,
+        st.stale,
+        st.latency_mean_s * 1e3,
+        st.latency_max_s * 1e3
     )
 }
 

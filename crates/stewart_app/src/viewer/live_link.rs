@@ -7,13 +7,14 @@
 
 use std::collections::VecDeque;
 use std::io::Write;
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::time::Instant;
 
 use stewart_kinematics::link_settings::LinkTransport;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::generator::Sample;
 use stewart_link::sender::{Command, Sender, Status};
+use stewart_link::telemetry::Row;
 use stewart_link::transport::{Record, Transport};
 
 use crate::i18n::Lang;
@@ -21,6 +22,8 @@ use crate::link_plan::{LinkPlan, moving_sample};
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
+/// Seconds of tracking error kept for the panel's plot.
+pub const TRACKING_WINDOW_S: f64 = 10.0;
 /// Playback further than this from the sender's extrapolation (a seek, a pause) re-anchors
 /// the sender's clock, seconds.
 const RESYNC_S: f64 = 0.05;
@@ -89,6 +92,8 @@ struct Running {
     stopping: bool,
     /// What the stream was built from (for where an emergency stop left the platform).
     plan: LinkPlan,
+    /// The set-points the controller answered, as they come.
+    answered: mpsc::Receiver<Row>,
 }
 
 /// The link panel's state: the stream when connected, the outcome of the last one.
@@ -101,6 +106,13 @@ pub struct LiveLink {
     recent: Arc<Mutex<VecDeque<String>>>,
     /// The language of the status messages (the viewer's).
     pub lang: Lang,
+    /// The tracking error of the answered set-points, oldest first: stream time and
+    /// measured minus commanded per actuator (natural units), the last
+    /// [`TRACKING_WINDOW_S`].
+    tracking: VecDeque<(f64, [f64; 6])>,
+    /// The pose the controller's measured values give (forward kinematics), while
+    /// telemetry comes.
+    measured_pose: Option<Pose>,
 }
 
 /// A dry run's writer: keeps the last whole lines for the panel (a line may come in
@@ -160,7 +172,11 @@ impl LiveLink {
         } else {
             plan.open_device().map_err(fail)?
         };
-        let config = plan.sender_config(false, None);
+        let mut config = plan.sender_config(false, None);
+        let (answers, answered) = mpsc::channel();
+        config.record = Some(answers);
+        self.tracking.clear();
+        self.measured_pose = None;
         let source = Arc::new(Mutex::new(Source {
             geometry: plan.geometry.clone(),
             trajectory: plan.trajectory.clone(),
@@ -192,6 +208,7 @@ impl LiveLink {
             described: described.clone(),
             stopping: false,
             plan,
+            answered,
         });
         Ok(self.lang.fmt(
             "link.connected",
@@ -305,8 +322,49 @@ impl LiveLink {
         }
     }
 
+    /// The tracking error of the last [`TRACKING_WINDOW_S`]: stream time and measured minus
+    /// commanded per actuator, oldest first.
+    pub fn tracking(&self) -> &VecDeque<(f64, [f64; 6])> {
+        &self.tracking
+    }
+
+    /// The platform as the controller measured it, while connected and answered.
+    pub fn measured_pose(&self) -> Option<Pose> {
+        self.running.as_ref().and(self.measured_pose)
+    }
+
+    /// Take in the answered set-points: the tracking error, and the measured pose from the
+    /// newest (forward kinematics from the last measured pose, or home).
+    fn take_answers(&mut self) {
+        let Some(r) = &self.running else {
+            return;
+        };
+        let mut newest = None;
+        for row in r.answered.try_iter() {
+            let error = std::array::from_fn(|k| row.measured[k] - row.commanded[k]);
+            self.tracking.push_back((row.time, error));
+            newest = Some(row);
+        }
+        let Some(row) = newest else {
+            return;
+        };
+        while self
+            .tracking
+            .front()
+            .is_some_and(|(t, _)| *t < row.time - TRACKING_WINDOW_S)
+        {
+            self.tracking.pop_front();
+        }
+        let geometry = &r.plan.geometry;
+        let near = self.measured_pose.unwrap_or_else(|| geometry.home_pose());
+        self.measured_pose = geometry
+            .pose_from_actuator_values(&row.measured, &near)
+            .ok();
+    }
+
     /// Collect a stream that ended (stopped, or failed: a lost port, a write error).
     pub fn poll(&mut self) {
+        self.take_answers();
         if self.running.as_ref().is_some_and(|r| r.sender.finished())
             && let Some(r) = self.running.take()
         {

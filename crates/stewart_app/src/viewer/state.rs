@@ -178,6 +178,10 @@ impl ViewerState {
             ..stewart_render::Overlays::default()
         };
         let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
+        if let Some(measured) = self.link.measured_pose() {
+            let ghost = self.scenario.geometry.scene_frame(&measured, Vec::new());
+            list.ghost(&ghost, theme);
+        }
         if self.workspace.show
             && let Some(outcome) = &self.workspace.latest
         {

@@ -123,4 +123,40 @@ mod tests {
                 .all(|f| f.kind == FindingKind::LegSpeed && f.first_time == 0.0)
         );
     }
+
+    #[test]
+    fn a_jerk_limit_finds_the_legs_whose_acceleration_changes_too_fast() {
+        // L = 1 + 0.1 sin(10 t): peak jerk 100 m/s³ (at t = 0, π/10, …).
+        let times: Vec<f64> = (0..101).map(|k| k as f64 * 0.01).collect();
+        let lengths: Vec<[f64; 6]> = times
+            .iter()
+            .map(|&t| [1.0 + 0.1 * (10.0 * t).sin(); 6])
+            .collect();
+        let j = leg_jerks(&times, &lengths);
+        for (t, row) in times.iter().zip(&j).skip(1).take(98) {
+            // Four samples k−1 … k+2 centre on t + h/2: off by about h/2 times the fourth
+            // derivative (1000 m/s⁴ here), at most 5 m/s³.
+            assert!(
+                (row[0] + 100.0 * (10.0 * t).cos()).abs() < 6.0,
+                "{t}: {}",
+                row[0]
+            );
+        }
+        let mut out = Collected::default();
+        let limits = Limits {
+            leg_jerk_max: Some(150.0),
+            ..Limits::default()
+        };
+        check(&limits, &times, &lengths, &mut out);
+        assert!(out.findings.is_empty());
+        assert!((out.limits[0].worst_value - 100.0).abs() < 6.0);
+        let mut out = Collected::default();
+        let limits = Limits {
+            leg_jerk_max: Some(80.0),
+            ..Limits::default()
+        };
+        check(&limits, &times, &lengths, &mut out);
+        assert_eq!(out.findings.len(), 6);
+        assert!(out.findings.iter().all(|f| f.kind == FindingKind::LegJerk));
+    }
 }

@@ -55,6 +55,7 @@ fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
         ),
         arm_at_start: true,
         stop_after,
+        record: None,
     }
 }
 

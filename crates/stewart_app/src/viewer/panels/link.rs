@@ -125,6 +125,19 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
             ],
         ));
     }
+    let st = &status.telemetry_stats;
+    if st.frames > 0 {
+        ui.label(t.fmt(
+            "link.telemetry_stats",
+            &[
+                ("answered", &st.answered),
+                ("unanswered", &st.unanswered),
+                ("stale", &st.stale),
+                ("latency", &format!("{:.2}", st.latency_mean_s * 1e3)),
+            ],
+        ));
+        tracking_plot(ui, state);
+    }
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
     }
@@ -135,18 +148,39 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.label(RichText::new(line).monospace().size(10.0));
         }
     }
-    let label = if state.link.stopping() {
-        t.tr("link.stopping_button")
+    // Pressed again while the platform is on its way home: an emergency stop.
+    let (label, tip) = if state.link.stopping() {
+        (t.tr("link.stop_now"), t.tr("link.stop_now_tip"))
     } else {
-        t.tr("link.disconnect")
+        (t.tr("link.disconnect"), t.tr("link.disconnect_tip"))
     };
-    if ui
-        .add_enabled(!state.link.stopping(), egui::Button::new(label))
-        .on_hover_text(t.tr("link.disconnect_tip"))
-        .clicked()
-    {
+    if ui.button(label).on_hover_text(tip).clicked() {
         state.link.disconnect();
     }
+}
+
+/// The tracking error of the last seconds, per actuator (measured minus commanded: mm for
+/// legs, degrees for servos), in the actuators' colours.
+fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
+    let t = state.look.lang;
+    let rotary = state.scenario().geometry.rotary().is_some();
+    let (scale, unit) = if rotary { (1.0, "°") } else { (1e3, "mm") };
+    let rows = state.link.tracking();
+    ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
+    egui_plot::Plot::new("link-tracking")
+        .height(120.0)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .show(ui, |plot| {
+            for k in 0..6 {
+                let points: egui_plot::PlotPoints = rows
+                    .iter()
+                    .map(|(time, error)| [*time, error[k] * scale])
+                    .collect();
+                let name = format!("{}{}", if rotary { 'S' } else { 'L' }, k + 1);
+                plot.line(egui_plot::Line::new(name, points).color(super::plot::leg_colour(k)));
+            }
+        });
 }
 
 /// How the sender thread is scheduled, in `lang` (the link crate says it in English).
