@@ -456,3 +456,53 @@ fn views_prepared_with_one_renderer_stay_independent() {
     assert_eq!(a_frame.rgba, home_alone.rgba);
     assert_eq!(b_frame.rgba, moved_alone.rgba);
 }
+
+#[test]
+fn the_measured_platform_shows_as_a_green_ghost_beside_the_commanded_one() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let home = g.home_pose();
+    let camera = seed_camera(&g);
+    let theme = Theme::DARK;
+    let (w, h) = (480, 360);
+    let commanded = DrawList::build(
+        &g.scene_frame(&home, Vec::new()),
+        &theme,
+        &Overlays::default(),
+    );
+    // Measured: lifted 12 cm and tilted, as a lagging controller might report.
+    let measured = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.92], [6.0, 0.0, 0.0]);
+    let mut with_ghost = commanded.clone();
+    with_ghost.ghost(&g.scene_frame(&measured, Vec::new()), &theme);
+    assert_eq!(with_ghost.plates.len(), commanded.plates.len() + 1);
+    assert_eq!(with_ghost.lines.len(), commanded.lines.len() + 12);
+    let plain = off
+        .render(&commanded, &camera, &theme, w, h)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let ghosted = off
+        .render(&with_ghost, &camera, &theme, w, h)
+        .unwrap_or_else(|e| panic!("{e}"));
+    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
+        let path = std::path::Path::new(&dir).join("ghost.png");
+        image::save_buffer(&path, &ghosted.rgba, w, h, image::ExtendedColorType::Rgba8)
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+    // Above the commanded platform, where only the ghost is, the ghost's green shows.
+    let (x, y) = project(&camera, Vec3::new(0.0, 0.0, 0.97), w, h);
+    let p = ghosted.pixel(x, y);
+    let q = plain.pixel(x, y);
+    assert!(
+        p[1] as i32 > p[0] as i32 + 20 && p[1] as i32 > p[2] as i32 + 10,
+        "ghost pixel ({x}, {y}) is {p:?}"
+    );
+    assert_ne!(p, q);
+    // Where the translucent ghost lies over the commanded platform, the platform's red
+    // still shows through it, greener than without the ghost.
+    let (x, y) = project(&camera, Vec3::new(0.0, 0.0, 0.8), w, h);
+    let (over, under) = (ghosted.pixel(x, y), plain.pixel(x, y));
+    assert!(is_platform_red(under), "{under:?}");
+    assert!(
+        over[1] > under[1] && over[0] > under[2],
+        "{over:?} over {under:?}"
+    );
+}

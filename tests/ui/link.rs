@@ -96,3 +96,113 @@ fn a_refused_link_edit_says_why_and_changes_nothing() {
             .is_some()
     );
 }
+
+/// A controller on a local UDP port that answers every set-point with telemetry whose
+/// values are the set-point's less `short` (wire units): a platform that lags behind.
+fn lagging_controller(short: i32) -> (String, std::thread::JoinHandle<()>) {
+    use stewart_link::{Decoder, Frame, FrameKind};
+    let socket = std::net::UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    socket
+        .set_read_timeout(Some(Duration::from_millis(1500)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let address = socket
+        .local_addr()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_string();
+    let handle = std::thread::spawn(move || {
+        let mut buf = [0u8; 256];
+        while let Ok((n, from)) = socket.recv_from(&mut buf) {
+            let mut d = Decoder::new();
+            for &b in &buf[..n] {
+                if let Some(Ok(f)) = d.push(b) {
+                    let answer = Frame {
+                        kind: FrameKind::Telemetry,
+                        values: f.values.map(|v| v - short),
+                        ..f
+                    };
+                    let _ = socket.send_to(&answer.encode(), from);
+                }
+            }
+        }
+    });
+    (address, handle)
+}
+
+#[test]
+fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_is_an_emergency() {
+    let (address, controller) = lagging_controller(2000);
+    let mut h = tall_harness("paired", 2400.0);
+    h.state_mut().edit_link(|l| {
+        l.transport = stewart_kinematics::link_settings::LinkTransport::Udp;
+        l.address = Some(address.clone());
+        l.ramp_s = 0.1;
+        l.rate_hz = 200.0;
+    });
+    h.state_mut().playback.playing = false;
+    h.get_by_label("Link to hardware").click();
+    h.run();
+    h.get_by_label("Connect").click();
+    until(&mut h, LinkState::Disarmed);
+    h.get_by_label("ARM").click();
+    until(&mut h, LinkState::Armed);
+    let started = Instant::now();
+    while h.state().link.tracking().len() < 100 {
+        h.run();
+        assert!(started.elapsed() < Duration::from_secs(15), "no telemetry");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    h.run();
+    // Every leg measured 2 mm short: the tracking error says −2 mm, the ghost sits lower.
+    let (_, error) = *h
+        .state()
+        .link
+        .tracking()
+        .back()
+        .unwrap_or_else(|| panic!("empty"));
+    for e in error {
+        // To the wire's rounding of the commanded value (half a micrometre).
+        assert!((e + 0.002).abs() <= 0.5e-6 + 1e-12, "{e}");
+    }
+    let measured = h
+        .state()
+        .link
+        .measured_pose()
+        .unwrap_or_else(|| panic!("no measured pose"));
+    let shown = h.state().pose();
+    assert!(
+        measured.position.z < shown.position.z - 1e-3,
+        "{measured:?} vs {shown:?}"
+    );
+    let theme = stewart_render::Theme::DARK;
+    let plates = h.state().draw_list(&theme).plates.len();
+    assert_eq!(plates, 3, "base, platform and the ghost");
+    assert!(
+        h.query_by_label_contains("Tracking error, measured − commanded (mm)")
+            .is_some()
+    );
+    assert!(
+        h.query_by_label_contains("set-points answered, 0 unanswered")
+            .is_some()
+    );
+    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
+        let image = h.render().unwrap_or_else(|e| panic!("{e}"));
+        image
+            .save(std::path::Path::new(&dir).join("link-telemetry.png"))
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+    // Disconnect starts the way home; pressed again, an emergency stop.
+    h.get_by_label("Disconnect").click();
+    h.run();
+    h.get_by_label("Stop now (emergency)").click();
+    let started = Instant::now();
+    while h.state().link.connected() {
+        h.run();
+        assert!(started.elapsed() < Duration::from_secs(15));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let ended = h.state().link.status.clone();
+    let words = ended.and_then(Result::err).unwrap_or_default();
+    assert!(words.starts_with("Emergency stop"), "{words}");
+    assert!(words.contains("Left at x = "), "{words}");
+    let _ = controller.join();
+}

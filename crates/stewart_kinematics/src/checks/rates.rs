@@ -43,36 +43,45 @@ pub(crate) fn per_sample(
 
 /// Findings and summaries for the speed, acceleration and jerk limits that are set.
 pub(crate) fn check(limits: &Limits, times: &[f64], lengths: &[[f64; 6]], out: &mut Collected) {
-    let abs = |v: Vec<[f64; 6]>| v.into_iter().map(|r| r.map(f64::abs)).collect::<Vec<_>>();
-    if let Some(max) = limits.leg_speed_max {
-        scan_legs(
+    let rules: [(Option<f64>, FindingKind, &str, Difference); 3] = [
+        (
+            limits.leg_speed_max,
             FindingKind::LegSpeed,
             "m/s",
-            Bound::AtMost(max),
-            times,
-            &abs(leg_speeds(times, lengths)),
-            out,
-        );
-    }
-    if let Some(max) = limits.leg_accel_max {
-        scan_legs(
+            first_difference,
+        ),
+        (
+            limits.leg_accel_max,
             FindingKind::LegAccel,
             "m/s²",
-            Bound::AtMost(max),
-            times,
-            &abs(leg_accelerations(times, lengths)),
-            out,
-        );
-    }
-    if let Some(max) = limits.leg_jerk_max {
-        scan_legs(
+            second_difference,
+        ),
+        (
+            limits.leg_jerk_max,
             FindingKind::LegJerk,
             "m/s³",
-            Bound::AtMost(max),
-            times,
-            &abs(leg_jerks(times, lengths)),
-            out,
-        );
+            third_difference,
+        ),
+    ];
+    scan_rates(&rules, times, lengths, out);
+}
+
+/// Each rule whose limit is set: `|difference|` of the values against it, as findings of
+/// its kind in its unit.
+pub(crate) fn scan_rates(
+    rules: &[(Option<f64>, FindingKind, &str, Difference)],
+    times: &[f64],
+    values: &[[f64; 6]],
+    out: &mut Collected,
+) {
+    for &(limit, kind, unit, difference) in rules {
+        if let Some(max) = limit {
+            let rates: Vec<[f64; 6]> = per_sample(times, values, difference)
+                .into_iter()
+                .map(|r| r.map(f64::abs))
+                .collect();
+            scan_legs(kind, unit, Bound::AtMost(max), times, &rates, out);
+        }
     }
 }
 

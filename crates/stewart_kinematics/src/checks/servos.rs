@@ -129,42 +129,27 @@ pub(crate) fn check(
 
 /// Servo speed, acceleration and jerk (finite differences of the angles, degrees).
 fn rates(limits: &Limits, times: &[f64], angles_deg: &[[f64; 6]], out: &mut Collected) {
-    let per_sample = |rule: super::rates::Difference| -> Vec<[f64; 6]> {
-        super::rates::per_sample(times, angles_deg, rule)
-            .into_iter()
-            .map(|r| r.map(f64::abs))
-            .collect()
-    };
-    if let Some(max) = limits.servo_speed_max {
-        scan_legs(
+    let rules: [(Option<f64>, FindingKind, &str, super::rates::Difference); 3] = [
+        (
+            limits.servo_speed_max,
             FindingKind::ServoSpeed,
             "deg/s",
-            Bound::AtMost(max),
-            times,
-            &per_sample(first_difference),
-            out,
-        );
-    }
-    if let Some(max) = limits.servo_accel_max {
-        scan_legs(
+            first_difference,
+        ),
+        (
+            limits.servo_accel_max,
             FindingKind::ServoAccel,
             "deg/s²",
-            Bound::AtMost(max),
-            times,
-            &per_sample(second_difference),
-            out,
-        );
-    }
-    if let Some(max) = limits.servo_jerk_max {
-        scan_legs(
+            second_difference,
+        ),
+        (
+            limits.servo_jerk_max,
             FindingKind::ServoJerk,
             "deg/s³",
-            Bound::AtMost(max),
-            times,
-            &per_sample(third_difference),
-            out,
-        );
-    }
+            third_difference,
+        ),
+    ];
+    super::rates::scan_rates(&rules, times, angles_deg, out);
 }
 
 /// The rods' angles (degrees) at the horn joint, from the base normal as at a linear

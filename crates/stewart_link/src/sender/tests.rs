@@ -37,22 +37,23 @@ impl Transport for Capture {
     }
 }
 
+/// A supervisor of servos within ±60°, no rate limits, at home at 0°.
+fn supervisor(ramp_s: f64, stop: StopMode) -> Supervisor {
+    let limits = ActuatorLimits {
+        range: [(-60.0, 60.0); 6],
+        speed: None,
+        accel: None,
+        jerk: None,
+    };
+    Supervisor::new(limits, ramp_s, stop, [0.0; 6])
+}
+
 fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
     SenderConfig {
         rate_hz,
         format: Format::Binary,
         map: ChannelMap::identity(Output::ServoCentidegree),
-        supervisor: Supervisor::new(
-            ActuatorLimits {
-                range: [(-60.0, 60.0); 6],
-                speed: None,
-                accel: None,
-                jerk: None,
-            },
-            0.05,
-            StopMode::Home { speed: 400.0 },
-            [0.0; 6],
-        ),
+        supervisor: supervisor(0.05, StopMode::Home { speed: 400.0 }),
         arm_at_start: true,
         stop_after,
         record: None,
@@ -167,17 +168,7 @@ fn an_estop_command_stops_the_platform() {
     };
     let target: Target = Box::new(|_t| Ok(Sample::At([20.0; 6])));
     let mut cfg = config(200.0, None);
-    cfg.supervisor = Supervisor::new(
-        ActuatorLimits {
-            range: [(-60.0, 60.0); 6],
-            speed: None,
-            accel: None,
-            jerk: None,
-        },
-        0.01,
-        StopMode::Hold,
-        [0.0; 6],
-    );
+    cfg.supervisor = supervisor(0.01, StopMode::Hold);
     let sender = Sender::spawn(cfg, target, Box::new(transport)).unwrap_or_else(|e| panic!("{e}"));
     std::thread::sleep(Duration::from_millis(100));
     sender.command(Command::EStop);
@@ -261,17 +252,7 @@ fn a_second_stop_on_the_way_home_is_an_emergency_stop() {
     let target: Target = Box::new(|_t| Ok(Sample::At([50.0; 6])));
     let mut cfg = config(200.0, None);
     // Home at 20°/s: 50° takes 2.5 s, so the second stop comes well before home.
-    cfg.supervisor = Supervisor::new(
-        ActuatorLimits {
-            range: [(-60.0, 60.0); 6],
-            speed: None,
-            accel: None,
-            jerk: None,
-        },
-        0.01,
-        StopMode::Home { speed: 20.0 },
-        [0.0; 6],
-    );
+    cfg.supervisor = supervisor(0.01, StopMode::Home { speed: 20.0 });
     let sender = Sender::spawn(cfg, target, Box::new(transport)).unwrap_or_else(|e| panic!("{e}"));
     std::thread::sleep(Duration::from_millis(100));
     sender.command(Command::Stop);

@@ -167,8 +167,10 @@ fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
     let (scale, unit) = if rotary { (1.0, "°") } else { (1e3, "mm") };
     let rows = state.link.tracking();
     ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
+    // Zero always in sight: an error is read against it, not against its own wobble.
     egui_plot::Plot::new("link-tracking")
         .height(120.0)
+        .include_y(0.0)
         .allow_scroll(false)
         .allow_drag(false)
         .show(ui, |plot| {
