@@ -554,35 +554,44 @@ fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
 
 #[test]
 fn once_armed_the_values_sent_are_the_checked_trajectory() {
-    // The case: paired, default limits (0.5 m/s, 5 m/s²), which `check` passes.
-    let checked = stewart(&["check", "--preset", "paired"]);
-    assert_eq!(checked.status.code(), Some(0), "{}", stderr(&checked));
-    let solved = stewart(&["solve", "--preset", "paired"]);
-    let (header, rows) = parse_csv(&stdout(&solved));
-    let l1 = header.iter().position(|c| c == "L1").unwrap_or(7);
-    let step = rows[1][0] - rows[0][0];
-    for rate in ["200", "1000"] {
-        let o = stewart(&["link", "--preset", "paired", "--dry-run", "--rate", rate]);
-        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-        let frames = recorded(&stdout(&o));
-        let mut compared = 0;
-        let mut worst: f64 = 0.0;
-        for (t, f) in &frames {
-            // After the ramp (2 s asked, a little longer for the limits), until the stop; on
-            // the solve table's own sample times.
-            let k = (t / step).round() as usize;
-            if *t < 3.0 || k + 1 >= rows.len() || (t - rows[k][0]).abs() > 1e-9 {
-                continue;
+    // The case: paired, default limits (0.5 m/s, 5 m/s²), which `check` passes;
+    // and the servo-desk with its servo limits (300°/s, 3000°/s²). In the wire's unit: µm
+    // per metre, 0.01° per degree.
+    for (preset, column, per_unit) in [("paired", "L1", 1e6), ("servo-desk", "theta1", 100.0)] {
+        let checked = stewart(&["check", "--preset", preset]);
+        assert_eq!(checked.status.code(), Some(0), "{}", stderr(&checked));
+        let solved = stewart(&["solve", "--preset", preset]);
+        let (header, rows) = parse_csv(&stdout(&solved));
+        let first = header.iter().position(|c| c == column).unwrap_or(7);
+        let step = rows[1][0] - rows[0][0];
+        for rate in ["200", "1000"] {
+            let o = stewart(&["link", "--preset", preset, "--dry-run", "--rate", rate]);
+            assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+            assert!(
+                stderr(&o).contains("e-stop: at home, disarmed"),
+                "{}",
+                stderr(&o)
+            );
+            let frames = recorded(&stdout(&o));
+            let mut compared = 0;
+            let mut worst: f64 = 0.0;
+            for (t, f) in &frames {
+                // After the ramp (2 s asked, a little longer for the limits), until the
+                // stop; on the solve table's own sample times.
+                let k = (t / step).round() as usize;
+                if *t < 3.0 || k + 1 >= rows.len() || (t - rows[k][0]).abs() > 1e-9 {
+                    continue;
+                }
+                for i in 0..6 {
+                    let want = rows[k][first + i] * per_unit;
+                    worst = worst.max((f64::from(f.values[i]) - want).abs());
+                }
+                compared += 1;
             }
-            for i in 0..6 {
-                let want = rows[k][l1 + i] * 1e6;
-                worst = worst.max((f64::from(f.values[i]) - want).abs());
-            }
-            compared += 1;
+            assert!(compared > 100, "{preset} at {rate} Hz: {compared}");
+            // Within the rounding to the wire's unit.
+            assert!(worst <= 0.5 + 1e-6, "{preset} at {rate} Hz: {worst}");
         }
-        assert!(compared > 100, "{rate} Hz: {compared}");
-        // Within the rounding to the micrometre of the wire.
-        assert!(worst <= 0.5 + 1e-6, "{rate} Hz: {worst} µm");
     }
 }
 
@@ -699,4 +708,54 @@ fn telemetry_over_udp_is_recorded_beside_the_commands_and_follows_the_actuator_m
     let response = model_response_of(&sim_csv, 0.05, 100_000.0, 2.0);
     let recorded = std::fs::read_to_string(&record).unwrap_or_else(|e| panic!("{e}"));
     measured_follow_the_model(&recorded, &response);
+}
+
+#[test]
+fn a_record_that_cannot_be_written_is_refused_before_anything_is_sent() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let receiver = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    receiver
+        .set_read_timeout(Some(Duration::from_millis(300)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let address = receiver
+        .local_addr()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_string();
+    let folder = dir.path().to_str().unwrap_or_default();
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "0.5",
+        "--record",
+        folder,
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("it is a folder"), "{}", stderr(&o));
+    let mut buf = [0u8; 64];
+    assert!(receiver.recv(&mut buf).is_err(), "a frame was sent");
+    // A bad model option of the simulator is refused by name.
+    let o = stewart(&["device-sim", "--udp", "127.0.0.1:0", "--lag-s", "-1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--lag-s"), "{}", stderr(&o));
+    let o = stewart(&[
+        "device-sim",
+        "--udp",
+        "127.0.0.1:0",
+        "--min",
+        "10",
+        "--max",
+        "0",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("--min 10 is above --max 0"),
+        "{}",
+        stderr(&o)
+    );
 }

@@ -101,13 +101,13 @@ pub struct DeviceSimArgs {
     #[arg(long)]
     pub telemetry: bool,
     /// The simulated actuators' first-order lag: time constant, seconds (0: none).
-    #[arg(long, value_name = "S", default_value = "0", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "0", value_parser = parse_model_number)]
     pub lag_s: f64,
     /// The simulated actuators' speed limit, wire units per second (µm/s, 0.01°/s, µs/s).
-    #[arg(long, value_name = "N", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", value_parser = parse_model_number)]
     pub speed_max: Option<f64>,
     /// The simulated actuators do not move while the set-point is this close, wire units.
-    #[arg(long, value_name = "N", default_value = "0", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_model_number)]
     pub dead_band: f64,
 }
 

@@ -179,13 +179,18 @@ impl Planner {
     ) -> Result<(State, f64), String> {
         self.tracker.delta_time = dt;
         self.tracker.reset();
+        // Without a jerk limit the plan is second order: accelerations may jump, and the
+        // solver takes none at either end (a braking acceleration left in would make it
+        // fail on the exact braking distance).
+        let third_order = self.input.max_jerk[0].is_finite();
+        let acceleration = |a: f64| if third_order { a } else { 0.0 };
         self.input.current_position[0] = now.0;
         self.input.current_velocity[0] = now.1;
-        self.input.current_acceleration[0] = now.2;
+        self.input.current_acceleration[0] = acceleration(now.2);
         self.input.minimum_duration = minimum;
         self.target.position[0] = goal.0;
         self.target.velocity[0] = goal.1;
-        self.target.acceleration[0] = goal.2;
+        self.target.acceleration[0] = acceleration(goal.2);
         let result = self
             .tracker
             .update(&self.target, &self.input, &mut self.output)
@@ -302,11 +307,30 @@ impl Axis {
         result
     }
 
+    /// A plan the solver could not make on the exact edge of a case (a braking distance
+    /// that is exactly the distance left): made again with the acceleration and jerk
+    /// limits a millionth lower, which moves it off the edge and keeps within the limits.
+    fn degenerate(&mut self, dt: f64, now: State, goal: State) -> Result<(State, f64), String> {
+        let input = &mut self.own.input;
+        let (accel, jerk) = (input.max_acceleration[0], input.max_jerk[0]);
+        input.max_acceleration[0] = accel * (1.0 - 1e-6);
+        input.max_jerk[0] = jerk * (1.0 - 1e-6);
+        let plan = self.own.step(dt, now, goal, None);
+        self.own.input.max_acceleration[0] = accel;
+        self.own.input.max_jerk[0] = jerk;
+        plan
+    }
+
     fn follow(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), String> {
-        let (next, duration) = self.plan(dt, now, goal, None)?;
+        // The solver may fail on a hair-thin case (a plan of exactly one tick): each stage
+        // below then gives way to the next, and only a target no plan reaches fails.
+        let plain = self.plan(dt, now, goal, None);
         // Onto the target within the tick: the target's own numbers (the plan's end differs
         // by the solver's precision only).
-        if duration <= dt * (1.0 + 1e-9) && close(next.0, goal.0) {
+        if let Ok((next, duration)) = plain
+            && duration <= dt * (1.0 + 1e-9)
+            && close(next.0, goal.0)
+        {
             let v = if close(next.1, goal.1) {
                 goal.1
             } else {
@@ -319,7 +343,7 @@ impl Axis {
             };
             return Ok(((goal.0, v, a), true));
         }
-        if let Some(next) = self.converge(dt, now, goal)? {
+        if let Ok(Some(next)) = self.converge(dt, now, goal) {
             // On the target to the solver's precision (a plan of a tick that the solver found
             // a hair longer than the tick): counted as reached.
             let on_target = close(next.0, goal.0);
@@ -343,7 +367,12 @@ impl Axis {
             high *= 2.0;
         }
         let Some((mut high, mut best)) = found else {
-            // It runs away: chase it at the limits.
+            // It runs away: chase it at the limits (straight at it, no tick minimum, if the
+            // plain plan failed).
+            let (next, _) = match plain {
+                Ok(plan) => plan,
+                Err(_) => self.degenerate(dt, now, goal)?,
+            };
             return Ok((next, false));
         };
         // Bisection down to a tenth of a tick (re-planned every tick anyway).

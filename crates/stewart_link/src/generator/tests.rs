@@ -158,3 +158,27 @@ fn the_target_history_differentiates_parabolas_exactly_on_uneven_ticks() {
     h.clear();
     assert_eq!(h.push(1.0, [2.0; 6]), Motion::at_rest([2.0; 6]));
 }
+
+#[test]
+fn a_braking_distance_exactly_the_distance_left_is_planned() {
+    // Seen on the servo-desk's way home at 1 kHz: 27.375°/s braking at 3000°/s² with
+    // exactly v²/2a = 0.1249° to go, under the 30°/s home speed (the solver failed here).
+    let b = Bounds::new((-70.0, 70.0), Some(300.0), Some(3000.0), None);
+    let mut g = Generator::new([b; 6]);
+    g.state = Motion {
+        position: [1.266_088_772_998_069_4; 6],
+        velocity: [27.374_999_999_984_833; 6],
+        acceleration: [-3000.0; 6],
+    };
+    let home = Motion::at_rest([1.390_987_210_497_931; 6]);
+    let mut reached = false;
+    for _ in 0..50 {
+        let r = g.step(0.001_000_000_000_001_222_1, &home, Some(30.0));
+        reached = r.unwrap_or_else(|e| panic!("{e}")).all();
+        if reached {
+            break;
+        }
+    }
+    assert!(reached);
+    assert_eq!(g.state().position, home.position);
+}
