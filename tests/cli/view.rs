@@ -137,10 +137,16 @@ fn the_viewer_remembers_its_session_and_a_broken_one_is_no_crash() {
     // The next run without a scenario starts there: the servo platform, light, 1000×600.
     let shot = dir.path().join("again.png");
     let again = |shot: &std::path::Path| {
-        xvfb_view(&["--screenshot", &shot.display().to_string(), "--frames", "6"])
-            .env("STEWART_CONFIG_DIR", &config)
-            .output()
-            .unwrap_or_else(|e| panic!("{e}"))
+        xvfb_view(&[
+            "--screenshot",
+            &shot.display().to_string(),
+            "--frames",
+            "6",
+            "--from-session",
+        ])
+        .env("STEWART_CONFIG_DIR", &config)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"))
     };
     let o = again(&shot);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -153,6 +159,22 @@ fn the_viewer_remembers_its_session_and_a_broken_one_is_no_crash() {
         .filter(|p| p[0] > 245 && p[1] > 245 && p[2] > 245)
         .count();
     assert!(white > 100_000, "not the light theme: {white} white pixels");
+    // Without --from-session a screenshot run does not depend on the session left there.
+    let plain = dir.path().join("plain.png");
+    let o = xvfb_view(&[
+        "--screenshot",
+        &plain.display().to_string(),
+        "--frames",
+        "6",
+    ])
+    .env("STEWART_CONFIG_DIR", &config)
+    .output()
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let img = image::open(&plain)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_rgba8();
+    assert_eq!(img.dimensions(), (1280, 720));
     // A damaged session: a fresh start at the default size, no crash.
     std::fs::write(config.join("session.json"), "{ damaged").unwrap_or_else(|e| panic!("{e}"));
     let o = again(&shot);

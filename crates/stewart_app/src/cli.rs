@@ -720,6 +720,10 @@ pub struct ViewArgs {
     /// upscaled), `4k` 3840 pixels wide.
     #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = parse_shot_scale, requires = "screenshot")]
     pub screenshot_scale: ShotScale,
+    /// With --screenshot: start from the saved session (a screenshot run otherwise neither
+    /// reads nor writes it, so that it does not depend on leftover state).
+    #[arg(long, requires = "screenshot", conflicts_with = "fresh")]
+    pub from_session: bool,
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]
     pub frame_stats: bool,

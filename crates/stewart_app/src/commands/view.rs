@@ -19,14 +19,12 @@ const DEFAULT_SIZE: (u32, u32) = (1280, 720);
 
 /// Run the command.
 pub fn run(args: &ViewArgs) -> Result<ExitCode> {
-    // Screenshot runs are reproducible: no session is read (unless a config folder is
-    // named explicitly, as tests do) and none is written.
-    let folder = match (
-        args.screenshot.is_some(),
-        std::env::var_os("STEWART_CONFIG_DIR"),
-    ) {
-        (true, None) => None,
-        _ => session::folder(),
+    // Screenshot runs are reproducible: no session is read (unless --from-session asks for
+    // it) and none is written.
+    let folder = if args.screenshot.is_some() && !args.from_session {
+        None
+    } else {
+        session::folder()
     };
     let wanted = args.lang.unwrap_or_else(Lang::from_env);
     let (saved, mut note) = match (&folder, args.fresh) {
@@ -79,7 +77,8 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.look.presentation = args.presentation;
     state.look.expand_panels = args.expand_panels;
     state.workspace.show |= args.workspace;
-    state.session.folder = folder;
+    // Never written by a screenshot run, even one that started from it.
+    state.session.folder = folder.filter(|_| args.screenshot.is_none());
     state.session.origin = origin;
     state.session.note = note;
     let size = args

@@ -130,16 +130,28 @@ pub fn file_in(folder: &std::path::Path) -> PathBuf {
 /// starts fresh).
 pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, String> {
     let path = file_in(folder);
-    let text = match std::fs::read_to_string(&path) {
-        Ok(text) => text,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => {
-            return Err(lang.fmt(
-                "session.unreadable",
-                &[("path", &path.display()), ("why", &e)],
-            ));
-        }
+    let unreadable = |why: &dyn std::fmt::Display| {
+        lang.fmt(
+            "session.unreadable",
+            &[("path", &path.display()), ("why", why)],
+        )
     };
+    // The rules of every input: a regular file (not a device such as /dev/zero, not a FIFO
+    // that would block the start for ever), of a bounded size, read with a limit.
+    let meta = match std::fs::metadata(&path) {
+        Ok(meta) => meta,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(unreadable(&e)),
+    };
+    if !meta.is_file() {
+        return Err(unreadable(&"not a regular file"));
+    }
+    let bytes = std::fs::File::open(&path)
+        .map_err(|e| e.to_string())
+        .and_then(|file| stewart_kinematics::text::read_capped(file, MAX_SESSION_BYTES))
+        .map_err(|e| unreadable(&e))?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
     let session: Session = serde_json::from_str(&text)
         .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
     if session.version != VERSION {
@@ -154,6 +166,10 @@ pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, Str
     }
     Ok(Some(session))
 }
+
+/// The largest session file read, bytes (a session is a few kilobytes: its scenario and the
+/// panels' memory).
+pub const MAX_SESSION_BYTES: u64 = 4 << 20;
 
 /// Write the session into `folder` (whole or not at all).
 pub fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
@@ -256,5 +272,33 @@ mod tests {
         let camera = kept.camera;
         bad.restore_look(&mut kept);
         assert_eq!(kept.camera, camera);
+    }
+
+    #[test]
+    fn a_session_that_is_a_device_a_fifo_or_too_large_is_set_aside_at_once() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let file = file_in(dir.path());
+        // A link to /dev/zero (it used to grow memory without end).
+        std::os::unix::fs::symlink("/dev/zero", &file).unwrap_or_else(|e| panic!("{e}"));
+        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        assert!(note.contains("not a regular file"), "{note}");
+        std::fs::remove_file(&file).unwrap_or_else(|e| panic!("{e}"));
+        // A FIFO with no writer (opening it used to block the start for ever).
+        let made = std::process::Command::new("mkfifo")
+            .arg(&file)
+            .status()
+            .map(|s| s.success());
+        assert_eq!(made.ok(), Some(true));
+        let started = std::time::Instant::now();
+        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        assert!(note.contains("not a regular file"), "{note}");
+        assert!(started.elapsed().as_secs() < 2);
+        std::fs::remove_file(&file).unwrap_or_else(|e| panic!("{e}"));
+        // Larger than the cap.
+        let big = vec![b' '; (MAX_SESSION_BYTES + 1) as usize];
+        std::fs::write(&file, big).unwrap_or_else(|e| panic!("{e}"));
+        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        assert!(note.contains("larger than 4 MiB"), "{note}");
+        assert!(note.ends_with("starting fresh"), "{note}");
     }
 }

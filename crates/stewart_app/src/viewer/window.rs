@@ -112,17 +112,14 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
     // Signals are watched from the start (see `about_to_wait`).
     let _ = crate::interrupt::flag();
     let ctx = egui::Context::default();
-    super::fonts::install(&ctx);
     // The panels' open states from the saved session (a memory that does not read is
-    // dropped: the panels start closed, as on a first run).
-    if let Some(memory) = state
+    // dropped: the panels start closed, as on a first run), then the fonts.
+    let memory = state
         .session
         .panels
         .take()
-        .and_then(|text| ron::from_str::<egui::Memory>(&text).ok())
-    {
-        ctx.memory_mut(|m| *m = memory);
-    }
+        .and_then(|text| ron::from_str::<egui::Memory>(&text).ok());
+    super::fonts::start(&ctx, memory);
     let options_size = options.size;
     let mut app = App {
         state,
