@@ -12,7 +12,7 @@ printf 'x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,%s,0,0,0\n' "$height" > "$work/hom
 "$stewart" solve --preset dietmaier --poses "$work/home.csv" | cut -d, -f7- > "$work/legs.csv"
 "$stewart" fk --preset dietmaier --legs "$work/legs.csv" --assembly-modes > "$work/modes.csv"
 mkdir "$work/frames"
-tail -n +2 "$work/modes.csv" | while IFS=, read -r mode x y z roll pitch yaw _; do
+tail -n +2 "$work/modes.csv" | while IFS=, read -r _row mode x y z roll pitch yaw _; do
   # A pose table of one pose held for a second: the scenario shows that mode alone.
   printf 't,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,%s,%s,%s,%s,%s,%s\n1,%s,%s,%s,%s,%s,%s\n' \
     "$x" "$y" "$z" "$roll" "$pitch" "$yaw" "$x" "$y" "$z" "$roll" "$pitch" "$yaw" > "$work/one.csv"

@@ -158,6 +158,23 @@ fn forces_carry_the_payload() {
         "{}",
         stderr(&o)
     );
+    // Moments no rigid body has (5 > 1 + 1) are refused, and said why.
+    let o = stewart(&[
+        "forces",
+        "--preset",
+        "paired",
+        "--mass",
+        "10",
+        "--inertia",
+        "1,1,5",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("each principal moment at most the sum of the other two"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(o.stdout.is_empty());
 }
 
 #[test]

@@ -60,14 +60,16 @@ fn assembly_modes_lists_several_solutions_per_row() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let (header, rows) = parse_csv(&stdout(&o));
-    assert_eq!(header[0], "mode");
+    assert_eq!(header[..2], ["row", "mode"]);
     assert!(rows.len() >= 2, "{rows:?}");
-    // Numbered from 1, highest platform first, and the mirror of the first is among them.
-    assert_eq!(rows[0][0], 1.0);
-    assert!(rows[0][3] > 0.0);
+    // All of input row 1; numbered from 1, highest platform first, and the mirror of the
+    // first is among them.
+    assert!(rows.iter().all(|r| r[0] == 1.0));
+    assert_eq!(rows[0][1], 1.0);
+    assert!(rows[0][4] > 0.0);
     assert!(
         rows.iter()
-            .any(|r| (r[3] + rows[0][3]).abs() < 1e-9 && (r[1] - rows[0][1]).abs() < 1e-9)
+            .any(|r| (r[4] + rows[0][4]).abs() < 1e-9 && (r[2] - rows[0][2]).abs() < 1e-9)
     );
 }
 
@@ -129,14 +131,14 @@ fn dietmaiers_platform_has_forty_real_assembly_modes() {
     let (header, rows) = parse_csv(&stdout(&o));
     assert_eq!(
         header.join(","),
-        "mode,x,y,z,roll_deg,pitch_deg,yaw_deg,iterations,residual"
+        "row,mode,x,y,z,roll_deg,pitch_deg,yaw_deg,iterations,residual"
     );
     assert_eq!(rows.len(), 40);
     for (k, row) in rows.iter().enumerate() {
-        assert_eq!(row[0], (k + 1) as f64);
-        assert!(row[8] < 1e-12, "mode {}: residual {}", k + 1, row[8]);
+        assert_eq!((row[0], row[1]), (1.0, (k + 1) as f64));
+        assert!(row[9] < 1e-12, "mode {}: residual {}", k + 1, row[9]);
         // Each pose really has Dietmaier's legs (to the printed precision).
-        let l = dietmaier_legs_at(&row[1..7]);
+        let l = dietmaier_legs_at(&row[2..8]);
         for i in 0..6 {
             assert!(
                 (l[i] - DIETMAIER_LEGS[i]).abs() < 1e-12,
@@ -148,7 +150,7 @@ fn dietmaiers_platform_has_forty_real_assembly_modes() {
     // Forty different placements: any two differ by more than a millimetre somewhere.
     for i in 0..40 {
         for j in i + 1..40 {
-            let apart = (1..7).any(|c| (rows[i][c] - rows[j][c]).abs() > 1e-3);
+            let apart = (2..8).any(|c| (rows[i][c] - rows[j][c]).abs() > 1e-3);
             assert!(apart, "modes {} and {} coincide", i + 1, j + 1);
         }
     }
@@ -171,7 +173,7 @@ fn dietmaiers_platform_has_forty_real_assembly_modes() {
     let (_, preset_rows) = parse_csv(&stdout(&o));
     assert_eq!(preset_rows.len(), 40);
     assert!(preset_rows.iter().any(|r| {
-        r[1..7]
+        r[2..8]
             .iter()
             .zip([0.0, 0.0, 0.372525366226035, 0.0, 0.0, 0.0])
             .all(|(a, b)| (a - b).abs() < 1e-9)

@@ -161,3 +161,20 @@ fn help_lists_every_command() {
     );
     assert!(!text.contains("later"), "{text}");
 }
+
+#[test]
+fn an_argument_error_is_one_line_with_its_choices() {
+    // clap's list of choices joins the line (it used to show a literal `\n`).
+    let o = stewart(&["check", "--format", "bogus"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        stderr(&o),
+        "error: invalid value 'bogus' for '--format <FORMAT>' [possible values: text, json]\n"
+    );
+    // A value's own line break still shows as `\n`, on the one line.
+    let o = stewart(&["check", "--format", "a\nb"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("a\\nb"), "{err}");
+}

@@ -230,14 +230,14 @@ fn fk_turns_servo_angles_back_into_the_poses() {
     // Every row's own pose is among its assembly modes.
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let (header, rows) = parse_csv(&stdout(&o));
-    assert_eq!(header[..3], ["t", "mode", "x"]);
+    assert_eq!(header[..4], ["t", "row", "mode", "x"]);
     for want in solved {
         let same_time: Vec<&Vec<f64>> = rows.iter().filter(|r| r[0] == want[0]).collect();
         assert!(same_time.len() >= 2, "{}", same_time.len());
         assert!(
             same_time
                 .iter()
-                .any(|r| (1..4).all(|c| (r[c + 1] - want[c]).abs() < 1e-7)),
+                .any(|r| (1..4).all(|c| (r[c + 2] - want[c]).abs() < 1e-7)),
             "{want:?} not among {same_time:?}"
         );
     }

@@ -324,8 +324,9 @@ pub struct FkArgs {
     /// Start every row from the home pose instead of the previous row's pose.
     #[arg(long)]
     pub cold: bool,
-    /// List every assembly mode the search finds for each row (a `mode` column numbers
-    /// them, highest platform first) instead of following one branch.
+    /// List every assembly mode the search finds for each row (a `row` column names the
+    /// input row, from 1, and a `mode` column numbers its modes, highest platform first)
+    /// instead of following one branch.
     #[arg(long, conflicts_with = "cold")]
     pub assembly_modes: bool,
 }

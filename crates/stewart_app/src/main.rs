@@ -15,12 +15,13 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
             // One line, like every other error: clap's first paragraph names the option
-            // and why (a value with line breaks in it shows them as `\n`).
+            // and why; its own indented continuation (`[possible values: …]`) joins the
+            // line, and a value with line breaks in it shows them as `\n`.
             let text = e.render().to_string();
             let first = text
                 .split("\n\n")
                 .next()
-                .map(|p| p.trim_end().replace('\n', "\\n"))
+                .map(|p| p.trim_end().replace("\n  ", " ").replace('\n', "\\n"))
                 .filter(|p| !p.is_empty())
                 .unwrap_or_else(|| "error: bad arguments".to_owned());
             let _ = writeln!(std::io::stderr(), "{first}");

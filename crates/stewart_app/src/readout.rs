@@ -66,7 +66,10 @@ pub fn lines(
         Err(why) => out.push(match geometry.servo_angles(pose) {
             Some(Err(e)) => lang.fmt(
                 "teleop.servo_unreachable",
-                &[("n", &e.servo), ("ratio", &format!("{:.4}", e.ratio))],
+                &[
+                    ("n", &e.servo),
+                    ("ratio", &stewart_kinematics::rotary::compact(e.ratio)),
+                ],
             ),
             _ => why,
         }),

@@ -111,14 +111,27 @@ impl Payload {
             });
         }
         // Bounded iterations: finite, bounded input converges in a few sweeps.
-        let smallest = nalgebra::SymmetricEigen::try_new(inertia, f64::EPSILON, 200)
-            .map_or(f64::NEG_INFINITY, |e| e.eigenvalues.min());
+        let moments =
+            nalgebra::SymmetricEigen::try_new(inertia, f64::EPSILON, 200).map(|e| e.eigenvalues);
+        let smallest = moments.as_ref().map_or(f64::NEG_INFINITY, |m| m.min());
         if smallest < -1e-12 * inertia.amax() {
             return Err(ForceError::BadPayload {
                 field: "inertia",
                 requirement: "positive semi-definite",
                 value: smallest,
             });
+        }
+        // A rigid body's principal moments obey the triangle inequality: each is at most the
+        // sum of the other two (equal for a flat plate).
+        if let Some(m) = &moments {
+            let (largest, sum) = (m.max(), m.sum());
+            if largest > (sum - largest) * (1.0 + 1e-9) + 1e-12 * inertia.amax() {
+                return Err(ForceError::BadPayload {
+                    field: "inertia",
+                    requirement: "a rigid body's: each principal moment at most the sum of the other two (kg·m²)",
+                    value: largest,
+                });
+            }
         }
         Ok(Self {
             mass,

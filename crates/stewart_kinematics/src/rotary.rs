@@ -69,10 +69,21 @@ pub enum RotaryError {
     },
 }
 
+/// `x` with four decimals when it is of a reasonable size, else in scientific notation (a
+/// joint far out of reach gives ratios like 1e300, which are not printed digit by digit).
+pub fn compact(x: f64) -> String {
+    if x.is_finite() && x.abs() < 1e4 {
+        format!("{x:.4}")
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
 /// No horn angle of servo `servo` reaches its platform joint.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error(
-    "servo {servo} cannot reach its platform joint: no horn angle closes its rod (|L|/√(M²+N²) = {ratio:.4}, over 1)"
+    "servo {servo} cannot reach its platform joint: no horn angle closes its rod (|L|/√(M²+N²) = {}, over 1)",
+    compact(*.ratio)
 )]
 pub struct Unreachable {
     /// Servo number, from 1.
@@ -356,6 +367,20 @@ pub(crate) fn wrap_half_turn(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_joint_far_out_of_reach_is_said_without_hundreds_of_digits() {
+        let e = Unreachable {
+            servo: 3,
+            ratio: 1e300,
+            excess: 1e300,
+        };
+        let text = e.to_string();
+        assert!(text.contains("= 1.000e300, over 1"), "{text}");
+        assert!(text.len() < 140, "{text}");
+        assert_eq!(compact(1.234_56), "1.2346");
+        assert_eq!(compact(f64::INFINITY), "inf");
+    }
     use proptest::prelude::*;
 
     fn hobby() -> RotaryActuators {

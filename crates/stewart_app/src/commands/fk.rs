@@ -70,7 +70,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
             let modes = geometry
                 .assembly_modes(row)
                 .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
-            mode_rows(&mut csv, time(k), &modes);
+            mode_rows(&mut csv, time(k), k, &modes);
         }
     } else {
         let sequence = geometry
@@ -124,7 +124,7 @@ fn servos(
             let modes = geometry
                 .servo_assembly_modes(&angles)
                 .map_err(|e| anyhow!("{file}, line {}: {e}", table.line(k)))?;
-            mode_rows(&mut csv, t_index.map(|i| row[i]), &modes);
+            mode_rows(&mut csv, t_index.map(|i| row[i]), k, &modes);
             continue;
         }
         let from = if args.cold {
@@ -143,26 +143,27 @@ fn servos(
     Ok(ExitCode::SUCCESS)
 }
 
-/// The output table: `t` when the input has times, `mode` when assembly modes are listed,
-/// then the pose columns.
+/// The output table: `t` when the input has times, `row` (the input row, from 1) and
+/// `mode` when assembly modes are listed, then the pose columns.
 fn pose_table(times: bool, modes: bool) -> CsvText {
     let mut header: Vec<&str> = Vec::new();
     if times {
         header.push("t");
     }
     if modes {
-        header.push("mode");
+        header.extend(["row", "mode"]);
     }
     header.extend(POSE_OUT);
     CsvText::with_header(&header)
 }
 
-/// One row per assembly mode of an input row, numbered from 1.
-fn mode_rows(csv: &mut CsvText, time: Option<f64>, modes: &[ForwardSolution]) {
+/// One row per assembly mode of input row `k` (counted from 0, written from 1), the modes
+/// numbered from 1.
+fn mode_rows(csv: &mut CsvText, time: Option<f64>, k: usize, modes: &[ForwardSolution]) {
     for (m, s) in modes.iter().enumerate() {
         csv.row(
             time.into_iter()
-                .chain([(m + 1) as f64])
+                .chain([(k + 1) as f64, (m + 1) as f64])
                 .chain(pose_values(s)),
         );
     }

@@ -83,11 +83,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.session.note = note;
     let size = args
         .size
-        .or_else(|| {
-            saved
-                .as_ref()
-                .map(|s| (s.window[0].clamp(320, 8192), s.window[1].clamp(240, 8192)))
-        })
+        .or_else(|| saved.as_ref().and_then(session::Session::window_size))
         .unwrap_or(DEFAULT_SIZE);
     run_viewer(
         state,

@@ -89,10 +89,26 @@ impl Session {
             .map_err(|e| e.to_string())
     }
 
-    /// Put the saved look (and camera, when it is a usable one) on `look`.
+    /// The saved window size, when it is one a screen can show (320×240 to 8192×8192; a
+    /// damaged file's 4294967295² is not taken).
+    pub fn window_size(&self) -> Option<(u32, u32)> {
+        let [w, h] = self.window;
+        ((320..=8192).contains(&w) && (240..=8192).contains(&h)).then_some((w, h))
+    }
+
+    /// Put the saved look (and camera, when it is a usable one: finite, within the bounds a
+    /// camera takes anywhere — angles ±3600°, distance up to 10 km, target within 1 km)
+    /// on `look`.
     pub fn restore_look(&self, look: &mut Look) {
+        use stewart_kinematics::bounds::{ANGLE_DEG, LENGTH_M};
         let [azimuth_deg, elevation_deg, distance, x, y, z] = self.camera;
-        if self.camera.iter().all(|v| v.is_finite()) && distance > 0.0 {
+        let within = |v: f32, limit: f64| v.is_finite() && f64::from(v.abs()) <= limit;
+        let usable = within(azimuth_deg, ANGLE_DEG)
+            && within(elevation_deg, ANGLE_DEG)
+            && within(distance, 10.0 * LENGTH_M)
+            && distance > 0.0
+            && [x, y, z].iter().all(|&c| within(c, LENGTH_M));
+        if usable {
             look.camera = OrbitCamera {
                 azimuth_deg,
                 elevation_deg: elevation_deg.clamp(-89.5, 89.5),
@@ -272,6 +288,24 @@ mod tests {
         let camera = kept.camera;
         bad.restore_look(&mut kept);
         assert_eq!(kept.camera, camera);
+        // A camera 1e38 m away, or aimed 1e30 m off, and a window of 4294967295² are not
+        // taken either.
+        for wild in [
+            [0.0, 20.0, 1e38, 0.0, 0.0, 0.0],
+            [0.0, 20.0, 3.0, 1e30, 0.0, 0.0],
+            [1e9, 20.0, 3.0, 0.0, 0.0, 0.0],
+        ] {
+            bad.camera = wild;
+            bad.restore_look(&mut kept);
+            assert_eq!(kept.camera, camera, "{wild:?}");
+        }
+        bad.window = [u32::MAX; 2];
+        assert_eq!(bad.window_size(), None);
+        bad.window = [1000, 600];
+        assert_eq!(bad.window_size(), Some((1000, 600)));
+        bad.camera = [30.0, 20.0, 3.0, 0.1, 0.0, 0.5];
+        bad.restore_look(&mut kept);
+        assert_eq!(kept.camera.distance, 3.0);
     }
 
     #[test]

@@ -161,7 +161,10 @@ impl OutOfReach {
             OutOfReach::NotANumber => lang.tr("teleop.not_a_number").to_owned(),
             OutOfReach::Servo { servo, ratio } => lang.fmt(
                 "teleop.servo_unreachable",
-                &[("n", &servo), ("ratio", &format!("{ratio:.4}"))],
+                &[
+                    ("n", &servo),
+                    ("ratio", &stewart_kinematics::rotary::compact(ratio)),
+                ],
             ),
             OutOfReach::Limit {
                 n,

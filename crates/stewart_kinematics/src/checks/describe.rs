@@ -86,8 +86,9 @@ impl fmt::Display for Finding {
             ),
             FindingKind::Unreachable => write!(
                 f,
-                "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; worst |L|/√(M²+N²) = {worst:.4} at t = {when:.3} s, {:.2} % beyond reach",
-                over * 100.0
+                "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; worst |L|/√(M²+N²) = {} at t = {when:.3} s, {} % beyond reach",
+                crate::rotary::compact(worst),
+                crate::rotary::compact(over * 100.0)
             ),
             FindingKind::ServoMax => write!(
                 f,

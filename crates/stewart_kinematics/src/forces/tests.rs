@@ -132,6 +132,30 @@ fn bad_payloads_and_singular_geometry_are_refused() {
         )
         .is_err()
     );
+    // Principal moments 1, 1, 5 break the triangle inequality: no rigid body has them.
+    let moments = |m: [f64; 3]| {
+        Payload::new(
+            1.0,
+            Vector3::zeros(),
+            Matrix3::from_diagonal(&Vector3::from(m)),
+        )
+    };
+    let e = moments([1.0, 1.0, 5.0])
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        e.contains("each principal moment at most the sum of the other two"),
+        "{e}"
+    );
+    // A thin plate (Izz = Ixx + Iyy), a rod (0, 1, 1) and a point mass (zeros) are possible.
+    for m in [[1.0, 1.0, 2.0], [0.0, 1.0, 1.0], [0.0; 3], [2.0, 2.5, 4.0]] {
+        assert!(moments(m).is_ok(), "{m:?}");
+    }
+    // Rotated off its principal axes, the same impossible body is refused too.
+    let r = nalgebra::Rotation3::from_euler_angles(0.3, -0.2, 0.7);
+    let rotated = r * Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 5.0)) * r.transpose();
+    assert!(Payload::new(1.0, Vector3::zeros(), rotated).is_err());
     let seed = Geometry::seed();
     assert_eq!(
         seed.static_forces(&seed.home_pose(), &payload(10.0, [0.0; 3])),
