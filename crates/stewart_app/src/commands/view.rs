@@ -83,7 +83,7 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.session.note = note;
     let size = args
         .size
-        .or_else(|| saved.as_ref().and_then(session::Session::window_size))
+        .or_else(|| saved.as_ref().and_then(Session::window_size))
         .unwrap_or(DEFAULT_SIZE);
     run_viewer(
         state,
