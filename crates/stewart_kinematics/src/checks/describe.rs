@@ -88,7 +88,7 @@ impl fmt::Display for Finding {
                 f,
                 "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; worst |L|/√(M²+N²) = {} at t = {when:.3} s, {} % beyond reach",
                 crate::rotary::compact(worst),
-                crate::rotary::compact(over * 100.0)
+                percent(over * 100.0)
             ),
             FindingKind::ServoMax => write!(
                 f,
@@ -145,5 +145,15 @@ impl fmt::Display for Finding {
                 "the platform does not move rigidly {span}: a distance between platform joints changed by {worst:.3e} m (tolerance {limit:.1e} m) at t = {when:.3} s"
             ),
         }
+    }
+}
+
+/// A percentage with two decimals, in scientific notation when it is out of all proportion
+/// (a joint far out of reach).
+fn percent(p: f64) -> String {
+    if p.is_finite() && p.abs() < 1e6 {
+        format!("{p:.2}")
+    } else {
+        format!("{p:.3e}")
     }
 }
