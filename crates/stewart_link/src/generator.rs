@@ -33,8 +33,8 @@
 //! first kind.
 
 use rsruckig::prelude::{
-    DataArrayOrVec, IgnoreErrorHandler, InputParameter, OutputParameter, RuckigResult,
-    Synchronization, TargetState, Trackig,
+    ControlInterface, DataArrayOrVec, IgnoreErrorHandler, InputParameter, OutputParameter,
+    RuckigResult, Synchronization, TargetState, Trackig,
 };
 use thiserror::Error;
 
@@ -310,6 +310,9 @@ impl Axis {
     /// A plan the solver could not make on the exact edge of a case (a braking distance
     /// that is exactly the distance left): made again with the acceleration and jerk
     /// limits a millionth lower, which moves it off the edge and keeps within the limits.
+    /// Should that fail too (a gap of a few nanometres with a little speed left), the
+    /// actuator brakes to rest as fast as the limits allow (Ruckig's velocity interface:
+    /// no position target, so no edge case), and the next ticks start from rest.
     fn degenerate(&mut self, dt: f64, now: State, goal: State) -> Result<(State, f64), String> {
         let input = &mut self.own.input;
         let (accel, jerk) = (input.max_acceleration[0], input.max_jerk[0]);
@@ -318,7 +321,13 @@ impl Axis {
         let plan = self.own.step(dt, now, goal, None);
         self.own.input.max_acceleration[0] = accel;
         self.own.input.max_jerk[0] = jerk;
-        plan
+        if plan.is_ok() {
+            return plan;
+        }
+        self.own.input.control_interface = ControlInterface::Velocity;
+        let braked = self.own.step(dt, now, (now.0, 0.0, 0.0), None);
+        self.own.input.control_interface = ControlInterface::Position;
+        braked
     }
 
     fn follow(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), String> {
