@@ -18,7 +18,19 @@ fn udp_link(
     rate: &str,
     ramp: &str,
 ) -> std::process::Output {
-    stewart(&[
+    udp_link_with(preset, address, duration, rate, ramp, &[])
+}
+
+/// [`udp_link`] with `extra` options after the others.
+fn udp_link_with(
+    preset: &str,
+    address: &str,
+    duration: &str,
+    rate: &str,
+    ramp: &str,
+    extra: &[&str],
+) -> std::process::Output {
+    let args = [
         "link",
         "--preset",
         preset,
@@ -32,7 +44,8 @@ fn udp_link(
         rate,
         "--ramp",
         ramp,
-    ])
+    ];
+    stewart(&[&args[..], extra].concat())
 }
 
 /// The frames of a dry-run record: (time, frame) per line.
@@ -682,23 +695,15 @@ fn telemetry_over_udp_is_recorded_beside_the_commands_and_follows_the_actuator_m
         "2",
     ];
     let sim = device_sim(&address, &model);
-    let o = stewart(&[
-        "link",
-        "--preset",
+    let record_path = record.to_str().unwrap_or_default();
+    let o = udp_link_with(
         "paired",
-        "--transport",
-        "udp",
-        "--address",
         &address,
-        "--duration",
         "3",
-        "--rate",
         "200",
-        "--ramp",
         "0.5",
-        "--record",
-        record.to_str().unwrap_or_default(),
-    ]);
+        &["--record", record_path],
+    );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("link: telemetry answered "), "{err}");
@@ -722,23 +727,32 @@ fn a_record_that_cannot_be_written_is_refused_before_anything_is_sent() {
         .unwrap_or_else(|e| panic!("{e}"))
         .to_string();
     let folder = dir.path().to_str().unwrap_or_default();
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "paired",
-        "--transport",
-        "udp",
-        "--address",
-        &address,
-        "--duration",
-        "0.5",
-        "--record",
-        folder,
-    ]);
+    let o = udp_link_with("paired", &address, "0.5", "100", "2", &["--record", folder]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("it is a folder"), "{}", stderr(&o));
     let mut buf = [0u8; 64];
     assert!(receiver.recv(&mut buf).is_err(), "a frame was sent");
+    // The dry run's record and the telemetry record in one new file: refused, nothing left.
+    let both = dir.path().join("both.txt");
+    let both = both.to_str().unwrap_or_default();
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--dry-run",
+        "--duration",
+        "0.2",
+        "--out",
+        both,
+        "--record",
+        both,
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("name the same file"), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_dir(dir.path()).map(Iterator::count).ok(),
+        Some(0)
+    );
     // A bad model option of the simulator is refused by name.
     let o = stewart(&["device-sim", "--udp", "127.0.0.1:0", "--lag-s", "-1"]);
     assert_eq!(o.status.code(), Some(2));
