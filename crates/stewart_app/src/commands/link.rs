@@ -41,6 +41,14 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         Some(path) => {
             let mut inputs = source::inputs(&args.scenario);
             if let Some(out) = args.out.as_deref() {
+                // Also when neither exists yet: the two records would overwrite each other.
+                let same = |p: &std::path::Path| std::path::absolute(p).ok();
+                if same(out).is_some() && same(out) == same(path) {
+                    bail!(
+                        "--record and --out name the same file `{}`: give each its own",
+                        path.display()
+                    );
+                }
                 inputs.push(("the dry run's record", out));
             }
             let destination = output::destination(Some(path), &inputs)?
