@@ -33,7 +33,7 @@ fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
 }
 
 fn export_to(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::path::Path) {
-    h.get_by_label("Export").click();
+    h.get_by_label("Export…").click();
     h.run();
     export_again(h, kind, path);
 }
@@ -216,7 +216,7 @@ fn the_workspace_figure_surface_and_view_are_exported() {
     // An orientation nothing reaches (the paired platform rolled 80°): one error, nothing
     // written. (The seed, without joint-cone limits, reaches any roll near its base.)
     let mut h = tall_harness("paired", 3000.0);
-    h.get_by_label("Export").click();
+    h.get_by_label("Export…").click();
     h.run();
     h.state_mut().workspace.follow_pose = false;
     h.state_mut().workspace.orientation_deg = [80.0, 0.0, 0.0];

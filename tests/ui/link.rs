@@ -49,9 +49,13 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
     until(&mut h, LinkState::Armed);
     assert_eq!(h.query_all_by_label("ARMED").count(), 2);
     assert!(!h.state().link.recent_lines().is_empty());
-    // Esc is the e-stop: the platform goes home and the link disarms.
+    // Esc is the e-stop, and only that while a link is connected: presentation mode stays.
+    h.state_mut().look.presentation = true;
+    h.run();
     h.key_press(egui::Key::Escape);
     h.run();
+    assert!(h.state().look.presentation);
+    h.state_mut().look.presentation = false;
     let after = h.state().link.sender_status().map(|s| s.state);
     assert!(
         matches!(after, Some(LinkState::Stopping | LinkState::Disarmed)),

@@ -16,10 +16,18 @@ fn p_enters_presentation_mode_and_escape_leaves_it() {
     assert!(h.state().look.presentation);
     // Control panels are hidden, the plot stays, colours are light, text is larger.
     assert!(h.query_by_label("Playback").is_none());
-    assert!(
-        h.query_by_label("Presentation: P or Esc to leave")
-            .is_some()
-    );
+    // The toolbar keeps play/pause, full screen and the way out on screen.
+    assert!(h.query_by_label("Pause").is_some());
+    assert!(h.query_by_label("Leave presentation").is_some());
+    h.get_by_label("Full screen").click();
+    h.run();
+    assert!(h.state().look.fullscreen);
+    h.key_press(egui::Key::F11);
+    h.run();
+    assert!(!h.state().look.fullscreen);
+    h.get_by_label("Pause").click();
+    h.run();
+    assert!(!h.state().playback.playing);
     assert_eq!(
         h.state().theme().background,
         stewart_render::Theme::LIGHT.background
@@ -30,6 +38,44 @@ fn p_enters_presentation_mode_and_escape_leaves_it() {
     h.run();
     assert!(!h.state().look.presentation);
     assert!(h.query_by_label("Playback").is_some());
+    h.key_press(egui::Key::P);
+    h.run();
+    h.get_by_label("Leave presentation").click();
+    h.run();
+    assert!(!h.state().look.presentation);
+}
+
+#[test]
+fn play_and_export_are_in_the_toolbar_and_the_controls_scroll_bar_is_always_drawn() {
+    let mut h = harness("seed");
+    // Play/pause in the toolbar, whatever the side panel shows.
+    h.get_by_label("Pause").click();
+    h.run();
+    assert!(!h.state().playback.playing);
+    h.get_by_label("Play").click();
+    h.run();
+    assert!(h.state().playback.playing);
+    // From manual mode, Play plays the trajectory.
+    h.get_by_label("Manual pose").click();
+    h.run();
+    h.get_by_label("Play").click();
+    h.run();
+    assert!(h.state().playback.is_playing());
+    // Export opens its window; closing it hides it again.
+    assert!(h.query_by_label("What").is_none());
+    h.get_by_label("Export…").click();
+    h.run();
+    assert!(h.state().exports.open);
+    assert!(h.query_by_label("What").is_some());
+    h.get_by_label("Export…").click();
+    h.run();
+    assert!(h.query_by_label("What").is_none());
+    // A slow machine: the toolbar says frames are skipped.
+    h.state_mut().playback.frame_rate = Some(4.0);
+    h.run();
+    assert!(h.query_by_label("4 frames/s: frames skipped").is_some());
+    // Scroll bars are solid (drawn whether or not the pointer is over them).
+    assert!(!h.ctx.global_style().spacing.scroll.floating);
 }
 
 #[test]

@@ -700,7 +700,8 @@ pub struct ViewArgs {
     /// Show the reachable workspace (surface and conditioning slice) from the start.
     #[arg(long)]
     pub workspace: bool,
-    /// Window size WxH in logical pixels (default: the last session's, else 1280x720).
+    /// Window size WxH in logical pixels (default: the last session's within the screen,
+    /// else 85 % of the screen).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
     /// Start without the saved session (the last scenario, camera, panels, theme and

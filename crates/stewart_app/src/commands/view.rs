@@ -12,10 +12,8 @@ use crate::cli::ViewArgs;
 use crate::i18n::{Lang, fonts};
 use crate::source;
 use crate::viewer::session::{self, Session};
+use crate::viewer::window_size::WindowSize;
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
-
-/// The window size when neither the options nor a saved session say.
-const DEFAULT_SIZE: (u32, u32) = (1280, 720);
 
 /// Run the command.
 pub fn run(args: &ViewArgs) -> Result<ExitCode> {
@@ -81,10 +79,11 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.session.folder = folder.filter(|_| args.screenshot.is_none());
     state.session.origin = origin;
     state.session.note = note;
-    let size = args
-        .size
-        .or_else(|| saved.as_ref().and_then(Session::window_size))
-        .unwrap_or(DEFAULT_SIZE);
+    let size = match (args.size, saved.as_ref().and_then(Session::window_size)) {
+        (Some((w, h)), _) => WindowSize::Exact(w, h),
+        (None, Some((w, h))) => WindowSize::Remembered(w, h),
+        (None, None) => WindowSize::FitScreen,
+    };
     run_viewer(
         state,
         ViewOptions {

@@ -136,6 +136,8 @@ impl Default for ExportForm {
 /// The Export panel's state.
 #[derive(Default)]
 pub struct Exports {
+    /// Whether the export window is open.
+    pub open: bool,
     /// The choices.
     pub form: ExportForm,
     /// The export running or last run.

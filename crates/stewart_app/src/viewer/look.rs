@@ -16,6 +16,8 @@ pub struct Look {
     pub light_theme: bool,
     /// Presentation mode: light colours, large text, control panels hidden.
     pub presentation: bool,
+    /// Full screen (F11); the window follows it.
+    pub fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
     pub expand_panels: bool,
     /// Draw the path the platform centre has traced.
@@ -43,6 +45,7 @@ impl Look {
             lang: Lang::En,
             light_theme: false,
             presentation: false,
+            fullscreen: false,
             expand_panels: false,
             show_path: true,
             platform_axes: false,

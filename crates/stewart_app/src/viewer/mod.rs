@@ -11,7 +11,8 @@
 //!   the edge of the reachable set;
 //! - [`session`]: what the viewer remembers between runs;
 //! - [`shots`]: screenshots of the 3D view (any size, transparent) or the window;
-//! - [`window`]: winit, egui-winit and egui-wgpu around all that.
+//! - [`window`]: winit, egui-winit and egui-wgpu around all that; [`window_size`]: the
+//!   size it opens at.
 
 pub mod assembly;
 pub mod derived;
@@ -34,6 +35,7 @@ pub mod teleop;
 pub mod view3d;
 pub mod window;
 pub mod window_shot;
+pub mod window_size;
 pub mod workspace;
 
 pub use state::ViewerState;

@@ -33,7 +33,29 @@ pub struct Playback {
     pub clock: f64,
     /// Leg lengths of manual mode over the last seconds.
     pub history: History,
+    /// Frames drawn per second of wall time while playing, smoothed over about a second
+    /// (`None` until measured).
+    pub frame_rate: Option<f64>,
 }
+
+/// The longest step of time one frame makes, seconds: a longer stall (the machine slept,
+/// the window was dragged) is not played through.
+pub const MAX_FRAME_STEP_S: f64 = 1.0;
+
+/// The time a frame moves playback on: the wall time since the last frame, whole (a slow
+/// machine skips frames, it does not play slower), when the last frame left something
+/// moving; zero after an idle wait, so that the time the window sat paused is not played
+/// through when Play is pressed.
+pub fn frame_step(since_last_frame_s: f64, was_moving: bool) -> f64 {
+    if was_moving && since_last_frame_s.is_finite() {
+        since_last_frame_s.clamp(0.0, MAX_FRAME_STEP_S)
+    } else {
+        0.0
+    }
+}
+
+/// Below this many frames a second, the viewer says that it skips frames to keep time.
+pub const SMOOTH_FRAME_RATE: f64 = 20.0;
 
 impl Playback {
     /// Playing the trajectory from its start; the manual pose at `home`.
@@ -47,14 +69,26 @@ impl Playback {
             looping: true,
             clock: 0.0,
             history: History::default(),
+            frame_rate: None,
         }
     }
 
-    /// Move playback on by `dt` seconds of wall time over a trajectory `duration` long;
-    /// returns whether the time moved.
+    /// Move playback on by `dt` seconds of wall time over a trajectory `duration` long
+    /// (the whole `dt` however long a frame took: playback keeps true time and skips
+    /// frames when drawing is slow); returns whether the time moved.
     pub fn play(&mut self, dt: f64, duration: f64) -> bool {
-        if self.mode != MotionMode::Trajectory || !self.playing {
+        if !self.is_playing() {
+            self.frame_rate = None;
             return false;
+        }
+        if dt > 0.0 {
+            // An exponential average whose weight spans about a second of frames.
+            let rate = 1.0 / dt;
+            let weight = dt.min(1.0);
+            self.frame_rate = Some(match self.frame_rate {
+                Some(r) => r + weight * (rate - r),
+                None => rate,
+            });
         }
         self.time += dt * self.speed;
         if self.time > duration {
@@ -66,6 +100,24 @@ impl Playback {
             }
         }
         true
+    }
+
+    /// Whether the trajectory is playing (not paused, not in manual mode).
+    pub fn is_playing(&self) -> bool {
+        self.playing && self.mode == MotionMode::Trajectory
+    }
+
+    /// Play or pause the trajectory (from manual mode: play it).
+    pub fn toggle(&mut self) {
+        self.playing = !self.is_playing();
+        self.mode = MotionMode::Trajectory;
+    }
+
+    /// The measured frame rate when it is too low for smooth playback: frames are being
+    /// skipped to keep time.
+    pub fn skipping_frames(&self) -> Option<f64> {
+        self.frame_rate
+            .filter(|r| self.is_playing() && *r < SMOOTH_FRAME_RATE)
     }
 
     /// Stop and step by `step` seconds (one sample, signed), within `[0, duration]`.
@@ -80,5 +132,41 @@ impl Playback {
             MotionMode::Trajectory => self.playing,
             MotionMode::Manual => self.history.recently_changed(self.clock),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_slow_machine_plays_in_true_time_and_says_it_skips_frames() {
+        let mut p = Playback::new(Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [0.0; 3]));
+        // Four frames a second for ten seconds of wall time: ten seconds played (the step
+        // used to be capped at 0.1 s a frame, half speed on this machine).
+        for _ in 0..40 {
+            p.play(frame_step(0.25, true), 100.0);
+        }
+        assert!((p.time - 10.0).abs() < 1e-9, "{}", p.time);
+        let rate = p.skipping_frames().unwrap_or_default();
+        assert!((rate - 4.0).abs() < 1e-6, "{rate}");
+        // Sixty frames a second: smooth, nothing said.
+        for _ in 0..120 {
+            p.play(frame_step(1.0 / 60.0, true), 100.0);
+        }
+        assert_eq!(p.skipping_frames(), None);
+        assert!((p.time - 12.0).abs() < 1e-9, "{}", p.time);
+        // Paused: no rate, nothing said.
+        p.toggle();
+        p.play(frame_step(0.25, true), 100.0);
+        assert_eq!(p.skipping_frames(), None);
+    }
+
+    #[test]
+    fn an_idle_wait_or_a_stall_is_not_played_through() {
+        assert_eq!(frame_step(30.0, false), 0.0);
+        assert_eq!(frame_step(30.0, true), MAX_FRAME_STEP_S);
+        assert_eq!(frame_step(f64::NAN, true), 0.0);
+        assert_eq!(frame_step(-1.0, true), 0.0);
     }
 }

@@ -30,8 +30,8 @@ pub struct ViewOptions {
     pub screenshot_scale: ShotScale,
     /// Print frame-time statistics when the window closes.
     pub stats: bool,
-    /// Window size, logical pixels.
-    pub size: (u32, u32),
+    /// Where the window's size comes from.
+    pub size: super::window_size::WindowSize,
 }
 
 /// Per-frame timings, milliseconds.
@@ -96,6 +96,10 @@ struct App {
     logical_size: [u32; 2],
     /// Gamepads for teleoperation.
     gamepads: super::gamepad::Gamepads,
+    /// Whether the window was last put in full screen (F11).
+    fullscreen: bool,
+    /// Whether the last frame left something moving (playback, an export, the link).
+    was_busy: bool,
 }
 
 /// Open the viewer on `state` and run until the window closes.
@@ -120,7 +124,6 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         .take()
         .and_then(|text| ron::from_str::<egui::Memory>(&text).ok());
     super::fonts::start(&ctx, memory);
-    let options_size = options.size;
     let mut app = App {
         state,
         ctx,
@@ -134,8 +137,10 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         error: None,
         times: FrameTimes::default(),
         repaint_at: None,
-        logical_size: [options_size.0, options_size.1],
+        logical_size: [0, 0],
         gamepads: super::gamepad::Gamepads::new(),
+        fullscreen: false,
+        was_busy: false,
     };
     event_loop
         .run_app(&mut app)
@@ -201,10 +206,15 @@ impl App {
             .with_inner_size({
                 // A HiDPI scale makes the window larger in pixels than asked in points:
                 // keep it within what the GPU can draw into.
-                let scale = event_loop
-                    .primary_monitor()
-                    .map_or(1.0, |m| m.scale_factor());
-                let (w, h) = fitting_size(self.options.size, scale);
+                let monitor = event_loop.primary_monitor();
+                let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
+                let screen = monitor.map(|m| {
+                    let s = m.size().to_logical::<f64>(scale);
+                    (s.width, s.height)
+                });
+                let asked = self.options.size.on_screen(screen);
+                self.logical_size = [asked.0, asked.1];
+                let (w, h) = fitting_size(asked, scale);
                 winit::dpi::LogicalSize::new(w, h)
             })
             .with_max_inner_size(winit::dpi::PhysicalSize::new(
@@ -279,7 +289,7 @@ impl App {
         let dt = if self.options.screenshot.is_some() {
             1.0 / 60.0
         } else {
-            (now - self.last).as_secs_f64().min(0.1)
+            super::playback::frame_step((now - self.last).as_secs_f64(), self.was_busy)
         };
         self.last = now;
         self.state.advance(dt);
@@ -307,6 +317,14 @@ impl App {
             state.settle_workspace();
         }
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        self.was_busy = state.animating();
+        if state.look.fullscreen != self.fullscreen {
+            self.fullscreen = state.look.fullscreen;
+            open.window.set_fullscreen(
+                self.fullscreen
+                    .then_some(winit::window::Fullscreen::Borderless(None)),
+            );
+        }
         // Honour egui's own repaint requests (zero: at once; otherwise after the delay).
         self.repaint_at = output
             .viewport_output
@@ -452,6 +470,14 @@ impl App {
         );
         let state = &mut self.state;
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        self.was_busy = state.animating();
+        if state.look.fullscreen != self.fullscreen {
+            self.fullscreen = state.look.fullscreen;
+            open.window.set_fullscreen(
+                self.fullscreen
+                    .then_some(winit::window::Fullscreen::Borderless(None)),
+            );
+        }
         let ppp = output.pixels_per_point;
         let primitives = self.ctx.tessellate(std::mem::take(&mut output.shapes), ppp);
         let size = [

@@ -20,40 +20,79 @@ const SIZES: [(u32, u32); 5] = [
     (3840, 2160),
 ];
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+/// The toolbar's *Export…* button: opens (or closes) the export window.
+pub(super) fn open_button(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
-    egui::CollapsingHeader::new(t.tr("export.heading"))
-        .default_open(state.look.expand_panels)
-        .show(ui, |ui| {
-            if let Some(job) = &state.exports.job {
-                ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
-                ui.label(job.describe());
-                let label = if job.cancelling() {
-                    t.tr("export.cancelling")
-                } else {
-                    t.tr("export.cancel")
-                };
-                if ui
-                    .add_enabled(!job.cancelling(), egui::Button::new(label))
-                    .clicked()
-                {
-                    job.cancel();
-                }
-                return;
-            }
-            form(ui, state);
-            let path = state.exports.form.path.trim().to_owned();
-            if ui
-                .add_enabled(!path.is_empty(), egui::Button::new(t.tr("export.export")))
-                .clicked()
-            {
-                let work = work(state, PathBuf::from(path));
-                state.exports.status = None;
-                state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
-            }
-            widgets::status(ui, &state.exports.status);
-        });
+    let busy = state.exports.job.is_some();
+    let words = if busy {
+        t.fmt(
+            "export.open_busy",
+            &[(
+                "percent",
+                &format!(
+                    "{:.0}",
+                    100.0 * state.exports.job.as_ref().map_or(0.0, |j| j.fraction())
+                ),
+            )],
+        )
+    } else {
+        t.tr("export.open").to_owned()
+    };
+    if ui
+        .selectable_label(state.exports.open, words)
+        .on_hover_text(t.tr("export.open_tip"))
+        .clicked()
+    {
+        state.exports.open = !state.exports.open;
+    }
+}
+
+/// The export window, while it is open.
+pub fn window(ctx: &egui::Context, state: &mut ViewerState) {
+    if !state.exports.open {
+        return;
+    }
+    let t = state.look.lang;
+    let mut open = true;
+    egui::Window::new(t.tr("export.heading"))
+        .open(&mut open)
+        .resizable(false)
+        .collapsible(false)
+        .default_pos(ctx.content_rect().right_top() + egui::vec2(-420.0, 60.0))
+        .show(ctx, |ui| body(ui, state));
+    state.exports.open &= open;
+}
+
+/// What the export window holds: the form and *Export*, or the running export's progress.
+fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    if let Some(job) = &state.exports.job {
+        ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
+        ui.label(job.describe());
+        let label = if job.cancelling() {
+            t.tr("export.cancelling")
+        } else {
+            t.tr("export.cancel")
+        };
+        if ui
+            .add_enabled(!job.cancelling(), egui::Button::new(label))
+            .clicked()
+        {
+            job.cancel();
+        }
+        return;
+    }
+    form(ui, state);
+    let path = state.exports.form.path.trim().to_owned();
+    if ui
+        .add_enabled(!path.is_empty(), egui::Button::new(t.tr("export.export")))
+        .clicked()
+    {
+        let work = work(state, PathBuf::from(path));
+        state.exports.status = None;
+        state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
+    }
+    widgets::status(ui, &state.exports.status);
 }
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {

@@ -36,27 +36,27 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             .resizable(true)
             .default_size(320.0)
             .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    scenario::show(ui, state);
-                    ui.separator();
-                    geometry::show(ui, state);
-                    ui.separator();
-                    motion::show(ui, state);
-                    ui.separator();
-                    playback::show(ui, state);
-                    ui.separator();
-                    legs::show(ui, state);
-                    ui.separator();
-                    diagnostics::show(ui, state);
-                    design::show(ui, state);
-                    ui.separator();
-                    workspace::show(ui, state);
-                    reach::show(ui, state);
-                    ui.separator();
-                    export::show(ui, state);
-                    ui.separator();
-                    link::show(ui, state);
-                });
+                egui::ScrollArea::vertical()
+                    .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+                    .show(ui, |ui| {
+                        scenario::show(ui, state);
+                        ui.separator();
+                        geometry::show(ui, state);
+                        ui.separator();
+                        motion::show(ui, state);
+                        ui.separator();
+                        playback::show(ui, state);
+                        ui.separator();
+                        legs::show(ui, state);
+                        ui.separator();
+                        diagnostics::show(ui, state);
+                        design::show(ui, state);
+                        ui.separator();
+                        workspace::show(ui, state);
+                        reach::show(ui, state);
+                        ui.separator();
+                        link::show(ui, state);
+                    });
             });
     }
     egui::Panel::bottom("plot")
@@ -68,6 +68,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         })
         .show(ui, |ui| plot::show(ui, state));
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
+    export::window(ui.ctx(), state);
     if state.link.connected() {
         link_badge(ui.ctx(), state);
     }
@@ -141,6 +142,9 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
         visuals,
         ..egui::Style::default()
     };
+    // A scroll bar that is always drawn, full width: the panels below the fold can be seen
+    // to be there.
+    style.spacing.scroll = egui::style::ScrollStyle::solid();
     if state.look.presentation {
         for font in style.text_styles.values_mut() {
             font.size *= PRESENTATION_TEXT_SCALE;
@@ -151,21 +155,28 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
     }
 }
 
-/// Esc: e-stop of the link (and leaves presentation mode); Space: play/pause; ←/→: step;
-/// Home: back to the start; P: presentation mode; F12: screenshot.
+/// Esc: while a link is connected, its e-stop and nothing else; otherwise it leaves full
+/// screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
+/// P or F5: presentation mode; F11: full screen; F12: screenshot.
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     // The e-stop works whatever has the keyboard focus.
     if pressed(egui::Key::Escape) {
-        state.link.estop();
-        state.look.presentation = false;
+        if state.link.connected() {
+            state.link.estop();
+        } else {
+            state.look.presentation = false;
+            state.look.fullscreen = false;
+        }
+    }
+    if pressed(egui::Key::F11) {
+        state.look.fullscreen = !state.look.fullscreen;
     }
     if ui.ctx().text_edit_focused() {
         return;
     }
     if pressed(egui::Key::Space) {
-        state.playback.playing = !state.playback.playing;
-        state.playback.mode = MotionMode::Trajectory;
+        state.playback.toggle();
     }
     if pressed(egui::Key::ArrowLeft) {
         state.step(-1.0);

@@ -1,26 +1,36 @@
 //! Playback: play/pause, step, scrub, speed, loop.
 
-use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
+
+/// Play or pause the trajectory (the toolbar's first button; Space does the same).
+pub(super) fn play_button(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let label = if state.playback.is_playing() {
+        t.tr("playback.pause")
+    } else {
+        t.tr("playback.play")
+    };
+    if ui
+        .button(label)
+        .on_hover_text(t.tr("playback.key_space"))
+        .clicked()
+    {
+        state.playback.toggle();
+    }
+    if let Some(rate) = state.playback.skipping_frames() {
+        ui.label(
+            egui::RichText::new(t.fmt("playback.skipping", &[("fps", &format!("{rate:.0}"))]))
+                .color(ui.visuals().warn_fg_color),
+        )
+        .on_hover_text(t.tr("playback.skipping_tip"));
+    }
+}
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
     ui.heading(t.tr("playback.heading"));
     ui.horizontal(|ui| {
-        let label = if state.playback.playing {
-            t.tr("playback.pause")
-        } else {
-            t.tr("playback.play")
-        };
-        if ui
-            .button(label)
-            .on_hover_text(t.tr("playback.key_space"))
-            .clicked()
-        {
-            state.playback.playing = !state.playback.playing;
-            state.playback.mode = MotionMode::Trajectory;
-        }
         if ui
             .button(t.tr("playback.step_back"))
             .on_hover_text("←")

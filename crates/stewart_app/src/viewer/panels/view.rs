@@ -38,41 +38,63 @@ fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+/// The toolbar over the view, always in sight: play/pause and export first; the standard
+/// views and overlays, or in presentation mode full screen and the way out.
+fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
-    if state.look.presentation {
-        ui.label(
-            egui::RichText::new(t.tr("view.presentation_note"))
-                .small()
-                .weak(),
-        );
-    } else {
-        // Wrapped: a narrow window keeps every switch reachable.
-        ui.horizontal_wrapped(|ui| {
-            for (label, az, el) in VIEWS {
-                if ui.button(t.tr(label)).clicked() {
-                    state.look_from(az, el);
-                }
+    // Wrapped: a narrow window keeps every switch reachable.
+    ui.horizontal_wrapped(|ui| {
+        super::playback::play_button(ui, state);
+        if state.look.presentation {
+            let words = if state.look.fullscreen {
+                t.tr("view.leave_fullscreen")
+            } else {
+                t.tr("view.fullscreen")
+            };
+            if ui.button(words).on_hover_text("F11").clicked() {
+                state.look.fullscreen = !state.look.fullscreen;
             }
-            if ui.button(t.tr("view.reset")).clicked() {
-                state.look_from(VIEWS[0].1, VIEWS[0].2);
+            if ui
+                .button(t.tr("view.leave_presentation"))
+                .on_hover_text(t.tr("view.leave_presentation_tip"))
+                .clicked()
+            {
+                state.look.presentation = false;
             }
-            ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
-            ui.checkbox(&mut state.look.platform_axes, t.tr("view.platform_axes"));
-            ui.checkbox(&mut state.look.coloured_legs, t.tr("view.leg_colours"))
-                .on_hover_text(t.tr("view.leg_colours_tip"));
-            ui.checkbox(&mut state.look.labels, t.tr("view.labels"))
-                .on_hover_text(t.tr("view.labels_tip"));
-            ui.checkbox(&mut state.look.readouts, t.tr("view.readouts"))
-                .on_hover_text(t.tr("view.readouts_tip"));
-            ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state));
-        });
+            return;
+        }
+        super::export::open_button(ui, state);
+        ui.separator();
+        for (label, az, el) in VIEWS {
+            if ui.button(t.tr(label)).clicked() {
+                state.look_from(az, el);
+            }
+        }
+        if ui.button(t.tr("view.reset")).clicked() {
+            state.look_from(VIEWS[0].1, VIEWS[0].2);
+        }
+        ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
+        ui.checkbox(&mut state.look.platform_axes, t.tr("view.platform_axes"));
+        ui.checkbox(&mut state.look.coloured_legs, t.tr("view.leg_colours"))
+            .on_hover_text(t.tr("view.leg_colours_tip"));
+        ui.checkbox(&mut state.look.labels, t.tr("view.labels"))
+            .on_hover_text(t.tr("view.labels_tip"));
+        ui.checkbox(&mut state.look.readouts, t.tr("view.readouts"))
+            .on_hover_text(t.tr("view.readouts_tip"));
+        ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state));
+    });
+    if !state.look.presentation {
         super::widgets::status(ui, &state.shots.status);
     }
+}
+
+/// The panel.
+pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
+    toolbar(ui, state);
     let rect = ui.available_rect_before_wrap();
     let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
     camera_input(ui, state, &response, rect);
+    let t = state.look.lang;
     let theme = state.theme();
     let bg = theme.background.map(|c| (c * 255.0) as u8);
     ui.painter()
