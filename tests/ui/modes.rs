@@ -166,3 +166,32 @@ fn an_architecturally_singular_platform_has_no_modes_to_step_through() {
     );
     assert_eq!(h.state().playback.mode, MotionMode::Trajectory);
 }
+
+#[test]
+fn the_plot_is_taller_after_dragging_its_top_edge_up() {
+    let mut h = harness("seed");
+    let before = h.state().look.plot_height;
+    assert!(before > 100.0, "{before}");
+    // The plot's splitter (the horizontal one; the controls' is vertical), grabbed just
+    // above its line: the 3D view there used to take that drag and orbit the camera.
+    let edge = h
+        .get_all_by_role(Role::Splitter)
+        .map(|n| n.rect())
+        .find(|r| r.width() > r.height())
+        .unwrap_or_else(|| panic!("no splitter under the view"))
+        .center()
+        - egui::vec2(0.0, 5.0);
+    let up = egui::vec2(0.0, -150.0);
+    let camera = h.state().look.camera;
+    h.hover_at(edge);
+    h.run();
+    h.drag_at(edge);
+    h.run();
+    h.hover_at(edge + up);
+    h.run();
+    h.drop_at(edge + up);
+    h.run();
+    let after = h.state().look.plot_height;
+    assert!((after - before - 150.0).abs() < 6.0, "{before} → {after}");
+    assert_eq!(h.state().look.camera, camera);
+}

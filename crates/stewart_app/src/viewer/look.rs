@@ -30,6 +30,8 @@ pub struct Look {
     pub labels: bool,
     /// The head-up readout (time, pose, values) over the view and in exported frames.
     pub readouts: bool,
+    /// The plot panel's height as last drawn, logical pixels (its top edge drags).
+    pub plot_height: f32,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub view_px: [u32; 2],
     /// Why the 3D view cannot be drawn, empty for "no renderer yet" (`None` once the window
@@ -52,6 +54,7 @@ impl Look {
             coloured_legs: true,
             labels: true,
             readouts: false,
+            plot_height: 0.0,
             view_px: [1280, 720],
             renderer_missing: Some(String::new()),
         }

@@ -59,7 +59,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     });
             });
     }
-    egui::Panel::bottom("plot")
+    // The plot's top edge is a splitter: drag it to give the plot more or less height.
+    let plot = egui::Panel::bottom("plot")
         .resizable(true)
         .default_size(if state.look.presentation {
             280.0
@@ -67,10 +68,27 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             220.0
         })
         .show(ui, |ui| plot::show(ui, state));
+    state.look.plot_height = plot.response.rect.height();
+    let plot_rect = plot.response.rect;
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
+    splitter_grip(ui, plot_rect);
     export::window(ui.ctx(), state);
     if state.link.connected() {
         link_badge(ui.ctx(), state);
+    }
+}
+
+/// A grip drawn on the plot's top edge, so that it is seen to drag.
+fn splitter_grip(ui: &egui::Ui, plot: egui::Rect) {
+    let stroke = ui.visuals().widgets.inactive.fg_stroke;
+    let y = plot.top() - ui.spacing().item_spacing.y;
+    let x = plot.center().x;
+    for dy in [-2.0, 2.0] {
+        ui.painter().hline(
+            egui::Rangef::new(x - 14.0, x + 14.0),
+            y + dy,
+            egui::Stroke::new(1.5, stroke.color),
+        );
     }
 }
 

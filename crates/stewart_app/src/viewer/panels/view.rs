@@ -92,7 +92,15 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     toolbar(ui, state);
     let rect = ui.available_rect_before_wrap();
-    let response = ui.allocate_rect(rect, egui::Sense::click_and_drag());
+    // The camera's drags start a little inside the view: the splitters of the controls
+    // (left) and of the plot (below) take the pointer near their edges.
+    let keep_clear =
+        ui.style().interaction.resize_grab_radius_side + ui.style().interaction.interact_radius;
+    let camera_rect = egui::Rect::from_min_max(
+        rect.min + egui::vec2(keep_clear, 0.0),
+        rect.max - egui::vec2(0.0, keep_clear),
+    );
+    let response = ui.allocate_rect(camera_rect, egui::Sense::click_and_drag());
     camera_input(ui, state, &response, rect);
     let t = state.look.lang;
     let theme = state.theme();
