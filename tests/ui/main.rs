@@ -116,16 +116,41 @@ fn keyboard_and_buttons_drive_playback() {
 
 #[test]
 fn the_diagnostics_say_when_the_geometry_is_singular() {
-    let h = harness("seed");
-    assert!(
-        h.query_by_label_contains("This geometry is architecturally singular")
-            .is_some()
-    );
-    let h = harness("paired");
+    let mut h = tall_harness("seed", 1600.0);
+    // One line; the projective geometry on demand.
+    const LINE: &str = "Singular at every pose: this layout's legs never determine the platform.";
+    assert!(h.query_by_label(LINE).is_some());
     assert!(
         h.query_by_label_contains("This geometry is architecturally singular")
             .is_none()
     );
+    h.get_by_label("Why").click();
+    h.run();
+    assert!(
+        h.query_by_label_contains("This geometry is architecturally singular")
+            .is_some()
+    );
+    // The button moves to the nearest sound layout: no longer singular, radii kept.
+    let radius = h
+        .state()
+        .scenario()
+        .geometry
+        .plate_radius(stewart_kinematics::Plate::Base);
+    h.get_by_label("Use the nearest sound layout (pairs 60° / 115°)")
+        .click();
+    h.run();
+    settle(&mut h);
+    assert!(h.state().report().is_some_and(|r| !r.architecture.singular));
+    assert!(h.query_by_label(LINE).is_none());
+    assert_eq!(
+        h.state()
+            .scenario()
+            .geometry
+            .plate_radius(stewart_kinematics::Plate::Base),
+        radius
+    );
+    let h = harness("paired");
+    assert!(h.query_by_label(LINE).is_none());
     assert!(
         h.query_by_label("No problem found along the trajectory.")
             .is_some()
@@ -165,7 +190,7 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
     settle(&mut h);
     assert!(h.state().report().is_some_and(|r| r.architecture.singular));
     assert!(
-        h.query_by_label_contains("This geometry is architecturally singular")
+        h.query_by_label_contains("Singular at every pose")
             .is_some()
     );
 }

@@ -195,3 +195,69 @@ fn the_plot_is_taller_after_dragging_its_top_edge_up() {
     assert!((after - before - 150.0).abs() < 6.0, "{before} → {after}");
     assert_eq!(h.state().look.camera, camera);
 }
+
+#[test]
+fn ctrl_z_undoes_scenario_edits_and_ctrl_shift_z_redoes_them() {
+    let mut h = harness("paired");
+    let first = h.state().scenario().clone();
+    h.get_by_role_and_label(Role::Slider, "samples")
+        .set_value_accesskit(301.0);
+    h.run();
+    h.get_by_role_and_label(Role::Slider, "duration (s)")
+        .set_value_accesskit(12.0);
+    h.run();
+    let edited = h.state().scenario().clone();
+    assert_ne!(edited, first);
+    let ctrl = egui::Modifiers::COMMAND;
+    h.key_press_modifiers(ctrl, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().scenario().motion.sampling.len(), 301);
+    assert_ne!(h.state().scenario(), &edited);
+    h.key_press_modifiers(ctrl, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().scenario(), &first);
+    // Nothing more to undo: the button is off, the key does nothing.
+    h.key_press_modifiers(ctrl, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().scenario(), &first);
+    h.key_press_modifiers(ctrl | egui::Modifiers::SHIFT, egui::Key::Z);
+    h.key_press_modifiers(ctrl, egui::Key::Y);
+    h.run();
+    assert_eq!(h.state().scenario(), &edited);
+    // The buttons do the same; loading a preset is a step too.
+    h.get_by_label("Undo").click();
+    h.run();
+    assert_eq!(h.state().scenario().motion.sampling.len(), 301);
+    h.get_by_label("Redo").click();
+    h.run();
+    assert_eq!(h.state().scenario(), &edited);
+    h.state_mut().load_scenario(
+        stewart_kinematics::Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
+    );
+    h.run();
+    h.get_by_label("Undo").click();
+    h.run();
+    assert_eq!(h.state().scenario(), &edited);
+}
+
+#[test]
+fn one_slider_drag_is_one_undo_step() {
+    let mut h = harness("paired");
+    let first = h.state().scenario().clone();
+    let rect = h.get_by_role_and_label(Role::Slider, "duration (s)").rect();
+    let y = rect.center().y;
+    h.hover_at(egui::pos2(rect.left() + 10.0, y));
+    h.run();
+    h.drag_at(egui::pos2(rect.left() + 10.0, y));
+    h.run();
+    for dx in [20.0, 40.0, 60.0] {
+        h.hover_at(egui::pos2(rect.left() + 10.0 + dx, y));
+        h.run();
+    }
+    h.drop_at(egui::pos2(rect.left() + 70.0, y));
+    h.run();
+    assert_ne!(h.state().scenario(), &first);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().scenario(), &first);
+}

@@ -46,6 +46,7 @@ pub mod rotary;
 pub mod scenario;
 pub mod scene;
 pub mod settings;
+pub mod sound_layout;
 pub mod table;
 pub mod text;
 pub mod trajectory;

@@ -6,6 +6,7 @@
 use std::thread::JoinHandle;
 
 use nalgebra::Vector3;
+use stewart_kinematics::sound_layout::SoundLayout;
 use stewart_kinematics::{CheckReport, Layout, Scenario, check_motion};
 
 /// Most samples the plot and the traced path hold (a trajectory may have ten million:
@@ -22,6 +23,9 @@ pub struct Derived {
     pub centres: Vec<Vector3<f64>>,
     /// The named layout of the joint angles, `None` when they follow none.
     pub layout: Option<Layout>,
+    /// The nearest layout that is not architecturally singular, once asked for (it is
+    /// searched only when the report finds the geometry singular).
+    sound_layout: Option<Option<SoundLayout>>,
     report: ReportWorker,
 }
 
@@ -33,6 +37,7 @@ impl Derived {
             lengths: Vec::new(),
             centres: Vec::new(),
             layout: None,
+            sound_layout: None,
             report: ReportWorker::default(),
         };
         d.rebuild(scenario);
@@ -47,6 +52,7 @@ impl Derived {
             (Some((_, base)), Some((_, platform))) => Layout::recognise(base, platform),
             _ => None,
         };
+        self.sound_layout = None;
         let sampling = scenario.motion.sampling;
         let n = sampling.len();
         let m = n.min(PLOT_SAMPLES);
@@ -67,6 +73,14 @@ impl Derived {
         self.lengths = g.actuator_values(&poses);
         self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
         self.report.request(scenario.clone());
+    }
+
+    /// The nearest paired layout of `scenario`'s geometry that is not architecturally
+    /// singular (searched on the first call after an edit, then kept).
+    pub fn sound_layout(&mut self, scenario: &Scenario) -> Option<&SoundLayout> {
+        self.sound_layout
+            .get_or_insert_with(|| scenario.geometry.nearest_sound_layout())
+            .as_ref()
     }
 
     /// The latest finished report of the current scenario, if it is in.

@@ -9,7 +9,7 @@
 //! - [`live_link`]: the stream to hardware, following what the viewer shows;
 //! - [`teleop`], [`gamepad`]: keyboard and gamepad moves of the manual pose, stopped at
 //!   the edge of the reachable set;
-//! - [`session`]: what the viewer remembers between runs;
+//! - [`session`]: what the viewer remembers between runs; [`undo`]: undo and redo of edits;
 //! - [`shots`]: screenshots of the 3D view (any size, transparent) or the window;
 //! - [`window`]: winit, egui-winit and egui-wgpu around all that; [`window_size`]: the
 //!   size it opens at.
@@ -32,6 +32,7 @@ pub mod session;
 pub mod shots;
 pub mod state;
 pub mod teleop;
+pub mod undo;
 pub mod view3d;
 pub mod window;
 pub mod window_shot;

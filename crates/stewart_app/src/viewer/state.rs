@@ -61,6 +61,8 @@ pub struct ViewerState {
     pub assembly_error: Option<super::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     reach: super::reach::ReachCache,
+    /// The edits that can be undone and redone.
+    pub undo: super::undo::Undo,
 }
 
 /// The saved session's state in this run.
@@ -123,6 +125,7 @@ impl ViewerState {
             assembly: super::assembly::AssemblyBrowser::default(),
             assembly_error: None,
             reach: super::reach::ReachCache::default(),
+            undo: super::undo::Undo::default(),
             scenario,
         }
     }
@@ -265,6 +268,7 @@ impl ViewerState {
         });
         match checked {
             Ok(()) => {
+                self.undo.record(&self.scenario);
                 self.scenario = edited;
                 self.edit_error = None;
                 self.rebuild();
@@ -290,6 +294,14 @@ impl ViewerState {
             s.geometry = stewart_kinematics::Geometry::new(params).map_err(|e| e.to_string())?;
             Ok(())
         });
+    }
+
+    /// The nearest layout that is not architecturally singular (see
+    /// [`stewart_kinematics::sound_layout`]): the layout and the largest joint move, degrees.
+    pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
+        self.derived
+            .sound_layout(&self.scenario)
+            .map(|s| (s.layout, s.moved_deg))
     }
 
     /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
@@ -328,6 +340,8 @@ impl ViewerState {
         self.playback.manual = scenario.geometry.home_pose();
         self.playback.time = 0.0;
         self.playback.history.clear();
+        self.undo.record(&self.scenario);
+        self.undo.seal();
         self.scenario = scenario;
         self.edit_error = None;
         self.rebuild();
@@ -373,6 +387,40 @@ impl ViewerState {
                 .map(|()| lang.fmt("scenario.saved", &[("path", &path.display())]))
                 .map_err(|e| format!("{e:#}")),
         );
+    }
+
+    /// Go back one edit (Ctrl+Z); returns whether there was one.
+    pub fn undo_edit(&mut self) -> bool {
+        let Some(before) = self.undo.undo(&self.scenario) else {
+            return false;
+        };
+        self.restore_scenario(before);
+        true
+    }
+
+    /// Do again the edit undone last (Ctrl+Shift+Z, Ctrl+Y); returns whether there was one.
+    pub fn redo_edit(&mut self) -> bool {
+        let Some(after) = self.undo.redo(&self.scenario) else {
+            return false;
+        };
+        self.restore_scenario(after);
+        true
+    }
+
+    /// Undo's way of putting a scenario back: as an edit (playback and camera stay), unless
+    /// it is another platform (a preset or file loaded), which is shown from its start.
+    fn restore_scenario(&mut self, scenario: Scenario) {
+        if scenario.name != self.scenario.name {
+            self.link.disconnect();
+            self.look.camera = default_camera(&scenario);
+            self.playback.manual = scenario.geometry.home_pose();
+            self.playback.time = 0.0;
+            self.playback.history.clear();
+        }
+        self.teleop.rates = Rates::for_geometry(&scenario.geometry);
+        self.scenario = scenario;
+        self.edit_error = None;
+        self.rebuild();
     }
 
     fn rebuild(&mut self) {

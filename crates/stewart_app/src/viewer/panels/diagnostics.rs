@@ -4,21 +4,63 @@
 use egui::RichText;
 use stewart_kinematics::settings::{self, Group};
 
-use super::widgets::{ERROR, edit_error, setting_slider};
+use stewart_kinematics::Layout;
+
+use super::widgets::{edit_error, setting_slider};
 use crate::i18n::words;
 use crate::viewer::state::ViewerState;
 
 /// Findings listed before "and N more".
 const LISTED: usize = 12;
 
+/// An architecturally singular geometry: the verdict in one line, why on demand, and a
+/// button to the nearest layout that is not singular.
+fn singular_note(ui: &mut egui::Ui, state: &mut ViewerState, explanation: String) {
+    let t = state.look.lang;
+    ui.label(RichText::new(t.tr("diagnostics.singular_line")).color(ui.visuals().warn_fg_color));
+    egui::CollapsingHeader::new(t.tr("diagnostics.singular_why"))
+        .id_salt("singular-why")
+        .show(ui, |ui| ui.label(RichText::new(explanation).small()));
+    if let Some((layout, moved)) = state.sound_layout() {
+        let Layout::Paired {
+            base_separation_deg,
+            platform_separation_deg,
+        } = layout
+        else {
+            return;
+        };
+        let words = t.fmt(
+            "diagnostics.singular_fix",
+            &[
+                ("base", &format!("{base_separation_deg:.0}")),
+                ("platform", &format!("{platform_separation_deg:.0}")),
+            ],
+        );
+        if ui
+            .button(words)
+            .on_hover_text(t.fmt(
+                "diagnostics.singular_fix_tip",
+                &[("moved", &format!("{moved:.0}"))],
+            ))
+            .clicked()
+        {
+            state.set_layout(layout);
+        }
+    }
+}
+
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
     ui.heading(t.tr("diagnostics.heading"));
+    let singular = state
+        .report()
+        .filter(|r| r.architecture.singular)
+        .map(|r| words::architecture(t, &r.architecture));
+    if let Some(explanation) = singular {
+        singular_note(ui, state, explanation);
+    }
     if let Some(report) = state.report() {
-        if report.architecture.singular {
-            ui.label(RichText::new(words::architecture(t, &report.architecture)).color(ERROR));
-        }
         if report.findings.is_empty() {
             ui.label(t.tr("diagnostics.none"));
         } else {

@@ -20,12 +20,19 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
     let theme = state.theme();
     for (i, leg) in frame.legs.iter().enumerate() {
         let angle = frame.servos.map(|s| s[i].angle_deg);
-        // The bar takes the colour the leg has in the 3D view.
-        let [r, g, b, _] = theme
-            .leg_colours(leg.status)
-            .0
-            .map(|c| (c * 255.0).round() as u8);
-        let colour = Color32::from_rgb(r, g, b);
+        // The bar takes the leg's own colour (its curve's in the plot, its body's in the 3D
+        // view), or the warning colours near and past a limit.
+        let colour = match leg.status {
+            LegStatus::Normal if state.look.coloured_legs => leg_colour(i),
+            status => {
+                let [r, g, b, _] = theme
+                    .leg_colours(status)
+                    .0
+                    .map(|c| (c * 255.0).round() as u8);
+                Color32::from_rgb(r, g, b)
+            }
+        };
+        let [r, g, b, _] = colour.to_array();
         let note = match (leg.status, rotary) {
             (LegStatus::Normal, _) => "",
             (LegStatus::NearLimit, _) => t.tr("legs.near_limit"),
@@ -80,7 +87,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             } else {
                 "legs.singular_legs"
             }))
-            .color(ERROR),
+            .color(ui.visuals().warn_fg_color),
         ),
         None => ui.label(RichText::new(t.tr("legs.servo_unreachable")).color(ERROR)),
     };

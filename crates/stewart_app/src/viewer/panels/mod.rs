@@ -175,7 +175,8 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
 
 /// Esc: while a link is connected, its e-stop and nothing else; otherwise it leaves full
 /// screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
-/// P or F5: presentation mode; F11: full screen; F12: screenshot.
+/// P or F5: presentation mode; F11: full screen; F12: screenshot; Ctrl+Z undo, Ctrl+Shift+Z
+/// or Ctrl+Y redo (outside text fields, which keep their own).
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     // The e-stop works whatever has the keyboard focus.
@@ -192,6 +193,22 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if ui.ctx().text_edit_focused() {
         return;
+    }
+    // One gesture, one undo step: the step closes once no button is held.
+    if !ui.input(|i| i.pointer.any_down()) {
+        state.undo.seal();
+    }
+    let (redo, undo) = ui.input_mut(|i| {
+        let shift = egui::Modifiers::COMMAND | egui::Modifiers::SHIFT;
+        let redo = i.consume_key(shift, egui::Key::Z)
+            || i.consume_key(egui::Modifiers::COMMAND, egui::Key::Y);
+        (redo, i.consume_key(egui::Modifiers::COMMAND, egui::Key::Z))
+    });
+    if redo {
+        state.redo_edit();
+    }
+    if undo {
+        state.undo_edit();
     }
     if pressed(egui::Key::Space) {
         state.playback.toggle();

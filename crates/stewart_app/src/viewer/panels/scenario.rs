@@ -12,7 +12,27 @@ use crate::viewer::state::ViewerState;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
-    ui.heading(t.tr("scenario.heading"));
+    ui.horizontal(|ui| {
+        ui.heading(t.tr("scenario.heading"));
+        let undo = ui
+            .add_enabled(
+                state.undo.can_undo(),
+                egui::Button::new(t.tr("scenario.undo")),
+            )
+            .on_hover_text(t.tr("scenario.undo_tip"));
+        if undo.clicked() {
+            state.undo_edit();
+        }
+        let redo = ui
+            .add_enabled(
+                state.undo.can_redo(),
+                egui::Button::new(t.tr("scenario.redo")),
+            )
+            .on_hover_text(t.tr("scenario.redo_tip"));
+        if redo.clicked() {
+            state.redo_edit();
+        }
+    });
     let current = state.scenario().name.clone();
     egui::ComboBox::from_label(t.tr("scenario.preset"))
         .selected_text(&current)
