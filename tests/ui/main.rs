@@ -11,6 +11,7 @@ mod modes;
 mod reach;
 mod rotary;
 mod shots;
+mod sliders;
 mod snapshots;
 mod teleop;
 mod trajectory;

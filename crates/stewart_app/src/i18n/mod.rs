@@ -75,8 +75,30 @@ impl Lang {
 
     /// The text of `key` with each `{name}` replaced by its value in `args`.
     pub fn fmt(self, key: &str, args: &[(&str, &dyn Display)]) -> String {
-        fill(self.tr(key), args)
+        let text = fill(self.tr(key), args);
+        match self {
+            Lang::Zh => close_han_gaps(&text),
+            Lang::En => text,
+        }
     }
+}
+
+/// `text` without the spaces between two Chinese characters (a template such as
+/// `{axis} 通道` spaced for a Latin `x` reads `横滚 通道` with a Chinese word in it).
+pub fn close_han_gaps(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let han = |c: char| matches!(c, '\u{3400}'..='\u{9fff}' | '\u{f900}'..='\u{faff}');
+    let mut out = String::with_capacity(text.len());
+    for (i, &c) in chars.iter().enumerate() {
+        let gap = c == ' '
+            && i > 0
+            && chars.get(i - 1).is_some_and(|&p| han(p))
+            && chars.get(i + 1).is_some_and(|&n| han(n));
+        if !gap {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// The language of a command's drawn words: `asked` (`--lang`), else the environment's.
@@ -88,6 +110,11 @@ pub fn for_command(asked: Option<Lang>, command: &str) -> Lang {
         let _ = writeln!(std::io::stderr(), "{command}: {note}");
     }
     lang
+}
+
+/// The text of `key` in `lang`, `None` when the catalogue lacks it.
+pub fn catalogue_text(lang: Lang, key: &str) -> Option<&'static str> {
+    catalogue::lookup(lang, key)
 }
 
 /// `template` with `{name}` replaced by the matching value of `args`; unknown names stay.

@@ -404,3 +404,22 @@ fn every_chinese_text_has_its_glyphs() {
         assert!(missing.is_empty(), "`{key}`: no glyph for {missing:?}");
     }
 }
+
+#[test]
+fn chinese_has_no_space_between_two_chinese_words_and_presets_describe_themselves() {
+    let channel = Lang::Zh.fmt("motion.channel", &[("axis", &"横滚")]);
+    assert_eq!(channel, "横滚通道");
+    // A Latin letter keeps its space.
+    assert_eq!(Lang::Zh.fmt("motion.channel", &[("axis", &"x")]), "x 通道");
+    for name in stewart_kinematics::scenario::presets::names() {
+        let s = stewart_kinematics::Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
+        let zh = super::words::description(Lang::Zh, name, &s.description);
+        assert!(zh.chars().any(is_han), "{name}: {zh}");
+        assert_eq!(
+            super::words::description(Lang::En, name, &s.description),
+            s.description
+        );
+        // An edited description is shown as written.
+        assert_eq!(super::words::description(Lang::Zh, name, "mine"), "mine");
+    }
+}

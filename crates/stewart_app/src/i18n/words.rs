@@ -232,3 +232,14 @@ fn weakest_twist(lang: Lang, report: &ArchitectureReport) -> String {
         ],
     )
 }
+
+/// A scenario's description in `lang`: a preset's own (unedited) description is
+/// translated, any other is shown as written.
+pub fn description(lang: Lang, name: &str, description: &str) -> String {
+    let key = format!("preset.{name}");
+    let english = super::catalogue_text(Lang::En, &key);
+    match (english, super::catalogue_text(lang, &key)) {
+        (Some(en), Some(text)) if en == description => text.to_owned(),
+        _ => description.to_owned(),
+    }
+}

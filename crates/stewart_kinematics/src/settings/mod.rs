@@ -235,6 +235,37 @@ impl Setting {
         self.target.get(scenario)
     }
 
+    /// The range a slider offers for this scenario's platform: a length follows the
+    /// platform's size (the declared range is for the seed's, 0.6 m platform radius: a
+    /// 6 cm desk platform gets a tenth of it), a stroke limit spans half to twice the
+    /// home leg length, and the range always holds the present value.
+    pub fn range_for(&self, scenario: &Scenario) -> RangeInclusive<f64> {
+        let (mut lo, mut hi) = (*self.range.start(), *self.range.end());
+        let g = &scenario.geometry;
+        let stroke = matches!(
+            self.target,
+            Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+        );
+        let servo_part = matches!(self.target, Target::Actuator(_));
+        if stroke {
+            let home = g.leg_lengths(&g.home_pose());
+            let mean = home.iter().sum::<f64>() / 6.0;
+            if mean.is_finite() && mean > 0.0 {
+                (lo, hi) = (0.5 * mean, 2.0 * mean);
+            }
+        } else if self.unit == Unit::Metre && !servo_part {
+            let seed = crate::geometry::Geometry::seed().characteristic_length();
+            let scale = (g.characteristic_length() / seed).clamp(1e-3, 1e3);
+            if scale.is_finite() {
+                (lo, hi) = (lo * scale, hi * scale);
+            }
+        }
+        if let Some(v) = self.get(scenario).filter(|v| v.is_finite()) {
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+        lo..=hi
+    }
+
     /// The default for this scenario's platform.
     pub fn default_for(&self, scenario: &Scenario) -> Option<f64> {
         self.default.resolve(scenario.geometry.home_height())

@@ -464,3 +464,44 @@ fn a_scenario_as_coordinates_is_the_same_platform() {
         );
     }
 }
+
+#[test]
+fn slider_ranges_follow_the_platforms_size() {
+    let by_key = |key: &str| {
+        all()
+            .iter()
+            .find(|s| s.key == key)
+            .unwrap_or_else(|| panic!("{key}"))
+    };
+    let radius = by_key("geometry.base_radius");
+    let seed = preset("seed");
+    // The seed keeps the declared range.
+    let r = radius.range_for(&seed);
+    assert!(
+        (r.start() - 0.05).abs() < 1e-12 && (r.end() - 3.0).abs() < 1e-12,
+        "{r:?}"
+    );
+    // A desk platform (its radii in centimetres) gets a range of its size: its radius
+    // sits well inside, not pinned at the left end.
+    let desk = preset("servo-desk");
+    let r = radius.range_for(&desk);
+    let v = radius.get(&desk).unwrap_or_default();
+    let share = (v - r.start()) / (r.end() - r.start());
+    assert!(*r.end() < 1.0, "{r:?}");
+    assert!((0.1..0.9).contains(&share), "{v} in {r:?}: {share}");
+    // The stroke spans half to twice the home leg length (the seed's legs are 1.0 m at
+    // home: 0.5 to 2.0 m instead of 0.05 to 4 m).
+    let max = by_key("geometry.leg_max").range_for(&seed);
+    let home = seed.geometry.leg_lengths(&seed.geometry.home_pose())[0];
+    assert!((max.start() - 0.5 * home).abs() < 1e-9, "{max:?}");
+    assert!((max.end() - 2.0 * home).abs() < 1e-9, "{max:?}");
+    // A value outside is inside the range offered.
+    let mut wide = seed.clone();
+    radius
+        .set(&mut wide, Some(40.0))
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(*radius.range_for(&wide).end(), 40.0);
+    // Angles are not lengths: unchanged.
+    let phase = by_key("trajectory.pitch.phase_deg");
+    assert_eq!(phase.range_for(&desk), phase.range);
+}

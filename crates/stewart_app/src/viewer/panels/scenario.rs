@@ -51,7 +51,12 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         });
     if !state.scenario().description.is_empty() {
-        ui.label(egui::RichText::new(&state.scenario().description).small());
+        let words = crate::i18n::words::description(
+            t,
+            &state.scenario().name,
+            &state.scenario().description,
+        );
+        ui.label(egui::RichText::new(words).small());
     }
     ui.horizontal(|ui| {
         let label = ui.label(t.tr("scenario.file"));

@@ -41,9 +41,32 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
         }
         match current {
             Some(value) => {
+                let range = setting.range_for(state.scenario());
                 let mut v = value;
-                let response = ui.add(slider(t, setting, &mut v));
-                if response.changed() {
+                // The right and middle buttons open the menu or pan: they never move the knob.
+                let other_button = ui.input(|i| {
+                    [egui::PointerButton::Secondary, egui::PointerButton::Middle]
+                        .into_iter()
+                        .any(|b| i.pointer.button_down(b) || i.pointer.button_released(b))
+                });
+                let fine = ui.input(|i| i.modifiers.shift);
+                // A slider senses drags only: clicks too, so that the right button's click
+                // opens the reset menu.
+                let slid = ui.add(slider(t, setting, range.clone(), &mut v));
+                // A slider senses drags only: clicks too, so that the right button's click
+                // opens the reset menu.
+                let response = slid
+                    .union(slid.interact(egui::Sense::click()))
+                    .on_hover_text(slider_tip(t, setting, state));
+                let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
+                if fine && held {
+                    // Fine steps from where the value is, by the pointer's motion alone
+                    // (the plain slider would jump to the pointer).
+                    let dx = ui.input(|i| i.pointer.delta().x);
+                    if dx != 0.0 && slid.is_pointer_button_down_on() {
+                        edit = Some(Some(fine_drag(ui, setting, &range, value, dx)));
+                    }
+                } else if slid.changed() && !other_button {
                     edit = Some(Some(v));
                 }
                 response.context_menu(|ui| {
@@ -83,9 +106,61 @@ fn default_on(setting: &Setting, state: &ViewerState) -> f64 {
         .unwrap_or(*setting.range.end())
 }
 
-fn slider<'a>(lang: Lang, setting: &Setting, value: &'a mut f64) -> egui::Slider<'a> {
-    let range = setting.range.clone();
-    let logarithmic = *range.start() > 0.0 && range.end() / range.start() > 1000.0;
+/// How far a drag with Shift held moves the value, against a plain drag.
+const FINE: f64 = 0.1;
+
+/// Whether a slider over `range` is logarithmic (positive ranges over three decades).
+fn is_logarithmic(range: &std::ops::RangeInclusive<f64>) -> bool {
+    *range.start() > 0.0 && range.end() / range.start() > 1000.0
+}
+
+/// The value after a Shift drag of `dx` points from `value`: a tenth of what the plain
+/// drag would move (in the logarithm's scale on a logarithmic slider).
+fn fine_drag(
+    ui: &egui::Ui,
+    setting: &Setting,
+    range: &std::ops::RangeInclusive<f64>,
+    value: f64,
+    dx: f32,
+) -> f64 {
+    let share = FINE * f64::from(dx) / f64::from(ui.spacing().slider_width.max(1.0));
+    let (lo, hi) = (*range.start(), *range.end());
+    let v = if is_logarithmic(range) && value > 0.0 {
+        value * ((hi / lo).ln() * share).exp()
+    } else {
+        value + (hi - lo) * share
+    };
+    if setting.unit == Unit::Count {
+        v.round()
+    } else {
+        v
+    }
+}
+
+/// A setting's tooltip: its file key, accepted values, default, and the gestures.
+fn slider_tip(t: Lang, setting: &Setting, state: &ViewerState) -> String {
+    let default = setting.default_for(state.scenario()).map_or_else(
+        || t.tr("widgets.default_off").to_owned(),
+        stewart_kinematics::bounds::short,
+    );
+    t.fmt(
+        "widgets.slider_tip",
+        &[
+            ("key", &setting.key),
+            ("accepted", &setting.accepted_words()),
+            ("default", &default),
+            ("unit", &setting.unit.symbol()),
+        ],
+    )
+}
+
+fn slider<'a>(
+    lang: Lang,
+    setting: &Setting,
+    range: std::ops::RangeInclusive<f64>,
+    value: &'a mut f64,
+) -> egui::Slider<'a> {
+    let logarithmic = is_logarithmic(&range);
     let s = egui::Slider::new(value, range)
         .text(setting_label_with_unit(lang, setting))
         .clamping(egui::SliderClamping::Never)
