@@ -135,7 +135,21 @@ fn a_leg_over_its_stroke_shows_the_warning_colour() {
     params.stroke = StrokeLimits::new(0.5, 0.97); // home legs are 0.98 m: every leg is over
     let g = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
     let (w, h) = (320, 240);
-    let (frame, camera) = render(&mut off, &g, &g.home_pose(), &Theme::DARK, w, h);
+    // Labels off: their boxes carry the leg colours, orange and yellow among them.
+    let bare = Overlays {
+        labels: false,
+        ..Overlays::default()
+    };
+    let camera = seed_camera(&g);
+    let (frame, camera) = render_with(
+        &mut off,
+        &g,
+        &g.home_pose(),
+        &Theme::DARK,
+        (w, h),
+        &bare,
+        camera,
+    );
     let warning = Theme::DARK.leg_over_limit;
     let target = [0, 1, 2].map(|k| (warning[k] * 255.0) as i32);
     // Somewhere along leg 1 (the one nearest the camera at azimuth 135° is leg 2, at 60°).
@@ -159,13 +173,14 @@ fn a_leg_over_its_stroke_shows_the_warning_colour() {
         best < 80,
         "no leg pixel near the warning colour {target:?} (closest distance {best})"
     );
-    let normal = render(
+    let normal = render_with(
         &mut off,
         &Geometry::seed(),
         &g.home_pose(),
         &Theme::DARK,
-        w,
-        h,
+        (w, h),
+        &bare,
+        camera,
     )
     .0;
     let yellowish = |f: &Frame| {
@@ -505,4 +520,54 @@ fn the_measured_platform_shows_as_a_green_ghost_beside_the_commanded_one() {
         over[1] > under[1] && over[0] > under[2],
         "{over:?} over {under:?}"
     );
+}
+
+#[test]
+fn presentation_labels_are_larger_and_a_yellow_label_has_dark_ink() {
+    let mut off = offscreen();
+    let g = Geometry::seed();
+    let pose = g.home_pose();
+    let (w, h) = (1280, 720);
+    let camera = seed_camera(&g);
+    let draw = |off: &mut Offscreen, overlays: &Overlays| {
+        render_with(off, &g, &pose, &Theme::LIGHT, (w, h), overlays, camera).0
+    };
+    let bare = draw(
+        &mut off,
+        &Overlays {
+            labels: false,
+            ..Overlays::default()
+        },
+    );
+    let normal = draw(&mut off, &Overlays::default());
+    let large = draw(
+        &mut off,
+        &Overlays {
+            label_scale: 1.6,
+            ..Overlays::default()
+        },
+    );
+    let changed = |img: &Frame| {
+        (0..h)
+            .flat_map(|y| (0..w).map(move |x| (x, y)))
+            .filter(|&(x, y)| img.pixel(x, y) != bare.pixel(x, y))
+            .count()
+    };
+    let (n, l) = (changed(&normal), changed(&large));
+    assert!(l as f64 > 1.8 * n as f64, "{n} → {l} pixels");
+    // L5's box is yellow-orange on white: its ink is dark, so some pixels near the label
+    // are near black.
+    let sol = g.inverse(&pose);
+    let p = sol.platform_joints[4] - sol.legs[4] * 0.55;
+    let (x, y) = project(&camera, Vec3::new(p.x as f32, p.y as f32, p.z as f32), w, h);
+    let em = (0.034 * h as f32) as i32;
+    let dark = (-em..=em)
+        .flat_map(|dy| (0..3 * em).map(move |dx| (x as i32 + dx, y as i32 + dy)))
+        .filter(|&(px, py)| px >= 0 && py >= 0 && px < w as i32 && py < h as i32)
+        .filter(|&(px, py)| {
+            let q = normal.pixel(px as u32, py as u32);
+            q[0] < 60 && q[1] < 60 && q[2] < 60
+        })
+        .count();
+    assert!(dark > 10, "{dark} dark pixels in L5's label");
 }

@@ -24,6 +24,8 @@ pub struct Overlays {
     pub coloured_legs: bool,
     /// Numbered labels (L1…L6 for legs, S1…S6 for servos) beside the actuators.
     pub labels: bool,
+    /// The labels' size against the usual (larger for a projector).
+    pub label_scale: f32,
 }
 
 impl Default for Overlays {
@@ -35,6 +37,7 @@ impl Default for Overlays {
             path: true,
             coloured_legs: true,
             labels: true,
+            label_scale: 1.0,
         }
     }
 }
@@ -88,6 +91,17 @@ fn along(from: Vec3, to: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
     }
 }
 
+/// Black or white, whichever reads on the sRGB colour `rgb` (by its relative luminance).
+fn ink_on(rgb: [f32; 3]) -> crate::theme::Srgba {
+    let lin = rgb.map(|c| c.powf(2.2));
+    let luminance = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2];
+    if luminance > 0.2 {
+        [0.0, 0.0, 0.0, 1.0]
+    } else {
+        [1.0, 1.0, 1.0, 1.0]
+    }
+}
+
 fn ball(at: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
     let model = Mat4::from_scale_rotation_translation(Vec3::splat(radius), Quat::IDENTITY, at);
     MeshInstance {
@@ -134,7 +148,7 @@ impl DrawList {
             Some(servos) => list.servos(frame, servos, &colours, s),
         }
         if overlays.labels {
-            list.labels(frame, &colours);
+            list.labels(frame, &colours, overlays.label_scale);
         }
         for p in &frame.platform_joints {
             list.spheres
@@ -318,26 +332,28 @@ impl DrawList {
         }
     }
 
-    /// "L1"…"L6" (or "S1"…"S6") beside each actuator's middle, in its colour (or the
-    /// theme's joint colour when legs are single-coloured), on a box of the background
-    /// colour so that it reads over anything.
-    fn labels(&mut self, frame: &SceneFrame, colours: &LegColours) {
+    /// "L1"…"L6" (or "S1"…"S6") beside each actuator's middle, `scale` times the usual
+    /// size: on a box of the leg's colour in black or white ink, whichever reads on it
+    /// (a yellow label reads on a white background too), or with single-coloured legs in
+    /// the joint colour on a box of the background's.
+    fn labels(&mut self, frame: &SceneFrame, colours: &LegColours, scale: f32) {
         let letter = if frame.servos.is_some() { 'S' } else { 'L' };
         for (k, leg) in frame.legs.iter().enumerate() {
             let middle = v3(&(leg.base + (leg.top - leg.base) * 0.45));
-            let [r, g, b, _] = colours.theme.background;
-            let colour = if colours.coloured {
-                crate::theme::series(k)
+            let (colour, background) = if colours.coloured {
+                let [r, g, b, _] = crate::theme::series(k);
+                (ink_on([r, g, b]), [r, g, b, 0.92])
             } else {
-                colours.theme.joint
+                let [r, g, b, _] = colours.theme.background;
+                (colours.theme.joint, [r, g, b, 0.75])
             };
             self.texts.push(crate::text::TextItem {
                 text: format!("{letter}{}", k + 1),
                 anchor: crate::text::Anchor::World(middle, [0.6, 0.0]),
                 align: [0.0, 0.5],
-                size: crate::text::TextSize::OfView(0.034),
+                size: crate::text::TextSize::OfView(0.034 * scale.clamp(0.5, 4.0)),
                 colour,
-                background: Some([r, g, b, 0.75]),
+                background: Some(background),
             });
         }
     }

@@ -178,6 +178,7 @@ impl ViewerState {
             path: self.look.show_path,
             coloured_legs: self.look.coloured_legs,
             labels: self.look.labels,
+            label_scale: if self.look.presentation { 1.6 } else { 1.0 },
             ..stewart_render::Overlays::default()
         };
         let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
