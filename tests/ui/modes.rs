@@ -261,3 +261,31 @@ fn one_slider_drag_is_one_undo_step() {
     h.run();
     assert_eq!(h.state().scenario(), &first);
 }
+
+#[test]
+fn a_finding_is_a_link_to_its_worst_moment_and_the_plot_marks_what_is_beyond() {
+    let mut h = crate::tall_harness("paired", 1600.0);
+    let setting = stewart_kinematics::settings::all()
+        .iter()
+        .find(|s| s.key == "geometry.leg_max")
+        .unwrap_or_else(|| panic!("no leg_max"));
+    h.state_mut().apply(setting, Some(1.1));
+    crate::settle(&mut h);
+    let worst = h
+        .state()
+        .report()
+        .and_then(|r| r.findings.first().map(|f| f.worst_time))
+        .unwrap_or_else(|| panic!("no finding"));
+    assert!(h.state().playback.playing);
+    let first = h
+        .get_all_by_label_contains("• ")
+        .next()
+        .unwrap_or_else(|| panic!("no finding listed"));
+    first.click();
+    h.run();
+    let start = h.state().scenario().motion.sampling.start();
+    assert!(!h.state().playback.playing);
+    assert!((h.state().playback.time + start - worst).abs() < 1e-9);
+    // The legend explains the mark over the stretches past the stroke.
+    assert!(h.query_by_label("beyond a limit").is_some());
+}

@@ -81,7 +81,9 @@ impl Geometry {
                 };
                 let report = geometry.architecture();
                 let inverse_condition = report.home.inverse_condition();
-                if report.singular || !(inverse_condition >= MIN_INVERSE_CONDITION) {
+                let conditioned =
+                    inverse_condition.is_finite() && inverse_condition >= MIN_INVERSE_CONDITION;
+                if report.singular || !conditioned {
                     continue;
                 }
                 let better = best.as_ref().is_none_or(|s| {

@@ -460,13 +460,16 @@ mod tests {
                 path: false,
                 coloured_legs: true,
                 labels: true,
+                label_scale: 1.0,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
         // One label per leg, in its colour.
         let labels: Vec<&str> = list.texts.iter().map(|t| t.text.as_str()).collect();
         assert_eq!(labels, ["L1", "L2", "L3", "L4", "L5", "L6"]);
-        assert_eq!(list.texts[2].colour, crate::theme::series(2));
+        // Label k on a box of series colour k.
+        let [r, g3, b, _] = crate::theme::series(2);
+        assert_eq!(list.texts[2].background, Some([r, g3, b, 0.92]));
         // Coloured legs: body k in series colour k, rods neutral.
         for k in 0..6 {
             assert_eq!(list.cylinders[2 * k].color, linear(crate::theme::series(k)));
@@ -498,6 +501,7 @@ mod tests {
             path: false,
             coloured_legs: false,
             labels: false,
+            label_scale: 1.0,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

@@ -12,7 +12,7 @@ use crate::cli::ViewArgs;
 use crate::i18n::{Lang, fonts};
 use crate::source;
 use crate::viewer::session::{self, Session};
-use crate::viewer::window_size::WindowSize;
+use crate::viewer::window_size::{self, WindowSize};
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
 
 /// Run the command.
@@ -79,9 +79,13 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.session.folder = folder.filter(|_| args.screenshot.is_none());
     state.session.origin = origin;
     state.session.note = note;
+    // A screenshot does not depend on the screen it was made on.
+    let shot = args.screenshot.is_some();
     let size = match (args.size, saved.as_ref().and_then(Session::window_size)) {
         (Some((w, h)), _) => WindowSize::Exact(w, h),
+        (None, Some((w, h))) if shot => WindowSize::Exact(w, h),
         (None, Some((w, h))) => WindowSize::Remembered(w, h),
+        (None, None) if shot => WindowSize::Exact(window_size::FALLBACK.0, window_size::FALLBACK.1),
         (None, None) => WindowSize::FitScreen,
     };
     run_viewer(

@@ -412,7 +412,7 @@ fn chinese_has_no_space_between_two_chinese_words_and_presets_describe_themselve
     // A Latin letter keeps its space.
     assert_eq!(Lang::Zh.fmt("motion.channel", &[("axis", &"x")]), "x 通道");
     for name in stewart_kinematics::scenario::presets::names() {
-        let s = stewart_kinematics::Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
+        let s = Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
         let zh = super::words::description(Lang::Zh, name, &s.description);
         assert!(zh.chars().any(is_han), "{name}: {zh}");
         assert_eq!(

@@ -60,13 +60,23 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     if let Some(explanation) = singular {
         singular_note(ui, state, explanation);
     }
+    let mut jump = None;
     if let Some(report) = state.report() {
         if report.findings.is_empty() {
             ui.label(t.tr("diagnostics.none"));
         } else {
             ui.label(t.fmt("diagnostics.count", &[("count", &report.findings.len())]));
+            // Each finding is a link to its worst moment: playback pauses there.
             for f in report.findings.iter().take(LISTED) {
-                ui.label(RichText::new(format!("• {}", words::finding(t, f))).small());
+                let link = ui
+                    .link(format!("• {}", words::finding(t, f)))
+                    .on_hover_text(t.fmt(
+                        "diagnostics.jump_tip",
+                        &[("t", &format!("{:.3}", f.worst_time))],
+                    ));
+                if link.clicked() {
+                    jump = Some(f.worst_time);
+                }
             }
             if report.findings.len() > LISTED {
                 ui.label(t.fmt(
@@ -75,6 +85,12 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 ));
             }
         }
+    }
+    if let Some(time) = jump {
+        let start = state.scenario().motion.sampling.start();
+        state.playback.mode = crate::viewer::playback::MotionMode::Trajectory;
+        state.playback.playing = false;
+        state.playback.time = (time - start).clamp(0.0, state.duration());
     }
     egui::CollapsingHeader::new(t.tr("diagnostics.limits"))
         .default_open(state.look.expand_panels)

@@ -66,8 +66,20 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
                             } else {
                                 Color32::WHITE
                             };
-                            RichText::new(format!("{:.0}% {note}", 100.0 * u).trim_end().to_owned())
-                                .color(ink)
+                            let usage = t.fmt(
+                                if rotary {
+                                    "legs.usage_range"
+                                } else {
+                                    "legs.usage_stroke"
+                                },
+                                &[("percent", &format!("{:.0}", 100.0 * u))],
+                            );
+                            let text = if note.is_empty() {
+                                usage
+                            } else {
+                                format!("{usage} — {note}")
+                            };
+                            RichText::new(text).color(ink)
                         }),
                 );
             }

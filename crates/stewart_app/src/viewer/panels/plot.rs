@@ -2,7 +2,7 @@
 //! time marker, or in manual mode the rolling history of the last seconds.
 
 use egui::Color32;
-use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoints, VLine};
+use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
 
 use crate::i18n::words;
 use crate::viewer::history::History;
@@ -13,6 +13,54 @@ use crate::viewer::state::ViewerState;
 pub fn leg_colour(i: usize) -> Color32 {
     let [r, g, b] = stewart_render::theme::SERIES_RGB[i % 6];
     Color32::from_rgb(r, g, b)
+}
+
+/// The mark over the stretches of a curve beyond a limit.
+pub const BEYOND: Color32 = Color32::from_rgb(215, 25, 28);
+
+/// The stretches of `points` (time, value) beyond `[min, max]`, each with the crossing
+/// points interpolated on the limit so that the mark starts where the curve crosses it.
+pub fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
+    let [min, max] = limits;
+    let outside = |v: f64| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m);
+    // The limit crossed between two values (the one the outside value is past).
+    let crossing = |a: [f64; 2], b: [f64; 2]| -> [f64; 2] {
+        let out = if outside(b[1]) { b[1] } else { a[1] };
+        let limit = match (min, max) {
+            (Some(m), _) if out < m => m,
+            (_, Some(m)) => m,
+            (Some(m), None) => m,
+            (None, None) => out,
+        };
+        let f = if b[1] == a[1] {
+            0.0
+        } else {
+            ((limit - a[1]) / (b[1] - a[1])).clamp(0.0, 1.0)
+        };
+        [a[0] + f * (b[0] - a[0]), limit]
+    };
+    let mut out = Vec::new();
+    let mut current: Vec<[f64; 2]> = Vec::new();
+    for (k, &p) in points.iter().enumerate() {
+        let prev = k.checked_sub(1).map(|j| points[j]);
+        if outside(p[1]) {
+            if current.is_empty()
+                && let Some(a) = prev
+            {
+                current.push(crossing(a, p));
+            }
+            current.push(p);
+        } else if !current.is_empty() {
+            if let Some(a) = prev {
+                current.push(crossing(a, p));
+            }
+            out.push(std::mem::take(&mut current));
+        }
+    }
+    if !current.is_empty() {
+        out.push(current);
+    }
+    out
 }
 
 /// Curve width in points (presentation mode: the projector's, twice as wide).
@@ -81,9 +129,22 @@ fn legend(ui: &mut egui::Ui, state: &ViewerState) {
             );
         }
     }
+    if limited_and_beyond(state) {
+        swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
+    }
     if state.playback.mode == MotionMode::Trajectory {
         swatch(ui, marker_colour(state), t.tr("plot.now").to_owned(), false);
     }
+}
+
+/// Whether some plotted value lies beyond a limit (the legend then explains the mark).
+fn limited_and_beyond(state: &ViewerState) -> bool {
+    let [min, max] = state.scenario().geometry.quantity_limits();
+    let (_, values) = state.plot_samples();
+    values
+        .iter()
+        .flatten()
+        .any(|&v| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m))
 }
 
 /// The time marker's colour: black on light, white on dark.
@@ -121,6 +182,11 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
     if manual {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
+    let left_end = if manual {
+        -History::WINDOW
+    } else {
+        state.scenario().motion.sampling.start()
+    };
     let shown = plot.show(ui, |plot| {
         for leg in 0..6 {
             let points: Vec<[f64; 2]> = if manual {
@@ -141,21 +207,48 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
             // A servo out of reach has no angle: its curve breaks there.
             let name = format!("{}{}", quantity.symbol, leg + 1);
             for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
-                let run: PlotPoints = run.iter().copied().collect();
+                let curve: PlotPoints = run.iter().copied().collect();
                 plot.line(
-                    Line::new(name.clone(), run)
+                    Line::new(name.clone(), curve)
                         .color(leg_colour(leg))
                         .width(width),
                 );
+                // The stretches beyond a limit, marked over the curve.
+                for stretch in beyond([min, max], run) {
+                    plot.line(
+                        Line::new(t.tr("plot.beyond"), PlotPoints::from(stretch))
+                            .color(BEYOND)
+                            .width(width * 2.5),
+                    );
+                }
             }
         }
         for (name, limit) in [("plot.min", min), ("plot.max", max)] {
             if let Some(v) = limit {
+                let words = format!("{}{}", quantity.symbol, t.tr(name));
                 plot.hline(
-                    HLine::new(format!("{}{}", quantity.symbol, t.tr(name)), v)
+                    HLine::new(words.clone(), v)
                         .style(LineStyle::dashed_loose())
                         .color(Color32::GRAY)
                         .width(width * 0.7),
+                );
+                // Labelled on the line at the start of the time shown (a fixed place: the
+                // plot's own bounds would grow to hold a label placed at their edge).
+                plot.text(
+                    Text::new(
+                        words.clone(),
+                        PlotPoint::new(left_end, v),
+                        egui::RichText::new(format!(
+                            " {words} {}",
+                            stewart_kinematics::bounds::short(v)
+                        ))
+                        .color(Color32::GRAY),
+                    )
+                    .anchor(if name == "plot.max" {
+                        egui::Align2::LEFT_BOTTOM
+                    } else {
+                        egui::Align2::LEFT_TOP
+                    }),
                 );
             }
         }
@@ -183,6 +276,26 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn stretches_beyond_a_limit_start_and_end_on_it() {
+        let points = [
+            [0.0, 0.5],
+            [1.0, 1.5],
+            [2.0, 1.5],
+            [3.0, 0.5],
+            [4.0, -0.5],
+            [5.0, 0.5],
+        ];
+        let s = beyond([Some(0.0), Some(1.0)], &points);
+        assert_eq!(s.len(), 2, "{s:?}");
+        assert_eq!(s[0], vec![[0.5, 1.0], [1.0, 1.5], [2.0, 1.5], [2.5, 1.0]]);
+        assert_eq!(s[1], vec![[3.5, 0.0], [4.0, -0.5], [4.5, 0.0]]);
+        assert!(beyond([None, None], &points).is_empty());
+        // Beyond from the first sample: it starts there.
+        let s = beyond([None, Some(1.0)], &[[0.0, 2.0], [1.0, 0.0]]);
+        assert_eq!(s, vec![vec![[0.0, 2.0], [0.5, 1.0]]]);
+    }
 
     #[test]
     fn presentation_mode_draws_wider_curves() {
