@@ -8,7 +8,7 @@
 //! (the largest single move, in degrees), of those that are not architecturally singular
 //! and whose normalised Jacobian at home is at least [`MIN_INVERSE_CONDITION`].
 
-use crate::geometry::{Geometry, Plate, PlateJoints};
+use crate::geometry::{Geometry, GeometryParams, Plate, PlateJoints};
 use crate::layout::Layout;
 
 /// The smallest inverse condition number at home a proposed layout must have (the
@@ -35,9 +35,9 @@ fn angle_between(a: f64, b: f64) -> f64 {
 }
 
 impl Geometry {
-    /// This geometry with its joints on circles at `layout`'s angles (the plates' radii
-    /// kept), or `None` when that geometry is refused.
-    pub fn with_layout(&self, layout: Layout) -> Option<Geometry> {
+    /// This geometry's parameters with its joints on circles at `layout`'s angles (the
+    /// plates' radii kept; a plate given as coordinates goes back to a circle of its size).
+    pub fn params_with_layout(&self, layout: Layout) -> GeometryParams {
         let mut params = self.params().clone();
         let (base, platform) = layout.angles();
         params.base = PlateJoints::Circle {
@@ -48,7 +48,13 @@ impl Geometry {
             radius: self.plate_radius(Plate::Platform),
             angles: platform,
         };
-        Geometry::new(params).ok()
+        params
+    }
+
+    /// This geometry with `layout` (see [`Geometry::params_with_layout`]), or `None` when
+    /// that geometry is refused.
+    pub fn with_layout(&self, layout: Layout) -> Option<Geometry> {
+        Geometry::new(self.params_with_layout(layout)).ok()
     }
 
     /// The nearest paired layout that is not architecturally singular (see the module's

@@ -13,9 +13,7 @@ use nalgebra::Vector3;
 
 use stewart_kinematics::link_settings::LinkSettings;
 use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
-use stewart_kinematics::{
-    CheckReport, GeometryParams, Layout, LegSolution, Plate, PlateJoints, Pose, Scenario,
-};
+use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
 
 use super::derived::Derived;
@@ -308,17 +306,7 @@ impl ViewerState {
     /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
     /// goes back to a circle of its size).
     pub fn set_layout(&mut self, layout: Layout) {
-        let g = &self.scenario.geometry;
-        let mut params = g.params().clone();
-        let (base, platform) = layout.angles();
-        params.base = PlateJoints::Circle {
-            radius: g.plate_radius(Plate::Base),
-            angles: base,
-        };
-        params.platform = PlateJoints::Circle {
-            radius: g.plate_radius(Plate::Platform),
-            angles: platform,
-        };
+        let params = self.scenario.geometry.params_with_layout(layout);
         self.set_geometry(params);
     }
 

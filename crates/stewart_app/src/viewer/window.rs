@@ -470,14 +470,6 @@ impl App {
         );
         let state = &mut self.state;
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
-        self.was_busy = state.animating();
-        if state.look.fullscreen != self.fullscreen {
-            self.fullscreen = state.look.fullscreen;
-            open.window.set_fullscreen(
-                self.fullscreen
-                    .then_some(winit::window::Fullscreen::Borderless(None)),
-            );
-        }
         let ppp = output.pixels_per_point;
         let primitives = self.ctx.tessellate(std::mem::take(&mut output.shapes), ppp);
         let size = [
