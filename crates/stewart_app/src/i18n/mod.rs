@@ -86,17 +86,16 @@ impl Lang {
 /// `text` without the spaces between two Chinese characters (a template such as
 /// `{axis} 通道` spaced for a Latin `x` reads `横滚 通道` with a Chinese word in it).
 pub fn close_han_gaps(text: &str) -> String {
-    let chars: Vec<char> = text.chars().collect();
     let han = |c: char| matches!(c, '\u{3400}'..='\u{9fff}' | '\u{f900}'..='\u{faff}');
     let mut out = String::with_capacity(text.len());
-    for (i, &c) in chars.iter().enumerate() {
-        let gap = c == ' '
-            && i > 0
-            && chars.get(i - 1).is_some_and(|&p| han(p))
-            && chars.get(i + 1).is_some_and(|&n| han(n));
+    let mut chars = text.chars().peekable();
+    let mut previous = None;
+    while let Some(c) = chars.next() {
+        let gap = c == ' ' && previous.is_some_and(han) && chars.peek().is_some_and(|&n| han(n));
         if !gap {
             out.push(c);
         }
+        previous = Some(c);
     }
     out
 }

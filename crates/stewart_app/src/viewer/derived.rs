@@ -23,6 +23,8 @@ pub struct Derived {
     pub centres: Vec<Vector3<f64>>,
     /// The named layout of the joint angles, `None` when they follow none.
     pub layout: Option<Layout>,
+    /// Whether some plotted value lies beyond a stroke or servo limit.
+    pub beyond_limits: bool,
     /// The nearest layout that is not architecturally singular, once asked for (it is
     /// searched only when the report finds the geometry singular).
     sound_layout: Option<Option<SoundLayout>>,
@@ -37,6 +39,7 @@ impl Derived {
             lengths: Vec::new(),
             centres: Vec::new(),
             layout: None,
+            beyond_limits: false,
             sound_layout: None,
             report: ReportWorker::default(),
         };
@@ -71,6 +74,12 @@ impl Derived {
             .map(|&t| scenario.motion.trajectory.pose_at(t))
             .collect();
         self.lengths = g.actuator_values(&poses);
+        let [min, max] = g.quantity_limits();
+        self.beyond_limits = self
+            .lengths
+            .iter()
+            .flatten()
+            .any(|&v| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m));
         self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
         self.report.request(scenario.clone());
     }

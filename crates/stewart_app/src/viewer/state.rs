@@ -417,6 +417,11 @@ impl ViewerState {
         self.playback.time = self.playback.time.clamp(0.0, self.duration());
     }
 
+    /// Whether some plotted value of the trajectory lies beyond a stroke or servo limit.
+    pub fn beyond_limits(&self) -> bool {
+        self.derived.beyond_limits
+    }
+
     /// The named layout of the joint angles, `None` when they were edited one by one
     /// into no named layout.
     pub fn layout(&self) -> Option<Layout> {
@@ -629,6 +634,7 @@ impl ViewerState {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use stewart_kinematics::PlateJoints;
 
     #[test]
     fn playback_loops_and_stops() {

@@ -129,22 +129,12 @@ fn legend(ui: &mut egui::Ui, state: &ViewerState) {
             );
         }
     }
-    if limited_and_beyond(state) {
+    if state.playback.mode == MotionMode::Trajectory && state.beyond_limits() {
         swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
     }
     if state.playback.mode == MotionMode::Trajectory {
         swatch(ui, marker_colour(state), t.tr("plot.now").to_owned(), false);
     }
-}
-
-/// Whether some plotted value lies beyond a limit (the legend then explains the mark).
-fn limited_and_beyond(state: &ViewerState) -> bool {
-    let [min, max] = state.scenario().geometry.quantity_limits();
-    let (_, values) = state.plot_samples();
-    values
-        .iter()
-        .flatten()
-        .any(|&v| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m))
 }
 
 /// The time marker's colour: black on light, white on dark.
