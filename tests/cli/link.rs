@@ -342,6 +342,64 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
 }
 
 #[test]
+fn the_device_simulator_reads_the_links_text_form() {
+    let address = free_port();
+    let sim = device_sim(
+        &address,
+        &["--format", "text", "--text-unit", "centidegree"],
+    );
+    let o = udp_link_with(
+        "servo-desk",
+        &address,
+        "0.5",
+        "100",
+        "0.1",
+        &["--format", "text"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent: usize = stderr(&o)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    // Before: the binary decoder called every line damaged.
+    assert!(
+        log.contains(&format!(
+            "device-sim: {sent} frames, 0 damaged, 0 lost, 0 out of order"
+        )),
+        "{log}"
+    );
+    assert_eq!(sim.status.code(), Some(0), "{log}");
+    let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+    assert_eq!(rows.len(), sent);
+    assert!(sent > 40, "{sent}");
+    // Every line armed (S, H) or a stop (E), in the unit given; the end of the run is a stop
+    // and then the way home, back where it began.
+    assert!(rows.iter().all(|r| (r[2] == 1.0) != (r[3] == 1.0) && r[5] == 1.0));
+    assert!(rows.iter().any(|r| r[3] == 1.0 && r[6..].iter().all(|&v| v == 0.0)));
+    let (first, last) = (&rows[0], &rows[sent - 1]);
+    assert_eq!(last[4], 1.0, "the last line is the way home: {last:?}");
+    assert_eq!(first[6..], last[6..]);
+    // The binary reader sees the same stream as damaged, not as frames.
+    let address = free_port();
+    let sim = device_sim(&address, &[]);
+    let o = udp_link_with(
+        "servo-desk",
+        &address,
+        "0.2",
+        "100",
+        "0.1",
+        &["--format", "text"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(sim.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&sim.stderr).contains("device-sim: 0 frames"));
+}
+
+#[test]
 fn a_dry_run_into_a_file_never_lands_on_an_input_and_leaves_nothing_half_written() {
     let dir = crate::tempdir();
     let preset = format!(

@@ -109,6 +109,23 @@ pub struct DeviceSimArgs {
     /// The simulated actuators do not move while the set-point is this close, wire units.
     #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_model_number)]
     pub dead_band: f64,
+    /// The wire format to expect: binary frames, or the text lines of `link --format text`.
+    #[arg(long, value_parser = parse_word::<LinkFormat>, default_value = "binary")]
+    pub format: LinkFormat,
+    /// The unit this controller's text lines are in (the text form does not say).
+    #[arg(long, value_enum, default_value_t = WireUnit::Micrometre)]
+    pub text_unit: WireUnit,
+}
+
+/// The unit of a frame's values, as `device-sim --text-unit` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum WireUnit {
+    /// Leg lengths, micrometres.
+    Micrometre,
+    /// Servo angles, hundredths of a degree.
+    Centidegree,
+    /// Servo pulse widths, microseconds.
+    Microsecond,
 }
 
 /// A model option: a finite number, not negative.

@@ -5,7 +5,8 @@
 //! code: 0 µm, 1 0.01°, 2 µs of pulse). With `--telemetry` it answers each set-point with a
 //! telemetry frame: the set-point's sequence number, and where its simulated actuators are
 //! ([`model`]: a first-order lag, a speed limit, a dead band; without them, the values
-//! received).
+//! received). `--format text` reads the lines of `link --format text` instead (`S`, `E`,
+//! `H`; their unit is `--text-unit`, as the text form does not carry one).
 
 use std::io::Write as _;
 use std::net::UdpSocket;
@@ -13,11 +14,13 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
+use stewart_kinematics::link_settings::LinkFormat;
+use stewart_link::text::LineDecoder;
 use stewart_link::transport::Transport as _;
 use stewart_link::transport::{NOTHING_YET, Serial, bytes_read};
 use stewart_link::{Decoder, Frame, FrameKind, Unit};
 
-use crate::cli::DeviceSimArgs;
+use crate::cli::{DeviceSimArgs, WireUnit};
 use crate::output;
 
 pub mod model;
@@ -57,7 +60,7 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     let stop = crate::interrupt::flag();
     let mut buf = [0u8; 2048];
     // A serial line is one stream (frames may span reads); each datagram stands alone.
-    let mut stream = Decoder::new();
+    let mut stream = WireDecoder::new(args);
     let model = ActuatorModel {
         lag_s: args.lag_s,
         speed_max: args.speed_max,
@@ -80,7 +83,7 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         let t0 = *first.get_or_insert(now);
         last = now;
         let mut replies = Vec::new();
-        let mut datagram = Decoder::new();
+        let mut datagram = WireDecoder::new(args);
         let decoder = if input.datagrams {
             &mut datagram
         } else {
@@ -113,8 +116,9 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                 None => {}
             }
         }
-        if input.datagrams && !any && !damaged {
-            // A datagram with no frame in it at all is damaged too (once).
+        if input.datagrams && !damaged && (!any || decoder.pending()) {
+            // A datagram with no frame in it at all, or that ends inside a line, is damaged
+            // too (once).
             tally.bad += 1;
         }
         for reply in replies {
@@ -137,6 +141,42 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// Reads binary frames or text lines, as `--format` says.
+enum WireDecoder {
+    Binary(Decoder),
+    Text(LineDecoder),
+}
+
+impl WireDecoder {
+    fn new(args: &DeviceSimArgs) -> Self {
+        match args.format {
+            LinkFormat::Binary => Self::Binary(Decoder::new()),
+            LinkFormat::Text => Self::Text(LineDecoder::new(match args.text_unit {
+                WireUnit::Micrometre => Unit::Micrometre,
+                WireUnit::Centidegree => Unit::Centidegree,
+                WireUnit::Microsecond => Unit::PulseMicrosecond,
+            })),
+        }
+    }
+
+    /// Take one byte; a frame, or that one was refused (`Err(())`), when one ends.
+    fn push(&mut self, byte: u8) -> Option<Result<Frame, ()>> {
+        match self {
+            Self::Binary(d) => d.push(byte).map(|r| r.map_err(drop)),
+            Self::Text(d) => d.push(byte).map(|r| r.map_err(drop)),
+        }
+    }
+
+    /// Whether part of a line waits for its end (a binary frame cut short is found by the
+    /// datagram holding no frame).
+    fn pending(&self) -> bool {
+        match self {
+            Self::Binary(_) => false,
+            Self::Text(d) => d.pending(),
+        }
+    }
 }
 
 /// Where frames come from.
