@@ -377,8 +377,14 @@ fn the_device_simulator_reads_the_links_text_form() {
     assert!(sent > 40, "{sent}");
     // Every line armed (S, H) or a stop (E), in the unit given; the end of the run is a stop
     // and then the way home, back where it began.
-    assert!(rows.iter().all(|r| (r[2] == 1.0) != (r[3] == 1.0) && r[5] == 1.0));
-    assert!(rows.iter().any(|r| r[3] == 1.0 && r[6..].iter().all(|&v| v == 0.0)));
+    assert!(
+        rows.iter()
+            .all(|r| (r[2] == 1.0) != (r[3] == 1.0) && r[5] == 1.0)
+    );
+    assert!(
+        rows.iter()
+            .any(|r| r[3] == 1.0 && r[6..].iter().all(|&v| v == 0.0))
+    );
     let (first, last) = (&rows[0], &rows[sent - 1]);
     assert_eq!(last[4], 1.0, "the last line is the way home: {last:?}");
     assert_eq!(first[6..], last[6..]);

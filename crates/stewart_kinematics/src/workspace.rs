@@ -7,9 +7,9 @@
 //! The `xy` plane is divided into `N × N` columns; in each column the shells' `z`
 //! intervals are found in closed form and intersected (above the base plane), so each
 //! column's reachable height is exact and only the `xy` discretisation errs. The volume
-//! is the sum of column heights times the column area. Its error is estimated by
-//! Richardson's idea: the same sum on an `N/2` grid; the difference (which overstates
-//! the error of the finer grid) is reported as the error bound.
+//! is the sum of column heights times the column area. Its error is estimated from the
+//! spread of the 16 interleaved grids four times coarser that make up the grid (shifted
+//! samples of the same volume; see `volume_error`).
 //!
 //! Rotary platforms are computed from the roots of each servo's boundary polynomials along
 //! the column instead (see `rotary.rs`).
@@ -19,8 +19,7 @@
 //! quadratic in `z`, so the column stays exact; the leg clearance is resolved by a scan
 //! that the Lipschitz bound of the legs' distance certifies, with edges bisected to
 //! 1e-12 m (only a violation thinner than the column spacing can slip through it). The
-//! error estimate is then the difference from every other column (the grid twice as
-//! coarse, not computed again).
+//! error is estimated in the same way.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 
@@ -97,7 +96,8 @@ pub struct ConstantOrientationWorkspace {
     pub cell: f64,
     /// Reachable volume, m³.
     pub volume: f64,
-    /// Error bound of the volume, m³ (difference from the half-resolution grid).
+    /// Error bound of the volume, m³ (twice the standard error of 16 interleaved coarser
+    /// grids; see `volume_error`).
     pub volume_error: f64,
     /// `[[x_min, x_max], [y_min, y_max], [z_min, z_max]]` of the reachable set, metres
     /// (column centres in `x`, `y`; exact interval ends in `z`), or `None` when empty.
@@ -311,37 +311,32 @@ fn grid_spans<S: Default>(
     (cell, rows.into_iter().flatten().collect())
 }
 
-/// The volume of `spans` (on an `n × n` grid over `bounds`) from every other column in `x`
-/// and `y` alone, each standing for four: the grid twice as coarse, for the error
-/// estimate of the columns that cost a limit search each (not computed again).
-fn every_other_column(spans: &[[f64; 4]], bounds: &[[f64; 2]; 2], n: usize) -> f64 {
+/// The error bound of the volume of `spans`, on an `n × n` grid over `bounds` whose columns
+/// are never taller than `tallest`: a shifted-lattice estimate. The grid is the union of
+/// 16 interleaved grids four times coarser (every fourth column from each of the 4 × 4
+/// starting columns), each a shifted sample of the same volume, and its sum is their mean;
+/// the bound is twice the standard error of that mean (their standard deviation over √16,
+/// doubled). A Richardson difference from one coarser grid understated the real error up
+/// to 11× where a boundary happened to fall between columns; this bound covers the error
+/// at every resolution from 2 to 256 for the presets (test). When no column centre is
+/// reachable, a region thinner than the spacing can still lie between them: up to one
+/// column's width across the grid at the tallest height.
+fn volume_error(spans: &[[f64; 4]], bounds: &[[f64; 2]; 2], n: usize, tallest: f64) -> f64 {
     let (cell, x0, y0) = grid(bounds, n);
-    let even = |v: f64, origin: f64| ((v - origin) / cell - 0.5).round() as i64 % 2 == 0;
-    let height = spans
-        .iter()
-        .filter(|s| even(s[0], x0) && even(s[1], y0))
-        .fold(0.0, |sum, s| sum + (s[3] - s[2]));
-    height * 4.0 * cell * cell
-}
-
-/// Volume only, for the error estimate.
-fn volume_on_grid(shells: &Shells, bounds: &[[f64; 2]; 2], n: usize) -> f64 {
-    let (cell, x0, y0) = grid(bounds, n);
-    let height: f64 = (0..n)
-        .into_par_iter()
-        .map(|i| {
-            let x = x0 + (i as f64 + 0.5) * cell;
-            let mut spans = [(0.0, 0.0); MAX_SPANS];
-            let mut sum = 0.0;
-            for j in 0..n {
-                let y = y0 + (j as f64 + 0.5) * cell;
-                let k = shells.column(x, y, &mut spans);
-                sum += spans[..k].iter().map(|(a, b)| b - a).sum::<f64>();
-            }
-            sum
-        })
-        .sum();
-    height * cell * cell
+    if spans.is_empty() {
+        return n as f64 * cell * cell * tallest;
+    }
+    const STRIDE: usize = 4;
+    let mut samples = [0.0; STRIDE * STRIDE];
+    let phase = |v: f64, origin: f64| ((v - origin) / cell - 0.5).round() as usize % STRIDE;
+    for s in spans {
+        samples[phase(s[0], x0) * STRIDE + phase(s[1], y0)] += s[3] - s[2];
+    }
+    let scale = (STRIDE * STRIDE) as f64 * cell * cell;
+    let count = samples.len() as f64;
+    let mean = samples.iter().sum::<f64>() / count;
+    let variance = samples.iter().map(|h| (h - mean).powi(2)).sum::<f64>() / (count - 1.0);
+    2.0 * scale * (variance / count).sqrt()
 }
 
 impl Geometry {
@@ -447,9 +442,7 @@ impl Geometry {
             if control.cancel.load(Ordering::Relaxed) {
                 return Err(WorkspaceError::Cancelled);
             }
-            // Richardson's estimate, as for the stroke alone, from the grid twice as coarse.
-            let error =
-                (volume_of(&spans, cell) - every_other_column(&spans, &bounds, resolution)).abs();
+            let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
             (spans, cell, error)
         } else {
             let (cell, spans) = grid_spans(
@@ -464,8 +457,7 @@ impl Geometry {
                     0
                 },
             );
-            let volume = volume_of(&spans, cell);
-            let error = (volume - volume_on_grid(&shells, &bounds, (resolution / 2).max(1))).abs();
+            let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
             (spans, cell, error)
         };
         if control.cancel.load(Ordering::Relaxed) {

@@ -80,27 +80,15 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         } else {
             String::new()
         };
-        format!(
-            "servo reach, range{cones} exact per column{clearance}; error estimate from every other column (the {} × {} grid)",
-            n / 2,
-            n / 2
-        )
+        format!("servo reach, range{cones} exact per column{clearance}")
     } else if limits.has_pose_limits() {
-        format!(
-            "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m; error estimate from every other column (the {} × {} grid)",
-            n / 2,
-            n / 2
-        )
+        "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m".to_owned()
     } else {
-        format!(
-            "reachable heights exact per column; error bound from the {} × {} grid",
-            n / 2,
-            n / 2
-        )
+        "reachable heights exact per column".to_owned()
     };
     let _ = writeln!(
         s,
-        "  volume {:.6} m³ ± {:.6} m³ ({n} × {n} columns of {:.2} mm; {method})",
+        "  volume {:.6} m³ ± {:.6} m³ ({n} × {n} columns of {:.2} mm; {method}; the bound is twice the spread of the 16 interleaved grids 4× coarser)",
         ws.volume,
         ws.volume_error,
         ws.cell * 1e3
@@ -114,7 +102,18 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
             );
         }
         None => {
-            let _ = writeln!(s, "  no position is reachable at this orientation");
+            let _ = if ws.cell > 0.0 {
+                writeln!(
+                    s,
+                    "  no column centre is reachable at this orientation; a region thinner than {:.2} mm could lie between them: a higher --resolution looks closer",
+                    ws.cell * 1e3
+                )
+            } else {
+                writeln!(
+                    s,
+                    "  no position is reachable at this orientation: the legs' reaches do not overlap"
+                )
+            };
         }
     }
     let position = args.position.unwrap_or([0.0, 0.0, g.home_height()]);

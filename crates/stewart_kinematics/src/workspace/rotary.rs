@@ -26,8 +26,8 @@ use nalgebra::Vector3;
 use super::column::{Spans, keep_between_cuts};
 use super::roots::{Poly, mul, roots_in, sub};
 use super::{
-    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, every_other_column, extent_of,
-    grid_spans, shifted, volume_of,
+    ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid_spans, shifted,
+    volume_error, volume_of,
 };
 use crate::angle::Angle;
 use crate::checks::servos::rods_allowed;
@@ -312,13 +312,13 @@ pub(super) fn workspace(
         return Err(WorkspaceError::Cancelled);
     }
     let volume = volume_of(&spans, cell);
-    let coarse_volume = every_other_column(&spans, &bounds, resolution);
+    let volume_error = volume_error(&spans, &bounds, resolution, columns.z_top);
     let spans = shifted(spans.into_iter(), c - rotation * c);
     let extent = extent_of(&spans);
     Ok(ConstantOrientationWorkspace {
         cell,
         volume,
-        volume_error: (volume - coarse_volume).abs(),
+        volume_error,
         extent,
         spans,
         ..empty
