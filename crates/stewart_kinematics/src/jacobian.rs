@@ -38,7 +38,8 @@ pub struct Conditioning {
     pub singular_values: [f64; 6],
     /// The characteristic length ℓ used to normalise rotations, metres.
     pub characteristic_length: f64,
-    /// `σ_max / σ_min`, or `None` when the Jacobian is rank deficient (singular).
+    /// `σ_max / σ_min`, or `None` when the Jacobian is rank deficient (singular); for servos
+    /// also divided by the worst servo's transmission ([`Geometry::servo_conditioning`]).
     pub condition_number: Option<f64>,
     /// The twist the legs control least (right singular vector of σ_min): translation
     /// velocity (m/s) and ℓ·angular velocity (m/s), unit length overall.
@@ -165,18 +166,38 @@ impl Geometry {
     }
 
     /// Conditioning of a rotary platform at `pose` (`None` for linear legs, or when a
-    /// servo cannot reach its joint): the servo Jacobian with its rows scaled by the horn
-    /// length (servo rates as horn-tip speeds, m/s per m/s) and its rotation columns by
-    /// the characteristic length, as for legs. Near the edge of a servo's reach the rod
-    /// turns across its horn's motion, that row grows without bound, and the verdict
-    /// becomes singular.
+    /// servo cannot reach its joint): the singular values and weakest twist of the servo
+    /// Jacobian with its rows scaled by the horn length (servo rates as horn-tip speeds,
+    /// m/s per m/s) and its rotation columns by the characteristic length, as for legs.
+    ///
+    /// The condition number is the rods' own (the Jacobian with unit rows, as for legs)
+    /// divided by the worst servo's transmission `|cos|` of the angle between its rod and
+    /// its horn tip's motion (1: the rod pulls straight along it; 0: across it, at the edge
+    /// of reach). Near the edge of reach a row grows without bound; when all six reach it
+    /// together (pure heave of a symmetric platform) the rows grow alike and their ratio
+    /// alone stays finite (12.3 for servo-desk at 141.70 mm), so the transmission is taken
+    /// into account on its own, and the verdict becomes singular either way.
     pub fn servo_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
         let servos = self.rotary()?;
         let j = self.servo_jacobian(pose)?.ok()?;
-        Some(conditioning_of(
-            &(j * servos.horn_length()),
-            self.characteristic_length(),
-        ))
+        let scaled = j * servos.horn_length();
+        let ell = self.characteristic_length();
+        let mut conditioning = conditioning_of(&scaled, ell);
+        // Row i's translation part is d_i / (d_i · h_i): its length is 1 / (|h_i| τ_i).
+        let mut unit_rows = scaled;
+        let mut worst_transmission = f64::INFINITY;
+        for i in 0..6 {
+            let length = scaled.fixed_view::<1, 3>(i, 0).norm();
+            worst_transmission = worst_transmission.min(1.0 / length);
+            unit_rows.row_mut(i).scale_mut(1.0 / length);
+        }
+        let rods = conditioning_of(&unit_rows, ell).condition_number;
+        conditioning.condition_number = conditioning
+            .condition_number
+            .and(rods)
+            .map(|k| k / worst_transmission)
+            .filter(|k| k.is_finite() && k * RANK_TOLERANCE < 1.0);
+        Some(conditioning)
     }
 
     /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
@@ -354,6 +375,59 @@ mod tests {
             Geometry::seed()
                 .servo_conditioning(&Geometry::seed().home_pose())
                 .is_none()
+        );
+    }
+
+    /// servo-desk in pure heave, raised until all six servos reach the edge of reach at
+    /// once: every row grows alike, so their ratio stayed 12.3 and no check flagged it.
+    #[test]
+    fn all_six_servos_at_the_edge_of_reach_together_are_near_singular() {
+        let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let g = &s.geometry;
+        let at = |z: f64| g.servo_conditioning(&Pose::from_xyz_rpy_deg([0.0, 0.0, z], [0.0; 3]));
+        let home = g.home_height();
+        let (mut inside, mut outside) = (home, home + 0.2);
+        assert!(at(outside).is_none(), "still reachable 0.2 m above home");
+        for _ in 0..60 {
+            let mid = 0.5 * (inside + outside);
+            if at(mid).is_some() {
+                inside = mid
+            } else {
+                outside = mid
+            }
+        }
+        let edge = at(inside).unwrap_or_else(|| panic!("unreachable at {inside}"));
+        let kappa = edge.condition_number.unwrap_or(f64::INFINITY);
+        assert!(kappa > 1e3, "condition {kappa} at z = {inside}");
+        // A tenth of a millimetre below the edge the rods are still nearly across their horns
+        // (the transmission falls as the square root of the distance to the edge: 28 at 1 mm).
+        let near = at(inside - 1e-4).and_then(|c| c.condition_number);
+        assert!(
+            near.is_some_and(|k| k > 30.0),
+            "{near:?} at z = {}",
+            inside - 1e-4
+        );
+        // At home the servos pull well: the verdict is the rods' own conditioning, scaled by
+        // a transmission close to 1.
+        let home_kappa = at(home).and_then(|c| c.condition_number);
+        assert!(home_kappa.is_some_and(|k| k < 30.0), "{home_kappa:?}");
+        let samples = crate::trajectory::Samples {
+            times: vec![0.0],
+            poses: vec![Pose::from_xyz_rpy_deg([0.0, 0.0, inside - 1e-4], [0.0; 3])],
+        };
+        let checked = crate::checks::check_motion(
+            g,
+            &s.limits,
+            &samples,
+            &crate::checks::CheckSettings::default(),
+        );
+        assert!(
+            checked
+                .findings
+                .iter()
+                .any(|f| f.kind == crate::checks::FindingKind::NearSingular),
+            "{:?}",
+            checked.findings
         );
     }
 
