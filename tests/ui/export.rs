@@ -231,3 +231,41 @@ fn the_workspace_figure_surface_and_view_are_exported() {
     );
     assert!(!empty.exists());
 }
+
+#[test]
+fn an_export_names_its_full_path_offers_its_folder_and_asks_before_replacing() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("paired", HEIGHT);
+    h.get_by_role_and_label(Role::Slider, "samples")
+        .set_value_accesskit(6.0);
+    h.run();
+    let csv = dir.path().join("legs.csv");
+    export_to(&mut h, ExportKind::Csv, &csv);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_ok_and(|m| m.contains(&csv.display().to_string())),
+        "{outcome:?}"
+    );
+    assert_eq!(h.state().exports.written.as_deref(), Some(csv.as_path()));
+    assert!(h.query_by_label("Show in folder").is_some());
+    // The same path again: a question first (before: replaced without one).
+    std::fs::write(&csv, "mine\n").unwrap_or_else(|e| panic!("{e}"));
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+    let question = format!("{} exists. Replace it?", csv.display());
+    assert!(h.query_by_label(&question).is_some());
+    assert!(h.state().exports.job.is_none());
+    h.get_by_label("Cancel").click();
+    h.run();
+    assert!(h.state().exports.job.is_none());
+    assert_eq!(std::fs::read_to_string(&csv).unwrap_or_default(), "mine\n");
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+    h.get_by_label("Replace").click();
+    h.run();
+    assert!(finish(&mut h).is_ok());
+    let text = std::fs::read_to_string(&csv).unwrap_or_default();
+    assert!(text.starts_with("t,x,y,z"), "{text}");
+}

@@ -126,3 +126,171 @@ fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
         "nothing is saved at exit after a reset"
     );
 }
+
+/// A file dropped on the window, as egui-winit hands it over.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+/// With `STEWART_LOOK_DIR` set, the window as it is now, saved there as `name` to be
+/// looked at.
+fn look(h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>, name: &str) {
+    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
+        let image = h.render().unwrap_or_else(|e| panic!("{e}"));
+        image
+            .save(std::path::Path::new(&dir).join(name))
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+fn drop_file(
+    h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>,
+    path: &std::path::Path,
+) {
+    h.input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(Dropped(path.to_path_buf())));
+    h.run();
+}
+
+#[test]
+fn a_pose_table_or_a_scenario_dropped_on_the_window_opens() {
+    let dir = tempdir();
+    let poses = dir.path().join("poses.csv");
+    std::fs::write(
+        &poses,
+        "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,0,0.8,0,0,0\n1,0.05,0,0.82,3,0,0\n2.5,0,0.04,0.8,0,-2,5\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let mut h = harness("paired");
+    let before = h.state().scenario().clone();
+    // While a file hovers, the window says what dropping it does.
+    h.input_mut().hovered_files.push(egui::HoveredFile {
+        path: Some(poses.clone()),
+        mime: String::new(),
+    });
+    // (egui repaints while files hover: one frame, not run until settled.)
+    h.step();
+    look(&mut h, "drop-note.png");
+    h.input_mut().hovered_files.clear();
+    // Before: a dropped file did nothing.
+    drop_file(&mut h, &poses);
+    let motion = &h.state().scenario().motion;
+    assert_eq!(motion.sampling.len(), 3);
+    assert_eq!(motion.sampling.duration(), 2.5);
+    assert_eq!(h.state().scenario().geometry, before.geometry);
+    assert!(
+        h.query_by_label_contains("Playing 3 poses over 2.50 s from")
+            .is_some(),
+        "{:?}",
+        h.state().files.status
+    );
+    // One Ctrl+Z takes it back.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().scenario(), &before);
+
+    // A scenario replaces the platform.
+    let file = dir.path().join("figure.toml");
+    let figure = Scenario::preset("figure8").unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(&file, figure.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    drop_file(&mut h, &file);
+    assert_eq!(h.state().scenario().geometry, figure.geometry);
+    assert_eq!(h.state().files.current.as_deref(), Some(file.as_path()));
+
+    // Anything else is refused with a note, and changes nothing.
+    let notes = dir.path().join("notes.txt");
+    std::fs::write(&notes, "hello").unwrap_or_else(|e| panic!("{e}"));
+    let now = h.state().scenario().clone();
+    drop_file(&mut h, &notes);
+    assert_eq!(h.state().scenario(), &now);
+    assert!(
+        h.query_by_label_contains("not a file the viewer opens")
+            .is_some()
+    );
+}
+
+#[test]
+fn saving_over_another_file_asks_first_and_ctrl_s_saves_the_open_file() {
+    let dir = tempdir();
+    let other = dir.path().join("other.toml");
+    std::fs::write(&other, "# someone else's\n").unwrap_or_else(|e| panic!("{e}"));
+    let mut h = harness("paired");
+    h.state_mut().files.path = other.display().to_string();
+    h.run();
+    h.get_by_label("Save").click();
+    h.run();
+    // Before: it was replaced at once.
+    let question = format!("{} exists. Replace it?", other.display());
+    assert!(h.query_by_label(&question).is_some(), "no question");
+    look(&mut h, "replace-question.png");
+    h.get_by_label("Cancel").click();
+    h.run();
+    assert!(h.query_by_label(&question).is_none());
+    assert_eq!(
+        std::fs::read_to_string(&other).unwrap_or_default(),
+        "# someone else's\n"
+    );
+    h.get_by_label("Save").click();
+    h.run();
+    h.get_by_label("Replace").click();
+    h.run();
+    let saved = std::fs::read_to_string(&other).unwrap_or_default();
+    assert!(saved.contains("[geometry]"), "{saved}");
+    assert_eq!(h.state().files.current.as_deref(), Some(other.as_path()));
+    // Now it is the open file: Ctrl+S writes there without a question.
+    let mut params = h.state().scenario().geometry.params().clone();
+    params.home_height = 0.95;
+    h.state_mut().set_geometry(params);
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
+    h.run();
+    assert!(h.query_by_label_contains("exists. Replace it?").is_none());
+    let again = Scenario::load(&other).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(again.geometry.home_height(), 0.95);
+}
+
+#[test]
+fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
+    let dir = tempdir();
+    let file = dir.path().join("mine.toml");
+    let figure = Scenario::preset("figure8").unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(&file, figure.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    // The dialog's two path fields (egui_file's own) carry no accessible name.
+    let state = stewart_app::viewer::ViewerState::new(
+        Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    let mut h = crate::built_harness(state, egui::vec2(1280.0, 800.0), false);
+    // Start the dialog in the temporary folder: the file open now is there.
+    h.state_mut().files.current = Some(dir.path().join("start.toml"));
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::O);
+    h.run();
+    assert!(
+        h.query_by_label_contains("Open a scenario or a pose table")
+            .is_some()
+    );
+    h.get_by_label_contains("mine.toml").click();
+    h.run();
+    look(&mut h, "file-dialog.png");
+    // The dialog's own Open button comes after the Scenario panel's.
+    h.get_all_by_role_and_label(Role::Button, "Open")
+        .last()
+        .unwrap_or_else(|| panic!("no Open button"))
+        .click();
+    h.run();
+    assert_eq!(h.state().scenario().geometry, figure.geometry);
+    assert!(h.state().files.picker.is_none());
+    assert!(
+        h.query_by_label_contains("Open a scenario or a pose table")
+            .is_none()
+    );
+}

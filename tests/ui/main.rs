@@ -44,6 +44,16 @@ pub fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerS
 
 /// The viewer on `state` in a window of `size` logical pixels.
 pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
+    built_harness(state, size, true)
+}
+
+/// The viewer on `state`, with kittest's check that every widget has an accessible name on
+/// or off (off only where a widget that is not ours lacks one: the file dialog's fields).
+pub fn built_harness(
+    state: ViewerState,
+    size: egui::Vec2,
+    accessibility_check: bool,
+) -> Harness<'static, ViewerState> {
     // The system's Chinese font as the window loads it; kittest panics on a glyph no font
     // has, so no test passes with boxes for characters.
     // Up to eight frames to settle: a tall window with every section open lays out new
@@ -51,6 +61,7 @@ pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, V
     let mut h = Harness::builder()
         .with_size(size)
         .with_max_steps(8)
+        .with_accessibility_check(accessibility_check)
         .with_context_setup(|ctx| {
             stewart_app::viewer::fonts::install(ctx);
         })

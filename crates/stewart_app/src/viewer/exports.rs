@@ -144,6 +144,11 @@ pub struct Exports {
     pub job: Option<ExportJob>,
     /// What the last export did.
     pub status: Status,
+    /// Where the running export writes (absolute).
+    pub writing: Option<std::path::PathBuf>,
+    /// What the last export that succeeded wrote (absolute): *Show in folder* opens its
+    /// folder.
+    pub written: Option<std::path::PathBuf>,
 }
 
 impl Exports {
@@ -152,6 +157,12 @@ impl Exports {
         if let Some(job) = &mut self.job
             && let Some(outcome) = job.poll()
         {
+            self.written = if outcome.is_ok() {
+                self.writing.take()
+            } else {
+                None
+            };
+            self.writing = None;
             self.status = Some(outcome);
             self.job = None;
         }

@@ -1,6 +1,8 @@
-//! The Scenario panel's file side: the path typed, the outcome of the last open or save,
-//! and the scenario files of the current folder (read at most once a second, not every
-//! frame).
+//! The viewer's files: the scenario path typed and the file open now, the outcome of the
+//! last open or save, the scenario files of the current folder (read at most once a
+//! second, not every frame), the open/save dialog (`egui_file`, drawn by egui itself, so it
+//! works the same on every system, under Xvfb and in kittest) and the question asked
+//! before a file is replaced.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -11,14 +13,132 @@ pub type Status = Option<Result<String, String>>;
 /// How long a folder listing is trusted before the folder is read again.
 const LISTING_LIFETIME: Duration = Duration::from_secs(1);
 
-/// The file side of the Scenario panel.
-#[derive(Debug, Default)]
+/// The viewer's files.
+#[derive(Default)]
 pub struct Files {
     /// The scenario file path typed in the panel.
     pub path: String,
+    /// The scenario file opened or saved last (Ctrl+S writes there without asking).
+    pub current: Option<PathBuf>,
     /// What the last open or save did.
     pub status: Status,
+    /// The open/save dialog, while one is shown.
+    pub picker: Option<Picker>,
+    /// A write waiting for the answer to "replace it?".
+    pub confirm: Option<Overwrite>,
     listing: Option<(Instant, Vec<PathBuf>)>,
+}
+
+/// What a file dialog's choice is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    /// Open a scenario (`.toml`) or a pose table (`.csv`).
+    Open,
+    /// Save the scenario as TOML.
+    SaveScenario,
+    /// Choose where the export writes.
+    ExportTo,
+}
+
+/// A file dialog on screen and what its choice is for.
+pub struct Picker {
+    /// What the chosen path is for.
+    pub purpose: Purpose,
+    /// The dialog.
+    pub dialog: egui_file::FileDialog,
+}
+
+impl Picker {
+    /// Open a dialog for `purpose` in `folder`, offering `name` for a file to write; its
+    /// buttons and title in `lang`.
+    pub fn open(purpose: Purpose, folder: &Path, name: &str, lang: crate::i18n::Lang) -> Self {
+        let (dialog, title) = match purpose {
+            Purpose::Open => (
+                egui_file::FileDialog::open_file().show_files_filter(Box::new(|p: &Path| {
+                    matches!(OpenKind::of(p), OpenKind::Scenario | OpenKind::PoseTable)
+                })),
+                "files.open_title",
+            ),
+            Purpose::SaveScenario => (
+                egui_file::FileDialog::save_file().default_filename(name),
+                "files.save_title",
+            ),
+            Purpose::ExportTo => (
+                egui_file::FileDialog::save_file().default_filename(name),
+                "files.export_title",
+            ),
+        };
+        let mut dialog = dialog
+            .initial_path(folder)
+            .title(lang.tr(title))
+            .open_button_text(lang.tr("files.open_button").into())
+            .save_button_text(lang.tr("files.save_button").into())
+            .cancel_button_text(lang.tr("files.cancel").into())
+            .file_label_text(lang.tr("files.file_label").into())
+            .show_new_folder(true)
+            .show_rename(false)
+            .anchor(egui::Align2::CENTER_CENTER, [0.0, 0.0])
+            .id(egui::Id::unique("stewart_file_dialog"));
+        dialog.open();
+        Self { purpose, dialog }
+    }
+}
+
+/// What the user is asked before a file is replaced.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Overwrite {
+    /// The file that exists.
+    pub path: PathBuf,
+    /// What writes it once the user agrees.
+    pub action: WriteAction,
+}
+
+/// A write that can wait for "replace it?".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WriteAction {
+    /// Save the scenario.
+    SaveScenario,
+    /// Run the export.
+    Export,
+}
+
+/// What a dropped or chosen file is, by its extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OpenKind {
+    /// A scenario, `.toml`.
+    Scenario,
+    /// Poses over time, `.csv`.
+    PoseTable,
+    /// Anything else.
+    Other,
+}
+
+impl OpenKind {
+    /// The kind of `path`, from its extension (any case).
+    pub fn of(path: &Path) -> Self {
+        let ext = path
+            .extension()
+            .map(|e| e.to_string_lossy().to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("toml") => OpenKind::Scenario,
+            Some("csv") => OpenKind::PoseTable,
+            _ => OpenKind::Other,
+        }
+    }
+}
+
+/// `path` as an absolute path (relative paths from the current folder), for messages that
+/// say where a file went.
+pub fn absolute(path: &Path) -> PathBuf {
+    std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// The folder a file dialog for `path` starts in: the file's own folder, else the current
+/// one.
+pub fn folder_of(path: &Path) -> PathBuf {
+    absolute(path)
+        .parent()
+        .map_or_else(|| absolute(Path::new(".")), Path::to_path_buf)
 }
 
 impl Files {
@@ -62,4 +182,25 @@ fn scenario_files(dir: &Path) -> Vec<PathBuf> {
         .collect();
     files.sort();
     files
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn files_are_told_apart_by_their_extension() {
+        assert_eq!(OpenKind::of(Path::new("a/b.toml")), OpenKind::Scenario);
+        assert_eq!(OpenKind::of(Path::new("POSES.CSV")), OpenKind::PoseTable);
+        assert_eq!(OpenKind::of(Path::new("notes.txt")), OpenKind::Other);
+        assert_eq!(OpenKind::of(Path::new("toml")), OpenKind::Other);
+    }
+
+    #[test]
+    fn paths_in_messages_are_absolute() {
+        let here = std::env::current_dir().unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(absolute(Path::new("seed.gif")), here.join("seed.gif"));
+        assert_eq!(folder_of(Path::new("seed.gif")), here);
+        assert_eq!(folder_of(Path::new("/tmp/x/seed.gif")), Path::new("/tmp/x"));
+    }
 }

@@ -7,8 +7,6 @@
 //! ranges), and either replaces the scenario and rebuilds everything derived from it, or
 //! is refused with its reason and changes nothing.
 
-use std::path::Path;
-
 use nalgebra::Vector3;
 
 use stewart_kinematics::link_settings::LinkSettings;
@@ -348,34 +346,6 @@ impl ViewerState {
         let missing = self.look.renderer_missing.take();
         self.look = Look::new(default_camera(&self.scenario));
         self.look.renderer_missing = missing;
-    }
-
-    /// Open a scenario file. A file that cannot be read or is invalid leaves the current
-    /// scenario untouched; either way the outcome is shown in the Scenario panel.
-    pub fn open_file(&mut self, path: &Path) {
-        self.files.status = Some(match Scenario::load(path) {
-            Ok(s) => {
-                let name = s.name.clone();
-                self.session.origin = path.display().to_string();
-                self.load_scenario(s);
-                Ok(self.look.lang.fmt(
-                    "scenario.opened",
-                    &[("name", &name), ("path", &path.display())],
-                ))
-            }
-            Err(e) => Err(e.to_string()),
-        });
-    }
-
-    /// Save the scenario as TOML (whole or not at all).
-    pub fn save_file(&mut self, path: &Path) {
-        let text = self.scenario.to_toml();
-        let lang = self.look.lang;
-        self.files.status = Some(
-            crate::output::write_atomically(path, text.as_bytes())
-                .map(|()| lang.fmt("scenario.saved", &[("path", &path.display())]))
-                .map_err(|e| format!("{e:#}")),
-        );
     }
 
     /// Go back one edit (Ctrl+Z); returns whether there was one.

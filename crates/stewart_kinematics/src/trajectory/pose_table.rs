@@ -6,6 +6,7 @@ use std::io::Read;
 use crate::pose::Pose;
 use crate::table::{NumericTable, TableError};
 use crate::trajectory::keyframes::{Interpolation, Keyframe, Keyframes};
+use crate::trajectory::{Motion, Sampling, Trajectory};
 
 /// The pose columns, in order, with their units in the names.
 pub const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -105,6 +106,27 @@ impl PoseTable {
     }
 }
 
+impl PoseTable {
+    /// The table as a motion, as `kind = "pose_table"` makes it: the rows joined by straight
+    /// lines, sampled once per row over the table's own time span.
+    pub fn to_motion(&self, file: &str) -> Result<Motion, TableError> {
+        let keyframes = self.to_keyframes(file, Interpolation::Linear)?;
+        let (first, last) = keyframes.time_span();
+        let rows = keyframes.keys().len().max(2) as u64;
+        let sampling =
+            Sampling::with_start(first, last - first, rows).map_err(|e| TableError::BadValue {
+                file: file.to_owned(),
+                line: self.lines.first().copied().unwrap_or(1),
+                column: "t".to_owned(),
+                message: e.to_string(),
+            })?;
+        Ok(Motion {
+            trajectory: Trajectory::Keyframes(keyframes),
+            sampling,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -142,5 +164,37 @@ mod tests {
                 .to_string()
                 .contains("no `t` column")
         );
+    }
+
+    #[test]
+    fn a_table_becomes_a_motion_through_every_row_at_its_time() {
+        let text = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n2,0,0,1,0,0,0\n3,0.1,0,1,5,0,0\n5,0,0.2,1.1,0,0,-10\n";
+        let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
+        let motion = table.to_motion("p.csv").unwrap_or_else(|e| panic!("{e}"));
+        let times: Vec<f64> = motion.sampling.times().collect();
+        assert_eq!(times.len(), 3);
+        assert_eq!((times[0], times[2]), (2.0, 5.0));
+        for (t, pose) in [2.0, 3.0, 5.0].iter().zip(&table.poses) {
+            let at = motion.trajectory.pose_at(*t);
+            assert!((at.position - pose.position).norm() < 1e-12);
+            assert!((at.rotation() - pose.rotation()).norm() < 1e-12);
+        }
+        // Half way between rows 2 and 3 (times 3 and 5): half way between their positions.
+        let mid = motion.trajectory.pose_at(4.0).position;
+        assert!(
+            (mid - nalgebra::Vector3::new(0.05, 0.1, 1.05)).norm() < 1e-12,
+            "{mid}"
+        );
+        let untimed = PoseTable::read(
+            "x,y,z,roll_deg,pitch_deg,yaw_deg\n0,0,1,0,0,0\n".as_bytes(),
+            "q.csv",
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let e = untimed
+            .to_motion("q.csv")
+            .map(|_| ())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("q.csv") && e.contains("`t`"), "{e}");
     }
 }

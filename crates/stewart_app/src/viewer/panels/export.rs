@@ -1,7 +1,7 @@
 //! Export: video, frames, the plot and the CSV, written on a background thread with a
 //! progress bar and a cancel button.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use stewart_render::{Overlays, Theme};
 
@@ -9,6 +9,7 @@ use super::widgets;
 use crate::export::video::{RateNote, VideoRequest, rate_in_words};
 use crate::viewer::export_job::{ExportJob, ExportWork, SurfaceView};
 use crate::viewer::exports::ExportKind;
+use crate::viewer::files::{Overwrite, Purpose, WriteAction, absolute};
 use crate::viewer::state::ViewerState;
 
 /// Frame sizes offered.
@@ -86,13 +87,41 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
     let path = state.exports.form.path.trim().to_owned();
     if ui
         .add_enabled(!path.is_empty(), egui::Button::new(t.tr("export.export")))
+        .on_hover_text(t.tr("export.export_tip"))
         .clicked()
     {
-        let work = work(state, PathBuf::from(path));
-        state.exports.status = None;
-        state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
+        let full = absolute(Path::new(&path));
+        if full.exists() {
+            state.files.confirm = Some(Overwrite {
+                path: full,
+                action: WriteAction::Export,
+            });
+        } else {
+            start(state, full);
+        }
     }
     widgets::status(ui, &state.exports.status);
+    if let Some(written) = state.exports.written.clone()
+        && ui
+            .button(t.tr("export.show_folder"))
+            .on_hover_text(t.tr("export.show_folder_tip"))
+            .clicked()
+    {
+        state.exports.status = crate::viewer::reveal::show_in_folder(&written)
+            .err()
+            .map(Err)
+            .or(state.exports.status.take());
+    }
+}
+
+/// Start the export to `path` (absolute; the user has agreed to replace it if it exists).
+pub(super) fn start(state: &mut ViewerState, path: PathBuf) {
+    let t = state.look.lang;
+    let work = work(state, path.clone());
+    state.exports.status = None;
+    state.exports.written = None;
+    state.exports.writing = Some(path);
+    state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
 }
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -112,11 +141,21 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     if form.kind != before || form.path.is_empty() {
         form.path = format!("{name}{}{}", form.kind.suffix(), form.kind.extension());
     }
+    let mut browse = false;
     ui.horizontal(|ui| {
         let label = ui.label(t.tr("export.output"));
-        ui.text_edit_singleline(&mut form.path)
-            .labelled_by(label.id);
+        ui.add(egui::TextEdit::singleline(&mut form.path).desired_width(220.0))
+            .labelled_by(label.id)
+            .on_hover_text(absolute(Path::new(form.path.trim())).display().to_string());
+        browse = ui
+            .button(t.tr("export.browse"))
+            .on_hover_text(t.tr("export.browse_tip"))
+            .clicked();
     });
+    if browse {
+        state.choose_file(Purpose::ExportTo);
+    }
+    let form = &mut state.exports.form;
     let workspace = matches!(
         form.kind,
         ExportKind::WorkspaceSvg

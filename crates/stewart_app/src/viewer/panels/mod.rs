@@ -3,6 +3,7 @@
 mod design;
 mod diagnostics;
 mod export;
+mod file_dialogs;
 mod geometry;
 mod legs;
 mod link;
@@ -16,6 +17,7 @@ mod view;
 mod widgets;
 mod workspace;
 
+use super::files::Purpose;
 use super::playback::MotionMode;
 use super::state::ViewerState;
 use super::teleop;
@@ -73,6 +75,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
     splitter_grip(ui, plot_rect);
     export::window(ui.ctx(), state);
+    file_dialogs::show(ui.ctx(), state);
     if state.link.connected() {
         link_badge(ui.ctx(), state);
     }
@@ -176,7 +179,8 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
 /// Esc: while a link is connected, its e-stop and nothing else; otherwise it leaves full
 /// screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
 /// P or F5: presentation mode; F11: full screen; F12: screenshot; Ctrl+Z undo, Ctrl+Shift+Z
-/// or Ctrl+Y redo (outside text fields, which keep their own).
+/// or Ctrl+Y redo; Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as (outside text fields,
+/// which keep their own).
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     // The e-stop works whatever has the keyboard focus.
@@ -198,12 +202,27 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     if !ui.input(|i| i.pointer.any_down()) {
         state.undo.seal();
     }
+    let shift = egui::Modifiers::COMMAND | egui::Modifiers::SHIFT;
     let (redo, undo) = ui.input_mut(|i| {
-        let shift = egui::Modifiers::COMMAND | egui::Modifiers::SHIFT;
         let redo = i.consume_key(shift, egui::Key::Z)
             || i.consume_key(egui::Modifiers::COMMAND, egui::Key::Y);
         (redo, i.consume_key(egui::Modifiers::COMMAND, egui::Key::Z))
     });
+    let (save_as, save, open) = ui.input_mut(|i| {
+        (
+            i.consume_key(shift, egui::Key::S),
+            i.consume_key(egui::Modifiers::COMMAND, egui::Key::S),
+            i.consume_key(egui::Modifiers::COMMAND, egui::Key::O),
+        )
+    });
+    if save_as {
+        state.choose_file(Purpose::SaveScenario);
+    } else if save {
+        state.save();
+    }
+    if open {
+        state.choose_file(Purpose::Open);
+    }
     if redo {
         state.redo_edit();
     }

@@ -7,6 +7,7 @@ use stewart_kinematics::scenario::presets;
 
 use super::widgets;
 use crate::i18n::Lang;
+use crate::viewer::files::Purpose;
 use crate::viewer::state::ViewerState;
 
 /// The panel.
@@ -63,22 +64,40 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.add(
             egui::TextEdit::singleline(&mut state.files.path)
                 .hint_text("scenario.toml")
-                .desired_width(150.0),
+                .desired_width(ui.available_width()),
         )
         .labelled_by(label.id);
+    });
+    ui.horizontal(|ui| {
         let path = PathBuf::from(state.files.path.trim());
         let has_path = !state.files.path.trim().is_empty();
         if ui
             .add_enabled(has_path, egui::Button::new(t.tr("scenario.open")))
+            .on_hover_text(t.tr("scenario.open_tip"))
             .clicked()
         {
-            state.open_file(&path);
+            state.open_path(&path);
         }
         if ui
             .add_enabled(has_path, egui::Button::new(t.tr("scenario.save")))
+            .on_hover_text(t.tr("scenario.save_tip"))
             .clicked()
         {
-            state.save_file(&path);
+            state.save_file_asking(&path);
+        }
+        if ui
+            .button(t.tr("scenario.open_dialog"))
+            .on_hover_text(t.tr("scenario.open_dialog_tip"))
+            .clicked()
+        {
+            state.choose_file(Purpose::Open);
+        }
+        if ui
+            .button(t.tr("scenario.save_as"))
+            .on_hover_text(t.tr("scenario.save_as_tip"))
+            .clicked()
+        {
+            state.choose_file(Purpose::SaveScenario);
         }
     });
     egui::ComboBox::from_label(t.tr("scenario.in_folder"))
@@ -92,7 +111,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             for file in here {
                 let name = file.display().to_string();
                 if ui.selectable_label(false, &name).clicked() {
-                    state.files.path = name;
                     state.open_file(&file);
                 }
             }

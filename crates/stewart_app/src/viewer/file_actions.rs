@@ -1,0 +1,162 @@
+//! What the viewer does with files: open a scenario or a pose table (chosen, typed or
+//! dropped on the window), save the scenario, and ask before replacing a file. Every
+//! outcome is shown in the Scenario panel; a file that cannot be read leaves the scenario
+//! as it was.
+
+use std::path::{Path, PathBuf};
+
+use stewart_kinematics::Scenario;
+use stewart_kinematics::settings::Group;
+use stewart_kinematics::trajectory::PoseTable;
+
+use super::files::{OpenKind, Overwrite, Picker, Purpose, WriteAction, absolute, folder_of};
+use super::state::ViewerState;
+
+impl ViewerState {
+    /// Open whatever `path` is: a scenario (`.toml`) replaces the scenario, a pose table
+    /// (`.csv`) the motion; anything else is refused with a note.
+    pub fn open_path(&mut self, path: &Path) {
+        match OpenKind::of(path) {
+            OpenKind::Scenario => self.open_file(path),
+            OpenKind::PoseTable => self.open_pose_table(path),
+            OpenKind::Other => {
+                self.files.status = Some(Err(self
+                    .look
+                    .lang
+                    .fmt("files.unknown_kind", &[("path", &absolute(path).display())])));
+            }
+        }
+    }
+
+    /// Open a scenario file. A file that cannot be read or is invalid leaves the current
+    /// scenario untouched; either way the outcome is shown in the Scenario panel.
+    pub fn open_file(&mut self, path: &Path) {
+        let full = absolute(path);
+        self.files.status = Some(
+            match regular_file(&full)
+                .and_then(|()| Scenario::load(&full).map_err(|e| e.to_string()))
+            {
+                Ok(s) => {
+                    let name = s.name.clone();
+                    self.session.origin = full.display().to_string();
+                    self.load_scenario(s);
+                    self.files.path = full.display().to_string();
+                    self.files.current = Some(full.clone());
+                    Ok(self.look.lang.fmt(
+                        "scenario.opened",
+                        &[("name", &name), ("path", &full.display())],
+                    ))
+                }
+                Err(e) => Err(e),
+            },
+        );
+    }
+
+    /// Play the poses of a CSV table (`t,x,y,z,roll_deg,pitch_deg,yaw_deg`) as the motion,
+    /// one edit (Ctrl+Z takes it back); the platform stays.
+    pub fn open_pose_table(&mut self, path: &Path) {
+        let full = absolute(path);
+        let name = full.display().to_string();
+        let motion = regular_file(&full).and_then(|()| {
+            let file = std::fs::File::open(&full).map_err(|e| format!("{name}: {e}"))?;
+            let table = PoseTable::read(file, &name).map_err(|e| e.to_string())?;
+            table.to_motion(&name).map_err(|e| e.to_string())
+        });
+        let lang = self.look.lang;
+        self.files.status = Some(match motion {
+            Ok(motion) => {
+                let (count, seconds) = (motion.sampling.len(), motion.sampling.duration());
+                if self.edit(Group::Trajectory, |s| {
+                    s.motion = motion;
+                    Ok(())
+                }) {
+                    self.playback.time = 0.0;
+                    Ok(lang.fmt(
+                        "files.poses_opened",
+                        &[
+                            ("count", &count),
+                            ("seconds", &format!("{seconds:.2}")),
+                            ("path", &name),
+                        ],
+                    ))
+                } else {
+                    Err(self
+                        .edit_error
+                        .as_ref()
+                        .map_or_else(String::new, |(_, why)| format!("{name}: {why}")))
+                }
+            }
+            Err(e) => Err(e),
+        });
+    }
+
+    /// Save the scenario as TOML (whole or not at all).
+    pub fn save_file(&mut self, path: &Path) {
+        let full = absolute(path);
+        let text = self.scenario().to_toml();
+        let lang = self.look.lang;
+        let written = crate::output::write_atomically(&full, text.as_bytes())
+            .map(|()| lang.fmt("scenario.saved", &[("path", &full.display())]))
+            .map_err(|e| format!("{e:#}"));
+        if written.is_ok() {
+            self.files.path = full.display().to_string();
+            self.files.current = Some(full);
+        }
+        self.files.status = Some(written);
+    }
+
+    /// Save to `path`, first asking whether to replace it when it exists and is not the
+    /// file open now.
+    pub fn save_file_asking(&mut self, path: &Path) {
+        let full = absolute(path);
+        if full.exists() && self.files.current.as_deref() != Some(full.as_path()) {
+            self.files.confirm = Some(Overwrite {
+                path: full,
+                action: WriteAction::SaveScenario,
+            });
+        } else {
+            self.save_file(&full);
+        }
+    }
+
+    /// Ctrl+S: save to the file open now, or ask where (Save as…) when there is none.
+    pub fn save(&mut self) {
+        match self.files.current.clone() {
+            Some(path) => self.save_file(&path),
+            None => self.choose_file(Purpose::SaveScenario),
+        }
+    }
+
+    /// Show the file dialog for `purpose`, starting where the relevant file is.
+    pub fn choose_file(&mut self, purpose: Purpose) {
+        let (start, name) = match purpose {
+            Purpose::Open | Purpose::SaveScenario => (
+                self.files.current.clone().unwrap_or_default(),
+                format!("{}.toml", self.scenario().name),
+            ),
+            Purpose::ExportTo => {
+                let path = PathBuf::from(self.exports.form.path.trim());
+                let name = path
+                    .file_name()
+                    .map(|n| n.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                (path, name)
+            }
+        };
+        self.files.picker = Some(Picker::open(
+            purpose,
+            &folder_of(&start),
+            &name,
+            self.look.lang,
+        ));
+    }
+}
+
+/// Only regular files are read: a FIFO would block the window, a device never ends.
+fn regular_file(path: &Path) -> Result<(), String> {
+    match std::fs::metadata(path) {
+        Ok(m) if m.is_file() => Ok(()),
+        Ok(_) => Err(format!("{}: not a regular file", path.display())),
+        Err(e) => Err(format!("{}: cannot be read ({e})", path.display())),
+    }
+}
