@@ -289,3 +289,57 @@ fn a_finding_is_a_link_to_its_worst_moment_and_the_plot_marks_what_is_beyond() {
     // The legend explains the mark over the stretches past the stroke.
     assert!(h.query_by_label("beyond a limit").is_some());
 }
+
+/// Entering presentation mode frames the whole motion in the larger view, from the angles
+/// the user chose; leaving it brings their camera back (before: the scene kept the camera
+/// framed for the smaller view beside the controls).
+#[test]
+fn presentation_mode_frames_the_motion_in_its_larger_view_and_gives_the_camera_back() {
+    let mut h = harness("seed");
+    h.state_mut().look.camera.orbit(20.0, -5.0);
+    h.state_mut().look.camera.zoom(2.5);
+    h.run();
+    let before = h.state().look.camera;
+    h.key_press(egui::Key::P);
+    h.run();
+    let framed = h.state().look.camera;
+    assert_eq!(
+        (framed.azimuth_deg, framed.elevation_deg),
+        (before.azimuth_deg, before.elevation_deg)
+    );
+    // Every solid of every sampled pose projects inside the view, and the motion fills a
+    // good share of it.
+    let aspect = h.state().look.view_aspect;
+    let matrix = framed.view_proj(aspect);
+    let scenario = h.state().scenario().clone();
+    let (mut lo, mut hi) = (glam::Vec2::splat(f32::MAX), glam::Vec2::splat(f32::MIN));
+    for t in scenario.motion.sampling.times().step_by(10) {
+        let frame = scenario
+            .geometry
+            .scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
+        let mut points = Vec::new();
+        let solids = stewart_render::Overlays {
+            grid: false,
+            path: false,
+            labels: false,
+            ..stewart_render::Overlays::default()
+        };
+        stewart_render::DrawList::build(&frame, &stewart_render::Theme::LIGHT, &solids)
+            .solid_extent(&mut points);
+        for p in points {
+            let clip = matrix * p.extend(1.0);
+            let ndc = glam::Vec2::new(clip.x, clip.y) / clip.w;
+            lo = lo.min(ndc);
+            hi = hi.max(ndc);
+        }
+    }
+    assert!(
+        lo.cmpge(glam::Vec2::splat(-1.0)).all() && hi.cmple(glam::Vec2::splat(1.0)).all(),
+        "{lo} … {hi}"
+    );
+    let share = ((hi - lo) / 2.0).max_element();
+    assert!(share > 0.75, "the motion fills {share} of the view");
+    h.key_press(egui::Key::P);
+    h.run();
+    assert_eq!(h.state().look.camera, before);
+}

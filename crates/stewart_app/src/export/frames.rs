@@ -56,6 +56,51 @@ pub fn motion_camera(
     top: f32,
 ) -> OrbitCamera {
     let seed = default_camera(scenario);
+    motion_camera_from(
+        scenario,
+        times,
+        overlays,
+        aspect,
+        top,
+        [seed.azimuth_deg, seed.elevation_deg],
+    )
+}
+
+/// [`motion_camera`] looking from `[azimuth, elevation]` (degrees) instead of the seed's
+/// angles.
+pub fn motion_camera_from(
+    scenario: &Scenario,
+    times: &[f64],
+    overlays: &Overlays,
+    aspect: f32,
+    top: f32,
+    angles: [f32; 2],
+) -> OrbitCamera {
+    let step = times.len().div_ceil(FRAMING_POSES).max(1);
+    let poses = times
+        .iter()
+        .step_by(step)
+        .chain(times.last())
+        .map(|&t| scenario.motion.trajectory.pose_at(t));
+    poses_camera(scenario, poses, overlays, aspect, top, angles)
+}
+
+/// The camera looking from `[azimuth, elevation]` whose view (`aspect` = width / height)
+/// frames every solid of `scenario`'s platform at each of `poses`, centred below the `top`
+/// share of the height.
+pub fn poses_camera(
+    scenario: &Scenario,
+    poses: impl Iterator<Item = Pose>,
+    overlays: &Overlays,
+    aspect: f32,
+    top: f32,
+    [azimuth_deg, elevation_deg]: [f32; 2],
+) -> OrbitCamera {
+    let seed = OrbitCamera {
+        azimuth_deg,
+        elevation_deg,
+        ..default_camera(scenario)
+    };
     let g = &scenario.geometry;
     // Only solids count: no grid lines, path or label text to build for each pose.
     let solids = Overlays {
@@ -65,9 +110,8 @@ pub fn motion_camera(
         ..*overlays
     };
     let mut points = Vec::new();
-    let step = times.len().div_ceil(FRAMING_POSES).max(1);
-    for &t in times.iter().step_by(step).chain(times.last()) {
-        let frame = g.scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
+    for pose in poses {
+        let frame = g.scene_frame(&pose, Vec::new());
         DrawList::build(&frame, &Theme::DARK, &solids).solid_extent(&mut points);
     }
     OrbitCamera::fitting_points(

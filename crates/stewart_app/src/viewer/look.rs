@@ -16,6 +16,9 @@ pub struct Look {
     pub light_theme: bool,
     /// Presentation mode: light colours, large text, control panels hidden.
     pub presentation: bool,
+    /// The camera before presentation mode re-framed the scene for its larger view, put
+    /// back when presentation mode ends (`None` outside it).
+    pub camera_before_presentation: Option<OrbitCamera>,
     /// Full screen (F11); the window follows it.
     pub fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
@@ -34,6 +37,8 @@ pub struct Look {
     pub plot_height: f32,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub view_px: [u32; 2],
+    /// The 3D view's width over its height, as laid out last frame.
+    pub view_aspect: f32,
     /// Why the 3D view cannot be drawn, empty for "no renderer yet" (`None` once the window
     /// registered its renderer).
     pub renderer_missing: Option<String>,
@@ -47,6 +52,7 @@ impl Look {
             lang: Lang::En,
             light_theme: false,
             presentation: false,
+            camera_before_presentation: None,
             fullscreen: false,
             expand_panels: false,
             show_path: true,
@@ -56,6 +62,7 @@ impl Look {
             readouts: false,
             plot_height: 0.0,
             view_px: [1280, 720],
+            view_aspect: 16.0 / 9.0,
             renderer_missing: Some(String::new()),
         }
     }

@@ -593,6 +593,49 @@ impl ViewerState {
         };
     }
 
+    /// Presentation mode's framing, called by the view with its `aspect` (width / height)
+    /// each frame: on entering, the camera (its angles kept) is fitted to everything the
+    /// motion sweeps (the pose shown, in manual mode) with the controls hidden; on leaving,
+    /// the camera from before comes back.
+    pub fn frame_for_presentation(&mut self, aspect: f32) {
+        match (self.look.presentation, self.look.camera_before_presentation) {
+            (true, None) => {
+                let before = self.look.camera;
+                self.look.camera_before_presentation = Some(before);
+                let times: Vec<f64> = self.scenario.motion.sampling.times().collect();
+                let overlays = stewart_render::Overlays {
+                    platform_axes: self.look.platform_axes,
+                    ..stewart_render::Overlays::default()
+                };
+                let angles = [before.azimuth_deg, before.elevation_deg];
+                let camera = match self.playback.mode {
+                    MotionMode::Trajectory => crate::export::frames::motion_camera_from(
+                        &self.scenario,
+                        &times,
+                        &overlays,
+                        aspect,
+                        0.0,
+                        angles,
+                    ),
+                    MotionMode::Manual => crate::export::frames::poses_camera(
+                        &self.scenario,
+                        std::iter::once(self.pose()),
+                        &overlays,
+                        aspect,
+                        0.0,
+                        angles,
+                    ),
+                };
+                self.look.camera = camera;
+            }
+            (false, Some(before)) => {
+                self.look.camera = before;
+                self.look.camera_before_presentation = None;
+            }
+            _ => {}
+        }
+    }
+
     /// Step playback by one trajectory sample (`direction` ±1).
     pub fn step(&mut self, direction: f64) {
         let step = direction * self.scenario.motion.sampling.step();

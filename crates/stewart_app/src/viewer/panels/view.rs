@@ -102,6 +102,9 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     );
     let response = ui.allocate_rect(camera_rect, egui::Sense::click_and_drag());
     camera_input(ui, state, &response, rect);
+    let aspect = rect.width() / rect.height().max(1.0);
+    state.look.view_aspect = aspect;
+    state.frame_for_presentation(aspect);
     let t = state.look.lang;
     let theme = state.theme();
     let bg = theme.background.map(|c| (c * 255.0) as u8);
@@ -133,7 +136,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         (rect.width() * ui.ctx().pixels_per_point()).round() as u32,
         (rect.height() * ui.ctx().pixels_per_point()).round() as u32,
     ];
-    let aspect = rect.width() / rect.height().max(1.0);
     ui.painter().add(egui_wgpu::Callback::new_paint_callback(
         rect,
         SceneCallback {
