@@ -35,15 +35,10 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     h
 }
 
-/// Words that are the user's own, shown as written: the scenario's name and description,
-/// and the envelope typed in the command line's syntax (x, roll, …).
+/// Words that are the user's own, shown as written: the scenario's name and description.
 fn own_words(state: &ViewerState) -> Vec<String> {
     let s = state.scenario();
-    vec![
-        s.name.clone(),
-        s.description.clone(),
-        state.design.text.clone(),
-    ]
+    vec![s.name.clone(), s.description.clone()]
 }
 
 /// English words (three letters or more, not in [`KEPT`]) in the labels and values of

@@ -15,7 +15,8 @@ fn seed_with_panels_open() -> Harness<'static, ViewerState> {
 #[test]
 fn the_stroke_an_envelope_needs_goes_into_the_limits() {
     let mut h = seed_with_panels_open();
-    h.state_mut().design.text = "x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15".to_owned();
+    // z 0.7 .. 0.9 about the seed's home height 0.8 (the others at their defaults).
+    h.state_mut().design.spans[2] = [-0.1, 0.1];
     h.run();
     h.get_by_label("Compute").click();
     // The search runs on its own thread; the panel keeps drawing meanwhile.
@@ -23,6 +24,7 @@ fn the_stroke_an_envelope_needs_goes_into_the_limits() {
     h.state_mut().design.wait();
     h.run();
     assert!(h.query_by_label("Needed: 0.6551 .. 1.3520 m").is_some());
+    crate::look(&mut h, "design-panel.png");
     assert!(
         h.query_by_label("It does not fit the current limits.")
             .is_some()
@@ -44,12 +46,12 @@ fn the_stroke_an_envelope_needs_goes_into_the_limits() {
 #[test]
 fn a_bad_envelope_says_why() {
     let mut h = seed_with_panels_open();
-    h.state_mut().design.text = "z=0.9..0.7".to_owned();
+    h.state_mut().design.spans = [[0.0; 2]; 6];
     h.run();
     h.get_by_label("Compute").click();
     h.run();
     assert!(
-        h.query_by_label_contains("the range is inverted").is_some(),
+        h.query_by_label_contains("the envelope is empty").is_some(),
         "the reason is shown"
     );
     assert!(!h.state().design.busy());

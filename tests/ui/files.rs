@@ -141,17 +141,6 @@ impl egui::DroppedFile for Dropped {
     }
 }
 
-/// With `STEWART_LOOK_DIR` set, the window as it is now, saved there as `name` to be
-/// looked at.
-fn look(h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>, name: &str) {
-    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
-        let image = h.render().unwrap_or_else(|e| panic!("{e}"));
-        image
-            .save(std::path::Path::new(&dir).join(name))
-            .unwrap_or_else(|e| panic!("{e}"));
-    }
-}
-
 fn drop_file(
     h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>,
     path: &std::path::Path,
@@ -180,7 +169,7 @@ fn a_pose_table_or_a_scenario_dropped_on_the_window_opens() {
     });
     // (egui repaints while files hover: one frame, not run until settled.)
     h.step();
-    look(&mut h, "drop-note.png");
+    crate::look(&mut h, "drop-note.png");
     h.input_mut().hovered_files.clear();
     // Before: a dropped file did nothing.
     drop_file(&mut h, &poses);
@@ -232,7 +221,7 @@ fn saving_over_another_file_asks_first_and_ctrl_s_saves_the_open_file() {
     // Before: it was replaced at once.
     let question = format!("{} exists. Replace it?", other.display());
     assert!(h.query_by_label(&question).is_some(), "no question");
-    look(&mut h, "replace-question.png");
+    crate::look(&mut h, "replace-question.png");
     h.get_by_label("Cancel").click();
     h.run();
     assert!(h.query_by_label(&question).is_none());
@@ -280,7 +269,7 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     );
     h.get_by_label_contains("mine.toml").click();
     h.run();
-    look(&mut h, "file-dialog.png");
+    crate::look(&mut h, "file-dialog.png");
     // The dialog's own Open button comes after the Scenario panel's.
     h.get_all_by_role_and_label(Role::Button, "Open")
         .last()

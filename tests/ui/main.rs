@@ -70,6 +70,17 @@ pub fn built_harness(
     h
 }
 
+/// With `STEWART_LOOK_DIR` set, the window as it is now, saved there as `name` to be
+/// looked at.
+pub fn look(h: &mut Harness<'_, ViewerState>, name: &str) {
+    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
+        let image = h.render().unwrap_or_else(|e| panic!("{e}"));
+        image
+            .save(std::path::Path::new(&dir).join(name))
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
 /// Wait for the background report of the current scenario and draw again, so that the
 /// panels show a settled state (the report is computed off the UI thread).
 pub fn settle(h: &mut Harness<'static, ViewerState>) {

@@ -1,24 +1,36 @@
-//! The Design tool's state: an envelope typed as on the command line (`stewart design
-//! --envelope`), the search run off the UI thread, and its outcome.
+//! The Design tool's state: an envelope of poses (a range below and above home for each
+//! coordinate, as `stewart design --envelope` takes it), the search run off the UI
+//! thread, and its outcome.
 
 use std::sync::mpsc::{self, Receiver};
 
-use stewart_kinematics::Geometry;
 use stewart_kinematics::design::{DesignReport, Envelope, envelope_needs};
+use stewart_kinematics::{Geometry, Pose};
 
-/// The envelope typed, the search running, the last outcome.
+/// The envelope, the search running, the last outcome.
 pub struct DesignTool {
-    /// The envelope, `x=±0.1,roll=±10,…`.
-    pub text: String,
+    /// The envelope: for x, y, z (m) and roll, pitch, yaw (°), how far below and above the
+    /// home pose it reaches (`[0, 0]`: the coordinate stays at home).
+    pub spans: [[f64; 2]; 6],
     /// The last outcome: the report, or why the envelope was refused.
     pub result: Option<Result<DesignReport, String>>,
     running: Option<Receiver<DesignReport>>,
 }
 
+/// The envelope's coordinates, as `stewart design --envelope` names them.
+pub const COORDINATES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+
 impl Default for DesignTool {
     fn default() -> Self {
         Self {
-            text: "x=±0.1,y=±0.1,roll=±10,pitch=±10,yaw=±15".to_owned(),
+            spans: [
+                [-0.1, 0.1],
+                [-0.1, 0.1],
+                [0.0, 0.0],
+                [-10.0, 10.0],
+                [-10.0, 10.0],
+                [-15.0, 15.0],
+            ],
             result: None,
             running: None,
         }
@@ -26,10 +38,57 @@ impl Default for DesignTool {
 }
 
 impl DesignTool {
+    /// The envelope about `home`, or why there is none (no coordinate with a range, or a
+    /// range whose lower end is above its upper end).
+    pub fn envelope(&self, home: &Pose) -> Result<Envelope, String> {
+        if let Some((k, [a, b])) = self
+            .spans
+            .iter()
+            .enumerate()
+            .find(|(_, [a, b])| !(a.is_finite() && b.is_finite() && a <= b))
+        {
+            return Err(format!(
+                "`{}`: the range {a} .. {b} is inverted or not a number",
+                COORDINATES[k]
+            ));
+        }
+        if self.spans.iter().all(|[a, b]| a == b && *a == 0.0) {
+            return Err("the envelope is empty: give at least one coordinate a range".to_owned());
+        }
+        let h = home.to_coordinates();
+        let at_home: [f64; 6] =
+            std::array::from_fn(|k| if k < 3 { h[k] } else { h[k].to_degrees() });
+        Ok(Envelope {
+            lo: std::array::from_fn(|k| at_home[k] + self.spans[k][0]),
+            hi: std::array::from_fn(|k| at_home[k] + self.spans[k][1]),
+        })
+    }
+
+    /// The same envelope in `stewart design --envelope` syntax (±A about home, absolute
+    /// A..B otherwise), for the command line.
+    pub fn command_line(&self, home: &Pose) -> String {
+        let h = home.to_coordinates();
+        let parts: Vec<String> = self
+            .spans
+            .iter()
+            .enumerate()
+            .filter(|(_, [a, b])| *a != 0.0 || *b != 0.0)
+            .map(|(k, &[a, b])| {
+                let centre = if k < 3 { h[k] } else { h[k].to_degrees() };
+                if a == -b {
+                    format!("{}=±{b}", COORDINATES[k])
+                } else {
+                    format!("{}={}..{}", COORDINATES[k], centre + a, centre + b)
+                }
+            })
+            .collect();
+        parts.join(",")
+    }
+
     /// Start the search for `geometry` on its own thread (a bad envelope is refused at
     /// once, with its reason).
     pub fn start(&mut self, geometry: &Geometry) {
-        let envelope = match Envelope::parse(&self.text, &geometry.home_pose()) {
+        let envelope = match self.envelope(&geometry.home_pose()) {
             Ok(e) => e,
             Err(e) => {
                 self.result = Some(Err(e));
@@ -68,5 +127,30 @@ impl DesignTool {
         {
             self.result = Some(Ok(report));
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_envelope_is_the_spans_about_home_and_reads_as_the_command_line_does() {
+        let g = Geometry::seed();
+        let home = g.home_pose();
+        let mut tool = DesignTool::default();
+        tool.spans[2] = [-0.1, 0.05];
+        let env = tool.envelope(&home).unwrap_or_else(|e| panic!("{e}"));
+        let text = tool.command_line(&home);
+        let parsed = Envelope::parse(&text, &home).unwrap_or_else(|e| panic!("{text}: {e}"));
+        for k in 0..6 {
+            assert!((env.lo[k] - parsed.lo[k]).abs() < 1e-12, "{text}: {k}");
+            assert!((env.hi[k] - parsed.hi[k]).abs() < 1e-12, "{text}: {k}");
+        }
+        assert!((env.lo[2] - (g.home_height() - 0.1)).abs() < 1e-12);
+        tool.spans = [[0.0; 2]; 6];
+        assert!(tool.envelope(&home).is_err_and(|e| e.contains("empty")));
+        tool.spans[3] = [5.0, -5.0];
+        assert!(tool.envelope(&home).is_err_and(|e| e.contains("`roll`")));
     }
 }

@@ -13,12 +13,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CollapsingHeader::new(t.tr("design.heading"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
-            ui.horizontal(|ui| {
-                let label = ui.label(t.tr("design.envelope"));
-                ui.add(egui::TextEdit::singleline(&mut state.design.text).desired_width(230.0))
-                    .labelled_by(label.id)
-                    .on_hover_text(t.tr("design.envelope_tip"));
-            });
+            envelope(ui, state);
             let busy = state.design.busy();
             if ui
                 .add_enabled(!busy, egui::Button::new(t.tr("design.compute")))
@@ -35,6 +30,68 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             result(ui, state);
         });
 }
+
+/// The envelope: for each coordinate how far below and above home it reaches, in its
+/// unit; the command line that asks the same in the tooltip.
+fn envelope(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    let home = state.scenario().geometry.home_pose();
+    let scale = state.scenario().geometry.characteristic_length();
+    ui.label(t.tr("design.envelope")).on_hover_text(t.fmt(
+        "design.envelope_tip",
+        &[("line", &state.design.command_line(&home))],
+    ));
+    egui::Grid::new("design-envelope")
+        .num_columns(3)
+        .spacing([8.0, 2.0])
+        .show(ui, |ui| {
+            ui.label("");
+            ui.label(t.tr("design.below"));
+            ui.label(t.tr("design.above"));
+            ui.end_row();
+            for (k, span) in state.design.spans.iter_mut().enumerate() {
+                let linear = k < 3;
+                let (unit, speed, decimals) = if linear {
+                    ("m", 0.002 * scale, 3)
+                } else {
+                    ("°", 0.1, 1)
+                };
+                let name = t.fmt(
+                    "design.coordinate",
+                    &[("name", &t.tr(POSE_WORDS[k])), ("unit", &unit)],
+                );
+                let label = ui.label(&name);
+                let [lo, hi] = span;
+                ui.add(
+                    egui::DragValue::new(lo)
+                        .speed(speed)
+                        .max_decimals(decimals)
+                        .range(f64::NEG_INFINITY..=0.0),
+                )
+                .labelled_by(label.id)
+                .on_hover_text(t.tr("design.below_tip"));
+                ui.add(
+                    egui::DragValue::new(hi)
+                        .speed(speed)
+                        .max_decimals(decimals)
+                        .range(0.0..=f64::INFINITY),
+                )
+                .labelled_by(label.id)
+                .on_hover_text(t.tr("design.above_tip"));
+                ui.end_row();
+            }
+        });
+}
+
+/// The words for x, y, z, roll, pitch, yaw.
+const POSE_WORDS: [&str; 6] = [
+    "pose.x",
+    "pose.y",
+    "pose.z",
+    "pose.roll",
+    "pose.pitch",
+    "pose.yaw",
+];
 
 /// The outcome: each actuator's range, the range needed, whether it fits, the worst
 /// conditioning, and the button that writes the range into the limits.
