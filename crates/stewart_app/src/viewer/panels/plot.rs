@@ -213,6 +213,12 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
                 }
             }
         }
+        // The limits' labels as legible as the axes' (they were small and grey).
+        let label_colour = if state.look.is_light() {
+            Color32::from_gray(60)
+        } else {
+            Color32::from_gray(200)
+        };
         for (name, limit) in [("plot.min", min), ("plot.max", max)] {
             if let Some(v) = limit {
                 let words = format!("{}{}", quantity.symbol, t.tr(name));
@@ -222,22 +228,26 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
                         .color(Color32::GRAY)
                         .width(width * 0.7),
                 );
-                // Labelled on the line at the start of the time shown (a fixed place: the
+                // Labelled at the line at the start of the time shown (a fixed place: the
                 // plot's own bounds would grow to hold a label placed at their edge).
                 plot.text(
                     Text::new(
                         words.clone(),
                         PlotPoint::new(left_end, v),
                         egui::RichText::new(format!(
-                            " {words} {}",
-                            stewart_kinematics::bounds::short(v)
+                            " {words} {} {}",
+                            stewart_kinematics::bounds::short(v),
+                            quantity.unit
                         ))
-                        .color(Color32::GRAY),
+                        .text_style(egui::TextStyle::Body)
+                        .color(label_colour),
                     )
+                    // Inside the band between the limits: a label outside it would be cut
+                    // by the plot's edge, where the bounds end at the limit.
                     .anchor(if name == "plot.max" {
-                        egui::Align2::LEFT_BOTTOM
-                    } else {
                         egui::Align2::LEFT_TOP
+                    } else {
+                        egui::Align2::LEFT_BOTTOM
                     }),
                 );
             }
