@@ -343,3 +343,14 @@ fn presentation_mode_frames_the_motion_in_its_larger_view_and_gives_the_camera_b
     h.run();
     assert_eq!(h.state().look.camera, before);
 }
+
+/// No text the viewer draws is smaller than 11 points (egui's small style, 9 points, read
+/// as about 8 px: the descriptions, notes and hex dump).
+#[test]
+fn no_text_style_is_smaller_than_eleven_points() {
+    let h = harness("seed");
+    let style = h.ctx.global_style();
+    for (name, font) in &style.text_styles {
+        assert!(font.size >= 11.0, "{name:?} is {} pt", font.size);
+    }
+}

@@ -145,7 +145,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     if !lines.is_empty() {
         ui.label(t.tr("link.last_frames"));
         for line in lines.iter().rev().take(4) {
-            ui.label(RichText::new(line).monospace().size(10.0));
+            ui.label(RichText::new(line).monospace().size(super::SMALLEST_TEXT));
         }
     }
     // Pressed again while the platform is on its way home: an emergency stop.

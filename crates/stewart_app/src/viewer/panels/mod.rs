@@ -22,6 +22,9 @@ use super::playback::MotionMode;
 use super::state::ViewerState;
 use super::teleop;
 
+/// The smallest text the viewer draws, points (body text is 12.5).
+pub const SMALLEST_TEXT: f32 = 11.0;
+
 /// Text sizes are multiplied by this in presentation mode.
 const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
@@ -166,6 +169,10 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
     // A scroll bar that is always drawn, full width: the panels below the fold can be seen
     // to be there.
     style.spacing.scroll = egui::style::ScrollStyle::solid();
+    // Notes and descriptions in small text stay readable (egui's 9 pt read as about 8 px).
+    if let Some(small) = style.text_styles.get_mut(&egui::TextStyle::Small) {
+        small.size = small.size.max(SMALLEST_TEXT);
+    }
     if state.look.presentation {
         for font in style.text_styles.values_mut() {
             font.size *= PRESENTATION_TEXT_SCALE;

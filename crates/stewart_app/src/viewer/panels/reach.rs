@@ -104,7 +104,7 @@ fn map(
         painter.line_segment([c - egui::vec2(6.0, 0.0), c + egui::vec2(6.0, 0.0)], stroke);
         painter.line_segment([c - egui::vec2(0.0, 6.0), c + egui::vec2(0.0, 6.0)], stroke);
     }
-    let font = egui::FontId::proportional(10.0);
+    let font = egui::FontId::proportional(super::SMALLEST_TEXT);
     let (roll, pitch) = (words::coordinate(t, "roll"), words::coordinate(t, "pitch"));
     for v in [-span, 0.0, span] {
         let p = at([v, -span]);

@@ -213,7 +213,7 @@ fn colour_bar(ui: &mut egui::Ui, condition_max: f64) {
             egui::pos2(x, bar.bottom() + 3.0),
             egui::Align2::CENTER_TOP,
             format!("{m}"),
-            egui::FontId::proportional(10.0),
+            egui::FontId::proportional(super::SMALLEST_TEXT),
             text,
         );
     }
