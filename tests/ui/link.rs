@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT as _, Queryable};
 use stewart_app::viewer::state::ViewerState;
 use stewart_link::safety::LinkState;
 
@@ -184,6 +184,13 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
         h.query_by_label_contains("Tracking error, measured − commanded (mm)")
             .is_some()
     );
+    // The counts are behind "Advanced", closed at first.
+    assert!(
+        h.query_by_label_contains("set-points answered, 0 unanswered")
+            .is_none()
+    );
+    h.get_by_label_contains("Advanced: timing").click();
+    h.run();
     assert!(
         h.query_by_label_contains("set-points answered, 0 unanswered")
             .is_some()
@@ -209,4 +216,32 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
     assert!(words.starts_with("Emergency stop"), "{words}");
     assert!(words.contains("Left at x = "), "{words}");
     let _ = controller.join();
+}
+
+/// The Link panel's choices read as words, not the file's raw keys (before: `file`,
+/// `binary`, `native`).
+#[test]
+fn the_link_panels_choices_read_as_words() {
+    let mut state = ViewerState::new(
+        stewart_kinematics::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}")),
+    );
+    state.look.expand_panels = true;
+    let h = crate::harness_with(state, 3600.0);
+    // A combo box shows its choice as its value.
+    let shown = |words: &str| {
+        h.root().children_recursive().any(|n| {
+            let a = n.accesskit_node();
+            a.value().is_some_and(|v| v == words) || a.label().is_some_and(|l| l == words)
+        })
+    };
+    for words in [
+        "Dry run (to a file)",
+        "Binary frames (34 bytes, CRC)",
+        "Servo angle (0.01°)",
+    ] {
+        assert!(shown(words), "no `{words}`");
+    }
+    for raw in ["file", "binary", "native"] {
+        assert!(!shown(raw), "`{raw}` shown");
+    }
 }

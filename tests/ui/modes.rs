@@ -354,3 +354,30 @@ fn no_text_style_is_smaller_than_eleven_points() {
         assert!(font.size >= 11.0, "{name:?} is {} pt", font.size);
     }
 }
+
+/// The checks' own thresholds sit behind "Advanced" in the limits section; the limits do
+/// not.
+#[test]
+fn check_thresholds_are_behind_advanced() {
+    let mut h = crate::tall_harness("paired", 2400.0);
+    h.get_by_label("Limits and check thresholds").click();
+    h.run();
+    assert!(
+        h.query_all_by_label_contains("max leg speed")
+            .next()
+            .is_some()
+    );
+    assert!(
+        h.query_all_by_label_contains("rigid-body tolerance")
+            .next()
+            .is_none()
+    );
+    h.get_by_label("Advanced: check thresholds").click();
+    h.run();
+    assert!(
+        h.query_all_by_label_contains("rigid-body tolerance")
+            .next()
+            .is_some()
+    );
+    assert!(h.query_all_by_label_contains("jump ratio").next().is_some());
+}

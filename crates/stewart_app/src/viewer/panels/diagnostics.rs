@@ -95,14 +95,24 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     egui::CollapsingHeader::new(t.tr("diagnostics.limits"))
         .default_open(state.look.expand_panels)
         .show(ui, |ui| {
-            let targets: Vec<_> = settings::all()
-                .iter()
-                .filter(|s| matches!(s.group, Group::Limits | Group::Checks))
-                .map(|s| s.target)
-                .collect();
-            for target in targets {
-                setting_slider(ui, state, target);
-            }
+            sliders(ui, state, Group::Limits);
+            // The checks' own thresholds (rigid-body tolerance, jump ratio and floor, the
+            // near-singular condition number) are for those who tune the checks.
+            egui::CollapsingHeader::new(t.tr("diagnostics.advanced"))
+                .default_open(state.look.expand_panels)
+                .show(ui, |ui| sliders(ui, state, Group::Checks));
             edit_error(ui, state, &[Group::Limits, Group::Checks]);
         });
+}
+
+/// A slider for every setting of `group`.
+fn sliders(ui: &mut egui::Ui, state: &mut ViewerState, group: Group) {
+    let targets: Vec<_> = settings::all()
+        .iter()
+        .filter(|s| s.group == group)
+        .map(|s| s.target)
+        .collect();
+    for target in targets {
+        setting_slider(ui, state, target);
+    }
 }

@@ -105,16 +105,6 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     {
         state.link.arm();
     }
-    ui.label(t.fmt(
-        "link.figures",
-        &[
-            ("frames", &status.frames),
-            ("time", &format!("{:.1}", status.time)),
-            ("p99", &format!("{:.0}", status.period_error.p99_us)),
-            ("max", &format!("{:.0}", status.period_error.max_us)),
-            ("scheduling", &scheduling_words(t, &status.scheduling)),
-        ],
-    ));
     if let Some((at, frame)) = &status.telemetry {
         ui.label(t.fmt(
             "link.telemetry",
@@ -127,27 +117,45 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     let st = &status.telemetry_stats;
     if st.frames > 0 {
-        ui.label(t.fmt(
-            "link.telemetry_stats",
-            &[
-                ("answered", &st.answered),
-                ("unanswered", &st.unanswered),
-                ("stale", &st.stale),
-                ("latency", &format!("{:.2}", st.latency_mean_s * 1e3)),
-            ],
-        ));
         tracking_plot(ui, state);
     }
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
     }
-    let lines = state.link.recent_lines();
-    if !lines.is_empty() {
-        ui.label(t.tr("link.last_frames"));
-        for line in lines.iter().rev().take(4) {
-            ui.label(RichText::new(line).monospace().size(super::SMALLEST_TEXT));
-        }
-    }
+    // The stream's timing, the telemetry's counts and the last frames' bytes: for those
+    // who debug a controller.
+    egui::CollapsingHeader::new(t.tr("link.advanced"))
+        .default_open(state.look.expand_panels)
+        .show(ui, |ui| {
+            ui.label(t.fmt(
+                "link.figures",
+                &[
+                    ("frames", &status.frames),
+                    ("time", &format!("{:.1}", status.time)),
+                    ("p99", &format!("{:.0}", status.period_error.p99_us)),
+                    ("max", &format!("{:.0}", status.period_error.max_us)),
+                    ("scheduling", &scheduling_words(t, &status.scheduling)),
+                ],
+            ));
+            if st.frames > 0 {
+                ui.label(t.fmt(
+                    "link.telemetry_stats",
+                    &[
+                        ("answered", &st.answered),
+                        ("unanswered", &st.unanswered),
+                        ("stale", &st.stale),
+                        ("latency", &format!("{:.2}", st.latency_mean_s * 1e3)),
+                    ],
+                ));
+            }
+            let lines = state.link.recent_lines();
+            if !lines.is_empty() {
+                ui.label(t.tr("link.last_frames"));
+                for line in lines.iter().rev().take(4) {
+                    ui.label(RichText::new(line).monospace().size(super::SMALLEST_TEXT));
+                }
+            }
+        });
     // Pressed again while the platform is on its way home: an emergency stop.
     let (label, tip) = if state.link.stopping() {
         (t.tr("link.stop_now"), t.tr("link.stop_now_tip"))

@@ -105,7 +105,11 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
         return;
     };
     egui::Area::new(egui::Id::unique("link-badge"))
-        .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-12.0, 12.0))
+        // The 3D view's bottom right, above the plot: at the top it hid the toolbar's end.
+        .anchor(
+            egui::Align2::RIGHT_BOTTOM,
+            egui::vec2(-12.0, -(state.look.plot_height + 12.0)),
+        )
         .show(ctx, |ui| {
             egui::Frame::new()
                 .fill(link::state_colour(status.state))
