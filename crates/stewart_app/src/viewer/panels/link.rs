@@ -178,6 +178,8 @@ fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
     // Zero always in sight: an error is read against it, not against its own wobble.
     egui_plot::Plot::new("link-tracking")
         .height(120.0)
+        .x_axis_label(t.tr("plot.time"))
+        .y_axis_label(unit)
         .include_y(0.0)
         .allow_scroll(false)
         .allow_drag(false)
