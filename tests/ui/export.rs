@@ -269,3 +269,27 @@ fn an_export_names_its_full_path_offers_its_folder_and_asks_before_replacing() {
     let text = std::fs::read_to_string(&csv).unwrap_or_default();
     assert!(text.starts_with("t,x,y,z"), "{text}");
 }
+
+/// An exported plot's title says the scenario was edited (before: "seed" after any edit).
+#[test]
+fn a_plot_exported_after_an_edit_is_titled_as_edited() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("paired", HEIGHT);
+    let plain = dir.path().join("plain.svg");
+    export_to(&mut h, ExportKind::PlotSvg, &plain);
+    assert!(finish(&mut h).is_ok());
+    let text = std::fs::read_to_string(&plain).unwrap_or_default();
+    assert!(text.contains("paired") && !text.contains("(edited)"));
+    h.get_by_role_and_label(Role::Slider, "samples")
+        .set_value_accesskit(60.0);
+    h.run();
+    let edited = dir.path().join("edited.svg");
+    export_again(&mut h, ExportKind::PlotSvg, &edited);
+    assert!(finish(&mut h).is_ok());
+    let text = std::fs::read_to_string(&edited).unwrap_or_default();
+    assert!(text.contains("paired (edited)"), "no edited title");
+    // Undone back to the preset, the title is plain again.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(h.state().title(), "paired");
+}

@@ -99,6 +99,7 @@ impl ViewerState {
             .map(|()| lang.fmt("scenario.saved", &[("path", &full.display())]))
             .map_err(|e| format!("{e:#}"));
         if written.is_ok() {
+            self.mark_saved();
             self.files.path = full.display().to_string();
             self.files.current = Some(full);
         }

@@ -26,6 +26,9 @@ use crate::export::frames::default_camera;
 /// Everything the viewer shows.
 pub struct ViewerState {
     scenario: Scenario,
+    /// The scenario as loaded (preset or file) or saved last: titles say "edited" when
+    /// the scenario shown differs from it.
+    as_loaded: Scenario,
     derived: Derived,
     /// Playback and the manual pose.
     pub playback: Playback,
@@ -122,8 +125,26 @@ impl ViewerState {
             assembly_error: None,
             reach: super::reach::ReachCache::default(),
             undo: super::undo::Undo::default(),
+            as_loaded: scenario.clone(),
             scenario,
         }
+    }
+
+    /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
+    /// as edited when the scenario differs from the preset or file it came from.
+    pub fn title(&self) -> String {
+        if self.scenario == self.as_loaded {
+            self.scenario.name.clone()
+        } else {
+            self.look
+                .lang
+                .fmt("scenario.edited_name", &[("name", &self.scenario.name)])
+        }
+    }
+
+    /// What was saved is now what the scenario came from (its title loses "edited").
+    pub fn mark_saved(&mut self) {
+        self.as_loaded = self.scenario.clone();
     }
 
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
@@ -195,7 +216,7 @@ impl ViewerState {
             let time = trajectory.then_some(start + self.playback.time);
             let text = crate::readout::lines(
                 self.look.lang,
-                &self.scenario.name,
+                &self.title(),
                 &self.scenario.geometry,
                 time,
                 &self.pose(),
@@ -329,6 +350,7 @@ impl ViewerState {
         self.playback.history.clear();
         self.undo.record(&self.scenario);
         self.undo.seal();
+        self.as_loaded = scenario.clone();
         self.scenario = scenario;
         self.edit_error = None;
         self.rebuild();

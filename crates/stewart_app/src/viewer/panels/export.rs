@@ -121,7 +121,10 @@ pub(super) fn start(state: &mut ViewerState, path: PathBuf) {
     state.exports.status = None;
     state.exports.written = None;
     state.exports.writing = Some(path);
-    state.exports.job = Some(ExportJob::start(state.scenario(), work, t));
+    // Titled as shown: "seed (edited)" once the preset was changed.
+    let mut scenario = state.scenario().clone();
+    scenario.name = state.title();
+    state.exports.job = Some(ExportJob::start(&scenario, work, t));
 }
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -233,7 +236,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             labels: state.look.labels,
             ..Overlays::default()
         },
-        readout: state.look.readouts.then(|| state.scenario().name.clone()),
+        readout: state.look.readouts.then(|| state.title()),
         lang: state.look.lang,
     }
 }
