@@ -467,3 +467,29 @@ fn the_overlay_burns_the_readout_into_the_top_left_corner_at_any_size() {
         );
     }
 }
+
+/// A refused `--size` is one line that starts `error:` like every other error (it once
+/// read `Error:`), and nothing is written.
+#[test]
+fn a_refused_size_is_one_lowercase_error_line() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.path().join("x.gif");
+    let out_text = out.display().to_string();
+    for size in ["5x5", "99999x10", "abc"] {
+        let o = crate::stewart(&[
+            "render", "--preset", "seed", "--size", size, "--out", &out_text,
+        ]);
+        let text = String::from_utf8_lossy(&o.stderr).into_owned();
+        let lines: Vec<&str> = text
+            .lines()
+            .filter(|l| !l.contains("XDG_RUNTIME_DIR"))
+            .collect();
+        assert_eq!(o.status.code(), Some(2), "{text}");
+        assert_eq!(lines.len(), 1, "{text}");
+        assert!(
+            lines[0].starts_with("error: ") && lines[0].contains(size),
+            "{text}"
+        );
+        assert!(!out.exists());
+    }
+}
