@@ -381,3 +381,36 @@ fn check_thresholds_are_behind_advanced() {
     );
     assert!(h.query_all_by_label_contains("jump ratio").next().is_some());
 }
+
+/// Buttons say what they do when hovered (before: the standard views, reset, the layout
+/// and actuator choices had no tooltip).
+#[test]
+fn buttons_explain_themselves_on_hover() {
+    let mut state = stewart_app::viewer::ViewerState::new(
+        stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    state.look.expand_panels = true;
+    state.playback.playing = false;
+    let mut h = crate::harness_with(state, 3600.0);
+    for (button, tip) in [
+        ("Iso", "Look from this standard direction"),
+        ("Reset view", "The seed's view"),
+        ("Linear legs", "Legs that change length"),
+        ("Paired", "Joints in three pairs"),
+        ("Compute", "Search the smallest and largest actuator value"),
+    ] {
+        h.get_by_label(button).hover();
+        // Tooltips wait for the pointer to rest.
+        for _ in 0..40 {
+            h.step();
+            if h.query_all_by_label_contains(tip).next().is_some() {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+        assert!(
+            h.query_all_by_label_contains(tip).next().is_some(),
+            "no tooltip on `{button}`"
+        );
+    }
+}

@@ -17,6 +17,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             let busy = state.design.busy();
             if ui
                 .add_enabled(!busy, egui::Button::new(t.tr("design.compute")))
+                .on_hover_text(t.tr("design.compute_tip"))
                 .clicked()
             {
                 let geometry = state.scenario().geometry.clone();

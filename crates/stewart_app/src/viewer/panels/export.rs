@@ -77,6 +77,7 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
         };
         if ui
             .add_enabled(!job.cancelling(), egui::Button::new(label))
+            .on_hover_text(t.tr("export.cancel_tip"))
             .clicked()
         {
             job.cancel();

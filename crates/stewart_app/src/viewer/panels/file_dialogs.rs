@@ -46,10 +46,17 @@ fn confirm(ctx: &egui::Context, state: &mut ViewerState) {
             &[("path", &question.path.display())],
         ));
         ui.horizontal(|ui| {
-            if ui.button(t.tr("files.replace")).clicked() {
+            if ui
+                .button(t.tr("files.replace"))
+                .on_hover_text(t.tr("files.replace_tip"))
+                .clicked()
+            {
                 answer = Some(true);
             }
-            if ui.button(t.tr("files.cancel")).clicked()
+            if ui
+                .button(t.tr("files.cancel"))
+                .on_hover_text(t.tr("files.keep_tip"))
+                .clicked()
                 || ui.input(|i| i.key_pressed(egui::Key::Escape))
             {
                 answer = Some(false);

@@ -133,6 +133,7 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.label(t.tr("geometry.actuators"));
         if ui
             .selectable_label(!rotary, t.tr("geometry.linear"))
+            .on_hover_text(t.tr("geometry.linear_tip"))
             .clicked()
             && rotary
         {
@@ -140,6 +141,7 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
         if ui
             .selectable_label(rotary, t.tr("geometry.rotary"))
+            .on_hover_text(t.tr("geometry.rotary_tip"))
             .clicked()
             && !rotary
         {
@@ -196,18 +198,22 @@ fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
         let paired = matches!(current, Some(Layout::Paired { .. }));
         if ui
             .selectable_label(staggered, t.tr("geometry.staggered"))
+            .on_hover_text(t.tr("geometry.staggered_tip"))
             .clicked()
         {
             chosen = Some(Layout::seed());
         }
         if ui
             .selectable_label(paired, t.tr("geometry.paired"))
+            .on_hover_text(t.tr("geometry.paired_tip"))
             .clicked()
         {
             chosen = Some(Layout::paired(20.0));
         }
         if current.is_none() {
-            let _ = ui.selectable_label(true, t.tr("geometry.custom"));
+            let _ = ui
+                .selectable_label(true, t.tr("geometry.custom"))
+                .on_hover_text(t.tr("geometry.custom_tip"));
         }
     });
     match &mut chosen {

@@ -90,6 +90,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     };
     if ui
         .add(big(t.tr("link.estop"), Color32::from_rgb(200, 20, 20)))
+        .on_hover_text(t.tr("link.estop_tip"))
         .clicked()
     {
         state.link.estop();

@@ -128,7 +128,11 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
                             .color(egui::Color32::WHITE),
                     )
                     .fill(egui::Color32::from_rgb(200, 20, 20));
-                    if ui.add(stop).clicked() {
+                    if ui
+                        .add(stop)
+                        .on_hover_text(state.look.lang.tr("link.estop_tip"))
+                        .clicked()
+                    {
                         state.link.estop();
                     }
                 });

@@ -126,7 +126,11 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
         });
     }
     state.playback.manual = Pose::from_coordinates(c);
-    if ui.button(t.tr("motion.home")).clicked() {
+    if ui
+        .button(t.tr("motion.home"))
+        .on_hover_text(t.tr("motion.home_tip"))
+        .clicked()
+    {
         state.playback.manual = state.scenario().geometry.home_pose();
         state.teleop.blocked = None;
     }
@@ -300,7 +304,10 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     ui.horizontal(|ui| {
-        if ui.button(t.tr("motion.add_key")).clicked()
+        if ui
+            .button(t.tr("motion.add_key"))
+            .on_hover_text(t.tr("motion.add_key_tip"))
+            .clicked()
             && let Some(last) = keys.last().copied()
         {
             keys.push(Keyframe {
@@ -311,6 +318,7 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
         if ui
             .add_enabled(keys.len() > 1, egui::Button::new(t.tr("motion.remove_key")))
+            .on_hover_text(t.tr("motion.remove_key_tip"))
             .clicked()
         {
             keys.pop();

@@ -39,7 +39,15 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         .selected_text(&current)
         .show_ui(ui, |ui| {
             for name in presets::names() {
-                if ui.selectable_label(current == name, name).clicked() {
+                let tip = presets::text(name)
+                    .and_then(|text| Scenario::from_toml_str(text, name, None).ok())
+                    .map(|s| crate::i18n::words::description(t, name, &s.description))
+                    .unwrap_or_default();
+                if ui
+                    .selectable_label(current == name, name)
+                    .on_hover_text(tip)
+                    .clicked()
+                {
                     match Scenario::preset(name) {
                         Ok(s) => {
                             state.load_scenario(s);
@@ -110,7 +118,12 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
             for file in here {
                 let name = file.display().to_string();
-                if ui.selectable_label(false, &name).clicked() {
+                let full = crate::viewer::files::absolute(&file).display().to_string();
+                if ui
+                    .selectable_label(false, &name)
+                    .on_hover_text(full)
+                    .clicked()
+                {
                     state.open_file(&file);
                 }
             }

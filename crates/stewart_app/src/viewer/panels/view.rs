@@ -31,6 +31,7 @@ fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
     });
     if ui
         .add_enabled(!shots.busy(), egui::Button::new(t.tr("view.save_png")))
+        .on_hover_text(t.tr("view.save_png_tip"))
         .clicked()
     {
         state.take_screenshot();
@@ -66,11 +67,19 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
         super::export::open_button(ui, state);
         ui.separator();
         for (label, az, el) in VIEWS {
-            if ui.button(t.tr(label)).clicked() {
+            if ui
+                .button(t.tr(label))
+                .on_hover_text(t.tr("view.standard_tip"))
+                .clicked()
+            {
                 state.look_from(az, el);
             }
         }
-        if ui.button(t.tr("view.reset")).clicked() {
+        if ui
+            .button(t.tr("view.reset"))
+            .on_hover_text(t.tr("view.reset_tip"))
+            .clicked()
+        {
             state.look_from(VIEWS[0].1, VIEWS[0].2);
         }
         ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
@@ -81,7 +90,9 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
             .on_hover_text(t.tr("view.labels_tip"));
         ui.checkbox(&mut state.look.readouts, t.tr("view.readouts"))
             .on_hover_text(t.tr("view.readouts_tip"));
-        ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state));
+        ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state))
+            .response
+            .on_hover_text(t.tr("view.screenshot_tip"));
     });
     if !state.look.presentation {
         super::widgets::status(ui, &state.shots.status);

@@ -80,7 +80,11 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                             )
                         },
                     );
-                    if ui.button(text).clicked() {
+                    if ui
+                        .button(text)
+                        .on_hover_text(t.tr("widgets.reset_tip"))
+                        .clicked()
+                    {
                         edit = Some(default);
                         ui.close();
                     }
