@@ -476,7 +476,7 @@ fn a_refused_size_is_one_lowercase_error_line() {
     let out = dir.path().join("x.gif");
     let out_text = out.display().to_string();
     for size in ["5x5", "99999x10", "abc"] {
-        let o = crate::stewart(&[
+        let o = stewart(&[
             "render", "--preset", "seed", "--size", size, "--out", &out_text,
         ]);
         let text = String::from_utf8_lossy(&o.stderr).into_owned();
