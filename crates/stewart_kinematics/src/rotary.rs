@@ -82,8 +82,8 @@ pub fn compact(x: f64) -> String {
 /// No horn angle of servo `servo` reaches its platform joint.
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error(
-    "servo {servo} cannot reach its platform joint: no horn angle closes its rod (|L|/√(M²+N²) = {}, over 1)",
-    compact(*.ratio)
+    "servo {servo} cannot reach its platform joint: no horn angle closes its rod ({} % beyond its reach)",
+    compact(100.0 * *.excess)
 )]
 pub struct Unreachable {
     /// Servo number, from 1.
@@ -376,7 +376,17 @@ mod tests {
             excess: 1e300,
         };
         let text = e.to_string();
-        assert!(text.contains("= 1.000e300, over 1"), "{text}");
+        assert!(text.contains("(1.000e302 % beyond its reach)"), "{text}");
+        assert!(!text.contains('√'), "no formula in the words: {text}");
+        let near = Unreachable {
+            servo: 1,
+            ratio: 1.125,
+            excess: 0.125,
+        };
+        assert!(
+            near.to_string().contains("(12.5000 % beyond its reach)"),
+            "{near}"
+        );
         assert!(text.len() < 140, "{text}");
         assert_eq!(compact(1.234_56), "1.2346");
         assert_eq!(compact(f64::INFINITY), "inf");

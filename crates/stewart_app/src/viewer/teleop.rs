@@ -132,7 +132,8 @@ impl Rates {
 pub enum OutOfReach {
     /// A coordinate is NaN or infinite.
     NotANumber,
-    /// No horn angle of servo `servo` (from 1) closes its rod; `ratio` is |L|/√(M²+N²).
+    /// No horn angle of servo `servo` (from 1) closes its rod; `ratio` is |L|/√(M²+N²)
+    /// (shown as the percentage beyond 1).
     Servo {
         /// Servo number from 1.
         servo: usize,
@@ -163,7 +164,10 @@ impl OutOfReach {
                 "teleop.servo_unreachable",
                 &[
                     ("n", &servo),
-                    ("ratio", &stewart_kinematics::rotary::compact(ratio)),
+                    (
+                        "pct",
+                        &stewart_kinematics::rotary::compact(100.0 * (ratio - 1.0)),
+                    ),
                 ],
             ),
             OutOfReach::Limit {

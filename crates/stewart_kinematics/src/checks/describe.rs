@@ -86,8 +86,7 @@ impl fmt::Display for Finding {
             ),
             FindingKind::Unreachable => write!(
                 f,
-                "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; worst |L|/√(M²+N²) = {} at t = {when:.3} s, {} % beyond reach",
-                crate::rotary::compact(worst),
+                "{servo} cannot reach its platform joint {span}: no horn angle closes its rod; at worst {} % beyond its reach, at t = {when:.3} s",
                 percent(over * 100.0)
             ),
             FindingKind::ServoMax => write!(
