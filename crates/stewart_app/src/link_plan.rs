@@ -9,7 +9,7 @@ use stewart_kinematics::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
 use stewart_link::generator::{Motion, Sample};
-use stewart_link::safety::Supervisor;
+use stewart_link::safety::{Supervisor, TargetError};
 use stewart_link::sender::{SenderConfig, Target};
 use stewart_link::transport::Transport;
 
@@ -116,7 +116,9 @@ impl LinkPlan {
         let (start, duration) = self.span;
         Box::new(move |t| {
             if !repeat && t >= duration {
-                let values = geometry.actuator_values_at(&trajectory.pose_at(start + duration))?;
+                let values = geometry
+                    .actuator_values_at(&trajectory.pose_at(start + duration))
+                    .map_err(TargetError::source)?;
                 return Ok(Sample::Moving(Motion::at_rest(values)));
             }
             let local = if repeat && duration > 0.0 {
@@ -138,8 +140,10 @@ pub fn moving_sample(
     pose_at: impl Fn(f64) -> Pose,
     time: f64,
     speed: f64,
-) -> Result<Sample, String> {
-    let centre = geometry.actuator_values_at(&pose_at(time))?;
+) -> Result<Sample, TargetError> {
+    let centre = geometry
+        .actuator_values_at(&pose_at(time))
+        .map_err(TargetError::source)?;
     if speed == 0.0 {
         return Ok(Sample::Moving(Motion::at_rest(centre)));
     }

@@ -63,16 +63,16 @@ pub fn lines(
                 out.push(format!("{}{unit}", row.join("  ")));
             }
         }
-        Err(why) => out.push(match geometry.servo_angles(pose) {
-            Some(Err(e)) => lang.fmt(
-                "teleop.servo_unreachable",
-                &[
-                    ("n", &e.servo),
-                    ("ratio", &stewart_kinematics::rotary::compact(e.ratio)),
-                ],
-            ),
-            _ => why,
-        }),
+        Err(e) => out.push(lang.fmt(
+            "teleop.servo_unreachable",
+            &[
+                ("n", &e.servo),
+                (
+                    "pct",
+                    &stewart_kinematics::rotary::compact(100.0 * e.excess),
+                ),
+            ],
+        )),
     }
     out.join("\n")
 }

@@ -2,8 +2,10 @@
 //! leg's length, or a servo's angle), its name and unit, its limits, and its value along
 //! a motion. The plots, leg bars and readouts read it from here.
 
+use crate::forward::ForwardError;
 use crate::geometry::Geometry;
 use crate::pose::Pose;
+use crate::rotary::Unreachable;
 
 /// The quantity that drives each joint, in words.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -62,11 +64,11 @@ impl Geometry {
 
     /// The quantity at one pose: leg lengths (m) or servo angles (°), or why a servo cannot
     /// reach its joint.
-    pub fn actuator_values_at(&self, pose: &Pose) -> Result<[f64; 6], String> {
+    pub fn actuator_values_at(&self, pose: &Pose) -> Result<[f64; 6], Unreachable> {
         match self.servo_angles(pose) {
             None => Ok(self.leg_lengths(pose)),
             Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
-            Some(Err(e)) => Err(e.to_string()),
+            Some(Err(e)) => Err(e),
         }
     }
 
@@ -77,7 +79,7 @@ impl Geometry {
         &self,
         values: &[f64; 6],
         near: &Pose,
-    ) -> Result<Pose, String> {
+    ) -> Result<Pose, ForwardError> {
         let options = crate::forward::ForwardOptions::default();
         let solution = if self.rotary().is_some() {
             let angles = values.map(crate::angle::Angle::from_degrees);
@@ -85,7 +87,7 @@ impl Geometry {
         } else {
             self.forward(values, near, &options)
         };
-        solution.map(|s| s.pose).map_err(|e| e.to_string())
+        solution.map(|s| s.pose)
     }
 
     /// The quantity at every pose, on all cores for legs: lengths in metres, or servo

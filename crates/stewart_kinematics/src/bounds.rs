@@ -11,6 +11,8 @@
 
 use std::ops::RangeInclusive;
 
+use thiserror::Error;
+
 /// Largest length, position or offset, metres (|value|).
 pub const LENGTH_M: f64 = 1e3;
 /// Largest angle, degrees (|value|): ten turns.
@@ -45,20 +47,46 @@ pub const fn symmetric(limit: f64) -> RangeInclusive<f64> {
     -limit..=limit
 }
 
-/// `value` if it is finite and within `range`, else a sentence (the end of one that
-/// starts with the value's name) saying which range it must lie in.
-pub fn check(value: f64, range: &RangeInclusive<f64>, unit: &str) -> Result<f64, String> {
+/// Why a number was refused; its words end a sentence that starts with the value's name.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum OutOfBounds {
+    /// NaN or infinite.
+    #[error("must be a finite number, got {0}")]
+    NotFinite(f64),
+    /// Finite, outside the accepted range.
+    #[error("{} is outside {}", short(*.value), describe(&(*.min..=*.max), .unit))]
+    Outside {
+        /// The value given.
+        value: f64,
+        /// The accepted range's lower end.
+        min: f64,
+        /// Its upper end.
+        max: f64,
+        /// The unit's symbol (may be empty).
+        unit: String,
+    },
+}
+
+impl From<OutOfBounds> for String {
+    fn from(e: OutOfBounds) -> String {
+        e.to_string()
+    }
+}
+
+/// `value` if it is finite and within `range`, else why not.
+pub fn check(value: f64, range: &RangeInclusive<f64>, unit: &str) -> Result<f64, OutOfBounds> {
     if !value.is_finite() {
-        return Err(format!("must be a finite number, got {value}"));
+        return Err(OutOfBounds::NotFinite(value));
     }
     if range.contains(&value) {
         return Ok(value);
     }
-    Err(format!(
-        "{} is outside {}",
-        short(value),
-        describe(range, unit)
-    ))
+    Err(OutOfBounds::Outside {
+        value,
+        min: *range.start(),
+        max: *range.end(),
+        unit: unit.to_owned(),
+    })
 }
 
 /// A range in words: `-1000 … 1000 m`.
@@ -92,14 +120,15 @@ mod tests {
 
     #[test]
     fn ranges_read_as_sentences() {
+        let far = check(1e308, &symmetric(TIME_S), "s").unwrap_err();
         assert_eq!(
-            check(1e308, &symmetric(TIME_S), "s").unwrap_err(),
+            far.to_string(),
             "1e308 is outside the accepted range -1e6 … 1e6 s"
         );
-        assert_eq!(
-            check(f64::NAN, &symmetric(1.0), "").unwrap_err(),
-            "must be a finite number, got NaN"
-        );
+        assert!(matches!(far, OutOfBounds::Outside { max: TIME_S, .. }));
+        let nan = check(f64::NAN, &symmetric(1.0), "").unwrap_err();
+        assert_eq!(nan.to_string(), "must be a finite number, got NaN");
+        assert!(matches!(nan, OutOfBounds::NotFinite(v) if v.is_nan()));
         assert_eq!(check(-2.5, &symmetric(LENGTH_M), "m"), Ok(-2.5));
         assert_eq!(short(0.5), "0.5");
         assert_eq!(short(1e-7), "1e-7");

@@ -11,6 +11,7 @@
 //! at the reported pose.
 
 use serde::{Deserialize, Serialize};
+use thiserror::Error;
 
 use crate::geometry::Geometry;
 use crate::pose::Pose;
@@ -32,7 +33,7 @@ impl Envelope {
     /// Parse `x=±0.1,y=-0.1..0.1,z=0.7..0.9,roll=±10,yaw=5`: each named coordinate at
     /// most once, as `±A` (or `+-A`) about home, `A..B` (absolute), or one value;
     /// the others stay at `home`.
-    pub fn parse(text: &str, home: &Pose) -> Result<Envelope, String> {
+    pub fn parse(text: &str, home: &Pose) -> Result<Envelope, EnvelopeError> {
         let h = home.to_coordinates();
         let home_units: [f64; 6] =
             std::array::from_fn(|k| if k < 3 { h[k] } else { h[k].to_degrees() });
@@ -42,33 +43,37 @@ impl Envelope {
         };
         let mut seen = [false; 6];
         if text.trim().is_empty() {
-            return Err(
-                "the envelope is empty: name at least one coordinate, such as x=±0.1,roll=±10"
-                    .to_owned(),
-            );
+            return Err(EnvelopeError::Empty);
         }
         for part in text.split(',') {
             let part = part.trim();
             let (name, spec) = part
                 .split_once('=')
-                .ok_or_else(|| format!("`{part}` is not NAME=RANGE (such as z=0.7..0.9)"))?;
+                .ok_or_else(|| EnvelopeError::NotAssignment(part.to_owned()))?;
             let name = name.trim().to_ascii_lowercase();
-            let k = NAMES.iter().position(|n| *n == name).ok_or_else(|| {
-                format!("`{name}` is not a coordinate: x, y, z (m), roll, pitch, yaw (°)")
-            })?;
+            let k = NAMES
+                .iter()
+                .position(|n| *n == name)
+                .ok_or_else(|| EnvelopeError::UnknownCoordinate(name.clone()))?;
             if seen[k] {
-                return Err(format!("`{name}` is given twice"));
+                return Err(EnvelopeError::Twice(name));
             }
             seen[k] = true;
-            let (lo, hi) = interval(spec.trim(), home_units[k])
-                .map_err(|e| format!("`{name}={}`: {e}", spec.trim()))?;
+            let spec = spec.trim();
+            let (lo, hi) =
+                interval(spec, home_units[k]).map_err(|problem| EnvelopeError::Range {
+                    name: name.clone(),
+                    spec: spec.to_owned(),
+                    problem,
+                })?;
             let limit = if k < 3 { 100.0 } else { 180.0 };
             if lo < -limit || hi > limit {
-                let unit = if k < 3 { "m" } else { "°" };
-                return Err(format!(
-                    "`{name}={}` reaches beyond ±{limit} {unit}",
-                    spec.trim()
-                ));
+                return Err(EnvelopeError::TooFar {
+                    name,
+                    spec: spec.to_owned(),
+                    limit,
+                    unit: if k < 3 { "m" } else { "°" },
+                });
             }
             env.lo[k] = lo;
             env.hi[k] = hi;
@@ -93,33 +98,92 @@ impl Envelope {
     }
 }
 
+/// Why an envelope was refused.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum EnvelopeError {
+    /// Nothing given.
+    #[error("the envelope is empty: name at least one coordinate, such as x=±0.1,roll=±10")]
+    Empty,
+    /// A part without `=`.
+    #[error("`{0}` is not NAME=RANGE (such as z=0.7..0.9)")]
+    NotAssignment(String),
+    /// A name that is not x, y, z, roll, pitch or yaw.
+    #[error("`{0}` is not a coordinate: x, y, z (m), roll, pitch, yaw (°)")]
+    UnknownCoordinate(String),
+    /// A coordinate named twice.
+    #[error("`{0}` is given twice")]
+    Twice(String),
+    /// A range that does not read.
+    #[error("`{name}={spec}`: {problem}")]
+    Range {
+        /// The coordinate.
+        name: String,
+        /// What was written after `=`.
+        spec: String,
+        /// What is wrong with it.
+        problem: RangeProblem,
+    },
+    /// A range beyond ±100 m or ±180°.
+    #[error("`{name}={spec}` reaches beyond ±{limit} {unit}")]
+    TooFar {
+        /// The coordinate.
+        name: String,
+        /// What was written after `=`.
+        spec: String,
+        /// The bound, m or °.
+        limit: f64,
+        /// `m` or `°`.
+        unit: &'static str,
+    },
+}
+
+/// What is wrong with one coordinate's range.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum RangeProblem {
+    /// Nothing after `=`.
+    #[error("no range given")]
+    Missing,
+    /// Not a number.
+    #[error("`{0}` is not a number")]
+    NotANumber(String),
+    /// NaN or infinite.
+    #[error("`{0}` is not a finite number")]
+    NotFinite(String),
+    /// `±A` with A < 0.
+    #[error("a ± half-width cannot be negative")]
+    NegativeHalfWidth,
+    /// `A..B` with A > B.
+    #[error("the range is inverted ({0} > {1})")]
+    Inverted(f64, f64),
+}
+
 /// `±A`, `+-A` (about `home`), `A..B` or `A`.
-fn interval(spec: &str, home: f64) -> Result<(f64, f64), String> {
-    let number = |t: &str| -> Result<f64, String> {
+fn interval(spec: &str, home: f64) -> Result<(f64, f64), RangeProblem> {
+    let number = |t: &str| -> Result<f64, RangeProblem> {
+        let t = t.trim();
         let v: f64 = t
-            .trim()
             .parse()
-            .map_err(|_| format!("`{}` is not a number", t.trim()))?;
+            .map_err(|_| RangeProblem::NotANumber(t.to_owned()))?;
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(format!("`{}` is not a finite number", t.trim()))
+            Err(RangeProblem::NotFinite(t.to_owned()))
         }
     };
     if spec.is_empty() {
-        return Err("no range given".to_owned());
+        return Err(RangeProblem::Missing);
     }
     if let Some(a) = spec.strip_prefix('±').or_else(|| spec.strip_prefix("+-")) {
         let a = number(a)?;
         if a < 0.0 {
-            return Err("a ± half-width cannot be negative".to_owned());
+            return Err(RangeProblem::NegativeHalfWidth);
         }
         return Ok((home - a, home + a));
     }
     if let Some((a, b)) = spec.split_once("..") {
         let (a, b) = (number(a)?, number(b)?);
         if a > b {
-            return Err(format!("the range is inverted ({a} > {b})"));
+            return Err(RangeProblem::Inverted(a, b));
         }
         return Ok((a, b));
     }

@@ -163,12 +163,12 @@ impl NumericTable {
             return Ok(());
         };
         for (k, row) in self.rows().enumerate() {
-            if let Err(message) = crate::bounds::check(row[c], range, unit) {
+            if let Err(e) = crate::bounds::check(row[c], range, unit) {
                 return Err(TableError::BadValue {
                     file: self.file.clone(),
                     line: self.lines[k],
                     column: name.to_owned(),
-                    message,
+                    message: e.to_string(),
                 });
             }
         }

@@ -35,7 +35,61 @@
 //!
 //! Nothing here sends anything: the caller encodes what [`Supervisor::tick`] returns.
 
+use thiserror::Error;
+
 use crate::generator::{Bounds, Generator, Motion, Sample, TargetHistory};
+
+/// Why a tick has no sound target: the supervisor holds (or, arming, comes to rest) on it.
+#[derive(Clone, Debug, Error)]
+pub enum TargetError {
+    /// The motion has no values at this time (a servo cannot reach its joint, …): the
+    /// source's own error, kept for callers to inspect.
+    #[error(transparent)]
+    Source(std::sync::Arc<dyn std::error::Error + Send + Sync>),
+    /// A value that is NaN or infinite.
+    #[error("actuator {actuator} has no value ({value})")]
+    NotFinite {
+        /// From 1.
+        actuator: usize,
+        /// The value.
+        value: f64,
+    },
+    /// A value outside the actuator's range.
+    #[error("actuator {actuator} would go to {value:.6}, outside its range {min} … {max}")]
+    OutOfRange {
+        /// From 1.
+        actuator: usize,
+        /// The value.
+        value: f64,
+        /// The range's lower end.
+        min: f64,
+        /// Its upper end.
+        max: f64,
+    },
+}
+
+impl TargetError {
+    /// The source's error `e` (why the motion has no values now).
+    pub fn source(e: impl std::error::Error + Send + Sync + 'static) -> Self {
+        TargetError::Source(std::sync::Arc::new(e))
+    }
+}
+
+impl From<&str> for TargetError {
+    fn from(why: &str) -> Self {
+        TargetError::Source(std::sync::Arc::from(Box::<
+            dyn std::error::Error + Send + Sync,
+        >::from(why)))
+    }
+}
+
+impl From<String> for TargetError {
+    fn from(why: String) -> Self {
+        TargetError::Source(std::sync::Arc::from(Box::<
+            dyn std::error::Error + Send + Sync,
+        >::from(why)))
+    }
+}
 
 /// The state of the link.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -232,12 +286,12 @@ impl Supervisor {
 
     /// One tick at time `t` with the motion's `target` positions (or why there is none);
     /// the target's velocity and acceleration are estimated from the last targets.
-    pub fn tick(&mut self, t: f64, target: Result<[f64; 6], String>) -> Tick {
+    pub fn tick(&mut self, t: f64, target: Result<[f64; 6], TargetError>) -> Tick {
         self.tick_sample(t, target.map(Sample::At))
     }
 
     /// One tick at time `t` with the motion's `target` (or why there is none).
-    pub fn tick_sample(&mut self, t: f64, target: Result<Sample, String>) -> Tick {
+    pub fn tick_sample(&mut self, t: f64, target: Result<Sample, TargetError>) -> Tick {
         let dt = self.last_time.map_or(0.0, |t0| (t - t0).max(0.0));
         let mut home = false;
         let note = match self.state {
@@ -263,7 +317,7 @@ impl Supervisor {
     }
 
     /// The ramp from where arming started to the live target.
-    fn arming(&mut self, t: f64, dt: f64, target: Result<Sample, String>) -> Option<String> {
+    fn arming(&mut self, t: f64, dt: f64, target: Result<Sample, TargetError>) -> Option<String> {
         let Some((t0, from)) = self.ramp_from else {
             self.state = LinkState::Armed;
             return self.follow(t, dt, target);
@@ -271,7 +325,7 @@ impl Supervisor {
         let target = match self.checked(target) {
             Ok(v) => v,
             // Nowhere safe to ramp to: come to rest where the ramp is.
-            Err(why) => return self.hold(dt, why),
+            Err(why) => return self.hold(dt, why.to_string()),
         };
         let mut lengthened = None;
         let ramp_s = match self.ramp_len {
@@ -305,7 +359,7 @@ impl Supervisor {
     }
 
     /// Follow the target while armed.
-    fn follow(&mut self, t: f64, dt: f64, target: Result<Sample, String>) -> Option<String> {
+    fn follow(&mut self, t: f64, dt: f64, target: Result<Sample, TargetError>) -> Option<String> {
         match self.checked(target) {
             Ok(v) => self.track(t, dt, v),
             Err(why) => self.hold(dt, format!("holding the last good set-point: {why}")),
@@ -411,17 +465,22 @@ impl Supervisor {
     }
 
     /// The target if every value is a finite number inside its range, else why not.
-    fn checked(&self, target: Result<Sample, String>) -> Result<Sample, String> {
+    fn checked(&self, target: Result<Sample, TargetError>) -> Result<Sample, TargetError> {
         let v = target?;
         for (k, (&x, &(lo, hi))) in v.position().iter().zip(&self.limits.range).enumerate() {
             if !x.is_finite() {
-                return Err(format!("actuator {} has no value ({x})", k + 1));
+                return Err(TargetError::NotFinite {
+                    actuator: k + 1,
+                    value: x,
+                });
             }
             if x < lo || x > hi {
-                return Err(format!(
-                    "actuator {} would go to {x:.6}, outside its range {lo} … {hi}",
-                    k + 1
-                ));
+                return Err(TargetError::OutOfRange {
+                    actuator: k + 1,
+                    value: x,
+                    min: lo,
+                    max: hi,
+                });
             }
         }
         Ok(v)

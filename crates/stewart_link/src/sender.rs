@@ -175,7 +175,7 @@ pub struct Sender {
 
 /// The target at a stream time: six actuator values in natural units (with their velocity
 /// and acceleration when the source knows them), or why there is none.
-pub type Target = Box<dyn FnMut(f64) -> Result<Sample, String> + Send>;
+pub type Target = Box<dyn FnMut(f64) -> Result<Sample, crate::safety::TargetError> + Send>;
 
 /// How long disarmed frames follow an emergency stop before the stream ends, seconds.
 pub const EMERGENCY_TAIL_S: f64 = 0.25;

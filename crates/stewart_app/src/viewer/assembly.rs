@@ -2,7 +2,9 @@
 //! can take with the same six leg lengths (or, for servos, the same six servo angles),
 //! found by the core's homotopy solver.
 
+use stewart_kinematics::forward::ForwardError;
 use stewart_kinematics::forward::assembly::same_placement;
+use stewart_kinematics::rotary::Unreachable;
 use stewart_kinematics::{Angle, Geometry, Pose};
 
 /// What the modes were computed for: the geometry and the legs (or servo angles).
@@ -26,8 +28,12 @@ pub struct AssemblyBrowser {
 pub enum NoMode {
     /// The geometry is architecturally singular: the legs do not determine the pose.
     Singular,
-    /// The solver's or the servos' reason, in the core's words.
-    Other(String),
+    /// A servo cannot reach its joint at the pose shown.
+    Unreachable(Unreachable),
+    /// The solver failed.
+    Solver(ForwardError),
+    /// The solver found no real pose.
+    NoRealPose,
 }
 
 /// Two actuations closer than this (metres or radians) are the same legs.
@@ -39,7 +45,7 @@ impl AssemblyBrowser {
     pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, NoMode> {
         let actuation = match geometry.servo_angles(pose) {
             Some(Ok(angles)) => angles.map(|a| a.radians()),
-            Some(Err(e)) => return Err(NoMode::Other(e.to_string())),
+            Some(Err(e)) => return Err(NoMode::Unreachable(e)),
             None => geometry.leg_lengths(pose),
         };
         let same = self.key.as_ref().is_some_and(|k| {
@@ -60,7 +66,7 @@ impl AssemblyBrowser {
                 geometry.assembly_modes(&actuation)
             };
             self.modes = solved
-                .map_err(|e| NoMode::Other(e.to_string()))?
+                .map_err(NoMode::Solver)?
                 .iter()
                 .map(|m| m.pose)
                 .collect();
@@ -72,10 +78,7 @@ impl AssemblyBrowser {
         let n = self.modes.len();
         let here = self.modes.iter().position(|m| same_placement(m, pose));
         let next = here.map_or(0, |i| (i + 1) % n.max(1));
-        let pose = *self
-            .modes
-            .get(next)
-            .ok_or_else(|| NoMode::Other("no real pose".to_owned()))?;
+        let pose = *self.modes.get(next).ok_or(NoMode::NoRealPose)?;
         self.shown = Some((next, n));
         Ok(pose)
     }

@@ -13,6 +13,7 @@ use std::time::Instant;
 use stewart_kinematics::link_settings::LinkTransport;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::generator::Sample;
+use stewart_link::safety::TargetError;
 use stewart_link::sender::{Command, Sender, Status};
 use stewart_link::telemetry::Row;
 use stewart_link::transport::{Record, Transport};
@@ -57,9 +58,13 @@ struct Source {
 impl Source {
     /// The target now: a still pose's values, or the playing trajectory's with their
     /// velocity and acceleration on the wall clock (at rest past either end).
-    fn sample(&self) -> Result<Sample, String> {
+    fn sample(&self) -> Result<Sample, TargetError> {
         match self.drive {
-            Drive::Still(pose) => self.geometry.actuator_values_at(&pose).map(Sample::At),
+            Drive::Still(pose) => self
+                .geometry
+                .actuator_values_at(&pose)
+                .map(Sample::At)
+                .map_err(TargetError::source),
             Drive::Playing {
                 time,
                 anchor,

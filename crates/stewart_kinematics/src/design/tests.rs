@@ -39,7 +39,10 @@ fn bad_envelopes_are_refused_by_name() {
         ("roll=±400", "beyond ±180 °"),
         ("z=0..1e9", "beyond ±100 m"),
     ] {
-        let e = Envelope::parse(text, &home).err().unwrap_or_default();
+        let e = Envelope::parse(text, &home)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(e.contains(words), "{text:?}: {e}");
     }
 }

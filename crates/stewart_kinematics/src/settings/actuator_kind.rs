@@ -1,9 +1,22 @@
 //! Switching a scenario between linear legs and rotary servos, keeping the plates.
 
+use thiserror::Error;
+
 use super::target::ActuatorKind;
-use crate::geometry::Geometry;
-use crate::rotary::{Actuator, RotaryActuators};
+use crate::geometry::{Geometry, GeometryError};
+use crate::rotary::{Actuator, RotaryActuators, RotaryError};
 use crate::scenario::Scenario;
+
+/// Why a switch of actuator kind was refused.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum SwitchError {
+    /// The servos sized for the plates are not sound.
+    #[error(transparent)]
+    Servos(#[from] RotaryError),
+    /// The geometry with the new actuators is not sound.
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+}
 
 /// Give `scenario` actuators of `kind`. Linear legs become servos sized for the plates:
 /// horns 0.3 base radii long, pointing along the base circle (alternately one way and the
@@ -11,7 +24,7 @@ use crate::scenario::Scenario;
 /// the distance from a level horn's tip to its platform joint at home, so the servos
 /// start level. Servos become legs without a stroke. Limits of the other kind (stroke,
 /// leg or servo rates) are dropped. A refused switch leaves the scenario unchanged.
-pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<(), String> {
+pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<(), SwitchError> {
     let current = if scenario.geometry.rotary().is_some() {
         ActuatorKind::Rotary
     } else {
@@ -37,13 +50,13 @@ pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<()
             limits.leg_jerk_max = None;
         }
     }
-    scenario.geometry = Geometry::new(params).map_err(|e| e.to_string())?;
+    scenario.geometry = Geometry::new(params)?;
     scenario.limits = limits;
     Ok(())
 }
 
 /// Servos sized for `geometry`'s plates (see [`switch_actuator`]).
-fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, String> {
+fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, RotaryError> {
     let horn = 0.3 * geometry.plate_radius(crate::geometry::Plate::Base);
     // Each horn at right angles to its joint's direction from the base centre.
     let directions: [f64; 6] = std::array::from_fn(|i| {
@@ -61,7 +74,7 @@ fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, String> {
         })
         .collect();
     let rod = rods.iter().sum::<f64>() / 6.0;
-    RotaryActuators::new(horn, rod.max(1.01 * horn), directions, None).map_err(|e| e.to_string())
+    RotaryActuators::new(horn, rod.max(1.01 * horn), directions, None)
 }
 
 #[cfg(test)]

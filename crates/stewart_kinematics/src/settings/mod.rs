@@ -18,7 +18,7 @@ use std::sync::LazyLock;
 use thiserror::Error;
 
 use crate::scenario::Scenario;
-pub use actuator_kind::switch_actuator;
+pub use actuator_kind::{SwitchError, switch_actuator};
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
     ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,
@@ -322,7 +322,8 @@ impl Setting {
                 )));
             }
             Some(v) => {
-                crate::bounds::check(v, &self.accepted, self.unit.symbol()).map_err(invalid)?;
+                crate::bounds::check(v, &self.accepted, self.unit.symbol())
+                    .map_err(|e| invalid(e.to_string()))?;
             }
             _ => {}
         }
@@ -376,7 +377,7 @@ pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
         let v = s.get(scenario)?;
         crate::bounds::check(v, &s.accepted, s.unit.symbol())
             .err()
-            .map(|reason| (s, reason))
+            .map(|reason| (s, reason.to_string()))
     })
 }
 

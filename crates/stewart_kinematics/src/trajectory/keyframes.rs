@@ -88,7 +88,7 @@ pub const MIN_KEY_GAP_S: f64 = 1e-6;
 /// Check a key's values against [`crate::bounds`]: time, position, angles.
 fn check_key_ranges(index: usize, k: &Keyframe) -> Result<(), KeyframeError> {
     use crate::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
-    let out = |name: &str, reason: String| KeyframeError::OutOfRange {
+    let out = |name: &str, reason: crate::bounds::OutOfBounds| KeyframeError::OutOfRange {
         index,
         what: format!("{name} {reason}"),
     };

@@ -75,10 +75,7 @@ fn out_of_range_and_unreachable_targets_are_held_with_the_reason() {
             "holding the last good set-point: actuator 4 would go to 75.000000, outside its range -60 … 60"
         )
     );
-    let t = s.tick(
-        1.2,
-        Err("servo 2 cannot reach its platform joint".to_owned()),
-    );
+    let t = s.tick(1.2, Err("servo 2 cannot reach its platform joint".into()));
     assert_eq!(t.values, [5.0; 6]);
     assert!(
         t.note
@@ -270,7 +267,7 @@ proptest! {
         for (k, (values, kind, dt)) in targets.iter().enumerate() {
             t += dt;
             let target = match kind {
-                0 => Err("unreachable".to_owned()),
+                0 => Err("unreachable".into()),
                 1 => Ok([f64::NAN; 6]),
                 2 => Ok(targets[0].0),
                 _ => Ok(*values),

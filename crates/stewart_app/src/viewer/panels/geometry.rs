@@ -149,7 +149,9 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     if let Some(kind) = chosen {
-        state.edit(Group::Geometry, |s| switch_actuator(s, kind));
+        state.edit(Group::Geometry, |s| {
+            switch_actuator(s, kind).map_err(|e| e.to_string())
+        });
     }
     // Each slider shows only for the kind it belongs to.
     for key in [GeometryKey::LegMin, GeometryKey::LegMax] {

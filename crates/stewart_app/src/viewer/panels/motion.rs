@@ -72,7 +72,9 @@ fn assembly_modes(ui: &mut egui::Ui, state: &mut ViewerState) {
     if let Some(why) = &state.assembly_error {
         let text = match why {
             NoMode::Singular => t.tr("motion.modes_singular").to_owned(),
-            NoMode::Other(why) => t.fmt("motion.no_modes", &[("why", why)]),
+            NoMode::Unreachable(why) => t.fmt("motion.no_modes", &[("why", why)]),
+            NoMode::Solver(why) => t.fmt("motion.no_modes", &[("why", why)]),
+            NoMode::NoRealPose => t.fmt("motion.no_modes", &[("why", &"no real pose")]),
         };
         ui.colored_label(ui.visuals().warn_fg_color, text);
     }
