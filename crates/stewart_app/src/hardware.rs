@@ -3,10 +3,10 @@
 //! panel build their senders here, so both send the same thing for the same scenario.
 
 use anyhow::{Result, anyhow, bail};
+use stewart_kinematics::Scenario;
 use stewart_kinematics::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
-use stewart_kinematics::{Scenario, bounds};
 use stewart_link::channels::{Channel, ChannelMap, Output};
 use stewart_link::frame::FRAME_LEN;
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
@@ -66,21 +66,9 @@ pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
     let g = &scenario.geometry;
     let l = &scenario.limits;
     let [lo, hi] = g.quantity_limits();
-    let (range, speed, accel, jerk) = if g.rotary().is_some() {
-        (
-            (lo.unwrap_or(-180.0), hi.unwrap_or(180.0)),
-            l.servo_speed_max,
-            l.servo_accel_max,
-            l.servo_jerk_max,
-        )
-    } else {
-        (
-            (lo.unwrap_or(0.0), hi.unwrap_or(bounds::LENGTH_M)),
-            l.leg_speed_max,
-            l.leg_accel_max,
-            l.leg_jerk_max,
-        )
-    };
+    let widest = g.quantity().widest;
+    let range = (lo.unwrap_or(widest.0), hi.unwrap_or(widest.1));
+    let [speed, accel, jerk] = g.actuator_rate_limits(l);
     let stop = match scenario.link.stop {
         LinkStop::Hold => StopMode::Hold,
         LinkStop::Home => StopMode::Home {

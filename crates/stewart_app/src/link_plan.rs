@@ -75,12 +75,9 @@ impl LinkPlan {
     /// Where a platform whose actuators stand at `values` is, in words: its pose (forward
     /// kinematics from home, or why there is none) and the values themselves.
     pub fn left_at(&self, values: &[f64; 6]) -> (String, String) {
-        let rotary = self.geometry.rotary().is_some();
-        let (letter, unit, digits) = if rotary {
-            ('S', "°", 3)
-        } else {
-            ('L', " m", 6)
-        };
+        let q = self.geometry.quantity();
+        let (letter, digits) = (q.letter, q.decimals);
+        let unit = if q.unit == "m" { " m" } else { q.unit };
         let actuators: Vec<String> = values
             .iter()
             .enumerate()

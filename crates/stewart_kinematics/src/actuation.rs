@@ -7,8 +7,10 @@ use crate::geometry::Geometry;
 use crate::pose::Pose;
 use crate::rotary::Unreachable;
 
-/// The quantity that drives each joint, in words.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The quantity that drives each joint, in words and numbers: everything that differs
+/// between actuator kinds in how their values are named, shown and bounded. Code that
+/// needs such a difference reads it here instead of asking which kind it has.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quantity {
     /// `leg length` or `servo angle`.
     pub name: &'static str,
@@ -20,6 +22,21 @@ pub struct Quantity {
     pub letter: &'static str,
     /// `m` or `°`.
     pub unit: &'static str,
+    /// The same unit in ASCII, for files: `m` or `deg`.
+    pub ascii_unit: &'static str,
+    /// The kind in words: `linear legs` or `rotary servos`.
+    pub kind: &'static str,
+    /// The six values' CSV columns: `L1…L6` or `theta1…theta6`.
+    pub columns: [&'static str; 6],
+    /// What the actuators exert, by letter and unit: forces `F` (N) or torques `T` (N·m).
+    pub effort: (&'static str, &'static str),
+    /// Decimals that show a value to about a micrometre or a thousandth of a degree.
+    pub decimals: usize,
+    /// The widest sane range of a value when the scenario sets no limit.
+    pub widest: (f64, f64),
+    /// A small error in the value as people read it: millimetres or degrees (the factor
+    /// from the natural unit, and the unit).
+    pub fine: (f64, &'static str),
 }
 
 /// Linear legs: lengths in metres.
@@ -29,6 +46,13 @@ pub const LEG_LENGTH: Quantity = Quantity {
     part: "leg",
     letter: "L",
     unit: "m",
+    ascii_unit: "m",
+    kind: "linear legs",
+    columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
+    effort: ("F", "N"),
+    decimals: 6,
+    widest: (0.0, crate::bounds::LENGTH_M),
+    fine: (1e3, "mm"),
 };
 
 /// Rotary servos: angles in degrees.
@@ -38,15 +62,80 @@ pub const SERVO_ANGLE: Quantity = Quantity {
     part: "servo",
     letter: "S",
     unit: "°",
+    ascii_unit: "deg",
+    kind: "rotary servos",
+    columns: ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"],
+    effort: ("T", "N·m"),
+    decimals: 3,
+    widest: (-180.0, 180.0),
+    fine: (1.0, "°"),
 };
 
 impl Geometry {
     /// The quantity that drives the joints: leg length or servo angle.
     pub fn quantity(&self) -> Quantity {
-        if self.rotary().is_some() {
+        if self.servos() {
             SERVO_ANGLE
         } else {
             LEG_LENGTH
+        }
+    }
+
+    /// Whether the actuators are rotary servos (the one place the kind is asked for the
+    /// properties below).
+    fn servos(&self) -> bool {
+        self.rotary().is_some()
+    }
+
+    /// The speed, acceleration and jerk limits of the actuator values (m/s… or °/s…),
+    /// from `limits`' keys for this kind.
+    pub fn actuator_rate_limits(&self, limits: &crate::limits::Limits) -> [Option<f64>; 3] {
+        if self.servos() {
+            [
+                limits.servo_speed_max,
+                limits.servo_accel_max,
+                limits.servo_jerk_max,
+            ]
+        } else {
+            [
+                limits.leg_speed_max,
+                limits.leg_accel_max,
+                limits.leg_jerk_max,
+            ]
+        }
+    }
+
+    /// Every assembly mode of actuator `values` (leg lengths in metres or servo angles in
+    /// degrees): the poses that hold them.
+    pub fn actuator_assembly_modes(
+        &self,
+        values: &[f64; 6],
+    ) -> Result<Vec<crate::forward::ForwardSolution>, ForwardError> {
+        if self.servos() {
+            self.servo_assembly_modes(&values.map(crate::angle::Angle::from_degrees))
+        } else {
+            self.assembly_modes(values)
+        }
+    }
+
+    /// The map from a platform twist to the actuator rates: the legs' inverse Jacobian
+    /// ([`Geometry::jacobian`]) or the servos' ([`Geometry::servo_jacobian`]), or the servo
+    /// that cannot reach its joint.
+    pub fn actuator_jacobian(&self, pose: &Pose) -> Result<nalgebra::Matrix6<f64>, Unreachable> {
+        match self.servo_jacobian(pose) {
+            None => Ok(self.jacobian(pose)),
+            Some(j) => j,
+        }
+    }
+
+    /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
+    /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
+    /// reach its joint).
+    pub fn actuated_conditioning(&self, pose: &Pose) -> Option<crate::jacobian::Conditioning> {
+        if self.servos() {
+            self.servo_conditioning(pose)
+        } else {
+            Some(self.conditioning(pose))
         }
     }
 
@@ -81,7 +170,7 @@ impl Geometry {
         near: &Pose,
     ) -> Result<Pose, ForwardError> {
         let options = crate::forward::ForwardOptions::default();
-        let solution = if self.rotary().is_some() {
+        let solution = if self.servos() {
             let angles = values.map(crate::angle::Angle::from_degrees);
             self.forward_servos(&angles, near, &options)
         } else {

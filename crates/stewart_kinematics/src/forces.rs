@@ -192,19 +192,8 @@ impl Geometry {
         let force = payload.mass * (a_c - g);
         let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
         let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
-        let (j, cond) = match self.rotary() {
-            None => {
-                let j = self.jacobian(pose);
-                (
-                    j,
-                    crate::jacobian::conditioning_of(&j, self.characteristic_length()),
-                )
-            }
-            Some(_) => (
-                self.servo_jacobian(pose)?.ok()?,
-                self.servo_conditioning(pose)?,
-            ),
-        };
+        let j = self.actuator_jacobian(pose).ok()?;
+        let cond = self.actuated_conditioning(pose)?;
         if cond.is_singular() {
             return None;
         }

@@ -200,17 +200,6 @@ impl Geometry {
         Some(conditioning)
     }
 
-    /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
-    /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
-    /// reach its joint).
-    pub fn actuated_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
-        if self.rotary().is_some() {
-            self.servo_conditioning(pose)
-        } else {
-            Some(self.conditioning(pose))
-        }
-    }
-
     /// Singular values, condition number and weakest twist of the normalised Jacobian.
     pub fn conditioning(&self, pose: &Pose) -> Conditioning {
         conditioning_of(&self.jacobian(pose), self.characteristic_length())

@@ -9,15 +9,13 @@ use stewart_kinematics::calibration::{
 };
 use stewart_kinematics::table::NumericTable;
 use stewart_kinematics::trajectory::{POSE_COLUMNS, check_pose_ranges};
-use stewart_kinematics::{Pose, Scenario, bounds};
+use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{CalibrateArgs, HoldGroup};
 use crate::csv_io::read_input;
 use crate::output;
 use crate::source;
 
-const LEG_COLUMNS: [&str; 6] = ["L1", "L2", "L3", "L4", "L5", "L6"];
-const SERVO_COLUMNS: [&str; 6] = ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"];
 /// A measurement whose largest residual after calibration exceeds this many times the RMS
 /// is named as a likely outlier.
 const OUTLIER_FACTOR: f64 = 5.0;
@@ -30,8 +28,9 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
     inputs.push(("the measurements", &args.measurements));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
+    let quantity = scenario.geometry.quantity();
     let rotary = scenario.geometry.rotary().is_some();
-    let commanded_columns = if rotary { SERVO_COLUMNS } else { LEG_COLUMNS };
+    let commanded_columns = quantity.columns;
     let required: Vec<&str> = POSE_COLUMNS
         .iter()
         .chain(&commanded_columns)
@@ -44,12 +43,9 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
         ))
     })?;
     check_pose_ranges(&table)?;
+    let (lo, hi) = quantity.widest;
     for name in commanded_columns {
-        if rotary {
-            table.check_range(name, &bounds::symmetric(180.0), "°")?;
-        } else {
-            table.check_range(name, &(0.0..=bounds::LENGTH_M), "m")?;
-        }
+        table.check_range(name, &(lo..=hi), quantity.unit)?;
     }
     let measurements: Vec<Measurement> = table
         .rows()
@@ -102,11 +98,7 @@ fn mm(v: f64) -> f64 {
 /// The report in words and tables.
 fn report(scenario: &Scenario, c: &Calibration, file: &str, line: &dyn Fn(usize) -> u64) -> String {
     let mut t = String::new();
-    let kind = if scenario.geometry.rotary().is_some() {
-        "rotary servos"
-    } else {
-        "linear legs"
-    };
+    let kind = scenario.geometry.quantity().kind;
     let _ = writeln!(
         t,
         "calibration of `{}` ({kind}) from {} measured poses in {file}",

@@ -7,14 +7,13 @@ use anyhow::{Result, anyhow};
 use stewart_kinematics::bounds;
 use stewart_kinematics::forward::assembly::canonical;
 use stewart_kinematics::table::NumericTable;
-use stewart_kinematics::{Angle, ForwardOptions, ForwardSolution};
+use stewart_kinematics::{Angle, ForwardOptions, ForwardSolution, Geometry};
 
 use crate::cli::FkArgs;
 use crate::csv_io::{CsvText, read_input};
 use crate::output;
 use crate::source;
 
-const LEG_COLUMNS: [&str; 6] = ["L1", "L2", "L3", "L4", "L5", "L6"];
 const POSE_OUT: [&str; 8] = [
     "x",
     "y",
@@ -37,16 +36,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     }
     let geometry = &scenario.geometry;
     // Read the table first, so that a bad file is reported whatever the geometry.
-    let (table, file) = read_input(&args.legs, |r, name| {
-        Ok((
-            NumericTable::read(r, name, &LEG_COLUMNS, &["t"])?,
-            name.to_owned(),
-        ))
-    })?;
-    for name in LEG_COLUMNS {
-        table.check_range(name, &(0.0..=bounds::LENGTH_M), "m")?;
-    }
-    table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
+    let (table, file) = actuator_table(args, geometry)?;
     let t_index = table.index("t");
     let lengths: Vec<[f64; 6]> = table
         .rows()
@@ -94,7 +84,23 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-const SERVO_COLUMNS: [&str; 6] = ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"];
+/// The table of actuator values (`L1…L6` in metres or `theta1…theta6` in degrees, as the
+/// geometry's actuators take them, and an optional `t`), each value in its sane range.
+fn actuator_table(args: &FkArgs, geometry: &Geometry) -> Result<(NumericTable, String)> {
+    let quantity = geometry.quantity();
+    let (table, file) = read_input(&args.legs, |r, name| {
+        Ok((
+            NumericTable::read(r, name, &quantity.columns, &["t"])?,
+            name.to_owned(),
+        ))
+    })?;
+    let (lo, hi) = quantity.widest;
+    for name in quantity.columns {
+        table.check_range(name, &(lo..=hi), quantity.unit)?;
+    }
+    table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
+    Ok((table, file))
+}
 
 /// `fk` for a rotary platform: poses from servo angles `theta1..theta6` (degrees), each
 /// row warm-started from the previous one (or from home with `--cold`).
@@ -104,16 +110,7 @@ fn servos(
     out: Option<&output::Destination>,
 ) -> Result<ExitCode> {
     let geometry = &scenario.geometry;
-    let (table, file) = read_input(&args.legs, |r, name| {
-        Ok((
-            NumericTable::read(r, name, &SERVO_COLUMNS, &["t"])?,
-            name.to_owned(),
-        ))
-    })?;
-    for name in SERVO_COLUMNS {
-        table.check_range(name, &bounds::symmetric(180.0), "°")?;
-    }
-    table.check_range("t", &bounds::symmetric(bounds::TIME_S), "s")?;
+    let (table, file) = actuator_table(args, geometry)?;
     let t_index = table.index("t");
     let mut csv = pose_table(t_index.is_some(), args.assembly_modes);
     let options = ForwardOptions::default();

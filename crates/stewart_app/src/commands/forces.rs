@@ -43,7 +43,7 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
     }
     let series = g.forces_along(&scenario.motion.sample(), &payload)?;
     // Leg forces F (N) or servo torques T (N·m).
-    let letter = if g.rotary().is_some() { "T" } else { "F" };
+    let letter = g.quantity().effort.0;
     let mut header = vec!["t".to_owned()];
     header.extend((1..=6).map(|i| format!("{letter}{i}_static")));
     header.extend((1..=6).map(|i| format!("{letter}{i}")));

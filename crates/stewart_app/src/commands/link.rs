@@ -53,11 +53,7 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             }
             let destination = output::destination(Some(path), &inputs)?
                 .ok_or_else(|| anyhow!("--record needs a file name"))?;
-            let unit = if plan.geometry.rotary().is_some() {
-                "deg"
-            } else {
-                "m"
-            };
+            let unit = plan.geometry.quantity().ascii_unit;
             let (rows, recorder) = record::Recorder::start(destination, unit)?;
             config.record = Some(rows);
             Some(recorder)

@@ -51,7 +51,7 @@ pub fn solve_table(
 ) -> anyhow::Result<Solved> {
     if geometry.rotary().is_none() {
         return Ok(Solved {
-            columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
+            columns: geometry.quantity().columns,
             values: geometry.leg_lengths_batch(&table.poses),
         });
     }

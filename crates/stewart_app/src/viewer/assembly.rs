@@ -5,7 +5,7 @@
 use stewart_kinematics::forward::ForwardError;
 use stewart_kinematics::forward::assembly::same_placement;
 use stewart_kinematics::rotary::Unreachable;
-use stewart_kinematics::{Angle, Geometry, Pose};
+use stewart_kinematics::{Geometry, Pose};
 
 /// What the modes were computed for: the geometry and the legs (or servo angles).
 #[derive(Clone, Debug, PartialEq)]
@@ -60,11 +60,13 @@ impl AssemblyBrowser {
             if geometry.architecture().singular {
                 return Err(NoMode::Singular);
             }
-            let solved = if geometry.rotary().is_some() {
-                geometry.servo_assembly_modes(&actuation.map(Angle::from_radians))
+            // The browser keys on radians for servos; the core takes degrees.
+            let values = if geometry.rotary().is_some() {
+                actuation.map(f64::to_degrees)
             } else {
-                geometry.assembly_modes(&actuation)
+                actuation
             };
+            let solved = geometry.actuator_assembly_modes(&values);
             self.modes = solved
                 .map_err(NoMode::Solver)?
                 .iter()

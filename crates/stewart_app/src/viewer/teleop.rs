@@ -205,10 +205,9 @@ pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
     }
     let [lo, hi] = g.quantity_limits();
     let servo = g.rotary().is_some();
-    let values = match g.servo_angles(pose) {
-        None => g.leg_lengths(pose),
-        Some(Ok(angles)) => angles.map(|a| a.degrees()),
-        Some(Err(e)) => {
+    let values = match g.actuator_values_at(pose) {
+        Ok(values) => values,
+        Err(e) => {
             return Some(OutOfReach::Servo {
                 servo: e.servo,
                 ratio: e.ratio,

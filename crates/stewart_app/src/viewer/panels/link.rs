@@ -172,8 +172,8 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// legs, degrees for servos), in the actuators' colours.
 fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
     let t = state.look.lang;
-    let rotary = state.scenario().geometry.rotary().is_some();
-    let (scale, unit) = if rotary { (1.0, "°") } else { (1e3, "mm") };
+    let q = state.scenario().geometry.quantity();
+    let (scale, unit) = q.fine;
     let rows = state.link.tracking();
     ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
     // Zero always in sight: an error is read against it, not against its own wobble.
@@ -190,7 +190,7 @@ fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
                     .iter()
                     .map(|(time, error)| [*time, error[k] * scale])
                     .collect();
-                let name = format!("{}{}", if rotary { 'S' } else { 'L' }, k + 1);
+                let name = format!("{}{}", q.letter, k + 1);
                 plot.line(egui_plot::Line::new(name, points).color(super::plot::leg_colour(k)));
             }
         });
@@ -347,11 +347,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
 fn channels(ui: &mut egui::Ui, state: &mut ViewerState) {
     let link = state.scenario().link.clone();
     let t = state.look.lang;
-    let unit = if state.scenario().geometry.rotary().is_some() {
-        "°"
-    } else {
-        "m"
-    };
+    let unit = state.scenario().geometry.quantity().unit;
     egui::Grid::new("link-channels")
         .striped(true)
         .show(ui, |ui| {
