@@ -179,6 +179,30 @@ impl Geometry {
         solution.map(|s| s.pose)
     }
 
+    /// The quantity at every pose, on all cores (leg lengths in metres or servo angles in
+    /// degrees), or the earliest pose (its index) a servo cannot reach, and why.
+    pub fn actuator_values_batch(
+        &self,
+        poses: &[Pose],
+    ) -> Result<Vec<[f64; 6]>, (usize, Unreachable)> {
+        match self.servo_angles_batch(poses) {
+            None => Ok(self.leg_lengths_batch(poses)),
+            Some(Ok(values)) => Ok(values),
+            Some(Err((k, servo))) => Err((
+                k,
+                // Say why in the closed form's words.
+                match self.servo_angles(&poses[k]) {
+                    Some(Err(e)) => e,
+                    _ => Unreachable {
+                        servo: servo + 1,
+                        ratio: f64::INFINITY,
+                        excess: f64::INFINITY,
+                    },
+                },
+            )),
+        }
+    }
+
     /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
     /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
     pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {

@@ -49,23 +49,11 @@ pub fn solve_table(
     table: &PoseTable,
     locate: impl Fn(usize) -> String,
 ) -> anyhow::Result<Solved> {
-    if geometry.rotary().is_none() {
-        return Ok(Solved {
-            columns: geometry.quantity().columns,
-            values: geometry.leg_lengths_batch(&table.poses),
-        });
-    }
-    let values = match geometry.servo_angles_batch(&table.poses) {
-        Some(Ok(values)) => values,
-        // Say why in the closed form's words, for the earliest pose out of reach.
-        Some(Err((k, _))) => match geometry.servo_angles(&table.poses[k]) {
-            Some(Err(e)) => anyhow::bail!("{}: {e}", locate(k)),
-            _ => anyhow::bail!("{}: a servo cannot reach its platform joint", locate(k)),
-        },
-        None => anyhow::bail!("internal error: no servos"),
-    };
+    let values = geometry
+        .actuator_values_batch(&table.poses)
+        .map_err(|(k, e)| anyhow::anyhow!("{}: {e}", locate(k)))?;
     Ok(Solved {
-        columns: ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"],
+        columns: geometry.quantity().columns,
         values,
     })
 }

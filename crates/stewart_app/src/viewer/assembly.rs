@@ -36,18 +36,16 @@ pub enum NoMode {
     NoRealPose,
 }
 
-/// Two actuations closer than this (metres or radians) are the same legs.
+/// Two actuations closer than this (metres or degrees) are the same legs.
 const SAME_ACTUATION: f64 = 1e-9;
 
 impl AssemblyBrowser {
     /// The mode after the one at `pose`, among the modes of the legs (or servo angles)
     /// that hold `pose` on `geometry`: the pose to show, or why there is none.
     pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, NoMode> {
-        let actuation = match geometry.servo_angles(pose) {
-            Some(Ok(angles)) => angles.map(|a| a.radians()),
-            Some(Err(e)) => return Err(NoMode::Unreachable(e)),
-            None => geometry.leg_lengths(pose),
-        };
+        let actuation = geometry
+            .actuator_values_at(pose)
+            .map_err(NoMode::Unreachable)?;
         let same = self.key.as_ref().is_some_and(|k| {
             k.geometry == *geometry
                 && k.actuation
@@ -60,13 +58,7 @@ impl AssemblyBrowser {
             if geometry.architecture().singular {
                 return Err(NoMode::Singular);
             }
-            // The browser keys on radians for servos; the core takes degrees.
-            let values = if geometry.rotary().is_some() {
-                actuation.map(f64::to_degrees)
-            } else {
-                actuation
-            };
-            let solved = geometry.actuator_assembly_modes(&values);
+            let solved = geometry.actuator_assembly_modes(&actuation);
             self.modes = solved
                 .map_err(NoMode::Solver)?
                 .iter()
