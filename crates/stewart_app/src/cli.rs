@@ -8,7 +8,7 @@ use stewart_kinematics::bounds;
 use stewart_kinematics::link_settings::{LinkFormat, LinkTransport, Word};
 
 use crate::i18n::Lang;
-use crate::viewer::shots::ShotScale;
+use crate::shot_scale::ShotScale;
 
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
@@ -562,16 +562,6 @@ pub fn parse_title(text: &str) -> Result<String, String> {
     Ok(text.to_owned())
 }
 
-/// A screenshot scale: `1`, `2` or `4k`.
-pub fn parse_shot_scale(text: &str) -> Result<ShotScale, String> {
-    match text.trim().to_ascii_lowercase().as_str() {
-        "1" | "1x" => Ok(ShotScale::One),
-        "2" | "2x" => Ok(ShotScale::Two),
-        "4k" => Ok(ShotScale::Uhd),
-        _ => Err(format!("`{text}` is not a screenshot scale: 1, 2 or 4k")),
-    }
-}
-
 /// A language code: `zh` or `en` (`zh-CN`, `zh_CN` and any case accepted).
 pub fn parse_lang(text: &str) -> Result<Lang, String> {
     let code = text.trim().to_ascii_lowercase();
@@ -737,7 +727,7 @@ pub struct ViewArgs {
     pub frames: u32,
     /// The screenshot's size: `1` as on screen, `2` twice that (text drawn anew, not
     /// upscaled), `4k` 3840 pixels wide.
-    #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = parse_shot_scale, requires = "screenshot")]
+    #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = crate::shot_scale::parse, requires = "screenshot")]
     pub screenshot_scale: ShotScale,
     /// With --screenshot: start from the saved session (a screenshot run otherwise neither
     /// reads nor writes it, so that it does not depend on leftover state).

@@ -11,5 +11,6 @@ pub mod interrupt;
 pub mod link_plan;
 pub mod output;
 pub mod readout;
+pub mod shot_scale;
 pub mod source;
 pub mod viewer;

@@ -141,6 +141,31 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// The frame in words: its flags, then the six values in their unit
+    /// (`armed, home [1, 2, …] µm`; `disarmed` without flags).
+    pub fn in_words(&self) -> String {
+        let f = self.flags;
+        let flags: Vec<&str> = [(f.armed, "armed"), (f.estop, "e-stop"), (f.home, "home")]
+            .into_iter()
+            .filter_map(|(on, word)| on.then_some(word))
+            .collect();
+        let unit = match self.unit {
+            Unit::Micrometre => "µm",
+            Unit::Centidegree => "0.01°",
+            Unit::PulseMicrosecond => "µs",
+        };
+        let values: Vec<String> = self.values.iter().map(i32::to_string).collect();
+        format!(
+            "{} [{}] {unit}",
+            if flags.is_empty() {
+                "disarmed".to_owned()
+            } else {
+                flags.join(", ")
+            },
+            values.join(", ")
+        )
+    }
+
     /// The 34 bytes on the wire.
     pub fn encode(&self) -> [u8; FRAME_LEN] {
         let mut out = [0u8; FRAME_LEN];

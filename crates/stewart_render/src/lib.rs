@@ -19,6 +19,7 @@ pub mod colormap;
 pub mod draw_list;
 mod extent;
 pub mod gpu;
+mod gpu_mesh;
 pub mod gpu_types;
 pub mod mesh;
 pub mod offscreen;

@@ -1,10 +1,9 @@
 //! The renderer: pipelines and buffers, and one entry point that draws a scene into a
 //! colour view (a window's surface, an egui viewport or an offscreen texture).
 
-use wgpu::util::DeviceExt;
-
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
+use crate::gpu_mesh::GpuMesh;
 use crate::gpu_types::{ColouredVertex, Globals, LineVertex, MeshInstance, MeshVertex, TextVertex};
 use crate::mesh::Mesh;
 use crate::shaders;
@@ -14,46 +13,6 @@ use crate::view::{Batches, PreparedView};
 
 /// Depth buffer format.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
-
-/// A static mesh on the GPU.
-pub(crate) struct GpuMesh {
-    vertices: wgpu::Buffer,
-    indices: wgpu::Buffer,
-    count: u32,
-}
-
-impl GpuMesh {
-    fn new(device: &wgpu::Device, mesh: &Mesh, label: &str) -> Self {
-        Self::from_parts(
-            device,
-            bytemuck::cast_slice(&mesh.vertices),
-            &mesh.indices,
-            label,
-        )
-    }
-
-    /// Upload vertex bytes and triangle indices.
-    pub(crate) fn from_parts(
-        device: &wgpu::Device,
-        vertices: &[u8],
-        indices: &[u32],
-        label: &str,
-    ) -> Self {
-        Self {
-            vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents: vertices,
-                usage: wgpu::BufferUsages::VERTEX,
-            }),
-            indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents: bytemuck::cast_slice(indices),
-                usage: wgpu::BufferUsages::INDEX,
-            }),
-            count: indices.len() as u32,
-        }
-    }
-}
 
 /// Pipelines and meshes for drawing a Stewart platform: built once per device and
 /// colour format, shared by every view. What one view draws in one frame lives in a

@@ -5,8 +5,8 @@
 use std::sync::Arc;
 
 use crate::analysis::AnalysisMesh;
+use crate::gpu_mesh::GpuMesh;
 use crate::gpu_types::Globals;
-use crate::renderer::GpuMesh;
 
 /// A vertex or instance buffer rewritten every frame, grown when needed.
 pub(crate) struct DynamicBuffer {

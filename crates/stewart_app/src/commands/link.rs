@@ -120,7 +120,7 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             std::io::stderr(),
             "link: {} telemetry frames from the controller; the last at {t:.2} s: {}",
             s.telemetry_frames,
-            telemetry_words(frame)
+            frame.in_words()
         );
         let _ = writeln!(std::io::stderr(), "{}", telemetry_summary(s));
     }
@@ -176,30 +176,6 @@ fn telemetry_summary(s: &Status) -> String {
         st.stale,
         st.latency_mean_s * 1e3,
         st.latency_max_s * 1e3
-    )
-}
-
-/// A telemetry frame in words: flags, then the six values in their unit.
-pub fn telemetry_words(frame: &stewart_link::Frame) -> String {
-    let f = frame.flags;
-    let flags: Vec<&str> = [(f.armed, "armed"), (f.estop, "e-stop"), (f.home, "home")]
-        .into_iter()
-        .filter_map(|(on, word)| on.then_some(word))
-        .collect();
-    let unit = match frame.unit {
-        stewart_link::Unit::Micrometre => "µm",
-        stewart_link::Unit::Centidegree => "0.01°",
-        stewart_link::Unit::PulseMicrosecond => "µs",
-    };
-    let values: Vec<String> = frame.values.iter().map(i32::to_string).collect();
-    format!(
-        "{} [{}] {unit}",
-        if flags.is_empty() {
-            "disarmed".to_owned()
-        } else {
-            flags.join(", ")
-        },
-        values.join(", ")
     )
 }
 

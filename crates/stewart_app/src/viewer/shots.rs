@@ -20,35 +20,7 @@ pub enum ShotKind {
     Window,
 }
 
-/// How large a 3D-view shot is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShotScale {
-    /// The view's size on screen.
-    One,
-    /// Twice that.
-    Two,
-    /// 3840 × 2160.
-    Uhd,
-}
-
-impl ShotScale {
-    /// Every scale, with its words.
-    pub const ALL: [(ShotScale, &'static str); 3] = [
-        (ShotScale::One, "1×"),
-        (ShotScale::Two, "2×"),
-        (ShotScale::Uhd, "4K"),
-    ];
-
-    /// The image size for a view of `view_px` pixels.
-    pub fn size(self, view_px: [u32; 2]) -> (u32, u32) {
-        let [w, h] = view_px.map(|v| v.max(16));
-        match self {
-            ShotScale::One => (w, h),
-            ShotScale::Two => ((2 * w).min(8192), (2 * h).min(8192)),
-            ShotScale::Uhd => (3840, 2160),
-        }
-    }
-}
+pub use crate::shot_scale::ShotScale;
 
 /// The Screenshot menu's choices and the shot in progress.
 pub struct Shots {

@@ -18,6 +18,7 @@ use winit::window::{Window, WindowId};
 use super::panels::viewer_ui;
 use super::shots::ShotScale;
 use super::state::ViewerState;
+use super::window_shot::SAMPLES;
 
 /// How the viewer runs.
 #[derive(Clone, Debug)]
@@ -65,9 +66,6 @@ impl FrameTimes {
         )
     }
 }
-
-/// MSAA samples of the window (the 3D pipelines are built to match).
-pub(super) const SAMPLES: u32 = 4;
 
 struct Open {
     window: Arc<Window>,

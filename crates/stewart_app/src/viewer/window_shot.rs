@@ -6,6 +6,9 @@
 use egui::epaint::ClippedPrimitive;
 use egui::epaint::textures::TexturesDelta;
 
+/// MSAA samples of the window and of its shots (the 3D pipelines are built to match).
+pub const SAMPLES: u32 = 4;
+
 /// The pixel density factor that makes a window `width` physical pixels wide come out at
 /// `scale`: 1 (as on screen), 2, or 3840 pixels wide for 4K.
 pub fn factor(scale: super::shots::ShotScale, width: u32) -> f32 {
@@ -42,7 +45,7 @@ impl Targets {
                 view_formats: &[],
             })
         };
-        let samples = super::window::SAMPLES;
+        let samples = SAMPLES;
         Self {
             msaa: texture(
                 "window-shot msaa",

@@ -110,7 +110,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.label(t.fmt(
             "link.telemetry",
             &[
-                ("words", &crate::commands::link::telemetry_words(frame)),
+                ("words", &frame.in_words()),
                 ("frames", &status.telemetry_frames),
                 ("ago", &format!("{:.1}", (status.time - at).max(0.0))),
             ],

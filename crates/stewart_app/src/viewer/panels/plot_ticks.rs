@@ -9,25 +9,10 @@ use egui_plot::{GridInput, GridMark};
 pub const MIN_LABELLED: usize = 3;
 
 /// The labelled step for values `lo..hi`: the largest 1-2-5 step with at least
-/// [`MIN_LABELLED`] multiples in the range (`None` for an empty or non-finite range).
+/// [`MIN_LABELLED`] multiples in the range (`None` for an empty or non-finite range); the
+/// rule is the renderer's ([`stewart_render::ticks`]).
 pub fn major_step(lo: f64, hi: f64) -> Option<f64> {
-    let span = hi - lo;
-    if !(span.is_finite() && span > 0.0) {
-        return None;
-    }
-    let count = |step: f64| ((hi / step).floor() - (lo / step).ceil()) as i64 + 1;
-    // A step of span / MIN_LABELLED is the largest that can fit three; walk down from there.
-    let mut decade = 10f64.powf((span / MIN_LABELLED as f64).log10().floor() + 1.0);
-    for _ in 0..8 {
-        for factor in [5.0, 2.0, 1.0] {
-            let step = factor * decade / 10.0;
-            if count(step) >= MIN_LABELLED as i64 {
-                return Some(step);
-            }
-        }
-        decade /= 10.0;
-    }
-    None
+    stewart_render::ticks::largest_step_with(lo, hi, MIN_LABELLED)
 }
 
 /// The marks for egui_plot: the labelled ticks, and unlabelled grid lines between them
