@@ -97,15 +97,23 @@ pub const CJK: [&str; 8] = [
     "SimHei",
 ];
 
+/// The system's fonts, read once per process and shared by everything that draws text
+/// (the 3D labels here; the app's plots and Chinese interface font).
+pub fn system_database() -> std::sync::Arc<fontdb::Database> {
+    static DB: OnceLock<std::sync::Arc<fontdb::Database>> = OnceLock::new();
+    DB.get_or_init(|| {
+        let mut db = fontdb::Database::new();
+        db.load_system_fonts();
+        std::sync::Arc::new(db)
+    })
+    .clone()
+}
+
 impl Fonts {
     /// The system's fonts (searched once per process).
     pub fn system() -> &'static Fonts {
         static FONTS: OnceLock<Fonts> = OnceLock::new();
-        FONTS.get_or_init(|| {
-            let mut db = fontdb::Database::new();
-            db.load_system_fonts();
-            Fonts::from_database(&db)
-        })
+        FONTS.get_or_init(|| Fonts::from_database(&system_database()))
     }
 
     /// The first Latin and the first Chinese family of `db` (see [`LATIN`], [`CJK`]), or
@@ -147,16 +155,6 @@ impl Fonts {
                 break;
             }
         }
-        Fonts { faces, names }
-    }
-
-    /// Fonts from raw font files (tests, or fonts shipped by an application).
-    pub fn from_data(files: Vec<Vec<u8>>) -> Fonts {
-        let faces: Vec<FontArc> = files
-            .into_iter()
-            .filter_map(|d| FontArc::try_from_vec(d).ok())
-            .collect();
-        let names = (0..faces.len()).map(|k| format!("font {k}")).collect();
         Fonts { faces, names }
     }
 

@@ -132,9 +132,4 @@ impl PreparedView {
         }
         self.analysis = kept;
     }
-
-    /// The background colour of the prepared frame (linear), for clearing.
-    pub fn clear_color(&self) -> wgpu::Color {
-        self.clear
-    }
 }

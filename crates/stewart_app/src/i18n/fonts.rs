@@ -21,14 +21,7 @@ pub struct CjkFont {
 /// and the Chinese font search (`FONTCONFIG_FILE` narrows them as it does for every
 /// fontconfig program; DejaVu Sans on Debian: `fonts-dejavu-core`).
 pub fn system() -> Arc<fontdb::Database> {
-    static FONTS: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
-    FONTS
-        .get_or_init(|| {
-            let mut db = fontdb::Database::new();
-            db.load_system_fonts();
-            Arc::new(db)
-        })
-        .clone()
+    stewart_render::text::system_database()
 }
 
 /// The system's Chinese font (searched once per process).
