@@ -66,8 +66,19 @@ pub struct WorkspaceControl {
     pub rows_done: AtomicUsize,
     /// Limit evaluations made so far (pieces decided, samples and bisection steps).
     pub evaluations: AtomicU64,
-    /// Set to stop the computation early ([`WorkspaceError::Cancelled`]).
-    pub cancel: AtomicBool,
+    /// Set to stop the computation early ([`WorkspaceError::Cancelled`]); shared, so that
+    /// a flag owned elsewhere (a background job's) can stop it.
+    pub cancel: std::sync::Arc<AtomicBool>,
+}
+
+impl WorkspaceControl {
+    /// A control stopped by `cancel`.
+    pub fn stopped_by(cancel: std::sync::Arc<AtomicBool>) -> Self {
+        Self {
+            cancel,
+            ..Self::default()
+        }
+    }
 }
 
 /// What a workspace request will cost, estimated from a coarse probe.

@@ -3,8 +3,7 @@
 //! [`Derived::rebuild`] (the state's one edit path calls it), so it never falls out of
 //! step; the report is computed off the UI thread, newest request first.
 
-use std::thread::JoinHandle;
-
+use super::job::Job;
 use nalgebra::Vector3;
 use stewart_kinematics::sound_layout::SoundLayout;
 use stewart_kinematics::{CheckReport, Layout, Scenario, check_motion};
@@ -99,7 +98,7 @@ impl Derived {
 
     /// Whether a report is being computed (or waits to be).
     pub fn report_pending(&self) -> bool {
-        self.report.running.is_some() || self.report.waiting.is_some()
+        self.report.job.busy()
     }
 
     /// Collect a finished report and start the waiting request; never blocks.
@@ -115,57 +114,45 @@ impl Derived {
     }
 }
 
-/// One background check at a time; the newest request waits, older ones are dropped.
-#[derive(Default)]
+/// The pre-flight check on a background job: the newest scenario's report only.
 struct ReportWorker {
     /// The report of the scenario as it is now (`None` while the first is computed, or
     /// after an edit until the new one is in).
     current: Option<CheckReport>,
-    running: Option<JoinHandle<CheckReport>>,
-    /// Whether the running check is for an outdated scenario.
-    running_is_stale: bool,
-    waiting: Option<Scenario>,
+    job: Job<CheckReport>,
+}
+
+impl Default for ReportWorker {
+    fn default() -> Self {
+        Self {
+            current: None,
+            job: Job::new("check"),
+        }
+    }
 }
 
 impl ReportWorker {
     fn request(&mut self, scenario: Scenario) {
         self.current = None;
-        if self.running.is_some() {
-            self.running_is_stale = true;
-            self.waiting = Some(scenario);
-        } else {
-            self.start(scenario);
-        }
-    }
-
-    fn start(&mut self, scenario: Scenario) {
-        self.running_is_stale = false;
-        self.running = Some(std::thread::spawn(move || {
+        self.job.start(move |worker| {
             let samples = scenario.motion.sample();
-            check_motion(
+            worker.send(check_motion(
                 &scenario.geometry,
                 &scenario.limits,
                 &samples,
                 &scenario.checks,
-            )
-        }));
+            ));
+        });
     }
 
     fn poll(&mut self, block: bool) {
-        let finished = self
-            .running
-            .as_ref()
-            .is_some_and(|h| block || h.is_finished());
-        if finished && let Some(handle) = self.running.take() {
-            let report = handle.join().ok();
-            if !self.running_is_stale {
-                self.current = report;
-            }
-        }
-        if self.running.is_none()
-            && let Some(next) = self.waiting.take()
-        {
-            self.start(next);
+        let outcome = if block {
+            self.job.wait()
+        } else {
+            self.job.poll()
+        };
+        if let Some(Ok(report)) = outcome {
+            self.current = Some(report);
         }
     }
 }

@@ -2,10 +2,10 @@
 //! coordinate, as `stewart design --envelope` takes it), the search run off the UI
 //! thread, and its outcome.
 
-use std::sync::mpsc::{self, Receiver};
-
 use stewart_kinematics::design::{DesignReport, Envelope, envelope_needs};
 use stewart_kinematics::{Geometry, Pose};
+
+use super::job::Job;
 
 /// The envelope, the search running, the last outcome.
 pub struct DesignTool {
@@ -14,7 +14,7 @@ pub struct DesignTool {
     pub spans: [[f64; 2]; 6],
     /// The last outcome: the report, or why the envelope was refused.
     pub result: Option<Result<DesignReport, String>>,
-    running: Option<Receiver<DesignReport>>,
+    job: Job<DesignReport>,
 }
 
 /// The envelope's coordinates, as `stewart design --envelope` names them.
@@ -32,7 +32,7 @@ impl Default for DesignTool {
                 [-15.0, 15.0],
             ],
             result: None,
-            running: None,
+            job: Job::new("design"),
         }
     }
 }
@@ -92,40 +92,34 @@ impl DesignTool {
             Ok(e) => e,
             Err(e) => {
                 self.result = Some(Err(e));
-                self.running = None;
+                self.job.cancel();
                 return;
             }
         };
-        let (done, outcome) = mpsc::channel();
         let geometry = geometry.clone();
-        std::thread::spawn(move || {
-            let _ = done.send(envelope_needs(&geometry, &envelope));
+        // A search asked for again replaces the one in flight.
+        self.job.start(move |worker| {
+            worker.send(envelope_needs(&geometry, &envelope));
         });
         self.result = None;
-        self.running = Some(outcome);
     }
 
     /// Whether a search runs.
     pub fn busy(&self) -> bool {
-        self.running.is_some()
+        self.job.busy()
     }
 
     /// Collect a finished search.
     pub fn poll(&mut self) {
-        if let Some(outcome) = &self.running
-            && let Ok(report) = outcome.try_recv()
-        {
-            self.result = Some(Ok(report));
-            self.running = None;
+        if let Some(outcome) = self.job.poll() {
+            self.result = Some(outcome.map_err(|e| e.to_string()));
         }
     }
 
     /// Wait for the running search (tests).
     pub fn wait(&mut self) {
-        if let Some(outcome) = self.running.take()
-            && let Ok(report) = outcome.recv()
-        {
-            self.result = Some(Ok(report));
+        if let Some(outcome) = self.job.wait() {
+            self.result = Some(outcome.map_err(|e| e.to_string()));
         }
     }
 }

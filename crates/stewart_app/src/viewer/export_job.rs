@@ -1,10 +1,9 @@
-//! Exports started from the viewer, run on their own thread so the window stays live:
-//! progress is read from a shared counter, cancel sets a flag the exporter checks.
+//! Exports started from the viewer, run on a background job ([`super::job`]) so the window
+//! stays live: progress is read from the exporter's progress bar (the one the command line
+//! draws), cancel sets the job's flag, which the exporter checks.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::thread::JoinHandle;
 use std::time::Instant;
 
 use anyhow::{Result, anyhow, bail};
@@ -14,6 +13,7 @@ use stewart_kinematics::workspace::{
 };
 use stewart_kinematics::{Angle, Scenario};
 
+use super::job::{Job, JobFailed};
 use crate::export::plot::plot_file;
 use crate::export::ply::{PlyHeader, ply};
 use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
@@ -69,11 +69,11 @@ pub struct SurfaceView {
     pub size: (u32, u32),
 }
 
-/// An export running (or finished) on its own thread.
+/// An export running (or finished) on a background job.
 pub struct ExportJob {
-    handle: Option<JoinHandle<Result<String>>>,
+    job: Job<Result<String>>,
     progress: ProgressBar,
-    stop: Arc<AtomicBool>,
+    cancel_asked: bool,
     started: Instant,
     lang: Lang,
 }
@@ -83,13 +83,16 @@ impl ExportJob {
     pub fn start(scenario: &Scenario, work: ExportWork, lang: Lang) -> Self {
         let scenario = scenario.clone();
         let progress = ProgressBar::with_draw_target(Some(1), ProgressDrawTarget::hidden());
-        let stop = Arc::new(AtomicBool::new(false));
-        let (bar, flag) = (progress.clone(), Arc::clone(&stop));
-        let handle = std::thread::spawn(move || run(&scenario, &work, lang, &bar, &flag));
+        let bar = progress.clone();
+        let mut job = Job::new("stewart-export");
+        job.start(move |worker| {
+            let stop = worker.cancel_flag();
+            worker.send(run(&scenario, &work, lang, &bar, &stop));
+        });
         Self {
-            handle: Some(handle),
+            job,
             progress,
-            stop,
+            cancel_asked: false,
             started: Instant::now(),
             lang,
         }
@@ -127,51 +130,42 @@ impl ExportJob {
     }
 
     /// Ask the export to stop; it then removes what it staged and reports the cancellation.
-    pub fn cancel(&self) {
-        self.stop.store(true, Ordering::Relaxed);
+    pub fn cancel(&mut self) {
+        self.cancel_asked = true;
+        self.job.cancel();
     }
 
     /// Whether cancel was asked for.
     pub fn cancelling(&self) -> bool {
-        self.stop.load(Ordering::Relaxed)
+        self.cancel_asked
     }
 
-    /// The outcome once the thread has finished: a sentence saying what was written, or
+    /// The outcome once the export has finished: a sentence saying what was written, or
     /// why nothing was.
     pub fn poll(&mut self) -> Option<Result<String, String>> {
-        if !self.handle.as_ref().is_some_and(JoinHandle::is_finished) {
-            return None;
-        }
-        let handle = self.handle.take()?;
-        Some(match handle.join() {
-            Ok(Ok(message)) => Ok(message),
-            Ok(Err(_)) if self.cancelling() => Err(self.lang.tr("export.cancelled").to_owned()),
-            Ok(Err(e)) => Err(format!("{e:#}")),
-            Err(_) => Err(self.lang.tr("export.panicked").to_owned()),
-        })
+        let outcome = self.job.poll()?;
+        Some(self.words(outcome))
     }
 
     /// Wait for the end (tests and shutdown).
     pub fn wait(&mut self) -> Result<String, String> {
-        loop {
-            if let Some(outcome) = self.poll() {
-                return outcome;
-            }
-            if self.handle.is_none() {
-                return Err("already finished".to_owned());
-            }
-            std::thread::sleep(std::time::Duration::from_millis(10));
+        match self.job.wait() {
+            Some(outcome) => self.words(outcome),
+            None => Err("already finished".to_owned()),
         }
     }
-}
 
-impl Drop for ExportJob {
-    /// An export still running when its job is dropped (the window closed) is cancelled
-    /// and waited for, so it removes what it staged instead of leaving files behind.
-    fn drop(&mut self) {
-        if let Some(handle) = self.handle.take() {
-            self.cancel();
-            let _ = handle.join();
+    /// The job's outcome in words.
+    fn words(
+        &self,
+        outcome: std::result::Result<Result<String>, JobFailed>,
+    ) -> Result<String, String> {
+        match outcome {
+            Ok(Ok(message)) => Ok(message),
+            Ok(Err(_)) if self.cancel_asked => Err(self.lang.tr("export.cancelled").to_owned()),
+            Ok(Err(e)) => Err(format!("{e:#}")),
+            Err(JobFailed::Panicked) => Err(self.lang.tr("export.panicked").to_owned()),
+            Err(e) => Err(e.to_string()),
         }
     }
 }

@@ -24,6 +24,7 @@ pub mod files;
 pub mod fonts;
 pub mod gamepad;
 pub mod history;
+pub mod job;
 pub mod live_link;
 pub mod look;
 pub mod panels;

@@ -4,11 +4,11 @@
 //! screen.
 
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{self, Receiver};
 
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
 use super::files::Status;
+use super::job::Job;
 use crate::i18n::Lang;
 
 /// What to capture.
@@ -36,7 +36,9 @@ pub struct Shots {
     pub window_request: Option<(PathBuf, ShotScale)>,
     /// The folder shots are saved in (the current folder).
     pub folder: PathBuf,
-    running: Option<Receiver<Status>>,
+    job: Job<Status>,
+    /// The language of the outcome's words.
+    lang: Lang,
 }
 
 impl Default for Shots {
@@ -48,7 +50,8 @@ impl Default for Shots {
             status: None,
             window_request: None,
             folder: PathBuf::from("."),
-            running: None,
+            job: Job::new("stewart-screenshot"),
+            lang: Lang::En,
         }
     }
 }
@@ -74,7 +77,7 @@ pub fn next_path(folder: &Path, name: &str) -> PathBuf {
 impl Shots {
     /// Whether a shot is being rendered.
     pub fn busy(&self) -> bool {
-        self.running.is_some() || self.window_request.is_some()
+        self.job.busy() || self.window_request.is_some()
     }
 
     /// Render `list` seen by `camera` in `theme` into a PNG at `path` on a thread of its
@@ -88,36 +91,29 @@ impl Shots {
         path: PathBuf,
         lang: Lang,
     ) {
-        let (done, outcome) = mpsc::channel();
         let transparent = self.transparent;
-        let spawned = std::thread::Builder::new()
-            .name("stewart-screenshot".to_owned())
-            .spawn(move || {
-                let _ = done.send(Some(render_view(
-                    &list,
-                    camera,
-                    theme,
-                    transparent,
-                    size,
-                    &path,
-                    lang,
-                )));
-            });
-        match spawned {
-            Ok(_) => self.running = Some(outcome),
-            Err(e) => {
-                self.status = Some(Err(lang.fmt("shots.cannot_start", &[("why", &e)])));
-            }
-        }
+        self.lang = lang;
+        self.job.start(move |worker| {
+            worker.send(Some(render_view(
+                &list,
+                camera,
+                theme,
+                transparent,
+                size,
+                &path,
+                lang,
+            )));
+        });
     }
 
     /// Collect a finished shot.
     pub fn poll(&mut self) {
-        if let Some(outcome) = &self.running
-            && let Ok(status) = outcome.try_recv()
-        {
-            self.status = status;
-            self.running = None;
+        match self.job.poll() {
+            Some(Ok(status)) => self.status = status,
+            Some(Err(e)) => {
+                self.status = Some(Err(self.lang.fmt("shots.cannot_start", &[("why", &e)])));
+            }
+            None => {}
         }
     }
 }

@@ -2,21 +2,23 @@
 //! view as a translucent surface, and a horizontal slice coloured by the condition
 //! number, both computed off the UI thread.
 //!
-//! One worker thread takes the newest request only. A request is computed coarse first
-//! (its result shown at once), then refined; a newer request — a slider dragged on —
-//! cancels the refinement in flight ([`WorkspaceControl::cancel`]) and the worker moves to
-//! the newest. The UI thread only swaps in finished results (`poll`, never blocking); the
-//! meshes are built on the worker too, so the UI's share is uploading them once.
+//! A background job ([`super::job`]) takes the newest request only. A request is computed
+//! coarse first (its result shown at once), then refined; a newer request — a slider
+//! dragged on — cancels the refinement in flight (the job's flag is the
+//! [`WorkspaceControl`]'s) and the job moves to the newest. The UI thread only swaps in
+//! finished results (`poll`, never blocking); the meshes are built on the job too, so the
+//! UI's share is uploading them once.
 
-use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
-use std::sync::mpsc::{self, Receiver, Sender};
-use std::sync::{Arc, Condvar, Mutex};
+use std::sync::Arc;
+use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
 use nalgebra::Vector3;
 use stewart_kinematics::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
 use stewart_kinematics::{Angle, Geometry, Limits, Pose};
 use stewart_render::analysis::AnalysisMesh;
+
+use super::job::Job;
 
 /// Columns a side of the first, coarse workspace.
 pub const COARSE_COLUMNS: usize = 128;
@@ -98,21 +100,6 @@ pub struct SliceOutcome {
     pub past: usize,
 }
 
-/// What the worker and the UI share.
-#[derive(Default)]
-struct Shared {
-    /// The newest request not yet taken with its number, and whether the tool was dropped.
-    next: Mutex<(Option<(u64, Request)>, bool)>,
-    wake: Condvar,
-    /// Requests numbered as they come.
-    numbered: AtomicU64,
-    /// The computation in flight and its request's number (its `cancel` is set when a
-    /// newer request comes).
-    control: Mutex<Option<(u64, Arc<WorkspaceControl>)>>,
-    /// Computations stopped (or skipped before their refinement) for a newer request.
-    cancelled: AtomicUsize,
-}
-
 /// The Workspace panel's switches, the worker and the newest result.
 pub struct WorkspaceTool {
     /// Draw the surface in the 3D view.
@@ -133,8 +120,7 @@ pub struct WorkspaceTool {
     pub error: Option<String>,
     /// The request last sent.
     sent: Option<Request>,
-    shared: Arc<Shared>,
-    results: Option<Receiver<Result<Outcome, String>>>,
+    job: Job<Result<Outcome, String>>,
     resolutions: [usize; 2],
 }
 
@@ -157,68 +143,53 @@ impl WorkspaceTool {
             latest: None,
             error: None,
             sent: None,
-            shared: Arc::default(),
-            results: None,
+            job: Job::new("workspace"),
             resolutions: [coarse, fine],
         }
     }
 
     /// Ask for `request` unless it was the last one asked: a refinement in flight for an
-    /// older request stops, and the worker takes this one next. Never blocks.
+    /// older request stops, and the job takes this one next. Never blocks.
     pub fn request(&mut self, request: Request) {
         if self.sent.as_ref() == Some(&request) {
             return;
         }
         self.sent = Some(request.clone());
-        if self.results.is_none() {
-            let (send, receive) = mpsc::channel();
-            let shared = Arc::clone(&self.shared);
-            let resolutions = self.resolutions;
-            let spawned = std::thread::Builder::new()
-                .name("workspace".into())
-                .spawn(move || work(&shared, resolutions, &send));
-            if let Err(e) = spawned {
-                self.error = Some(e.to_string());
-                return;
+        let [coarse, fine] = self.resolutions;
+        self.job.start(move |worker| {
+            for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
+                if worker.cancelled() {
+                    return;
+                }
+                let control = WorkspaceControl::stopped_by(worker.cancel_flag());
+                match compute(&request, resolution, slice_cells(resolution), &control) {
+                    Ok(mut outcome) => {
+                        outcome.refined = k == 1;
+                        if !worker.send(Ok(outcome)) {
+                            return;
+                        }
+                    }
+                    // Cancelled: a newer request replaced this one.
+                    Err(None) => return,
+                    Err(Some(e)) => {
+                        worker.send(Err(e));
+                        return;
+                    }
+                }
             }
-            self.results = Some(receive);
-        }
-        // The request first, then the stop: a worker between the coarse pass and the
-        // refinement either sees the request waiting or has its refinement stopped; one
-        // that has already taken this request keeps it.
-        let number = self.shared.numbered.fetch_add(1, Ordering::Relaxed) + 1;
-        self.shared.next.lock().unwrap_or_else(|e| e.into_inner()).0 = Some((number, request));
-        self.shared.wake.notify_one();
-        self.stop_older_than(number);
-    }
-
-    /// Stop the computation in flight if it is for a request older than `number`.
-    fn stop_older_than(&self, number: u64) {
-        if let Some((running, control)) = self
-            .shared
-            .control
-            .lock()
-            .unwrap_or_else(|e| e.into_inner())
-            .as_ref()
-            && *running < number
-        {
-            control.cancel.store(true, Ordering::Relaxed);
-        }
+        });
     }
 
     /// Take the newest finished result (older ones that arrived meanwhile are skipped).
     pub fn poll(&mut self) {
-        let Some(results) = &self.results else {
-            return;
-        };
-        while let Ok(result) = results.try_recv() {
-            match result {
-                Ok(outcome) => {
-                    self.latest = Some(outcome);
-                    self.error = None;
-                }
-                Err(e) => self.error = Some(e),
+        match self.job.poll() {
+            Some(Ok(Ok(outcome))) => {
+                self.latest = Some(outcome);
+                self.error = None;
             }
+            Some(Ok(Err(e))) => self.error = Some(e),
+            Some(Err(e)) => self.error = Some(e.to_string()),
+            None => {}
         }
     }
 
@@ -246,69 +217,9 @@ impl WorkspaceTool {
         self.resolutions
     }
 
-    /// Computations stopped (or refinements skipped) because a newer request came.
+    /// Computations stopped because a newer request came.
     pub fn cancelled(&self) -> usize {
-        self.shared.cancelled.load(Ordering::Relaxed)
-    }
-}
-
-impl Drop for WorkspaceTool {
-    fn drop(&mut self) {
-        self.stop_older_than(u64::MAX);
-        self.shared.next.lock().unwrap_or_else(|e| e.into_inner()).1 = true;
-        self.shared.wake.notify_one();
-    }
-}
-
-/// The worker: the newest request, coarse then refined, until the tool is dropped.
-fn work(shared: &Shared, [coarse, fine]: [usize; 2], results: &Sender<Result<Outcome, String>>) {
-    loop {
-        let (number, request) = {
-            let mut next = shared.next.lock().unwrap_or_else(|e| e.into_inner());
-            loop {
-                if next.1 {
-                    return;
-                }
-                if let Some(r) = next.0.take() {
-                    break r;
-                }
-                next = shared.wake.wait(next).unwrap_or_else(|e| e.into_inner());
-            }
-        };
-        for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
-            let control = Arc::new(WorkspaceControl::default());
-            *shared.control.lock().unwrap_or_else(|e| e.into_inner()) =
-                Some((number, Arc::clone(&control)));
-            // A newer request already waiting: skip to it.
-            if shared
-                .next
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-                .0
-                .is_some()
-            {
-                if k == 1 {
-                    shared.cancelled.fetch_add(1, Ordering::Relaxed);
-                }
-                break;
-            }
-            match compute(&request, resolution, slice_cells(resolution), &control) {
-                Ok(mut outcome) => {
-                    outcome.refined = k == 1;
-                    if results.send(Ok(outcome)).is_err() {
-                        return;
-                    }
-                }
-                Err(None) => {
-                    shared.cancelled.fetch_add(1, Ordering::Relaxed);
-                    break;
-                }
-                Err(Some(e)) => {
-                    let _ = results.send(Err(e));
-                    break;
-                }
-            }
-        }
+        self.job.replaced()
     }
 }
 

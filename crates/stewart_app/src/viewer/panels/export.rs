@@ -67,7 +67,7 @@ pub fn window(ctx: &egui::Context, state: &mut ViewerState) {
 /// What the export window holds: the form and *Export*, or the running export's progress.
 fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
-    if let Some(job) = &state.exports.job {
+    if let Some(job) = &mut state.exports.job {
         ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
         ui.label(job.describe());
         let label = if job.cancelling() {
