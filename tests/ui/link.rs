@@ -245,3 +245,20 @@ fn the_link_panels_choices_read_as_words() {
         assert!(!shown(raw), "`{raw}` shown");
     }
 }
+
+/// A `[link]` edit goes through the same path as every other: refused when unsound,
+/// undone by Ctrl+Z (before: it bypassed undo).
+#[test]
+fn a_link_edit_is_undone_like_any_other() {
+    let mut state = ViewerState::new(
+        stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    let before = state.scenario().link.clone();
+    state.edit_link(|l| l.rate_hz = 250.0);
+    assert_eq!(state.scenario().link.rate_hz, 250.0);
+    state.edit_link(|l| l.rate_hz = 1e9);
+    assert!(state.link_error.is_some());
+    assert_eq!(state.scenario().link.rate_hz, 250.0);
+    assert!(state.undo_edit());
+    assert_eq!(state.scenario().link, before);
+}

@@ -153,7 +153,10 @@ impl ViewerState {
         let mut link = self.scenario.link.clone();
         change(&mut link);
         match link.problem() {
+            None if link == self.scenario.link => self.link_error = None,
             None => {
+                // An edit like any other (undoable); nothing derived depends on `[link]`.
+                self.undo.record(&self.scenario);
                 self.scenario.link = link;
                 self.link_error = None;
             }
