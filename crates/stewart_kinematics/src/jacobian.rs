@@ -329,6 +329,19 @@ mod tests {
         }
     }
 
+    /// The last point of `inside..outside` where `reachable` holds, by bisection (60 halvings).
+    fn last_reachable(mut inside: f64, mut outside: f64, reachable: impl Fn(f64) -> bool) -> f64 {
+        for _ in 0..60 {
+            let mid = 0.5 * (inside + outside);
+            if reachable(mid) {
+                inside = mid
+            } else {
+                outside = mid
+            }
+        }
+        inside
+    }
+
     #[test]
     fn servo_conditioning_is_good_at_home_and_degrades_at_the_edge_of_reach() {
         let g = crate::test_support::servo_geometry();
@@ -342,17 +355,8 @@ mod tests {
         // grows and the matrix loses rank).
         let h = g.home_height();
         let at = |x: f64| g.servo_conditioning(&Pose::from_xyz_rpy_deg([x, 0.0, h], [0.0; 3]));
-        let (mut inside, mut outside) = (0.0, 0.2);
-        assert!(at(outside).is_none(), "still reachable at 0.2 m");
-        for _ in 0..60 {
-            let mid = 0.5 * (inside + outside);
-            if at(mid).is_some() {
-                inside = mid
-            } else {
-                outside = mid
-            }
-        }
-        let x = inside;
+        assert!(at(0.2).is_none(), "still reachable at 0.2 m");
+        let x = last_reachable(0.0, 0.2, |x| at(x).is_some());
         let last = at(x)
             .and_then(|c| c.condition_number)
             .unwrap_or(f64::INFINITY);
@@ -375,16 +379,8 @@ mod tests {
         let g = &s.geometry;
         let at = |z: f64| g.servo_conditioning(&Pose::from_xyz_rpy_deg([0.0, 0.0, z], [0.0; 3]));
         let home = g.home_height();
-        let (mut inside, mut outside) = (home, home + 0.2);
-        assert!(at(outside).is_none(), "still reachable 0.2 m above home");
-        for _ in 0..60 {
-            let mid = 0.5 * (inside + outside);
-            if at(mid).is_some() {
-                inside = mid
-            } else {
-                outside = mid
-            }
-        }
+        assert!(at(home + 0.2).is_none(), "still reachable 0.2 m above home");
+        let inside = last_reachable(home, home + 0.2, |z| at(z).is_some());
         let edge = at(inside).unwrap_or_else(|| panic!("unreachable at {inside}"));
         let kappa = edge.condition_number.unwrap_or(f64::INFINITY);
         assert!(kappa > 1e3, "condition {kappa} at z = {inside}");

@@ -178,50 +178,54 @@ mod tests {
     #[test]
     fn segment_distance_hand_cases() {
         let v = Vector3::new;
-        // Crossing segments one above the other: distance is the gap.
-        assert!(
-            (segment_distance(
-                v(-1.0, 0.0, 0.0),
-                v(1.0, 0.0, 0.0),
-                v(0.0, -1.0, 0.5),
-                v(0.0, 1.0, 0.5)
-            ) - 0.5)
-                .abs()
-                < 1e-15
-        );
-        // Parallel, overlapping: the offset.
-        assert!(
-            (segment_distance(
-                v(0.0, 0.0, 0.0),
-                v(2.0, 0.0, 0.0),
-                v(1.0, 0.3, 0.0),
-                v(3.0, 0.3, 0.0)
-            ) - 0.3)
-                .abs()
-                < 1e-15
-        );
-        // Collinear, apart: the gap between the nearest ends.
-        assert!(
-            (segment_distance(
-                v(0.0, 0.0, 0.0),
-                v(1.0, 0.0, 0.0),
-                v(3.0, 0.0, 0.0),
-                v(4.0, 0.0, 0.0)
-            ) - 2.0)
-                .abs()
-                < 1e-15
-        );
-        // Skew lines whose closest points lie outside the segments: endpoint to segment.
-        assert!(
-            (segment_distance(
-                v(0.0, 0.0, 0.0),
-                v(1.0, 0.0, 0.0),
-                v(2.0, 1.0, 0.0),
-                v(2.0, 2.0, 0.0)
-            ) - 2f64.sqrt())
-            .abs()
-                < 1e-15
-        );
+        for (what, [a, b, c, d], expected) in [
+            (
+                "crossing segments one above the other: the gap",
+                [
+                    v(-1.0, 0.0, 0.0),
+                    v(1.0, 0.0, 0.0),
+                    v(0.0, -1.0, 0.5),
+                    v(0.0, 1.0, 0.5),
+                ],
+                0.5,
+            ),
+            (
+                "parallel, overlapping: the offset",
+                [
+                    v(0.0, 0.0, 0.0),
+                    v(2.0, 0.0, 0.0),
+                    v(1.0, 0.3, 0.0),
+                    v(3.0, 0.3, 0.0),
+                ],
+                0.3,
+            ),
+            (
+                "collinear, apart: the gap between the nearest ends",
+                [
+                    v(0.0, 0.0, 0.0),
+                    v(1.0, 0.0, 0.0),
+                    v(3.0, 0.0, 0.0),
+                    v(4.0, 0.0, 0.0),
+                ],
+                2.0,
+            ),
+            (
+                "skew, closest points outside the segments: endpoint to segment",
+                [
+                    v(0.0, 0.0, 0.0),
+                    v(1.0, 0.0, 0.0),
+                    v(2.0, 1.0, 0.0),
+                    v(2.0, 2.0, 0.0),
+                ],
+                2f64.sqrt(),
+            ),
+        ] {
+            let got = segment_distance(a, b, c, d);
+            assert!(
+                (got - expected).abs() < 1e-15,
+                "{what}: {got} vs {expected}"
+            );
+        }
     }
 
     #[test]

@@ -26,6 +26,7 @@ pub mod offscreen;
 pub mod plate_shape;
 pub mod renderer;
 pub mod shaders;
+pub mod targets;
 pub mod text;
 pub mod theme;
 pub mod ticks;

@@ -51,22 +51,8 @@ struct Targets {
 
 impl Targets {
     fn new(device: &wgpu::Device, width: u32, height: u32, samples: u32) -> Self {
-        let size = wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        };
         let texture = |label: &str, format, samples, usage| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size,
-                mip_level_count: 1,
-                sample_count: samples,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage,
-                view_formats: &[],
-            })
+            crate::targets::texture(device, label, [width, height], format, samples, usage)
         };
         let msaa = (samples > 1).then(|| {
             texture(

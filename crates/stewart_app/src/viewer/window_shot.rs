@@ -30,20 +30,7 @@ struct Targets {
 impl Targets {
     fn new(device: &wgpu::Device, format: wgpu::TextureFormat, [w, h]: [u32; 2]) -> Self {
         let texture = |label, format, samples, usage| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d {
-                    width: w,
-                    height: h,
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: samples,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage,
-                view_formats: &[],
-            })
+            stewart_render::targets::texture(device, label, [w, h], format, samples, usage)
         };
         let samples = SAMPLES;
         Self {
@@ -124,14 +111,7 @@ pub fn render(
                 },
                 depth_slice: None,
             })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
+            depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,
