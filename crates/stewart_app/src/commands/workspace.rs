@@ -13,7 +13,7 @@ use nalgebra::Vector3;
 use stewart_kinematics::workspace::{
     Axis, ConstantOrientationWorkspace, PROBE_RESOLUTION, WorkspaceControl, WorkspaceError,
 };
-use stewart_kinematics::{Angle, Geometry, Limits, Pose};
+use stewart_kinematics::{Angle, Geometry, Limits, Pose, Scenario};
 
 use crate::cli::WorkspaceArgs;
 use crate::csv_io::CsvText;
@@ -22,10 +22,11 @@ use crate::source;
 
 /// Run the command.
 pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
-    let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
+    let inputs = source::inputs(&args.scenario);
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let plot_out = match &args.plot {
         Some(path) => {
-            let d = output::Destination::new(path, &source::inputs(&args.scenario))?;
+            let d = output::Destination::new(path, &inputs)?;
             d.require_file()?;
             crate::export::vector::check_extension(path)?;
             Some(d)
@@ -34,7 +35,7 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     };
     let surface_out = match &args.surface {
         Some(path) => {
-            let d = output::Destination::new(path, &source::inputs(&args.scenario))?;
+            let d = output::Destination::new(path, &inputs)?;
             d.require_file()?;
             if !path
                 .extension()
@@ -64,9 +65,45 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         "Workspace of `{}` at roll {r}°, pitch {p}°, yaw {y}°:",
         scenario.name
     );
-    let n = ws.resolution;
+    volume_lines(&mut s, &scenario, &ws);
+    let position = args.position.unwrap_or([0.0, 0.0, g.home_height()]);
+    orientation_lines(&mut s, &scenario, orientation, position);
+    if let Some(plot) = &plot_out {
+        let path = plot.shown();
+        let lang = crate::i18n::for_command(args.lang, "workspace");
+        let bytes = crate::export::workspace_plot::figure_file(
+            &scenario,
+            &ws,
+            orientation,
+            position,
+            lang,
+            path,
+        )?;
+        plot.write_bytes(&bytes)?;
+        let _ = writeln!(s, "Wrote the slices to {}.", path.display());
+    }
+    if let Some(file) = &surface_out {
+        write_surface(&mut s, file, &scenario, &ws, args.orientation)?;
+    }
+    if let Some(out) = &out {
+        let path = out.shown();
+        let text = points_file(path, &ws)?;
+        out.write_bytes(text.as_bytes())?;
+        let _ = writeln!(
+            s,
+            "Wrote {} boundary points to {}.",
+            2 * ws.spans.len(),
+            path.display()
+        );
+    }
+    output::stdout(s.as_bytes())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// How the columns were decided, in words, for the volume line.
+fn method_words(scenario: &Scenario, ws: &ConstantOrientationWorkspace) -> String {
     let limits = &scenario.limits;
-    let method = if g.rotary().is_some() {
+    if scenario.geometry.rotary().is_some() {
         let cones = if limits.base_cone.is_some() || limits.platform_cone.is_some() {
             ", rod cones"
         } else {
@@ -85,7 +122,13 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m".to_owned()
     } else {
         "reachable heights exact per column".to_owned()
-    };
+    }
+}
+
+/// The volume with its bound and method, and the extent (or why there is none).
+fn volume_lines(s: &mut String, scenario: &Scenario, ws: &ConstantOrientationWorkspace) {
+    let n = ws.resolution;
+    let method = method_words(scenario, ws);
     let _ = writeln!(
         s,
         "  volume {:.6} m³ ± {:.6} m³ ({n} × {n} columns of {:.2} mm; {method}; the bound is twice the spread of the 16 interleaved grids 4× coarser)",
@@ -93,30 +136,31 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         ws.volume_error,
         ws.cell * 1e3
     );
-    match ws.extent {
-        Some([ex, ey, ez]) => {
-            let _ = writeln!(
-                s,
-                "  extent x {:.4} … {:.4} m, y {:.4} … {:.4} m, z {:.4} … {:.4} m",
-                ex[0], ex[1], ey[0], ey[1], ez[0], ez[1]
-            );
-        }
-        None => {
-            let _ = if ws.cell > 0.0 {
-                writeln!(
-                    s,
-                    "  no column centre is reachable at this orientation; a region thinner than {:.2} mm could lie between them: a higher --resolution looks closer",
-                    ws.cell * 1e3
-                )
-            } else {
-                writeln!(
-                    s,
-                    "  no position is reachable at this orientation: the legs' reaches do not overlap"
-                )
-            };
-        }
-    }
-    let position = args.position.unwrap_or([0.0, 0.0, g.home_height()]);
+    let _ = match ws.extent {
+        Some([ex, ey, ez]) => writeln!(
+            s,
+            "  extent x {:.4} … {:.4} m, y {:.4} … {:.4} m, z {:.4} … {:.4} m",
+            ex[0], ex[1], ey[0], ey[1], ez[0], ez[1]
+        ),
+        None if ws.cell > 0.0 => writeln!(
+            s,
+            "  no column centre is reachable at this orientation; a region thinner than {:.2} mm could lie between them: a higher --resolution looks closer",
+            ws.cell * 1e3
+        ),
+        None => writeln!(
+            s,
+            "  no position is reachable at this orientation: the legs' reaches do not overlap"
+        ),
+    };
+}
+
+/// The range of each angle alone at `position`, from `orientation`.
+fn orientation_lines(
+    s: &mut String,
+    scenario: &Scenario,
+    orientation: [Angle; 3],
+    position: [f64; 3],
+) {
     let pose = Pose::new(
         Vector3::from(position),
         orientation[0],
@@ -134,7 +178,7 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         (Axis::Pitch, "pitch", 90.0),
         (Axis::Yaw, "yaw", 180.0),
     ] {
-        let line = match g.orientation_range(
+        let line = match scenario.geometry.orientation_range(
             &scenario.limits,
             &pose,
             axis,
@@ -146,57 +190,39 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         };
         let _ = writeln!(s, "  {name:<5} {line}");
     }
-    if let Some(plot) = &plot_out {
-        let path = plot.shown();
-        let lang = crate::i18n::for_command(args.lang, "workspace");
-        let bytes = crate::export::workspace_plot::figure_file(
-            &scenario,
-            &ws,
-            orientation,
-            position,
-            lang,
-            path,
-        )?;
-        plot.write_bytes(&bytes)?;
-        let _ = writeln!(s, "Wrote the slices to {}.", path.display());
-    }
-    if let Some(file) = &surface_out {
-        let path = file.shown();
-        let Some(_) = ws.extent else {
-            bail!("no position is reachable at this orientation: there is no surface to write");
-        };
-        let surface = stewart_kinematics::workspace::WorkspaceSurface::from_workspace(&ws);
-        let bytes = crate::export::ply::ply(
-            &surface,
-            &crate::export::ply::PlyHeader {
-                name: &scenario.name,
-                orientation_deg: args.orientation,
-                volume: [ws.volume, ws.volume_error],
-                resolution: ws.resolution,
-            },
-        );
-        file.write_bytes(&bytes)?;
-        let _ = writeln!(
-            s,
-            "Wrote the surface ({} triangles, enclosing {:.6} m³) to {}.",
-            surface.triangles.len(),
-            surface.enclosed_volume(),
-            path.display()
-        );
-    }
-    if let Some(out) = &out {
-        let path = out.shown();
-        let text = points_file(path, &ws)?;
-        out.write_bytes(text.as_bytes())?;
-        let _ = writeln!(
-            s,
-            "Wrote {} boundary points to {}.",
-            2 * ws.spans.len(),
-            path.display()
-        );
-    }
-    output::stdout(s.as_bytes())?;
-    Ok(ExitCode::SUCCESS)
+}
+
+/// Write the workspace's closed surface as PLY to `file`, and say so in `s`.
+fn write_surface(
+    s: &mut String,
+    file: &output::Destination,
+    scenario: &Scenario,
+    ws: &ConstantOrientationWorkspace,
+    orientation_deg: [f64; 3],
+) -> Result<()> {
+    let path = file.shown();
+    let Some(_) = ws.extent else {
+        bail!("no position is reachable at this orientation: there is no surface to write");
+    };
+    let surface = stewart_kinematics::workspace::WorkspaceSurface::from_workspace(ws);
+    let bytes = crate::export::ply::ply(
+        &surface,
+        &crate::export::ply::PlyHeader {
+            name: &scenario.name,
+            orientation_deg,
+            volume: [ws.volume, ws.volume_error],
+            resolution: ws.resolution,
+        },
+    );
+    file.write_bytes(&bytes)?;
+    let _ = writeln!(
+        s,
+        "Wrote the surface ({} triangles, enclosing {:.6} m³) to {}.",
+        surface.triangles.len(),
+        surface.enclosed_volume(),
+        path.display()
+    );
+    Ok(())
 }
 
 /// The most time a workspace request may be estimated to take without `--no-budget`.

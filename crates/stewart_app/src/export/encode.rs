@@ -452,6 +452,79 @@ pub fn gif_delay_cs(fps: f64) -> u16 {
 /// failure flags again.
 const POLL: std::time::Duration = std::time::Duration::from_millis(20);
 
+/// Write the encoded frames `indices` to `staging` in order as they come from the workers
+/// (out of order), counting each on `progress`; an error ends it (the render loop sees it
+/// through the failure flag).
+fn write_in_order(
+    staging: &mut Staging,
+    from_workers: std::sync::mpsc::Receiver<(usize, Result<Encoded>)>,
+    indices: std::ops::Range<usize>,
+    progress: &ProgressBar,
+) -> Result<()> {
+    let mut pending: BTreeMap<usize, Encoded> = BTreeMap::new();
+    let mut next = indices.start;
+    for (k, result) in from_workers {
+        pending.insert(k, result?);
+        while let Some(e) = pending.remove(&next) {
+            staging.write(e)?;
+            progress.inc(1);
+            next += 1;
+        }
+    }
+    if next != indices.end {
+        bail!(
+            "only {} of {} frames were encoded",
+            next - indices.start,
+            indices.len()
+        );
+    }
+    Ok(())
+}
+
+/// Render `indices` from `source` and hand each frame (with the one before it when
+/// `keeps_previous`) to the encoders, looking at `stop` (an interruption: an error) and
+/// `failed` (the writer's error, reported by the writer) while they are busy.
+fn feed_frames(
+    source: &mut FrameSource,
+    indices: std::ops::Range<usize>,
+    keeps_previous: bool,
+    to_workers: &std::sync::mpsc::SyncSender<Job>,
+    stop: &AtomicBool,
+    failed: &AtomicBool,
+) -> Result<()> {
+    let interrupted = || anyhow!("interrupted: nothing was written");
+    let mut previous: Option<Arc<Frame>> = None;
+    for k in indices {
+        if stop.load(Ordering::Relaxed) {
+            return Err(interrupted());
+        }
+        if failed.load(Ordering::Relaxed) {
+            return Ok(());
+        }
+        let frame = Arc::new(source.frame(k)?);
+        let before = std::mem::replace(&mut previous, keeps_previous.then(|| Arc::clone(&frame)));
+        let mut item = (k, frame, before);
+        // Hand the frame over, looking at the flags while the encoders are busy.
+        loop {
+            match to_workers.try_send(item) {
+                Ok(()) => break,
+                Err(TrySendError::Disconnected(_)) => return Ok(()),
+                Err(TrySendError::Full(back)) => {
+                    if stop.load(Ordering::Relaxed) {
+                        return Err(interrupted());
+                    }
+                    if failed.load(Ordering::Relaxed) {
+                        return Ok(());
+                    }
+                    item = back;
+                    std::thread::sleep(POLL);
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Render `indices` from `source` and encode them into `target` at `fps`, reporting on `progress`.
 ///
 /// When `stop` becomes true (Ctrl-C), the export ends with an error and every staged file
@@ -522,72 +595,22 @@ pub fn export(
         let failed = &failed;
         // The writer hands the staging back whatever happens: on an error ffmpeg must be
         // stopped before the staged file (and ffmpeg's input) are dropped.
-        let writer = scope.spawn(move || -> (Staging, Result<()>) {
-            let mut pending: BTreeMap<usize, Encoded> = BTreeMap::new();
-            let mut next = start;
-            let result = (|| {
-                for (k, result) in from_workers {
-                    pending.insert(k, result?);
-                    while let Some(e) = pending.remove(&next) {
-                        staging.write(e)?;
-                        progress.inc(1);
-                        next += 1;
-                    }
-                }
-                if next != start + count {
-                    bail!("only {} of {count} frames were encoded", next - start);
-                }
-                Ok(())
-            })();
+        let writer = scope.spawn(move || {
+            let result = write_in_order(&mut staging, from_workers, start..start + count, progress);
             if result.is_err() {
                 failed.store(true, Ordering::Relaxed);
             }
             (staging, result)
         });
-        let mut render_result = Ok(());
         let keeps_previous = matches!(target, Target::Gif(_));
-        let mut previous: Option<Arc<Frame>> = None;
-        'frames: for k in indices.clone() {
-            if stop.load(Ordering::Relaxed) {
-                render_result = Err(anyhow!("interrupted: nothing was written"));
-                break;
-            }
-            if failed.load(Ordering::Relaxed) {
-                break;
-            }
-            let mut item = match source.frame(k) {
-                Ok(frame) => {
-                    let frame = Arc::new(frame);
-                    let before = std::mem::replace(
-                        &mut previous,
-                        keeps_previous.then(|| Arc::clone(&frame)),
-                    );
-                    (k, frame, before)
-                }
-                Err(e) => {
-                    render_result = Err(e);
-                    break;
-                }
-            };
-            // Hand the frame over, looking at the flags while the encoders are busy.
-            loop {
-                match to_workers.try_send(item) {
-                    Ok(()) => break,
-                    Err(TrySendError::Disconnected(_)) => break 'frames,
-                    Err(TrySendError::Full(back)) => {
-                        if stop.load(Ordering::Relaxed) {
-                            render_result = Err(anyhow!("interrupted: nothing was written"));
-                            break 'frames;
-                        }
-                        if failed.load(Ordering::Relaxed) {
-                            break 'frames;
-                        }
-                        item = back;
-                        std::thread::sleep(POLL);
-                    }
-                }
-            }
-        }
+        let render_result = feed_frames(
+            source,
+            indices.clone(),
+            keeps_previous,
+            &to_workers,
+            stop,
+            failed,
+        );
         drop(to_workers);
         if render_result.is_err()
             && let Some(f) = ffmpeg.as_mut()

@@ -117,36 +117,61 @@ fn label(v: f64, step: f64) -> String {
     format!("{v:.decimals$}")
 }
 
+/// Where the axes sit in the document and what they span.
+struct Axes {
+    /// Time span shown, seconds.
+    t: (f64, f64),
+    /// Value span shown (padded).
+    v: (f64, f64),
+    /// Left and right edge of the axes box, document units.
+    x: (f64, f64),
+    /// Bottom and top edge.
+    y: (f64, f64),
+}
+
+impl Axes {
+    /// The axes for `data`: its times, and its values and limits with 5 % to spare.
+    fn of(data: &PlotData) -> Self {
+        let t0 = data.times.first().copied().unwrap_or(0.0);
+        let t1 = data.times.last().copied().unwrap_or(1.0).max(t0 + 1e-9);
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for l in data.values.iter().flatten().filter(|v| !v.is_nan()) {
+            lo = lo.min(*l);
+            hi = hi.max(*l);
+        }
+        for limit in data.limits.into_iter().flatten() {
+            lo = lo.min(limit);
+            hi = hi.max(limit);
+        }
+        if !lo.is_finite() {
+            (lo, hi) = (0.0, 1.0);
+        }
+        let pad = 0.05 * (hi - lo).max(1e-6);
+        let [ml, mr, mt, mb] = MARGIN;
+        Self {
+            t: (t0, t1),
+            v: (lo - pad, hi + pad),
+            x: (ml, WIDTH - mr),
+            y: (HEIGHT - mb, mt),
+        }
+    }
+
+    /// A time's document x.
+    fn sx(&self, t: f64) -> f64 {
+        self.x.0 + (t - self.t.0) / (self.t.1 - self.t.0) * (self.x.1 - self.x.0)
+    }
+
+    /// A value's document y.
+    fn sy(&self, l: f64) -> f64 {
+        self.y.0 + (l - self.v.0) / (self.v.1 - self.v.0) * (self.y.1 - self.y.0)
+    }
+}
+
 /// The plot as an SVG document.
 pub fn svg(data: &PlotData) -> String {
-    let t0 = data.times.first().copied().unwrap_or(0.0);
-    let t1 = data.times.last().copied().unwrap_or(1.0).max(t0 + 1e-9);
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
-    for l in data.values.iter().flatten().filter(|v| !v.is_nan()) {
-        lo = lo.min(*l);
-        hi = hi.max(*l);
-    }
-    for limit in data.limits.into_iter().flatten() {
-        lo = lo.min(limit);
-        hi = hi.max(limit);
-    }
-    if !lo.is_finite() {
-        (lo, hi) = (0.0, 1.0);
-    }
-    let pad = 0.05 * (hi - lo).max(1e-6);
-    let (lo, hi) = (lo - pad, hi + pad);
-    let [ml, mr, mt, mb] = MARGIN;
-    let (x0, x1, y0, y1) = (ml, WIDTH - mr, HEIGHT - mb, mt);
-    let sx = |t: f64| x0 + (t - t0) / (t1 - t0) * (x1 - x0);
-    let sy = |l: f64| y0 + (l - lo) / (hi - lo) * (y1 - y0);
-
-    let q = data.quantity;
-    let unit_suffix = if q.unit == "°" {
-        "°".to_owned()
-    } else {
-        format!(" {}", q.unit)
-    };
+    let axes = Axes::of(data);
+    let (x0, x1) = axes.x;
     let mut s = String::new();
     // Writing to a String cannot fail.
     let _ = writeln!(
@@ -164,19 +189,36 @@ pub fn svg(data: &PlotData) -> String {
         0.5 * (x0 + x1),
         escape(data.title)
     );
-    // Grid and ticks.
-    let x_ticks = nice_ticks(t0, t1, 8);
-    let y_ticks = nice_ticks(lo, hi, 6);
-    let x_step = x_ticks
-        .windows(2)
-        .map(|w| w[1] - w[0])
-        .next()
-        .unwrap_or(1.0);
-    let y_step = y_ticks
-        .windows(2)
-        .map(|w| w[1] - w[0])
-        .next()
-        .unwrap_or(0.1);
+    grid_and_ticks(&mut s, &axes);
+    axis_titles(&mut s, &axes, data);
+    limit_lines(&mut s, &axes, data);
+    curves(&mut s, &axes, data);
+    if let Some(t) = data.marker {
+        let x = axes.sx(t.clamp(axes.t.0, axes.t.1));
+        let (y0, y1) = axes.y;
+        let _ = writeln!(
+            s,
+            r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="black" stroke-width="1.2"/>"#
+        );
+    }
+    legend(&mut s, &axes, &data.quantity);
+    s.push_str("</svg>\n");
+    s
+}
+
+/// The grid lines and the tick labels of both axes.
+fn grid_and_ticks(s: &mut String, axes: &Axes) {
+    let ((x0, x1), (y0, y1)) = (axes.x, axes.y);
+    let x_ticks = nice_ticks(axes.t.0, axes.t.1, 8);
+    let y_ticks = nice_ticks(axes.v.0, axes.v.1, 6);
+    let step = |ticks: &[f64], otherwise| {
+        ticks
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .next()
+            .unwrap_or(otherwise)
+    };
+    let (x_step, y_step) = (step(&x_ticks, 1.0), step(&y_ticks, 0.1));
     let _ = writeln!(
         s,
         r##"<g class="grid" stroke="#e0e0e0" stroke-width="0.6">"##
@@ -185,14 +227,14 @@ pub fn svg(data: &PlotData) -> String {
         let _ = writeln!(
             s,
             r#"<line x1="{0:.2}" y1="{y0:.2}" x2="{0:.2}" y2="{y1:.2}"/>"#,
-            sx(t)
+            axes.sx(t)
         );
     }
     for &l in &y_ticks {
         let _ = writeln!(
             s,
             r#"<line x1="{x0:.2}" y1="{0:.2}" x2="{x1:.2}" y2="{0:.2}"/>"#,
-            sy(l)
+            axes.sy(l)
         );
     }
     let _ = writeln!(s, "</g>");
@@ -201,7 +243,7 @@ pub fn svg(data: &PlotData) -> String {
         let _ = writeln!(
             s,
             r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
-            sx(t),
+            axes.sx(t),
             y0 + 15.0,
             label(t, x_step)
         );
@@ -211,11 +253,17 @@ pub fn svg(data: &PlotData) -> String {
             s,
             r#"<text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
             x0 - 6.0,
-            sy(l) + 4.0,
+            axes.sy(l) + 4.0,
             label(l, y_step)
         );
     }
     let _ = writeln!(s, "</g>");
+}
+
+/// The axes' box and titles.
+fn axis_titles(s: &mut String, axes: &Axes, data: &PlotData) {
+    let ((x0, x1), (y0, y1)) = (axes.x, axes.y);
+    let q = data.quantity;
     let _ = writeln!(
         s,
         r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="black" stroke-width="0.8"/>"#,
@@ -237,11 +285,21 @@ pub fn svg(data: &PlotData) -> String {
         q.symbol,
         q.unit
     );
-    // Stroke or servo range.
+}
+
+/// The stroke's or servo range's ends, dashed and labelled.
+fn limit_lines(s: &mut String, axes: &Axes, data: &PlotData) {
+    let (x0, x1) = axes.x;
+    let q = data.quantity;
+    let unit_suffix = if q.unit == "°" {
+        "°".to_owned()
+    } else {
+        format!(" {}", q.unit)
+    };
     let [min, max] = data.limits;
     for (name, limit) in [("min", min), ("max", max)] {
         if let Some(l) = limit {
-            let y = sy(l);
+            let y = axes.sy(l);
             let _ = writeln!(
                 s,
                 r##"<line class="stroke-{name}" x1="{x0:.2}" y1="{y:.2}" x2="{x1:.2}" y2="{y:.2}" stroke="#444" stroke-width="1" stroke-dasharray="5 3"/>"##
@@ -257,7 +315,11 @@ pub fn svg(data: &PlotData) -> String {
             );
         }
     }
-    // Curves: one polyline per run of values (a servo out of reach breaks its curve).
+}
+
+/// One polyline per actuator and run of values (a servo out of reach breaks its curve).
+fn curves(s: &mut String, axes: &Axes, data: &PlotData) {
+    let q = data.quantity;
     for leg in 0..6 {
         let mut points = String::with_capacity(data.values.len() * 16);
         let flush = |points: &mut String, s: &mut String| {
@@ -275,24 +337,21 @@ pub fn svg(data: &PlotData) -> String {
         };
         for (t, l) in data.times.iter().zip(data.values) {
             if l[leg].is_nan() {
-                flush(&mut points, &mut s);
+                flush(&mut points, s);
             } else {
-                let _ = write!(points, "{:.2},{:.2} ", sx(*t), sy(l[leg]));
+                let _ = write!(points, "{:.2},{:.2} ", axes.sx(*t), axes.sy(l[leg]));
             }
         }
-        flush(&mut points, &mut s);
+        flush(&mut points, s);
     }
-    if let Some(t) = data.marker {
-        let x = sx(t.clamp(t0, t1));
-        let _ = writeln!(
-            s,
-            r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="black" stroke-width="1.2"/>"#
-        );
-    }
-    // Legend, right of the axes.
+}
+
+/// The legend, right of the axes.
+fn legend(s: &mut String, axes: &Axes, q: &Quantity) {
+    let x1 = axes.x.1;
     let _ = writeln!(s, r#"<g class="legend">"#);
     for (leg, colour) in (0..6).map(|k| (k, leg_colour_hex(k))) {
-        let y = y1 + 14.0 + 16.0 * leg as f64;
+        let y = axes.y.1 + 14.0 + 16.0 * leg as f64;
         let _ = writeln!(
             s,
             r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="{}" stroke-width="2"/><text x="{:.2}" y="{:.2}">{}{}</text>"#,
@@ -306,8 +365,6 @@ pub fn svg(data: &PlotData) -> String {
         );
     }
     let _ = writeln!(s, "</g>");
-    s.push_str("</svg>\n");
-    s
 }
 
 pub(crate) fn escape(text: &str) -> String {

@@ -193,7 +193,14 @@ pub fn svg(fig: &WorkspaceFigure) -> String {
 
 /// One slice: coloured runs, boundary, centre, axes.
 fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
-    let t = fig.lang;
+    cells(s, fig, sl, f);
+    boundary(s, sl, f);
+    centre_mark(s, fig, sl, f);
+    panel_axes(s, fig, sl, f);
+}
+
+/// The reachable cells in their colours, a rectangle per run of one colour in a row.
+fn cells(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
     let [nx, ny] = sl.cells;
     let cw = (sl.range[0][1] - sl.range[0][0]) / nx as f64;
     let ch = (sl.range[1][1] - sl.range[1][0]) / ny as f64;
@@ -228,7 +235,13 @@ fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
         }
     }
     let _ = writeln!(s, "</g>");
-    // The boundary: every cell edge between a reachable cell and one out of reach.
+}
+
+/// The boundary: every cell edge between a reachable cell and one out of reach.
+fn boundary(s: &mut String, sl: &Slice, f: &Frame) {
+    let [nx, ny] = sl.cells;
+    let cw = (sl.range[0][1] - sl.range[0][0]) / nx as f64;
+    let ch = (sl.range[1][1] - sl.range[1][0]) / ny as f64;
     let reach = |i: isize, j: isize| {
         i >= 0
             && j >= 0
@@ -273,7 +286,10 @@ fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
         s,
         r#"<path class="boundary" d="{d}" stroke="black" stroke-width="0.9" fill="none"/>"#
     );
-    // The platform centre.
+}
+
+/// A cross at the platform centre.
+fn centre_mark(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
     let (cx, cy) = match sl.plane {
         Plane::Horizontal => (fig.centre[0], fig.centre[1]),
         Plane::Vertical => (fig.centre[0], fig.centre[2]),
@@ -287,7 +303,11 @@ fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
         py - 5.0,
         py + 5.0
     );
-    // Axes: a frame, ticks in metres, labels.
+}
+
+/// The panel's frame, ticks in metres, axis labels and title.
+fn panel_axes(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+    let t = fig.lang;
     let (x0, x1) = (f.x(sl.range[0][0]), f.x(sl.range[0][1]));
     let (y0, y1) = (f.y(sl.range[1][0]), f.y(sl.range[1][1]));
     let _ = writeln!(
