@@ -6,6 +6,13 @@
 //! plane, pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment
 //! from `b_i` to `q_i = p + c + R (a_i − c)` (`c` the pivot, zero in the seed).
 //!
+//! The tree shows the layers (see ARCHITECTURE.md): [`model`] — the platform and its
+//! motion as data; [`solve`] — inverse and forward kinematics, batches, Jacobians and what
+//! the actuators do at a pose; [`analysis`] — what is computed from a model (checks,
+//! workspace, design, forces, calibration); [`io`] — files and user input (scenarios,
+//! settings, tables, text, accepted ranges). Each module is also reachable at the crate's
+//! root (`stewart_kinematics::workspace`), as before the layers.
+//!
 //! - [`angle`]: angles whose unit is carried by the type;
 //! - [`geometry`], [`layout`]: the platform and its named joint layouts;
 //! - [`pose`], [`inverse`], [`batch`]: poses and inverse kinematics, one or millions;
@@ -23,34 +30,18 @@
 //! - [`table`]: numeric CSV tables with located errors;
 //! - [`text`]: input text with a size cap and plain words for foreign encodings.
 
-pub mod actuation;
-pub mod angle;
-pub mod architecture;
-pub mod batch;
-pub mod bounds;
-pub mod calibration;
-pub mod checks;
-pub mod design;
-pub mod differences;
-mod fast_trig;
-pub mod forces;
-pub mod forward;
-pub mod geometry;
-pub mod inverse;
-pub mod jacobian;
-pub mod layout;
-pub mod limits;
-pub mod link_settings;
-pub mod pose;
-pub mod rotary;
-pub mod scenario;
-pub mod scene;
-pub mod settings;
-pub mod sound_layout;
-pub mod table;
-pub mod text;
-pub mod trajectory;
-pub mod workspace;
+pub mod analysis;
+pub mod io;
+pub mod model;
+pub mod solve;
+
+pub use analysis::{
+    architecture, calibration, checks, design, differences, forces, sound_layout, workspace,
+};
+pub use io::{bounds, scenario, settings, table, text};
+pub use model::{angle, geometry, layout, limits, link_settings, pose, rotary, scene, trajectory};
+pub(crate) use solve::fast_trig;
+pub use solve::{actuation, batch, forward, inverse, jacobian};
 
 #[cfg(test)]
 mod test_support;

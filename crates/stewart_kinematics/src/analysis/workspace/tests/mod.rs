@@ -359,3 +359,6 @@ fn the_error_bound_covers_the_real_error_at_every_resolution() {
     }
     assert!(misses.is_empty(), "{}", misses.join("\n"));
 }
+
+/// Under cone and clearance limits, against a brute force of their own.
+mod limits;

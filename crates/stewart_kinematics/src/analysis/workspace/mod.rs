@@ -556,8 +556,6 @@ pub enum Axis {
 }
 
 mod column;
-#[cfg(test)]
-mod limit_tests;
 mod limited;
 pub mod reach;
 mod roots;

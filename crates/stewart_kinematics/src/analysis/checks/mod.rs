@@ -19,10 +19,10 @@ pub mod rates;
 pub mod rigid;
 mod scan;
 pub mod servos;
-#[cfg(test)]
-mod servos_tests;
 pub mod singularity;
 pub mod stroke;
+#[cfg(test)]
+mod tests;
 
 use serde::{Deserialize, Serialize};
 

@@ -1,0 +1,13 @@
+//! The platform and its motion as data: angles and poses, the geometry and its layouts,
+//! the actuators (linear legs or rotary servos), pose limits, trajectories, the `[link]`
+//! table, and the scene to draw.
+
+pub mod angle;
+pub mod geometry;
+pub mod layout;
+pub mod limits;
+pub mod link_settings;
+pub mod pose;
+pub mod rotary;
+pub mod scene;
+pub mod trajectory;
