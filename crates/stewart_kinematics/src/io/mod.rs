@@ -1,7 +1,10 @@
 //! Files and user input: scenario files and presets, the settings every number is declared
-//! in, numeric CSV tables, input text, and the accepted range of every kind of number.
+//! in, numeric CSV tables, input text, and the accepted range of every kind of number;
+//! `load` reads a scenario (file, preset or text) and applies the settings' ranges, above
+//! both so that the file format and the settings do not depend on each other.
 
 pub mod bounds;
+mod load;
 pub mod scenario;
 pub mod settings;
 pub mod table;

@@ -78,7 +78,7 @@ impl Source<'_> {
     }
 }
 
-pub(super) fn parse(
+pub(crate) fn parse(
     text: &str,
     file: &str,
     base_dir: Option<&Path>,
@@ -136,15 +136,13 @@ pub(super) fn parse(
         checks,
         link,
     };
-    // Values no constructor refused may still be absurd (a 1e300 m radius).
-    if let Some((setting, reason)) = crate::settings::out_of_range(&scenario) {
-        return Err(src.invalid(
-            super::locate::span_of(text, &setting.key),
-            &setting.key,
-            reason,
-        ));
-    }
     Ok(scenario)
+}
+
+/// The error for the value of `key` in `text` (the file `file`), refused for `reason`,
+/// located at the key when the text has it.
+pub(crate) fn invalid_key(text: &str, file: &str, key: &str, reason: String) -> ScenarioError {
+    Source { text, file }.invalid(super::locate::span_of(text, key), key, reason)
 }
 
 fn angles(src: &Source, field: &str, v: &Spanned<Vec<f64>>) -> Result<[Angle; 6], ScenarioError> {

@@ -33,14 +33,12 @@
 //!
 //! See `assets/presets/` for a file of every trajectory kind and README.md for every key.
 
-mod build;
+pub(crate) mod build;
 mod error;
 mod file;
 mod locate;
 pub mod presets;
 mod write;
-
-use std::path::Path;
 
 pub use error::{ScenarioError, ScenarioProblem};
 
@@ -86,47 +84,6 @@ impl Scenario {
             checks: CheckSettings::default(),
             link: LinkSettings::default(),
         }
-    }
-
-    /// Parse a scenario from TOML text. `file` names it in errors; a pose table's
-    /// relative path is resolved against `base_dir` (the current folder when `None`).
-    pub fn from_toml_str(
-        text: &str,
-        file: &str,
-        base_dir: Option<&Path>,
-    ) -> Result<Self, ScenarioError> {
-        build::parse(text, file, base_dir)
-    }
-
-    /// Load a scenario file.
-    pub fn load(path: &Path) -> Result<Self, ScenarioError> {
-        let name = path.display().to_string();
-        let unreadable = |message: String| ScenarioError {
-            file: name.clone(),
-            line: None,
-            column: None,
-            problem: Box::new(ScenarioProblem::Unreadable(message)),
-        };
-        let file =
-            std::fs::File::open(path).map_err(|e| unreadable(format!("cannot be read ({e})")))?;
-        let bytes =
-            crate::text::read_capped(file, crate::text::MAX_SCENARIO_BYTES).map_err(unreadable)?;
-        let text = crate::text::decode(bytes).map_err(unreadable)?;
-        Self::from_toml_str(&text, &name, path.parent())
-    }
-
-    /// A shipped preset by name.
-    pub fn preset(name: &str) -> Result<Self, ScenarioError> {
-        let text = presets::text(name).ok_or_else(|| ScenarioError {
-            file: format!("preset `{name}`"),
-            line: None,
-            column: None,
-            problem: Box::new(ScenarioProblem::UnknownPreset {
-                name: name.to_owned(),
-                known: presets::names().collect::<Vec<_>>().join(", "),
-            }),
-        })?;
-        Self::from_toml_str(text, &format!("preset `{name}`"), None)
     }
 
     /// The scenario as TOML text that [`Scenario::from_toml_str`] reads back to an equal

@@ -1,0 +1,57 @@
+//! Reading a scenario: a file, a preset or TOML text becomes a [`Scenario`] whose every
+//! value lies in its accepted range. Above both the file format (`scenario`) and the
+//! settings (whose ranges it applies), so neither depends on the other.
+
+use std::path::Path;
+
+use crate::scenario::build;
+use crate::scenario::presets;
+use crate::scenario::{Scenario, ScenarioError, ScenarioProblem};
+
+impl Scenario {
+    /// Parse a scenario from TOML text. `file` names it in errors; a pose table's
+    /// relative path is resolved against `base_dir` (the current folder when `None`).
+    pub fn from_toml_str(
+        text: &str,
+        file: &str,
+        base_dir: Option<&Path>,
+    ) -> Result<Self, ScenarioError> {
+        let scenario = build::parse(text, file, base_dir)?;
+        // Values no constructor refused may still be absurd (a 1e300 m radius).
+        if let Some((setting, reason)) = crate::settings::out_of_range(&scenario) {
+            return Err(build::invalid_key(text, file, &setting.key, reason));
+        }
+        Ok(scenario)
+    }
+
+    /// Load a scenario file.
+    pub fn load(path: &Path) -> Result<Self, ScenarioError> {
+        let name = path.display().to_string();
+        let unreadable = |message: String| ScenarioError {
+            file: name.clone(),
+            line: None,
+            column: None,
+            problem: Box::new(ScenarioProblem::Unreadable(message)),
+        };
+        let file =
+            std::fs::File::open(path).map_err(|e| unreadable(format!("cannot be read ({e})")))?;
+        let bytes =
+            crate::text::read_capped(file, crate::text::MAX_SCENARIO_BYTES).map_err(unreadable)?;
+        let text = crate::text::decode(bytes).map_err(unreadable)?;
+        Self::from_toml_str(&text, &name, path.parent())
+    }
+
+    /// A shipped preset by name.
+    pub fn preset(name: &str) -> Result<Self, ScenarioError> {
+        let text = presets::text(name).ok_or_else(|| ScenarioError {
+            file: format!("preset `{name}`"),
+            line: None,
+            column: None,
+            problem: Box::new(ScenarioProblem::UnknownPreset {
+                name: name.to_owned(),
+                known: presets::names().collect::<Vec<_>>().join(", "),
+            }),
+        })?;
+        Self::from_toml_str(text, &format!("preset `{name}`"), None)
+    }
+}
