@@ -115,11 +115,12 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
     assert_eq!(h.state().scenario(), &before);
     assert!(
         h.state()
+            .doc
             .edit_error
             .as_ref()
             .is_some_and(|(_, e)| e.contains("times must increase")),
         "{:?}",
-        h.state().edit_error
+        h.state().doc.edit_error
     );
     assert!(h.query_by_label_contains("times must increase").is_some());
 }

@@ -81,6 +81,7 @@ impl ViewerState {
                     ))
                 } else {
                     Err(self
+                        .doc
                         .edit_error
                         .as_ref()
                         .map_or_else(String::new, |(_, why)| format!("{name}: {why}")))
@@ -99,7 +100,7 @@ impl ViewerState {
             .map(|()| lang.fmt("scenario.saved", &[("path", &full.display())]))
             .map_err(|e| format!("{e:#}"));
         if written.is_ok() {
-            self.mark_saved();
+            self.doc.mark_saved();
             self.files.path = full.display().to_string();
             self.files.current = Some(full);
         }

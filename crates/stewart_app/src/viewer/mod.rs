@@ -17,6 +17,7 @@
 pub mod assembly;
 pub mod derived;
 pub mod design;
+pub mod document;
 pub mod export_job;
 pub mod exports;
 mod file_actions;

@@ -10,11 +10,11 @@
 use nalgebra::Vector3;
 
 use stewart_kinematics::link_settings::LinkSettings;
-use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
+use stewart_kinematics::settings::{Group, Setting, TrajectoryChoice};
 use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
 
-use super::derived::Derived;
+use super::document::Document;
 use super::exports::Exports;
 use super::files::Files;
 use super::live_link::{Drive, LiveLink};
@@ -25,11 +25,8 @@ use crate::export::frames::default_camera;
 
 /// Everything the viewer shows.
 pub struct ViewerState {
-    scenario: Scenario,
-    /// The scenario as loaded (preset or file) or saved last: titles say "edited" when
-    /// the scenario shown differs from it.
-    as_loaded: Scenario,
-    derived: Derived,
+    /// The scenario, its undo history, what is derived from it and the last refused edit.
+    pub doc: Document,
     /// Playback and the manual pose.
     pub playback: Playback,
     /// Camera, colours, presentation mode, overlays.
@@ -38,8 +35,6 @@ pub struct ViewerState {
     pub files: Files,
     /// The Export panel.
     pub exports: Exports,
-    /// Why the last edit was refused (the scenario then stayed as it was).
-    pub edit_error: Option<(Group, String)>,
     /// The link to hardware.
     pub link: LiveLink,
     /// Why the last edit of `[link]` was refused.
@@ -60,8 +55,6 @@ pub struct ViewerState {
     pub assembly_error: Option<super::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     reach: super::reach::ReachCache,
-    /// The edits that can be undone and redone.
-    pub undo: super::undo::Undo,
 }
 
 /// The saved session's state in this run.
@@ -99,12 +92,10 @@ impl ViewerState {
     /// The viewer on `scenario`, playing its trajectory from the start.
     pub fn new(scenario: Scenario) -> Self {
         Self {
-            derived: Derived::new(&scenario),
             playback: Playback::new(scenario.geometry.home_pose()),
             look: Look::new(default_camera(&scenario)),
             files: Files::default(),
             exports: Exports::default(),
-            edit_error: None,
             link: LiveLink::default(),
             link_error: None,
             teleop: Teleop {
@@ -124,40 +115,25 @@ impl ViewerState {
             assembly: super::assembly::AssemblyBrowser::default(),
             assembly_error: None,
             reach: super::reach::ReachCache::default(),
-            undo: super::undo::Undo::default(),
-            as_loaded: scenario.clone(),
-            scenario,
+            doc: Document::new(scenario),
         }
     }
 
     /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
     /// as edited when the scenario differs from the preset or file it came from.
     pub fn title(&self) -> String {
-        if self.scenario == self.as_loaded {
-            self.scenario.name.clone()
-        } else {
-            self.look
-                .lang
-                .fmt("scenario.edited_name", &[("name", &self.scenario.name)])
-        }
-    }
-
-    /// What was saved is now what the scenario came from (its title loses "edited").
-    pub fn mark_saved(&mut self) {
-        self.as_loaded = self.scenario.clone();
+        self.doc.title(self.look.lang)
     }
 
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
     /// sound (else the reason shows in the Link panel).
     pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
-        let mut link = self.scenario.link.clone();
+        let mut link = self.doc.scenario().link.clone();
         change(&mut link);
         match link.problem() {
-            None if link == self.scenario.link => self.link_error = None,
             None => {
                 // An edit like any other (undoable); nothing derived depends on `[link]`.
-                self.undo.record(&self.scenario);
-                self.scenario.link = link;
+                self.doc.edit_link(link);
                 self.link_error = None;
             }
             Some(p) => self.link_error = Some(format!("`{}` {}", p.key, p.reason)),
@@ -172,7 +148,7 @@ impl ViewerState {
             return;
         }
         let (pose, blocked) = teleop::step(
-            &self.scenario.geometry,
+            &self.doc.scenario().geometry,
             &self.playback.manual,
             &command,
             self.teleop.rates,
@@ -192,7 +168,7 @@ impl ViewerState {
         } else {
             Vec::new()
         };
-        let frame = self.scenario.geometry.scene_frame(&self.pose(), path);
+        let frame = self.doc.scenario().geometry.scene_frame(&self.pose(), path);
         let overlays = stewart_render::Overlays {
             platform_axes: self.look.platform_axes,
             path: self.look.show_path,
@@ -203,7 +179,11 @@ impl ViewerState {
         };
         let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
         if let Some(measured) = self.link.measured_pose() {
-            let ghost = self.scenario.geometry.scene_frame(&measured, Vec::new());
+            let ghost = self
+                .doc
+                .scenario()
+                .geometry
+                .scene_frame(&measured, Vec::new());
             list.ghost(&ghost, theme);
         }
         if self.workspace.show
@@ -215,12 +195,12 @@ impl ViewerState {
             }
         }
         if self.look.readouts {
-            let start = self.scenario.motion.sampling.start();
+            let start = self.doc.scenario().motion.sampling.start();
             let time = trajectory.then_some(start + self.playback.time);
             let text = crate::readout::lines(
                 self.look.lang,
                 &self.title(),
-                &self.scenario.geometry,
+                &self.doc.scenario().geometry,
                 time,
                 &self.pose(),
             );
@@ -234,7 +214,7 @@ impl ViewerState {
     /// on; the outcome shows in the menu.
     pub fn take_screenshot(&mut self) {
         use super::shots::{ShotKind, next_path};
-        let path = next_path(&self.shots.folder, &self.scenario.name);
+        let path = next_path(&self.shots.folder, &self.doc.scenario().name);
         match self.shots.kind {
             ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
             ShotKind::View => {
@@ -265,79 +245,52 @@ impl ViewerState {
     pub fn connect_link(&mut self) {
         let drive = self.drive();
         let looping = self.playback.looping;
-        self.link.connect(&self.scenario, drive, looping);
+        self.link.connect(self.doc.scenario(), drive, looping);
     }
 
     /// The scenario shown.
     pub fn scenario(&self) -> &Scenario {
-        &self.scenario
+        self.doc.scenario()
     }
 
-    /// Change the scenario: `change` works on a copy; when it succeeds and every value
-    /// lies in its accepted range, the copy replaces the scenario and everything derived
-    /// is rebuilt; otherwise the reason is recorded under `group` and nothing changes.
-    /// Returns whether the change was applied.
+    /// Change the scenario through the document's one edit path ([`Document::edit`]);
+    /// playback stays within the new duration. Returns whether the change was applied.
     pub fn edit(
         &mut self,
         group: Group,
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
     ) -> bool {
-        let mut edited = self.scenario.clone();
-        let checked = change(&mut edited).and_then(|()| match settings::out_of_range(&edited) {
-            Some((setting, reason)) => Err(format!("`{}` {reason}", setting.key)),
-            None => Ok(()),
-        });
-        match checked {
-            Ok(()) => {
-                self.undo.record(&self.scenario);
-                self.scenario = edited;
-                self.edit_error = None;
-                self.rebuild();
-                true
-            }
-            Err(reason) => {
-                self.edit_error = Some((group, reason));
-                false
-            }
-        }
+        let applied = self.doc.edit(group, change);
+        self.keep_time_in_range();
+        applied
     }
 
     /// Write one setting (`None`: switch an optional one off).
     pub fn apply(&mut self, setting: &Setting, value: Option<f64>) {
-        self.edit(setting.group, |s| {
-            setting.set(s, value).map_err(|e| e.to_string())
-        });
+        self.doc.apply(setting, value);
+        self.keep_time_in_range();
     }
 
     /// Replace the geometry's numbers.
     pub fn set_geometry(&mut self, params: GeometryParams) {
-        self.edit(Group::Geometry, |s| {
-            s.geometry = stewart_kinematics::Geometry::new(params).map_err(|e| e.to_string())?;
-            Ok(())
-        });
+        self.doc.set_geometry(params);
     }
 
-    /// The nearest layout that is not architecturally singular (see
-    /// [`stewart_kinematics::sound_layout`]): the layout and the largest joint move, degrees.
+    /// The nearest layout that is not architecturally singular: the layout and the
+    /// largest joint move, degrees.
     pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
-        self.derived
-            .sound_layout(&self.scenario)
-            .map(|s| (s.layout, s.moved_deg))
+        self.doc.sound_layout()
     }
 
-    /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
-    /// goes back to a circle of its size).
+    /// Rewrite all twelve joint angles from a named layout.
     pub fn set_layout(&mut self, layout: Layout) {
-        let params = self.scenario.geometry.params_with_layout(layout);
-        self.set_geometry(params);
+        self.doc.set_layout(layout);
     }
 
     /// Switch to another kind of trajectory with its default numbers.
     pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) {
-        self.edit(Group::Trajectory, |s| {
-            settings::switch_trajectory(s, choice);
-            Ok(())
-        });
+        self.doc.switch_trajectory(choice);
+        self.keep_time_in_range();
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
@@ -351,12 +304,8 @@ impl ViewerState {
         self.playback.manual = scenario.geometry.home_pose();
         self.playback.time = 0.0;
         self.playback.history.clear();
-        self.undo.record(&self.scenario);
-        self.undo.seal();
-        self.as_loaded = scenario.clone();
-        self.scenario = scenario;
-        self.edit_error = None;
-        self.rebuild();
+        self.doc.replace(scenario);
+        self.keep_time_in_range();
     }
 
     /// Forget the saved session and return the look, camera and panels to their defaults
@@ -369,84 +318,83 @@ impl ViewerState {
         }
         self.session.forgotten = true;
         let missing = self.look.renderer_missing.take();
-        self.look = Look::new(default_camera(&self.scenario));
+        self.look = Look::new(default_camera(self.doc.scenario()));
         self.look.renderer_missing = missing;
     }
 
     /// Go back one edit (Ctrl+Z); returns whether there was one.
     pub fn undo_edit(&mut self) -> bool {
-        let Some(before) = self.undo.undo(&self.scenario) else {
+        let Some(left) = self.doc.undo() else {
             return false;
         };
-        self.restore_scenario(before);
+        self.after_restore(&left);
         true
     }
 
     /// Do again the edit undone last (Ctrl+Shift+Z, Ctrl+Y); returns whether there was one.
     pub fn redo_edit(&mut self) -> bool {
-        let Some(after) = self.undo.redo(&self.scenario) else {
+        let Some(left) = self.doc.redo() else {
             return false;
         };
-        self.restore_scenario(after);
+        self.after_restore(&left);
         true
     }
 
-    /// Undo's way of putting a scenario back: as an edit (playback and camera stay), unless
-    /// it is another platform (a preset or file loaded), which is shown from its start.
-    fn restore_scenario(&mut self, scenario: Scenario) {
-        if scenario.name != self.scenario.name {
+    /// After undo or redo put a scenario back (leaving `left`): as an edit (playback and
+    /// camera stay), unless it is another platform (a preset or file loaded), which is
+    /// shown from its start.
+    fn after_restore(&mut self, left: &Scenario) {
+        let scenario = self.doc.scenario();
+        if scenario.name != left.name {
             self.link.disconnect();
-            self.look.camera = default_camera(&scenario);
+            self.look.camera = default_camera(scenario);
             self.playback.manual = scenario.geometry.home_pose();
             self.playback.time = 0.0;
             self.playback.history.clear();
         }
-        self.teleop.rates = Rates::for_geometry(&scenario.geometry);
-        self.scenario = scenario;
-        self.edit_error = None;
-        self.rebuild();
+        self.teleop.rates = Rates::for_geometry(&self.doc.scenario().geometry);
+        self.keep_time_in_range();
     }
 
-    fn rebuild(&mut self) {
-        self.derived.rebuild(&self.scenario);
+    /// Playback stays within the trajectory after it changed.
+    fn keep_time_in_range(&mut self) {
         self.playback.time = self.playback.time.clamp(0.0, self.duration());
     }
 
     /// Whether some plotted value of the trajectory lies beyond a stroke or servo limit.
     pub fn beyond_limits(&self) -> bool {
-        self.derived.beyond_limits
+        self.doc.beyond_limits()
     }
 
     /// The named layout of the joint angles, `None` when they were edited one by one
     /// into no named layout.
     pub fn layout(&self) -> Option<Layout> {
-        self.derived.layout
+        self.doc.layout()
     }
 
-    /// Times and leg lengths for the plot (thinned to at most
-    /// [`super::derived::PLOT_SAMPLES`]).
+    /// Times and leg lengths for the plot.
     pub fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
-        (&self.derived.times, &self.derived.lengths)
+        self.doc.plot_samples()
     }
 
     /// The pre-flight report of the trajectory, once computed (off the UI thread).
     pub fn report(&self) -> Option<&CheckReport> {
-        self.derived.report()
+        self.doc.report()
     }
 
     /// Whether the report is still being computed.
     pub fn report_pending(&self) -> bool {
-        self.derived.report_pending()
+        self.doc.report_pending()
     }
 
     /// Block until the report is in (screenshots and tests want a settled picture).
     pub fn wait_for_report(&mut self) {
-        self.derived.wait_for_report();
+        self.doc.wait_for_report();
     }
 
     /// Collect what background work has finished: the report, an export. Never blocks.
     pub fn poll(&mut self) {
-        self.derived.poll();
+        self.doc.poll();
         self.exports.poll();
         self.link.lang = self.look.lang;
         self.link.poll();
@@ -475,8 +423,8 @@ impl ViewerState {
     pub fn slider_reach(&mut self, bounds: [[f64; 2]; 6]) -> [Option<[f64; 2]>; 6] {
         let pose = self.pose();
         self.reach.sliders(
-            &self.scenario.geometry,
-            &self.scenario.limits,
+            &self.doc.scenario().geometry,
+            &self.doc.scenario().limits,
             &pose,
             bounds,
         )
@@ -486,7 +434,11 @@ impl ViewerState {
     pub fn orientation_reach(&mut self) -> super::reach::OrientationReach {
         let pose = self.pose();
         self.reach
-            .orientation(&self.scenario.geometry, &self.scenario.limits, &pose)
+            .orientation(
+                &self.doc.scenario().geometry,
+                &self.doc.scenario().limits,
+                &pose,
+            )
             .clone()
     }
 
@@ -504,7 +456,7 @@ impl ViewerState {
 
     /// The platform centre of the pose shown, metres.
     pub fn centre(&self) -> Vector3<f64> {
-        self.scenario.geometry.platform_centre(&self.pose())
+        self.doc.scenario().geometry.platform_centre(&self.pose())
     }
 
     /// What the workspace is computed for now.
@@ -518,18 +470,18 @@ impl ViewerState {
             }
         });
         super::workspace::Request {
-            geometry: self.scenario.geometry.clone(),
-            limits: self.scenario.limits,
+            geometry: self.doc.scenario().geometry.clone(),
+            limits: self.doc.scenario().limits,
             orientation: self.workspace_orientation(),
             slice_at,
-            condition_max: self.scenario.checks.condition_max,
+            condition_max: self.doc.scenario().checks.condition_max,
             colour: stewart_render::theme::linear(self.theme().workspace),
         }
     }
 
     /// Duration of the trajectory, seconds.
     pub fn duration(&self) -> f64 {
-        self.scenario.motion.sampling.duration()
+        self.doc.scenario().motion.sampling.duration()
     }
 
     /// The pose shown now.
@@ -537,8 +489,9 @@ impl ViewerState {
         match self.playback.mode {
             MotionMode::Manual => self.playback.manual,
             MotionMode::Trajectory => {
-                let start = self.scenario.motion.sampling.start();
-                self.scenario
+                let start = self.doc.scenario().motion.sampling.start();
+                self.doc
+                    .scenario()
                     .motion
                     .trajectory
                     .pose_at(start + self.playback.time)
@@ -550,7 +503,7 @@ impl ViewerState {
     /// in another pose with the same actuators, in manual mode.
     pub fn next_assembly_mode(&mut self) {
         let pose = self.pose();
-        match self.assembly.next(&self.scenario.geometry, &pose) {
+        match self.assembly.next(&self.doc.scenario().geometry, &pose) {
             Ok(next) => {
                 self.playback.mode = MotionMode::Manual;
                 self.playback.manual = next;
@@ -565,14 +518,13 @@ impl ViewerState {
 
     /// The platform centre's path from the start of the trajectory up to now.
     pub fn path_until_now(&self) -> Vec<Vector3<f64>> {
-        let now = self.scenario.motion.sampling.start() + self.playback.time;
-        let done = self.derived.times.partition_point(|&t| t <= now);
-        self.derived.centres[..done.min(self.derived.centres.len())].to_vec()
+        let now = self.doc.scenario().motion.sampling.start() + self.playback.time;
+        self.doc.path_until(now)
     }
 
     /// Legs of the pose shown now.
     pub fn legs(&self) -> LegSolution {
-        self.scenario.geometry.inverse(&self.pose())
+        self.doc.scenario().geometry.inverse(&self.pose())
     }
 
     /// The colour theme (presentation mode is always light).
@@ -599,7 +551,7 @@ impl ViewerState {
         self.playback.clock += dt;
         if self.playback.mode == MotionMode::Manual {
             let pose = self.pose();
-            let values = self.scenario.geometry.actuator_values(&[pose]);
+            let values = self.doc.scenario().geometry.actuator_values(&[pose]);
             let clock = self.playback.clock;
             self.playback.history.push(clock, values[0]);
             return false;
@@ -610,7 +562,7 @@ impl ViewerState {
 
     /// Look from a standard direction (azimuth, elevation in degrees), keeping the framing.
     pub fn look_from(&mut self, azimuth_deg: f32, elevation_deg: f32) {
-        let framed = default_camera(&self.scenario);
+        let framed = default_camera(self.doc.scenario());
         self.look.camera = OrbitCamera {
             azimuth_deg,
             elevation_deg,
@@ -627,7 +579,7 @@ impl ViewerState {
             (true, None) => {
                 let before = self.look.camera;
                 self.look.camera_before_presentation = Some(before);
-                let times: Vec<f64> = self.scenario.motion.sampling.times().collect();
+                let times: Vec<f64> = self.doc.scenario().motion.sampling.times().collect();
                 let overlays = stewart_render::Overlays {
                     platform_axes: self.look.platform_axes,
                     ..stewart_render::Overlays::default()
@@ -635,7 +587,7 @@ impl ViewerState {
                 let angles = [before.azimuth_deg, before.elevation_deg];
                 let camera = match self.playback.mode {
                     MotionMode::Trajectory => crate::export::frames::motion_camera_from(
-                        &self.scenario,
+                        self.doc.scenario(),
                         &times,
                         &overlays,
                         aspect,
@@ -643,7 +595,7 @@ impl ViewerState {
                         angles,
                     ),
                     MotionMode::Manual => crate::export::frames::poses_camera(
-                        &self.scenario,
+                        self.doc.scenario(),
                         std::iter::once(self.pose()),
                         &overlays,
                         aspect,
@@ -663,7 +615,7 @@ impl ViewerState {
 
     /// Step playback by one trajectory sample (`direction` ±1).
     pub fn step(&mut self, direction: f64) {
-        let step = direction * self.scenario.motion.sampling.step();
+        let step = direction * self.doc.scenario().motion.sampling.step();
         let duration = self.duration();
         self.playback.step(step, duration);
     }
@@ -719,7 +671,8 @@ mod tests {
             "the layout controls still show the geometry"
         );
         assert!(
-            s.edit_error
+            s.doc
+                .edit_error
                 .as_ref()
                 .is_some_and(|(g, _)| *g == Group::Geometry)
         );
@@ -729,10 +682,11 @@ mod tests {
     fn joint_angles_edited_one_by_one_leave_no_stale_layout() {
         let mut s = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
         assert!(matches!(s.layout(), Some(Layout::Paired { .. })));
-        let key = settings::find("geometry.base_angles_deg[0]").unwrap_or_else(|e| panic!("{e}"));
+        let key = stewart_kinematics::settings::find("geometry.base_angles_deg[0]")
+            .unwrap_or_else(|e| panic!("{e}"));
         let now = key.get(s.scenario()).unwrap_or(0.0);
         s.apply(key, Some(now + 7.0));
-        assert_eq!(s.edit_error, None);
+        assert_eq!(s.doc.edit_error, None);
         assert_eq!(
             s.layout(),
             None,

@@ -5,42 +5,43 @@ use egui::RichText;
 use stewart_kinematics::settings::{self, ActuatorKey, GeometryKey, Target};
 
 use super::widgets::{ERROR, OK, WARNING};
-use crate::viewer::state::ViewerState;
+use crate::i18n::Lang;
+use crate::viewer::design::DesignTool;
+use crate::viewer::document::Document;
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel: the tool and the document it writes limits into, nothing else of the
+/// viewer's state.
+pub fn show(ui: &mut egui::Ui, tool: &mut DesignTool, doc: &mut Document, t: Lang, open: bool) {
     egui::CollapsingHeader::new(t.tr("design.heading"))
-        .default_open(state.look.expand_panels)
+        .default_open(open)
         .show(ui, |ui| {
-            envelope(ui, state);
-            let busy = state.design.busy();
+            envelope(ui, tool, doc, t);
+            let busy = tool.busy();
             if ui
                 .add_enabled(!busy, egui::Button::new(t.tr("design.compute")))
                 .on_hover_text(t.tr("design.compute_tip"))
                 .clicked()
             {
-                let geometry = state.scenario().geometry.clone();
-                state.design.start(&geometry);
+                let geometry = doc.scenario().geometry.clone();
+                tool.start(&geometry);
             }
             if busy {
                 ui.label(t.tr("design.searching"));
                 ui.ctx()
                     .request_repaint_after(std::time::Duration::from_millis(50));
             }
-            result(ui, state);
+            result(ui, tool, doc, t);
         });
 }
 
 /// The envelope: for each coordinate how far below and above home it reaches, in its
 /// unit; the command line that asks the same in the tooltip.
-fn envelope(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let home = state.scenario().geometry.home_pose();
-    let scale = state.scenario().geometry.characteristic_length();
+fn envelope(ui: &mut egui::Ui, tool: &mut DesignTool, doc: &Document, t: Lang) {
+    let home = doc.scenario().geometry.home_pose();
+    let scale = doc.scenario().geometry.characteristic_length();
     ui.label(t.tr("design.envelope")).on_hover_text(t.fmt(
         "design.envelope_tip",
-        &[("line", &state.design.command_line(&home))],
+        &[("line", &tool.command_line(&home))],
     ));
     egui::Grid::new("design-envelope")
         .num_columns(3)
@@ -50,7 +51,7 @@ fn envelope(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.label(t.tr("design.below"));
             ui.label(t.tr("design.above"));
             ui.end_row();
-            for (k, span) in state.design.spans.iter_mut().enumerate() {
+            for (k, span) in tool.spans.iter_mut().enumerate() {
                 let linear = k < 3;
                 let (unit, speed, decimals) = if linear {
                     ("m", 0.002 * scale, 3)
@@ -96,9 +97,8 @@ const POSE_WORDS: [&str; 6] = [
 
 /// The outcome: each actuator's range, the range needed, whether it fits, the worst
 /// conditioning, and the button that writes the range into the limits.
-fn result(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let report = match &state.design.result {
+fn result(ui: &mut egui::Ui, tool: &DesignTool, doc: &mut Document, t: Lang) {
+    let report = match &tool.result {
         None => return,
         Some(Err(e)) => {
             ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
@@ -106,7 +106,7 @@ fn result(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
         Some(Ok(report)) => report.clone(),
     };
-    let g = &state.scenario().geometry;
+    let g = &doc.scenario().geometry;
     let q = g.quantity();
     let (decimals, unit) = if q.unit == "m" { (4, " m") } else { (2, "°") };
     let range = |lo: f64, hi: f64| format!("{lo:.decimals$} .. {hi:.decimals$}{unit}");
@@ -163,8 +163,8 @@ fn result(ui: &mut egui::Ui, state: &mut ViewerState) {
             )
         };
         // Widen first, so that no intermediate stroke is inverted.
-        state.apply(settings::of(high), Some(hi.value.max(lo.value)));
-        state.apply(settings::of(low), Some(lo.value));
-        state.apply(settings::of(high), Some(hi.value));
+        doc.apply(settings::of(high), Some(hi.value.max(lo.value)));
+        doc.apply(settings::of(low), Some(lo.value));
+        doc.apply(settings::of(high), Some(hi.value));
     }
 }

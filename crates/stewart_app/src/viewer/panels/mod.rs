@@ -55,7 +55,13 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         legs::show(ui, state);
                         ui.separator();
                         diagnostics::show(ui, state);
-                        design::show(ui, state);
+                        design::show(
+                            ui,
+                            &mut state.design,
+                            &mut state.doc,
+                            state.look.lang,
+                            state.look.expand_panels,
+                        );
                         ui.separator();
                         workspace::show(ui, state);
                         reach::show(ui, state);
@@ -215,7 +221,7 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     // One gesture, one undo step: the step closes once no button is held.
     if !ui.input(|i| i.pointer.any_down()) {
-        state.undo.seal();
+        state.doc.undo.seal();
     }
     let shift = egui::Modifiers::COMMAND | egui::Modifiers::SHIFT;
     let (redo, undo) = ui.input_mut(|i| {

@@ -17,7 +17,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.heading(t.tr("scenario.heading"));
         let undo = ui
             .add_enabled(
-                state.undo.can_undo(),
+                state.doc.undo.can_undo(),
                 egui::Button::new(t.tr("scenario.undo")),
             )
             .on_hover_text(t.tr("scenario.undo_tip"));
@@ -26,7 +26,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
         let redo = ui
             .add_enabled(
-                state.undo.can_redo(),
+                state.doc.undo.can_redo(),
                 egui::Button::new(t.tr("scenario.redo")),
             )
             .on_hover_text(t.tr("scenario.redo_tip"));

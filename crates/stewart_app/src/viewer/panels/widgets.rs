@@ -195,7 +195,7 @@ pub fn status(ui: &mut egui::Ui, status: &Status) {
 
 /// Why the last edit in one of `groups` was refused, if it was.
 pub fn edit_error(ui: &mut egui::Ui, state: &ViewerState, groups: &[Group]) {
-    if let Some((group, e)) = &state.edit_error
+    if let Some((group, e)) = &state.doc.edit_error
         && groups.contains(group)
     {
         ui.label(

@@ -1,0 +1,211 @@
+//! The scenario being edited and what must change with it, as one part with its own
+//! invariants: every change goes through [`Document::edit`] (on a copy, validated as files
+//! are, recorded for undo, then everything derived rebuilt) or replaces the whole scenario
+//! ([`Document::replace`], [`Document::undo`], [`Document::redo`]); the derived cache
+//! (plot samples, layout, the pre-flight report) always belongs to the scenario shown; the
+//! scenario as loaded or saved last tells whether titles say "edited".
+//!
+//! The viewer's other parts (playback, camera, link) react to a replaced scenario in
+//! [`super::state::ViewerState`]; panels that only edit the scenario can take this part
+//! alone.
+
+use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
+use stewart_kinematics::{CheckReport, GeometryParams, Layout, Scenario};
+
+use super::derived::Derived;
+use super::undo::Undo;
+use crate::i18n::Lang;
+
+/// The scenario, its undo history, what is derived from it, and the last refused edit.
+pub struct Document {
+    scenario: Scenario,
+    /// The scenario as loaded (preset or file) or saved last.
+    as_loaded: Scenario,
+    derived: Derived,
+    /// The edits that can be undone and redone.
+    pub undo: Undo,
+    /// Why the last edit was refused (the scenario then stayed as it was).
+    pub edit_error: Option<(Group, String)>,
+}
+
+impl Document {
+    /// A document showing `scenario`, as loaded.
+    pub fn new(scenario: Scenario) -> Self {
+        Self {
+            derived: Derived::new(&scenario),
+            as_loaded: scenario.clone(),
+            scenario,
+            undo: Undo::default(),
+            edit_error: None,
+        }
+    }
+
+    /// The scenario shown.
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+
+    /// Change the scenario: `change` works on a copy; when it succeeds and every value
+    /// lies in its accepted range, the copy replaces the scenario (one undo step) and
+    /// everything derived is rebuilt; otherwise the reason is recorded under `group` and
+    /// nothing changes. Returns whether the change was applied.
+    pub fn edit(
+        &mut self,
+        group: Group,
+        change: impl FnOnce(&mut Scenario) -> Result<(), String>,
+    ) -> bool {
+        let mut edited = self.scenario.clone();
+        let checked = change(&mut edited).and_then(|()| match settings::out_of_range(&edited) {
+            Some((setting, reason)) => Err(format!("`{}` {reason}", setting.key)),
+            None => Ok(()),
+        });
+        match checked {
+            Ok(()) => {
+                self.undo.record(&self.scenario);
+                self.scenario = edited;
+                self.edit_error = None;
+                self.derived.rebuild(&self.scenario);
+                true
+            }
+            Err(reason) => {
+                self.edit_error = Some((group, reason));
+                false
+            }
+        }
+    }
+
+    /// Change the `[link]` table (already checked): an undo step, nothing derived to
+    /// rebuild (nothing depends on it); `false` when it is the same table.
+    pub fn edit_link(&mut self, link: stewart_kinematics::link_settings::LinkSettings) -> bool {
+        if link == self.scenario.link {
+            return false;
+        }
+        self.undo.record(&self.scenario);
+        self.scenario.link = link;
+        true
+    }
+
+    /// Write one setting (`None`: switch an optional one off).
+    pub fn apply(&mut self, setting: &Setting, value: Option<f64>) -> bool {
+        self.edit(setting.group, |s| {
+            setting.set(s, value).map_err(|e| e.to_string())
+        })
+    }
+
+    /// Replace the geometry's numbers.
+    pub fn set_geometry(&mut self, params: GeometryParams) -> bool {
+        self.edit(Group::Geometry, |s| {
+            s.geometry = stewart_kinematics::Geometry::new(params).map_err(|e| e.to_string())?;
+            Ok(())
+        })
+    }
+
+    /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
+    /// goes back to a circle of its size).
+    pub fn set_layout(&mut self, layout: Layout) -> bool {
+        let params = self.scenario.geometry.params_with_layout(layout);
+        self.set_geometry(params)
+    }
+
+    /// Switch to another kind of trajectory with its default numbers.
+    pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) -> bool {
+        self.edit(Group::Trajectory, |s| {
+            settings::switch_trajectory(s, choice);
+            Ok(())
+        })
+    }
+
+    /// Show another scenario (a preset or file loaded): one undo step of its own.
+    pub fn replace(&mut self, scenario: Scenario) {
+        self.undo.record(&self.scenario);
+        self.undo.seal();
+        self.as_loaded = scenario.clone();
+        self.put(scenario);
+    }
+
+    /// Go back one edit; the scenario it left, or `None` when there was none.
+    pub fn undo(&mut self) -> Option<Scenario> {
+        let before = self.undo.undo(&self.scenario)?;
+        Some(self.put(before))
+    }
+
+    /// Do again the edit undone last; the scenario it left, or `None` when there was none.
+    pub fn redo(&mut self) -> Option<Scenario> {
+        let after = self.undo.redo(&self.scenario)?;
+        Some(self.put(after))
+    }
+
+    /// Show `scenario` (derived rebuilt, no refusal pending); the one it replaced.
+    fn put(&mut self, scenario: Scenario) -> Scenario {
+        let old = std::mem::replace(&mut self.scenario, scenario);
+        self.edit_error = None;
+        self.derived.rebuild(&self.scenario);
+        old
+    }
+
+    /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
+    /// as edited (in `lang`) when the scenario differs from the preset or file it came from.
+    pub fn title(&self, lang: Lang) -> String {
+        if self.scenario == self.as_loaded {
+            self.scenario.name.clone()
+        } else {
+            lang.fmt("scenario.edited_name", &[("name", &self.scenario.name)])
+        }
+    }
+
+    /// What was saved is now what the scenario came from (its title loses "edited").
+    pub fn mark_saved(&mut self) {
+        self.as_loaded = self.scenario.clone();
+    }
+
+    /// The nearest layout that is not architecturally singular (see
+    /// [`stewart_kinematics::sound_layout`]): the layout and the largest joint move, degrees.
+    pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
+        self.derived
+            .sound_layout(&self.scenario)
+            .map(|s| (s.layout, s.moved_deg))
+    }
+
+    /// Whether some plotted value of the trajectory lies beyond a stroke or servo limit.
+    pub fn beyond_limits(&self) -> bool {
+        self.derived.beyond_limits
+    }
+
+    /// The named layout of the joint angles, `None` when they were edited one by one
+    /// into no named layout.
+    pub fn layout(&self) -> Option<Layout> {
+        self.derived.layout
+    }
+
+    /// Times and leg lengths for the plot (thinned to at most
+    /// [`super::derived::PLOT_SAMPLES`]).
+    pub fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
+        (&self.derived.times, &self.derived.lengths)
+    }
+
+    /// The pre-flight report of the trajectory, once computed (off the UI thread).
+    pub fn report(&self) -> Option<&CheckReport> {
+        self.derived.report()
+    }
+
+    /// Whether the report is still being computed.
+    pub fn report_pending(&self) -> bool {
+        self.derived.report_pending()
+    }
+
+    /// Block until the report is in (screenshots and tests want a settled picture).
+    pub fn wait_for_report(&mut self) {
+        self.derived.wait_for_report();
+    }
+
+    /// The platform centre's path over the sampled trajectory up to time `now`.
+    pub fn path_until(&self, now: f64) -> Vec<nalgebra::Vector3<f64>> {
+        let done = self.derived.times.partition_point(|&t| t <= now);
+        self.derived.centres[..done.min(self.derived.centres.len())].to_vec()
+    }
+
+    /// Collect a finished report; never blocks.
+    pub fn poll(&mut self) {
+        self.derived.poll();
+    }
+}
