@@ -50,7 +50,12 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         ui.separator();
                         motion::show(ui, state);
                         ui.separator();
-                        playback::show(ui, state);
+                        playback::show(
+                            ui,
+                            &mut state.playback,
+                            &state.doc.scenario().motion.sampling,
+                            state.look.lang,
+                        );
                         ui.separator();
                         legs::show(ui, state);
                         ui.separator();

@@ -1,11 +1,13 @@
 //! Playback: play/pause, step, scrub, speed, loop.
 
-use crate::viewer::state::ViewerState;
+use stewart_kinematics::Sampling;
+
+use crate::i18n::Lang;
+use crate::viewer::playback::Playback;
 
 /// Play or pause the trajectory (the toolbar's first button; Space does the same).
-pub(super) fn play_button(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let label = if state.playback.is_playing() {
+pub(super) fn play_button(ui: &mut egui::Ui, playback: &mut Playback, t: Lang) {
+    let label = if playback.is_playing() {
         t.tr("playback.pause")
     } else {
         t.tr("playback.play")
@@ -15,9 +17,9 @@ pub(super) fn play_button(ui: &mut egui::Ui, state: &mut ViewerState) {
         .on_hover_text(t.tr("playback.key_space"))
         .clicked()
     {
-        state.playback.toggle();
+        playback.toggle();
     }
-    if let Some(rate) = state.playback.skipping_frames() {
+    if let Some(rate) = playback.skipping_frames() {
         ui.label(
             egui::RichText::new(t.fmt("playback.skipping", &[("fps", &format!("{rate:.0}"))]))
                 .color(ui.visuals().warn_fg_color),
@@ -26,9 +28,9 @@ pub(super) fn play_button(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel: playback alone, stepping through `sampling`'s samples.
+pub fn show(ui: &mut egui::Ui, playback: &mut Playback, sampling: &Sampling, t: Lang) {
+    let duration = sampling.duration();
     ui.heading(t.tr("playback.heading"));
     ui.horizontal(|ui| {
         if ui
@@ -36,28 +38,27 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             .on_hover_text("←")
             .clicked()
         {
-            state.step(-1.0);
+            playback.step(-sampling.step(), duration);
         }
         if ui
             .button(t.tr("playback.step"))
             .on_hover_text("→")
             .clicked()
         {
-            state.step(1.0);
+            playback.step(sampling.step(), duration);
         }
         if ui
             .button(t.tr("playback.start"))
             .on_hover_text(t.tr("playback.key_home"))
             .clicked()
         {
-            state.playback.time = 0.0;
+            playback.time = 0.0;
         }
-        ui.checkbox(&mut state.playback.looping, t.tr("playback.loop"));
+        ui.checkbox(&mut playback.looping, t.tr("playback.loop"));
     });
-    let duration = state.duration();
-    ui.add(egui::Slider::new(&mut state.playback.time, 0.0..=duration).text(t.tr("playback.time")));
+    ui.add(egui::Slider::new(&mut playback.time, 0.0..=duration).text(t.tr("playback.time")));
     ui.add(
-        egui::Slider::new(&mut state.playback.speed, 0.1..=4.0)
+        egui::Slider::new(&mut playback.speed, 0.1..=4.0)
             .logarithmic(true)
             .text(t.tr("playback.speed")),
     );

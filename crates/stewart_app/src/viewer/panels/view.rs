@@ -45,7 +45,7 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
     // Wrapped: a narrow window keeps every switch reachable.
     ui.horizontal_wrapped(|ui| {
-        super::playback::play_button(ui, state);
+        super::playback::play_button(ui, &mut state.playback, t);
         if state.look.presentation {
             let words = if state.look.fullscreen {
                 t.tr("view.leave_fullscreen")
