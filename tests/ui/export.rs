@@ -50,16 +50,38 @@ fn export_again(h: &mut Harness<'_, ViewerState>, kind: ExportKind, path: &std::
     h.run();
 }
 
-#[test]
-fn the_csv_and_a_short_gif_are_written_in_the_background() {
-    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+/// Nothing (no staged file, no partial output) is left in `dir`.
+fn assert_nothing_left(dir: &std::path::Path) {
+    let left: Vec<_> = std::fs::read_dir(dir)
+        .map(|d| d.count())
+        .into_iter()
+        .collect();
+    assert_eq!(left, vec![0], "files left behind");
+}
+
+/// The paired preset sampled six times, exported as CSV into `dir`: the viewer, the file
+/// and the outcome shown.
+fn six_poses_as_csv(
+    dir: &std::path::Path,
+) -> (
+    Harness<'static, ViewerState>,
+    std::path::PathBuf,
+    Result<String, String>,
+) {
     let mut h = tall_harness("paired", HEIGHT);
     h.get_by_role_and_label(Role::Slider, "samples")
         .set_value_accesskit(6.0);
     h.run();
-    let csv = dir.path().join("legs.csv");
+    let csv = dir.join("legs.csv");
     export_to(&mut h, ExportKind::Csv, &csv);
     let outcome = finish(&mut h);
+    (h, csv, outcome)
+}
+
+#[test]
+fn the_csv_and_a_short_gif_are_written_in_the_background() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let (mut h, csv, outcome) = six_poses_as_csv(dir.path());
     assert!(
         outcome.as_ref().is_ok_and(|m| m.contains("Wrote 6 poses")),
         "{outcome:?}"
@@ -131,11 +153,7 @@ fn cancel_stops_an_export_and_leaves_nothing() {
             .is_err_and(|m| m.starts_with("Cancelled: nothing was written")),
         "{outcome:?}"
     );
-    let left: Vec<_> = std::fs::read_dir(dir.path())
-        .map(|d| d.count())
-        .into_iter()
-        .collect();
-    assert_eq!(left, vec![0], "files left behind");
+    assert_nothing_left(dir.path());
 }
 
 #[test]
@@ -168,11 +186,7 @@ fn closing_with_an_export_running_cancels_it_and_leaves_nothing() {
     );
     // The window closing drops the state: the export stops and cleans up first.
     drop(h.into_state());
-    let left: Vec<_> = std::fs::read_dir(dir.path())
-        .map(|d| d.count())
-        .into_iter()
-        .collect();
-    assert_eq!(left, vec![0], "files left behind");
+    assert_nothing_left(dir.path());
 }
 
 #[test]
@@ -235,13 +249,7 @@ fn the_workspace_figure_surface_and_view_are_exported() {
 #[test]
 fn an_export_names_its_full_path_offers_its_folder_and_asks_before_replacing() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-    let mut h = tall_harness("paired", HEIGHT);
-    h.get_by_role_and_label(Role::Slider, "samples")
-        .set_value_accesskit(6.0);
-    h.run();
-    let csv = dir.path().join("legs.csv");
-    export_to(&mut h, ExportKind::Csv, &csv);
-    let outcome = finish(&mut h);
+    let (mut h, csv, outcome) = six_poses_as_csv(dir.path());
     assert!(
         outcome
             .as_ref()

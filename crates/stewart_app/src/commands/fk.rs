@@ -7,6 +7,7 @@ use anyhow::{Result, anyhow};
 use stewart_kinematics::bounds;
 use stewart_kinematics::forward::assembly::canonical;
 use stewart_kinematics::table::NumericTable;
+use stewart_kinematics::trajectory::POSE_COLUMNS;
 use stewart_kinematics::{Angle, ForwardOptions, ForwardSolution, Geometry};
 
 use crate::cli::FkArgs;
@@ -14,16 +15,8 @@ use crate::csv_io::{CsvText, read_input};
 use crate::output;
 use crate::source;
 
-const POSE_OUT: [&str; 8] = [
-    "x",
-    "y",
-    "z",
-    "roll_deg",
-    "pitch_deg",
-    "yaw_deg",
-    "iterations",
-    "residual",
-];
+/// Each solution's columns after the pose's: the solver's iterations and its residual.
+const SOLVER_OUT: [&str; 2] = ["iterations", "residual"];
 
 /// Run the command.
 pub fn run(args: &FkArgs) -> Result<ExitCode> {
@@ -150,7 +143,8 @@ fn pose_table(times: bool, modes: bool) -> CsvText {
     if modes {
         header.extend(["row", "mode"]);
     }
-    header.extend(POSE_OUT);
+    header.extend(POSE_COLUMNS);
+    header.extend(SOLVER_OUT);
     CsvText::with_header(&header)
 }
 
