@@ -13,6 +13,42 @@ use crate::viewer::state::ViewerState;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
+    heading(ui, state);
+    preset_choice(ui, state);
+    if !state.scenario().description.is_empty() {
+        let words = crate::i18n::words::description(
+            t,
+            &state.scenario().name,
+            &state.scenario().description,
+        );
+        ui.label(egui::RichText::new(words).small());
+    }
+    file_rows(ui, state);
+    folder_choice(ui, state);
+    widgets::status(ui, &state.files.status);
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut state.look.light_theme, t.tr("scenario.light_theme"));
+        ui.checkbox(&mut state.look.presentation, t.tr("scenario.presentation"))
+            .on_hover_text(t.tr("scenario.presentation_tip"));
+    });
+    language(ui, state);
+    if state.session.folder.is_some()
+        && ui
+            .button(t.tr("scenario.reset"))
+            .on_hover_text(t.tr("scenario.reset_tip"))
+            .clicked()
+    {
+        state.reset_to_defaults();
+        ui.ctx().memory_mut(|m| *m = egui::Memory::default());
+    }
+    if let Some(note) = &state.session.note {
+        ui.label(egui::RichText::new(note).color(widgets::WARNING).small());
+    }
+}
+
+/// The heading with *Undo* and *Redo*.
+fn heading(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     ui.horizontal(|ui| {
         ui.heading(t.tr("scenario.heading"));
         let undo = ui
@@ -34,20 +70,27 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             state.redo_edit();
         }
     });
+}
+
+/// The presets, each with its description as a tooltip (read only when hovered).
+fn preset_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     let current = state.scenario().name.clone();
     egui::ComboBox::from_label(t.tr("scenario.preset"))
         .selected_text(&current)
         .show_ui(ui, |ui| {
             for name in presets::names() {
-                let tip = presets::text(name)
-                    .and_then(|text| Scenario::from_toml_str(text, name, None).ok())
-                    .map(|s| crate::i18n::words::description(t, name, &s.description))
-                    .unwrap_or_default();
-                if ui
+                let chosen = ui
                     .selectable_label(current == name, name)
-                    .on_hover_text(tip)
-                    .clicked()
-                {
+                    .on_hover_ui(|ui| {
+                        let words = presets::text(name)
+                            .and_then(|text| Scenario::from_toml_str(text, name, None).ok())
+                            .map(|s| crate::i18n::words::description(t, name, &s.description))
+                            .unwrap_or_default();
+                        ui.label(words);
+                    })
+                    .clicked();
+                if chosen {
                     match Scenario::preset(name) {
                         Ok(s) => {
                             state.load_scenario(s);
@@ -59,14 +102,11 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 }
             }
         });
-    if !state.scenario().description.is_empty() {
-        let words = crate::i18n::words::description(
-            t,
-            &state.scenario().name,
-            &state.scenario().description,
-        );
-        ui.label(egui::RichText::new(words).small());
-    }
+}
+
+/// The path typed, and *Open*, *Save*, *Open…*, *Save as…*.
+fn file_rows(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     ui.horizontal(|ui| {
         let label = ui.label(t.tr("scenario.file"));
         ui.add(
@@ -108,10 +148,15 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             state.choose_file(Purpose::SaveScenario);
         }
     });
+}
+
+/// The scenario files of the current folder (read while the list is open, at most once a
+/// second), each with its full path as a tooltip.
+fn folder_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
     egui::ComboBox::from_label(t.tr("scenario.in_folder"))
         .selected_text(t.tr("scenario.choose"))
         .show_ui(ui, |ui| {
-            // Read while the list is open, at most once a second.
             let here = state.files.scenario_files().to_vec();
             if here.is_empty() {
                 ui.label(t.tr("scenario.none_here"));
@@ -128,25 +173,6 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 }
             }
         });
-    widgets::status(ui, &state.files.status);
-    ui.horizontal(|ui| {
-        ui.checkbox(&mut state.look.light_theme, t.tr("scenario.light_theme"));
-        ui.checkbox(&mut state.look.presentation, t.tr("scenario.presentation"))
-            .on_hover_text(t.tr("scenario.presentation_tip"));
-    });
-    language(ui, state);
-    if state.session.folder.is_some()
-        && ui
-            .button(t.tr("scenario.reset"))
-            .on_hover_text(t.tr("scenario.reset_tip"))
-            .clicked()
-    {
-        state.reset_to_defaults();
-        ui.ctx().memory_mut(|m| *m = egui::Memory::default());
-    }
-    if let Some(note) = &state.session.note {
-        ui.label(egui::RichText::new(note).color(widgets::WARNING).small());
-    }
 }
 
 /// The interface's language: English or Chinese (Chinese only with a font that has it).
