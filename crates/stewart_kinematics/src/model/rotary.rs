@@ -105,12 +105,31 @@ pub enum Actuator {
     Rotary(RotaryActuators),
 }
 
+/// The actuator kinds, as scenario files name them (`linear`, `rotary`) and settings
+/// belong to them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ActuatorKind {
+    /// Linear legs (stroke, leg speed, acceleration and jerk).
+    Linear,
+    /// Rotary servos (horns, rods, servo range and rates).
+    Rotary,
+}
+
 impl Actuator {
+    /// Its kind.
+    pub fn kind(&self) -> ActuatorKind {
+        match self {
+            Actuator::Linear => ActuatorKind::Linear,
+            Actuator::Rotary(_) => ActuatorKind::Rotary,
+        }
+    }
+
     /// The kind as scenario files write it: `linear` or `rotary`.
     pub fn kind_name(&self) -> &'static str {
-        match self {
-            Actuator::Linear => "linear",
-            Actuator::Rotary(_) => "rotary",
+        match self.kind() {
+            ActuatorKind::Linear => "linear",
+            ActuatorKind::Rotary => "rotary",
         }
     }
 }

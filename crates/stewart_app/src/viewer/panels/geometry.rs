@@ -127,25 +127,30 @@ fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// home height.
 fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;
-    let rotary = state.scenario().geometry.rotary().is_some();
+    let current = state.scenario().geometry.actuator().kind();
     let mut chosen = None;
     ui.horizontal(|ui| {
         ui.label(t.tr("geometry.actuators"));
-        if ui
-            .selectable_label(!rotary, t.tr("geometry.linear"))
-            .on_hover_text(t.tr("geometry.linear_tip"))
-            .clicked()
-            && rotary
-        {
-            chosen = Some(ActuatorKind::Linear);
-        }
-        if ui
-            .selectable_label(rotary, t.tr("geometry.rotary"))
-            .on_hover_text(t.tr("geometry.rotary_tip"))
-            .clicked()
-            && !rotary
-        {
-            chosen = Some(ActuatorKind::Rotary);
+        for (kind, words, tip) in [
+            (
+                ActuatorKind::Linear,
+                "geometry.linear",
+                "geometry.linear_tip",
+            ),
+            (
+                ActuatorKind::Rotary,
+                "geometry.rotary",
+                "geometry.rotary_tip",
+            ),
+        ] {
+            if ui
+                .selectable_label(current == kind, t.tr(words))
+                .on_hover_text(t.tr(tip))
+                .clicked()
+                && current != kind
+            {
+                chosen = Some(kind);
+            }
         }
     });
     if let Some(kind) = chosen {

@@ -119,12 +119,7 @@ pub(crate) struct ActuatorFile {
     pub servo_trim_deg: Option<Spanned<Vec<f64>>>,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub(crate) enum ActuatorKind {
-    Linear,
-    Rotary,
-}
+pub(crate) use crate::rotary::ActuatorKind;
 
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]

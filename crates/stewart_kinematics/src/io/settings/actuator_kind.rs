@@ -25,12 +25,7 @@ pub enum SwitchError {
 /// start level. Servos become legs without a stroke. Limits of the other kind (stroke,
 /// leg or servo rates) are dropped. A refused switch leaves the scenario unchanged.
 pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<(), SwitchError> {
-    let current = if scenario.geometry.rotary().is_some() {
-        ActuatorKind::Rotary
-    } else {
-        ActuatorKind::Linear
-    };
-    if current == kind {
+    if scenario.geometry.actuator().kind() == kind {
         return Ok(());
     }
     let mut params = scenario.geometry.params().clone();

@@ -281,14 +281,11 @@ impl Setting {
             reason,
         };
         match self.target.actuator_kind() {
-            Some(ActuatorKind::Rotary) if scenario.geometry.rotary().is_none() => {
-                return Err(SettingError::NotRotary {
-                    key: self.key.clone(),
-                });
-            }
-            Some(ActuatorKind::Linear) if scenario.geometry.rotary().is_some() => {
-                return Err(SettingError::NotLinear {
-                    key: self.key.clone(),
+            Some(kind) if kind != scenario.geometry.actuator().kind() => {
+                let key = self.key.clone();
+                return Err(match kind {
+                    ActuatorKind::Rotary => SettingError::NotRotary { key },
+                    ActuatorKind::Linear => SettingError::NotLinear { key },
                 });
             }
             _ => {}

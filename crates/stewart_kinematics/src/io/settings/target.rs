@@ -114,14 +114,7 @@ pub enum LimitKey {
     ServoJerk,
 }
 
-/// The actuator kinds a setting belongs to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ActuatorKind {
-    /// Linear legs only (stroke, leg speed, acceleration and jerk).
-    Linear,
-    /// Rotary servos only (horns, rods, servo range and rates).
-    Rotary,
-}
+pub use crate::rotary::ActuatorKind;
 
 /// Thresholds of the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,11 +176,11 @@ impl Target {
 
     pub(super) fn applies(self, scenario: &Scenario) -> bool {
         let trajectory = &scenario.motion.trajectory;
-        let rotary = scenario.geometry.rotary().is_some();
-        match self.actuator_kind() {
-            Some(ActuatorKind::Rotary) if !rotary => return false,
-            Some(ActuatorKind::Linear) if rotary => return false,
-            _ => {}
+        if self
+            .actuator_kind()
+            .is_some_and(|kind| kind != scenario.geometry.actuator().kind())
+        {
+            return false;
         }
         match self {
             Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
