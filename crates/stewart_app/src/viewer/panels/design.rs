@@ -2,7 +2,7 @@
 //! design`, with a button that writes it into the limits.
 
 use egui::RichText;
-use stewart_kinematics::settings::{self, ActuatorKey, GeometryKey, Target};
+use stewart_kinematics::settings;
 
 use super::widgets::{ERROR, OK, WARNING};
 use crate::i18n::Lang;
@@ -150,18 +150,7 @@ fn result(ui: &mut egui::Ui, tool: &DesignTool, doc: &mut Document, t: Lang) {
         .on_hover_text(t.tr("design.use_as_limits_tip"))
         .clicked()
     {
-        let rotary = g.rotary().is_some();
-        let (low, high) = if rotary {
-            (
-                Target::Actuator(ActuatorKey::ServoMin),
-                Target::Actuator(ActuatorKey::ServoMax),
-            )
-        } else {
-            (
-                Target::Geometry(GeometryKey::LegMin),
-                Target::Geometry(GeometryKey::LegMax),
-            )
-        };
+        let [low, high] = settings::quantity_limit_targets(g.actuator().kind());
         // Widen first, so that no intermediate stroke is inverted.
         doc.apply(settings::of(high), Some(hi.value.max(lo.value)));
         doc.apply(settings::of(low), Some(lo.value));

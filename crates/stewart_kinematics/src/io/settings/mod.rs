@@ -367,6 +367,21 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
     Ok((setting, value))
 }
 
+/// The settings that bound the actuator quantity of `kind`, lower end first: the stroke
+/// (`geometry.leg_min`, `leg_max`) or the servo range (`actuator.servo_min_deg`, `…max…`).
+pub fn quantity_limit_targets(kind: ActuatorKind) -> [Target; 2] {
+    match kind {
+        ActuatorKind::Linear => [
+            Target::Geometry(GeometryKey::LegMin),
+            Target::Geometry(GeometryKey::LegMax),
+        ],
+        ActuatorKind::Rotary => [
+            Target::Actuator(ActuatorKey::ServoMin),
+            Target::Actuator(ActuatorKey::ServoMax),
+        ],
+    }
+}
+
 /// The first setting of `scenario` whose value lies outside its accepted range (a file
 /// may hold values no slider offers), with the reason.
 pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {

@@ -505,3 +505,17 @@ fn slider_ranges_follow_the_platforms_size() {
     let phase = by_key("trajectory.pitch.phase_deg");
     assert_eq!(phase.range_for(&desk), phase.range);
 }
+
+#[test]
+fn the_quantity_limits_are_the_stroke_or_the_servo_range() {
+    use crate::rotary::ActuatorKind;
+    let keys = |kind| quantity_limit_targets(kind).map(|t| of(t).key.clone());
+    assert_eq!(
+        keys(ActuatorKind::Linear),
+        ["geometry.leg_min", "geometry.leg_max"]
+    );
+    assert_eq!(
+        keys(ActuatorKind::Rotary),
+        ["actuator.servo_min_deg", "actuator.servo_max_deg"]
+    );
+}
