@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::link_settings::{LinkSettings, LinkTransport, Word as _};
-use stewart_link::sender::{Command, Sender, Status};
+use stewart_link::sender::{Command, Sender, SenderConfig, Status};
 use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};
 
@@ -37,33 +37,77 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     };
     let described = transport.describe();
     let mut config = plan.sender_config(true, stream_for);
-    let recorder = match args.record.as_deref() {
-        Some(path) => {
-            let mut inputs = source::inputs(&args.scenario);
-            if let Some(out) = args.out.as_deref() {
-                // Also when neither exists yet: the two records would overwrite each other.
-                let same = |p: &std::path::Path| std::path::absolute(p).ok();
-                if same(out).is_some() && same(out) == same(path) {
-                    bail!(
-                        "--record and --out name the same file `{}`: give each its own",
-                        path.display()
-                    );
-                }
-                inputs.push(("the dry run's record", out));
-            }
-            let destination = output::destination(Some(path), &inputs)?
-                .ok_or_else(|| anyhow!("--record needs a file name"))?;
-            let unit = plan.geometry.quantity().ascii_unit;
-            let (rows, recorder) = record::Recorder::start(destination, unit)?;
-            config.record = Some(rows);
-            Some(recorder)
-        }
-        None => None,
-    };
+    let recorder = start_recorder(args, &plan, &mut config)?;
     let sender = Sender::spawn(config, plan.trajectory_target(args.repeat), transport)
         .map_err(|e| anyhow!(e))?;
-    // Ctrl-C is the e-stop: stop at once, return home at the safe speed, disarm. A second
-    // one on the way home is an emergency stop: disarm where the platform is.
+    let stops_seen = supervise(&sender, stream_for);
+    let summary = sender.join();
+    if PIPE_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
+        return Ok(ExitCode::SUCCESS);
+    }
+    let s = &summary.status;
+    print_summary(s, &described, scenario.link.rate_hz);
+    if let Some(recorder) = recorder {
+        let rows = recorder.finish()?;
+        if rows == 0 {
+            let _ = writeln!(
+                std::io::stderr(),
+                "link: no telemetry answered the set-points: the record holds its header only"
+            );
+        }
+    }
+    if let Some(failure) = summary.failure {
+        // A record that could not be finished is not left behind (the staged file goes).
+        bail!("the link stopped: {failure}");
+    }
+    // The record of a stream that ended (also by e-stop) is whole: put it in place.
+    if let Some((destination, path)) = staged {
+        destination.deliver(path)?;
+    }
+    if s.emergency {
+        let _ = writeln!(std::io::stderr(), "{}", left_where(&plan, &s.values));
+        return Ok(ExitCode::from(2));
+    }
+    if stops_seen > 0 {
+        bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The `--record` file of what the controller answered, when asked for: refused when it is
+/// the `--out` file too; its rows go to the sender through `config`.
+fn start_recorder(
+    args: &LinkArgs,
+    plan: &LinkPlan,
+    config: &mut SenderConfig,
+) -> Result<Option<record::Recorder>> {
+    let Some(path) = args.record.as_deref() else {
+        return Ok(None);
+    };
+    let mut inputs = source::inputs(&args.scenario);
+    if let Some(out) = args.out.as_deref() {
+        // Also when neither exists yet: the two records would overwrite each other.
+        let same = |p: &std::path::Path| std::path::absolute(p).ok();
+        if same(out).is_some() && same(out) == same(path) {
+            bail!(
+                "--record and --out name the same file `{}`: give each its own",
+                path.display()
+            );
+        }
+        inputs.push(("the dry run's record", out));
+    }
+    let destination = output::destination(Some(path), &inputs)?
+        .ok_or_else(|| anyhow!("--record needs a file name"))?;
+    let unit = plan.geometry.quantity().ascii_unit;
+    let (rows, recorder) = record::Recorder::start(destination, unit)?;
+    config.record = Some(rows);
+    Ok(Some(recorder))
+}
+
+/// Watch the stream until it ends, showing progress on a terminal. Ctrl-C is the e-stop:
+/// stop at once, return home at the safe speed, disarm; a second one on the way home is
+/// an emergency stop: disarm where the platform is. Returns the Ctrl-Cs seen.
+fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
     let stops_before = crate::interrupt::count();
     let mut stops_seen = 0;
     let progress = std::io::stderr().is_terminal();
@@ -92,18 +136,19 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     if progress {
         let _ = write!(std::io::stderr(), "\r\x1b[K");
     }
-    let summary = sender.join();
-    if PIPE_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
-        return Ok(ExitCode::SUCCESS);
-    }
-    let s = &summary.status;
+    stops_seen
+}
+
+/// The stream's figures on standard error: frames, timing, the last note, and what the
+/// controller answered.
+fn print_summary(s: &Status, described: &str, rate_hz: f64) {
     let timing = &s.timing;
     let _ = writeln!(
         std::io::stderr(),
         "link: {} frames to {described} over {:.2} s at {} Hz; period error mean {:.0} µs, p99 {:.0} µs, max {:.0} µs; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs{}",
         s.frames,
         s.time,
-        scenario.link.rate_hz,
+        rate_hz,
         s.period_error.mean_us,
         s.period_error.p99_us,
         s.period_error.max_us,
@@ -124,31 +169,6 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         );
         let _ = writeln!(std::io::stderr(), "{}", telemetry_summary(s));
     }
-    if let Some(recorder) = recorder {
-        let rows = recorder.finish()?;
-        if rows == 0 {
-            let _ = writeln!(
-                std::io::stderr(),
-                "link: no telemetry answered the set-points: the record holds its header only"
-            );
-        }
-    }
-    if let Some(failure) = summary.failure {
-        // A record that could not be finished is not left behind (the staged file goes).
-        bail!("the link stopped: {failure}");
-    }
-    // The record of a stream that ended (also by e-stop) is whole: put it in place.
-    if let Some((destination, path)) = staged {
-        destination.deliver(path)?;
-    }
-    if s.emergency {
-        let _ = writeln!(std::io::stderr(), "{}", left_where(&plan, &s.values));
-        return Ok(ExitCode::from(2));
-    }
-    if stops_seen > 0 {
-        bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
-    }
-    Ok(ExitCode::SUCCESS)
 }
 
 /// The line after an emergency stop: where the platform was left, as a pose (forward
