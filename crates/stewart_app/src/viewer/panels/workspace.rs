@@ -6,8 +6,9 @@ use egui::{Color32, RichText};
 use stewart_render::colormap;
 
 use super::widgets::{ERROR, OK, WARNING};
+use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
-use crate::viewer::workspace::format_volume;
+use crate::viewer::workspace::{WorkspaceTool, format_volume};
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -20,17 +21,17 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             if !state.workspace.show {
                 return;
             }
-            orientation(ui, state);
+            orientation(ui, &mut state.workspace, t);
             numbers(ui, state);
             ui.separator();
-            slice(ui, state);
+            let centre_z = state.centre().z;
+            let condition_max = state.scenario().checks.condition_max;
+            slice(ui, &mut state.workspace, centre_z, condition_max, t);
         });
 }
 
 /// At the pose's orientation, or at one chosen with three drag values.
-fn orientation(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let w = &mut state.workspace;
+fn orientation(ui: &mut egui::Ui, w: &mut WorkspaceTool, t: Lang) {
     ui.radio_value(&mut w.follow_pose, true, t.tr("workspace_panel.follow"));
     ui.horizontal(|ui| {
         ui.radio_value(&mut w.follow_pose, false, t.tr("workspace_panel.chosen"));
@@ -117,17 +118,14 @@ pub fn centre_inside(state: &ViewerState) -> bool {
     g.pose_within_limits(&state.scenario().limits, &probe)
 }
 
-/// The slice's switches, its colour bar and the cells past the threshold.
-fn slice(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let centre_z = state.centre().z;
-    let top = state
-        .workspace
+/// The slice's switches, its colour bar and the cells past the threshold: the tool alone,
+/// with the platform centre's height and the near-singular threshold.
+fn slice(ui: &mut egui::Ui, w: &mut WorkspaceTool, centre_z: f64, condition_max: f64, t: Lang) {
+    let top = w
         .latest
         .as_ref()
         .and_then(|o| o.extent)
         .map_or(2.0 * centre_z.max(0.1), |e| e[2][1]);
-    let w = &mut state.workspace;
     ui.checkbox(&mut w.show_slice, t.tr("workspace_panel.slice"))
         .on_hover_text(t.tr("workspace_panel.slice_tip"));
     if !w.show_slice {
@@ -143,14 +141,8 @@ fn slice(ui: &mut egui::Ui, state: &mut ViewerState) {
             .suffix(" m")
             .text(t.tr("workspace_panel.slice_height")),
     );
-    let condition_max = state.scenario().checks.condition_max;
     colour_bar(ui, condition_max);
-    if let Some(s) = state
-        .workspace
-        .latest
-        .as_ref()
-        .and_then(|o| o.slice.as_ref())
-    {
+    if let Some(s) = w.latest.as_ref().and_then(|o| o.slice.as_ref()) {
         let colour = if s.past > 0 { WARNING } else { OK };
         ui.label(
             RichText::new(t.fmt(
