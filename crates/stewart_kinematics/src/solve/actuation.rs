@@ -128,6 +128,21 @@ impl Geometry {
         }
     }
 
+    /// [`Geometry::actuator_jacobian`] and its conditioning, the Jacobian computed once
+    /// (`None` when a servo cannot reach its joint).
+    pub fn actuator_jacobian_and_conditioning(
+        &self,
+        pose: &Pose,
+    ) -> Option<(nalgebra::Matrix6<f64>, crate::jacobian::Conditioning)> {
+        let j = self.actuator_jacobian(pose).ok()?;
+        let conditioning = if self.servos() {
+            self.servo_conditioning_of(&j)?
+        } else {
+            crate::jacobian::conditioning_of(&j, self.characteristic_length())
+        };
+        Some((j, conditioning))
+    }
+
     /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
     /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
     /// reach its joint).

@@ -178,8 +178,14 @@ impl Geometry {
     /// alone stays finite (12.3 for servo-desk at 141.70 mm), so the transmission is taken
     /// into account on its own, and the verdict becomes singular either way.
     pub fn servo_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
-        let servos = self.rotary()?;
         let j = self.servo_jacobian(pose)?.ok()?;
+        self.servo_conditioning_of(&j)
+    }
+
+    /// [`Geometry::servo_conditioning`] of a servo Jacobian already computed (`None` for
+    /// linear legs).
+    pub fn servo_conditioning_of(&self, j: &Matrix6<f64>) -> Option<Conditioning> {
+        let servos = self.rotary()?;
         let scaled = j * servos.horn_length();
         let ell = self.characteristic_length();
         let mut conditioning = conditioning_of(&scaled, ell);

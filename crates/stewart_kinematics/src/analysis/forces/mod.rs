@@ -192,8 +192,7 @@ impl Geometry {
         let force = payload.mass * (a_c - g);
         let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
         let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
-        let j = self.actuator_jacobian(pose).ok()?;
-        let cond = self.actuated_conditioning(pose)?;
+        let (j, cond) = self.actuator_jacobian_and_conditioning(pose)?;
         if cond.is_singular() {
             return None;
         }
