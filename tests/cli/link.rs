@@ -267,6 +267,15 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
     }
 }
 
+/// How many frames a `link` run says it sent ("link: N frames to …"), 0 when it says none.
+pub fn frames_sent(o: &std::process::Output) -> usize {
+    stderr(o)
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0)
+}
+
 /// A free loopback port (bound and released; the device simulator binds it next).
 fn free_port() -> String {
     let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
@@ -307,11 +316,7 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
         "{}",
         stderr(&o)
     );
-    let sent: usize = stderr(&o)
-        .split_whitespace()
-        .nth(1)
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(0);
+    let sent = frames_sent(&o);
     let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert_eq!(sim.status.code(), Some(0), "{log}");
@@ -357,11 +362,7 @@ fn the_device_simulator_reads_the_links_text_form() {
         &["--format", "text"],
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sent: usize = stderr(&o)
-        .split_whitespace()
-        .nth(1)
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(0);
+    let sent = frames_sent(&o);
     let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     // Before: the binary decoder called every line damaged.

@@ -90,11 +90,7 @@ fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
     );
     let o = serial_link("servo-desk", PtyPair::path(&pair.a), "1", "500");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sent: usize = stderr(&o)
-        .split_whitespace()
-        .nth(1)
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(0);
+    let sent = crate::link::frames_sent(&o);
     assert!(sent > 500, "{}", stderr(&o));
     // The device answered every frame with telemetry; the last came back disarmed, at home.
     let told = stderr(&o);

@@ -178,6 +178,12 @@ impl LineDecoder {
         )
     }
 
+    /// Forget any part of a line (a datagram that ended stands alone).
+    pub fn reset(&mut self) {
+        self.line.clear();
+        self.overflowed = false;
+    }
+
     /// Whether part of a line is waiting for its newline.
     pub fn pending(&self) -> bool {
         !self.line.is_empty() || self.overflowed

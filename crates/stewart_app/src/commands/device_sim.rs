@@ -83,12 +83,11 @@ pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         let t0 = *first.get_or_insert(now);
         last = now;
         let mut replies = Vec::new();
-        let mut datagram = WireDecoder::new(args);
-        let decoder = if input.datagrams {
-            &mut datagram
-        } else {
-            &mut stream
-        };
+        if input.datagrams {
+            // Each datagram stands alone.
+            stream.reset();
+        }
+        let decoder = &mut stream;
         let mut any = false;
         let mut damaged = false;
         let t = (now - t0).as_secs_f64();
@@ -166,6 +165,14 @@ impl WireDecoder {
         match self {
             Self::Binary(d) => d.push(byte).map(|r| r.map_err(drop)),
             Self::Text(d) => d.push(byte).map(|r| r.map_err(drop)),
+        }
+    }
+
+    /// Forget a frame or line begun (before each datagram, which stands alone).
+    fn reset(&mut self) {
+        match self {
+            Self::Binary(d) => *d = Decoder::new(),
+            Self::Text(d) => d.reset(),
         }
     }
 
