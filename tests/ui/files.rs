@@ -283,3 +283,68 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
             .is_none()
     );
 }
+
+/// Hostile files opened or dropped: a FIFO (it would block), a folder, an empty table, NaN
+/// and 1e300, a missing file. Each is one error shown and the scenario stays as it was;
+/// none hangs or panics.
+#[test]
+fn hostile_files_are_refused_and_change_nothing() {
+    let dir = tempdir();
+    let fifo = dir.path().join("pipe.csv");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|s| s.success());
+    let header = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n";
+    let write = |name: &str, text: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap_or_else(|e| panic!("{e}"));
+        path
+    };
+    let mut cases = vec![
+        (write("empty.csv", ""), "empty.csv"),
+        (
+            write(
+                "nan.csv",
+                &format!("{header}0,NaN,0,0.8,0,0,0\n1,0,0,0.8,0,0,0\n"),
+            ),
+            "nan.csv",
+        ),
+        (
+            write(
+                "huge.csv",
+                &format!("{header}0,1e300,0,0.8,0,0,0\n1,0,0,0.8,0,0,0\n"),
+            ),
+            "huge.csv",
+        ),
+        (write("empty.toml", ""), "empty.toml"),
+        (dir.path().join("missing.toml"), "missing.toml"),
+        (
+            {
+                let folder = dir.path().join("folder.toml");
+                std::fs::create_dir(&folder).unwrap_or_else(|e| panic!("{e}"));
+                folder
+            },
+            "not a regular file",
+        ),
+    ];
+    if made {
+        cases.push((fifo, "not a regular file"));
+    }
+    let mut state = stewart_app::viewer::ViewerState::new(
+        Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    let before = state.scenario().clone();
+    for (path, words) in cases {
+        state.open_path(&path);
+        let status = state.files.status.clone();
+        assert!(
+            status
+                .as_ref()
+                .is_some_and(|s| s.as_ref().is_err_and(|e| e.contains(words))),
+            "{}: {status:?}",
+            path.display()
+        );
+        assert_eq!(state.scenario(), &before, "{}", path.display());
+    }
+}
