@@ -4,6 +4,7 @@
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::Scenario;
+use stewart_kinematics::actuator::ActuatorKind;
 use stewart_kinematics::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
@@ -27,15 +28,14 @@ pub fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
 /// servo pulses (`pulse`, servos only).
 pub fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
     let link = &scenario.link;
-    let rotary = scenario.geometry.rotary().is_some();
-    let output = match (link.output, rotary) {
-        (LinkOutput::Native, false) => Output::LegMicrometre,
-        (LinkOutput::Native, true) => Output::ServoCentidegree,
-        (LinkOutput::Pulse, true) => Output::ServoPulse {
+    let output = match (link.output, scenario.geometry.actuator().kind()) {
+        (LinkOutput::Native, ActuatorKind::Linear) => Output::LegMicrometre,
+        (LinkOutput::Native, ActuatorKind::Rotary) => Output::ServoCentidegree,
+        (LinkOutput::Pulse, ActuatorKind::Rotary) => Output::ServoPulse {
             zero_us: link.pulse_zero_us,
             us_per_degree: link.pulse_us_per_deg,
         },
-        (LinkOutput::Pulse, false) => {
+        (LinkOutput::Pulse, ActuatorKind::Linear) => {
             bail!(
                 "`link.output = pulse` drives hobby servos; a platform with linear legs sends `native` (µm)"
             )

@@ -6,7 +6,8 @@
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::rotary::{Actuator, RotaryActuators};
+use stewart_kinematics::actuator::Actuator;
+use stewart_kinematics::rotary::RotaryActuators;
 use stewart_kinematics::{
     Angle, BatchSolver, Geometry, GeometryParams, Layout, PlateJoints, Pose, ServoBatch,
 };

@@ -39,7 +39,9 @@ pub use analysis::{
     architecture, calibration, checks, design, differences, forces, sound_layout, workspace,
 };
 pub use io::{bounds, scenario, settings, table, text};
-pub use model::{angle, geometry, layout, limits, link_settings, pose, rotary, scene, trajectory};
+pub use model::{
+    actuator, angle, geometry, layout, limits, link_settings, pose, rotary, scene, trajectory,
+};
 pub(crate) use solve::fast_trig;
 pub use solve::{actuation, batch, forward, inverse, jacobian};
 

@@ -28,7 +28,7 @@ pub(crate) fn servo_geometry() -> Geometry {
         radius: 0.06,
         angles: [345.0, 15.0, 105.0, 135.0, 225.0, 255.0].map(crate::Angle::from_degrees),
     };
-    p.actuator = crate::rotary::Actuator::Rotary(
+    p.actuator = crate::actuator::Actuator::Rotary(
         crate::rotary::RotaryActuators::new(
             0.025,
             0.12,

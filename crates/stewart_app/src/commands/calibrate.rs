@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use anyhow::{Result, anyhow};
 use stewart_kinematics::calibration::{
     Calibration, Held, Measurement, Parameter, ParameterUnit, calibrate, calibrated_scenario,
+    offsets_folded_into,
 };
 use stewart_kinematics::table::NumericTable;
 use stewart_kinematics::trajectory::{POSE_COLUMNS, check_pose_ranges};
@@ -29,7 +30,6 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
     let quantity = scenario.geometry.quantity();
-    let rotary = scenario.geometry.rotary().is_some();
     let commanded_columns = quantity.columns;
     let required: Vec<&str> = POSE_COLUMNS
         .iter()
@@ -51,13 +51,7 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
         .rows()
         .map(|r| Measurement {
             pose: Pose::from_xyz_rpy_deg([r[0], r[1], r[2]], [r[3], r[4], r[5]]),
-            commanded: std::array::from_fn(|i| {
-                if rotary {
-                    r[6 + i].to_radians()
-                } else {
-                    r[6 + i]
-                }
-            }),
+            commanded: std::array::from_fn(|i| r[6 + i] * quantity.si_per_unit),
         })
         .collect();
     let held = Held {
@@ -77,11 +71,7 @@ pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
             text,
             "\nwritten: {} (joints as coordinates; {})",
             out.shown().display(),
-            if rotary {
-                "angle offsets folded into actuator.servo_trim_deg"
-            } else {
-                "length offsets folded into the link's channel offsets"
-            }
+            offsets_folded_into(quantity.actuator)
         );
     } else {
         text.push_str("\nnothing written: give --out FILE to write the calibrated scenario\n");

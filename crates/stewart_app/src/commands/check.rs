@@ -43,7 +43,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
         Format::Text => text_report(&scenario, &report),
         Format::Json => {
             let stroke = scenario.geometry.stroke();
-            let range = scenario.geometry.rotary().and_then(|r| r.range());
+            let range = scenario.geometry.actuator().servo_range();
             let doc = JsonReport {
                 scenario: &scenario.name,
                 clean: report.is_clean(),

@@ -4,6 +4,7 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
+use stewart_kinematics::actuator::Actuator;
 use stewart_kinematics::bounds;
 use stewart_kinematics::forward::assembly::canonical;
 use stewart_kinematics::table::NumericTable;
@@ -24,8 +25,10 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
     inputs.push(("the table", &args.legs));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
-    if scenario.geometry.rotary().is_some() {
-        return servos(args, &scenario, out.as_ref());
+    // Each kind has its own forward solver.
+    match scenario.geometry.actuator() {
+        Actuator::Rotary(_) => return servos(args, &scenario, out.as_ref()),
+        Actuator::Linear => {}
     }
     let geometry = &scenario.geometry;
     // Read the table first, so that a bad file is reported whatever the geometry.

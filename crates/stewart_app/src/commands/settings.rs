@@ -112,7 +112,7 @@ pub fn table(scenario: &Scenario) -> String {
     for (key, value) in entries {
         let _ = writeln!(out, "{key:width$}  {value}");
     }
-    if scenario.geometry.rotary().is_some() {
+    if scenario.geometry.actuator().kind().has_level_home() {
         let _ = match scenario.geometry.servo_home_height() {
             Some(h) => writeln!(
                 out,

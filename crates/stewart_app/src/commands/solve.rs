@@ -46,22 +46,19 @@ pub fn run(args: &SolveArgs) -> Result<ExitCode> {
 
 /// Model servo angles (degrees) turned into the angles the servos are commanded.
 fn commanded(scenario: &stewart_kinematics::Scenario, solved: Solved) -> Result<Solved> {
-    let Some(servos) = scenario.geometry.rotary() else {
+    let actuator = scenario.geometry.actuator();
+    // Kinds without a commanded form give none for any values.
+    if actuator.commanded_values(&[0.0; 6]).is_none() {
         anyhow::bail!(
-            "--commanded applies to rotary servo platforms; scenario `{}` has linear legs",
-            scenario.name
+            "--commanded applies to rotary servo platforms; scenario `{}` has {}",
+            scenario.name,
+            scenario.geometry.quantity().kind
         );
-    };
+    }
     let values = solved
         .values
         .iter()
-        .map(|row| {
-            std::array::from_fn(|i| {
-                servos
-                    .commanded(i, stewart_kinematics::Angle::from_degrees(row[i]))
-                    .degrees()
-            })
-        })
+        .filter_map(|row| actuator.commanded_values(row))
         .collect();
     Ok(Solved {
         columns: ["cmd1", "cmd2", "cmd3", "cmd4", "cmd5", "cmd6"],

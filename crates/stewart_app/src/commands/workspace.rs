@@ -100,35 +100,10 @@ pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// How the columns were decided, in words, for the volume line.
-fn method_words(scenario: &Scenario, ws: &ConstantOrientationWorkspace) -> String {
-    let limits = &scenario.limits;
-    if scenario.geometry.rotary().is_some() {
-        let cones = if limits.base_cone.is_some() || limits.platform_cone.is_some() {
-            ", rod cones"
-        } else {
-            ""
-        };
-        let clearance = if limits.leg_radius.is_some() {
-            format!(
-                "; rod clearance by branch and bound (pieces settled by how far rods and horns can move, sampled below {:.2} mm), edges bisected to 1e-12 m",
-                ws.cell * 1e3
-            )
-        } else {
-            String::new()
-        };
-        format!("servo reach, range{cones} exact per column{clearance}")
-    } else if limits.has_pose_limits() {
-        "stroke and cone limits exact per column, leg clearance by a certified scan with edges bisected to 1e-12 m".to_owned()
-    } else {
-        "reachable heights exact per column".to_owned()
-    }
-}
-
 /// The volume with its bound and method, and the extent (or why there is none).
 fn volume_lines(s: &mut String, scenario: &Scenario, ws: &ConstantOrientationWorkspace) {
     let n = ws.resolution;
-    let method = method_words(scenario, ws);
+    let method = ws.method_words(&scenario.geometry, &scenario.limits);
     let _ = writeln!(
         s,
         "  volume {:.6} m³ ± {:.6} m³ ({n} × {n} columns of {:.2} mm; {method}; the bound is twice the spread of the 16 interleaved grids 4× coarser)",

@@ -4,8 +4,9 @@
 
 use std::fmt::Write as _;
 
+use stewart_kinematics::actuator::Actuator;
 use stewart_kinematics::rotary::RotaryActuators;
-use stewart_kinematics::{Plate, Scenario};
+use stewart_kinematics::{Geometry, Plate, Scenario};
 
 /// A number as a C double literal that reads back to the same `f64` (shortest
 /// round-trip digits, always with a decimal point or exponent).
@@ -56,6 +57,15 @@ fn identifier(name: &str) -> String {
 /// needs no trigonometry to place them.
 pub fn header(scenario: &Scenario) -> String {
     let g = &scenario.geometry;
+    // What differs by actuator kind: its flag, what the base points are, and its section.
+    let (rotary, base_points, section) = match g.actuator() {
+        Actuator::Linear => (0, "Base joints B_i (base frame)", stroke_section(g)),
+        Actuator::Rotary(servos) => (
+            1,
+            "Servo shaft centres B_i (base frame)",
+            servo_section(servos),
+        ),
+    };
     let p = g.params();
     let guard = format!("STEWART_GEOMETRY_{}_H", identifier(&scenario.name));
     let mut s = String::new();
@@ -74,11 +84,7 @@ pub fn header(scenario: &Scenario) -> String {
         s,
         "#if defined(__GNUC__)\n#define STEWART_UNUSED __attribute__((unused))\n#else\n#define STEWART_UNUSED\n#endif\n"
     );
-    let _ = writeln!(
-        s,
-        "#define STEWART_ACTUATOR_ROTARY {}",
-        i32::from(g.rotary().is_some())
-    );
+    let _ = writeln!(s, "#define STEWART_ACTUATOR_ROTARY {rotary}");
     let _ = writeln!(
         s,
         "#define STEWART_BASE_RADIUS_M {}",
@@ -101,14 +107,9 @@ pub fn header(scenario: &Scenario) -> String {
             .collect();
         rows.join(",\n")
     };
-    let what = if g.rotary().is_some() {
-        "Servo shaft centres B_i (base frame)"
-    } else {
-        "Base joints B_i (base frame)"
-    };
     let _ = writeln!(
         s,
-        "/* {what}. */\nSTEWART_UNUSED static const double STEWART_BASE_JOINTS_M[6][3] = {{\n{}\n}};",
+        "/* {base_points}. */\nSTEWART_UNUSED static const double STEWART_BASE_JOINTS_M[6][3] = {{\n{}\n}};",
         points(g.base_joints())
     );
     let _ = writeln!(
@@ -121,23 +122,27 @@ pub fn header(scenario: &Scenario) -> String {
         "/* Rotation centre (platform frame). */\nSTEWART_UNUSED static const double STEWART_PIVOT_M[3] = {};\n",
         c_list([p.pivot.x, p.pivot.y, p.pivot.z])
     );
-    match g.rotary() {
-        Some(servos) => servo_section(&mut s, servos),
-        None => {
-            let stroke = g.stroke();
-            for (name, v) in [("LEG_MIN_M", stroke.min), ("LEG_MAX_M", stroke.max)] {
-                if let Some(v) = v {
-                    let _ = writeln!(s, "#define STEWART_{name} {}", c_define(v));
-                }
-            }
-        }
-    }
+    s.push_str(&section);
     let _ = writeln!(s, "\n#endif /* {guard} */");
     s
 }
 
+/// The stroke of linear legs, where the scenario sets it.
+fn stroke_section(g: &Geometry) -> String {
+    let mut s = String::new();
+    let stroke = g.stroke();
+    for (name, v) in [("LEG_MIN_M", stroke.min), ("LEG_MAX_M", stroke.max)] {
+        if let Some(v) = v {
+            let _ = writeln!(s, "#define STEWART_{name} {}", c_define(v));
+        }
+    }
+    s
+}
+
 /// Horns, rods, range and mounting of the servos.
-fn servo_section(s: &mut String, servos: &RotaryActuators) {
+fn servo_section(servos: &RotaryActuators) -> String {
+    let mut text = String::new();
+    let s = &mut text;
     let _ = writeln!(
         s,
         "/* Servo i: horn tip H_i = B_i + a (cos t cos b_i, cos t sin b_i, sin t) at model angle t;\n \
@@ -188,6 +193,7 @@ fn servo_section(s: &mut String, servos: &RotaryActuators) {
         "/* Mounting offsets added to the commanded angles. */\nSTEWART_UNUSED static const double STEWART_SERVO_TRIM_DEG[6] = {};",
         c_list(servos.trims().iter().map(|a| a.degrees()))
     );
+    text
 }
 
 #[cfg(test)]

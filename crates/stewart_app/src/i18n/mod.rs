@@ -14,6 +14,7 @@ pub mod words;
 use std::fmt::Display;
 
 use serde::{Deserialize, Serialize};
+use stewart_kinematics::actuator::ActuatorKind;
 
 pub use catalogue::keys;
 
@@ -71,6 +72,17 @@ impl Lang {
     /// out for every key the code names).
     pub fn tr(self, key: &str) -> &'static str {
         catalogue::lookup(self, key).unwrap_or_else(|| leak_missing(key))
+    }
+
+    /// The text of `key` for an actuator kind: the catalogue's `key.linear`, `key.rotary`
+    /// (a test checks that every such key has each kind's words).
+    pub fn tr_kind(self, key: &str, kind: ActuatorKind) -> &'static str {
+        self.tr(&format!("{key}.{}", kind.name()))
+    }
+
+    /// [`Lang::fmt`] of `key` for an actuator kind, as [`Lang::tr_kind`] finds it.
+    pub fn fmt_kind(self, key: &str, kind: ActuatorKind, args: &[(&str, &dyn Display)]) -> String {
+        self.fmt(&format!("{key}.{}", kind.name()), args)
     }
 
     /// The text of `key` with each `{name}` replaced by its value in `args`.

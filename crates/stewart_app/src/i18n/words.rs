@@ -3,7 +3,7 @@
 //! The core keeps its English (the command line and the files use it); English here
 //! reproduces it exactly, which a test checks.
 
-use stewart_kinematics::actuation::Quantity;
+use stewart_kinematics::actuator::Quantity;
 use stewart_kinematics::architecture::ArchitectureReport;
 use stewart_kinematics::settings::{Setting, TrajectoryChoice};
 use stewart_kinematics::{Finding, FindingKind};
@@ -72,11 +72,7 @@ pub fn setting_label_with_unit(lang: Lang, setting: &Setting) -> String {
 
 /// What is plotted: `leg length` / `腿长`, `servo angle` / `舵机角`.
 pub fn quantity_name(lang: Lang, q: &Quantity) -> &'static str {
-    if q.unit == "m" {
-        lang.tr("quantity.leg_length")
-    } else {
-        lang.tr("quantity.servo_angle")
-    }
+    lang.tr_kind("quantity.name", q.actuator)
 }
 
 /// A trajectory kind's name.

@@ -8,6 +8,7 @@
 //! z/yaw, D-pad roll/pitch; the right bumper for fine moves. Input from the gamepad goes
 //! through [`PadState`], so tests drive the same mapping with synthetic states.
 
+use stewart_kinematics::actuator::ActuatorKind;
 use stewart_kinematics::{Geometry, Pose};
 
 use crate::i18n::Lang;
@@ -150,8 +151,8 @@ pub enum OutOfReach {
         limit: f64,
         /// Whether it is the lower limit.
         below: bool,
-        /// Whether the actuators are servos (degrees) rather than legs (metres).
-        servo: bool,
+        /// The actuators' kind (the value's unit and words follow it).
+        kind: ActuatorKind,
     },
 }
 
@@ -175,16 +176,16 @@ impl OutOfReach {
                 value,
                 limit,
                 below,
-                servo,
+                kind,
             } => {
-                let key = match (servo, below) {
-                    (false, true) => "teleop.leg_below",
-                    (false, false) => "teleop.leg_above",
-                    (true, true) => "teleop.servo_below",
-                    (true, false) => "teleop.servo_above",
+                let key = if below {
+                    "teleop.below"
+                } else {
+                    "teleop.above"
                 };
-                lang.fmt(
+                lang.fmt_kind(
                     key,
+                    kind,
                     &[
                         ("n", &n),
                         ("value", &format!("{value:.3}")),
@@ -204,7 +205,7 @@ pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
         return Some(OutOfReach::NotANumber);
     }
     let [lo, hi] = g.quantity_limits();
-    let servo = g.rotary().is_some();
+    let kind = g.actuator().kind();
     let values = match g.actuator_values_at(pose) {
         Ok(values) => values,
         Err(e) => {
@@ -221,7 +222,7 @@ pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
             value,
             limit,
             below,
-            servo,
+            kind,
         };
         match (lo, hi) {
             (Some(lo), _) if value < lo => Some(limit(lo, true)),

@@ -5,10 +5,11 @@ use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::layout::Layout;
 use crate::pose::Pose;
-use crate::rotary::{Actuator, RotaryActuators, Unreachable};
+use crate::rotary::{RotaryActuators, Unreachable};
 
 /// Which of the two plates a joint belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -349,10 +350,7 @@ impl Geometry {
 
     /// The servos, for a rotary platform.
     pub fn rotary(&self) -> Option<&RotaryActuators> {
-        match &self.params.actuator {
-            Actuator::Rotary(r) => Some(r),
-            Actuator::Linear => None,
-        }
+        self.params.actuator.rotary()
     }
 
     /// The home height at which the servos stand level (mean servo angle zero) with the

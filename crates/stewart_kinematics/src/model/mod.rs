@@ -2,6 +2,7 @@
 //! the actuators (linear legs or rotary servos), pose limits, trajectories, the `[link]`
 //! table, and the scene to draw.
 
+pub mod actuator;
 pub mod angle;
 pub mod geometry;
 pub mod layout;

@@ -94,46 +94,6 @@ pub struct Unreachable {
     pub excess: f64,
 }
 
-/// What moves the platform joints: linear legs (the seed's), or rotary servos with horns
-/// and rods.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub enum Actuator {
-    /// Legs whose length changes (stroke limits in the geometry).
-    #[default]
-    Linear,
-    /// Servos turning horns, with fixed-length rods to the platform.
-    Rotary(RotaryActuators),
-}
-
-/// The actuator kinds, as scenario files name them (`linear`, `rotary`) and settings
-/// belong to them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ActuatorKind {
-    /// Linear legs (stroke, leg speed, acceleration and jerk).
-    Linear,
-    /// Rotary servos (horns, rods, servo range and rates).
-    Rotary,
-}
-
-impl Actuator {
-    /// Its kind.
-    pub fn kind(&self) -> ActuatorKind {
-        match self {
-            Actuator::Linear => ActuatorKind::Linear,
-            Actuator::Rotary(_) => ActuatorKind::Rotary,
-        }
-    }
-
-    /// The kind as scenario files write it: `linear` or `rotary`.
-    pub fn kind_name(&self) -> &'static str {
-        match self.kind() {
-            ActuatorKind::Linear => "linear",
-            ActuatorKind::Rotary => "rotary",
-        }
-    }
-}
-
 /// The servo side of a rotary platform: horn and rod lengths, horn directions, range.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RotaryActuators {

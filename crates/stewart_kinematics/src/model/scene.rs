@@ -225,9 +225,9 @@ mod tests {
         }
         // A servo range: usage and near/over colours.
         let mut p = g.params().clone();
-        if let crate::rotary::Actuator::Rotary(r) = &p.actuator {
+        if let crate::actuator::Actuator::Rotary(r) = &p.actuator {
             let angles = r.horn_angles().map(|a| a.degrees());
-            p.actuator = crate::rotary::Actuator::Rotary(
+            p.actuator = crate::actuator::Actuator::Rotary(
                 crate::rotary::RotaryActuators::new(0.025, 0.12, angles, Some((-1.0, 1.0)))
                     .unwrap_or_else(|e| panic!("{e}")),
             );

@@ -2,107 +2,27 @@
 //! leg's length, or a servo's angle), its name and unit, its limits, and its value along
 //! a motion. The plots, leg bars and readouts read it from here.
 
+use crate::actuator::{Actuator, ActuatorKind, Quantity};
 use crate::forward::ForwardError;
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 use crate::rotary::Unreachable;
 
-/// The quantity that drives each joint, in words and numbers: everything that differs
-/// between actuator kinds in how their values are named, shown and bounded. Code that
-/// needs such a difference reads it here instead of asking which kind it has.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Quantity {
-    /// `leg length` or `servo angle`.
-    pub name: &'static str,
-    /// `L` or `θ`: with the actuator's number, the curve's label (`L1`, `θ1`).
-    pub symbol: &'static str,
-    /// What each actuator is called, for labels such as `leg L3` / `servo S3`.
-    pub part: &'static str,
-    /// `L` or `S`: with the number, the actuator's name (`L3`, `S3`).
-    pub letter: &'static str,
-    /// `m` or `°`.
-    pub unit: &'static str,
-    /// The same unit in ASCII, for files: `m` or `deg`.
-    pub ascii_unit: &'static str,
-    /// The kind in words: `linear legs` or `rotary servos`.
-    pub kind: &'static str,
-    /// The six values' CSV columns: `L1…L6` or `theta1…theta6`.
-    pub columns: [&'static str; 6],
-    /// What the actuators exert, by letter and unit: forces `F` (N) or torques `T` (N·m).
-    pub effort: (&'static str, &'static str),
-    /// Decimals that show a value to about a micrometre or a thousandth of a degree.
-    pub decimals: usize,
-    /// The widest sane range of a value when the scenario sets no limit.
-    pub widest: (f64, f64),
-    /// A small error in the value as people read it: millimetres or degrees (the factor
-    /// from the natural unit, and the unit).
-    pub fine: (f64, &'static str),
-}
-
-/// Linear legs: lengths in metres.
-pub const LEG_LENGTH: Quantity = Quantity {
-    name: "leg length",
-    symbol: "L",
-    part: "leg",
-    letter: "L",
-    unit: "m",
-    ascii_unit: "m",
-    kind: "linear legs",
-    columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
-    effort: ("F", "N"),
-    decimals: 6,
-    widest: (0.0, crate::bounds::LENGTH_M),
-    fine: (1e3, "mm"),
-};
-
-/// Rotary servos: angles in degrees.
-pub const SERVO_ANGLE: Quantity = Quantity {
-    name: "servo angle",
-    symbol: "θ",
-    part: "servo",
-    letter: "S",
-    unit: "°",
-    ascii_unit: "deg",
-    kind: "rotary servos",
-    columns: ["theta1", "theta2", "theta3", "theta4", "theta5", "theta6"],
-    effort: ("T", "N·m"),
-    decimals: 3,
-    widest: (-180.0, 180.0),
-    fine: (1.0, "°"),
-};
-
 impl Geometry {
     /// The quantity that drives the joints: leg length or servo angle.
     pub fn quantity(&self) -> Quantity {
-        if self.servos() {
-            SERVO_ANGLE
-        } else {
-            LEG_LENGTH
-        }
+        self.actuator().kind().quantity()
     }
 
-    /// Whether the actuators are rotary servos (the one place the kind is asked for the
-    /// properties below).
+    /// Whether the actuators are rotary servos: the solvers below dispatch on it.
     fn servos(&self) -> bool {
-        self.rotary().is_some()
+        self.actuator().kind() == ActuatorKind::Rotary
     }
 
     /// The speed, acceleration and jerk limits of the actuator values (m/s… or °/s…),
     /// from `limits`' keys for this kind.
     pub fn actuator_rate_limits(&self, limits: &crate::limits::Limits) -> [Option<f64>; 3] {
-        if self.servos() {
-            [
-                limits.servo_speed_max,
-                limits.servo_accel_max,
-                limits.servo_jerk_max,
-            ]
-        } else {
-            [
-                limits.leg_speed_max,
-                limits.leg_accel_max,
-                limits.leg_jerk_max,
-            ]
-        }
+        self.actuator().kind().rate_limits(limits)
     }
 
     /// Every assembly mode of actuator `values` (leg lengths in metres or servo angles in
@@ -157,12 +77,12 @@ impl Geometry {
     /// The limits of that quantity: the stroke (m) or the servo range (°), each end
     /// optional.
     pub fn quantity_limits(&self) -> [Option<f64>; 2] {
-        match self.rotary() {
-            Some(servos) => match servos.range() {
+        match self.actuator() {
+            Actuator::Rotary(servos) => match servos.range() {
                 Some((min, max)) => [Some(min.degrees()), Some(max.degrees())],
                 None => [None, None],
             },
-            None => [self.stroke().min, self.stroke().max],
+            Actuator::Linear => [self.stroke().min, self.stroke().max],
         }
     }
 
@@ -221,7 +141,7 @@ impl Geometry {
     /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
     /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
     pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
-        let Some(servos) = self.rotary() else {
+        let Actuator::Rotary(servos) = self.actuator() else {
             return self.leg_lengths_batch(poses);
         };
         if let Some(Ok(all)) = self.servo_angles_batch(poses) {
@@ -245,6 +165,7 @@ impl Geometry {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::actuator::LEG_LENGTH;
     use crate::test_support::servo_geometry;
 
     #[test]

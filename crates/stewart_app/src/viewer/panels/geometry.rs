@@ -131,21 +131,10 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
     let mut chosen = None;
     ui.horizontal(|ui| {
         ui.label(t.tr("geometry.actuators"));
-        for (kind, words, tip) in [
-            (
-                ActuatorKind::Linear,
-                "geometry.linear",
-                "geometry.linear_tip",
-            ),
-            (
-                ActuatorKind::Rotary,
-                "geometry.rotary",
-                "geometry.rotary_tip",
-            ),
-        ] {
+        for kind in ActuatorKind::ALL {
             if ui
-                .selectable_label(current == kind, t.tr(words))
-                .on_hover_text(t.tr(tip))
+                .selectable_label(current == kind, t.tr_kind("geometry.kind", kind))
+                .on_hover_text(t.tr_kind("geometry.kind_tip", kind))
                 .clicked()
                 && current != kind
             {

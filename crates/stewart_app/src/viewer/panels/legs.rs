@@ -11,9 +11,9 @@ use crate::viewer::state::ViewerState;
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
     let geometry = &state.scenario().geometry;
-    let rotary = geometry.rotary().is_some();
+    let kind = geometry.actuator().kind();
     let t = state.look.lang;
-    ui.heading(t.tr(if rotary { "legs.servos" } else { "legs.legs" }));
+    ui.heading(t.tr_kind("legs.heading", kind));
     let pose = state.pose();
     let frame = geometry.scene_frame(&pose, Vec::new());
     let letter = geometry.quantity().letter;
@@ -33,11 +33,10 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             }
         };
         let [r, g, b, _] = colour.to_array();
-        let note = match (leg.status, rotary) {
-            (LegStatus::Normal, _) => "",
-            (LegStatus::NearLimit, _) => t.tr("legs.near_limit"),
-            (LegStatus::OverLimit, false) => t.tr("legs.over_stroke"),
-            (LegStatus::OverLimit, true) => t.tr("legs.past_range"),
+        let note = match leg.status {
+            LegStatus::Normal => "",
+            LegStatus::NearLimit => t.tr("legs.near_limit"),
+            LegStatus::OverLimit => t.tr_kind("legs.over_limit", kind),
         };
         ui.horizontal(|ui| {
             ui.label(
@@ -66,12 +65,9 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
                             } else {
                                 Color32::WHITE
                             };
-                            let usage = t.fmt(
-                                if rotary {
-                                    "legs.usage_range"
-                                } else {
-                                    "legs.usage_stroke"
-                                },
+                            let usage = t.fmt_kind(
+                                "legs.usage",
+                                kind,
                                 &[("percent", &format!("{:.0}", 100.0 * u))],
                             );
                             let text = if note.is_empty() {
@@ -94,12 +90,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
             ui.label(t.fmt("legs.condition", &[("k", &format!("{k:.2}"))]))
         }
         Some(None) => ui.label(
-            RichText::new(t.tr(if rotary {
-                "legs.singular_servos"
-            } else {
-                "legs.singular_legs"
-            }))
-            .color(ui.visuals().warn_fg_color),
+            RichText::new(t.tr_kind("legs.singular", kind)).color(ui.visuals().warn_fg_color),
         ),
         None => ui.label(RichText::new(t.tr("legs.servo_unreachable")).color(ERROR)),
     };

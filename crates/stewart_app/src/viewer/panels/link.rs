@@ -232,7 +232,7 @@ fn choice<T: Word>(ui: &mut egui::Ui, lang: Lang, label: &str, current: T) -> Op
 /// The `[link]` table.
 fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
     let link = state.scenario().link.clone();
-    let rotary = state.scenario().geometry.rotary().is_some();
+    let outputs = state.scenario().geometry.actuator().kind().link_outputs();
     let t = state.look.lang;
     if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
         state.edit_link(|l| l.transport = chosen);
@@ -312,7 +312,8 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
     if let Some(f) = choice::<LinkFormat>(ui, t, "link.format", link.format) {
         state.edit_link(|l| l.format = f);
     }
-    if rotary {
+    // The choice shows where the kind offers more than its native unit.
+    if outputs.len() > 1 {
         if let Some(o) = choice::<LinkOutput>(ui, t, "link.output", link.output) {
             state.edit_link(|l| l.output = o);
         }

@@ -2,6 +2,7 @@
 //! offset folded into its trim, a linear leg's length offset into the link's channel
 //! offset (so that what reaches the actuator makes the real leg as long as the model's).
 
+use crate::actuator::{Actuator, ActuatorKind};
 use crate::angle::Angle;
 use crate::rotary::{RotaryActuators, RotaryError, wrap_half_turn};
 use crate::scenario::Scenario;
@@ -28,6 +29,14 @@ pub(crate) fn retrimmed(
     servos.clone().with_mounting(*servos.reversed(), trims_deg)
 }
 
+/// Where [`calibrated_scenario`] puts the actuators' offsets, in words.
+pub fn offsets_folded_into(kind: ActuatorKind) -> &'static str {
+    match kind {
+        ActuatorKind::Rotary => "angle offsets folded into actuator.servo_trim_deg",
+        ActuatorKind::Linear => "length offsets folded into the link's channel offsets",
+    }
+}
+
 /// `scenario` with `calibration` applied: its geometry (joints as coordinates, servo
 /// trims adjusted) and, for linear legs, the link's channel offsets lowered by each leg's
 /// length offset (scaled and mirrored as the channel is), so that a leg commanded the
@@ -38,11 +47,15 @@ pub fn calibrated_scenario(
     poses: usize,
 ) -> Scenario {
     let mut link = scenario.link.clone();
-    if calibration.geometry.rotary().is_none() {
-        for k in 0..6 {
-            let leg = usize::from(link.actuator[k].clamp(1, 6)) - 1;
-            let sign = if link.reversed[k] { -1.0 } else { 1.0 };
-            link.offset[k] -= sign * link.scale[k] * calibration.offsets[leg];
+    match calibration.geometry.actuator() {
+        // The trims were adjusted with the geometry.
+        Actuator::Rotary(_) => {}
+        Actuator::Linear => {
+            for k in 0..6 {
+                let leg = usize::from(link.actuator[k].clamp(1, 6)) - 1;
+                let sign = if link.reversed[k] { -1.0 } else { 1.0 };
+                link.offset[k] -= sign * link.scale[k] * calibration.offsets[leg];
+            }
         }
     }
     let note = format!("calibrated from {poses} measured poses");

@@ -23,14 +23,15 @@ mod leg_problem;
 
 use thiserror::Error;
 
+use crate::actuator::Actuator;
 use crate::geometry::{Geometry, GeometryError, PlateJoints};
 use crate::pose::Pose;
-use crate::rotary::{Actuator, RotaryError};
+use crate::rotary::RotaryError;
 
 use leg_model::{LegModel, PARAMETERS, PreparedPose};
 use leg_problem::{LegOutcome, LegProblem};
 
-pub use apply::calibrated_scenario;
+pub use apply::{calibrated_scenario, offsets_folded_into};
 
 /// One measured pose and what the actuators were commanded for it.
 #[derive(Clone, Copy, Debug, PartialEq)]

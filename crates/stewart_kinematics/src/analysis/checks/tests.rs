@@ -5,11 +5,12 @@
 use nalgebra::Vector3;
 
 use super::{CheckSettings, FindingKind, check_motion};
+use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::geometry::{Geometry, GeometryParams};
 use crate::limits::Limits;
 use crate::pose::Pose;
-use crate::rotary::{Actuator, RotaryActuators};
+use crate::rotary::RotaryActuators;
 use crate::test_support::servo_geometry;
 use crate::trajectory::Samples;
 

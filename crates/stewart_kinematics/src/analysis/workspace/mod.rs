@@ -557,6 +557,7 @@ pub enum Axis {
 
 mod column;
 mod limited;
+mod method;
 pub mod reach;
 mod roots;
 mod rotary;

@@ -12,13 +12,14 @@ use super::file::{
     ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
     LinearChannelFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
+use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::checks::CheckSettings;
 use crate::forces::Payload;
 use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits};
 use crate::limits::Limits;
 use crate::pose::Pose;
-use crate::rotary::{Actuator, RotaryActuators, RotaryError};
+use crate::rotary::{RotaryActuators, RotaryError};
 use crate::trajectory::{
     Channel, Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Motion, PoseTable,
     Sampling, Sinusoid, Sway, Trajectory,

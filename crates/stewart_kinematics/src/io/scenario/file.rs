@@ -119,7 +119,7 @@ pub(crate) struct ActuatorFile {
     pub servo_trim_deg: Option<Spanned<Vec<f64>>>,
 }
 
-pub(crate) use crate::rotary::ActuatorKind;
+pub(crate) use crate::actuator::ActuatorKind;
 
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]

@@ -3,8 +3,9 @@
 use thiserror::Error;
 
 use super::target::ActuatorKind;
+use crate::actuator::Actuator;
 use crate::geometry::{Geometry, GeometryError};
-use crate::rotary::{Actuator, RotaryActuators, RotaryError};
+use crate::rotary::{RotaryActuators, RotaryError};
 use crate::scenario::Scenario;
 
 /// Why a switch of actuator kind was refused.

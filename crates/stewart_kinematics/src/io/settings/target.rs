@@ -1,8 +1,9 @@
 //! What each setting reads and writes in a [`Scenario`].
 
+use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::geometry::{Geometry, Plate, PlateJoints};
-use crate::rotary::{Actuator, RotaryActuators};
+use crate::rotary::RotaryActuators;
 use crate::scenario::Scenario;
 use crate::trajectory::{Channel, Sampling, Trajectory};
 
@@ -114,7 +115,7 @@ pub enum LimitKey {
     ServoJerk,
 }
 
-pub use crate::rotary::ActuatorKind;
+pub use crate::actuator::ActuatorKind;
 
 /// Thresholds of the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

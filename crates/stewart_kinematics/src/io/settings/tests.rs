@@ -508,7 +508,7 @@ fn slider_ranges_follow_the_platforms_size() {
 
 #[test]
 fn the_quantity_limits_are_the_stroke_or_the_servo_range() {
-    use crate::rotary::ActuatorKind;
+    use crate::actuator::ActuatorKind;
     let keys = |kind| quantity_limit_targets(kind).map(|t| of(t).key.clone());
     assert_eq!(
         keys(ActuatorKind::Linear),
