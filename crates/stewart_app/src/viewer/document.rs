@@ -9,6 +9,7 @@
 //! [`super::state::ViewerState`]; panels that only edit the scenario can take this part
 //! alone.
 
+use stewart_kinematics::link_settings::LinkSettings;
 use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::{CheckReport, GeometryParams, Layout, Scenario};
 
@@ -74,15 +75,20 @@ impl Document {
         }
     }
 
-    /// Change the `[link]` table (already checked): an undo step, nothing derived to
-    /// rebuild (nothing depends on it); `false` when it is the same table.
-    pub fn edit_link(&mut self, link: stewart_kinematics::link_settings::LinkSettings) -> bool {
-        if link == self.scenario.link {
-            return false;
+    /// Change the `[link]` table: `change` works on a copy, kept only when the table is
+    /// sound (else the reason, naming the key). A kept change is an undo step with nothing
+    /// derived to rebuild (nothing depends on `[link]`); the same table records nothing.
+    pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) -> Result<(), String> {
+        let mut link = self.scenario.link.clone();
+        change(&mut link);
+        if let Some(p) = link.problem() {
+            return Err(format!("`{}` {}", p.key, p.reason));
         }
-        self.undo.record(&self.scenario);
-        self.scenario.link = link;
-        true
+        if link != self.scenario.link {
+            self.undo.record(&self.scenario);
+            self.scenario.link = link;
+        }
+        Ok(())
     }
 
     /// Write one setting (`None`: switch an optional one off).

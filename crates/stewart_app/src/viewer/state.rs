@@ -128,16 +128,7 @@ impl ViewerState {
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
     /// sound (else the reason shows in the Link panel).
     pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
-        let mut link = self.doc.scenario().link.clone();
-        change(&mut link);
-        match link.problem() {
-            None => {
-                // An edit like any other (undoable); nothing derived depends on `[link]`.
-                self.doc.edit_link(link);
-                self.link_error = None;
-            }
-            Some(p) => self.link_error = Some(format!("`{}` {}", p.key, p.reason)),
-        }
+        self.link_error = self.doc.edit_link(change).err();
     }
 
     /// Move the manual pose by a velocity command for `dt` seconds (keyboard and gamepad),

@@ -6,24 +6,26 @@ use stewart_kinematics::scene::LegStatus;
 
 use super::plot::leg_colour;
 use super::widgets::ERROR;
-use crate::viewer::state::ViewerState;
+use crate::i18n::Lang;
+use stewart_kinematics::{Pose, Scenario};
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
-    let geometry = &state.scenario().geometry;
+use crate::viewer::look::Look;
+
+/// The panel: the actuators of `scenario` at `pose`.
+pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
+    let geometry = &scenario.geometry;
     let kind = geometry.actuator().kind();
-    let t = state.look.lang;
+    let t = look.lang;
     ui.heading(t.tr_kind("legs.heading", kind));
-    let pose = state.pose();
-    let frame = geometry.scene_frame(&pose, Vec::new());
+    let frame = geometry.scene_frame(pose, Vec::new());
     let letter = geometry.quantity().letter;
-    let theme = state.theme();
+    let theme = look.theme();
     for (i, leg) in frame.legs.iter().enumerate() {
         let angle = frame.servos.map(|s| s[i].angle_deg);
         // The bar takes the leg's own colour (its curve's in the plot, its body's in the 3D
         // view), or the warning colours near and past a limit.
         let colour = match leg.status {
-            LegStatus::Normal if state.look.coloured_legs => leg_colour(i),
+            LegStatus::Normal if look.coloured_legs => leg_colour(i),
             status => {
                 let [r, g, b, _] = theme
                     .leg_colours(status)
@@ -82,11 +84,11 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
         });
     }
     match geometry
-        .actuated_conditioning(&pose)
+        .actuated_conditioning(pose)
         .map(|c| c.condition_number)
     {
         Some(Some(k)) => {
-            singularity_gauge(ui, state, k);
+            singularity_gauge(ui, t, scenario.checks.condition_max, k);
             ui.label(t.fmt("legs.condition", &[("k", &format!("{k:.2}"))]))
         }
         Some(None) => ui.label(
@@ -99,9 +101,7 @@ pub fn show(ui: &mut egui::Ui, state: &ViewerState) {
 /// How far the pose is from a singularity: the inverse condition number 1/κ as a bar (1 at
 /// a perfectly conditioned pose, 0 at a singular one), red past the near-singular threshold
 /// `checks.condition_max`, amber within twice it.
-fn singularity_gauge(ui: &mut egui::Ui, state: &ViewerState, k: f64) {
-    let t = state.look.lang;
-    let max = state.scenario().checks.condition_max;
+fn singularity_gauge(ui: &mut egui::Ui, t: Lang, max: f64, k: f64) {
     let distance = (1.0 / k).clamp(0.0, 1.0);
     let fill = if k > max {
         ERROR

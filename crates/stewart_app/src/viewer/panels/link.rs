@@ -4,6 +4,7 @@
 //! a dry run, the last frames.
 
 use egui::{Color32, RichText};
+use stewart_kinematics::actuator::Quantity;
 use stewart_kinematics::link_settings::{
     LinkFormat, LinkOutput, LinkStop, LinkTransport, RATES_HZ, Word,
 };
@@ -12,6 +13,8 @@ use stewart_link::transport::list_ports;
 
 use super::widgets;
 use crate::i18n::Lang;
+use crate::viewer::document::Document;
+use crate::viewer::live_link::LiveLink;
 use crate::viewer::state::ViewerState;
 
 /// The colour of each state: grey, amber, green, red.
@@ -41,9 +44,10 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         .default_open(state.look.expand_panels || state.link.connected())
         .show(ui, |ui| {
             if state.link.connected() {
-                live(ui, state);
+                let quantity = state.doc.scenario().geometry.quantity();
+                live(ui, &mut state.link, quantity, t, state.look.expand_panels);
             } else {
-                settings(ui, state);
+                settings(ui, &mut state.doc, &mut state.link_error, t);
                 if ui
                     .button(RichText::new(t.tr("link.connect")).strong())
                     .on_hover_text(t.tr("link.connect_tip"))
@@ -57,11 +61,11 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 }
 
 /// The stream: state, ARM, E-STOP, figures.
-fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let Some(status) = state.link.sender_status() else {
+/// `quantity`: what the actuators are sent; `open`: the advanced part open at first.
+fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, open: bool) {
+    let Some(status) = link.sender_status() else {
         return;
     };
-    let t = state.look.lang;
     let colour = state_colour(status.state);
     egui::Frame::new()
         .fill(colour)
@@ -76,7 +80,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .color(Color32::WHITE),
             );
         });
-    ui.label(state.link.described().unwrap_or_default());
+    ui.label(link.described().unwrap_or_default());
     let width = ui.available_width();
     let big = |text: &str, fill: Color32| {
         egui::Button::new(
@@ -93,9 +97,9 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         .on_hover_text(t.tr("link.estop_tip"))
         .clicked()
     {
-        state.link.estop();
+        link.estop();
     }
-    let can_arm = status.state == LinkState::Disarmed && !state.link.stopping();
+    let can_arm = status.state == LinkState::Disarmed && !link.stopping();
     if ui
         .add_enabled(
             can_arm,
@@ -104,7 +108,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
         .on_hover_text(t.tr("link.arm_tip"))
         .clicked()
     {
-        state.link.arm();
+        link.arm();
     }
     if let Some((at, frame)) = &status.telemetry {
         ui.label(t.fmt(
@@ -118,7 +122,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     let st = &status.telemetry_stats;
     if st.frames > 0 {
-        tracking_plot(ui, state);
+        tracking_plot(ui, link, quantity, t);
     }
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
@@ -126,7 +130,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
     // The stream's timing, the telemetry's counts and the last frames' bytes: for those
     // who debug a controller.
     egui::CollapsingHeader::new(t.tr("link.advanced"))
-        .default_open(state.look.expand_panels)
+        .default_open(open)
         .show(ui, |ui| {
             ui.label(t.fmt(
                 "link.figures",
@@ -149,7 +153,7 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
                     ],
                 ));
             }
-            let lines = state.link.recent_lines();
+            let lines = link.recent_lines();
             if !lines.is_empty() {
                 ui.label(t.tr("link.last_frames"));
                 for line in lines.iter().rev().take(4) {
@@ -158,23 +162,21 @@ fn live(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         });
     // Pressed again while the platform is on its way home: an emergency stop.
-    let (label, tip) = if state.link.stopping() {
+    let (label, tip) = if link.stopping() {
         (t.tr("link.stop_now"), t.tr("link.stop_now_tip"))
     } else {
         (t.tr("link.disconnect"), t.tr("link.disconnect_tip"))
     };
     if ui.button(label).on_hover_text(tip).clicked() {
-        state.link.disconnect();
+        link.disconnect();
     }
 }
 
 /// The tracking error of the last seconds, per actuator (measured minus commanded: mm for
 /// legs, degrees for servos), in the actuators' colours.
-fn tracking_plot(ui: &mut egui::Ui, state: &ViewerState) {
-    let t = state.look.lang;
-    let q = state.scenario().geometry.quantity();
+fn tracking_plot(ui: &mut egui::Ui, link: &LiveLink, q: Quantity, t: Lang) {
     let (scale, unit) = q.fine;
-    let rows = state.link.tracking();
+    let rows = link.tracking();
     ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
     // Zero always in sight: an error is read against it, not against its own wobble.
     egui_plot::Plot::new("link-tracking")
@@ -230,12 +232,11 @@ fn choice<T: Word>(ui: &mut egui::Ui, lang: Lang, label: &str, current: T) -> Op
 }
 
 /// The `[link]` table.
-fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let link = state.scenario().link.clone();
-    let outputs = state.scenario().geometry.actuator().kind().link_outputs();
-    let t = state.look.lang;
+fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+    let link = doc.scenario().link.clone();
+    let outputs = doc.scenario().geometry.actuator().kind().link_outputs();
     if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
-        state.edit_link(|l| l.transport = chosen);
+        *error = doc.edit_link(|l| l.transport = chosen).err();
     }
     match link.transport {
         LinkTransport::Serial => {
@@ -248,7 +249,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .changed()
                 {
                     let port = (!port.trim().is_empty()).then(|| port.trim().to_owned());
-                    state.edit_link(|l| l.port = port);
+                    *error = doc.edit_link(|l| l.port = port).err();
                 }
             });
             ui.menu_button(t.tr("link.choose_port"), |ui| match list_ports() {
@@ -258,7 +259,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                 Ok(ports) => {
                     for p in ports {
                         if ui.button(format!("{}  {}", p.name, p.kind)).clicked() {
-                            state.edit_link(|l| l.port = Some(p.name.clone()));
+                            *error = doc.edit_link(|l| l.port = Some(p.name.clone())).err();
                             ui.close();
                         }
                     }
@@ -276,7 +277,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                 )
                 .changed()
             {
-                state.edit_link(|l| l.baud = baud);
+                *error = doc.edit_link(|l| l.baud = baud).err();
             }
         }
         LinkTransport::Udp => {
@@ -290,7 +291,7 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .changed()
                 {
                     let address = (!address.trim().is_empty()).then(|| address.trim().to_owned());
-                    state.edit_link(|l| l.address = address);
+                    *error = doc.edit_link(|l| l.address = address).err();
                 }
             });
         }
@@ -307,15 +308,15 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
         )
         .changed()
     {
-        state.edit_link(|l| l.rate_hz = rate.round());
+        *error = doc.edit_link(|l| l.rate_hz = rate.round()).err();
     }
     if let Some(f) = choice::<LinkFormat>(ui, t, "link.format", link.format) {
-        state.edit_link(|l| l.format = f);
+        *error = doc.edit_link(|l| l.format = f).err();
     }
     // The choice shows where the kind offers more than its native unit.
     if outputs.len() > 1 {
         if let Some(o) = choice::<LinkOutput>(ui, t, "link.output", link.output) {
-            state.edit_link(|l| l.output = o);
+            *error = doc.edit_link(|l| l.output = o).err();
         }
         if link.output == LinkOutput::Pulse {
             let (mut zero, mut per) = (link.pulse_zero_us, link.pulse_us_per_deg);
@@ -324,7 +325,9 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
             let b =
                 ui.add(egui::Slider::new(&mut per, -20.0..=20.0).text(t.tr("link.pulse_per_deg")));
             if a.changed() || b.changed() {
-                state.edit_link(|l| (l.pulse_zero_us, l.pulse_us_per_deg) = (zero, per));
+                *error = doc
+                    .edit_link(|l| (l.pulse_zero_us, l.pulse_us_per_deg) = (zero, per))
+                    .err();
             }
         }
     }
@@ -333,22 +336,21 @@ fn settings(ui: &mut egui::Ui, state: &mut ViewerState) {
         .add(egui::Slider::new(&mut ramp, 0.0..=10.0).text(t.tr("link.ramp")))
         .changed()
     {
-        state.edit_link(|l| l.ramp_s = ramp);
+        *error = doc.edit_link(|l| l.ramp_s = ramp).err();
     }
     if let Some(stop) = choice::<LinkStop>(ui, t, "link.stop", link.stop) {
-        state.edit_link(|l| l.stop = stop);
+        *error = doc.edit_link(|l| l.stop = stop).err();
     }
-    egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, state));
-    if let Some(e) = &state.link_error {
+    egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, doc, error, t));
+    if let Some(e) = error {
         ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(widgets::ERROR));
     }
 }
 
 /// Channel k: which actuator, scale, offset, reversed.
-fn channels(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let link = state.scenario().link.clone();
-    let t = state.look.lang;
-    let unit = state.scenario().geometry.quantity().unit;
+fn channels(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+    let link = doc.scenario().link.clone();
+    let unit = doc.scenario().geometry.quantity().unit;
     egui::Grid::new("link-channels")
         .striped(true)
         .show(ui, |ui| {
@@ -375,10 +377,12 @@ fn channels(ui: &mut egui::Ui, state: &mut ViewerState) {
                         .changed()
                     | ui.checkbox(&mut reversed, "").changed();
                 if changed {
-                    state.edit_link(|l| {
-                        (l.actuator[k], l.scale[k], l.offset[k], l.reversed[k]) =
-                            (a, scale, offset, reversed);
-                    });
+                    *error = doc
+                        .edit_link(|l| {
+                            (l.actuator[k], l.scale[k], l.offset[k], l.reversed[k]) =
+                                (a, scale, offset, reversed);
+                        })
+                        .err();
                 }
                 ui.end_row();
             }

@@ -57,7 +57,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                             state.look.lang,
                         );
                         ui.separator();
-                        legs::show(ui, state);
+                        legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
                         ui.separator();
                         diagnostics::show(ui, state);
                         design::show(
@@ -69,7 +69,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         );
                         ui.separator();
                         workspace::show(ui, state);
-                        reach::show(ui, state);
+                        let (t, open) = (state.look.lang, state.look.expand_panels);
+                        reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
                         ui.separator();
                         link::show(ui, state);
                     });
@@ -83,7 +84,9 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         } else {
             220.0
         })
-        .show(ui, |ui| plot::show(ui, state));
+        .show(ui, |ui| {
+            plot::show(ui, &state.doc, &mut state.playback, &state.look);
+        });
     state.look.plot_height = plot.response.rect.height();
     let plot_rect = plot.response.rect;
     egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));

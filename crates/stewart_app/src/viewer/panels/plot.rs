@@ -5,9 +5,10 @@ use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
 
 use crate::i18n::words;
+use crate::viewer::document::Document;
 use crate::viewer::history::History;
-use crate::viewer::playback::MotionMode;
-use crate::viewer::state::ViewerState;
+use crate::viewer::look::Look;
+use crate::viewer::playback::{MotionMode, Playback};
 
 /// Leg `i`'s colour, as in exported plots.
 pub fn leg_colour(i: usize) -> Color32 {
@@ -64,32 +65,32 @@ pub fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]
 }
 
 /// Curve width in points (presentation mode: the projector's, twice as wide).
-fn line_width(state: &ViewerState) -> f32 {
-    if state.look.presentation { 3.5 } else { 1.5 }
+fn line_width(look: &Look) -> f32 {
+    if look.presentation { 3.5 } else { 1.5 }
 }
 
 /// The panel: the plot, and its legend beside it (outside the curves). In trajectory mode,
 /// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
 /// resets the view).
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let legend_width = if state.look.presentation { 110.0 } else { 76.0 };
+pub fn show(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look) {
+    let legend_width = if look.presentation { 110.0 } else { 76.0 };
     let size = ui.available_size();
     ui.horizontal(|ui| {
         ui.allocate_ui(
             egui::vec2((size.x - legend_width).max(100.0), size.y),
             |ui| {
-                plot(ui, state);
+                plot(ui, doc, playback, look);
             },
         );
-        ui.vertical(|ui| legend(ui, state));
+        ui.vertical(|ui| legend(ui, doc, playback, look));
     });
 }
 
 /// The legend: a swatch and the name of each curve, the limits and the time marker.
-fn legend(ui: &mut egui::Ui, state: &ViewerState) {
-    let quantity = state.scenario().geometry.quantity();
-    let t = state.look.lang;
-    let width = line_width(state);
+fn legend(ui: &mut egui::Ui, doc: &Document, playback: &Playback, look: &Look) {
+    let quantity = doc.scenario().geometry.quantity();
+    let t = look.lang;
+    let width = line_width(look);
     let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
         ui.horizontal(|ui| {
             let (rect, _) = ui.allocate_exact_size(egui::vec2(22.0, 12.0), egui::Sense::hover());
@@ -118,7 +119,7 @@ fn legend(ui: &mut egui::Ui, state: &ViewerState) {
             false,
         );
     }
-    let [min, max] = state.scenario().geometry.quantity_limits();
+    let [min, max] = doc.scenario().geometry.quantity_limits();
     for (name, limit) in [("plot.max", max), ("plot.min", min)] {
         if limit.is_some() {
             swatch(
@@ -129,17 +130,17 @@ fn legend(ui: &mut egui::Ui, state: &ViewerState) {
             );
         }
     }
-    if state.playback.mode == MotionMode::Trajectory && state.beyond_limits() {
+    if playback.mode == MotionMode::Trajectory && doc.beyond_limits() {
         swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
     }
-    if state.playback.mode == MotionMode::Trajectory {
-        swatch(ui, marker_colour(state), t.tr("plot.now").to_owned(), false);
+    if playback.mode == MotionMode::Trajectory {
+        swatch(ui, marker_colour(look), t.tr("plot.now").to_owned(), false);
     }
 }
 
 /// The time marker's colour: black on light, white on dark.
-fn marker_colour(state: &ViewerState) -> Color32 {
-    if state.look.is_light() {
+fn marker_colour(look: &Look) -> Color32 {
+    if look.is_light() {
         Color32::BLACK
     } else {
         Color32::WHITE
@@ -147,13 +148,13 @@ fn marker_colour(state: &ViewerState) -> Color32 {
 }
 
 /// The plot itself.
-fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let width = line_width(state);
-    let geometry = &state.scenario().geometry;
-    let quantity = geometry.quantity();
-    let [min, max] = geometry.quantity_limits();
-    let manual = state.playback.mode == MotionMode::Manual;
-    let t = state.look.lang;
+fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look) {
+    let width = line_width(look);
+    let scenario = doc.scenario();
+    let quantity = scenario.geometry.quantity();
+    let [min, max] = scenario.geometry.quantity_limits();
+    let manual = playback.mode == MotionMode::Manual;
+    let t = look.lang;
     let x_label = t.tr(if manual {
         "plot.seconds_ago"
     } else {
@@ -175,19 +176,18 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
     let left_end = if manual {
         -History::WINDOW
     } else {
-        state.scenario().motion.sampling.start()
+        scenario.motion.sampling.start()
     };
     let shown = plot.show(ui, |plot| {
         for leg in 0..6 {
             let points: Vec<[f64; 2]> = if manual {
-                state
-                    .playback
+                playback
                     .history
                     .entries()
-                    .map(|(t, l)| [t - state.playback.clock, l[leg]])
+                    .map(|(t, l)| [t - playback.clock, l[leg]])
                     .collect()
             } else {
-                let (times, lengths) = state.plot_samples();
+                let (times, lengths) = doc.plot_samples();
                 times
                     .iter()
                     .zip(lengths)
@@ -214,7 +214,7 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
         // The limits' labels as legible as the axes' (they were small and grey).
-        let label_colour = if state.look.is_light() {
+        let label_colour = if look.is_light() {
             Color32::from_gray(60)
         } else {
             Color32::from_gray(200)
@@ -253,10 +253,10 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
         if !manual {
-            let now = state.scenario().motion.sampling.start() + state.playback.time;
+            let now = scenario.motion.sampling.start() + playback.time;
             plot.vline(
                 VLine::new(t.tr("plot.now"), now)
-                    .color(marker_colour(state))
+                    .color(marker_colour(look))
                     .width(width),
             );
         }
@@ -267,9 +267,9 @@ fn plot(ui: &mut egui::Ui, state: &mut ViewerState) {
         && let Some(pointer) = response.interact_pointer_pos()
     {
         let t = shown.transform.value_from_position(pointer).x;
-        let start = state.scenario().motion.sampling.start();
-        state.playback.time = (t - start).clamp(0.0, state.duration());
-        state.playback.playing = false;
+        let start = scenario.motion.sampling.start();
+        playback.time = (t - start).clamp(0.0, scenario.motion.sampling.duration());
+        playback.playing = false;
     }
 }
 
@@ -299,9 +299,10 @@ mod tests {
 
     #[test]
     fn presentation_mode_draws_wider_curves() {
-        let mut state = ViewerState::new(stewart_kinematics::Scenario::seed());
-        let screen = line_width(&state);
+        let mut state =
+            crate::viewer::state::ViewerState::new(stewart_kinematics::Scenario::seed());
+        let screen = line_width(&state.look);
         state.look.presentation = true;
-        assert!(line_width(&state) >= 2.0 * screen);
+        assert!(line_width(&state.look) >= 2.0 * screen);
     }
 }

@@ -3,20 +3,26 @@
 //! moves.
 
 use egui::{RichText, Stroke};
+use stewart_kinematics::Pose;
 
 use super::widgets::{ERROR, OK, UNREACHABLE, range_bar};
+use crate::i18n::Lang;
 use crate::i18n::words;
-use crate::viewer::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG};
-use crate::viewer::state::ViewerState;
+use crate::viewer::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG, OrientationReach};
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel in language `t`, at `pose`, open at first when `open`; `reach` is asked only
+/// while the panel is open.
+pub fn show(
+    ui: &mut egui::Ui,
+    t: Lang,
+    open: bool,
+    pose: &Pose,
+    reach: impl FnOnce() -> OrientationReach,
+) {
     egui::CollapsingHeader::new(t.tr("reach.heading"))
-        .default_open(state.look.expand_panels)
+        .default_open(open)
         .show(ui, |ui| {
-            let reach = state.orientation_reach();
-            let pose = state.pose();
+            let reach = reach();
             let now = pose.rpy_degrees();
             if reach.angles.iter().all(Option::is_none) {
                 ui.label(RichText::new(t.tr("reach.out_of_reach")).color(ERROR));
@@ -52,19 +58,13 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                     ("cells", &reach.map.reachable.len()),
                 ],
             ));
-            map(ui, state, &reach.map, [now[0], now[1]]);
+            map(ui, t, &reach.map, [now[0], now[1]]);
         });
 }
 
 /// The roll–pitch map: reachable cells green, the others dark, the pose's own angles as a
 /// cross, ticks at −span, 0, +span.
-fn map(
-    ui: &mut egui::Ui,
-    state: &ViewerState,
-    map: &stewart_kinematics::workspace::ReachMap,
-    now: [f64; 2],
-) {
-    let t = state.look.lang;
+fn map(ui: &mut egui::Ui, t: Lang, map: &stewart_kinematics::workspace::ReachMap, now: [f64; 2]) {
     let side = 170.0;
     // Room for the pitch ticks on the left, the roll ticks and label below, half a tick
     // label above and to the right.
