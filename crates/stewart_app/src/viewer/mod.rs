@@ -18,6 +18,7 @@ pub mod assembly;
 pub mod derived;
 pub mod design;
 pub mod document;
+pub mod editor;
 pub mod export_job;
 pub mod exports;
 mod file_actions;

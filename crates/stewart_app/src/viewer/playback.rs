@@ -120,6 +120,13 @@ impl Playback {
             .filter(|r| self.is_playing() && *r < SMOOTH_FRAME_RATE)
     }
 
+    /// Show the trajectory paused at `time` seconds from its start, within `[0, duration]`.
+    pub fn pause_at(&mut self, time: f64, duration: f64) {
+        self.mode = MotionMode::Trajectory;
+        self.playing = false;
+        self.time = time.clamp(0.0, duration);
+    }
+
     /// Stop and step by `step` seconds (one sample, signed), within `[0, duration]`.
     pub fn step(&mut self, step: f64, duration: f64) {
         self.playing = false;

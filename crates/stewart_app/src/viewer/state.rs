@@ -10,11 +10,12 @@
 use nalgebra::Vector3;
 
 use stewart_kinematics::link_settings::LinkSettings;
-use stewart_kinematics::settings::{Group, Setting, TrajectoryChoice};
+use stewart_kinematics::settings::{Group, Setting};
 use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
 
 use super::document::Document;
+use super::editor::Editor;
 use super::exports::Exports;
 use super::files::Files;
 use super::live_link::{Drive, LiveLink};
@@ -244,22 +245,30 @@ impl ViewerState {
         self.doc.scenario()
     }
 
-    /// Change the scenario through the document's one edit path ([`Document::edit`]);
-    /// playback stays within the new duration. Returns whether the change was applied.
+    /// The scenario's edit path for a panel: the document, with playback kept within the
+    /// trajectory.
+    pub fn editor(&mut self) -> Editor<'_> {
+        Editor::new(
+            &mut self.doc,
+            &mut self.playback,
+            self.look.lang,
+            self.look.expand_panels,
+        )
+    }
+
+    /// [`Editor::edit`]: change the scenario through the one edit path. Returns whether
+    /// the change was applied.
     pub fn edit(
         &mut self,
         group: Group,
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
     ) -> bool {
-        let applied = self.doc.edit(group, change);
-        self.keep_time_in_range();
-        applied
+        self.editor().edit(group, change)
     }
 
-    /// Write one setting (`None`: switch an optional one off).
+    /// [`Editor::apply`]: write one setting (`None`: switch an optional one off).
     pub fn apply(&mut self, setting: &Setting, value: Option<f64>) {
-        self.doc.apply(setting, value);
-        self.keep_time_in_range();
+        self.editor().apply(setting, value);
     }
 
     /// Replace the geometry's numbers.
@@ -267,21 +276,9 @@ impl ViewerState {
         self.doc.set_geometry(params);
     }
 
-    /// The nearest layout that is not architecturally singular: the layout and the
-    /// largest joint move, degrees.
-    pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
-        self.doc.sound_layout()
-    }
-
     /// Rewrite all twelve joint angles from a named layout.
     pub fn set_layout(&mut self, layout: Layout) {
         self.doc.set_layout(layout);
-    }
-
-    /// Switch to another kind of trajectory with its default numbers.
-    pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) {
-        self.doc.switch_trajectory(choice);
-        self.keep_time_in_range();
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
@@ -296,7 +293,7 @@ impl ViewerState {
         self.playback.time = 0.0;
         self.playback.history.clear();
         self.doc.replace(scenario);
-        self.keep_time_in_range();
+        self.editor().keep_time_in_range();
     }
 
     /// Forget the saved session and return the look, camera and panels to their defaults
@@ -344,17 +341,7 @@ impl ViewerState {
             self.playback.history.clear();
         }
         self.teleop.rates = Rates::for_geometry(&self.doc.scenario().geometry);
-        self.keep_time_in_range();
-    }
-
-    /// Playback stays within the trajectory after it changed.
-    fn keep_time_in_range(&mut self) {
-        self.playback.time = self.playback.time.clamp(0.0, self.duration());
-    }
-
-    /// Whether some plotted value of the trajectory lies beyond a stroke or servo limit.
-    pub fn beyond_limits(&self) -> bool {
-        self.doc.beyond_limits()
+        self.editor().keep_time_in_range();
     }
 
     /// The named layout of the joint angles, `None` when they were edited one by one

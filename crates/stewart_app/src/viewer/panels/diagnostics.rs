@@ -8,20 +8,20 @@ use stewart_kinematics::Layout;
 
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::words;
-use crate::viewer::state::ViewerState;
+use crate::viewer::editor::Editor;
 
 /// Findings listed before "and N more".
 const LISTED: usize = 12;
 
 /// An architecturally singular geometry: the verdict in one line, why on demand, and a
 /// button to the nearest layout that is not singular.
-fn singular_note(ui: &mut egui::Ui, state: &mut ViewerState, explanation: String) {
-    let t = state.look.lang;
+fn singular_note(ui: &mut egui::Ui, ed: &mut Editor, explanation: String) {
+    let t = ed.lang;
     ui.label(RichText::new(t.tr("diagnostics.singular_line")).color(ui.visuals().warn_fg_color));
     egui::CollapsingHeader::new(t.tr("diagnostics.singular_why"))
         .id_salt("singular-why")
         .show(ui, |ui| ui.label(RichText::new(explanation).small()));
-    if let Some((layout, moved)) = state.sound_layout() {
+    if let Some((layout, moved)) = ed.doc.sound_layout() {
         let Layout::Paired {
             base_separation_deg,
             platform_separation_deg,
@@ -44,24 +44,26 @@ fn singular_note(ui: &mut egui::Ui, state: &mut ViewerState, explanation: String
             ))
             .clicked()
         {
-            state.set_layout(layout);
+            ed.set_layout(layout);
         }
     }
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel. Returns the time (seconds from the trajectory's start) of the finding
+/// clicked, to be shown paused.
+pub fn show(ui: &mut egui::Ui, ed: &mut Editor) -> Option<f64> {
+    let t = ed.lang;
     ui.heading(t.tr("diagnostics.heading"));
-    let singular = state
+    let singular = ed
+        .doc
         .report()
         .filter(|r| r.architecture.singular)
         .map(|r| words::architecture(t, &r.architecture));
     if let Some(explanation) = singular {
-        singular_note(ui, state, explanation);
+        singular_note(ui, ed, explanation);
     }
     let mut jump = None;
-    if let Some(report) = state.report() {
+    if let Some(report) = ed.doc.report() {
         if report.findings.is_empty() {
             ui.label(t.tr("diagnostics.none"));
         } else {
@@ -86,33 +88,29 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
     }
-    if let Some(time) = jump {
-        let start = state.scenario().motion.sampling.start();
-        state.playback.mode = crate::viewer::playback::MotionMode::Trajectory;
-        state.playback.playing = false;
-        state.playback.time = (time - start).clamp(0.0, state.duration());
-    }
+    let jump = jump.map(|time| time - ed.scenario().motion.sampling.start());
     egui::CollapsingHeader::new(t.tr("diagnostics.limits"))
-        .default_open(state.look.expand_panels)
+        .default_open(ed.expand)
         .show(ui, |ui| {
-            sliders(ui, state, Group::Limits);
+            sliders(ui, ed, Group::Limits);
             // The checks' own thresholds (rigid-body tolerance, jump ratio and floor, the
             // near-singular condition number) are for those who tune the checks.
             egui::CollapsingHeader::new(t.tr("diagnostics.advanced"))
-                .default_open(state.look.expand_panels)
-                .show(ui, |ui| sliders(ui, state, Group::Checks));
-            edit_error(ui, state, &[Group::Limits, Group::Checks]);
+                .default_open(ed.expand)
+                .show(ui, |ui| sliders(ui, ed, Group::Checks));
+            edit_error(ui, ed.doc, t, &[Group::Limits, Group::Checks]);
         });
+    jump
 }
 
 /// A slider for every setting of `group`.
-fn sliders(ui: &mut egui::Ui, state: &mut ViewerState, group: Group) {
+fn sliders(ui: &mut egui::Ui, ed: &mut Editor, group: Group) {
     let targets: Vec<_> = settings::all()
         .iter()
         .filter(|s| s.group == group)
         .map(|s| s.target)
         .collect();
     for target in targets {
-        setting_slider(ui, state, target);
+        setting_slider(ui, ed, target);
     }
 }

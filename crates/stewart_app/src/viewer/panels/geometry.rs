@@ -8,25 +8,25 @@ use stewart_kinematics::settings::{
 use stewart_kinematics::{Layout, Plate};
 
 use super::widgets::{edit_error, setting_slider};
-use crate::viewer::state::ViewerState;
+use crate::viewer::editor::Editor;
 
 /// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+pub fn show(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
     egui::CollapsingHeader::new(t.tr("geometry.heading"))
-        .default_open(state.look.expand_panels)
+        .default_open(ed.expand)
         .show(ui, |ui| {
             for key in [
                 GeometryKey::BaseRadius,
                 GeometryKey::PlatformRadius,
                 GeometryKey::HomeHeight,
             ] {
-                setting_slider(ui, state, Target::Geometry(key));
+                setting_slider(ui, ed, Target::Geometry(key));
             }
-            actuators(ui, state);
-            layout(ui, state);
+            actuators(ui, ed);
+            layout(ui, ed);
             egui::CollapsingHeader::new(t.tr("geometry.joint_angles"))
-                .default_open(state.look.expand_panels)
+                .default_open(ed.expand)
                 .show(ui, |ui| {
                     for (plate, key) in [
                         (
@@ -35,7 +35,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                         ),
                         (Plate::Platform, GeometryKey::PlatformAngle),
                     ] {
-                        if state
+                        if ed
                             .scenario()
                             .geometry
                             .params()
@@ -46,23 +46,23 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                             ui.label(egui::RichText::new(t.tr(points_note(plate))).small());
                         }
                         for i in 0..6 {
-                            setting_slider(ui, state, Target::Geometry(key(i)));
+                            setting_slider(ui, ed, Target::Geometry(key(i)));
                         }
                     }
                 });
             egui::CollapsingHeader::new(t.tr("geometry.coordinates"))
-                .default_open(state.look.expand_panels)
-                .show(ui, |ui| joint_table(ui, state))
+                .default_open(ed.expand)
+                .show(ui, |ui| joint_table(ui, ed))
                 .header_response
                 .on_hover_text(t.tr("geometry.coordinates_tip"));
             egui::CollapsingHeader::new(t.tr("geometry.pivot"))
-                .default_open(state.look.expand_panels)
+                .default_open(ed.expand)
                 .show(ui, |ui| {
                     for i in 0..3 {
-                        setting_slider(ui, state, Target::Geometry(GeometryKey::Pivot(i)));
+                        setting_slider(ui, ed, Target::Geometry(GeometryKey::Pivot(i)));
                     }
                 });
-            edit_error(ui, state, &[Group::Geometry]);
+            edit_error(ui, ed.doc, ed.lang, &[Group::Geometry]);
         });
 }
 
@@ -77,8 +77,8 @@ fn points_note(plate: Plate) -> &'static str {
 /// The twelve joints as an editable table: one row per joint, x, y and z in metres.
 /// An edit goes through the setting `geometry.{plate}_joints_m[i][k]`, validated like a
 /// typed `--set`.
-fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn joint_table(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
     let mut edit = None;
     egui::Grid::new("joint_table")
         .num_columns(4)
@@ -88,7 +88,7 @@ fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
             let columns = ["x", "y", "z"].map(|axis| ui.label(axis).id);
             ui.end_row();
             for plate in [Plate::Base, Plate::Platform] {
-                let joints = *state.scenario().geometry.joints(plate);
+                let joints = *ed.scenario().geometry.joints(plate);
                 let letter = match plate {
                     Plate::Base => "B",
                     Plate::Platform => "P",
@@ -115,7 +115,7 @@ fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         });
     if let Some((plate, i, k, v)) = edit {
-        state.apply(
+        ed.apply(
             settings::of(Target::Geometry(GeometryKey::Joint(plate, i, k))),
             Some(v),
         );
@@ -125,9 +125,9 @@ fn joint_table(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// The actuator kind and its numbers: the stroke of linear legs (sliders that apply to
 /// legs only), or the servos' horns, rods, range, directions and trims, and the level
 /// home height.
-fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let current = state.scenario().geometry.actuator().kind();
+fn actuators(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
+    let current = ed.scenario().geometry.actuator().kind();
     let mut chosen = None;
     ui.horizontal(|ui| {
         ui.label(t.tr("geometry.actuators"));
@@ -143,13 +143,13 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     if let Some(kind) = chosen {
-        state.edit(Group::Geometry, |s| {
+        ed.edit(Group::Geometry, |s| {
             switch_actuator(s, kind).map_err(|e| e.to_string())
         });
     }
     // Each slider shows only for the kind it belongs to.
     for key in [GeometryKey::LegMin, GeometryKey::LegMax] {
-        setting_slider(ui, state, Target::Geometry(key));
+        setting_slider(ui, ed, Target::Geometry(key));
     }
     for key in [
         ActuatorKey::HornLength,
@@ -157,9 +157,9 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         ActuatorKey::ServoMin,
         ActuatorKey::ServoMax,
     ] {
-        setting_slider(ui, state, Target::Actuator(key));
+        setting_slider(ui, ed, Target::Actuator(key));
     }
-    let Some(level) = state.scenario().geometry.servo_home_height() else {
+    let Some(level) = ed.scenario().geometry.servo_home_height() else {
         return;
     };
     let home = settings::of(Target::Geometry(GeometryKey::HomeHeight));
@@ -168,26 +168,26 @@ fn actuators(ui: &mut egui::Ui, state: &mut ViewerState) {
         .on_hover_text(t.tr("geometry.level_home_tip"))
         .clicked()
     {
-        state.apply(home, Some(level));
+        ed.apply(home, Some(level));
     }
     egui::CollapsingHeader::new(t.tr("geometry.horns"))
-        .default_open(state.look.expand_panels)
+        .default_open(ed.expand)
         .show(ui, |ui| {
             for i in 0..6 {
-                setting_slider(ui, state, Target::Actuator(ActuatorKey::HornAngle(i)));
+                setting_slider(ui, ed, Target::Actuator(ActuatorKey::HornAngle(i)));
             }
             for i in 0..6 {
-                setting_slider(ui, state, Target::Actuator(ActuatorKey::Trim(i)));
+                setting_slider(ui, ed, Target::Actuator(ActuatorKey::Trim(i)));
             }
         });
 }
 
 /// Named layouts: choosing one, or moving its angle, rewrites all twelve joint angles.
 /// Angles edited one by one into no named layout show as "Custom".
-fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn layout(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
     ui.label(t.tr("geometry.layout"));
-    let current = state.layout();
+    let current = ed.doc.layout();
     let mut chosen = current;
     ui.horizontal(|ui| {
         let staggered = matches!(current, Some(Layout::Staggered { .. }));
@@ -239,6 +239,6 @@ fn layout(ui: &mut egui::Ui, state: &mut ViewerState) {
         && let Some(layout) = chosen
     {
         // Validated like any edit: a refused layout leaves geometry and controls as they were.
-        state.set_layout(layout);
+        ed.set_layout(layout);
     }
 }

@@ -46,7 +46,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .show(ui, |ui| {
                         scenario::show(ui, state);
                         ui.separator();
-                        geometry::show(ui, state);
+                        geometry::show(ui, &mut state.editor());
                         ui.separator();
                         motion::show(ui, state);
                         ui.separator();
@@ -59,7 +59,10 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         ui.separator();
                         legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
                         ui.separator();
-                        diagnostics::show(ui, state);
+                        if let Some(time) = diagnostics::show(ui, &mut state.editor()) {
+                            let duration = state.duration();
+                            state.playback.pause_at(time, duration);
+                        }
                         design::show(
                             ui,
                             &mut state.design,

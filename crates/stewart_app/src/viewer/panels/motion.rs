@@ -12,6 +12,7 @@ use stewart_kinematics::trajectory::{
 use super::widgets::{self, edit_error, setting_slider};
 use crate::i18n::words;
 use crate::viewer::assembly::NoMode;
+use crate::viewer::editor::Editor;
 use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
 use crate::viewer::teleop;
@@ -46,9 +47,9 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     assembly_modes(ui, state);
     match state.playback.mode {
         MotionMode::Manual => manual(ui, state),
-        MotionMode::Trajectory => trajectory(ui, state),
+        MotionMode::Trajectory => trajectory(ui, &mut state.editor()),
     }
-    edit_error(ui, state, &[Group::Trajectory]);
+    edit_error(ui, &state.doc, t, &[Group::Trajectory]);
 }
 
 /// The button that shows the next assembly mode of the legs shown, and which one it is.
@@ -170,9 +171,9 @@ fn reach(ui: &mut egui::Ui, state: &ViewerState) {
     ui.label(egui::RichText::new(words).color(colour).strong());
 }
 
-fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let current = TrajectoryChoice::of(&state.scenario().motion.trajectory);
+fn trajectory(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
+    let current = TrajectoryChoice::of(&ed.scenario().motion.trajectory);
     egui::ComboBox::from_label(t.tr("motion.kind"))
         .selected_text(words::trajectory_choice(t, current))
         .show_ui(ui, |ui| {
@@ -181,7 +182,7 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .selectable_label(choice == current, words::trajectory_choice(t, choice))
                     .clicked()
                 {
-                    state.switch_trajectory(choice);
+                    ed.switch_trajectory(choice);
                 }
             }
         });
@@ -190,11 +191,11 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
         SamplingKey::Samples,
         SamplingKey::Start,
     ] {
-        setting_slider(ui, state, Target::Sampling(key));
+        setting_slider(ui, ed, Target::Sampling(key));
     }
-    match state.scenario().motion.trajectory {
-        Trajectory::Sinusoid(_) => sinusoid(ui, state),
-        Trajectory::Keyframes(_) => keyframes(ui, state),
+    match ed.scenario().motion.trajectory {
+        Trajectory::Sinusoid(_) => sinusoid(ui, ed),
+        Trajectory::Keyframes(_) => keyframes(ui, ed),
         _ => {
             for key in [
                 ShapeKey::Radius,
@@ -206,18 +207,18 @@ fn trajectory(ui: &mut egui::Ui, state: &mut ViewerState) {
                 ShapeKey::ZEnd,
                 ShapeKey::Tilt,
             ] {
-                setting_slider(ui, state, Target::Shape(key));
+                setting_slider(ui, ed, Target::Shape(key));
             }
         }
     }
 }
 
-fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn sinusoid(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
     for (i, name) in CHANNEL_NAMES.into_iter().enumerate() {
         let name = words::coordinate(t, name);
         egui::CollapsingHeader::new(t.fmt("motion.channel", &[("axis", &name)]))
-            .default_open(i == 0 || state.look.expand_panels)
+            .default_open(i == 0 || ed.expand)
             .show(ui, |ui| {
                 for key in [
                     ChannelKey::Amplitude,
@@ -225,9 +226,9 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
                     ChannelKey::Phase,
                     ChannelKey::Offset,
                 ] {
-                    setting_slider(ui, state, Target::Channel(i, key));
+                    setting_slider(ui, ed, Target::Channel(i, key));
                 }
-                let wave = match state.scenario().motion.trajectory {
+                let wave = match ed.scenario().motion.trajectory {
                     Trajectory::Sinusoid(s) => s.channels().get(i).map(|(_, c)| c.wave),
                     _ => None,
                 };
@@ -239,7 +240,7 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
                         ui.selectable_value(&mut chosen, Wave::Cos, "cos");
                     });
                     if chosen != wave {
-                        state.edit(Group::Trajectory, |s| {
+                        ed.edit(Group::Trajectory, |s| {
                             if let Trajectory::Sinusoid(sinusoid) = &mut s.motion.trajectory
                                 && let Some(channel) = sinusoid.channels_mut().into_iter().nth(i)
                             {
@@ -255,11 +256,11 @@ fn sinusoid(ui: &mut egui::Ui, state: &mut ViewerState) {
 
 /// The keys as an editable table: time and pose of each, the interpolation, add and
 /// remove. An edit that breaks the keys (times out of order) is refused with its reason.
-fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let Trajectory::Keyframes(k) = &state.scenario().motion.trajectory else {
+fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
+    let Trajectory::Keyframes(k) = &ed.scenario().motion.trajectory else {
         return;
     };
-    let t = state.look.lang;
+    let t = ed.lang;
     let mut keys: Vec<Keyframe> = k.keys().to_vec();
     let mut interpolation = k.interpolation();
     let mut changed = false;
@@ -328,7 +329,7 @@ fn keyframes(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
     });
     if changed {
-        state.edit(Group::Trajectory, |s| {
+        ed.edit(Group::Trajectory, |s| {
             let k = Keyframes::new(keys, interpolation).map_err(|e| e.to_string())?;
             s.motion.trajectory = Trajectory::Keyframes(k);
             Ok(())

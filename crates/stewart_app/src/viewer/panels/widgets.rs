@@ -1,12 +1,14 @@
 //! Widgets shared by the panels: a slider for a declared setting, coloured messages.
 
 use egui::{Color32, RichText};
+use stewart_kinematics::Scenario;
 use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
+use crate::viewer::document::Document;
+use crate::viewer::editor::Editor;
 use crate::viewer::files::Status;
-use crate::viewer::state::ViewerState;
 
 /// Red for refusals and errors.
 pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
@@ -20,13 +22,14 @@ pub const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 /// A slider for the setting of `target`, labelled with its unit; optional settings get a
 /// checkbox that switches them on (at their slider's start) and off. Right-click resets
 /// to the default. Edits go through the setting's validation.
-pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target) {
+pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
     let setting = settings::of(target);
-    if !setting.applies(state.scenario()) {
+    let scenario = ed.scenario();
+    if !setting.applies(scenario) {
         return;
     }
-    let current = setting.get(state.scenario());
-    let t = state.look.lang;
+    let current = setting.get(scenario);
+    let t = ed.lang;
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
         if setting.optional() {
@@ -36,12 +39,12 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                 .on_hover_text(t.fmt("widgets.use_limit", &[("name", &setting_label(t, setting))]))
                 .changed()
             {
-                edit = Some(on.then(|| default_on(setting, state)));
+                edit = Some(on.then(|| default_on(setting, scenario)));
             }
         }
         match current {
             Some(value) => {
-                let range = setting.range_for(state.scenario());
+                let range = setting.range_for(scenario);
                 let mut v = value;
                 // The right and middle buttons open the menu or pan: they never move the knob.
                 let other_button = ui.input(|i| {
@@ -57,7 +60,7 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                 // opens the reset menu.
                 let response = slid
                     .union(slid.interact(egui::Sense::click()))
-                    .on_hover_text(slider_tip(t, setting, state));
+                    .on_hover_text(slider_tip(t, setting, scenario));
                 let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
                 if fine && held {
                     // Fine steps from where the value is, by the pointer's motion alone
@@ -70,7 +73,7 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
                     edit = Some(Some(v));
                 }
                 response.context_menu(|ui| {
-                    let default = setting.default_for(state.scenario());
+                    let default = setting.default_for(scenario);
                     let text = default.map_or_else(
                         || t.tr("widgets.switch_off").to_owned(),
                         |d| {
@@ -99,14 +102,14 @@ pub fn setting_slider(ui: &mut egui::Ui, state: &mut ViewerState, target: Target
         }
     });
     if let Some(value) = edit {
-        state.apply(setting, value);
+        ed.apply(setting, value);
     }
 }
 
 /// The value an optional setting takes when switched on.
-fn default_on(setting: &Setting, state: &ViewerState) -> f64 {
+fn default_on(setting: &Setting, scenario: &Scenario) -> f64 {
     setting
-        .default_for(state.scenario())
+        .default_for(scenario)
         .unwrap_or(*setting.range.end())
 }
 
@@ -142,8 +145,8 @@ fn fine_drag(
 }
 
 /// A setting's tooltip: its file key, accepted values, default, and the gestures.
-fn slider_tip(t: Lang, setting: &Setting, state: &ViewerState) -> String {
-    let default = setting.default_for(state.scenario()).map_or_else(
+fn slider_tip(t: Lang, setting: &Setting, scenario: &Scenario) -> String {
+    let default = setting.default_for(scenario).map_or_else(
         || t.tr("widgets.default_off").to_owned(),
         stewart_kinematics::bounds::short,
     );
@@ -194,13 +197,11 @@ pub fn status(ui: &mut egui::Ui, status: &Status) {
 }
 
 /// Why the last edit in one of `groups` was refused, if it was.
-pub fn edit_error(ui: &mut egui::Ui, state: &ViewerState, groups: &[Group]) {
-    if let Some((group, e)) = &state.doc.edit_error
+pub fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[Group]) {
+    if let Some((group, e)) = &doc.edit_error
         && groups.contains(group)
     {
-        ui.label(
-            RichText::new(state.look.lang.fmt("widgets.not_applied", &[("why", e)])).color(ERROR),
-        );
+        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
     }
 }
 

@@ -1,0 +1,81 @@
+//! The scenario's one edit path as the panels receive it: the document (validation, undo,
+//! what is derived from the scenario) with the playback, whose time an edit that shortens
+//! the trajectory brings back within it, and the language and panel state the controls
+//! are drawn in. A panel that edits the scenario takes an [`Editor`], not the whole
+//! viewer state.
+
+use stewart_kinematics::settings::{Group, Setting, TrajectoryChoice};
+use stewart_kinematics::{Layout, Scenario};
+
+use super::document::Document;
+use super::playback::Playback;
+use crate::i18n::Lang;
+
+/// The parts of the viewer a scenario edit touches.
+pub struct Editor<'a> {
+    /// The scenario, its history, what is derived from it and the last refused edit.
+    pub doc: &'a mut Document,
+    /// Kept within the trajectory after each edit.
+    playback: &'a mut Playback,
+    /// The interface's language.
+    pub lang: Lang,
+    /// Whether collapsible parts start open (`--expand-panels`).
+    pub expand: bool,
+}
+
+impl<'a> Editor<'a> {
+    /// An editor of `doc` that keeps `playback` within the trajectory.
+    pub fn new(
+        doc: &'a mut Document,
+        playback: &'a mut Playback,
+        lang: Lang,
+        expand: bool,
+    ) -> Self {
+        Self {
+            doc,
+            playback,
+            lang,
+            expand,
+        }
+    }
+
+    /// The scenario edited.
+    pub fn scenario(&self) -> &Scenario {
+        self.doc.scenario()
+    }
+
+    /// Change the scenario through the document's one edit path ([`Document::edit`]);
+    /// playback stays within the new duration. Returns whether the change was applied.
+    pub fn edit(
+        &mut self,
+        group: Group,
+        change: impl FnOnce(&mut Scenario) -> Result<(), String>,
+    ) -> bool {
+        let applied = self.doc.edit(group, change);
+        self.keep_time_in_range();
+        applied
+    }
+
+    /// Write one setting (`None`: switch an optional one off).
+    pub fn apply(&mut self, setting: &Setting, value: Option<f64>) {
+        self.doc.apply(setting, value);
+        self.keep_time_in_range();
+    }
+
+    /// Switch to another kind of trajectory with its default numbers.
+    pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) {
+        self.doc.switch_trajectory(choice);
+        self.keep_time_in_range();
+    }
+
+    /// Rewrite all twelve joint angles from a named layout.
+    pub fn set_layout(&mut self, layout: Layout) {
+        self.doc.set_layout(layout);
+    }
+
+    /// Playback time within the trajectory's duration.
+    pub fn keep_time_in_range(&mut self) {
+        let duration = self.doc.scenario().motion.sampling.duration();
+        self.playback.time = self.playback.time.clamp(0.0, duration);
+    }
+}
