@@ -34,7 +34,6 @@ pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
                 Color32::from_rgb(r, g, b)
             }
         };
-        let [r, g, b, _] = colour.to_array();
         let note = match leg.status {
             LegStatus::Normal => "",
             LegStatus::NearLimit => t.tr("legs.near_limit"),
@@ -52,34 +51,17 @@ pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
                 Some(None) => ui.label(RichText::new(t.tr("legs.out_of_reach")).color(ERROR)),
             };
             if let Some(u) = leg.stroke_usage {
-                ui.add(
-                    egui::ProgressBar::new(u.clamp(0.0, 1.0) as f32)
-                        .desired_width(ui.available_width().max(110.0))
-                        .fill(colour)
-                        .text({
-                            // Dark text on light fills (the warning colours), white on
-                            // dark ones (the legs' blue), in either theme.
-                            let luminance = 0.2126 * f32::from(r)
-                                + 0.7152 * f32::from(g)
-                                + 0.0722 * f32::from(b);
-                            let ink = if luminance > 140.0 {
-                                Color32::BLACK
-                            } else {
-                                Color32::WHITE
-                            };
-                            let usage = t.fmt_kind(
-                                "legs.usage",
-                                kind,
-                                &[("percent", &format!("{:.0}", 100.0 * u))],
-                            );
-                            let text = if note.is_empty() {
-                                usage
-                            } else {
-                                format!("{usage} — {note}")
-                            };
-                            RichText::new(text).color(ink)
-                        }),
+                let usage = t.fmt_kind(
+                    "legs.usage",
+                    kind,
+                    &[("percent", &format!("{:.0}", 100.0 * u))],
                 );
+                let text = if note.is_empty() {
+                    usage
+                } else {
+                    format!("{usage} — {note}")
+                };
+                usage_bar(ui, u, colour, text);
             }
         });
     }
@@ -96,6 +78,25 @@ pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
         ),
         None => ui.label(RichText::new(t.tr("legs.servo_unreachable")).color(ERROR)),
     };
+}
+
+/// A bar of the share `u` of the stroke or range used, in `colour`, with `text` on it.
+fn usage_bar(ui: &mut egui::Ui, u: f64, colour: Color32, text: String) {
+    // Dark text on light fills (the warning colours), white on dark ones (the legs' blue),
+    // in either theme.
+    let [r, g, b, _] = colour.to_array();
+    let luminance = 0.2126 * f32::from(r) + 0.7152 * f32::from(g) + 0.0722 * f32::from(b);
+    let ink = if luminance > 140.0 {
+        Color32::BLACK
+    } else {
+        Color32::WHITE
+    };
+    ui.add(
+        egui::ProgressBar::new(u.clamp(0.0, 1.0) as f32)
+            .desired_width(ui.available_width().max(110.0))
+            .fill(colour)
+            .text(RichText::new(text).color(ink)),
+    );
 }
 
 /// How far the pose is from a singularity: the inverse condition number 1/κ as a bar (1 at

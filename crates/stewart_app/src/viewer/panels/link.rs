@@ -9,6 +9,7 @@ use stewart_kinematics::link_settings::{
     LinkFormat, LinkOutput, LinkStop, LinkTransport, RATES_HZ, Word,
 };
 use stewart_link::safety::LinkState;
+use stewart_link::sender::Status as SenderStatus;
 use stewart_link::transport::list_ports;
 
 use super::widgets;
@@ -127,8 +128,22 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
     if let Some(note) = &status.note {
         ui.label(RichText::new(note).color(widgets::WARNING));
     }
-    // The stream's timing, the telemetry's counts and the last frames' bytes: for those
-    // who debug a controller.
+    advanced(ui, link, &status, t, open);
+    // Pressed again while the platform is on its way home: an emergency stop.
+    let (label, tip) = if link.stopping() {
+        (t.tr("link.stop_now"), t.tr("link.stop_now_tip"))
+    } else {
+        (t.tr("link.disconnect"), t.tr("link.disconnect_tip"))
+    };
+    if ui.button(label).on_hover_text(tip).clicked() {
+        link.disconnect();
+    }
+}
+
+/// The stream's timing, the telemetry's counts and the last frames' bytes: for those who
+/// debug a controller. Open at first when `open`.
+fn advanced(ui: &mut egui::Ui, link: &LiveLink, status: &SenderStatus, t: Lang, open: bool) {
+    let st = &status.telemetry_stats;
     egui::CollapsingHeader::new(t.tr("link.advanced"))
         .default_open(open)
         .show(ui, |ui| {
@@ -161,15 +176,6 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
                 }
             }
         });
-    // Pressed again while the platform is on its way home: an emergency stop.
-    let (label, tip) = if link.stopping() {
-        (t.tr("link.stop_now"), t.tr("link.stop_now_tip"))
-    } else {
-        (t.tr("link.disconnect"), t.tr("link.disconnect_tip"))
-    };
-    if ui.button(label).on_hover_text(tip).clicked() {
-        link.disconnect();
-    }
 }
 
 /// The tracking error of the last seconds, per actuator (measured minus commanded: mm for
@@ -231,13 +237,10 @@ fn choice<T: Word>(ui: &mut egui::Ui, lang: Lang, label: &str, current: T) -> Op
     (chosen != current).then_some(chosen)
 }
 
-/// The `[link]` table.
-fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+/// Where the stream goes: a serial port (typed or chosen from those present) and its
+/// speed, a UDP address, or nowhere (a dry run to a file).
+fn transport(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
     let link = doc.scenario().link.clone();
-    let outputs = doc.scenario().geometry.actuator().kind().link_outputs();
-    if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
-        *error = doc.edit_link(|l| l.transport = chosen).err();
-    }
     match link.transport {
         LinkTransport::Serial => {
             let mut port = link.port.clone().unwrap_or_default();
@@ -299,6 +302,16 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t
             ui.label(t.tr("link.dry_run"));
         }
     }
+}
+
+/// The `[link]` table.
+fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+    let link = doc.scenario().link.clone();
+    let outputs = doc.scenario().geometry.actuator().kind().link_outputs();
+    if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
+        *error = doc.edit_link(|l| l.transport = chosen).err();
+    }
+    transport(ui, doc, error, t);
     let mut rate = link.rate_hz;
     if ui
         .add(

@@ -3,6 +3,7 @@
 
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
+use stewart_kinematics::actuator::Quantity;
 
 use crate::i18n::words;
 use crate::viewer::document::Document;
@@ -179,79 +180,8 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
         scenario.motion.sampling.start()
     };
     let shown = plot.show(ui, |plot| {
-        for leg in 0..6 {
-            let points: Vec<[f64; 2]> = if manual {
-                playback
-                    .history
-                    .entries()
-                    .map(|(t, l)| [t - playback.clock, l[leg]])
-                    .collect()
-            } else {
-                let (times, lengths) = doc.plot_samples();
-                times
-                    .iter()
-                    .zip(lengths)
-                    .map(|(t, l)| [*t, l[leg]])
-                    .collect()
-            };
-            // A servo out of reach has no angle: its curve breaks there.
-            let name = format!("{}{}", quantity.symbol, leg + 1);
-            for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
-                let curve: PlotPoints = run.iter().copied().collect();
-                plot.line(
-                    Line::new(name.clone(), curve)
-                        .color(leg_colour(leg))
-                        .width(width),
-                );
-                // The stretches beyond a limit, marked over the curve.
-                for stretch in beyond([min, max], run) {
-                    plot.line(
-                        Line::new(t.tr("plot.beyond"), PlotPoints::from(stretch))
-                            .color(BEYOND)
-                            .width(width * 2.5),
-                    );
-                }
-            }
-        }
-        // The limits' labels as legible as the axes' (they were small and grey).
-        let label_colour = if look.is_light() {
-            Color32::from_gray(60)
-        } else {
-            Color32::from_gray(200)
-        };
-        for (name, limit) in [("plot.min", min), ("plot.max", max)] {
-            if let Some(v) = limit {
-                let words = format!("{}{}", quantity.symbol, t.tr(name));
-                plot.hline(
-                    HLine::new(words.clone(), v)
-                        .style(LineStyle::dashed_loose())
-                        .color(Color32::GRAY)
-                        .width(width * 0.7),
-                );
-                // Labelled at the line at the start of the time shown (a fixed place: the
-                // plot's own bounds would grow to hold a label placed at their edge).
-                plot.text(
-                    Text::new(
-                        words.clone(),
-                        PlotPoint::new(left_end, v),
-                        egui::RichText::new(format!(
-                            " {words} {} {}",
-                            stewart_kinematics::bounds::short(v),
-                            quantity.unit
-                        ))
-                        .text_style(egui::TextStyle::Body)
-                        .color(label_colour),
-                    )
-                    // Inside the band between the limits: a label outside it would be cut
-                    // by the plot's edge, where the bounds end at the limit.
-                    .anchor(if name == "plot.max" {
-                        egui::Align2::LEFT_TOP
-                    } else {
-                        egui::Align2::LEFT_BOTTOM
-                    }),
-                );
-            }
-        }
+        curves(plot, doc, playback, [min, max], look);
+        limit_lines(plot, &quantity, [min, max], left_end, look);
         if !manual {
             let now = scenario.motion.sampling.start() + playback.time;
             plot.vline(
@@ -270,6 +200,105 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
         let start = scenario.motion.sampling.start();
         playback.time = (t - start).clamp(0.0, scenario.motion.sampling.duration());
         playback.playing = false;
+    }
+}
+
+/// The six curves (the trajectory's, or in manual mode the history's), each broken where a
+/// servo cannot reach, with the stretches beyond `limits` marked over them.
+fn curves(
+    plot: &mut egui_plot::PlotUi,
+    doc: &Document,
+    playback: &Playback,
+    [min, max]: [Option<f64>; 2],
+    look: &Look,
+) {
+    let (width, t) = (line_width(look), look.lang);
+    let manual = playback.mode == MotionMode::Manual;
+    let quantity = doc.scenario().geometry.quantity();
+    for leg in 0..6 {
+        let points: Vec<[f64; 2]> = if manual {
+            playback
+                .history
+                .entries()
+                .map(|(t, l)| [t - playback.clock, l[leg]])
+                .collect()
+        } else {
+            let (times, lengths) = doc.plot_samples();
+            times
+                .iter()
+                .zip(lengths)
+                .map(|(t, l)| [*t, l[leg]])
+                .collect()
+        };
+        // A servo out of reach has no angle: its curve breaks there.
+        let name = format!("{}{}", quantity.symbol, leg + 1);
+        for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
+            let curve: PlotPoints = run.iter().copied().collect();
+            plot.line(
+                Line::new(name.clone(), curve)
+                    .color(leg_colour(leg))
+                    .width(width),
+            );
+            // The stretches beyond a limit, marked over the curve.
+            for stretch in beyond([min, max], run) {
+                plot.line(
+                    Line::new(t.tr("plot.beyond"), PlotPoints::from(stretch))
+                        .color(BEYOND)
+                        .width(width * 2.5),
+                );
+            }
+        }
+    }
+}
+
+/// The limits as dashed lines, labelled with their values at `left_end` (the start of
+/// the time shown).
+fn limit_lines(
+    plot: &mut egui_plot::PlotUi,
+    quantity: &Quantity,
+    [min, max]: [Option<f64>; 2],
+    left_end: f64,
+    look: &Look,
+) {
+    let (width, t) = (line_width(look), look.lang);
+    // The limits' labels as legible as the axes' (they were small and grey).
+    let label_colour = if look.is_light() {
+        Color32::from_gray(60)
+    } else {
+        Color32::from_gray(200)
+    };
+    for (name, limit) in [("plot.min", min), ("plot.max", max)] {
+        if let Some(v) = limit {
+            let words = format!("{}{}", quantity.symbol, t.tr(name));
+            plot.hline(
+                HLine::new(words.clone(), v)
+                    .style(LineStyle::dashed_loose())
+                    .color(Color32::GRAY)
+                    .width(width * 0.7),
+            );
+            // Labelled at the line at the start of the time shown (a fixed place: the
+            // plot's own bounds would grow to hold a label placed at their edge).
+            plot.text(
+                Text::new(
+                    words.clone(),
+                    PlotPoint::new(left_end, v),
+                    egui::RichText::new(format!(
+                        " {words} {} {}",
+                        stewart_kinematics::bounds::short(v),
+                        quantity.unit
+                    ))
+                    .text_style(egui::TextStyle::Body)
+                    .color(label_colour),
+                )
+                // Inside the band between the limits: a label outside it would be cut
+                // by the plot's edge, where the bounds end at the limit.
+                .anchor(if name == "plot.max" {
+                    egui::Align2::LEFT_TOP
+                } else {
+                    egui::Align2::LEFT_BOTTOM
+                }),
+            );
+        }
     }
 }
 

@@ -72,26 +72,9 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
                 } else if slid.changed() && !other_button {
                     edit = Some(Some(v));
                 }
-                response.context_menu(|ui| {
-                    let default = setting.default_for(scenario);
-                    let text = default.map_or_else(
-                        || t.tr("widgets.switch_off").to_owned(),
-                        |d| {
-                            t.fmt(
-                                "widgets.reset_to",
-                                &[("value", &d), ("unit", &setting.unit.symbol())],
-                            )
-                        },
-                    );
-                    if ui
-                        .button(text)
-                        .on_hover_text(t.tr("widgets.reset_tip"))
-                        .clicked()
-                    {
-                        edit = Some(default);
-                        ui.close();
-                    }
-                });
+                if let Some(reset) = reset_menu(&response, t, setting, scenario) {
+                    edit = Some(reset);
+                }
             }
             None => {
                 ui.label(t.fmt(
@@ -104,6 +87,38 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
     if let Some(value) = edit {
         ed.apply(setting, value);
     }
+}
+
+/// The slider's right-click menu: back to the default (or off, for an optional setting
+/// without one). The value to write when chosen.
+fn reset_menu(
+    response: &egui::Response,
+    t: Lang,
+    setting: &Setting,
+    scenario: &Scenario,
+) -> Option<Option<f64>> {
+    let mut chosen = None;
+    response.context_menu(|ui| {
+        let default = setting.default_for(scenario);
+        let text = default.map_or_else(
+            || t.tr("widgets.switch_off").to_owned(),
+            |d| {
+                t.fmt(
+                    "widgets.reset_to",
+                    &[("value", &d), ("unit", &setting.unit.symbol())],
+                )
+            },
+        );
+        if ui
+            .button(text)
+            .on_hover_text(t.tr("widgets.reset_tip"))
+            .clicked()
+        {
+            chosen = Some(default);
+            ui.close();
+        }
+    });
+    chosen
 }
 
 /// The value an optional setting takes when switched on.
