@@ -448,12 +448,58 @@ impl Stream {
         delivered
     }
 
+    /// Write the stream's state at time `t` into the shared `status` (the timing figures
+    /// apart).
+    fn report(&self, status: &mut Status, t: f64, skipped: u64) {
+        let sv = &self.config.supervisor;
+        status.state = sv.state();
+        status.note.clone_from(&self.note);
+        status.frames = self.frames;
+        status.skipped = skipped;
+        status.telemetry_frames = self.telemetry.frames;
+        status.telemetry = self.telemetry.latest;
+        status.telemetry_stats = self.telemetry.matcher.stats();
+        status.telemetry_silent_s = self.telemetry.last_at.map(|at| at.elapsed().as_secs_f64());
+        status.time = t;
+        status.values = self.values;
+        status.emergency = sv.emergency();
+    }
+
     fn fail(&mut self, why: String) {
         self.config.supervisor.fault(why.clone());
         self.failure = Some(why);
     }
 }
 
+/// Apply the commands waiting in `inbox` at stream time `t`: arm, emergency stop, or stop
+/// (a second stop on the way home is an emergency; a gone commander is a stop).
+fn take_commands(inbox: &Receiver<Command>, sv: &mut Supervisor, t: f64, stopping: &mut bool) {
+    loop {
+        match inbox.try_recv() {
+            Ok(Command::Arm) => {
+                let from = *sv.last();
+                sv.arm(t, from);
+            }
+            Ok(Command::EStop) => sv.estop(),
+            Ok(Command::Stop) => {
+                // A second stop on the way home is an emergency.
+                if *stopping && sv.state() == LinkState::Stopping {
+                    sv.estop();
+                }
+                *stopping = true;
+            }
+            Err(TryRecvError::Empty) => break,
+            // Whoever commanded the stream is gone: stop it.
+            Err(TryRecvError::Disconnected) => {
+                *stopping = true;
+                break;
+            }
+        }
+    }
+}
+
+/// The sender's thread: one tick per period from `start`, commands taken between ticks,
+/// the shared status updated after each, until the stream has stopped or failed.
 fn run(
     config: SenderConfig,
     target: Target,
@@ -514,28 +560,7 @@ fn run(
             let from = *sv.last();
             sv.arm(t, from);
         }
-        loop {
-            match inbox.try_recv() {
-                Ok(Command::Arm) => {
-                    let from = *sv.last();
-                    sv.arm(t, from);
-                }
-                Ok(Command::EStop) => sv.estop(),
-                Ok(Command::Stop) => {
-                    // A second stop on the way home is an emergency.
-                    if stopping && sv.state() == LinkState::Stopping {
-                        sv.estop();
-                    }
-                    stopping = true;
-                }
-                Err(TryRecvError::Empty) => break,
-                // Whoever commanded the stream is gone: stop it.
-                Err(TryRecvError::Disconnected) => {
-                    stopping = true;
-                    break;
-                }
-            }
-        }
+        take_commands(inbox, sv, t, &mut stopping);
         if stop_after.is_some_and(|d| t >= d) {
             stopping = true;
         }
@@ -561,20 +586,7 @@ fn run(
             };
         {
             let mut s = shared.lock().unwrap_or_else(PoisonError::into_inner);
-            s.state = sv.state();
-            s.note.clone_from(&stream.note);
-            s.frames = stream.frames;
-            s.skipped = skipped;
-            s.telemetry_frames = stream.telemetry.frames;
-            s.telemetry = stream.telemetry.latest;
-            s.telemetry_stats = stream.telemetry.matcher.stats();
-            s.telemetry_silent_s = stream
-                .telemetry
-                .last_at
-                .map(|at| at.elapsed().as_secs_f64());
-            s.time = t;
-            s.values = stream.values;
-            s.emergency = sv.emergency();
+            stream.report(&mut s, t, skipped);
             if last || k.is_multiple_of(summary_every) {
                 s.timing = lateness.timing();
                 s.period_error = period_error.timing();
