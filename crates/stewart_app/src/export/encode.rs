@@ -6,7 +6,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{TrySendError, sync_channel};
+use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
 use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, anyhow, bail};
@@ -436,6 +436,44 @@ impl Staging {
 /// A frame to encode: its index, its pixels and, for a GIF, the frame before it.
 type Job = (usize, Arc<Frame>, Option<Arc<Frame>>);
 
+/// An encoding worker: frames from `jobs` encoded for `target` (staged in `dir` with
+/// `digits`-digit names when it is a folder), each sent to `done` with its index, until
+/// the queue closes or nobody takes the results.
+fn encode_frames(
+    target: &Target,
+    dir: Option<&Path>,
+    digits: usize,
+    jobs: &Mutex<Receiver<Job>>,
+    done: &SyncSender<(usize, Result<Encoded>)>,
+) {
+    loop {
+        let next = jobs.lock().map(|r| r.recv());
+        let Ok(Ok((k, frame, previous))) = next else {
+            break;
+        };
+        let result = Staging::encode(target, dir, digits, k, frame, previous.as_deref());
+        if done.send((k, result)).is_err() {
+            break;
+        }
+    }
+}
+
+/// Why an export failed, if it did: a rendering failure or an interruption explains a
+/// short output, so it comes before the writer's error.
+fn first_failure(
+    rendered: Result<()>,
+    written: Result<()>,
+    stop: &AtomicBool,
+) -> Option<anyhow::Error> {
+    match (rendered, written) {
+        (Err(e), _) | (Ok(()), Err(e)) => Some(e),
+        (Ok(()), Ok(())) if stop.load(Ordering::Relaxed) => {
+            Some(anyhow!("interrupted: nothing was written"))
+        }
+        (Ok(()), Ok(())) => None,
+    }
+}
+
 /// Shortest GIF frame delay that plays as written: browsers and most viewers show a
 /// delay of 0 or 1 centisecond as 10.
 pub const GIF_MIN_DELAY_CS: u16 = 2;
@@ -457,7 +495,7 @@ const POLL: std::time::Duration = std::time::Duration::from_millis(20);
 /// through the failure flag).
 fn write_in_order(
     staging: &mut Staging,
-    from_workers: std::sync::mpsc::Receiver<(usize, Result<Encoded>)>,
+    from_workers: Receiver<(usize, Result<Encoded>)>,
     indices: std::ops::Range<usize>,
     progress: &ProgressBar,
 ) -> Result<()> {
@@ -488,7 +526,7 @@ fn feed_frames(
     source: &mut FrameSource,
     indices: std::ops::Range<usize>,
     keeps_previous: bool,
-    to_workers: &std::sync::mpsc::SyncSender<Job>,
+    to_workers: &SyncSender<Job>,
     stop: &AtomicBool,
     failed: &AtomicBool,
 ) -> Result<()> {
@@ -568,25 +606,7 @@ pub fn export(
             let rx = Arc::clone(&from_render);
             let tx = to_writer.clone();
             let dir = staged_dir.clone();
-            scope.spawn(move || {
-                loop {
-                    let next = rx.lock().map(|r| r.recv());
-                    let Ok(Ok((k, frame, previous))) = next else {
-                        break;
-                    };
-                    let result = Staging::encode(
-                        target,
-                        dir.as_deref(),
-                        digits,
-                        k,
-                        frame,
-                        previous.as_deref(),
-                    );
-                    if tx.send((k, result)).is_err() {
-                        break;
-                    }
-                }
-            });
+            scope.spawn(move || encode_frames(target, dir.as_deref(), digits, &rx, &tx));
         }
         // Only the workers hold the frame queue's receiver: when they have all stopped,
         // sending fails instead of waiting forever.
@@ -628,16 +648,7 @@ pub fn export(
         }
     });
     let sink_failed = rendered.is_ok() && written.is_err();
-    let failure = match (&rendered, &written) {
-        // A rendering failure or an interruption explains a short output: report it first.
-        (Err(_), _) => rendered.err(),
-        (Ok(()), Err(_)) => written.err(),
-        (Ok(()), Ok(())) if stop.load(Ordering::Relaxed) => {
-            Some(anyhow!("interrupted: nothing was written"))
-        }
-        (Ok(()), Ok(())) => None,
-    };
-    if let Some(e) = failure {
+    if let Some(e) = first_failure(rendered, written, stop) {
         let mut e = e;
         if let Some(f) = ffmpeg.as_mut() {
             // ffmpeg that quit by itself explains a failed write better than the write does;

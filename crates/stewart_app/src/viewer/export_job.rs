@@ -178,24 +178,7 @@ fn run(
     stop: &AtomicBool,
 ) -> Result<String> {
     match work {
-        ExportWork::Video(request) => {
-            let report = export_video(scenario, request, progress, stop)?;
-            Ok(lang.fmt(
-                "export.wrote_frames",
-                &[
-                    ("frames", &report.frames),
-                    ("path", &request.out.display()),
-                    ("fps", &rate_in_words(report.fps)),
-                    ("duration", &format!("{:.2}", report.duration)),
-                    ("size", &bytes_in_words(report.bytes)),
-                    ("seconds", &format!("{:.1}", report.seconds)),
-                    (
-                        "rate",
-                        &format!("{:.1}", report.frames as f64 / report.seconds.max(1e-9)),
-                    ),
-                ],
-            ))
-        }
+        ExportWork::Video(request) => video(scenario, request, lang, progress, stop),
         ExportWork::Plot(path) => {
             write_atomically(path, &plot_file(scenario, path, lang)?)?;
             Ok(lang.fmt("export.wrote_plot", &[("path", &path.display())]))
@@ -223,73 +206,114 @@ fn run(
             Ok(lang.fmt("export.wrote_workspace", &[("path", &path.display())]))
         }
         ExportWork::SurfacePly { path, orientation } => {
-            let ws = workspace(scenario, *orientation, stop, lang)?;
-            let surface = WorkspaceSurface::from_workspace(&ws);
-            let bytes = ply(
-                &surface,
-                &PlyHeader {
-                    name: &scenario.name,
-                    orientation_deg: orientation.map(Angle::degrees),
-                    volume: [ws.volume, ws.volume_error],
-                    resolution: ws.resolution,
-                },
-            );
-            write_atomically(path, &bytes)?;
-            Ok(lang.fmt(
-                "export.wrote_surface",
-                &[
-                    ("triangles", &surface.triangles.len()),
-                    ("volume", &format!("{:.6}", surface.enclosed_volume())),
-                    ("path", &path.display()),
-                ],
-            ))
+            surface_ply(scenario, path, *orientation, lang, stop)
         }
-        ExportWork::SurfacePng(view) => {
-            let control = WorkspaceControl::default();
-            let outcome = std::thread::scope(|s| {
-                // Ctrl-C or Cancel stops the computation.
-                let watch = s.spawn(|| {
-                    while !stop.load(Ordering::Relaxed) && !control.cancel.load(Ordering::Relaxed) {
-                        std::thread::sleep(std::time::Duration::from_millis(20));
-                    }
-                    control.cancel.store(true, Ordering::Relaxed);
-                });
-                let outcome = crate::viewer::workspace::compute(
-                    &view.request,
-                    crate::viewer::workspace::FINE_COLUMNS,
-                    160,
-                    &control,
-                );
-                control.cancel.store(true, Ordering::Relaxed);
-                let _ = watch.join();
-                outcome
-            })
-            .map_err(|e| anyhow!(e.unwrap_or_else(|| lang.tr("export.cancelled").to_owned())))?;
-            if outcome.extent.is_none() {
-                bail!("{}", lang.tr("export.no_workspace"));
-            }
-            let mut list = view.list.clone();
-            list.analysis.push(outcome.surface);
-            if let Some(slice) = outcome.slice {
-                list.analysis.push(slice.mesh);
-            }
-            crate::viewer::shots::render_view(
-                &list,
-                view.camera,
-                view.theme,
-                false,
-                view.size,
-                &view.path,
-                lang,
-            )
-            .map_err(|e| anyhow!(e))?;
-            let (w, h) = view.size;
-            Ok(lang.fmt(
-                "export.wrote_view",
-                &[("w", &w), ("h", &h), ("path", &view.path.display())],
-            ))
-        }
+        ExportWork::SurfacePng(view) => surface_png(view, lang, stop),
     }
+}
+
+/// Write the video or frames of `request`, and say what was written.
+fn video(
+    scenario: &Scenario,
+    request: &VideoRequest,
+    lang: Lang,
+    progress: &ProgressBar,
+    stop: &AtomicBool,
+) -> Result<String> {
+    let report = export_video(scenario, request, progress, stop)?;
+    Ok(lang.fmt(
+        "export.wrote_frames",
+        &[
+            ("frames", &report.frames),
+            ("path", &request.out.display()),
+            ("fps", &rate_in_words(report.fps)),
+            ("duration", &format!("{:.2}", report.duration)),
+            ("size", &bytes_in_words(report.bytes)),
+            ("seconds", &format!("{:.1}", report.seconds)),
+            (
+                "rate",
+                &format!("{:.1}", report.frames as f64 / report.seconds.max(1e-9)),
+            ),
+        ],
+    ))
+}
+
+/// Write the workspace surface at `orientation` as PLY, and say what was written.
+fn surface_ply(
+    scenario: &Scenario,
+    path: &std::path::Path,
+    orientation: [Angle; 3],
+    lang: Lang,
+    stop: &AtomicBool,
+) -> Result<String> {
+    let ws = workspace(scenario, orientation, stop, lang)?;
+    let surface = WorkspaceSurface::from_workspace(&ws);
+    let bytes = ply(
+        &surface,
+        &PlyHeader {
+            name: &scenario.name,
+            orientation_deg: orientation.map(Angle::degrees),
+            volume: [ws.volume, ws.volume_error],
+            resolution: ws.resolution,
+        },
+    );
+    write_atomically(path, &bytes)?;
+    Ok(lang.fmt(
+        "export.wrote_surface",
+        &[
+            ("triangles", &surface.triangles.len()),
+            ("volume", &format!("{:.6}", surface.enclosed_volume())),
+            ("path", &path.display()),
+        ],
+    ))
+}
+
+/// Render the 3D view of `view` with the workspace surface (and slice) to PNG, the
+/// computation stopped by `stop`, and say what was written.
+fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<String> {
+    let control = WorkspaceControl::default();
+    let outcome = std::thread::scope(|s| {
+        // Ctrl-C or Cancel stops the computation.
+        let watch = s.spawn(|| {
+            while !stop.load(Ordering::Relaxed) && !control.cancel.load(Ordering::Relaxed) {
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+            control.cancel.store(true, Ordering::Relaxed);
+        });
+        let outcome = crate::viewer::workspace::compute(
+            &view.request,
+            crate::viewer::workspace::FINE_COLUMNS,
+            160,
+            &control,
+        );
+        control.cancel.store(true, Ordering::Relaxed);
+        let _ = watch.join();
+        outcome
+    })
+    .map_err(|e| anyhow!(e.unwrap_or_else(|| lang.tr("export.cancelled").to_owned())))?;
+    if outcome.extent.is_none() {
+        bail!("{}", lang.tr("export.no_workspace"));
+    }
+    let mut list = view.list.clone();
+    list.analysis.push(outcome.surface);
+    if let Some(slice) = outcome.slice {
+        list.analysis.push(slice.mesh);
+    }
+    crate::viewer::shots::render_view(
+        &list,
+        view.camera,
+        view.theme,
+        false,
+        view.size,
+        &view.path,
+        lang,
+    )
+    .map_err(|e| anyhow!(e))?;
+    let (w, h) = view.size;
+    Ok(lang.fmt(
+        "export.wrote_view",
+        &[("w", &w), ("h", &h), ("path", &view.path.display())],
+    ))
 }
 
 /// The workspace of `scenario` at `orientation` on the viewer's refinement, stopped
