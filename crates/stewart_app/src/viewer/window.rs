@@ -35,6 +35,10 @@ pub struct ViewOptions {
     pub size: super::window_size::WindowSize,
 }
 
+/// A shot of the window at another scale: its path, the scale, and whether it ends a
+/// `--screenshot` run.
+type ScaledShot = (PathBuf, ShotScale, bool);
+
 /// Per-frame timings, milliseconds.
 #[derive(Default)]
 struct FrameTimes {
@@ -278,9 +282,9 @@ impl App {
     }
 
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
-        let Some(open) = self.open.as_mut() else {
+        if self.open.is_none() {
             return;
-        };
+        }
         let now = Instant::now();
         let frame_start = now;
         // A screenshot run steps time by a fixed 1/60 s per frame so its image is reproducible.
@@ -291,22 +295,10 @@ impl App {
         };
         self.last = now;
         self.state.advance(dt);
-        let pad = self.gamepads.poll();
-        self.state.teleop.pad_words = match &pad {
-            Some((_, name)) => Some(
-                self.state
-                    .look
-                    .lang
-                    .fmt("motion.gamepad", &[("name", name)]),
-            ),
-            None => self.gamepads.note.as_ref().map(|why| {
-                self.state
-                    .look
-                    .lang
-                    .fmt("motion.no_gamepad", &[("why", why)])
-            }),
+        self.poll_gamepad();
+        let Some(open) = self.open.as_mut() else {
+            return;
         };
-        self.state.teleop.pad = pad.map(|(state, _)| state);
         let raw = open.input.take_egui_input(&open.window);
         let state = &mut self.state;
         if self.options.screenshot.is_some() {
@@ -335,6 +327,46 @@ impl App {
             .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
         let cpu_ms = frame_start.elapsed().as_secs_f64() * 1e3;
         self.frames += 1;
+        let (capture, scaled) = self.screen_captures();
+        let Some(open) = self.open.as_mut() else {
+            return;
+        };
+        let bg = self.state.theme().background;
+        open.painter.paint_and_update_textures(
+            ViewportId::ROOT,
+            output.pixels_per_point,
+            [bg[0], bg[1], bg[2], 1.0],
+            &primitives,
+            &mut output.textures_delta,
+            capture,
+            &open.window,
+        );
+        self.times.cpu.push(cpu_ms);
+        self.times
+            .total
+            .push(frame_start.elapsed().as_secs_f64() * 1e3);
+        self.finish_shots(scaled, event_loop);
+    }
+
+    /// Read the gamepad, and say in the Motion panel which one it is (or why there is none).
+    fn poll_gamepad(&mut self) {
+        let pad = self.gamepads.poll();
+        let lang = self.state.look.lang;
+        self.state.teleop.pad_words = match &pad {
+            Some((_, name)) => Some(lang.fmt("motion.gamepad", &[("name", name)])),
+            None => self
+                .gamepads
+                .note
+                .as_ref()
+                .map(|why| lang.fmt("motion.no_gamepad", &[("why", why)])),
+        };
+        self.state.teleop.pad = pad.map(|(state, _)| state);
+    }
+
+    /// The screenshots this frame asks for: egui's captures of the window at its own
+    /// scale, and a scaled shot (its path, scale, and whether it ends a `--screenshot`
+    /// run) to render after painting.
+    fn screen_captures(&mut self) -> (Vec<egui::ScreenshotCallback>, Option<ScaledShot>) {
         let mut capture = Vec::new();
         let mut scaled = None;
         if let Some(path) = &self.options.screenshot
@@ -381,20 +413,12 @@ impl App {
                 }));
             }
         }
-        let bg = self.state.theme().background;
-        open.painter.paint_and_update_textures(
-            ViewportId::ROOT,
-            output.pixels_per_point,
-            [bg[0], bg[1], bg[2], 1.0],
-            &primitives,
-            &mut output.textures_delta,
-            capture,
-            &open.window,
-        );
-        self.times.cpu.push(cpu_ms);
-        self.times
-            .total
-            .push(frame_start.elapsed().as_secs_f64() * 1e3);
+        (capture, scaled)
+    }
+
+    /// After painting: write the scaled shot asked for, take the window shot's outcome to
+    /// the View panel, and end a `--screenshot` run once its image is written (or failed).
+    fn finish_shots(&mut self, scaled: Option<ScaledShot>, event_loop: &ActiveEventLoop) {
         if let Some((path, scale, exit)) = scaled {
             let outcome = self.scaled_window_shot(&path, scale);
             if exit {
