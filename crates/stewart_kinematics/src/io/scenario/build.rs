@@ -164,11 +164,20 @@ fn build_actuator(
     src: &Source,
     file: Option<&Spanned<ActuatorFile>>,
 ) -> Result<Actuator, ScenarioError> {
-    use crate::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
     let Some(file) = file else {
         return Ok(Actuator::Linear);
     };
-    let a = file.get_ref();
+    match file.get_ref().kind.get_ref() {
+        ActuatorKind::Linear => {
+            no_servo_keys(src, file.get_ref())?;
+            Ok(Actuator::Linear)
+        }
+        ActuatorKind::Rotary => build_servos(src, file),
+    }
+}
+
+/// Linear legs take none of the servos' keys.
+fn no_servo_keys(src: &Source, a: &ActuatorFile) -> Result<(), ScenarioError> {
     let rotary_keys = [
         ("horn_length_m", a.horn_length_m.as_ref().map(Spanned::span)),
         ("rod_length_m", a.rod_length_m.as_ref().map(Spanned::span)),
@@ -187,16 +196,21 @@ fn build_actuator(
             a.servo_trim_deg.as_ref().map(Spanned::span),
         ),
     ];
-    if *a.kind.get_ref() == ActuatorKind::Linear {
-        if let Some((key, span)) = rotary_keys.iter().find(|(_, span)| span.is_some()) {
-            return Err(src.invalid(
-                span.clone(),
-                &format!("actuator.{key}"),
-                "belongs to rotary servos, not to `kind = \"linear\"`",
-            ));
-        }
-        return Ok(Actuator::Linear);
+    match rotary_keys.iter().find(|(_, span)| span.is_some()) {
+        Some((key, span)) => Err(src.invalid(
+            span.clone(),
+            &format!("actuator.{key}"),
+            "belongs to rotary servos, not to `kind = \"linear\"`",
+        )),
+        None => Ok(()),
     }
+}
+
+/// The servos of an `[actuator]` table with `kind = "rotary"`: horns, rods, directions,
+/// range and mounting, each error at its key.
+fn build_servos(src: &Source, file: &Spanned<ActuatorFile>) -> Result<Actuator, ScenarioError> {
+    use crate::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
+    let a = file.get_ref();
     let missing = |key: &str| {
         src.invalid(
             Some(file.span()),
@@ -245,6 +259,30 @@ fn build_actuator(
             ));
         }
     };
+    let (reversed, trims) = servo_mounting(src, a)?;
+    RotaryActuators::new(horn, rod, list, range)
+        .and_then(|r| r.with_mounting(reversed, trims))
+        .map(Actuator::Rotary)
+        .map_err(|e| {
+            let span = match &e {
+                RotaryError::Length {
+                    key: "rod_length_m",
+                    ..
+                } => a.rod_length_m.as_ref().map(Spanned::span),
+                RotaryError::Length { .. } | RotaryError::HornNotShorter { .. } => {
+                    a.horn_length_m.as_ref().map(Spanned::span)
+                }
+                RotaryError::HornAngle { .. } => Some(angles.span()),
+                RotaryError::Range { .. } => a.servo_min_deg.as_ref().map(Spanned::span),
+                RotaryError::Trim { .. } => a.servo_trim_deg.as_ref().map(Spanned::span),
+            };
+            src.err(span, e)
+        })
+}
+
+/// The servos' mounting: which are reversed and their trims (degrees), six each when
+/// given (none reversed, no trims when not).
+fn servo_mounting(src: &Source, a: &ActuatorFile) -> Result<([bool; 6], [f64; 6]), ScenarioError> {
     let six = |key: &str, len: usize, span: Range<usize>| {
         src.invalid(
             Some(span),
@@ -268,24 +306,7 @@ fn build_actuator(
             .try_into()
             .map_err(|_| six("servo_trim_deg", v.get_ref().len(), v.span()))?,
     };
-    RotaryActuators::new(horn, rod, list, range)
-        .and_then(|r| r.with_mounting(reversed, trims))
-        .map(Actuator::Rotary)
-        .map_err(|e| {
-            let span = match &e {
-                RotaryError::Length {
-                    key: "rod_length_m",
-                    ..
-                } => a.rod_length_m.as_ref().map(Spanned::span),
-                RotaryError::Length { .. } | RotaryError::HornNotShorter { .. } => {
-                    a.horn_length_m.as_ref().map(Spanned::span)
-                }
-                RotaryError::HornAngle { .. } => Some(angles.span()),
-                RotaryError::Range { .. } => a.servo_min_deg.as_ref().map(Spanned::span),
-                RotaryError::Trim { .. } => a.servo_trim_deg.as_ref().map(Spanned::span),
-            };
-            src.err(span, e)
-        })
+    Ok((reversed, trims))
 }
 
 /// Six points `[[x, y, z], …]` in metres, each coordinate finite.
