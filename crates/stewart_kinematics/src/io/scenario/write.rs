@@ -8,8 +8,9 @@ use super::file::{
     LinearChannelFile, PayloadFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile,
     TrajectoryKind,
 };
+use crate::actuator::Actuator;
 use crate::geometry::PlateJoints;
-use crate::trajectory::{Channel, Trajectory};
+use crate::trajectory::{Channel, Motion, Trajectory};
 
 fn s<T>(v: T) -> Spanned<T> {
     Spanned::new(0..0, v)
@@ -60,23 +61,11 @@ fn angular(c: &Channel) -> Option<Spanned<AngularChannelFile>> {
     }))
 }
 
-pub(super) fn to_toml(scenario: &Scenario) -> String {
-    let g = scenario.geometry.params();
-    let (base_radius, base_angles_deg, base_joints_m) = plate_keys(&g.base);
-    let (platform_radius, platform_angles_deg, platform_joints_m) = plate_keys(&g.platform);
-    let geometry = s(GeometryFile {
-        base_radius,
-        platform_radius,
-        home_height: s(g.home_height),
-        base_angles_deg,
-        platform_angles_deg,
-        base_joints_m,
-        platform_joints_m,
-        leg_min: g.stroke.min.map(s),
-        leg_max: g.stroke.max.map(s),
-    });
-    let actuator = scenario.geometry.rotary().map(|r| {
-        s(ActuatorFile {
+/// The `[actuator]` table: none for linear legs (the default kind).
+fn actuator_table(actuator: &Actuator) -> Option<Spanned<ActuatorFile>> {
+    match actuator {
+        Actuator::Linear => None,
+        Actuator::Rotary(r) => Some(s(ActuatorFile {
             kind: s(ActuatorKind::Rotary),
             horn_length_m: Some(s(r.horn_length())),
             rod_length_m: Some(s(r.rod_length())),
@@ -93,19 +82,20 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
                 .iter()
                 .any(|t| t.radians() != 0.0)
                 .then(|| s(r.trims().iter().map(|t| t.degrees()).collect())),
-        })
-    });
-    let pivot = (g.pivot != nalgebra::Vector3::zeros()).then(|| PivotFile {
-        offset_m: s([g.pivot.x, g.pivot.y, g.pivot.z]),
-    });
-    let sampling = scenario.motion.sampling;
+        })),
+    }
+}
+
+/// The `[trajectory]` table: the sampling and the kind's own keys.
+fn trajectory_table(motion: &Motion) -> TrajectoryFile {
+    let sampling = motion.sampling;
     let mut t = TrajectoryFile {
         start_s: (sampling.start() != 0.0).then(|| s(sampling.start())),
         duration_s: Some(s(sampling.duration())),
         samples: Some(s(sampling.len() as i64)),
         ..TrajectoryFile::default()
     };
-    let kind = match &scenario.motion.trajectory {
+    let kind = match &motion.trajectory {
         Trajectory::Sinusoid(c) => {
             t.x = linear(&c.x);
             t.y = linear(&c.y);
@@ -164,6 +154,29 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         }
     };
     t.kind = Some(s(kind));
+    t
+}
+
+pub(super) fn to_toml(scenario: &Scenario) -> String {
+    let g = scenario.geometry.params();
+    let (base_radius, base_angles_deg, base_joints_m) = plate_keys(&g.base);
+    let (platform_radius, platform_angles_deg, platform_joints_m) = plate_keys(&g.platform);
+    let geometry = s(GeometryFile {
+        base_radius,
+        platform_radius,
+        home_height: s(g.home_height),
+        base_angles_deg,
+        platform_angles_deg,
+        base_joints_m,
+        platform_joints_m,
+        leg_min: g.stroke.min.map(s),
+        leg_max: g.stroke.max.map(s),
+    });
+    let actuator = actuator_table(scenario.geometry.actuator());
+    let pivot = (g.pivot != nalgebra::Vector3::zeros()).then(|| PivotFile {
+        offset_m: s([g.pivot.x, g.pivot.y, g.pivot.z]),
+    });
+    let t = trajectory_table(&scenario.motion);
     let l = &scenario.limits;
     let limits = LimitsFile {
         leg_speed_max_m_s: l.leg_speed_max.map(s),
