@@ -42,19 +42,7 @@ pub struct Renderer {
 impl Renderer {
     /// Build the pipelines for colour `format` with `samples` (1 or 4) MSAA samples.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, samples: u32) -> Self {
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("globals"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
-        });
+        let layout = globals_layout(device);
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("stewart"),
             bind_group_layouts: &[Some(&layout)],
@@ -63,10 +51,6 @@ impl Renderer {
         let mesh_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("mesh.wgsl"),
             source: wgpu::ShaderSource::Wgsl(shaders::MESH.into()),
-        });
-        let line_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("lines.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shaders::LINES.into()),
         });
         let mesh_buffers = [
             Some(wgpu::VertexBufferLayout {
@@ -131,40 +115,7 @@ impl Renderer {
             multisample,
             &blend_target,
         );
-        let lines = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("lines"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &line_module,
-                entry_point: Some("vs_main"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<LineVertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4],
-                })],
-            },
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::LineList,
-                ..Default::default()
-            },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample,
-            fragment: Some(wgpu::FragmentState {
-                module: &line_module,
-                entry_point: Some("fs_main"),
-                compilation_options: Default::default(),
-                targets: &blend_target,
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let lines = line_pipeline(device, &pipeline_layout, multisample, &blend_target);
         let (text, atlas_texture, atlas_bind_group) =
             text_pipeline(device, &layout, multisample, format);
         Self {
@@ -475,6 +426,70 @@ fn triangle_pipeline(
 
 /// The text pipeline (screen-space quads over everything, alpha-blended), the glyph atlas
 /// texture and its bind group.
+/// The layout of the per-view globals (camera, light): one uniform buffer for both stages.
+fn globals_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("globals"),
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        }],
+    })
+}
+
+/// The pipeline of coloured line lists (grid, axes, path), depth-tested and written.
+fn line_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+    targets: &[Option<wgpu::ColorTargetState>],
+) -> wgpu::RenderPipeline {
+    let line_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("lines.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shaders::LINES.into()),
+    });
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("lines"),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: &line_module,
+            entry_point: Some("vs_main"),
+            compilation_options: Default::default(),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<LineVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4],
+            })],
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::LineList,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::LessEqual),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample,
+        fragment: Some(wgpu::FragmentState {
+            module: &line_module,
+            entry_point: Some("fs_main"),
+            compilation_options: Default::default(),
+            targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
 fn text_pipeline(
     device: &wgpu::Device,
     globals: &wgpu::BindGroupLayout,
