@@ -24,6 +24,7 @@ pub mod gpu_types;
 pub mod mesh;
 pub mod offscreen;
 pub mod plate_shape;
+pub mod readback;
 pub mod renderer;
 pub mod shaders;
 pub mod targets;

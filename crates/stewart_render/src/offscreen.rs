@@ -3,6 +3,7 @@
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
 use crate::gpu::{Gpu, GpuError};
+use crate::readback::Readback;
 use crate::renderer::{DEPTH_FORMAT, Renderer};
 use crate::theme::Theme;
 use crate::view::PreparedView;
@@ -45,8 +46,7 @@ struct Targets {
     resolve: wgpu::Texture,
     resolve_view: wgpu::TextureView,
     depth: wgpu::TextureView,
-    readback: wgpu::Buffer,
-    padded_row: u32,
+    readback: Readback,
 }
 
 impl Targets {
@@ -77,15 +77,7 @@ impl Targets {
             wgpu::TextureUsages::RENDER_ATTACHMENT,
         )
         .create_view(&Default::default());
-        // Rows of a texture-to-buffer copy must be padded to 256 bytes.
-        let align = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let padded_row = (4 * width).div_ceil(align) * align;
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("readback"),
-            size: u64::from(padded_row) * u64::from(height),
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
+        let readback = Readback::new(device, "readback", width, height);
         Self {
             width,
             height,
@@ -94,7 +86,6 @@ impl Targets {
             resolve_view,
             depth,
             readback,
-            padded_row,
         }
     }
 }
@@ -255,27 +246,7 @@ impl Offscreen {
                 .renderer
                 .render(view, &mut encoder, &t.resolve_view, None, &t.depth),
         }
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &t.resolve,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &t.readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(t.padded_row),
-                    rows_per_image: Some(height),
-                },
-            },
-            wgpu::Extent3d {
-                width,
-                height,
-                depth_or_array_layers: 1,
-            },
-        );
+        t.readback.copy_from(&mut encoder, &t.resolve);
         self.gpu.queue.submit([encoder.finish()]);
         Ok(())
     }
@@ -287,31 +258,10 @@ impl Offscreen {
                 "no frame was submitted".to_owned(),
             ));
         };
-        let slice = t.readback.slice(..);
-        let (sender, receiver) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = sender.send(r);
-        });
-        self.gpu
-            .device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| OffscreenError::Readback(e.to_string()))?;
-        receiver
-            .recv()
-            .map_err(|e| OffscreenError::Readback(e.to_string()))?
-            .map_err(|e| OffscreenError::Readback(e.to_string()))?;
-        let row = 4 * t.width as usize;
-        let mut rgba = Vec::with_capacity(row * t.height as usize);
-        {
-            let data = slice
-                .get_mapped_range()
-                .map_err(|e| OffscreenError::Readback(e.to_string()))?;
-            for y in 0..t.height as usize {
-                let start = y * t.padded_row as usize;
-                rgba.extend_from_slice(&data[start..start + row]);
-            }
-        }
-        t.readback.unmap();
+        let rgba = t
+            .readback
+            .read(&self.gpu.device)
+            .map_err(OffscreenError::Readback)?;
         Ok(Frame {
             width: t.width,
             height: t.height,

@@ -5,6 +5,7 @@
 
 use egui::epaint::ClippedPrimitive;
 use egui::epaint::textures::TexturesDelta;
+use stewart_render::readback::Readback;
 
 /// MSAA samples of the window and of its shots (the 3D pipelines are built to match).
 pub const SAMPLES: u32 = 4;
@@ -119,59 +120,24 @@ pub fn render(
         let renderer = rs.renderer.read();
         renderer.render(&mut pass.forget_lifetime(), primitives, &screen);
     }
-    let row = (4 * size[0]).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
-        * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("window-shot readback"),
-        size: u64::from(row) * u64::from(size[1]),
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    encoder.copy_texture_to_buffer(
-        targets.resolve.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(row),
-                rows_per_image: Some(size[1]),
-            },
-        },
-        wgpu::Extent3d {
-            width: size[0],
-            height: size[1],
-            depth_or_array_layers: 1,
-        },
-    );
+    let readback = Readback::new(device, "window-shot readback", size[0], size[1]);
+    readback.copy_from(&mut encoder, &targets.resolve);
     commands.push(encoder.finish());
     queue.submit(commands);
-    let slice = buffer.slice(..);
-    let (done, mapped) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = done.send(r);
-    });
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| format!("the GPU did not finish the screenshot: {e}"))?;
-    mapped
-        .recv()
-        .map_err(|e| e.to_string())?
+    let data = readback
+        .read(device)
         .map_err(|e| format!("cannot read the screenshot back: {e}"))?;
     let bgra = matches!(
         rs.target_format,
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
     );
-    let data = slice
-        .get_mapped_range()
-        .map_err(|e| format!("cannot read the screenshot back: {e}"))?;
-    let mut pixels = Vec::with_capacity((size[0] * size[1]) as usize);
-    for y in 0..size[1] as usize {
-        let line = &data[y * row as usize..][..4 * size[0] as usize];
-        for p in line.chunks_exact(4) {
+    let pixels = data
+        .chunks_exact(4)
+        .map(|p| {
             let (r, b) = if bgra { (p[2], p[0]) } else { (p[0], p[2]) };
-            pixels.push(egui::Color32::from_rgba_premultiplied(r, p[1], b, 255));
-        }
-    }
+            egui::Color32::from_rgba_premultiplied(r, p[1], b, 255)
+        })
+        .collect();
     Ok(egui::ColorImage::new(
         [size[0] as usize, size[1] as usize],
         pixels,
