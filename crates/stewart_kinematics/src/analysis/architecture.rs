@@ -15,6 +15,7 @@
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
+use crate::actuator::Actuator;
 use crate::geometry::Geometry;
 use crate::jacobian::Conditioning;
 use crate::pose::Pose;
@@ -86,12 +87,14 @@ impl Geometry {
             worst = worst.min(c.inverse_condition());
             all_singular &= c.is_singular();
         }
-        let rotary = self.rotary().is_some();
         ArchitectureReport {
             singular: probed > 0 && all_singular,
             // The projective test is about leg lines from the base joints; a rotary
             // platform's rods start at the horn tips instead.
-            projective_correspondence: !rotary && joints_projectively_related(self),
+            projective_correspondence: match self.actuator() {
+                Actuator::Linear => joints_projectively_related(self),
+                Actuator::Rotary(_) => false,
+            },
             home: self
                 .actuated_conditioning(&home)
                 .unwrap_or_else(|| Conditioning::unreachable(self.characteristic_length())),

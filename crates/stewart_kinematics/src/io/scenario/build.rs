@@ -98,7 +98,7 @@ pub(crate) fn parse(
         None => Motion::seed(geometry.home_height()),
     };
     let checks = build_checks(&src, parsed.checks.as_ref())?;
-    let limits = build_limits(&src, parsed.limits.as_ref(), geometry.rotary().is_some())?;
+    let limits = build_limits(&src, parsed.limits.as_ref(), geometry.actuator().kind())?;
     let payload = parsed
         .payload
         .as_ref()
@@ -520,30 +520,29 @@ fn build_checks(src: &Source, c: Option<&ChecksFile>) -> Result<CheckSettings, S
 fn build_limits(
     src: &Source,
     l: Option<&LimitsFile>,
-    rotary: bool,
+    kind: ActuatorKind,
 ) -> Result<Limits, ScenarioError> {
     let Some(l) = l else {
         return Ok(Limits::default());
     };
     // Leg rates belong to linear legs, servo rates to servos.
-    let (misplaced, why) = if rotary {
-        (
+    let (misplaced, why) = match kind {
+        ActuatorKind::Rotary => (
             [
                 ("limits.leg_speed_max_m_s", &l.leg_speed_max_m_s),
                 ("limits.leg_accel_max_m_s2", &l.leg_accel_max_m_s2),
                 ("limits.leg_jerk_max_m_s3", &l.leg_jerk_max_m_s3),
             ],
             "applies to linear legs only; a rotary platform takes `servo_speed_max_deg_s`, `servo_accel_max_deg_s2` and `servo_jerk_max_deg_s3`",
-        )
-    } else {
-        (
+        ),
+        ActuatorKind::Linear => (
             [
                 ("limits.servo_speed_max_deg_s", &l.servo_speed_max_deg_s),
                 ("limits.servo_accel_max_deg_s2", &l.servo_accel_max_deg_s2),
                 ("limits.servo_jerk_max_deg_s3", &l.servo_jerk_max_deg_s3),
             ],
             "applies to rotary platforms only (`[actuator] kind = \"rotary\"`)",
-        )
+        ),
     };
     if let Some((field, Some(v))) = misplaced.iter().find(|(_, v)| v.is_some()) {
         return Err(src.invalid(Some(v.span()), field, why.to_owned()));
