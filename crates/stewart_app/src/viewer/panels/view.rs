@@ -3,6 +3,8 @@
 
 use egui::Color32;
 
+use stewart_render::OrbitCamera;
+
 use crate::viewer::state::ViewerState;
 use crate::viewer::view3d::SceneCallback;
 
@@ -112,7 +114,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         rect.max - egui::vec2(0.0, keep_clear),
     );
     let response = ui.allocate_rect(camera_rect, egui::Sense::click_and_drag());
-    camera_input(ui, state, &response, rect);
+    camera_input(ui, &mut state.look.camera, &response, rect);
     let aspect = rect.width() / rect.height().max(1.0);
     state.look.view_aspect = aspect;
     state.frame_for_presentation(aspect);
@@ -162,20 +164,20 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// Left drag orbits, right or middle drag pans, the wheel zooms toward the cursor.
 fn camera_input(
     ui: &egui::Ui,
-    state: &mut ViewerState,
+    camera: &mut OrbitCamera,
     response: &egui::Response,
     rect: egui::Rect,
 ) {
     if response.dragged_by(egui::PointerButton::Primary) {
         let d = response.drag_delta();
-        state.look.camera.orbit(-0.4 * d.x, 0.4 * d.y);
+        camera.orbit(-0.4 * d.x, 0.4 * d.y);
     }
     if response.dragged_by(egui::PointerButton::Secondary)
         || response.dragged_by(egui::PointerButton::Middle)
     {
         let d = response.drag_delta();
-        let scale = state.look.camera.distance * 0.0015;
-        state.look.camera.pan(-d.x * scale, d.y * scale);
+        let scale = camera.distance * 0.0015;
+        camera.pan(-d.x * scale, d.y * scale);
     }
     if let Some(pointer) = response.hover_pos() {
         let scroll = ui.input(|i| i.smooth_scroll_delta.y);
@@ -187,11 +189,8 @@ fn camera_input(
             let aspect = rect.width() / rect.height().max(1.0);
             // The view is drawn from the fitted camera, farther away in narrow views: the
             // cursor's offset in the target plane grows by the same ratio.
-            let fit = state.look.camera.fitted_to(aspect).distance / state.look.camera.distance;
-            state
-                .look
-                .camera
-                .zoom_toward((-scroll * 0.002).exp(), ndc * fit, aspect);
+            let fit = camera.fitted_to(aspect).distance / camera.distance;
+            camera.zoom_toward((-scroll * 0.002).exp(), ndc * fit, aspect);
         }
     }
 }
