@@ -1,0 +1,167 @@
+//! Motion cueing: vehicle motion (a recording, or live telemetry) made into platform poses
+//! by classical washout ([`washout`]), cued at the occupant's head (the `[cueing]`
+//! reference point: the platform turns about it), and, when asked, kept within the stroke
+//! and limits by the workspace limiter ([`limiter`]).
+
+mod limiter;
+mod lti;
+mod washout;
+
+use nalgebra::Vector3;
+use thiserror::Error;
+
+use crate::angle::Angle;
+use crate::cueing_settings::{CueingProblem, CueingSettings};
+use crate::geometry::Geometry;
+use crate::limits::Limits;
+use crate::pose::{Pose, rotation_zyx};
+
+pub use limiter::Limiter;
+pub use lti::Lti;
+pub use washout::{Cue, VehicleMotion, Washout};
+
+/// Why vehicle motion could not be cued.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum CueError {
+    /// A `[cueing]` value that cannot work.
+    #[error(transparent)]
+    Settings(#[from] CueingProblem),
+    /// Sample `index` (from 0) does not come after the one before it.
+    #[error("t = {t} s does not come after the previous sample's {previous} s")]
+    Time {
+        /// The sample, from 0.
+        index: usize,
+        /// Its time, seconds.
+        t: f64,
+        /// The previous sample's time.
+        previous: f64,
+    },
+    /// The limiter keeps poses within the limits by scaling toward home, which must be
+    /// within them.
+    #[error(
+        "the workspace limiter needs the home pose within the stroke and limits, and it is not"
+    )]
+    HomeOutside,
+}
+
+/// The cueing of one platform: washout, the pose at the reference point, the limiter.
+#[derive(Clone, Debug)]
+pub struct Cueing {
+    washout: Washout,
+    limiter: Option<Limiter>,
+    geometry: Geometry,
+    limits: Limits,
+    /// The reference point relative to the rotation centre, platform frame.
+    arm: Vector3<f64>,
+}
+
+impl Cueing {
+    /// Cueing by `settings` for `geometry` within `limits`, at rest at neutral (home).
+    pub fn new(
+        geometry: &Geometry,
+        limits: &Limits,
+        settings: &CueingSettings,
+    ) -> Result<Self, CueError> {
+        if let Some(p) = settings.problem() {
+            return Err(p.into());
+        }
+        let limiter = settings
+            .workspace_limiter
+            .then(|| Limiter::new(settings.limiter_recovery_s));
+        if limiter.is_some() && !geometry.pose_within_limits(limits, &geometry.home_pose()) {
+            return Err(CueError::HomeOutside);
+        }
+        Ok(Self {
+            washout: Washout::new(settings),
+            limiter,
+            geometry: geometry.clone(),
+            limits: *limits,
+            arm: Vector3::from(settings.reference_m) - geometry.pivot(),
+        })
+    }
+
+    /// Hold `motion` as the input from now until the next sample.
+    pub fn hold(&mut self, motion: &VehicleMotion) {
+        self.washout.hold(motion);
+    }
+
+    /// Advance `h` seconds and return the pose then (scaled back by the limiter when it
+    /// runs and the full cue would leave the limits).
+    pub fn advance(&mut self, h: f64) -> Pose {
+        self.washout.advance(h);
+        let cue = self.washout.cue();
+        let Some(limiter) = &mut self.limiter else {
+            return pose_at(&self.geometry, self.arm, &cue, 1.0);
+        };
+        let fits = |s: f64| {
+            let pose = pose_at(&self.geometry, self.arm, &cue, s);
+            self.geometry.pose_within_limits(&self.limits, &pose)
+        };
+        let s = limiter.scale_for(h, fits);
+        pose_at(&self.geometry, self.arm, &cue, s)
+    }
+
+    /// The washout's cue now (before the limiter).
+    pub fn cue(&self) -> Cue {
+        self.washout.cue()
+    }
+
+    /// The limiter's scale now (1 without a limiter).
+    pub fn scale(&self) -> f64 {
+        self.limiter.as_ref().map_or(1.0, Limiter::scale)
+    }
+
+    /// Back to neutral and rest.
+    pub fn reset(&mut self) {
+        self.washout.reset();
+        if let Some(l) = &mut self.limiter {
+            l.reset();
+        }
+    }
+}
+
+/// The pose of `geometry` whose reference point (at `arm` from the rotation centre, in
+/// the platform frame) is at its home place plus `s` times the cue's translation, the
+/// platform turned by `s` times the cue's angles about it.
+fn pose_at(geometry: &Geometry, arm: Vector3<f64>, cue: &Cue, s: f64) -> Pose {
+    let [roll, pitch, yaw] = cue.angles.map(|a| Angle::from_radians(s * a));
+    let rotation = rotation_zyx(roll, pitch, yaw);
+    // A platform point a goes to p + R (a − c) + c; the reference point stays where the
+    // cue puts it when p = home + x + arm − R arm.
+    let position =
+        geometry.home_pose().position + s * Vector3::from(cue.position) + arm - rotation * arm;
+    Pose::new(position, roll, pitch, yaw)
+}
+
+/// The poses of a recording of vehicle motion, one per sample at its time (the first at
+/// neutral: the filters start at rest), each sample's motion held until the next.
+pub fn cue_recording(
+    geometry: &Geometry,
+    limits: &Limits,
+    settings: &CueingSettings,
+    samples: &[(f64, VehicleMotion)],
+) -> Result<Vec<Pose>, CueError> {
+    let mut cueing = Cueing::new(geometry, limits, settings)?;
+    let mut poses = Vec::with_capacity(samples.len());
+    let mut previous: Option<f64> = None;
+    for (index, (t, motion)) in samples.iter().enumerate() {
+        let h = match previous {
+            Some(p) if *t > p => t - p,
+            Some(p) => {
+                return Err(CueError::Time {
+                    index,
+                    t: *t,
+                    previous: p,
+                });
+            }
+            None => 0.0,
+        };
+        poses.push(cueing.advance(h));
+        cueing.hold(motion);
+        previous = Some(*t);
+    }
+    Ok(poses)
+}
+
+#[cfg(test)]
+mod tests;

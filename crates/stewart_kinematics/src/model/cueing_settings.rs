@@ -1,0 +1,228 @@
+//! The `[cueing]` table of a scenario: how vehicle motion (accelerations and rotation
+//! rates, from a recording or a game) becomes platform motion by classical washout
+//! (Reid & Nahon) — the scale and high-pass filters of the translational and rotational
+//! channels, tilt coordination, the axes used, the point the motion is cued at, and the
+//! workspace limiter. Plain data, checked here; `analysis::cueing` runs the filters.
+//!
+//! ```toml
+//! [cueing]
+//! translation_scale = 0.5     # vehicle specific force × this
+//! translation_hp_wn = 2.5     # rad/s: second-order high-pass s²/(s²+2ζωs+ω²)
+//! translation_hp_zeta = 1.0
+//! translation_hp_wb = 0.5     # rad/s: first-order high-pass s/(s+ω_b) back to neutral; 0 = off
+//! tilt = true                 # sustained specific force rendered by tilting
+//! tilt_lp_wn = 5.0            # rad/s: second-order low-pass ω²/(s²+2ζωs+ω²)
+//! tilt_lp_zeta = 1.0
+//! tilt_rate_max_deg_s = 3.0   # tilt never turns faster than this
+//! rotation_scale = 0.5        # vehicle rotation rates × this
+//! rotation_hp_wn = 1.0        # rad/s: second-order high-pass of the rates, then integrated
+//! rotation_hp_zeta = 1.0
+//! surge = true                # per axis: x, y, z, roll, pitch, yaw cued or not
+//! sway = true
+//! heave = true
+//! roll = true
+//! pitch = true
+//! yaw = true
+//! reference_m = [0, 0, 0.3]   # the occupant's head in the platform frame
+//! workspace_limiter = false   # scale the cue back so that no pose leaves the limits
+//! limiter_recovery_s = 1.0    # how fast the limiter gives the full cue back
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+/// Standard gravity, m/s²: tilt coordination renders a specific force `f` by tilting the
+/// platform until gravity's component along it is `f`.
+pub const GRAVITY: f64 = 9.80665;
+
+/// The `[cueing]` table.
+#[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CueingSettings {
+    /// Multiplies the vehicle's specific force (translational channel and tilt).
+    pub translation_scale: f64,
+    /// Natural frequency of the translational second-order high-pass, rad/s.
+    pub translation_hp_wn: f64,
+    /// Damping ratio of the translational second-order high-pass.
+    pub translation_hp_zeta: f64,
+    /// Break frequency of the translational first-order high-pass that brings the platform
+    /// back to neutral, rad/s (0: off).
+    pub translation_hp_wb: f64,
+    /// Whether sustained specific force is rendered by tilting (surge and sway).
+    pub tilt: bool,
+    /// Natural frequency of the tilt channel's second-order low-pass, rad/s.
+    pub tilt_lp_wn: f64,
+    /// Damping ratio of the tilt channel's low-pass.
+    pub tilt_lp_zeta: f64,
+    /// The fastest tilt, degrees per second (about 3°/s is not felt as rotation).
+    pub tilt_rate_max_deg_s: f64,
+    /// Multiplies the vehicle's rotation rates.
+    pub rotation_scale: f64,
+    /// Natural frequency of the rotational second-order high-pass, rad/s.
+    pub rotation_hp_wn: f64,
+    /// Damping ratio of the rotational high-pass.
+    pub rotation_hp_zeta: f64,
+    /// Cue motion along x.
+    pub surge: bool,
+    /// Cue motion along y.
+    pub sway: bool,
+    /// Cue motion along z.
+    pub heave: bool,
+    /// Cue roll.
+    pub roll: bool,
+    /// Cue pitch.
+    pub pitch: bool,
+    /// Cue yaw.
+    pub yaw: bool,
+    /// The point the motion is cued at (the occupant's head), platform frame, metres:
+    /// rotations turn about it, so tilting does not move the head.
+    pub reference_m: [f64; 3],
+    /// Scale the cue back so that no pose leaves the stroke and limits.
+    pub workspace_limiter: bool,
+    /// Seconds the limiter takes to give the full cue back after scaling it to nothing.
+    pub limiter_recovery_s: f64,
+}
+
+impl Default for CueingSettings {
+    fn default() -> Self {
+        Self {
+            translation_scale: 0.5,
+            translation_hp_wn: 2.5,
+            translation_hp_zeta: 1.0,
+            translation_hp_wb: 0.5,
+            tilt: true,
+            tilt_lp_wn: 5.0,
+            tilt_lp_zeta: 1.0,
+            tilt_rate_max_deg_s: 3.0,
+            rotation_scale: 0.5,
+            rotation_hp_wn: 1.0,
+            rotation_hp_zeta: 1.0,
+            surge: true,
+            sway: true,
+            heave: true,
+            roll: true,
+            pitch: true,
+            yaw: true,
+            reference_m: [0.0; 3],
+            workspace_limiter: false,
+            limiter_recovery_s: 1.0,
+        }
+    }
+}
+
+/// A `[cueing]` value refused: the key (`cueing.tilt_lp_wn`, `cueing.reference_m[2]`) and
+/// why.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("`{key}` {reason}")]
+pub struct CueingProblem {
+    /// The key, as the file and `--set` name it.
+    pub key: String,
+    /// Why.
+    pub reason: String,
+}
+
+/// The largest scale accepted.
+pub const MAX_SCALE: f64 = 10.0;
+/// The highest filter frequency accepted, rad/s.
+pub const MAX_OMEGA: f64 = 1000.0;
+/// The largest damping ratio accepted.
+pub const MAX_ZETA: f64 = 10.0;
+
+impl CueingSettings {
+    /// Whether each of x, y, z, roll, pitch, yaw is cued.
+    pub fn axes(&self) -> [bool; 6] {
+        [
+            self.surge, self.sway, self.heave, self.roll, self.pitch, self.yaw,
+        ]
+    }
+
+    /// The first value that cannot work, if any: a scale outside 0…10, a filter frequency
+    /// or damping ratio that is not positive (the return-to-neutral break frequency may be
+    /// 0), a tilt rate that is not positive, a reference point farther than 1000 m, a
+    /// recovery time that is not positive; NaN and infinity never.
+    pub fn problem(&self) -> Option<CueingProblem> {
+        let bad = |key: &str, reason: String| {
+            Some(CueingProblem {
+                key: format!("cueing.{key}"),
+                reason,
+            })
+        };
+        for (key, v) in [
+            ("translation_scale", self.translation_scale),
+            ("rotation_scale", self.rotation_scale),
+        ] {
+            if !(0.0..=MAX_SCALE).contains(&v) {
+                return bad(key, format!("must be between 0 and {MAX_SCALE}, got {v}"));
+            }
+        }
+        for (key, v, max) in [
+            ("translation_hp_wn", self.translation_hp_wn, MAX_OMEGA),
+            ("translation_hp_zeta", self.translation_hp_zeta, MAX_ZETA),
+            ("tilt_lp_wn", self.tilt_lp_wn, MAX_OMEGA),
+            ("tilt_lp_zeta", self.tilt_lp_zeta, MAX_ZETA),
+            ("rotation_hp_wn", self.rotation_hp_wn, MAX_OMEGA),
+            ("rotation_hp_zeta", self.rotation_hp_zeta, MAX_ZETA),
+            ("tilt_rate_max_deg_s", self.tilt_rate_max_deg_s, 360.0),
+            ("limiter_recovery_s", self.limiter_recovery_s, 3600.0),
+        ] {
+            if !(v > 0.0 && v <= max) {
+                return bad(
+                    key,
+                    format!("must be a positive number of at most {max}, got {v}"),
+                );
+            }
+        }
+        let wb = self.translation_hp_wb;
+        if !(0.0..=MAX_OMEGA).contains(&wb) {
+            return bad(
+                "translation_hp_wb",
+                format!("must be between 0 (off) and {MAX_OMEGA} rad/s, got {wb}"),
+            );
+        }
+        let far = crate::bounds::LENGTH_M;
+        for (i, v) in self.reference_m.iter().enumerate() {
+            if !(v.is_finite() && v.abs() <= far) {
+                return bad(
+                    &format!("reference_m[{i}]"),
+                    format!("must be a number of metres within ±{far}, got {v}"),
+                );
+            }
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_defaults_are_sound_and_each_bad_value_names_its_key() {
+        assert_eq!(CueingSettings::default().problem(), None);
+        type Spoil = fn(&mut CueingSettings);
+        let cases: [(Spoil, &str); 6] = [
+            (|c| c.translation_scale = -0.1, "cueing.translation_scale"),
+            (|c| c.tilt_lp_wn = 0.0, "cueing.tilt_lp_wn"),
+            (|c| c.rotation_hp_zeta = f64::NAN, "cueing.rotation_hp_zeta"),
+            (|c| c.translation_hp_wb = -1.0, "cueing.translation_hp_wb"),
+            (
+                |c| c.reference_m[2] = f64::INFINITY,
+                "cueing.reference_m[2]",
+            ),
+            (
+                |c| c.tilt_rate_max_deg_s = 1e9,
+                "cueing.tilt_rate_max_deg_s",
+            ),
+        ];
+        for (spoil, key) in cases {
+            let mut c = CueingSettings::default();
+            spoil(&mut c);
+            assert_eq!(c.problem().map(|p| p.key), Some(key.to_owned()));
+        }
+        // Off is allowed for the return to neutral.
+        let c = CueingSettings {
+            translation_hp_wb: 0.0,
+            ..CueingSettings::default()
+        };
+        assert_eq!(c.problem(), None);
+    }
+}
