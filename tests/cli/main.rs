@@ -5,6 +5,7 @@ mod analysis;
 mod calibrate;
 mod check;
 mod chinese;
+mod cue;
 mod design;
 mod export;
 mod firmware;
@@ -145,6 +146,7 @@ fn help_lists_every_command() {
             "solve",
             "check",
             "fk",
+            "cue",
             "calibrate",
             "workspace",
             "forces",

@@ -32,6 +32,10 @@ pub enum Command {
     Check(CheckArgs),
     /// Forward kinematics: poses from a table of leg lengths, as CSV.
     Fk(FkArgs),
+    /// Motion cueing: platform poses from vehicle motion (a CSV of time, specific force
+    /// and rotation rates) by classical washout, as a pose table for `solve --poses`,
+    /// `check` and `link`; the scenario's `[cueing]` table sets the filters.
+    Cue(CueArgs),
     /// Calibrate a built platform: its joint coordinates and actuator offsets from
     /// measured poses and the leg lengths (or servo angles) commanded for them, by
     /// nonlinear least squares; reports what the measurements determine and writes the
@@ -286,6 +290,23 @@ pub struct SolveArgs {
     /// `servo_reversed`, plus `servo_trim_deg` — as cmd1..cmd6 instead of theta1..theta6.
     #[arg(long)]
     pub commanded: bool,
+}
+
+/// Arguments of `stewart cue`.
+#[derive(Debug, Args)]
+pub struct CueArgs {
+    /// The scenario: a preset or a file (its `[cueing]` table, geometry and limits).
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// The vehicle motion: a CSV with columns t (s), ax, ay, az (m/s², the vehicle's
+    /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s); `-` reads
+    /// standard input.
+    #[arg(long, value_name = "VEHICLE.csv")]
+    pub input: PathBuf,
+    /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
+    /// at all, instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
 /// Report formats of `stewart check`.

@@ -43,6 +43,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Solve(args)) => commands::solve::run(&args),
         Some(Command::Check(args)) => commands::check::run(&args),
+        Some(Command::Cue(args)) => commands::cue::run(&args),
         Some(Command::Fk(args)) => commands::fk::run(&args),
         Some(Command::Calibrate(args)) => commands::calibrate::run(&args),
         Some(Command::Workspace(args)) => commands::workspace::run(&args),

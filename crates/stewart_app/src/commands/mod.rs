@@ -2,6 +2,7 @@
 
 pub mod calibrate;
 pub mod check;
+pub mod cue;
 pub mod design;
 pub mod device_sim;
 pub mod firmware;

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::settings::Target;
+use stewart_kinematics::settings::{Setting, Target, Unit};
 use stewart_kinematics::{Scenario, bounds, settings};
 
 use crate::cli::SettingsArgs;
@@ -44,11 +44,16 @@ pub fn table(scenario: &Scenario) -> String {
             },
         )
     };
+    // A switch reads `true` or `false`.
+    let value_of = |s: &Setting, v: Option<f64>| match (s.unit, v) {
+        (Unit::Switch, Some(v)) => (v != 0.0).to_string(),
+        _ => number(v),
+    };
     let rows: Vec<[String; 6]> = settings::all()
         .iter()
         .map(|s| {
             let value = if s.applies(scenario) {
-                number(s.get(scenario))
+                value_of(s, s.get(scenario))
             } else if let Target::Geometry(key) = s.target
                 && key.circle_plate().is_some()
             {
@@ -70,7 +75,7 @@ pub fn table(scenario: &Scenario) -> String {
                     bounds::short(*s.accepted.start()),
                     bounds::short(*s.accepted.end())
                 ),
-                number(s.default_for(scenario)),
+                value_of(s, s.default_for(scenario)),
             ]
         })
         .collect();

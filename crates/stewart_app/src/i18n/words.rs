@@ -46,7 +46,9 @@ fn setting_key(setting: &Setting) -> (String, usize, String) {
             index + 1,
             (*channel).to_owned(),
         ),
-        ["pivot", _] => (format!("setting.{base}"), index + 1, axis_of(index)),
+        ["pivot", _] | ["cueing", "reference_m"] => {
+            (format!("setting.{base}"), index + 1, axis_of(index))
+        }
         _ => (format!("setting.{base}"), index + 1, String::new()),
     }
 }

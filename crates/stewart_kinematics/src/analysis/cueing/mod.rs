@@ -133,6 +133,15 @@ fn pose_at(geometry: &Geometry, arm: Vector3<f64>, cue: &Cue, s: f64) -> Pose {
     Pose::new(position, roll, pitch, yaw)
 }
 
+/// A recording made into platform motion.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CuedRecording {
+    /// One pose per sample.
+    pub poses: Vec<Pose>,
+    /// The limiter's scale at each sample (all 1 without the limiter).
+    pub scales: Vec<f64>,
+}
+
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at
 /// neutral: the filters start at rest), each sample's motion held until the next.
 pub fn cue_recording(
@@ -140,9 +149,10 @@ pub fn cue_recording(
     limits: &Limits,
     settings: &CueingSettings,
     samples: &[(f64, VehicleMotion)],
-) -> Result<Vec<Pose>, CueError> {
+) -> Result<CuedRecording, CueError> {
     let mut cueing = Cueing::new(geometry, limits, settings)?;
     let mut poses = Vec::with_capacity(samples.len());
+    let mut scales = Vec::with_capacity(samples.len());
     let mut previous: Option<f64> = None;
     for (index, (t, motion)) in samples.iter().enumerate() {
         let h = match previous {
@@ -157,10 +167,11 @@ pub fn cue_recording(
             None => 0.0,
         };
         poses.push(cueing.advance(h));
+        scales.push(cueing.scale());
         cueing.hold(motion);
         previous = Some(*t);
     }
-    Ok(poses)
+    Ok(CuedRecording { poses, scales })
 }
 
 #[cfg(test)]

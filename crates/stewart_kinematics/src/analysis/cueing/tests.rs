@@ -61,6 +61,7 @@ fn pose_coordinates(
 ) -> Vec<[f64; 6]> {
     cue_recording(geometry, &Limits::default(), settings, recording)
         .unwrap_or_else(|e| panic!("{e}"))
+        .poses
         .iter()
         .map(Pose::to_coordinates)
         .collect()
@@ -142,7 +143,8 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         rates_deg_s: [0.0; 3],
     };
     let poses = cue_recording(&g, &Limits::default(), &settings, &held(step, &t))
-        .unwrap_or_else(|e| panic!("{e}"));
+        .unwrap_or_else(|e| panic!("{e}"))
+        .poses;
     let pitch: Vec<f64> = poses.iter().map(|p| p.to_coordinates()[4]).collect();
     let limit = settings.tilt_rate_max_deg_s.to_radians() * h;
     let steps: Vec<f64> = pitch.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
@@ -166,7 +168,8 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         rates_deg_s: [0.0; 3],
     };
     let poses = cue_recording(&g, &Limits::default(), &settings, &held(left, &t))
-        .unwrap_or_else(|e| panic!("{e}"));
+        .unwrap_or_else(|e| panic!("{e}"))
+        .poses;
     let gravity = poses[3000].rotation().transpose() * Vector3::new(0.0, 0.0, -9.80665);
     assert!((gravity.y + force).abs() < 1e-9, "{gravity}");
 }
@@ -220,7 +223,8 @@ fn tilting_turns_about_the_reference_point_and_switched_off_axes_stay_at_neutral
     };
     let t: Vec<f64> = (0..=500).map(|k| f64::from(k) * 0.01).collect();
     let poses = cue_recording(&g, &Limits::default(), &settings, &held(motion, &t))
-        .unwrap_or_else(|e| panic!("{e}"));
+        .unwrap_or_else(|e| panic!("{e}"))
+        .poses;
     let c = g.pivot();
     let h = Vector3::from(head);
     let home_head = g.home_pose().position + h;
@@ -267,7 +271,9 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
         rotation_scale: 1.0,
         ..CueingSettings::default()
     };
-    let unlimited = cue_recording(&g, &limits, &free, &recording).unwrap_or_else(|e| panic!("{e}"));
+    let unlimited = cue_recording(&g, &limits, &free, &recording)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .poses;
     let outside = unlimited
         .iter()
         .filter(|p| !g.pose_within_limits(&limits, p))
@@ -280,8 +286,9 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
         workspace_limiter: true,
         ..free
     };
-    let limited =
-        cue_recording(&g, &limits, &limited_settings, &recording).unwrap_or_else(|e| panic!("{e}"));
+    let limited = cue_recording(&g, &limits, &limited_settings, &recording)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .poses;
     assert!(limited.iter().all(|p| g.pose_within_limits(&limits, p)));
     // Where the cue fits from the start, the limiter changes nothing.
     assert_eq!(limited[..5], unlimited[..5]);
@@ -302,7 +309,7 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
     let m = VehicleMotion::default();
     let recording = [(0.0, m), (0.1, m), (0.1, m)];
     assert_eq!(
-        cue_recording(&g, &Limits::default(), &plain(), &recording),
+        cue_recording(&g, &Limits::default(), &plain(), &recording).map(|c| c.poses),
         Err(CueError::Time {
             index: 2,
             t: 0.1,

@@ -112,16 +112,12 @@ pub(crate) fn parse(
             .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
         })
         .transpose()?;
-    let link = match &parsed.link {
-        Some(link) => {
-            if let Some(p) = link.get_ref().problem() {
-                let span = super::locate::span_of(text, &p.key).or_else(|| Some(link.span()));
-                return Err(src.invalid(span, &p.key, p.reason));
-            }
-            link.get_ref().clone()
-        }
-        None => crate::link_settings::LinkSettings::default(),
-    };
+    let link = checked_table(&src, text, parsed.link.as_ref(), |l| {
+        l.problem().map(|p| (p.key, p.reason))
+    })?;
+    let cueing = checked_table(&src, text, parsed.cueing.as_ref(), |c| {
+        c.problem().map(|p| (p.key, p.reason))
+    })?;
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
             .file_stem()
@@ -136,8 +132,27 @@ pub(crate) fn parse(
         payload,
         checks,
         link,
+        cueing,
     };
     Ok(scenario)
+}
+
+/// A table that checks itself (`[link]`, `[cueing]`): its first problem (key, reason) is
+/// the error, located at the key when the text has it; no table is the defaults.
+fn checked_table<T: Clone + Default>(
+    src: &Source,
+    text: &str,
+    table: Option<&Spanned<T>>,
+    problem: impl Fn(&T) -> Option<(String, String)>,
+) -> Result<T, ScenarioError> {
+    let Some(table) = table else {
+        return Ok(T::default());
+    };
+    if let Some((key, reason)) = problem(table.get_ref()) {
+        let span = super::locate::span_of(text, &key).or_else(|| Some(table.span()));
+        return Err(src.invalid(span, &key, reason));
+    }
+    Ok(table.get_ref().clone())
 }
 
 /// The error for the value of `key` in `text` (the file `file`), refused for `reason`,

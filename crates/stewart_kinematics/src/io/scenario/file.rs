@@ -33,6 +33,8 @@ pub(crate) struct ScenarioFile {
     pub checks: Option<ChecksFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub link: Option<Spanned<crate::link_settings::LinkSettings>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cueing: Option<Spanned<crate::cueing_settings::CueingSettings>>,
 }
 
 /// `[payload]`: the moving mass (platform and load).

@@ -43,6 +43,7 @@ mod write;
 pub use error::{ScenarioError, ScenarioProblem};
 
 use crate::checks::CheckSettings;
+use crate::cueing_settings::CueingSettings;
 use crate::forces::Payload;
 use crate::geometry::Geometry;
 use crate::limits::Limits;
@@ -68,6 +69,8 @@ pub struct Scenario {
     pub checks: CheckSettings,
     /// How set-points reach real hardware (`[link]`).
     pub link: LinkSettings,
+    /// How vehicle motion becomes platform motion (`[cueing]`).
+    pub cueing: CueingSettings,
 }
 
 impl Scenario {
@@ -83,6 +86,7 @@ impl Scenario {
             geometry,
             checks: CheckSettings::default(),
             link: LinkSettings::default(),
+            cueing: CueingSettings::default(),
         }
     }
 

@@ -351,6 +351,39 @@ fn the_link_table_reads_writes_back_and_names_bad_values() {
     );
 }
 
+#[test]
+fn the_cueing_table_reads_writes_back_and_names_bad_values() {
+    let s = parse(&format!(
+        "{GEOMETRY}[cueing]\ntranslation_scale = 0.8\ntilt = false\nyaw = false\nreference_m = [0.0, 0.1, 0.5]\nworkspace_limiter = true\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.cueing.translation_scale, 0.8);
+    assert!(!s.cueing.tilt && !s.cueing.yaw && s.cueing.roll);
+    assert_eq!(s.cueing.reference_m, [0.0, 0.1, 0.5]);
+    assert!(s.cueing.workspace_limiter);
+    // Keys not written keep their defaults.
+    assert_eq!(s.cueing.rotation_hp_wn, 1.0);
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.cueing, s.cueing);
+    assert!(
+        !parse(GEOMETRY)
+            .map(|s| s.to_toml())
+            .unwrap_or_default()
+            .contains("[cueing]")
+    );
+    assert_eq!(
+        error(&format!("{GEOMETRY}[cueing]\ntilt_lp_wn = -2\n")),
+        "s.toml, line 8, column 14: `cueing.tilt_lp_wn` must be a positive number of at most 1000, got -2"
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[cueing]\nwashout = 1\n"))
+            .starts_with("s.toml, line 8, column 1: unknown field `washout`"),
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[cueing]\ntilt = 3\n")).starts_with("s.toml, line 8, column 8: "),
+    );
+}
+
 /// The seed's platform with both plates written as coordinates (from its circles).
 const COORDINATES: &str = "[geometry]
 home_height = 0.8

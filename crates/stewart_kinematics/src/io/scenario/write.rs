@@ -213,6 +213,8 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         }),
         link: (scenario.link != crate::link_settings::LinkSettings::default())
             .then(|| s(scenario.link.clone())),
+        cueing: (scenario.cueing != crate::cueing_settings::CueingSettings::default())
+            .then(|| s(scenario.cueing.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
     let text =

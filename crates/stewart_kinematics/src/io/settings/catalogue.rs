@@ -4,18 +4,21 @@
 //! presets. Slider ranges cover sensible laboratory platforms; typed values may go
 //! beyond them wherever the model accepts them.
 
+use super::cueing::{AXES, CueingKey};
 use super::target::{
     ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
 };
 use super::{DefaultValue, Group, Setting, Unit};
 use crate::checks::CheckSettings;
+use crate::cueing_settings::CueingSettings;
 use crate::geometry::{GeometryParams, Plate};
 use crate::trajectory::{Sampling, Sinusoid};
 
 use DefaultValue::{AboveHome, Off, Value};
 use Unit::{
     Count, Degree, DegreePerSecond, DegreePerSecondCubed, DegreePerSecondSquared, Hertz, Metre,
-    MetrePerSecond, MetrePerSecondCubed, MetrePerSecondSquared, Ratio, Second,
+    MetrePerSecond, MetrePerSecondCubed, MetrePerSecondSquared, RadianPerSecond, Ratio, Second,
+    Switch,
 };
 
 struct Declare {
@@ -59,6 +62,8 @@ pub(super) fn build() -> Vec<Setting> {
     limits(&mut d);
     d.group = Group::Checks;
     checks(&mut d);
+    d.group = Group::Cueing;
+    cueing(&mut d);
     d.list
 }
 
@@ -475,5 +480,166 @@ fn checks(d: &mut Declare) {
         (2.0, 1000.0),
         Value(seed.condition_max),
         c(ConditionMax),
+    );
+}
+
+fn cueing(d: &mut Declare) {
+    use CueingKey::*;
+    let c = CueingSettings::default();
+    let k = |key| Target::Cueing(key);
+    let on = |b: bool| Value(f64::from(u8::from(b)));
+    let scale = (0.0, 2.0);
+    let omega = (0.05, 20.0);
+    let zeta = (0.1, 2.0);
+    let numbers = [
+        (
+            "translation_scale",
+            "translation scale",
+            Ratio,
+            scale,
+            c.translation_scale,
+            TranslationScale,
+        ),
+        (
+            "translation_hp_wn",
+            "translation high-pass ω",
+            RadianPerSecond,
+            omega,
+            c.translation_hp_wn,
+            TranslationHpWn,
+        ),
+        (
+            "translation_hp_zeta",
+            "translation high-pass ζ",
+            Ratio,
+            zeta,
+            c.translation_hp_zeta,
+            TranslationHpZeta,
+        ),
+        (
+            "translation_hp_wb",
+            "return to neutral ω_b",
+            RadianPerSecond,
+            (0.0, 5.0),
+            c.translation_hp_wb,
+            TranslationHpWb,
+        ),
+    ];
+    for (key, label, unit, range, default, target) in numbers {
+        d.add(
+            format!("cueing.{key}"),
+            label,
+            unit,
+            range,
+            Value(default),
+            k(target),
+        );
+    }
+    d.add(
+        "cueing.tilt",
+        "tilt coordination",
+        Switch,
+        (0.0, 1.0),
+        on(c.tilt),
+        k(Tilt),
+    );
+    let numbers = [
+        (
+            "tilt_lp_wn",
+            "tilt low-pass ω",
+            RadianPerSecond,
+            omega,
+            c.tilt_lp_wn,
+            TiltLpWn,
+        ),
+        (
+            "tilt_lp_zeta",
+            "tilt low-pass ζ",
+            Ratio,
+            zeta,
+            c.tilt_lp_zeta,
+            TiltLpZeta,
+        ),
+        (
+            "tilt_rate_max_deg_s",
+            "max tilt rate",
+            DegreePerSecond,
+            (0.5, 30.0),
+            c.tilt_rate_max_deg_s,
+            TiltRateMax,
+        ),
+        (
+            "rotation_scale",
+            "rotation scale",
+            Ratio,
+            scale,
+            c.rotation_scale,
+            RotationScale,
+        ),
+        (
+            "rotation_hp_wn",
+            "rotation high-pass ω",
+            RadianPerSecond,
+            omega,
+            c.rotation_hp_wn,
+            RotationHpWn,
+        ),
+        (
+            "rotation_hp_zeta",
+            "rotation high-pass ζ",
+            Ratio,
+            zeta,
+            c.rotation_hp_zeta,
+            RotationHpZeta,
+        ),
+    ];
+    for (key, label, unit, range, default, target) in numbers {
+        d.add(
+            format!("cueing.{key}"),
+            label,
+            unit,
+            range,
+            Value(default),
+            k(target),
+        );
+    }
+    for (i, axis) in AXES.iter().enumerate() {
+        let label = format!("cue {axis}");
+        d.add(
+            format!("cueing.{axis}"),
+            label,
+            Switch,
+            (0.0, 1.0),
+            on(c.axes()[i]),
+            k(Axis(i)),
+        );
+    }
+    for (i, axis) in ["x", "y", "z"].iter().enumerate() {
+        let label = format!("reference {axis}");
+        let default = Value(c.reference_m[i]);
+        d.add(
+            format!("cueing.reference_m[{i}]"),
+            label,
+            Metre,
+            (-1.0, 1.0),
+            default,
+            k(Reference(i)),
+        );
+    }
+    d.add(
+        "cueing.workspace_limiter",
+        "workspace limiter",
+        Switch,
+        (0.0, 1.0),
+        on(c.workspace_limiter),
+        k(Limiter),
+    );
+    d.add(
+        "cueing.limiter_recovery_s",
+        "limiter recovery",
+        Second,
+        (0.1, 10.0),
+        Value(c.limiter_recovery_s),
+        k(LimiterRecovery),
     );
 }

@@ -9,6 +9,7 @@
 
 mod actuator_kind;
 mod catalogue;
+mod cueing;
 mod kinds;
 mod target;
 
@@ -19,6 +20,7 @@ use thiserror::Error;
 
 use crate::scenario::Scenario;
 pub use actuator_kind::{SwitchError, switch_actuator};
+pub use cueing::{AXES, CueingKey};
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
     ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,
@@ -52,6 +54,10 @@ pub enum Unit {
     Count,
     /// A pure number (ratios, condition numbers).
     Ratio,
+    /// Radians per second (filter frequencies).
+    RadianPerSecond,
+    /// A switch: 1 on (`true`), 0 off (`false`).
+    Switch,
 }
 
 impl Unit {
@@ -68,7 +74,8 @@ impl Unit {
             Unit::DegreePerSecondSquared => "°/s²",
             Unit::MetrePerSecondCubed => "m/s³",
             Unit::DegreePerSecondCubed => "°/s³",
-            Unit::Count | Unit::Ratio => "",
+            Unit::RadianPerSecond => "rad/s",
+            Unit::Count | Unit::Ratio | Unit::Switch => "",
         }
     }
 
@@ -90,6 +97,8 @@ impl Unit {
             Unit::DegreePerSecondCubed => symmetric(bounds::ANGULAR_JERK_DEG_S3),
             Unit::Count => 2.0..=crate::trajectory::MAX_SAMPLES as f64,
             Unit::Ratio => symmetric(bounds::RATIO),
+            Unit::RadianPerSecond => symmetric(crate::cueing_settings::MAX_OMEGA),
+            Unit::Switch => 0.0..=1.0,
         }
     }
 }
@@ -149,6 +158,8 @@ pub enum Group {
     Limits,
     /// `[checks]`.
     Checks,
+    /// `[cueing]`.
+    Cueing,
 }
 
 /// Why a setting could not be read or written.
@@ -312,6 +323,11 @@ impl Setting {
             Some(v) if !v.is_finite() => {
                 return Err(invalid("it must be a finite number".to_owned()));
             }
+            Some(v) if self.unit == Unit::Switch && v != 0.0 && v != 1.0 => {
+                return Err(invalid(format!(
+                    "it is a switch: true (1) or false (0), got {v}"
+                )));
+            }
             Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
                 return Err(invalid(format!(
                     "it must be a whole number from {}",
@@ -351,7 +367,8 @@ pub fn of(target: Target) -> &'static Setting {
         .unwrap_or_else(|| unreachable!("the catalogue declares every target ({target:?})"))
 }
 
-/// Parse `KEY=VALUE` (a number, or `off` for optional settings).
+/// Parse `KEY=VALUE` (a number, or `off` for optional settings; a switch also takes
+/// `true`, `false`, `on` and `off`).
 pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), SettingError> {
     let syntax = || SettingError::Syntax {
         text: text.to_owned(),
@@ -359,7 +376,16 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
     let (key, value) = text.split_once('=').ok_or_else(syntax)?;
     let setting = find(key.trim())?;
     let value = value.trim();
-    let value = if value.eq_ignore_ascii_case("off") {
+    let word = value.to_ascii_lowercase();
+    let value = if setting.unit == Unit::Switch
+        && ["true", "on", "false", "off"].contains(&word.as_str())
+    {
+        Some(if word == "true" || word == "on" {
+            1.0
+        } else {
+            0.0
+        })
+    } else if value.eq_ignore_ascii_case("off") {
         None
     } else {
         Some(value.parse::<f64>().map_err(|_| syntax())?)

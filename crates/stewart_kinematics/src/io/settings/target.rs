@@ -1,5 +1,6 @@
 //! What each setting reads and writes in a [`Scenario`].
 
+use super::cueing::CueingKey;
 use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::geometry::{Geometry, Plate, PlateJoints};
@@ -147,6 +148,8 @@ pub enum Target {
     Limit(LimitKey),
     /// A check threshold.
     Check(CheckKey),
+    /// A number or switch of `[cueing]`.
+    Cueing(CueingKey),
 }
 
 impl Target {
@@ -270,6 +273,7 @@ impl Target {
                     CheckKey::ConditionMax => c.condition_max,
                 })
             }
+            Target::Cueing(key) => super::cueing::get(&scenario.cueing, key),
         }
     }
 
@@ -308,6 +312,7 @@ impl Target {
                 } = v;
                 Ok(())
             }
+            Target::Cueing(key) => super::cueing::set(&mut scenario.cueing, key, v),
         }
     }
 }

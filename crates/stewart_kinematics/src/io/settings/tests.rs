@@ -519,3 +519,34 @@ fn the_quantity_limits_are_the_stroke_or_the_servo_range() {
         ["actuator.servo_min_deg", "actuator.servo_max_deg"]
     );
 }
+
+#[test]
+fn cueing_settings_take_numbers_and_switches_and_refuse_what_cannot_work() {
+    let mut s = Scenario::seed();
+    apply_all(
+        &mut s,
+        [
+            "cueing.tilt=false",
+            "cueing.yaw=off",
+            "cueing.workspace_limiter=true",
+            "cueing.translation_hp_wn=3.5",
+            "cueing.reference_m[2]=0.4",
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let c = &s.cueing;
+    assert!(!c.tilt && !c.yaw && c.pitch && c.workspace_limiter);
+    assert_eq!((c.translation_hp_wn, c.reference_m[2]), (3.5, 0.4));
+    assert_eq!(find("cueing.tilt").map(|t| t.get(&s)), Ok(Some(0.0)));
+    assert_eq!(find("cueing.pitch").map(|t| t.get(&s)), Ok(Some(1.0)));
+    let refused = |text: &str| {
+        let mut t = s.clone();
+        let e = apply_all(&mut t, [text]).err();
+        assert_eq!(t, s, "{text} changed the scenario");
+        e.map(|e| e.to_string()).unwrap_or_default()
+    };
+    assert!(refused("cueing.tilt=2").contains("switch"));
+    assert!(refused("cueing.tilt_lp_wn=-1").contains("must be a positive number"));
+    assert!(refused("cueing.translation_scale=off").contains("cannot be switched off"));
+    assert!(refused("cueing.washout=1").contains("unknown setting"));
+}

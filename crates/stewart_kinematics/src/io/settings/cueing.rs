@@ -1,0 +1,103 @@
+//! The `[cueing]` table's settings: each number (and each switch, as 0 or 1) read and
+//! written by key, a written value checked as the file reader checks it.
+
+use crate::cueing_settings::CueingSettings;
+
+/// A number or switch of `[cueing]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CueingKey {
+    /// `translation_scale`.
+    TranslationScale,
+    /// `translation_hp_wn`.
+    TranslationHpWn,
+    /// `translation_hp_zeta`.
+    TranslationHpZeta,
+    /// `translation_hp_wb`.
+    TranslationHpWb,
+    /// `tilt` (a switch).
+    Tilt,
+    /// `tilt_lp_wn`.
+    TiltLpWn,
+    /// `tilt_lp_zeta`.
+    TiltLpZeta,
+    /// `tilt_rate_max_deg_s`.
+    TiltRateMax,
+    /// `rotation_scale`.
+    RotationScale,
+    /// `rotation_hp_wn`.
+    RotationHpWn,
+    /// `rotation_hp_zeta`.
+    RotationHpZeta,
+    /// Axis `i` (surge, sway, heave, roll, pitch, yaw) cued or not (a switch).
+    Axis(usize),
+    /// Component `i` (x, y, z) of the reference point.
+    Reference(usize),
+    /// `workspace_limiter` (a switch).
+    Limiter,
+    /// `limiter_recovery_s`.
+    LimiterRecovery,
+}
+
+/// The axes' keys in the file, x to yaw.
+pub const AXES: [&str; 6] = ["surge", "sway", "heave", "roll", "pitch", "yaw"];
+
+/// A field of the table: a number, or a switch.
+enum Field<'a> {
+    Number(&'a mut f64),
+    Switch(&'a mut bool),
+}
+
+fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
+    use CueingKey::*;
+    use Field::{Number, Switch};
+    Some(match key {
+        TranslationScale => Number(&mut c.translation_scale),
+        TranslationHpWn => Number(&mut c.translation_hp_wn),
+        TranslationHpZeta => Number(&mut c.translation_hp_zeta),
+        TranslationHpWb => Number(&mut c.translation_hp_wb),
+        Tilt => Switch(&mut c.tilt),
+        TiltLpWn => Number(&mut c.tilt_lp_wn),
+        TiltLpZeta => Number(&mut c.tilt_lp_zeta),
+        TiltRateMax => Number(&mut c.tilt_rate_max_deg_s),
+        RotationScale => Number(&mut c.rotation_scale),
+        RotationHpWn => Number(&mut c.rotation_hp_wn),
+        RotationHpZeta => Number(&mut c.rotation_hp_zeta),
+        Axis(i) => Switch(match i {
+            0 => &mut c.surge,
+            1 => &mut c.sway,
+            2 => &mut c.heave,
+            3 => &mut c.roll,
+            4 => &mut c.pitch,
+            5 => &mut c.yaw,
+            _ => return None,
+        }),
+        Reference(i) => Number(c.reference_m.get_mut(i)?),
+        Limiter => Switch(&mut c.workspace_limiter),
+        LimiterRecovery => Number(&mut c.limiter_recovery_s),
+    })
+}
+
+/// The value of `key` (a switch as 1 or 0).
+pub(super) fn get(c: &CueingSettings, key: CueingKey) -> Option<f64> {
+    let mut copy = c.clone();
+    Some(match field(&mut copy, key)? {
+        Field::Number(v) => *v,
+        Field::Switch(b) => f64::from(u8::from(*b)),
+    })
+}
+
+/// Write `v` at `key` (a switch takes 1 or 0), refused with the reason when the table
+/// would not work (left unchanged then).
+pub(super) fn set(c: &mut CueingSettings, key: CueingKey, v: f64) -> Result<(), String> {
+    let mut edited = c.clone();
+    match field(&mut edited, key) {
+        Some(Field::Number(x)) => *x = v,
+        Some(Field::Switch(b)) => *b = v != 0.0,
+        None => return Err("no such item".to_owned()),
+    }
+    if let Some(p) = edited.problem() {
+        return Err(p.reason);
+    }
+    *c = edited;
+    Ok(())
+}
