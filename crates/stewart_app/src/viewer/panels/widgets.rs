@@ -19,9 +19,10 @@ pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
 /// What lies out of reach (reach bars, the roll–pitch map).
 pub const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 
-/// A slider for the setting of `target`, labelled with its unit; optional settings get a
-/// checkbox that switches them on (at their slider's start) and off. Right-click resets
-/// to the default. Edits go through the setting's validation.
+/// A slider for the setting of `target`, labelled with its unit (a switch is a
+/// checkbox); optional settings get a checkbox that switches them on (at their slider's
+/// start) and off. Right-click resets to the default. Edits go through the setting's
+/// validation.
 pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
     let setting = settings::of(target);
     let scenario = ed.scenario();
@@ -29,6 +30,18 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
         return;
     }
     let current = setting.get(scenario);
+    if setting.unit == Unit::Switch {
+        let mut on = current.is_some_and(|v| v != 0.0);
+        let t = ed.lang;
+        if ui
+            .checkbox(&mut on, setting_label(t, setting))
+            .on_hover_text(slider_tip(t, setting, scenario))
+            .changed()
+        {
+            ed.apply(setting, Some(f64::from(u8::from(on))));
+        }
+        return;
+    }
     let t = ed.lang;
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
