@@ -15,6 +15,8 @@
 //!   measured side by side, latency, unanswered and stale counts);
 //! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches;
 //! - [`transport`]: UDP, or a dry-run record of what would be sent.
+//! - [`vehicle`]: vehicle motion coming in for motion cueing (a generic text or `f32`
+//!   datagram, or X-Plane's `DATA`).
 //!
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.
@@ -28,5 +30,6 @@ pub mod sender;
 pub mod telemetry;
 pub mod text;
 pub mod transport;
+pub mod vehicle;
 
 pub use frame::{DecodeError, Decoder, Flags, Frame, FrameKind, Unit};
