@@ -146,7 +146,7 @@ fn checked(values: [f64; 7]) -> Result<VehicleSample, VehicleError> {
 fn xplane(bytes: &[u8]) -> Result<VehicleSample, VehicleError> {
     const HEADER: usize = 5;
     const RECORD: usize = 36;
-    if bytes.len() < HEADER || (bytes.len() - HEADER) % RECORD != 0 {
+    if bytes.len() < HEADER || !(bytes.len() - HEADER).is_multiple_of(RECORD) {
         return Err(VehicleError::XPlaneLength(bytes.len()));
     }
     let mut g_loads = None;
