@@ -191,3 +191,104 @@ fn bad_vehicle_motion_is_one_located_error_and_writes_nothing() {
     );
     assert!(e.contains("cueing.tilt_lp_wn"), "{e}");
 }
+
+#[test]
+fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
+    use std::net::UdpSocket;
+    use std::time::{Duration, Instant};
+    let dir = tempdir();
+    let recording = braking(3.0);
+    let vehicle = write(dir.path(), "vehicle.csv", &recording);
+    // What `stewart cue` makes of the recording, as leg lengths in micrometres.
+    let poses = stewart(&["cue", "--preset", "seed", "--input", &vehicle]);
+    assert_eq!(poses.status.code(), Some(0), "{}", stderr(&poses));
+    let solved = crate::stewart_with_input(
+        &["solve", "--preset", "seed", "--poses", "-"],
+        &poses.stdout,
+    );
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let l1 = header.iter().position(|c| c == "L1").unwrap_or(7);
+    let expected: Vec<[f64; 6]> = rows
+        .iter()
+        .map(|r| std::array::from_fn(|i| (r[l1 + i] * 1e6).round()))
+        .collect();
+    assert_eq!(expected.len(), 301);
+    // The device checks the seed's stroke (0.55 … 1.30 m) on every frame.
+    let device = crate::link::free_port();
+    let sim = crate::link::device_sim(&device, &["--min", "550000", "--max", "1300000"]);
+    let input = crate::link::free_port();
+    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "link",
+            "--preset",
+            "seed",
+            "--transport",
+            "udp",
+            "--address",
+            &device,
+        ])
+        .args(["--cue", &format!("udp:{input}")])
+        .args(["--rate", "100", "--ramp", "0.2", "--duration", "5"])
+        // A loaded machine may pause the sender: only a silence of 3 s is a stall here
+        // (the stall and fade are tested on their own, with the defaults).
+        .args(["--set", "cueing.stall_s=3"])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(500));
+    // The sender plays the recording in real time, one datagram per line, and two that
+    // are not samples.
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let start = Instant::now();
+    for (k, line) in recording.lines().skip(1).enumerate() {
+        let due = Duration::from_millis(10 * k as u64);
+        if let Some(wait) = due.checked_sub(start.elapsed()) {
+            std::thread::sleep(wait);
+        }
+        socket
+            .send_to(line.as_bytes(), &input)
+            .unwrap_or_else(|e| panic!("{e}"));
+        if k == 100 {
+            socket
+                .send_to(b"not a sample", &input)
+                .unwrap_or_else(|e| panic!("{e}"));
+            socket
+                .send_to(&[0xff; 13], &input)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("cue: 301 samples in, 2 malformed or out of order dropped"),
+        "{}",
+        stderr(&o)
+    );
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+    // Every frame arrived, none outside the stroke.
+    assert_eq!(sim.status.code(), Some(0), "{log}");
+    assert!(log.contains(" 0 values outside"), "{log}");
+    let (_, frames) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+    // Each frame is the legs of one of `stewart cue`'s poses (the newest sample when it
+    // was sent), in order, until the last sample's pose has gone out.
+    let mut at = 0;
+    let mut compared = 0;
+    for f in &frames {
+        if at == expected.len() - 1 {
+            break;
+        }
+        let same = |e: &[f64; 6]| (0..6).all(|i| (f[6 + i] - e[i]).abs() <= 1.0);
+        let Some(j) = (at..expected.len()).find(|&j| same(&expected[j])) else {
+            panic!("frame {f:?} is none of the cue's poses from sample {at} on");
+        };
+        at = j;
+        compared += 1;
+    }
+    assert_eq!(
+        at,
+        expected.len() - 1,
+        "the last sample's pose never went out"
+    );
+    assert!(compared > 250, "only {compared} frames compared");
+}

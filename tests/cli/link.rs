@@ -277,13 +277,13 @@ pub fn frames_sent(o: &std::process::Output) -> usize {
 }
 
 /// A free loopback port (bound and released; the device simulator binds it next).
-fn free_port() -> String {
+pub fn free_port() -> String {
     let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
     s.local_addr().unwrap_or_else(|e| panic!("{e}")).to_string()
 }
 
 /// `stewart device-sim` on UDP `address` in the background, with `extra` options.
-fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
+pub fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
     device_sim_on(&["--udp", address], extra)
 }
 

@@ -192,6 +192,12 @@ pub struct LinkArgs {
     /// sequence, six commanded and six measured values, round-trip latency).
     #[arg(long, value_name = "FILE.csv")]
     pub record: Option<PathBuf>,
+    /// Follow live vehicle motion instead of the trajectory: UDP datagrams at this address
+    /// (`udp:HOST:PORT`; generic text `t,ax,ay,az,wx,wy,wz`, seven little-endian f32, or
+    /// X-Plane DATA) through the scenario's `[cueing]` washout, until Ctrl-C or
+    /// `--duration`.
+    #[arg(long, value_name = "udp:HOST:PORT", conflicts_with_all = ["repeat", "bench", "list_ports"])]
+    pub cue: Option<String>,
 }
 
 /// A choice of the `[link]` table spelled as in files.

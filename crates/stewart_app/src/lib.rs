@@ -9,6 +9,7 @@ pub mod hardware;
 pub mod i18n;
 pub mod interrupt;
 pub mod link_plan;
+pub mod live_cue;
 pub mod output;
 pub mod readout;
 pub mod shot_scale;

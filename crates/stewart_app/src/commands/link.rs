@@ -14,6 +14,7 @@ use stewart_link::transport::{Record, Transport, list_ports};
 
 use crate::cli::LinkArgs;
 use crate::link_plan::LinkPlan;
+use crate::live_cue::LiveCue;
 use crate::{output, source};
 
 mod record;
@@ -29,8 +30,14 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     let mut scenario = source::load(&args.scenario)?;
     scenario.link = settings(&scenario.link, args)?;
     let plan = LinkPlan::new(&scenario)?;
+    // Live vehicle motion, when asked: listening before anything is opened or sent.
+    let live = args
+        .cue
+        .as_deref()
+        .map(|source| LiveCue::bind(source, &scenario))
+        .transpose()?;
     let (transport, staged) = open_transport(&plan, args)?;
-    let stream_for = match (args.duration, args.repeat) {
+    let stream_for = match (args.duration, args.repeat || live.is_some()) {
         (Some(d), _) => Some(d),
         (None, false) => Some(plan.span.1),
         (None, true) => None,
@@ -38,8 +45,14 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     let described = transport.describe();
     let mut config = plan.sender_config(true, stream_for);
     let recorder = start_recorder(args, &plan, &mut config)?;
-    let sender = Sender::spawn(config, plan.trajectory_target(args.repeat), transport)
-        .map_err(|e| anyhow!(e))?;
+    let (target, cue_counts) = match live {
+        Some(live) => {
+            let counts = live.counts();
+            (live.into_target(&scenario), Some(counts))
+        }
+        None => (plan.trajectory_target(args.repeat), None),
+    };
+    let sender = Sender::spawn(config, target, transport).map_err(|e| anyhow!(e))?;
     let stops_seen = supervise(&sender, stream_for);
     let summary = sender.join();
     if PIPE_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
@@ -47,6 +60,9 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     }
     let s = &summary.status;
     print_summary(s, &described, scenario.link.rate_hz);
+    if let Some(counts) = cue_counts {
+        let _ = writeln!(std::io::stderr(), "link: {}", counts.words());
+    }
     if let Some(recorder) = recorder {
         let rows = recorder.finish()?;
         if rows == 0 {

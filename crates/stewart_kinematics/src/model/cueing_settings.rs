@@ -26,6 +26,8 @@
 //! reference_m = [0, 0, 0.3]   # the occupant's head in the platform frame
 //! workspace_limiter = false   # scale the cue back so that no pose leaves the limits
 //! limiter_recovery_s = 1.0    # how fast the limiter gives the full cue back
+//! stall_s = 0.5               # live input: silent this long, it has stalled
+//! fade_s = 2.0                # and the cue fades to neutral over this long
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -80,6 +82,10 @@ pub struct CueingSettings {
     pub workspace_limiter: bool,
     /// Seconds the limiter takes to give the full cue back after scaling it to nothing.
     pub limiter_recovery_s: f64,
+    /// Seconds without a sample after which a live input counts as stalled.
+    pub stall_s: f64,
+    /// Seconds a stalled cue takes to fade to neutral (and a resumed one to come back).
+    pub fade_s: f64,
 }
 
 impl Default for CueingSettings {
@@ -105,6 +111,8 @@ impl Default for CueingSettings {
             reference_m: [0.0; 3],
             workspace_limiter: false,
             limiter_recovery_s: 1.0,
+            stall_s: 0.5,
+            fade_s: 2.0,
         }
     }
 }
@@ -163,6 +171,8 @@ impl CueingSettings {
             ("rotation_hp_zeta", self.rotation_hp_zeta, MAX_ZETA),
             ("tilt_rate_max_deg_s", self.tilt_rate_max_deg_s, 360.0),
             ("limiter_recovery_s", self.limiter_recovery_s, 3600.0),
+            ("stall_s", self.stall_s, 3600.0),
+            ("fade_s", self.fade_s, 3600.0),
         ] {
             if !(v > 0.0 && v <= max) {
                 return bad(

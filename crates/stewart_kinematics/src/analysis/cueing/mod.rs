@@ -53,6 +53,8 @@ pub struct Cueing {
     limits: Limits,
     /// The reference point relative to the rotation centre, platform frame.
     arm: Vector3<f64>,
+    /// The share of the cue given (1: all; a stalled live input fades it to 0).
+    fade: f64,
 }
 
 impl Cueing {
@@ -77,6 +79,7 @@ impl Cueing {
             geometry: geometry.clone(),
             limits: *limits,
             arm: Vector3::from(settings.reference_m) - geometry.pivot(),
+            fade: 1.0,
         })
     }
 
@@ -90,15 +93,27 @@ impl Cueing {
     pub fn advance(&mut self, h: f64) -> Pose {
         self.washout.advance(h);
         let cue = self.washout.cue();
+        let fade = self.fade;
         let Some(limiter) = &mut self.limiter else {
-            return pose_at(&self.geometry, self.arm, &cue, 1.0);
+            return pose_at(&self.geometry, self.arm, &cue, fade);
         };
         let fits = |s: f64| {
-            let pose = pose_at(&self.geometry, self.arm, &cue, s);
+            let pose = pose_at(&self.geometry, self.arm, &cue, s * fade);
             self.geometry.pose_within_limits(&self.limits, &pose)
         };
         let s = limiter.scale_for(h, fits);
-        pose_at(&self.geometry, self.arm, &cue, s)
+        pose_at(&self.geometry, self.arm, &cue, s * fade)
+    }
+
+    /// Give only `fade` (0 to 1) of the cue from the next step on: a live input that
+    /// stalls is faded to neutral by lowering it.
+    pub fn set_fade(&mut self, fade: f64) {
+        self.fade = fade.clamp(0.0, 1.0);
+    }
+
+    /// The share of the cue given.
+    pub fn fade(&self) -> f64 {
+        self.fade
     }
 
     /// The washout's cue now (before the limiter).

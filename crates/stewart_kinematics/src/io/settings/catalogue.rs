@@ -642,4 +642,20 @@ fn cueing(d: &mut Declare) {
         Value(c.limiter_recovery_s),
         k(LimiterRecovery),
     );
+    d.add(
+        "cueing.stall_s",
+        "input stall time",
+        Second,
+        (0.05, 5.0),
+        Value(c.stall_s),
+        k(Stall),
+    );
+    d.add(
+        "cueing.fade_s",
+        "fade to neutral",
+        Second,
+        (0.1, 10.0),
+        Value(c.fade_s),
+        k(Fade),
+    );
 }

@@ -36,6 +36,10 @@ pub enum CueingKey {
     Limiter,
     /// `limiter_recovery_s`.
     LimiterRecovery,
+    /// `stall_s`.
+    Stall,
+    /// `fade_s`.
+    Fade,
 }
 
 /// The axes' keys in the file, x to yaw.
@@ -74,6 +78,8 @@ fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
         Reference(i) => Number(c.reference_m.get_mut(i)?),
         Limiter => Switch(&mut c.workspace_limiter),
         LimiterRecovery => Number(&mut c.limiter_recovery_s),
+        Stall => Number(&mut c.stall_s),
+        Fade => Number(&mut c.fade_s),
     })
 }
 

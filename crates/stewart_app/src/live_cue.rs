@@ -1,0 +1,275 @@
+//! Live motion cueing for the link: vehicle motion arriving as UDP datagrams (generic text
+//! or `f32`, or X-Plane `DATA`: `stewart_link::vehicle`) made into the pose the link
+//! follows, tick by tick, through the scenario's washout and limiter.
+//!
+//! Each sample steps the washout at its own time (the sender's clock; X-Plane's, which
+//! has none, at its arrival), exactly as `stewart cue` steps a recording, so a recording
+//! played live gives the poses `stewart cue` writes for it. A datagram that cannot be
+//! read, or a sample older than the last, is counted and dropped. When nothing arrives for
+//! `[cueing] stall_s`, the input is taken as a vehicle at rest and the cue fades to
+//! neutral over `fade_s`; samples that come back fade it in again.
+
+use std::net::UdpSocket;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use anyhow::{Context as _, Result, bail};
+use stewart_kinematics::cueing::{Cueing, VehicleMotion};
+use stewart_kinematics::{Pose, Scenario};
+use stewart_link::generator::Sample;
+use stewart_link::safety::TargetError;
+use stewart_link::sender::Target;
+use stewart_link::vehicle::{self, VehicleSample};
+
+/// The largest datagram read (X-Plane sends up to a few hundred bytes).
+const DATAGRAM: usize = 65_536;
+
+/// What the input brought, for the link's summary (shared with the sender's thread).
+#[derive(Debug, Default)]
+pub struct CueCounts {
+    /// Samples used.
+    pub received: AtomicU64,
+    /// Datagrams that could not be read, or came out of order.
+    pub malformed: AtomicU64,
+    /// Times the input stalled.
+    pub stalls: AtomicU64,
+}
+
+impl CueCounts {
+    /// One line for the link's summary.
+    pub fn words(&self) -> String {
+        format!(
+            "cue: {} samples in, {} malformed or out of order dropped, {} stalls",
+            self.received.load(Ordering::Relaxed),
+            self.malformed.load(Ordering::Relaxed),
+            self.stalls.load(Ordering::Relaxed)
+        )
+    }
+}
+
+/// The live input and the cueing it feeds.
+pub struct LiveCue {
+    socket: UdpSocket,
+    cueing: Cueing,
+    counts: Arc<CueCounts>,
+    /// The last sample's time (its clock), `None` before the first and after a stall.
+    last_sample: Option<f64>,
+    /// Stream time of the last sample used.
+    last_arrival: Option<f64>,
+    /// Stream time of the last tick.
+    last_tick: Option<f64>,
+    stalled: bool,
+    pose: Pose,
+    buffer: Vec<u8>,
+    /// `stall_s` and `fade_s`.
+    stall_s: f64,
+    fade_s: f64,
+}
+
+impl LiveCue {
+    /// Listen at `source` (`udp:HOST:PORT`) for vehicle motion, cued by `scenario`'s
+    /// `[cueing]` table within its limits.
+    pub fn bind(source: &str, scenario: &Scenario) -> Result<Self> {
+        let Some(address) = source.strip_prefix("udp:") else {
+            bail!("--cue takes udp:HOST:PORT (such as udp:0.0.0.0:4123), got `{source}`");
+        };
+        let cueing = Cueing::new(&scenario.geometry, &scenario.limits, &scenario.cueing)
+            .map_err(|e| anyhow::anyhow!("scenario `{}`: {e}", scenario.name))?;
+        let socket =
+            UdpSocket::bind(address).with_context(|| format!("cannot listen at `{address}`"))?;
+        socket
+            .set_nonblocking(true)
+            .context("cannot make the cue socket non-blocking")?;
+        Ok(Self {
+            socket,
+            cueing,
+            counts: Arc::default(),
+            last_sample: None,
+            last_arrival: None,
+            last_tick: None,
+            stalled: false,
+            pose: scenario.geometry.home_pose(),
+            buffer: vec![0; DATAGRAM],
+            stall_s: scenario.cueing.stall_s,
+            fade_s: scenario.cueing.fade_s,
+        })
+    }
+
+    /// Where it listens.
+    pub fn local_addr(&self) -> Result<std::net::SocketAddr> {
+        Ok(self.socket.local_addr()?)
+    }
+
+    /// The counts, shared.
+    pub fn counts(&self) -> Arc<CueCounts> {
+        Arc::clone(&self.counts)
+    }
+
+    /// The pose to follow at stream time `t`: every datagram waiting is read and its
+    /// sample steps the washout; a stalled input fades the cue.
+    pub fn tick(&mut self, t: f64) -> Pose {
+        let dt = self.last_tick.map_or(0.0, |last| (t - last).max(0.0));
+        self.last_tick = Some(t);
+        loop {
+            match self.socket.recv(&mut self.buffer) {
+                Ok(n) => match vehicle::decode(&self.buffer[..n]) {
+                    Ok(sample) => self.take(sample, t),
+                    Err(_) => {
+                        self.counts.malformed.fetch_add(1, Ordering::Relaxed);
+                    }
+                },
+                // Nothing more waiting (or an ICMP error from a previous send): done.
+                Err(_) => break,
+            }
+        }
+        let quiet = self.last_arrival.is_none_or(|at| t - at > self.stall_s);
+        if quiet && self.last_arrival.is_some() {
+            self.stall(dt);
+        } else if !quiet && self.cueing.fade() < 1.0 {
+            self.cueing.set_fade(self.cueing.fade() + dt / self.fade_s);
+        }
+        self.pose
+    }
+
+    /// Step the washout to `sample`'s time and hold its motion.
+    fn take(&mut self, sample: VehicleSample, now: f64) {
+        let time = sample.t.unwrap_or(now);
+        let h = match self.last_sample {
+            Some(last) if time > last => time - last,
+            // X-Plane's samples read in one tick share its time: the newest holds.
+            Some(_) if sample.t.is_none() => 0.0,
+            Some(_) => {
+                self.counts.malformed.fetch_add(1, Ordering::Relaxed);
+                return;
+            }
+            None => 0.0,
+        };
+        self.pose = self.cueing.advance(h);
+        self.cueing.hold(&VehicleMotion {
+            accel: sample.accel,
+            rates_deg_s: sample.rates_deg_s,
+        });
+        self.last_sample = Some(time);
+        self.last_arrival = Some(now);
+        self.stalled = false;
+        self.counts.received.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// No sample for a while: a vehicle at rest, the cue fading to neutral; once there,
+    /// the washout is at rest too.
+    fn stall(&mut self, dt: f64) {
+        if !self.stalled {
+            self.stalled = true;
+            self.counts.stalls.fetch_add(1, Ordering::Relaxed);
+            self.cueing.hold(&VehicleMotion::default());
+            // The next sample starts a new stretch of the sender's clock.
+            self.last_sample = None;
+        }
+        let fade = self.cueing.fade() - dt / self.fade_s;
+        self.cueing.set_fade(fade);
+        self.pose = self.cueing.advance(dt);
+        if fade <= 0.0 {
+            self.cueing.reset();
+            self.cueing.set_fade(1.0);
+            self.pose = self.cueing.advance(0.0);
+        }
+    }
+
+    /// The link's target: the actuator values of the pose at each tick.
+    pub fn into_target(mut self, scenario: &Scenario) -> Target {
+        let geometry = scenario.geometry.clone();
+        Box::new(move |t| {
+            let pose = self.tick(t);
+            geometry
+                .actuator_values_at(&pose)
+                .map(Sample::At)
+                .map_err(TargetError::source)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_kinematics::cueing::cue_recording;
+
+    fn send(to: std::net::SocketAddr, text: &str) {
+        let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+        s.send_to(text.as_bytes(), to)
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    /// Wait until the socket has something to read (loopback delivers at once, almost).
+    fn settle() {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+
+    #[test]
+    fn live_samples_give_the_poses_of_the_recording_and_a_stall_fades_to_neutral() {
+        let scenario = Scenario::seed();
+        let mut live =
+            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
+        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let samples: Vec<(f64, VehicleMotion)> = (0..50)
+            .map(|k| {
+                let t = 10.0 + 0.02 * f64::from(k);
+                let motion = VehicleMotion {
+                    accel: [if k > 5 { -4.0 } else { 0.0 }, 1.0, 0.5],
+                    rates_deg_s: [0.0, 3.0, if k > 20 { 15.0 } else { 0.0 }],
+                };
+                (t, motion)
+            })
+            .collect();
+        let expected = cue_recording(
+            &scenario.geometry,
+            &scenario.limits,
+            &scenario.cueing,
+            &samples,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        for (k, (t, m)) in samples.iter().enumerate() {
+            let [ax, ay, az] = m.accel;
+            let [wx, wy, wz] = m.rates_deg_s;
+            send(at, &format!("{t},{ax},{ay},{az},{wx},{wy},{wz}\n"));
+            if k == 10 {
+                send(at, "garbage");
+                send(at, &format!("{},0,0,0,0,0,0", t - 1.0));
+            }
+            settle();
+            let pose = live.tick(0.02 * k as f64);
+            assert_eq!(pose, expected.poses[k], "sample {k}");
+        }
+        let counts = live.counts();
+        assert_eq!(counts.received.load(Ordering::Relaxed), 50);
+        assert_eq!(counts.malformed.load(Ordering::Relaxed), 2);
+        // Silence: after the stall time the cue fades, and within the fade it is home.
+        let home = scenario.geometry.home_pose();
+        let mut t = 1.0;
+        let mut last = live.tick(t);
+        assert_ne!(last, home);
+        let c = &scenario.cueing;
+        while t < 1.0 + c.stall_s + c.fade_s + 0.1 {
+            t += 0.01;
+            let pose = live.tick(t);
+            // No jumps on the way.
+            assert!((pose.position - last.position).norm() < 0.01);
+            last = pose;
+        }
+        assert_eq!(last, home);
+        assert_eq!(counts.stalls.load(Ordering::Relaxed), 1);
+        assert!(
+            counts
+                .words()
+                .starts_with("cue: 50 samples in, 2 malformed")
+        );
+    }
+
+    #[test]
+    fn a_source_that_is_not_udp_is_refused() {
+        let e = LiveCue::bind("tcp:1.2.3.4:5", &Scenario::seed())
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        assert!(e.contains("udp:HOST:PORT"), "{e}");
+    }
+}
