@@ -110,16 +110,13 @@ impl LiveCue {
     pub fn tick(&mut self, t: f64) -> Pose {
         let dt = self.last_tick.map_or(0.0, |last| (t - last).max(0.0));
         self.last_tick = Some(t);
-        loop {
-            match self.socket.recv(&mut self.buffer) {
-                Ok(n) => match vehicle::decode(&self.buffer[..n]) {
-                    Ok(sample) => self.take(sample, t),
-                    Err(_) => {
-                        self.counts.malformed.fetch_add(1, Ordering::Relaxed);
-                    }
-                },
-                // Nothing more waiting (or an ICMP error from a previous send): done.
-                Err(_) => break,
+        // Until nothing more is waiting (or an ICMP error from a previous send).
+        while let Ok(n) = self.socket.recv(&mut self.buffer) {
+            match vehicle::decode(&self.buffer[..n]) {
+                Ok(sample) => self.take(sample, t),
+                Err(_) => {
+                    self.counts.malformed.fetch_add(1, Ordering::Relaxed);
+                }
             }
         }
         let quiet = self.last_arrival.is_none_or(|at| t - at > self.stall_s);
