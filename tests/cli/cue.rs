@@ -292,3 +292,80 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
     );
     assert!(compared > 250, "only {compared} frames compared");
 }
+
+/// The bytes of a hex string.
+fn unhex(text: &str) -> Vec<u8> {
+    (0..text.len() / 2)
+        .map(|i| u8::from_str_radix(&text[2 * i..2 * i + 2], 16).unwrap_or_else(|e| panic!("{e}")))
+        .collect()
+}
+
+#[test]
+fn an_x_plane_recording_drives_the_link() {
+    use std::net::UdpSocket;
+    use std::time::{Duration, Instant};
+    // A take-off in X-Plane's DATA form (scripts/xplane-sample.py), played in real time.
+    let recording = include_str!("xplane_takeoff.txt");
+    let input = crate::link::free_port();
+    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "link",
+            "--preset",
+            "seed",
+            "--dry-run",
+            "--cue",
+            &format!("udp:{input}"),
+        ])
+        .args([
+            "--rate",
+            "50",
+            "--ramp",
+            "0.2",
+            "--duration",
+            "9",
+            "--set",
+            "cueing.stall_s=3",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(500));
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let start = Instant::now();
+    let mut sent = 0;
+    for line in recording.lines() {
+        let (t, hex) = line.split_once(' ').unwrap_or_else(|| panic!("{line}"));
+        let due = Duration::from_secs_f64(t.parse().unwrap_or_else(|e| panic!("{e}")));
+        if due > Duration::from_secs(8) {
+            break;
+        }
+        if let Some(wait) = due.checked_sub(start.elapsed()) {
+            std::thread::sleep(wait);
+        }
+        socket
+            .send_to(&unhex(hex), &input)
+            .unwrap_or_else(|e| panic!("{e}"));
+        sent += 1;
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let said = stderr(&o);
+    assert!(
+        said.contains(&format!("cue: {sent} samples in, 0 malformed")),
+        "{sent} sent: {said}"
+    );
+    // The take-off roll moved the platform: the frames' values left home.
+    let printed = stdout(&o);
+    let frames: Vec<&str> = printed
+        .lines()
+        .map(|l| l.split_once(' ').map_or(l, |p| p.1))
+        .collect();
+    let distinct: std::collections::BTreeSet<&str> = frames.iter().copied().collect();
+    assert!(
+        frames.len() > 300 && distinct.len() > 100,
+        "{} frames, {} distinct",
+        frames.len(),
+        distinct.len()
+    );
+}
