@@ -155,6 +155,9 @@ pub struct CuedRecording {
     pub poses: Vec<Pose>,
     /// The limiter's scale at each sample (all 1 without the limiter).
     pub scales: Vec<f64>,
+    /// The washout's cue at each sample (before the limiter): its translation,
+    /// acceleration, angles, tilt and the specific force it makes felt.
+    pub cues: Vec<Cue>,
 }
 
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at
@@ -168,6 +171,7 @@ pub fn cue_recording(
     let mut cueing = Cueing::new(geometry, limits, settings)?;
     let mut poses = Vec::with_capacity(samples.len());
     let mut scales = Vec::with_capacity(samples.len());
+    let mut cues = Vec::with_capacity(samples.len());
     let mut previous: Option<f64> = None;
     for (index, (t, motion)) in samples.iter().enumerate() {
         let h = match previous {
@@ -183,10 +187,15 @@ pub fn cue_recording(
         };
         poses.push(cueing.advance(h));
         scales.push(cueing.scale());
+        cues.push(cueing.cue());
         cueing.hold(motion);
         previous = Some(*t);
     }
-    Ok(CuedRecording { poses, scales })
+    Ok(CuedRecording {
+        poses,
+        scales,
+        cues,
+    })
 }
 
 #[cfg(test)]

@@ -160,6 +160,15 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         "{} vs {expected}",
         pitch[3000]
     );
+    // What the occupant feels once the translation has washed out: the force itself,
+    // rendered by the tilt alone.
+    let mut steady = Washout::new(&settings);
+    steady.hold(&step);
+    for _ in 0..3000 {
+        steady.advance(h);
+    }
+    let felt = steady.cue().specific_force();
+    assert!((felt[0] - force).abs() < 1e-9 && felt[1].abs() < 1e-12, "{felt:?}");
     let gravity_in_platform = last.rotation().transpose() * Vector3::new(0.0, 0.0, -9.80665);
     assert!((gravity_in_platform.x + force).abs() < 1e-9);
     // Lateral force to the left: the platform rolls so that gravity pushes to the right.

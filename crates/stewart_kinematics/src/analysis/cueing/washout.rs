@@ -45,6 +45,20 @@ pub struct Cue {
     pub tilt: [f64; 2],
 }
 
+impl Cue {
+    /// The specific force the occupant feels on the platform, in the platform's axes,
+    /// m/s², less the 1 g of standing still: `Rᵀ (a + g ẑ) − g ẑ` with `a` the cue's
+    /// translational acceleration and `R` its rotation. Sustained force rendered by tilt
+    /// shows here as gravity's share along the tilted platform.
+    pub fn specific_force(&self) -> [f64; 3] {
+        let [roll, pitch, yaw] = self.angles.map(crate::angle::Angle::from_radians);
+        let r = crate::pose::rotation_zyx(roll, pitch, yaw);
+        let up = nalgebra::Vector3::new(0.0, 0.0, GRAVITY);
+        let f = r.transpose() * (nalgebra::Vector3::from(self.acceleration) + up) - up;
+        [f.x, f.y, f.z]
+    }
+}
+
 /// The washout's filters and their state.
 #[derive(Clone, Debug)]
 pub struct Washout {
