@@ -129,7 +129,7 @@ fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
 
 /// A file dropped on the window, as egui-winit hands it over.
 #[derive(Debug)]
-struct Dropped(std::path::PathBuf);
+pub(crate) struct Dropped(std::path::PathBuf);
 
 impl egui::DroppedFile for Dropped {
     fn path(&self) -> &std::path::Path {
@@ -141,7 +141,7 @@ impl egui::DroppedFile for Dropped {
     }
 }
 
-fn drop_file(
+pub(crate) fn drop_file(
     h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>,
     path: &std::path::Path,
 ) {

@@ -262,3 +262,77 @@ fn a_link_edit_is_undone_like_any_other() {
     assert!(state.undo_edit());
     assert_eq!(state.scenario().link, before);
 }
+
+#[test]
+fn live_vehicle_motion_is_a_source_the_link_follows_and_the_cueing_panel_plots() {
+    let mut h = tall_harness("seed", 2400.0);
+    h.state_mut().edit_link(|l| l.ramp_s = 0.1);
+    h.get_by_label("Link to hardware").click();
+    h.run();
+    h.get_by_label("Live vehicle motion").click();
+    h.run();
+    // The address to listen at, editable; a free port for the test.
+    let port = std::net::UdpSocket::bind("127.0.0.1:0")
+        .and_then(|s| s.local_addr())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(h.query_by_label("Listen at").is_some());
+    h.state_mut().link.cue_input = Some(port.to_string());
+    h.get_by_label("Connect").click();
+    until(&mut h, LinkState::Disarmed);
+    h.get_by_label("ARM").click();
+    until(&mut h, LinkState::Armed);
+    // A vehicle braking hard, then two datagrams that are not samples.
+    let sender = std::net::UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    for k in 0..60 {
+        let t = f64::from(k) * 0.02;
+        let line = format!("{t},-6,0,0,0,0,10");
+        sender
+            .send_to(line.as_bytes(), port)
+            .unwrap_or_else(|e| panic!("{e}"));
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    sender
+        .send_to(b"hello", port)
+        .unwrap_or_else(|e| panic!("{e}"));
+    sender
+        .send_to(b"1,2,3", port)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let started = Instant::now();
+    while h.state().link.cue().map(|c| c.numbers()) != Some([60, 2, 0]) {
+        h.run();
+        assert!(
+            started.elapsed() < Duration::from_secs(15),
+            "{:?}",
+            h.state().link.cue().map(|c| c.numbers())
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    h.run();
+    assert!(
+        h.query_by_label("Live input: 60 samples, 2 dropped, 0 stalls")
+            .is_some()
+    );
+    // The platform moved off home: braking surges it back.
+    let values = h.state().link.sender_status().map(|s| s.values);
+    let home = h
+        .state()
+        .scenario()
+        .geometry
+        .leg_lengths(&h.state().scenario().geometry.home_pose());
+    assert!(values.is_some_and(|v| v != home), "{values:?}");
+    // The Cueing panel plots the live input.
+    h.get_by_label("Motion cueing").click();
+    h.run();
+    assert!(
+        h.query_by_label_contains("Live vehicle motion from the link")
+            .is_some()
+    );
+    crate::look(&mut h, "cueing-live.png");
+    h.get_by_label("Disconnect").click();
+    let started = Instant::now();
+    while h.state().link.connected() {
+        h.run();
+        assert!(started.elapsed() < Duration::from_secs(30));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}

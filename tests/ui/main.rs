@@ -2,6 +2,7 @@
 //! test changes something as a user would and checks the state it edits.
 
 mod chinese;
+mod cueing;
 mod design;
 mod export;
 mod files;

@@ -14,4 +14,5 @@ pub mod output;
 pub mod readout;
 pub mod shot_scale;
 pub mod source;
+pub mod vehicle_table;
 pub mod viewer;

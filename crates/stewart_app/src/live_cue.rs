@@ -24,7 +24,25 @@ use stewart_link::vehicle::{self, VehicleSample};
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
 
-/// What the input brought, for the link's summary (shared with the sender's thread).
+/// Seconds of the trace kept for the viewer's live plots.
+pub const TRACE_S: f64 = 10.0;
+
+/// One sample of the trace: stream time, the vehicle's specific force (m/s²), the one the
+/// platform makes felt, and the tilt of roll and pitch (degrees).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TracePoint {
+    /// Stream time, seconds.
+    pub t: f64,
+    /// The vehicle's specific force, x, y, z.
+    pub vehicle: [f64; 3],
+    /// The specific force the platform makes felt, x, y, z.
+    pub platform: [f64; 3],
+    /// Roll and pitch tilt, degrees.
+    pub tilt_deg: [f64; 2],
+}
+
+/// What the input brought, for the link's summary and the viewer (shared with the
+/// sender's thread).
 #[derive(Debug, Default)]
 pub struct CueCounts {
     /// Samples used.
@@ -33,9 +51,16 @@ pub struct CueCounts {
     pub malformed: AtomicU64,
     /// Times the input stalled.
     pub stalls: AtomicU64,
+    /// The last [`TRACE_S`] of samples, oldest first.
+    pub trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
 }
 
 impl CueCounts {
+    /// Samples used, dropped, and stalls so far.
+    pub fn numbers(&self) -> [u64; 3] {
+        [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
+    }
+
     /// One line for the link's summary.
     pub fn words(&self) -> String {
         format!(
@@ -146,6 +171,22 @@ impl LiveCue {
             accel: sample.accel,
             rates_deg_s: sample.rates_deg_s,
         });
+        let cue = self.cueing.cue();
+        let mut trace = self
+            .counts
+            .trace
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        trace.push_back(TracePoint {
+            t: now,
+            vehicle: sample.accel,
+            platform: cue.specific_force(),
+            tilt_deg: cue.tilt.map(f64::to_degrees),
+        });
+        while trace.front().is_some_and(|p| now - p.t > TRACE_S) {
+            trace.pop_front();
+        }
+        drop(trace);
         self.last_sample = Some(time);
         self.last_arrival = Some(now);
         self.stalled = false;

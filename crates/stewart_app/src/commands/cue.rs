@@ -6,18 +6,13 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
-use stewart_kinematics::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, symmetric};
 use stewart_kinematics::cueing::{CueError, VehicleMotion, cue_recording};
-use stewart_kinematics::table::NumericTable;
 
 use crate::cli::CueArgs;
 use crate::csv_io::{CsvText, read_input};
 use crate::output;
 use crate::source;
-
-/// The vehicle motion's columns: time (s), specific force along the vehicle's x, y, z
-/// (m/s², gravity excluded), rotation rates about them (°/s).
-pub const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
+use crate::vehicle_table::{self, VehicleTable};
 
 /// The pose table's columns.
 const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -28,29 +23,9 @@ pub fn run(args: &CueArgs) -> Result<ExitCode> {
     inputs.push(("the vehicle motion", &args.input));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
-    let (table, file) = read_input(&args.input, |r, name| {
-        Ok((
-            NumericTable::read(r, name, &VEHICLE_COLUMNS, &[])?,
-            name.to_owned(),
-        ))
+    let (VehicleTable { table, samples }, file) = read_input(&args.input, |r, name| {
+        Ok((vehicle_table::read(r, name)?, name.to_owned()))
     })?;
-    table.check_range("t", &symmetric(TIME_S), "s")?;
-    for column in ["ax", "ay", "az"] {
-        table.check_range(column, &symmetric(ACCEL_M_S2), "m/s²")?;
-    }
-    for column in ["wx", "wy", "wz"] {
-        table.check_range(column, &symmetric(ANGULAR_SPEED_DEG_S), "°/s")?;
-    }
-    let samples: Vec<(f64, VehicleMotion)> = table
-        .rows()
-        .map(|r| {
-            let motion = VehicleMotion {
-                accel: [r[1], r[2], r[3]],
-                rates_deg_s: [r[4], r[5], r[6]],
-            };
-            (r[0], motion)
-        })
-        .collect();
     let cued = cue_recording(
         &scenario.geometry,
         &scenario.limits,

@@ -15,6 +15,7 @@ use stewart_kinematics::{CheckReport, GeometryParams, Layout, Scenario};
 
 use super::derived::Derived;
 use super::undo::Undo;
+use super::vehicle::VehicleSource;
 use crate::i18n::Lang;
 
 /// The scenario, its undo history, what is derived from it, and the last refused edit.
@@ -27,6 +28,8 @@ pub struct Document {
     pub undo: Undo,
     /// Why the last edit was refused (the scenario then stayed as it was).
     pub edit_error: Option<(Group, String)>,
+    /// The vehicle recording loaded last and the motion cued from it.
+    vehicle: Option<VehicleSource>,
 }
 
 impl Document {
@@ -38,6 +41,7 @@ impl Document {
             scenario,
             undo: Undo::default(),
             edit_error: None,
+            vehicle: None,
         }
     }
 
@@ -56,15 +60,30 @@ impl Document {
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
     ) -> bool {
         let mut edited = self.scenario.clone();
-        let checked = change(&mut edited).and_then(|()| match settings::out_of_range(&edited) {
-            Some((setting, reason)) => Err(format!("`{}` {reason}", setting.key)),
-            None => Ok(()),
-        });
+        let mut recued = None;
+        let checked = change(&mut edited)
+            .and_then(|()| match settings::out_of_range(&edited) {
+                Some((setting, reason)) => Err(format!("`{}` {reason}", setting.key)),
+                None => Ok(()),
+            })
+            .and_then(|()| {
+                // A motion cued from a vehicle recording is cued again for the edited
+                // scenario (not after an edit of the motion itself).
+                if let Some(v) = self.cued_vehicle().filter(|_| group != Group::Trajectory) {
+                    let again = v.recue(&edited)?;
+                    edited.motion = again.motion.clone();
+                    recued = Some(again);
+                }
+                Ok(())
+            });
         match checked {
             Ok(()) => {
                 self.undo.record(&self.scenario);
                 self.scenario = edited;
                 self.edit_error = None;
+                if recued.is_some() {
+                    self.vehicle = recued;
+                }
                 self.derived.rebuild(&self.scenario);
                 true
             }
@@ -73,6 +92,37 @@ impl Document {
                 false
             }
         }
+    }
+
+    /// Play the motion cued from a vehicle recording (`samples`, from the file `name`),
+    /// one edit; refused with the reason when the scenario cannot cue it.
+    pub fn play_vehicle(
+        &mut self,
+        name: &str,
+        samples: std::sync::Arc<Vec<(f64, stewart_kinematics::cueing::VehicleMotion)>>,
+    ) -> Result<(), String> {
+        let source = VehicleSource::new(name, samples, &self.scenario)?;
+        let motion = source.motion.clone();
+        if self.edit(Group::Trajectory, |s| {
+            s.motion = motion;
+            Ok(())
+        }) {
+            self.vehicle = Some(source);
+            Ok(())
+        } else {
+            Err(self
+                .edit_error
+                .as_ref()
+                .map_or_else(String::new, |(_, why)| why.clone()))
+        }
+    }
+
+    /// The vehicle recording whose cued motion is the scenario's now (`None` when the
+    /// motion is another: none was loaded, or an undo brought another motion back).
+    pub fn cued_vehicle(&self) -> Option<&VehicleSource> {
+        self.vehicle
+            .as_ref()
+            .filter(|v| v.motion == self.scenario.motion)
     }
 
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is

@@ -53,10 +53,19 @@ impl ViewerState {
     }
 
     /// Play the poses of a CSV table (`t,x,y,z,roll_deg,pitch_deg,yaw_deg`) as the motion,
-    /// one edit (Ctrl+Z takes it back); the platform stays.
+    /// one edit (Ctrl+Z takes it back); the platform stays. A table of vehicle motion
+    /// (`t,ax,ay,az,wx,wy,wz`) is cued first (see [`ViewerState::open_vehicle`]).
     pub fn open_pose_table(&mut self, path: &Path) {
         let full = absolute(path);
         let name = full.display().to_string();
+        let header = regular_file(&full)
+            .ok()
+            .and_then(|()| std::fs::read_to_string(&full).ok())
+            .and_then(|text| text.lines().next().map(str::to_owned));
+        if header.is_some_and(|h| crate::vehicle_table::is_vehicle_header(&h)) {
+            self.open_vehicle(&full);
+            return;
+        }
         let motion = regular_file(&full).and_then(|()| {
             let file = std::fs::File::open(&full).map_err(|e| format!("{name}: {e}"))?;
             let table = PoseTable::read(file, &name).map_err(|e| e.to_string())?;
@@ -89,6 +98,38 @@ impl ViewerState {
             }
             Err(e) => Err(e),
         });
+    }
+
+    /// Cue a CSV of vehicle motion (`t,ax,ay,az,wx,wy,wz`) with the scenario's `[cueing]`
+    /// table and play the poses as the motion, one edit; the Cueing panel then plots it,
+    /// and edits of the cueing cue it again.
+    pub fn open_vehicle(&mut self, full: &Path) {
+        let name = full.display().to_string();
+        let lang = self.look.lang;
+        let read = std::fs::File::open(full)
+            .map_err(|e| format!("{name}: {e}"))
+            .and_then(|mut file| {
+                crate::vehicle_table::read(&mut file, &name).map_err(|e| format!("{e:#}"))
+            });
+        let outcome = read.and_then(|table| {
+            let count = table.samples.len();
+            let seconds = table.samples.last().map_or(0.0, |l| l.0)
+                - table.samples.first().map_or(0.0, |f| f.0);
+            self.doc
+                .play_vehicle(&name, std::sync::Arc::new(table.samples))
+                .map(|()| (count, seconds))
+        });
+        self.files.status = Some(outcome.map(|(count, seconds)| {
+            self.playback.time = 0.0;
+            lang.fmt(
+                "files.vehicle_opened",
+                &[
+                    ("count", &count),
+                    ("seconds", &format!("{seconds:.2}")),
+                    ("path", &name),
+                ],
+            )
+        }));
     }
 
     /// Save the scenario as TOML (whole or not at all).

@@ -5,6 +5,7 @@
 //! stream. Dropping the link stops the stream first (e-stop, then home or hold as the
 //! table says, then disarmed).
 
+use crate::live_cue::{CueCounts, LiveCue};
 use std::collections::VecDeque;
 use std::io::Write;
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
@@ -97,6 +98,8 @@ struct Running {
     stopping: bool,
     /// What the stream was built from (for where an emergency stop left the platform).
     plan: LinkPlan,
+    /// With live vehicle motion as the source: what it brought.
+    cue: Option<Arc<CueCounts>>,
     /// The set-points the controller answered, as they come.
     answered: mpsc::Receiver<Row>,
 }
@@ -118,6 +121,9 @@ pub struct LiveLink {
     /// The pose the controller's measured values give (forward kinematics), while
     /// telemetry comes.
     measured_pose: Option<Pose>,
+    /// Follow live vehicle motion arriving at this UDP address (`HOST:PORT`) through the
+    /// scenario's washout, instead of what the viewer shows.
+    pub cue_input: Option<String>,
 }
 
 /// A dry run's writer: keeps the last whole lines for the panel (a line may come in
@@ -191,12 +197,22 @@ impl LiveLink {
             drive,
         }));
         let shared = Arc::clone(&source);
-        let target = Box::new(move |_t: f64| {
-            shared
-                .lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .sample()
-        });
+        let (target, cue): (stewart_link::sender::Target, _) = match &self.cue_input {
+            Some(address) => {
+                let live = LiveCue::bind(&format!("udp:{address}"), scenario).map_err(fail)?;
+                let counts = live.counts();
+                (live.into_target(scenario), Some(counts))
+            }
+            None => (
+                Box::new(move |_t: f64| {
+                    shared
+                        .lock()
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .sample()
+                }),
+                None,
+            ),
+        };
         // Where the frames go, in the reader's words (a UDP address reads the same in both).
         let described = match scenario.link.transport {
             LinkTransport::File => self.lang.tr("link.dry_run_here").to_owned(),
@@ -214,11 +230,17 @@ impl LiveLink {
             stopping: false,
             plan,
             answered,
+            cue,
         });
         Ok(self.lang.fmt(
             "link.connected",
             &[("to", &described), ("rate", &scenario.link.rate_hz)],
         ))
+    }
+
+    /// With live vehicle motion as the source: what it brought (counts, recent trace).
+    pub fn cue(&self) -> Option<&CueCounts> {
+        self.running.as_ref().and_then(|r| r.cue.as_deref())
     }
 
     /// Whether a stream runs (also while it stops).

@@ -38,6 +38,7 @@ pub mod shots;
 pub mod state;
 pub mod teleop;
 pub mod undo;
+pub mod vehicle;
 pub mod view3d;
 pub mod window;
 pub mod window_shot;

@@ -48,6 +48,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
                 let quantity = state.doc.scenario().geometry.quantity();
                 live(ui, &mut state.link, quantity, t, state.look.expand_panels);
             } else {
+                source(ui, &mut state.link, t);
                 settings(ui, &mut state.doc, &mut state.link_error, t);
                 if ui
                     .button(RichText::new(t.tr("link.connect")).strong())
@@ -60,6 +61,31 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             widgets::status(ui, &state.link.status);
         });
 }
+
+/// What the stream follows: the motion the viewer shows, or live vehicle motion arriving
+/// over UDP through the scenario's washout.
+fn source(ui: &mut egui::Ui, link: &mut LiveLink, t: Lang) {
+    let mut live = link.cue_input.is_some();
+    ui.horizontal(|ui| {
+        ui.label(t.tr("link.source"));
+        ui.selectable_value(&mut live, false, t.tr("link.source_motion"));
+        ui.selectable_value(&mut live, true, t.tr("link.source_live"))
+            .on_hover_text(t.tr("link.source_live_tip"));
+    });
+    match (live, &mut link.cue_input) {
+        (false, input) => *input = None,
+        (true, input @ None) => *input = Some(DEFAULT_CUE_INPUT.to_owned()),
+        (true, Some(address)) => {
+            ui.horizontal(|ui| {
+                let label = ui.label(t.tr("link.cue_address"));
+                ui.text_edit_singleline(address).labelled_by(label.id);
+            });
+        }
+    }
+}
+
+/// Where live vehicle motion is listened for at first.
+const DEFAULT_CUE_INPUT: &str = "0.0.0.0:4123";
 
 /// The stream: state, ARM, E-STOP, figures.
 /// `quantity`: what the actuators are sent; `open`: the advanced part open at first.
@@ -82,6 +108,17 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
             );
         });
     ui.label(link.described().unwrap_or_default());
+    if let Some(cue) = link.cue() {
+        let [received, dropped, stalls] = cue.numbers();
+        ui.label(t.fmt(
+            "link.cue_counts",
+            &[
+                ("received", &received),
+                ("dropped", &dropped),
+                ("stalls", &stalls),
+            ],
+        ));
+    }
     let width = ui.available_width();
     let big = |text: &str, fill: Color32| {
         egui::Button::new(

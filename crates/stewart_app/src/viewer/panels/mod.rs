@@ -1,5 +1,6 @@
 //! The panels: each a function of the viewer state, laid out by [`viewer_ui`].
 
+mod cueing;
 mod design;
 mod diagnostics;
 mod export;
@@ -17,6 +18,7 @@ mod view;
 mod widgets;
 mod workspace;
 
+use super::editor::Editor;
 use super::files::Purpose;
 use super::playback::MotionMode;
 use super::state::ViewerState;
@@ -76,6 +78,13 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
                         ui.separator();
                         link::show(ui, state);
+                        ui.separator();
+                        let now =
+                            state.doc.scenario().motion.sampling.start() + state.playback.time;
+                        let (lang, expand) = (state.look.lang, state.look.expand_panels);
+                        let mut editor =
+                            Editor::new(&mut state.doc, &mut state.playback, lang, expand);
+                        cueing::show(ui, &mut editor, now, state.link.cue());
                     });
             });
     }

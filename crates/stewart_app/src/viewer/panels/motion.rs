@@ -10,7 +10,7 @@ use stewart_kinematics::trajectory::{
 };
 
 use super::widgets::{self, edit_error, setting_slider};
-use crate::i18n::words;
+use crate::i18n::{Lang, words};
 use crate::viewer::assembly::NoMode;
 use crate::viewer::editor::Editor;
 use crate::viewer::playback::MotionMode;
@@ -254,6 +254,45 @@ fn sinusoid(ui: &mut egui::Ui, ed: &mut Editor) {
     }
 }
 
+/// Keyframe rows in sight at once; more scroll.
+const KEY_ROWS_SHOWN: f32 = 12.0;
+
+/// The table of `keys` (time and pose, editable); whether one was changed.
+fn key_table(ui: &mut egui::Ui, t: Lang, keys: &mut [Keyframe]) -> bool {
+    let mut changed = false;
+    egui::Grid::new("keyframes").striped(true).show(ui, |ui| {
+        let mut heads = vec!["t (s)".to_owned()];
+        for (k, name) in words::COORDINATES.into_iter().enumerate() {
+            let unit = if k < 3 { "m" } else { "°" };
+            heads.push(format!("{} ({unit})", words::coordinate(t, name)));
+        }
+        let columns: Vec<egui::Id> = heads.into_iter().map(|head| ui.label(head).id).collect();
+        ui.end_row();
+        for key in keys.iter_mut() {
+            let mut c = key.pose.to_coordinates();
+            let t = ui.add(egui::DragValue::new(&mut key.t).speed(0.05));
+            changed |= t.labelled_by(columns[0]).changed();
+            for (i, value) in c.iter_mut().enumerate() {
+                let column = columns[i + 1];
+                if i < 3 {
+                    let cell = ui.add(egui::DragValue::new(value).speed(0.002).max_decimals(4));
+                    changed |= cell.labelled_by(column).changed();
+                } else {
+                    let mut deg = value.to_degrees();
+                    let cell = ui.add(egui::DragValue::new(&mut deg).speed(0.1).max_decimals(2));
+                    if cell.labelled_by(column).changed() {
+                        *value = deg.to_radians();
+                        changed = true;
+                    }
+                }
+            }
+            key.pose = Pose::from_coordinates(c);
+            ui.end_row();
+        }
+    });
+    changed
+}
+
 /// The keys as an editable table: time and pose of each, the interpolation, add and
 /// remove. An edit that breaks the keys (times out of order) is refused with its reason.
 fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
@@ -276,36 +315,14 @@ fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
                 .changed();
         }
     });
-    egui::Grid::new("keyframes").striped(true).show(ui, |ui| {
-        let mut heads = vec!["t (s)".to_owned()];
-        for (k, name) in words::COORDINATES.into_iter().enumerate() {
-            let unit = if k < 3 { "m" } else { "°" };
-            heads.push(format!("{} ({unit})", words::coordinate(t, name)));
-        }
-        let columns: Vec<egui::Id> = heads.into_iter().map(|head| ui.label(head).id).collect();
-        ui.end_row();
-        for key in &mut keys {
-            let mut c = key.pose.to_coordinates();
-            let t = ui.add(egui::DragValue::new(&mut key.t).speed(0.05));
-            changed |= t.labelled_by(columns[0]).changed();
-            for (i, value) in c.iter_mut().enumerate() {
-                let column = columns[i + 1];
-                if i < 3 {
-                    let cell = ui.add(egui::DragValue::new(value).speed(0.002).max_decimals(4));
-                    changed |= cell.labelled_by(column).changed();
-                } else {
-                    let mut deg = value.to_degrees();
-                    let cell = ui.add(egui::DragValue::new(&mut deg).speed(0.1).max_decimals(2));
-                    if cell.labelled_by(column).changed() {
-                        *value = deg.to_radians();
-                        changed = true;
-                    }
-                }
-            }
-            key.pose = Pose::from_coordinates(c);
-            ui.end_row();
-        }
-    });
+    // A long table (a recording played as poses) scrolls, drawing only the rows in sight.
+    let row_height = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
+    egui::ScrollArea::vertical()
+        .id_salt("keyframes")
+        .max_height(KEY_ROWS_SHOWN * row_height)
+        .show_rows(ui, row_height, keys.len(), |ui, rows| {
+            changed |= key_table(ui, t, &mut keys[rows]);
+        });
     ui.horizontal(|ui| {
         if ui
             .button(t.tr("motion.add_key"))

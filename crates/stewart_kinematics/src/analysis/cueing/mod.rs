@@ -15,6 +15,8 @@ use crate::cueing_settings::{CueingProblem, CueingSettings};
 use crate::geometry::Geometry;
 use crate::limits::Limits;
 use crate::pose::{Pose, rotation_zyx};
+use crate::table::TableError;
+use crate::trajectory::{Motion, PoseTable};
 
 pub use limiter::Limiter;
 pub use lti::Lti;
@@ -158,6 +160,28 @@ pub struct CuedRecording {
     /// The washout's cue at each sample (before the limiter): its translation,
     /// acceleration, angles, tilt and the specific force it makes felt.
     pub cues: Vec<Cue>,
+}
+
+impl CuedRecording {
+    /// The poses as a motion through the samples' `times` (joined by straight lines,
+    /// sampled once per sample), as a pose table written by `stewart cue` plays.
+    pub fn to_motion(&self, times: &[f64], name: &str) -> Result<Motion, TableError> {
+        let values = self
+            .poses
+            .iter()
+            .map(|p| {
+                let [roll, pitch, yaw] = p.rpy_degrees();
+                [p.position.x, p.position.y, p.position.z, roll, pitch, yaw]
+            })
+            .collect();
+        let table = PoseTable {
+            times: Some(times.to_vec()),
+            poses: self.poses.clone(),
+            values,
+            lines: (2..).take(self.poses.len()).collect(),
+        };
+        table.to_motion(name)
+    }
 }
 
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at

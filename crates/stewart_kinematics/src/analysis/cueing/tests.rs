@@ -168,7 +168,10 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         steady.advance(h);
     }
     let felt = steady.cue().specific_force();
-    assert!((felt[0] - force).abs() < 1e-9 && felt[1].abs() < 1e-12, "{felt:?}");
+    assert!(
+        (felt[0] - force).abs() < 1e-9 && felt[1].abs() < 1e-12,
+        "{felt:?}"
+    );
     let gravity_in_platform = last.rotation().transpose() * Vector3::new(0.0, 0.0, -9.80665);
     assert!((gravity_in_platform.x + force).abs() < 1e-9);
     // Lateral force to the left: the platform rolls so that gravity pushes to the right.

@@ -1,0 +1,51 @@
+//! A recording of vehicle motion as CSV (`t, ax, ay, az, wx, wy, wz`: s, m/s² in the
+//! vehicle's frame with gravity excluded, °/s), read for `stewart cue` and the viewer,
+//! each value checked against its bounds with the line at fault named.
+
+use std::io::Read;
+
+use anyhow::Result;
+use stewart_kinematics::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, symmetric};
+use stewart_kinematics::cueing::VehicleMotion;
+use stewart_kinematics::table::NumericTable;
+
+/// The columns, in order.
+pub const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
+
+/// A recording: the table as read (for its lines) and its samples.
+pub struct VehicleTable {
+    /// The table, for the line of each sample.
+    pub table: NumericTable,
+    /// Time and motion of each row.
+    pub samples: Vec<(f64, VehicleMotion)>,
+}
+
+/// Read a recording from `input` (named `name` in errors).
+pub fn read(input: &mut dyn Read, name: &str) -> Result<VehicleTable> {
+    let table = NumericTable::read(input, name, &VEHICLE_COLUMNS, &[])?;
+    table.check_range("t", &symmetric(TIME_S), "s")?;
+    for column in ["ax", "ay", "az"] {
+        table.check_range(column, &symmetric(ACCEL_M_S2), "m/s²")?;
+    }
+    for column in ["wx", "wy", "wz"] {
+        table.check_range(column, &symmetric(ANGULAR_SPEED_DEG_S), "°/s")?;
+    }
+    let samples = table
+        .rows()
+        .map(|r| {
+            let motion = VehicleMotion {
+                accel: [r[1], r[2], r[3]],
+                rates_deg_s: [r[4], r[5], r[6]],
+            };
+            (r[0], motion)
+        })
+        .collect();
+    Ok(VehicleTable { table, samples })
+}
+
+/// Whether a CSV's header line names vehicle motion (its acceleration and rate columns)
+/// rather than poses.
+pub fn is_vehicle_header(first_line: &str) -> bool {
+    let columns: Vec<&str> = first_line.split(',').map(str::trim).collect();
+    ["ax", "wx"].iter().all(|c| columns.contains(c))
+}

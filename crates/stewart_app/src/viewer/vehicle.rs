@@ -1,0 +1,57 @@
+//! A recording of vehicle motion loaded into the viewer and the motion cued from it: the
+//! scenario's trajectory while that motion is the one shown, cued again whenever the
+//! scenario's cueing, geometry or limits change, with the channels the Cueing panel plots.
+
+use std::sync::Arc;
+
+use stewart_kinematics::cueing::{CuedRecording, VehicleMotion, cue_recording};
+use stewart_kinematics::{Motion, Scenario};
+
+/// The recording and what the washout made of it for a scenario.
+#[derive(Clone, Debug)]
+pub struct VehicleSource {
+    /// The file, for messages.
+    pub name: String,
+    /// Time and motion of each sample.
+    pub samples: Arc<Vec<(f64, VehicleMotion)>>,
+    /// The motion cued from it (the scenario's while the two are equal).
+    pub motion: Motion,
+    /// The poses, limiter scales and cues per sample.
+    pub cued: CuedRecording,
+}
+
+impl VehicleSource {
+    /// Cue `samples` (from the file `name`) for `scenario`.
+    pub fn new(
+        name: &str,
+        samples: Arc<Vec<(f64, VehicleMotion)>>,
+        scenario: &Scenario,
+    ) -> Result<Self, String> {
+        let cued = cue_recording(
+            &scenario.geometry,
+            &scenario.limits,
+            &scenario.cueing,
+            &samples,
+        )
+        .map_err(|e| format!("{name}: {e}"))?;
+        let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
+        let motion = cued.to_motion(&times, name).map_err(|e| e.to_string())?;
+        Ok(Self {
+            name: name.to_owned(),
+            samples,
+            motion,
+            cued,
+        })
+    }
+
+    /// The same recording cued for `scenario` (after an edit of its cueing, geometry or
+    /// limits).
+    pub fn recue(&self, scenario: &Scenario) -> Result<Self, String> {
+        Self::new(&self.name, Arc::clone(&self.samples), scenario)
+    }
+
+    /// The times of the samples.
+    pub fn times(&self) -> impl Iterator<Item = f64> + '_ {
+        self.samples.iter().map(|s| s.0)
+    }
+}
