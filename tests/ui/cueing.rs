@@ -45,7 +45,7 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
     let cue = |s: &stewart_kinematics::Scenario| {
         cue_recording(&s.geometry, &s.limits, &s.cueing, &samples)
-            .and_then(|c| Ok(c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}"))))
+            .map(|c| c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}")))
             .unwrap_or_else(|e| panic!("{e}"))
     };
     assert_eq!(scenario.motion.trajectory, cue(&scenario).trajectory);
