@@ -13,9 +13,9 @@ use stewart_kinematics::Scenario;
 
 /// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
 /// names of languages and of mathematical functions.
-const KEPT: [&str; 23] = [
+const KEPT: [&str; 24] = [
     "PNG", "GIF", "MP4", "SVG", "PDF", "CSV", "dpi", "UDP", "Hz", "Esc", "Shift", "Home",
-    "English", "sin", "cos", "FIFO", "mm", "toml", "geometry", "µs", "ms", "ch", "CRC",
+    "English", "sin", "cos", "FIFO", "mm", "toml", "geometry", "µs", "ms", "ch", "CRC", "rad",
 ];
 
 /// The viewer on `preset` in Chinese with every section open.

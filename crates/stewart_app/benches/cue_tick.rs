@@ -1,0 +1,211 @@
+//! One tick of live motion cueing at 1 kHz: the washout and the workspace limiter alone,
+//! then a whole sender tick that follows them (actuator values, supervisor, encoding, a
+//! UDP send to a local peer), and the same with the vehicle motion arriving over UDP
+//! (`LiveCue`: reading and decoding one datagram a tick too; the datagram is sent before
+//! each timed tick, outside the time).
+//!
+//! `cargo bench -p stewart_app --bench cue_tick`. Before criterion's means, 100 000
+//! single ticks of each are timed one by one for the mean, the 99th percentile and the
+//! worst (the figures README quotes).
+
+use std::hint::black_box;
+use std::net::UdpSocket;
+use std::time::Instant;
+
+use criterion::{Criterion, criterion_group};
+use stewart_app::hardware;
+use stewart_app::live_cue::LiveCue;
+use stewart_kinematics::Scenario;
+use stewart_kinematics::cueing::{Cueing, VehicleMotion};
+use stewart_link::generator::Sample;
+use stewart_link::safety::TargetError;
+use stewart_link::sender::{SenderConfig, Stream, Target};
+use stewart_link::transport::Udp;
+
+/// The seed platform with its stroke, the default washout and the limiter on.
+fn scenario() -> Scenario {
+    let mut s = Scenario::seed();
+    stewart_kinematics::settings::apply_all(
+        &mut s,
+        [
+            "geometry.leg_min=0.55",
+            "geometry.leg_max=1.3",
+            "cueing.workspace_limiter=true",
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    s
+}
+
+/// A manoeuvre: braking and turning, each channel its own sine.
+fn vehicle(t: f64) -> VehicleMotion {
+    VehicleMotion {
+        accel: [
+            6.0 * (0.7 * t).sin(),
+            3.0 * (1.1 * t).sin(),
+            1.0 * (2.0 * t).sin(),
+        ],
+        rates_deg_s: [
+            20.0 * (0.9 * t).sin(),
+            10.0 * (1.3 * t).sin(),
+            30.0 * (0.5 * t).sin(),
+        ],
+    }
+}
+
+/// A sender stream to a local UDP peer (drained on its own thread) following `target`.
+fn stream(scenario: &Scenario, target: Target) -> Stream {
+    let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let address = peer
+        .local_addr()
+        .unwrap_or_else(|e| panic!("{e}"))
+        .to_string();
+    std::thread::spawn(move || {
+        let mut buf = [0u8; 64];
+        while peer.recv(&mut buf).is_ok() {}
+    });
+    let home = hardware::home_values(scenario).unwrap_or_else(|e| panic!("{e}"));
+    let config = SenderConfig {
+        rate_hz: 1000.0,
+        format: hardware::format(&scenario.link),
+        map: hardware::channel_map(scenario).unwrap_or_else(|e| panic!("{e}")),
+        supervisor: hardware::supervisor(scenario, home),
+        arm_at_start: true,
+        stop_after: None,
+        record: None,
+    };
+    let udp = Udp::connect(&address).unwrap_or_else(|e| panic!("{e}"));
+    let mut stream = Stream::new(config, target, Box::new(udp));
+    for k in 1..=1000 {
+        stream.tick(f64::from(k) * 1e-3);
+    }
+    stream
+}
+
+/// The cue computed in the target itself (no input socket).
+fn computed_target(scenario: &Scenario) -> Target {
+    let mut cueing = Cueing::new(&scenario.geometry, &scenario.limits, &scenario.cueing)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let geometry = scenario.geometry.clone();
+    let mut last = 0.0;
+    Box::new(move |t| {
+        let pose = cueing.advance(t - last);
+        last = t;
+        cueing.hold(&vehicle(t));
+        geometry
+            .actuator_values_at(&pose)
+            .map(Sample::At)
+            .map_err(TargetError::source)
+    })
+}
+
+/// The cue from datagrams arriving at a `LiveCue`, and a function that sends the
+/// sample of tick `k` to it.
+fn live_target(scenario: &Scenario) -> (Target, impl FnMut(usize)) {
+    let live = LiveCue::bind("udp:127.0.0.1:0", scenario).unwrap_or_else(|e| panic!("{e}"));
+    let to = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let send = move |k: usize| {
+        let t = k as f64 * 1e-3;
+        let v = vehicle(t);
+        let [ax, ay, az] = v.accel;
+        let [wx, wy, wz] = v.rates_deg_s;
+        let line = format!("{t},{ax},{ay},{az},{wx},{wy},{wz}");
+        socket
+            .send_to(line.as_bytes(), to)
+            .unwrap_or_else(|e| panic!("{e}"));
+    };
+    (live.into_target(scenario), send)
+}
+
+/// Mean, 99th percentile and worst of `n` single calls of `tick(k)`, microseconds, each
+/// after an untimed `before(k)`.
+fn percentiles(name: &str, n: usize, mut before: impl FnMut(usize), mut tick: impl FnMut(usize)) {
+    let mut times: Vec<f64> = Vec::with_capacity(n);
+    for k in 0..n {
+        before(k);
+        let started = Instant::now();
+        tick(k);
+        times.push(started.elapsed().as_secs_f64() * 1e6);
+    }
+    let mean = times.iter().sum::<f64>() / n as f64;
+    times.sort_by(f64::total_cmp);
+    let p99 = times[(0.99 * n as f64) as usize];
+    println!(
+        "{name}: {n} ticks one by one: mean {mean:.2} µs, p99 {p99:.2} µs, worst {:.1} µs",
+        times[n - 1]
+    );
+}
+
+fn bench(c: &mut Criterion) {
+    let s = scenario();
+    let mut group = c.benchmark_group("cue_tick");
+    let mut cueing =
+        Cueing::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|e| panic!("{e}"));
+    let mut t = 0.0;
+    group.bench_function("washout_and_limiter", |b| {
+        b.iter(|| {
+            t += 1e-3;
+            cueing.hold(&vehicle(t));
+            black_box(cueing.advance(1e-3))
+        })
+    });
+    let mut computed = stream(&s, computed_target(&s));
+    let mut t = 1.0;
+    group.bench_function("cue_supervisor_encode_send", |b| {
+        b.iter(|| {
+            t += 1e-3;
+            black_box(computed.tick(t))
+        })
+    });
+    let (target, mut send) = live_target(&s);
+    let mut live = stream(&s, target);
+    let mut k = 0;
+    group.bench_function("live_udp_cue_supervisor_encode_send", |b| {
+        b.iter_custom(|iterations| {
+            let mut total = std::time::Duration::ZERO;
+            for _ in 0..iterations {
+                k += 1;
+                send(k);
+                let started = Instant::now();
+                black_box(live.tick(1.0 + k as f64 * 1e-3));
+                total += started.elapsed();
+            }
+            total
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+
+fn main() {
+    let s = scenario();
+    let mut cueing =
+        Cueing::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|e| panic!("{e}"));
+    percentiles(
+        "washout_and_limiter",
+        100_000,
+        |_| {},
+        |k| {
+            cueing.hold(&vehicle(k as f64 * 1e-3));
+            black_box(cueing.advance(1e-3));
+        },
+    );
+    let mut computed = stream(&s, computed_target(&s));
+    percentiles(
+        "cue_supervisor_encode_send",
+        100_000,
+        |_| {},
+        |k| {
+            black_box(computed.tick(1.0 + (k + 1) as f64 * 1e-3));
+        },
+    );
+    let (target, send) = live_target(&s);
+    let mut live = stream(&s, target);
+    percentiles("live_udp_cue_supervisor_encode_send", 100_000, send, |k| {
+        black_box(live.tick(1.0 + (k + 1) as f64 * 1e-3));
+    });
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}
