@@ -1,5 +1,8 @@
 //! `stewart cue`: vehicle motion in, a pose table out that the other commands take.
 
+use std::net::UdpSocket;
+use std::time::{Duration, Instant};
+
 use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
 /// A braking manoeuvre with a turn: 6 m/s² from 1 to 3 s, 20°/s of yaw from 2 to 4 s,
@@ -194,8 +197,6 @@ fn bad_vehicle_motion_is_one_located_error_and_writes_nothing() {
 
 #[test]
 fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
-    use std::net::UdpSocket;
-    use std::time::{Duration, Instant};
     let dir = tempdir();
     let recording = braking(3.0);
     let vehicle = write(dir.path(), "vehicle.csv", &recording);
@@ -235,28 +236,23 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
-    std::thread::sleep(Duration::from_millis(500));
     // The sender plays the recording in real time, one datagram per line, and two that
     // are not samples.
-    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let start = Instant::now();
-    for (k, line) in recording.lines().skip(1).enumerate() {
-        let due = Duration::from_millis(10 * k as u64);
-        if let Some(wait) = due.checked_sub(start.elapsed()) {
-            std::thread::sleep(wait);
-        }
-        socket
-            .send_to(line.as_bytes(), &input)
-            .unwrap_or_else(|e| panic!("{e}"));
+    let datagrams: Vec<(f64, Vec<u8>)> = recording
+        .lines()
+        .skip(1)
+        .enumerate()
+        .map(|(k, line)| (k as f64 * 0.01, line.as_bytes().to_vec()))
+        .collect();
+    play(&input, &datagrams, |k, socket| {
         if k == 100 {
-            socket
-                .send_to(b"not a sample", &input)
-                .unwrap_or_else(|e| panic!("{e}"));
-            socket
-                .send_to(&[0xff; 13], &input)
-                .unwrap_or_else(|e| panic!("{e}"));
+            for junk in [&b"not a sample"[..], &[0xff; 13]] {
+                socket
+                    .send_to(junk, &input)
+                    .unwrap_or_else(|e| panic!("{e}"));
+            }
         }
-    }
+    });
     let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(
@@ -293,6 +289,22 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
     assert!(compared > 250, "only {compared} frames compared");
 }
 
+/// Half a second for the link to start listening at `to`, then each datagram sent when
+/// it is due (seconds from the first), in real time; `after(k, socket)` runs after the
+/// `k`-th.
+fn play(to: &str, datagrams: &[(f64, Vec<u8>)], mut after: impl FnMut(usize, &UdpSocket)) {
+    std::thread::sleep(Duration::from_millis(500));
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let start = Instant::now();
+    for (k, (t, bytes)) in datagrams.iter().enumerate() {
+        if let Some(wait) = Duration::from_secs_f64(*t).checked_sub(start.elapsed()) {
+            std::thread::sleep(wait);
+        }
+        socket.send_to(bytes, to).unwrap_or_else(|e| panic!("{e}"));
+        after(k, &socket);
+    }
+}
+
 /// The bytes of a hex string.
 fn unhex(text: &str) -> Vec<u8> {
     (0..text.len() / 2)
@@ -302,8 +314,6 @@ fn unhex(text: &str) -> Vec<u8> {
 
 #[test]
 fn an_x_plane_recording_drives_the_link() {
-    use std::net::UdpSocket;
-    use std::time::{Duration, Instant};
     // A take-off in X-Plane's DATA form (scripts/xplane-sample.py), played in real time.
     let recording = include_str!("xplane_takeoff.txt");
     let input = crate::link::free_port();
@@ -330,24 +340,16 @@ fn an_x_plane_recording_drives_the_link() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
-    std::thread::sleep(Duration::from_millis(500));
-    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let start = Instant::now();
-    let mut sent = 0;
-    for line in recording.lines() {
-        let (t, hex) = line.split_once(' ').unwrap_or_else(|| panic!("{line}"));
-        let due = Duration::from_secs_f64(t.parse().unwrap_or_else(|e| panic!("{e}")));
-        if due > Duration::from_secs(8) {
-            break;
-        }
-        if let Some(wait) = due.checked_sub(start.elapsed()) {
-            std::thread::sleep(wait);
-        }
-        socket
-            .send_to(&unhex(hex), &input)
-            .unwrap_or_else(|e| panic!("{e}"));
-        sent += 1;
-    }
+    let datagrams: Vec<(f64, Vec<u8>)> = recording
+        .lines()
+        .map(|line| {
+            let (t, hex) = line.split_once(' ').unwrap_or_else(|| panic!("{line}"));
+            (t.parse().unwrap_or_else(|e| panic!("{e}")), unhex(hex))
+        })
+        .take_while(|(t, _)| *t <= 8.0)
+        .collect();
+    let sent = datagrams.len();
+    play(&input, &datagrams, |_, _| {});
     let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let said = stderr(&o);

@@ -19,7 +19,7 @@ use stewart_kinematics::Scenario;
 use stewart_kinematics::cueing::{Cueing, VehicleMotion};
 use stewart_link::generator::Sample;
 use stewart_link::safety::TargetError;
-use stewart_link::sender::{SenderConfig, Stream, Target};
+use stewart_link::sender::{SenderConfig, Stream, Target, time_each};
 use stewart_link::transport::Udp;
 
 /// The seed platform with its stroke, the default washout and the limiter on.
@@ -118,22 +118,13 @@ fn live_target(scenario: &Scenario) -> (Target, impl FnMut(usize)) {
     (live.into_target(scenario), send)
 }
 
-/// Mean, 99th percentile and worst of `n` single calls of `tick(k)`, microseconds, each
-/// after an untimed `before(k)`.
-fn percentiles(name: &str, n: usize, mut before: impl FnMut(usize), mut tick: impl FnMut(usize)) {
-    let mut times: Vec<f64> = Vec::with_capacity(n);
-    for k in 0..n {
-        before(k);
-        let started = Instant::now();
-        tick(k);
-        times.push(started.elapsed().as_secs_f64() * 1e6);
-    }
-    let mean = times.iter().sum::<f64>() / n as f64;
-    times.sort_by(f64::total_cmp);
-    let p99 = times[(0.99 * n as f64) as usize];
+/// The mean, 99th percentile and worst of `n` single calls of `tick(k)`, each after an
+/// untimed `before(k)`, printed.
+fn percentiles(name: &str, n: usize, before: impl FnMut(usize), tick: impl FnMut(usize)) {
+    let t = time_each(n, before, tick);
     println!(
-        "{name}: {n} ticks one by one: mean {mean:.2} µs, p99 {p99:.2} µs, worst {:.1} µs",
-        times[n - 1]
+        "{name}: {n} ticks one by one: mean {:.2} µs, p99 {:.0} µs, worst {:.1} µs",
+        t.mean_us, t.p99_us, t.max_us
     );
 }
 

@@ -8,13 +8,12 @@
 
 use std::hint::black_box;
 use std::net::UdpSocket;
-use std::time::Instant;
 
 use criterion::{Criterion, criterion_group};
 use stewart_link::channels::{ChannelMap, Output};
 use stewart_link::generator::{Motion, Sample};
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::{Format, SenderConfig, Stream, Target};
+use stewart_link::sender::{Format, SenderConfig, Stream, Target, time_each};
 use stewart_link::transport::Udp;
 
 /// Linear legs (metres) with the `paired` preset's limits and a jerk limit.
@@ -92,20 +91,12 @@ fn stream() -> Stream {
     stream
 }
 
-/// Mean, 99th percentile and worst of `n` single calls of `tick(k)`, microseconds.
-fn percentiles(name: &str, n: usize, mut tick: impl FnMut(usize)) {
-    let mut times: Vec<f64> = Vec::with_capacity(n);
-    for k in 0..n {
-        let started = Instant::now();
-        tick(k);
-        times.push(started.elapsed().as_secs_f64() * 1e6);
-    }
-    let mean = times.iter().sum::<f64>() / n as f64;
-    times.sort_by(f64::total_cmp);
-    let p99 = times[(0.99 * n as f64) as usize];
+/// The mean, 99th percentile and worst of `n` single calls of `tick(k)`, printed.
+fn percentiles(name: &str, n: usize, tick: impl FnMut(usize)) {
+    let t = time_each(n, |_| {}, tick);
     println!(
-        "{name}: {n} ticks one by one: mean {mean:.2} µs, p99 {p99:.2} µs, worst {:.1} µs",
-        times[n - 1]
+        "{name}: {n} ticks one by one: mean {:.2} µs, p99 {:.0} µs, worst {:.1} µs",
+        t.mean_us, t.p99_us, t.max_us
     );
 }
 

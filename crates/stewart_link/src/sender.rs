@@ -51,6 +51,20 @@ pub struct Timing {
     pub max_us: f64,
 }
 
+/// The mean, 99th percentile and worst of `n` calls of `call(k)`, each timed alone after
+/// an untimed `before(k)`, microseconds: what one tick costs, call by call (the
+/// benchmarks' figures).
+pub fn time_each(n: usize, mut before: impl FnMut(usize), mut call: impl FnMut(usize)) -> Timing {
+    let mut times = Lateness::new();
+    for k in 0..n {
+        before(k);
+        let started = Instant::now();
+        call(k);
+        times.add(started.elapsed().as_secs_f64() * 1e6);
+    }
+    times.timing()
+}
+
 /// Lateness histogram: 1 µs bins up to 20 ms, the rest in the last bin.
 #[derive(Clone, Debug)]
 struct Lateness {

@@ -483,21 +483,20 @@ fn checks(d: &mut Declare) {
     );
 }
 
-fn cueing(d: &mut Declare) {
+/// A setting declared by key (in its table), label, unit, slider range and target.
+type Row = (&'static str, &'static str, Unit, (f64, f64), CueingKey);
+
+/// The `[cueing]` table's settings; each default is the table's own.
+const CUEING: [Row; 15] = {
     use CueingKey::*;
-    let c = CueingSettings::default();
-    let k = |key| Target::Cueing(key);
-    let on = |b: bool| Value(f64::from(u8::from(b)));
-    let scale = (0.0, 2.0);
-    let omega = (0.05, 20.0);
-    let zeta = (0.1, 2.0);
-    let numbers = [
+    let (scale, omega, zeta) = ((0.0, 2.0), (0.05, 20.0), (0.1, 2.0));
+    let switch = (0.0, 1.0);
+    [
         (
             "translation_scale",
             "translation scale",
             Ratio,
             scale,
-            c.translation_scale,
             TranslationScale,
         ),
         (
@@ -505,7 +504,6 @@ fn cueing(d: &mut Declare) {
             "translation high-pass ω",
             RadianPerSecond,
             omega,
-            c.translation_hp_wn,
             TranslationHpWn,
         ),
         (
@@ -513,7 +511,6 @@ fn cueing(d: &mut Declare) {
             "translation high-pass ζ",
             Ratio,
             zeta,
-            c.translation_hp_zeta,
             TranslationHpZeta,
         ),
         (
@@ -521,51 +518,22 @@ fn cueing(d: &mut Declare) {
             "return to neutral ω_b",
             RadianPerSecond,
             (0.0, 5.0),
-            c.translation_hp_wb,
             TranslationHpWb,
         ),
-    ];
-    for (key, label, unit, range, default, target) in numbers {
-        d.add(
-            format!("cueing.{key}"),
-            label,
-            unit,
-            range,
-            Value(default),
-            k(target),
-        );
-    }
-    d.add(
-        "cueing.tilt",
-        "tilt coordination",
-        Switch,
-        (0.0, 1.0),
-        on(c.tilt),
-        k(Tilt),
-    );
-    let numbers = [
+        ("tilt", "tilt coordination", Switch, switch, Tilt),
         (
             "tilt_lp_wn",
             "tilt low-pass ω",
             RadianPerSecond,
             omega,
-            c.tilt_lp_wn,
             TiltLpWn,
         ),
-        (
-            "tilt_lp_zeta",
-            "tilt low-pass ζ",
-            Ratio,
-            zeta,
-            c.tilt_lp_zeta,
-            TiltLpZeta,
-        ),
+        ("tilt_lp_zeta", "tilt low-pass ζ", Ratio, zeta, TiltLpZeta),
         (
             "tilt_rate_max_deg_s",
             "max tilt rate",
             DegreePerSecond,
             (0.5, 30.0),
-            c.tilt_rate_max_deg_s,
             TiltRateMax,
         ),
         (
@@ -573,7 +541,6 @@ fn cueing(d: &mut Declare) {
             "rotation scale",
             Ratio,
             scale,
-            c.rotation_scale,
             RotationScale,
         ),
         (
@@ -581,7 +548,6 @@ fn cueing(d: &mut Declare) {
             "rotation high-pass ω",
             RadianPerSecond,
             omega,
-            c.rotation_hp_wn,
             RotationHpWn,
         ),
         (
@@ -589,73 +555,57 @@ fn cueing(d: &mut Declare) {
             "rotation high-pass ζ",
             Ratio,
             zeta,
-            c.rotation_hp_zeta,
             RotationHpZeta,
         ),
-    ];
-    for (key, label, unit, range, default, target) in numbers {
-        d.add(
+        (
+            "workspace_limiter",
+            "workspace limiter",
+            Switch,
+            switch,
+            Limiter,
+        ),
+        (
+            "limiter_recovery_s",
+            "limiter recovery",
+            Second,
+            (0.1, 10.0),
+            LimiterRecovery,
+        ),
+        ("stall_s", "input stall time", Second, (0.05, 5.0), Stall),
+        ("fade_s", "fade to neutral", Second, (0.1, 10.0), Fade),
+    ]
+};
+
+fn cueing(d: &mut Declare) {
+    let defaults = CueingSettings::default();
+    let mut add = |key: String, label: String, unit, range, target| {
+        let default = super::cueing::get(&defaults, target).map_or(Off, Value);
+        d.add(key, label, unit, range, default, Target::Cueing(target));
+    };
+    for (key, label, unit, range, target) in CUEING {
+        add(
             format!("cueing.{key}"),
-            label,
+            label.to_owned(),
             unit,
             range,
-            Value(default),
-            k(target),
+            target,
         );
     }
     for (i, axis) in AXES.iter().enumerate() {
         let label = format!("cue {axis}");
-        d.add(
+        add(
             format!("cueing.{axis}"),
             label,
             Switch,
             (0.0, 1.0),
-            on(c.axes()[i]),
-            k(Axis(i)),
+            CueingKey::Axis(i),
         );
     }
     for (i, axis) in ["x", "y", "z"].iter().enumerate() {
-        let label = format!("reference {axis}");
-        let default = Value(c.reference_m[i]);
-        d.add(
+        let (key, label) = (
             format!("cueing.reference_m[{i}]"),
-            label,
-            Metre,
-            (-1.0, 1.0),
-            default,
-            k(Reference(i)),
+            format!("reference {axis}"),
         );
+        add(key, label, Metre, (-1.0, 1.0), CueingKey::Reference(i));
     }
-    d.add(
-        "cueing.workspace_limiter",
-        "workspace limiter",
-        Switch,
-        (0.0, 1.0),
-        on(c.workspace_limiter),
-        k(Limiter),
-    );
-    d.add(
-        "cueing.limiter_recovery_s",
-        "limiter recovery",
-        Second,
-        (0.1, 10.0),
-        Value(c.limiter_recovery_s),
-        k(LimiterRecovery),
-    );
-    d.add(
-        "cueing.stall_s",
-        "input stall time",
-        Second,
-        (0.05, 5.0),
-        Value(c.stall_s),
-        k(Stall),
-    );
-    d.add(
-        "cueing.fade_s",
-        "fade to neutral",
-        Second,
-        (0.1, 10.0),
-        Value(c.fade_s),
-        k(Fade),
-    );
 }
