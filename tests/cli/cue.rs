@@ -218,24 +218,19 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
     let device = crate::link::free_port();
     let sim = crate::link::device_sim(&device, &["--min", "550000", "--max", "1300000"]);
     let input = crate::link::free_port();
-    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "link",
-            "--preset",
-            "seed",
+    let link = cued_link(
+        &input,
+        &[
             "--transport",
             "udp",
             "--address",
             &device,
-        ])
-        .args(["--cue", &format!("udp:{input}")])
-        .args(["--rate", "100", "--ramp", "0.2", "--duration", "5"])
-        // A loaded machine may pause the sender: only a silence of 3 s is a stall here
-        // (the stall and fade are tested on their own, with the defaults).
-        .args(["--set", "cueing.stall_s=3"])
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
+            "--rate",
+            "100",
+            "--duration",
+            "5",
+        ],
+    );
     // The sender plays the recording in real time, one datagram per line, and two that
     // are not samples.
     let datagrams: Vec<(f64, Vec<u8>)> = recording
@@ -289,6 +284,20 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
     assert!(compared > 250, "only {compared} frames compared");
 }
 
+/// `stewart link` on the seed following live vehicle motion at `input`, with a short ramp
+/// and `extra` options. A loaded machine may pause the sender: only a silence of 3 s is a
+/// stall here (the stall and fade are tested on their own, with the defaults).
+fn cued_link(input: &str, extra: &[&str]) -> std::process::Child {
+    std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["link", "--preset", "seed", "--cue", &format!("udp:{input}")])
+        .args(["--ramp", "0.2", "--set", "cueing.stall_s=3"])
+        .args(extra)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// Half a second for the link to start listening at `to`, then each datagram sent when
 /// it is due (seconds from the first), in real time; `after(k, socket)` runs after the
 /// `k`-th.
@@ -317,29 +326,7 @@ fn an_x_plane_recording_drives_the_link() {
     // A take-off in X-Plane's DATA form (scripts/xplane-sample.py), played in real time.
     let recording = include_str!("xplane_takeoff.txt");
     let input = crate::link::free_port();
-    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "link",
-            "--preset",
-            "seed",
-            "--dry-run",
-            "--cue",
-            &format!("udp:{input}"),
-        ])
-        .args([
-            "--rate",
-            "50",
-            "--ramp",
-            "0.2",
-            "--duration",
-            "9",
-            "--set",
-            "cueing.stall_s=3",
-        ])
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
+    let link = cued_link(&input, &["--dry-run", "--rate", "50", "--duration", "9"]);
     let datagrams: Vec<(f64, Vec<u8>)> = recording
         .lines()
         .map(|line| {
