@@ -8,6 +8,7 @@
 use rayon::prelude::*;
 use wide::f64x4;
 
+use super::batch_lanes::LANES;
 use crate::fast_trig::{atan2, sin_cos};
 use crate::geometry::Geometry;
 use crate::pose::Pose;
@@ -42,6 +43,22 @@ impl BatchSolver {
             dy: d.map(|v| v.y),
             dz: d.map(|v| v.z),
         }
+    }
+
+    /// The constants by coordinate: `a_i − c` (x, y, z), then `c − b_i` (x, y, z).
+    #[inline(always)]
+    #[allow(clippy::type_complexity)]
+    pub(super) fn constants(
+        &self,
+    ) -> (
+        &[f64; 6],
+        &[f64; 6],
+        &[f64; 6],
+        &[f64; 6],
+        &[f64; 6],
+        &[f64; 6],
+    ) {
+        (&self.ax, &self.ay, &self.az, &self.dx, &self.dy, &self.dz)
     }
 
     /// The six leg vectors `q_i − b_i` of one pose, by coordinate.
@@ -81,7 +98,37 @@ impl BatchSolver {
     /// # Panics
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     pub fn solve_serial(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
+        // The same loop compiled for the widest vector instructions this CPU has (AVX2 and
+        // FMA, or AVX-512), chosen at run time; without them, the baseline build.
+        pulp::Arch::new().dispatch(Lengths {
+            solver: self,
+            poses,
+            out,
+        });
+    }
+
+    /// [`BatchSolver::solve_serial`] as the baseline build runs it, whatever the CPU: the
+    /// reference the dispatched code is tested against.
+    ///
+    /// # Panics
+    /// If `out` is shorter than `poses` (a programming error, not a user error).
+    #[inline(always)]
+    pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
         assert!(out.len() >= poses.len(), "output shorter than input");
+        let whole = poses.len() / LANES * LANES;
+        for (p, o) in poses[..whole]
+            .chunks_exact(LANES)
+            .zip(out[..whole].chunks_exact_mut(LANES))
+        {
+            if !self.lengths_lanes(p, o) {
+                self.solve_one_by_one(p, o);
+            }
+        }
+        self.solve_one_by_one(&poses[whole..], &mut out[whole..]);
+    }
+
+    /// Leg lengths pose by pose (the scalar path).
+    pub fn solve_one_by_one(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
         for (pose, o) in poses.iter().zip(out.iter_mut()) {
             *o = self.lengths(pose);
         }
@@ -97,6 +144,23 @@ impl BatchSolver {
             .par_chunks(CHUNK)
             .zip(out[..poses.len()].par_chunks_mut(CHUNK))
             .for_each(|(p, o)| self.solve_serial(p, o));
+    }
+}
+
+/// [`BatchSolver::solve_reference`] as one piece of work for `pulp` to compile per
+/// instruction set: inlined whole into each, so every step gets the wide instructions.
+struct Lengths<'a> {
+    solver: &'a BatchSolver,
+    poses: &'a [Pose],
+    out: &'a mut [[f64; 6]],
+}
+
+impl pulp::WithSimd for Lengths<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) {
+        self.solver.solve_reference(self.poses, self.out);
     }
 }
 
@@ -337,6 +401,70 @@ mod tests {
             let single = g.leg_lengths(pose);
             for i in 0..6 {
                 assert!((single[i] - lengths[i]).abs() < 1e-14, "{pose:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_dispatched_batch_gives_the_scalar_paths_bits() {
+        let g = Geometry::new(GeometryParams::from_layout(
+            0.9,
+            0.5,
+            0.7,
+            Layout::paired(24.0),
+        ))
+        .unwrap_or_else(|e| panic!("{e}"));
+        let solver = BatchSolver::new(&g);
+        // Random poses over wide ranges, angles near the quadrant boundaries, and angles
+        // the fast reduction does not take (beyond its limit, NaN, infinite): a group of
+        // eight with one of those falls back to the scalar path whole.
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut random = |scale: f64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            scale * ((seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0)
+        };
+        let mut poses: Vec<Pose> = (0..20_003)
+            .map(|_| {
+                let p = Vector3::new(random(2.0), random(2.0), 0.7 + random(1.0));
+                let a = [random(720.0), random(720.0), random(720.0)];
+                Pose::from_xyz_rpy_deg([p.x, p.y, p.z], a)
+            })
+            .collect();
+        for (k, angle) in [45.0, 90.0, -135.0, 180.0, 1e-300, 0.0, -0.0]
+            .into_iter()
+            .enumerate()
+        {
+            poses[100 + k] = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.8], [angle, -angle, angle]);
+        }
+        for (k, bad) in [2e5, -7e6, f64::NAN, f64::INFINITY].into_iter().enumerate() {
+            poses[1000 + 9 * k].roll = crate::angle::Angle::from_radians(bad);
+        }
+        let mut dispatched = vec![[0.0; 6]; poses.len()];
+        let mut lanes = vec![[0.0; 6]; poses.len()];
+        let mut scalar = vec![[0.0; 6]; poses.len()];
+        solver.solve_serial(&poses, &mut dispatched);
+        solver.solve_reference(&poses, &mut lanes);
+        solver.solve_one_by_one(&poses, &mut scalar);
+        for k in 0..poses.len() {
+            for i in 0..6 {
+                let (d, l, s) = (dispatched[k][i], lanes[k][i], scalar[k][i]);
+                assert!(
+                    d.to_bits() == s.to_bits() && l.to_bits() == s.to_bits(),
+                    "pose {k} leg {i}: {d} {l} {s}"
+                );
+            }
+        }
+        // And the scalar path is the closed form's, to 1e-14 m.
+        for (pose, lengths) in poses
+            .iter()
+            .zip(&scalar)
+            .filter(|(p, _)| p.roll.radians().is_finite())
+        {
+            let single = g.leg_lengths(pose);
+            for i in 0..6 {
+                assert!((single[i] - lengths[i]).abs() < 1e-14 * single[i].max(1.0));
             }
         }
     }

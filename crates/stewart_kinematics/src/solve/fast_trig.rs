@@ -49,7 +49,21 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() > REDUCTION_LIMIT || x.is_nan() {
         return x.sin_cos();
     }
-    let j = (x * FRAC_2_PI).round();
+    let (s, c, quadrant) = kernel(x * FRAC_2_PI, x);
+    match quadrant & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+/// Steps 1 and 2 for `x` within [`REDUCTION_LIMIT`] (and `scaled = x · 2/π`): the sine and
+/// cosine of the reduced argument and the quadrant `j` (step 3 is the caller's), with no
+/// branch, for the batch's lanes too.
+#[inline(always)]
+pub(crate) fn kernel(scaled: f64, x: f64) -> (f64, f64, i64) {
+    let j = scaled.round();
     let y = ((x - j * PIO2_1) - j * PIO2_2) - j * PIO2_3;
     let z = y * y;
     let s = y + y * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
@@ -58,12 +72,7 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     let w = 1.0 - hz;
     let c = w + (((1.0 - w) - hz) + r);
     // j fits in an i64 exactly since |j| ≤ 2/π · REDUCTION_LIMIT.
-    match (j as i64) & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    (s, c, j as i64)
 }
 
 // The low parts of π/4 and π/2 (π/4 = FRAC_PI_4 + PI_4_LO), and fdlibm's minimax

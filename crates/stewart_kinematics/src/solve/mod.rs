@@ -4,6 +4,7 @@
 
 pub mod actuation;
 pub mod batch;
+mod batch_lanes;
 pub(crate) mod fast_trig;
 pub mod forward;
 pub mod inverse;
