@@ -164,6 +164,22 @@ impl pulp::WithSimd for Lengths<'_> {
     }
 }
 
+/// [`ServoBatch::solve_reference`] as one piece of work for `pulp`, as [`Lengths`].
+struct ServoChunk<'a> {
+    solver: &'a ServoBatch,
+    poses: &'a [Pose],
+    out: &'a mut [[f64; 6]],
+}
+
+impl pulp::WithSimd for ServoChunk<'_> {
+    type Output = Result<(), OutOfReach>;
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) -> Self::Output {
+        self.solver.solve_reference(self.poses, self.out)
+    }
+}
+
 /// The first pose out of reach in a batch: its index and its servo (both from 0).
 pub type OutOfReach = (usize, usize);
 
@@ -196,6 +212,18 @@ impl ServoBatch {
             two_a: 2.0 * a,
             rod_minus_horn: s * s - a * a,
         })
+    }
+
+    /// The leg solver inside.
+    #[inline(always)]
+    pub(super) fn legs(&self) -> &BatchSolver {
+        &self.legs
+    }
+
+    /// `2a`, `s² − a²`, `2a cos β_i`, `2a sin β_i`.
+    #[inline(always)]
+    pub(super) fn constants(&self) -> (f64, f64, &[f64; 6], &[f64; 6]) {
+        (self.two_a, self.rod_minus_horn, &self.ncos, &self.nsin)
     }
 
     /// The six servo angles of one pose, radians, or the index (from 0) of the first servo
@@ -260,13 +288,38 @@ impl ServoBatch {
             .zip(out[..poses.len()].par_chunks_mut(CHUNK))
             .enumerate()
             .try_for_each(|(chunk, (p, o))| {
-                for (k, (pose, slot)) in p.iter().zip(o.iter_mut()).enumerate() {
-                    *slot = self
-                        .angles(pose)
-                        .map_err(|servo| (chunk * CHUNK + k, servo))?;
-                }
-                Ok(())
+                pulp::Arch::new()
+                    .dispatch(ServoChunk {
+                        solver: self,
+                        poses: p,
+                        out: o,
+                    })
+                    .map_err(|(k, servo)| (chunk * CHUNK + k, servo))
             })
+    }
+
+    /// Servo angles of every pose into `out` on the calling thread, eight poses at a time
+    /// where all reach (as the baseline build runs it; the parallel solve runs it compiled
+    /// for the CPU's widest instructions), else pose by pose with
+    /// [`ServoBatch::angles_scalar`] — the same bits either way. The first pose out of reach
+    /// (its index and servo) stops it.
+    ///
+    /// # Panics
+    /// If `out` is shorter than `poses` (a programming error, not a user error).
+    #[inline(always)]
+    pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> Result<(), OutOfReach> {
+        assert!(out.len() >= poses.len(), "output shorter than input");
+        for (group, (p, o)) in poses.chunks(LANES).zip(out.chunks_mut(LANES)).enumerate() {
+            if p.len() == LANES && self.angles_lanes(p, o) {
+                continue;
+            }
+            for (k, (pose, slot)) in p.iter().zip(o.iter_mut()).enumerate() {
+                *slot = self
+                    .angles_scalar(pose)
+                    .map_err(|servo| (group * LANES + k, servo))?;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -467,5 +520,66 @@ mod tests {
                 assert!((single[i] - lengths[i]).abs() < 1e-14 * single[i].max(1.0));
             }
         }
+    }
+
+    #[test]
+    fn dispatched_servo_angles_give_the_scalar_paths_bits_and_its_first_unreachable_pose() {
+        let g = crate::test_support::servo_geometry();
+        let solver = ServoBatch::new(&g).unwrap_or_else(|| panic!("not rotary"));
+        let pose = |k: usize, reach: f64| {
+            let t = k as f64;
+            Pose::from_xyz_rpy_deg(
+                [
+                    reach * 0.02 * (0.37 * t).sin(),
+                    reach * 0.02 * (0.23 * t).cos(),
+                    0.117 + reach * 0.01 * (0.11 * t).sin(),
+                ],
+                [
+                    reach * 8.0 * (0.05 * t).sin(),
+                    reach * 8.0 * (0.07 * t).cos(),
+                    reach * 20.0 * (0.013 * t).sin(),
+                ],
+            )
+        };
+        // Reachable poses (a third of the full spread) in whole groups and a ragged end,
+        // and angles the fast reduction does not take.
+        let mut poses: Vec<Pose> = (0..10_005).map(|k| pose(k, 0.3)).collect();
+        // (Whole turns, so still reachable: 40 000 and −1.2 million of them.)
+        for (k, turns) in [40_000.0, -1.2e6].into_iter().enumerate() {
+            poses[500 + 9 * k].yaw =
+                crate::angle::Angle::from_radians(std::f64::consts::TAU * turns);
+        }
+        let reachable = |p: &Pose| solver.angles_scalar(p).is_ok();
+        assert!(poses.iter().all(reachable));
+        let mut dispatched = vec![[0.0; 6]; poses.len()];
+        let mut reference = vec![[0.0; 6]; poses.len()];
+        solver
+            .solve_parallel(&poses, &mut dispatched)
+            .unwrap_or_else(|e| panic!("{e:?}"));
+        solver
+            .solve_reference(&poses, &mut reference)
+            .unwrap_or_else(|e| panic!("{e:?}"));
+        for (k, p) in poses.iter().enumerate() {
+            let scalar = solver.angles_scalar(p).unwrap_or_else(|e| panic!("{e}"));
+            for i in 0..6 {
+                assert_eq!(dispatched[k][i].to_bits(), scalar[i].to_bits(), "pose {k}");
+                assert_eq!(reference[k][i].to_bits(), scalar[i].to_bits(), "pose {k}");
+            }
+        }
+        // Poses out of reach from a point on: the first one is the error, with its
+        // servo, as the scalar path finds it.
+        let mut far = poses.clone();
+        for (k, p) in far.iter_mut().enumerate().skip(7_777) {
+            *p = pose(k, 3.0);
+        }
+        let first = far
+            .iter()
+            .enumerate()
+            .find_map(|(k, p)| solver.angles_scalar(p).err().map(|servo| (k, servo)))
+            .unwrap_or_else(|| panic!("every pose reaches"));
+        assert!(first.0 >= 7_777);
+        let mut out = vec![[0.0; 6]; far.len()];
+        assert_eq!(solver.solve_reference(&far, &mut out), Err(first));
+        assert_eq!(g.servo_angles_batch(&far), Some(Err(first)));
     }
 }

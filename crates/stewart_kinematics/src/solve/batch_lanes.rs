@@ -7,8 +7,8 @@
 
 use std::f64::consts::FRAC_2_PI;
 
-use super::batch::BatchSolver;
-use super::fast_trig::{self, REDUCTION_LIMIT};
+use super::batch::{BatchSolver, ServoBatch};
+use super::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
 use crate::pose::Pose;
 
 /// Poses computed together.
@@ -32,19 +32,38 @@ fn sin_cos(x: &Lanes) -> (Lanes, Lanes) {
     (sin, cos)
 }
 
+/// The leg vectors `q_i − b_i` of eight poses, by coordinate, leg and lane.
+type LegLanes = [[Lanes; 6]; 3];
+
 impl BatchSolver {
     /// The leg lengths of eight poses into `out`, or `false` (nothing written) when an
     /// angle lies beyond the fast reduction (or is not a number): the caller then takes
     /// the poses one by one.
     #[inline(always)]
     pub(super) fn lengths_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
+        let Some([lx, ly, lz]) = self.legs_lanes(poses) else {
+            return false;
+        };
+        for i in 0..6 {
+            for l in 0..LANES {
+                let (x, y, z) = (lx[i][l], ly[i][l], lz[i][l]);
+                out[l][i] = (x * x + y * y + z * z).sqrt();
+            }
+        }
+        true
+    }
+
+    /// The leg vectors of eight poses ([`BatchSolver::legs`] lane by lane), or `None` when
+    /// an angle lies beyond the fast reduction (or is not a number).
+    #[inline(always)]
+    pub(super) fn legs_lanes(&self, poses: &[Pose]) -> Option<LegLanes> {
         let angle = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
         let roll = angle(|p| p.roll.radians());
         let pitch = angle(|p| p.pitch.radians());
         let yaw = angle(|p| p.yaw.radians());
         let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
         if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
-            return false;
+            return None;
         }
         let (sr, cr) = sin_cos(&roll);
         let (sp, cp) = sin_cos(&pitch);
@@ -69,13 +88,54 @@ impl BatchSolver {
             r[8][l] = cp[l] * cr[l];
         }
         let (ax, ay, az, dx, dy, dz) = self.constants();
+        let mut legs = [[[0.0; LANES]; 6]; 3];
         for i in 0..6 {
             for l in 0..LANES {
-                let x = px[l] + dx[i] + (r[0][l] * ax[i] + r[1][l] * ay[i] + r[2][l] * az[i]);
-                let y = py[l] + dy[i] + (r[3][l] * ax[i] + r[4][l] * ay[i] + r[5][l] * az[i]);
-                let z = pz[l] + dz[i] + (r[6][l] * ax[i] + r[7][l] * ay[i] + r[8][l] * az[i]);
-                out[l][i] = (x * x + y * y + z * z).sqrt();
+                legs[0][i][l] =
+                    px[l] + dx[i] + (r[0][l] * ax[i] + r[1][l] * ay[i] + r[2][l] * az[i]);
+                legs[1][i][l] =
+                    py[l] + dy[i] + (r[3][l] * ax[i] + r[4][l] * ay[i] + r[5][l] * az[i]);
+                legs[2][i][l] =
+                    pz[l] + dz[i] + (r[6][l] * ax[i] + r[7][l] * ay[i] + r[8][l] * az[i]);
             }
+        }
+        Some(legs)
+    }
+}
+
+impl ServoBatch {
+    /// The servo angles (radians) of eight poses into `out`: [`ServoBatch::angles_scalar`]
+    /// lane by lane, so the same bits; `false` (nothing written) when an angle lies beyond
+    /// the fast reduction or a servo of some pose cannot reach its joint — the caller then
+    /// takes the poses one by one, which says which.
+    #[inline(always)]
+    pub(super) fn angles_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
+        let Some([lx, ly, lz]) = self.legs().legs_lanes(poses) else {
+            return false;
+        };
+        let (two_a, rod_minus_horn, ncos, nsin) = self.constants();
+        let mut theta = [[0.0; LANES]; 6];
+        let mut sound = true;
+        for i in 0..6 {
+            for l in 0..LANES {
+                let (x, y, z) = (lx[i][l], ly[i][l], lz[i][l]);
+                let big_l = x * x + y * y + z * z - rod_minus_horn;
+                let m = two_a * z;
+                let n = ncos[i] * x + nsin[i] * y;
+                let c2 = m * m + n * n - big_l * big_l;
+                // Out of reach, or a degenerate closure: the scalar path says which.
+                sound &= c2 >= 0.0 && !(m == 0.0 && n == 0.0);
+                let c = c2.max(0.0).sqrt();
+                let (ty, tx) = (big_l * m - c * n, c * m + big_l * n);
+                sound &= ty.is_finite() && tx.is_finite() && !(ty == 0.0 && tx == 0.0);
+                theta[i][l] = atan2_finite(ty, tx);
+            }
+        }
+        if !sound {
+            return false;
+        }
+        for (l, row) in out.iter_mut().enumerate().take(LANES) {
+            *row = std::array::from_fn(|i| theta[i][l]);
         }
         true
     }

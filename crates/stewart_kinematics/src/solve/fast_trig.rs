@@ -116,6 +116,13 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     if !(y.is_finite() && x.is_finite()) || (y == 0.0 && x == 0.0) {
         return y.atan2(x);
     }
+    atan2_finite(y, x)
+}
+
+/// [`atan2`] of finite `y`, `x`, not both zero, with no branch (selects only), for the
+/// batch's lanes too.
+#[inline(always)]
+pub(crate) fn atan2_finite(y: f64, x: f64) -> f64 {
     let (ay, ax) = (y.abs(), x.abs());
     let steep = ay > ax;
     let a = if steep { ax / ay } else { ay / ax };
