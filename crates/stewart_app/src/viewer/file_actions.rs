@@ -58,10 +58,14 @@ impl ViewerState {
     pub fn open_pose_table(&mut self, path: &Path) {
         let full = absolute(path);
         let name = full.display().to_string();
-        let header = regular_file(&full)
-            .ok()
-            .and_then(|()| std::fs::read_to_string(&full).ok())
-            .and_then(|text| text.lines().next().map(str::to_owned));
+        // The header line alone tells (the file is read whole once, by whichever reader).
+        let header = regular_file(&full).ok().and_then(|()| {
+            use std::io::BufRead as _;
+            let mut line = String::new();
+            let file = std::fs::File::open(&full).ok()?;
+            std::io::BufReader::new(file).read_line(&mut line).ok()?;
+            Some(line)
+        });
         if header.is_some_and(|h| crate::vehicle_table::is_vehicle_header(&h)) {
             self.open_vehicle(&full);
             return;

@@ -57,10 +57,10 @@ impl BatchSolver {
     /// an angle lies beyond the fast reduction (or is not a number).
     #[inline(always)]
     pub(super) fn legs_lanes(&self, poses: &[Pose]) -> Option<LegLanes> {
-        let angle = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
-        let roll = angle(|p| p.roll.radians());
-        let pitch = angle(|p| p.pitch.radians());
-        let yaw = angle(|p| p.yaw.radians());
+        let lanes = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
+        let roll = lanes(|p| p.roll.radians());
+        let pitch = lanes(|p| p.pitch.radians());
+        let yaw = lanes(|p| p.yaw.radians());
         let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
         if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
             return None;
@@ -68,11 +68,10 @@ impl BatchSolver {
         let (sr, cr) = sin_cos(&roll);
         let (sp, cp) = sin_cos(&pitch);
         let (sy, cy) = sin_cos(&yaw);
-        let position = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
         let (px, py, pz) = (
-            position(|p| p.position.x),
-            position(|p| p.position.y),
-            position(|p| p.position.z),
+            lanes(|p| p.position.x),
+            lanes(|p| p.position.y),
+            lanes(|p| p.position.z),
         );
         let mut r = [[0.0; LANES]; 9];
         for l in 0..LANES {
