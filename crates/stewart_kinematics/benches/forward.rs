@@ -1,8 +1,8 @@
 //! Forward kinematics speed: one warm-started solve (from the previous sample's pose, as
 //! along a trajectory or in a control loop) and one cold solve from home.
 //!
-//! `cargo bench -p stewart_kinematics --bench forward`. Targets: a warm solve under 2 µs
-//! for legs, a solve under 5 µs for servo angles (the `servo-desk` preset), and every
+//! `cargo bench -p stewart_kinematics --bench forward`. Targets: a warm solve within 1 µs
+//! for legs and for servo angles (the `servo-desk` preset), and every
 //! assembly mode of Dietmaier's platform (40 real) well under a second.
 
 use criterion::{Criterion, criterion_group, criterion_main};

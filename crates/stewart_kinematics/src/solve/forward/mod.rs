@@ -2,8 +2,8 @@
 //!
 //! Unknowns are the pose coordinates `x = (x, y, z, roll, pitch, yaw)` (metres,
 //! radians); the residual is `f(x) = L(x) − L*`. Each iteration solves `F δ = −f`
-//! with `F = ∂L/∂x` (leg unit vectors for the position, `u_i · (∂R/∂θ)(a_i − c)` for the
-//! angles), then halves the step until `|f|²` decreases enough (Armijo). When the
+//! with `F = ∂L/∂x` (leg unit vectors for the position; for the angles the moment
+//! `w_k · (R(a_i − c) × u_i)` about the axis `w_k` each angle turns the platform about), then halves the step until `|f|²` decreases enough (Armijo). When the
 //! Newton step fails (singular `F` or no decrease), a Levenberg–Marquardt step
 //! `(FᵀF + λI) δ = −Fᵀ f` with growing `λ` is taken instead. Converged when every leg
 //! is within [`ForwardOptions::tolerance`] of its target (default 1e-12 m).
@@ -19,7 +19,7 @@ use thiserror::Error;
 
 use crate::angle::Angle;
 use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::pose::{Pose, rotation_zyx_from_sin_cos};
 
 /// Settings of the forward solver.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -122,21 +122,19 @@ fn pose_of(x: &Vector6<f64>) -> Pose {
     Pose::from_coordinates(std::array::from_fn(|i| x[i]))
 }
 
-/// The elementary rotations about x, y, z by `angles` and their derivatives with respect
-/// to each angle, from one sine/cosine per angle.
-fn rotations_and_derivatives(angles: [f64; 3]) -> ([Matrix3<f64>; 3], [Matrix3<f64>; 3]) {
-    let [(sx, cx), (sy, cy), (sz, cz)] = angles.map(f64::sin_cos);
-    let rot = [
-        Matrix3::new(1.0, 0.0, 0.0, 0.0, cx, -sx, 0.0, sx, cx),
-        Matrix3::new(cy, 0.0, sy, 0.0, 1.0, 0.0, -sy, 0.0, cy),
-        Matrix3::new(cz, -sz, 0.0, sz, cz, 0.0, 0.0, 0.0, 1.0),
+/// The rotation of pose angles `[roll, pitch, yaw]` and the three axes about which a
+/// change of each angle turns the platform, in base-frame axes: `∂R/∂θ_k · v = w_k × (R v)`
+/// with `w_roll = R_z R_y e_x`, `w_pitch = R_z e_y`, `w_yaw = e_z`. One sine and cosine per
+/// angle.
+fn rotation_and_axes(angles: [f64; 3]) -> (Matrix3<f64>, [Vector3<f64>; 3]) {
+    let [(sr, cr), (sp, cp), (sy, cy)] = angles.map(f64::sin_cos);
+    let r = rotation_zyx_from_sin_cos([sr, cr], [sp, cp], [sy, cy]);
+    let axes = [
+        Vector3::new(cy * cp, sy * cp, -sp),
+        Vector3::new(-sy, cy, 0.0),
+        Vector3::z(),
     ];
-    let d = [
-        Matrix3::new(0.0, 0.0, 0.0, 0.0, -sx, -cx, 0.0, cx, -sx),
-        Matrix3::new(-sy, 0.0, cy, 0.0, 0.0, 0.0, -cy, 0.0, -sy),
-        Matrix3::new(-sz, -cz, 0.0, cz, -sz, 0.0, 0.0, 0.0, 0.0),
-    ];
-    (rot, d)
+    (r, axes)
 }
 
 impl Geometry {
@@ -149,23 +147,22 @@ impl Geometry {
         x: &Vector6<f64>,
         target: &[f64; 6],
     ) -> (Vector6<f64>, Matrix6<f64>) {
-        let ([rx, ry, rz], [dx, dy, dz]) = rotations_and_derivatives([x[3], x[4], x[5]]);
-        let rzy = rz * ry;
-        let r = rzy * rx;
-        let dr = [rzy * dx, rz * dy * rx, dz * ry * rx];
+        let (r, axes) = rotation_and_axes([x[3], x[4], x[5]]);
         let position = Vector3::new(x[0], x[1], x[2]);
         let c = self.pivot();
         let mut f = Vector6::zeros();
         let mut d = Matrix6::zeros();
         for i in 0..6 {
-            let arm = self.platform_joints()[i] - c;
-            let leg = position + c + r * arm - anchors[i];
+            let arm = r * (self.platform_joints()[i] - c);
+            let leg = position + c + arm - anchors[i];
             let length = leg.norm();
             let u = leg / length;
             f[i] = length - target[i];
+            // ∂L/∂θ_k = u · (w_k × arm) = w_k · (arm × u).
+            let moment = arm.cross(&u);
             for k in 0..3 {
                 d[(i, k)] = u[k];
-                d[(i, 3 + k)] = u.dot(&(dr[k] * arm));
+                d[(i, 3 + k)] = axes[k].dot(&moment);
             }
         }
         (f, d)

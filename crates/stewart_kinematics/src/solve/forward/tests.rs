@@ -49,6 +49,39 @@ proptest! {
         check_solution(&g, &sol, &lengths, &truth);
     }
 
+    /// The solver's residual is the inverse kinematics' lengths minus the target, and its
+    /// derivative (leg directions and the moments about the turning axes) is the central
+    /// difference of the inverse kinematics, for a platform turning about an offset pivot.
+    #[test]
+    fn residual_derivative_is_the_inverse_kinematics_difference_quotient(
+        x in -0.3f64..0.3, y in -0.3f64..0.3, z in 0.5f64..1.1,
+        r in -60.0f64..60.0, p in -60.0f64..60.0, w in -180.0f64..180.0,
+    ) {
+        let mut params = crate::geometry::GeometryParams::seed();
+        params.pivot = Vector3::new(0.03, -0.02, 0.05);
+        let g = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
+        let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
+        let coords = coordinates(&pose);
+        let target = [0.5; 6];
+        let (f, d) = g.residual_and_derivative(g.base_joints(), &coords, &target);
+        let lengths = g.leg_lengths(&pose);
+        let h = 1e-6;
+        for i in 0..6 {
+            prop_assert!((f[i] - (lengths[i] - 0.5)).abs() < 1e-14);
+        }
+        for k in 0..6 {
+            let mut up = coords;
+            let mut down = coords;
+            up[k] += h;
+            down[k] -= h;
+            let (lu, ld) = (g.leg_lengths(&pose_of(&up)), g.leg_lengths(&pose_of(&down)));
+            for i in 0..6 {
+                let quotient = (lu[i] - ld[i]) / (2.0 * h);
+                prop_assert!((d[(i, k)] - quotient).abs() < 1e-8, "leg {i} coordinate {k}: {} vs {quotient}", d[(i, k)]);
+            }
+        }
+    }
+
     /// Cold start: from the home pose, over a wide range of poses.
     #[test]
     fn forward_inverts_inverse_from_home(
