@@ -112,5 +112,37 @@ fn servo_bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, servo_bench);
+/// The memory traffic of the batch without its arithmetic: each pose's six coordinates
+/// read (48 bytes) and six values written (48 bytes), on both cores in the batch's chunks.
+/// Its rate is the most poses per second the batch could reach if memory were the limit;
+/// 1 M poses (96 MB in all) as in the batch benchmark, and 16 M (1.5 GB, far beyond any
+/// cache) for main memory.
+fn memory_bound_bench(c: &mut Criterion) {
+    use rayon::prelude::*;
+    let mut group = c.benchmark_group("memory_bound");
+    group.sample_size(10);
+    for (name, n) in [
+        ("copy_1M_poses_parallel", 1_000_000),
+        ("copy_16M_poses_parallel", 16_000_000),
+    ] {
+        let input = poses(n);
+        let mut out = vec![[0.0; 6]; n];
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                black_box(&input)
+                    .par_chunks(4096)
+                    .zip(black_box(&mut out).par_chunks_mut(4096))
+                    .for_each(|(p, o)| {
+                        for (p, o) in p.iter().zip(o) {
+                            *o = p.to_coordinates();
+                        }
+                    })
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, servo_bench, memory_bound_bench);
 criterion_main!(benches);
