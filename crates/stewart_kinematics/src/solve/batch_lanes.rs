@@ -4,6 +4,12 @@
 //! [`BatchSolver::solve_serial`] runs it compiled for AVX2 and FMA or AVX-512 (chosen at
 //! run time by `pulp`). The operations are the scalar path's, lane for lane, so the
 //! results are the same bits (a test checks it).
+//!
+//! Layout, measured: the eight rotations and positions go into a [`PosesLanes`] the caller
+//! owns (returned by value it was copied each time), each leg's vector is then made and
+//! used at once (kept in registers, not stored for all six legs), and the lengths are
+//! gathered in a local block of eight rows copied out whole — together 70 → 114 M poses/s
+//! for legs and 42 → 54 M/s for servos on a 2-core AVX-512 machine.
 
 use std::f64::consts::FRAC_2_PI;
 
@@ -32,74 +38,91 @@ fn sin_cos(x: &Lanes) -> (Lanes, Lanes) {
     (sin, cos)
 }
 
-/// The leg vectors `q_i − b_i` of eight poses, by coordinate, leg and lane.
-type LegLanes = [[Lanes; 6]; 3];
+/// The rotation (rows of `R`, by element) and position of eight poses, lane by lane.
+pub(super) struct PosesLanes {
+    r: [Lanes; 9],
+    p: [Lanes; 3],
+}
+
+impl PosesLanes {
+    const ZERO: Self = Self {
+        r: [[0.0; LANES]; 9],
+        p: [[0.0; LANES]; 3],
+    };
+}
 
 impl BatchSolver {
     /// The leg lengths of eight poses into `out`, or `false` (nothing written) when an
     /// angle lies beyond the fast reduction (or is not a number): the caller then takes
     /// the poses one by one.
     #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lane loops index several arrays alike
     pub(super) fn lengths_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
-        let Some([lx, ly, lz]) = self.legs_lanes(poses) else {
+        let mut frames = PosesLanes::ZERO;
+        if !poses_lanes(poses, &mut frames) {
             return false;
-        };
+        }
+        // Rows gathered here and copied out whole: the eight output rows are contiguous.
+        let mut rows = [[0.0; 6]; LANES];
         for i in 0..6 {
+            let [x, y, z] = self.leg_lanes(&frames, i);
             for l in 0..LANES {
-                let (x, y, z) = (lx[i][l], ly[i][l], lz[i][l]);
-                out[l][i] = (x * x + y * y + z * z).sqrt();
+                rows[l][i] = (x[l] * x[l] + y[l] * y[l] + z[l] * z[l]).sqrt();
             }
         }
+        out[..LANES].copy_from_slice(&rows);
         true
     }
 
-    /// The leg vectors of eight poses ([`BatchSolver::legs`] lane by lane), or `None` when
-    /// an angle lies beyond the fast reduction (or is not a number).
+    /// Leg `i`'s vector `q_i − b_i` in eight poses ([`BatchSolver::legs`] lane by lane).
     #[inline(always)]
-    pub(super) fn legs_lanes(&self, poses: &[Pose]) -> Option<LegLanes> {
-        let lanes = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
-        let roll = lanes(|p| p.roll.radians());
-        let pitch = lanes(|p| p.pitch.radians());
-        let yaw = lanes(|p| p.yaw.radians());
-        let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
-        if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
-            return None;
-        }
-        let (sr, cr) = sin_cos(&roll);
-        let (sp, cp) = sin_cos(&pitch);
-        let (sy, cy) = sin_cos(&yaw);
-        let (px, py, pz) = (
-            lanes(|p| p.position.x),
-            lanes(|p| p.position.y),
-            lanes(|p| p.position.z),
-        );
-        let mut r = [[0.0; LANES]; 9];
-        for l in 0..LANES {
-            // Rows of R = Rz(yaw)·Ry(pitch)·Rx(roll), as in `BatchSolver::legs`.
-            r[0][l] = cy[l] * cp[l];
-            r[1][l] = cy[l] * sp[l] * sr[l] - sy[l] * cr[l];
-            r[2][l] = cy[l] * sp[l] * cr[l] + sy[l] * sr[l];
-            r[3][l] = sy[l] * cp[l];
-            r[4][l] = sy[l] * sp[l] * sr[l] + cy[l] * cr[l];
-            r[5][l] = sy[l] * sp[l] * cr[l] - cy[l] * sr[l];
-            r[6][l] = -sp[l];
-            r[7][l] = cp[l] * sr[l];
-            r[8][l] = cp[l] * cr[l];
-        }
+    pub(super) fn leg_lanes(&self, poses: &PosesLanes, i: usize) -> [Lanes; 3] {
         let (ax, ay, az, dx, dy, dz) = self.constants();
-        let mut legs = [[[0.0; LANES]; 6]; 3];
-        for i in 0..6 {
-            for l in 0..LANES {
-                legs[0][i][l] =
-                    px[l] + dx[i] + (r[0][l] * ax[i] + r[1][l] * ay[i] + r[2][l] * az[i]);
-                legs[1][i][l] =
-                    py[l] + dy[i] + (r[3][l] * ax[i] + r[4][l] * ay[i] + r[5][l] * az[i]);
-                legs[2][i][l] =
-                    pz[l] + dz[i] + (r[6][l] * ax[i] + r[7][l] * ay[i] + r[8][l] * az[i]);
-            }
+        let (r, [px, py, pz]) = (&poses.r, &poses.p);
+        let (mut x, mut y, mut z) = ([0.0; LANES], [0.0; LANES], [0.0; LANES]);
+        for l in 0..LANES {
+            x[l] = px[l] + dx[i] + (r[0][l] * ax[i] + r[1][l] * ay[i] + r[2][l] * az[i]);
+            y[l] = py[l] + dy[i] + (r[3][l] * ax[i] + r[4][l] * ay[i] + r[5][l] * az[i]);
+            z[l] = pz[l] + dz[i] + (r[6][l] * ax[i] + r[7][l] * ay[i] + r[8][l] * az[i]);
         }
-        Some(legs)
+        [x, y, z]
     }
+}
+
+/// The rotations and positions of eight poses into `frames`, or `false` when an angle lies
+/// beyond the fast reduction (or is not a number).
+#[inline(always)]
+pub(super) fn poses_lanes(poses: &[Pose], frames: &mut PosesLanes) -> bool {
+    let lanes = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
+    let roll = lanes(|p| p.roll.radians());
+    let pitch = lanes(|p| p.pitch.radians());
+    let yaw = lanes(|p| p.yaw.radians());
+    let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
+    if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
+        return false;
+    }
+    let (sr, cr) = sin_cos(&roll);
+    let (sp, cp) = sin_cos(&pitch);
+    let (sy, cy) = sin_cos(&yaw);
+    let r = &mut frames.r;
+    for l in 0..LANES {
+        // Rows of R = Rz(yaw)·Ry(pitch)·Rx(roll), as in `BatchSolver::legs`.
+        r[0][l] = cy[l] * cp[l];
+        r[1][l] = cy[l] * sp[l] * sr[l] - sy[l] * cr[l];
+        r[2][l] = cy[l] * sp[l] * cr[l] + sy[l] * sr[l];
+        r[3][l] = sy[l] * cp[l];
+        r[4][l] = sy[l] * sp[l] * sr[l] + cy[l] * cr[l];
+        r[5][l] = sy[l] * sp[l] * cr[l] - cy[l] * sr[l];
+        r[6][l] = -sp[l];
+        r[7][l] = cp[l] * sr[l];
+        r[8][l] = cp[l] * cr[l];
+    }
+    frames.p = [
+        lanes(|p| p.position.x),
+        lanes(|p| p.position.y),
+        lanes(|p| p.position.z),
+    ];
+    true
 }
 
 impl ServoBatch {
@@ -109,15 +132,17 @@ impl ServoBatch {
     /// takes the poses one by one, which says which.
     #[inline(always)]
     pub(super) fn angles_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
-        let Some([lx, ly, lz]) = self.legs().legs_lanes(poses) else {
+        let mut frames = PosesLanes::ZERO;
+        if !poses_lanes(poses, &mut frames) {
             return false;
-        };
+        }
         let (two_a, rod_minus_horn, ncos, nsin) = self.constants();
         let mut theta = [[0.0; LANES]; 6];
         let mut sound = true;
         for i in 0..6 {
+            let [lx, ly, lz] = self.legs().leg_lanes(&frames, i);
             for l in 0..LANES {
-                let (x, y, z) = (lx[i][l], ly[i][l], lz[i][l]);
+                let (x, y, z) = (lx[l], ly[l], lz[l]);
                 let big_l = x * x + y * y + z * z - rod_minus_horn;
                 let m = two_a * z;
                 let n = ncos[i] * x + nsin[i] * y;
