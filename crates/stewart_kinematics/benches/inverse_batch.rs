@@ -119,6 +119,7 @@ fn servo_bench(c: &mut Criterion) {
 /// cache) for main memory.
 fn memory_bound_bench(c: &mut Criterion) {
     use rayon::prelude::*;
+    use stewart_kinematics::batch::CHUNK;
     let mut group = c.benchmark_group("memory_bound");
     group.sample_size(10);
     for (name, n) in [
@@ -131,8 +132,8 @@ fn memory_bound_bench(c: &mut Criterion) {
         group.bench_function(name, |b| {
             b.iter(|| {
                 black_box(&input)
-                    .par_chunks(4096)
-                    .zip(black_box(&mut out).par_chunks_mut(4096))
+                    .par_chunks(CHUNK)
+                    .zip(black_box(&mut out).par_chunks_mut(CHUNK))
                     .for_each(|(p, o)| {
                         for (p, o) in p.iter().zip(o) {
                             *o = p.to_coordinates();

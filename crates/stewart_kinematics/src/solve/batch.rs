@@ -14,7 +14,7 @@ use crate::geometry::Geometry;
 use crate::pose::Pose;
 
 /// Poses per rayon task: big enough that scheduling is noise, small enough to balance.
-const CHUNK: usize = 4096;
+pub const CHUNK: usize = 4096;
 
 /// Geometry constants arranged for the batch loop.
 #[derive(Clone, Copy, Debug)]
