@@ -36,12 +36,13 @@ pub mod model;
 pub mod solve;
 
 pub use analysis::{
-    architecture, calibration, checks, cueing, design, differences, forces, sound_layout, workspace,
+    architecture, calibration, checks, cueing, design, differences, dynamics, forces, sound_layout,
+    workspace,
 };
 pub use io::{bounds, scenario, settings, table, text};
 pub use model::{
-    actuator, angle, cueing_settings, geometry, layout, limits, link_settings, pose, rotary, scene,
-    trajectory,
+    actuator, angle, cueing_settings, dynamics_settings, geometry, layout, limits, link_settings,
+    pose, rotary, scene, trajectory,
 };
 pub(crate) use solve::fast_trig;
 pub use solve::{actuation, batch, forward, inverse, jacobian};

@@ -9,6 +9,7 @@ pub mod checks;
 pub mod cueing;
 pub mod design;
 pub mod differences;
+pub mod dynamics;
 pub mod forces;
 pub mod sound_layout;
 pub mod workspace;

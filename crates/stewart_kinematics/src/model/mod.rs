@@ -5,6 +5,7 @@
 pub mod actuator;
 pub mod angle;
 pub mod cueing_settings;
+pub mod dynamics_settings;
 pub mod geometry;
 pub mod layout;
 pub mod limits;

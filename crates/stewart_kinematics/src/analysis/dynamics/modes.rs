@@ -1,0 +1,106 @@
+//! Natural modes at a pose: `K v = ω² M v` solved through the Cholesky factor of `M`.
+
+use nalgebra::{Matrix6, Vector6};
+
+use super::{DynamicsError, DynamicsSettings};
+use crate::forces::Payload;
+use crate::geometry::Geometry;
+use crate::pose::Pose;
+
+/// The names of the six coordinates of twists, wrenches and mode vectors, in order.
+pub const AXES: [&str; 6] = ["x", "y", "z", "rx", "ry", "rz"];
+
+/// Stiffness, mass matrix and natural modes at a pose (about the platform frame's
+/// origin, base-frame axes, SI units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Modes {
+    /// `K = J_aᵀ diag(k) J_a`: N/m, N/rad (= N·m/m), N·m/rad blocks.
+    pub stiffness: Matrix6<f64>,
+    /// `M`: kg, kg·m, kg·m² blocks.
+    pub mass_matrix: Matrix6<f64>,
+    /// Natural frequencies, Hz, ascending.
+    pub frequencies_hz: [f64; 6],
+    /// Mode shapes, unit vectors (x, y, z in m, rx, ry, rz in rad), in the order of the
+    /// frequencies; each with its largest component positive.
+    pub modes: [Vector6<f64>; 6],
+}
+
+impl Modes {
+    /// The components of mode `k` that make up most of it, largest first: `(axis,
+    /// component)` for every component at least a third of the largest.
+    pub fn dominant(&self, k: usize) -> Vec<(&'static str, f64)> {
+        let v = &self.modes[k];
+        let largest = v.amax();
+        let mut parts: Vec<(&'static str, f64)> = (0..6)
+            .filter(|&i| v[i].abs() >= largest / 3.0)
+            .map(|i| (AXES[i], v[i]))
+            .collect();
+        parts.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+        parts
+    }
+}
+
+impl Geometry {
+    /// Stiffness, mass matrix and natural modes at `pose` for the actuator stiffness of
+    /// `dynamics` (which must be given).
+    pub fn modes(
+        &self,
+        pose: &Pose,
+        payload: &Payload,
+        dynamics: &DynamicsSettings,
+    ) -> Result<Modes, DynamicsError> {
+        let k = dynamics
+            .actuator_stiffness
+            .ok_or(DynamicsError::NoStiffness)?;
+        let stiffness = self.stiffness(pose, k)?;
+        let mass_matrix = self.mass_matrix(pose, payload, dynamics)?;
+        let (frequencies_hz, modes) = generalised_modes(&stiffness, &mass_matrix)?;
+        Ok(Modes {
+            stiffness,
+            mass_matrix,
+            frequencies_hz,
+            modes,
+        })
+    }
+}
+
+/// Frequencies (Hz, ascending) and unit mode vectors of `K v = ω² M v`.
+fn generalised_modes(
+    k: &Matrix6<f64>,
+    m: &Matrix6<f64>,
+) -> Result<([f64; 6], [Vector6<f64>; 6]), DynamicsError> {
+    let symmetric = (m + m.transpose()) * 0.5;
+    let cholesky = symmetric
+        .cholesky()
+        .ok_or(DynamicsError::MassMatrixNotPositive)?;
+    let l = cholesky.l();
+    // A positive diagonal that is tiny against the largest is a motion without inertia.
+    let d = l.diagonal();
+    let weighty = d.min() > 1e-9 * d.max();
+    if !weighty {
+        return Err(DynamicsError::MassMatrixNotPositive);
+    }
+    let l_inv = l
+        .try_inverse()
+        .ok_or(DynamicsError::MassMatrixNotPositive)?;
+    let a = l_inv * k * l_inv.transpose();
+    let a = (a + a.transpose()) * 0.5;
+    let eigen = a.symmetric_eigen();
+    let mut order: Vec<usize> = (0..6).collect();
+    order.sort_by(|&i, &j| eigen.eigenvalues[i].total_cmp(&eigen.eigenvalues[j]));
+    let mut frequencies = [0.0; 6];
+    let mut modes = [Vector6::zeros(); 6];
+    for (slot, &i) in order.iter().enumerate() {
+        let lambda = eigen.eigenvalues[i].max(0.0);
+        frequencies[slot] = lambda.sqrt() / std::f64::consts::TAU;
+        let w = eigen.eigenvectors.column(i).into_owned();
+        let mut v = l_inv.transpose() * w;
+        v /= v.norm();
+        let largest = v.iamax();
+        if v[largest] < 0.0 {
+            v = -v;
+        }
+        modes[slot] = v;
+    }
+    Ok((frequencies, modes))
+}

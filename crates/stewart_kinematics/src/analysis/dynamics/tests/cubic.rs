@@ -1,0 +1,163 @@
+//! The cubic configuration (legs along six edges of a cube standing on a vertex, as in
+//! tdehaeze/stewart-simscape): its stiffness about the cube's centre has the closed form
+//! `K = k · diag(2, 2, 2, Hc²/6, Hc²/6, 2 Hc²/3)`, `Hc` the cube's height (its diagonal,
+//! `a √3` for side `a`), and with the mass centred there the six modes decouple.
+
+use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+
+use super::*;
+use crate::geometry::{GeometryParams, PlateJoints};
+
+const SIDE: f64 = 0.3;
+const CENTRE_HEIGHT: f64 = 0.5;
+
+/// The cube's corners to the base frame: its diagonal (1, 1, 1) made vertical, its centre
+/// at `CENTRE_HEIGHT` above the base.
+fn to_base(corner: [f64; 3]) -> Vector3<f64> {
+    let q = Matrix3::from_rows(&[
+        Vector3::new(1.0, -1.0, 0.0).normalize().transpose(),
+        Vector3::new(1.0, 1.0, -2.0).normalize().transpose(),
+        Vector3::new(1.0, 1.0, 1.0).normalize().transpose(),
+    ]);
+    q * (Vector3::from(corner) * (SIDE / 2.0)) + Vector3::new(0.0, 0.0, CENTRE_HEIGHT)
+}
+
+/// Legs along the six edges that touch neither end of the vertical diagonal, each from
+/// 10 % to 90 % of its edge; the platform frame's origin at the cube's centre at home.
+fn cubic_geometry() -> Geometry {
+    let lower = [[1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
+    let mut edges = Vec::new();
+    for l in lower {
+        for axis in 0..3 {
+            if l[axis] < 0.0 {
+                let mut u = l;
+                u[axis] = 1.0;
+                edges.push((to_base(l), to_base(u)));
+            }
+        }
+    }
+    assert_eq!(edges.len(), 6);
+    let centre = Vector3::new(0.0, 0.0, CENTRE_HEIGHT);
+    let base = std::array::from_fn(|i| edges[i].0 + 0.1 * (edges[i].1 - edges[i].0));
+    let platform = std::array::from_fn(|i| edges[i].0 + 0.9 * (edges[i].1 - edges[i].0) - centre);
+    let mut p = GeometryParams::seed();
+    p.base = PlateJoints::Points(base);
+    p.platform = PlateJoints::Points(platform);
+    p.home_height = CENTRE_HEIGHT;
+    Geometry::new(p).unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn the_cubic_configurations_stiffness_is_the_closed_form() {
+    let g = cubic_geometry();
+    let k = 2.5e6;
+    let got = g
+        .stiffness(&g.home_pose(), k)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let hc2 = 3.0 * SIDE * SIDE;
+    let expected = Matrix6::from_diagonal(&Vector6::new(
+        2.0,
+        2.0,
+        2.0,
+        hc2 / 6.0,
+        hc2 / 6.0,
+        2.0 * hc2 / 3.0,
+    )) * k;
+    let gap = (got - expected).amax() / expected.amax();
+    assert!(gap < 1e-9, "{got:.6}\nvs\n{expected:.6} ({gap:e})");
+}
+
+#[test]
+fn a_centred_mass_on_the_cubic_configuration_has_decoupled_modes() {
+    let g = cubic_geometry();
+    let k = 1.0e6;
+    let (mass, inertia) = (40.0, [1.2, 1.5, 2.0]);
+    let payload = Payload::new(
+        mass,
+        Vector3::zeros(),
+        Matrix3::from_diagonal(&Vector3::from(inertia)),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let dynamics = DynamicsSettings {
+        actuator_stiffness: Some(k),
+        ..DynamicsSettings::default()
+    };
+    let modes = g
+        .modes(&g.home_pose(), &payload, &dynamics)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let hc2 = 3.0 * SIDE * SIDE;
+    let w = |stiffness: f64, inertia: f64| (stiffness / inertia).sqrt() / std::f64::consts::TAU;
+    let mut expected = [
+        w(2.0 * k, mass),
+        w(2.0 * k, mass),
+        w(2.0 * k, mass),
+        w(k * hc2 / 6.0, inertia[0]),
+        w(k * hc2 / 6.0, inertia[1]),
+        w(2.0 * k * hc2 / 3.0, inertia[2]),
+    ];
+    expected.sort_by(f64::total_cmp);
+    for (got, want) in modes.frequencies_hz.iter().zip(expected) {
+        assert!((got - want).abs() < 1e-9 * want, "{got} vs {want}");
+    }
+    // The lowest is the pitch mode: k·Hc²/6 over the larger of Ixx and Iyy.
+    assert!(modes.modes[0][4] > 1.0 - 1e-9, "{}", modes.modes[0]);
+    assert_eq!(modes.dominant(0), vec![("ry", modes.modes[0][4])]);
+}
+
+#[test]
+fn modes_solve_the_generalised_eigenproblem() {
+    // K v = ω² M v with M-orthogonal modes, on platforms with heavy legs off-centre.
+    let mut rng = Random(2024);
+    for g in [
+        offset_pivot_geometry(),
+        crate::test_support::servo_geometry(),
+        cubic_geometry(),
+    ] {
+        let size = g.characteristic_length();
+        for _ in 0..20 {
+            let payload = random_payload(&mut rng, size);
+            let dynamics = random_dynamics(&mut rng, size, payload.mass);
+            let modes = g
+                .modes(&g.home_pose(), &payload, &dynamics)
+                .unwrap_or_else(|e| panic!("{e}"));
+            let (kk, mm) = (&modes.stiffness, &modes.mass_matrix);
+            for a in 0..6 {
+                let v = modes.modes[a];
+                assert!((v.norm() - 1.0).abs() < 1e-12);
+                let lambda = (std::f64::consts::TAU * modes.frequencies_hz[a]).powi(2);
+                let residual = (kk * v - lambda * mm * v).norm() / (kk * v).norm();
+                assert!(residual < 1e-9, "residual {residual:e}");
+                for b in 0..a {
+                    let cross = (v.transpose() * mm * modes.modes[b])[0];
+                    let scale = (v.transpose() * mm * v)[0];
+                    assert!(
+                        cross.abs() < 1e-9 * scale,
+                        "modes {a} and {b} not M-orthogonal"
+                    );
+                }
+                if a > 0 {
+                    assert!(modes.frequencies_hz[a] >= modes.frequencies_hz[a - 1]);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_point_mass_has_no_rotational_inertia_and_is_refused() {
+    let g = crate::test_support::paired_geometry();
+    let payload =
+        Payload::new(10.0, Vector3::zeros(), Matrix3::zeros()).unwrap_or_else(|e| panic!("{e}"));
+    let dynamics = DynamicsSettings {
+        actuator_stiffness: Some(1e6),
+        ..DynamicsSettings::default()
+    };
+    assert_eq!(
+        g.modes(&g.home_pose(), &payload, &dynamics),
+        Err(DynamicsError::MassMatrixNotPositive)
+    );
+    assert_eq!(
+        g.modes(&g.home_pose(), &payload, &DynamicsSettings::default()),
+        Err(DynamicsError::NoStiffness)
+    );
+}
