@@ -104,12 +104,20 @@ pub(crate) fn parse(
         .as_ref()
         .map(|p| {
             let f = p.get_ref();
-            Payload::new(
-                f.mass_kg,
-                Vector3::from(f.com_m),
-                nalgebra::Matrix3::from_diagonal(&Vector3::from(f.inertia_kg_m2)),
-            )
-            .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
+            let inertia = inertia_tensor(&f.inertia_kg_m2).ok_or_else(|| {
+                let span = super::locate::span_of(text, "payload.inertia_kg_m2")
+                    .or_else(|| Some(p.span()));
+                src.invalid(
+                    span,
+                    "payload.inertia_kg_m2",
+                    format!(
+                        "takes 3 principal moments (Ixx, Iyy, Izz) or 6 values (Ixx, Iyy, Izz, Ixy, Ixz, Iyz), got {}",
+                        f.inertia_kg_m2.len()
+                    ),
+                )
+            })?;
+            Payload::new(f.mass_kg, Vector3::from(f.com_m), inertia)
+                .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
         })
         .transpose()?;
     let link = checked_table(&src, text, parsed.link.as_ref(), |l| {
@@ -117,6 +125,9 @@ pub(crate) fn parse(
     })?;
     let cueing = checked_table(&src, text, parsed.cueing.as_ref(), |c| {
         c.problem().map(|p| (p.key, p.reason))
+    })?;
+    let dynamics = checked_table(&src, text, parsed.dynamics.as_ref(), |d| {
+        d.problem().map(|p| (p.key, p.reason))
     })?;
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
@@ -133,8 +144,37 @@ pub(crate) fn parse(
         checks,
         link,
         cueing,
+        dynamics,
     };
     Ok(scenario)
+}
+
+/// The inertia tensor from `[payload] inertia_kg_m2`: none (zero), three principal
+/// moments, or the six entries Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the symmetric tensor
+/// (products of inertia as the tensor holds them, with their minus sign, as URDF and
+/// Simscape take them). `None` for any other count.
+pub(crate) fn inertia_tensor(values: &[f64]) -> Option<nalgebra::Matrix3<f64>> {
+    let v = |i: usize| values[i];
+    match values.len() {
+        0 => Some(nalgebra::Matrix3::zeros()),
+        3 => Some(nalgebra::Matrix3::from_diagonal(&Vector3::new(
+            v(0),
+            v(1),
+            v(2),
+        ))),
+        6 => Some(nalgebra::Matrix3::new(
+            v(0),
+            v(3),
+            v(4),
+            v(3),
+            v(1),
+            v(5),
+            v(4),
+            v(5),
+            v(2),
+        )),
+        _ => None,
+    }
 }
 
 /// A table that checks itself (`[link]`, `[cueing]`): its first problem (key, reason) is

@@ -35,6 +35,8 @@ pub(crate) struct ScenarioFile {
     pub link: Option<Spanned<crate::link_settings::LinkSettings>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cueing: Option<Spanned<crate::cueing_settings::CueingSettings>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<Spanned<crate::dynamics_settings::DynamicsSettings>>,
 }
 
 /// `[payload]`: the moving mass (platform and load).
@@ -44,8 +46,10 @@ pub(crate) struct PayloadFile {
     pub mass_kg: f64,
     #[serde(default)]
     pub com_m: [f64; 3],
+    /// Three principal moments (Ixx, Iyy, Izz) or the whole tensor (Ixx, Iyy, Izz, Ixy,
+    /// Ixz, Iyz); none: zero.
     #[serde(default)]
-    pub inertia_kg_m2: [f64; 3],
+    pub inertia_kg_m2: Vec<f64>,
 }
 
 /// `[limits]`: actuator and joint limits beyond the stroke.

@@ -23,7 +23,10 @@
 //! [payload]                        # optional: moving mass for `forces`
 //! mass_kg = 60.0
 //! com_m = [0.0, 0.0, 0.1]          # platform frame
-//! inertia_kg_m2 = [3.0, 3.0, 5.0]  # principal, about the centre of mass, platform axes
+//! inertia_kg_m2 = [3.0, 3.0, 5.0]  # about the centre of mass, platform axes: Ixx, Iyy, Izz
+//!                                  # (or six: Ixx, Iyy, Izz, Ixy, Ixz, Iyz)
+//! [dynamics]                       # optional: stiffness, friction and leg parts
+//! actuator_stiffness = 2.0e7       # see crate::dynamics_settings for every key
 //! [checks]                         # optional thresholds
 //! jump_ratio = 5.0
 //! [link]                           # optional: sending set-points to hardware
@@ -44,6 +47,7 @@ pub use error::{ScenarioError, ScenarioProblem};
 
 use crate::checks::CheckSettings;
 use crate::cueing_settings::CueingSettings;
+use crate::dynamics_settings::DynamicsSettings;
 use crate::forces::Payload;
 use crate::geometry::Geometry;
 use crate::limits::Limits;
@@ -71,6 +75,9 @@ pub struct Scenario {
     pub link: LinkSettings,
     /// How vehicle motion becomes platform motion (`[cueing]`).
     pub cueing: CueingSettings,
+    /// What the actuators add to the moving mass: stiffness, friction, leg parts
+    /// (`[dynamics]`).
+    pub dynamics: DynamicsSettings,
 }
 
 impl Scenario {
@@ -87,6 +94,7 @@ impl Scenario {
             checks: CheckSettings::default(),
             link: LinkSettings::default(),
             cueing: CueingSettings::default(),
+            dynamics: DynamicsSettings::default(),
         }
     }
 

@@ -384,6 +384,59 @@ fn the_cueing_table_reads_writes_back_and_names_bad_values() {
     );
 }
 
+#[test]
+fn the_dynamics_table_and_a_full_inertia_tensor_read_write_back_and_name_bad_values() {
+    let s = parse(&format!(
+        "{GEOMETRY}[payload]\nmass_kg = 50.0\ninertia_kg_m2 = [3.0, 4.0, 5.0, -0.2, 0.1, -0.3]\n[dynamics]\nactuator_stiffness = 2e7\nactuator_friction = 40.0\ncylinder_mass_kg = 1.5\nrod_com_m = 0.2\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let inertia = s.payload.map(|p| p.inertia).unwrap_or_default();
+    // Ixx, Iyy, Izz, Ixy, Ixz, Iyz.
+    assert_eq!(
+        inertia,
+        nalgebra::Matrix3::new(3.0, -0.2, 0.1, -0.2, 4.0, -0.3, 0.1, -0.3, 5.0)
+    );
+    assert_eq!(s.dynamics.actuator_stiffness, Some(2e7));
+    assert_eq!(s.dynamics.actuator_friction, 40.0);
+    assert_eq!(s.dynamics.cylinder_mass_kg, 1.5);
+    assert_eq!(s.dynamics.rod_com_m, 0.2);
+    // Keys not written are zero.
+    assert_eq!(s.dynamics.horn_mass_kg, 0.0);
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}\n{}", s.to_toml()));
+    assert_eq!(back.dynamics, s.dynamics);
+    assert_eq!(back.payload, s.payload);
+    let plain = parse(GEOMETRY).map(|s| s.to_toml()).unwrap_or_default();
+    assert!(!plain.contains("[dynamics]"), "{plain}");
+    for (table, want) in [
+        (
+            "[dynamics]\nactuator_stiffness = 0\n",
+            "s.toml, line 8, column 22: `dynamics.actuator_stiffness` must be a positive stiffness of at most 1e12, got 0",
+        ),
+        (
+            "[dynamics]\nrod_mass_kg = -1.0\n",
+            "s.toml, line 8, column 15: `dynamics.rod_mass_kg` must be a mass in kg from 0 to 1e6, got -1",
+        ),
+        (
+            "[payload]\nmass_kg = 5.0\ninertia_kg_m2 = [1.0, 2.0, 3.0, 4.0]\n",
+            "s.toml, line 9, column 17: `payload.inertia_kg_m2` takes 3 principal moments (Ixx, Iyy, Izz) or 6 values (Ixx, Iyy, Izz, Ixy, Ixz, Iyz), got 4",
+        ),
+    ] {
+        assert_eq!(error(&format!("{GEOMETRY}{table}")), want);
+    }
+    // A tensor that no body has (not positive semi-definite).
+    let not_definite = error(&format!(
+        "{GEOMETRY}[payload]\nmass_kg = 5.0\ninertia_kg_m2 = [1.0, 1.0, 1.0, 2.0, 0.0, 0.0]\n"
+    ));
+    assert!(
+        not_definite.contains("positive semi-definite"),
+        "{not_definite}"
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[dynamics]\nhorn_mass = 1\n"))
+            .starts_with("s.toml, line 8, column 1: unknown field `horn_mass`"),
+    );
+}
+
 /// The seed's platform with both plates written as coordinates (from its circles).
 const COORDINATES: &str = "[geometry]
 home_height = 0.8

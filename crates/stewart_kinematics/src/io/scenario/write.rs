@@ -202,7 +202,7 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             s(PayloadFile {
                 mass_kg: p.mass,
                 com_m: [p.centre_of_mass.x, p.centre_of_mass.y, p.centre_of_mass.z],
-                inertia_kg_m2: [p.inertia[(0, 0)], p.inertia[(1, 1)], p.inertia[(2, 2)]],
+                inertia_kg_m2: inertia_values(&p.inertia),
             })
         }),
         checks: Some(ChecksFile {
@@ -215,11 +215,24 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             .then(|| s(scenario.link.clone())),
         cueing: (scenario.cueing != crate::cueing_settings::CueingSettings::default())
             .then(|| s(scenario.cueing.clone())),
+        dynamics: (scenario.dynamics != crate::dynamics_settings::DynamicsSettings::default())
+            .then(|| s(scenario.dynamics.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
     let text =
         toml::to_string(&file).unwrap_or_else(|e| unreachable!("scenario serialisation: {e}"));
     one_point_per_line(&text)
+}
+
+/// `[payload] inertia_kg_m2`: the three principal moments when the tensor is diagonal,
+/// else its six entries (Ixx, Iyy, Izz, Ixy, Ixz, Iyz).
+fn inertia_values(i: &nalgebra::Matrix3<f64>) -> Vec<f64> {
+    let diagonal = vec![i[(0, 0)], i[(1, 1)], i[(2, 2)]];
+    if i[(0, 1)] == 0.0 && i[(0, 2)] == 0.0 && i[(1, 2)] == 0.0 {
+        diagonal
+    } else {
+        [diagonal, vec![i[(0, 1)], i[(0, 2)], i[(1, 2)]]].concat()
+    }
 }
 
 /// `key = [[x, y, z], [x, y, z], …]` written one point per line, as people write them.

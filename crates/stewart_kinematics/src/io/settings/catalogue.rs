@@ -5,6 +5,7 @@
 //! beyond them wherever the model accepts them.
 
 use super::cueing::{AXES, CueingKey};
+use super::dynamics::DynamicsKey;
 use super::target::{
     ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
 };
@@ -64,6 +65,8 @@ pub(super) fn build() -> Vec<Setting> {
     checks(&mut d);
     d.group = Group::Cueing;
     cueing(&mut d);
+    d.group = Group::Dynamics;
+    dynamics(&mut d);
     d.list
 }
 
@@ -607,5 +610,84 @@ fn cueing(d: &mut Declare) {
             format!("reference {axis}"),
         );
         add(key, label, Metre, (-1.0, 1.0), CueingKey::Reference(i));
+    }
+}
+
+/// The `[dynamics]` table's settings: key (in its table), label, unit and slider range;
+/// every default is zero but the stiffness's, which is absent until given.
+fn dynamics(d: &mut Declare) {
+    use DynamicsKey::*;
+    use Unit::{Kilogram, KilogramSquareMetre};
+    let rows: [(&str, &str, Unit, (f64, f64), DynamicsKey); 11] = [
+        (
+            "actuator_stiffness",
+            "actuator stiffness",
+            Unit::Stiffness,
+            (1e3, 1e8),
+            Stiffness,
+        ),
+        (
+            "actuator_friction",
+            "actuator friction",
+            Unit::Friction,
+            (0.0, 1e4),
+            Friction,
+        ),
+        (
+            "cylinder_mass_kg",
+            "cylinder mass",
+            Kilogram,
+            (0.0, 20.0),
+            CylinderMass,
+        ),
+        (
+            "cylinder_com_m",
+            "cylinder centre of mass",
+            Metre,
+            (0.0, 1.0),
+            CylinderCom,
+        ),
+        (
+            "cylinder_inertia_kg_m2",
+            "cylinder inertia",
+            KilogramSquareMetre,
+            (0.0, 1.0),
+            CylinderInertia,
+        ),
+        ("rod_mass_kg", "rod mass", Kilogram, (0.0, 20.0), RodMass),
+        ("rod_com_m", "rod centre of mass", Metre, (0.0, 1.0), RodCom),
+        (
+            "rod_inertia_kg_m2",
+            "rod inertia",
+            KilogramSquareMetre,
+            (0.0, 1.0),
+            RodInertia,
+        ),
+        ("horn_mass_kg", "horn mass", Kilogram, (0.0, 0.5), HornMass),
+        (
+            "horn_com_m",
+            "horn centre of mass",
+            Metre,
+            (0.0, 0.05),
+            HornCom,
+        ),
+        (
+            "horn_inertia_kg_m2",
+            "horn inertia",
+            KilogramSquareMetre,
+            (0.0, 1e-3),
+            HornInertia,
+        ),
+    ];
+    for (key, label, unit, range, target) in rows {
+        let default = if target == Stiffness { Off } else { Value(0.0) };
+        d.add(
+            format!("dynamics.{key}"),
+            label,
+            unit,
+            range,
+            default,
+            Target::Dynamics(target),
+        );
     }
 }

@@ -10,6 +10,7 @@
 mod actuator_kind;
 mod catalogue;
 mod cueing;
+mod dynamics;
 mod kinds;
 mod target;
 
@@ -21,6 +22,7 @@ use thiserror::Error;
 use crate::scenario::Scenario;
 pub use actuator_kind::{SwitchError, switch_actuator};
 pub use cueing::{AXES, CueingKey};
+pub use dynamics::DynamicsKey;
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
     ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,
@@ -58,6 +60,14 @@ pub enum Unit {
     RadianPerSecond,
     /// A switch: 1 on (`true`), 0 off (`false`).
     Switch,
+    /// Kilograms.
+    Kilogram,
+    /// Kilogram square metres (moments of inertia).
+    KilogramSquareMetre,
+    /// An actuator's stiffness: N/m for linear legs, N·m/rad for servos.
+    Stiffness,
+    /// An actuator's viscous friction: N·s/m for linear legs, N·m·s/rad for servos.
+    Friction,
 }
 
 impl Unit {
@@ -76,6 +86,22 @@ impl Unit {
             Unit::DegreePerSecondCubed => "°/s³",
             Unit::RadianPerSecond => "rad/s",
             Unit::Count | Unit::Ratio | Unit::Switch => "",
+            Unit::Kilogram => "kg",
+            Unit::KilogramSquareMetre => "kg·m²",
+            Unit::Stiffness => "N/m or N·m/rad",
+            Unit::Friction => "N·s/m or N·m·s/rad",
+        }
+    }
+
+    /// The symbol for a platform whose actuators are of `kind` (stiffness and friction
+    /// differ between legs and servos; every other unit is [`Unit::symbol`]).
+    pub fn symbol_for(self, kind: ActuatorKind) -> &'static str {
+        match (self, kind) {
+            (Unit::Stiffness, ActuatorKind::Linear) => "N/m",
+            (Unit::Stiffness, ActuatorKind::Rotary) => "N·m/rad",
+            (Unit::Friction, ActuatorKind::Linear) => "N·s/m",
+            (Unit::Friction, ActuatorKind::Rotary) => "N·m·s/rad",
+            _ => self.symbol(),
         }
     }
 
@@ -99,6 +125,10 @@ impl Unit {
             Unit::Ratio => symmetric(bounds::RATIO),
             Unit::RadianPerSecond => symmetric(crate::cueing_settings::MAX_OMEGA),
             Unit::Switch => 0.0..=1.0,
+            Unit::Kilogram => symmetric(bounds::MASS_KG),
+            Unit::KilogramSquareMetre => symmetric(bounds::INERTIA_KG_M2),
+            Unit::Stiffness => symmetric(crate::dynamics_settings::MAX_STIFFNESS),
+            Unit::Friction => symmetric(crate::dynamics_settings::MAX_FRICTION),
         }
     }
 }
@@ -160,6 +190,8 @@ pub enum Group {
     Checks,
     /// `[cueing]`.
     Cueing,
+    /// `[dynamics]`.
+    Dynamics,
 }
 
 /// Why a setting could not be read or written.

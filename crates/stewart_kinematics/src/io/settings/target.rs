@@ -1,6 +1,7 @@
 //! What each setting reads and writes in a [`Scenario`].
 
 use super::cueing::CueingKey;
+use super::dynamics::DynamicsKey;
 use crate::actuator::Actuator;
 use crate::angle::Angle;
 use crate::geometry::{Geometry, Plate, PlateJoints};
@@ -150,6 +151,8 @@ pub enum Target {
     Check(CheckKey),
     /// A number or switch of `[cueing]`.
     Cueing(CueingKey),
+    /// A number of `[dynamics]`.
+    Dynamics(DynamicsKey),
 }
 
 impl Target {
@@ -160,6 +163,7 @@ impl Target {
             Target::Limit(_)
                 | Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
                 | Target::Actuator(ActuatorKey::ServoMin | ActuatorKey::ServoMax)
+                | Target::Dynamics(DynamicsKey::Stiffness)
         )
     }
 
@@ -174,6 +178,7 @@ impl Target {
             | Target::Limit(LimitKey::LegSpeed | LimitKey::LegAccel | LimitKey::LegJerk) => {
                 Some(ActuatorKind::Linear)
             }
+            Target::Dynamics(key) => key.kind(),
             _ => None,
         }
     }
@@ -274,6 +279,7 @@ impl Target {
                 })
             }
             Target::Cueing(key) => super::cueing::get(&scenario.cueing, key),
+            Target::Dynamics(key) => super::dynamics::get(&scenario.dynamics, key),
         }
     }
 
@@ -313,6 +319,7 @@ impl Target {
                 Ok(())
             }
             Target::Cueing(key) => super::cueing::set(&mut scenario.cueing, key, v),
+            Target::Dynamics(key) => super::dynamics::set(&mut scenario.dynamics, key, value),
         }
     }
 }

@@ -550,3 +550,64 @@ fn cueing_settings_take_numbers_and_switches_and_refuse_what_cannot_work() {
     assert!(refused("cueing.translation_scale=off").contains("cannot be switched off"));
     assert!(refused("cueing.washout=1").contains("unknown setting"));
 }
+
+#[test]
+fn dynamics_settings_are_read_written_and_refused_by_key() {
+    let mut seed = preset("seed");
+    apply_all(
+        &mut seed,
+        [
+            "dynamics.actuator_stiffness=2e7",
+            "dynamics.cylinder_mass_kg=1.5",
+            "dynamics.rod_com_m=0.2",
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(seed.dynamics.actuator_stiffness, Some(2e7));
+    assert_eq!(seed.dynamics.cylinder_mass_kg, 1.5);
+    assert_eq!(
+        find("dynamics.rod_com_m").map(|s| s.get(&seed)),
+        Ok(Some(0.2))
+    );
+    // The file holds what the settings say.
+    let text = seed.to_toml();
+    assert_eq!(lookup(&text, "dynamics.cylinder_mass_kg"), Some(1.5));
+    // The stiffness may be removed; the other values cannot be switched off.
+    apply_all(&mut seed, ["dynamics.actuator_stiffness=off"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(seed.dynamics.actuator_stiffness, None);
+    let refused = |s: &mut Scenario, text: &str| match apply_all(s, [text]) {
+        Ok(()) => panic!("{text} accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert_eq!(
+        refused(&mut seed, "dynamics.actuator_stiffness=0"),
+        "`dynamics.actuator_stiffness` = 0 refused: must be a positive stiffness of at most 1e12, got 0"
+    );
+    assert_eq!(
+        refused(&mut seed, "dynamics.rod_mass_kg=-2"),
+        "`dynamics.rod_mass_kg` = -2 refused: must be a mass in kg from 0 to 1e6, got -2"
+    );
+    assert_eq!(
+        refused(&mut seed, "dynamics.rod_mass_kg=off"),
+        "`dynamics.rod_mass_kg` = off refused: it cannot be switched off"
+    );
+    assert!(refused(&mut seed, "dynamics.horn_mass_kg=0.1").contains("rotary platforms only"));
+    let mut desk = preset("servo-desk");
+    assert!(refused(&mut desk, "dynamics.cylinder_mass_kg=1").contains("linear legs only"));
+    apply_all(&mut desk, ["dynamics.horn_mass_kg=0.01"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(desk.dynamics.horn_mass_kg, 0.01);
+    // Stiffness and friction are in the units of the platform's actuators.
+    let stiffness = find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        stiffness
+            .unit
+            .symbol_for(crate::actuator::ActuatorKind::Linear),
+        "N/m"
+    );
+    assert_eq!(
+        stiffness
+            .unit
+            .symbol_for(crate::actuator::ActuatorKind::Rotary),
+        "N·m/rad"
+    );
+}
