@@ -601,13 +601,13 @@ fn dynamics_settings_are_read_written_and_refused_by_key() {
     assert_eq!(
         stiffness
             .unit
-            .symbol_for(crate::actuator::ActuatorKind::Linear),
+            .symbol_for(ActuatorKind::Linear),
         "N/m"
     );
     assert_eq!(
         stiffness
             .unit
-            .symbol_for(crate::actuator::ActuatorKind::Rotary),
+            .symbol_for(ActuatorKind::Rotary),
         "N·m/rad"
     );
 }
