@@ -487,10 +487,10 @@ fn checks(d: &mut Declare) {
 }
 
 /// A setting declared by key (in its table), label, unit, slider range and target.
-type Row = (&'static str, &'static str, Unit, (f64, f64), CueingKey);
+type Row<K> = (&'static str, &'static str, Unit, (f64, f64), K);
 
 /// The `[cueing]` table's settings; each default is the table's own.
-const CUEING: [Row; 15] = {
+const CUEING: [Row<CueingKey>; 15] = {
     use CueingKey::*;
     let (scale, omega, zeta) = ((0.0, 2.0), (0.05, 20.0), (0.1, 2.0));
     let switch = (0.0, 1.0);
@@ -618,7 +618,7 @@ fn cueing(d: &mut Declare) {
 fn dynamics(d: &mut Declare) {
     use DynamicsKey::*;
     use Unit::{Kilogram, KilogramSquareMetre};
-    let rows: [(&str, &str, Unit, (f64, f64), DynamicsKey); 11] = [
+    let rows: [Row<DynamicsKey>; 11] = [
         (
             "actuator_stiffness",
             "actuator stiffness",
