@@ -46,6 +46,9 @@ pub enum Command {
     Workspace(WorkspaceArgs),
     /// Leg forces for a payload along the trajectory (static and dynamic), as CSV.
     Forces(ForcesArgs),
+    /// Stiffness, mass matrix and natural modes at a pose (the scenario's `[payload]` and
+    /// `[dynamics]`): the six frequencies with each mode's motion, as text or JSON.
+    Modes(ModesArgs),
     /// The stroke (or servo range) a motion envelope needs: the smallest and largest
     /// value of each leg length (servo angle) over a 6-D box of poses, where each occurs,
     /// and the worst conditioning inside the box.
@@ -544,6 +547,44 @@ pub struct WorkspaceArgs {
     /// The language of the figure's words: `zh` or `en` (default: the environment's).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
     pub lang: Option<Lang>,
+}
+
+/// Arguments of `stewart modes`.
+#[derive(Debug, Args)]
+pub struct ModesArgs {
+    /// The scenario: a preset or a file, with `[payload]` and `[dynamics]
+    /// actuator_stiffness`.
+    #[command(flatten)]
+    pub scenario: ScenarioArgs,
+    /// The pose X,Y,Z,ROLL,PITCH,YAW (metres, degrees); default: home.
+    #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", value_parser = parse_pose, allow_hyphen_values = true)]
+    pub pose: Option<[f64; 6]>,
+    /// Also find the lowest natural frequency over the trajectory and where it occurs.
+    #[arg(long)]
+    pub along_trajectory: bool,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+/// X,Y,Z,ROLL,PITCH,YAW: metres within ±1000 m, degrees within ±3600°.
+pub fn parse_pose(text: &str) -> Result<[f64; 6], String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() != 6 {
+        return Err(format!(
+            "`{text}` is not six comma-separated numbers (x, y, z in metres, roll, pitch, yaw in degrees)"
+        ));
+    }
+    let position = parse_position(&parts[..3].join(","))?;
+    let angles = parse_angles(&parts[3..].join(","))?;
+    Ok([
+        position[0],
+        position[1],
+        position[2],
+        angles[0],
+        angles[1],
+        angles[2],
+    ])
 }
 
 /// Arguments of `stewart forces`.

@@ -48,6 +48,7 @@ fn main() -> ExitCode {
         Some(Command::Calibrate(args)) => commands::calibrate::run(&args),
         Some(Command::Workspace(args)) => commands::workspace::run(&args),
         Some(Command::Forces(args)) => commands::forces::run(&args),
+        Some(Command::Modes(args)) => commands::modes::run(&args),
         Some(Command::Design(args)) => commands::design::run(&args),
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Plot(args)) => commands::plot::run(&args),

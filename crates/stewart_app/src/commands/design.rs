@@ -57,7 +57,7 @@ pub fn run(args: &DesignArgs) -> Result<ExitCode> {
 }
 
 /// A pose in words: `x +0.1000 y -0.1000 z 0.9000 m, roll +10.00° pitch …`.
-fn pose_words(p: &[f64; 6]) -> String {
+pub(crate) fn pose_words(p: &[f64; 6]) -> String {
     format!(
         "x {:+.4} y {:+.4} z {:.4} m, roll {:+.2}° pitch {:+.2}° yaw {:+.2}°",
         p[0], p[1], p[2], p[3], p[4], p[5]

@@ -41,7 +41,7 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
             scenario.name
         ));
     }
-    let series = g.forces_along(&scenario.motion.sample(), &payload)?;
+    let series = g.efforts_along(&scenario.motion.sample(), &payload, &scenario.dynamics)?;
     // Leg forces F (N) or servo torques T (N·m).
     let letter = g.quantity().effort.0;
     let mut header = vec!["t".to_owned()];

@@ -9,6 +9,7 @@ pub mod firmware;
 pub mod fk;
 pub mod forces;
 pub mod link;
+pub mod modes;
 pub mod plot;
 pub mod render;
 pub mod settings;

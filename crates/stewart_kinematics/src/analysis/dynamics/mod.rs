@@ -42,7 +42,7 @@ use crate::forces::{Payload, STANDARD_GRAVITY};
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 pub use along::{LowestMode, lowest_mode_along, motion_states};
-pub use modes::{AXES, Modes};
+pub use modes::{AXES, Modes, dominant};
 use parts::{Leg, LegTrouble, joint_acceleration, wrench_at};
 
 /// The platform's pose and how it moves: the twist and its rate about the pivot point

@@ -29,15 +29,20 @@ impl Modes {
     /// The components of mode `k` that make up most of it, largest first: `(axis,
     /// component)` for every component at least a third of the largest.
     pub fn dominant(&self, k: usize) -> Vec<(&'static str, f64)> {
-        let v = &self.modes[k];
-        let largest = v.amax();
-        let mut parts: Vec<(&'static str, f64)> = (0..6)
-            .filter(|&i| v[i].abs() >= largest / 3.0)
-            .map(|i| (AXES[i], v[i]))
-            .collect();
-        parts.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
-        parts
+        dominant(&self.modes[k])
     }
+}
+
+/// The components of a mode vector that make up most of it, largest first: `(axis,
+/// component)` for every component at least a third of the largest.
+pub fn dominant(v: &Vector6<f64>) -> Vec<(&'static str, f64)> {
+    let largest = v.amax();
+    let mut parts: Vec<(&'static str, f64)> = (0..6)
+        .filter(|&i| v[i].abs() >= largest / 3.0)
+        .map(|i| (AXES[i], v[i]))
+        .collect();
+    parts.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+    parts
 }
 
 impl Geometry {

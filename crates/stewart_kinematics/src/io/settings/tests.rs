@@ -598,16 +598,6 @@ fn dynamics_settings_are_read_written_and_refused_by_key() {
     assert_eq!(desk.dynamics.horn_mass_kg, 0.01);
     // Stiffness and friction are in the units of the platform's actuators.
     let stiffness = find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(
-        stiffness
-            .unit
-            .symbol_for(ActuatorKind::Linear),
-        "N/m"
-    );
-    assert_eq!(
-        stiffness
-            .unit
-            .symbol_for(ActuatorKind::Rotary),
-        "N·m/rad"
-    );
+    assert_eq!(stiffness.unit.symbol_for(ActuatorKind::Linear), "N/m");
+    assert_eq!(stiffness.unit.symbol_for(ActuatorKind::Rotary), "N·m/rad");
 }

@@ -1,0 +1,169 @@
+//! `stewart modes`: the Cartesian stiffness, the mass matrix and the natural modes at a
+//! pose, from the scenario's `[payload]` and `[dynamics]`; text for people, JSON for
+//! programs.
+
+use std::fmt::Write as _;
+use std::process::ExitCode;
+
+use anyhow::{Result, anyhow};
+use nalgebra::{Matrix6, Vector6};
+use serde::Serialize;
+use stewart_kinematics::dynamics::{AXES, LowestMode, Modes, dominant, lowest_mode_along};
+use stewart_kinematics::{Pose, Scenario};
+
+use crate::cli::{Format, ModesArgs};
+use crate::commands::design::pose_words;
+use crate::output;
+use crate::source;
+
+/// A pose as JSON.
+#[derive(Serialize)]
+struct JsonPose {
+    x: f64,
+    y: f64,
+    z: f64,
+    roll_deg: f64,
+    pitch_deg: f64,
+    yaw_deg: f64,
+}
+
+impl JsonPose {
+    fn of(p: &[f64; 6]) -> Self {
+        Self {
+            x: p[0],
+            y: p[1],
+            z: p[2],
+            roll_deg: p[3],
+            pitch_deg: p[4],
+            yaw_deg: p[5],
+        }
+    }
+}
+
+/// Where the lowest frequency over the motion occurs, as JSON.
+#[derive(Serialize)]
+struct JsonLowest {
+    time_s: f64,
+    pose: JsonPose,
+    frequency_hz: f64,
+    mode: [f64; 6],
+}
+
+/// The JSON document.
+#[derive(Serialize)]
+struct JsonReport<'a> {
+    scenario: &'a str,
+    pose: JsonPose,
+    /// Rows and columns of both matrices and the components of the modes.
+    axes: [&'static str; 6],
+    reference: &'static str,
+    stiffness: [[f64; 6]; 6],
+    mass_matrix: [[f64; 6]; 6],
+    frequencies_hz: [f64; 6],
+    modes: [[f64; 6]; 6],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lowest_along_trajectory: Option<JsonLowest>,
+}
+
+fn rows(m: &Matrix6<f64>) -> [[f64; 6]; 6] {
+    std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)]))
+}
+
+fn components(v: &Vector6<f64>) -> [f64; 6] {
+    std::array::from_fn(|i| v[i])
+}
+
+fn pose_numbers(p: &Pose) -> [f64; 6] {
+    let [r, pi, y] = p.rpy_degrees();
+    [p.position.x, p.position.y, p.position.z, r, pi, y]
+}
+
+/// Run the command.
+pub fn run(args: &ModesArgs) -> Result<ExitCode> {
+    let scenario = source::load(&args.scenario)?;
+    let g = &scenario.geometry;
+    let payload = scenario.payload.ok_or_else(|| {
+        anyhow!(
+            "scenario `{}` has no [payload] table: the modes need the moving mass and its inertia (mass_kg, com_m, inertia_kg_m2)",
+            scenario.name
+        )
+    })?;
+    let pose = args.pose.map_or_else(
+        || g.home_pose(),
+        |p| Pose::from_xyz_rpy_deg([p[0], p[1], p[2]], [p[3], p[4], p[5]]),
+    );
+    let at = pose_words(&pose_numbers(&pose));
+    let modes = g
+        .modes(&pose, &payload, &scenario.dynamics)
+        .map_err(|e| anyhow!("at {at}: {e}"))?;
+    let lowest = if args.along_trajectory {
+        let samples = scenario.motion.sample();
+        lowest_mode_along(g, &samples, &payload, &scenario.dynamics)
+            .map_err(|(t, e)| anyhow!("along the trajectory at t = {t} s: {e}"))?
+    } else {
+        None
+    };
+    let text = match args.format {
+        Format::Text => text(&scenario, &at, &modes, lowest.as_ref()),
+        Format::Json => {
+            let json = JsonReport {
+                scenario: &scenario.name,
+                pose: JsonPose::of(&pose_numbers(&pose)),
+                axes: AXES,
+                reference: "the platform frame's origin, base-frame axes; SI units",
+                stiffness: rows(&modes.stiffness),
+                mass_matrix: rows(&modes.mass_matrix),
+                frequencies_hz: modes.frequencies_hz,
+                modes: modes.modes.map(|v| components(&v)),
+                lowest_along_trajectory: lowest.as_ref().map(|l| JsonLowest {
+                    time_s: l.time,
+                    pose: JsonPose::of(&pose_numbers(&l.pose)),
+                    frequency_hz: l.frequency_hz,
+                    mode: components(&l.mode),
+                }),
+            };
+            serde_json::to_string_pretty(&json)? + "\n"
+        }
+    };
+    output::stdout(text.as_bytes())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// A mode's motion in words: its largest components, `rz 0.98, x −0.20`.
+fn motion_words(v: &Vector6<f64>) -> String {
+    dominant(v)
+        .iter()
+        .map(|(axis, c)| format!("{axis} {c:+.2}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The report in words.
+fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode>) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "Natural modes of `{}` at {at} (about the platform frame's origin; mode vectors in m and rad):",
+        scenario.name
+    );
+    for (k, f) in modes.frequencies_hz.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "  mode {}: {:>10.3} Hz   {}",
+            k + 1,
+            f,
+            motion_words(&modes.modes[k])
+        );
+    }
+    if let Some(l) = lowest {
+        let _ = writeln!(
+            out,
+            "Lowest over the trajectory: {:.3} Hz at t = {} s ({}), {}",
+            l.frequency_hz,
+            l.time,
+            pose_words(&pose_numbers(&l.pose)),
+            motion_words(&l.mode)
+        );
+    }
+    out
+}
