@@ -149,7 +149,7 @@ fn modes_refuse_what_they_cannot_use_with_one_located_error() {
     let dir = tempdir();
     let cases = [
         (
-            format!("{PLATFORM}"),
+            PLATFORM.to_owned(),
             vec![],
             "actuator stiffness is not given",
         ),
