@@ -238,3 +238,20 @@ fn forces_add_the_legs_and_friction_of_the_dynamics_table() {
     );
     assert_eq!(stdout(&stewart(&["forces", "--scenario", &zero])), before);
 }
+
+#[test]
+fn the_readmes_modes_example_prints_what_the_readme_shows() {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/scenarios/heavy-legs.toml"
+    );
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let o = stewart(&["modes", "--scenario", file]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert_eq!(text.lines().count(), 7);
+    for line in text.lines() {
+        assert!(readme.contains(line), "README lacks: {line}");
+    }
+}
