@@ -4,6 +4,7 @@
 mod chinese;
 mod cueing;
 mod design;
+mod dynamics;
 mod export;
 mod files;
 mod legs;

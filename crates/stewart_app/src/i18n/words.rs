@@ -3,7 +3,7 @@
 //! The core keeps its English (the command line and the files use it); English here
 //! reproduces it exactly, which a test checks.
 
-use stewart_kinematics::actuator::Quantity;
+use stewart_kinematics::actuator::{ActuatorKind, Quantity};
 use stewart_kinematics::architecture::ArchitectureReport;
 use stewart_kinematics::settings::{Setting, TrajectoryChoice};
 use stewart_kinematics::{Finding, FindingKind};
@@ -64,12 +64,18 @@ pub fn setting_label(lang: Lang, setting: &Setting) -> String {
     lang.fmt(&key, &[("n", &n), ("axis", &axis)])
 }
 
-/// A setting's label with its unit, as sliders show it: `base radius (m)`.
-pub fn setting_label_with_unit(lang: Lang, setting: &Setting) -> String {
-    match setting.unit.symbol() {
+/// A setting's label with its unit for a platform of `kind`'s actuators, as sliders
+/// show it: `base radius (m)`, `actuator stiffness (N·m/rad)`.
+pub fn setting_label_with_unit(lang: Lang, setting: &Setting, kind: ActuatorKind) -> String {
+    match setting.unit.symbol_for(kind) {
         "" => setting_label(lang, setting),
         unit => format!("{} ({unit})", setting_label(lang, setting)),
     }
+}
+
+/// What the actuators exert: `leg force` / `腿力`, `servo torque` / `舵机力矩`.
+pub fn effort_name(lang: Lang, q: &Quantity) -> &'static str {
+    lang.tr_kind("quantity.effort", q.actuator)
 }
 
 /// What is plotted: `leg length` / `腿长`, `servo angle` / `舵机角`.

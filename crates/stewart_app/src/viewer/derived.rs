@@ -24,6 +24,9 @@ pub struct Derived {
     pub layout: Option<Layout>,
     /// Whether some plotted value lies beyond a stroke or servo limit.
     pub beyond_limits: bool,
+    /// The actuator efforts (N or N·m, with the legs' parts and friction) at those
+    /// times, when the scenario has a payload; NaN where none is determined.
+    pub efforts: Option<Vec<[f64; 6]>>,
     /// The nearest layout that is not architecturally singular, once asked for (it is
     /// searched only when the report finds the geometry singular).
     sound_layout: Option<Option<SoundLayout>>,
@@ -39,6 +42,7 @@ impl Derived {
             centres: Vec::new(),
             layout: None,
             beyond_limits: false,
+            efforts: None,
             sound_layout: None,
             report: ReportWorker::default(),
         };
@@ -80,6 +84,19 @@ impl Derived {
             .flatten()
             .any(|&v| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m));
         self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
+        self.efforts = scenario.payload.map(|payload| {
+            let samples = stewart_kinematics::Samples {
+                times: self.times.clone(),
+                poses,
+            };
+            stewart_kinematics::dynamics::motion_states(&samples)
+                .iter()
+                .map(|state| {
+                    g.inverse_dynamics(state, &payload, &scenario.dynamics)
+                        .unwrap_or([f64::NAN; 6])
+                })
+                .collect()
+        });
         self.report.request(scenario.clone());
     }
 

@@ -239,6 +239,12 @@ impl Document {
         (&self.derived.times, &self.derived.lengths)
     }
 
+    /// The actuator efforts at the plotted times (N or N·m), when there is a payload.
+    pub fn plot_efforts(&self) -> Option<(&[f64], &[[f64; 6]])> {
+        let efforts = self.derived.efforts.as_ref()?;
+        Some((&self.derived.times, efforts))
+    }
+
     /// The pre-flight report of the trajectory, once computed (off the UI thread).
     pub fn report(&self) -> Option<&CheckReport> {
         self.derived.report()

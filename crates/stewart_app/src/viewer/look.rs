@@ -33,6 +33,8 @@ pub struct Look {
     pub labels: bool,
     /// The head-up readout (time, pose, values) over the view and in exported frames.
     pub readouts: bool,
+    /// The plot shows the actuator forces (or torques) instead of lengths (or angles).
+    pub plot_efforts: bool,
     /// The plot panel's height as last drawn, logical pixels (its top edge drags).
     pub plot_height: f32,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
@@ -60,6 +62,7 @@ impl Look {
             coloured_legs: true,
             labels: true,
             readouts: false,
+            plot_efforts: false,
             plot_height: 0.0,
             view_px: [1280, 720],
             view_aspect: 16.0 / 9.0,

@@ -29,6 +29,7 @@ pub mod history;
 pub mod job;
 pub mod live_link;
 pub mod look;
+pub mod mode_view;
 pub mod panels;
 pub mod playback;
 pub mod reach;

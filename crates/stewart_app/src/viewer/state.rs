@@ -56,6 +56,8 @@ pub struct ViewerState {
     pub assembly_error: Option<super::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     reach: super::reach::ReachCache,
+    /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
+    pub modes: super::mode_view::ModeView,
 }
 
 /// The saved session's state in this run.
@@ -116,6 +118,7 @@ impl ViewerState {
             assembly: super::assembly::AssemblyBrowser::default(),
             assembly_error: None,
             reach: super::reach::ReachCache::default(),
+            modes: super::mode_view::ModeView::default(),
             doc: Document::new(scenario),
         }
     }
@@ -160,7 +163,8 @@ impl ViewerState {
         } else {
             Vec::new()
         };
-        let frame = self.doc.scenario().geometry.scene_frame(&self.pose(), path);
+        let shown = self.modes.shown_pose(self.doc.scenario(), self.pose());
+        let frame = self.doc.scenario().geometry.scene_frame(&shown, path);
         let overlays = stewart_render::Overlays {
             platform_axes: self.look.platform_axes,
             path: self.look.show_path,
@@ -521,12 +525,14 @@ impl ViewerState {
             || self.link.connected()
             || self.shots.busy()
             || (self.workspace.show && self.workspace.busy())
+            || self.modes.animate
     }
 
     /// Move on by `dt` seconds of wall time: playback, and in manual mode the history.
     /// Returns whether playback moved.
     pub fn advance(&mut self, dt: f64) -> bool {
         self.playback.clock += dt;
+        self.modes.advance(dt);
         if self.playback.mode == MotionMode::Manual {
             let pose = self.pose();
             let values = self.doc.scenario().geometry.actuator_values(&[pose]);

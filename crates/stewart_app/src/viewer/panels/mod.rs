@@ -3,6 +3,7 @@
 mod cueing;
 mod design;
 mod diagnostics;
+mod dynamics;
 mod export;
 mod file_dialogs;
 mod geometry;
@@ -85,6 +86,11 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         let mut editor =
                             Editor::new(&mut state.doc, &mut state.playback, lang, expand);
                         cueing::show(ui, &mut editor, now, state.link.cue());
+                        ui.separator();
+                        let pose = state.pose();
+                        let mut editor =
+                            Editor::new(&mut state.doc, &mut state.playback, lang, expand);
+                        dynamics::show(ui, &mut editor, &pose, &mut state.modes);
                     });
             });
     }
@@ -97,7 +103,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             220.0
         })
         .show(ui, |ui| {
-            plot::show(ui, &state.doc, &mut state.playback, &state.look);
+            plot::show(ui, &state.doc, &mut state.playback, &mut state.look);
         });
     state.look.plot_height = plot.response.rect.height();
     let plot_rect = plot.response.rect;

@@ -73,7 +73,7 @@ fn line_width(look: &Look) -> f32 {
 /// The panel: the plot, and its legend beside it (outside the curves). In trajectory mode,
 /// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
 /// resets the view).
-pub fn show(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look) {
+pub fn show(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut Look) {
     let legend_width = if look.presentation { 110.0 } else { 76.0 };
     let size = ui.available_size();
     ui.horizontal(|ui| {
@@ -88,9 +88,16 @@ pub fn show(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &L
 }
 
 /// The legend: a swatch and the name of each curve, the limits and the time marker.
-fn legend(ui: &mut egui::Ui, doc: &Document, playback: &Playback, look: &Look) {
+fn legend(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut Look) {
     let quantity = doc.scenario().geometry.quantity();
     let t = look.lang;
+    if doc.plot_efforts().is_some() && playback.mode == MotionMode::Trajectory {
+        ui.selectable_value(&mut look.plot_efforts, false, t.tr("plot.lengths"));
+        ui.selectable_value(&mut look.plot_efforts, true, t.tr("plot.efforts"))
+            .on_hover_text(t.tr("plot.efforts_tip"));
+        ui.separator();
+    }
+    let efforts = efforts_shown(doc, playback, look).is_some();
     let width = line_width(look);
     let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
         ui.horizontal(|ui| {
@@ -112,17 +119,17 @@ fn legend(ui: &mut egui::Ui, doc: &Document, playback: &Playback, look: &Look) {
             ui.label(text);
         });
     };
+    let symbol = if efforts {
+        quantity.effort.0
+    } else {
+        quantity.symbol
+    };
     for leg in 0..6 {
-        swatch(
-            ui,
-            leg_colour(leg),
-            format!("{}{}", quantity.symbol, leg + 1),
-            false,
-        );
+        swatch(ui, leg_colour(leg), format!("{symbol}{}", leg + 1), false);
     }
     let [min, max] = doc.scenario().geometry.quantity_limits();
     for (name, limit) in [("plot.max", max), ("plot.min", min)] {
-        if limit.is_some() {
+        if limit.is_some() && !efforts {
             swatch(
                 ui,
                 Color32::GRAY,
@@ -131,12 +138,24 @@ fn legend(ui: &mut egui::Ui, doc: &Document, playback: &Playback, look: &Look) {
             );
         }
     }
-    if playback.mode == MotionMode::Trajectory && doc.beyond_limits() {
+    if playback.mode == MotionMode::Trajectory && doc.beyond_limits() && !efforts {
         swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
     }
     if playback.mode == MotionMode::Trajectory {
         swatch(ui, marker_colour(look), t.tr("plot.now").to_owned(), false);
     }
+}
+
+/// The actuator efforts to plot instead of the lengths: when asked for, along the
+/// trajectory, with a payload.
+fn efforts_shown<'a>(
+    doc: &'a Document,
+    playback: &Playback,
+    look: &Look,
+) -> Option<(&'a [f64], &'a [[f64; 6]])> {
+    (look.plot_efforts && playback.mode == MotionMode::Trajectory)
+        .then(|| doc.plot_efforts())
+        .flatten()
 }
 
 /// The time marker's colour: black on light, white on dark.
@@ -156,21 +175,32 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
     let [min, max] = scenario.geometry.quantity_limits();
     let manual = playback.mode == MotionMode::Manual;
     let t = look.lang;
+    let efforts = efforts_shown(doc, playback, look).is_some();
+    let [min, max] = if efforts { [None, None] } else { [min, max] };
+    let y_label = if efforts {
+        format!(
+            "{} ({})",
+            words::effort_name(t, &quantity),
+            quantity.effort.1
+        )
+    } else {
+        format!("{} ({})", words::quantity_name(t, &quantity), quantity.unit)
+    };
     let x_label = t.tr(if manual {
         "plot.seconds_ago"
     } else {
         "plot.time"
     });
-    let mut plot = Plot::new(if manual { "leg history" } else { "leg lengths" })
-        .allow_drag(manual)
-        .y_grid_spacer(super::plot_ticks::marks)
-        .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
-        .x_axis_label(x_label)
-        .y_axis_label(format!(
-            "{} ({})",
-            words::quantity_name(t, &quantity),
-            quantity.unit
-        ));
+    let mut plot = Plot::new(match (manual, efforts) {
+        (true, _) => "leg history",
+        (false, true) => "actuator efforts",
+        (false, false) => "leg lengths",
+    })
+    .allow_drag(manual)
+    .y_grid_spacer(super::plot_ticks::marks)
+    .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
+    .x_axis_label(x_label)
+    .y_axis_label(y_label);
     if manual {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
@@ -223,7 +253,8 @@ fn curves(
                 .map(|(t, l)| [t - playback.clock, l[leg]])
                 .collect()
         } else {
-            let (times, lengths) = doc.plot_samples();
+            let (times, lengths) =
+                efforts_shown(doc, playback, look).unwrap_or_else(|| doc.plot_samples());
             times
                 .iter()
                 .zip(lengths)
@@ -231,7 +262,12 @@ fn curves(
                 .collect()
         };
         // A servo out of reach has no angle: its curve breaks there.
-        let name = format!("{}{}", quantity.symbol, leg + 1);
+        let symbol = if efforts_shown(doc, playback, look).is_some() {
+            quantity.effort.0
+        } else {
+            quantity.symbol
+        };
+        let name = format!("{symbol}{}", leg + 1);
         for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
             let curve: PlotPoints = run.iter().copied().collect();
             plot.line(

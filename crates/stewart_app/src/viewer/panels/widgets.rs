@@ -2,6 +2,7 @@
 
 use egui::{Color32, RichText};
 use stewart_kinematics::Scenario;
+use stewart_kinematics::actuator::ActuatorKind;
 use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
 
 use crate::i18n::Lang;
@@ -43,6 +44,7 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
         return;
     }
     let t = ed.lang;
+    let kind = scenario.geometry.actuator().kind();
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
         if setting.optional() {
@@ -68,7 +70,7 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
                 let fine = ui.input(|i| i.modifiers.shift);
                 // A slider senses drags only: clicks too, so that the right button's click
                 // opens the reset menu.
-                let slid = ui.add(slider(t, setting, range.clone(), &mut v));
+                let slid = ui.add(slider(t, setting, kind, range.clone(), &mut v));
                 // A slider senses drags only: clicks too, so that the right button's click
                 // opens the reset menu.
                 let response = slid
@@ -92,7 +94,7 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
             None => {
                 ui.label(t.fmt(
                     "widgets.off",
-                    &[("name", &setting_label_with_unit(t, setting))],
+                    &[("name", &setting_label_with_unit(t, setting, kind))],
                 ));
             }
         }
@@ -118,7 +120,7 @@ fn reset_menu(
             |d| {
                 t.fmt(
                     "widgets.reset_to",
-                    &[("value", &d), ("unit", &setting.unit.symbol())],
+                    &[("value", &d), ("unit", &unit_of(setting, scenario))],
                 )
             },
         );
@@ -184,20 +186,27 @@ fn slider_tip(t: Lang, setting: &Setting, scenario: &Scenario) -> String {
             ("key", &setting.key),
             ("accepted", &setting.accepted_words()),
             ("default", &default),
-            ("unit", &setting.unit.symbol()),
+            ("unit", &unit_of(setting, scenario)),
         ],
     )
+}
+
+/// The symbol of a setting's unit for the scenario's actuators (a stiffness is N/m for
+/// legs, N·m/rad for servos).
+fn unit_of(setting: &Setting, scenario: &Scenario) -> &'static str {
+    setting.unit.symbol_for(scenario.geometry.actuator().kind())
 }
 
 fn slider<'a>(
     lang: Lang,
     setting: &Setting,
+    kind: ActuatorKind,
     range: std::ops::RangeInclusive<f64>,
     value: &'a mut f64,
 ) -> egui::Slider<'a> {
     let logarithmic = is_logarithmic(&range);
     let s = egui::Slider::new(value, range)
-        .text(setting_label_with_unit(lang, setting))
+        .text(setting_label_with_unit(lang, setting, kind))
         .clamping(egui::SliderClamping::Never)
         .logarithmic(logarithmic);
     if setting.unit == Unit::Count {

@@ -69,6 +69,40 @@ impl Geometry {
     }
 }
 
+impl Geometry {
+    /// The pose `pose` moved by the small motion `v` (x, y, z in m, rx, ry, rz in rad:
+    /// a mode vector, about the platform frame's origin in base-frame axes) scaled by
+    /// `s`: the origin moves by `s v_xyz` and the platform turns by `s v_r` about it.
+    pub fn moved_along(&self, pose: &Pose, v: &Vector6<f64>, s: f64) -> Pose {
+        let c = self.pivot();
+        let origin = self.platform_centre(pose) + s * v.fixed_rows::<3>(0).into_owned();
+        let turn = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
+        let rotation = turn * nalgebra::Rotation3::from_matrix_unchecked(pose.rotation());
+        let (roll, pitch, yaw) = rotation.euler_angles();
+        use crate::angle::Angle;
+        Pose::new(
+            origin - c + rotation * c,
+            Angle::from_radians(roll),
+            Angle::from_radians(pitch),
+            Angle::from_radians(yaw),
+        )
+    }
+
+    /// How far the platform joints move, at most, for the motion `v` (as in
+    /// [`Geometry::moved_along`]) at `pose`, per unit of `s`, metres.
+    pub fn joint_travel(&self, pose: &Pose, v: &Vector6<f64>) -> f64 {
+        let r = pose.rotation();
+        let (t, w) = (
+            v.fixed_rows::<3>(0).into_owned(),
+            v.fixed_rows::<3>(3).into_owned(),
+        );
+        self.platform_joints()
+            .iter()
+            .map(|a| (t + w.cross(&(r * a))).norm())
+            .fold(0.0, f64::max)
+    }
+}
+
 /// Frequencies (Hz, ascending) and unit mode vectors of `K v = ω² M v`.
 fn generalised_modes(
     k: &Matrix6<f64>,

@@ -161,3 +161,30 @@ fn a_point_mass_has_no_rotational_inertia_and_is_refused() {
         Err(DynamicsError::NoStiffness)
     );
 }
+
+#[test]
+fn moving_along_a_mode_moves_the_origin_and_turns_about_it() {
+    let mut p = crate::test_support::paired_geometry().params().clone();
+    p.pivot = Vector3::new(0.05, 0.0, 0.1);
+    let g = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+    let pose = Pose::from_xyz_rpy_deg([0.02, -0.01, 0.85], [4.0, -3.0, 12.0]);
+    let v = Vector6::new(0.3, -0.2, 0.5, 0.4, 0.1, -0.6).normalize();
+    let s = 0.01;
+    let moved = g.moved_along(&pose, &v, s);
+    let shift = g.platform_centre(&moved) - g.platform_centre(&pose);
+    assert!((shift - s * v.fixed_rows::<3>(0)).norm() < 1e-15);
+    let turn = moved.rotation() * pose.rotation().transpose();
+    let expected = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
+    assert!((turn - expected.matrix()).amax() < 1e-14);
+    // Every joint moves by at most the travel the mode allows (to first order).
+    let travel = g.joint_travel(&pose, &v) * s;
+    let before = g.inverse(&pose).platform_joints;
+    let after = g.inverse(&moved).platform_joints;
+    let largest = (0..6)
+        .map(|i| (after[i] - before[i]).norm())
+        .fold(0.0, f64::max);
+    assert!(
+        (largest - travel).abs() < 1e-3 * travel,
+        "{largest} vs {travel}"
+    );
+}

@@ -1,0 +1,180 @@
+//! Dynamics: the moving mass (`[payload]`: mass, centre of mass, inertia tensor), what the
+//! actuators add (`[dynamics]`: stiffness, friction, leg parts), and the natural modes at
+//! the pose shown, one of which the 3D view can swing along.
+
+use egui::RichText;
+use nalgebra::{Matrix3, Vector3};
+use stewart_kinematics::dynamics::dominant;
+use stewart_kinematics::forces::Payload;
+use stewart_kinematics::settings::{self, Group};
+use stewart_kinematics::{Pose, Scenario};
+
+use super::widgets::{WARNING, edit_error, setting_slider};
+use crate::viewer::editor::Editor;
+use crate::viewer::mode_view::{ModeView, SHOWN_HZ};
+
+/// A payload in proportion to the platform: a solid disc of the platform's size, 50 kg
+/// on the seed's 0.6 m platform.
+fn proportionate_payload(scenario: &Scenario) -> Option<Payload> {
+    let size = scenario.geometry.characteristic_length();
+    let mass = (50.0 * (size / 0.6).powi(3)).max(1e-3);
+    let (side, axial) = (mass * size * size / 4.0, mass * size * size / 2.0);
+    Payload::new(
+        mass,
+        Vector3::zeros(),
+        Matrix3::from_diagonal(&Vector3::new(side, side, axial)),
+    )
+    .ok()
+}
+
+/// The panel, at `pose` (the pose shown), with the mode viewer's settings.
+pub fn show(ui: &mut egui::Ui, ed: &mut Editor, pose: &Pose, view: &mut ModeView) {
+    let t = ed.lang;
+    egui::CollapsingHeader::new(t.tr("dynamics.heading"))
+        .default_open(ed.expand)
+        .show(ui, |ui| {
+            payload(ui, ed);
+            ui.label(RichText::new(t.tr("dynamics.actuators")).strong());
+            let targets: Vec<_> = settings::all()
+                .iter()
+                .filter(|s| s.group == Group::Dynamics)
+                .map(|s| s.target)
+                .collect();
+            for target in targets {
+                setting_slider(ui, ed, target);
+            }
+            edit_error(ui, ed.doc, t, &[Group::Dynamics]);
+            ui.separator();
+            modes(ui, ed, pose, view);
+        });
+}
+
+/// The payload's numbers, each edited through the file reader's own validation.
+fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
+    ui.label(RichText::new(t.tr("dynamics.payload")).strong());
+    let Some(p) = ed.scenario().payload else {
+        ui.label(RichText::new(t.tr("dynamics.no_payload")).small());
+        if ui.button(t.tr("dynamics.add_payload")).clicked() {
+            let added = proportionate_payload(ed.scenario());
+            ed.edit(Group::Dynamics, |s| {
+                s.payload = added;
+                Ok(())
+            });
+        }
+        return;
+    };
+    let mut mass = p.mass;
+    let mut com = [p.centre_of_mass.x, p.centre_of_mass.y, p.centre_of_mass.z];
+    let i = p.inertia;
+    let mut inertia = [
+        i[(0, 0)],
+        i[(1, 1)],
+        i[(2, 2)],
+        i[(0, 1)],
+        i[(0, 2)],
+        i[(1, 2)],
+    ];
+    let mut changed = false;
+    egui::Grid::new("payload").num_columns(4).show(ui, |ui| {
+        ui.label(t.tr("dynamics.mass"));
+        changed |= ui
+            .add(
+                egui::DragValue::new(&mut mass)
+                    .speed(0.01 * p.mass.max(0.01))
+                    .suffix(" kg"),
+            )
+            .changed();
+        ui.end_row();
+        ui.label(t.tr("dynamics.com"));
+        let size = ed.scenario().geometry.characteristic_length();
+        for c in &mut com {
+            changed |= ui
+                .add(egui::DragValue::new(c).speed(0.002 * size).suffix(" m"))
+                .changed();
+        }
+        ui.end_row();
+        let moments = p.inertia.diagonal().max().max(1e-9);
+        for (row, names) in [(0, ["Ixx", "Iyy", "Izz"]), (3, ["Ixy", "Ixz", "Iyz"])] {
+            ui.label(if row == 0 {
+                t.tr("dynamics.inertia")
+            } else {
+                ""
+            });
+            for (k, name) in names.iter().enumerate() {
+                changed |= ui
+                    .add(
+                        egui::DragValue::new(&mut inertia[row + k])
+                            .speed(0.005 * moments)
+                            .prefix(format!("{name} ")),
+                    )
+                    .on_hover_text(t.tr("dynamics.inertia_tip"))
+                    .changed();
+            }
+            ui.end_row();
+        }
+    });
+    if changed {
+        let [ixx, iyy, izz, ixy, ixz, iyz] = inertia;
+        let tensor = Matrix3::new(ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz);
+        ed.edit(Group::Dynamics, |s| {
+            s.payload =
+                Some(Payload::new(mass, Vector3::from(com), tensor).map_err(|e| e.to_string())?);
+            Ok(())
+        });
+    }
+    if ui.small_button(t.tr("dynamics.remove_payload")).clicked() {
+        ed.edit(Group::Dynamics, |s| {
+            s.payload = None;
+            Ok(())
+        });
+    }
+}
+
+/// The six modes at the pose shown, and the mode viewer's controls.
+fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
+    let t = ed.lang;
+    ui.label(RichText::new(t.tr("dynamics.modes")).strong());
+    let modes = match ModeView::modes(ed.scenario(), pose) {
+        Ok(m) => m,
+        Err(why) => {
+            ui.label(RichText::new(t.fmt("dynamics.no_modes", &[("why", &why)])).color(WARNING));
+            view.animate = false;
+            return;
+        }
+    };
+    egui::Grid::new("modes").num_columns(3).show(ui, |ui| {
+        for k in 0..6 {
+            ui.radio_value(&mut view.mode, k, format!("{}", k + 1));
+            ui.label(format!("{:.2} Hz", modes.frequencies_hz[k]));
+            let words: Vec<String> = dominant(&modes.modes[k])
+                .iter()
+                .map(|(axis, c)| format!("{axis} {c:+.2}"))
+                .collect();
+            ui.label(words.join(", "));
+            ui.end_row();
+        }
+    });
+    ui.checkbox(&mut view.animate, t.tr("dynamics.animate"))
+        .on_hover_text(t.fmt("dynamics.animate_tip", &[("hz", &SHOWN_HZ)]));
+    let mut percent = view.amplitude * 100.0;
+    if ui
+        .add(egui::Slider::new(&mut percent, 1.0..=20.0).text(t.tr("dynamics.amplitude")))
+        .changed()
+    {
+        view.amplitude = percent / 100.0;
+    }
+    if view.animate {
+        ui.label(RichText::new(t.fmt(
+            "dynamics.swinging",
+            &[
+                ("k", &(view.mode + 1)),
+                (
+                    "hz",
+                    &format!("{:.2}", modes.frequencies_hz[view.mode.min(5)]),
+                ),
+                ("shown", &SHOWN_HZ),
+            ],
+        )));
+    }
+}
