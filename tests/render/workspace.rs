@@ -162,3 +162,77 @@ fn slice_cells_show_their_condition_colour() {
     assert!(tested >= 10, "only {tested} reachable test cells");
     assert!(kinds.len() >= 3, "only {} colours: {kinds:?}", kinds.len());
 }
+
+#[test]
+fn a_stiffness_slice_is_yellow_where_the_platform_is_stiffest() {
+    // The paired platform's lowest stiffness over the level slice, drawn alone and opaque:
+    // the stiffest cell shows viridis' yellow end, the softest its dark end.
+    let s = paired();
+    let theme = Theme::DARK;
+    let g = &s.geometry;
+    let cut = g.stiffness_slice(
+        &Limits::default(),
+        [Angle::ZERO; 3],
+        Plane::Horizontal,
+        g.home_pose().position.z - 0.2,
+        [[-0.8, 0.8], [-0.8, 0.8]],
+        [64, 64],
+        1.0,
+    );
+    let values: Vec<(usize, f64)> = cut
+        .values
+        .iter()
+        .enumerate()
+        .filter_map(|(k, v)| v.map(|v| (k, v)))
+        .collect();
+    let stiffest = values
+        .iter()
+        .copied()
+        .fold((0, f64::MIN), |a, b| if b.1 > a.1 { b } else { a });
+    let softest = values
+        .iter()
+        .copied()
+        .fold((0, f64::MAX), |a, b| if b.1 < a.1 { b } else { a });
+    let shown = draw_with(
+        &s,
+        vec![Arc::new(AnalysisMesh::stiffness_slice(
+            &cut,
+            [softest.1, stiffest.1],
+            1.0,
+        ))],
+        &theme,
+        true,
+    );
+    if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
+        let path = std::path::Path::new(&dir).join("stiffness_slice.png");
+        image::save_buffer(
+            &path,
+            &shown.rgba,
+            SIZE.0,
+            SIZE.1,
+            image::ExtendedColorType::Rgba8,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+    }
+    let camera = seed_camera(g);
+    let at = |k: usize| {
+        let [x, y] = cut.centre(k % cut.cells[0], k / cut.cells[0]);
+        project(
+            &camera,
+            Vec3::new(x as f32, y as f32, cut.at as f32),
+            SIZE.0,
+            SIZE.1,
+        )
+    };
+    let yellow = pixel(&shown, at(stiffest.0));
+    let dark = pixel(&shown, at(softest.0));
+    // Yellow: red and green well above blue; the dark end: blue above green, dim.
+    assert!(
+        yellow[0] > yellow[2] + 60 && yellow[1] > yellow[2] + 60,
+        "{yellow:?}"
+    );
+    assert!(
+        dark[2] > dark[1] && dark.iter().sum::<i32>() < yellow.iter().sum::<i32>(),
+        "{dark:?}"
+    );
+}

@@ -215,3 +215,52 @@ fn the_panel_reads_in_chinese() {
             .is_some()
     );
 }
+
+#[test]
+fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
+    let mut h = shown("paired", Lang::En);
+    h.get_by_label("coloured by stiffness").click();
+    h.run();
+    settle(&mut h);
+    crate::look(&mut h, "stiffness_slice.png");
+    let state = h.state();
+    let slice = state
+        .workspace
+        .latest
+        .as_ref()
+        .and_then(|o| o.slice.as_ref())
+        .unwrap_or_else(|| panic!("no slice"));
+    let [low, high] = slice
+        .stiffness
+        .unwrap_or_else(|| panic!("not a stiffness slice"));
+    assert!(low > 0.0 && low < high, "{low} … {high}");
+    // No actuator stiffness in the preset: per unit stiffness, and it says so.
+    assert!(
+        h.query_by_label_contains("(per unit actuator stiffness)")
+            .is_some()
+    );
+    // The paired platform is stiffest centred: the slice's stiffest cells, next to the
+    // centre, come close to the stiffness at home (by the core) without passing it.
+    let s = state.scenario();
+    let home = s
+        .geometry
+        .lowest_stiffness(&s.geometry.home_pose(), 1.0)
+        .unwrap_or(f64::NAN);
+    assert!(
+        high <= home * (1.0 + 1e-9) && high > 0.95 * home,
+        "{low} … {high}, home {home}"
+    );
+    assert_eq!(slice.past, 0);
+    // Back to conditioning: the slice is the conditioning's again.
+    h.get_by_label("coloured by conditioning").click();
+    h.run();
+    settle(&mut h);
+    let again = h
+        .state()
+        .workspace
+        .latest
+        .as_ref()
+        .and_then(|o| o.slice.as_ref())
+        .map(|s| s.stiffness);
+    assert_eq!(again, Some(None));
+}

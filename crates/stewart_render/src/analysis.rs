@@ -55,6 +55,25 @@ impl AnalysisMesh {
     /// of its condition number (threshold `condition_max`; past it the marked colour),
     /// with opacity `alpha`.
     pub fn slice(slice: &Slice, condition_max: f64, alpha: f32) -> Self {
+        Self::slice_coloured(slice, alpha, |k| {
+            colormap::condition_colour(k, condition_max)
+        })
+    }
+
+    /// The reachable cells of a stiffness slice (see `Geometry::stiffness_slice`), each
+    /// in viridis by its stiffness over the range `[low, high]` (soft dark, stiff
+    /// yellow), with opacity `alpha`.
+    pub fn stiffness_slice(slice: &Slice, [low, high]: [f64; 2], alpha: f32) -> Self {
+        Self::slice_coloured(slice, alpha, |k| {
+            let span = high - low;
+            let s = if span > 0.0 { (k - low) / span } else { 1.0 };
+            colormap::viridis(s.clamp(0.0, 1.0))
+        })
+    }
+
+    /// The reachable cells of `slice` as flat squares in their plane, each in
+    /// `colour(value)` with opacity `alpha`.
+    fn slice_coloured(slice: &Slice, alpha: f32, colour: impl Fn(f64) -> [u8; 3]) -> Self {
         let mut mesh = Self::default();
         let [across, up] = slice.range;
         let size = [0, 1].map(|a| (slice.range[a][1] - slice.range[a][0]) / slice.cells[a] as f64);
@@ -71,7 +90,7 @@ impl AnalysisMesh {
                 let Some(k) = slice.get(i, j) else {
                     continue;
                 };
-                let rgb = colormap::condition_colour(k, condition_max);
+                let rgb = colour(k);
                 let lin = rgb.map(|c| srgb_to_linear(f32::from(c) / 255.0));
                 let color = [lin[0], lin[1], lin[2], alpha];
                 let a0 = across[0] + i as f64 * size[0];
@@ -137,6 +156,24 @@ mod tests {
         // The cell past the threshold is magenta: more red than green.
         let past = m.vertices[4].color;
         assert!(past[0] > 0.5 && past[1] < 0.05, "{past:?}");
+    }
+
+    #[test]
+    fn a_stiffness_slice_runs_from_viridis_dark_to_yellow() {
+        let m = AnalysisMesh::stiffness_slice(
+            &slice(vec![Some(2.0), Some(6.0), None, Some(4.0)]),
+            [2.0, 6.0],
+            0.85,
+        );
+        assert_eq!(m.vertices.len(), 12);
+        let colour = |k: usize| m.vertices[4 * k].color;
+        let lin = |c: [u8; 3]| c.map(|c| srgb_to_linear(f32::from(c) / 255.0));
+        assert_eq!(colour(0)[..3], lin(colormap::viridis(0.0)));
+        assert_eq!(colour(1)[..3], lin(colormap::viridis(1.0)));
+        assert_eq!(colour(2)[..3], lin(colormap::viridis(0.5)));
+        // The stiffest cell is the yellow end: more red and green than blue.
+        assert!(colour(1)[0] > colour(1)[2] && colour(1)[1] > colour(1)[2]);
+        assert_eq!(colour(0)[3], 0.85);
     }
 
     #[test]

@@ -457,6 +457,13 @@ impl ViewerState {
             orientation: self.workspace_orientation(),
             slice_at,
             condition_max: self.doc.scenario().checks.condition_max,
+            slice_stiffness: w.slice_by_stiffness.then(|| {
+                self.doc
+                    .scenario()
+                    .dynamics
+                    .actuator_stiffness
+                    .unwrap_or(1.0)
+            }),
             colour: stewart_render::theme::linear(self.theme().workspace),
         }
     }

@@ -58,6 +58,9 @@ pub struct Request {
     pub slice_at: Option<f64>,
     /// The near-singular threshold the slice is coloured to.
     pub condition_max: f64,
+    /// Colour the slice by the platform's lowest stiffness for this actuator stiffness
+    /// instead of the conditioning.
+    pub slice_stiffness: Option<f64>,
     /// Linear colour of the surface.
     pub colour: [f32; 4],
 }
@@ -96,8 +99,11 @@ pub struct SliceOutcome {
     pub mesh: Arc<AnalysisMesh>,
     /// Reachable cells.
     pub reachable: usize,
-    /// Reachable cells past the near-singular threshold (or singular).
+    /// Reachable cells past the near-singular threshold (or singular); none for a
+    /// stiffness slice.
     pub past: usize,
+    /// A stiffness slice's lowest and highest stiffness, N/m (`None`: conditioning).
+    pub stiffness: Option<[f64; 2]>,
 }
 
 /// The Workspace panel's switches, the worker and the newest result.
@@ -110,6 +116,8 @@ pub struct WorkspaceTool {
     pub orientation_deg: [f64; 3],
     /// Draw the conditioning slice.
     pub show_slice: bool,
+    /// Colour the slice by stiffness (else by conditioning).
+    pub slice_by_stiffness: bool,
     /// Put the slice at the platform centre's height (else `slice_height`).
     pub slice_follows: bool,
     /// The chosen slice height, metres.
@@ -138,6 +146,7 @@ impl WorkspaceTool {
             follow_pose: true,
             orientation_deg: [0.0; 3],
             show_slice: true,
+            slice_by_stiffness: false,
             slice_follows: true,
             slice_height: 0.0,
             latest: None,
@@ -262,32 +271,47 @@ pub(crate) fn compute(
             // A square over the extent, two cells' margin around it.
             let half = 0.5 * (ex[1] - ex[0]).max(ey[1] - ey[0]) + 2.0 * ws.cell;
             let centre = [0.5 * (ex[0] + ex[1]), 0.5 * (ey[0] + ey[1])];
-            let cut = request.geometry.workspace_slice(
-                &request.limits,
-                request.orientation,
-                Plane::Horizontal,
-                at - shift.z,
-                [0, 1].map(|k| [centre[k] - shift[k] - half, centre[k] - shift[k] + half]),
-                [slice_cells; 2],
-            );
-            let mut mesh = AnalysisMesh::slice(&cut, request.condition_max, 0.85);
+            let range = [0, 1].map(|k| [centre[k] - shift[k] - half, centre[k] - shift[k] + half]);
+            let (g, limits, level) = (&request.geometry, &request.limits, at - shift.z);
+            let (o, cells) = (request.orientation, [slice_cells; 2]);
+            let cut = match request.slice_stiffness {
+                Some(k) => g.stiffness_slice(limits, o, Plane::Horizontal, level, range, cells, k),
+                None => g.workspace_slice(limits, o, Plane::Horizontal, level, range, cells),
+            };
+            let stiffness = request.slice_stiffness.map(|_| {
+                let values = cut.values.iter().flatten();
+                [
+                    values.clone().fold(f64::INFINITY, |a, &b| a.min(b)),
+                    values.fold(f64::NEG_INFINITY, |a, &b| a.max(b)),
+                ]
+            });
+            let mut mesh = match stiffness {
+                Some(range) => AnalysisMesh::stiffness_slice(&cut, range, 0.85),
+                None => AnalysisMesh::slice(&cut, request.condition_max, 0.85),
+            };
             for v in &mut mesh.vertices {
                 for k in 0..3 {
                     v.position[k] += shift[k] as f32;
                 }
             }
             let reachable: Vec<f64> = cut.values.iter().flatten().copied().collect();
-            let past = reachable
-                .iter()
-                .filter(|&&k| {
-                    stewart_render::colormap::condition_fraction(k, request.condition_max).is_none()
-                })
-                .count();
+            let past = if stiffness.is_some() {
+                0
+            } else {
+                reachable
+                    .iter()
+                    .filter(|&&k| {
+                        stewart_render::colormap::condition_fraction(k, request.condition_max)
+                            .is_none()
+                    })
+                    .count()
+            };
             Some(SliceOutcome {
                 at,
                 mesh: Arc::new(mesh),
                 reachable: reachable.len(),
                 past,
+                stiffness,
             })
         }
         _ => None,
@@ -319,6 +343,7 @@ mod tests {
             orientation: [0.0, 0.0, yaw].map(Angle::from_degrees),
             slice_at: Some(0.8),
             condition_max: s.checks.condition_max,
+            slice_stiffness: None,
             colour: [0.5, 0.5, 0.5, 0.3],
         }
     }

@@ -26,7 +26,11 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.separator();
             let centre_z = state.centre().z;
             let condition_max = state.scenario().checks.condition_max;
+            let per_unit = state.scenario().dynamics.actuator_stiffness.is_none();
             slice(ui, &mut state.workspace, centre_z, condition_max, t);
+            if state.workspace.show_slice {
+                stiffness_note(ui, &state.workspace, per_unit, t);
+            }
         });
 }
 
@@ -141,6 +145,22 @@ fn slice(ui: &mut egui::Ui, w: &mut WorkspaceTool, centre_z: f64, condition_max:
             .suffix(" m")
             .text(t.tr("workspace_panel.slice_height")),
     );
+    ui.horizontal(|ui| {
+        ui.radio_value(
+            &mut w.slice_by_stiffness,
+            false,
+            t.tr("workspace_panel.by_conditioning"),
+        );
+        ui.radio_value(
+            &mut w.slice_by_stiffness,
+            true,
+            t.tr("workspace_panel.by_stiffness"),
+        )
+        .on_hover_text(t.tr("workspace_panel.by_stiffness_tip"));
+    });
+    if w.slice_by_stiffness {
+        return;
+    }
     colour_bar(ui, condition_max);
     if let Some(s) = w.latest.as_ref().and_then(|o| o.slice.as_ref()) {
         let colour = if s.past > 0 { WARNING } else { OK };
@@ -156,6 +176,45 @@ fn slice(ui: &mut egui::Ui, w: &mut WorkspaceTool, centre_z: f64, condition_max:
             .color(colour),
         );
     }
+}
+
+/// A stiffness slice's colours: viridis from its lowest stiffness to its highest, and
+/// the two values (per unit actuator stiffness when none is given).
+fn stiffness_note(ui: &mut egui::Ui, w: &WorkspaceTool, per_unit: bool, t: Lang) {
+    let Some([low, high]) = w
+        .latest
+        .as_ref()
+        .and_then(|o| o.slice.as_ref())
+        .and_then(|s| s.stiffness)
+    else {
+        return;
+    };
+    let width = ui.available_width().clamp(120.0, 280.0);
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, 12.0), egui::Sense::hover());
+    let steps = 64;
+    for k in 0..steps {
+        let [r, g, b] = colormap::viridis((k as f64 + 0.5) / steps as f64);
+        let x0 = rect.left() + rect.width() * k as f32 / steps as f32;
+        let x1 = rect.left() + rect.width() * (k + 1) as f32 / steps as f32;
+        ui.painter().rect_filled(
+            egui::Rect::from_x_y_ranges(x0..=x1 + 0.5, rect.y_range()),
+            0.0,
+            Color32::from_rgb(r, g, b),
+        );
+    }
+    let unit = if per_unit {
+        t.tr("workspace_panel.per_unit")
+    } else {
+        ""
+    };
+    ui.label(t.fmt(
+        "workspace_panel.stiffness_range",
+        &[
+            ("low", &format!("{low:.4e}")),
+            ("high", &format!("{high:.4e}")),
+            ("unit", &unit),
+        ],
+    ));
 }
 
 /// Viridis from 1 to `condition_max` (log scale) with ticks, then the colour past it.

@@ -200,6 +200,18 @@ impl Geometry {
         }))
     }
 
+    /// The lowest stiffness of the platform at `pose` for actuators of stiffness `k`, N/m:
+    /// the smallest eigenvalue of `D K D` with `D = diag(1, 1, 1, 1/ℓ, 1/ℓ, 1/ℓ)` and `ℓ`
+    /// the characteristic length (a rotation counted as the motion it gives at that
+    /// distance, as the conditioning does). `None` when a servo cannot reach its joint.
+    pub fn lowest_stiffness(&self, pose: &Pose, k: f64) -> Option<f64> {
+        let stiffness = self.stiffness(pose, k).ok()?;
+        let l = self.characteristic_length();
+        let d = Matrix6::from_diagonal(&Vector6::new(1.0, 1.0, 1.0, 1.0 / l, 1.0 / l, 1.0 / l));
+        let scaled = d * stiffness * d;
+        Some(scaled.symmetric_eigenvalues().min().max(0.0))
+    }
+
     /// The 6×6 mass matrix at `pose`: the kinetic energy of platform, payload and legs is
     /// `½ tᵀ M t` for the twist `t` about the platform frame's origin (base-frame axes).
     pub fn mass_matrix(

@@ -1,6 +1,7 @@
 //! Plane slices through the constant-orientation workspace for figures: on a grid over a
 //! horizontal (x, y at a height) or vertical (x, z at a y) plane, whether each point is
-//! reachable within the stroke and limits, and how well conditioned it is there.
+//! reachable within the stroke and limits, and how well conditioned (or how stiff) the
+//! platform is there.
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -51,6 +52,15 @@ impl Slice {
     }
 }
 
+/// Where a slice lies: the orientation, plane, fixed coordinate, ranges and cells.
+struct SlicePlace {
+    orientation: [Angle; 3],
+    plane: Plane,
+    at: f64,
+    range: [[f64; 2]; 2],
+    cells: [usize; 2],
+}
+
 /// The largest grid a slice takes, cells a side.
 pub const MAX_SLICE_CELLS: usize = 1024;
 
@@ -66,6 +76,59 @@ impl Geometry {
         range: [[f64; 2]; 2],
         cells: [usize; 2],
     ) -> Slice {
+        let place = SlicePlace {
+            orientation,
+            plane,
+            at,
+            range,
+            cells,
+        };
+        self.slice_of(limits, &place, |pose| {
+            let c = self.actuated_conditioning(pose)?;
+            Some(c.condition_number.unwrap_or(f64::INFINITY))
+        })
+    }
+
+    /// The same grid as [`Geometry::workspace_slice`], each reachable cell holding the
+    /// lowest stiffness of the platform there for actuators of stiffness `k`: the smallest
+    /// eigenvalue of `K` with its rotations measured at the characteristic length (see
+    /// [`Geometry::lowest_stiffness`]), N/m.
+    #[allow(clippy::too_many_arguments)]
+    pub fn stiffness_slice(
+        &self,
+        limits: &Limits,
+        orientation: [Angle; 3],
+        plane: Plane,
+        at: f64,
+        range: [[f64; 2]; 2],
+        cells: [usize; 2],
+        k: f64,
+    ) -> Slice {
+        let place = SlicePlace {
+            orientation,
+            plane,
+            at,
+            range,
+            cells,
+        };
+        self.slice_of(limits, &place, |pose| self.lowest_stiffness(pose, k))
+    }
+
+    /// A slice at `place` whose reachable cells hold `value` of their pose (`None`: out
+    /// of reach there too).
+    fn slice_of(
+        &self,
+        limits: &Limits,
+        place: &SlicePlace,
+        value: impl Fn(&Pose) -> Option<f64> + Sync,
+    ) -> Slice {
+        let SlicePlace {
+            orientation,
+            plane,
+            at,
+            range,
+            cells,
+        } = *place;
         let cells = cells.map(|c| c.clamp(2, MAX_SLICE_CELLS));
         let mut slice = Slice {
             plane,
@@ -87,8 +150,7 @@ impl Geometry {
                 if !self.pose_within_limits(limits, &pose) {
                     return None;
                 }
-                let c = self.actuated_conditioning(&pose)?;
-                Some(c.condition_number.unwrap_or(f64::INFINITY))
+                value(&pose)
             })
             .collect();
         slice

@@ -188,3 +188,46 @@ fn moving_along_a_mode_moves_the_origin_and_turns_about_it() {
         "{largest} vs {travel}"
     );
 }
+
+#[test]
+fn the_lowest_stiffness_of_the_cubic_configuration_is_its_weakest_axis() {
+    // About the cube's centre K is diagonal: k·(2, 2, 2, Hc²/6, Hc²/6, 2Hc²/3); with
+    // rotations measured at ℓ the rotational terms are divided by ℓ².
+    let g = cubic_geometry();
+    let k = 3.0e6;
+    let l = g.characteristic_length();
+    let hc2 = 3.0 * SIDE * SIDE;
+    let expected = k * [2.0, hc2 / 6.0 / (l * l), 2.0 * hc2 / 3.0 / (l * l)]
+        .into_iter()
+        .fold(f64::INFINITY, f64::min);
+    let got = g
+        .lowest_stiffness(&g.home_pose(), k)
+        .unwrap_or_else(|| panic!("unreachable"));
+    assert!(
+        (got - expected).abs() < 1e-9 * expected,
+        "{got} vs {expected}"
+    );
+    // A slice through home holds it at the home cell and nothing stiffer elsewhere is
+    // assumed: every reachable cell's value is positive and finite.
+    let limits = crate::limits::Limits::default();
+    let slice = g.stiffness_slice(
+        &limits,
+        [crate::angle::Angle::from_degrees(0.0); 3],
+        crate::workspace::Plane::Horizontal,
+        CENTRE_HEIGHT,
+        [[-0.05, 0.05], [-0.05, 0.05]],
+        [5, 5],
+        k,
+    );
+    let centre = slice
+        .get(2, 2)
+        .unwrap_or_else(|| panic!("home out of reach"));
+    assert!((centre - expected).abs() < 1e-9 * expected);
+    assert!(
+        slice
+            .values
+            .iter()
+            .flatten()
+            .all(|v| v.is_finite() && *v > 0.0)
+    );
+}
