@@ -255,3 +255,52 @@ fn the_readmes_modes_example_prints_what_the_readme_shows() {
         assert!(readme.contains(line), "README lacks: {line}");
     }
 }
+
+#[test]
+fn plot_forces_draws_the_actuator_forces_for_a_paper() {
+    let dir = tempdir();
+    let s = scenario(dir.path(), &format!("{PLATFORM}{DYNAMICS}"));
+    let svg = dir.path().join("forces.svg");
+    let out = svg.display().to_string();
+    let o = stewart(&[
+        "plot",
+        "--scenario",
+        &s,
+        "--forces",
+        "--out",
+        &out,
+        "--lang",
+        "en",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(text.matches("<polyline").count(), 6);
+    assert!(text.contains("Leg forces — heavy"), "{text}");
+    assert!(text.contains("Leg force F (N)") && text.contains(">F6</text>"));
+    assert!(
+        !text.contains("stroke-dasharray"),
+        "no stroke limits on a force plot"
+    );
+    // Without a payload: one located error, nothing written.
+    let bare = write(
+        dir.path(),
+        "bare.toml",
+        PLATFORM.split("[payload]").next().unwrap_or_default(),
+    );
+    let none = dir.path().join("none.svg");
+    let o = stewart(&[
+        "plot",
+        "--scenario",
+        &bare,
+        "--forces",
+        "--out",
+        &none.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("has no [payload] table"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!none.exists());
+}

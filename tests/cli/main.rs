@@ -151,6 +151,7 @@ fn help_lists_every_command() {
             "calibrate",
             "workspace",
             "forces",
+            "modes",
             "design",
             "render",
             "plot",

@@ -12,10 +12,12 @@ use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::Scenario;
 
 /// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
-/// names of languages and of mathematical functions.
-const KEPT: [&str; 24] = [
+/// names of languages and of mathematical functions, and the inertia tensor's entries
+/// (Ixx … Iyz, written so in Chinese textbooks too).
+const KEPT: [&str; 30] = [
     "PNG", "GIF", "MP4", "SVG", "PDF", "CSV", "dpi", "UDP", "Hz", "Esc", "Shift", "Home",
     "English", "sin", "cos", "FIFO", "mm", "toml", "geometry", "µs", "ms", "ch", "CRC", "rad",
+    "Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz",
 ];
 
 /// The viewer on `preset` in Chinese with every section open.

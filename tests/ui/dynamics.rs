@@ -35,7 +35,7 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
     );
     // No stiffness yet: the panel says what is missing.
     assert!(
-        h.query_by_label_contains("actuator stiffness is not given")
+        h.query_by_label_contains("give the actuator stiffness")
             .is_some()
     );
     let stiffness = settings::find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));

@@ -755,6 +755,11 @@ pub struct PlotArgs {
     /// environment's, Chinese for LANG=zh_CN.UTF-8).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
     pub lang: Option<Lang>,
+    /// Plot the actuator forces (servo torques) the scenario's `[payload]` needs along the
+    /// motion — weight, inertia, and the legs' parts and friction of `[dynamics]` —
+    /// instead of the lengths (angles).
+    #[arg(long)]
+    pub forces: bool,
 }
 
 /// Arguments of `stewart view`.

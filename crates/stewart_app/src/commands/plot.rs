@@ -1,4 +1,5 @@
-//! `stewart plot`: the leg-length plot as SVG, PDF or PNG.
+//! `stewart plot`: the leg-length plot (or, with `--forces`, the actuator forces) as SVG,
+//! PDF or PNG.
 
 use std::process::ExitCode;
 
@@ -15,7 +16,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode> {
     out.require_file()?;
     let scenario = source::load(&args.scenario)?;
     let lang = crate::i18n::for_command(args.lang, "plot");
-    let bytes = plot_file(&scenario, &args.out, lang)?;
+    let bytes = plot_file(&scenario, &args.out, lang, args.forces)?;
     out.write_bytes(&bytes)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use stewart_kinematics::actuator::Quantity;
 
 use crate::i18n::Lang;
-use crate::i18n::words::quantity_name;
+use crate::i18n::words::{effort_name, quantity_name};
 
 /// Actuator `k`'s colour as `#RRGGBB`: the renderer's series colours (Okabe–Ito), so a
 /// curve has the colour of its leg in the 3D view.
@@ -32,6 +32,22 @@ pub struct PlotData<'a> {
     pub marker: Option<f64>,
     /// The language of the axis labels and the limits' names.
     pub lang: Lang,
+    /// The values are the actuators' efforts (forces in N or torques in N·m), not the
+    /// quantity itself.
+    pub efforts: bool,
+}
+
+impl PlotData<'_> {
+    /// What the curves show: name, symbol and unit (`leg length`, `L`, `m`; `leg
+    /// force`, `F`, `N`).
+    fn series(&self) -> (&'static str, &'static str, &'static str) {
+        let q = &self.quantity;
+        if self.efforts {
+            (effort_name(self.lang, q), q.effort.0, q.effort.1)
+        } else {
+            (quantity_name(self.lang, q), q.symbol, q.unit)
+        }
+    }
 }
 
 /// The plot of `scenario`'s trajectory in `lang`: its sample times and the SVG.
@@ -55,6 +71,7 @@ pub fn scenario_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> (Vec
         limits: g.quantity_limits(),
         marker: None,
         lang,
+        efforts: false,
     });
     (samples.times, text)
 }
@@ -201,7 +218,7 @@ pub fn svg(data: &PlotData) -> String {
             r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="black" stroke-width="1.2"/>"#
         );
     }
-    legend(&mut s, &axes, &data.quantity);
+    legend(&mut s, &axes, data.series().1);
     s.push_str("</svg>\n");
     s
 }
@@ -263,7 +280,7 @@ fn grid_and_ticks(s: &mut String, axes: &Axes) {
 /// The axes' box and titles.
 fn axis_titles(s: &mut String, axes: &Axes, data: &PlotData) {
     let ((x0, x1), (y0, y1)) = (axes.x, axes.y);
-    let q = data.quantity;
+    let (name, symbol, unit) = data.series();
     let _ = writeln!(
         s,
         r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="black" stroke-width="0.8"/>"#,
@@ -281,9 +298,9 @@ fn axis_titles(s: &mut String, axes: &Axes, data: &PlotData) {
         s,
         r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">{1} {2} ({3})</text>"#,
         0.5 * (y0 + y1),
-        capitalised(quantity_name(data.lang, &q)),
-        q.symbol,
-        q.unit
+        capitalised(name),
+        symbol,
+        unit
     );
 }
 
@@ -347,7 +364,7 @@ fn curves(s: &mut String, axes: &Axes, data: &PlotData) {
 }
 
 /// The legend, right of the axes.
-fn legend(s: &mut String, axes: &Axes, q: &Quantity) {
+fn legend(s: &mut String, axes: &Axes, symbol: &str) {
     let x1 = axes.x.1;
     let _ = writeln!(s, r#"<g class="legend">"#);
     for (leg, colour) in (0..6).map(|k| (k, leg_colour_hex(k))) {
@@ -360,7 +377,7 @@ fn legend(s: &mut String, axes: &Axes, q: &Quantity) {
             colour,
             x1 + 31.0,
             y + 4.0,
-            q.symbol,
+            symbol,
             leg + 1
         );
     }
@@ -373,14 +390,48 @@ pub(crate) fn escape(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
-/// The scenario's leg-length plot in the format `path` ends in: `.svg` (text stays
-/// text), `.pdf` (vector) or `.png` (300 dpi).
+/// The plot of the actuator efforts (leg forces or servo torques, with the legs' parts
+/// and friction of `[dynamics]`) along `scenario`'s trajectory for its `[payload]`.
+pub fn efforts_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> anyhow::Result<String> {
+    let payload = scenario.payload.ok_or_else(|| {
+        anyhow::anyhow!(
+            "scenario `{}` has no [payload] table: the forces need the moving mass",
+            scenario.name
+        )
+    })?;
+    let samples = scenario.motion.sample();
+    let g = &scenario.geometry;
+    let series = g.efforts_along(&samples, &payload, &scenario.dynamics)?;
+    let quantity = g.quantity();
+    Ok(svg(&PlotData {
+        title: &lang.fmt_kind(
+            "plot.title_efforts",
+            quantity.actuator,
+            &[("name", &scenario.name)],
+        ),
+        times: &series.times,
+        values: &series.dynamics,
+        quantity,
+        limits: [None, None],
+        marker: None,
+        lang,
+        efforts: true,
+    }))
+}
+
+/// The scenario's leg-length plot (with `efforts`, its actuator forces) in the format
+/// `path` ends in: `.svg` (text stays text), `.pdf` (vector) or `.png` (300 dpi).
 pub fn plot_file(
     scenario: &stewart_kinematics::Scenario,
     path: &std::path::Path,
     lang: Lang,
+    efforts: bool,
 ) -> anyhow::Result<Vec<u8>> {
-    let (_, text) = scenario_svg(scenario, lang);
+    let text = if efforts {
+        efforts_svg(scenario, lang)?
+    } else {
+        scenario_svg(scenario, lang).1
+    };
     super::vector::by_extension(text, path)
 }
 
@@ -411,6 +462,7 @@ mod tests {
             limits: [Some(0.9), Some(1.2)],
             marker: Some(5.0),
             lang: Lang::En,
+            efforts: false,
         });
         assert_eq!(text.matches("<polyline").count(), 6);
         assert!(text.contains("Time t (s)") && text.contains("Leg length L (m)"));
@@ -434,6 +486,7 @@ mod tests {
             limits: [Some(-80.0), Some(80.0)],
             marker: None,
             lang: Lang::En,
+            efforts: false,
         });
         assert_eq!(text.matches("<polyline").count(), 7);
         assert_eq!(text.matches(r#"class="leg S3""#).count(), 2);

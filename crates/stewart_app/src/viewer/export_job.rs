@@ -27,8 +27,9 @@ use crate::output::{Destination, write_atomically};
 pub enum ExportWork {
     /// Frames, a GIF or an MP4.
     Video(Box<VideoRequest>),
-    /// The leg-length plot (SVG, PDF or PNG by extension).
-    Plot(PathBuf),
+    /// The leg-length plot (SVG, PDF or PNG by extension); with `true`, the actuator
+    /// forces instead (as the viewer's plot shows them).
+    Plot(PathBuf, bool),
     /// Poses and leg lengths along the trajectory, CSV.
     Csv(PathBuf),
     /// The workspace's slices through `position` at `orientation` (SVG, PDF or PNG by
@@ -179,8 +180,8 @@ fn run(
 ) -> Result<String> {
     match work {
         ExportWork::Video(request) => video(scenario, request, lang, progress, stop),
-        ExportWork::Plot(path) => {
-            write_atomically(path, &plot_file(scenario, path, lang)?)?;
+        ExportWork::Plot(path, efforts) => {
+            write_atomically(path, &plot_file(scenario, path, lang, *efforts)?)?;
             Ok(lang.fmt("export.wrote_plot", &[("path", &path.display())]))
         }
         ExportWork::Csv(path) => {

@@ -3,11 +3,20 @@
 //! beside it). Only the picture moves: the pose the link sends, the plot and the
 //! readouts keep the pose shown without it.
 
-use stewart_kinematics::dynamics::Modes;
+use stewart_kinematics::dynamics::{DynamicsError, Modes};
 use stewart_kinematics::{Pose, Scenario};
 
 /// How often the animation swings, Hz (the real modes are far too fast to watch).
 pub const SHOWN_HZ: f64 = 1.0;
+
+/// Why there are no modes to show.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NoModes {
+    /// The scenario has no payload.
+    NoPayload,
+    /// The dynamics say why.
+    Dynamics(DynamicsError),
+}
 
 /// The mode viewer's settings and clock.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,12 +51,12 @@ impl ModeView {
     }
 
     /// The modes at `pose`, when the scenario has what they need.
-    pub fn modes(scenario: &Scenario, pose: &Pose) -> Result<Modes, String> {
-        let payload = scenario.payload.ok_or_else(|| "no [payload]".to_owned())?;
+    pub fn modes(scenario: &Scenario, pose: &Pose) -> Result<Modes, NoModes> {
+        let payload = scenario.payload.ok_or(NoModes::NoPayload)?;
         scenario
             .geometry
             .modes(pose, &payload, &scenario.dynamics)
-            .map_err(|e| e.to_string())
+            .map_err(NoModes::Dynamics)
     }
 
     /// What the 3D view draws for the pose shown: `pose` itself, or swung along the

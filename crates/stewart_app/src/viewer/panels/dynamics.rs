@@ -4,14 +4,14 @@
 
 use egui::RichText;
 use nalgebra::{Matrix3, Vector3};
-use stewart_kinematics::dynamics::dominant;
+use stewart_kinematics::dynamics::{DynamicsError, dominant};
 use stewart_kinematics::forces::Payload;
-use stewart_kinematics::settings::{self, Group};
+use stewart_kinematics::settings::{self, Group, Unit};
 use stewart_kinematics::{Pose, Scenario};
 
 use super::widgets::{WARNING, edit_error, setting_slider};
 use crate::viewer::editor::Editor;
-use crate::viewer::mode_view::{ModeView, SHOWN_HZ};
+use crate::viewer::mode_view::{ModeView, NoModes, SHOWN_HZ};
 
 /// A payload in proportion to the platform: a solid disc of the platform's size, 50 kg
 /// on the seed's 0.6 m platform.
@@ -82,7 +82,7 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
             .add(
                 egui::DragValue::new(&mut mass)
                     .speed(0.01 * p.mass.max(0.01))
-                    .suffix(" kg"),
+                    .suffix(format!(" {}", Unit::Kilogram.symbol())),
             )
             .changed();
         ui.end_row();
@@ -90,7 +90,11 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
         let size = ed.scenario().geometry.characteristic_length();
         for c in &mut com {
             changed |= ui
-                .add(egui::DragValue::new(c).speed(0.002 * size).suffix(" m"))
+                .add(
+                    egui::DragValue::new(c)
+                        .speed(0.002 * size)
+                        .suffix(format!(" {}", Unit::Metre.symbol())),
+                )
                 .changed();
         }
         ui.end_row();
@@ -138,6 +142,21 @@ fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
     let modes = match ModeView::modes(ed.scenario(), pose) {
         Ok(m) => m,
         Err(why) => {
+            let why = match why {
+                NoModes::NoPayload => t.tr("dynamics.why_no_payload").to_owned(),
+                NoModes::Dynamics(DynamicsError::NoStiffness) => {
+                    t.tr("dynamics.why_no_stiffness").to_owned()
+                }
+                NoModes::Dynamics(DynamicsError::MassMatrixNotPositive) => {
+                    t.tr("dynamics.why_not_positive").to_owned()
+                }
+                NoModes::Dynamics(DynamicsError::Unreachable { servo }) => {
+                    t.fmt("dynamics.why_unreachable", &[("servo", &servo)])
+                }
+                NoModes::Dynamics(DynamicsError::Singular) => {
+                    t.tr("dynamics.why_singular").to_owned()
+                }
+            };
             ui.label(RichText::new(t.fmt("dynamics.no_modes", &[("why", &why)])).color(WARNING));
             view.animate = false;
             return;
@@ -146,7 +165,8 @@ fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
     egui::Grid::new("modes").num_columns(3).show(ui, |ui| {
         for k in 0..6 {
             ui.radio_value(&mut view.mode, k, format!("{}", k + 1));
-            ui.label(format!("{:.2} Hz", modes.frequencies_hz[k]));
+            let hz = format!("{:.2}", modes.frequencies_hz[k]);
+            ui.label(t.fmt("dynamics.frequency", &[("hz", &hz)]));
             let words: Vec<String> = dominant(&modes.modes[k])
                 .iter()
                 .map(|(axis, c)| format!("{axis} {c:+.2}"))

@@ -261,7 +261,10 @@ fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
         ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames => {
             ExportWork::Video(Box::new(request(state, path)))
         }
-        ExportKind::PlotSvg | ExportKind::PlotPdf | ExportKind::PlotPng => ExportWork::Plot(path),
+        ExportKind::PlotSvg | ExportKind::PlotPdf | ExportKind::PlotPng => {
+            let efforts = state.look.plot_efforts && state.doc.plot_efforts().is_some();
+            ExportWork::Plot(path, efforts)
+        }
         ExportKind::Csv => ExportWork::Csv(path),
         ExportKind::WorkspaceSvg | ExportKind::WorkspacePdf | ExportKind::WorkspacePng => {
             ExportWork::WorkspaceFigure {

@@ -212,7 +212,7 @@ fn the_lowest_stiffness_of_the_cubic_configuration_is_its_weakest_axis() {
     let limits = crate::limits::Limits::default();
     let slice = g.stiffness_slice(
         &limits,
-        [crate::angle::Angle::from_degrees(0.0); 3],
+        [Angle::from_degrees(0.0); 3],
         crate::workspace::Plane::Horizontal,
         CENTRE_HEIGHT,
         [[-0.05, 0.05], [-0.05, 0.05]],
