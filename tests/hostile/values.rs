@@ -167,6 +167,19 @@ fn option_case() -> impl Strategy<Value = Vec<String>> {
                 inertia,
             ]
         }),
+        (pick(MASSES), pick(TRIPLES), pick(TRIPLES)).prop_map(|(stiffness, xyz, rpy)| {
+            vec![
+                "modes".into(),
+                "--preset".into(),
+                "paired".into(),
+                "--set".into(),
+                format!("dynamics.actuator_stiffness={stiffness}"),
+                "--pose".into(),
+                format!("{xyz},{rpy}"),
+                "--format".into(),
+                "json".into(),
+            ]
+        }),
     ]
 }
 
