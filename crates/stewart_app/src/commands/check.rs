@@ -4,31 +4,13 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use serde::Serialize;
 use stewart_kinematics::checks::LimitSummary;
+use stewart_kinematics::checks::document::CheckDocument;
 use stewart_kinematics::{CheckReport, FindingKind, Scenario, check_motion};
 
 use crate::cli::{CheckArgs, Format};
 use crate::output;
 use crate::source;
-
-/// The JSON document: the scenario's name and stroke, then the report.
-#[derive(Serialize)]
-struct JsonReport<'a> {
-    scenario: &'a str,
-    clean: bool,
-    actuator: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    leg_min_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    leg_max_m: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    servo_min_deg: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    servo_max_deg: Option<f64>,
-    #[serde(flatten)]
-    report: &'a CheckReport,
-}
 
 /// Run the command.
 pub fn run(args: &CheckArgs) -> Result<ExitCode> {
@@ -42,18 +24,7 @@ pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let text = match args.format {
         Format::Text => text_report(&scenario, &report),
         Format::Json => {
-            let stroke = scenario.geometry.stroke();
-            let range = scenario.geometry.actuator().servo_range();
-            let doc = JsonReport {
-                scenario: &scenario.name,
-                clean: report.is_clean(),
-                actuator: scenario.geometry.actuator().kind_name(),
-                leg_min_m: stroke.min,
-                leg_max_m: stroke.max,
-                servo_min_deg: range.map(|(min, _)| min.degrees()),
-                servo_max_deg: range.map(|(_, max)| max.degrees()),
-                report: &report,
-            };
+            let doc = CheckDocument::new(&scenario.name, &scenario.geometry, &report);
             serde_json::to_string_pretty(&doc)? + "\n"
         }
     };

@@ -350,6 +350,92 @@ impl Geometry {
         BatchSolver::new(self).solve_parallel(poses, &mut out);
         out
     }
+
+    /// Actuator values — leg lengths (m), or servo angles (degrees) of a rotary platform —
+    /// of pose rows `[x, y, z, roll, pitch, yaw]` (metres, degrees) into `out`, on all
+    /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
+    /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
+    /// same poses. The earliest row a servo cannot reach is the error: its index and servo
+    /// (both from 0); `out` is then unspecified.
+    ///
+    /// # Panics
+    /// If `out` is shorter than `rows` (a programming error, not a user error).
+    pub fn actuator_values_rows(
+        &self,
+        rows: &[[f64; 6]],
+        out: &mut [[f64; 6]],
+    ) -> Result<(), OutOfReach> {
+        assert!(out.len() >= rows.len(), "output shorter than input");
+        let out = &mut out[..rows.len()];
+        match ServoBatch::new(self) {
+            None => {
+                let solver = BatchSolver::new(self);
+                rows.par_chunks(CHUNK)
+                    .zip(out.par_chunks_mut(CHUNK))
+                    .for_each(|(r, o)| {
+                        let Ok(()) = in_pieces::<std::convert::Infallible>(r, o, |poses, o| {
+                            solver.solve_serial(poses, o);
+                            Ok(())
+                        });
+                    });
+                Ok(())
+            }
+            Some(solver) => {
+                let solved = rows
+                    .par_chunks(CHUNK)
+                    .zip(out.par_chunks_mut(CHUNK))
+                    .try_for_each(|(r, o)| {
+                        in_pieces(r, o, |poses, o| {
+                            pulp::Arch::new()
+                                .dispatch(ServoChunk {
+                                    solver: &solver,
+                                    poses,
+                                    out: o,
+                                })
+                                .map(|()| {
+                                    for row in o.iter_mut() {
+                                        *row = row.map(|r| {
+                                            crate::angle::Angle::from_radians(r).degrees()
+                                        });
+                                    }
+                                })
+                        })
+                    });
+                // Parallel chunks may stop at a later row first: find the earliest.
+                solved.map_err(|_| {
+                    rows.iter()
+                        .enumerate()
+                        .find_map(|(k, row)| solver.angles(&row_pose(row)).err().map(|s| (k, s)))
+                        .unwrap_or((0, 0))
+                })
+            }
+        }
+    }
+}
+
+/// Rows per piece converted to poses on the stack inside a chunk.
+const PIECE: usize = 256;
+
+/// The pose of a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), as a pose table
+/// reads it.
+fn row_pose(row: &[f64; 6]) -> Pose {
+    Pose::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
+}
+
+/// Run `solve` over `rows` (and the matching `out`) a [`PIECE`] of poses at a time.
+fn in_pieces<E>(
+    rows: &[[f64; 6]],
+    out: &mut [[f64; 6]],
+    mut solve: impl FnMut(&[Pose], &mut [[f64; 6]]) -> Result<(), E>,
+) -> Result<(), E> {
+    let mut poses = [Pose::default(); PIECE];
+    for (r, o) in rows.chunks(PIECE).zip(out.chunks_mut(PIECE)) {
+        for (pose, row) in poses.iter_mut().zip(r) {
+            *pose = row_pose(row);
+        }
+        solve(&poses[..r.len()], o)?;
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -581,5 +667,53 @@ mod tests {
         let mut out = vec![[0.0; 6]; far.len()];
         assert_eq!(solver.solve_reference(&far, &mut out), Err(first));
         assert_eq!(g.servo_angles_batch(&far), Some(Err(first)));
+    }
+
+    #[test]
+    fn pose_rows_give_the_bits_of_the_pose_batch() {
+        // Rows of a pose table (degrees), a ragged count over several chunks: the same
+        // bits as the batch of the poses a table reader makes of them, for legs and servos.
+        let row = |k: usize, reach: f64, z: f64| {
+            let t = k as f64;
+            [
+                reach * 0.02 * (0.37 * t).sin(),
+                reach * 0.02 * (0.23 * t).cos(),
+                z + reach * 0.01 * (0.11 * t).sin(),
+                reach * 8.0 * (0.05 * t).sin(),
+                reach * 8.0 * (0.07 * t).cos(),
+                reach * 20.0 * (0.013 * t).sin(),
+            ]
+        };
+        let poses_of = |rows: &[[f64; 6]]| -> Vec<Pose> {
+            rows.iter()
+                .map(|r| Pose::from_xyz_rpy_deg([r[0], r[1], r[2]], [r[3], r[4], r[5]]))
+                .collect()
+        };
+        for (g, z, reach) in [
+            (crate::test_support::paired_geometry(), 0.8, 5.0),
+            (crate::test_support::servo_geometry(), 0.117, 0.3),
+        ] {
+            let rows: Vec<[f64; 6]> = (0..2 * CHUNK + 301).map(|k| row(k, reach, z)).collect();
+            let expected = g
+                .actuator_values_batch(&poses_of(&rows))
+                .unwrap_or_else(|e| panic!("{e:?}"));
+            let mut got = vec![[0.0; 6]; rows.len()];
+            g.actuator_values_rows(&rows, &mut got)
+                .unwrap_or_else(|e| panic!("{e:?}"));
+            for (k, (a, b)) in got.iter().zip(&expected).enumerate() {
+                assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "row {k}");
+            }
+        }
+        // Out of reach from a row on: that row and its servo, as the pose batch says.
+        let g = crate::test_support::servo_geometry();
+        let rows: Vec<[f64; 6]> = (0..CHUNK + 50)
+            .map(|k| row(k, if k >= 3_001 { 3.0 } else { 0.3 }, 0.117))
+            .collect();
+        let Some(Err(first)) = g.servo_angles_batch(&poses_of(&rows)) else {
+            panic!("every row reaches")
+        };
+        assert!(first.0 >= 3_001);
+        let mut out = vec![[0.0; 6]; rows.len()];
+        assert_eq!(g.actuator_values_rows(&rows, &mut out), Err(first));
     }
 }

@@ -14,6 +14,7 @@
 pub mod collision;
 pub mod cones;
 mod describe;
+pub mod document;
 pub mod jumps;
 pub mod rates;
 pub mod rigid;
