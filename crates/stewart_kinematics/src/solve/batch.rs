@@ -355,8 +355,9 @@ impl Geometry {
     /// of pose rows `[x, y, z, roll, pitch, yaw]` (metres, degrees) into `out`, on all
     /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
     /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
-    /// same poses. The earliest row a servo cannot reach is the error: its index and servo
-    /// (both from 0); `out` is then unspecified.
+    /// same poses. A value that is not finite is refused (checked as the rows are read:
+    /// no pass of its own), and so is a row a servo cannot reach: the earliest such row is
+    /// the error; `out` is then unspecified.
     ///
     /// # Panics
     /// If `out` is shorter than `rows` (a programming error, not a user error).
@@ -364,21 +365,31 @@ impl Geometry {
         &self,
         rows: &[[f64; 6]],
         out: &mut [[f64; 6]],
-    ) -> Result<(), OutOfReach> {
+    ) -> Result<(), RowError> {
         assert!(out.len() >= rows.len(), "output shorter than input");
         let out = &mut out[..rows.len()];
+        let earliest_bad_value = || {
+            rows.iter().enumerate().find_map(|(k, row)| {
+                row.iter()
+                    .position(|v| !v.is_finite())
+                    .map(|column| RowError::NotFinite { row: k, column })
+            })
+        };
         match ServoBatch::new(self) {
             None => {
                 let solver = BatchSolver::new(self);
-                rows.par_chunks(CHUNK)
+                let solved = rows
+                    .par_chunks(CHUNK)
                     .zip(out.par_chunks_mut(CHUNK))
-                    .for_each(|(r, o)| {
-                        let Ok(()) = in_pieces::<std::convert::Infallible>(r, o, |poses, o| {
+                    .try_for_each(|(r, o)| {
+                        in_pieces(r, o, |poses, o| {
                             solver.solve_serial(poses, o);
                             Ok(())
-                        });
+                        })
                     });
-                Ok(())
+                solved.map_err(|()| {
+                    earliest_bad_value().unwrap_or(RowError::NotFinite { row: 0, column: 0 })
+                })
             }
             Some(solver) => {
                 let solved = rows
@@ -392,6 +403,7 @@ impl Geometry {
                                     poses,
                                     out: o,
                                 })
+                                .map_err(drop)
                                 .map(|()| {
                                     for row in o.iter_mut() {
                                         *row = row.map(|r| {
@@ -402,11 +414,19 @@ impl Geometry {
                         })
                     });
                 // Parallel chunks may stop at a later row first: find the earliest.
-                solved.map_err(|_| {
+                solved.map_err(|()| {
                     rows.iter()
                         .enumerate()
-                        .find_map(|(k, row)| solver.angles(&row_pose(row)).err().map(|s| (k, s)))
-                        .unwrap_or((0, 0))
+                        .find_map(|(k, row)| {
+                            if let Some(column) = row.iter().position(|v| !v.is_finite()) {
+                                return Some(RowError::NotFinite { row: k, column });
+                            }
+                            solver
+                                .angles(&row_pose(row))
+                                .err()
+                                .map(|servo| RowError::Unreachable { row: k, servo })
+                        })
+                        .unwrap_or(RowError::NotFinite { row: 0, column: 0 })
                 })
             }
         }
@@ -422,16 +442,41 @@ fn row_pose(row: &[f64; 6]) -> Pose {
     Pose::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
 }
 
-/// Run `solve` over `rows` (and the matching `out`) a [`PIECE`] of poses at a time.
-fn in_pieces<E>(
+/// Why pose rows have no actuator values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RowError {
+    /// Value `column` (0 to 5: x, y, z, roll, pitch, yaw) of `row` is NaN or infinite.
+    NotFinite {
+        /// The row, from 0.
+        row: usize,
+        /// The column, from 0.
+        column: usize,
+    },
+    /// A servo cannot reach its platform joint at `row`.
+    Unreachable {
+        /// The row, from 0.
+        row: usize,
+        /// The servo, from 0.
+        servo: usize,
+    },
+}
+
+/// Run `solve` over `rows` (and the matching `out`) a [`PIECE`] of poses at a time; a
+/// value that is not finite stops it (`Err(())`), as does `solve`.
+fn in_pieces(
     rows: &[[f64; 6]],
     out: &mut [[f64; 6]],
-    mut solve: impl FnMut(&[Pose], &mut [[f64; 6]]) -> Result<(), E>,
-) -> Result<(), E> {
+    mut solve: impl FnMut(&[Pose], &mut [[f64; 6]]) -> Result<(), ()>,
+) -> Result<(), ()> {
     let mut poses = [Pose::default(); PIECE];
     for (r, o) in rows.chunks(PIECE).zip(out.chunks_mut(PIECE)) {
+        let mut finite = true;
         for (pose, row) in poses.iter_mut().zip(r) {
+            finite &= row.iter().all(|v| v.is_finite());
             *pose = row_pose(row);
+        }
+        if !finite {
+            return Err(());
         }
         solve(&poses[..r.len()], o)?;
     }
@@ -714,6 +759,21 @@ mod tests {
         };
         assert!(first.0 >= 3_001);
         let mut out = vec![[0.0; 6]; rows.len()];
-        assert_eq!(g.actuator_values_rows(&rows, &mut out), Err(first));
+        let unreachable = RowError::Unreachable {
+            row: first.0,
+            servo: first.1,
+        };
+        assert_eq!(g.actuator_values_rows(&rows, &mut out), Err(unreachable));
+        // A NaN (or infinity) before it is the error instead, with its column.
+        let mut bad = rows.clone();
+        bad[2_000][4] = f64::NAN;
+        bad[2_500][0] = f64::INFINITY;
+        let nan = RowError::NotFinite {
+            row: 2_000,
+            column: 4,
+        };
+        assert_eq!(g.actuator_values_rows(&bad, &mut out), Err(nan));
+        let legs = crate::test_support::paired_geometry();
+        assert_eq!(legs.actuator_values_rows(&bad, &mut out), Err(nan));
     }
 }

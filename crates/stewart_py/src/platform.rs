@@ -1,0 +1,457 @@
+//! `stewart.Platform`: a scenario (geometry, motion, limits, payload) with its kinematics
+//! on numpy arrays, and `stewart.calibrate`.
+
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use stewart_kinematics::angle::Angle;
+use stewart_kinematics::batch::RowError;
+use stewart_kinematics::calibration::{Held, Measurement, calibrate as fit, calibrated_scenario};
+use stewart_kinematics::checks::document::CheckDocument;
+use stewart_kinematics::forward::ForwardSolution;
+use stewart_kinematics::forward::assembly::canonical;
+use stewart_kinematics::{ForwardOptions, Pose, Scenario, check_motion, settings};
+
+use crate::arrays::{self, Rows};
+use crate::errors::{raise, scenario as scenario_error};
+
+/// Poses found for rows, or the row (from 0) that has none and why.
+type RowPoses = Result<Vec<[f64; 6]>, (usize, String)>;
+
+/// The pose columns.
+const POSE: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+
+/// A Gough–Stewart platform and its motion (a scenario of the studio): made from a preset
+/// or a scenario file, changed by setting keys, and solved on numpy arrays.
+#[pyclass(module = "stewart")]
+pub struct Platform {
+    scenario: Scenario,
+}
+
+/// The pose of a row `[x, y, z, roll, pitch, yaw]` (metres, degrees).
+fn pose_of(row: &[f64; 6]) -> Pose {
+    Pose::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
+}
+
+/// A pose as a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), its angles in the
+/// forward solver's canonical range (as `stewart fk` writes them).
+fn row_of(s: &ForwardSolution) -> [f64; 6] {
+    let p = canonical(&s.pose);
+    let [r, pi, y] = p.rpy_degrees();
+    [p.position.x, p.position.y, p.position.z, r, pi, y]
+}
+
+/// A new `(n, 6)` array of `rows`.
+fn array<'py>(py: Python<'py>, rows: &[[f64; 6]]) -> Bound<'py, PyArray2<f64>> {
+    let flat: Vec<f64> = rows.iter().flatten().copied().collect();
+    let a = PyArray1::from_vec(py, flat);
+    a.reshape([rows.len(), 6])
+        .unwrap_or_else(|_| unreachable!("n × 6 values reshape to (n, 6)"))
+}
+
+impl Platform {
+    fn columns(&self) -> [&'static str; 6] {
+        self.scenario.geometry.quantity().columns
+    }
+}
+
+#[pymethods]
+impl Platform {
+    /// A shipped preset: `seed`, `paired`, `circle`, `figure8`, `helix`, `sway`,
+    /// `keyframes`, `servo-desk`, `crank-rig` or `dietmaier` (see `stewart.presets()`).
+    #[staticmethod]
+    fn preset(py: Python<'_>, name: &str) -> PyResult<Self> {
+        Scenario::preset(name)
+            .map(|scenario| Self { scenario })
+            .map_err(|e| scenario_error(py, e))
+    }
+
+    /// A scenario file (TOML); errors name the file, line and key.
+    #[staticmethod]
+    fn from_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
+        Scenario::load(&path)
+            .map(|scenario| Self { scenario })
+            .map_err(|e| scenario_error(py, e))
+    }
+
+    /// Change one setting by its key, as `stewart settings` lists them and `--set` takes
+    /// them: a number (`p.set("geometry.base_radius", 1.2)`), `None` to switch an optional
+    /// one off, `True`/`False` for switches, or words for `link.*` keys. A refused value
+    /// leaves the platform unchanged.
+    fn set(&mut self, py: Python<'_>, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let text = if value.is_none() {
+            "off".to_owned()
+        } else if let Ok(b) = value.extract::<bool>() {
+            b.to_string()
+        } else if let Ok(v) = value.extract::<f64>() {
+            format!("{v}")
+        } else {
+            value.str()?.to_string()
+        };
+        settings::apply_all(&mut self.scenario, [format!("{key}={text}").as_str()])
+            .map_err(|e| scenario_error(py, e))
+    }
+
+    /// The value of a setting (`None` when it is off or does not apply).
+    fn get(&self, py: Python<'_>, key: &str) -> PyResult<Option<f64>> {
+        let setting = settings::find(key).map_err(|e| scenario_error(py, e))?;
+        Ok(setting.get(&self.scenario))
+    }
+
+    /// The scenario's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.scenario.name.clone()
+    }
+
+    /// `"linear"` legs or `"rotary"` servos.
+    #[getter]
+    fn actuator(&self) -> &'static str {
+        self.scenario.geometry.actuator().kind_name()
+    }
+
+    /// The actuator values' names: `L1…L6` (metres) or `theta1…theta6` (degrees).
+    #[getter]
+    fn columns_names(&self) -> Vec<&'static str> {
+        self.columns().to_vec()
+    }
+
+    /// The home pose `[x, y, z, roll, pitch, yaw]`.
+    #[getter]
+    fn home(&self) -> [f64; 6] {
+        let p = self.scenario.geometry.home_pose();
+        let [r, pi, y] = p.rpy_degrees();
+        [p.position.x, p.position.y, p.position.z, r, pi, y]
+    }
+
+    /// The scenario as TOML text (what `from_file` reads back).
+    fn to_toml(&self) -> String {
+        self.scenario.to_toml()
+    }
+
+    /// Inverse kinematics of `poses`, an `(n, 6)` float64 array of x, y, z (metres) and
+    /// roll, pitch, yaw (degrees): the `(n, 6)` leg lengths (metres) or servo angles
+    /// (degrees), on all cores with the GIL released. A C-contiguous input is read in
+    /// place and the result written straight into the array returned (no copy either
+    /// way). `out`, an `(n, 6)` C-contiguous float64 array, takes the result instead of a
+    /// new one (no allocation: for loops over many batches). A pose a servo cannot reach
+    /// raises `UnreachableError` with its row and servo.
+    #[pyo3(signature = (poses, out = None))]
+    fn ik<'py>(
+        &self,
+        py: Python<'py>,
+        poses: &Bound<'py, PyAny>,
+        out: Option<Bound<'py, PyArray2<f64>>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let rows = arrays::table(poses, "poses", &POSE)?;
+        let n = rows.values().len() / 6;
+        let out = match out {
+            Some(out) => {
+                arrays::check_out(&out, n)?;
+                out
+            }
+            None => PyArray2::<f64>::zeros(py, [n, 6], false),
+        };
+        {
+            let mut writer = out.readwrite();
+            let slice = writer
+                .as_slice_mut()
+                .unwrap_or_else(|_| unreachable!("a new array is contiguous"));
+            let target: &mut [[f64; 6]] = bytemuck::cast_slice_mut(slice);
+            let input: &[[f64; 6]] = bytemuck::cast_slice(rows.values());
+            let g = &self.scenario.geometry;
+            let solved = py.detach(|| g.actuator_values_rows(input, target));
+            match solved {
+                Ok(()) => {}
+                Err(RowError::NotFinite { row, column }) => {
+                    let value = input[row][column];
+                    return Err(arrays::not_finite("poses", row, POSE[column], value));
+                }
+                Err(RowError::Unreachable { row, servo }) => {
+                    // In the closed form's words, as `stewart solve` says it.
+                    let why = g
+                        .actuator_values_at(&pose_of(&input[row]))
+                        .err()
+                        .map_or_else(
+                            || format!("servo {} cannot reach its platform joint", servo + 1),
+                            |e| e.to_string(),
+                        );
+                    let message = format!("poses, row {row} (from 0): {why}");
+                    return Err(raise(py, "UnreachableError", (message, row, servo + 1)));
+                }
+            }
+        }
+        drop(rows);
+        Ok(out)
+    }
+
+    /// Forward kinematics of `values`, an `(n, 6)` array of leg lengths (metres) or servo
+    /// angles (degrees): the `(n, 6)` poses, each row started from the previous row's
+    /// pose (from home for the first), as `stewart fk` does. With `assembly_modes=True`,
+    /// a list with every assembly mode of each row instead (an `(k, 6)` array per row).
+    #[pyo3(signature = (values, assembly_modes = false))]
+    fn fk<'py>(
+        &self,
+        py: Python<'py>,
+        values: &Bound<'py, PyAny>,
+        assembly_modes: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let columns = self.columns();
+        let rows: Rows<'_> = arrays::finite_table(values, "values", &columns)?;
+        let input: Vec<[f64; 6]> = bytemuck::cast_slice(rows.values()).to_vec();
+        drop(rows);
+        let g = self.scenario.geometry.clone();
+        if g.rotary().is_none() && g.architecture().singular {
+            return Err(raise(
+                py,
+                "ForwardError",
+                (
+                    format!(
+                        "scenario `{}`: the pose is not determined by the leg lengths, so forward kinematics has no answer",
+                        self.scenario.name
+                    ),
+                    0usize,
+                ),
+            ));
+        }
+        let forward_error = |row: usize, e: &dyn std::fmt::Display| {
+            raise(
+                py,
+                "ForwardError",
+                (format!("values, row {row} (from 0): {e}"), row),
+            )
+        };
+        if assembly_modes {
+            let found: Vec<RowPoses> = py.detach(|| {
+                input
+                    .iter()
+                    .enumerate()
+                    .map(|(k, row)| {
+                        let modes = if g.rotary().is_some() {
+                            g.servo_assembly_modes(&row.map(Angle::from_degrees))
+                        } else {
+                            g.assembly_modes(row)
+                        };
+                        modes
+                            .map(|m| m.iter().map(row_of).collect())
+                            .map_err(|e| (k, e.to_string()))
+                    })
+                    .collect()
+            });
+            let list = PyList::empty(py);
+            for modes in found {
+                let modes = modes.map_err(|(k, e)| forward_error(k, &e))?;
+                list.append(array(py, &modes))?;
+            }
+            return Ok(list.into_any());
+        }
+        let options = ForwardOptions::default();
+        let solved: RowPoses = py.detach(|| {
+            if g.rotary().is_some() {
+                let mut start = g.home_pose();
+                let mut out = Vec::with_capacity(input.len());
+                for (k, row) in input.iter().enumerate() {
+                    let s = g
+                        .forward_servos(&row.map(Angle::from_degrees), &start, &options)
+                        .map_err(|e| (k, e.to_string()))?;
+                    start = s.pose;
+                    out.push(row_of(&s));
+                }
+                Ok(out)
+            } else {
+                g.forward_sequence(&input, false, &options)
+                    .map(|s| s.solutions.iter().map(row_of).collect())
+                    .map_err(|e| (e.index, e.error.to_string()))
+            }
+        });
+        let poses = solved.map_err(|(k, e)| forward_error(k, &e))?;
+        Ok(array(py, &poses).into_any())
+    }
+
+    /// The 6×6 Jacobian of the actuators at `pose` (`[x, y, z, roll, pitch, yaw]`):
+    /// actuator rates per twist `(v, ω)` about the pivot point — rows `[u, r × u]` for
+    /// legs, the servo Jacobian for servos.
+    fn jacobian<'py>(
+        &self,
+        py: Python<'py>,
+        pose: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let p = pose_of(&arrays::six(pose, "pose", &POSE)?);
+        let j = self.scenario.geometry.actuator_jacobian(&p).map_err(|e| {
+            raise(
+                py,
+                "UnreachableError",
+                (format!("pose: {e}"), 0usize, e.servo),
+            )
+        })?;
+        let rows: Vec<[f64; 6]> = (0..6).map(|i| std::array::from_fn(|k| j[(i, k)])).collect();
+        Ok(array(py, &rows))
+    }
+
+    /// The normalised condition number of the actuators' Jacobian at `pose` (infinite at
+    /// a singular pose), as the checks and the viewer report it.
+    fn condition(&self, py: Python<'_>, pose: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let p = pose_of(&arrays::six(pose, "pose", &POSE)?);
+        let c = self
+            .scenario
+            .geometry
+            .actuated_conditioning(&p)
+            .ok_or_else(|| {
+                raise(
+                    py,
+                    "UnreachableError",
+                    (
+                        "pose: a servo cannot reach its platform joint".to_owned(),
+                        0usize,
+                        0usize,
+                    ),
+                )
+            })?;
+        Ok(c.condition_number.unwrap_or(f64::INFINITY))
+    }
+
+    /// The pre-flight check of the motion as a dict: what `stewart check --format json`
+    /// prints.
+    fn check<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let s = &self.scenario;
+        let report =
+            py.detach(|| check_motion(&s.geometry, &s.limits, &s.motion.sample(), &s.checks));
+        let doc = CheckDocument::new(&s.name, &s.geometry, &report);
+        let text = serde_json::to_string(&doc).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        py.import("json")?.getattr("loads")?.call1((text,))
+    }
+
+    /// The reachable workspace at a fixed `orientation` (roll, pitch, yaw in degrees) on a
+    /// grid of `resolution` columns a side: a dict with `volume` and `volume_error` (m³)
+    /// and `extent` (`[[x_min, x_max], [y_min, y_max], [z_min, z_max]]`, `None` when
+    /// nothing is reachable), as `stewart workspace` reports them.
+    #[pyo3(signature = (orientation = (0.0, 0.0, 0.0), resolution = 400))]
+    fn workspace<'py>(
+        &self,
+        py: Python<'py>,
+        orientation: (f64, f64, f64),
+        resolution: usize,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let angles = [orientation.0, orientation.1, orientation.2];
+        if let Some(a) = angles.iter().find(|a| !a.is_finite() || a.abs() > 3600.0) {
+            return Err(PyValueError::new_err(format!(
+                "orientation: {a} is not an angle within ±3600°"
+            )));
+        }
+        if !(2..=4096).contains(&resolution) {
+            return Err(PyValueError::new_err(format!(
+                "resolution must be from 2 to 4096 columns a side, got {resolution}"
+            )));
+        }
+        let s = &self.scenario;
+        let ws = py
+            .detach(|| {
+                s.geometry.constant_orientation_workspace(
+                    &s.limits,
+                    angles.map(Angle::from_degrees),
+                    resolution,
+                )
+            })
+            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let d = PyDict::new(py);
+        d.set_item("volume", ws.volume)?;
+        d.set_item("volume_error", ws.volume_error)?;
+        d.set_item("extent", ws.extent.map(|e| e.map(|r| r.to_vec()).to_vec()))?;
+        d.set_item("resolution", ws.resolution)?;
+        Ok(d)
+    }
+
+    /// The motion, sampled: `(times, poses)`, an `(n,)` array of seconds and an `(n, 6)`
+    /// array of x, y, z (metres), roll, pitch, yaw (degrees).
+    fn trajectory<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>) {
+        let samples = self.scenario.motion.sample();
+        let rows: Vec<[f64; 6]> = samples
+            .poses
+            .iter()
+            .map(|p| {
+                let [r, pi, y] = p.rpy_degrees();
+                [p.position.x, p.position.y, p.position.z, r, pi, y]
+            })
+            .collect();
+        (PyArray1::from_vec(py, samples.times), array(py, &rows))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Platform('{}', {} actuators)",
+            self.scenario.name,
+            self.actuator()
+        )
+    }
+}
+
+/// The names of the shipped presets.
+#[pyfunction]
+pub fn presets() -> Vec<&'static str> {
+    stewart_kinematics::scenario::presets::names().collect()
+}
+
+/// Calibrate a built platform from `measured`, an `(n, 12)` array per measurement of the
+/// measured pose (x, y, z in metres, roll, pitch, yaw in degrees) and the six values
+/// commanded for it (leg lengths in metres, or model servo angles in degrees as `ik`
+/// gives them); `hold` names parameter groups kept as designed (`"base"`, `"platform"`,
+/// `"offsets"`). Returns `(calibrated, report)`: a `Platform` with its joints as
+/// coordinates and the offsets folded in (as `stewart calibrate --out` writes it) and a
+/// dict with the offsets and the residuals before and after.
+#[pyfunction]
+#[pyo3(signature = (platform, measured, hold = Vec::new()))]
+pub fn calibrate<'py>(
+    py: Python<'py>,
+    platform: &Platform,
+    measured: &Bound<'py, PyAny>,
+    hold: Vec<String>,
+) -> PyResult<(Platform, Bound<'py, PyDict>)> {
+    let quantity = platform.scenario.geometry.quantity();
+    let mut columns: Vec<&str> = POSE.to_vec();
+    columns.extend(quantity.columns);
+    let rows = arrays::finite_table(measured, "measured", &columns)?;
+    let measurements: Vec<Measurement> = rows
+        .values()
+        .chunks_exact(12)
+        .map(|r| Measurement {
+            pose: Pose::from_xyz_rpy_deg([r[0], r[1], r[2]], [r[3], r[4], r[5]]),
+            commanded: std::array::from_fn(|i| r[6 + i] * quantity.si_per_unit),
+        })
+        .collect();
+    drop(rows);
+    for h in &hold {
+        if !["base", "platform", "offsets"].contains(&h.as_str()) {
+            return Err(PyValueError::new_err(format!(
+                "hold: `{h}` is not one of base, platform, offsets"
+            )));
+        }
+    }
+    let held = Held {
+        base: hold.iter().any(|h| h == "base"),
+        platform: hold.iter().any(|h| h == "platform"),
+        offsets: hold.iter().any(|h| h == "offsets"),
+    };
+    let g = &platform.scenario.geometry;
+    let c = py
+        .detach(|| fit(g, &measurements, held))
+        .map_err(|e| raise(py, "CalibrationError", (format!("measured: {e}"),)))?;
+    let calibrated = calibrated_scenario(&platform.scenario, &c, measurements.len());
+    let report = PyDict::new(py);
+    let per_unit = 1.0 / quantity.si_per_unit;
+    report.set_item("offsets", c.offsets.map(|o| o * per_unit).to_vec())?;
+    report.set_item("rms_before", c.before.rms)?;
+    report.set_item("rms_after", c.after.rms)?;
+    report.set_item("max_before", c.before.max)?;
+    report.set_item("max_after", c.after.max)?;
+    report.set_item("row_residuals", c.row_residuals.clone())?;
+    Ok((
+        Platform {
+            scenario: calibrated,
+        },
+        report,
+    ))
+}
