@@ -10,3 +10,8 @@ export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all --check
 cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
+# The Python package (a workspace of its own: it builds against Python): lints, then
+# built and tested from a clean virtual environment.
+cargo fmt --manifest-path crates/stewart_py/Cargo.toml --check
+cargo clippy --manifest-path crates/stewart_py/Cargo.toml --all-targets -- -D warnings
+bash scripts/python-check.sh
