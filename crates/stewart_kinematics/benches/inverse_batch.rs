@@ -46,6 +46,22 @@ fn bench(c: &mut Criterion) {
     group.bench_function("batch_parallel_1M", |b| {
         b.iter(|| solver.solve_parallel(black_box(&input), black_box(&mut out)))
     });
+    // The same poses as rows of a table (x, y, z, roll, pitch, yaw in metres and degrees),
+    // as `solve --poses` and the Python package hand them in.
+    let rows: Vec<[f64; 6]> = input
+        .iter()
+        .map(|p| {
+            let [r, pi, y] = p.rpy_degrees();
+            [p.position.x, p.position.y, p.position.z, r, pi, y]
+        })
+        .collect();
+    group.bench_function("batch_rows_parallel_1M", |b| {
+        b.iter(|| {
+            geometry
+                .actuator_values_rows(black_box(&rows), black_box(&mut out))
+                .unwrap_or_else(|e| panic!("{e:?}"))
+        })
+    });
     group.bench_function("batch_serial_1M", |b| {
         b.iter(|| solver.solve_serial(black_box(&input), black_box(&mut out)))
     });

@@ -16,6 +16,48 @@ use crate::pose::Pose;
 /// Poses per rayon task: big enough that scheduling is noise, small enough to balance.
 pub const CHUNK: usize = 4096;
 
+/// What the batch reads a pose from: a [`Pose`], or a row `[x, y, z, roll, pitch, yaw]`
+/// of a table (metres, degrees; its angles turned to radians as [`Pose`] turns them, so
+/// the same bits).
+pub(crate) trait AsPose: Copy + Sync {
+    /// Coordinate `k` of the position (0: x, 1: y, 2: z), metres.
+    fn coordinate(&self, k: usize) -> f64;
+    /// Angle `k` (0: roll, 1: pitch, 2: yaw), radians.
+    fn angle(&self, k: usize) -> f64;
+    /// The pose itself.
+    fn pose(&self) -> Pose;
+}
+
+impl AsPose for Pose {
+    #[inline(always)]
+    fn coordinate(&self, k: usize) -> f64 {
+        self.position[k]
+    }
+    #[inline(always)]
+    fn angle(&self, k: usize) -> f64 {
+        [self.roll, self.pitch, self.yaw][k].radians()
+    }
+    #[inline(always)]
+    fn pose(&self) -> Pose {
+        *self
+    }
+}
+
+impl AsPose for [f64; 6] {
+    #[inline(always)]
+    fn coordinate(&self, k: usize) -> f64 {
+        self[k]
+    }
+    #[inline(always)]
+    fn angle(&self, k: usize) -> f64 {
+        self[3 + k].to_radians()
+    }
+    #[inline(always)]
+    fn pose(&self) -> Pose {
+        row_pose(self)
+    }
+}
+
 /// Geometry constants arranged for the batch loop.
 #[derive(Clone, Copy, Debug)]
 pub struct BatchSolver {
@@ -98,6 +140,11 @@ impl BatchSolver {
     /// # Panics
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     pub fn solve_serial(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
+        self.solve_serial_of(poses, out);
+    }
+
+    /// [`BatchSolver::solve_serial`] of poses or rows.
+    fn solve_serial_of<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
         // The same loop compiled for the widest vector instructions this CPU has (AVX2 and
         // FMA, or AVX-512), chosen at run time; without them, the baseline build.
         pulp::Arch::new().dispatch(Lengths {
@@ -114,6 +161,12 @@ impl BatchSolver {
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     #[inline(always)]
     pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
+        self.solve_reference_of(poses, out);
+    }
+
+    /// [`BatchSolver::solve_reference`] of poses or rows.
+    #[inline(always)]
+    fn solve_reference_of<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
         assert!(out.len() >= poses.len(), "output shorter than input");
         let whole = poses.len() / LANES * LANES;
         for (p, o) in poses[..whole]
@@ -121,16 +174,22 @@ impl BatchSolver {
             .zip(out[..whole].chunks_exact_mut(LANES))
         {
             if !self.lengths_lanes(p, o) {
-                self.solve_one_by_one(p, o);
+                self.solve_one_by_one_of(p, o);
             }
         }
-        self.solve_one_by_one(&poses[whole..], &mut out[whole..]);
+        self.solve_one_by_one_of(&poses[whole..], &mut out[whole..]);
     }
 
     /// Leg lengths pose by pose (the scalar path).
     pub fn solve_one_by_one(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
+        self.solve_one_by_one_of(poses, out);
+    }
+
+    /// [`BatchSolver::solve_one_by_one`] of poses or rows.
+    #[inline(always)]
+    fn solve_one_by_one_of<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
         for (pose, o) in poses.iter().zip(out.iter_mut()) {
-            *o = self.lengths(pose);
+            *o = self.lengths(&pose.pose());
         }
     }
 
@@ -149,34 +208,34 @@ impl BatchSolver {
 
 /// [`BatchSolver::solve_reference`] as one piece of work for `pulp` to compile per
 /// instruction set: inlined whole into each, so every step gets the wide instructions.
-struct Lengths<'a> {
+struct Lengths<'a, P> {
     solver: &'a BatchSolver,
-    poses: &'a [Pose],
+    poses: &'a [P],
     out: &'a mut [[f64; 6]],
 }
 
-impl pulp::WithSimd for Lengths<'_> {
+impl<P: AsPose> pulp::WithSimd for Lengths<'_, P> {
     type Output = ();
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _simd: S) {
-        self.solver.solve_reference(self.poses, self.out);
+        self.solver.solve_reference_of(self.poses, self.out);
     }
 }
 
 /// [`ServoBatch::solve_reference`] as one piece of work for `pulp`, as [`Lengths`].
-struct ServoChunk<'a> {
+struct ServoChunk<'a, P> {
     solver: &'a ServoBatch,
-    poses: &'a [Pose],
+    poses: &'a [P],
     out: &'a mut [[f64; 6]],
 }
 
-impl pulp::WithSimd for ServoChunk<'_> {
+impl<P: AsPose> pulp::WithSimd for ServoChunk<'_, P> {
     type Output = Result<(), OutOfReach>;
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _simd: S) -> Self::Output {
-        self.solver.solve_reference(self.poses, self.out)
+        self.solver.solve_reference_of(self.poses, self.out)
     }
 }
 
@@ -308,6 +367,16 @@ impl ServoBatch {
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     #[inline(always)]
     pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> Result<(), OutOfReach> {
+        self.solve_reference_of(poses, out)
+    }
+
+    /// [`ServoBatch::solve_reference`] of poses or rows.
+    #[inline(always)]
+    fn solve_reference_of<P: AsPose>(
+        &self,
+        poses: &[P],
+        out: &mut [[f64; 6]],
+    ) -> Result<(), OutOfReach> {
         assert!(out.len() >= poses.len(), "output shorter than input");
         for (group, (p, o)) in poses.chunks(LANES).zip(out.chunks_mut(LANES)).enumerate() {
             if p.len() == LANES && self.angles_lanes(p, o) {
@@ -315,7 +384,7 @@ impl ServoBatch {
             }
             for (k, (pose, slot)) in p.iter().zip(o.iter_mut()).enumerate() {
                 *slot = self
-                    .angles_scalar(pose)
+                    .angles_scalar(&pose.pose())
                     .map_err(|servo| (group * LANES + k, servo))?;
             }
         }
@@ -382,10 +451,19 @@ impl Geometry {
                     .par_chunks(CHUNK)
                     .zip(out.par_chunks_mut(CHUNK))
                     .try_for_each(|(r, o)| {
-                        in_pieces(r, o, |poses, o| {
-                            solver.solve_serial(poses, o);
-                            Ok(())
-                        })
+                        pulp::Arch::new().dispatch(Lengths {
+                            solver: &solver,
+                            poses: r,
+                            out: &mut *o,
+                        });
+                        // A value that is not finite gives a length that is not either:
+                        // the rows are read again (from cache) only then. (A finite row
+                        // far out may give an infinite length; that is its length.)
+                        let arch = pulp::Arch::new();
+                        if !arch.dispatch(Finite(o)) && !arch.dispatch(Finite(r)) {
+                            return Err(());
+                        }
+                        Ok(())
                     });
                 solved.map_err(|()| {
                     earliest_bad_value().unwrap_or(RowError::NotFinite { row: 0, column: 0 })
@@ -396,22 +474,19 @@ impl Geometry {
                     .par_chunks(CHUNK)
                     .zip(out.par_chunks_mut(CHUNK))
                     .try_for_each(|(r, o)| {
-                        in_pieces(r, o, |poses, o| {
-                            pulp::Arch::new()
-                                .dispatch(ServoChunk {
-                                    solver: &solver,
-                                    poses,
-                                    out: o,
-                                })
-                                .map_err(drop)
-                                .map(|()| {
-                                    for row in o.iter_mut() {
-                                        *row = row.map(|r| {
-                                            crate::angle::Angle::from_radians(r).degrees()
-                                        });
-                                    }
-                                })
-                        })
+                        // A value that is not finite leaves some servo without a closure
+                        // (an error, told apart from one out of reach below).
+                        pulp::Arch::new()
+                            .dispatch(ServoChunk {
+                                solver: &solver,
+                                poses: r,
+                                out: &mut *o,
+                            })
+                            .map_err(drop)?;
+                        for row in o.iter_mut() {
+                            *row = row.map(|r| crate::angle::Angle::from_radians(r).degrees());
+                        }
+                        Ok(())
                     });
                 // Parallel chunks may stop at a later row first: find the earliest.
                 solved.map_err(|()| {
@@ -433,8 +508,32 @@ impl Geometry {
     }
 }
 
-/// Rows per piece converted to poses on the stack inside a chunk.
-const PIECE: usize = 256;
+/// [`all_finite`] compiled for the CPU's widest instructions.
+struct Finite<'a>(&'a [[f64; 6]]);
+
+impl pulp::WithSimd for Finite<'_> {
+    type Output = bool;
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _simd: S) -> bool {
+        all_finite(self.0)
+    }
+}
+
+/// Whether every value of `rows` is finite (no early exit: the loop vectorises).
+#[inline(always)]
+fn all_finite(rows: &[[f64; 6]]) -> bool {
+    // Eight running minima of `|v| < ∞` (NaN compares false), one per lane.
+    let values = rows.as_flattened();
+    let mut lanes = [true; 8];
+    let mut pieces = values.chunks_exact(8);
+    for piece in &mut pieces {
+        for (ok, v) in lanes.iter_mut().zip(piece) {
+            *ok &= v.abs() < f64::INFINITY;
+        }
+    }
+    lanes.iter().all(|&ok| ok) && pieces.remainder().iter().all(|v| v.is_finite())
+}
 
 /// The pose of a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), as a pose table
 /// reads it.
@@ -459,28 +558,6 @@ pub enum RowError {
         /// The servo, from 0.
         servo: usize,
     },
-}
-
-/// Run `solve` over `rows` (and the matching `out`) a [`PIECE`] of poses at a time; a
-/// value that is not finite stops it (`Err(())`), as does `solve`.
-fn in_pieces(
-    rows: &[[f64; 6]],
-    out: &mut [[f64; 6]],
-    mut solve: impl FnMut(&[Pose], &mut [[f64; 6]]) -> Result<(), ()>,
-) -> Result<(), ()> {
-    let mut poses = [Pose::default(); PIECE];
-    for (r, o) in rows.chunks(PIECE).zip(out.chunks_mut(PIECE)) {
-        let mut finite = true;
-        for (pose, row) in poses.iter_mut().zip(r) {
-            finite &= row.iter().all(|v| v.is_finite());
-            *pose = row_pose(row);
-        }
-        if !finite {
-            return Err(());
-        }
-        solve(&poses[..r.len()], o)?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]
@@ -775,5 +852,17 @@ mod tests {
         assert_eq!(g.actuator_values_rows(&bad, &mut out), Err(nan));
         let legs = crate::test_support::paired_geometry();
         assert_eq!(legs.actuator_values_rows(&bad, &mut out), Err(nan));
+        // An infinite position alone, in a later chunk; and a finite row so far out that
+        // its lengths overflow: that is its answer, not an error.
+        let mut far = rows.clone();
+        far[CHUNK + 7][1] = f64::NEG_INFINITY;
+        let inf = RowError::NotFinite {
+            row: CHUNK + 7,
+            column: 1,
+        };
+        assert_eq!(legs.actuator_values_rows(&far, &mut out), Err(inf));
+        far[CHUNK + 7][1] = 1e300;
+        assert_eq!(legs.actuator_values_rows(&far, &mut out), Ok(()));
+        assert!(out[CHUNK + 7].iter().all(|l| l.is_infinite()));
     }
 }

@@ -13,9 +13,9 @@
 
 use std::f64::consts::FRAC_2_PI;
 
+use super::batch::AsPose;
 use super::batch::{BatchSolver, ServoBatch};
 use super::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
-use crate::pose::Pose;
 
 /// Poses computed together.
 pub const LANES: usize = 8;
@@ -57,7 +57,7 @@ impl BatchSolver {
     /// the poses one by one.
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane loops index several arrays alike
-    pub(super) fn lengths_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
+    pub(super) fn lengths_lanes<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) -> bool {
         let mut frames = PosesLanes::ZERO;
         if !poses_lanes(poses, &mut frames) {
             return false;
@@ -92,11 +92,11 @@ impl BatchSolver {
 /// The rotations and positions of eight poses into `frames`, or `false` when an angle lies
 /// beyond the fast reduction (or is not a number).
 #[inline(always)]
-pub(super) fn poses_lanes(poses: &[Pose], frames: &mut PosesLanes) -> bool {
-    let lanes = |f: fn(&Pose) -> f64| -> Lanes { std::array::from_fn(|l| f(&poses[l])) };
-    let roll = lanes(|p| p.roll.radians());
-    let pitch = lanes(|p| p.pitch.radians());
-    let yaw = lanes(|p| p.yaw.radians());
+pub(super) fn poses_lanes<P: AsPose>(poses: &[P], frames: &mut PosesLanes) -> bool {
+    let angle = |k: usize| -> Lanes { std::array::from_fn(|l| poses[l].angle(k)) };
+    let roll = angle(0);
+    let pitch = angle(1);
+    let yaw = angle(2);
     let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
     if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
         return false;
@@ -117,11 +117,7 @@ pub(super) fn poses_lanes(poses: &[Pose], frames: &mut PosesLanes) -> bool {
         r[7][l] = cp[l] * sr[l];
         r[8][l] = cp[l] * cr[l];
     }
-    frames.p = [
-        lanes(|p| p.position.x),
-        lanes(|p| p.position.y),
-        lanes(|p| p.position.z),
-    ];
+    frames.p = std::array::from_fn(|k| std::array::from_fn(|l| poses[l].coordinate(k)));
     true
 }
 
@@ -131,7 +127,7 @@ impl ServoBatch {
     /// the fast reduction or a servo of some pose cannot reach its joint — the caller then
     /// takes the poses one by one, which says which.
     #[inline(always)]
-    pub(super) fn angles_lanes(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> bool {
+    pub(super) fn angles_lanes<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) -> bool {
         let mut frames = PosesLanes::ZERO;
         if !poses_lanes(poses, &mut frames) {
             return false;
