@@ -259,3 +259,15 @@ def test_calibration_finds_leg_offsets():
     assert isinstance(calibrated, stewart.Platform)
     with pytest.raises(ValueError, match="hold: `legs` is not one of"):
         stewart.calibrate(p, np.hstack([poses, commanded]), hold=["legs"])
+
+
+def test_the_readmes_example_runs():
+    text = (ROOT / "README.md").read_text()
+    start = text.index("```python\nimport numpy as np\nimport stewart\n")
+    code = text[start + len("```python\n") : text.index("```", start + 3)]
+    scope = {}
+    exec(compile(code, "README.md", "exec"), scope)
+    assert scope["legs"].shape == (2, 6)
+    assert np.max(np.abs(scope["back"] - scope["poses"])) < 1e-9
+    assert scope["report"]["scenario"] == "paired"
+    assert np.max(np.abs(scope["fit"]["offsets"])) < 1e-9
