@@ -48,13 +48,7 @@ fn bench(c: &mut Criterion) {
     });
     // The same poses as rows of a table (x, y, z, roll, pitch, yaw in metres and degrees),
     // as `solve --poses` and the Python package hand them in.
-    let rows: Vec<[f64; 6]> = input
-        .iter()
-        .map(|p| {
-            let [r, pi, y] = p.rpy_degrees();
-            [p.position.x, p.position.y, p.position.z, r, pi, y]
-        })
-        .collect();
+    let rows: Vec<[f64; 6]> = input.iter().map(Pose::to_row).collect();
     group.bench_function("batch_rows_parallel_1M", |b| {
         b.iter(|| {
             geometry

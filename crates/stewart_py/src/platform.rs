@@ -29,17 +29,10 @@ pub struct Platform {
     scenario: Scenario,
 }
 
-/// The pose of a row `[x, y, z, roll, pitch, yaw]` (metres, degrees).
-fn pose_of(row: &[f64; 6]) -> Pose {
-    Pose::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
-}
-
 /// A pose as a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), its angles in the
 /// forward solver's canonical range (as `stewart fk` writes them).
 fn row_of(s: &ForwardSolution) -> [f64; 6] {
-    let p = canonical(&s.pose);
-    let [r, pi, y] = p.rpy_degrees();
-    [p.position.x, p.position.y, p.position.z, r, pi, y]
+    canonical(&s.pose).to_row()
 }
 
 /// A new `(n, 6)` array of `rows`.
@@ -120,9 +113,7 @@ impl Platform {
     /// The home pose `[x, y, z, roll, pitch, yaw]`.
     #[getter]
     fn home(&self) -> [f64; 6] {
-        let p = self.scenario.geometry.home_pose();
-        let [r, pi, y] = p.rpy_degrees();
-        [p.position.x, p.position.y, p.position.z, r, pi, y]
+        self.scenario.geometry.home_pose().to_row()
     }
 
     /// The scenario as TOML text (what `from_file` reads back).
@@ -171,7 +162,7 @@ impl Platform {
                 Err(RowError::Unreachable { row, servo }) => {
                     // In the closed form's words, as `stewart solve` says it.
                     let why = g
-                        .actuator_values_at(&pose_of(&input[row]))
+                        .actuator_values_at(&Pose::from_row(&input[row]))
                         .err()
                         .map_or_else(
                             || format!("servo {} cannot reach its platform joint", servo + 1),
@@ -277,7 +268,7 @@ impl Platform {
         py: Python<'py>,
         pose: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let p = pose_of(&arrays::six(pose, "pose", &POSE)?);
+        let p = Pose::from_row(&arrays::six(pose, "pose", &POSE)?);
         let j = self.scenario.geometry.actuator_jacobian(&p).map_err(|e| {
             raise(
                 py,
@@ -292,7 +283,7 @@ impl Platform {
     /// The normalised condition number of the actuators' Jacobian at `pose` (infinite at
     /// a singular pose), as the checks and the viewer report it.
     fn condition(&self, py: Python<'_>, pose: &Bound<'_, PyAny>) -> PyResult<f64> {
-        let p = pose_of(&arrays::six(pose, "pose", &POSE)?);
+        let p = Pose::from_row(&arrays::six(pose, "pose", &POSE)?);
         let c = self
             .scenario
             .geometry
@@ -369,14 +360,7 @@ impl Platform {
         py: Python<'py>,
     ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>) {
         let samples = self.scenario.motion.sample();
-        let rows: Vec<[f64; 6]> = samples
-            .poses
-            .iter()
-            .map(|p| {
-                let [r, pi, y] = p.rpy_degrees();
-                [p.position.x, p.position.y, p.position.z, r, pi, y]
-            })
-            .collect();
+        let rows: Vec<[f64; 6]> = samples.poses.iter().map(Pose::to_row).collect();
         (PyArray1::from_vec(py, samples.times), array(py, &rows))
     }
 
@@ -418,7 +402,7 @@ pub fn calibrate<'py>(
         .values()
         .chunks_exact(12)
         .map(|r| Measurement {
-            pose: Pose::from_xyz_rpy_deg([r[0], r[1], r[2]], [r[3], r[4], r[5]]),
+            pose: Pose::from_row(&[r[0], r[1], r[2], r[3], r[4], r[5]]),
             commanded: std::array::from_fn(|i| r[6 + i] * quantity.si_per_unit),
         })
         .collect();

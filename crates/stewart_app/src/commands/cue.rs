@@ -40,9 +40,7 @@ pub fn run(args: &CueArgs) -> Result<ExitCode> {
     })?;
     let mut csv = CsvText::with_header(&POSE_COLUMNS);
     for ((t, _), pose) in samples.iter().zip(&cued.poses) {
-        let [roll, pitch, yaw] = pose.rpy_degrees();
-        let p = pose.position;
-        csv.row([*t, p.x, p.y, p.z, roll, pitch, yaw]);
+        csv.row(std::iter::once(*t).chain(pose.to_row()));
     }
     let text = csv.into_string();
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;

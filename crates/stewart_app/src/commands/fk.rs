@@ -166,16 +166,6 @@ fn mode_rows(csv: &mut CsvText, time: Option<f64>, k: usize, modes: &[ForwardSol
 /// `x, y, z, roll_deg, pitch_deg, yaw_deg, iterations, residual` of a solution, angles in
 /// their principal ranges.
 fn pose_values(s: &ForwardSolution) -> [f64; 8] {
-    let p = canonical(&s.pose);
-    let [r, pi, y] = p.rpy_degrees();
-    [
-        p.position.x,
-        p.position.y,
-        p.position.z,
-        r,
-        pi,
-        y,
-        s.iterations as f64,
-        s.residual,
-    ]
+    let [x, y, z, roll, pitch, yaw] = canonical(&s.pose).to_row();
+    [x, y, z, roll, pitch, yaw, s.iterations as f64, s.residual]
 }

@@ -73,11 +73,6 @@ fn components(v: &Vector6<f64>) -> [f64; 6] {
     std::array::from_fn(|i| v[i])
 }
 
-fn pose_numbers(p: &Pose) -> [f64; 6] {
-    let [r, pi, y] = p.rpy_degrees();
-    [p.position.x, p.position.y, p.position.z, r, pi, y]
-}
-
 /// Run the command.
 pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
@@ -88,11 +83,10 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
             scenario.name
         )
     })?;
-    let pose = args.pose.map_or_else(
-        || g.home_pose(),
-        |p| Pose::from_xyz_rpy_deg([p[0], p[1], p[2]], [p[3], p[4], p[5]]),
-    );
-    let at = pose_words(&pose_numbers(&pose));
+    let pose = args
+        .pose
+        .map_or_else(|| g.home_pose(), |p| Pose::from_row(&p));
+    let at = pose_words(&pose.to_row());
     let modes = g
         .modes(&pose, &payload, &scenario.dynamics)
         .map_err(|e| anyhow!("at {at}: {e}"))?;
@@ -108,7 +102,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         Format::Json => {
             let json = JsonReport {
                 scenario: &scenario.name,
-                pose: JsonPose::of(&pose_numbers(&pose)),
+                pose: JsonPose::of(&pose.to_row()),
                 axes: AXES,
                 reference: "the platform frame's origin, base-frame axes; SI units",
                 stiffness: rows(&modes.stiffness),
@@ -117,7 +111,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
                 modes: modes.modes.map(|v| components(&v)),
                 lowest_along_trajectory: lowest.as_ref().map(|l| JsonLowest {
                     time_s: l.time,
-                    pose: JsonPose::of(&pose_numbers(&l.pose)),
+                    pose: JsonPose::of(&l.pose.to_row()),
                     frequency_hz: l.frequency_hz,
                     mode: components(&l.mode),
                 }),
@@ -161,7 +155,7 @@ fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode
             "Lowest over the trajectory: {:.3} Hz at t = {} s ({}), {}",
             l.frequency_hz,
             l.time,
-            pose_words(&pose_numbers(&l.pose)),
+            pose_words(&l.pose.to_row()),
             motion_words(&l.mode)
         );
     }

@@ -13,14 +13,7 @@ use crate::csv_io::write_table;
 /// record that `solve --poses` reproduces bit for bit.
 pub fn trajectory_table(scenario: &Scenario) -> PoseTable {
     let samples = scenario.motion.sample();
-    let values: Vec<[f64; 6]> = samples
-        .poses
-        .iter()
-        .map(|p| {
-            let [r, pi, y] = p.rpy_degrees();
-            [p.position.x, p.position.y, p.position.z, r, pi, y]
-        })
-        .collect();
+    let values: Vec<[f64; 6]> = samples.poses.iter().map(Pose::to_row).collect();
     let poses = values
         .iter()
         .map(|v| Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]]))

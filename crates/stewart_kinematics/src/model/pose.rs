@@ -59,6 +59,18 @@ impl Pose {
         Self { position, ..self }
     }
 
+    /// The pose as a table row `[x, y, z, roll, pitch, yaw]` (metres, degrees), as pose
+    /// tables, `solve` and the Python package write it.
+    pub fn to_row(&self) -> [f64; 6] {
+        let [r, p, y] = self.rpy_degrees();
+        [self.position.x, self.position.y, self.position.z, r, p, y]
+    }
+
+    /// The pose of a table row `[x, y, z, roll, pitch, yaw]` (metres, degrees).
+    pub fn from_row(row: &[f64; 6]) -> Self {
+        Self::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
+    }
+
     /// `[x, y, z, roll, pitch, yaw]` in metres and radians: the pose as six numbers
     /// (for solvers and interpolation).
     pub fn to_coordinates(&self) -> [f64; 6] {

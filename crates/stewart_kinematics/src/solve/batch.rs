@@ -54,7 +54,7 @@ impl AsPose for [f64; 6] {
     }
     #[inline(always)]
     fn pose(&self) -> Pose {
-        row_pose(self)
+        Pose::from_row(self)
     }
 }
 
@@ -497,7 +497,7 @@ impl Geometry {
                                 return Some(RowError::NotFinite { row: k, column });
                             }
                             solver
-                                .angles(&row_pose(row))
+                                .angles(&Pose::from_row(row))
                                 .err()
                                 .map(|servo| RowError::Unreachable { row: k, servo })
                         })
@@ -533,12 +533,6 @@ fn all_finite(rows: &[[f64; 6]]) -> bool {
         }
     }
     lanes.iter().all(|&ok| ok) && pieces.remainder().iter().all(|v| v.is_finite())
-}
-
-/// The pose of a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), as a pose table
-/// reads it.
-fn row_pose(row: &[f64; 6]) -> Pose {
-    Pose::from_xyz_rpy_deg([row[0], row[1], row[2]], [row[3], row[4], row[5]])
 }
 
 /// Why pose rows have no actuator values.

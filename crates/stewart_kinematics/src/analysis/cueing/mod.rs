@@ -166,14 +166,7 @@ impl CuedRecording {
     /// The poses as a motion through the samples' `times` (joined by straight lines,
     /// sampled once per sample), as a pose table written by `stewart cue` plays.
     pub fn to_motion(&self, times: &[f64], name: &str) -> Result<Motion, TableError> {
-        let values = self
-            .poses
-            .iter()
-            .map(|p| {
-                let [roll, pitch, yaw] = p.rpy_degrees();
-                [p.position.x, p.position.y, p.position.z, roll, pitch, yaw]
-            })
-            .collect();
+        let values = self.poses.iter().map(Pose::to_row).collect();
         let table = PoseTable {
             times: Some(times.to_vec()),
             poses: self.poses.clone(),

@@ -6,19 +6,10 @@ use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::{DynamicsError, DynamicsSettings, MotionState};
 use crate::differences::{first_difference, second_difference};
-use crate::forces::{ForceError, ForceSeries, Payload};
+use crate::forces::{ForceError, ForceSeries, Payload, skew_vector};
 use crate::geometry::Geometry;
 use crate::pose::Pose;
 use crate::trajectory::Samples;
-
-/// The vector of the skew-symmetric part of `m`: `vee((m − mᵀ)/2)`.
-fn skew_vector(m: &Matrix3<f64>) -> Vector3<f64> {
-    Vector3::new(
-        m[(2, 1)] - m[(1, 2)],
-        m[(0, 2)] - m[(2, 0)],
-        m[(1, 0)] - m[(0, 1)],
-    ) * 0.5
-}
 
 /// The motion state at every sample: the pivot point's velocity and acceleration by
 /// central differences of the positions, `ω` and `α` from those of the rotations

@@ -154,7 +154,7 @@ pub struct ForceSeries {
 }
 
 /// The vector of the skew-symmetric part of `m`: `vee((m − mᵀ)/2)`.
-fn skew_vector(m: &Matrix3<f64>) -> Vector3<f64> {
+pub(crate) fn skew_vector(m: &Matrix3<f64>) -> Vector3<f64> {
     Vector3::new(
         m[(2, 1)] - m[(1, 2)],
         m[(0, 2)] - m[(2, 0)],
