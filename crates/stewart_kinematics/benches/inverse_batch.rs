@@ -56,6 +56,11 @@ fn bench(c: &mut Criterion) {
                 .unwrap_or_else(|e| panic!("{e:?}"))
         })
     });
+    // A fresh result each time, as a caller that keeps no buffer gets it (the Python
+    // package's `p.ik(poses)` without `out=`): the 48 MB are new pages to fault in.
+    group.bench_function("batch_parallel_1M_new_output", |b| {
+        b.iter(|| geometry.leg_lengths_batch(black_box(&input)))
+    });
     group.bench_function("batch_serial_1M", |b| {
         b.iter(|| solver.solve_serial(black_box(&input), black_box(&mut out)))
     });
