@@ -304,3 +304,51 @@ fn plot_forces_draws_the_actuator_forces_for_a_paper() {
     );
     assert!(!none.exists());
 }
+
+#[test]
+fn forces_take_a_whole_inertia_tensor_on_the_command_line_too() {
+    let dir = tempdir();
+    // PLATFORM's payload has the tensor (3, 3, 5, 0, 0.1, 0): the same numbers given on
+    // the command line to a platform without that tensor give the same forces, byte for byte.
+    let from_file = stdout(&stewart(&[
+        "forces",
+        "--scenario",
+        &scenario(dir.path(), PLATFORM),
+    ]));
+    let plain = write(
+        dir.path(),
+        "plain.toml",
+        &PLATFORM.replace(
+            "inertia_kg_m2 = [3.0, 3.0, 5.0, 0.0, 0.1, 0.0]",
+            "inertia_kg_m2 = [1.0, 1.0, 1.0]",
+        ),
+    );
+    let o = stewart(&["forces", "--scenario", &plain, "--inertia", "3,3,5,0,0.1,0"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), from_file);
+    for (bad, want) in [
+        ("1,2,3,4", "is not three moments IXX,IYY,IZZ or six entries"),
+        ("1,1,1,2e7,0,0", "Ixy"),
+        ("-1,1,1", "Ixx"),
+    ] {
+        let o = stewart(&["forces", "--scenario", &plain, "--inertia", bad]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(stderr(&o).contains(want), "{bad}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn modes_say_when_the_pose_is_singular() {
+    let dir = tempdir();
+    let s = scenario(dir.path(), &format!("{PLATFORM}{DYNAMICS}"));
+    // The platform down in the base plane: the legs lie flat and hold nothing vertically.
+    let o = stewart(&["modes", "--scenario", &s, "--pose", "0,0,0,0,0,0"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("The pose is singular: 3 direction(s) have no stiffness there"),
+        "{}",
+        stdout(&o)
+    );
+    let home = stdout(&stewart(&["modes", "--scenario", &s]));
+    assert!(!home.contains("singular"), "{home}");
+}

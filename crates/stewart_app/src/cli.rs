@@ -456,17 +456,29 @@ pub fn parse_position(text: &str) -> Result<[f64; 3], String> {
     parse_bounded(text, [("x", m(), "m"), ("y", m(), "m"), ("z", m(), "m")])
 }
 
-/// IXX,IYY,IZZ in kg·m², each from 0 to 1e6.
-pub fn parse_inertia(text: &str) -> Result<[f64; 3], String> {
-    let i = || 0.0..=bounds::INERTIA_KG_M2;
-    parse_bounded(
-        text,
-        [
-            ("Ixx", i(), "kg·m²"),
-            ("Iyy", i(), "kg·m²"),
-            ("Izz", i(), "kg·m²"),
-        ],
-    )
+/// The inertia tensor's entries in kg·m², IXX,IYY,IZZ,IXY,IXZ,IYZ: three principal
+/// moments (each from 0 to 1e6; the products then zero), or all six (products within
+/// ±1e6).
+pub fn parse_inertia(text: &str) -> Result<[f64; 6], String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() != 3 && parts.len() != 6 {
+        return Err(format!(
+            "`{text}` is not three moments IXX,IYY,IZZ or six entries IXX,IYY,IZZ,IXY,IXZ,IYZ"
+        ));
+    }
+    const NAMES: [&str; 6] = ["Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"];
+    let mut values = [0.0; 6];
+    for (k, s) in parts.iter().enumerate() {
+        let v: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+        let range = if k < 3 {
+            0.0..=bounds::INERTIA_KG_M2
+        } else {
+            bounds::symmetric(bounds::INERTIA_KG_M2)
+        };
+        bounds::check(v, &range, "kg·m²").map_err(|e| format!("{} {e}", NAMES[k]))?;
+        values[k] = v;
+    }
+    Ok(values)
 }
 
 /// AZ,EL,DIST: degrees within ±3600°, and a distance above 0 up to 1e4 m.
@@ -599,9 +611,10 @@ pub struct ForcesArgs {
     /// Centre of mass X,Y,Z in the platform frame, metres.
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
     pub com: Option<[f64; 3]>,
-    /// Principal moments of inertia IXX,IYY,IZZ about the centre of mass, kg·m².
-    #[arg(long, value_name = "IXX,IYY,IZZ", value_parser = parse_inertia, allow_hyphen_values = true)]
-    pub inertia: Option<[f64; 3]>,
+    /// Inertia about the centre of mass, kg·m²: principal moments IXX,IYY,IZZ, or the
+    /// tensor's six entries IXX,IYY,IZZ,IXY,IXZ,IYZ (products with their minus sign).
+    #[arg(long, value_name = "IXX,IYY,IZZ[,IXY,IXZ,IYZ]", value_parser = parse_inertia, allow_hyphen_values = true)]
+    pub inertia: Option<[f64; 6]>,
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,

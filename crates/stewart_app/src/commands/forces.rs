@@ -31,7 +31,7 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
         .unwrap_or_else(Vector3::zeros);
     let inertia = args
         .inertia
-        .map(|i| Matrix3::from_diagonal(&Vector3::from(i)))
+        .and_then(|i| stewart_kinematics::forces::inertia_tensor(&i))
         .or(base.map(|p| p.inertia))
         .unwrap_or_else(Matrix3::zeros);
     let payload = Payload::new(mass, com, inertia)?;

@@ -149,6 +149,18 @@ fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode
             motion_words(&modes.modes[k])
         );
     }
+    let stiffest = modes.frequencies_hz[5];
+    let lost = modes
+        .frequencies_hz
+        .iter()
+        .filter(|&&f| f <= 1e-6 * stiffest)
+        .count();
+    if lost > 0 {
+        let _ = writeln!(
+            out,
+            "The pose is singular: {lost} direction(s) have no stiffness there (frequency 0)."
+        );
+    }
     if let Some(l) = lowest {
         let _ = writeln!(
             out,

@@ -162,6 +162,31 @@ pub(crate) fn skew_vector(m: &Matrix3<f64>) -> Vector3<f64> {
     ) * 0.5
 }
 
+/// The inertia tensor from its values (`[payload] inertia_kg_m2`, `forces --inertia`):
+/// none (zero), three principal
+/// moments, or the six entries Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the symmetric tensor
+/// (products of inertia as the tensor holds them, with their minus sign, as URDF and
+/// Simscape take them). `None` for any other count.
+pub fn inertia_tensor(values: &[f64]) -> Option<Matrix3<f64>> {
+    let v = |i: usize| values[i];
+    match values.len() {
+        0 => Some(Matrix3::zeros()),
+        3 => Some(Matrix3::from_diagonal(&Vector3::new(v(0), v(1), v(2)))),
+        6 => Some(Matrix3::new(
+            v(0),
+            v(3),
+            v(4),
+            v(3),
+            v(1),
+            v(5),
+            v(4),
+            v(5),
+            v(2),
+        )),
+        _ => None,
+    }
+}
+
 impl Geometry {
     /// Leg forces that hold the payload still at `pose` (weight only).
     pub fn static_forces(&self, pose: &crate::pose::Pose, payload: &Payload) -> Option<[f64; 6]> {

@@ -104,7 +104,7 @@ pub(crate) fn parse(
         .as_ref()
         .map(|p| {
             let f = p.get_ref();
-            let inertia = inertia_tensor(&f.inertia_kg_m2).ok_or_else(|| {
+            let inertia = crate::forces::inertia_tensor(&f.inertia_kg_m2).ok_or_else(|| {
                 let span = super::locate::span_of(text, "payload.inertia_kg_m2")
                     .or_else(|| Some(p.span()));
                 src.invalid(
@@ -147,34 +147,6 @@ pub(crate) fn parse(
         dynamics,
     };
     Ok(scenario)
-}
-
-/// The inertia tensor from `[payload] inertia_kg_m2`: none (zero), three principal
-/// moments, or the six entries Ixx, Iyy, Izz, Ixy, Ixz, Iyz of the symmetric tensor
-/// (products of inertia as the tensor holds them, with their minus sign, as URDF and
-/// Simscape take them). `None` for any other count.
-pub(crate) fn inertia_tensor(values: &[f64]) -> Option<nalgebra::Matrix3<f64>> {
-    let v = |i: usize| values[i];
-    match values.len() {
-        0 => Some(nalgebra::Matrix3::zeros()),
-        3 => Some(nalgebra::Matrix3::from_diagonal(&Vector3::new(
-            v(0),
-            v(1),
-            v(2),
-        ))),
-        6 => Some(nalgebra::Matrix3::new(
-            v(0),
-            v(3),
-            v(4),
-            v(3),
-            v(1),
-            v(5),
-            v(4),
-            v(5),
-            v(2),
-        )),
-        _ => None,
-    }
 }
 
 /// A table that checks itself (`[link]`, `[cueing]`): its first problem (key, reason) is
