@@ -148,17 +148,7 @@ fn leg_inverse_dynamics_match_lagrange_on_random_motions() {
         crate::test_support::paired_geometry(),
         offset_pivot_geometry(),
     ] {
-        for case in 0..200 {
-            let payload = random_payload(&mut rng, 0.5);
-            let dynamics = random_dynamics(&mut rng, 1.0, payload.mass);
-            let [x0, xd, xdd] = random_motion(&mut rng, 0.8, 0.15, 0.3, 1.0, 10.0);
-            let expected = Model::new(&g, &payload, &dynamics).efforts(&x0, &xd, &xdd);
-            let got = g
-                .inverse_dynamics(&state_of(&x0, &xd, &xdd), &payload, &dynamics)
-                .unwrap_or_else(|e| panic!("{e}"));
-            let gap = relative_gap(&got, &expected);
-            assert!(gap < 1e-9, "case {case}: {got:?} vs {expected:?} ({gap:e})");
-        }
+        lagrange_agrees(&g, &mut rng, [0.5, 1.0], [0.8, 0.15, 0.3, 1.0, 10.0]);
     }
 }
 
@@ -167,11 +157,24 @@ fn servo_inverse_dynamics_match_lagrange_on_random_motions() {
     let mut rng = Random(0xd0e5);
     let g = crate::test_support::servo_geometry();
     let home = g.home_pose().position.z;
+    lagrange_agrees(&g, &mut rng, [0.05, 0.1], [home, 0.01, 0.1, 0.2, 5.0]);
+}
+
+/// On 200 random motions of `g` (payload and part sizes `[payload, parts]`, motion
+/// `[home, reach, tilt, speed, accel]` as [`random_motion`] takes them), the inverse
+/// dynamics equal Lagrange's equations of the energy model to 1e-9.
+fn lagrange_agrees(
+    g: &Geometry,
+    rng: &mut Random,
+    [payload_size, parts]: [f64; 2],
+    motion: [f64; 5],
+) {
+    let [home, reach, tilt, speed, accel] = motion;
     for case in 0..200 {
-        let payload = random_payload(&mut rng, 0.05);
-        let dynamics = random_dynamics(&mut rng, 0.1, payload.mass);
-        let [x0, xd, xdd] = random_motion(&mut rng, home, 0.01, 0.1, 0.2, 5.0);
-        let expected = Model::new(&g, &payload, &dynamics).efforts(&x0, &xd, &xdd);
+        let payload = random_payload(rng, payload_size);
+        let dynamics = random_dynamics(rng, parts, payload.mass);
+        let [x0, xd, xdd] = random_motion(rng, home, reach, tilt, speed, accel);
+        let expected = Model::new(g, &payload, &dynamics).efforts(&x0, &xd, &xdd);
         let got = g
             .inverse_dynamics(&state_of(&x0, &xd, &xdd), &payload, &dynamics)
             .unwrap_or_else(|e| panic!("{e}"));
