@@ -475,6 +475,55 @@ fn views_prepared_with_one_renderer_stay_independent() {
 }
 
 #[test]
+fn renderers_on_several_threads_at_once_share_one_device_and_each_get_their_own_frames() {
+    // Six threads, each with its own renderer, render their own pose several times at
+    // once (drivers have deadlocked when each thread opened and dropped its own device);
+    // every frame equals the one rendered alone for that pose.
+    let g = Geometry::seed();
+    let (w, h) = (160, 120);
+    let poses: Vec<Pose> = (0..6)
+        .map(|k| Pose::from_xyz_rpy_deg([0.02 * k as f64, 0.0, 0.8], [0.0, 0.0, 5.0 * k as f64]))
+        .collect();
+    let mut alone_renderer = offscreen();
+    let alone: Vec<Frame> = poses
+        .iter()
+        .map(|p| render(&mut alone_renderer, &g, p, &Theme::DARK, w, h).0)
+        .collect();
+    assert!(alone.windows(2).all(|f| f[0].rgba != f[1].rgba));
+    let together: Vec<Vec<Frame>> = std::thread::scope(|scope| {
+        let threads: Vec<_> = poses
+            .iter()
+            .map(|pose| {
+                let g = &g;
+                scope.spawn(move || {
+                    let mut off = offscreen();
+                    (0..4)
+                        .map(|_| render(&mut off, g, pose, &Theme::DARK, w, h).0)
+                        .collect::<Vec<Frame>>()
+                })
+            })
+            .collect();
+        threads
+            .into_iter()
+            .map(|t| {
+                t.join()
+                    .unwrap_or_else(|_| panic!("a rendering thread panicked"))
+            })
+            .collect()
+    });
+    for (k, frames) in together.iter().enumerate() {
+        for f in frames {
+            assert!(f.rgba == alone[k].rgba, "thread {k} got another frame");
+        }
+    }
+    let (a, b) = (
+        stewart_render::Gpu::shared().unwrap_or_else(|e| panic!("{e}")),
+        stewart_render::Gpu::shared().unwrap_or_else(|e| panic!("{e}")),
+    );
+    assert!(a.device == b.device, "Gpu::shared opened a second device");
+}
+
+#[test]
 fn the_measured_platform_shows_as_a_green_ghost_beside_the_commanded_one() {
     let mut off = offscreen();
     let g = Geometry::seed();

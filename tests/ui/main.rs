@@ -61,6 +61,9 @@ pub fn built_harness(
     // Up to eight frames to settle: a tall window with every section open lays out new
     // rows (a search result, a reach map) over a few passes.
     let mut h = Harness::builder()
+        .renderer(egui_kittest::LazyRenderer::new(
+            renderer_on_the_shared_device,
+        ))
         .with_size(size)
         .with_max_steps(8)
         .with_accessibility_check(accessibility_check)
@@ -70,6 +73,22 @@ pub fn built_harness(
         .build_ui_state(viewer_ui, state);
     settle(&mut h);
     h
+}
+
+/// kittest's renderer on the process's one device ([`stewart_render::Gpu::shared`], the
+/// device shots and exports use): a harness that rendered on a device of its own would
+/// open and drop a device per test, which deadlocks some drivers when tests run on
+/// several threads.
+fn renderer_on_the_shared_device() -> egui_kittest::wgpu::WgpuTestRenderer {
+    let gpu = stewart_render::Gpu::shared().unwrap_or_else(|e| panic!("{e}"));
+    egui_kittest::wgpu::WgpuTestRenderer::from_setup(egui_wgpu::WgpuSetup::Existing(
+        egui_wgpu::WgpuSetupExisting {
+            instance: gpu.instance,
+            adapter: gpu.adapter,
+            device: gpu.device,
+            queue: gpu.queue,
+        },
+    ))
 }
 
 /// With `STEWART_LOOK_DIR` set, the window as it is now, saved there as `name` to be

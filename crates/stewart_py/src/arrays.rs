@@ -2,11 +2,11 @@
 //! made of) with finite values, read in place when it is C-contiguous (zero-copy), copied
 //! once otherwise. Every refusal names the argument, and a bad value its row and column.
 
-use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2};
+use numpy::{PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
-/// The rows of a checked table: borrowed from the array, or a copy of it.
+/// The rows of a checked table: borrowed from the array, or a copy of it in row order.
 pub enum Rows<'py> {
     /// The caller's C-contiguous array, read in place.
     Borrowed(PyReadonlyArray2<'py, f64>),
@@ -57,9 +57,13 @@ pub fn table<'py>(obj: &Bound<'py, PyAny>, name: &str, columns: &[&str]) -> PyRe
         .cast::<PyArray2<f64>>()
         .map_err(|e| PyTypeError::new_err(format!("{name}: {e}")))?;
     let readonly = typed.readonly();
-    let rows = if readonly.as_slice().is_ok() {
+    // Only a C-contiguous array holds its values row after row: a Fortran-ordered one is
+    // contiguous too (`as_slice` takes it) but column after column, so it is copied in
+    // row order like any other strided array.
+    let rows = if typed.is_c_contiguous() {
         Rows::Borrowed(readonly)
     } else {
+        // `iter` walks the array in its logical (row-major) order, whatever its strides.
         Rows::Copied(readonly.as_array().iter().copied().collect())
     };
     Ok(rows)
@@ -87,6 +91,22 @@ pub fn not_finite(name: &str, row: usize, column: &str, value: f64) -> PyErr {
     ))
 }
 
+/// The refusal of `row` of the pose table `name`, whose value `column` is outside the
+/// accepted range of poses (the words `solve --poses` uses for a pose table).
+pub fn pose_outside(name: &str, row: usize, values: &[f64; 6], column: usize) -> PyErr {
+    use stewart_kinematics::bounds::{POSE_ROW, POSE_ROW_UNITS, check, symmetric};
+    let why = check(values[column], &symmetric(POSE_ROW[column]), POSE_ROW_UNITS[column])
+        .err()
+        .map_or_else(|| "is outside its accepted range".to_owned(), |e| e.to_string());
+    PyValueError::new_err(format!(
+        "{name}, row {row} (from 0), column {}: {why}",
+        POSE_COLUMNS[column]
+    ))
+}
+
+/// The pose columns' names in messages.
+const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+
 /// Six finite numbers (a pose or one row of actuator values) named `name`.
 pub fn six(obj: &Bound<'_, PyAny>, name: &str, columns: &[&str; 6]) -> PyResult<[f64; 6]> {
     let values: Vec<f64> = obj.extract().map_err(|_| {
@@ -113,7 +133,6 @@ pub fn six(obj: &Bound<'_, PyAny>, name: &str, columns: &[&str; 6]) -> PyResult<
 
 /// Whether `out` can take `n` rows of six values: `(n, 6)`, C-contiguous and writeable.
 pub fn check_out(out: &Bound<'_, PyArray2<f64>>, n: usize) -> PyResult<()> {
-    use numpy::PyUntypedArrayMethods;
     if out.shape() != [n, 6] {
         return Err(PyValueError::new_err(format!(
             "out must have shape ({n}, 6), got {:?}",

@@ -159,6 +159,9 @@ impl Platform {
                     let value = input[row][column];
                     return Err(arrays::not_finite("poses", row, POSE[column], value));
                 }
+                Err(RowError::Outside { row, column }) => {
+                    return Err(arrays::pose_outside("poses", row, &input[row], column));
+                }
                 Err(RowError::Unreachable { row, servo }) => {
                     // In the closed form's words, as `stewart solve` says it.
                     let why = g

@@ -1,5 +1,7 @@
 //! Choosing an adapter and opening a device, with or without a window.
 
+use std::sync::{Mutex, PoisonError};
+
 use thiserror::Error;
 
 /// Why no GPU device could be opened.
@@ -41,7 +43,8 @@ pub enum GpuError {
     },
 }
 
-/// An instance, adapter, device and queue.
+/// An instance, adapter, device and queue (handles: a clone shares the same device).
+#[derive(Clone)]
 pub struct Gpu {
     /// The instance.
     pub instance: wgpu::Instance,
@@ -85,10 +88,42 @@ pub fn check_environment() -> Result<(), GpuError> {
     Ok(())
 }
 
+/// The process's one headless device, opened by the first [`Gpu::shared`] and kept to the
+/// end of the process.
+static SHARED: Mutex<Option<Gpu>> = Mutex::new(None);
+
 impl Gpu {
-    /// A device for offscreen rendering: a real GPU when present, otherwise a software
-    /// adapter (lavapipe). Honours `WGPU_BACKEND` (e.g. `vulkan`, `gl`) and
-    /// `WGPU_ADAPTER_NAME` (a part of the adapter's name, e.g. `llvmpipe`).
+    /// The process's headless device (see [`Gpu::headless`]), opened on first use and
+    /// shared by every later caller on any thread. Drivers can deadlock when instances
+    /// and devices are created and destroyed on several threads at once (seen with
+    /// NVIDIA's Vulkan driver), so offscreen renderers share this one device instead of
+    /// opening their own; it is never dropped.
+    pub fn shared() -> Result<Gpu, GpuError> {
+        let mut shared = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(gpu) = shared.as_ref() {
+            return Ok(gpu.clone());
+        }
+        let gpu = Self::headless()?;
+        *shared = Some(gpu.clone());
+        Ok(gpu)
+    }
+
+    /// Make `gpu` the process's shared device (a window's, so that offscreen shots and
+    /// exports draw on the device the window opened instead of opening a second one).
+    /// Returns false, changing nothing, when a shared device is already in use.
+    pub fn adopt(gpu: Gpu) -> bool {
+        let mut shared = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+        if shared.is_some() {
+            return false;
+        }
+        *shared = Some(gpu);
+        true
+    }
+
+    /// A new device of its own for offscreen rendering: a real GPU when present,
+    /// otherwise a software adapter (lavapipe). Honours `WGPU_BACKEND` (e.g. `vulkan`,
+    /// `gl`) and `WGPU_ADAPTER_NAME` (a part of the adapter's name, e.g. `llvmpipe`).
+    /// Prefer [`Gpu::shared`], or a window's device when there is one.
     pub fn headless() -> Result<Gpu, GpuError> {
         pollster::block_on(Self::headless_async())
     }

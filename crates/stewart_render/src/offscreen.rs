@@ -120,10 +120,15 @@ pub struct Offscreen {
 }
 
 impl Offscreen {
-    /// Open a device (see [`Gpu::headless`]) and build the renderer, with 4× MSAA when the
-    /// adapter supports it.
+    /// Build the renderer on the process's shared headless device (see [`Gpu::shared`]),
+    /// with 4× MSAA when the adapter supports it.
     pub fn new() -> Result<Self, OffscreenError> {
-        let gpu = Gpu::headless()?;
+        Ok(Self::on(Gpu::shared()?))
+    }
+
+    /// Build the renderer on `gpu` (a window's device, say, so that a program opens one
+    /// device only), with 4× MSAA when the adapter supports it.
+    pub fn on(gpu: Gpu) -> Self {
         let features = gpu.adapter.get_texture_format_features(FORMAT);
         let samples = if features.flags.sample_count_supported(4) {
             4
@@ -132,12 +137,12 @@ impl Offscreen {
         };
         let renderer = Renderer::new(&gpu.device, FORMAT, samples);
         let view = Some(renderer.new_view(&gpu.device));
-        Ok(Self {
+        Self {
             gpu,
             renderer,
             view,
             targets: None,
-        })
+        }
     }
 
     /// The adapter in words.

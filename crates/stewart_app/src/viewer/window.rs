@@ -253,6 +253,13 @@ impl App {
         let render_state = painter
             .render_state()
             .ok_or_else(|| anyhow!("no GPU device for the window"))?;
+        // Shots and exports render on this device too: one device per process.
+        stewart_render::Gpu::adopt(stewart_render::Gpu {
+            instance: render_state.instance.clone(),
+            adapter: render_state.adapter.clone(),
+            device: render_state.device.clone(),
+            queue: render_state.queue.clone(),
+        });
         let renderer = stewart_render::Renderer::new(
             &render_state.device,
             render_state.target_format,

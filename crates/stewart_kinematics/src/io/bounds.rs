@@ -42,6 +42,25 @@ pub const INERTIA_KG_M2: f64 = 1e6;
 /// Largest camera distance, metres.
 pub const CAMERA_DISTANCE_M: f64 = 1e4;
 
+/// The largest |value| of each entry of a pose row `[x, y, z, roll, pitch, yaw]` (metres,
+/// degrees): what every pose read from a table, a file or an array keeps to, and what
+/// every pose the studio writes keeps to (so that it is accepted back).
+pub const POSE_ROW: [f64; 6] = [
+    LENGTH_M, LENGTH_M, LENGTH_M, ANGLE_DEG, ANGLE_DEG, ANGLE_DEG,
+];
+
+/// The units of a pose row's entries ([`POSE_ROW`]).
+pub const POSE_ROW_UNITS: [&str; 6] = ["m", "m", "m", "°", "°", "°"];
+
+/// The first entry (0 to 5) of a pose row `[x, y, z, roll, pitch, yaw]` outside its
+/// accepted range ([`POSE_ROW`]), and why.
+pub fn check_pose_row(row: &[f64; 6]) -> Result<(), (usize, OutOfBounds)> {
+    for (k, v) in row.iter().enumerate() {
+        check(*v, &symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k]).map_err(|e| (k, e))?;
+    }
+    Ok(())
+}
+
 /// `-limit ..= limit`.
 pub const fn symmetric(limit: f64) -> RangeInclusive<f64> {
     -limit..=limit
@@ -132,5 +151,24 @@ mod tests {
         assert_eq!(check(-2.5, &symmetric(LENGTH_M), "m"), Ok(-2.5));
         assert_eq!(short(0.5), "0.5");
         assert_eq!(short(1e-7), "1e-7");
+    }
+
+    #[test]
+    fn a_pose_row_is_checked_entry_by_entry() {
+        assert_eq!(
+            check_pose_row(&[1000.0, -1000.0, 0.0, 3600.0, -3600.0, 0.0]),
+            Ok(())
+        );
+        let (k, why) = check_pose_row(&[0.0, 0.0, 1000.5, 0.0, 0.0, 0.0]).unwrap_err();
+        assert_eq!(k, 2);
+        assert_eq!(
+            why.to_string(),
+            "1000.5 is outside the accepted range -1000 … 1000 m"
+        );
+        let (k, why) = check_pose_row(&[0.0, 0.0, 0.0, 0.0, 0.0, -3600.1]).unwrap_err();
+        assert_eq!((k, why.to_string().ends_with("°")), (5, true));
+        let (k, why) = check_pose_row(&[0.0, f64::NAN, 1e200, 0.0, 0.0, 0.0]).unwrap_err();
+        assert_eq!(k, 1);
+        assert!(matches!(why, OutOfBounds::NotFinite(v) if v.is_nan()));
     }
 }

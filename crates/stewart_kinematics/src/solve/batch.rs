@@ -424,9 +424,10 @@ impl Geometry {
     /// of pose rows `[x, y, z, roll, pitch, yaw]` (metres, degrees) into `out`, on all
     /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
     /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
-    /// same poses. A value that is not finite is refused (checked as the rows are read:
-    /// no pass of its own), and so is a row a servo cannot reach: the earliest such row is
-    /// the error; `out` is then unspecified.
+    /// same poses. A value that is not finite, or outside the accepted range of poses
+    /// ([`crate::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
+    /// while the chunk is in cache: no pass of its own), and so is a row a servo cannot
+    /// reach: the earliest such row is the error; `out` is then unspecified.
     ///
     /// # Panics
     /// If `out` is shorter than `rows` (a programming error, not a user error).
@@ -437,102 +438,110 @@ impl Geometry {
     ) -> Result<(), RowError> {
         assert!(out.len() >= rows.len(), "output shorter than input");
         let out = &mut out[..rows.len()];
-        let earliest_bad_value = || {
-            rows.iter().enumerate().find_map(|(k, row)| {
-                row.iter()
-                    .position(|v| !v.is_finite())
-                    .map(|column| RowError::NotFinite { row: k, column })
-            })
+        let servos = ServoBatch::new(self);
+        // Parallel chunks may stop at a later row first: the earliest is found afterwards.
+        let earliest_refused = || {
+            rows.iter()
+                .enumerate()
+                .find_map(|(k, row)| {
+                    if let Err((column, why)) = crate::bounds::check_pose_row(row) {
+                        return Some(match why {
+                            crate::bounds::OutOfBounds::NotFinite(_) => {
+                                RowError::NotFinite { row: k, column }
+                            }
+                            crate::bounds::OutOfBounds::Outside { .. } => {
+                                RowError::Outside { row: k, column }
+                            }
+                        });
+                    }
+                    let solver = servos.as_ref()?;
+                    solver
+                        .angles(&Pose::from_row(row))
+                        .err()
+                        .map(|servo| RowError::Unreachable { row: k, servo })
+                })
+                .unwrap_or(RowError::NotFinite { row: 0, column: 0 })
         };
-        match ServoBatch::new(self) {
+        let solved = match &servos {
             None => {
                 let solver = BatchSolver::new(self);
-                let solved = rows
-                    .par_chunks(CHUNK)
+                rows.par_chunks(CHUNK)
                     .zip(out.par_chunks_mut(CHUNK))
                     .try_for_each(|(r, o)| {
-                        pulp::Arch::new().dispatch(Lengths {
+                        let arch = pulp::Arch::new();
+                        if !arch.dispatch(Accepted(r)) {
+                            return Err(());
+                        }
+                        // Accepted poses of an accepted geometry give finite lengths.
+                        arch.dispatch(Lengths {
                             solver: &solver,
                             poses: r,
                             out: &mut *o,
                         });
-                        // A value that is not finite gives a length that is not either:
-                        // the rows are read again (from cache) only then. (A finite row
-                        // far out may give an infinite length; that is its length.)
-                        let arch = pulp::Arch::new();
-                        if !arch.dispatch(Finite(o)) && !arch.dispatch(Finite(r)) {
-                            return Err(());
-                        }
                         Ok(())
-                    });
-                solved.map_err(|()| {
-                    earliest_bad_value().unwrap_or(RowError::NotFinite { row: 0, column: 0 })
-                })
+                    })
             }
-            Some(solver) => {
-                let solved = rows
-                    .par_chunks(CHUNK)
-                    .zip(out.par_chunks_mut(CHUNK))
-                    .try_for_each(|(r, o)| {
-                        // A value that is not finite leaves some servo without a closure
-                        // (an error, told apart from one out of reach below).
-                        pulp::Arch::new()
-                            .dispatch(ServoChunk {
-                                solver: &solver,
-                                poses: r,
-                                out: &mut *o,
-                            })
-                            .map_err(drop)?;
-                        for row in o.iter_mut() {
-                            *row = row.map(|r| crate::angle::Angle::from_radians(r).degrees());
-                        }
-                        Ok(())
-                    });
-                // Parallel chunks may stop at a later row first: find the earliest.
-                solved.map_err(|()| {
-                    rows.iter()
-                        .enumerate()
-                        .find_map(|(k, row)| {
-                            if let Some(column) = row.iter().position(|v| !v.is_finite()) {
-                                return Some(RowError::NotFinite { row: k, column });
-                            }
-                            solver
-                                .angles(&Pose::from_row(row))
-                                .err()
-                                .map(|servo| RowError::Unreachable { row: k, servo })
-                        })
-                        .unwrap_or(RowError::NotFinite { row: 0, column: 0 })
-                })
-            }
-        }
+            Some(solver) => rows
+                .par_chunks(CHUNK)
+                .zip(out.par_chunks_mut(CHUNK))
+                .try_for_each(|(r, o)| {
+                    let arch = pulp::Arch::new();
+                    if !arch.dispatch(Accepted(r)) {
+                        return Err(());
+                    }
+                    arch.dispatch(ServoChunk {
+                        solver,
+                        poses: r,
+                        out: &mut *o,
+                    })
+                    .map_err(drop)?;
+                    for row in o.iter_mut() {
+                        *row = row.map(|r| crate::angle::Angle::from_radians(r).degrees());
+                    }
+                    Ok(())
+                }),
+        };
+        solved.map_err(|()| earliest_refused())
     }
 }
 
-/// [`all_finite`] compiled for the CPU's widest instructions.
-struct Finite<'a>(&'a [[f64; 6]]);
+/// [`all_accepted`] compiled for the CPU's widest instructions.
+struct Accepted<'a>(&'a [[f64; 6]]);
 
-impl pulp::WithSimd for Finite<'_> {
+impl pulp::WithSimd for Accepted<'_> {
     type Output = bool;
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _simd: S) -> bool {
-        all_finite(self.0)
+        all_accepted(self.0)
     }
 }
 
-/// Whether every value of `rows` is finite (no early exit: the loop vectorises).
+/// Whether every value of `rows` is within its accepted range ([`crate::bounds::POSE_ROW`];
+/// NaN is not), with no early exit so that the loop vectorises.
 #[inline(always)]
-fn all_finite(rows: &[[f64; 6]]) -> bool {
-    // Eight running minima of `|v| < ∞` (NaN compares false), one per lane.
+fn all_accepted(rows: &[[f64; 6]]) -> bool {
+    // Four rows are 24 values: three blocks of eight lanes, each lane always the same
+    // column, so each lane keeps one running verdict against one limit.
+    const LIMITS: [f64; 24] = {
+        let mut l = [0.0; 24];
+        let mut k = 0;
+        while k < 24 {
+            l[k] = crate::bounds::POSE_ROW[k % 6];
+            k += 1;
+        }
+        l
+    };
     let values = rows.as_flattened();
-    let mut lanes = [true; 8];
-    let mut pieces = values.chunks_exact(8);
+    let mut lanes = [true; 24];
+    let mut pieces = values.chunks_exact(24);
     for piece in &mut pieces {
-        for (ok, v) in lanes.iter_mut().zip(piece) {
-            *ok &= v.abs() < f64::INFINITY;
+        for ((ok, v), limit) in lanes.iter_mut().zip(piece).zip(LIMITS) {
+            *ok &= v.abs() <= limit;
         }
     }
-    lanes.iter().all(|&ok| ok) && pieces.remainder().iter().all(|v| v.is_finite())
+    let rest = pieces.remainder();
+    lanes.iter().all(|&ok| ok) && rest.iter().zip(LIMITS).all(|(v, limit)| v.abs() <= limit)
 }
 
 /// Why pose rows have no actuator values.
@@ -540,6 +549,14 @@ fn all_finite(rows: &[[f64; 6]]) -> bool {
 pub enum RowError {
     /// Value `column` (0 to 5: x, y, z, roll, pitch, yaw) of `row` is NaN or infinite.
     NotFinite {
+        /// The row, from 0.
+        row: usize,
+        /// The column, from 0.
+        column: usize,
+    },
+    /// Value `column` of `row` is finite but outside its accepted range
+    /// ([`crate::bounds::POSE_ROW`]).
+    Outside {
         /// The row, from 0.
         row: usize,
         /// The column, from 0.
@@ -846,8 +863,9 @@ mod tests {
         assert_eq!(g.actuator_values_rows(&bad, &mut out), Err(nan));
         let legs = crate::test_support::paired_geometry();
         assert_eq!(legs.actuator_values_rows(&bad, &mut out), Err(nan));
-        // An infinite position alone, in a later chunk; and a finite row so far out that
-        // its lengths overflow: that is its answer, not an error.
+        // An infinite position alone, in a later chunk; a finite row far out is refused
+        // as every pose table refuses it (its lengths would overflow), and so is an angle
+        // past ten turns, with their columns; the ranges' ends are accepted.
         let mut far = rows.clone();
         far[CHUNK + 7][1] = f64::NEG_INFINITY;
         let inf = RowError::NotFinite {
@@ -855,8 +873,22 @@ mod tests {
             column: 1,
         };
         assert_eq!(legs.actuator_values_rows(&far, &mut out), Err(inf));
-        far[CHUNK + 7][1] = 1e300;
+        for (column, value) in [(1, 1e300), (0, 1_000.000_001), (5, -3600.001)] {
+            far[CHUNK + 7] = rows[CHUNK + 7];
+            far[CHUNK + 7][column] = value;
+            let outside = RowError::Outside {
+                row: CHUNK + 7,
+                column,
+            };
+            assert_eq!(legs.actuator_values_rows(&far, &mut out), Err(outside));
+            // Servos too, before their first unreachable row.
+            let mut servo_far = rows.clone();
+            servo_far[100][column] = value;
+            let outside = RowError::Outside { row: 100, column };
+            assert_eq!(g.actuator_values_rows(&servo_far, &mut out), Err(outside));
+        }
+        far[CHUNK + 7] = [1000.0, -1000.0, 1000.0, 3600.0, -3600.0, 3600.0];
         assert_eq!(legs.actuator_values_rows(&far, &mut out), Ok(()));
-        assert!(out[CHUNK + 7].iter().all(|l| l.is_infinite()));
+        assert!(out[CHUNK + 7].iter().all(|l| l.is_finite()));
     }
 }

@@ -27,12 +27,9 @@ pub struct PoseTable {
 /// Check a table's pose columns ([`POSE_COLUMNS`]) against the accepted ranges of
 /// lengths and angles; the first value outside is an error naming its line.
 pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
-    use crate::bounds::{ANGLE_DEG, LENGTH_M, symmetric};
-    for name in &POSE_COLUMNS[..3] {
-        table.check_range(name, &symmetric(LENGTH_M), "m")?;
-    }
-    for name in &POSE_COLUMNS[3..] {
-        table.check_range(name, &symmetric(ANGLE_DEG), "°")?;
+    use crate::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
+    for (k, name) in POSE_COLUMNS.iter().enumerate() {
+        table.check_range(name, &symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k])?;
     }
     Ok(())
 }
