@@ -269,9 +269,11 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
 
 /// How many frames a `link` run says it sent ("link: N frames to …"), 0 when it says none.
 pub fn frames_sent(o: &std::process::Output) -> usize {
+    // The summary line `link: N frames to …` (a note on the arming may come before it).
     stderr(o)
-        .split_whitespace()
-        .nth(1)
+        .lines()
+        .find(|l| l.starts_with("link: ") && l.contains(" frames to "))
+        .and_then(|l| l.split_whitespace().nth(1))
         .and_then(|n| n.parse().ok())
         .unwrap_or(0)
 }
@@ -628,6 +630,102 @@ fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
     // Not home: the way home was cut short.
     let home_frame = frames[0].1.values;
     assert_ne!(tail[0].1.values, home_frame);
+}
+
+#[test]
+fn two_stops_delivered_at_once_are_an_emergency_stop() {
+    // `timeout`, a process group or a supervisor can deliver two signals in one breath:
+    // SIGINT then SIGTERM (two of one kind may merge in the kernel), both before the
+    // link looks. Each stop counts: the second is the emergency stop.
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let record = dir.path().join("frames.txt");
+    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["link", "--preset", "paired", "--dry-run", "--loop"])
+        .args(["--rate", "200", "--out"])
+        .arg(&record)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    std::thread::sleep(Duration::from_millis(4000));
+    let pid = link.id().to_string();
+    let sent = std::process::Command::new("sh")
+        .args(["-c", "kill -INT $0 && kill -TERM $0", &pid])
+        .status()
+        .map(|s| s.success());
+    assert_eq!(sent.ok(), Some(true));
+    let started = std::time::Instant::now();
+    while link.try_wait().ok().flatten().is_none() {
+        assert!(started.elapsed().as_secs() < 20, "the link did not stop");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let err = stderr(&o);
+    assert!(
+        err.lines().any(|l| l.starts_with("link: emergency stop")),
+        "{err}"
+    );
+    let frames = recorded(&std::fs::read_to_string(&record).unwrap_or_default());
+    let last = frames.last().unwrap_or_else(|| panic!("no frames"));
+    assert!(!last.1.flags.armed);
+    assert_ne!(last.1.values, frames[0].1.values, "driven home instead");
+}
+
+#[test]
+fn an_easy_ramp_is_honoured_and_a_longer_one_is_announced_before_it_starts() {
+    // The case: paired with its default limits (0.5 m/s, 5 m/s²), a 1 s ramp to a
+    // motion centimetres from home. The ramp is planned against the motion's start: 1 s,
+    // as asked (the supervisor alone, not foreseeing the motion, took 1.8 s), and from
+    // shortly after it the lengths sent are the trajectory's.
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--dry-run",
+        "--rate",
+        "200",
+        "--duration",
+        "2",
+        "--ramp",
+        "1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("arming will take"), "{}", stderr(&o));
+    let frames = recorded(&stdout(&o));
+    let solved = stewart(&["solve", "--preset", "paired"]);
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let l1 = header.iter().position(|c| c == "L1").unwrap_or(7);
+    let mut compared = 0;
+    for (t, f) in &frames {
+        if !(1.05..1.9).contains(t) {
+            continue;
+        }
+        let Some(row) = rows.iter().find(|r| (r[0] - t).abs() < 1e-9) else {
+            continue;
+        };
+        for i in 0..6 {
+            let want = (row[l1 + i] * 1e6).round() as i32;
+            assert!((f.values[i] - want).abs() <= 1, "t = {t}, leg {}", i + 1);
+        }
+        compared += 1;
+    }
+    assert!(compared > 50, "{compared}");
+    // A ramp the limits cannot give: said, with its time, before the first frame.
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--dry-run",
+        "--rate",
+        "200",
+        "--duration",
+        "1",
+        "--ramp",
+        "0.05",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let first = stderr(&o).lines().next().unwrap_or_default().to_owned();
+    assert!(first.starts_with("link: arming will take "), "{first}");
+    assert!(first.contains("longer than the 0.05 s asked"), "{first}");
 }
 
 #[test]

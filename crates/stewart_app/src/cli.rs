@@ -85,16 +85,21 @@ pub struct DeviceSimArgs {
     #[arg(long, value_name = "PORT")]
     pub serial: Option<String>,
     /// The serial line speed, bits per second.
-    #[arg(long, value_name = "BITS/S", default_value = "115200")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "BITS/S",
+        default_value = "115200"
+    )]
     pub baud: u32,
     /// Write the record here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// End after this many seconds without a datagram (once the first has come).
-    #[arg(long, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
     pub idle: f64,
     /// End after this many seconds in any case.
-    #[arg(long, value_name = "S", default_value = "600", value_parser = parse_link_seconds)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "600", value_parser = parse_link_seconds)]
     pub duration: f64,
     /// Smallest value accepted on any channel, in the wire's unit (µm, 0.01° or µs).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
@@ -108,13 +113,13 @@ pub struct DeviceSimArgs {
     #[arg(long)]
     pub telemetry: bool,
     /// The simulated actuators' first-order lag: time constant, seconds (0: none).
-    #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "0", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "0", value_parser = parse_lag)]
     pub lag_s: f64,
     /// The simulated actuators' speed limit, wire units per second (µm/s, 0.01°/s, µs/s).
-    #[arg(long, allow_hyphen_values = true, value_name = "N", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", value_parser = parse_wire_speed)]
     pub speed_max: Option<f64>,
     /// The simulated actuators do not move while the set-point is this close, wire units.
-    #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_model_number)]
+    #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_dead_band)]
     pub dead_band: f64,
     /// The wire format to expect: binary frames, or the text lines of `link --format text`.
     #[arg(long, value_parser = parse_word::<LinkFormat>, default_value = "binary")]
@@ -136,13 +141,34 @@ pub enum WireUnit {
 }
 
 /// A model option: a finite number, not negative.
-fn parse_model_number(text: &str) -> Result<f64, String> {
+fn parse_model_number(text: &str, max: f64, unit: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(v),
-        Ok(v) => Err(format!("must be a finite number, not negative, got {v}")),
+        Ok(v) if v.is_finite() && (0.0..=max).contains(&v) => Ok(v),
+        Ok(v) => Err(format!(
+            "must be a number from 0 to {} {unit}, got {v}",
+            bounds::short(max)
+        )),
         Err(_) => Err(format!("`{text}` is not a number")),
     }
 }
+
+/// The simulated lag's time constant: 0 to 1e6 s (the accepted range of times).
+fn parse_lag(text: &str) -> Result<f64, String> {
+    parse_model_number(text, bounds::TIME_S, "s")
+}
+
+/// The simulated speed limit: up to the wire's whole range (2³¹ units) in a millisecond.
+fn parse_wire_speed(text: &str) -> Result<f64, String> {
+    parse_model_number(text, WIRE_SPAN * 1e3, "wire units per second")
+}
+
+/// The simulated dead band: up to the wire's whole range.
+fn parse_dead_band(text: &str) -> Result<f64, String> {
+    parse_model_number(text, WIRE_SPAN, "wire units")
+}
+
+/// The span of a wire value (a 32-bit signed number), in its units.
+const WIRE_SPAN: f64 = 2_147_483_648.0;
 
 /// Arguments of `stewart link`. Each option overrides the scenario's `[link]` table.
 #[derive(Debug, Args)]
@@ -165,7 +191,7 @@ pub struct LinkArgs {
     #[arg(long, value_name = "PORT")]
     pub port: Option<String>,
     /// The serial line speed, bits per second (default 115200).
-    #[arg(long, value_name = "BITS/S")]
+    #[arg(long, allow_hyphen_values = true, value_name = "BITS/S")]
     pub baud: Option<u32>,
     /// The UDP peer, HOST:PORT.
     #[arg(long, value_name = "HOST:PORT")]
@@ -174,10 +200,10 @@ pub struct LinkArgs {
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
     /// Set-points per second, 10 to 1000 (default 100).
-    #[arg(long, value_name = "HZ", value_parser = parse_link_rate)]
+    #[arg(long, allow_hyphen_values = true, value_name = "HZ", value_parser = parse_link_rate)]
     pub rate: Option<f64>,
     /// Seconds to stream (default: the trajectory's duration; with --loop, until Ctrl-C).
-    #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
     pub duration: Option<f64>,
     /// Play the trajectory again and again.
     #[arg(long = "loop")]
@@ -189,7 +215,7 @@ pub struct LinkArgs {
     #[arg(long, value_parser = parse_word::<LinkFormat>)]
     pub format: Option<LinkFormat>,
     /// Seconds of the arming ramp from home to the trajectory (default 2).
-    #[arg(long, value_name = "S", value_parser = parse_link_seconds)]
+    #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
     pub ramp: Option<f64>,
     /// Record each set-point the controller answered with telemetry here (CSV: time,
     /// sequence, six commanded and six measured values, round-trip latency).
@@ -703,7 +729,7 @@ pub struct RenderArgs {
     #[arg(long, value_name = "OUT")]
     pub out: PathBuf,
     /// Frame size WxH in pixels (up to 3840x2160 and beyond, 4096 a side at most).
-    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
+    #[arg(long, allow_hyphen_values = true, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
     pub size: (u32, u32),
     /// Frames per second of the output, the motion resampled (default: 25 for a GIF, 50
     /// for an MP4, one frame per trajectory sample for a folder of frames). A GIF's
@@ -795,7 +821,7 @@ pub struct ViewArgs {
     pub workspace: bool,
     /// Window size WxH in logical pixels (default: the last session's within the screen,
     /// else 85 % of the screen).
-    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    #[arg(long, allow_hyphen_values = true, value_name = "WxH", value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
     /// Start without the saved session (the last scenario, camera, panels, theme and
     /// window size); it is still saved at exit.
@@ -822,4 +848,52 @@ pub struct ViewArgs {
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]
     pub frame_stats: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory as _;
+
+    /// The value names of options that take numbers.
+    const NUMERIC: [&str; 14] = [
+        "S",
+        "N",
+        "HZ",
+        "KG",
+        "BITS/S",
+        "A..B",
+        "AZ,EL,DIST",
+        "IXX,IYY,IZZ[,IXY,IXZ,IYZ]",
+        "ROLL,PITCH,YAW",
+        "X,Y,Z",
+        "X,Y,Z,ROLL,PITCH,YAW",
+        "WxH",
+        "NAME=RANGE,…",
+        "KEY=VALUE",
+    ];
+
+    #[test]
+    fn every_numeric_option_hands_a_negative_number_to_its_own_check() {
+        // `--duration -1` must reach the option's check, which names the option and the
+        // range, not be taken for an unknown option `-1`.
+        let cli = super::Cli::command();
+        let mut checked = 0;
+        for sub in cli.get_subcommands() {
+            for arg in sub.get_arguments() {
+                let numeric = arg
+                    .get_value_names()
+                    .is_some_and(|names| names.iter().any(|n| NUMERIC.contains(&n.as_str())));
+                if numeric {
+                    checked += 1;
+                    assert!(
+                        arg.is_allow_hyphen_values_set(),
+                        "stewart {} --{}",
+                        sub.get_name(),
+                        arg.get_id()
+                    );
+                }
+            }
+        }
+        assert!(checked > 20, "{checked}");
+    }
 }

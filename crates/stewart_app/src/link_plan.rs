@@ -111,21 +111,53 @@ impl LinkPlan {
         let geometry = self.geometry.clone();
         let trajectory = self.trajectory.clone();
         let (start, duration) = self.span;
-        Box::new(move |t| {
-            if !repeat && t >= duration {
+        Box::new(move |t| match motion_time(t, duration, repeat) {
+            None => {
                 let values = geometry
                     .actuator_values_at(&trajectory.pose_at(start + duration))
                     .map_err(TargetError::source)?;
-                return Ok(Sample::Moving(Motion::at_rest(values)));
+                Ok(Sample::Moving(Motion::at_rest(values)))
             }
-            let local = if repeat && duration > 0.0 {
-                t.rem_euclid(duration)
-            } else {
-                t
-            };
-            moving_sample(&geometry, |s| trajectory.pose_at(start + s), local, 1.0)
+            Some(local) => moving_sample(&geometry, |s| trajectory.pose_at(start + s), local, 1.0),
         })
     }
+
+    /// The actuator values the trajectory target asks for at stream time `t` (`None`
+    /// where the motion is out of reach), without their derivatives.
+    pub fn values_at(&self, t: f64, repeat: bool) -> Option<[f64; 6]> {
+        let (start, duration) = self.span;
+        let local = motion_time(t, duration, repeat).unwrap_or(duration);
+        self.geometry
+            .actuator_values_at(&self.trajectory.pose_at(start + local))
+            .ok()
+    }
+
+    /// The first arming's ramp, planned against the motion's start (its speed there
+    /// included): the ramp asked when the limits allow it, else the shortest that they
+    /// do (`None` when the motion's start is out of reach). See
+    /// [`stewart_link::safety::planned_ramp`].
+    pub fn planned_first_ramp(&self, repeat: bool) -> Option<f64> {
+        stewart_link::safety::planned_ramp(
+            self.supervisor.limits(),
+            &self.home,
+            self.settings.ramp_s,
+            |t| self.values_at(t, repeat),
+            1e-3,
+        )
+    }
+}
+
+/// The motion's own time at stream time `t` (from its start), wrapping with `repeat`;
+/// `None` once a motion played once has ended.
+fn motion_time(t: f64, duration: f64, repeat: bool) -> Option<f64> {
+    if !repeat && t >= duration {
+        return None;
+    }
+    Some(if repeat && duration > 0.0 {
+        t.rem_euclid(duration)
+    } else {
+        t
+    })
 }
 
 /// The actuator values at `pose_at(time)` with their velocity and acceleration per second of

@@ -24,6 +24,12 @@ use stewart_link::vehicle::{self, VehicleSample};
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
 
+/// The most datagrams one tick reads: the work per tick is bounded, so a flood on the
+/// port cannot delay the sender's deadlines (what is left waits for the next ticks, or the
+/// system drops it when the socket's buffer is full). 16 per tick is 16 000 samples a
+/// second at 1 kHz, far above what a simulator sends (X-Plane at most 99 a second).
+pub const MAX_DATAGRAMS_PER_TICK: usize = 16;
+
 /// Seconds of the trace kept for the viewer's live plots.
 pub const TRACE_S: f64 = 10.0;
 
@@ -130,13 +136,18 @@ impl LiveCue {
         Arc::clone(&self.counts)
     }
 
-    /// The pose to follow at stream time `t`: every datagram waiting is read and its
-    /// sample steps the washout; a stalled input fades the cue.
+    /// The pose to follow at stream time `t`: the datagrams waiting are read, at most
+    /// [`MAX_DATAGRAMS_PER_TICK`], and each sample steps the washout; a stalled input
+    /// fades the cue.
     pub fn tick(&mut self, t: f64) -> Pose {
         let dt = self.last_tick.map_or(0.0, |last| (t - last).max(0.0));
         self.last_tick = Some(t);
-        // Until nothing more is waiting (or an ICMP error from a previous send).
-        while let Ok(n) = self.socket.recv(&mut self.buffer) {
+        // Until nothing more is waiting (or an ICMP error from a previous send), or the
+        // tick's share is read.
+        for _ in 0..MAX_DATAGRAMS_PER_TICK {
+            let Ok(n) = self.socket.recv(&mut self.buffer) else {
+                break;
+            };
             match vehicle::decode(&self.buffer[..n]) {
                 Ok(sample) => self.take(sample, t),
                 Err(_) => {
@@ -300,6 +311,61 @@ mod tests {
                 .words()
                 .starts_with("cue: 50 samples in, 2 malformed")
         );
+    }
+
+    #[test]
+    fn a_flood_is_read_a_bounded_share_per_tick_and_a_burst_loses_nothing() {
+        // 100 samples at once (loopback delivers each before `send_to` returns): each
+        // tick takes at most its share, and after enough ticks the pose is the one the
+        // whole recording gives.
+        let scenario = Scenario::seed();
+        let mut live =
+            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
+        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let samples: Vec<(f64, VehicleMotion)> = (0..100)
+            .map(|k| {
+                let motion = VehicleMotion {
+                    accel: [-3.0, 0.5, 0.0],
+                    rates_deg_s: [0.0, 0.0, 10.0],
+                };
+                (0.01 * f64::from(k), motion)
+            })
+            .collect();
+        let sender = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+        for (t, m) in &samples {
+            let [ax, ay, az] = m.accel;
+            let [wx, wy, wz] = m.rates_deg_s;
+            let line = format!("{t},{ax},{ay},{az},{wx},{wy},{wz}");
+            sender
+                .send_to(line.as_bytes(), at)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+        let counts = live.counts();
+        let mut pose = live.tick(0.0);
+        assert_eq!(
+            counts.received.load(Ordering::Relaxed),
+            MAX_DATAGRAMS_PER_TICK as u64
+        );
+        let mut ticks = 1;
+        while counts.received.load(Ordering::Relaxed) < 100 {
+            let before = counts.received.load(Ordering::Relaxed);
+            pose = live.tick(0.001 * f64::from(ticks));
+            let took = counts.received.load(Ordering::Relaxed) - before;
+            assert!(
+                (1..=MAX_DATAGRAMS_PER_TICK as u64).contains(&took),
+                "{took}"
+            );
+            ticks += 1;
+        }
+        let expected = cue_recording(
+            &scenario.geometry,
+            &scenario.limits,
+            &scenario.cueing,
+            &samples,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(pose, expected.poses[99]);
+        assert_eq!(counts.malformed.load(Ordering::Relaxed), 0);
     }
 
     #[test]

@@ -18,7 +18,8 @@
 //! - **Disarmed**: nothing moves; the last values are repeated with the armed flag clear.
 //! - **Arming** ramps from where the platform is (the values given to [`Supervisor::arm`],
 //!   usually the home set-points) to the live target over the ramp time (longer when the
-//!   distance needs it, so that the ramp's own motion uses at most a quarter of each limit), along a
+//!   distance needs it, so that the ramp's own motion uses at most a quarter of each limit;
+//!   or as long as [`planned_ramp`] found against the whole motion, when it is known), along a
 //!   smootherstep (zero speed and acceleration at both ends), then becomes **armed**.
 //! - While armed, a target whose motion is within the limits is sent exactly as it is. A
 //!   target that would need more (a jump, a motion too fast) is approached time-optimally
@@ -174,6 +175,9 @@ pub struct Supervisor {
     ramp_from: Option<(f64, [f64; 6])>,
     /// How long this arming's ramp lasts (fixed at its first tick).
     ramp_len: Option<f64>,
+    /// The length of the first arming's ramp, planned against the whole motion by the
+    /// caller ([`Supervisor::plan_first_ramp`]).
+    first_ramp: Option<f64>,
     estop_pending: bool,
     /// The way home has sent the home values; the next tick disarms.
     at_home: bool,
@@ -200,6 +204,7 @@ impl Supervisor {
             last_time: None,
             ramp_from: None,
             ramp_len: None,
+            first_ramp: None,
             estop_pending: false,
             at_home: false,
             emergency: false,
@@ -244,7 +249,7 @@ impl Supervisor {
         if self.state == LinkState::Disarmed {
             self.state = LinkState::Arming;
             self.ramp_from = Some((t, from));
-            self.ramp_len = None;
+            self.ramp_len = self.first_ramp.take();
             self.generator.rest_at(from);
             self.history.clear();
             self.last_time = Some(t);
@@ -313,6 +318,16 @@ impl Supervisor {
             estop,
             home,
             note,
+        }
+    }
+
+    /// Make the first arming's ramp last `ramp_s`, found by [`planned_ramp`] against the
+    /// whole motion the target will follow (known in advance: a trajectory from its
+    /// start), instead of the length the supervisor would choose without foreseeing it.
+    /// The generator keeps every limit whatever the ramp.
+    pub fn plan_first_ramp(&mut self, ramp_s: f64) {
+        if ramp_s.is_finite() && ramp_s >= 0.0 {
+            self.first_ramp = Some(ramp_s);
         }
     }
 
@@ -487,10 +502,85 @@ impl Supervisor {
     }
 }
 
+/// The smootherstep `6u⁵ − 15u⁴ + 10u³` the arming ramp blends along (0 to 1, with zero
+/// speed and acceleration at both ends).
+pub fn smootherstep(u: f64) -> f64 {
+    u * u * u * (10.0 + u * (6.0 * u - 15.0))
+}
+
+/// The shortest arming ramp, no shorter than `at_least` seconds, along which the blend
+/// from `from` toward a target known in advance — `target(t)`, its values at each time of
+/// the ramp, `None` where it has none — stays within [`PLANNED_SHARE`] of each speed,
+/// acceleration and jerk limit, checked every `step` seconds by finite differences of the
+/// blend (what the generator is asked to follow). `None` when the target has no values
+/// somewhere along the ramp or no ramp up to ten minutes fits.
+pub fn planned_ramp(
+    limits: &ActuatorLimits,
+    from: &[f64; 6],
+    at_least: f64,
+    target: impl Fn(f64) -> Option<[f64; 6]>,
+    step: f64,
+) -> Option<f64> {
+    let share = |l: Option<f64>| l.map_or(f64::INFINITY, |l| PLANNED_SHARE * l);
+    let (speed, accel) = (share(limits.speed), share(limits.accel));
+    let jerk = if accel.is_finite() {
+        share(limits.jerk)
+    } else {
+        f64::INFINITY
+    };
+    // Whether a ramp of `len` seconds keeps the limits (None: the target has no values).
+    let fits = |len: f64| -> Option<bool> {
+        let n = (len / step).ceil() as usize + 3;
+        let mut blend = Vec::with_capacity(n + 1);
+        for k in 0..=n {
+            let t = k as f64 * step;
+            let u = if len > 0.0 { (t / len).min(1.0) } else { 1.0 };
+            let s = smootherstep(u);
+            let q = target(t)?;
+            blend.push(std::array::from_fn::<f64, 6, _>(|j| {
+                from[j] + (q[j] - from[j]) * s
+            }));
+        }
+        let h = step;
+        let within = (0..6).all(|j| {
+            let v = |k: usize| blend[k][j];
+            (0..n).all(|k| ((v(k + 1) - v(k)) / h).abs() <= speed)
+                && (1..n).all(|k| ((v(k + 1) - 2.0 * v(k) + v(k - 1)) / (h * h)).abs() <= accel)
+                && (1..n - 1).all(|k| {
+                    ((v(k + 2) - 3.0 * v(k + 1) + 3.0 * v(k) - v(k - 1)) / (h * h * h)).abs()
+                        <= jerk
+                })
+        });
+        Some(within)
+    };
+    let at_least = at_least.max(0.0);
+    if fits(at_least)? {
+        return Some(at_least);
+    }
+    let mut low = at_least.max(1e-3);
+    let mut high = 2.0 * low;
+    while !fits(high)? {
+        low = high;
+        high *= 2.0;
+        if high > 600.0 {
+            return None;
+        }
+    }
+    while high - low > 1e-3 * high {
+        let mid = 0.5 * (low + high);
+        if fits(mid)? {
+            high = mid;
+        } else {
+            low = mid;
+        }
+    }
+    Some(high)
+}
+
 /// The arming ramp at `u` (0 to 1; `rate` = du/dt): from `from` to the target along a
 /// smootherstep, with its velocity and acceleration when the target has them.
 fn ramp(from: &[f64; 6], target: &Sample, u: f64, rate: f64) -> Sample {
-    let s = u * u * u * (10.0 + u * (6.0 * u - 15.0));
+    let s = smootherstep(u);
     let blend =
         |p: &[f64; 6]| -> [f64; 6] { std::array::from_fn(|k| from[k] + (p[k] - from[k]) * s) };
     match target {
@@ -514,13 +604,22 @@ fn ramp(from: &[f64; 6], target: &Sample, u: f64, rate: f64) -> Sample {
     }
 }
 
+/// The share of each limit a ramp toward a target it cannot foresee may use itself: the
+/// rest is room for the target's own motion, whatever it does during the ramp.
+pub const RAMP_SHARE: f64 = 0.25;
+
+/// The share of each limit a ramp planned against the target's whole motion may use,
+/// ramp and motion together ([`planned_ramp`]): the rest is room for the generator's
+/// discrete steps.
+pub const PLANNED_SHARE: f64 = 0.95;
+
 /// The shortest ramp, no shorter than `at_least`, along which the smootherstep's own terms
-/// use at most a quarter of each limit, so that the generator follows the ramp itself with room
-/// for the target's motion. From `from` to a target at `to` moving with `velocity` and
-/// `acceleration`, the blend `from + (p − from)·s(t/T)` adds, per derivative, the distance
-/// D times s's peaks (1.875/T, 5.774/T², 60/T³) and the cross terms of the target's
-/// velocity v and acceleration a: speed D·1.875/T; acceleration 2v·1.875/T + D·5.774/T²;
-/// jerk 3a·1.875/T + 3v·5.774/T² + D·60/T³.
+/// use at most [`RAMP_SHARE`] of each limit, so that the generator follows the ramp itself
+/// with room for the target's motion. From `from` to a target at `to` moving with
+/// `velocity` and `acceleration`, the blend `from + (p − from)·s(t/T)` adds, per
+/// derivative, the distance D times s's peaks (1.875/T, 5.774/T², 60/T³) and the cross
+/// terms of the target's velocity v and acceleration a: speed D·1.875/T; acceleration
+/// 2v·1.875/T + D·5.774/T²; jerk 3a·1.875/T + 3v·5.774/T² + D·60/T³.
 fn ramp_needed(at_least: f64, from: &[f64; 6], to: &Motion, limits: &ActuatorLimits) -> f64 {
     const S1: f64 = 1.875;
     const S2: f64 = 5.773_502_691_896_258;
@@ -528,10 +627,10 @@ fn ramp_needed(at_least: f64, from: &[f64; 6], to: &Motion, limits: &ActuatorLim
     let most = |values: &[f64; 6]| values.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
     let gap: [f64; 6] = std::array::from_fn(|k| to.position[k] - from[k]);
     let (d, v, a) = (most(&gap), most(&to.velocity), most(&to.acceleration));
-    let quarter = |limit: Option<f64>| limit.map_or(f64::INFINITY, |l| 0.25 * l);
-    let (speed, accel) = (quarter(limits.speed), quarter(limits.accel));
+    let share = |limit: Option<f64>| limit.map_or(f64::INFINITY, |l| RAMP_SHARE * l);
+    let (speed, accel) = (share(limits.speed), share(limits.accel));
     let jerk = if accel.is_finite() {
-        quarter(limits.jerk)
+        share(limits.jerk)
     } else {
         f64::INFINITY
     };

@@ -496,9 +496,15 @@ fn take_commands(inbox: &Receiver<Command>, sv: &mut Supervisor, t: f64, stoppin
             }
             Ok(Command::EStop) => sv.estop(),
             Ok(Command::Stop) => {
-                // A second stop on the way home is an emergency.
-                if *stopping && sv.state() == LinkState::Stopping {
-                    sv.estop();
+                // A second stop is an emergency, also when the first was taken in this
+                // same call and has not turned the supervisor homewards yet.
+                if *stopping {
+                    if matches!(sv.state(), LinkState::Arming | LinkState::Armed) {
+                        sv.estop();
+                    }
+                    if sv.state() == LinkState::Stopping {
+                        sv.estop();
+                    }
                 }
                 *stopping = true;
             }

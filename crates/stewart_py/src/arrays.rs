@@ -131,6 +131,19 @@ pub fn six(obj: &Bound<'_, PyAny>, name: &str, columns: &[&str; 6]) -> PyResult<
     Ok(row)
 }
 
+/// A pose `[x, y, z, roll, pitch, yaw]` (metres, degrees) named `name`: six finite
+/// numbers within the accepted range of poses, as a pose table's rows are checked.
+pub fn pose(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<stewart_kinematics::Pose> {
+    let row = six(obj, name, &POSE_COLUMNS)?;
+    if let Err((column, why)) = stewart_kinematics::bounds::check_pose_row(&row) {
+        return Err(PyValueError::new_err(format!(
+            "{name}, {}: {why}",
+            POSE_COLUMNS[column]
+        )));
+    }
+    Ok(stewart_kinematics::Pose::from_row(&row))
+}
+
 /// Whether `out` can take `n` rows of six values: `(n, 6)`, C-contiguous and writeable.
 pub fn check_out(out: &Bound<'_, PyArray2<f64>>, n: usize) -> PyResult<()> {
     if out.shape() != [n, 6] {

@@ -271,8 +271,22 @@ impl Platform {
         py: Python<'py>,
         pose: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let p = Pose::from_row(&arrays::six(pose, "pose", &POSE)?);
-        let j = self.scenario.geometry.actuator_jacobian(&p).map_err(|e| {
+        let p = arrays::pose(pose, "pose")?;
+        let g = &self.scenario.geometry;
+        if let Some(leg) = g.leg_without_direction(&p).filter(|_| g.rotary().is_none()) {
+            return Err(raise(
+                py,
+                "SingularError",
+                (
+                    format!(
+                        "pose: leg {} has zero length (its joints meet), so it has no direction and the Jacobian is undefined",
+                        leg + 1
+                    ),
+                    leg + 1,
+                ),
+            ));
+        }
+        let j = g.actuator_jacobian(&p).map_err(|e| {
             raise(
                 py,
                 "UnreachableError",
@@ -286,7 +300,7 @@ impl Platform {
     /// The normalised condition number of the actuators' Jacobian at `pose` (infinite at
     /// a singular pose), as the checks and the viewer report it.
     fn condition(&self, py: Python<'_>, pose: &Bound<'_, PyAny>) -> PyResult<f64> {
-        let p = Pose::from_row(&arrays::six(pose, "pose", &POSE)?);
+        let p = arrays::pose(pose, "pose")?;
         let c = self
             .scenario
             .geometry

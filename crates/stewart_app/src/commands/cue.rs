@@ -36,6 +36,9 @@ pub fn run(args: &CueArgs) -> Result<ExitCode> {
         CueError::Time { index, .. } => {
             anyhow!("{file}, line {}, column `t`: {e}", table.line(index))
         }
+        CueError::PoseOutside { index, .. } => {
+            anyhow!("{file}, line {}: {e}", table.line(index))
+        }
         other => anyhow!("{}: {other}", source::describe(&args.scenario)),
     })?;
     let mut csv = CsvText::with_header(&POSE_COLUMNS);

@@ -50,7 +50,10 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
             let counts = live.counts();
             (live.into_target(&scenario), Some(counts))
         }
-        None => (plan.trajectory_target(args.repeat), None),
+        None => {
+            plan_arming(&plan, args.repeat, &mut config);
+            (plan.trajectory_target(args.repeat), None)
+        }
     };
     let sender = Sender::spawn(config, target, transport).map_err(|e| anyhow!(e))?;
     let stops_seen = supervise(&sender, stream_for);
@@ -88,6 +91,27 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
         bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Plan the first arming against the motion's start and say, before anything is sent,
+/// when it will take longer than the ramp asked (the limits need it for the distance to
+/// the motion's first pose and its speed there).
+fn plan_arming(plan: &LinkPlan, repeat: bool, config: &mut SenderConfig) {
+    let asked = plan.settings.ramp_s;
+    let takes = match plan.planned_first_ramp(repeat) {
+        Some(len) => {
+            config.supervisor.plan_first_ramp(len);
+            len
+        }
+        // The motion's start is out of reach: the supervisor holds and says why.
+        None => return,
+    };
+    if takes > asked + 1e-9 {
+        let _ = writeln!(
+            std::io::stderr(),
+            "link: arming will take {takes:.2} s, longer than the {asked} s asked: the ramp into the motion's start, with its speed there, must stay within the speed, acceleration and jerk limits"
+        );
+    }
 }
 
 /// The `--record` file of what the controller answered, when asked for: refused when it is
@@ -129,15 +153,16 @@ fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
     let progress = std::io::stderr().is_terminal();
     let mut shown = Instant::now();
     while !sender.finished() {
+        // Every stop counts, however close together: two within one poll are two.
         let stops = crate::interrupt::count() - stops_before;
-        if stops > stops_seen {
+        while stops_seen < stops {
             if stops_seen == 0 {
                 sender.command(Command::EStop);
                 sender.command(Command::Stop);
             } else {
                 sender.command(Command::EStop);
             }
-            stops_seen = stops;
+            stops_seen += 1;
         }
         if progress && shown.elapsed() >= Duration::from_millis(200) {
             shown = Instant::now();

@@ -143,9 +143,9 @@ fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode
     for (k, f) in modes.frequencies_hz.iter().enumerate() {
         let _ = writeln!(
             out,
-            "  mode {}: {:>10.3} Hz   {}",
+            "  mode {}: {:>10} Hz   {}",
             k + 1,
-            f,
+            hz(*f),
             motion_words(&modes.modes[k])
         );
     }
@@ -164,12 +164,22 @@ fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode
     if let Some(l) = lowest {
         let _ = writeln!(
             out,
-            "Lowest over the trajectory: {:.3} Hz at t = {} s ({}), {}",
-            l.frequency_hz,
+            "Lowest over the trajectory: {} Hz at t = {} s ({}), {}",
+            hz(l.frequency_hz),
             l.time,
             pose_words(&l.pose.to_row()),
             motion_words(&l.mode)
         );
     }
     out
+}
+
+/// A frequency for reading: three decimals, or in scientific notation from 10 MHz on
+/// (where the decimals of an absurdly light payload's mode ran to a hundred digits).
+fn hz(f: f64) -> String {
+    if f < 1e7 {
+        format!("{f:.3}")
+    } else {
+        format!("{f:.3e}")
+    }
 }

@@ -192,13 +192,24 @@ pub fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
     std::fs::create_dir_all(folder)
         .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
     let text = serde_json::to_string_pretty(session).map_err(|e| e.to_string())?;
-    // Staged beside the file, then renamed over it. Not through the output rules: a session
-    // is saved also when a signal asked the viewer to close.
+    // The output rules' path (a symbolic link is followed and stays a link), staged beside
+    // the real file and renamed over it. Not their writing: a session is saved also when a
+    // signal asked the viewer to close. A device or FIFO (`/dev/null` keeps the viewer from
+    // remembering) is not written: at exit a FIFO would wait for a reader for ever.
     let path = file_in(folder);
+    let destination = crate::output::Destination::new(&path, &[]).map_err(|e| format!("{e:#}"))?;
+    if destination.kind() != crate::output::Kind::File {
+        return Err(format!(
+            "{} is not a regular file: the session was not saved there",
+            path.display()
+        ));
+    }
+    let real = destination.real();
     let fail = |e: std::io::Error| format!("cannot write {}: {e}", path.display());
-    let mut staged = tempfile::NamedTempFile::new_in(folder).map_err(fail)?;
+    let mut staged =
+        tempfile::NamedTempFile::new_in(crate::output::parent_of(real)).map_err(fail)?;
     std::io::Write::write_all(&mut staged, text.as_bytes()).map_err(fail)?;
-    staged.persist(&path).map_err(|e| fail(e.error))?;
+    staged.persist(real).map_err(|e| fail(e.error))?;
     Ok(())
 }
 
@@ -215,6 +226,49 @@ pub fn forget(folder: &std::path::Path) -> Result<(), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[cfg(unix)]
+    fn a_linked_session_stays_a_link_and_a_fifo_or_device_is_left_alone() {
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let session = Session::capture(
+            &Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+            "paired",
+            &Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0)),
+            [1280, 720],
+            None,
+        );
+        // A link to a file elsewhere: the file gets the session, the link stays.
+        let elsewhere = dir.path().join("kept").join("my-session.json");
+        std::fs::create_dir_all(elsewhere.parent().unwrap_or(dir.path()))
+            .unwrap_or_else(|e| panic!("{e}"));
+        std::fs::write(&elsewhere, b"{}").unwrap_or_else(|e| panic!("{e}"));
+        let folder = dir.path().join("config");
+        std::fs::create_dir_all(&folder).unwrap_or_else(|e| panic!("{e}"));
+        std::os::unix::fs::symlink(&elsewhere, file_in(&folder)).unwrap_or_else(|e| panic!("{e}"));
+        save(&folder, &session).unwrap_or_else(|e| panic!("{e}"));
+        let link = std::fs::symlink_metadata(file_in(&folder)).unwrap_or_else(|e| panic!("{e}"));
+        assert!(link.file_type().is_symlink());
+        assert!(matches!(load(&folder, Lang::En), Ok(Some(_))));
+        let kept = std::fs::read_to_string(&elsewhere).unwrap_or_default();
+        assert!(kept.contains("\"version\""), "{kept}");
+        // A link to /dev/null, and a FIFO: refused with a note, left as they are.
+        for special in ["null", "fifo"] {
+            let folder = dir.path().join(special);
+            std::fs::create_dir_all(&folder).unwrap_or_else(|e| panic!("{e}"));
+            let path = file_in(&folder);
+            if special == "null" {
+                std::os::unix::fs::symlink("/dev/null", &path).unwrap_or_else(|e| panic!("{e}"));
+            } else {
+                let made = std::process::Command::new("mkfifo").arg(&path).status();
+                assert!(made.is_ok_and(|s| s.success()));
+            }
+            let note = save(&folder, &session).err().unwrap_or_default();
+            assert!(note.contains("not a regular file"), "{note}");
+            let meta = std::fs::symlink_metadata(&path).unwrap_or_else(|e| panic!("{e}"));
+            assert!(!meta.is_file(), "{special} was replaced by a regular file");
+        }
+    }
 
     #[test]
     fn a_session_round_trips_and_restores_the_look() {

@@ -10,6 +10,38 @@ pub const MAX_SCENARIO_BYTES: u64 = 16 << 20;
 /// Largest CSV table read, bytes (a million poses take about 100 MB).
 pub const MAX_TABLE_BYTES: u64 = 2 << 30;
 
+/// Three numbers `[x, y, z]` from a file, exactly three: a fourth is refused, not dropped
+/// (serde reads an array of three from the first three values of a longer one). For
+/// `#[serde(deserialize_with = "…")]`.
+pub fn exactly_three<'de, D>(d: D) -> Result<[f64; 3], D::Error>
+where
+    D: serde::Deserializer<'de>,
+{
+    let values = <Vec<f64> as serde::Deserialize>::deserialize(d)?;
+    values.as_slice().try_into().map_err(|_| {
+        serde::de::Error::custom(format!(
+            "expected three numbers [x, y, z], got {}",
+            values.len()
+        ))
+    })
+}
+
+/// [`exactly_three`] keeping where the array was in the file.
+pub fn exactly_three_spanned<'de, D>(d: D) -> Result<toml::Spanned<[f64; 3]>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+{
+    let values = <toml::Spanned<Vec<f64>> as serde::Deserialize>::deserialize(d)?;
+    let span = values.span();
+    let three: [f64; 3] = values.get_ref().as_slice().try_into().map_err(|_| {
+        serde::de::Error::custom(format!(
+            "expected three numbers [x, y, z], got {}",
+            values.get_ref().len()
+        ))
+    })?;
+    Ok(toml::Spanned::new(span, three))
+}
+
 /// All of `input`, or a sentence saying why not (an I/O error, or more than `limit` bytes).
 pub fn read_capped(mut input: impl Read, limit: u64) -> Result<Vec<u8>, String> {
     let mut bytes = Vec::new();

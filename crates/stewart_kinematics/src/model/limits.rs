@@ -46,8 +46,10 @@ impl Limits {
     /// Whether a solved pose respects the cone and collision limits.
     pub fn pose_allowed(&self, pose: &Pose, solution: &LegSolution) -> bool {
         let angles = joint_angles(pose, solution);
+        // In degrees, as the check reports and judges them: the same test to the last bit
+        // (in radians, an angle equal to the limit could read 45.00000000000001°).
         let cone_ok = |limit: Option<Angle>, k: usize| {
-            limit.is_none_or(|max| angles.iter().all(|a| a[k] <= max.radians()))
+            limit.is_none_or(|max| angles.iter().all(|a| a[k].to_degrees() <= max.degrees()))
         };
         cone_ok(self.base_cone, 0)
             && cone_ok(self.platform_cone, 1)

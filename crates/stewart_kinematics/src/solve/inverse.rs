@@ -29,15 +29,9 @@ pub struct LegSolution {
 
 impl LegSolution {
     /// Unit vector along leg `i`, from base joint to platform joint (not finite for a
-    /// leg of zero length: see [`LegSolution::leg_without_direction`]).
+    /// leg of zero length: see [`Geometry::leg_without_direction`]).
     pub fn unit(&self, i: usize) -> Vector3<f64> {
         self.legs[i] / self.lengths[i]
-    }
-
-    /// The first leg (from 0) whose joints coincide: it has no direction, so the
-    /// Jacobian, the leg forces and the stiffness at this pose are undefined.
-    pub fn leg_without_direction(&self) -> Option<usize> {
-        (0..6).find(|&i| !(self.lengths[i] > 0.0 && self.unit(i).iter().all(|c| c.is_finite())))
     }
 }
 

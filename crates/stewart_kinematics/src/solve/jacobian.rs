@@ -114,6 +114,15 @@ impl Geometry {
         j
     }
 
+    /// The first leg (from 0) whose two joints meet at `pose` (closer than a billionth of
+    /// the platform's size): it has no direction, so the Jacobian, the leg forces and
+    /// the stiffness there are undefined.
+    pub fn leg_without_direction(&self, pose: &Pose) -> Option<usize> {
+        let tiny = 1e-9 * self.characteristic_length();
+        let solution = self.inverse(pose);
+        (0..6).find(|&i| solution.lengths[i].is_nan() || solution.lengths[i] <= tiny)
+    }
+
     /// The characteristic length used to normalise rotations: the root-mean-square
     /// distance of the platform joints from the platform frame's origin (the radius, for
     /// joints on a circle). A rotation by 1 rad then moves the joints by about as much as

@@ -385,3 +385,51 @@ proptest! {
         );
     }
 }
+
+#[test]
+fn a_planned_ramp_is_the_one_asked_when_the_limits_allow_it_and_the_closed_form_when_not() {
+    // Legs in metres: 0.5 m/s, 5 m/s², no jerk limit; a target at rest 0.1 m away.
+    let limits = ActuatorLimits {
+        range: [(-1.0, 1.0); 6],
+        speed: Some(0.5),
+        accel: Some(5.0),
+        jerk: None,
+    };
+    let from = [0.0; 6];
+    let still = |_t: f64| Some([0.1; 6]);
+    // The case: 1 s asked; the smootherstep's peaks 0.1875 m/s and 0.577 m/s²
+    // are well inside: 1 s it is (a quarter of each limit would have needed 1.5 s).
+    assert_eq!(planned_ramp(&limits, &from, 1.0, still, 1e-3), Some(1.0));
+    // 0.1 s asked: the speed binds, T = 1.875 · 0.1 / (0.95 · 0.5) = 0.395 s, and the
+    // acceleration (5.774 · 0.1 / T² = 3.7 m/s²) is then inside.
+    let t = planned_ramp(&limits, &from, 0.1, still, 1e-4).unwrap_or(f64::NAN);
+    let closed = 1.875 * 0.1 / (PLANNED_SHARE * 0.5);
+    assert!((t - closed).abs() < 2e-3 * closed, "{t} vs {closed}");
+    // A target swinging at up to 0.2 m/s leaves less room: a longer ramp.
+    let moving = |t: f64| Some([0.1 + 0.04 * (5.0 * t).sin(); 6]);
+    let longer = planned_ramp(&limits, &from, 0.1, moving, 1e-4).unwrap_or(f64::NAN);
+    assert!(longer > t, "{longer} vs {t}");
+    // A target with no values during the ramp: no plan.
+    assert_eq!(
+        planned_ramp(&limits, &from, 1.0, |t| (t < 0.5).then_some([0.1; 6]), 1e-3),
+        None
+    );
+}
+
+#[test]
+fn a_planned_first_ramp_is_the_arming_time() {
+    // A ramp of 1 s asked; 0.3 s planned (the caller checked it against the motion).
+    let mut s = supervisor(Some(150.0), Some(2000.0), StopMode::Hold);
+    s.plan_first_ramp(0.3);
+    s.arm(0.0, [0.0; 6]);
+    let mut t = 0.0;
+    let mut armed_at = None;
+    while t < 2.0 && armed_at.is_none() {
+        t += 0.01;
+        if s.tick(t, Ok([0.01; 6])).state == LinkState::Armed {
+            armed_at = Some(t);
+        }
+    }
+    let armed = armed_at.unwrap_or(f64::NAN);
+    assert!((armed - 0.3).abs() < 0.011, "{armed}");
+}

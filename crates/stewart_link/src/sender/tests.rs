@@ -243,6 +243,33 @@ fn a_stall_skips_the_deadlines_it_missed_instead_of_sending_a_burst() {
 }
 
 #[test]
+fn two_stops_taken_in_the_same_tick_are_an_emergency_stop() {
+    // However close together: both may wait in the inbox when a tick takes its commands,
+    // before the first has turned the supervisor homewards. What the command line sends
+    // for two Ctrl-Cs (e-stop and stop, then e-stop), two stops, two e-stops: each pair
+    // is an emergency; one of each is not.
+    let cases: [(&[Command], bool); 5] = [
+        (&[Command::EStop, Command::Stop, Command::EStop], true),
+        (&[Command::Stop, Command::Stop], true),
+        (&[Command::EStop, Command::EStop], true),
+        (&[Command::EStop, Command::Stop], false),
+        (&[Command::Stop], false),
+    ];
+    for (commands, emergency) in cases {
+        let mut sv = supervisor(0.05, StopMode::Home { speed: 20.0 });
+        sv.arm(0.0, [10.0; 6]);
+        let (tx, inbox) = mpsc::channel();
+        for c in commands {
+            tx.send(*c).unwrap_or_else(|e| panic!("{e}"));
+        }
+        let mut stopping = false;
+        take_commands(&inbox, &mut sv, 0.01, &mut stopping);
+        assert_eq!(sv.emergency(), emergency, "{commands:?}");
+        assert!(stopping || commands == [Command::EStop, Command::EStop]);
+    }
+}
+
+#[test]
 fn a_second_stop_on_the_way_home_is_an_emergency_stop() {
     let sent = Arc::new(Mutex::new(Vec::new()));
     let transport = Capture {

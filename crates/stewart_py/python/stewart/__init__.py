@@ -13,6 +13,7 @@ from ._errors import (
     CalibrationError,
     ForwardError,
     ScenarioError,
+    SingularError,
     StewartError,
     UnreachableError,
 )
@@ -27,4 +28,5 @@ __all__ = [
     "UnreachableError",
     "ForwardError",
     "CalibrationError",
+    "SingularError",
 ]

@@ -29,3 +29,11 @@ class ForwardError(StewartError, ValueError):
 
 class CalibrationError(StewartError, ValueError):
     """Calibration could not be done with these measurements."""
+
+
+class SingularError(StewartError, ValueError):
+    """A pose at which the Jacobian is undefined: leg `actuator` (from 1) has zero length."""
+
+    def __init__(self, message: str, actuator: int) -> None:
+        super().__init__(message)
+        self.actuator = actuator

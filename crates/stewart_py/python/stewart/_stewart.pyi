@@ -39,7 +39,9 @@ class Platform:
         """The scenario as TOML text."""
     def ik(self, poses: ArrayLike, out: Optional[Array] = None) -> Array:
         """Leg lengths (m) or servo angles (°) of `(n, 6)` poses (x, y, z in m; roll,
-        pitch, yaw in °), on all cores with the GIL released; into `out` when given."""
+        pitch, yaw in °), on all cores with the GIL released; into `out` when given.
+        Positions beyond ±1000 m and angles beyond ±3600° are refused (ValueError), as a
+        pose table is."""
     @overload
     def fk(self, values: ArrayLike, assembly_modes: Literal[False] = ...) -> Array: ...
     @overload
@@ -48,7 +50,8 @@ class Platform:
         """Poses of `(n, 6)` actuator values, each row started from the previous pose; or
         every assembly mode of each row."""
     def jacobian(self, pose: Sequence[float]) -> Array:
-        """The actuators' 6×6 Jacobian at a pose (rates per twist about the pivot point)."""
+        """The actuators' 6×6 Jacobian at a pose (rates per twist about the pivot point);
+        `SingularError` where a leg has zero length."""
     def condition(self, pose: Sequence[float]) -> float:
         """The normalised condition number at a pose (infinite when singular)."""
     def check(self) -> Dict[str, Any]:

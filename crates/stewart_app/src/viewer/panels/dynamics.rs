@@ -156,6 +156,9 @@ fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
                 NoModes::Dynamics(DynamicsError::Singular) => {
                     t.tr("dynamics.why_singular").to_owned()
                 }
+                NoModes::Dynamics(DynamicsError::LegWithoutDirection { leg }) => {
+                    t.fmt("dynamics.why_zero_leg", &[("leg", &leg)])
+                }
             };
             ui.label(RichText::new(t.fmt("dynamics.no_modes", &[("why", &why)])).color(WARNING));
             view.animate = false;

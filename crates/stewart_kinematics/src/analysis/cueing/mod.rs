@@ -38,6 +38,21 @@ pub enum CueError {
         /// The previous sample's time.
         previous: f64,
     },
+    /// The cue of sample `index` (from 0) leaves the accepted range of poses
+    /// ([`crate::bounds::POSE_ROW`]): a pose table that no command would read back.
+    #[error(
+        "the cued pose at t = {t} s leaves the accepted range of poses: its {column} {why} (lower the [cueing] scales or strengthen the washout, or turn the workspace limiter on)"
+    )]
+    PoseOutside {
+        /// The sample, from 0.
+        index: usize,
+        /// Its time, seconds.
+        t: f64,
+        /// The pose value's name: `x`, `y`, `z`, `roll_deg`, `pitch_deg` or `yaw_deg`.
+        column: &'static str,
+        /// Why the value is refused.
+        why: crate::bounds::OutOfBounds,
+    },
     /// The limiter keeps poses within the limits by scaling toward home, which must be
     /// within them.
     #[error(
@@ -202,7 +217,16 @@ pub fn cue_recording(
             }
             None => 0.0,
         };
-        poses.push(cueing.advance(h));
+        let pose = cueing.advance(h);
+        if let Err((column, why)) = crate::bounds::check_pose_row(&pose.to_row()) {
+            return Err(CueError::PoseOutside {
+                index,
+                t: *t,
+                column: crate::trajectory::POSE_COLUMNS[column],
+                why,
+            });
+        }
+        poses.push(pose);
         scales.push(cueing.scale());
         cues.push(cueing.cue());
         cueing.hold(motion);

@@ -85,6 +85,15 @@ pub enum DynamicsError {
         "the actuator stiffness is not given: add `actuator_stiffness` to the scenario's [dynamics] table (N/m for linear legs, N·m/rad for servos) or pass `--set dynamics.actuator_stiffness=VALUE`"
     )]
     NoStiffness,
+    /// A leg's two joints meet at this pose: it has no direction, so its stiffness and
+    /// force are undefined.
+    #[error(
+        "leg {leg} has zero length at this pose (its joints meet): it has no direction, so the stiffness and the modes are undefined there"
+    )]
+    LegWithoutDirection {
+        /// Leg number, from 1.
+        leg: usize,
+    },
     /// The mass matrix is not positive definite: some motion has no inertia.
     #[error(
         "the mass matrix is not positive definite: some motion of the platform has no inertia (give [payload] inertia_kg_m2 a positive moment about every axis)"

@@ -57,6 +57,11 @@ impl Geometry {
         let k = dynamics
             .actuator_stiffness
             .ok_or(DynamicsError::NoStiffness)?;
+        if self.rotary().is_none()
+            && let Some(leg) = self.leg_without_direction(pose)
+        {
+            return Err(DynamicsError::LegWithoutDirection { leg: leg + 1 });
+        }
         let stiffness = self.stiffness(pose, k)?;
         let mass_matrix = self.mass_matrix(pose, payload, dynamics)?;
         let (frequencies_hz, modes) = generalised_modes(&stiffness, &mass_matrix)?;
@@ -108,6 +113,19 @@ fn generalised_modes(
     k: &Matrix6<f64>,
     m: &Matrix6<f64>,
 ) -> Result<([f64; 6], [Vector6<f64>; 6]), DynamicsError> {
+    // `K v = ω² M v` is solved for `K / k_s` and `M / m_s` (entries at most 1), and ω²
+    // scaled back as a product of square roots: any accepted mass or stiffness, however
+    // small or large, then stays far from overflow (a milligram payload made `L⁻¹ K L⁻ᵀ`
+    // infinite, and its frequencies NaN).
+    let m_s = m.amax();
+    let k_s = k.amax();
+    if !(m_s > 0.0 && m_s.is_finite() && k_s.is_finite()) {
+        return Err(DynamicsError::MassMatrixNotPositive);
+    }
+    let k_s = if k_s > 0.0 { k_s } else { 1.0 };
+    let (k, m) = (k / k_s, m / m_s);
+    let (k, m) = (&k, &m);
+    let root_ratio = k_s.sqrt() / m_s.sqrt();
     let symmetric = (m + m.transpose()) * 0.5;
     let cholesky = symmetric
         .cholesky()
@@ -131,7 +149,7 @@ fn generalised_modes(
     let mut modes = [Vector6::zeros(); 6];
     for (slot, &i) in order.iter().enumerate() {
         let lambda = eigen.eigenvalues[i].max(0.0);
-        frequencies[slot] = lambda.sqrt() / std::f64::consts::TAU;
+        frequencies[slot] = lambda.sqrt() * root_ratio / std::f64::consts::TAU;
         let w = eigen.eigenvectors.column(i).into_owned();
         let mut v = l_inv.transpose() * w;
         v /= v.norm();
@@ -140,6 +158,12 @@ fn generalised_modes(
             v = -v;
         }
         modes[slot] = v;
+    }
+    // Nothing that is not a number leaves here to be printed as one.
+    let finite = frequencies.iter().all(|f| f.is_finite())
+        && modes.iter().all(|v| v.iter().all(|c| c.is_finite()));
+    if !finite {
+        return Err(DynamicsError::MassMatrixNotPositive);
     }
     Ok((frequencies, modes))
 }

@@ -947,14 +947,20 @@ fn build_sampling(
     let duration = match &t.duration_s {
         Some(v) => src.finite("trajectory.duration_s", v)?,
         None if default_duration <= 0.0 => {
-            return Err(src.invalid(
-                t.keys
-                    .as_ref()
-                    .map(Spanned::span)
-                    .or_else(|| t.file.as_ref().map(Spanned::span)),
-                "trajectory.keys",
-                "hold a single moment in time: add a key at another time, or give `duration_s` to hold the pose that long",
-            ));
+            // Named as the file says it: a table (`file`, as `stewart cue` writes for a
+            // one-sample recording) or keys.
+            return Err(match &t.file {
+                Some(file) => src.invalid(
+                    Some(file.span()),
+                    "trajectory.file",
+                    "holds a single moment in time (one row, or every row at the same time): add a row at another time, or give `duration_s` to hold the pose that long",
+                ),
+                None => src.invalid(
+                    t.keys.as_ref().map(Spanned::span),
+                    "trajectory.keys",
+                    "hold a single moment in time: add a key at another time, or give `duration_s` to hold the pose that long",
+                ),
+            });
         }
         None => default_duration,
     };

@@ -220,6 +220,16 @@ fn actuator(d: &mut Declare) {
             a(Trim(i)),
         );
     }
+    for i in 0..6 {
+        d.add(
+            format!("actuator.servo_reversed[{i}]"),
+            format!("servo {} reversed", i + 1),
+            Switch,
+            (0.0, 1.0),
+            Value(0.0),
+            a(Reversed(i)),
+        );
+    }
 }
 
 fn trajectory(d: &mut Declare) {

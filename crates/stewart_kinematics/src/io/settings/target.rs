@@ -47,6 +47,8 @@ pub enum ActuatorKey {
     ServoMax,
     /// `servo_trim_deg[i]`.
     Trim(usize),
+    /// `servo_reversed[i]` (a switch).
+    Reversed(usize),
 }
 
 /// How the trajectory is sampled.
@@ -235,6 +237,9 @@ impl Target {
                     ActuatorKey::ServoMin => r.range().map(|(min, _)| min.degrees()),
                     ActuatorKey::ServoMax => r.range().map(|(_, max)| max.degrees()),
                     ActuatorKey::Trim(i) => r.trims().get(i).map(|a| a.degrees()),
+                    ActuatorKey::Reversed(i) => {
+                        r.reversed().get(i).map(|&on| f64::from(u8::from(on)))
+                    }
                 }
             }
             Target::Sampling(key) => {
@@ -396,7 +401,7 @@ fn set_actuator(
     let (mut horn, mut rod) = (r.horn_length(), r.rod_length());
     let mut angles = r.horn_angles().map(|a| a.degrees());
     let mut range = r.range().map(|(a, b)| (a.degrees(), b.degrees()));
-    let reversed = *r.reversed();
+    let mut reversed = *r.reversed();
     let mut trims = r.trims().map(|a| a.degrees());
     match key {
         ActuatorKey::HornLength => horn = v,
@@ -412,6 +417,11 @@ fn set_actuator(
         ActuatorKey::Trim(i) => {
             if let Some(t) = trims.get_mut(i) {
                 *t = v;
+            }
+        }
+        ActuatorKey::Reversed(i) => {
+            if let Some(on) = reversed.get_mut(i) {
+                *on = v == 1.0;
             }
         }
     }

@@ -330,12 +330,12 @@ fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
         .iter()
         .filter(|k| k.key.starts_with("actuator."))
         .collect();
-    assert_eq!(keys.len(), 16);
+    assert_eq!(keys.len(), 22);
     for k in &keys {
         assert!(k.applies(&s), "{}", k.key);
         match lookup(&text, &k.key) {
             Some(v) => assert_eq!(k.get(&s), Some(v), "{}", k.key),
-            // Trims the file leaves out are zero.
+            // Trims the file leaves out are zero, and servos it does not reverse are not.
             None => assert_eq!(k.get(&s), Some(0.0), "{}", k.key),
         }
     }
@@ -346,6 +346,7 @@ fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
             "actuator.horn_angles_deg[4]=140",
             "actuator.servo_min_deg=off",
             "actuator.servo_trim_deg[1]=-4.5",
+            "actuator.servo_reversed[2]=true",
         ],
     )
     .unwrap_or_else(|e| panic!("{e}"));
@@ -359,6 +360,7 @@ fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
     assert_eq!(r.horn_angles()[4].degrees(), 140.0);
     assert_eq!(r.range(), None);
     assert_eq!(r.trims()[1].degrees(), -4.5);
+    assert_eq!(r.reversed(), &[false, false, true, false, false, false]);
     // One end of an absent range makes it symmetric.
     apply_all(&mut s, ["actuator.servo_max_deg=70"]).unwrap_or_else(|e| panic!("{e}"));
     let range = s.geometry.rotary().and_then(|r| r.range());

@@ -69,39 +69,62 @@ fn the_cubic_configurations_stiffness_is_the_closed_form() {
 
 #[test]
 fn a_centred_mass_on_the_cubic_configuration_has_decoupled_modes() {
+    // Also for an absurdly light payload (accepted: any positive mass), whose modes once
+    // overflowed to NaN: the closed form holds at every scale.
+    for scale in [1.0, 1e-12, 1e-200] {
+        let g = cubic_geometry();
+        let k = 1.0e6;
+        let (mass, inertia) = (40.0 * scale, [1.2 * scale, 1.5 * scale, 2.0 * scale]);
+        let payload = Payload::new(
+            mass,
+            Vector3::zeros(),
+            Matrix3::from_diagonal(&Vector3::from(inertia)),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        let dynamics = DynamicsSettings {
+            actuator_stiffness: Some(k),
+            ..DynamicsSettings::default()
+        };
+        let modes = g
+            .modes(&g.home_pose(), &payload, &dynamics)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let hc2 = 3.0 * SIDE * SIDE;
+        let w = |stiffness: f64, inertia: f64| (stiffness / inertia).sqrt() / std::f64::consts::TAU;
+        let mut expected = [
+            w(2.0 * k, mass),
+            w(2.0 * k, mass),
+            w(2.0 * k, mass),
+            w(k * hc2 / 6.0, inertia[0]),
+            w(k * hc2 / 6.0, inertia[1]),
+            w(2.0 * k * hc2 / 3.0, inertia[2]),
+        ];
+        expected.sort_by(f64::total_cmp);
+        for (got, want) in modes.frequencies_hz.iter().zip(expected) {
+            assert!((got - want).abs() < 1e-9 * want, "{scale}: {got} vs {want}");
+        }
+        // The lowest is the pitch mode: k·Hc²/6 over the larger of Ixx and Iyy.
+        assert!(modes.modes[0][4] > 1.0 - 1e-9, "{}", modes.modes[0]);
+        assert_eq!(modes.dominant(0), vec![("ry", modes.modes[0][4])]);
+    }
+}
+
+#[test]
+fn a_leg_of_zero_length_is_named_not_blamed_on_the_inertia() {
+    // The platform lowered until leg 1's joints meet.
     let g = cubic_geometry();
-    let k = 1.0e6;
-    let (mass, inertia) = (40.0, [1.2, 1.5, 2.0]);
-    let payload = Payload::new(
-        mass,
-        Vector3::zeros(),
-        Matrix3::from_diagonal(&Vector3::from(inertia)),
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    let home = g.home_pose();
+    let gap = g.base_joints()[0] - g.inverse(&home).platform_joints[0];
+    let pose = Pose::new(home.position + gap, home.roll, home.pitch, home.yaw);
+    assert_eq!(g.leg_without_direction(&pose), Some(0));
+    let payload =
+        Payload::new(40.0, Vector3::zeros(), Matrix3::identity()).unwrap_or_else(|e| panic!("{e}"));
     let dynamics = DynamicsSettings {
-        actuator_stiffness: Some(k),
+        actuator_stiffness: Some(1e6),
         ..DynamicsSettings::default()
     };
-    let modes = g
-        .modes(&g.home_pose(), &payload, &dynamics)
-        .unwrap_or_else(|e| panic!("{e}"));
-    let hc2 = 3.0 * SIDE * SIDE;
-    let w = |stiffness: f64, inertia: f64| (stiffness / inertia).sqrt() / std::f64::consts::TAU;
-    let mut expected = [
-        w(2.0 * k, mass),
-        w(2.0 * k, mass),
-        w(2.0 * k, mass),
-        w(k * hc2 / 6.0, inertia[0]),
-        w(k * hc2 / 6.0, inertia[1]),
-        w(2.0 * k * hc2 / 3.0, inertia[2]),
-    ];
-    expected.sort_by(f64::total_cmp);
-    for (got, want) in modes.frequencies_hz.iter().zip(expected) {
-        assert!((got - want).abs() < 1e-9 * want, "{got} vs {want}");
-    }
-    // The lowest is the pitch mode: k·Hc²/6 over the larger of Ixx and Iyy.
-    assert!(modes.modes[0][4] > 1.0 - 1e-9, "{}", modes.modes[0]);
-    assert_eq!(modes.dominant(0), vec![("ry", modes.modes[0][4])]);
+    let e = g.modes(&pose, &payload, &dynamics).err();
+    assert_eq!(e, Some(DynamicsError::LegWithoutDirection { leg: 1 }));
+    assert_eq!(g.leg_without_direction(&home), None);
 }
 
 #[test]
