@@ -95,9 +95,16 @@ pub fn not_finite(name: &str, row: usize, column: &str, value: f64) -> PyErr {
 /// accepted range of poses (the words `solve --poses` uses for a pose table).
 pub fn pose_outside(name: &str, row: usize, values: &[f64; 6], column: usize) -> PyErr {
     use stewart_kinematics::bounds::{POSE_ROW, POSE_ROW_UNITS, check, symmetric};
-    let why = check(values[column], &symmetric(POSE_ROW[column]), POSE_ROW_UNITS[column])
-        .err()
-        .map_or_else(|| "is outside its accepted range".to_owned(), |e| e.to_string());
+    let why = check(
+        values[column],
+        &symmetric(POSE_ROW[column]),
+        POSE_ROW_UNITS[column],
+    )
+    .err()
+    .map_or_else(
+        || "is outside its accepted range".to_owned(),
+        |e| e.to_string(),
+    );
     PyValueError::new_err(format!(
         "{name}, row {row} (from 0), column {}: {why}",
         POSE_COLUMNS[column]

@@ -5,6 +5,7 @@
 mod arrays;
 mod errors;
 mod platform;
+mod waiting;
 
 use pyo3::prelude::*;
 

@@ -15,6 +15,7 @@ use stewart_kinematics::{ForwardOptions, Pose, Scenario, check_motion, settings}
 
 use crate::arrays::{self, Rows};
 use crate::errors::{raise, scenario as scenario_error};
+use crate::waiting;
 
 /// Poses found for rows, or the row (from 0) that has none and why.
 type RowPoses = Result<Vec<[f64; 6]>, (usize, String)>;
@@ -60,10 +61,11 @@ impl Platform {
             .map_err(|e| scenario_error(py, e))
     }
 
-    /// A scenario file (TOML); errors name the file, line and key.
+    /// A scenario file (TOML); errors name the file, line and key. Read with the GIL
+    /// released, Ctrl-C ending the wait (a FIFO no one writes to blocks nothing else).
     #[staticmethod]
     fn from_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
-        Scenario::load(&path)
+        waiting::interruptible(py, None, move || Scenario::load(&path))?
             .map(|scenario| Self { scenario })
             .map_err(|e| scenario_error(py, e))
     }
@@ -86,10 +88,29 @@ impl Platform {
             .map_err(|e| scenario_error(py, e))
     }
 
-    /// The value of a setting (`None` when it is off or does not apply).
-    fn get(&self, py: Python<'_>, key: &str) -> PyResult<Option<f64>> {
+    /// The value of a setting: a number (`None` when it is off or does not apply), or for
+    /// `link.*` keys, which `set` takes as words, their word (a number where it is one).
+    fn get<'py>(&self, py: Python<'py>, key: &str) -> PyResult<Bound<'py, PyAny>> {
+        if key.trim().starts_with("link.") {
+            let entries = self.scenario.link.entries();
+            let Some((_, word)) = entries.iter().find(|(k, _)| k == key.trim()) else {
+                let known: Vec<&str> = entries.iter().map(|(k, _)| k.as_str()).collect();
+                return Err(scenario_error(
+                    py,
+                    format!(
+                        "unknown setting `{key}`; the link's are {}",
+                        known.join(", ")
+                    ),
+                ));
+            };
+            return Ok(match word.parse::<f64>() {
+                Ok(v) => v.into_pyobject(py)?.into_any(),
+                Err(_) if word == "off" => py.None().into_bound(py),
+                Err(_) => word.into_pyobject(py)?.into_any(),
+            });
+        }
         let setting = settings::find(key).map_err(|e| scenario_error(py, e))?;
-        Ok(setting.get(&self.scenario))
+        Ok(setting.get(&self.scenario).into_pyobject(py)?.into_any())
     }
 
     /// The scenario's name.
@@ -130,11 +151,14 @@ impl Platform {
     /// raises `UnreachableError` with its row and servo.
     #[pyo3(signature = (poses, out = None))]
     fn ik<'py>(
-        &self,
-        py: Python<'py>,
+        slf: PyRef<'py, Self>,
         poses: &Bound<'py, PyAny>,
         out: Option<Bound<'py, PyArray2<f64>>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let py = slf.py();
+        // The platform as it is now; `set` from another thread meanwhile waits for nothing.
+        let g = slf.scenario.geometry.clone();
+        drop(slf);
         let rows = arrays::table(poses, "poses", &POSE)?;
         let n = rows.values().len() / 6;
         let out = match out {
@@ -151,7 +175,7 @@ impl Platform {
                 .unwrap_or_else(|_| unreachable!("a new array is contiguous"));
             let target: &mut [[f64; 6]] = bytemuck::cast_slice_mut(slice);
             let input: &[[f64; 6]] = bytemuck::cast_slice(rows.values());
-            let g = &self.scenario.geometry;
+            let g = &g;
             let solved = py.detach(|| g.actuator_values_rows(input, target));
             match solved {
                 Ok(()) => {}
@@ -186,16 +210,17 @@ impl Platform {
     /// a list with every assembly mode of each row instead (an `(k, 6)` array per row).
     #[pyo3(signature = (values, assembly_modes = false))]
     fn fk<'py>(
-        &self,
-        py: Python<'py>,
+        slf: PyRef<'py, Self>,
         values: &Bound<'py, PyAny>,
         assembly_modes: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let columns = self.columns();
+        let py = slf.py();
+        let columns = slf.columns();
+        let (g, name) = (slf.scenario.geometry.clone(), slf.scenario.name.clone());
+        drop(slf);
         let rows: Rows<'_> = arrays::finite_table(values, "values", &columns)?;
         let input: Vec<[f64; 6]> = bytemuck::cast_slice(rows.values()).to_vec();
         drop(rows);
-        let g = self.scenario.geometry.clone();
         if g.rotary().is_none() && g.architecture().singular {
             return Err(raise(
                 py,
@@ -203,7 +228,7 @@ impl Platform {
                 (
                     format!(
                         "scenario `{}`: the pose is not determined by the leg lengths, so forward kinematics has no answer",
-                        self.scenario.name
+                        name
                     ),
                     0usize,
                 ),
@@ -217,7 +242,7 @@ impl Platform {
             )
         };
         if assembly_modes {
-            let found: Vec<RowPoses> = py.detach(|| {
+            let found: Vec<RowPoses> = waiting::interruptible(py, None, move || {
                 input
                     .iter()
                     .enumerate()
@@ -232,7 +257,7 @@ impl Platform {
                             .map_err(|e| (k, e.to_string()))
                     })
                     .collect()
-            });
+            })?;
             let list = PyList::empty(py);
             for modes in found {
                 let modes = modes.map_err(|(k, e)| forward_error(k, &e))?;
@@ -241,7 +266,7 @@ impl Platform {
             return Ok(list.into_any());
         }
         let options = ForwardOptions::default();
-        let solved: RowPoses = py.detach(|| {
+        let solved: RowPoses = waiting::interruptible(py, None, move || {
             if g.rotary().is_some() {
                 let mut start = g.home_pose();
                 let mut out = Vec::with_capacity(input.len());
@@ -258,7 +283,7 @@ impl Platform {
                     .map(|s| s.solutions.iter().map(row_of).collect())
                     .map_err(|e| (e.index, e.error.to_string()))
             }
-        });
+        })?;
         let poses = solved.map_err(|(k, e)| forward_error(k, &e))?;
         Ok(array(py, &poses).into_any())
     }
@@ -320,11 +345,15 @@ impl Platform {
     }
 
     /// The pre-flight check of the motion as a dict: what `stewart check --format json`
-    /// prints.
-    fn check<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let s = &self.scenario;
-        let report =
-            py.detach(|| check_motion(&s.geometry, &s.limits, &s.motion.sample(), &s.checks));
+    /// prints. Ctrl-C stops the wait.
+    fn check<'py>(slf: PyRef<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        let s = slf.scenario.clone();
+        drop(slf);
+        let (report, s) = waiting::interruptible(py, None, move || {
+            let report = check_motion(&s.geometry, &s.limits, &s.motion.sample(), &s.checks);
+            (report, s)
+        })?;
         let doc = CheckDocument::new(&s.name, &s.geometry, &report);
         let text = serde_json::to_string(&doc).map_err(|e| PyValueError::new_err(e.to_string()))?;
         py.import("json")?.getattr("loads")?.call1((text,))
@@ -333,14 +362,18 @@ impl Platform {
     /// The reachable workspace at a fixed `orientation` (roll, pitch, yaw in degrees) on a
     /// grid of `resolution` columns a side: a dict with `volume` and `volume_error` (m³)
     /// and `extent` (`[[x_min, x_max], [y_min, y_max], [z_min, z_max]]`, `None` when
-    /// nothing is reachable), as `stewart workspace` reports them.
-    #[pyo3(signature = (orientation = (0.0, 0.0, 0.0), resolution = 400))]
+    /// nothing is reachable), as `stewart workspace` reports them. A request estimated
+    /// over the budget (two minutes, 2 GB), as `stewart workspace` estimates it, is refused
+    /// with the largest resolution that fits unless `budget=False`; Ctrl-C stops it.
+    #[pyo3(signature = (orientation = (0.0, 0.0, 0.0), resolution = 400, budget = true))]
     fn workspace<'py>(
-        &self,
-        py: Python<'py>,
+        slf: PyRef<'py, Self>,
         orientation: (f64, f64, f64),
         resolution: usize,
+        budget: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
+        use stewart_kinematics::workspace::{BUDGET_SECONDS, WorkspaceControl};
+        let py = slf.py();
         let angles = [orientation.0, orientation.1, orientation.2];
         if let Some(a) = angles.iter().find(|a| !a.is_finite() || a.abs() > 3600.0) {
             return Err(PyValueError::new_err(format!(
@@ -352,16 +385,32 @@ impl Platform {
                 "resolution must be from 2 to 4096 columns a side, got {resolution}"
             )));
         }
-        let s = &self.scenario;
-        let ws = py
-            .detach(|| {
-                s.geometry.constant_orientation_workspace(
-                    &s.limits,
-                    angles.map(Angle::from_degrees),
-                    resolution,
-                )
-            })
-            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let (g, limits) = (slf.scenario.geometry.clone(), slf.scenario.limits);
+        drop(slf);
+        let orientation = angles.map(Angle::from_degrees);
+        let cancel = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let stop = std::sync::Arc::clone(&cancel);
+        let ws = waiting::interruptible(py, Some(cancel), move || {
+            if budget {
+                let started = std::time::Instant::now();
+                let cost = g
+                    .workspace_cost(&limits, orientation, resolution)
+                    .map_err(|e| e.to_string())?;
+                let estimate = cost.estimate(started.elapsed().as_secs_f64(), resolution);
+                if estimate.over_budget {
+                    return Err(format!(
+                        "a {resolution} × {resolution} workspace would take about {:.0} s and {:.0} MB, over the budget of {BUDGET_SECONDS:.0} s and 2 GB: use resolution={} or lower, or budget=False to run it anyway (Ctrl-C stops it)",
+                        estimate.seconds,
+                        cost.bytes / 1e6,
+                        estimate.within_budget.min(resolution - 1).max(2)
+                    ));
+                }
+            }
+            let control = WorkspaceControl::stopped_by(stop);
+            g.constant_orientation_workspace_with(&limits, orientation, resolution, &control)
+                .map_err(|e| e.to_string())
+        })?
+        .map_err(PyValueError::new_err)?;
         let d = PyDict::new(py);
         d.set_item("volume", ws.volume)?;
         d.set_item("volume_error", ws.volume_error)?;

@@ -271,3 +271,110 @@ def test_the_readmes_example_runs():
     assert np.max(np.abs(scope["back"] - scope["poses"])) < 1e-9
     assert scope["report"]["scenario"] == "paired"
     assert np.max(np.abs(scope["fit"]["offsets"])) < 1e-9
+
+
+def test_column_major_arrays_are_read_as_rows():
+    # Fortran order (`np.asfortranarray`, `loadtxt(...).T` of a transposed file, data from
+    # MATLAB or pandas) is contiguous too, but column after column: read as rows anyway.
+    p = stewart.Platform.preset("paired")
+    poses = random_poses(500, 0.8, 0.1, 10.0)
+    legs = p.ik(poses)
+    fortran = np.asfortranarray(poses)
+    assert fortran.flags["F_CONTIGUOUS"] and not fortran.flags["C_CONTIGUOUS"]
+    assert np.array_equal(p.ik(fortran), legs)
+    transposed = np.ascontiguousarray(poses.T).T  # what loadtxt(...).T gives
+    assert np.array_equal(p.ik(transposed), legs)
+    near = p.ik(random_poses(200, 0.8, 0.03, 3.0))
+    back = p.fk(near)
+    assert np.array_equal(p.fk(np.asfortranarray(near)), back)
+    # A NaN in a Fortran-ordered array: its own row and column are named.
+    bad = np.asfortranarray(poses)
+    bad[123, 4] = np.nan
+    with pytest.raises(ValueError, match=r"poses, row 123 \(from 0\), column pitch: NaN"):
+        p.ik(bad)
+    # Calibration takes (n, 12) rows the same way.
+    measured = np.column_stack([poses[:40], legs[:40]])
+    plain = stewart.calibrate(p, measured)[1]
+    column_major = stewart.calibrate(p, np.asfortranarray(measured))[1]
+    assert plain["rms_after"] == column_major["rms_after"]
+
+
+def test_the_accepted_ranges_and_singular_poses_are_the_command_lines():
+    p = stewart.Platform.preset("paired")
+    poses = random_poses(10, 0.8, 0.05, 5.0)
+    # Finite but far outside: refused as `solve --poses` refuses the same table row.
+    for column, value, name in [(0, 1e155, "x"), (2, -1000.5, "z"), (5, 3600.5, "yaw")]:
+        far = poses.copy()
+        far[6, column] = value
+        with pytest.raises(ValueError, match=rf"poses, row 6 \(from 0\), column {name}: .* is outside the accepted range"):
+            p.ik(far)
+    with pytest.raises(ValueError, match="pose, x: 1e\\+?200 is outside the accepted range"):
+        p.jacobian([1e200, 0, 0.8, 0, 0, 0])
+    # The range's ends are accepted, with finite lengths.
+    assert np.isfinite(p.ik(np.array([[1000.0, -1000.0, 1000.0, 3600.0, -3600.0, 3600.0]]))).all()
+    # A pose where leg 1's joints meet: no Jacobian, said so (not a matrix of NaN).
+    home = np.array(p.home)
+    legs = p.ik(home[None, :])[0]
+    base = stewart.Platform.preset("paired")
+    # Lower the platform straight down by leg 1's length along its own direction: the
+    # pose whose platform joint 1 sits on base joint 1 (found by the Jacobian's first row).
+    row = p.jacobian(home)[0]
+    lowered = home.copy()
+    lowered[:3] -= legs[0] * row[:3]
+    with pytest.raises(stewart.SingularError, match="leg 1 has zero length") as e:
+        base.jacobian(lowered)
+    assert e.value.actuator == 1
+
+
+def test_a_fifo_or_a_long_computation_gives_way_to_ctrl_c_and_other_threads(tmp_path):
+    import _thread
+
+    fifo = tmp_path / "scenario.toml"
+    os.mkfifo(fifo)
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.01)
+
+    other = threading.Thread(target=tick)
+    other.start()
+    threading.Timer(0.5, _thread.interrupt_main).start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        stewart.Platform.from_file(fifo)
+    waited = time.perf_counter() - start
+    stop.set()
+    other.join()
+    # Ctrl-C ended the wait, and the other thread ran all along (the GIL was free).
+    assert 0.4 < waited < 5.0, waited
+    assert len(ticks) > 20
+    # Let the reader left behind finish (a writer opens the FIFO and closes it).
+    with open(fifo, "w"):
+        pass
+    # A long workspace stops within moments of Ctrl-C too.
+    p = stewart.Platform.preset("paired")
+    threading.Timer(0.3, _thread.interrupt_main).start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        p.workspace(resolution=4096, budget=False)
+    assert time.perf_counter() - start < 5.0
+
+
+def test_settings_change_while_a_batch_runs_and_link_keys_read_back():
+    p = stewart.Platform.preset("paired")
+    poses = random_poses(2_000_000, 0.8, 0.1, 10.0)
+    worker = threading.Thread(target=p.ik, args=(poses,))
+    worker.start()
+    # Not "Already borrowed": a batch works on the platform as it was when it started.
+    p.set("geometry.base_radius", 1.1)
+    worker.join()
+    assert p.get("geometry.base_radius") == 1.1
+    p.set("link.rate_hz", 250)
+    assert p.get("link.rate_hz") == 250.0
+    assert p.get("link.transport") == "file"
+    assert p.get("link.port") is None
+    with pytest.raises(stewart.ScenarioError, match="unknown setting `link.nope`"):
+        p.get("link.nope")

@@ -11,7 +11,8 @@ use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
 use stewart_kinematics::workspace::{
-    Axis, ConstantOrientationWorkspace, PROBE_RESOLUTION, WorkspaceControl, WorkspaceError,
+    Axis, BUDGET_BYTES, BUDGET_SECONDS, ConstantOrientationWorkspace, WorkspaceControl,
+    WorkspaceError,
 };
 use stewart_kinematics::{Angle, Geometry, Limits, Pose, Scenario};
 
@@ -200,11 +201,6 @@ fn write_surface(
     Ok(())
 }
 
-/// The most time a workspace request may be estimated to take without `--no-budget`.
-pub const BUDGET_SECONDS: f64 = 120.0;
-/// The most memory its reachable spans may be estimated to take without `--no-budget`.
-pub const BUDGET_BYTES: f64 = 2.0 * 1024.0 * 1024.0 * 1024.0;
-
 /// Estimate the request's cost from a coarse probe, refuse it above the budget, and run
 /// it with a progress bar and Ctrl-C when it is long.
 fn compute(
@@ -216,24 +212,16 @@ fn compute(
 ) -> Result<ConstantOrientationWorkspace> {
     let started = Instant::now();
     let cost = g.workspace_cost(limits, orientation, resolution)?;
-    let probe_seconds = started.elapsed().as_secs_f64();
-    // Time grows as N² (each column costs about the same at any resolution).
-    let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
-    let seconds = probe_seconds * ratio * ratio;
-    let over = seconds > BUDGET_SECONDS || cost.bytes > BUDGET_BYTES;
+    let estimate = cost.estimate(started.elapsed().as_secs_f64(), resolution);
+    let seconds = estimate.seconds;
     let cost_words = format!(
         "about {}, {:.2e} limit evaluations and {:.0} MB",
         duration_words(seconds),
         cost.evaluations,
         cost.bytes / 1e6
     );
-    if over && !no_budget {
-        let fits = |n: f64| {
-            let r = n / PROBE_RESOLUTION as f64;
-            probe_seconds * r * r <= BUDGET_SECONDS
-                && cost.bytes / (ratio * ratio) * r * r <= BUDGET_BYTES
-        };
-        let suggestion = (2..resolution).rev().find(|&n| fits(n as f64)).unwrap_or(2);
+    if estimate.over_budget && !no_budget {
+        let suggestion = estimate.within_budget.min(resolution - 1).max(2);
         bail!(
             "a {resolution} × {resolution} workspace would take {cost_words}; the budget is {} and {:.0} GB: use --resolution {suggestion} or lower, or --no-budget to run it anyway (Ctrl-C stops it)",
             duration_words(BUDGET_SECONDS),

@@ -21,8 +21,9 @@ class Platform:
     def set(self, key: str, value: Union[float, bool, str, None]) -> None:
         """Change one setting by its key (`stewart settings` lists them); `None` switches
         an optional one off. A refused value raises `ScenarioError` and changes nothing."""
-    def get(self, key: str) -> Optional[float]:
-        """The value of a setting (`None` when off or not applying)."""
+    def get(self, key: str) -> Union[float, str, None]:
+        """The value of a setting (`None` when off or not applying); `link.*` keys give
+        their number or word."""
     @property
     def name(self) -> str:
         """The scenario's name."""
@@ -57,9 +58,14 @@ class Platform:
     def check(self) -> Dict[str, Any]:
         """The pre-flight check of the motion (`stewart check --format json`)."""
     def workspace(
-        self, orientation: Tuple[float, float, float] = ..., resolution: int = ...
+        self,
+        orientation: Tuple[float, float, float] = ...,
+        resolution: int = ...,
+        budget: bool = ...,
     ) -> Dict[str, Any]:
-        """Reachable positions at a fixed orientation: volume, volume_error, extent."""
+        """Reachable positions at a fixed orientation: volume, volume_error, extent.
+        Refused when estimated over the budget (two minutes, 2 GB) unless `budget=False`;
+        Ctrl-C stops it."""
     def trajectory(self) -> Tuple[Array, Array]:
         """The sampled motion: times `(n,)` and poses `(n, 6)`."""
 

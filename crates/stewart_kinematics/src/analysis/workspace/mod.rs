@@ -92,6 +92,48 @@ pub struct WorkspaceCost {
     pub bytes: f64,
 }
 
+/// The most time a workspace request may be estimated to take unless its caller asks to
+/// run it anyway (`stewart workspace --no-budget`, `Platform.workspace(budget=False)`).
+pub const BUDGET_SECONDS: f64 = 120.0;
+
+/// The most memory its reachable spans may be estimated to take, bytes.
+pub const BUDGET_BYTES: f64 = 2.0 * 1024.0 * 1024.0 * 1024.0;
+
+/// A request's cost scaled from its probe, against the budget.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WorkspaceEstimate {
+    /// Seconds the request will take, about.
+    pub seconds: f64,
+    /// Whether that time or the spans' memory is over [`BUDGET_SECONDS`] or
+    /// [`BUDGET_BYTES`].
+    pub over_budget: bool,
+    /// The largest resolution within the budget (2 at least).
+    pub within_budget: usize,
+}
+
+impl WorkspaceCost {
+    /// The estimate for `resolution` from this cost, whose probe (at
+    /// [`PROBE_RESOLUTION`]) took `probe_seconds` (measured by the caller: the core reads
+    /// no clock). Time grows as N², each column costing about the same at any resolution.
+    pub fn estimate(&self, probe_seconds: f64, resolution: usize) -> WorkspaceEstimate {
+        let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
+        let seconds = probe_seconds * ratio * ratio;
+        let fits = |n: f64| {
+            let r = n / PROBE_RESOLUTION as f64;
+            probe_seconds * r * r <= BUDGET_SECONDS
+                && self.bytes / (ratio * ratio) * r * r <= BUDGET_BYTES
+        };
+        WorkspaceEstimate {
+            seconds,
+            over_budget: seconds > BUDGET_SECONDS || self.bytes > BUDGET_BYTES,
+            within_budget: (2..=resolution)
+                .rev()
+                .find(|&n| fits(n as f64))
+                .unwrap_or(2),
+        }
+    }
+}
+
 /// At most this many separate reachable `z` intervals per column (each shell contributes
 /// at most two, and intervals only split where shells cut them).
 const MAX_SPANS: usize = 8;
