@@ -151,6 +151,108 @@ fn the_workspace_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
     assert!(lengths.iter().all(|l| (0.9..=1.1).contains(l)));
 }
 
+/// The hard manoeuvre: 9 m/s², 80°/s, reversing every second, every 5 ms for 4 s.
+fn hard_manoeuvre() -> String {
+    let mut text = String::from("t,ax,ay,az,wx,wy,wz\n");
+    for k in 0..=800 {
+        let t = f64::from(k) * 0.005;
+        let sign = if (t / 1.0) as i64 % 2 == 0 { 1.0 } else { -1.0 };
+        text.push_str(&format!(
+            "{t},{},{},3,{},-30,{}\n",
+            9.0 * sign,
+            -7.0 * sign,
+            50.0 * sign,
+            80.0 * sign
+        ));
+    }
+    text
+}
+
+#[test]
+fn a_limited_cue_passes_the_check_of_the_limits_it_keeps_even_on_their_edge() {
+    // The limiter holds the platform on a 45° joint cone for most of the manoeuvre; the
+    // check judges the same poses by the same test: on the edge is within (it once read
+    // 45.00000000000001° there and called it a violation).
+    let dir = tempdir();
+    let vehicle = write(dir.path(), "hard.csv", &hard_manoeuvre());
+    let poses = dir.path().join("poses.csv");
+    let o = stewart(&[
+        "cue",
+        "--preset",
+        "seed",
+        "--input",
+        &vehicle,
+        "--out",
+        &poses.display().to_string(),
+        "--set",
+        "cueing.translation_scale=1",
+        "--set",
+        "cueing.workspace_limiter=true",
+        "--set",
+        "limits.platform_cone_deg=45",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("the workspace limiter scaled the cue back"));
+    let scenario = write(
+        dir.path(),
+        "cued.toml",
+        "[geometry]\nbase_radius = 1.0\nplatform_radius = 0.6\nhome_height = 0.8\nbase_angles_deg = [0, 60, 120, 180, 240, 300]\nplatform_angles_deg = [30, 90, 150, 210, 270, 330]\n[limits]\nplatform_cone_deg = 45\n[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n",
+    );
+    let check = stewart(&["check", "--scenario", &scenario]);
+    let report = stdout(&check);
+    let cone = report
+        .lines()
+        .find(|l| l.contains("platform joint cone"))
+        .unwrap_or_else(|| panic!("{report}"));
+    assert!(
+        cone.contains("worst 45.0000 deg") && cone.ends_with("ok"),
+        "{cone}"
+    );
+    assert!(!report.contains("leans more than 45°"), "{report}");
+}
+
+#[test]
+fn a_cue_leaving_the_accepted_poses_is_refused_at_its_input_line() {
+    // A sustained 9 m/s² with no return to neutral, a tenfold scale and the slowest washout
+    // (all accepted values): the platform
+    // would travel kilometres. Refused, naming the line, nothing written.
+    let dir = tempdir();
+    let mut text = String::from("t,ax,ay,az,wx,wy,wz\n");
+    for k in 0..=2000 {
+        text.push_str(&format!("{},9,0,0,0,0,0\n", f64::from(k) * 0.05));
+    }
+    let vehicle = write(dir.path(), "long.csv", &text);
+    let out = dir.path().join("poses.csv");
+    let o = stewart(&[
+        "cue",
+        "--preset",
+        "seed",
+        "--input",
+        &vehicle,
+        "--out",
+        &out.display().to_string(),
+        "--set",
+        "cueing.translation_scale=10",
+        "--set",
+        "cueing.translation_hp_wn=0.01",
+        "--set",
+        "cueing.translation_hp_wb=0",
+        "--set",
+        "cueing.tilt=false",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains("long.csv, line "),
+        "{err}"
+    );
+    assert!(
+        err.contains("leaves the accepted range of poses: its x"),
+        "{err}"
+    );
+    assert!(!out.exists());
+}
+
 #[test]
 fn bad_vehicle_motion_is_one_located_error_and_writes_nothing() {
     let dir = tempdir();

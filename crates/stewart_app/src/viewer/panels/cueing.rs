@@ -68,6 +68,7 @@ pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCount
                     for target in targets {
                         setting_slider(ui, ed, target);
                     }
+                    ui.label(RichText::new(t.tr("cueing.limiter_keeps")).small());
                 });
             edit_error(ui, ed.doc, t, &[Group::Cueing]);
         });

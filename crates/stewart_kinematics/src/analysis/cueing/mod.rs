@@ -156,7 +156,9 @@ impl Cueing {
 /// the platform frame) is at its home place plus `s` times the cue's translation, the
 /// platform turned by `s` times the cue's angles about it.
 fn pose_at(geometry: &Geometry, arm: Vector3<f64>, cue: &Cue, s: f64) -> Pose {
-    let [roll, pitch, yaw] = cue.angles.map(|a| Angle::from_radians(s * a));
+    // The angles as a pose table writes and reads them, so that the limiter judges the
+    // very pose `stewart check` reads back from `stewart cue`'s output.
+    let [roll, pitch, yaw] = cue.angles.map(|a| Angle::from_radians(s * a).as_written());
     let rotation = rotation_zyx(roll, pitch, yaw);
     // A platform point a goes to p + R (a − c) + c; the reference point stays where the
     // cue puts it when p = home + x + arm − R arm.

@@ -316,6 +316,47 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
 }
 
 #[test]
+fn the_limited_poses_read_back_from_their_table_are_the_poses_judged() {
+    // Held on joint cones of several sizes through a hard manoeuvre: every pose, written
+    // as a table row (degrees) and read back, is bit for bit the pose the limiter judged,
+    // so it keeps the limits for `stewart check` too — also on their very edge.
+    let t: Vec<f64> = (0..=800).map(|k| f64::from(k) * 0.005).collect();
+    let recording: Vec<(f64, VehicleMotion)> = t
+        .iter()
+        .map(|&time| {
+            let sign = if time as i64 % 2 == 0 { 1.0 } else { -1.0 };
+            let motion = VehicleMotion {
+                accel: [9.0 * sign, -7.0 * sign, 3.0],
+                rates_deg_s: [50.0 * sign, -30.0, 80.0 * sign],
+            };
+            (time, motion)
+        })
+        .collect();
+    let settings = CueingSettings {
+        translation_scale: 1.0,
+        workspace_limiter: true,
+        ..CueingSettings::default()
+    };
+    let g = Geometry::seed();
+    let mut held = 0;
+    for cone in [38.0, 41.5, 45.0, 47.0] {
+        let limits = Limits {
+            platform_cone: Some(Angle::from_degrees(cone)),
+            ..Limits::default()
+        };
+        let cued =
+            cue_recording(&g, &limits, &settings, &recording).unwrap_or_else(|e| panic!("{e}"));
+        for (k, p) in cued.poses.iter().enumerate() {
+            let back = Pose::from_row(&p.to_row());
+            assert_eq!(&back, p, "{cone}°, sample {k}");
+            assert!(g.pose_within_limits(&limits, &back), "{cone}°, sample {k}");
+        }
+        held += cued.scales.iter().filter(|&&s| s < 1.0).count();
+    }
+    assert!(held > 1000, "the limiter must work at the edge: {held}");
+}
+
+#[test]
 fn samples_out_of_order_and_unsound_settings_are_refused() {
     let g = Geometry::seed();
     let m = VehicleMotion::default();
