@@ -5,6 +5,7 @@
 //!
 //! `HOSTILE_CASES=N` sets the random cases per property (`scripts/hostile.sh` runs many).
 
+mod edges;
 mod files;
 mod paths;
 mod run;

@@ -56,11 +56,7 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
     h.run();
     assert!(h.state().look.presentation);
     h.state_mut().look.presentation = false;
-    let after = h.state().link.sender_status().map(|s| s.state);
-    assert!(
-        matches!(after, Some(LinkState::Stopping | LinkState::Disarmed)),
-        "{after:?}"
-    );
+    // The sender takes the e-stop at its next tick: wait for it, not for luck.
     until(&mut h, LinkState::Disarmed);
     let note = h
         .state()
@@ -203,7 +199,7 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
     }
     // Disconnect starts the way home; pressed again, an emergency stop.
     h.get_by_label("Disconnect").click();
-    h.run();
+    until(&mut h, LinkState::Stopping);
     h.get_by_label("Stop now (emergency)").click();
     let started = Instant::now();
     while h.state().link.connected() {

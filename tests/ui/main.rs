@@ -70,7 +70,16 @@ pub fn built_harness(
         .with_context_setup(|ctx| {
             stewart_app::viewer::fonts::install(ctx);
         })
-        .build_ui_state(viewer_ui, state);
+        // Each frame starts from a settled report (the check runs on a background job;
+        // its arrival changes what the panels show): frames, and so where a click lands,
+        // do not depend on the build's speed or the machine's load.
+        .build_ui_state(
+            |ui, state: &mut ViewerState| {
+                state.wait_for_report();
+                viewer_ui(ui, state);
+            },
+            state,
+        );
     settle(&mut h);
     h
 }

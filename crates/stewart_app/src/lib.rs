@@ -10,6 +10,7 @@ pub mod i18n;
 pub mod interrupt;
 pub mod link_plan;
 pub mod live_cue;
+pub mod long_work;
 pub mod output;
 pub mod readout;
 pub mod shot_scale;

@@ -534,7 +534,15 @@ pub fn planned_ramp(
         let mut blend = Vec::with_capacity(n + 1);
         for k in 0..=n {
             let t = k as f64 * step;
-            let u = if len > 0.0 { (t / len).min(1.0) } else { 1.0 };
+            // The blend starts where the platform is, whatever the length (a ramp of
+            // zero jumps at the first step, which the limits then refuse).
+            let u = if len > 0.0 {
+                (t / len).min(1.0)
+            } else if t > 0.0 {
+                1.0
+            } else {
+                0.0
+            };
             let s = smootherstep(u);
             let q = target(t)?;
             blend.push(std::array::from_fn::<f64, 6, _>(|j| {

@@ -103,10 +103,12 @@ impl Platform {
                     ),
                 ));
             };
-            return Ok(match word.parse::<f64>() {
-                Ok(v) => v.into_pyobject(py)?.into_any(),
-                Err(_) if word == "off" => py.None().into_bound(py),
-                Err(_) => word.into_pyobject(py)?.into_any(),
+            return Ok(match (word.as_str(), word.parse::<f64>()) {
+                (_, Ok(v)) => v.into_pyobject(py)?.into_any(),
+                ("off", _) => py.None().into_bound(py),
+                ("true", _) => true.into_pyobject(py)?.to_owned().into_any(),
+                ("false", _) => false.into_pyobject(py)?.to_owned().into_any(),
+                (_, Err(_)) => word.into_pyobject(py)?.into_any(),
             });
         }
         let setting = settings::find(key).map_err(|e| scenario_error(py, e))?;
@@ -456,14 +458,24 @@ pub fn presets() -> Vec<&'static str> {
 #[pyo3(signature = (platform, measured, hold = Vec::new()))]
 pub fn calibrate<'py>(
     py: Python<'py>,
-    platform: &Platform,
+    platform: PyRef<'py, Platform>,
     measured: &Bound<'py, PyAny>,
     hold: Vec<String>,
 ) -> PyResult<(Platform, Bound<'py, PyDict>)> {
-    let quantity = platform.scenario.geometry.quantity();
+    // The platform as it is now; `set` from another thread meanwhile waits for nothing.
+    let scenario = platform.scenario.clone();
+    drop(platform);
+    let quantity = scenario.geometry.quantity();
     let mut columns: Vec<&str> = POSE.to_vec();
     columns.extend(quantity.columns);
     let rows = arrays::finite_table(measured, "measured", &columns)?;
+    for (k, row) in rows.values().chunks_exact(12).enumerate() {
+        let pose: [f64; 6] = std::array::from_fn(|i| row[i]);
+        // Finite already (`finite_table`): only a pose outside the accepted ranges is left.
+        if let Err((column, _)) = stewart_kinematics::bounds::check_pose_row(&pose) {
+            return Err(arrays::pose_outside("measured", k, &pose, column));
+        }
+    }
     let measurements: Vec<Measurement> = rows
         .values()
         .chunks_exact(12)
@@ -485,11 +497,11 @@ pub fn calibrate<'py>(
         platform: hold.iter().any(|h| h == "platform"),
         offsets: hold.iter().any(|h| h == "offsets"),
     };
-    let g = &platform.scenario.geometry;
+    let g = &scenario.geometry;
     let c = py
         .detach(|| fit(g, &measurements, held))
         .map_err(|e| raise(py, "CalibrationError", (format!("measured: {e}"),)))?;
-    let calibrated = calibrated_scenario(&platform.scenario, &c, measurements.len());
+    let calibrated = calibrated_scenario(&scenario, &c, measurements.len());
     let report = PyDict::new(py);
     let per_unit = 1.0 / quantity.si_per_unit;
     report.set_item("offsets", c.offsets.map(|o| o * per_unit).to_vec())?;

@@ -310,6 +310,11 @@ def test_the_accepted_ranges_and_singular_poses_are_the_command_lines():
             p.ik(far)
     with pytest.raises(ValueError, match="pose, x: 1e\\+?200 is outside the accepted range"):
         p.jacobian([1e200, 0, 0.8, 0, 0, 0])
+    # Calibration's measured poses likewise.
+    measured = np.column_stack([poses, p.ik(poses)])
+    measured[4, 1] = 2000.0
+    with pytest.raises(ValueError, match=r"measured, row 4 \(from 0\), column y: 2000 is outside the accepted range"):
+        stewart.calibrate(p, measured)
     # The range's ends are accepted, with finite lengths.
     assert np.isfinite(p.ik(np.array([[1000.0, -1000.0, 1000.0, 3600.0, -3600.0, 3600.0]]))).all()
     # A pose where leg 1's joints meet: no Jacobian, said so (not a matrix of NaN).
@@ -369,12 +374,17 @@ def test_settings_change_while_a_batch_runs_and_link_keys_read_back():
     worker = threading.Thread(target=p.ik, args=(poses,))
     worker.start()
     # Not "Already borrowed": a batch works on the platform as it was when it started.
-    p.set("geometry.base_radius", 1.1)
+    changes = 0
+    while worker.is_alive() or changes == 0:
+        p.set("geometry.base_radius", 1.1 if changes % 2 == 0 else 1.0)
+        changes += 1
     worker.join()
+    p.set("geometry.base_radius", 1.1)
     assert p.get("geometry.base_radius") == 1.1
     p.set("link.rate_hz", 250)
     assert p.get("link.rate_hz") == 250.0
     assert p.get("link.transport") == "file"
     assert p.get("link.port") is None
+    assert p.get("link.reversed.2") is False
     with pytest.raises(stewart.ScenarioError, match="unknown setting `link.nope`"):
         p.get("link.nope")

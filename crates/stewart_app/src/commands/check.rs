@@ -6,20 +6,36 @@ use std::process::ExitCode;
 use anyhow::Result;
 use stewart_kinematics::checks::LimitSummary;
 use stewart_kinematics::checks::document::CheckDocument;
+use stewart_kinematics::trajectory::Samples;
 use stewart_kinematics::{CheckReport, FindingKind, Scenario, check_motion};
 
 use crate::cli::{CheckArgs, Format};
+use crate::long_work::{self, PROBE_ITEMS};
 use crate::output;
 use crate::source;
 
 /// Run the command.
 pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    let report = check_motion(
-        &scenario.geometry,
-        &scenario.limits,
-        &scenario.motion.sample(),
-        &scenario.checks,
+    let samples = scenario.motion.sample();
+    let check = |samples: &Samples| {
+        check_motion(
+            &scenario.geometry,
+            &scenario.limits,
+            samples,
+            &scenario.checks,
+        )
+    };
+    // A long motion (millions of samples) says what it will cost before it starts.
+    let probe = Samples {
+        times: samples.times.iter().take(PROBE_ITEMS).copied().collect(),
+        poses: samples.poses.iter().take(PROBE_ITEMS).copied().collect(),
+    };
+    let report = long_work::run(
+        &format!("check: {} samples", samples.len()),
+        || drop(check(&probe)),
+        |s| long_work::scaled(s, probe.len(), samples.len()),
+        || check(&samples),
     );
     let text = match args.format {
         Format::Text => text_report(&scenario, &report),

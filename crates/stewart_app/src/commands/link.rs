@@ -103,8 +103,15 @@ fn plan_arming(plan: &LinkPlan, repeat: bool, config: &mut SenderConfig) {
             config.supervisor.plan_first_ramp(len);
             len
         }
-        // The motion's start is out of reach: the supervisor holds and says why.
-        None => return,
+        // No plan: the motion's start is out of reach (the supervisor holds and says why)
+        // or no ramp up to ten minutes keeps the limits there.
+        None => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "link: the ramp into the motion's start could not be planned within the limits: arming toward it as toward a motion not known in advance (the ramp's own motion within a quarter of each limit)"
+            );
+            return;
+        }
     };
     if takes > asked + 1e-9 {
         let _ = writeln!(

@@ -9,10 +9,12 @@ use anyhow::{Result, anyhow};
 use nalgebra::{Matrix6, Vector6};
 use serde::Serialize;
 use stewart_kinematics::dynamics::{AXES, LowestMode, Modes, dominant, lowest_mode_along};
+use stewart_kinematics::trajectory::Samples;
 use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{Format, ModesArgs};
 use crate::commands::design::pose_words;
+use crate::long_work::{self, PROBE_ITEMS};
 use crate::output;
 use crate::source;
 
@@ -92,8 +94,28 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         .map_err(|e| anyhow!("at {at}: {e}"))?;
     let lowest = if args.along_trajectory {
         let samples = scenario.motion.sample();
-        lowest_mode_along(g, &samples, &payload, &scenario.dynamics)
-            .map_err(|(t, e)| anyhow!("along the trajectory at t = {t} s: {e}"))?
+        // The modes cost microseconds a sample: a long motion says so before it starts.
+        let probe = Samples {
+            times: samples
+                .times
+                .iter()
+                .take(PROBE_ITEMS / 10)
+                .copied()
+                .collect(),
+            poses: samples
+                .poses
+                .iter()
+                .take(PROBE_ITEMS / 10)
+                .copied()
+                .collect(),
+        };
+        long_work::run(
+            &format!("modes: {} samples along the trajectory", samples.len()),
+            || drop(lowest_mode_along(g, &probe, &payload, &scenario.dynamics)),
+            |s| long_work::scaled(s, probe.len(), samples.len()),
+            || lowest_mode_along(g, &samples, &payload, &scenario.dynamics),
+        )
+        .map_err(|(t, e)| anyhow!("along the trajectory at t = {t} s: {e}"))?
     } else {
         None
     };

@@ -18,6 +18,7 @@ use stewart_kinematics::{Angle, Geometry, Limits, Pose, Scenario};
 
 use crate::cli::WorkspaceArgs;
 use crate::csv_io::CsvText;
+use crate::long_work::duration_words;
 use crate::output;
 use crate::source;
 
@@ -266,17 +267,6 @@ fn compute(
         Ok(Err(WorkspaceError::Cancelled)) => bail!("interrupted: nothing was written"),
         Ok(Err(e)) => Err(e.into()),
         Err(_) => bail!("internal error: the workspace computation panicked"),
-    }
-}
-
-/// Seconds in words: `40 s`, `12 min`, `3.1 h`.
-fn duration_words(seconds: f64) -> String {
-    if seconds < 90.0 {
-        format!("{seconds:.0} s")
-    } else if seconds < 5400.0 {
-        format!("{:.0} min", seconds / 60.0)
-    } else {
-        format!("{:.1} h", seconds / 3600.0)
     }
 }
 

@@ -194,23 +194,46 @@ pub fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
     let text = serde_json::to_string_pretty(session).map_err(|e| e.to_string())?;
     // The output rules' path (a symbolic link is followed and stays a link), staged beside
     // the real file and renamed over it. Not their writing: a session is saved also when a
-    // signal asked the viewer to close. A device or FIFO (`/dev/null` keeps the viewer from
-    // remembering) is not written: at exit a FIFO would wait for a reader for ever.
+    // signal asked the viewer to close. A character device (a link to `/dev/null` keeps the
+    // viewer from remembering) is written as it is; a FIFO is not: at exit it would wait
+    // for a reader for ever.
     let path = file_in(folder);
     let destination = crate::output::Destination::new(&path, &[]).map_err(|e| format!("{e:#}"))?;
+    let real = destination.real();
     if destination.kind() != crate::output::Kind::File {
+        let device = std::fs::metadata(real).is_ok_and(|m| is_character_device(&m));
+        if device {
+            return std::fs::OpenOptions::new()
+                .write(true)
+                .open(real)
+                .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
+                .map_err(|e| format!("cannot write {}: {e}", path.display()));
+        }
         return Err(format!(
             "{} is not a regular file: the session was not saved there",
             path.display()
         ));
     }
-    let real = destination.real();
     let fail = |e: std::io::Error| format!("cannot write {}: {e}", path.display());
     let mut staged =
         tempfile::NamedTempFile::new_in(crate::output::parent_of(real)).map_err(fail)?;
     std::io::Write::write_all(&mut staged, text.as_bytes()).map_err(fail)?;
     staged.persist(real).map_err(|e| fail(e.error))?;
     Ok(())
+}
+
+/// Whether `meta` is a character device (`/dev/null`).
+fn is_character_device(meta: &std::fs::Metadata) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        meta.file_type().is_char_device()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = meta;
+        false
+    }
 }
 
 /// Forget the session saved in `folder`.
@@ -230,6 +253,7 @@ mod tests {
     #[test]
     #[cfg(unix)]
     fn a_linked_session_stays_a_link_and_a_fifo_or_device_is_left_alone() {
+        use std::os::unix::fs::FileTypeExt as _;
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
         let session = Session::capture(
             &Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
@@ -252,22 +276,23 @@ mod tests {
         assert!(matches!(load(&folder, Lang::En), Ok(Some(_))));
         let kept = std::fs::read_to_string(&elsewhere).unwrap_or_default();
         assert!(kept.contains("\"version\""), "{kept}");
-        // A link to /dev/null, and a FIFO: refused with a note, left as they are.
-        for special in ["null", "fifo"] {
-            let folder = dir.path().join(special);
-            std::fs::create_dir_all(&folder).unwrap_or_else(|e| panic!("{e}"));
-            let path = file_in(&folder);
-            if special == "null" {
-                std::os::unix::fs::symlink("/dev/null", &path).unwrap_or_else(|e| panic!("{e}"));
-            } else {
-                let made = std::process::Command::new("mkfifo").arg(&path).status();
-                assert!(made.is_ok_and(|s| s.success()));
-            }
-            let note = save(&folder, &session).err().unwrap_or_default();
-            assert!(note.contains("not a regular file"), "{note}");
-            let meta = std::fs::symlink_metadata(&path).unwrap_or_else(|e| panic!("{e}"));
-            assert!(!meta.is_file(), "{special} was replaced by a regular file");
-        }
+        // A link to /dev/null: written there (nothing kept), still a link. A FIFO: refused
+        // with a note, left as it is.
+        let null = dir.path().join("null");
+        std::fs::create_dir_all(&null).unwrap_or_else(|e| panic!("{e}"));
+        std::os::unix::fs::symlink("/dev/null", file_in(&null)).unwrap_or_else(|e| panic!("{e}"));
+        save(&null, &session).unwrap_or_else(|e| panic!("{e}"));
+        let meta = std::fs::symlink_metadata(file_in(&null)).unwrap_or_else(|e| panic!("{e}"));
+        assert!(meta.file_type().is_symlink());
+        let folder = dir.path().join("fifo");
+        std::fs::create_dir_all(&folder).unwrap_or_else(|e| panic!("{e}"));
+        let path = file_in(&folder);
+        let made = std::process::Command::new("mkfifo").arg(&path).status();
+        assert!(made.is_ok_and(|s| s.success()));
+        let note = save(&folder, &session).err().unwrap_or_default();
+        assert!(note.contains("not a regular file"), "{note}");
+        let meta = std::fs::symlink_metadata(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert!(meta.file_type().is_fifo(), "the FIFO was replaced");
     }
 
     #[test]

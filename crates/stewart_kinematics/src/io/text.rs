@@ -10,36 +10,35 @@ pub const MAX_SCENARIO_BYTES: u64 = 16 << 20;
 /// Largest CSV table read, bytes (a million poses take about 100 MB).
 pub const MAX_TABLE_BYTES: u64 = 2 << 30;
 
-/// Three numbers `[x, y, z]` from a file, exactly three: a fourth is refused, not dropped
-/// (serde reads an array of three from the first three values of a longer one). For
-/// `#[serde(deserialize_with = "…")]`.
-pub fn exactly_three<'de, D>(d: D) -> Result<[f64; 3], D::Error>
+/// An array of exactly `N` values from a file: a longer or shorter one is refused, not
+/// cut (serde reads an array of `N` from the first `N` values of a longer one). For
+/// `#[serde(deserialize_with = "crate::text::exactly")]` on every fixed-size array field.
+pub fn exactly<'de, D, T, const N: usize>(d: D) -> Result<[T; N], D::Error>
 where
     D: serde::Deserializer<'de>,
+    T: serde::Deserialize<'de>,
 {
-    let values = <Vec<f64> as serde::Deserialize>::deserialize(d)?;
-    values.as_slice().try_into().map_err(|_| {
-        serde::de::Error::custom(format!(
-            "expected three numbers [x, y, z], got {}",
-            values.len()
-        ))
-    })
+    let values = <Vec<T> as serde::Deserialize>::deserialize(d)?;
+    let got = values.len();
+    values
+        .try_into()
+        .map_err(|_| serde::de::Error::custom(format!("expected {N} values, got {got}")))
 }
 
-/// [`exactly_three`] keeping where the array was in the file.
-pub fn exactly_three_spanned<'de, D>(d: D) -> Result<toml::Spanned<[f64; 3]>, D::Error>
+/// [`exactly`] keeping where the array was in the file.
+pub fn exactly_spanned<'de, D, T, const N: usize>(d: D) -> Result<toml::Spanned<[T; N]>, D::Error>
 where
     D: serde::Deserializer<'de>,
+    T: serde::Deserialize<'de>,
 {
-    let values = <toml::Spanned<Vec<f64>> as serde::Deserialize>::deserialize(d)?;
+    let values = <toml::Spanned<Vec<T>> as serde::Deserialize>::deserialize(d)?;
     let span = values.span();
-    let three: [f64; 3] = values.get_ref().as_slice().try_into().map_err(|_| {
-        serde::de::Error::custom(format!(
-            "expected three numbers [x, y, z], got {}",
-            values.get_ref().len()
-        ))
-    })?;
-    Ok(toml::Spanned::new(span, three))
+    let values = values.into_inner();
+    let got = values.len();
+    let array: [T; N] = values
+        .try_into()
+        .map_err(|_| serde::de::Error::custom(format!("expected {N} values, got {got}")))?;
+    Ok(toml::Spanned::new(span, array))
 }
 
 /// All of `input`, or a sentence saying why not (an I/O error, or more than `limit` bytes).

@@ -54,6 +54,9 @@ impl Angle {
             }
             scale *= 10.0;
         }
+        if raw.to_radians() == self.radians {
+            return raw;
+        }
         // Else a neighbour of the plain conversion that reads back as the same radians
         // (degrees · π/180 rounds, so the plain one can miss by an ulp), when there is one.
         let mut below = raw;

@@ -77,7 +77,7 @@ pub struct CueingSettings {
     pub yaw: bool,
     /// The point the motion is cued at (the occupant's head), platform frame, metres:
     /// rotations turn about it, so tilting does not move the head.
-    #[serde(deserialize_with = "crate::text::exactly_three")]
+    #[serde(deserialize_with = "crate::text::exactly")]
     pub reference_m: [f64; 3],
     /// Scale the cue back so that no pose leaves the stroke and limits.
     pub workspace_limiter: bool,

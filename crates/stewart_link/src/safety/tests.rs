@@ -409,6 +409,9 @@ fn a_planned_ramp_is_the_one_asked_when_the_limits_allow_it_and_the_closed_form_
     let moving = |t: f64| Some([0.1 + 0.04 * (5.0 * t).sin(); 6]);
     let longer = planned_ramp(&limits, &from, 0.1, moving, 1e-4).unwrap_or(f64::NAN);
     assert!(longer > t, "{longer} vs {t}");
+    // No ramp asked: still a ramp, the shortest the limits allow, never a jump.
+    let zero = planned_ramp(&limits, &from, 0.0, still, 1e-4).unwrap_or(f64::NAN);
+    assert!((zero - closed).abs() < 2e-3 * closed, "{zero} vs {closed}");
     // A target with no values during the ramp: no plan.
     assert_eq!(
         planned_ramp(&limits, &from, 1.0, |t| (t < 0.5).then_some([0.1; 6]), 1e-3),

@@ -1,8 +1,7 @@
 //! Leg speed, acceleration and jerk, by finite differences of the sampled leg lengths.
 //!
 //! Interior samples use central differences on the (possibly uneven) time grid; at the
-//! end samples the speed is one-sided and the acceleration takes its neighbour's value
-//! (see [`crate::differences`]).
+//! end samples one-sided differences of the same order (see [`crate::differences`]).
 
 use nalgebra::Vector6;
 

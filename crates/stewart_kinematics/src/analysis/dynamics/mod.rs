@@ -96,7 +96,7 @@ pub enum DynamicsError {
     },
     /// The mass matrix is not positive definite: some motion has no inertia.
     #[error(
-        "the mass matrix is not positive definite: some motion of the platform has no inertia (give [payload] inertia_kg_m2 a positive moment about every axis)"
+        "the mass matrix is not positive definite: some motion of the platform has no inertia, or next to none beside the others (give [payload] a mass and inertia_kg_m2 a positive moment about every axis, of comparable sizes)"
     )]
     MassMatrixNotPositive,
 }

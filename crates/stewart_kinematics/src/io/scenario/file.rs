@@ -44,7 +44,7 @@ pub(crate) struct ScenarioFile {
 #[serde(deny_unknown_fields)]
 pub(crate) struct PayloadFile {
     pub mass_kg: f64,
-    #[serde(default, deserialize_with = "crate::text::exactly_three")]
+    #[serde(default, deserialize_with = "crate::text::exactly")]
     pub com_m: [f64; 3],
     /// Three principal moments (Ixx, Iyy, Izz) or the whole tensor (Ixx, Iyy, Izz, Ixy,
     /// Ixz, Iyz); none: zero.
@@ -130,7 +130,7 @@ pub(crate) use crate::actuator::ActuatorKind;
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct PivotFile {
-    #[serde(deserialize_with = "crate::text::exactly_three_spanned")]
+    #[serde(deserialize_with = "crate::text::exactly_spanned")]
     pub offset_m: Spanned<[f64; 3]>,
 }
 

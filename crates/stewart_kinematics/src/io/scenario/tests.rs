@@ -514,3 +514,33 @@ fn joints_given_as_coordinates_are_read_checked_and_written_back() {
     ));
     assert!(half.contains("unknown field `xbase_joints_m`"), "{half}");
 }
+
+#[test]
+fn a_fixed_size_array_with_a_value_too_many_or_too_few_is_refused_not_cut() {
+    for (table, want) in [
+        (
+            "[payload]\nmass_kg = 10\ninertia_kg_m2 = [1, 1, 1]\ncom_m = [0, 0, 0.1, 5]\n",
+            "expected 3 values, got 4",
+        ),
+        (
+            "[pivot]\noffset_m = [0, 0, 0.1, 0]\n",
+            "expected 3 values, got 4",
+        ),
+        (
+            "[cueing]\nreference_m = [0, 0]\n",
+            "expected 3 values, got 2",
+        ),
+        (
+            "[link]\nscale = [1, 1, 1, 1, 1, 1, 7]\n",
+            "expected 6 values, got 7",
+        ),
+        (
+            "[link]\nreversed = [true, false, false, false, false, false, true]\n",
+            "expected 6 values, got 7",
+        ),
+    ] {
+        let e = error(&format!("{GEOMETRY}{table}"));
+        assert!(e.contains(want), "{table}: {e}");
+        assert!(e.contains(", line "), "{table}: {e}");
+    }
+}
