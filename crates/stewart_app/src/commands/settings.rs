@@ -71,8 +71,10 @@ pub fn table(scenario: &Scenario) -> String {
                     number(Some(*s.range.end()))
                 ),
                 format!(
-                    "{} .. {}",
+                    "{}{} .. {}{}",
+                    if s.min_excluded { "> " } else { "" },
                     bounds::short(*s.accepted.start()),
+                    if s.max_excluded { "< " } else { "" },
                     bounds::short(*s.accepted.end())
                 ),
                 value_of(s, s.default_for(scenario)),

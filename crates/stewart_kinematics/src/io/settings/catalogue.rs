@@ -43,6 +43,8 @@ impl Declare {
             unit,
             range: range.0..=range.1,
             accepted: unit.accepted(),
+            min_excluded: false,
+            max_excluded: false,
             default,
             group: self.group,
             target,
@@ -67,7 +69,83 @@ pub(super) fn build() -> Vec<Setting> {
     cueing(&mut d);
     d.group = Group::Dynamics;
     dynamics(&mut d);
+    for setting in &mut d.list {
+        if let Some(rule) = model_rule(&setting.key) {
+            let unit = setting.accepted.clone();
+            let max = rule.max.unwrap_or(*unit.end()).min(*unit.end());
+            setting.accepted = rule.min.max(*unit.start())..=max;
+            setting.min_excluded = rule.min_excluded;
+            setting.max_excluded = rule.max_excluded;
+        }
+    }
     d.list
+}
+
+/// The model's own rule on one setting's sign and size (what its constructor or `[…]`
+/// table check refuses whatever else the scenario says).
+struct ModelRule {
+    min: f64,
+    min_excluded: bool,
+    max: Option<f64>,
+    max_excluded: bool,
+}
+
+/// A positive number (above 0), at most `max` when given.
+const fn positive(max: Option<f64>) -> Option<ModelRule> {
+    Some(ModelRule {
+        min: 0.0,
+        min_excluded: true,
+        max,
+        max_excluded: false,
+    })
+}
+
+/// Zero or more, at most `max` when given.
+const fn not_negative(max: Option<f64>) -> Option<ModelRule> {
+    Some(ModelRule {
+        min: 0.0,
+        min_excluded: false,
+        max,
+        max_excluded: false,
+    })
+}
+
+/// The rule for `key` (`None`: the unit's range is the rule).
+fn model_rule(key: &str) -> Option<ModelRule> {
+    use crate::cueing_settings::{MAX_OMEGA, MAX_SCALE, MAX_ZETA};
+    let (section, name) = key.split_once('.')?;
+    match (section, name) {
+        ("geometry", "base_radius" | "platform_radius" | "home_height" | "leg_min" | "leg_max")
+        | ("actuator", "horn_length_m" | "rod_length_m")
+        | ("trajectory", "duration_s")
+        | ("checks", _)
+        | ("dynamics", "actuator_stiffness") => positive(None),
+        ("limits", "base_cone_deg" | "platform_cone_deg") => Some(ModelRule {
+            min: 0.0,
+            min_excluded: true,
+            max: Some(180.0),
+            max_excluded: true,
+        }),
+        ("limits", "leg_radius_m") => positive(None),
+        ("limits", n) if n.contains("_max_") => positive(None),
+        ("cueing", "translation_scale" | "rotation_scale") => not_negative(Some(MAX_SCALE)),
+        ("cueing", "translation_hp_wb") => not_negative(Some(MAX_OMEGA)),
+        ("cueing", "translation_hp_wn" | "tilt_lp_wn" | "rotation_hp_wn") => {
+            positive(Some(MAX_OMEGA))
+        }
+        ("cueing", n) if n.ends_with("_zeta") => positive(Some(MAX_ZETA)),
+        ("cueing", "tilt_rate_max_deg_s") => positive(Some(360.0)),
+        ("cueing", "limiter_recovery_s" | "stall_s" | "fade_s") => positive(Some(3600.0)),
+        ("dynamics", n)
+            if n == "actuator_friction"
+                || n.ends_with("_mass_kg")
+                || n.ends_with("_com_m")
+                || n.ends_with("_inertia_kg_m2") =>
+        {
+            not_negative(None)
+        }
+        _ => None,
+    }
 }
 
 fn geometry(d: &mut Declare) {

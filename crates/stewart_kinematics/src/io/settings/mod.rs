@@ -167,8 +167,16 @@ pub struct Setting {
     pub unit: Unit,
     /// The range a slider offers (typed values may go beyond where the model allows).
     pub range: RangeInclusive<f64>,
-    /// The values accepted at all (from the unit; see [`Unit::accepted`]).
+    /// The values accepted at all: the unit's range ([`Unit::accepted`]) narrowed by the
+    /// model's own rule on the setting's sign and size (a radius is positive, a cue scale
+    /// at most 10). A value inside may still conflict with another setting (a stroke
+    /// minimum above its maximum).
     pub accepted: RangeInclusive<f64>,
+    /// Whether the accepted range's lower end is itself refused (a length must be
+    /// positive: above 0, not 0).
+    pub min_excluded: bool,
+    /// Whether its upper end is itself refused (a joint cone is below 180°).
+    pub max_excluded: bool,
     /// The value when none is given.
     pub default: DefaultValue,
     /// The section of the file (and the panel of the viewer) it belongs to.
@@ -257,9 +265,25 @@ impl Setting {
         }
     }
 
-    /// The accepted range in words, such as `-1000 … 1000 m`.
+    /// The accepted range in words, such as `-1000 … 1000 m`, or `above 0 … 1000 m` when
+    /// its lower end is refused.
     pub fn accepted_words(&self) -> String {
-        crate::bounds::range_words(&self.accepted, self.unit.symbol())
+        let words = crate::bounds::range_words(&self.accepted, self.unit.symbol());
+        match (self.min_excluded, self.max_excluded) {
+            (false, false) => words,
+            (true, false) => format!("above {words}"),
+            (min, true) => {
+                let unit = self.unit.symbol();
+                let above = if min { "above" } else { "from" };
+                format!(
+                    "{above} {} and below {} {unit}",
+                    crate::bounds::short(*self.accepted.start()),
+                    crate::bounds::short(*self.accepted.end())
+                )
+                .trim_end()
+                .to_owned()
+            }
+        }
     }
 
     /// Whether the setting may be absent (`off`).
@@ -363,6 +387,15 @@ impl Setting {
             Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
                 return Err(invalid(format!(
                     "it must be a whole number from {}",
+                    self.accepted_words()
+                )));
+            }
+            Some(v)
+                if (self.min_excluded && v == *self.accepted.start())
+                    || (self.max_excluded && v == *self.accepted.end()) =>
+            {
+                return Err(invalid(format!(
+                    "it must be {}, got {v}",
                     self.accepted_words()
                 )));
             }

@@ -603,3 +603,37 @@ fn dynamics_settings_are_read_written_and_refused_by_key() {
     assert_eq!(stiffness.unit.symbol_for(ActuatorKind::Linear), "N/m");
     assert_eq!(stiffness.unit.symbol_for(ActuatorKind::Rotary), "N·m/rad");
 }
+
+#[test]
+fn the_accepted_range_shown_leaves_out_what_the_model_always_refuses() {
+    // `stewart settings` and the tooltips show each setting's accepted range: a sign the
+    // model itself refuses on every preset the setting applies to (a negative radius, a
+    // zero stiffness) must lie outside it, or on an end shown as excluded.
+    let presets: Vec<Scenario> = presets::names().map(preset).collect();
+    let mut checked = 0;
+    for setting in all() {
+        let applying: Vec<&Scenario> = presets.iter().filter(|s| setting.applies(s)).collect();
+        if applying.is_empty() || setting.unit == Unit::Switch || setting.unit == Unit::Count {
+            continue;
+        }
+        for v in [-1.0, 0.0] {
+            let always_refused = applying.iter().all(|s| {
+                let mut s = (*s).clone();
+                setting.target.set(&mut s, Some(v)).is_err()
+            });
+            if !always_refused {
+                continue;
+            }
+            checked += 1;
+            let shown_accepted = setting.accepted.contains(&v)
+                && !(setting.min_excluded && v == *setting.accepted.start());
+            assert!(
+                !shown_accepted,
+                "{}: {v} is always refused but shown as accepted ({})",
+                setting.key,
+                setting.accepted_words()
+            );
+        }
+    }
+    assert!(checked > 30, "{checked}");
+}
