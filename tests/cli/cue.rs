@@ -460,3 +460,67 @@ fn an_x_plane_recording_drives_the_link() {
         distinct.len()
     );
 }
+
+#[test]
+fn a_flood_on_the_cue_port_does_not_hold_up_the_stream() {
+    // As many datagrams as a thread can send (samples and 60 kB of junk) while the link
+    // streams at 1 kHz for 2 s: the deadlines still get their frames. (A tick reads at
+    // most 64 datagrams and a fifth of its period; here one sender could not outpace a
+    // tick reading everything, so this guards the property rather than the bound itself,
+    // which the live cue's own test checks.)
+    let input = crate::link::free_port();
+    let link = cued_link(
+        &input,
+        &[
+            "--dry-run",
+            "--out",
+            "/dev/null",
+            "--rate",
+            "1000",
+            "--duration",
+            "2",
+            // The limiter on: each sample costs a bisection over the limits.
+            "--set",
+            "cueing.workspace_limiter=true",
+        ],
+    );
+    let done = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let flood = {
+        let done = std::sync::Arc::clone(&done);
+        let to = input.clone();
+        std::thread::spawn(move || {
+            let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+            let junk = vec![b'7'; 60_000];
+            let mut k: u64 = 0;
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                let sample = format!("{},-3,0.5,0,0,0,10", k as f64 * 1e-4);
+                let bytes = if k.is_multiple_of(4) {
+                    &junk[..]
+                } else {
+                    sample.as_bytes()
+                };
+                let _ = s.send_to(bytes, &to);
+                k += 1;
+            }
+            k
+        })
+    };
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    done.store(true, std::sync::atomic::Ordering::Relaxed);
+    let sent = flood.join().unwrap_or(0);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let summary = err
+        .lines()
+        .find(|l| l.starts_with("link: ") && l.contains(" frames to "))
+        .unwrap_or_else(|| panic!("{err}"));
+    let words: Vec<&str> = summary.split_whitespace().collect();
+    let frames: f64 = words[1].parse().unwrap_or(0.0);
+    let over = words.iter().position(|w| *w == "over").unwrap_or(0);
+    let seconds: f64 = words[over + 1].parse().unwrap_or(f64::NAN);
+    assert!(sent > 10_000, "the flood sent only {sent} datagrams");
+    assert!(
+        frames >= 0.5 * seconds * 1000.0,
+        "{frames} frames in {seconds} s under a flood of {sent} datagrams: {summary}"
+    );
+}
