@@ -19,11 +19,12 @@ fn settings_lists_every_key_with_value_unit_and_default() {
     assert_eq!(row("trajectory.radius_m")[1..3], ["0.15", "m"]);
     assert_eq!(row("trajectory.x.amplitude_m")[1], "(other");
     assert_eq!(row("limits.leg_speed_max_m_s")[1], "off");
-    // The accepted range (what files, --set and sliders may hold), before the default.
+    // The accepted range (what files, --set and sliders may hold), before the default: a
+    // radius is positive (above 0, which is itself refused).
     let radius = row("geometry.base_radius");
     assert_eq!(
-        radius[radius.len() - 4..radius.len() - 1],
-        ["-1000", "..", "1000"]
+        radius[radius.len() - 5..radius.len() - 1],
+        [">", "0", "..", "1000"]
     );
     let samples = row("trajectory.samples");
     assert_eq!(

@@ -390,17 +390,10 @@ impl Setting {
                     self.accepted_words()
                 )));
             }
-            Some(v)
-                if (self.min_excluded && v == *self.accepted.start())
-                    || (self.max_excluded && v == *self.accepted.end()) =>
-            {
-                return Err(invalid(format!(
-                    "it must be {}, got {v}",
-                    self.accepted_words()
-                )));
-            }
+            // The unit's range here; within it the model refuses what its own rules refuse
+            // (a negative radius), in its own words — the rules `accepted` shows.
             Some(v) => {
-                crate::bounds::check(v, &self.accepted, self.unit.symbol())
+                crate::bounds::check(v, &self.unit.accepted(), self.unit.symbol())
                     .map_err(|e| invalid(e.to_string()))?;
             }
             _ => {}
@@ -478,7 +471,7 @@ pub fn quantity_limit_targets(kind: ActuatorKind) -> [Target; 2] {
 pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
     all().iter().find_map(|s| {
         let v = s.get(scenario)?;
-        crate::bounds::check(v, &s.accepted, s.unit.symbol())
+        crate::bounds::check(v, &s.unit.accepted(), s.unit.symbol())
             .err()
             .map(|reason| (s, reason.to_string()))
     })
