@@ -94,19 +94,7 @@ fn a_manoeuvre_becomes_a_pose_table_that_solve_check_and_link_take() {
 #[test]
 fn the_workspace_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
     let dir = tempdir();
-    let mut text = String::from("t,ax,ay,az,wx,wy,wz\n");
-    for k in 0..=800 {
-        let t = f64::from(k) * 0.005;
-        let sign = if (t / 1.0) as i64 % 2 == 0 { 1.0 } else { -1.0 };
-        text.push_str(&format!(
-            "{t},{},{},3,{},-30,{}\n",
-            9.0 * sign,
-            -7.0 * sign,
-            50.0 * sign,
-            80.0 * sign
-        ));
-    }
-    let vehicle = write(dir.path(), "hard.csv", &text);
+    let vehicle = write(dir.path(), "hard.csv", &hard_manoeuvre());
     let stroke = [
         "--set",
         "geometry.leg_min=0.9",

@@ -561,7 +561,16 @@ pub fn planned_ramp(
         });
         Some(within)
     };
-    let at_least = at_least.max(0.0);
+    shortest_fitting(at_least.max(0.0), fits)
+}
+
+/// The longest arming ramp either rule gives, seconds: beyond it a ramp is not planned.
+const MAX_RAMP_S: f64 = 600.0;
+
+/// The shortest length, no shorter than `at_least`, that `fits` (to a thousandth, by
+/// doubling then bisection: longer ramps fit more easily); `None` when none up to
+/// [`MAX_RAMP_S`] does or `fits` cannot tell.
+fn shortest_fitting(at_least: f64, fits: impl Fn(f64) -> Option<bool>) -> Option<f64> {
     if fits(at_least)? {
         return Some(at_least);
     }
@@ -570,7 +579,7 @@ pub fn planned_ramp(
     while !fits(high)? {
         low = high;
         high *= 2.0;
-        if high > 600.0 {
+        if high > MAX_RAMP_S {
             return None;
         }
     }
@@ -650,25 +659,7 @@ fn ramp_needed(at_least: f64, from: &[f64; 6], to: &Motion, limits: &ActuatorLim
     if !(d + v + a).is_finite() || fits(at_least.max(1e-9)) {
         return at_least;
     }
-    // Doubling then bisection; the terms fall with T, so the first T that fits is found.
-    let mut low = at_least.max(1e-3);
-    let mut high = 2.0 * low;
-    while !fits(high) {
-        low = high;
-        high *= 2.0;
-        if high > 600.0 {
-            return high;
-        }
-    }
-    while high - low > 1e-3 * high {
-        let mid = 0.5 * (low + high);
-        if fits(mid) {
-            high = mid;
-        } else {
-            low = mid;
-        }
-    }
-    high
+    shortest_fitting(at_least, |t| Some(fits(t))).unwrap_or(MAX_RAMP_S)
 }
 
 /// Where each actuator comes to rest when it brakes as hard as its limits allow from
