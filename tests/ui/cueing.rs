@@ -66,10 +66,30 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     assert_eq!(edited.cueing.translation_scale, 1.0);
     assert_ne!(edited.motion, scenario.motion);
     assert_eq!(edited.motion.trajectory, cue(&edited).trajectory);
-    // Undo: the scale and the motion come back together; once more: the seed's motion.
+    // Undo: the scale and the motion come back together, and the recording with them
+    // (it once vanished: the panel asked for a CSV and edits no longer cued it); redo
+    // likewise; once more undone: the seed's motion.
     h.state_mut().undo_edit();
     h.run();
     assert_eq!(h.state().scenario(), &scenario);
+    assert!(
+        h.state().doc.cued_vehicle().is_some(),
+        "undo dropped the recording"
+    );
+    assert!(
+        h.query_by_label_contains("Playing braking.csv: 251 samples")
+            .is_some()
+    );
+    h.state_mut().redo_edit();
+    h.run();
+    assert_eq!(h.state().scenario(), &edited);
+    assert!(
+        h.state().doc.cued_vehicle().is_some(),
+        "redo dropped the recording"
+    );
+    h.state_mut().undo_edit();
+    h.run();
+    assert!(h.state().doc.cued_vehicle().is_some());
     h.state_mut().undo_edit();
     h.run();
     assert_eq!(h.state().scenario(), &before);

@@ -191,10 +191,23 @@ impl Document {
         Some(self.put(after))
     }
 
-    /// Show `scenario` (derived rebuilt, no refusal pending); the one it replaced.
+    /// Show `scenario` (derived rebuilt, no refusal pending); the one it replaced. A
+    /// vehicle recording stays with the motion cued from it: when the scenario an undo
+    /// or redo brings back plays the recording as its own settings cue it, the recording
+    /// plays on (and later edits cue it again).
     fn put(&mut self, scenario: Scenario) -> Scenario {
         let old = std::mem::replace(&mut self.scenario, scenario);
         self.edit_error = None;
+        if let Some(v) = &self.vehicle
+            && v.motion != self.scenario.motion
+            // Cheap first: a motion cued from it has one sample per recorded sample.
+            && v.motion.sampling == self.scenario.motion.sampling
+            && let Ok(again) =
+                VehicleSource::new(&v.name, std::sync::Arc::clone(&v.samples), &self.scenario)
+            && again.motion == self.scenario.motion
+        {
+            self.vehicle = Some(again);
+        }
         self.derived.rebuild(&self.scenario);
         old
     }
