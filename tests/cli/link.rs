@@ -572,29 +572,40 @@ fn interrupt(child: &std::process::Child) {
     assert_eq!(sent.ok(), Some(true));
 }
 
-#[test]
-fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
-    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-    let record = dir.path().join("frames.txt");
-    // The paired preset at 200 Hz: 4 s in, its legs are centimetres from home, and home is
-    // a tenth of the 0.5 m/s limit away: the way home takes seconds.
-    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+/// `link` on the paired preset at 200 Hz, looping, recording into `record`, 4 s in: its
+/// legs are centimetres from home, and home is a tenth of the 0.5 m/s limit away, so the
+/// way home takes seconds.
+fn paired_dry_run_four_seconds_in(record: &std::path::Path) -> std::process::Child {
+    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
         .args(["link", "--preset", "paired", "--dry-run", "--loop"])
         .args(["--rate", "200", "--out"])
-        .arg(&record)
+        .arg(record)
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
     std::thread::sleep(Duration::from_millis(4000));
-    interrupt(&link);
-    std::thread::sleep(Duration::from_millis(300));
-    interrupt(&link);
+    link
+}
+
+/// The output of `link` once it has ended (within 20 s).
+fn ended(mut link: std::process::Child) -> std::process::Output {
     let started = std::time::Instant::now();
     while link.try_wait().ok().flatten().is_none() {
         assert!(started.elapsed().as_secs() < 20, "the link did not stop");
         std::thread::sleep(Duration::from_millis(20));
     }
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    link.wait_with_output().unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let record = dir.path().join("frames.txt");
+    let link = paired_dry_run_four_seconds_in(&record);
+    interrupt(&link);
+    std::thread::sleep(Duration::from_millis(300));
+    interrupt(&link);
+    let o = ended(link);
     let err = stderr(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
     let line = err
@@ -639,26 +650,14 @@ fn two_stops_delivered_at_once_are_an_emergency_stop() {
     // link looks. Each stop counts: the second is the emergency stop.
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let record = dir.path().join("frames.txt");
-    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args(["link", "--preset", "paired", "--dry-run", "--loop"])
-        .args(["--rate", "200", "--out"])
-        .arg(&record)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    std::thread::sleep(Duration::from_millis(4000));
+    let link = paired_dry_run_four_seconds_in(&record);
     let pid = link.id().to_string();
     let sent = std::process::Command::new("sh")
         .args(["-c", "kill -INT $0 && kill -TERM $0", &pid])
         .status()
         .map(|s| s.success());
     assert_eq!(sent.ok(), Some(true));
-    let started = std::time::Instant::now();
-    while link.try_wait().ok().flatten().is_none() {
-        assert!(started.elapsed().as_secs() < 20, "the link did not stop");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let o = ended(link);
     let err = stderr(&o);
     assert!(
         err.lines().any(|l| l.starts_with("link: emergency stop")),

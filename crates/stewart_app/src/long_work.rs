@@ -6,12 +6,14 @@ use std::io::Write as _;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
+use stewart_kinematics::trajectory::Samples;
 
 /// Work estimated shorter than this runs without a word.
 pub const QUIET_BELOW_S: f64 = 2.0;
 
-/// How many items a probe takes at most (its time, scaled, is the estimate).
-pub const PROBE_ITEMS: usize = 20_000;
+/// How many samples a probe takes (its time, scaled, is the estimate); a motion no longer
+/// than this runs at once, without a probe.
+pub const PROBE_SAMPLES: usize = 20_000;
 
 /// Seconds for `items` from a probe of `probe_items` that took `probe_seconds` (the cost
 /// of each item about the same).
@@ -22,21 +24,28 @@ pub fn scaled(probe_seconds: f64, probe_items: usize, items: usize) -> f64 {
     probe_seconds * items as f64 / probe_items as f64
 }
 
-/// Time `probe`, then run `work`: when the estimate (`scale` of the probe's seconds) is
-/// long, `what` and the estimate are said first, and a spinner with the time spent runs
-/// on a terminal until it ends. Ctrl-C ends the process (nothing is written before the
-/// work ends).
-pub fn run<T: Send>(
+/// `work` over `samples`. A motion longer than `probe` samples is first timed on its first
+/// `probe` samples; when the estimate scaled from that is long, `what` and the estimate are
+/// said first, and a spinner with the time spent runs on a terminal until it ends. Ctrl-C
+/// ends the process (nothing is written before the work ends).
+pub fn over_samples<T: Send>(
     what: &str,
-    probe: impl FnOnce(),
-    scale: impl FnOnce(f64) -> f64,
-    work: impl FnOnce() -> T + Send,
+    samples: &Samples,
+    probe: usize,
+    work: impl Fn(&Samples) -> T + Sync,
 ) -> T {
+    if samples.len() <= probe {
+        return work(samples);
+    }
+    let first = Samples {
+        times: samples.times[..probe].to_vec(),
+        poses: samples.poses[..probe].to_vec(),
+    };
     let started = Instant::now();
-    probe();
-    let seconds = scale(started.elapsed().as_secs_f64());
+    drop(work(&first));
+    let seconds = scaled(started.elapsed().as_secs_f64(), probe, samples.len());
     if seconds < QUIET_BELOW_S {
-        return work();
+        return work(samples);
     }
     let words = duration_words(seconds);
     let _ = writeln!(
@@ -50,7 +59,7 @@ pub fn run<T: Send>(
     );
     spinner.set_message(words);
     let result = std::thread::scope(|scope| {
-        let worker = scope.spawn(work);
+        let worker = scope.spawn(|| work(samples));
         while !worker.is_finished() {
             spinner.tick();
             std::thread::sleep(Duration::from_millis(100));
@@ -83,7 +92,16 @@ mod tests {
         assert_eq!(duration_words(40.4), "40 s");
         assert_eq!(duration_words(720.0), "12 min");
         assert_eq!(duration_words(11_160.0), "3.1 h");
-        // Short work runs without a word, and its result comes back.
-        assert_eq!(run("nothing", || {}, |_| 0.5, || 7), 7);
+        // A short motion runs once, without a probe, and its result comes back.
+        let samples = Samples {
+            times: vec![0.0, 1.0],
+            poses: vec![stewart_kinematics::Pose::default(); 2],
+        };
+        let runs = std::sync::atomic::AtomicUsize::new(0);
+        let n = over_samples("nothing", &samples, 10, |s| {
+            runs.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            s.len()
+        });
+        assert_eq!((n, runs.into_inner()), (2, 1));
     }
 }

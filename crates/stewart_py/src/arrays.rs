@@ -112,7 +112,7 @@ pub fn pose_outside(name: &str, row: usize, values: &[f64; 6], column: usize) ->
 }
 
 /// The pose columns' names in messages.
-const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+pub const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
 
 /// Six finite numbers (a pose or one row of actuator values) named `name`.
 pub fn six(obj: &Bound<'_, PyAny>, name: &str, columns: &[&str; 6]) -> PyResult<[f64; 6]> {

@@ -21,7 +21,7 @@ use crate::waiting;
 type RowPoses = Result<Vec<[f64; 6]>, (usize, String)>;
 
 /// The pose columns.
-const POSE: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+const POSE: [&str; 6] = arrays::POSE_COLUMNS;
 
 /// A Gough–Stewart platform and its motion (a scenario of the studio): made from a preset
 /// or a scenario file, changed by setting keys, and solved on numpy arrays.

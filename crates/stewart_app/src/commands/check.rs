@@ -10,7 +10,7 @@ use stewart_kinematics::trajectory::Samples;
 use stewart_kinematics::{CheckReport, FindingKind, Scenario, check_motion};
 
 use crate::cli::{CheckArgs, Format};
-use crate::long_work::{self, PROBE_ITEMS};
+use crate::long_work::{self, PROBE_SAMPLES};
 use crate::output;
 use crate::source;
 
@@ -18,24 +18,19 @@ use crate::source;
 pub fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let samples = scenario.motion.sample();
-    let check = |samples: &Samples| {
-        check_motion(
-            &scenario.geometry,
-            &scenario.limits,
-            samples,
-            &scenario.checks,
-        )
-    };
     // A long motion (millions of samples) says what it will cost before it starts.
-    let probe = Samples {
-        times: samples.times.iter().take(PROBE_ITEMS).copied().collect(),
-        poses: samples.poses.iter().take(PROBE_ITEMS).copied().collect(),
-    };
-    let report = long_work::run(
+    let report = long_work::over_samples(
         &format!("check: {} samples", samples.len()),
-        || drop(check(&probe)),
-        |s| long_work::scaled(s, probe.len(), samples.len()),
-        || check(&samples),
+        &samples,
+        PROBE_SAMPLES,
+        |samples: &Samples| {
+            check_motion(
+                &scenario.geometry,
+                &scenario.limits,
+                samples,
+                &scenario.checks,
+            )
+        },
     );
     let text = match args.format {
         Format::Text => text_report(&scenario, &report),

@@ -14,7 +14,7 @@ use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{Format, ModesArgs};
 use crate::commands::design::pose_words;
-use crate::long_work::{self, PROBE_ITEMS};
+use crate::long_work::{self, PROBE_SAMPLES};
 use crate::output;
 use crate::source;
 
@@ -95,25 +95,11 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
     let lowest = if args.along_trajectory {
         let samples = scenario.motion.sample();
         // The modes cost microseconds a sample: a long motion says so before it starts.
-        let probe = Samples {
-            times: samples
-                .times
-                .iter()
-                .take(PROBE_ITEMS / 10)
-                .copied()
-                .collect(),
-            poses: samples
-                .poses
-                .iter()
-                .take(PROBE_ITEMS / 10)
-                .copied()
-                .collect(),
-        };
-        long_work::run(
+        long_work::over_samples(
             &format!("modes: {} samples along the trajectory", samples.len()),
-            || drop(lowest_mode_along(g, &probe, &payload, &scenario.dynamics)),
-            |s| long_work::scaled(s, probe.len(), samples.len()),
-            || lowest_mode_along(g, &samples, &payload, &scenario.dynamics),
+            &samples,
+            PROBE_SAMPLES / 10,
+            |samples: &Samples| lowest_mode_along(g, samples, &payload, &scenario.dynamics),
         )
         .map_err(|(t, e)| anyhow!("along the trajectory at t = {t} s: {e}"))?
     } else {
