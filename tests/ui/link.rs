@@ -48,6 +48,7 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
     h.get_by_label("ARM").click();
     until(&mut h, LinkState::Armed);
     assert_eq!(h.query_all_by_label("ARMED").count(), 2);
+    badge_reads_on_one_line(&h, "ARMED");
     assert!(!h.state().link.recent_lines().is_empty());
     // Esc is the e-stop, and only that while a link is connected: presentation mode stays.
     h.state_mut().look.presentation = true;
@@ -58,6 +59,8 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
     h.state_mut().look.presentation = false;
     // The sender takes the e-stop at its next tick: wait for it, not for luck.
     until(&mut h, LinkState::Disarmed);
+    // Back to the longer word after the shorter one: still one line.
+    badge_reads_on_one_line(&h, "DISARMED");
     let note = h
         .state()
         .link
@@ -81,6 +84,23 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
         "{ended:?}"
     );
     assert!(h.query_by_label("Connect").is_some());
+}
+
+#[test]
+fn the_badge_reads_on_one_line_through_every_state_in_chinese() {
+    let mut h = tall_harness("seed", 2400.0);
+    h.state_mut().look.lang = stewart_app::i18n::Lang::Zh;
+    h.state_mut().edit_link(|l| l.ramp_s = 0.1);
+    h.state_mut().connect_link();
+    until(&mut h, LinkState::Disarmed);
+    badge_reads_on_one_line(&h, "未使能");
+    h.state().link.arm();
+    until(&mut h, LinkState::Armed);
+    badge_reads_on_one_line(&h, "已使能");
+    h.state().link.estop();
+    until(&mut h, LinkState::Disarmed);
+    badge_reads_on_one_line(&h, "未使能");
+    h.state_mut().link.disconnect_now();
 }
 
 #[test]
@@ -316,6 +336,16 @@ fn live_vehicle_motion_is_a_source_the_link_follows_and_the_cueing_panel_plots()
         .geometry
         .leg_lengths(&h.state().scenario().geometry.home_pose());
     assert!(values.is_some_and(|v| v != home), "{values:?}");
+    // The view, the readouts, the Legs panel and the plot show what is commanded, not the
+    // trajectory paused behind it.
+    commanded_is_shown(&mut h);
+    assert!(
+        h.state().plot_rolls(),
+        "the plot rolls the commanded values"
+    );
+    // The badge says so, on one line per state.
+    assert!(h.query_by_label("The view: the commanded pose").is_some());
+    badge_reads_on_one_line(&h, "ARMED");
     // The Cueing panel plots the live input.
     h.get_by_label("Motion cueing").click();
     h.run();
@@ -330,5 +360,56 @@ fn live_vehicle_motion_is_a_source_the_link_follows_and_the_cueing_panel_plots()
         h.run();
         assert!(started.elapsed() < Duration::from_secs(30));
         std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// Wait until the view shows a commanded pose away from the pose the viewer plays, then
+/// check in that frame: the pose shown gives the values sent (forward kinematics, checked
+/// by inverse kinematics), the Legs panel shows them, and the plot's newest sample is them.
+fn commanded_is_shown(h: &mut Harness<'static, ViewerState>) {
+    let started = Instant::now();
+    loop {
+        h.run();
+        let s = h.state();
+        if let Some((pose, values)) = s.link.commanded() {
+            let played = s.played_pose();
+            let apart = (pose.position - played.position).norm();
+            if apart > 1e-3 {
+                assert_eq!(s.pose(), pose, "the view shows the commanded pose");
+                let lengths = s.scenario().geometry.leg_lengths(&s.pose());
+                for (l, v) in lengths.iter().zip(values) {
+                    assert!((l - v).abs() < 1e-9, "{lengths:?} {values:?}");
+                }
+                let shown = format!("{:.4} m", lengths[0]);
+                assert!(h.query_by_label(&shown).is_some(), "Legs panel: {shown}");
+                // The window moves time on before each frame: the plot's history takes the
+                // commanded values.
+                h.state_mut().advance(0.01);
+                let newest = h.state().playback.history.entries().last().map(|e| e.1);
+                let newest = newest.unwrap_or_else(|| panic!("the plot has no sample"));
+                for (n, v) in newest.iter().zip(values) {
+                    assert!((n - v).abs() < 1e-9, "the plot's newest sample {newest:?}");
+                }
+                return;
+            }
+        }
+        assert!(
+            started.elapsed() < Duration::from_secs(15),
+            "the view never showed a commanded pose away from the paused trajectory"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// The state reads on one line in the badge (20 points: a line is about 23 px high, two
+/// are over 45) and in the panel (28 points: a line is about 32 px high).
+fn badge_reads_on_one_line(h: &Harness<'static, ViewerState>, words: &str) {
+    let heights: Vec<f32> = h
+        .query_all_by_label(words)
+        .map(|n| n.rect().height())
+        .collect();
+    assert!(!heights.is_empty(), "{words} is shown");
+    for height in heights {
+        assert!(height < 40.0, "{words}: {height} px high, wrapped");
     }
 }

@@ -121,6 +121,9 @@ pub struct LiveLink {
     /// The pose the controller's measured values give (forward kinematics), while
     /// telemetry comes.
     measured_pose: Option<Pose>,
+    /// The values sent last and the pose they give (forward kinematics), while the stream
+    /// drives the platform (arming, armed, stopping).
+    commanded: Option<(Pose, [f64; 6])>,
     /// Follow live vehicle motion arriving at this UDP address (`HOST:PORT`) through the
     /// scenario's washout, instead of what the viewer shows.
     pub cue_input: Option<String>,
@@ -188,6 +191,7 @@ impl LiveLink {
         config.record = Some(answers);
         self.tracking.clear();
         self.measured_pose = None;
+        self.commanded = None;
         let source = Arc::new(Mutex::new(Source {
             geometry: plan.geometry.clone(),
             trajectory: plan.trajectory.clone(),
@@ -360,6 +364,46 @@ impl LiveLink {
         self.running.as_ref().and(self.measured_pose)
     }
 
+    /// The platform as the values sent command it, while the stream drives it (arming,
+    /// armed, on its way home): what goes to the hardware, whatever the source.
+    pub fn commanded_pose(&self) -> Option<Pose> {
+        self.commanded().map(|(pose, _)| pose)
+    }
+
+    /// The values sent last (natural units) and the pose they give, while the stream drives
+    /// the platform.
+    pub fn commanded(&self) -> Option<(Pose, [f64; 6])> {
+        self.running.as_ref().and(self.commanded)
+    }
+
+    /// Whether the platform follows live vehicle motion now (the stream drives it, and the
+    /// source is the cue input, not what the viewer plays).
+    pub fn cueing_live(&self) -> bool {
+        self.commanded.is_some() && self.cue().is_some()
+    }
+
+    /// The commanded pose from the values sent last (forward kinematics from the last
+    /// commanded pose, or home); none while disarmed (nothing is driven).
+    fn take_commanded(&mut self) {
+        let Some(r) = &self.running else {
+            self.commanded = None;
+            return;
+        };
+        let status = r.sender.status();
+        if status.state == stewart_link::safety::LinkState::Disarmed || status.frames == 0 {
+            self.commanded = None;
+            return;
+        }
+        let geometry = &r.plan.geometry;
+        let near = self
+            .commanded
+            .map_or_else(|| geometry.home_pose(), |(pose, _)| pose);
+        self.commanded = geometry
+            .pose_from_actuator_values(&status.values, &near)
+            .ok()
+            .map(|pose| (pose, status.values));
+    }
+
     /// Take in the answered set-points: the tracking error, and the measured pose from the
     /// newest (forward kinematics from the last measured pose, or home).
     fn take_answers(&mut self) {
@@ -392,6 +436,7 @@ impl LiveLink {
     /// Collect a stream that ended (stopped, or failed: a lost port, a write error).
     pub fn poll(&mut self) {
         self.take_answers();
+        self.take_commanded();
         if self.running.as_ref().is_some_and(|r| r.sender.finished())
             && let Some(r) = self.running.take()
         {

@@ -157,7 +157,8 @@ impl ViewerState {
     /// far, the switches of the look and, when on, the readout. The view and its
     /// screenshots draw the same list.
     pub fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
-        let trajectory = self.playback.mode == MotionMode::Trajectory;
+        // Live vehicle motion has no trajectory time nor path.
+        let trajectory = self.playback.mode == MotionMode::Trajectory && !self.link.cueing_live();
         let path = if self.look.show_path && trajectory {
             self.path_until_now()
         } else {
@@ -233,7 +234,7 @@ impl ViewerState {
                 speed: self.playback.speed,
             }
         } else {
-            Drive::Still(self.pose())
+            Drive::Still(self.played_pose())
         }
     }
 
@@ -473,8 +474,17 @@ impl ViewerState {
         self.doc.scenario().motion.sampling.duration()
     }
 
-    /// The pose shown now.
+    /// The pose shown now: while the link drives the platform, the pose it commands (what
+    /// goes to the hardware, whatever the source); otherwise the one played or set.
     pub fn pose(&self) -> Pose {
+        self.link
+            .commanded_pose()
+            .unwrap_or_else(|| self.played_pose())
+    }
+
+    /// The pose the viewer itself plays or holds (the trajectory at the playback time, or
+    /// the manual pose): what the link follows unless it cues live vehicle motion.
+    pub fn played_pose(&self) -> Pose {
         match self.playback.mode {
             MotionMode::Manual => self.playback.manual,
             MotionMode::Trajectory => {
@@ -535,16 +545,24 @@ impl ViewerState {
             || self.modes.animate
     }
 
-    /// Move on by `dt` seconds of wall time: playback, and in manual mode the history.
-    /// Returns whether playback moved.
+    /// Whether the plot shows the rolling history of the values shown (manual mode, or
+    /// the link following live vehicle motion) rather than the trajectory's.
+    pub fn plot_rolls(&self) -> bool {
+        self.playback.mode == MotionMode::Manual || self.link.cueing_live()
+    }
+
+    /// Move on by `dt` seconds of wall time: playback, and in manual mode (or while the
+    /// link cues live vehicle motion) the history. Returns whether playback moved.
     pub fn advance(&mut self, dt: f64) -> bool {
         self.playback.clock += dt;
         self.modes.advance(dt);
-        if self.playback.mode == MotionMode::Manual {
+        if self.plot_rolls() {
             let pose = self.pose();
             let values = self.doc.scenario().geometry.actuator_values(&[pose]);
             let clock = self.playback.clock;
             self.playback.history.push(clock, values[0]);
+        }
+        if self.playback.mode == MotionMode::Manual {
             return false;
         }
         let duration = self.duration();

@@ -38,6 +38,34 @@ pub fn state_words(lang: Lang, state: LinkState) -> &'static str {
     })
 }
 
+/// The width of the widest state's words in `lang` at `size` points, strong: a display of
+/// the state sized for it never reflows as the state changes.
+pub fn longest_state_width(ui: &egui::Ui, lang: Lang, size: f32) -> f32 {
+    let font = egui::FontId::proportional(size);
+    [
+        LinkState::Disarmed,
+        LinkState::Arming,
+        LinkState::Armed,
+        LinkState::Stopping,
+    ]
+    .into_iter()
+    .map(|state| {
+        let words = RichText::new(state_words(lang, state))
+            .font(font.clone())
+            .strong();
+        egui::WidgetText::from(words)
+            .into_galley(
+                ui,
+                Some(egui::TextWrapMode::Extend),
+                f32::INFINITY,
+                egui::TextStyle::Body,
+            )
+            .size()
+            .x
+    })
+    .fold(0.0, f32::max)
+}
+
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let t = state.look.lang;

@@ -103,7 +103,8 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             220.0
         })
         .show(ui, |ui| {
-            plot::show(ui, &state.doc, &mut state.playback, &mut state.look);
+            let shows = [state.plot_rolls(), state.link.commanded_pose().is_some()];
+            plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows);
         });
     state.look.plot_height = plot.response.rect.height();
     let plot_rect = plot.response.rect;
@@ -131,10 +132,19 @@ fn splitter_grip(ui: &egui::Ui, plot: egui::Rect) {
 }
 
 /// While a link streams, its state and an e-stop stay on screen whatever panels show
-/// (presentation mode hides the controls).
+/// (presentation mode hides the controls), with what the 3D view shows. The badge is as
+/// wide as its longest state in the language shown, and its words never wrap: a safety
+/// display reads at a glance.
 fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
     let Some(status) = state.link.sender_status() else {
         return;
+    };
+    let t = state.look.lang;
+    let big = |text: &str| {
+        egui::RichText::new(text)
+            .size(20.0)
+            .strong()
+            .color(egui::Color32::WHITE)
     };
     egui::Area::new(egui::Id::unique("link-badge"))
         // The 3D view's bottom right, above the plot: at the top it hid the toolbar's end.
@@ -148,23 +158,34 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
                 .inner_margin(8.0)
                 .corner_radius(4.0)
                 .show(ui, |ui| {
-                    ui.label(
-                        egui::RichText::new(link::state_words(state.look.lang, status.state))
-                            .size(20.0)
-                            .strong()
-                            .color(egui::Color32::WHITE),
-                    );
+                    ui.set_min_width(link::longest_state_width(ui, t, 20.0));
+                    ui.add(egui::Label::new(big(link::state_words(t, status.state))).extend());
+                    let shown = if state.link.commanded_pose().is_some() {
+                        let measured = state.link.measured_pose().is_some();
+                        Some(t.tr(if measured {
+                            "link.view_commanded_measured"
+                        } else {
+                            "link.view_commanded"
+                        }))
+                    } else {
+                        None
+                    };
+                    if let Some(words) = shown {
+                        ui.add(
+                            egui::Label::new(
+                                egui::RichText::new(words).color(egui::Color32::WHITE),
+                            )
+                            .extend(),
+                        );
+                    }
                     let stop = egui::Button::new(
-                        egui::RichText::new(state.look.lang.tr("link.estop"))
+                        egui::RichText::new(t.tr("link.estop"))
                             .strong()
                             .color(egui::Color32::WHITE),
                     )
-                    .fill(egui::Color32::from_rgb(200, 20, 20));
-                    if ui
-                        .add(stop)
-                        .on_hover_text(state.look.lang.tr("link.estop_tip"))
-                        .clicked()
-                    {
+                    .fill(egui::Color32::from_rgb(200, 20, 20))
+                    .wrap_mode(egui::TextWrapMode::Extend);
+                    if ui.add(stop).on_hover_text(t.tr("link.estop_tip")).clicked() {
                         state.link.estop();
                     }
                 });

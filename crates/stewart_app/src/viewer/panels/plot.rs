@@ -1,5 +1,6 @@
 //! The live plot of leg lengths (or servo angles): the whole trajectory with a moving
-//! time marker, or in manual mode the rolling history of the last seconds.
+//! time marker, or in manual mode (and while the link cues live vehicle motion) the
+//! rolling history of the last seconds.
 
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
@@ -9,7 +10,7 @@ use crate::i18n::words;
 use crate::viewer::document::Document;
 use crate::viewer::history::History;
 use crate::viewer::look::Look;
-use crate::viewer::playback::{MotionMode, Playback};
+use crate::viewer::playback::Playback;
 
 /// Leg `i`'s colour, as in exported plots.
 pub fn leg_colour(i: usize) -> Color32 {
@@ -73,31 +74,41 @@ fn line_width(look: &Look) -> f32 {
 /// The panel: the plot, and its legend beside it (outside the curves). In trajectory mode,
 /// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
 /// resets the view).
-pub fn show(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut Look) {
+///
+/// `rolling`: the plot shows the rolling history of the values shown (manual mode, live
+/// vehicle motion through the link) instead of the trajectory's; `commanded`: they are
+/// the link's commanded values.
+pub fn show(
+    ui: &mut egui::Ui,
+    doc: &Document,
+    playback: &mut Playback,
+    look: &mut Look,
+    [rolling, commanded]: [bool; 2],
+) {
     let legend_width = if look.presentation { 110.0 } else { 76.0 };
     let size = ui.available_size();
     ui.horizontal(|ui| {
         ui.allocate_ui(
             egui::vec2((size.x - legend_width).max(100.0), size.y),
             |ui| {
-                plot(ui, doc, playback, look);
+                plot(ui, doc, playback, look, [rolling, commanded]);
             },
         );
-        ui.vertical(|ui| legend(ui, doc, playback, look));
+        ui.vertical(|ui| legend(ui, doc, look, rolling));
     });
 }
 
 /// The legend: a swatch and the name of each curve, the limits and the time marker.
-fn legend(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut Look) {
+fn legend(ui: &mut egui::Ui, doc: &Document, look: &mut Look, rolling: bool) {
     let quantity = doc.scenario().geometry.quantity();
     let t = look.lang;
-    if doc.plot_efforts().is_some() && playback.mode == MotionMode::Trajectory {
+    if doc.plot_efforts().is_some() && !rolling {
         ui.selectable_value(&mut look.plot_efforts, false, t.tr("plot.lengths"));
         ui.selectable_value(&mut look.plot_efforts, true, t.tr("plot.efforts"))
             .on_hover_text(t.tr("plot.efforts_tip"));
         ui.separator();
     }
-    let efforts = efforts_shown(doc, playback, look).is_some();
+    let efforts = efforts_shown(doc, look, rolling).is_some();
     let width = line_width(look);
     let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
         ui.horizontal(|ui| {
@@ -138,10 +149,10 @@ fn legend(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut
             );
         }
     }
-    if playback.mode == MotionMode::Trajectory && doc.beyond_limits() && !efforts {
+    if !rolling && doc.beyond_limits() && !efforts {
         swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
     }
-    if playback.mode == MotionMode::Trajectory {
+    if !rolling {
         swatch(ui, marker_colour(look), t.tr("plot.now").to_owned(), false);
     }
 }
@@ -150,10 +161,10 @@ fn legend(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &mut
 /// trajectory, with a payload.
 fn efforts_shown<'a>(
     doc: &'a Document,
-    playback: &Playback,
     look: &Look,
+    rolling: bool,
 ) -> Option<(&'a [f64], &'a [[f64; 6]])> {
-    (look.plot_efforts && playback.mode == MotionMode::Trajectory)
+    (look.plot_efforts && !rolling)
         .then(|| doc.plot_efforts())
         .flatten()
 }
@@ -168,14 +179,19 @@ fn marker_colour(look: &Look) -> Color32 {
 }
 
 /// The plot itself.
-fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look) {
+fn plot(
+    ui: &mut egui::Ui,
+    doc: &Document,
+    playback: &mut Playback,
+    look: &Look,
+    [rolling, commanded]: [bool; 2],
+) {
     let width = line_width(look);
     let scenario = doc.scenario();
     let quantity = scenario.geometry.quantity();
     let [min, max] = scenario.geometry.quantity_limits();
-    let manual = playback.mode == MotionMode::Manual;
     let t = look.lang;
-    let efforts = efforts_shown(doc, playback, look).is_some();
+    let efforts = efforts_shown(doc, look, rolling).is_some();
     let [min, max] = if efforts { [None, None] } else { [min, max] };
     let y_label = if efforts {
         format!(
@@ -186,33 +202,33 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
     } else {
         format!("{} ({})", words::quantity_name(t, &quantity), quantity.unit)
     };
-    let x_label = t.tr(if manual {
-        "plot.seconds_ago"
-    } else {
-        "plot.time"
+    let x_label = t.tr(match (rolling, commanded) {
+        (true, true) => "plot.seconds_ago_commanded",
+        (true, false) => "plot.seconds_ago",
+        (false, _) => "plot.time",
     });
-    let mut plot = Plot::new(match (manual, efforts) {
+    let mut plot = Plot::new(match (rolling, efforts) {
         (true, _) => "leg history",
         (false, true) => "actuator efforts",
         (false, false) => "leg lengths",
     })
-    .allow_drag(manual)
+    .allow_drag(rolling)
     .y_grid_spacer(super::plot_ticks::marks)
     .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
     .x_axis_label(x_label)
     .y_axis_label(y_label);
-    if manual {
+    if rolling {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
-    let left_end = if manual {
+    let left_end = if rolling {
         -History::WINDOW
     } else {
         scenario.motion.sampling.start()
     };
     let shown = plot.show(ui, |plot| {
-        curves(plot, doc, playback, [min, max], look);
+        curves(plot, doc, playback, [min, max], look, rolling);
         limit_lines(plot, &quantity, [min, max], left_end, look);
-        if !manual {
+        if !rolling {
             let now = scenario.motion.sampling.start() + playback.time;
             plot.vline(
                 VLine::new(t.tr("plot.now"), now)
@@ -222,7 +238,7 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
         }
     });
     let response = &shown.response;
-    if !manual
+    if !rolling
         && (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
         && let Some(pointer) = response.interact_pointer_pos()
     {
@@ -233,7 +249,7 @@ fn plot(ui: &mut egui::Ui, doc: &Document, playback: &mut Playback, look: &Look)
     }
 }
 
-/// The six curves (the trajectory's, or in manual mode the history's), each broken where a
+/// The six curves (the trajectory's, or in rolling mode the history's), each broken where a
 /// servo cannot reach, with the stretches beyond `limits` marked over them.
 fn curves(
     plot: &mut egui_plot::PlotUi,
@@ -241,12 +257,12 @@ fn curves(
     playback: &Playback,
     [min, max]: [Option<f64>; 2],
     look: &Look,
+    rolling: bool,
 ) {
     let (width, t) = (line_width(look), look.lang);
-    let manual = playback.mode == MotionMode::Manual;
     let quantity = doc.scenario().geometry.quantity();
     for leg in 0..6 {
-        let points: Vec<[f64; 2]> = if manual {
+        let points: Vec<[f64; 2]> = if rolling {
             playback
                 .history
                 .entries()
@@ -254,7 +270,7 @@ fn curves(
                 .collect()
         } else {
             let (times, lengths) =
-                efforts_shown(doc, playback, look).unwrap_or_else(|| doc.plot_samples());
+                efforts_shown(doc, look, rolling).unwrap_or_else(|| doc.plot_samples());
             times
                 .iter()
                 .zip(lengths)
@@ -262,7 +278,7 @@ fn curves(
                 .collect()
         };
         // A servo out of reach has no angle: its curve breaks there.
-        let symbol = if efforts_shown(doc, playback, look).is_some() {
+        let symbol = if efforts_shown(doc, look, rolling).is_some() {
             quantity.effort.0
         } else {
             quantity.symbol
