@@ -33,12 +33,34 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
         .abs()
             < 1e-9
     );
-    // No stiffness yet: the panel says what is missing.
+    // No stiffness yet: the panel says what is missing, naming the control as it reads.
     assert!(
-        h.query_by_label_contains("give the actuator stiffness")
+        h.query_by_label_contains("switch on *actuator stiffness* under Actuators and legs")
             .is_some()
     );
+    assert!(h.query_by_label("actuator stiffness (N/m): off").is_some());
+    // Switched on, it starts at a typical actuator's stiffness, not the slider's top.
     let stiffness = settings::find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));
+    let switch = h
+        .query_by_label("actuator stiffness (N/m): off")
+        .map(|n| n.rect())
+        .unwrap_or_else(|| panic!("no switch"));
+    let left = egui::pos2(switch.left() - 12.0, switch.center().y);
+    h.hover_at(left);
+    h.event(egui::Event::PointerButton {
+        pos: left,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.event(egui::Event::PointerButton {
+        pos: left,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    assert_eq!(stiffness.get(h.state().scenario()), Some(2.0e7));
     h.state_mut().doc.apply(stiffness, Some(1e7));
     h.run();
     let modes = (1..=6)
@@ -123,4 +145,36 @@ fn the_plot_switches_to_the_actuator_forces() {
     h.get_by_label("values").click();
     h.run();
     assert!(!h.state().look.plot_efforts);
+}
+
+#[test]
+fn the_modes_of_a_singular_pose_say_which_directions_have_no_stiffness() {
+    // The seed's staggered hexagons are singular at home: three directions are free.
+    let mut h = crate::tall_harness("seed", 2600.0);
+    h.state_mut().playback.mode = stewart_app::viewer::playback::MotionMode::Manual;
+    h.run();
+    h.get_by_label("Dynamics and modes").click();
+    h.run();
+    if h.state().scenario().payload.is_none() {
+        h.get_by_label("Add a payload").click();
+        h.run();
+    }
+    let stiffness = settings::find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));
+    h.state_mut().doc.apply(stiffness, Some(2e7));
+    h.run();
+    h.run();
+    assert_eq!(h.query_all_by_label("no stiffness").count(), 3);
+    assert!(
+        h.query_by_label("0.00 Hz").is_none(),
+        "no frequency of 0 shown"
+    );
+    // Those cannot be chosen to swing; the choice moved to the first mode with stiffness.
+    assert_eq!(h.state().modes.mode, 3);
+    h.get_by_label("1").click();
+    h.run();
+    assert_eq!(h.state().modes.mode, 3, "mode 1 cannot be chosen");
+    h.get_by_label("5").click();
+    h.run();
+    assert_eq!(h.state().modes.mode, 4);
+    crate::look(&mut h, "modes-singular.png");
 }

@@ -157,12 +157,7 @@ fn text(scenario: &Scenario, at: &str, modes: &Modes, lowest: Option<&LowestMode
             motion_words(&modes.modes[k])
         );
     }
-    let stiffest = modes.frequencies_hz[5];
-    let lost = modes
-        .frequencies_hz
-        .iter()
-        .filter(|&&f| f <= 1e-6 * stiffest)
-        .count();
+    let lost = (0..6).filter(|&k| modes.without_stiffness(k)).count();
     if lost > 0 {
         let _ = writeln!(
             out,

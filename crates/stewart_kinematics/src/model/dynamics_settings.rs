@@ -89,6 +89,27 @@ pub struct DynamicsProblem {
     pub reason: String,
 }
 
+/// A typical actuator stiffness of a linear leg, N/m: an electric or hydraulic actuator of
+/// a motion platform (ball screw, cylinder) is of the order of 10⁷ N/m along its axis.
+pub const TYPICAL_LINEAR_STIFFNESS: f64 = 2.0e7;
+
+/// A typical stiffness of a servo, N·m/rad: a geared hobby or desk servo holds about
+/// 50 N·m per radian of deflection.
+pub const TYPICAL_ROTARY_STIFFNESS: f64 = 50.0;
+
+/// The slider range of the actuator stiffness for servos, N·m/rad (linear legs: the
+/// declared 10³ … 10⁸ N/m).
+pub const ROTARY_STIFFNESS_RANGE: (f64, f64) = (1.0, 1.0e5);
+
+/// A typical actuator stiffness for actuators of `kind` (what the stiffness is when first
+/// switched on): N/m for linear legs, N·m/rad for servos.
+pub fn typical_stiffness(kind: ActuatorKind) -> f64 {
+    match kind {
+        ActuatorKind::Linear => TYPICAL_LINEAR_STIFFNESS,
+        ActuatorKind::Rotary => TYPICAL_ROTARY_STIFFNESS,
+    }
+}
+
 /// The largest stiffness accepted (N/m or N·m/rad).
 pub const MAX_STIFFNESS: f64 = 1e12;
 /// The largest viscous friction accepted (N·s/m or N·m·s/rad).

@@ -165,11 +165,25 @@ fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
             return;
         }
     };
+    // The chosen mode is one with stiffness (the stiffest always has some).
+    if modes.without_stiffness(view.mode.min(5)) {
+        view.mode = (0..6).find(|&k| !modes.without_stiffness(k)).unwrap_or(5);
+    }
     egui::Grid::new("modes").num_columns(3).show(ui, |ui| {
         for k in 0..6 {
-            ui.radio_value(&mut view.mode, k, format!("{}", k + 1));
-            let hz = format!("{:.2}", modes.frequencies_hz[k]);
-            ui.label(t.fmt("dynamics.frequency", &[("hz", &hz)]));
+            // A direction without stiffness (a singular pose) has no swing to show.
+            let stiff = !modes.without_stiffness(k);
+            ui.add_enabled_ui(stiff, |ui| {
+                ui.radio_value(&mut view.mode, k, format!("{}", k + 1))
+                    .on_disabled_hover_text(t.tr("dynamics.no_stiffness_tip"));
+            });
+            if stiff {
+                let hz = format!("{:.2}", modes.frequencies_hz[k]);
+                ui.label(t.fmt("dynamics.frequency", &[("hz", &hz)]));
+            } else {
+                ui.label(RichText::new(t.tr("dynamics.no_stiffness")).color(WARNING))
+                    .on_hover_text(t.tr("dynamics.no_stiffness_tip"));
+            }
             let words: Vec<String> = dominant(&modes.modes[k])
                 .iter()
                 .map(|(axis, c)| format!("{axis} {c:+.2}"))

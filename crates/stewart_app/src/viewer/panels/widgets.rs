@@ -49,12 +49,23 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
     ui.horizontal(|ui| {
         if setting.optional() {
             let mut on = current.is_some();
-            if ui
-                .checkbox(&mut on, "")
-                .on_hover_text(t.fmt("widgets.use_limit", &[("name", &setting_label(t, setting))]))
-                .changed()
-            {
-                edit = Some(on.then(|| default_on(setting, scenario)));
+            let name = setting_label(t, setting);
+            // A limit is switched on; a quantity (a stiffness) is given, from a typical value.
+            let tip = if setting.unit == Unit::Stiffness {
+                let start = setting.value_when_switched_on(scenario);
+                t.fmt(
+                    "widgets.use_value",
+                    &[
+                        ("name", &name),
+                        ("value", &format!("{start:e}")),
+                        ("unit", &unit_of(setting, scenario)),
+                    ],
+                )
+            } else {
+                t.fmt("widgets.use_limit", &[("name", &name)])
+            };
+            if ui.checkbox(&mut on, "").on_hover_text(tip).changed() {
+                edit = Some(on.then(|| setting.value_when_switched_on(scenario)));
             }
         }
         match current {
@@ -134,13 +145,6 @@ fn reset_menu(
         }
     });
     chosen
-}
-
-/// The value an optional setting takes when switched on.
-fn default_on(setting: &Setting, scenario: &Scenario) -> f64 {
-    setting
-        .default_for(scenario)
-        .unwrap_or(*setting.range.end())
 }
 
 /// How far a drag with Shift held moves the value, against a plain drag.

@@ -31,6 +31,12 @@ impl Modes {
     pub fn dominant(&self, k: usize) -> Vec<(&'static str, f64)> {
         dominant(&self.modes[k])
     }
+
+    /// Whether mode `k` is a direction without stiffness (a singular pose): its frequency
+    /// is at most a millionth of the stiffest mode's, zero as far as the numbers tell.
+    pub fn without_stiffness(&self, k: usize) -> bool {
+        self.frequencies_hz[k] <= 1e-6 * self.frequencies_hz[5]
+    }
 }
 
 /// The components of a mode vector that make up most of it, largest first: `(axis,

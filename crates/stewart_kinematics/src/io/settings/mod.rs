@@ -305,7 +305,8 @@ impl Setting {
     /// The range a slider offers for this scenario's platform: a length follows the
     /// platform's size (the declared range is for the seed's, 0.6 m platform radius: a
     /// 6 cm desk platform gets a tenth of it), a stroke limit spans half to twice the
-    /// home leg length, and the range always holds the present value.
+    /// home leg length, a servo's stiffness spans servos' (N·m/rad), and the range always
+    /// holds the present value.
     pub fn range_for(&self, scenario: &Scenario) -> RangeInclusive<f64> {
         let (mut lo, mut hi) = (*self.range.start(), *self.range.end());
         let g = &scenario.geometry;
@@ -320,6 +321,8 @@ impl Setting {
             if mean.is_finite() && mean > 0.0 {
                 (lo, hi) = (0.5 * mean, 2.0 * mean);
             }
+        } else if self.unit == Unit::Stiffness && g.actuator().kind() == ActuatorKind::Rotary {
+            (lo, hi) = crate::dynamics_settings::ROTARY_STIFFNESS_RANGE;
         } else if self.unit == Unit::Metre && !servo_part {
             let seed = crate::geometry::Geometry::seed().characteristic_length();
             let scale = (g.characteristic_length() / seed).clamp(1e-3, 1e3);
@@ -336,6 +339,21 @@ impl Setting {
     /// The default for this scenario's platform.
     pub fn default_for(&self, scenario: &Scenario) -> Option<f64> {
         self.default.resolve(scenario.geometry.home_height())
+    }
+
+    /// The value an optional setting takes when switched on: its default, else a typical
+    /// value (an actuator stiffness of the platform's kind), else the top of its declared
+    /// range.
+    pub fn value_when_switched_on(&self, scenario: &Scenario) -> f64 {
+        if let Some(v) = self.default_for(scenario) {
+            return v;
+        }
+        if self.unit == Unit::Stiffness {
+            return crate::dynamics_settings::typical_stiffness(
+                scenario.geometry.actuator().kind(),
+            );
+        }
+        *self.range.end()
     }
 
     /// Write `value` (`None`: switch off). Validated as the file reader validates; a

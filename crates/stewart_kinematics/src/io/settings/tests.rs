@@ -637,3 +637,29 @@ fn the_accepted_range_shown_leaves_out_what_the_model_always_refuses() {
     }
     assert!(checked > 30, "{checked}");
 }
+
+#[test]
+fn a_stiffness_switched_on_starts_at_a_typical_actuators_and_servos_get_their_own_range() {
+    let stiffness = find("dynamics.actuator_stiffness").unwrap_or_else(|e| panic!("{e}"));
+    let legs = Scenario::seed();
+    assert_eq!(stiffness.default_for(&legs), None, "absent until given");
+    assert_eq!(stiffness.value_when_switched_on(&legs), 2.0e7);
+    assert_eq!(stiffness.range_for(&legs), 1e3..=1e8);
+    let servos = preset("servo-desk");
+    assert_eq!(stiffness.value_when_switched_on(&servos), 50.0);
+    assert_eq!(stiffness.range_for(&servos), 1.0..=1e5);
+    // The typical value is accepted as it is.
+    let mut s = servos.clone();
+    stiffness
+        .set(&mut s, Some(stiffness.value_when_switched_on(&servos)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    // A limit without a default still switches on at its declared top.
+    let clearance = all()
+        .iter()
+        .find(|s| s.optional() && s.unit != Unit::Stiffness && s.default_for(&legs).is_none())
+        .unwrap_or_else(|| panic!("an optional limit"));
+    assert_eq!(
+        clearance.value_when_switched_on(&legs),
+        *clearance.range.end()
+    );
+}
