@@ -14,6 +14,8 @@ struct Globals {
     // x: ambient, y: specular strength, z: shininess, w: 1 to encode the output as sRGB
     // (for targets that are not sRGB formats, such as egui's), 0 to output linear.
     shading: vec4<f32>,
+    // The view's background, linear RGB and alpha (drawn by background.wgsl).
+    background: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> globals: Globals;

@@ -70,10 +70,36 @@ fn play_and_export_are_in_the_toolbar_and_the_controls_scroll_bar_is_always_draw
     h.get_by_label("Export…").click();
     h.run();
     assert!(h.query_by_label("What").is_none());
-    // A slow machine: the toolbar says frames are skipped.
+    // A slow machine: the view's status line says frames are skipped, and the toolbar's
+    // buttons stay where they were.
+    let export_at = h.get_by_label("Export…").rect();
+    let front_at = h.get_by_label("Front").rect();
     h.state_mut().playback.frame_rate = Some(4.0);
     h.run();
-    assert!(h.query_by_label("4 frames/s: frames skipped").is_some());
+    let note = h
+        .query_by_label("4 frames/s: frames skipped")
+        .map(|n| n.rect())
+        .unwrap_or_else(|| panic!("no note"));
+    assert_eq!(h.get_by_label("Export…").rect(), export_at);
+    assert_eq!(h.get_by_label("Front").rect(), front_at);
+    assert!(
+        note.top() > front_at.bottom() + 100.0,
+        "the note is below the toolbar"
+    );
+    // Never in presentation mode.
+    h.state_mut().look.presentation = true;
+    h.run();
+    assert!(h.query_by_label("4 frames/s: frames skipped").is_none());
+    h.state_mut().look.presentation = false;
+    h.run();
+    // The frame-time readout takes its place when asked for (Advanced).
+    h.state_mut().look.frame_times = true;
+    h.state_mut().quality.record(21.5);
+    h.run();
+    assert!(
+        h.query_by_label_contains("Frame 21.5 ms (95th percentile 21.5 ms) · 3D view: GPU")
+            .is_some()
+    );
     // Scroll bars are solid (drawn whether or not the pointer is over them).
     assert!(!h.ctx.global_style().spacing.scroll.floating);
 }

@@ -90,6 +90,27 @@ pub fn check_environment() -> Result<(), GpuError> {
 
 /// The process's one headless device, opened by the first [`Gpu::shared`] and kept to the
 /// end of the process.
+/// Whether a window on this machine would be drawn by a software rasteriser (lavapipe,
+/// llvmpipe, SwiftShader): the adapter `WGPU_ADAPTER_NAME` names is a CPU, or no adapter
+/// but a CPU is there. A window then spends its frame time on every sample of every
+/// pixel, and the viewer chooses cheaper ways to draw.
+pub fn renders_in_software() -> bool {
+    let instance =
+        wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all()));
+    let cpu = |a: &wgpu::Adapter| a.get_info().device_type == wgpu::DeviceType::Cpu;
+    match std::env::var("WGPU_ADAPTER_NAME") {
+        Ok(wanted) => {
+            let wanted = wanted.to_lowercase();
+            adapters
+                .iter()
+                .find(|a| a.get_info().name.to_lowercase().contains(&wanted))
+                .is_some_and(cpu)
+        }
+        Err(_) => !adapters.is_empty() && adapters.iter().all(cpu),
+    }
+}
+
 static SHARED: Mutex<Option<Gpu>> = Mutex::new(None);
 
 impl Gpu {

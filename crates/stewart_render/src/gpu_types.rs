@@ -16,6 +16,8 @@ pub struct Globals {
     pub fill_light: [f32; 4],
     /// Ambient, specular strength, shininess, and 1 when the shader must encode sRGB itself.
     pub shading: [f32; 4],
+    /// The view's background, linear RGB and alpha.
+    pub background: [f32; 4],
 }
 
 /// A mesh vertex: position and normal.
@@ -118,7 +120,7 @@ mod tests {
 
     #[test]
     fn sizes_match_the_wgsl_layouts() {
-        assert_eq!(size_of::<Globals>(), 64 + 4 * 16); // checked against naga in tests/render
+        assert_eq!(size_of::<Globals>(), 64 + 5 * 16); // checked against naga in tests/render
         assert_eq!(size_of::<MeshVertex>(), 24);
         assert_eq!(size_of::<MeshInstance>(), 80);
         assert_eq!(size_of::<LineVertex>(), 28);

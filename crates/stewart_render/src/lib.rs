@@ -10,6 +10,7 @@
 //! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
 //! - [`renderer`]: pipelines and the one draw entry point;
 //! - [`offscreen`]: headless targets and read-back;
+//! - [`Picture`]: a view rendered off screen at its own quality, drawn into another pass;
 //! - [`gpu`]: adapter choice (a GPU, else lavapipe), honouring `WGPU_BACKEND` / `WGPU_ADAPTER_NAME`.
 
 pub mod analysis;
@@ -23,6 +24,7 @@ mod gpu_mesh;
 pub mod gpu_types;
 pub mod mesh;
 pub mod offscreen;
+mod picture;
 pub mod plate_shape;
 pub mod readback;
 pub mod renderer;
@@ -37,6 +39,7 @@ pub use camera::OrbitCamera;
 pub use draw_list::{DrawList, Overlays};
 pub use gpu::{Gpu, GpuError};
 pub use offscreen::{Frame, Offscreen, OffscreenError};
+pub use picture::Picture;
 pub use renderer::Renderer;
 pub use text::{Anchor, Fonts, TextItem, TextSize};
 pub use theme::Theme;

@@ -33,6 +33,9 @@ pub struct Renderer {
     atlas_bind_group: wgpu::BindGroup,
     atlas: std::sync::Mutex<GlyphAtlas>,
     fonts: &'static Fonts,
+    background: wgpu::RenderPipeline,
+    picture: wgpu::RenderPipeline,
+    picture_layout: wgpu::BindGroupLayout,
     /// MSAA sample count the pipelines were built for.
     pub samples: u32,
     /// Colour format the pipelines were built for.
@@ -118,7 +121,15 @@ impl Renderer {
         let lines = line_pipeline(device, &pipeline_layout, multisample, &blend_target);
         let (text, atlas_texture, atlas_bind_group) =
             text_pipeline(device, &layout, multisample, format);
+        let background =
+            crate::picture::background_pipeline(device, &pipeline_layout, multisample, format);
+        let picture_layout = crate::picture::bind_group_layout(device);
+        let picture =
+            crate::picture::pipeline(device, &layout, &picture_layout, multisample, format);
         Self {
+            background,
+            picture,
+            picture_layout,
             opaque,
             translucent,
             analysis,
@@ -180,9 +191,19 @@ impl Renderer {
                 48.0,
                 if self.format.is_srgb() { 0.0 } else { 1.0 },
             ],
+            background: {
+                let bg = linear(theme.background);
+                [bg[0], bg[1], bg[2], theme.background[3]]
+            },
         };
         queue.write_buffer(&view.globals, 0, bytemuck::bytes_of(&globals));
-        let bg = linear(theme.background);
+        // A clear writes its colour as it is: linear into an sRGB target, encoded into
+        // one that is not (a window's surface, a picture drawn into it).
+        let bg = if self.format.is_srgb() {
+            linear(theme.background)
+        } else {
+            theme.background
+        };
         view.clear = wgpu::Color {
             r: bg[0] as f64,
             g: bg[1] as f64,
@@ -342,6 +363,34 @@ impl Renderer {
             pass.set_vertex_buffer(0, view.text_vertices.buffer.slice(..));
             pass.draw(0..view.batches.text, 0..1);
         }
+    }
+
+    /// Draw `view`'s background (the theme's colour) over the whole viewport of an open
+    /// pass: what a clear would do, where the view shares its pass with a UI.
+    pub fn paint_background(&self, view: &PreparedView, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &view.bind_group, &[]);
+        pass.set_pipeline(&self.background);
+        pass.draw(0..3, 0..1);
+    }
+
+    /// Draw a picture rendered off screen ([`crate::Picture`]) over the whole viewport of
+    /// an open pass; `view` is any view prepared by this renderer (its globals are bound).
+    pub fn paint_picture(
+        &self,
+        view: &PreparedView,
+        picture: &crate::Picture,
+        pass: &mut wgpu::RenderPass<'_>,
+    ) {
+        pass.set_bind_group(0, &view.bind_group, &[]);
+        pass.set_bind_group(1, picture.bind_group(), &[]);
+        pass.set_pipeline(&self.picture);
+        pass.draw(0..3, 0..1);
+    }
+
+    /// The layout of a picture's bind group (its texture and sampler), for
+    /// [`crate::Picture::new`].
+    pub(crate) fn picture_layout(&self) -> &wgpu::BindGroupLayout {
+        &self.picture_layout
     }
 
     /// Record a whole pass: clear `target` (and `depth`), draw, resolve into `resolve` when MSAA is on.

@@ -25,8 +25,27 @@ pub const ANALYSIS: &str = concat!(
     include_str!("../../../shaders/analysis.wgsl")
 );
 
+/// The view's background as one flat triangle, globals included.
+pub const BACKGROUND: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/background.wgsl")
+);
+
+/// A picture rendered off screen drawn over the viewport, globals included (bound, not
+/// read).
+pub const BLIT: &str = concat!(
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/blit.wgsl")
+);
+
 /// Every pipeline's module with the shader files it is made of, for validation.
-pub const MODULES: [(&str, &[&str], &str); 4] = [
+pub const MODULES: [(&str, &[&str], &str); 6] = [
+    (
+        "background",
+        &["globals.wgsl", "background.wgsl"],
+        BACKGROUND,
+    ),
+    ("blit", &["globals.wgsl", "blit.wgsl"], BLIT),
     ("mesh", &["globals.wgsl", "mesh.wgsl"], MESH),
     ("analysis", &["globals.wgsl", "analysis.wgsl"], ANALYSIS),
     ("lines", &["globals.wgsl", "lines.wgsl"], LINES),

@@ -33,6 +33,8 @@ pub struct Look {
     pub labels: bool,
     /// The head-up readout (time, pose, values) over the view and in exported frames.
     pub readouts: bool,
+    /// The frame-time readout in the 3D view's status line (Advanced).
+    pub frame_times: bool,
     /// The plot shows the actuator forces (or torques) instead of lengths (or angles).
     pub plot_efforts: bool,
     /// The plot panel's height as last drawn, logical pixels (its top edge drags).
@@ -62,6 +64,7 @@ impl Look {
             coloured_legs: true,
             labels: true,
             readouts: false,
+            frame_times: false,
             plot_efforts: false,
             plot_height: 0.0,
             view_px: [1280, 720],

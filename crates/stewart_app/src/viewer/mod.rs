@@ -32,6 +32,7 @@ pub mod look;
 pub mod mode_view;
 pub mod panels;
 pub mod playback;
+pub mod quality;
 pub mod reach;
 pub mod reveal;
 pub mod session;

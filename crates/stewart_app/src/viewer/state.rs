@@ -58,6 +58,9 @@ pub struct ViewerState {
     reach: super::reach::ReachCache,
     /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
     pub modes: super::mode_view::ModeView,
+    /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
+    /// frame times.
+    pub quality: super::quality::Quality,
 }
 
 /// The saved session's state in this run.
@@ -119,6 +122,7 @@ impl ViewerState {
             assembly_error: None,
             reach: super::reach::ReachCache::default(),
             modes: super::mode_view::ModeView::default(),
+            quality: super::quality::Quality::default(),
             doc: Document::new(scenario),
         }
     }

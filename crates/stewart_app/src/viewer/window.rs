@@ -75,6 +75,10 @@ struct Open {
     window: Arc<Window>,
     painter: Painter,
     input: egui_winit::State,
+    /// MSAA samples of the window's pass.
+    samples: u32,
+    /// The surface stores sRGB-encoded colours itself (the clear colour is then linear).
+    srgb: bool,
 }
 
 struct App {
@@ -237,8 +241,12 @@ impl App {
                 window.scale_factor()
             ));
         }
+        // A software rasteriser pays for every sample of every pixel: its window's pass has
+        // one, and the 3D view chooses its own quality (see `quality`).
+        let software = stewart_render::gpu::renders_in_software();
+        let samples = if software { 1 } else { SAMPLES };
         let options = egui_wgpu::RendererOptions {
-            msaa_samples: SAMPLES,
+            msaa_samples: samples,
             depth_stencil_format: Some(stewart_render::renderer::DEPTH_FORMAT),
             ..Default::default()
         };
@@ -263,13 +271,15 @@ impl App {
         let renderer = stewart_render::Renderer::new(
             &render_state.device,
             render_state.target_format,
-            SAMPLES,
+            samples,
         );
-        render_state
-            .renderer
-            .write()
-            .callback_resources
-            .insert(super::view3d::SceneResources::new(renderer));
+        render_state.renderer.write().callback_resources.insert(
+            super::view3d::SceneResources::new(&render_state.device, renderer),
+        );
+        self.state.quality =
+            super::quality::Quality::new(samples == 1, super::quality::Policy::from_env());
+        self.state.quality.window_clears = true;
+        let srgb = render_state.target_format.is_srgb();
         self.state.look.renderer_missing = None;
         let max_side = render_state.device.limits().max_texture_dimension_2d as usize;
         let input = egui_winit::State::new(
@@ -284,6 +294,8 @@ impl App {
             window,
             painter,
             input,
+            samples,
+            srgb,
         });
         Ok(())
     }
@@ -338,20 +350,20 @@ impl App {
         let Some(open) = self.open.as_mut() else {
             return;
         };
-        let bg = self.state.theme().background;
+        let clear = clear_colour(&self.ctx, open.srgb);
         open.painter.paint_and_update_textures(
             ViewportId::ROOT,
             output.pixels_per_point,
-            [bg[0], bg[1], bg[2], 1.0],
+            clear,
             &primitives,
             &mut output.textures_delta,
             capture,
             &open.window,
         );
+        let total_ms = frame_start.elapsed().as_secs_f64() * 1e3;
         self.times.cpu.push(cpu_ms);
-        self.times
-            .total
-            .push(frame_start.elapsed().as_secs_f64() * 1e3);
+        self.times.total.push(total_ms);
+        self.state.quality.record(total_ms);
         self.finish_shots(scaled, event_loop);
     }
 
@@ -376,6 +388,21 @@ impl App {
     fn screen_captures(&mut self) -> (Vec<egui::ScreenshotCallback>, Option<ScaledShot>) {
         let mut capture = Vec::new();
         let mut scaled = None;
+        // A shot shows the full picture: when this frame's 3D view was drawn at a lower
+        // quality (moving, on a software rasteriser), the shot waits for the next frame,
+        // drawn at full quality.
+        let run_shot = self.options.screenshot.is_some()
+            && self.frames >= self.options.frames.max(1)
+            && !self.screenshot_asked;
+        if (run_shot || self.state.shots.window_request.is_some())
+            && !self.state.quality.last_was_full()
+        {
+            self.state.quality.ask_full();
+            if let Some(open) = &self.open {
+                open.window.request_redraw();
+            }
+            return (capture, scaled);
+        }
         if let Some(path) = &self.options.screenshot
             && self.frames >= self.options.frames.max(1)
             && !self.screenshot_asked
@@ -498,6 +525,7 @@ impl App {
             },
         );
         let state = &mut self.state;
+        state.quality.ask_full();
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
         let ppp = output.pixels_per_point;
         let primitives = self.ctx.tessellate(std::mem::take(&mut output.shapes), ppp);
@@ -505,14 +533,15 @@ impl App {
             (rect.width() * ppp).round() as u32,
             (rect.height() * ppp).round() as u32,
         ];
-        let bg = self.state.theme().background;
+        let clear = clear_colour(&self.ctx, open.srgb);
         let image = super::window_shot::render(
             &rs,
+            open.samples,
             &primitives,
             &mut output.textures_delta,
             size,
             ppp,
-            [bg[0], bg[1], bg[2], 1.0],
+            clear,
         );
         {
             let mut renderer = rs.renderer.write();
@@ -536,7 +565,23 @@ impl App {
     }
 
     fn busy(&self) -> bool {
-        self.state.animating() || (self.options.screenshot.is_some() && self.error.is_none())
+        self.state.animating()
+            || self.state.quality.wants_full_frame()
+            || (self.options.screenshot.is_some() && self.error.is_none())
+    }
+}
+
+/// The colour the window is cleared to: the panels' own (they draw no fill of their
+/// own: on a software rasteriser each large fill costs milliseconds), linear on a
+/// surface that encodes sRGB itself.
+fn clear_colour(ctx: &egui::Context, srgb: bool) -> [f32; 4] {
+    let fill = ctx.global_style().visuals.panel_fill;
+    let gamma = [fill.r(), fill.g(), fill.b()].map(|c| f32::from(c) / 255.0);
+    let colour = [gamma[0], gamma[1], gamma[2], 1.0];
+    if srgb {
+        stewart_render::theme::linear(colour)
+    } else {
+        colour
     }
 }
 

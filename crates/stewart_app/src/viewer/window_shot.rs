@@ -7,7 +7,8 @@ use egui::epaint::ClippedPrimitive;
 use egui::epaint::textures::TexturesDelta;
 use stewart_render::readback::Readback;
 
-/// MSAA samples of the window and of its shots (the 3D pipelines are built to match).
+/// MSAA samples of the window and of its shots on a GPU (the 3D pipelines are built to
+/// match); a software rasteriser's window has one (see [`super::quality`]).
 pub const SAMPLES: u32 = 4;
 
 /// The pixel density factor that makes a window `width` physical pixels wide come out at
@@ -23,24 +24,31 @@ pub fn factor(scale: super::shots::ShotScale, width: u32) -> f32 {
 
 /// The render targets of one off-screen pass.
 struct Targets {
-    msaa: wgpu::Texture,
+    /// The multisampled colour (none with one sample: drawn into `resolve` itself).
+    msaa: Option<wgpu::Texture>,
     depth: wgpu::Texture,
     resolve: wgpu::Texture,
 }
 
 impl Targets {
-    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, [w, h]: [u32; 2]) -> Self {
+    fn new(
+        device: &wgpu::Device,
+        format: wgpu::TextureFormat,
+        [w, h]: [u32; 2],
+        samples: u32,
+    ) -> Self {
         let texture = |label, format, samples, usage| {
             stewart_render::targets::texture(device, label, [w, h], format, samples, usage)
         };
-        let samples = SAMPLES;
         Self {
-            msaa: texture(
-                "window-shot msaa",
-                format,
-                samples,
-                wgpu::TextureUsages::RENDER_ATTACHMENT,
-            ),
+            msaa: (samples > 1).then(|| {
+                texture(
+                    "window-shot msaa",
+                    format,
+                    samples,
+                    wgpu::TextureUsages::RENDER_ATTACHMENT,
+                )
+            }),
             depth: texture(
                 "window-shot depth",
                 stewart_render::renderer::DEPTH_FORMAT,
@@ -58,9 +66,11 @@ impl Targets {
 }
 
 /// Draw `primitives` (tessellated at `pixels_per_point`) into a `size`-pixel image on
-/// `clear`, applying `textures` (the font atlas at this density) first.
+/// `clear` with the window's `samples`, applying `textures` (the font atlas at this
+/// density) first.
 pub fn render(
     rs: &egui_wgpu::RenderState,
+    samples: u32,
     primitives: &[ClippedPrimitive],
     textures: &mut TexturesDelta,
     size: [u32; 2],
@@ -75,7 +85,7 @@ pub fn render(
         ));
     }
     let (device, queue) = (&rs.device, &rs.queue);
-    let targets = Targets::new(device, rs.target_format, size);
+    let targets = Targets::new(device, rs.target_format, size, samples);
     let screen = egui_wgpu::ScreenDescriptor {
         size_in_pixels: size,
         pixels_per_point,
@@ -93,14 +103,21 @@ pub fn render(
         renderer.update_buffers(device, queue, &mut encoder, primitives, &screen)
     };
     {
-        let msaa = targets.msaa.create_view(&Default::default());
+        let msaa = targets
+            .msaa
+            .as_ref()
+            .map(|t| t.create_view(&Default::default()));
         let resolve = targets.resolve.create_view(&Default::default());
+        let (view, resolve_target) = match &msaa {
+            Some(msaa) => (msaa, Some(&resolve)),
+            None => (&resolve, None),
+        };
         let depth = targets.depth.create_view(&Default::default());
         let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("window-shot"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &msaa,
-                resolve_target: Some(&resolve),
+                view,
+                resolve_target,
                 ops: wgpu::Operations {
                     load: wgpu::LoadOp::Clear(wgpu::Color {
                         r: f64::from(clear[0]),

@@ -39,8 +39,20 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         teleoperate(ui, state);
     }
     state.poll();
+    let unfilled = |frame: egui::Frame| {
+        if state.quality.window_clears {
+            frame.fill(egui::Color32::TRANSPARENT)
+        } else {
+            frame
+        }
+    };
+    let (side_frame, central_frame) = (
+        unfilled(egui::Frame::side_top_panel(ui.style())),
+        unfilled(egui::Frame::central_panel(ui.style())),
+    );
     if !state.look.presentation {
         egui::Panel::left("controls")
+            .frame(side_frame)
             .resizable(true)
             .default_size(320.0)
             .show(ui, |ui| {
@@ -59,6 +71,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                             &state.doc.scenario().motion.sampling,
                             state.look.lang,
                         );
+                        view::drawing(ui, &mut state.look);
                         ui.separator();
                         legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
                         ui.separator();
@@ -96,6 +109,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     // The plot's top edge is a splitter: drag it to give the plot more or less height.
     let plot = egui::Panel::bottom("plot")
+        .frame(side_frame)
         .resizable(true)
         .default_size(if state.look.presentation {
             280.0
@@ -103,12 +117,18 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             220.0
         })
         .show(ui, |ui| {
-            let shows = [state.plot_rolls(), state.link.commanded_pose().is_some()];
+            let shows = plot::Shows {
+                rolling: state.plot_rolls(),
+                commanded: state.link.commanded_pose().is_some(),
+                background: !state.quality.software,
+            };
             plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows);
         });
     state.look.plot_height = plot.response.rect.height();
     let plot_rect = plot.response.rect;
-    egui::CentralPanel::default().show(ui, |ui| view::show(ui, state));
+    egui::CentralPanel::default()
+        .frame(central_frame)
+        .show(ui, |ui| view::show(ui, state));
     splitter_grip(ui, plot_rect);
     export::window(ui.ctx(), state);
     file_dialogs::show(ui.ctx(), state);

@@ -19,13 +19,6 @@ pub(super) fn play_button(ui: &mut egui::Ui, playback: &mut Playback, t: Lang) {
     {
         playback.toggle();
     }
-    if let Some(rate) = playback.skipping_frames() {
-        ui.label(
-            egui::RichText::new(t.fmt("playback.skipping", &[("fps", &format!("{rate:.0}"))]))
-                .color(ui.visuals().warn_fg_color),
-        )
-        .on_hover_text(t.tr("playback.skipping_tip"));
-    }
 }
 
 /// The panel: playback alone, stepping through `sampling`'s samples.

@@ -66,6 +66,19 @@ pub fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]
     out
 }
 
+/// What the plot shows besides the scenario.
+#[derive(Clone, Copy, Debug)]
+pub struct Shows {
+    /// The rolling history of the values shown (manual mode, live vehicle motion through
+    /// the link) instead of the trajectory's.
+    pub rolling: bool,
+    /// Those values are the link's commanded ones.
+    pub commanded: bool,
+    /// The plot's own darker background (left out on a software rasteriser, where a fill
+    /// that large costs milliseconds a frame: the curves then lie on the panel's colour).
+    pub background: bool,
+}
+
 /// Curve width in points (presentation mode: the projector's, twice as wide).
 fn line_width(look: &Look) -> f32 {
     if look.presentation { 3.5 } else { 1.5 }
@@ -75,23 +88,25 @@ fn line_width(look: &Look) -> f32 {
 /// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
 /// resets the view).
 ///
-/// `rolling`: the plot shows the rolling history of the values shown (manual mode, live
-/// vehicle motion through the link) instead of the trajectory's; `commanded`: they are
-/// the link's commanded values.
 pub fn show(
     ui: &mut egui::Ui,
     doc: &Document,
     playback: &mut Playback,
     look: &mut Look,
-    [rolling, commanded]: [bool; 2],
+    shows: Shows,
 ) {
+    let Shows {
+        rolling,
+        commanded,
+        background,
+    } = shows;
     let legend_width = if look.presentation { 110.0 } else { 76.0 };
     let size = ui.available_size();
     ui.horizontal(|ui| {
         ui.allocate_ui(
             egui::vec2((size.x - legend_width).max(100.0), size.y),
             |ui| {
-                plot(ui, doc, playback, look, [rolling, commanded]);
+                plot(ui, doc, playback, look, [rolling, commanded, background]);
             },
         );
         ui.vertical(|ui| legend(ui, doc, look, rolling));
@@ -184,7 +199,7 @@ fn plot(
     doc: &Document,
     playback: &mut Playback,
     look: &Look,
-    [rolling, commanded]: [bool; 2],
+    [rolling, commanded, background]: [bool; 3],
 ) {
     let width = line_width(look);
     let scenario = doc.scenario();
@@ -213,6 +228,7 @@ fn plot(
         (false, false) => "leg lengths",
     })
     .allow_drag(rolling)
+    .show_background(background)
     .y_grid_spacer(super::plot_ticks::marks)
     .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
     .x_axis_label(x_label)

@@ -120,10 +120,10 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     state.frame_for_presentation(aspect);
     let t = state.look.lang;
     let theme = state.theme();
-    let bg = theme.background.map(|c| (c * 255.0) as u8);
-    ui.painter()
-        .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
     if let Some(missing) = &state.look.renderer_missing {
+        let bg = theme.background.map(|c| (c * 255.0) as u8);
+        ui.painter()
+            .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
         // Say why rather than show an empty view.
         ui.painter().text(
             rect.center(),
@@ -142,9 +142,15 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             egui::FontId::proportional(14.0),
             ui.visuals().warn_fg_color,
         );
+        status_line(ui, rect, state);
         return;
     }
     let list = state.draw_list(&theme);
+    // The view changes from frame to frame: playback, a stream, a drag or the wheel.
+    let moving = state.animating()
+        || response.dragged()
+        || ui.input(|i| i.smooth_scroll_delta != egui::Vec2::ZERO);
+    let drawn = state.quality.choose(moving);
     state.look.view_px = [
         (rect.width() * ui.ctx().pixels_per_point()).round() as u32,
         (rect.height() * ui.ctx().pixels_per_point()).round() as u32,
@@ -157,8 +163,73 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             camera: state.look.camera.fitted_to(aspect),
             theme,
             viewport: (rect.size() * ui.ctx().pixels_per_point()).into(),
+            drawn,
         },
     ));
+    status_line(ui, rect, state);
+}
+
+/// The view's status line, bottom left, in a place of its own (it never moves the
+/// toolbar): the frame times when asked for (Advanced), else the note that frames are
+/// skipped. Never in presentation mode.
+fn status_line(ui: &mut egui::Ui, rect: egui::Rect, state: &ViewerState) {
+    if state.look.presentation {
+        return;
+    }
+    let t = state.look.lang;
+    let (text, tip) = if state.look.frame_times {
+        (frame_words(t, &state.quality), "quality.show_tip")
+    } else if let Some(rate) = state.playback.skipping_frames() {
+        let words = t.fmt("playback.skipping", &[("fps", &format!("{rate:.0}"))]);
+        (words, "playback.skipping_tip")
+    } else {
+        return;
+    };
+    let colour = if state.look.is_light() {
+        Color32::from_rgb(150, 60, 0)
+    } else {
+        ui.visuals().warn_fg_color
+    };
+    let line = egui::Rect::from_min_max(
+        rect.left_bottom() + egui::vec2(10.0, -28.0),
+        rect.right_bottom() - egui::vec2(10.0, 6.0),
+    );
+    // Not selectable: a drag over it still turns the camera.
+    let label = egui::Label::new(egui::RichText::new(text).color(colour))
+        .selectable(false)
+        .truncate();
+    let layout = egui::Layout::left_to_right(egui::Align::Center);
+    ui.scope_builder(egui::UiBuilder::new().max_rect(line).layout(layout), |ui| {
+        ui.add(label).on_hover_text(t.tr(tip));
+    });
+}
+
+/// The frame-time readout: mean and 95th percentile of the last frames, and how the 3D
+/// view is drawn.
+fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::quality::Quality) -> String {
+    let how = t.tr(quality.words_key());
+    match quality.frame_times() {
+        Some((mean, p95)) => t.fmt(
+            "quality.frame_times",
+            &[
+                ("mean", &format!("{mean:.1}")),
+                ("p95", &format!("{p95:.1}")),
+                ("how", &how),
+            ],
+        ),
+        None => how.to_owned(),
+    }
+}
+
+/// The drawing settings (Advanced): the frame-time readout and what it says.
+pub fn drawing(ui: &mut egui::Ui, look: &mut crate::viewer::look::Look) {
+    let t = look.lang;
+    egui::CollapsingHeader::new(t.tr("quality.advanced"))
+        .default_open(look.expand_panels)
+        .show(ui, |ui| {
+            ui.checkbox(&mut look.frame_times, t.tr("quality.show"))
+                .on_hover_text(t.tr("quality.show_tip"));
+        });
 }
 
 /// Left drag orbits, right or middle drag pans, the wheel zooms toward the cursor.
