@@ -172,6 +172,23 @@ impl Renderer {
         theme: &Theme,
         viewport: [f32; 2],
     ) {
+        self.prepare_scaled(device, queue, view, list, camera, theme, viewport, 1.0);
+    }
+
+    /// [`Renderer::prepare`] for a picture at `scale` of the view it is shown in (a view
+    /// rendered smaller and filtered up): text keeps its size in the view.
+    #[allow(clippy::too_many_arguments)]
+    pub fn prepare_scaled(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        view: &mut PreparedView,
+        list: &DrawList,
+        camera: &OrbitCamera,
+        theme: &Theme,
+        viewport: [f32; 2],
+        scale: f32,
+    ) {
         let viewport = [viewport[0].max(1.0), viewport[1].max(1.0)];
         let aspect = viewport[0] / viewport[1];
         let eye = camera.eye();
@@ -260,7 +277,7 @@ impl Renderer {
         view.line_vertices
             .write(device, queue, bytemuck::cast_slice(&list.lines));
         view.keep_analysis(device, &list.analysis);
-        let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport);
+        let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport, scale);
         view.text_vertices
             .write(device, queue, bytemuck::cast_slice(&text));
         view.batches = Batches {
@@ -281,6 +298,7 @@ impl Renderer {
         list: &DrawList,
         view_proj: glam::Mat4,
         viewport: [f32; 2],
+        scale: f32,
     ) -> Vec<TextVertex> {
         if list.texts.is_empty() {
             return Vec::new();
@@ -289,7 +307,7 @@ impl Renderer {
             .atlas
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
-        let vertices = atlas.layout(self.fonts, &list.texts, view_proj, viewport);
+        let vertices = atlas.layout(self.fonts, &list.texts, view_proj, viewport, scale);
         if atlas.dirty {
             queue.write_texture(
                 wgpu::TexelCopyTextureInfo {

@@ -275,16 +275,20 @@ impl GlyphAtlas {
 
     /// The quads of `items` for a `viewport` (pixels) seen through `view_proj`: two
     /// triangles per glyph and per background box, in normalised device coordinates.
+    /// `scale`: the viewport is a picture at this scale of the view shown (text keeps the
+    /// size it has in the view: its line heights are the view's times `scale`).
     pub(crate) fn layout(
         &mut self,
         fonts: &Fonts,
         items: &[TextItem],
         view_proj: Mat4,
         viewport: [f32; 2],
+        scale: f32,
     ) -> Vec<TextVertex> {
         let mut out = Vec::new();
+        let shown = viewport.map(|v| v / scale.max(1e-3));
         for item in items {
-            let px = item.size.px(viewport);
+            let px = item.size.px(shown) * scale;
             let Some(origin) = anchor_px(item.anchor, view_proj, viewport, px) else {
                 continue;
             };
@@ -426,6 +430,7 @@ mod tests {
             &[item("L1", Anchor::Screen([100.0, 50.0]))],
             Mat4::IDENTITY,
             viewport,
+            1.0,
         );
         // Two glyphs, six vertices each, inside the box right of and below the anchor.
         assert_eq!(quads.len(), 12);
@@ -443,7 +448,7 @@ mod tests {
             background: Some([0.0, 0.0, 0.0, 0.5]),
             ..item("L1", Anchor::Screen([200.0, 100.0]))
         };
-        let quads = atlas.layout(fonts, &[boxed], Mat4::IDENTITY, viewport);
+        let quads = atlas.layout(fonts, &[boxed], Mat4::IDENTITY, viewport, 1.0);
         assert_eq!(quads.len(), 18);
         let centre = (quads[0].position[0] + quads[2].position[0]) / 2.0;
         assert!(centre.abs() < 0.02, "{centre}");
@@ -453,8 +458,27 @@ mod tests {
             &[item("L 1", Anchor::Screen([0.0, 0.0]))],
             Mat4::IDENTITY,
             viewport,
+            1.0,
         );
         assert_eq!(spaced.len(), 12);
+        // In a picture at half the view's size, text keeps its size in the view: half the
+        // pixels of the picture (even below the smallest size a view draws).
+        let small = TextItem {
+            size: TextSize::OfView(0.01),
+            ..item("L", Anchor::Screen([0.0, 0.0]))
+        };
+        let height = |quads: &[TextVertex], viewport: [f32; 2]| {
+            let ys = quads
+                .iter()
+                .map(|v| (1.0 - v.position[1]) * 0.5 * viewport[1]);
+            let (lo, hi) = ys.fold((f32::MAX, f32::MIN), |(a, b), y| (a.min(y), b.max(y)));
+            hi - lo
+        };
+        let full = atlas.layout(fonts, &[small.clone()], Mat4::IDENTITY, viewport, 1.0);
+        let half_viewport = viewport.map(|v| v / 2.0);
+        let half = atlas.layout(fonts, &[small], Mat4::IDENTITY, half_viewport, 0.5);
+        let (h_full, h_half) = (height(&full, viewport), height(&half, half_viewport));
+        assert!((h_half - h_full / 2.0).abs() <= 1.0, "{h_full} {h_half}");
     }
 
     #[test]
@@ -470,14 +494,14 @@ mod tests {
         };
         let view_proj = camera.view_proj(2.0);
         let ahead = item("A", Anchor::World(Vec3::ZERO, [0.0, 0.0]));
-        let quads = atlas.layout(fonts, &[ahead], view_proj, [400.0, 200.0]);
+        let quads = atlas.layout(fonts, &[ahead], view_proj, [400.0, 200.0], 1.0);
         // The origin projects to the middle of the view: the glyph starts there.
         let x = quads.iter().map(|v| v.position[0]).fold(f32::MAX, f32::min);
         assert!(x > -0.05 && x < 0.1, "{x}");
         let behind = item("A", Anchor::World(camera.eye() * 2.0, [0.0, 0.0]));
         assert!(
             atlas
-                .layout(fonts, &[behind], view_proj, [400.0, 200.0])
+                .layout(fonts, &[behind], view_proj, [400.0, 200.0], 1.0)
                 .is_empty()
         );
     }

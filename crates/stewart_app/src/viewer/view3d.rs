@@ -121,7 +121,12 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
         let view = views
             .entry(self.view)
             .or_insert_with(|| renderer.new_view(device));
-        renderer.prepare(
+        let scale = if drawn == Drawn::Scaled {
+            super::quality::SCALE
+        } else {
+            1.0
+        };
+        renderer.prepare_scaled(
             device,
             queue,
             view,
@@ -129,6 +134,7 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
             &self.camera,
             &self.theme,
             viewport,
+            scale,
         );
         let Some(full) = full else {
             return Vec::new();
