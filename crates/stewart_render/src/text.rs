@@ -474,7 +474,13 @@ mod tests {
             let (lo, hi) = ys.fold((f32::MAX, f32::MIN), |(a, b), y| (a.min(y), b.max(y)));
             hi - lo
         };
-        let full = atlas.layout(fonts, &[small.clone()], Mat4::IDENTITY, viewport, 1.0);
+        let full = atlas.layout(
+            fonts,
+            std::slice::from_ref(&small),
+            Mat4::IDENTITY,
+            viewport,
+            1.0,
+        );
         let half_viewport = viewport.map(|v| v / 2.0);
         let half = atlas.layout(fonts, &[small], Mat4::IDENTITY, half_viewport, 0.5);
         let (h_full, h_half) = (height(&full, viewport), height(&half, half_viewport));
