@@ -97,3 +97,74 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     h.state_mut().editor().apply(scale, Some(0.8));
     assert_eq!(h.state().scenario().motion, before.motion);
 }
+
+#[test]
+fn the_cueing_plots_read_with_a_legend_below_and_the_wheel_over_them_scrolls_the_panel() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.path().join("braking.csv");
+    std::fs::write(&path, braking().0).unwrap_or_else(|e| panic!("{e}"));
+    // A window of ordinary height: the side panel scrolls.
+    let mut h = crate::harness("seed");
+    drop_file(&mut h, &path);
+    // Scroll the side panel down (the wheel over its words, which no longer includes a
+    // table that scrolls on its own) until the Motion cueing header is in sight, open it,
+    // and scroll on until the force plot's legend is in sight.
+    for _ in 0..40 {
+        let header = h.query_by_label("Motion cueing").map(|n| n.rect());
+        if header.is_some_and(|r| r.bottom() < 700.0) {
+            break;
+        }
+        wheel(&mut h, egui::pos2(150.0, 400.0), -100.0);
+    }
+    h.get_by_label("Motion cueing").click();
+    h.run();
+    for _ in 0..40 {
+        if h.query_by_label("vehicle x").is_some() {
+            break;
+        }
+        wheel(&mut h, egui::pos2(150.0, 400.0), -100.0);
+    }
+    // Then a little further, so that the force plot is wholly in sight.
+    wheel(&mut h, egui::pos2(150.0, 400.0), -150.0);
+    crate::look(&mut h, "cueing-scrolled.png");
+    // Which line is which, said below the data.
+    assert!(
+        h.query_by_label_contains("Dashed: the vehicle; solid:")
+            .is_some()
+    );
+    let legend = h.get_by_label("vehicle x").rect();
+    for words in ["platform x", "vehicle y", "platform y"] {
+        let r = h.get_by_label(words).rect();
+        assert!((r.center().y - legend.center().y).abs() < 30.0, "{words}");
+    }
+    // The wheel over the force plot (just above its legend) scrolls the side panel.
+    let header = h.get_by_label("Motion cueing").rect();
+    let over_plot = egui::pos2(legend.left() + 120.0, legend.top() - 80.0);
+    wheel(&mut h, over_plot, -120.0);
+    let moved = h.get_by_label("Motion cueing").rect();
+    assert!(
+        moved.top() < header.top() - 40.0,
+        "the panel did not scroll: {header:?} → {moved:?}"
+    );
+    crate::look(&mut h, "cueing-legend.png");
+}
+
+/// Turn the wheel by `dy` points at `at` and draw until the smooth scroll has settled.
+fn wheel(
+    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::state::ViewerState>,
+    at: egui::Pos2,
+    dy: f32,
+) {
+    h.hover_at(at);
+    h.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: egui::vec2(0.0, dy),
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Wheel,
+        modifiers: egui::Modifiers::NONE,
+    });
+    for _ in 0..30 {
+        h.step();
+    }
+    h.run();
+}

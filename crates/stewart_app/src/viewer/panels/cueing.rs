@@ -5,10 +5,11 @@
 use std::sync::PoisonError;
 
 use egui::RichText;
-use egui_plot::{Line, LineStyle, Plot, PlotPoints, VLine};
+use egui_plot::{Line, LineStyle, PlotPoints, VLine};
 use stewart_kinematics::settings::{self, Group};
 
 use super::plot::leg_colour;
+use super::side_plot;
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::Lang;
 use crate::live_cue::{CueCounts, TracePoint};
@@ -16,7 +17,7 @@ use crate::viewer::editor::Editor;
 use crate::viewer::vehicle::VehicleSource;
 
 /// Height of each plot, points.
-const PLOT_HEIGHT: f32 = 130.0;
+const PLOT_HEIGHT: f32 = 200.0;
 
 /// The panel; `now` is the scenario time shown (the plots' marker); `live`, the link's
 /// live vehicle input while it streams one.
@@ -116,17 +117,17 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
             plot.vline(VLine::new(t.tr("plot.now"), now).color(ink));
         }
     };
-    Plot::new("cueing force")
-        .height(PLOT_HEIGHT)
-        .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
+    let dashed = LineStyle::dashed_loose();
+    side_plot::plot("cueing force", PLOT_HEIGHT)
         .y_axis_label(t.tr("cueing.force_axis"))
+        .x_axis_label(t.tr("plot.time"))
         .show(ui, |plot| {
             for (axis, colour) in [(0, leg_colour(0)), (1, leg_colour(1))] {
                 let words = ["cueing.vehicle_x", "cueing.vehicle_y"][axis];
                 plot.line(
                     Line::new(t.tr(words), series(&|k| c.vehicle[k][axis]))
                         .color(colour)
-                        .style(LineStyle::dashed_loose()),
+                        .style(dashed),
                 );
                 let words = ["cueing.platform_x", "cueing.platform_y"][axis];
                 plot.line(
@@ -137,9 +138,23 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
             }
             marker(plot);
         });
-    Plot::new("cueing tilt")
-        .height(PLOT_HEIGHT)
-        .legend(egui_plot::Legend::default().position(egui_plot::Corner::LeftBottom))
+    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::Entry {
+        colour: leg_colour(axis),
+        words: t.tr(words),
+        dashed,
+        width: if dashed { 1.5 } else { 2.0 },
+    };
+    side_plot::legend(
+        ui,
+        &[
+            entry(0, "cueing.vehicle_x", true),
+            entry(0, "cueing.platform_x", false),
+            entry(1, "cueing.vehicle_y", true),
+            entry(1, "cueing.platform_y", false),
+        ],
+    );
+    ui.label(RichText::new(t.tr("cueing.dashed_solid")).small());
+    side_plot::plot("cueing tilt", PLOT_HEIGHT)
         .y_axis_label(t.tr("cueing.tilt_axis"))
         .x_axis_label(t.tr("plot.time"))
         .show(ui, |plot| {
@@ -152,4 +167,11 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
             }
             marker(plot);
         });
+    side_plot::legend(
+        ui,
+        &[
+            entry(2, "cueing.tilt_roll", false),
+            entry(3, "cueing.tilt_pitch", false),
+        ],
+    );
 }

@@ -250,13 +250,10 @@ fn tracking_plot(ui: &mut egui::Ui, link: &LiveLink, q: Quantity, t: Lang) {
     let rows = link.tracking();
     ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
     // Zero always in sight: an error is read against it, not against its own wobble.
-    egui_plot::Plot::new("link-tracking")
-        .height(120.0)
+    super::side_plot::plot("link-tracking", 160.0)
         .x_axis_label(t.tr("plot.time"))
         .y_axis_label(unit)
         .include_y(0.0)
-        .allow_scroll(false)
-        .allow_drag(false)
         .show(ui, |plot| {
             for k in 0..6 {
                 let points: egui_plot::PlotPoints = rows

@@ -15,6 +15,7 @@ mod plot;
 mod plot_ticks;
 mod reach;
 mod scenario;
+mod side_plot;
 mod view;
 mod widgets;
 mod workspace;

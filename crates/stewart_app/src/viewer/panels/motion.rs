@@ -255,7 +255,7 @@ fn sinusoid(ui: &mut egui::Ui, ed: &mut Editor) {
 }
 
 /// Keyframe rows in sight at once; more scroll.
-const KEY_ROWS_SHOWN: f32 = 12.0;
+const KEY_ROWS_SHOWN: usize = 12;
 
 /// The table of `keys` (time and pose, editable); whether one was changed.
 fn key_table(ui: &mut egui::Ui, t: Lang, keys: &mut [Keyframe]) -> bool {
@@ -315,14 +315,10 @@ fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
                 .changed();
         }
     });
-    // A long table (a recording played as poses) scrolls, drawing only the rows in sight.
-    let row_height = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
-    egui::ScrollArea::vertical()
-        .id_salt("keyframes")
-        .max_height(KEY_ROWS_SHOWN * row_height)
-        .show_rows(ui, row_height, keys.len(), |ui, rows| {
-            changed |= key_table(ui, t, &mut keys[rows]);
-        });
+    // A long table (a recording played as poses) is shown a page at a time: a table that
+    // scrolled inside the side panel took the wheel from it.
+    let rows = page_of_rows(ui, t, keys.len());
+    changed |= key_table(ui, t, &mut keys[rows]);
     ui.horizontal(|ui| {
         if ui
             .button(t.tr("motion.add_key"))
@@ -352,4 +348,43 @@ fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
             Ok(())
         });
     }
+}
+
+/// The rows of a `len`-row table on the page shown ([`KEY_ROWS_SHOWN`] a page), with the
+/// page controls above it when there is more than one page (kept in egui's memory).
+fn page_of_rows(ui: &mut egui::Ui, t: Lang, len: usize) -> std::ops::Range<usize> {
+    let pages = len.div_ceil(KEY_ROWS_SHOWN).max(1);
+    let id = ui.scope_id().with("keyframe page");
+    let mut page: usize = ui.data(|d| d.get_temp(id)).unwrap_or(0);
+    page = page.min(pages - 1);
+    if pages > 1 {
+        let shown = page;
+        let first = shown * KEY_ROWS_SHOWN;
+        let last = (first + KEY_ROWS_SHOWN).min(len);
+        ui.horizontal(|ui| {
+            let targets = [
+                ("«", 0, shown > 0),
+                ("‹", shown.saturating_sub(1), shown > 0),
+                ("", 0, false),
+                ("›", (shown + 1).min(pages - 1), shown + 1 < pages),
+                ("»", pages - 1, shown + 1 < pages),
+            ];
+            for (words, to, enabled) in targets {
+                if words.is_empty() {
+                    ui.label(t.fmt(
+                        "motion.rows_of",
+                        &[("first", &(first + 1)), ("last", &last), ("count", &len)],
+                    ));
+                } else if ui
+                    .add_enabled(enabled, egui::Button::new(words).small())
+                    .clicked()
+                {
+                    page = to;
+                }
+            }
+        });
+    }
+    ui.data_mut(|d| d.insert_temp(id, page));
+    let first = page * KEY_ROWS_SHOWN;
+    first..(first + KEY_ROWS_SHOWN).min(len)
 }

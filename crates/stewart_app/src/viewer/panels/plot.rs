@@ -127,21 +127,7 @@ fn legend(ui: &mut egui::Ui, doc: &Document, look: &mut Look, rolling: bool) {
     let width = line_width(look);
     let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
         ui.horizontal(|ui| {
-            let (rect, _) = ui.allocate_exact_size(egui::vec2(22.0, 12.0), egui::Sense::hover());
-            let y = rect.center().y;
-            let stroke = egui::Stroke::new(width, colour);
-            if dashed {
-                for k in 0..3 {
-                    let x = rect.left() + 8.0 * k as f32;
-                    ui.painter()
-                        .line_segment([egui::pos2(x, y), egui::pos2(x + 4.0, y)], stroke);
-                }
-            } else {
-                ui.painter().line_segment(
-                    [egui::pos2(rect.left(), y), egui::pos2(rect.right(), y)],
-                    stroke,
-                );
-            }
+            super::side_plot::swatch(ui, colour, dashed, width);
             ui.label(text);
         });
     };

@@ -1,0 +1,62 @@
+//! Plots in the side panel: the wheel scrolls the panel, not the plot (Ctrl+wheel zooms,
+//! a double-click restores the view); values on both axes at 1-2-5 steps; and a
+//! legend below the data saying which line is which (dashed or solid).
+
+use egui::Color32;
+use egui_plot::Plot;
+
+/// A side-panel plot `height` points high with the live plot's value-axis ticks, the wheel
+/// left to the panel and drags to the panel's scrolling.
+pub fn plot(id: &str, height: f32) -> Plot<'static> {
+    Plot::new(id)
+        .height(height)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .x_grid_spacer(super::plot_ticks::marks)
+        .x_axis_formatter(|mark, _| super::plot_ticks::label(mark))
+        .y_grid_spacer(super::plot_ticks::marks)
+        .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
+}
+
+/// One entry of a legend: colour, words, dashed or solid, line width.
+pub struct Entry<'a> {
+    /// The line's colour.
+    pub colour: Color32,
+    /// What it is.
+    pub words: &'a str,
+    /// Dashed (else solid).
+    pub dashed: bool,
+    /// The line's width, points.
+    pub width: f32,
+}
+
+/// A legend below a plot, outside its data: a short line drawn as the curve is, and its
+/// words, wrapping to the panel's width.
+pub fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
+    ui.horizontal_wrapped(|ui| {
+        for e in entries {
+            swatch(ui, e.colour, e.dashed, e.width);
+            ui.label(e.words);
+            ui.add_space(6.0);
+        }
+    });
+}
+
+/// A 22 × 12 point swatch of a line: dashed or solid.
+pub fn swatch(ui: &mut egui::Ui, colour: Color32, dashed: bool, width: f32) {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(22.0, 12.0), egui::Sense::hover());
+    let y = rect.center().y;
+    let stroke = egui::Stroke::new(width, colour);
+    if dashed {
+        for k in 0..3 {
+            let x = rect.left() + 8.0 * k as f32;
+            ui.painter()
+                .line_segment([egui::pos2(x, y), egui::pos2(x + 4.0, y)], stroke);
+        }
+    } else {
+        ui.painter().line_segment(
+            [egui::pos2(rect.left(), y), egui::pos2(rect.right(), y)],
+            stroke,
+        );
+    }
+}
