@@ -348,3 +348,50 @@ fn hostile_files_are_refused_and_change_nothing() {
         assert_eq!(state.scenario(), &before, "{}", path.display());
     }
 }
+
+#[test]
+fn a_long_status_line_wraps_and_the_side_panel_keeps_its_width() {
+    let mut h = crate::harness("seed");
+    let pause_at = h.get_by_label("Pause").rect().left();
+    let long = format!(
+        "Opened /home/someone/{}/scenario.toml: every word of this line is long enough to \
+         widen a panel that follows its content",
+        "a-very-long-folder-name".repeat(6)
+    );
+    h.state_mut().files.status = Some(Ok(long));
+    for _ in 0..5 {
+        h.run();
+    }
+    // The 3D view's toolbar did not move: the panel did not grow.
+    let now = h.get_by_label("Pause").rect().left();
+    assert!((now - pause_at).abs() < 1.0, "{pause_at} → {now}");
+    // Nor can it be dragged wider than its cap (480 points at most; the width is saved in
+    // the session, so it only ever grew).
+    let grip = egui::pos2(now - 12.0, 400.0);
+    h.hover_at(grip);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: grip,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    for x in [500.0, 700.0, 900.0] {
+        h.hover_at(egui::pos2(x, 400.0));
+        h.run();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: egui::pos2(900.0, 400.0),
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    let dragged = h.get_by_label("Pause").rect().left();
+    assert!(
+        dragged > now + 50.0,
+        "the edge was not dragged: {now} → {dragged}"
+    );
+    assert!(dragged < 500.0, "{dragged}");
+}

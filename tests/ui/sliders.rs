@@ -7,12 +7,24 @@ use stewart_kinematics::settings;
 
 use crate::harness;
 
-/// Drag from `from` by `dx` points, with `modifiers` held.
+/// Drag from `from` by `dx` points, with `modifiers` held until the button is released.
 fn drag(
     h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
     from: egui::Pos2,
     dx: f32,
     modifiers: egui::Modifiers,
+) {
+    drag_letting_go(h, from, dx, modifiers, false);
+}
+
+/// [`drag`], letting the modifiers go before the button when `early` (in the same frame,
+/// as a hand lets go of both at once).
+fn drag_letting_go(
+    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
+    from: egui::Pos2,
+    dx: f32,
+    modifiers: egui::Modifiers,
+    early: bool,
 ) {
     h.event(egui::Event::ModifiersChanged(modifiers));
     h.hover_at(from);
@@ -28,11 +40,18 @@ fn drag(
         h.hover_at(from + egui::vec2(dx * k as f32 / 4.0, 0.0));
         h.run();
     }
+    if early {
+        h.event(egui::Event::ModifiersChanged(egui::Modifiers::NONE));
+    }
     h.event(egui::Event::PointerButton {
         pos: from + egui::vec2(dx, 0.0),
         button: egui::PointerButton::Primary,
         pressed: false,
-        modifiers,
+        modifiers: if early {
+            egui::Modifiers::NONE
+        } else {
+            modifiers
+        },
     });
     h.event(egui::Event::ModifiersChanged(egui::Modifiers::NONE));
     h.run();
@@ -99,6 +118,29 @@ fn shift_drags_move_a_tenth_as_far() {
         "{} vs {at}",
         duration(&h)
     );
+}
+
+#[test]
+fn a_fine_drag_keeps_its_value_when_shift_is_let_go_with_the_button_and_is_one_undo_step() {
+    let mut h = harness("paired");
+    let before = duration(&h);
+    let rect = h.get_by_role_and_label(Role::Slider, "duration (s)").rect();
+    let grab = egui::pos2(rect.left() + 10.0, rect.center().y);
+    drag_letting_go(&mut h, grab, 40.0, egui::Modifiers::SHIFT, true);
+    let moved = duration(&h) - before;
+    // A fine step (the plain slider would have jumped to the pointer near the left end).
+    let setting = settings::find("trajectory.duration_s").unwrap_or_else(|e| panic!("{e}"));
+    let range = setting.range_for(h.state().scenario());
+    let width = f64::from(h.ctx.global_style().spacing.slider_width);
+    let expected = 0.1 * 40.0 / width * (range.end() - range.start());
+    assert!(
+        (moved - expected).abs() < 0.15 * expected,
+        "{moved} vs {expected}"
+    );
+    // One gesture, one undo step.
+    assert!(h.state_mut().undo_edit());
+    assert_eq!(duration(&h), before);
+    assert!(!h.state_mut().undo_edit(), "a second undo step");
 }
 
 #[test]

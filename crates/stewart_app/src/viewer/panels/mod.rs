@@ -29,6 +29,10 @@ use super::teleop;
 /// The smallest text the viewer draws, points (body text is 12.5).
 pub const SMALLEST_TEXT: f32 = 11.0;
 
+/// The side panel's narrowest and widest, points.
+const MIN_SIDE: f32 = 260.0;
+const MAX_SIDE: f32 = 480.0;
+
 /// Text sizes are multiplied by this in presentation mode.
 const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
@@ -52,10 +56,14 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         unfilled(egui::Frame::central_panel(ui.style())),
     );
     if !state.look.presentation {
+        // Capped: a long status line wraps instead of widening the panel (the width is
+        // remembered between runs, so it only ever grew).
+        let widest = (0.4 * ui.ctx().content_rect().width()).clamp(MIN_SIDE, MAX_SIDE);
         egui::Panel::left("controls")
             .frame(side_frame)
             .resizable(true)
             .default_size(320.0)
+            .size_range(MIN_SIDE..=widest)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical()
                     .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)

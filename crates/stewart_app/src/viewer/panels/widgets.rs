@@ -88,6 +88,16 @@ pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
                     .union(slid.interact(egui::Sense::click()))
                     .on_hover_text(slider_tip(t, setting, scenario));
                 let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
+                // A drag that went fine stays fine until its button is up, even when Shift is
+                // let go first (the plain slider would then jump to the pointer, as a
+                // second undo step).
+                let fine_id = slid.id.with("fine drag");
+                let was_fine = ui.data(|d| d.get_temp::<bool>(fine_id)).unwrap_or(false);
+                let fine = fine || (held && was_fine);
+                let still_fine = fine && slid.is_pointer_button_down_on();
+                if still_fine != was_fine {
+                    ui.data_mut(|d| d.insert_temp(fine_id, still_fine));
+                }
                 if fine && held {
                     // Fine steps from where the value is, by the pointer's motion alone
                     // (the plain slider would jump to the pointer).
