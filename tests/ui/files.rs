@@ -351,7 +351,7 @@ fn hostile_files_are_refused_and_change_nothing() {
 
 #[test]
 fn a_long_status_line_wraps_and_the_side_panel_keeps_its_width() {
-    let mut h = crate::harness("seed");
+    let mut h = harness("seed");
     let pause_at = h.get_by_label("Pause").rect().left();
     let long = format!(
         "Opened /home/someone/{}/scenario.toml: every word of this line is long enough to \
