@@ -440,3 +440,71 @@ fn buttons_explain_themselves_on_hover() {
         );
     }
 }
+
+/// Presentation mode in the default window: the plot takes at most a third of the height
+/// (G hides it and shows it again), the readout is as large as the interface's text, and
+/// leaving gives back the plot's height and the camera exactly.
+#[test]
+fn presentation_enters_and_leaves_exactly_with_the_plot_a_third_at_most() {
+    let mut h = harness("seed");
+    h.state_mut().look.readouts = true;
+    // The user's own plot height: dragged up to 420 points (more than a third of 800).
+    let edge = h
+        .get_all_by_role(Role::Splitter)
+        .map(|n| n.rect())
+        .find(|r| r.width() > r.height())
+        .unwrap_or_else(|| panic!("no splitter under the view"))
+        .center()
+        - egui::vec2(0.0, 5.0);
+    let up = egui::vec2(0.0, -200.0);
+    h.hover_at(edge);
+    h.run();
+    h.drag_at(edge);
+    h.run();
+    h.hover_at(edge + up);
+    h.run();
+    h.drop_at(edge + up);
+    h.run();
+    let plot_before = h.state().look.plot_height;
+    assert!(plot_before > 800.0 / 3.0, "{plot_before}");
+    let camera_before = h.state().look.camera;
+    let readout_size = |h: &egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>| {
+        let s = h.state();
+        let list = s.draw_list(&s.theme());
+        let view = s.look.view_px.map(|v| v as f32);
+        list.texts
+            .last()
+            .map(|t| t.size.px(view) / view[0].min(view[1]))
+            .unwrap_or_else(|| panic!("no readout"))
+    };
+    let readout = readout_size(&h);
+    h.key_press(egui::Key::P);
+    h.run();
+    h.run();
+    assert!(h.state().look.presentation);
+    let plot = h.state().look.plot_height;
+    assert!(plot <= 800.0 / 3.0 + 1.0, "{plot}");
+    assert!(
+        (readout_size(&h) / readout - 1.5).abs() < 1e-3,
+        "the readout grows with the text"
+    );
+    // G: the view alone, then the plot again.
+    h.key_press(egui::Key::G);
+    h.run();
+    assert_eq!(h.state().look.plot_height, 0.0);
+    assert!(h.query_by_label("time (s)").is_none(), "the plot is hidden");
+    h.key_press(egui::Key::G);
+    h.run();
+    assert!(h.state().look.plot_height > 0.0);
+    // Leaving: exactly as before.
+    h.key_press(egui::Key::P);
+    h.run();
+    h.run();
+    assert!(!h.state().look.presentation);
+    assert_eq!(h.state().look.camera, camera_before);
+    let plot_after = h.state().look.plot_height;
+    assert!(
+        (plot_after - plot_before).abs() < 1.0,
+        "{plot_before} → {plot_after}"
+    );
+}

@@ -79,12 +79,18 @@ pub fn lines(
 
 /// The readout as text for the renderer, in `theme`'s colours.
 pub fn item(text: String, theme: &Theme) -> TextItem {
+    item_scaled(text, theme, 1.0)
+}
+
+/// [`item`] with its text `scale` times as large (presentation mode: as large as the
+/// interface's text there).
+pub fn item_scaled(text: String, theme: &Theme, scale: f32) -> TextItem {
     let [r, g, b, _] = theme.background;
     TextItem {
         text,
         anchor: Anchor::Fraction(CORNER),
         align: [0.0, 0.0],
-        size: TextSize::OfView(SIZE),
+        size: TextSize::OfView(SIZE * scale),
         colour: theme.joint,
         background: Some([r, g, b, 0.8]),
     }

@@ -40,7 +40,7 @@ pub fn default_camera(scenario: &Scenario) -> OrbitCamera {
 }
 
 /// Share of the view's half-width and half-height kept free around a framed motion.
-const MOTION_MARGIN: f32 = 0.08;
+pub const MOTION_MARGIN: f32 = 0.08;
 
 /// Most poses sampled to frame a motion; longer exports take evenly spaced ones.
 const FRAMING_POSES: usize = 1024;

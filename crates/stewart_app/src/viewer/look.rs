@@ -19,6 +19,16 @@ pub struct Look {
     /// The camera before presentation mode re-framed the scene for its larger view, put
     /// back when presentation mode ends (`None` outside it).
     pub camera_before_presentation: Option<OrbitCamera>,
+    /// The camera presentation mode framed and the view's aspect it framed it for: while
+    /// the camera is left as framed, a new aspect (the layout settling, a resized window)
+    /// frames it again.
+    pub presentation_framed: Option<(OrbitCamera, f32)>,
+    /// The plot's height before presentation mode, given back when it ends.
+    pub plot_height_before_presentation: Option<f32>,
+    /// The plot's height to set at the next frame (leaving presentation mode).
+    pub plot_height_to_restore: Option<f32>,
+    /// Presentation mode shows the view alone (G shows the plot again).
+    pub plot_hidden: bool,
     /// Full screen (F11); the window follows it.
     pub fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
@@ -57,6 +67,10 @@ impl Look {
             light_theme: false,
             presentation: false,
             camera_before_presentation: None,
+            presentation_framed: None,
+            plot_height_before_presentation: None,
+            plot_height_to_restore: None,
+            plot_hidden: false,
             fullscreen: false,
             expand_panels: false,
             show_path: true,

@@ -205,7 +205,13 @@ impl ViewerState {
                 time,
                 &self.pose(),
             );
-            list.texts.push(crate::readout::item(text, theme));
+            let scale = if self.look.presentation {
+                crate::viewer::panels::PRESENTATION_TEXT_SCALE
+            } else {
+                1.0
+            };
+            list.texts
+                .push(crate::readout::item_scaled(text, theme, scale));
         }
         list
     }
@@ -585,45 +591,88 @@ impl ViewerState {
 
     /// Presentation mode's framing, called by the view with its `aspect` (width / height)
     /// each frame: on entering, the camera (its angles kept) is fitted to everything the
-    /// motion sweeps (the pose shown, in manual mode) with the controls hidden; on leaving,
-    /// the camera from before comes back.
+    /// motion sweeps (the pose shown, in manual mode) with the controls hidden, and fitted
+    /// again while the layout settles or the window changes, as long as nobody moved it;
+    /// on leaving, the camera and the plot's height from before come back.
     pub fn frame_for_presentation(&mut self, aspect: f32) {
         match (self.look.presentation, self.look.camera_before_presentation) {
             (true, None) => {
-                let before = self.look.camera;
-                self.look.camera_before_presentation = Some(before);
-                let times: Vec<f64> = self.doc.scenario().motion.sampling.times().collect();
-                let overlays = stewart_render::Overlays {
-                    platform_axes: self.look.platform_axes,
-                    ..stewart_render::Overlays::default()
-                };
-                let angles = [before.azimuth_deg, before.elevation_deg];
-                let camera = match self.playback.mode {
-                    MotionMode::Trajectory => crate::export::frames::motion_camera_from(
-                        self.doc.scenario(),
-                        &times,
-                        &overlays,
-                        aspect,
-                        0.0,
-                        angles,
-                    ),
-                    MotionMode::Manual => crate::export::frames::poses_camera(
-                        self.doc.scenario(),
-                        std::iter::once(self.pose()),
-                        &overlays,
-                        aspect,
-                        0.0,
-                        angles,
-                    ),
-                };
-                self.look.camera = camera;
+                self.look.camera_before_presentation = Some(self.look.camera);
+                self.frame_presented(aspect);
+            }
+            (true, Some(_)) => {
+                let refit = self
+                    .look
+                    .presentation_framed
+                    .is_some_and(|(camera, framed)| {
+                        camera == self.look.camera && (aspect / framed - 1.0).abs() > 0.01
+                    });
+                if refit {
+                    self.frame_presented(aspect);
+                }
             }
             (false, Some(before)) => {
                 self.look.camera = before;
                 self.look.camera_before_presentation = None;
+                self.look.presentation_framed = None;
+                self.look.plot_height_to_restore = self.look.plot_height_before_presentation.take();
             }
-            _ => {}
+            (false, None) => {}
         }
+    }
+
+    /// Fit the camera, its angles kept, to the motion (or the pose shown) in a view of
+    /// `aspect`, with the workspace when it is shown.
+    fn frame_presented(&mut self, aspect: f32) {
+        let before = self.look.camera;
+        let times: Vec<f64> = self.doc.scenario().motion.sampling.times().collect();
+        let overlays = stewart_render::Overlays {
+            platform_axes: self.look.platform_axes,
+            ..stewart_render::Overlays::default()
+        };
+        let angles = [before.azimuth_deg, before.elevation_deg];
+        let mut camera = match self.playback.mode {
+            MotionMode::Trajectory => crate::export::frames::motion_camera_from(
+                self.doc.scenario(),
+                &times,
+                &overlays,
+                aspect,
+                0.0,
+                angles,
+            ),
+            MotionMode::Manual => crate::export::frames::poses_camera(
+                self.doc.scenario(),
+                std::iter::once(self.pose()),
+                &overlays,
+                aspect,
+                0.0,
+                angles,
+            ),
+        };
+        // The workspace's surface, when shown, is in the picture too.
+        if self.workspace.show
+            && let Some(outcome) = &self.workspace.latest
+        {
+            let points: Vec<glam::Vec3> = outcome
+                .surface
+                .vertices
+                .iter()
+                .map(|v| glam::Vec3::from(v.position))
+                .collect();
+            if let Some(wide) = OrbitCamera::fitting_points(
+                angles[0],
+                angles[1],
+                &points,
+                aspect,
+                crate::export::frames::MOTION_MARGIN,
+                0.0,
+            ) && wide.distance > camera.distance
+            {
+                camera = wide;
+            }
+        }
+        self.look.camera = camera;
+        self.look.presentation_framed = Some((camera, aspect));
     }
 
     /// Step playback by one trajectory sample (`direction` ±1).

@@ -29,12 +29,18 @@ use super::teleop;
 /// The smallest text the viewer draws, points (body text is 12.5).
 pub const SMALLEST_TEXT: f32 = 11.0;
 
+/// The plot's lowest height, points.
+const MIN_PLOT: f32 = 80.0;
+
+/// The plot's height at first, points.
+const PLOT_HEIGHT: f32 = 220.0;
+
 /// The side panel's narrowest and widest, points.
 const MIN_SIDE: f32 = 260.0;
 const MAX_SIDE: f32 = 480.0;
 
 /// Text sizes are multiplied by this in presentation mode.
-const PRESENTATION_TEXT_SCALE: f32 = 1.5;
+pub const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
 /// The whole window.
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -116,29 +122,56 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     });
             });
     }
-    // The plot's top edge is a splitter: drag it to give the plot more or less height.
-    let plot = egui::Panel::bottom("plot")
+    // The plot's top edge is a splitter: drag it to give the plot more or less height. In
+    // presentation mode it takes at most a third of the window (G hides it); leaving gives
+    // the height from before back.
+    let height = ui.ctx().content_rect().height();
+    let mut plot_panel = egui::Panel::bottom("plot")
         .frame(side_frame)
         .resizable(true)
         .default_size(if state.look.presentation {
-            280.0
+            (height / 4.0).max(MIN_PLOT)
         } else {
-            220.0
-        })
-        .show(ui, |ui| {
-            let shows = plot::Shows {
-                rolling: state.plot_rolls(),
-                commanded: state.link.commanded_pose().is_some(),
-                background: !state.quality.software,
-            };
-            plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows);
+            PLOT_HEIGHT
         });
-    state.look.plot_height = plot.response.rect.height();
-    let plot_rect = plot.response.rect;
+    if state.look.presentation {
+        // The height from before, taken before this frame's plot (a third at most) is
+        // drawn (started in presentation mode: the default height).
+        if state.look.plot_height_before_presentation.is_none() {
+            let before = state.look.plot_height;
+            state.look.plot_height_before_presentation = Some(if before >= MIN_PLOT {
+                before
+            } else {
+                PLOT_HEIGHT
+            });
+        }
+        plot_panel = plot_panel.size_range(MIN_PLOT..=(height / 3.0).max(MIN_PLOT));
+    } else if let Some(before) = state.look.plot_height_to_restore.take() {
+        plot_panel = plot_panel.exact_size(before.max(MIN_PLOT));
+    }
+    let plot_hidden = state.look.presentation && state.look.plot_hidden;
+    let plot_rect = if plot_hidden {
+        egui::Rect::NOTHING
+    } else {
+        let shows = plot::Shows {
+            rolling: state.plot_rolls(),
+            commanded: state.link.commanded_pose().is_some(),
+            background: !state.quality.software,
+        };
+        plot_panel
+            .show(ui, |ui| {
+                plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows);
+            })
+            .response
+            .rect
+    };
+    state.look.plot_height = if plot_hidden { 0.0 } else { plot_rect.height() };
     egui::CentralPanel::default()
         .frame(central_frame)
         .show(ui, |ui| view::show(ui, state));
-    splitter_grip(ui, plot_rect);
+    if !plot_hidden {
+        splitter_grip(ui, plot_rect);
+    }
     export::window(ui.ctx(), state);
     file_dialogs::show(ui.ctx(), state);
     if state.link.connected() {
@@ -343,5 +376,8 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if pressed(egui::Key::P) || pressed(egui::Key::F5) {
         state.look.presentation = !state.look.presentation;
+    }
+    if pressed(egui::Key::G) && state.look.presentation {
+        state.look.plot_hidden = !state.look.plot_hidden;
     }
 }
