@@ -89,6 +89,15 @@ fn a_saved_scenario_opens_as_it_was() {
     h.get_by_label("Save").click();
     h.run();
     assert!(h.query_by_label_contains("Saved to").is_some());
+    // The session remembers the file, and at the next start it is the file open (Ctrl+S
+    // saves it without asking where).
+    let full = std::path::absolute(&path).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(h.state().session.origin, full.display().to_string());
+    let mut next = stewart_app::viewer::state::ViewerState::new(h.state().scenario().clone());
+    next.remember_file(&h.state().session.origin);
+    assert_eq!(next.files.current.as_deref(), Some(full.as_path()));
+    next.remember_file("preset seed");
+    assert_eq!(next.files.current.as_deref(), Some(full.as_path()));
     let saved = h.state().scenario().clone();
     h.get_by_role_and_label(Role::ComboBox, "Preset").click();
     h.run();

@@ -4,6 +4,7 @@ use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::playback::MotionMode;
 use stewart_kinematics::forward::assembly::same_placement;
+use stewart_kinematics::settings;
 
 use crate::harness;
 
@@ -507,4 +508,36 @@ fn presentation_enters_and_leaves_exactly_with_the_plot_a_third_at_most() {
         (plot_after - plot_before).abs() < 1.0,
         "{plot_before} → {plot_after}"
     );
+}
+
+/// A geometry edit that takes the platform out of the view fits the camera to it again;
+/// *Fit* does it when asked.
+#[test]
+fn the_camera_follows_a_geometry_edit_that_leaves_the_view_and_fit_frames_the_platform() {
+    let mut h = harness("seed");
+    let aspect = h.state().look.view_aspect;
+    assert!(h.state().scene_in_view(aspect));
+    let before = h.state().look.camera;
+    for (key, value) in [
+        ("geometry.base_radius", 3.0),
+        ("geometry.platform_radius", 2.0),
+    ] {
+        let setting = settings::find(key).unwrap_or_else(|e| panic!("{e}"));
+        h.state_mut().apply(setting, Some(value));
+    }
+    h.run();
+    assert!(h.state().scene_in_view(aspect), "the scene left the view");
+    let after = h.state().look.camera;
+    assert!(after.distance > before.distance, "{after:?}");
+    assert_eq!(
+        (after.azimuth_deg, after.elevation_deg),
+        (before.azimuth_deg, before.elevation_deg)
+    );
+    // Zoomed far in, the platform leaves the view until Fit.
+    h.state_mut().look.camera.zoom(0.2);
+    h.run();
+    assert!(!h.state().scene_in_view(aspect));
+    h.get_by_label("Fit").click();
+    h.run();
+    assert!(h.state().scene_in_view(aspect));
 }

@@ -77,8 +77,13 @@ pub fn run(args: &ViewArgs) -> Result<ExitCode> {
     state.workspace.show |= args.workspace;
     // Never written by a screenshot run, even one that started from it.
     state.session.folder = folder.filter(|_| args.screenshot.is_none());
+    state.remember_file(&origin);
     state.session.origin = origin;
     state.session.note = note;
+    // Every section open, whatever the saved panels say.
+    if args.expand_panels {
+        state.session.panels = None;
+    }
     // A screenshot does not depend on the screen it was made on.
     let shot = args.screenshot.is_some();
     let size = match (args.size, saved.as_ref().and_then(Session::window_size)) {

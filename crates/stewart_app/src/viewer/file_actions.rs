@@ -146,6 +146,8 @@ impl ViewerState {
             .map_err(|e| format!("{e:#}"));
         if written.is_ok() {
             self.doc.mark_saved();
+            // The saved session remembers the file now (Ctrl+S at the next start saves it).
+            self.session.origin = full.display().to_string();
             self.files.path = full.display().to_string();
             self.files.current = Some(full);
         }
@@ -163,6 +165,19 @@ impl ViewerState {
             });
         } else {
             self.save_file(&full);
+        }
+    }
+
+    /// Take `origin` (a saved session's, or `--scenario`'s) as the file open now when it
+    /// names a regular file: Ctrl+S then saves it without asking where.
+    pub fn remember_file(&mut self, origin: &str) {
+        if origin.starts_with("preset ") {
+            return;
+        }
+        let full = absolute(Path::new(origin));
+        if regular_file(&full).is_ok() {
+            self.files.path = full.display().to_string();
+            self.files.current = Some(full);
         }
     }
 

@@ -29,6 +29,9 @@ pub struct Look {
     pub plot_height_to_restore: Option<f32>,
     /// Presentation mode shows the view alone (G shows the plot again).
     pub plot_hidden: bool,
+    /// The platform the camera was last checked against (a geometry edit that takes the
+    /// scene out of the view fits the camera to it again).
+    pub geometry_seen: Option<stewart_kinematics::GeometryParams>,
     /// Full screen (F11); the window follows it.
     pub fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
@@ -71,6 +74,7 @@ impl Look {
             plot_height_before_presentation: None,
             plot_height_to_restore: None,
             plot_hidden: false,
+            geometry_seen: None,
             fullscreen: false,
             expand_panels: false,
             show_path: true,

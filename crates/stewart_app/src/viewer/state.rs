@@ -675,6 +675,65 @@ impl ViewerState {
         self.look.presentation_framed = Some((camera, aspect));
     }
 
+    /// The platform's solids at the pose shown, as points for framing.
+    fn scene_points(&self) -> Vec<glam::Vec3> {
+        let frame = self
+            .doc
+            .scenario()
+            .geometry
+            .scene_frame(&self.pose(), Vec::new());
+        let solids = stewart_render::Overlays {
+            grid: false,
+            path: false,
+            labels: false,
+            platform_axes: self.look.platform_axes,
+            ..stewart_render::Overlays::default()
+        };
+        let mut points = Vec::new();
+        stewart_render::DrawList::build(&frame, &self.theme(), &solids).solid_extent(&mut points);
+        points
+    }
+
+    /// Fit the camera, its angles kept, to the platform at the pose shown in a view of
+    /// `aspect` (the toolbar's *Fit*).
+    pub fn fit_camera(&mut self, aspect: f32) {
+        let c = self.look.camera;
+        if let Some(fitted) = OrbitCamera::fitting_points(
+            c.azimuth_deg,
+            c.elevation_deg,
+            &self.scene_points(),
+            aspect,
+            crate::export::frames::MOTION_MARGIN,
+            0.0,
+        ) {
+            self.look.camera = fitted;
+        }
+    }
+
+    /// Whether every solid of the platform at the pose shown projects inside a view of
+    /// `aspect`.
+    pub fn scene_in_view(&self, aspect: f32) -> bool {
+        let matrix = self.look.camera.fitted_to(aspect).view_proj(aspect);
+        self.scene_points().iter().all(|p| {
+            let ndc = matrix.project_point3(*p);
+            ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0
+        })
+    }
+
+    /// Called by the view each frame: after an edit of the platform (another geometry
+    /// than the one last checked), a scene that left the view is fitted again.
+    pub fn follow_geometry(&mut self, aspect: f32) {
+        let params = self.doc.scenario().geometry.params();
+        if self.look.geometry_seen.as_ref() == Some(params) {
+            return;
+        }
+        let edited = self.look.geometry_seen.is_some();
+        self.look.geometry_seen = Some(params.clone());
+        if edited && !self.scene_in_view(aspect) {
+            self.fit_camera(aspect);
+        }
+    }
+
     /// Step playback by one trajectory sample (`direction` ±1).
     pub fn step(&mut self, direction: f64) {
         let step = direction * self.doc.scenario().motion.sampling.step();

@@ -84,6 +84,14 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
         {
             state.look_from(VIEWS[0].1, VIEWS[0].2);
         }
+        if ui
+            .button(t.tr("view.fit"))
+            .on_hover_text(t.tr("view.fit_tip"))
+            .clicked()
+        {
+            let aspect = state.look.view_aspect;
+            state.fit_camera(aspect);
+        }
         ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
         ui.checkbox(&mut state.look.platform_axes, t.tr("view.platform_axes"));
         ui.checkbox(&mut state.look.coloured_legs, t.tr("view.leg_colours"))
@@ -118,6 +126,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     let aspect = rect.width() / rect.height().max(1.0);
     state.look.view_aspect = aspect;
     state.frame_for_presentation(aspect);
+    state.follow_geometry(aspect);
     let t = state.look.lang;
     let theme = state.theme();
     if let Some(missing) = &state.look.renderer_missing {
