@@ -292,7 +292,7 @@ fn one_slider_drag_is_one_undo_step() {
 #[test]
 fn a_finding_is_a_link_to_its_worst_moment_and_the_plot_marks_what_is_beyond() {
     let mut h = crate::tall_harness("paired", 1600.0);
-    let setting = stewart_kinematics::settings::all()
+    let setting = settings::all()
         .iter()
         .find(|s| s.key == "geometry.leg_max")
         .unwrap_or_else(|| panic!("no leg_max"));
