@@ -128,6 +128,10 @@ pub struct WorkspaceTool {
     pub error: Option<String>,
     /// The request last sent.
     sent: Option<Request>,
+    /// A newer request waiting for the one in flight to give its first (coarse) result: a
+    /// pose that moves every frame (playback on a slow machine) would otherwise cancel
+    /// every computation before it gave anything.
+    pending: Option<Request>,
     job: Job<Result<Outcome, String>>,
     resolutions: [usize; 2],
 }
@@ -152,17 +156,47 @@ impl WorkspaceTool {
             latest: None,
             error: None,
             sent: None,
+            pending: None,
             job: Job::new("workspace"),
             resolutions: [coarse, fine],
         }
     }
 
     /// Ask for `request` unless it was the last one asked: a refinement in flight for an
-    /// older request stops, and the job takes this one next. Never blocks.
+    /// older request stops, and the job takes this one next; a request whose first result
+    /// has not come yet is finished first (this one waits, replaced by any newer). Never
+    /// blocks.
     pub fn request(&mut self, request: Request) {
         if self.sent.as_ref() == Some(&request) {
+            self.pending = None;
             return;
         }
+        if self.job.busy() && !self.first_result_in() {
+            self.pending = Some(request);
+            return;
+        }
+        self.pending = None;
+        self.start(request);
+    }
+
+    /// Whether the request in flight has given its first (coarse) result.
+    fn first_result_in(&self) -> bool {
+        self.latest
+            .as_ref()
+            .is_some_and(|o| Some(&o.request) == self.sent.as_ref())
+    }
+
+    /// Whether the surface shown was computed for another request than the newest (the
+    /// pose moved on while it was computed).
+    pub fn stale(&self) -> bool {
+        let newest = self.pending.as_ref().or(self.sent.as_ref());
+        self.latest
+            .as_ref()
+            .is_some_and(|o| Some(&o.request) != newest)
+    }
+
+    /// Start computing `request`.
+    fn start(&mut self, request: Request) {
         self.sent = Some(request.clone());
         let [coarse, fine] = self.resolutions;
         self.job.start(move |worker| {
@@ -200,16 +234,24 @@ impl WorkspaceTool {
             Some(Err(e)) => self.error = Some(e.to_string()),
             None => {}
         }
+        // The request in flight gave its first result (or ended): the newest waiting one
+        // goes next.
+        if (self.first_result_in() || !self.job.busy() || self.error.is_some())
+            && let Some(next) = self.pending.take()
+        {
+            self.start(next);
+        }
     }
 
     /// Whether the newest request is not yet refined.
     pub fn busy(&self) -> bool {
-        self.sent.is_some()
-            && !self
-                .latest
-                .as_ref()
-                .is_some_and(|o| o.refined && Some(&o.request) == self.sent.as_ref())
-            && self.error.is_none()
+        self.pending.is_some()
+            || self.sent.is_some()
+                && !self
+                    .latest
+                    .as_ref()
+                    .is_some_and(|o| o.refined && Some(&o.request) == self.sent.as_ref())
+                && self.error.is_none()
     }
 
     /// Wait until the newest request is refined (tests, screenshots), at most `limit`.
@@ -412,6 +454,37 @@ mod tests {
         );
         assert_eq!(tool.cancelled(), 1);
         assert!(tool.error.is_none());
+    }
+
+    #[test]
+    fn a_pose_moving_every_frame_still_gets_surfaces_and_they_say_they_are_behind() {
+        // A coarse pass (256²) slower than the frames that ask for a new orientation each
+        // time: every request used to cancel the one in flight, and nothing was ever shown.
+        let mut tool = WorkspaceTool::with_resolutions(256, 512);
+        let start = Instant::now();
+        let mut yaw = 0.0;
+        let mut results = 0;
+        let mut last_shown = None;
+        while start.elapsed() < Duration::from_secs(120) && results < 3 {
+            yaw += 0.5;
+            tool.request(request("paired", yaw));
+            tool.poll();
+            if let Some(o) = &tool.latest
+                && last_shown.as_ref() != Some(&o.request)
+            {
+                last_shown = Some(o.request.clone());
+                results += 1;
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        assert!(results >= 3, "only {results} surfaces in two minutes");
+        // The surface shown is for an orientation the pose has left.
+        assert!(tool.stale());
+        // Once the pose rests, the newest is computed and refined, and no longer stale.
+        tool.wait(Duration::from_secs(120));
+        let o = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
+        assert!(o.refined && o.request == request("paired", yaw));
+        assert!(!tool.stale());
     }
 
     #[test]

@@ -72,6 +72,19 @@ fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
         "workspace_panel.columns"
     };
     ui.label(RichText::new(t.fmt(key, &[("n", &columns), ("ms", &ms)])).small());
+    if w.stale() {
+        // The pose moved on while this was computed (playback on a slow machine): say for
+        // which orientation the surface shown stands.
+        let [roll, pitch, yaw] = o.request.orientation.map(|a| format!("{:.1}", a.degrees()));
+        ui.label(
+            RichText::new(t.fmt(
+                "workspace_panel.stale",
+                &[("roll", &roll), ("pitch", &pitch), ("yaw", &yaw)],
+            ))
+            .small()
+            .color(ui.visuals().warn_fg_color),
+        );
+    }
     let Some(extent) = o.extent else {
         ui.label(RichText::new(t.tr("workspace_panel.empty")).color(ERROR));
         return;
