@@ -273,7 +273,7 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::O);
     h.run();
     assert!(
-        h.query_by_label_contains("Open a scenario or a pose table")
+        h.query_by_label_contains("Open a scenario, a pose table or a vehicle motion recording")
             .is_some()
     );
     h.get_by_label_contains("mine.toml").click();
@@ -288,7 +288,7 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     assert_eq!(h.state().scenario().geometry, figure.geometry);
     assert!(h.state().files.picker.is_none());
     assert!(
-        h.query_by_label_contains("Open a scenario or a pose table")
+        h.query_by_label_contains("Open a scenario, a pose table or a vehicle motion recording")
             .is_none()
     );
 }

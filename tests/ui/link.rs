@@ -251,7 +251,7 @@ fn the_link_panels_choices_read_as_words() {
         })
     };
     for words in [
-        "Dry run (to a file)",
+        "Dry run (shown in this panel)",
         "Binary frames (34 bytes, CRC)",
         "Servo angle (0.01°)",
     ] {

@@ -163,7 +163,8 @@ impl ExportJob {
     ) -> Result<String, String> {
         match outcome {
             Ok(Ok(message)) => Ok(message),
-            Ok(Err(_)) if self.cancel_asked => Err(self.lang.tr("export.cancelled").to_owned()),
+            // The user's own choice: said, not as an error.
+            Ok(Err(_)) if self.cancel_asked => Ok(self.lang.tr("export.cancelled").to_owned()),
             Ok(Err(e)) => Err(format!("{e:#}")),
             Err(JobFailed::Panicked) => Err(self.lang.tr("export.panicked").to_owned()),
             Err(e) => Err(e.to_string()),

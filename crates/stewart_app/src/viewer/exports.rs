@@ -157,7 +157,8 @@ impl Exports {
         if let Some(job) = &mut self.job
             && let Some(outcome) = job.poll()
         {
-            self.written = if outcome.is_ok() {
+            // A cancelled export says so without an error, and wrote nothing.
+            self.written = if outcome.is_ok() && !job.cancelling() {
                 self.writing.take()
             } else {
                 None

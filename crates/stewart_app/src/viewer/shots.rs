@@ -56,8 +56,10 @@ impl Default for Shots {
     }
 }
 
-/// The first `NAME-shot-NN.png` in `folder` that does not exist yet.
+/// The first `NAME-shot-NN.png` in `folder` that does not exist yet, as an absolute path.
 pub fn next_path(folder: &Path, name: &str) -> PathBuf {
+    // Absolute, so that the message saying where the shot went needs no guessing.
+    let folder = std::path::absolute(folder).unwrap_or_else(|_| folder.to_path_buf());
     let stem: String = name
         .chars()
         .map(|c| {
@@ -171,5 +173,8 @@ mod tests {
             next_path(dir.path(), "seed / test"),
             dir.path().join("seed___test-shot-02.png")
         );
+        // The current folder ("."): said as an absolute path.
+        let here = next_path(std::path::Path::new("."), "seed");
+        assert!(here.is_absolute(), "{}", here.display());
     }
 }

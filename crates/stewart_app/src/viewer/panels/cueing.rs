@@ -20,9 +20,11 @@ use crate::viewer::vehicle::VehicleSource;
 const PLOT_HEIGHT: f32 = 200.0;
 
 /// The panel; `now` is the scenario time shown (the plots' marker); `live`, the link's
-/// live vehicle input while it streams one.
-pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) {
+/// live vehicle input while it streams one. Returns whether the user asked to open a
+/// vehicle motion recording (the file dialog is the window's).
+pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) -> bool {
     let t = ed.lang;
+    let mut open = false;
     egui::CollapsingHeader::new(t.tr("cueing.heading"))
         .default_open(ed.expand)
         .show(ui, |ui| {
@@ -55,6 +57,7 @@ pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCount
                     plots(ui, &Channels::of(v), t, Some(now));
                 }
                 None => {
+                    open = ui.button(t.tr("cueing.open_recording")).clicked();
                     ui.label(RichText::new(t.tr("cueing.hint")).small());
                 }
             }
@@ -73,6 +76,7 @@ pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCount
                 });
             edit_error(ui, ed.doc, t, &[Group::Cueing]);
         });
+    open
 }
 
 /// What the plots draw, per sample: time, the vehicle's and the platform's specific force,

@@ -113,7 +113,9 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         let (lang, expand) = (state.look.lang, state.look.expand_panels);
                         let mut editor =
                             Editor::new(&mut state.doc, &mut state.playback, lang, expand);
-                        cueing::show(ui, &mut editor, now, state.link.cue());
+                        if cueing::show(ui, &mut editor, now, state.link.cue()) {
+                            state.choose_file(Purpose::Open);
+                        }
                         ui.separator();
                         let pose = state.pose();
                         let mut editor =
