@@ -174,7 +174,7 @@ mod tests {
             dir.path().join("seed___test-shot-02.png")
         );
         // The current folder ("."): said as an absolute path.
-        let here = next_path(std::path::Path::new("."), "seed");
+        let here = next_path(Path::new("."), "seed");
         assert!(here.is_absolute(), "{}", here.display());
     }
 }
