@@ -138,8 +138,13 @@ fn cancel_stops_an_export_and_leaves_nothing() {
     let gif = dir.path().join("long.gif");
     h.state_mut().exports.form.size = (640, 360);
     h.state_mut().exports.form.fps = 0.0;
+    let front = h.get_by_label("Front").rect();
     export_to(&mut h, ExportKind::Gif, &gif);
     assert!(h.state().exports.job.is_some());
+    // "Exporting N %" in the toolbar moves nothing after it.
+    h.run();
+    assert!(h.query_by_label_contains("Exporting").is_some());
+    assert_eq!(h.get_by_label("Front").rect(), front);
     assert!(
         h.query_by_label_contains("frames/s").is_some()
             || h.query_by_label_contains("working").is_some()

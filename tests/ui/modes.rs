@@ -541,3 +541,31 @@ fn the_camera_follows_a_geometry_edit_that_leaves_the_view_and_fit_frames_the_pl
     h.run();
     assert!(h.state().scene_in_view(aspect));
 }
+
+/// F1 (or ?) opens *Help / keys* listing every key; Ctrl+Q asks the window to close.
+#[test]
+fn f1_lists_every_key_and_ctrl_q_quits() {
+    let mut h = harness("seed");
+    assert!(h.query_by_label("Help / keys").is_none());
+    h.key_press(egui::Key::F1);
+    h.run();
+    assert!(h.query_by_label("Help / keys").is_some());
+    for keys in [
+        "Space",
+        "F12",
+        "Ctrl+Q",
+        "Esc",
+        "G",
+        "W/S A/D R/F L/J I/K Q/E",
+    ] {
+        assert!(h.query_by_label(keys).is_some(), "{keys} is not listed");
+    }
+    crate::look(&mut h, "help.png");
+    h.key_press(egui::Key::F1);
+    h.run();
+    assert!(h.query_by_label("Help / keys").is_none());
+    assert!(!h.state().quit_asked);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Q);
+    h.run();
+    assert!(h.state().quit_asked);
+}

@@ -32,6 +32,8 @@ pub struct Look {
     /// The platform the camera was last checked against (a geometry edit that takes the
     /// scene out of the view fits the camera to it again).
     pub geometry_seen: Option<stewart_kinematics::GeometryParams>,
+    /// The *Help / keys* window is open (F1 or ?).
+    pub help: bool,
     /// Full screen (F11); the window follows it.
     pub fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
@@ -75,6 +77,7 @@ impl Look {
             plot_height_to_restore: None,
             plot_hidden: false,
             geometry_seen: None,
+            help: false,
             fullscreen: false,
             expand_panels: false,
             show_path: true,

@@ -61,6 +61,8 @@ pub struct ViewerState {
     /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
     /// frame times.
     pub quality: super::quality::Quality,
+    /// Ctrl+Q was pressed: the window closes as by its close button.
+    pub quit_asked: bool,
 }
 
 /// The saved session's state in this run.
@@ -123,6 +125,7 @@ impl ViewerState {
             reach: super::reach::ReachCache::default(),
             modes: super::mode_view::ModeView::default(),
             quality: super::quality::Quality::default(),
+            quit_asked: false,
             doc: Document::new(scenario),
         }
     }

@@ -326,6 +326,14 @@ impl App {
             state.settle_workspace();
         }
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        if state.quit_asked {
+            // Ctrl+Q: as the close button (the link stops first, the session is kept).
+            self.state.link.disconnect_now();
+            self.save_session();
+            event_loop.exit();
+            return;
+        }
+        let state = &mut self.state;
         self.was_busy = state.animating();
         if state.look.fullscreen != self.fullscreen {
             self.fullscreen = state.look.fullscreen;

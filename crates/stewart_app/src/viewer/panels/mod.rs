@@ -7,6 +7,7 @@ mod dynamics;
 mod export;
 mod file_dialogs;
 mod geometry;
+mod help;
 mod legs;
 mod link;
 mod motion;
@@ -175,6 +176,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         splitter_grip(ui, plot_rect);
     }
     export::window(ui.ctx(), state);
+    help::show(ui.ctx(), state.look.lang, &mut state.look.help);
     file_dialogs::show(ui.ctx(), state);
     if state.link.connected() {
         link_badge(ui.ctx(), state);
@@ -310,9 +312,10 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
 
 /// Esc: while a link is connected, its e-stop and nothing else; otherwise it leaves full
 /// screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
-/// P or F5: presentation mode; F11: full screen; F12: screenshot; Ctrl+Z undo, Ctrl+Shift+Z
-/// or Ctrl+Y redo; Ctrl+O open, Ctrl+S save, Ctrl+Shift+S save as (outside text fields,
-/// which keep their own).
+/// P or F5: presentation mode (G: the plot hidden or shown there); F11: full screen; F12:
+/// screenshot; Ctrl+Z undo, Ctrl+Shift+Z or Ctrl+Y redo; Ctrl+O open, Ctrl+S save,
+/// Ctrl+Shift+S save as; Ctrl+Q quit; F1 or ?: the keys (outside text fields, which keep
+/// their own). [`help`] lists them for people.
 fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     let pressed = |key| ui.input(|i| i.key_pressed(key));
     // The e-stop works whatever has the keyboard focus.
@@ -340,13 +343,20 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
             || i.consume_key(egui::Modifiers::COMMAND, egui::Key::Y);
         (redo, i.consume_key(egui::Modifiers::COMMAND, egui::Key::Z))
     });
-    let (save_as, save, open) = ui.input_mut(|i| {
+    let (save_as, save, open, quit) = ui.input_mut(|i| {
         (
             i.consume_key(shift, egui::Key::S),
             i.consume_key(egui::Modifiers::COMMAND, egui::Key::S),
             i.consume_key(egui::Modifiers::COMMAND, egui::Key::O),
+            i.consume_key(egui::Modifiers::COMMAND, egui::Key::Q),
         )
     });
+    if quit {
+        state.quit_asked = true;
+    }
+    if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
+        state.look.help = !state.look.help;
+    }
     if save_as {
         state.choose_file(Purpose::SaveScenario);
     } else if save {
