@@ -404,3 +404,24 @@ fn a_long_status_line_wraps_and_the_side_panel_keeps_its_width() {
     );
     assert!(dragged < 500.0, "{dragged}");
 }
+
+#[test]
+fn files_opened_or_saved_are_offered_again_newest_first() {
+    let dir = tempdir();
+    let (a, b) = (dir.path().join("a.toml"), dir.path().join("b.toml"));
+    let mut h = harness("paired");
+    assert!(h.query_by_label("Recent files").is_none(), "nothing yet");
+    h.state_mut().save_file(&a);
+    h.state_mut().save_file(&b);
+    h.state_mut().open_file(&a);
+    h.run();
+    let recent: Vec<_> = h.state().files.recent.clone();
+    assert_eq!(recent, [a.clone(), b.clone()], "newest first, each once");
+    // Chosen from the list, b opens.
+    h.get_by_label("Recent files").click();
+    h.run();
+    h.get_by_label("b.toml").click();
+    h.run();
+    assert_eq!(h.state().files.current.as_deref(), Some(b.as_path()));
+    assert_eq!(h.state().files.recent[0], b);
+}

@@ -115,6 +115,7 @@ fn restore(state: &mut ViewerState, saved: &Session, same_scenario: bool) {
         state.look.camera = camera;
     }
     state.session.panels = saved.panels.clone();
+    state.files.recent = saved.recent.iter().map(std::path::PathBuf::from).collect();
 }
 
 /// Where the scenario of `args` came from, in words.

@@ -42,6 +42,7 @@ impl ViewerState {
                     self.load_scenario(s);
                     self.files.path = full.display().to_string();
                     self.files.current = Some(full.clone());
+                    self.files.remember_recent(&full);
                     Ok(self.look.lang.fmt(
                         "scenario.opened",
                         &[("name", &name), ("path", &full.display())],
@@ -84,6 +85,7 @@ impl ViewerState {
                     Ok(())
                 }) {
                     self.playback.time = 0.0;
+                    self.files.remember_recent(&full);
                     Ok(lang.fmt(
                         "files.poses_opened",
                         &[
@@ -123,6 +125,9 @@ impl ViewerState {
                 .play_vehicle(&name, std::sync::Arc::new(table.samples))
                 .map(|()| (count, seconds))
         });
+        if outcome.is_ok() {
+            self.files.remember_recent(full);
+        }
         self.files.status = Some(outcome.map(|(count, seconds)| {
             self.playback.time = 0.0;
             lang.fmt(
@@ -149,6 +154,7 @@ impl ViewerState {
             // The saved session remembers the file now (Ctrl+S at the next start saves it).
             self.session.origin = full.display().to_string();
             self.files.path = full.display().to_string();
+            self.files.remember_recent(&full);
             self.files.current = Some(full);
         }
         self.files.status = Some(written);

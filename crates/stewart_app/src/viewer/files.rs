@@ -26,7 +26,23 @@ pub struct Files {
     pub picker: Option<Picker>,
     /// A write waiting for the answer to "replace it?".
     pub confirm: Option<Overwrite>,
+    /// The files opened or saved last, newest first (at most [`RECENT`]; kept in the
+    /// session).
+    pub recent: Vec<PathBuf>,
     listing: Option<(Instant, Vec<PathBuf>)>,
+}
+
+/// Files kept in the recent list.
+pub const RECENT: usize = 8;
+
+impl Files {
+    /// Put `path` (absolute) first in the recent list, once.
+    pub fn remember_recent(&mut self, path: &Path) {
+        let path = absolute(path);
+        self.recent.retain(|p| p != &path);
+        self.recent.insert(0, path);
+        self.recent.truncate(RECENT);
+    }
 }
 
 /// What a file dialog's choice is for.

@@ -47,6 +47,9 @@ pub struct Session {
     /// The interface's language (absent in sessions written before it was remembered).
     #[serde(default)]
     pub lang: Option<Lang>,
+    /// The files opened or saved last, newest first (absent in older sessions).
+    #[serde(default)]
+    pub recent: Vec<String>,
 }
 
 impl Session {
@@ -80,6 +83,7 @@ impl Session {
             window,
             panels,
             lang: Some(look.lang),
+            recent: Vec::new(),
         }
     }
 
@@ -308,7 +312,8 @@ mod tests {
         look.labels = false;
         look.readouts = true;
         look.lang = Lang::Zh;
-        let session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
+        let mut session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
+        session.recent = vec!["/tmp/a.toml".to_owned(), "/tmp/b.csv".to_owned()];
         save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
         let back = load(dir.path(), Lang::En)
             .unwrap_or_else(|e| panic!("{e}"))
@@ -326,7 +331,12 @@ mod tests {
         let mut json: serde_json::Value =
             serde_json::to_value(&session).unwrap_or_else(|e| panic!("{e}"));
         json.as_object_mut().map(|o| o.remove("lang"));
+        json.as_object_mut().map(|o| o.remove("recent"));
         let older: Session = serde_json::from_value(json).unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            older.recent.is_empty(),
+            "an older session has no recent files"
+        );
         let mut english = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
         older.restore_look(&mut english);
         assert_eq!(english.lang, Lang::En);

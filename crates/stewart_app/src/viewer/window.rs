@@ -493,13 +493,16 @@ impl App {
             return;
         };
         let panels = self.ctx.memory(|m| ron::to_string(m).ok());
-        let saved = super::session::Session::capture(
+        let mut saved = super::session::Session::capture(
             self.state.scenario(),
             &session.origin,
             &self.state.look,
             self.logical_size,
             panels,
         );
+        saved.recent = (self.state.files.recent.iter())
+            .map(|p| p.display().to_string())
+            .collect();
         if let Err(e) = super::session::save(folder, &saved) {
             let _ = writeln!(std::io::stderr(), "viewer: the session was not saved: {e}");
         }

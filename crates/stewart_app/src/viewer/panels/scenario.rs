@@ -25,6 +25,7 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     file_rows(ui, state);
     folder_choice(ui, state);
+    recent_choice(ui, state);
     widgets::status(ui, &state.files.status);
     ui.horizontal(|ui| {
         ui.checkbox(&mut state.look.light_theme, t.tr("scenario.light_theme"));
@@ -173,6 +174,43 @@ fn folder_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
                 }
             }
         });
+}
+
+/// The files opened or saved last (kept between runs), newest first; one that is gone is
+/// shown but cannot be chosen.
+fn recent_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let t = state.look.lang;
+    if state.files.recent.is_empty() {
+        return;
+    }
+    let mut chosen = None;
+    egui::ComboBox::from_label(t.tr("scenario.recent"))
+        .selected_text(t.tr("scenario.choose"))
+        .show_ui(ui, |ui| {
+            for file in &state.files.recent {
+                let name = file.file_name().map_or_else(
+                    || file.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
+                let there = file.is_file();
+                let tip = if there {
+                    file.display().to_string()
+                } else {
+                    t.fmt("scenario.recent_gone", &[("path", &file.display())])
+                };
+                if ui
+                    .add_enabled(there, egui::Button::selectable(false, name))
+                    .on_hover_text(&tip)
+                    .on_disabled_hover_text(&tip)
+                    .clicked()
+                {
+                    chosen = Some(file.clone());
+                }
+            }
+        });
+    if let Some(file) = chosen {
+        state.open_path(&file);
+    }
 }
 
 /// The interface's language: English or Chinese (Chinese only with a font that has it).
