@@ -308,3 +308,50 @@ fn a_plot_exported_after_an_edit_is_titled_as_edited() {
     h.run();
     assert_eq!(h.state().title(), "paired");
 }
+
+/// A part of the motion, a title, a 4:3 or typed size: as `stewart render` has them.
+#[test]
+fn a_part_of_the_motion_under_a_title_at_a_four_by_three_size() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let gif = dir.path().join("part.gif");
+    let mut h = tall_harness("seed", HEIGHT);
+    h.get_by_label("Export…").click();
+    h.run();
+    h.get_by_role_and_label(Role::ComboBox, "What").click();
+    h.run();
+    h.get_by_label(ExportKind::Gif.label(Lang::En)).click();
+    h.run();
+    h.state_mut().exports.form.path = gif.display().to_string();
+    h.get_by_label("Only part of the motion").click();
+    h.run();
+    assert_eq!(h.state().exports.form.span_s, Some([0.0, 10.0]));
+    // 2 s to 3 s at the GIF's 25 frames/s: frames 50 to 75, 26 of them.
+    h.state_mut().exports.form.span_s = Some([2.0, 3.0]);
+    h.state_mut().exports.form.size = (320, 240);
+    h.state_mut().exports.form.title = "Defence, figure 3".to_owned();
+    h.run();
+    h.get_by_label("26 frames at 25 frames/s, playing 1.04 s");
+    // A title that is not one line is refused before anything runs.
+    h.state_mut().exports.form.title = "two\nlines".to_owned();
+    h.run();
+    assert!(h.query_by_label_contains("must be one line").is_some());
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+    assert!(h.state().exports.job.is_none(), "exported with a bad title");
+    h.state_mut().exports.form.title = "Defence, figure 3".to_owned();
+    h.run();
+    h.get_by_role_and_label(Role::Button, "Export").click();
+    h.run();
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_ok_and(|m| m.contains("Wrote 26 frames")),
+        "{outcome:?}"
+    );
+    let file = std::fs::File::open(&gif).unwrap_or_else(|e| panic!("{e}"));
+    let decoder = gif::DecodeOptions::new()
+        .read_info(file)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((decoder.width(), decoder.height()), (320, 240));
+}

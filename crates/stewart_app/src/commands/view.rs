@@ -116,6 +116,9 @@ fn restore(state: &mut ViewerState, saved: &Session, same_scenario: bool) {
     }
     state.session.panels = saved.panels.clone();
     state.files.recent = saved.recent.iter().map(std::path::PathBuf::from).collect();
+    if let Some(form) = &saved.export {
+        state.exports.form = form.clone();
+    }
 }
 
 /// Where the scenario of `args` came from, in words.

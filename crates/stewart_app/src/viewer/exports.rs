@@ -6,7 +6,7 @@ use super::files::Status;
 use crate::i18n::Lang;
 
 /// What the export panel will write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum ExportKind {
     /// Animated GIF.
     Gif,
@@ -102,8 +102,8 @@ impl ExportKind {
     }
 }
 
-/// The export panel's choices.
-#[derive(Clone, Debug, PartialEq)]
+/// The export panel's choices (kept in the session).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ExportForm {
     /// What to write.
     pub kind: ExportKind,
@@ -118,6 +118,13 @@ pub struct ExportForm {
     pub light: bool,
     /// The plot beside the 3D view.
     pub composite: bool,
+    /// Only this part of the motion, seconds from its start (`None`: all of it).
+    #[serde(default)]
+    pub span_s: Option<[f64; 2]>,
+    /// The readout's title burnt into the frames (empty: the readout as the view shows
+    /// it, under the scenario's name).
+    #[serde(default)]
+    pub title: String,
 }
 
 impl Default for ExportForm {
@@ -129,6 +136,8 @@ impl Default for ExportForm {
             fps: 0.0,
             light: false,
             composite: false,
+            span_s: None,
+            title: String::new(),
         }
     }
 }

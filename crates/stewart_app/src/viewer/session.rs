@@ -50,6 +50,9 @@ pub struct Session {
     /// The files opened or saved last, newest first (absent in older sessions).
     #[serde(default)]
     pub recent: Vec<String>,
+    /// The export window's choices (absent in older sessions).
+    #[serde(default)]
+    pub export: Option<super::exports::ExportForm>,
 }
 
 impl Session {
@@ -84,6 +87,7 @@ impl Session {
             panels,
             lang: Some(look.lang),
             recent: Vec::new(),
+            export: None,
         }
     }
 
@@ -314,6 +318,12 @@ mod tests {
         look.lang = Lang::Zh;
         let mut session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
         session.recent = vec!["/tmp/a.toml".to_owned(), "/tmp/b.csv".to_owned()];
+        session.export = Some(super::super::exports::ExportForm {
+            span_s: Some([1.0, 2.5]),
+            title: "Defence, figure 3".to_owned(),
+            size: (1024, 768),
+            ..Default::default()
+        });
         save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
         let back = load(dir.path(), Lang::En)
             .unwrap_or_else(|e| panic!("{e}"))
@@ -332,6 +342,7 @@ mod tests {
             serde_json::to_value(&session).unwrap_or_else(|e| panic!("{e}"));
         json.as_object_mut().map(|o| o.remove("lang"));
         json.as_object_mut().map(|o| o.remove("recent"));
+        json.as_object_mut().map(|o| o.remove("export"));
         let older: Session = serde_json::from_value(json).unwrap_or_else(|e| panic!("{e}"));
         assert!(
             older.recent.is_empty(),

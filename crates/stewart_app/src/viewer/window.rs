@@ -503,6 +503,7 @@ impl App {
         saved.recent = (self.state.files.recent.iter())
             .map(|p| p.display().to_string())
             .collect();
+        saved.export = Some(self.state.exports.form.clone());
         if let Err(e) = super::session::save(folder, &saved) {
             let _ = writeln!(std::io::stderr(), "viewer: the session was not saved: {e}");
         }

@@ -6,20 +6,26 @@ use std::path::{Path, PathBuf};
 use stewart_render::{Overlays, Theme};
 
 use super::widgets;
-use crate::export::video::{RateNote, VideoRequest, rate_in_words};
+use crate::export::video::{FramePlan, RateNote, VideoRequest, rate_in_words};
+use crate::i18n::Lang;
 use crate::viewer::export_job::{ExportJob, ExportWork, SurfaceView};
 use crate::viewer::exports::ExportKind;
 use crate::viewer::files::{Overwrite, Purpose, WriteAction, absolute};
 use crate::viewer::state::ViewerState;
 
 /// Frame sizes offered.
-const SIZES: [(u32, u32); 5] = [
+const SIZES: [(u32, u32); 7] = [
     (640, 360),
     (1280, 720),
     (1920, 1080),
     (2560, 1440),
     (3840, 2160),
+    (1024, 768),
+    (1600, 1200),
 ];
+
+/// The largest side a frame may have, pixels (as `stewart render --size`).
+const MAX_SIDE: u32 = 4096;
 
 /// The toolbar's *Export…* button: opens (or closes) the export window.
 pub(super) fn open_button(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -108,8 +114,12 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     form(ui, state);
     let path = state.exports.form.path.trim().to_owned();
+    let sound = title_error(&state.exports.form.title).is_none();
     if ui
-        .add_enabled(!path.is_empty(), egui::Button::new(t.tr("export.export")))
+        .add_enabled(
+            !path.is_empty() && sound,
+            egui::Button::new(t.tr("export.export")),
+        )
         .on_hover_text(t.tr("export.export_tip"))
         .clicked()
     {
@@ -152,6 +162,7 @@ pub(super) fn start(state: &mut ViewerState, path: PathBuf) {
 
 fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     let name = state.scenario().name.clone();
+    let duration = state.duration();
     let t = state.look.lang;
     let form = &mut state.exports.form;
     let before = form.kind;
@@ -194,13 +205,22 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui.label(egui::RichText::new(t.tr("export.workspace_note")).small());
     }
     if form.kind.is_video() || form.kind == ExportKind::SurfacePng {
-        egui::ComboBox::from_label(t.tr("export.size"))
-            .selected_text(format!("{}×{}", form.size.0, form.size.1))
-            .show_ui(ui, |ui| {
-                for size in SIZES {
-                    ui.selectable_value(&mut form.size, size, format!("{}×{}", size.0, size.1));
-                }
-            });
+        ui.horizontal(|ui| {
+            egui::ComboBox::from_label(t.tr("export.size"))
+                .selected_text(format!("{}×{}", form.size.0, form.size.1))
+                .show_ui(ui, |ui| {
+                    for size in SIZES {
+                        let words = format!("{}×{}", size.0, size.1);
+                        ui.selectable_value(&mut form.size, size, words);
+                    }
+                });
+            // Any other size, typed or dragged.
+            ui.add(egui::DragValue::new(&mut form.size.0).range(16..=MAX_SIDE))
+                .on_hover_text(t.tr("export.width"));
+            ui.label("×");
+            ui.add(egui::DragValue::new(&mut form.size.1).range(16..=MAX_SIDE))
+                .on_hover_text(t.tr("export.height"));
+        });
     }
     if form.kind.is_video() {
         ui.add(egui::Slider::new(&mut form.fps, 0.0..=120.0).text(t.tr("export.fps")));
@@ -208,6 +228,20 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             ui.checkbox(&mut form.light, t.tr("export.light"));
             ui.checkbox(&mut form.composite, t.tr("export.composite"));
         });
+        span(ui, form, duration, t);
+        ui.horizontal(|ui| {
+            let label = ui.label(t.tr("export.title"));
+            ui.add(
+                egui::TextEdit::singleline(&mut form.title)
+                    .hint_text(name.as_str())
+                    .desired_width(200.0),
+            )
+            .labelled_by(label.id)
+            .on_hover_text(t.tr("export.title_tip"));
+        });
+        if let Some(e) = title_error(&form.title) {
+            ui.label(egui::RichText::new(e).color(widgets::ERROR));
+        }
         // What the export will write, planned for the path as typed (its extension
         // decides the format and so the default rate).
         let request = request(state, PathBuf::from(state.exports.form.path.trim()));
@@ -242,9 +276,76 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
 }
 
+/// Why the readout's title cannot be burnt in (`None`: empty, or one line that fits).
+fn title_error(title: &str) -> Option<String> {
+    if title.is_empty() {
+        None
+    } else {
+        crate::cli::parse_title(title).err()
+    }
+}
+
+/// *Only part of the motion*: from and to, seconds from its start, within `duration`.
+fn span(ui: &mut egui::Ui, form: &mut crate::viewer::exports::ExportForm, duration: f64, t: Lang) {
+    let mut part = form.span_s.is_some();
+    ui.horizontal(|ui| {
+        if ui
+            .checkbox(&mut part, t.tr("export.span"))
+            .on_hover_text(t.tr("export.span_tip"))
+            .changed()
+        {
+            form.span_s = part.then_some([0.0, duration]);
+        }
+        if let Some([from, to]) = &mut form.span_s {
+            let step = duration / 1000.0;
+            ui.add(
+                egui::DragValue::new(from)
+                    .range(0.0..=duration)
+                    .speed(step)
+                    .suffix(" s"),
+            )
+            .on_hover_text(t.tr("export.span_from"));
+            ui.label("–");
+            ui.add(
+                egui::DragValue::new(to)
+                    .range(0.0..=duration)
+                    .speed(step)
+                    .suffix(" s"),
+            )
+            .on_hover_text(t.tr("export.span_to"));
+            *to = to.max(*from);
+        }
+    });
+}
+
+/// The frame indices `[first, end)` of `plan` whose times lie within `[from, to]` seconds
+/// of the motion's start (`None` when none does).
+fn frames_within(plan: &FramePlan, [from, to]: [f64; 2]) -> Option<(usize, usize)> {
+    // Times grow with the index: the first at or after `from`, the last at or before `to`.
+    let start = plan.time(0);
+    let tolerance = 1e-9 * (1.0 + to.abs());
+    let first = partition_point(plan.count, |k| plan.time(k) - start < from - tolerance);
+    let end = partition_point(plan.count, |k| plan.time(k) - start <= to + tolerance);
+    (first < end).then_some((first, end))
+}
+
+/// The first index in `0..count` where `before` turns false (it is true, then false).
+fn partition_point(count: usize, before: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, count);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if before(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
 fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
     let form = &state.exports.form;
-    VideoRequest {
+    let mut request = VideoRequest {
         out,
         size: form.size,
         fps: (form.fps > 0.0).then_some(form.fps),
@@ -259,9 +360,20 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             labels: state.look.labels,
             ..Overlays::default()
         },
-        readout: state.look.readouts.then(|| state.title()),
+        readout: if form.title.is_empty() {
+            state.look.readouts.then(|| state.title())
+        } else {
+            Some(form.title.clone())
+        },
         lang: state.look.lang,
+    };
+    if let Some(span) = form.span_s
+        && let Ok(plan) = request.plan(state.scenario())
+        && let Some((first, end)) = frames_within(&plan, span)
+    {
+        request.frames = (Some(first), Some(end));
     }
+    request
 }
 
 /// Where the workspace figure's slices cross: the platform's position, at the slice's
