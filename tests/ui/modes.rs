@@ -208,7 +208,7 @@ fn the_plot_is_taller_after_dragging_its_top_edge_up() {
         .unwrap_or_else(|| panic!("no splitter under the view"))
         .center()
         - egui::vec2(0.0, 5.0);
-    let up = egui::vec2(0.0, -150.0);
+    let up = egui::vec2(0.0, -80.0);
     let camera = h.state().look.camera;
     h.hover_at(edge);
     h.run();
@@ -219,8 +219,20 @@ fn the_plot_is_taller_after_dragging_its_top_edge_up() {
     h.drop_at(edge + up);
     h.run();
     let after = h.state().look.plot_height;
-    assert!((after - before - 150.0).abs() < 6.0, "{before} → {after}");
+    assert!((after - before - 80.0).abs() < 6.0, "{before} → {after}");
     assert_eq!(h.state().look.camera, camera);
+    // Dragged further, it stops at two fifths of the window (800 points high).
+    let edge = edge + up;
+    h.hover_at(edge);
+    h.run();
+    h.drag_at(edge);
+    h.run();
+    h.hover_at(edge + up * 3.0);
+    h.run();
+    h.drop_at(edge + up * 3.0);
+    h.run();
+    let most = h.state().look.plot_height;
+    assert!((most - 320.0).abs() < 2.0, "{most}");
 }
 
 #[test]

@@ -133,13 +133,32 @@ struct PlotPanel {
     /// Pixel x of t0 and t1 and the plot area's top and bottom rows.
     x_of_t: (f64, f64, f64, f64),
     rows: (u32, u32),
+    /// The time marker's colour (dark on paper, light on the dark theme).
+    marker: [u8; 4],
 }
 
 impl PlotPanel {
-    fn new(scenario: &Scenario, lang: Lang, width: u32, height: u32) -> Result<Self> {
-        let (times, svg) = plot::scenario_svg(scenario, lang);
+    /// The plot of `scenario` filling a `width × height` half in `theme`'s colours, its
+    /// text sized for a frame (not a paper).
+    fn new(
+        scenario: &Scenario,
+        lang: Lang,
+        theme: &Theme,
+        width: u32,
+        height: u32,
+    ) -> Result<Self> {
+        let ink = if theme.background[0] < 0.5 {
+            plot::DARK_INK
+        } else {
+            plot::PAPER_INK
+        };
+        let aspect = f64::from(width) / f64::from(height.max(1));
+        // Text about 1/45 of the frame's height (16 px at 720), whatever the half's width.
+        let text = (f64::from(height) / 45.0) / (11.0 * f64::from(width) / plot::WIDTH);
+        let page = plot::Page::fitting(aspect, text.clamp(1.0, 3.0), ink);
+        let (times, svg) = plot::scenario_svg_on(scenario, lang, &page);
         let (rgba, scale, (ox, oy)) = vector::rgba_fit(&svg, width, height)?;
-        let (ml, mr, mt, mb) = plot::margins();
+        let (ml, mr, mt, mb) = page.margins();
         let (scale, ox, oy) = (f64::from(scale), f64::from(ox), f64::from(oy));
         let t0 = times.first().copied().unwrap_or(0.0);
         let t1 = times.last().copied().unwrap_or(1.0);
@@ -147,15 +166,20 @@ impl PlotPanel {
             width,
             height,
             rgba,
-            x_of_t: (ox + ml * scale, ox + (plot::WIDTH - mr) * scale, t0, t1),
+            x_of_t: (ox + ml * scale, ox + (page.width - mr) * scale, t0, t1),
             rows: (
                 (oy + mt * scale) as u32,
-                (oy + (plot::HEIGHT - mb) * scale) as u32,
+                (oy + (page.height - mb) * scale) as u32,
             ),
+            marker: if ink == plot::DARK_INK {
+                [235, 235, 235, 255]
+            } else {
+                [20, 20, 20, 255]
+            },
         })
     }
 
-    /// The panel with a 2-pixel black marker at time `t`.
+    /// The panel with a 2-pixel marker at time `t`.
     fn at(&self, t: f64) -> Vec<u8> {
         let mut rgba = self.rgba.clone();
         let (x0, x1, t0, t1) = self.x_of_t;
@@ -165,7 +189,7 @@ impl PlotPanel {
                 let xx = x + dx;
                 if (0..self.width as i64).contains(&xx) {
                     let i = 4 * (y as usize * self.width as usize + xx as usize);
-                    rgba[i..i + 4].copy_from_slice(&[20, 20, 20, 255]);
+                    rgba[i..i + 4].copy_from_slice(&self.marker);
                 }
             }
         }
@@ -195,6 +219,7 @@ impl<'a> FrameSource<'a> {
                 Some(PlotPanel::new(
                     scenario,
                     job.lang,
+                    &job.theme,
                     job.width - view,
                     job.height,
                 )?),

@@ -52,27 +52,39 @@ impl PlotData<'_> {
 
 /// The plot of `scenario`'s trajectory in `lang`: its sample times and the SVG.
 pub fn scenario_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> (Vec<f64>, String) {
+    scenario_svg_on(scenario, lang, &PAPER)
+}
+
+/// [`scenario_svg`] on `page`.
+pub fn scenario_svg_on(
+    scenario: &stewart_kinematics::Scenario,
+    lang: Lang,
+    page: &Page,
+) -> (Vec<f64>, String) {
     let samples = scenario.motion.sample();
     let g = &scenario.geometry;
     let values = g.actuator_values(&samples.poses);
     let quantity = g.quantity();
-    let text = svg(&PlotData {
-        title: &lang.fmt(
-            if quantity.unit == "m" {
-                "plot.title_legs"
-            } else {
-                "plot.title_servos"
-            },
-            &[("name", &scenario.name)],
-        ),
-        times: &samples.times,
-        values: &values,
-        quantity,
-        limits: g.quantity_limits(),
-        marker: None,
-        lang,
-        efforts: false,
-    });
+    let text = svg_on(
+        &PlotData {
+            title: &lang.fmt(
+                if quantity.unit == "m" {
+                    "plot.title_legs"
+                } else {
+                    "plot.title_servos"
+                },
+                &[("name", &scenario.name)],
+            ),
+            times: &samples.times,
+            values: &values,
+            quantity,
+            limits: g.quantity_limits(),
+            marker: None,
+            lang,
+            efforts: false,
+        },
+        page,
+    );
     (samples.times, text)
 }
 
@@ -111,9 +123,87 @@ pub const HEIGHT: f64 = 340.2;
 /// Plot area margins: left, right, top, bottom.
 const MARGIN: [f64; 4] = [62.0, 78.0, 30.0, 44.0];
 
-/// The plot area's margins (left, right, top, bottom) in CSS pixels of the page.
-pub fn margins() -> (f64, f64, f64, f64) {
-    (MARGIN[0], MARGIN[1], MARGIN[2], MARGIN[3])
+/// The colours of a page: background, text and ticks, grid, the axes' frame, the limits'
+/// lines and words, the time marker (SVG colours).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ink {
+    /// The page.
+    pub background: &'static str,
+    /// Text and tick labels (`None`: SVG's own black, the paper's).
+    pub text: Option<&'static str>,
+    /// Tick labels.
+    pub ticks: &'static str,
+    /// Grid lines.
+    pub grid: &'static str,
+    /// The axes' frame.
+    pub frame: &'static str,
+    /// The limits' dashed lines and words.
+    pub limit: &'static str,
+    /// The time marker.
+    pub marker: &'static str,
+}
+
+/// Black on white, for papers and slides.
+pub const PAPER_INK: Ink = Ink {
+    background: "white",
+    text: None,
+    ticks: "black",
+    grid: "#e0e0e0",
+    frame: "black",
+    limit: "#444",
+    marker: "black",
+};
+
+/// Light on the dark 3D view's background, for frames of the dark theme.
+pub const DARK_INK: Ink = Ink {
+    background: "#1C1F24",
+    text: Some("#DDDDDD"),
+    ticks: "#DDDDDD",
+    grid: "#3A3F47",
+    frame: "#9A9FA8",
+    limit: "#B0B0B0",
+    marker: "white",
+};
+
+/// A page the plot is laid out on: its size in CSS pixels, the text's scale (margins and
+/// text offsets scale with it) and its colours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Page {
+    /// Width, CSS pixels.
+    pub width: f64,
+    /// Height, CSS pixels.
+    pub height: f64,
+    /// Text size against the paper's (11 px body).
+    pub text: f64,
+    /// Colours.
+    pub ink: Ink,
+}
+
+/// The paper page: 16 cm × 9 cm, black on white.
+pub const PAPER: Page = Page {
+    width: WIDTH,
+    height: HEIGHT,
+    text: 1.0,
+    ink: PAPER_INK,
+};
+
+impl Page {
+    /// A page of the paper's width with `aspect` (width / height), text `text` times the
+    /// paper's, in `ink`: the plot half of a composite frame fills its half.
+    pub fn fitting(aspect: f64, text: f64, ink: Ink) -> Self {
+        Self {
+            width: WIDTH,
+            height: WIDTH / aspect.clamp(0.2, 5.0),
+            text,
+            ink,
+        }
+    }
+
+    /// The plot area's margins (left, right, top, bottom) in CSS pixels of the page.
+    pub fn margins(&self) -> (f64, f64, f64, f64) {
+        let k = self.text;
+        (MARGIN[0] * k, MARGIN[1] * k, MARGIN[2] * k, MARGIN[3] * k)
+    }
 }
 
 /// About `count` "nice" ticks (1, 2, 5 × 10ⁿ apart) covering `[lo, hi]`.
@@ -147,8 +237,9 @@ struct Axes {
 }
 
 impl Axes {
-    /// The axes for `data`: its times, and its values and limits with 5 % to spare.
-    fn of(data: &PlotData) -> Self {
+    /// The axes for `data` on `page`: its times, and its values and limits with 5 % to
+    /// spare.
+    fn of(data: &PlotData, page: &Page) -> Self {
         let t0 = data.times.first().copied().unwrap_or(0.0);
         let t1 = data.times.last().copied().unwrap_or(1.0).max(t0 + 1e-9);
         let mut lo = f64::INFINITY;
@@ -165,12 +256,12 @@ impl Axes {
             (lo, hi) = (0.0, 1.0);
         }
         let pad = 0.05 * (hi - lo).max(1e-6);
-        let [ml, mr, mt, mb] = MARGIN;
+        let (ml, mr, mt, mb) = page.margins();
         Self {
             t: (t0, t1),
             v: (lo - pad, hi + pad),
-            x: (ml, WIDTH - mr),
-            y: (HEIGHT - mb, mt),
+            x: (ml, page.width - mr),
+            y: (page.height - mb, mt),
         }
     }
 
@@ -185,46 +276,67 @@ impl Axes {
     }
 }
 
-/// The plot as an SVG document.
+/// The plot as an SVG document on the paper page.
 pub fn svg(data: &PlotData) -> String {
-    let axes = Axes::of(data);
+    svg_on(data, &PAPER)
+}
+
+/// The plot as an SVG document on `page`.
+pub fn svg_on(data: &PlotData, page: &Page) -> String {
+    let axes = Axes::of(data, page);
     let (x0, x1) = axes.x;
+    let k = page.text;
+    let ink = &page.ink;
     let mut s = String::new();
     // Writing to a String cannot fail.
+    let fill = ink
+        .text
+        .map(|c| format!(r#" fill="{c}""#))
+        .unwrap_or_default();
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="160mm" height="90mm" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="{}" font-size="11">"#,
-        font_families()
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{:.0}mm" height="{:.0}mm" viewBox="0 0 {} {}" font-family="{}" font-size="{}"{fill}>"#,
+        page.width / 96.0 * 25.4,
+        page.height / 96.0 * 25.4,
+        page.width,
+        page.height,
+        font_families(),
+        11.0 * k
     );
     let _ = writeln!(
         s,
-        r#"<rect x="0" y="0" width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#
+        r#"<rect x="0" y="0" width="{}" height="{}" fill="{}"/>"#,
+        page.width, page.height, ink.background
     );
     let _ = writeln!(
         s,
-        r#"<text x="{:.1}" y="18" text-anchor="middle" font-size="13">{}</text>"#,
+        r#"<text x="{:.1}" y="{}" text-anchor="middle" font-size="{}">{}</text>"#,
         0.5 * (x0 + x1),
+        18.0 * k,
+        13.0 * k,
         escape(data.title)
     );
-    grid_and_ticks(&mut s, &axes);
-    axis_titles(&mut s, &axes, data);
-    limit_lines(&mut s, &axes, data);
+    grid_and_ticks(&mut s, &axes, page);
+    axis_titles(&mut s, &axes, data, page);
+    limit_lines(&mut s, &axes, data, page);
     curves(&mut s, &axes, data);
     if let Some(t) = data.marker {
         let x = axes.sx(t.clamp(axes.t.0, axes.t.1));
         let (y0, y1) = axes.y;
         let _ = writeln!(
             s,
-            r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="black" stroke-width="1.2"/>"#
+            r#"<line class="marker" x1="{x:.2}" y1="{y0:.2}" x2="{x:.2}" y2="{y1:.2}" stroke="{}" stroke-width="1.2"/>"#,
+            ink.marker
         );
     }
-    legend(&mut s, &axes, data.series().1);
+    legend(&mut s, &axes, data.series().1, k);
     s.push_str("</svg>\n");
     s
 }
 
 /// The grid lines and the tick labels of both axes.
-fn grid_and_ticks(s: &mut String, axes: &Axes) {
+fn grid_and_ticks(s: &mut String, axes: &Axes, page: &Page) {
+    let k = page.text;
     let ((x0, x1), (y0, y1)) = (axes.x, axes.y);
     let x_ticks = nice_ticks(axes.t.0, axes.t.1, 8);
     let y_ticks = nice_ticks(axes.v.0, axes.v.1, 6);
@@ -238,7 +350,8 @@ fn grid_and_ticks(s: &mut String, axes: &Axes) {
     let (x_step, y_step) = (step(&x_ticks, 1.0), step(&y_ticks, 0.1));
     let _ = writeln!(
         s,
-        r##"<g class="grid" stroke="#e0e0e0" stroke-width="0.6">"##
+        r#"<g class="grid" stroke="{}" stroke-width="0.6">"#,
+        page.ink.grid
     );
     for &t in &x_ticks {
         let _ = writeln!(
@@ -255,13 +368,13 @@ fn grid_and_ticks(s: &mut String, axes: &Axes) {
         );
     }
     let _ = writeln!(s, "</g>");
-    let _ = writeln!(s, r#"<g class="ticks" fill="black">"#);
+    let _ = writeln!(s, r#"<g class="ticks" fill="{}">"#, page.ink.ticks);
     for &t in &x_ticks {
         let _ = writeln!(
             s,
             r#"<text x="{:.2}" y="{:.2}" text-anchor="middle">{}</text>"#,
             axes.sx(t),
-            y0 + 15.0,
+            y0 + 15.0 * k,
             label(t, x_step)
         );
     }
@@ -269,8 +382,8 @@ fn grid_and_ticks(s: &mut String, axes: &Axes) {
         let _ = writeln!(
             s,
             r#"<text x="{:.2}" y="{:.2}" text-anchor="end">{}</text>"#,
-            x0 - 6.0,
-            axes.sy(l) + 4.0,
+            x0 - 6.0 * k,
+            axes.sy(l) + 4.0 * k,
             label(l, y_step)
         );
     }
@@ -278,35 +391,39 @@ fn grid_and_ticks(s: &mut String, axes: &Axes) {
 }
 
 /// The axes' box and titles.
-fn axis_titles(s: &mut String, axes: &Axes, data: &PlotData) {
+fn axis_titles(s: &mut String, axes: &Axes, data: &PlotData, page: &Page) {
     let ((x0, x1), (y0, y1)) = (axes.x, axes.y);
+    let k = page.text;
     let (name, symbol, unit) = data.series();
     let _ = writeln!(
         s,
-        r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="black" stroke-width="0.8"/>"#,
+        r#"<rect x="{x0:.2}" y="{y1:.2}" width="{:.2}" height="{:.2}" fill="none" stroke="{}" stroke-width="0.8"/>"#,
         x1 - x0,
-        y0 - y1
+        y0 - y1,
+        page.ink.frame
     );
     let _ = writeln!(
         s,
         r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
         0.5 * (x0 + x1),
-        HEIGHT - 8.0,
+        page.height - 8.0 * k,
         data.lang.tr("plot.time_axis")
     );
     let _ = writeln!(
         s,
-        r#"<text x="16" y="{0:.1}" text-anchor="middle" transform="rotate(-90 16 {0:.1})">{1} {2} ({3})</text>"#,
+        r#"<text x="{4}" y="{0:.1}" text-anchor="middle" transform="rotate(-90 {4} {0:.1})">{1} {2} ({3})</text>"#,
         0.5 * (y0 + y1),
         capitalised(name),
         symbol,
-        unit
+        unit,
+        16.0 * k
     );
 }
 
 /// The stroke's or servo range's ends, dashed and labelled.
-fn limit_lines(s: &mut String, axes: &Axes, data: &PlotData) {
+fn limit_lines(s: &mut String, axes: &Axes, data: &PlotData, page: &Page) {
     let (x0, x1) = axes.x;
+    let (k, ink) = (page.text, page.ink.limit);
     let q = data.quantity;
     let unit_suffix = if q.unit == "°" {
         "°".to_owned()
@@ -319,13 +436,14 @@ fn limit_lines(s: &mut String, axes: &Axes, data: &PlotData) {
             let y = axes.sy(l);
             let _ = writeln!(
                 s,
-                r##"<line class="stroke-{name}" x1="{x0:.2}" y1="{y:.2}" x2="{x1:.2}" y2="{y:.2}" stroke="#444" stroke-width="1" stroke-dasharray="5 3"/>"##
+                r#"<line class="stroke-{name}" x1="{x0:.2}" y1="{y:.2}" x2="{x1:.2}" y2="{y:.2}" stroke="{ink}" stroke-width="1" stroke-dasharray="5 3"/>"#
             );
             let _ = writeln!(
                 s,
-                r##"<text x="{:.2}" y="{:.2}" fill="#444" font-size="9" text-anchor="end">{}{} = {l}{}</text>"##,
-                x1 - 4.0,
-                y - 3.0,
+                r#"<text x="{:.2}" y="{:.2}" fill="{ink}" font-size="{}" text-anchor="end">{}{} = {l}{}</text>"#,
+                x1 - 4.0 * k,
+                y - 3.0 * k,
+                9.0 * k,
                 q.symbol,
                 data.lang.tr(&format!("plot.{name}")),
                 unit_suffix
@@ -364,19 +482,19 @@ fn curves(s: &mut String, axes: &Axes, data: &PlotData) {
 }
 
 /// The legend, right of the axes.
-fn legend(s: &mut String, axes: &Axes, symbol: &str) {
+fn legend(s: &mut String, axes: &Axes, symbol: &str, k: f64) {
     let x1 = axes.x.1;
     let _ = writeln!(s, r#"<g class="legend">"#);
     for (leg, colour) in (0..6).map(|k| (k, leg_colour_hex(k))) {
-        let y = axes.y.1 + 14.0 + 16.0 * leg as f64;
+        let y = axes.y.1 + 14.0 * k + 16.0 * k * leg as f64;
         let _ = writeln!(
             s,
             r#"<line x1="{:.2}" y1="{y:.2}" x2="{:.2}" y2="{y:.2}" stroke="{}" stroke-width="2"/><text x="{:.2}" y="{:.2}">{}{}</text>"#,
-            x1 + 8.0,
-            x1 + 26.0,
+            x1 + 8.0 * k,
+            x1 + 26.0 * k,
             colour,
-            x1 + 31.0,
-            y + 4.0,
+            x1 + 31.0 * k,
+            y + 4.0 * k,
             symbol,
             leg + 1
         );

@@ -125,9 +125,9 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                     });
             });
     }
-    // The plot's top edge is a splitter: drag it to give the plot more or less height. In
-    // presentation mode it takes at most a third of the window (G hides it); leaving gives
-    // the height from before back.
+    // The plot's top edge is a splitter: drag it to give the plot more or less height (at
+    // most two fifths of the window). In presentation mode it takes at most a third (G
+    // hides it); leaving gives the height from before back.
     let height = ui.ctx().content_rect().height();
     let mut plot_panel = egui::Panel::bottom("plot")
         .frame(side_frame)
@@ -149,8 +149,14 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             });
         }
         plot_panel = plot_panel.size_range(MIN_PLOT..=(height / 3.0).max(MIN_PLOT));
-    } else if let Some(before) = state.look.plot_height_to_restore.take() {
-        plot_panel = plot_panel.exact_size(before.max(MIN_PLOT));
+    } else {
+        // Never more than two fifths of the window: in a short window the 3D view keeps
+        // the larger share.
+        plot_panel = plot_panel.size_range(MIN_PLOT..=(0.4 * height).max(MIN_PLOT));
+        if let Some(before) = state.look.plot_height_to_restore.take() {
+            plot_panel =
+                plot_panel.exact_size(before.clamp(MIN_PLOT, (0.4 * height).max(MIN_PLOT)));
+        }
     }
     let plot_hidden = state.look.presentation && state.look.plot_hidden;
     let plot_rect = if plot_hidden {
