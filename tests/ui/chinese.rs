@@ -141,3 +141,22 @@ fn the_chinese_interface_looks_right() {
             .max_failed_pixels(8),
     );
 }
+
+#[test]
+fn the_file_dialog_and_help_read_in_chinese() {
+    let mut state = ViewerState::new(Scenario::seed());
+    state.look.lang = Lang::Zh;
+    state.choose_file(stewart_app::viewer::files::Purpose::Open);
+    state.look.help = true;
+    // The dialog's fields are egui_file's own, without accessible names.
+    let mut h = crate::built_harness(state, egui::vec2(1280.0, 900.0), false);
+    h.run();
+    for words in ["新建文件夹", "显示隐藏文件", "帮助 / 按键", "车辆运动记录"]
+    {
+        assert!(h.query_by_label_contains(words).is_some(), "{words}");
+    }
+    // The dialog's own English words are gone (key names and file names stay as written).
+    for words in ["New Folder", "Show Hidden", "Cancel", "Open"] {
+        assert!(h.query_by_label(words).is_none(), "{words}");
+    }
+}
