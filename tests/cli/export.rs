@@ -3,7 +3,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use crate::{probe, stderr, stewart, tempdir};
+use crate::{probe, stderr, stdout, stewart, tempdir};
 
 fn names(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = std::fs::read_dir(dir)
@@ -155,6 +155,46 @@ fn mp4_without_ffmpeg_says_how_to_install_it() {
     assert!(!out.exists());
 }
 
+/// `--speed 0.25`: the motion in slow motion, four times the frames over the same motion.
+#[test]
+fn slow_motion_plays_the_motion_four_times_longer() {
+    let dir = tempdir();
+    let out = dir.path().join("slow.gif");
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--fps",
+        "20",
+        "--speed",
+        "0.25",
+        "--frames",
+        "0..8",
+        "--size",
+        "160x100",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // 8 frames of 5 cs: 0.4 s of video, 0.1 s of motion.
+    let said = format!("{}{}", stdout(&o), stderr(&o));
+    assert!(said.contains("Wrote 8 frames"), "{said}");
+    // The whole 10 s motion would be 40 s: 800 frames at 20 frames/s.
+    let o = stewart(&[
+        "render",
+        "--out",
+        &out.display().to_string(),
+        "--fps",
+        "20",
+        "--speed",
+        "0.25",
+        "--frames",
+        "799..801",
+        "--size",
+        "160x100",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("within the 800 frames"), "{}", stderr(&o));
+}
+
 #[test]
 fn bad_render_options_are_refused() {
     let dir = tempdir();
@@ -182,6 +222,9 @@ fn bad_render_options_are_refused() {
             "without control characters (found U+000A)",
         ),
         (vec!["--title", &long], "at most 200 fit a line"),
+        (vec!["--speed", "0"], "is not a playback speed from 0.01 to 100"),
+        (vec!["--speed", "-1"], "is not a playback speed from 0.01 to 100"),
+        (vec!["--speed", "NaN"], "is not a playback speed from 0.01 to 100"),
     ] {
         let mut all = vec!["render", "--out", &out];
         all.extend(args);

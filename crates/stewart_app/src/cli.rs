@@ -701,6 +701,19 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
+/// A playback speed against real time, within [`crate::export::video::SPEEDS`].
+pub fn parse_speed(text: &str) -> Result<f64, String> {
+    let speeds = crate::export::video::SPEEDS;
+    match text.trim().parse::<f64>() {
+        Ok(x) if speeds.contains(&x) => Ok(x),
+        _ => Err(format!(
+            "`{text}` is not a playback speed from {} to {} (times real time)",
+            speeds.start(),
+            speeds.end()
+        )),
+    }
+}
+
 /// `A..B`, `A..` or `..B`: frame indices from A (default 0) up to, not including, B.
 pub fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String> {
     let (a, b) = text
@@ -740,6 +753,10 @@ pub struct RenderArgs {
     /// Only frames A..B (indices, B excluded).
     #[arg(long, value_name = "A..B", value_parser = parse_frames, allow_hyphen_values = true)]
     pub frames: Option<(Option<usize>, Option<usize>)>,
+    /// How fast the motion plays against real time: 0.25 is slow motion (each second of
+    /// motion lasts four seconds of video), 2 twice as fast (0.01 to 100; default 1).
+    #[arg(long, value_name = "X", value_parser = parse_speed, allow_hyphen_values = true, default_value = "1")]
+    pub speed: f64,
     /// Colours: `dark` for the screen, `light` for slides and papers.
     #[arg(long, value_enum, default_value_t = ThemeName::Dark)]
     pub theme: ThemeName,

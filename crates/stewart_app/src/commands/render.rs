@@ -41,6 +41,7 @@ pub fn run(args: &RenderArgs) -> Result<ExitCode> {
         readout: (args.overlay || args.title.is_some())
             .then(|| args.title.clone().unwrap_or_else(|| scenario.name.clone())),
         lang: crate::i18n::for_command(args.lang, "render"),
+        speed: args.speed,
     };
     let progress = ProgressBar::new(0);
     progress.set_style(

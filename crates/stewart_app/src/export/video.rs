@@ -39,7 +39,13 @@ pub struct VideoRequest {
     pub readout: Option<String>,
     /// The language of the readout and the composite's plot.
     pub lang: crate::i18n::Lang,
+    /// How fast the motion plays in the video against real time (below 1: slow motion;
+    /// each second of motion lasts `1 / speed` seconds of video).
+    pub speed: f64,
 }
+
+/// The slowest and fastest playback a video may have against real time.
+pub const SPEEDS: std::ops::RangeInclusive<f64> = 0.01..=100.0;
 
 /// What an export did.
 #[derive(Clone, Debug, PartialEq)]
@@ -144,14 +150,16 @@ pub struct FramePlan {
     start: f64,
     /// The trajectory's own sampling, when frames are its samples.
     native: Option<stewart_kinematics::Sampling>,
+    /// Seconds of motion per second of video.
+    speed: f64,
 }
 
 impl FramePlan {
-    /// Time of frame `k`, seconds.
+    /// Time of frame `k` in the motion, seconds.
     pub fn time(&self, k: usize) -> f64 {
         match &self.native {
             Some(sampling) => sampling.time(k),
-            None => self.start + k as f64 / self.fps,
+            None => self.start + k as f64 * self.speed / self.fps,
         }
     }
 }
@@ -167,10 +175,20 @@ impl VideoRequest {
         let sampling = scenario.motion.sampling;
         let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
         let target = Target::from_path(&self.out);
+        let speed = self.speed;
+        if !SPEEDS.contains(&speed) {
+            bail!(
+                "a playback speed of {speed} is outside {} … {} times real time",
+                SPEEDS.start(),
+                SPEEDS.end()
+            );
+        }
+        let slowed = speed != 1.0;
         let asked = self.fps.or(match target {
             Target::Gif(_) => Some(GIF_FPS),
             Target::Mp4(_) => Some(MP4_FPS),
-            Target::Folder(_) => None,
+            // Frames are the samples, unless the motion is slowed: then at their rate.
+            Target::Folder(_) => slowed.then_some(native_fps),
         });
         if let Some(fps) = asked {
             check_rate(fps).map_err(anyhow::Error::msg)?;
@@ -190,10 +208,12 @@ impl VideoRequest {
             _ => (fps, None),
         };
         // In-range durations and rates give at most about 1e9 frames: a count, not a list.
+        // The video's length: the motion's, stretched by the speed.
+        let played = sampling.duration() / speed;
         let count = match (&target, asked) {
             (_, None) => sampling.len(),
-            (Target::Gif(_), Some(_)) => ((sampling.duration() * fps).round() as usize).max(1),
-            (_, Some(_)) => ((sampling.duration() * fps).floor() + 1.0) as usize,
+            (Target::Gif(_), Some(_)) => ((played * fps).round() as usize).max(1),
+            (_, Some(_)) => ((played * fps).floor() + 1.0) as usize,
         };
         Ok(FramePlan {
             count,
@@ -201,6 +221,7 @@ impl VideoRequest {
             note,
             start: sampling.start(),
             native: asked.is_none().then_some(sampling),
+            speed,
         })
     }
 
@@ -320,6 +341,7 @@ mod tests {
             overlays: Overlays::default(),
             readout: None,
             lang: crate::i18n::Lang::En,
+            speed: 1.0,
         }
     }
 
@@ -356,6 +378,47 @@ mod tests {
         assert_eq!(plan("a.mp4", Some(1000.0)).note, None);
         for bad in [0.0, 0.005, 1000.5, f64::NAN, f64::INFINITY] {
             let e = request("a.gif", Some(bad)).plan(&seed);
+            assert!(e.is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn slow_motion_stretches_the_video_and_keeps_the_motion_whole() {
+        let seed = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        let slowed = |out: &str, fps, speed| {
+            VideoRequest {
+                speed,
+                ..request(out, fps)
+            }
+            .plan(&seed)
+            .unwrap_or_else(|e| panic!("{e}"))
+        };
+        // A quarter speed: the 10 s motion plays 40 s, 25 frames a second of video, each
+        // frame 0.01 s of motion apart; the last frame is the motion's end.
+        let gif = slowed("a.gif", None, 0.25);
+        assert_eq!((gif.count, gif.fps), (1000, 25.0));
+        assert!((gif.time(1) - gif.time(0) - 0.01).abs() < 1e-12);
+        let mp4 = slowed("a.mp4", None, 0.25);
+        assert_eq!(mp4.count, 2001);
+        assert!((mp4.time(2000) - 10.0).abs() < 1e-9, "{}", mp4.time(2000));
+        // Frames of a folder at the samples' rate, slowed: four frames a sample.
+        let pngs = slowed("frames", None, 0.25);
+        assert_eq!((pngs.count, pngs.fps), (4001, 100.0));
+        // Twice as fast: half the frames.
+        assert_eq!(slowed("a.mp4", None, 2.0).count, 251);
+        // Real time is the plan without speed, frame for frame.
+        assert_eq!(
+            slowed("frames", None, 1.0),
+            request("frames", None)
+                .plan(&seed)
+                .unwrap_or_else(|e| panic!("{e}"))
+        );
+        for bad in [0.0, 0.001, 101.0, f64::NAN, -1.0] {
+            let e = VideoRequest {
+                speed: bad,
+                ..request("a.gif", None)
+            }
+            .plan(&seed);
             assert!(e.is_err(), "{bad}");
         }
     }

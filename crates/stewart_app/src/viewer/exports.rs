@@ -125,6 +125,14 @@ pub struct ExportForm {
     /// it, under the scenario's name).
     #[serde(default)]
     pub title: String,
+    /// How fast the motion plays against real time (below 1: slow motion).
+    #[serde(default = "real_time")]
+    pub speed: f64,
+}
+
+/// Real time: the speed of a form saved before there was one.
+fn real_time() -> f64 {
+    1.0
 }
 
 impl Default for ExportForm {
@@ -138,6 +146,7 @@ impl Default for ExportForm {
             composite: false,
             span_s: None,
             title: String::new(),
+            speed: 1.0,
         }
     }
 }

@@ -224,6 +224,12 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if form.kind.is_video() {
         ui.add(egui::Slider::new(&mut form.fps, 0.0..=120.0).text(t.tr("export.fps")));
+        ui.add(
+            egui::Slider::new(&mut form.speed, 0.05..=2.0)
+                .logarithmic(true)
+                .text(t.tr("export.speed")),
+        )
+        .on_hover_text(t.tr("export.speed_tip"));
         ui.horizontal(|ui| {
             ui.checkbox(&mut form.light, t.tr("export.light"));
             ui.checkbox(&mut form.composite, t.tr("export.composite"));
@@ -366,6 +372,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
             Some(form.title.clone())
         },
         lang: state.look.lang,
+        speed: form.speed,
     };
     if let Some(span) = form.span_s
         && let Ok(plan) = request.plan(state.scenario())
