@@ -192,7 +192,11 @@ fn slow_motion_plays_the_motion_four_times_longer() {
         "160x100",
     ]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("within the 800 frames"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("within the 800 frames"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -222,9 +226,18 @@ fn bad_render_options_are_refused() {
             "without control characters (found U+000A)",
         ),
         (vec!["--title", &long], "at most 200 fit a line"),
-        (vec!["--speed", "0"], "is not a playback speed from 0.01 to 100"),
-        (vec!["--speed", "-1"], "is not a playback speed from 0.01 to 100"),
-        (vec!["--speed", "NaN"], "is not a playback speed from 0.01 to 100"),
+        (
+            vec!["--speed", "0"],
+            "is not a playback speed from 0.01 to 100",
+        ),
+        (
+            vec!["--speed", "-1"],
+            "is not a playback speed from 0.01 to 100",
+        ),
+        (
+            vec!["--speed", "NaN"],
+            "is not a playback speed from 0.01 to 100",
+        ),
     ] {
         let mut all = vec!["render", "--out", &out];
         all.extend(args);

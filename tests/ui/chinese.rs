@@ -117,10 +117,15 @@ fn the_language_switch_changes_the_interface_at_once() {
     state.look.lang = Lang::En;
     let mut h = crate::harness_with(state, 1600.0);
     assert!(h.query_by_label("Scenario").is_some());
+    // A status line written in English does not stay English after the switch.
+    h.state_mut().files.status = Some(Ok("Saved to /tmp/x.toml.".to_owned()));
+    h.run();
+    assert!(h.query_by_label("Saved to /tmp/x.toml.").is_some());
     h.get_by_label("中文").click();
     h.run();
     assert_eq!(h.state().look.lang, Lang::Zh);
     assert!(h.query_by_label("场景").is_some() && h.query_by_label("Scenario").is_none());
+    assert!(h.query_by_label("Saved to /tmp/x.toml.").is_none());
     h.get_by_label("English").click();
     h.run();
     assert_eq!(h.state().look.lang, Lang::En);

@@ -136,6 +136,16 @@ impl ViewerState {
         self.doc.title(self.look.lang)
     }
 
+    /// Show the interface in `lang`. The status lines of files, exports and screenshots were
+    /// written in the other language: they are cleared rather than left in it (the link's
+    /// outcome stays: where an emergency stop left the platform is not to be lost).
+    pub fn set_language(&mut self, lang: crate::i18n::Lang) {
+        self.look.lang = lang;
+        self.files.status = None;
+        self.exports.status = None;
+        self.shots.status = None;
+    }
+
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
     /// sound (else the reason shows in the Link panel).
     pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {

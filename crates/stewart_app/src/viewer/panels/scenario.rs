@@ -227,8 +227,8 @@ fn language(ui: &mut egui::Ui, state: &mut ViewerState) {
                     egui::Button::selectable(state.look.lang == lang, lang.own_name()),
                 )
                 .on_disabled_hover_text(t.tr("scenario.no_cjk_font"));
-            if button.clicked() {
-                state.look.lang = lang;
+            if button.clicked() && state.look.lang != lang {
+                state.set_language(lang);
             }
         }
     });
