@@ -8,6 +8,9 @@ bash scripts/setup.sh
 # Mesa's drivers warn when no runtime folder is set (as under CI); give them a private one.
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all --check
+# The kinematics core's layers (model -> solve -> analysis, io beside): no import or call
+# goes up a layer beyond the exceptions ARCHITECTURE.md lists.
+python3 scripts/layer-check.py
 cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
 # The Python package (a workspace of its own: it builds against Python): lints, then

@@ -1,6 +1,7 @@
 //! Kinematics solvers: inverse kinematics (one pose or millions on all cores), forward
-//! kinematics (Newton, homotopy, every assembly mode), Jacobians and conditioning, and what
-//! the actuators do at a pose whatever their kind (`actuation`).
+//! kinematics (Newton, homotopy, every assembly mode), Jacobians and conditioning, what
+//! the actuators do at a pose whatever their kind (`actuation`), a servo platform's angles
+//! and level height (`servo_angles`), and the scene to draw for a pose (`scene_frame`).
 
 pub mod actuation;
 pub mod batch;
@@ -9,3 +10,5 @@ pub(crate) mod fast_trig;
 pub mod forward;
 pub mod inverse;
 pub mod jacobian;
+mod scene_frame;
+mod servo_angles;

@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""The kinematics core's layers as walls: model -> solve -> analysis, io beside.
+
+Every `crate::NAME` a file of one layer names is mapped to the layer NAME lives in (its
+folder under crates/stewart_kinematics/src); a name in a higher layer is an import that
+goes up a layer: model may name model only; solve model and solve; analysis model, solve
+and analysis; io any of them (it reads and writes what the others define). Each such
+import is printed with its file and line; `impl Geometry` blocks outside model/ are
+counted too (methods of the platform added by other layers).
+
+Modules any layer may name (`bounds`, `text`) and the exceptions ARCHITECTURE.md lists
+are not counted; nor are tests (`tests.rs`, `tests/`, and what follows `#[cfg(test)]`).
+
+Usage: layer-check.py [--max N]. Exits 1 when the count of upward imports and calls is
+over N (default 0): scripts/check.sh holds the count where it stands (a ratchet, lowered
+as the walls are mended) until it is 0.
+"""
+
+import pathlib
+import re
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent / "crates/stewart_kinematics/src"
+LAYERS = ["model", "solve", "analysis", "io"]
+# What each layer may name besides itself.
+ALLOWED = {
+    "model": {"model"},
+    "solve": {"model", "solve"},
+    "analysis": {"model", "solve", "analysis"},
+    "io": {"model", "solve", "analysis", "io"},
+}
+# Modules any layer may name: the accepted ranges and the input-text rules everything
+# that takes a number or a file checks against (ARCHITECTURE.md).
+EVERYWHERE = {"bounds", "text"}
+# The exceptions ARCHITECTURE.md lists and says why: (file under src/, module named).
+EXCEPTIONS = {
+    ("model/trajectory/pose_table.rs", "table"),
+    ("analysis/cueing/mod.rs", "table"),
+    ("model/limits.rs", "inverse"),
+    ("analysis/calibration/apply.rs", "scenario"),
+}
+
+
+def module_layers():
+    """Each module name (a file or folder directly in a layer's folder) -> its layer."""
+    found = {}
+    for layer in LAYERS:
+        for entry in (ROOT / layer).iterdir():
+            name = entry.stem if entry.suffix == ".rs" else entry.name
+            if name != "mod":
+                found[name] = layer
+    return found
+
+
+def impl_methods(path):
+    """The methods defined in the `impl Geometry` blocks of `path` (brace counting)."""
+    names = set()
+    depth = None
+    for line in path.read_text(encoding="utf-8").split("#[cfg(test)]")[0].splitlines():
+        if depth is None:
+            if re.match(r"\s*impl\s+Geometry\b", line):
+                depth = line.count("{") - line.count("}")
+            continue
+        if depth == 1:
+            m = re.match(r"\s*(?:pub(?:\([a-z]+\))?\s+)?(?:const\s+)?fn\s+([a-z_][a-z0-9_]*)", line)
+            if m:
+                names.add(m.group(1))
+        depth += line.count("{") - line.count("}")
+        if depth <= 0:
+            depth = None
+    return names
+
+
+def main():
+    limit = 0
+    if len(sys.argv) == 3 and sys.argv[1] == "--max":
+        limit = int(sys.argv[2])
+    layers = module_layers()
+    name = re.compile(r"\bcrate::(?:(model|solve|analysis|io)::)?([a-z_][a-z0-9_]*)")
+    upward = []
+    impls = []
+    for layer in LAYERS:
+        for path in sorted((ROOT / layer).rglob("*.rs")):
+            # Tests may use any layer.
+            if path.name == "tests.rs" or "tests" in path.relative_to(ROOT).parts[:-1]:
+                continue
+            here = str(path.relative_to(ROOT))
+            text = path.read_text(encoding="utf-8")
+            # Tests may reach anywhere: only the code above `#[cfg(test)]` counts.
+            code = text.split("#[cfg(test)]")[0]
+            for number, line in enumerate(code.splitlines(), 1):
+                if line.lstrip().startswith("//"):
+                    continue
+                for m in name.finditer(line):
+                    module = m.group(2)
+                    if module in EVERYWHERE or (here, module) in EXCEPTIONS:
+                        continue
+                    target = m.group(1) or layers.get(module)
+                    if target and target not in ALLOWED[layer]:
+                        rel = path.relative_to(ROOT.parent.parent.parent)
+                        upward.append(f"{rel}:{number}: {layer} names {target} ({m.group(0)})")
+                if layer != "model" and re.match(r"\s*impl\s+Geometry\b", line):
+                    impls.append(str(path.relative_to(ROOT.parent.parent.parent)))
+    # Methods of Geometry by the layer that defines them; a method defined in model too is
+    # model's.
+    defined = {layer: set() for layer in LAYERS}
+    for layer in LAYERS:
+        for path in (ROOT / layer).rglob("*.rs"):
+            defined[layer] |= impl_methods(path)
+    rank = {"model": 0, "solve": 1, "analysis": 2, "io": 3}
+    owner = {}
+    for layer in sorted(LAYERS, key=lambda l: -rank[l]):
+        for method in defined[layer]:
+            owner[method] = layer
+    call = re.compile(r"\.([a-z_][a-z0-9_]*)\(")
+    for layer in ["model", "solve", "analysis"]:
+        for path in sorted((ROOT / layer).rglob("*.rs")):
+            code = path.read_text(encoding="utf-8").split("#[cfg(test)]")[0]
+            for number, line in enumerate(code.splitlines(), 1):
+                if line.lstrip().startswith("//"):
+                    continue
+                for m in call.finditer(line):
+                    target = owner.get(m.group(1))
+                    if target and target not in ALLOWED[layer]:
+                        rel = path.relative_to(ROOT.parent.parent.parent)
+                        upward.append(f"{rel}:{number}: {layer} calls {target}'s Geometry::{m.group(1)}")
+    for line in upward:
+        print(line)
+    files = sorted(set(impls))
+    print(
+        f"{len(upward)} imports or calls go up a layer; "
+        f"`impl Geometry` outside model/ in {len(files)} files"
+    )
+    if len(upward) > limit:
+        print(
+            f"layer-check: {len(upward)} go up a layer, more than the {limit} allowed "
+            "(see ARCHITECTURE.md: model -> solve -> analysis, io beside)",
+            file=sys.stderr,
+        )
+        sys.exit(1)
+
+
+main()
