@@ -201,36 +201,13 @@ fn the_plot_is_taller_after_dragging_its_top_edge_up() {
     assert!(before > 100.0, "{before}");
     // The plot's splitter (the horizontal one; the controls' is vertical), grabbed just
     // above its line: the 3D view there used to take that drag and orbit the camera.
-    let edge = h
-        .get_all_by_role(Role::Splitter)
-        .map(|n| n.rect())
-        .find(|r| r.width() > r.height())
-        .unwrap_or_else(|| panic!("no splitter under the view"))
-        .center()
-        - egui::vec2(0.0, 5.0);
-    let up = egui::vec2(0.0, -80.0);
     let camera = h.state().look.camera;
-    h.hover_at(edge);
-    h.run();
-    h.drag_at(edge);
-    h.run();
-    h.hover_at(edge + up);
-    h.run();
-    h.drop_at(edge + up);
-    h.run();
+    drag_plot_edge(&mut h, -80.0);
     let after = h.state().look.plot_height;
     assert!((after - before - 80.0).abs() < 6.0, "{before} → {after}");
     assert_eq!(h.state().look.camera, camera);
     // Dragged further, it stops at two fifths of the window (800 points high).
-    let edge = edge + up;
-    h.hover_at(edge);
-    h.run();
-    h.drag_at(edge);
-    h.run();
-    h.hover_at(edge + up * 3.0);
-    h.run();
-    h.drop_at(edge + up * 3.0);
-    h.run();
+    drag_plot_edge(&mut h, -240.0);
     let most = h.state().look.plot_height;
     assert!((most - 320.0).abs() < 2.0, "{most}");
 }
@@ -462,22 +439,7 @@ fn presentation_enters_and_leaves_exactly_with_the_plot_a_third_at_most() {
     let mut h = harness("seed");
     h.state_mut().look.readouts = true;
     // The user's own plot height: dragged up to 420 points (more than a third of 800).
-    let edge = h
-        .get_all_by_role(Role::Splitter)
-        .map(|n| n.rect())
-        .find(|r| r.width() > r.height())
-        .unwrap_or_else(|| panic!("no splitter under the view"))
-        .center()
-        - egui::vec2(0.0, 5.0);
-    let up = egui::vec2(0.0, -200.0);
-    h.hover_at(edge);
-    h.run();
-    h.drag_at(edge);
-    h.run();
-    h.hover_at(edge + up);
-    h.run();
-    h.drop_at(edge + up);
-    h.run();
+    drag_plot_edge(&mut h, -200.0);
     let plot_before = h.state().look.plot_height;
     assert!(plot_before > 800.0 / 3.0, "{plot_before}");
     let camera_before = h.state().look.camera;
@@ -580,4 +542,28 @@ fn f1_lists_every_key_and_ctrl_q_quits() {
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Q);
     h.run();
     assert!(h.state().quit_asked);
+}
+
+/// Drag the plot's top edge (the horizontal splitter, grabbed just above its line) by
+/// `dy` points (negative: up).
+fn drag_plot_edge(
+    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
+    dy: f32,
+) {
+    let edge = h
+        .get_all_by_role(Role::Splitter)
+        .map(|n| n.rect())
+        .find(|r| r.width() > r.height())
+        .unwrap_or_else(|| panic!("no splitter under the view"))
+        .center()
+        - egui::vec2(0.0, 5.0);
+    let by = egui::vec2(0.0, dy);
+    h.hover_at(edge);
+    h.run();
+    h.drag_at(edge);
+    h.run();
+    h.hover_at(edge + by);
+    h.run();
+    h.drop_at(edge + by);
+    h.run();
 }

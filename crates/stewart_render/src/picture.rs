@@ -130,8 +130,14 @@ impl Picture {
 
 /// The layout of a picture's bind group (group 1): the texture and its sampler.
 pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    sampled_texture_layout(device, "picture")
+}
+
+/// A bind group layout of one filterable 2-D texture (binding 0) and its sampler
+/// (binding 1), read by the fragment stage: a picture's, the glyph atlas's.
+pub(crate) fn sampled_texture_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("picture"),
+        label: Some(label),
         entries: &[
             wgpu::BindGroupLayoutEntry {
                 binding: 0,

@@ -563,27 +563,7 @@ fn text_pipeline(
     multisample: wgpu::MultisampleState,
     format: wgpu::TextureFormat,
 ) -> (wgpu::RenderPipeline, wgpu::Texture, wgpu::BindGroup) {
-    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("glyph atlas"),
-        entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            },
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                count: None,
-            },
-        ],
-    });
+    let layout = crate::picture::sampled_texture_layout(device, "glyph atlas");
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("glyph atlas"),
         size: wgpu::Extent3d {

@@ -108,8 +108,8 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
         } else {
             Drawn::Direct
         };
-        // The window's own view is prepared whatever is drawn (its globals are bound when
-        // a picture is drawn in); the scaled picture is rendered from it, at its size.
+        // The window's own view: drawn straight in, or the scaled picture rendered from it
+        // at its size; its bind group is bound when a picture is drawn in.
         let scaled = self
             .viewport
             .map(|v| (v * super::quality::SCALE).round().max(1.0));
@@ -126,16 +126,20 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
         } else {
             1.0
         };
-        renderer.prepare_scaled(
-            device,
-            queue,
-            view,
-            &self.list,
-            &self.camera,
-            &self.theme,
-            viewport,
-            scale,
-        );
+        // The full picture is prepared by its own renderer below: the window's view then
+        // only lends its bind group to the copy, and is not prepared a second time.
+        if drawn != Drawn::Full {
+            renderer.prepare_scaled(
+                device,
+                queue,
+                view,
+                &self.list,
+                &self.camera,
+                &self.theme,
+                viewport,
+                scale,
+            );
+        }
         let Some(full) = full else {
             return Vec::new();
         };
