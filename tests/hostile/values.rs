@@ -2,7 +2,7 @@
 //! random values of every numeric option.
 
 use proptest::prelude::*;
-use stewart_kinematics::{Scenario, settings};
+use stewart_kinematics::{Scenario, io::settings};
 
 use crate::run::{PRESETS, names, path, run, tempdir};
 

@@ -7,7 +7,7 @@ mod snapshots;
 mod workspace;
 
 use glam::Vec3;
-use stewart_kinematics::{Geometry, GeometryParams, Pose, StrokeLimits};
+use stewart_kinematics::{Geometry, GeometryParams, Pose, model::geometry::StrokeLimits};
 use stewart_render::theme::series;
 use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
 
@@ -282,7 +282,7 @@ fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
     );
     // A range of ±1°: every servo at home is past it, and its horn turns the warning colour.
     let mut narrow = s.clone();
-    stewart_kinematics::settings::apply_all(
+    stewart_kinematics::io::settings::apply_all(
         &mut narrow,
         ["actuator.servo_min_deg=-1", "actuator.servo_max_deg=1"],
     )
@@ -294,7 +294,7 @@ fn servos_show_horns_in_their_colour_and_warn_past_their_range() {
     assert!(
         servos
             .iter()
-            .all(|s| s.status == stewart_kinematics::scene::LegStatus::OverLimit)
+            .all(|s| s.status == stewart_kinematics::model::scene::LegStatus::OverLimit)
     );
     let horn_middles: Vec<Vec3> = servos
         .iter()

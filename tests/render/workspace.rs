@@ -4,8 +4,8 @@
 use std::sync::Arc;
 
 use glam::Vec3;
-use stewart_kinematics::workspace::{Plane, Slice, WorkspaceSurface};
-use stewart_kinematics::{Angle, Limits, Scenario};
+use stewart_kinematics::analysis::workspace::{Plane, Slice, WorkspaceSurface};
+use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;
 use stewart_render::colormap;
 use stewart_render::theme::linear;

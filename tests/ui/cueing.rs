@@ -2,8 +2,8 @@
 //! washout, the panel plots what the platform makes felt, and its settings cue it again.
 
 use egui_kittest::kittest::Queryable;
-use stewart_kinematics::cueing::{VehicleMotion, cue_recording};
-use stewart_kinematics::settings;
+use stewart_kinematics::analysis::cueing::{VehicleMotion, cue_recording};
+use stewart_kinematics::io::settings;
 
 use crate::files::drop_file;
 

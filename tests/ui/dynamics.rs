@@ -3,7 +3,7 @@
 //! actuator forces.
 
 use egui_kittest::kittest::Queryable;
-use stewart_kinematics::settings;
+use stewart_kinematics::io::settings;
 
 #[test]
 fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {

@@ -153,7 +153,7 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
     let (address, controller) = lagging_controller(2000);
     let mut h = tall_harness("paired", 2400.0);
     h.state_mut().edit_link(|l| {
-        l.transport = stewart_kinematics::link_settings::LinkTransport::Udp;
+        l.transport = stewart_kinematics::model::link_settings::LinkTransport::Udp;
         l.address = Some(address.clone());
         l.ramp_s = 0.1;
         l.rate_hz = 200.0;

@@ -188,7 +188,7 @@ fn the_diagnostics_say_when_the_geometry_is_singular() {
         .state()
         .scenario()
         .geometry
-        .plate_radius(stewart_kinematics::Plate::Base);
+        .plate_radius(stewart_kinematics::model::geometry::Plate::Base);
     h.get_by_label("Use the nearest sound layout (pairs 60° / 115°)")
         .click();
     h.run();
@@ -199,7 +199,7 @@ fn the_diagnostics_say_when_the_geometry_is_singular() {
         h.state()
             .scenario()
             .geometry
-            .plate_radius(stewart_kinematics::Plate::Base),
+            .plate_radius(stewart_kinematics::model::geometry::Plate::Base),
         radius
     );
     let h = harness("paired");
@@ -222,7 +222,7 @@ fn geometry_edits_apply_or_are_refused_with_a_reason() {
         h.state()
             .scenario()
             .geometry
-            .plate_radius(stewart_kinematics::Plate::Base),
+            .plate_radius(stewart_kinematics::model::geometry::Plate::Base),
         1.2
     );
     assert!((h.state().scenario().geometry.base_joints()[0].norm() - 1.2).abs() < 1e-12);

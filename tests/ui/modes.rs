@@ -3,8 +3,8 @@
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::playback::MotionMode;
-use stewart_kinematics::forward::assembly::same_placement;
-use stewart_kinematics::settings;
+use stewart_kinematics::io::settings;
+use stewart_kinematics::solve::forward::assembly::same_placement;
 
 use crate::harness;
 

@@ -3,7 +3,7 @@
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use stewart_kinematics::settings;
+use stewart_kinematics::io::settings;
 
 use crate::harness;
 

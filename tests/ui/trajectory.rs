@@ -2,7 +2,7 @@
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use stewart_kinematics::trajectory::Trajectory;
+use stewart_kinematics::model::trajectory::Trajectory;
 
 use crate::harness;
 
@@ -101,7 +101,7 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
     };
     assert_eq!(
         k.interpolation(),
-        stewart_kinematics::trajectory::Interpolation::Linear
+        stewart_kinematics::model::trajectory::Interpolation::Linear
     );
     // A key moved before its predecessor is refused: the keys stay, the reason shows.
     let before = h.state().scenario().clone();

@@ -16,7 +16,7 @@ use criterion::{Criterion, criterion_group};
 use stewart_app::hardware;
 use stewart_app::live_cue::LiveCue;
 use stewart_kinematics::Scenario;
-use stewart_kinematics::cueing::{Cueing, VehicleMotion};
+use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_link::generator::Sample;
 use stewart_link::safety::TargetError;
 use stewart_link::sender::{SenderConfig, Stream, Target, time_each};
@@ -25,7 +25,7 @@ use stewart_link::transport::Udp;
 /// The seed platform with its stroke, the default washout and the limiter on.
 fn scenario() -> Scenario {
     let mut s = Scenario::seed();
-    stewart_kinematics::settings::apply_all(
+    stewart_kinematics::io::settings::apply_all(
         &mut s,
         [
             "geometry.leg_min=0.55",

@@ -9,7 +9,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use stewart_app::export::tables::{solve_table, trajectory_table, write_solved_csv};
 use stewart_kinematics::Scenario;
-use stewart_kinematics::trajectory::{PoseTable, Sampling};
+use stewart_kinematics::model::trajectory::{PoseTable, Sampling};
 
 const ROWS: usize = 1_000_000;
 

@@ -4,8 +4,8 @@ use std::ops::RangeInclusive;
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use stewart_kinematics::bounds;
-use stewart_kinematics::link_settings::{LinkFormat, LinkTransport, Word};
+use stewart_kinematics::io::bounds;
+use stewart_kinematics::model::link_settings::{LinkFormat, LinkTransport, Word};
 
 use crate::i18n::Lang;
 use crate::shot_scale::ShotScale;
@@ -240,7 +240,7 @@ pub fn parse_link_rate(text: &str) -> Result<f64, String> {
         .trim()
         .parse()
         .map_err(|_| format!("`{text}` is not a number of hertz"))?;
-    let (lo, hi) = stewart_kinematics::link_settings::RATES_HZ;
+    let (lo, hi) = stewart_kinematics::model::link_settings::RATES_HZ;
     if (lo..=hi).contains(&v) {
         Ok(v)
     } else {
@@ -455,7 +455,7 @@ pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
     Ok([number(a)?, number(b)?, number(c)?])
 }
 
-/// Three numbers, each checked against its accepted range (see `stewart_kinematics::bounds`).
+/// Three numbers, each checked against its accepted range (see `stewart_kinematics::io::bounds`).
 fn parse_bounded(
     text: &str,
     ranges: [(&str, RangeInclusive<f64>, &str); 3],

@@ -4,8 +4,8 @@
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::Scenario;
-use stewart_kinematics::actuator::ActuatorKind;
-use stewart_kinematics::link_settings::{
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
 use stewart_link::channels::{Channel, ChannelMap, Output};

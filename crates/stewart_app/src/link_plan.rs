@@ -5,7 +5,7 @@
 //! so the same scenario sends the same thing from either.
 
 use anyhow::Result;
-use stewart_kinematics::link_settings::LinkSettings;
+use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
 use stewart_link::generator::{Motion, Sample};

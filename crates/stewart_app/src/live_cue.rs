@@ -14,7 +14,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use anyhow::{Context as _, Result, bail};
-use stewart_kinematics::cueing::{Cueing, VehicleMotion};
+use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_kinematics::{Pose, Scenario};
 use stewart_link::generator::Sample;
 use stewart_link::safety::TargetError;
@@ -250,7 +250,7 @@ impl LiveCue {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stewart_kinematics::cueing::cue_recording;
+    use stewart_kinematics::analysis::cueing::cue_recording;
 
     fn send(to: std::net::SocketAddr, text: &str) {
         let s = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));

@@ -6,7 +6,7 @@ use std::io::Write as _;
 use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
-use stewart_kinematics::trajectory::Samples;
+use stewart_kinematics::model::trajectory::Samples;
 
 /// Work estimated shorter than this runs without a word.
 pub const QUIET_BELOW_S: f64 = 2.0;

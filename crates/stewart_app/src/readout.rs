@@ -69,7 +69,7 @@ pub fn lines(
                 ("n", &e.servo),
                 (
                     "pct",
-                    &stewart_kinematics::rotary::compact(100.0 * e.excess),
+                    &stewart_kinematics::model::rotary::compact(100.0 * e.excess),
                 ),
             ],
         )),

@@ -1,7 +1,7 @@
 //! Resolving `--preset` / `--scenario` and `--set` into a scenario.
 
 use anyhow::Result;
-use stewart_kinematics::{Scenario, settings};
+use stewart_kinematics::{Scenario, io::settings};
 
 use crate::cli::ScenarioArgs;
 

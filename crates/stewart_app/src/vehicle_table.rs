@@ -5,9 +5,9 @@
 use std::io::Read;
 
 use anyhow::Result;
-use stewart_kinematics::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, symmetric};
-use stewart_kinematics::cueing::VehicleMotion;
-use stewart_kinematics::table::NumericTable;
+use stewart_kinematics::analysis::cueing::VehicleMotion;
+use stewart_kinematics::io::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, symmetric};
+use stewart_kinematics::io::table::NumericTable;
 
 /// The columns, in order.
 pub const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];

@@ -5,8 +5,10 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::Vector3;
-use stewart_kinematics::calibration::{Held, Measurement, calibrate};
-use stewart_kinematics::{Geometry, GeometryParams, Layout, PlateJoints, Pose};
+use stewart_kinematics::analysis::calibration::{Held, Measurement, calibrate};
+use stewart_kinematics::{
+    Geometry, GeometryParams, Pose, model::geometry::PlateJoints, model::layout::Layout,
+};
 
 /// A deterministic spread in [−1, 1) from an index and a salt.
 fn spread(k: usize, salt: usize) -> f64 {

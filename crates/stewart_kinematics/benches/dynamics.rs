@@ -8,8 +8,8 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::{Matrix3, Vector3};
 use std::hint::black_box;
 use stewart_kinematics::Scenario;
-use stewart_kinematics::dynamics::{DynamicsSettings, MotionState, motion_states};
-use stewart_kinematics::forces::Payload;
+use stewart_kinematics::analysis::dynamics::{DynamicsSettings, MotionState, motion_states};
+use stewart_kinematics::analysis::forces::Payload;
 
 fn heavy_legs(scale: f64) -> DynamicsSettings {
     DynamicsSettings {

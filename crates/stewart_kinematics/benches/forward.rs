@@ -7,7 +7,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::{Angle, ForwardOptions, Pose, Scenario};
+use stewart_kinematics::{Angle, Pose, Scenario, solve::forward::ForwardOptions};
 
 fn bench(c: &mut Criterion) {
     let scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));

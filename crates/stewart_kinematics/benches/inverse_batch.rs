@@ -6,10 +6,11 @@
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::actuator::Actuator;
-use stewart_kinematics::rotary::RotaryActuators;
+use stewart_kinematics::model::actuator::Actuator;
+use stewart_kinematics::model::rotary::RotaryActuators;
 use stewart_kinematics::{
-    Angle, BatchSolver, Geometry, GeometryParams, Layout, PlateJoints, Pose, ServoBatch,
+    Angle, BatchSolver, Geometry, GeometryParams, Pose, model::geometry::PlateJoints,
+    model::layout::Layout, solve::batch::ServoBatch,
 };
 
 /// A deterministic spread of poses about the seed's home pose.
@@ -134,7 +135,7 @@ fn servo_bench(c: &mut Criterion) {
 /// cache) for main memory.
 fn memory_bound_bench(c: &mut Criterion) {
     use rayon::prelude::*;
-    use stewart_kinematics::batch::CHUNK;
+    use stewart_kinematics::solve::batch::CHUNK;
     let mut group = c.benchmark_group("memory_bound");
     group.sample_size(10);
     for (name, n) in [

@@ -6,8 +6,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use stewart_kinematics::workspace::WorkspaceSurface;
-use stewart_kinematics::{Angle, Limits, Scenario};
+use stewart_kinematics::analysis::workspace::WorkspaceSurface;
+use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 
 fn bench(c: &mut Criterion) {
     let g = Scenario::preset("paired")

@@ -6,59 +6,49 @@
 //! plane, pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment
 //! from `b_i` to `q_i = p + c + R (a_i − c)` (`c` the pivot, zero in the seed).
 //!
-//! The tree shows the layers (see ARCHITECTURE.md): [`model`] — the platform and its
-//! motion as data; [`solve`] — inverse and forward kinematics, batches, Jacobians and what
-//! the actuators do at a pose; [`analysis`] — what is computed from a model (checks,
-//! workspace, design, forces, calibration); [`io`] — files and user input (scenarios,
-//! settings, tables, text, accepted ranges). Each module is also reachable at the crate's
-//! root (`stewart_kinematics::workspace`), as before the layers.
+//! The tree shows the layers, each a wall the one below cannot see through (see
+//! ARCHITECTURE.md; `scripts/layer-check.py` keeps them):
 //!
-//! - [`angle`]: angles whose unit is carried by the type;
-//! - [`geometry`], [`layout`]: the platform and its named joint layouts;
-//! - [`pose`], [`inverse`], [`batch`]: poses and inverse kinematics, one or millions;
-//! - [`trajectory`]: motions over time and their sampling;
-//! - [`checks`]: the pre-flight checks over a motion (stroke, rates, cones, clearance,
-//!   singularity, jumps, rigid body); [`differences`]: the finite differences they use;
-//! - [`jacobian`], [`architecture`], [`forward`], [`workspace`], [`forces`], [`limits`]:
-//!   conditioning, singular geometries, forward kinematics, reach, loads, pose limits;
-//! - [`scene`]: plain data describing what to draw (the renderer's input);
-//! - [`rotary`]: rotary-servo (6-RSS) actuators and their closed-form inverse kinematics;
-//! - [`link_settings`]: the `[link]` table (transport, rate, channel map) for real hardware;
-//! - [`settings`], [`bounds`]: every adjustable number and the accepted range of each;
-//! - [`calibration`]: joints and actuator offsets of a built platform from measured poses;
-//! - [`scenario`]: scenario files (TOML) and the shipped presets;
-//! - [`table`]: numeric CSV tables with located errors;
-//! - [`text`]: input text with a size cap and plain words for foreign encodings.
+//! - [`model`] — the platform and its motion as data: [`model::angle`], [`model::pose`],
+//!   [`model::geometry`] and its [`model::layout`]s, the [`model::actuator`]s (linear legs or
+//!   [`model::rotary`] servos), pose [`model::limits`], [`model::trajectory`], the tables of
+//!   settings each feature reads (`[link]`, `[cueing]`, `[dynamics]`), and the
+//!   [`model::scene`] a renderer draws;
+//! - [`solve`] — what a pose makes of the model: [`solve::inverse`] kinematics one pose at a
+//!   time or millions in a [`solve::batch`], [`solve::forward`] kinematics with every
+//!   assembly mode, [`solve::jacobian`]s and conditioning, and [`solve::actuation`] (what the
+//!   actuators do, whatever their kind);
+//! - [`analysis`] — what is computed from a model over many poses: the pre-flight
+//!   [`analysis::checks`], the [`analysis::workspace`], [`analysis::design`] ranges,
+//!   [`analysis::forces`] and [`analysis::dynamics`], [`analysis::calibration`],
+//!   [`analysis::cueing`] from vehicle motion, singular [`analysis::architecture`]s;
+//! - [`io`] — beside them: [`io::scenario`] files and presets, the [`io::settings`] every
+//!   number is declared in, numeric CSV [`io::table`]s, input [`io::text`], and the accepted
+//!   range of every kind of number ([`io::bounds`]).
+//!
+//! The root names what most users start from; everything else is reached through its
+//! layer (`stewart_kinematics::analysis::workspace`):
+//!
+//! - [`Scenario`], [`ScenarioError`]: a scenario file or preset, read and checked;
+//! - [`Geometry`], [`GeometryParams`], [`GeometryError`]: the platform, its parameters, and
+//!   why a set of parameters is not a platform;
+//! - [`Pose`], [`Angle`]: where the platform is, and angles whose unit is in the type;
+//! - [`Trajectory`], [`Sampling`]: motions over time and how they are sampled;
+//! - [`BatchSolver`]: inverse kinematics for millions of poses on all cores;
+//! - [`CheckReport`]: what the pre-flight checks found over a motion.
 
 pub mod analysis;
 pub mod io;
 pub mod model;
 pub mod solve;
 
-pub use analysis::{
-    architecture, calibration, checks, cueing, design, differences, dynamics, forces, sound_layout,
-    workspace,
-};
-pub use io::{bounds, scenario, settings, table, text};
-pub use model::{
-    actuator, angle, cueing_settings, dynamics_settings, geometry, layout, limits, link_settings,
-    pose, rotary, scene, trajectory,
-};
-pub(crate) use solve::fast_trig;
-pub use solve::{actuation, batch, forward, inverse, jacobian};
+pub use analysis::checks::CheckReport;
+pub use io::scenario::{Scenario, ScenarioError};
+pub use model::angle::Angle;
+pub use model::geometry::{Geometry, GeometryError, GeometryParams};
+pub use model::pose::Pose;
+pub use model::trajectory::{Sampling, Trajectory};
+pub use solve::batch::BatchSolver;
 
 #[cfg(test)]
 mod test_support;
-
-pub use angle::Angle;
-pub use batch::{BatchSolver, ServoBatch};
-pub use checks::{CheckReport, CheckSettings, Finding, FindingKind, check_motion};
-pub use forward::{ForwardError, ForwardOptions, ForwardSolution};
-pub use geometry::{Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits};
-pub use inverse::LegSolution;
-pub use jacobian::Conditioning;
-pub use layout::Layout;
-pub use limits::Limits;
-pub use pose::Pose;
-pub use scenario::{Scenario, ScenarioError};
-pub use trajectory::{Motion, Samples, Sampling, Trajectory};

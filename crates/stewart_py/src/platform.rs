@@ -5,13 +5,17 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use stewart_kinematics::angle::Angle;
-use stewart_kinematics::batch::RowError;
-use stewart_kinematics::calibration::{Held, Measurement, calibrate as fit, calibrated_scenario};
-use stewart_kinematics::checks::document::CheckDocument;
-use stewart_kinematics::forward::ForwardSolution;
-use stewart_kinematics::forward::assembly::canonical;
-use stewart_kinematics::{ForwardOptions, Pose, Scenario, check_motion, settings};
+use stewart_kinematics::analysis::calibration::{
+    Held, Measurement, calibrate as fit, calibrated_scenario,
+};
+use stewart_kinematics::analysis::checks::document::CheckDocument;
+use stewart_kinematics::model::angle::Angle;
+use stewart_kinematics::solve::batch::RowError;
+use stewart_kinematics::solve::forward::ForwardSolution;
+use stewart_kinematics::solve::forward::assembly::canonical;
+use stewart_kinematics::{
+    Pose, Scenario, analysis::checks::check_motion, io::settings, solve::forward::ForwardOptions,
+};
 
 use crate::arrays::{self, Rows};
 use crate::errors::{raise, scenario as scenario_error};
@@ -374,7 +378,7 @@ impl Platform {
         resolution: usize,
         budget: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
-        use stewart_kinematics::workspace::{BUDGET_SECONDS, WorkspaceControl};
+        use stewart_kinematics::analysis::workspace::{BUDGET_SECONDS, WorkspaceControl};
         let py = slf.py();
         let angles = [orientation.0, orientation.1, orientation.2];
         if let Some(a) = angles.iter().find(|a| !a.is_finite() || a.abs() > 3600.0) {
@@ -444,7 +448,7 @@ impl Platform {
 /// The names of the shipped presets.
 #[pyfunction]
 pub fn presets() -> Vec<&'static str> {
-    stewart_kinematics::scenario::presets::names().collect()
+    stewart_kinematics::io::scenario::presets::names().collect()
 }
 
 /// Calibrate a built platform from `measured`, an `(n, 12)` array per measurement of the
@@ -472,7 +476,7 @@ pub fn calibrate<'py>(
     for (k, row) in rows.values().chunks_exact(12).enumerate() {
         let pose: [f64; 6] = std::array::from_fn(|i| row[i]);
         // Finite already (`finite_table`): only a pose outside the accepted ranges is left.
-        if let Err((column, _)) = stewart_kinematics::bounds::check_pose_row(&pose) {
+        if let Err((column, _)) = stewart_kinematics::io::bounds::check_pose_row(&pose) {
             return Err(arrays::pose_outside("measured", k, &pose, column));
         }
     }

@@ -5,7 +5,7 @@
 //! back) and drawn translucent after the opaque scene.
 
 use glam::Vec3;
-use stewart_kinematics::workspace::{Plane, Slice, WorkspaceSurface};
+use stewart_kinematics::analysis::workspace::{Plane, Slice, WorkspaceSurface};
 
 use crate::colormap;
 use crate::gpu_types::ColouredVertex;
@@ -180,7 +180,7 @@ mod tests {
     fn surface_normals_point_out_of_a_closed_box() {
         // Four columns as a 2 × 2 block: the surface is a box; its upper vertices' normals
         // point up, the lower ones' down.
-        let ws = stewart_kinematics::workspace::ConstantOrientationWorkspace {
+        let ws = stewart_kinematics::analysis::workspace::ConstantOrientationWorkspace {
             orientation: [stewart_kinematics::Angle::ZERO; 3],
             resolution: 2,
             cell: 1.0,

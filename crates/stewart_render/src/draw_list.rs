@@ -2,7 +2,7 @@
 //! Pure CPU work, tested without a GPU.
 
 use glam::{Mat3, Mat4, Quat, Vec3};
-use stewart_kinematics::scene::{LegStatus, SceneFrame, ServoFrame};
+use stewart_kinematics::model::scene::{LegStatus, SceneFrame, ServoFrame};
 
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
@@ -399,7 +399,7 @@ impl DrawList {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stewart_kinematics::{Geometry, GeometryParams, StrokeLimits};
+    use stewart_kinematics::{Geometry, GeometryParams, model::geometry::StrokeLimits};
 
     #[test]
     fn legs_take_the_warning_colour_over_the_stroke() {

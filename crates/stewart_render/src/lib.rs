@@ -1,6 +1,6 @@
 //! The Stewart platform studio's renderer, on wgpu.
 //!
-//! It draws a [`stewart_kinematics::scene::SceneFrame`] — base and platform plates,
+//! It draws a [`stewart_kinematics::model::scene::SceneFrame`] — base and platform plates,
 //! legs as actuator body and rod, joints, ground grid, axes, the traced path — into any
 //! colour view: a window's surface, a texture inside the UI, or an offscreen texture
 //! read back for export and tests. It knows nothing of egui or winit.

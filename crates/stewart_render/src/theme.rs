@@ -1,6 +1,6 @@
 //! Colour themes: a dark one for the screen, a light one for slides and papers.
 
-use stewart_kinematics::scene::LegStatus;
+use stewart_kinematics::model::scene::LegStatus;
 
 /// An sRGB colour with alpha, components 0..1.
 pub type Srgba = [f32; 4];

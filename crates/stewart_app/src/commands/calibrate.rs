@@ -4,12 +4,12 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
-use stewart_kinematics::calibration::{
+use stewart_kinematics::analysis::calibration::{
     Calibration, Held, Measurement, Parameter, ParameterUnit, calibrate, calibrated_scenario,
     offsets_folded_into,
 };
-use stewart_kinematics::table::NumericTable;
-use stewart_kinematics::trajectory::{POSE_COLUMNS, check_pose_ranges};
+use stewart_kinematics::io::table::NumericTable;
+use stewart_kinematics::model::trajectory::{POSE_COLUMNS, check_pose_ranges};
 use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{CalibrateArgs, HoldGroup};

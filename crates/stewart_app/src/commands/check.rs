@@ -4,10 +4,12 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::checks::LimitSummary;
-use stewart_kinematics::checks::document::CheckDocument;
-use stewart_kinematics::trajectory::Samples;
-use stewart_kinematics::{CheckReport, FindingKind, Scenario, check_motion};
+use stewart_kinematics::analysis::checks::LimitSummary;
+use stewart_kinematics::analysis::checks::document::CheckDocument;
+use stewart_kinematics::model::trajectory::Samples;
+use stewart_kinematics::{
+    CheckReport, Scenario, analysis::checks::FindingKind, analysis::checks::check_motion,
+};
 
 use crate::cli::{CheckArgs, Format};
 use crate::long_work::{self, PROBE_SAMPLES};

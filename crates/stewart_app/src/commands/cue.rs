@@ -6,7 +6,7 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
-use stewart_kinematics::cueing::{CueError, VehicleMotion, cue_recording};
+use stewart_kinematics::analysis::cueing::{CueError, VehicleMotion, cue_recording};
 
 use crate::cli::CueArgs;
 use crate::csv_io::{CsvText, read_input};

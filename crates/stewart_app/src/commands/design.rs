@@ -5,7 +5,9 @@ use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
 use serde::Serialize;
-use stewart_kinematics::design::{DesignReport, Envelope, Extreme, NAMES, envelope_needs};
+use stewart_kinematics::analysis::design::{
+    DesignReport, Envelope, Extreme, NAMES, envelope_needs,
+};
 use stewart_kinematics::{Geometry, Scenario};
 
 use crate::cli::{DesignArgs, Format};

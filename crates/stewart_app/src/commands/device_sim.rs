@@ -14,7 +14,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_kinematics::link_settings::LinkFormat;
+use stewart_kinematics::model::link_settings::LinkFormat;
 use stewart_link::text::LineDecoder;
 use stewart_link::transport::Transport as _;
 use stewart_link::transport::{NOTHING_YET, Serial, bytes_read};

@@ -4,12 +4,14 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
-use stewart_kinematics::actuator::Actuator;
-use stewart_kinematics::bounds;
-use stewart_kinematics::forward::assembly::canonical;
-use stewart_kinematics::table::NumericTable;
-use stewart_kinematics::trajectory::POSE_COLUMNS;
-use stewart_kinematics::{Angle, ForwardOptions, ForwardSolution, Geometry};
+use stewart_kinematics::io::bounds;
+use stewart_kinematics::io::table::NumericTable;
+use stewart_kinematics::model::actuator::Actuator;
+use stewart_kinematics::model::trajectory::POSE_COLUMNS;
+use stewart_kinematics::solve::forward::assembly::canonical;
+use stewart_kinematics::{
+    Angle, Geometry, solve::forward::ForwardOptions, solve::forward::ForwardSolution,
+};
 
 use crate::cli::FkArgs;
 use crate::csv_io::{CsvText, read_input};

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
 use nalgebra::{Matrix3, Vector3};
-use stewart_kinematics::forces::Payload;
+use stewart_kinematics::analysis::forces::Payload;
 
 use crate::cli::ForcesArgs;
 use crate::csv_io::CsvText;
@@ -31,7 +31,7 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
         .unwrap_or_else(Vector3::zeros);
     let inertia = args
         .inertia
-        .and_then(|i| stewart_kinematics::forces::inertia_tensor(&i))
+        .and_then(|i| stewart_kinematics::analysis::forces::inertia_tensor(&i))
         .or(base.map(|p| p.inertia))
         .unwrap_or_else(Matrix3::zeros);
     let payload = Payload::new(mass, com, inertia)?;

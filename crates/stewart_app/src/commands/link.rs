@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_kinematics::link_settings::{LinkSettings, LinkTransport, Word as _};
+use stewart_kinematics::model::link_settings::{LinkSettings, LinkTransport, Word as _};
 use stewart_link::sender::{Command, Sender, SenderConfig, Status};
 use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};

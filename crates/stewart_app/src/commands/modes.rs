@@ -8,8 +8,10 @@ use std::process::ExitCode;
 use anyhow::{Result, anyhow};
 use nalgebra::{Matrix6, Vector6};
 use serde::Serialize;
-use stewart_kinematics::dynamics::{AXES, LowestMode, Modes, dominant, lowest_mode_along};
-use stewart_kinematics::trajectory::Samples;
+use stewart_kinematics::analysis::dynamics::{
+    AXES, LowestMode, Modes, dominant, lowest_mode_along,
+};
+use stewart_kinematics::model::trajectory::Samples;
 use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{Format, ModesArgs};

@@ -4,8 +4,8 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::settings::{Setting, Target, Unit};
-use stewart_kinematics::{Scenario, bounds, settings};
+use stewart_kinematics::io::settings::{Setting, Target, Unit};
+use stewart_kinematics::{Scenario, io::bounds, io::settings};
 
 use crate::cli::SettingsArgs;
 use crate::{output, source};

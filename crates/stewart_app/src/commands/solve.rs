@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::trajectory::PoseTable;
+use stewart_kinematics::model::trajectory::PoseTable;
 
 use crate::cli::SolveArgs;
 use crate::csv_io::read_input;

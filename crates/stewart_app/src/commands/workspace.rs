@@ -10,11 +10,11 @@ use std::time::{Duration, Instant};
 use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::Vector3;
-use stewart_kinematics::workspace::{
+use stewart_kinematics::analysis::workspace::{
     Axis, BUDGET_BYTES, BUDGET_SECONDS, ConstantOrientationWorkspace, WorkspaceControl,
     WorkspaceError,
 };
-use stewart_kinematics::{Angle, Geometry, Limits, Pose, Scenario};
+use stewart_kinematics::{Angle, Geometry, Pose, Scenario, model::limits::Limits};
 
 use crate::cli::WorkspaceArgs;
 use crate::csv_io::CsvText;
@@ -181,7 +181,7 @@ fn write_surface(
     let Some(_) = ws.extent else {
         bail!("no position is reachable at this orientation: there is no surface to write");
     };
-    let surface = stewart_kinematics::workspace::WorkspaceSurface::from_workspace(ws);
+    let surface = stewart_kinematics::analysis::workspace::WorkspaceSurface::from_workspace(ws);
     let bytes = crate::export::ply::ply(
         &surface,
         &crate::export::ply::PlyHeader {

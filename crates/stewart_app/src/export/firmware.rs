@@ -4,9 +4,9 @@
 
 use std::fmt::Write as _;
 
-use stewart_kinematics::actuator::Actuator;
-use stewart_kinematics::rotary::RotaryActuators;
-use stewart_kinematics::{Geometry, Plate, Scenario};
+use stewart_kinematics::model::actuator::Actuator;
+use stewart_kinematics::model::rotary::RotaryActuators;
+use stewart_kinematics::{Geometry, Scenario, model::geometry::Plate};
 
 /// A number as a C double literal that reads back to the same `f64` (shortest
 /// round-trip digits, always with a decimal point or exponent).

@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use stewart_kinematics::actuator::Quantity;
+use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::Lang;
 use crate::i18n::words::{effort_name, quantity_name};
@@ -576,7 +576,7 @@ mod tests {
             title: "a < b",
             times: &times,
             values: &lengths,
-            quantity: stewart_kinematics::actuator::LEG_LENGTH,
+            quantity: stewart_kinematics::model::actuator::LEG_LENGTH,
             limits: [Some(0.9), Some(1.2)],
             marker: Some(5.0),
             lang: Lang::En,
@@ -600,7 +600,7 @@ mod tests {
             title: "servos",
             times: &times,
             values: &angles,
-            quantity: stewart_kinematics::actuator::SERVO_ANGLE,
+            quantity: stewart_kinematics::model::actuator::SERVO_ANGLE,
             limits: [Some(-80.0), Some(80.0)],
             marker: None,
             lang: Lang::En,

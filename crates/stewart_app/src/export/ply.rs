@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use stewart_kinematics::workspace::WorkspaceSurface;
+use stewart_kinematics::analysis::workspace::WorkspaceSurface;
 
 /// What the file says about where the surface comes from.
 pub struct PlyHeader<'a> {
@@ -62,7 +62,7 @@ pub fn ply(surface: &WorkspaceSurface, header: &PlyHeader) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stewart_kinematics::{Angle, Limits, Scenario};
+    use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 
     /// Read back what [`ply`] writes: header lines, vertices, triangles.
     fn read(bytes: &[u8]) -> (Vec<String>, Vec<[f32; 3]>, Vec<[i32; 3]>) {

@@ -1,7 +1,7 @@
 //! The trajectory as a CSV of poses and leg lengths (what `solve` prints and the viewer
 //! exports).
 
-use stewart_kinematics::trajectory::{POSE_COLUMNS, PoseTable};
+use stewart_kinematics::model::trajectory::{POSE_COLUMNS, PoseTable};
 use stewart_kinematics::{Geometry, Pose, Scenario};
 
 use std::io::Write;

@@ -135,7 +135,7 @@ pub fn check_rate(fps: f64) -> Result<(), String> {
 }
 
 /// Most frames one export may write (as many as a trajectory may have samples).
-pub const MAX_FRAMES: usize = stewart_kinematics::trajectory::MAX_SAMPLES;
+pub const MAX_FRAMES: usize = stewart_kinematics::model::trajectory::MAX_SAMPLES;
 
 /// The frames of an export: how many the motion gives at the rate, and when each is.
 #[derive(Clone, Copy, Debug, PartialEq)]

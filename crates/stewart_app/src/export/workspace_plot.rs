@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 
 use anyhow::Result;
 use stewart_kinematics::Angle;
-use stewart_kinematics::workspace::{ConstantOrientationWorkspace, Plane, Slice};
+use stewart_kinematics::analysis::workspace::{ConstantOrientationWorkspace, Plane, Slice};
 
 use stewart_render::colormap;
 

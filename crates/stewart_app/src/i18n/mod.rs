@@ -14,7 +14,7 @@ pub mod words;
 use std::fmt::Display;
 
 use serde::{Deserialize, Serialize};
-use stewart_kinematics::actuator::ActuatorKind;
+use stewart_kinematics::model::actuator::ActuatorKind;
 
 pub use catalogue::keys;
 

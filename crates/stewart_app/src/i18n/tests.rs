@@ -1,8 +1,11 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use stewart_kinematics::actuator::ActuatorKind;
-use stewart_kinematics::{Finding, FindingKind, Geometry, Layout, Scenario, settings};
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::{
+    Geometry, Scenario, analysis::checks::Finding, analysis::checks::FindingKind, io::settings,
+    model::layout::Layout,
+};
 
 use super::words::{architecture, finding, setting_label};
 use super::{Lang, catalogue, fill, keys};
@@ -418,7 +421,7 @@ fn chinese_has_no_space_between_two_chinese_words_and_presets_describe_themselve
     assert_eq!(channel, "横滚通道");
     // A Latin letter keeps its space.
     assert_eq!(Lang::Zh.fmt("motion.channel", &[("axis", &"x")]), "x 通道");
-    for name in stewart_kinematics::scenario::presets::names() {
+    for name in stewart_kinematics::io::scenario::presets::names() {
         let s = Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"));
         let zh = super::words::description(Lang::Zh, name, &s.description);
         assert!(zh.chars().any(is_han), "{name}: {zh}");

@@ -3,10 +3,10 @@
 //! The core keeps its English (the command line and the files use it); English here
 //! reproduces it exactly, which a test checks.
 
-use stewart_kinematics::actuator::{ActuatorKind, Quantity};
-use stewart_kinematics::architecture::ArchitectureReport;
-use stewart_kinematics::settings::{Setting, TrajectoryChoice};
-use stewart_kinematics::{Finding, FindingKind};
+use stewart_kinematics::analysis::architecture::ArchitectureReport;
+use stewart_kinematics::io::settings::{Setting, TrajectoryChoice};
+use stewart_kinematics::model::actuator::{ActuatorKind, Quantity};
+use stewart_kinematics::{analysis::checks::Finding, analysis::checks::FindingKind};
 
 use super::Lang;
 

@@ -2,9 +2,9 @@
 //! can take with the same six leg lengths (or, for servos, the same six servo angles),
 //! found by the core's homotopy solver.
 
-use stewart_kinematics::forward::ForwardError;
-use stewart_kinematics::forward::assembly::same_placement;
-use stewart_kinematics::rotary::Unreachable;
+use stewart_kinematics::model::rotary::Unreachable;
+use stewart_kinematics::solve::forward::ForwardError;
+use stewart_kinematics::solve::forward::assembly::same_placement;
 use stewart_kinematics::{Geometry, Pose};
 
 /// What the modes were computed for: the geometry and the legs (or servo angles).

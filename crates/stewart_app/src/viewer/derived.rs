@@ -5,8 +5,10 @@
 
 use super::job::Job;
 use nalgebra::Vector3;
-use stewart_kinematics::sound_layout::SoundLayout;
-use stewart_kinematics::{CheckReport, Layout, Scenario, check_motion};
+use stewart_kinematics::analysis::sound_layout::SoundLayout;
+use stewart_kinematics::{
+    CheckReport, Scenario, analysis::checks::check_motion, model::layout::Layout,
+};
 
 /// Most samples the plot and the traced path hold (a trajectory may have ten million:
 /// the check uses them all, the picture needs far fewer).
@@ -85,11 +87,11 @@ impl Derived {
             .any(|&v| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m));
         self.centres = poses.iter().map(|p| g.platform_centre(p)).collect();
         self.efforts = scenario.payload.map(|payload| {
-            let samples = stewart_kinematics::Samples {
+            let samples = stewart_kinematics::model::trajectory::Samples {
                 times: self.times.clone(),
                 poses,
             };
-            stewart_kinematics::dynamics::motion_states(&samples)
+            stewart_kinematics::analysis::dynamics::motion_states(&samples)
                 .iter()
                 .map(|state| {
                     g.inverse_dynamics(state, &payload, &scenario.dynamics)
@@ -181,7 +183,7 @@ mod tests {
     #[test]
     fn long_trajectories_are_thinned_for_the_plot_but_keep_their_ends() {
         let mut s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
-        stewart_kinematics::settings::apply_all(&mut s, ["trajectory.samples=30000"])
+        stewart_kinematics::io::settings::apply_all(&mut s, ["trajectory.samples=30000"])
             .unwrap_or_else(|e| panic!("{e}"));
         let mut d = Derived::new(&s);
         assert_eq!(d.times.len(), PLOT_SAMPLES);

@@ -2,7 +2,7 @@
 //! coordinate, as `stewart design --envelope` takes it), the search run off the UI
 //! thread, and its outcome.
 
-use stewart_kinematics::design::{DesignReport, Envelope, envelope_needs};
+use stewart_kinematics::analysis::design::{DesignReport, Envelope, envelope_needs};
 use stewart_kinematics::{Geometry, Pose};
 
 use super::job::Job;

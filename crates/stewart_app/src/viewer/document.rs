@@ -9,9 +9,9 @@
 //! [`super::state::ViewerState`]; panels that only edit the scenario can take this part
 //! alone.
 
-use stewart_kinematics::link_settings::LinkSettings;
-use stewart_kinematics::settings::{self, Group, Setting, TrajectoryChoice};
-use stewart_kinematics::{CheckReport, GeometryParams, Layout, Scenario};
+use stewart_kinematics::io::settings::{self, Group, Setting, TrajectoryChoice};
+use stewart_kinematics::model::link_settings::LinkSettings;
+use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
 
 use super::derived::Derived;
 use super::undo::Undo;
@@ -99,7 +99,7 @@ impl Document {
     pub fn play_vehicle(
         &mut self,
         name: &str,
-        samples: std::sync::Arc<Vec<(f64, stewart_kinematics::cueing::VehicleMotion)>>,
+        samples: std::sync::Arc<Vec<(f64, stewart_kinematics::analysis::cueing::VehicleMotion)>>,
     ) -> Result<(), String> {
         let source = VehicleSource::new(name, samples, &self.scenario)?;
         let motion = source.motion.clone();
@@ -228,7 +228,7 @@ impl Document {
     }
 
     /// The nearest layout that is not architecturally singular (see
-    /// [`stewart_kinematics::sound_layout`]): the layout and the largest joint move, degrees.
+    /// [`stewart_kinematics::analysis::sound_layout`]): the layout and the largest joint move, degrees.
     pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
         self.derived
             .sound_layout(&self.scenario)

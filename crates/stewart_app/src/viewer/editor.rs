@@ -4,8 +4,8 @@
 //! are drawn in. A panel that edits the scenario takes an [`Editor`], not the whole
 //! viewer state.
 
-use stewart_kinematics::settings::{Group, Setting, TrajectoryChoice};
-use stewart_kinematics::{Layout, Scenario};
+use stewart_kinematics::io::settings::{Group, Setting, TrajectoryChoice};
+use stewart_kinematics::{Scenario, model::layout::Layout};
 
 use super::document::Document;
 use super::playback::Playback;

@@ -8,7 +8,7 @@ use std::time::Instant;
 
 use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget};
-use stewart_kinematics::workspace::{
+use stewart_kinematics::analysis::workspace::{
     ConstantOrientationWorkspace, WorkspaceControl, WorkspaceSurface,
 };
 use stewart_kinematics::{Angle, Scenario};

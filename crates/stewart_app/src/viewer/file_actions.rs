@@ -6,8 +6,8 @@
 use std::path::{Path, PathBuf};
 
 use stewart_kinematics::Scenario;
-use stewart_kinematics::settings::Group;
-use stewart_kinematics::trajectory::PoseTable;
+use stewart_kinematics::io::settings::Group;
+use stewart_kinematics::model::trajectory::PoseTable;
 
 use super::files::{OpenKind, Overwrite, Picker, Purpose, WriteAction, absolute, folder_of};
 use super::state::ViewerState;

@@ -11,7 +11,7 @@ use std::io::Write;
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::time::Instant;
 
-use stewart_kinematics::link_settings::LinkTransport;
+use stewart_kinematics::model::link_settings::LinkTransport;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::generator::Sample;
 use stewart_link::safety::TargetError;

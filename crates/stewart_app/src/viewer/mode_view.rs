@@ -3,7 +3,7 @@
 //! beside it). Only the picture moves: the pose the link sends, the plot and the
 //! readouts keep the pose shown without it.
 
-use stewart_kinematics::dynamics::{DynamicsError, Modes};
+use stewart_kinematics::analysis::dynamics::{DynamicsError, Modes};
 use stewart_kinematics::{Pose, Scenario};
 
 /// How often the animation swings, Hz (the real modes are far too fast to watch).

@@ -3,8 +3,8 @@
 //! by what they depend on, so a still pose costs nothing and a moving one a few thousand
 //! inverse solutions a frame.
 
-use stewart_kinematics::workspace::ReachMap;
-use stewart_kinematics::{Angle, Geometry, Limits, Pose};
+use stewart_kinematics::analysis::workspace::ReachMap;
+use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 
 /// Roll, pitch and yaw are searched over ± this many degrees.
 pub const ANGLE_SPAN_DEG: f64 = 90.0;

@@ -108,7 +108,7 @@ impl Session {
     /// camera takes anywhere — angles ±3600°, distance up to 10 km, target within 1 km)
     /// on `look`.
     pub fn restore_look(&self, look: &mut Look) {
-        use stewart_kinematics::bounds::{ANGLE_DEG, LENGTH_M};
+        use stewart_kinematics::io::bounds::{ANGLE_DEG, LENGTH_M};
         let [azimuth_deg, elevation_deg, distance, x, y, z] = self.camera;
         let within = |v: f32, limit: f64| v.is_finite() && f64::from(v.abs()) <= limit;
         let usable = within(azimuth_deg, ANGLE_DEG)
@@ -172,7 +172,7 @@ pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, Str
     }
     let bytes = std::fs::File::open(&path)
         .map_err(|e| e.to_string())
-        .and_then(|file| stewart_kinematics::text::read_capped(file, MAX_SESSION_BYTES))
+        .and_then(|file| stewart_kinematics::io::text::read_capped(file, MAX_SESSION_BYTES))
         .map_err(|e| unreadable(&e))?;
     let text = String::from_utf8(bytes)
         .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
@@ -308,7 +308,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(load(dir.path(), Lang::En), Ok(None));
         let mut scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
-        stewart_kinematics::settings::apply_all(&mut scenario, ["geometry.base_radius=1.1"])
+        stewart_kinematics::io::settings::apply_all(&mut scenario, ["geometry.base_radius=1.1"])
             .unwrap_or_else(|e| panic!("{e}"));
         let mut look = Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0));
         look.camera.azimuth_deg = 40.0;

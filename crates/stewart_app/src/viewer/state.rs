@@ -9,9 +9,11 @@
 
 use nalgebra::Vector3;
 
-use stewart_kinematics::link_settings::LinkSettings;
-use stewart_kinematics::settings::{Group, Setting};
-use stewart_kinematics::{CheckReport, GeometryParams, Layout, LegSolution, Pose, Scenario};
+use stewart_kinematics::io::settings::{Group, Setting};
+use stewart_kinematics::model::link_settings::LinkSettings;
+use stewart_kinematics::{
+    CheckReport, GeometryParams, Pose, Scenario, model::layout::Layout, solve::inverse::LegSolution,
+};
 use stewart_render::{OrbitCamera, Theme};
 
 use super::document::Document;
@@ -758,7 +760,7 @@ impl ViewerState {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stewart_kinematics::PlateJoints;
+    use stewart_kinematics::model::geometry::PlateJoints;
 
     #[test]
     fn playback_loops_and_stops() {
@@ -816,7 +818,7 @@ mod tests {
     fn joint_angles_edited_one_by_one_leave_no_stale_layout() {
         let mut s = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
         assert!(matches!(s.layout(), Some(Layout::Paired { .. })));
-        let key = stewart_kinematics::settings::find("geometry.base_angles_deg[0]")
+        let key = stewart_kinematics::io::settings::find("geometry.base_angles_deg[0]")
             .unwrap_or_else(|e| panic!("{e}"));
         let now = key.get(s.scenario()).unwrap_or(0.0);
         s.apply(key, Some(now + 7.0));

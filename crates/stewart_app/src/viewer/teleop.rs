@@ -8,7 +8,7 @@
 //! z/yaw, D-pad roll/pitch; the right bumper for fine moves. Input from the gamepad goes
 //! through [`PadState`], so tests drive the same mapping with synthetic states.
 
-use stewart_kinematics::actuator::ActuatorKind;
+use stewart_kinematics::model::actuator::ActuatorKind;
 use stewart_kinematics::{Geometry, Pose};
 
 use crate::i18n::Lang;
@@ -122,7 +122,7 @@ impl Rates {
     /// A quarter of the platform radius per second, 15° per second.
     pub fn for_geometry(g: &Geometry) -> Self {
         Self {
-            linear_m_s: 0.25 * g.plate_radius(stewart_kinematics::Plate::Platform),
+            linear_m_s: 0.25 * g.plate_radius(stewart_kinematics::model::geometry::Plate::Platform),
             angular_deg_s: 15.0,
         }
     }
@@ -167,7 +167,7 @@ impl OutOfReach {
                     ("n", &servo),
                     (
                         "pct",
-                        &stewart_kinematics::rotary::compact(100.0 * (ratio - 1.0)),
+                        &stewart_kinematics::model::rotary::compact(100.0 * (ratio - 1.0)),
                     ),
                 ],
             ),

@@ -4,8 +4,8 @@
 
 use std::sync::Arc;
 
-use stewart_kinematics::cueing::{CuedRecording, VehicleMotion, cue_recording};
-use stewart_kinematics::{Motion, Scenario};
+use stewart_kinematics::analysis::cueing::{CuedRecording, VehicleMotion, cue_recording};
+use stewart_kinematics::{Scenario, model::trajectory::Motion};
 
 /// The recording and what the washout made of it for a scenario.
 #[derive(Clone, Debug)]

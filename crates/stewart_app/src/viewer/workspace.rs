@@ -14,8 +14,8 @@ use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
 use nalgebra::Vector3;
-use stewart_kinematics::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
-use stewart_kinematics::{Angle, Geometry, Limits, Pose};
+use stewart_kinematics::analysis::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
+use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;
 
 use super::job::Job;
@@ -282,7 +282,7 @@ pub(crate) fn compute(
     slice_cells: usize,
     control: &WorkspaceControl,
 ) -> Result<Outcome, Option<String>> {
-    use stewart_kinematics::workspace::WorkspaceError;
+    use stewart_kinematics::analysis::workspace::WorkspaceError;
     let start = Instant::now();
     let ws = request
         .geometry

@@ -15,10 +15,10 @@
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 
-use crate::actuator::Actuator;
-use crate::geometry::Geometry;
-use crate::jacobian::Conditioning;
-use crate::pose::Pose;
+use crate::model::actuator::Actuator;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
+use crate::solve::jacobian::Conditioning;
 
 /// Whether a geometry is singular at every pose, and why.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -63,7 +63,7 @@ impl Geometry {
     pub fn architecture(&self) -> ArchitectureReport {
         let home = self.home_pose();
         let h = self.home_height();
-        let s = self.plate_radius(crate::geometry::Plate::Platform);
+        let s = self.plate_radius(crate::model::geometry::Plate::Platform);
         // A spread of poses around home: small translations and rotations in every axis.
         let probes = [
             [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -171,8 +171,8 @@ fn joints_projectively_related(g: &Geometry) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::GeometryParams;
-    use crate::layout::Layout;
+    use crate::model::geometry::GeometryParams;
+    use crate::model::layout::Layout;
 
     /// The seed: singular at every pose.
     ///

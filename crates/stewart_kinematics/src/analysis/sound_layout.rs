@@ -2,14 +2,14 @@
 //! joint angles whose legs do determine the pose, and condition it well.
 //!
 //! Any two regular hexagons related by a rotation and a scale are singular everywhere
-//! (see [`crate::architecture`]); the usual remedy is to group each plate's joints in
+//! (see [`crate::analysis::architecture`]); the usual remedy is to group each plate's joints in
 //! three pairs. Among paired layouts (separations from 5° to 115° on each plate, in 5°
 //! steps) this picks the one whose twelve joint angles move least from the present ones
 //! (the largest single move, in degrees), of those that are not architecturally singular
 //! and whose normalised Jacobian at home is at least [`MIN_INVERSE_CONDITION`].
 
-use crate::geometry::{Geometry, GeometryParams, Plate, PlateJoints};
-use crate::layout::Layout;
+use crate::model::geometry::{Geometry, GeometryParams, Plate, PlateJoints};
+use crate::model::layout::Layout;
 
 /// The smallest inverse condition number at home a proposed layout must have (the
 /// paired preset's is about 0.3; below 0.1 the legs barely hold some twist).
@@ -151,7 +151,7 @@ mod more_tests {
 
     #[test]
     fn a_sound_paired_geometry_is_its_own_nearest() {
-        let g = crate::Scenario::preset("paired")
+        let g = crate::io::scenario::Scenario::preset("paired")
             .unwrap_or_else(|e| panic!("{e}"))
             .geometry;
         let found = g

@@ -4,9 +4,9 @@
 
 use std::path::Path;
 
-use crate::scenario::build;
-use crate::scenario::presets;
-use crate::scenario::{Scenario, ScenarioError, ScenarioProblem};
+use crate::io::scenario::build;
+use crate::io::scenario::presets;
+use crate::io::scenario::{Scenario, ScenarioError, ScenarioProblem};
 
 impl Scenario {
     /// Parse a scenario from TOML text. `file` names it in errors; a pose table's
@@ -18,7 +18,7 @@ impl Scenario {
     ) -> Result<Self, ScenarioError> {
         let scenario = build::parse(text, file, base_dir)?;
         // Values no constructor refused may still be absurd (a 1e300 m radius).
-        if let Some((setting, reason)) = crate::settings::out_of_range(&scenario) {
+        if let Some((setting, reason)) = crate::io::settings::out_of_range(&scenario) {
             return Err(build::invalid_key(text, file, &setting.key, reason));
         }
         Ok(scenario)
@@ -35,9 +35,9 @@ impl Scenario {
         };
         let file =
             std::fs::File::open(path).map_err(|e| unreadable(format!("cannot be read ({e})")))?;
-        let bytes =
-            crate::text::read_capped(file, crate::text::MAX_SCENARIO_BYTES).map_err(unreadable)?;
-        let text = crate::text::decode(bytes).map_err(unreadable)?;
+        let bytes = crate::io::text::read_capped(file, crate::io::text::MAX_SCENARIO_BYTES)
+            .map_err(unreadable)?;
+        let text = crate::io::text::decode(bytes).map_err(unreadable)?;
         Self::from_toml_str(&text, &name, path.parent())
     }
 

@@ -8,10 +8,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
-use crate::limits::Limits;
-use crate::link_settings::LinkOutput;
-use crate::rotary::RotaryActuators;
+use crate::model::angle::Angle;
+use crate::model::limits::Limits;
+use crate::model::link_settings::LinkOutput;
+use crate::model::rotary::RotaryActuators;
 
 /// What moves the platform joints: linear legs (the seed's), or rotary servos with horns
 /// and rods.
@@ -97,7 +97,7 @@ impl ActuatorKind {
     }
 
     /// Whether a home height stands the actuators level (the servos' horns horizontal,
-    /// with the most travel both ways), which [`crate::Geometry::servo_home_height`]
+    /// with the most travel both ways), which [`crate::model::geometry::Geometry::servo_home_height`]
     /// finds; linear legs' mid-stroke follows from their lengths instead.
     pub fn has_level_home(self) -> bool {
         match self {
@@ -182,7 +182,7 @@ pub const LEG_LENGTH: Quantity = Quantity {
     columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
     effort: ("F", "N"),
     decimals: 6,
-    widest: (0.0, crate::bounds::LENGTH_M),
+    widest: (0.0, crate::io::bounds::LENGTH_M),
     fine: (1e3, "mm"),
     si_per_unit: 1.0,
     actuator: ActuatorKind::Linear,

@@ -77,7 +77,7 @@ pub struct CueingSettings {
     pub yaw: bool,
     /// The point the motion is cued at (the occupant's head), platform frame, metres:
     /// rotations turn about it, so tilting does not move the head.
-    #[serde(deserialize_with = "crate::text::exactly")]
+    #[serde(deserialize_with = "crate::io::text::exactly")]
     pub reference_m: [f64; 3],
     /// Scale the cue back so that no pose leaves the stroke and limits.
     pub workspace_limiter: bool,
@@ -189,7 +189,7 @@ impl CueingSettings {
                 format!("must be between 0 (off) and {MAX_OMEGA} rad/s, got {wb}"),
             );
         }
-        let far = crate::bounds::LENGTH_M;
+        let far = crate::io::bounds::LENGTH_M;
         for (i, v) in self.reference_m.iter().enumerate() {
             if !(v.is_finite() && v.abs() <= far) {
                 return bad(

@@ -26,7 +26,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::actuator::ActuatorKind;
+use crate::model::actuator::ActuatorKind;
 
 /// One moving part of a leg: mass, where its centre of mass is along the part, and its
 /// moment of inertia about that centre.
@@ -177,7 +177,7 @@ impl DynamicsSettings {
     /// negative friction, mass, distance or inertia, or one beyond the accepted bounds;
     /// NaN and infinity never.
     pub fn problem(&self) -> Option<DynamicsProblem> {
-        use crate::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
+        use crate::io::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
         let bad = |key: &str, reason: String| {
             Some(DynamicsProblem {
                 key: format!("dynamics.{key}"),

@@ -5,10 +5,10 @@ use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::actuator::Actuator;
-use crate::angle::Angle;
-use crate::layout::Layout;
-use crate::rotary::RotaryActuators;
+use crate::model::actuator::Actuator;
+use crate::model::angle::Angle;
+use crate::model::layout::Layout;
+use crate::model::rotary::RotaryActuators;
 
 /// Which of the two plates a joint belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
+use crate::model::angle::Angle;
 
 /// A named arrangement of the six base joints and six platform joints.
 ///

@@ -5,9 +5,9 @@
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
-use crate::inverse::LegSolution;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
+use crate::solve::inverse::LegSolution;
 
 /// Optional limits of a platform's actuators and joints.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -175,7 +175,7 @@ pub fn segment_distance(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::Geometry;
+    use crate::model::geometry::Geometry;
 
     #[test]
     fn segment_distance_hand_cases() {

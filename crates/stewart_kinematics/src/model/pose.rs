@@ -3,7 +3,7 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
+use crate::model::angle::Angle;
 
 /// Pose of the moving platform relative to the base frame.
 ///

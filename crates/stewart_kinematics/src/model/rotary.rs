@@ -18,7 +18,7 @@ use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::angle::Angle;
+use crate::model::angle::Angle;
 
 /// Why rotary actuators were refused. Each names the scenario key at fault.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -454,7 +454,11 @@ mod tests {
             .unwrap_or_else(|| panic!("no level height"));
         assert!((h - expected).abs() < 1e-12, "{h} vs {expected}");
         assert!((0.115..0.12).contains(&h), "{h}");
-        assert!(crate::Geometry::seed().servo_home_height().is_none());
+        assert!(
+            crate::model::geometry::Geometry::seed()
+                .servo_home_height()
+                .is_none()
+        );
     }
 
     #[test]

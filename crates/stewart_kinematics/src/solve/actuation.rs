@@ -2,11 +2,11 @@
 //! leg's length, or a servo's angle), its name and unit, its limits, and its value along
 //! a motion. The plots, leg bars and readouts read it from here.
 
-use crate::actuator::{Actuator, ActuatorKind, Quantity};
-use crate::forward::ForwardError;
-use crate::geometry::Geometry;
-use crate::pose::Pose;
-use crate::rotary::Unreachable;
+use crate::model::actuator::{Actuator, ActuatorKind, Quantity};
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
+use crate::model::rotary::Unreachable;
+use crate::solve::forward::ForwardError;
 
 impl Geometry {
     /// The quantity that drives the joints: leg length or servo angle.
@@ -21,7 +21,7 @@ impl Geometry {
 
     /// The speed, acceleration and jerk limits of the actuator values (m/s… or °/s…),
     /// from `limits`' keys for this kind.
-    pub fn actuator_rate_limits(&self, limits: &crate::limits::Limits) -> [Option<f64>; 3] {
+    pub fn actuator_rate_limits(&self, limits: &crate::model::limits::Limits) -> [Option<f64>; 3] {
         self.actuator().kind().rate_limits(limits)
     }
 
@@ -30,9 +30,9 @@ impl Geometry {
     pub fn actuator_assembly_modes(
         &self,
         values: &[f64; 6],
-    ) -> Result<Vec<crate::forward::ForwardSolution>, ForwardError> {
+    ) -> Result<Vec<crate::solve::forward::ForwardSolution>, ForwardError> {
         if self.servos() {
-            self.servo_assembly_modes(&values.map(crate::angle::Angle::from_degrees))
+            self.servo_assembly_modes(&values.map(crate::model::angle::Angle::from_degrees))
         } else {
             self.assembly_modes(values)
         }
@@ -53,12 +53,12 @@ impl Geometry {
     pub fn actuator_jacobian_and_conditioning(
         &self,
         pose: &Pose,
-    ) -> Option<(nalgebra::Matrix6<f64>, crate::jacobian::Conditioning)> {
+    ) -> Option<(nalgebra::Matrix6<f64>, crate::solve::jacobian::Conditioning)> {
         let j = self.actuator_jacobian(pose).ok()?;
         let conditioning = if self.servos() {
             self.servo_conditioning_of(&j)?
         } else {
-            crate::jacobian::conditioning_of(&j, self.characteristic_length())
+            crate::solve::jacobian::conditioning_of(&j, self.characteristic_length())
         };
         Some((j, conditioning))
     }
@@ -66,7 +66,10 @@ impl Geometry {
     /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
     /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
     /// reach its joint).
-    pub fn actuated_conditioning(&self, pose: &Pose) -> Option<crate::jacobian::Conditioning> {
+    pub fn actuated_conditioning(
+        &self,
+        pose: &Pose,
+    ) -> Option<crate::solve::jacobian::Conditioning> {
         if self.servos() {
             self.servo_conditioning(pose)
         } else {
@@ -104,9 +107,9 @@ impl Geometry {
         values: &[f64; 6],
         near: &Pose,
     ) -> Result<Pose, ForwardError> {
-        let options = crate::forward::ForwardOptions::default();
+        let options = crate::solve::forward::ForwardOptions::default();
         let solution = if self.servos() {
-            let angles = values.map(crate::angle::Angle::from_degrees);
+            let angles = values.map(crate::model::angle::Angle::from_degrees);
             self.forward_servos(&angles, near, &options)
         } else {
             self.forward(values, near, &options)
@@ -165,7 +168,7 @@ impl Geometry {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::actuator::LEG_LENGTH;
+    use crate::model::actuator::LEG_LENGTH;
     use crate::test_support::servo_geometry;
 
     #[test]
@@ -197,7 +200,8 @@ mod tests {
             Pose::from_coordinates([h[0] + 0.004, h[1] - 0.003, h[2] + 0.005, 0.03, -0.02, 0.05])
         };
         // The paired preset (the seed's layout is singular at home) and a rotary platform.
-        let paired = crate::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        let paired =
+            crate::io::scenario::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
         for g in [paired.geometry, servo_geometry()] {
             let pose = lifted(&g);
             let values = g

@@ -1,7 +1,7 @@
 //! Batch inverse kinematics: leg lengths for many poses at once, on all cores.
 //!
 //! The geometry is laid out once as structure-of-arrays constants; each pose then costs
-//! one shared sine/cosine reduction per angle ([`crate::fast_trig`]) and straight-line
+//! one shared sine/cosine reduction per angle ([`crate::solve::fast_trig`]) and straight-line
 //! arithmetic, with no allocation. Work is split over the cores with rayon in chunks
 //! large enough to amortise scheduling.
 
@@ -9,9 +9,9 @@ use rayon::prelude::*;
 use wide::f64x4;
 
 use super::batch_lanes::LANES;
-use crate::fast_trig::{atan2, sin_cos};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
+use crate::solve::fast_trig::{atan2, sin_cos};
 
 /// Poses per rayon task: big enough that scheduling is noise, small enough to balance.
 pub const CHUNK: usize = 4096;
@@ -243,7 +243,7 @@ impl<P: AsPose> pulp::WithSimd for ServoChunk<'_, P> {
 pub type OutOfReach = (usize, usize);
 
 /// Batch servo angles of a rotary platform: the batch leg vectors, then the closed form
-/// of [`crate::rotary`] with one square root and one `atan2` per servo:
+/// of [`crate::model::rotary`] with one square root and one `atan2` per servo:
 /// `θ = atan2(L·M − c·N, c·M + L·N)` with `c = √(M² + N² − L²)`, which is
 /// `asin(L/√(M²+N²)) − atan2(N, M)` wrapped to (−π, π].
 #[derive(Clone, Copy, Debug)]
@@ -313,7 +313,7 @@ impl ServoBatch {
     }
 
     /// [`ServoBatch::angles`] one servo at a time (the scalar `atan2` of
-    /// [`crate::fast_trig`]).
+    /// [`crate::solve::fast_trig`]).
     pub fn angles_scalar(&self, pose: &Pose) -> Result<[f64; 6], usize> {
         let [lx, ly, lz] = self.legs.legs(pose);
         let mut out = [0.0; 6];
@@ -402,7 +402,7 @@ impl Geometry {
         Some(match solver.solve_parallel(poses, &mut out) {
             Ok(()) => Ok(out
                 .into_iter()
-                .map(|row| row.map(|r| crate::angle::Angle::from_radians(r).degrees()))
+                .map(|row| row.map(|r| crate::model::angle::Angle::from_radians(r).degrees()))
                 .collect()),
             // Parallel chunks may stop at a later pose first: find the earliest.
             Err(_) => Err(poses
@@ -425,7 +425,7 @@ impl Geometry {
     /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
     /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
     /// same poses. A value that is not finite, or outside the accepted range of poses
-    /// ([`crate::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
+    /// ([`crate::io::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
     /// while the chunk is in cache: no pass of its own), and so is a row a servo cannot
     /// reach: the earliest such row is the error; `out` is then unspecified.
     ///
@@ -444,12 +444,12 @@ impl Geometry {
             rows.iter()
                 .enumerate()
                 .find_map(|(k, row)| {
-                    if let Err((column, why)) = crate::bounds::check_pose_row(row) {
+                    if let Err((column, why)) = crate::io::bounds::check_pose_row(row) {
                         return Some(match why {
-                            crate::bounds::OutOfBounds::NotFinite(_) => {
+                            crate::io::bounds::OutOfBounds::NotFinite(_) => {
                                 RowError::NotFinite { row: k, column }
                             }
-                            crate::bounds::OutOfBounds::Outside { .. } => {
+                            crate::io::bounds::OutOfBounds::Outside { .. } => {
                                 RowError::Outside { row: k, column }
                             }
                         });
@@ -496,7 +496,7 @@ impl Geometry {
                     })
                     .map_err(drop)?;
                     for row in o.iter_mut() {
-                        *row = row.map(|r| crate::angle::Angle::from_radians(r).degrees());
+                        *row = row.map(|r| crate::model::angle::Angle::from_radians(r).degrees());
                     }
                     Ok(())
                 }),
@@ -517,7 +517,7 @@ impl pulp::WithSimd for Accepted<'_> {
     }
 }
 
-/// Whether every value of `rows` is within its accepted range ([`crate::bounds::POSE_ROW`];
+/// Whether every value of `rows` is within its accepted range ([`crate::io::bounds::POSE_ROW`];
 /// NaN is not), with no early exit so that the loop vectorises.
 #[inline(always)]
 fn all_accepted(rows: &[[f64; 6]]) -> bool {
@@ -527,7 +527,7 @@ fn all_accepted(rows: &[[f64; 6]]) -> bool {
         let mut l = [0.0; 24];
         let mut k = 0;
         while k < 24 {
-            l[k] = crate::bounds::POSE_ROW[k % 6];
+            l[k] = crate::io::bounds::POSE_ROW[k % 6];
             k += 1;
         }
         l
@@ -555,7 +555,7 @@ pub enum RowError {
         column: usize,
     },
     /// Value `column` of `row` is finite but outside its accepted range
-    /// ([`crate::bounds::POSE_ROW`]).
+    /// ([`crate::io::bounds::POSE_ROW`]).
     Outside {
         /// The row, from 0.
         row: usize,
@@ -574,8 +574,8 @@ pub enum RowError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::GeometryParams;
-    use crate::layout::Layout;
+    use crate::model::geometry::GeometryParams;
+    use crate::model::layout::Layout;
     use nalgebra::Vector3;
 
     #[test]
@@ -711,7 +711,7 @@ mod tests {
             poses[100 + k] = Pose::from_xyz_rpy_deg([0.0, 0.0, 0.8], [angle, -angle, angle]);
         }
         for (k, bad) in [2e5, -7e6, f64::NAN, f64::INFINITY].into_iter().enumerate() {
-            poses[1000 + 9 * k].roll = crate::angle::Angle::from_radians(bad);
+            poses[1000 + 9 * k].roll = crate::model::angle::Angle::from_radians(bad);
         }
         let mut dispatched = vec![[0.0; 6]; poses.len()];
         let mut lanes = vec![[0.0; 6]; poses.len()];
@@ -766,7 +766,7 @@ mod tests {
         // (Whole turns, so still reachable: 40 000 and −1.2 million of them.)
         for (k, turns) in [40_000.0, -1.2e6].into_iter().enumerate() {
             poses[500 + 9 * k].yaw =
-                crate::angle::Angle::from_radians(std::f64::consts::TAU * turns);
+                crate::model::angle::Angle::from_radians(std::f64::consts::TAU * turns);
         }
         let reachable = |p: &Pose| solver.angles_scalar(p).is_ok();
         assert!(poses.iter().all(reachable));

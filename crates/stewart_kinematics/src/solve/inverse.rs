@@ -13,8 +13,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// The platform joints, leg vectors and leg lengths for one pose.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,8 +81,8 @@ impl Geometry {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::angle::Angle;
-    use crate::geometry::GeometryParams;
+    use crate::model::angle::Angle;
+    use crate::model::geometry::GeometryParams;
     use proptest::prelude::*;
 
     /// Seed home leg length by hand: base joint at radius 1, platform joint at radius

@@ -23,8 +23,8 @@
 use nalgebra::{Matrix6, SVD, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// Relative size (σ_min/σ_max) below which the normalised Jacobian counts as rank
 /// deficient. Rounding alone gives about 1e-16; real near-singular poses of sensible
@@ -147,7 +147,7 @@ impl Geometry {
     pub fn servo_jacobian(
         &self,
         pose: &Pose,
-    ) -> Option<Result<Matrix6<f64>, crate::rotary::Unreachable>> {
+    ) -> Option<Result<Matrix6<f64>, crate::model::rotary::Unreachable>> {
         let servos = self.rotary()?;
         let joints = self.inverse(pose).platform_joints;
         let angles = match servos.servo_angles(self.base_joints(), &joints) {
@@ -264,8 +264,8 @@ pub fn conditioning_of(j: &Matrix6<f64>, ell: f64) -> Conditioning {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::GeometryParams;
-    use crate::layout::Layout;
+    use crate::model::geometry::GeometryParams;
+    use crate::model::layout::Layout;
     use proptest::prelude::*;
 
     /// Leg rates by finite differences of inverse kinematics for a twist (v, ω) about
@@ -390,7 +390,8 @@ mod tests {
     /// once: every row grows alike, so their ratio stayed 12.3 and no check flagged it.
     #[test]
     fn all_six_servos_at_the_edge_of_reach_together_are_near_singular() {
-        let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let s =
+            crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
         let g = &s.geometry;
         let at = |z: f64| g.servo_conditioning(&Pose::from_xyz_rpy_deg([0.0, 0.0, z], [0.0; 3]));
         let home = g.home_height();
@@ -411,21 +412,21 @@ mod tests {
         // a transmission close to 1.
         let home_kappa = at(home).and_then(|c| c.condition_number);
         assert!(home_kappa.is_some_and(|k| k < 30.0), "{home_kappa:?}");
-        let samples = crate::trajectory::Samples {
+        let samples = crate::model::trajectory::Samples {
             times: vec![0.0],
             poses: vec![Pose::from_xyz_rpy_deg([0.0, 0.0, inside - 1e-4], [0.0; 3])],
         };
-        let checked = crate::checks::check_motion(
+        let checked = crate::analysis::checks::check_motion(
             g,
             &s.limits,
             &samples,
-            &crate::checks::CheckSettings::default(),
+            &crate::analysis::checks::CheckSettings::default(),
         );
         assert!(
             checked
                 .findings
                 .iter()
-                .any(|f| f.kind == crate::checks::FindingKind::NearSingular),
+                .any(|f| f.kind == crate::analysis::checks::FindingKind::NearSingular),
             "{:?}",
             checked.findings
         );
@@ -461,8 +462,9 @@ mod tests {
         // The same platform in millimetres has the same normalised singular values.
         let g = crate::test_support::paired_geometry();
         let mut mm = g.params().clone();
-        mm.base = crate::PlateJoints::Points(mm.base.points().map(|p| p * 1000.0));
-        mm.platform = crate::PlateJoints::Points(mm.platform.points().map(|p| p * 1000.0));
+        mm.base = crate::model::geometry::PlateJoints::Points(mm.base.points().map(|p| p * 1000.0));
+        mm.platform =
+            crate::model::geometry::PlateJoints::Points(mm.platform.points().map(|p| p * 1000.0));
         mm.home_height *= 1000.0;
         let g_mm = Geometry::new(mm).unwrap_or_else(|e| panic!("{e}"));
         let a = g.conditioning(&g.home_pose()).singular_values;

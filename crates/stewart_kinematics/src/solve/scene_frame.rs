@@ -89,7 +89,7 @@ fn status_of(over: bool, usage: Option<f64>) -> LegStatus {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::{GeometryParams, StrokeLimits};
+    use crate::model::geometry::{GeometryParams, StrokeLimits};
 
     #[test]
     fn leg_status_follows_the_stroke() {
@@ -154,10 +154,10 @@ mod tests {
         }
         // A servo range: usage and near/over colours.
         let mut p = g.params().clone();
-        if let crate::actuator::Actuator::Rotary(r) = &p.actuator {
+        if let crate::model::actuator::Actuator::Rotary(r) = &p.actuator {
             let angles = r.horn_angles().map(|a| a.degrees());
-            p.actuator = crate::actuator::Actuator::Rotary(
-                crate::rotary::RotaryActuators::new(0.025, 0.12, angles, Some((-1.0, 1.0)))
+            p.actuator = crate::model::actuator::Actuator::Rotary(
+                crate::model::rotary::RotaryActuators::new(0.025, 0.12, angles, Some((-1.0, 1.0)))
                     .unwrap_or_else(|e| panic!("{e}")),
             );
         }

@@ -6,7 +6,7 @@ use std::sync::PoisonError;
 
 use egui::RichText;
 use egui_plot::{Line, LineStyle, PlotPoints, VLine};
-use stewart_kinematics::settings::{self, Group};
+use stewart_kinematics::io::settings::{self, Group};
 
 use super::plot::leg_colour;
 use super::side_plot;

@@ -2,7 +2,7 @@
 //! design`, with a button that writes it into the limits.
 
 use egui::RichText;
-use stewart_kinematics::settings;
+use stewart_kinematics::io::settings;
 
 use super::widgets::{ERROR, OK, WARNING};
 use crate::i18n::Lang;

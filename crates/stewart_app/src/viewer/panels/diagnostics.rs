@@ -2,9 +2,9 @@
 //! and the limits and thresholds the checks use.
 
 use egui::RichText;
-use stewart_kinematics::settings::{self, Group};
+use stewart_kinematics::io::settings::{self, Group};
 
-use stewart_kinematics::Layout;
+use stewart_kinematics::model::layout::Layout;
 
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::words;

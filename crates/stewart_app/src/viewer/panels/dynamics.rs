@@ -4,9 +4,9 @@
 
 use egui::RichText;
 use nalgebra::{Matrix3, Vector3};
-use stewart_kinematics::dynamics::{DynamicsError, dominant};
-use stewart_kinematics::forces::Payload;
-use stewart_kinematics::settings::{self, Group, Unit};
+use stewart_kinematics::analysis::dynamics::{DynamicsError, dominant};
+use stewart_kinematics::analysis::forces::Payload;
+use stewart_kinematics::io::settings::{self, Group, Unit};
 use stewart_kinematics::{Pose, Scenario};
 
 use super::widgets::{WARNING, edit_error, setting_slider};

@@ -2,10 +2,10 @@
 //! rotary servos with horns, rods, range and trims), layout with its separation angles,
 //! every joint angle and the pivot.
 
-use stewart_kinematics::settings::{
+use stewart_kinematics::io::settings::{
     self, ActuatorKey, ActuatorKind, GeometryKey, Group, Target, switch_actuator,
 };
-use stewart_kinematics::{Layout, Plate};
+use stewart_kinematics::{model::geometry::Plate, model::layout::Layout};
 
 use super::widgets::{edit_error, setting_slider};
 use crate::viewer::editor::Editor;

@@ -2,7 +2,7 @@
 //! stroke or servo range used, and the pose's conditioning.
 
 use egui::{Color32, RichText};
-use stewart_kinematics::scene::LegStatus;
+use stewart_kinematics::model::scene::LegStatus;
 
 use super::plot::leg_colour;
 use super::widgets::ERROR;

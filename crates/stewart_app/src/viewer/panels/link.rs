@@ -4,8 +4,8 @@
 //! a dry run, the last frames.
 
 use egui::{Color32, RichText};
-use stewart_kinematics::actuator::Quantity;
-use stewart_kinematics::link_settings::{
+use stewart_kinematics::model::actuator::Quantity;
+use stewart_kinematics::model::link_settings::{
     LinkFormat, LinkOutput, LinkStop, LinkTransport, RATES_HZ, Word,
 };
 use stewart_link::safety::LinkState;

@@ -2,10 +2,10 @@
 //! number of that kind (sinusoid channels, shape parameters, keyframes).
 
 use stewart_kinematics::Pose;
-use stewart_kinematics::settings::{
+use stewart_kinematics::io::settings::{
     ChannelKey, Group, SamplingKey, ShapeKey, Target, TrajectoryChoice, Unit,
 };
-use stewart_kinematics::trajectory::{
+use stewart_kinematics::model::trajectory::{
     CHANNEL_NAMES, Interpolation, Keyframe, Keyframes, Trajectory, Wave,
 };
 

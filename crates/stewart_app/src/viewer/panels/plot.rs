@@ -4,7 +4,7 @@
 
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
-use stewart_kinematics::actuator::Quantity;
+use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::words;
 use crate::viewer::document::Document;
@@ -338,7 +338,7 @@ fn limit_lines(
                     PlotPoint::new(left_end, v),
                     egui::RichText::new(format!(
                         " {words} {} {}",
-                        stewart_kinematics::bounds::short(v),
+                        stewart_kinematics::io::bounds::short(v),
                         quantity.unit
                     ))
                     .text_style(egui::TextStyle::Body)

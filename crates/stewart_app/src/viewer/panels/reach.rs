@@ -64,7 +64,12 @@ pub fn show(
 
 /// The roll–pitch map: reachable cells green, the others dark, the pose's own angles as a
 /// cross, ticks at −span, 0, +span.
-fn map(ui: &mut egui::Ui, t: Lang, map: &stewart_kinematics::workspace::ReachMap, now: [f64; 2]) {
+fn map(
+    ui: &mut egui::Ui,
+    t: Lang,
+    map: &stewart_kinematics::analysis::workspace::ReachMap,
+    now: [f64; 2],
+) {
     let side = 170.0;
     // Room for the pitch ticks on the left, the roll ticks and label below, half a tick
     // label above and to the right.

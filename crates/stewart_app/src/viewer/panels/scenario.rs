@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use stewart_kinematics::Scenario;
-use stewart_kinematics::scenario::presets;
+use stewart_kinematics::io::scenario::presets;
 
 use super::widgets;
 use crate::i18n::Lang;

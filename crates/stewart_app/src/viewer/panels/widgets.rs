@@ -2,8 +2,8 @@
 
 use egui::{Color32, RichText};
 use stewart_kinematics::Scenario;
-use stewart_kinematics::actuator::ActuatorKind;
-use stewart_kinematics::settings::{self, Group, Setting, Target, Unit};
+use stewart_kinematics::io::settings::{self, Group, Setting, Target, Unit};
+use stewart_kinematics::model::actuator::ActuatorKind;
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
@@ -192,7 +192,7 @@ fn fine_drag(
 fn slider_tip(t: Lang, setting: &Setting, scenario: &Scenario) -> String {
     let default = setting.default_for(scenario).map_or_else(
         || t.tr("widgets.default_off").to_owned(),
-        stewart_kinematics::bounds::short,
+        stewart_kinematics::io::bounds::short,
     );
     t.fmt(
         "widgets.slider_tip",

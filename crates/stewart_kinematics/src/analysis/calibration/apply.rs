@@ -2,10 +2,10 @@
 //! offset folded into its trim, a linear leg's length offset into the link's channel
 //! offset (so that what reaches the actuator makes the real leg as long as the model's).
 
-use crate::actuator::{Actuator, ActuatorKind};
-use crate::angle::Angle;
-use crate::rotary::{RotaryActuators, RotaryError, wrap_half_turn};
-use crate::scenario::Scenario;
+use crate::io::scenario::Scenario;
+use crate::model::actuator::{Actuator, ActuatorKind};
+use crate::model::angle::Angle;
+use crate::model::rotary::{RotaryActuators, RotaryError, wrap_half_turn};
 
 use super::Calibration;
 

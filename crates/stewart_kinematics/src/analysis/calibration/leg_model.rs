@@ -17,7 +17,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::geometry::Geometry;
+use crate::model::geometry::Geometry;
 
 use super::Measurement;
 

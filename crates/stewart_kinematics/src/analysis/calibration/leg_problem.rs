@@ -3,7 +3,7 @@
 
 use nalgebra::DMatrix;
 
-use crate::geometry::Geometry;
+use crate::model::geometry::Geometry;
 
 use super::identifiability::{self, Identification};
 use super::least_squares::{self, FitFailure};

@@ -23,10 +23,10 @@ mod leg_problem;
 
 use thiserror::Error;
 
-use crate::actuator::Actuator;
-use crate::geometry::{Geometry, GeometryError, PlateJoints};
-use crate::pose::Pose;
-use crate::rotary::RotaryError;
+use crate::model::actuator::Actuator;
+use crate::model::geometry::{Geometry, GeometryError, PlateJoints};
+use crate::model::pose::Pose;
+use crate::model::rotary::RotaryError;
 
 use leg_model::{LegModel, PARAMETERS, PreparedPose};
 use leg_problem::{LegOutcome, LegProblem};

@@ -1,9 +1,9 @@
 use nalgebra::Vector3;
 
 use super::*;
-use crate::angle::Angle;
-use crate::forward::homotopy::SplitMix;
-use crate::geometry::GeometryParams;
+use crate::model::angle::Angle;
+use crate::model::geometry::GeometryParams;
+use crate::solve::forward::homotopy::SplitMix;
 use crate::test_support::{paired_geometry, servo_geometry};
 
 /// A built platform: `nominal`'s joints each moved by up to `mm` millimetres per axis.
@@ -324,7 +324,7 @@ fn the_link_offsets_take_the_length_offsets_so_the_wire_sends_what_produced_each
     let poses = poses(&nominal, 20, 0.08, 10.0, &mut rng);
     let measurements = linear_measurements(&truth, &offsets, &poses, 0.0, &mut rng);
     let c = calibrate(&nominal, &measurements, Held::default()).unwrap_or_else(|e| panic!("{e}"));
-    let mut scenario = crate::Scenario::seed();
+    let mut scenario = crate::io::scenario::Scenario::seed();
     scenario.geometry = nominal.clone();
     // Channel 1 carries leg 2, mirrored and doubled, with an offset of 1 m; channel 2 leg 1.
     scenario.link.actuator = [2, 1, 3, 4, 5, 6];
@@ -332,7 +332,7 @@ fn the_link_offsets_take_the_length_offsets_so_the_wire_sends_what_produced_each
     scenario.link.scale[0] = 2.0;
     scenario.link.offset[0] = 1.0;
     let calibrated = calibrated_scenario(&scenario, &c, measurements.len());
-    let wire = |s: &crate::Scenario, legs: &[f64; 6], k: usize| {
+    let wire = |s: &crate::io::scenario::Scenario, legs: &[f64; 6], k: usize| {
         let leg = usize::from(s.link.actuator[k]) - 1;
         let sign = if s.link.reversed[k] { -1.0 } else { 1.0 };
         sign * s.link.scale[k] * legs[leg] + s.link.offset[k]
@@ -349,8 +349,12 @@ fn the_link_offsets_take_the_length_offsets_so_the_wire_sends_what_produced_each
             .contains("calibrated from 20 measured poses")
     );
     // The written scenario reads back to the same platform.
-    let back = crate::Scenario::from_toml_str(&calibrated.to_toml(), "calibrated.toml", None)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let back = crate::io::scenario::Scenario::from_toml_str(
+        &calibrated.to_toml(),
+        "calibrated.toml",
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(
         back.geometry.base_joints(),
         calibrated.geometry.base_joints()

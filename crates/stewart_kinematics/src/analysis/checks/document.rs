@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::CheckReport;
-use crate::geometry::Geometry;
+use crate::model::geometry::Geometry;
 
 /// The JSON document of a check.
 #[derive(Serialize)]

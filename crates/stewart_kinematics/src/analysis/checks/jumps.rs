@@ -5,7 +5,7 @@
 //! median of the (up to eight) steps around it and more than `jump_floor`. The median
 //! keeps a one-sample spike (a jump up and straight back down) from hiding itself.
 
-use crate::checks::{CheckSettings, Finding, FindingKind};
+use crate::analysis::checks::{CheckSettings, Finding, FindingKind};
 
 /// Steps on each side compared with a step.
 const NEIGHBOURS: usize = 4;

@@ -27,10 +27,10 @@ mod tests;
 
 use serde::{Deserialize, Serialize};
 
-use crate::architecture::ArchitectureReport;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::trajectory::Samples;
+use crate::analysis::architecture::ArchitectureReport;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::trajectory::Samples;
 
 /// Thresholds of the checks. The defaults suit motions sampled at tens to thousands of hertz.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

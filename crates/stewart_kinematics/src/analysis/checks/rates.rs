@@ -1,31 +1,31 @@
 //! Leg speed, acceleration and jerk, by finite differences of the sampled leg lengths.
 //!
 //! Interior samples use central differences on the (possibly uneven) time grid; at the
-//! end samples one-sided differences of the same order (see [`crate::differences`]).
+//! end samples one-sided differences of the same order (see [`crate::analysis::differences`]).
 
 use nalgebra::Vector6;
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_legs};
-use crate::differences::{first_difference, second_difference, third_difference};
-use crate::limits::Limits;
+use crate::analysis::differences::{first_difference, second_difference, third_difference};
+use crate::model::limits::Limits;
 
-/// Leg speeds dL/dt (m/s) at every sample (see [`crate::differences`]).
+/// Leg speeds dL/dt (m/s) at every sample (see [`crate::analysis::differences`]).
 pub fn leg_speeds(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
     per_sample(times, lengths, first_difference)
 }
 
-/// Leg accelerations d²L/dt² (m/s²) at every sample (see [`crate::differences`]).
+/// Leg accelerations d²L/dt² (m/s²) at every sample (see [`crate::analysis::differences`]).
 pub fn leg_accelerations(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
     per_sample(times, lengths, second_difference)
 }
 
-/// Leg jerks d³L/dt³ (m/s³) at every sample (see [`crate::differences`]).
+/// Leg jerks d³L/dt³ (m/s³) at every sample (see [`crate::analysis::differences`]).
 pub fn leg_jerks(times: &[f64], lengths: &[[f64; 6]]) -> Vec<[f64; 6]> {
     per_sample(times, lengths, third_difference)
 }
 
-/// A finite-difference rule of [`crate::differences`] on six-vectors.
+/// A finite-difference rule of [`crate::analysis::differences`] on six-vectors.
 pub(crate) type Difference = fn(&[f64], &[Vector6<f64>], usize) -> Option<Vector6<f64>>;
 
 /// `difference` of the six lengths at every sample (zero where there are too few samples).

@@ -1,9 +1,9 @@
 //! Rigid-body self-consistency: the distances between platform joints, computed in the
 //! base frame from the solved joint positions, must equal those on the platform itself.
 
-use crate::checks::{Finding, FindingKind};
-use crate::geometry::Geometry;
-use crate::inverse::LegSolution;
+use crate::analysis::checks::{Finding, FindingKind};
+use crate::model::geometry::Geometry;
+use crate::solve::inverse::LegSolution;
 
 /// Worst distance change over all samples, and a finding if it exceeds `tolerance` (metres).
 pub fn check(
@@ -59,7 +59,7 @@ pub fn check(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pose::Pose;
+    use crate::model::pose::Pose;
     use nalgebra::Vector3;
 
     #[test]

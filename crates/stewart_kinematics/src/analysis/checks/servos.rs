@@ -10,12 +10,12 @@ use nalgebra::Vector3;
 
 use super::scan::{Bound, Collected, scan_columns, scan_legs};
 use super::{CheckSettings, FindingKind, jumps};
-use crate::differences::{first_difference, second_difference, third_difference};
-use crate::geometry::Geometry;
-use crate::inverse::LegSolution;
-use crate::limits::{LEG_PAIRS, Limits, segment_distance};
-use crate::pose::Pose;
-use crate::rotary::RotaryActuators;
+use crate::analysis::differences::{first_difference, second_difference, third_difference};
+use crate::model::geometry::Geometry;
+use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
+use crate::model::pose::Pose;
+use crate::model::rotary::RotaryActuators;
+use crate::solve::inverse::LegSolution;
 
 /// The servo side of every sample of a motion.
 pub struct ServoMotion {
@@ -246,7 +246,7 @@ pub fn rods_allowed(
     tips: &[Vector3<f64>; 6],
 ) -> bool {
     let angles = rod_cone_angles(pose, joints, tips);
-    let cone_ok = |limit: Option<crate::Angle>, k: usize| {
+    let cone_ok = |limit: Option<crate::model::angle::Angle>, k: usize| {
         limit.is_none_or(|max| angles[k].iter().all(|&a| a <= max.degrees()))
     };
     cone_ok(limits.base_cone, 0)

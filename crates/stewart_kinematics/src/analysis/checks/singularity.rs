@@ -2,9 +2,9 @@
 
 use super::scan::{Bound, Collected, scan_one};
 use super::{CheckSettings, Finding, FindingKind};
-use crate::architecture::ArchitectureReport;
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::analysis::architecture::ArchitectureReport;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// An architecture-singular geometry gives one finding for the whole motion (every pose
 /// is singular, so per-pose findings would say nothing more); otherwise the normalised

@@ -2,7 +2,7 @@
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_legs};
-use crate::geometry::StrokeLimits;
+use crate::model::geometry::StrokeLimits;
 
 /// One finding per leg and per limit passed; a summary per limit set.
 pub(crate) fn check(

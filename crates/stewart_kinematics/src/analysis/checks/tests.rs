@@ -5,14 +5,14 @@
 use nalgebra::Vector3;
 
 use super::{CheckSettings, FindingKind, check_motion};
-use crate::actuator::Actuator;
-use crate::angle::Angle;
-use crate::geometry::{Geometry, GeometryParams};
-use crate::limits::Limits;
-use crate::pose::Pose;
-use crate::rotary::RotaryActuators;
+use crate::model::actuator::Actuator;
+use crate::model::angle::Angle;
+use crate::model::geometry::{Geometry, GeometryParams};
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
+use crate::model::rotary::RotaryActuators;
+use crate::model::trajectory::Samples;
 use crate::test_support::servo_geometry;
-use crate::trajectory::Samples;
 
 /// Heave `z(t) = h + amp·sin(2π f t)` sampled every `dt` over `n` samples.
 fn heave(g: &Geometry, amp: f64, f: f64, n: usize, dt: f64) -> Samples {
@@ -213,7 +213,7 @@ fn servo_speed_is_the_jacobian_rate() {
     let rates = super::rates::per_sample(
         &samples.times,
         &motion.angles_deg,
-        crate::differences::first_difference,
+        crate::analysis::differences::first_difference,
     );
     for i in 0..6 {
         let got = rates[1000][i].abs();

@@ -10,13 +10,13 @@ mod washout;
 use nalgebra::Vector3;
 use thiserror::Error;
 
-use crate::angle::Angle;
-use crate::cueing_settings::{CueingProblem, CueingSettings};
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::pose::{Pose, rotation_zyx};
-use crate::table::TableError;
-use crate::trajectory::{Motion, PoseTable};
+use crate::io::table::TableError;
+use crate::model::angle::Angle;
+use crate::model::cueing_settings::{CueingProblem, CueingSettings};
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::{Pose, rotation_zyx};
+use crate::model::trajectory::{Motion, PoseTable};
 
 pub use limiter::Limiter;
 pub use lti::Lti;
@@ -39,7 +39,7 @@ pub enum CueError {
         previous: f64,
     },
     /// The cue of sample `index` (from 0) leaves the accepted range of poses
-    /// ([`crate::bounds::POSE_ROW`]): a pose table that no command would read back.
+    /// ([`crate::io::bounds::POSE_ROW`]): a pose table that no command would read back.
     #[error(
         "the cued pose at t = {t} s leaves the accepted range of poses: its {column} {why} (lower the [cueing] scales or strengthen the washout, or turn the workspace limiter on)"
     )]
@@ -51,7 +51,7 @@ pub enum CueError {
         /// The pose value's name: `x`, `y`, `z`, `roll_deg`, `pitch_deg` or `yaw_deg`.
         column: &'static str,
         /// Why the value is refused.
-        why: crate::bounds::OutOfBounds,
+        why: crate::io::bounds::OutOfBounds,
     },
     /// The limiter keeps poses within the limits by scaling toward home, which must be
     /// within them.
@@ -220,11 +220,11 @@ pub fn cue_recording(
             None => 0.0,
         };
         let pose = cueing.advance(h);
-        if let Err((column, why)) = crate::bounds::check_pose_row(&pose.to_row()) {
+        if let Err((column, why)) = crate::io::bounds::check_pose_row(&pose.to_row()) {
             return Err(CueError::PoseOutside {
                 index,
                 t: *t,
-                column: crate::trajectory::POSE_COLUMNS[column],
+                column: crate::model::trajectory::POSE_COLUMNS[column],
                 why,
             });
         }

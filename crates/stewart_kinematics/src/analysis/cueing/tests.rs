@@ -1,7 +1,7 @@
 use nalgebra::{Complex, Vector3};
 
 use super::*;
-use crate::geometry::GeometryParams;
+use crate::model::geometry::GeometryParams;
 
 /// Only the channels a test looks at: every scale 1, tilt off.
 fn plain() -> CueingSettings {

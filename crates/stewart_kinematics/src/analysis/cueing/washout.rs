@@ -21,7 +21,7 @@
 //! most the limit times the step.
 
 use super::lti::Lti;
-use crate::cueing_settings::{CueingSettings, GRAVITY};
+use crate::model::cueing_settings::{CueingSettings, GRAVITY};
 
 /// One sample of vehicle motion.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -51,8 +51,8 @@ impl Cue {
     /// translational acceleration and `R` its rotation. Sustained force rendered by tilt
     /// shows here as gravity's share along the tilted platform.
     pub fn specific_force(&self) -> [f64; 3] {
-        let [roll, pitch, yaw] = self.angles.map(crate::angle::Angle::from_radians);
-        let r = crate::pose::rotation_zyx(roll, pitch, yaw);
+        let [roll, pitch, yaw] = self.angles.map(crate::model::angle::Angle::from_radians);
+        let r = crate::model::pose::rotation_zyx(roll, pitch, yaw);
         let up = nalgebra::Vector3::new(0.0, 0.0, GRAVITY);
         let f = r.transpose() * (nalgebra::Vector3::from(self.acceleration) + up) - up;
         [f.x, f.y, f.z]

@@ -13,8 +13,8 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// The coordinates' names, in pose order.
 pub const NAMES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];

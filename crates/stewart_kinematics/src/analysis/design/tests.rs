@@ -1,5 +1,5 @@
 use super::*;
-use crate::Scenario;
+use crate::io::scenario::Scenario;
 
 fn seed() -> Geometry {
     Geometry::seed()

@@ -5,11 +5,11 @@
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::{DynamicsError, DynamicsSettings, MotionState};
-use crate::differences::{first_difference, second_difference};
-use crate::forces::{ForceError, ForceSeries, Payload, skew_vector};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
-use crate::trajectory::Samples;
+use crate::analysis::differences::{first_difference, second_difference};
+use crate::analysis::forces::{ForceError, ForceSeries, Payload, skew_vector};
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
+use crate::model::trajectory::Samples;
 
 /// The motion state at every sample: the pivot point's velocity and acceleration by
 /// central differences of the positions, `ω` and `α` from those of the rotations

@@ -37,10 +37,10 @@ mod parts;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use thiserror::Error;
 
-pub use crate::dynamics_settings::DynamicsSettings;
-use crate::forces::{Payload, STANDARD_GRAVITY};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::analysis::forces::{Payload, STANDARD_GRAVITY};
+pub use crate::model::dynamics_settings::DynamicsSettings;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 pub use along::{LowestMode, lowest_mode_along, motion_states};
 pub use modes::{AXES, Modes, dominant};
 use parts::{Leg, LegTrouble, joint_acceleration, wrench_at};

@@ -3,9 +3,9 @@
 use nalgebra::{Matrix6, Vector6};
 
 use super::{DynamicsError, DynamicsSettings};
-use crate::forces::Payload;
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::analysis::forces::Payload;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// The names of the six coordinates of twists, wrenches and mode vectors, in order.
 pub const AXES: [&str; 6] = ["x", "y", "z", "rx", "ry", "rz"];
@@ -90,7 +90,7 @@ impl Geometry {
         let turn = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
         let rotation = turn * nalgebra::Rotation3::from_matrix_unchecked(pose.rotation());
         let (roll, pitch, yaw) = rotation.euler_angles();
-        use crate::angle::Angle;
+        use crate::model::angle::Angle;
         Pose::new(
             origin - c + rotation * c,
             Angle::from_radians(roll),

@@ -12,9 +12,9 @@
 
 use nalgebra::{Matrix3, Vector3, Vector6};
 
-use crate::dynamics_settings::{DynamicsSettings, LegPart};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::dynamics_settings::{DynamicsSettings, LegPart};
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// One moving part of a leg at a pose (and, for accelerations, a twist).
 #[derive(Clone, Copy, Debug)]

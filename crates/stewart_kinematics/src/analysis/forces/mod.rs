@@ -25,9 +25,9 @@ use nalgebra::{Matrix3, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::differences::{first_difference, second_difference};
-use crate::geometry::Geometry;
-use crate::trajectory::Samples;
+use crate::analysis::differences::{first_difference, second_difference};
+use crate::model::geometry::Geometry;
+use crate::model::trajectory::Samples;
 
 /// Standard gravity, m/s², along −z of the base frame.
 pub const STANDARD_GRAVITY: f64 = 9.806_65;
@@ -82,7 +82,7 @@ impl Payload {
         centre_of_mass: Vector3<f64>,
         inertia: Matrix3<f64>,
     ) -> Result<Self, ForceError> {
-        use crate::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
+        use crate::io::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
         if !(mass.is_finite() && mass > 0.0 && mass <= MASS_KG) {
             return Err(ForceError::BadPayload {
                 field: "mass",
@@ -189,7 +189,11 @@ pub fn inertia_tensor(values: &[f64]) -> Option<Matrix3<f64>> {
 
 impl Geometry {
     /// Leg forces that hold the payload still at `pose` (weight only).
-    pub fn static_forces(&self, pose: &crate::pose::Pose, payload: &Payload) -> Option<[f64; 6]> {
+    pub fn static_forces(
+        &self,
+        pose: &crate::model::pose::Pose,
+        payload: &Payload,
+    ) -> Option<[f64; 6]> {
         self.leg_forces(
             pose,
             payload,
@@ -204,7 +208,7 @@ impl Geometry {
     /// `alpha` (base frame). `None` at a singular pose or one a servo cannot reach.
     pub fn leg_forces(
         &self,
-        pose: &crate::pose::Pose,
+        pose: &crate::model::pose::Pose,
         payload: &Payload,
         a_c: &Vector3<f64>,
         omega: &Vector3<f64>,

@@ -1,6 +1,6 @@
 use super::*;
-use crate::angle::Angle;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
 use proptest::prelude::*;
 
 fn payload(mass: f64, com: [f64; 3]) -> Payload {
@@ -169,7 +169,7 @@ fn bad_payloads_and_singular_geometry_are_refused() {
 /// τ_i = m g Δz_c / δ (central difference). No Jacobian is involved.
 #[test]
 fn servo_torques_are_the_weights_work_per_radian() {
-    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let load = payload(0.8, [0.01, -0.005, 0.03]);
     for pose in [
@@ -189,7 +189,7 @@ fn servo_torques_are_the_weights_work_per_radian() {
             let moved = |d: f64| {
                 let mut a = angles;
                 a[i] = Angle::from_radians(a[i].radians() + d);
-                g.forward_servos(&a, &pose, &crate::ForwardOptions::default())
+                g.forward_servos(&a, &pose, &crate::solve::forward::ForwardOptions::default())
                     .unwrap_or_else(|e| panic!("{e}"))
                     .pose
             };
@@ -207,7 +207,7 @@ fn servo_torques_are_the_weights_work_per_radian() {
 
 #[test]
 fn a_servo_out_of_reach_is_named_in_the_torque_error() {
-    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let samples = Samples {
         times: vec![0.0, 0.1, 0.2],

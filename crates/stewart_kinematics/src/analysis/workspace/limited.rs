@@ -16,8 +16,8 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::column::{Spans, keep_between_cuts, keep_where_margin};
 use super::roots::{Poly, roots_in};
-use crate::geometry::Geometry;
-use crate::limits::{LEG_PAIRS, Limits, segment_distance};
+use crate::model::geometry::Geometry;
+use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
 
 /// One orientation's cone and clearance limits, as a column needs them.
 pub(super) struct LegLimits {

@@ -1,9 +1,9 @@
 //! How a workspace's columns were decided, in words, for reports: each actuator kind has
 //! its own method (closed-form shells for legs, servo reach for servos) and its own limits.
 
-use crate::actuator::Actuator;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
+use crate::model::actuator::Actuator;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
 
 use super::ConstantOrientationWorkspace;
 

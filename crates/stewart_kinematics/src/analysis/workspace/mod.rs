@@ -28,10 +28,10 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::angle::Angle;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
 
 /// Why a workspace cannot be computed.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -473,7 +473,7 @@ impl Geometry {
             return Err(WorkspaceError::NoStroke);
         };
         let [roll, pitch, yaw] = orientation;
-        let rotation = crate::pose::rotation_zyx(roll, pitch, yaw);
+        let rotation = crate::model::pose::rotation_zyx(roll, pitch, yaw);
         let shells = Shells::new(self, &rotation, min, max);
         let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
         let Some(bounds) = shells.xy_bounds() else {

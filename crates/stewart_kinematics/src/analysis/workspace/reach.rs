@@ -1,10 +1,10 @@
 //! Reach at one pose: how far each pose coordinate can move alone before a limit is hit,
 //! and which roll–pitch pairs are reachable at the pose's position and yaw (a reach map).
 
-use crate::angle::Angle;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
 
 /// Which roll–pitch pairs are reachable, on a square grid centred on level.
 #[derive(Clone, Debug, PartialEq)]
@@ -134,8 +134,8 @@ fn bisect(within: &impl Fn(f64) -> bool, mut inside: f64, mut outside: f64, tole
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenario::Scenario;
-    use crate::workspace::Axis;
+    use crate::analysis::workspace::Axis;
+    use crate::io::scenario::Scenario;
 
     fn paired() -> Scenario {
         Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"))

@@ -6,10 +6,10 @@
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
 
 /// Which plane a slice lies in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]

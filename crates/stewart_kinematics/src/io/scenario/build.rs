@@ -12,15 +12,17 @@ use super::file::{
     ActuatorFile, ActuatorKind, AngularChannelFile, ChecksFile, GeometryFile, KeyFile, LimitsFile,
     LinearChannelFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile, TrajectoryKind,
 };
-use crate::actuator::Actuator;
-use crate::angle::Angle;
-use crate::checks::CheckSettings;
-use crate::forces::Payload;
-use crate::geometry::{Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits};
-use crate::limits::Limits;
-use crate::pose::Pose;
-use crate::rotary::{RotaryActuators, RotaryError};
-use crate::trajectory::{
+use crate::analysis::checks::CheckSettings;
+use crate::analysis::forces::Payload;
+use crate::model::actuator::Actuator;
+use crate::model::angle::Angle;
+use crate::model::geometry::{
+    Geometry, GeometryError, GeometryParams, Plate, PlateJoints, StrokeLimits,
+};
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
+use crate::model::rotary::{RotaryActuators, RotaryError};
+use crate::model::trajectory::{
     Channel, Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Motion, PoseTable,
     Sampling, Sinusoid, Sway, Trajectory,
 };
@@ -104,7 +106,7 @@ pub(crate) fn parse(
         .as_ref()
         .map(|p| {
             let f = p.get_ref();
-            let inertia = crate::forces::inertia_tensor(&f.inertia_kg_m2).ok_or_else(|| {
+            let inertia = crate::analysis::forces::inertia_tensor(&f.inertia_kg_m2).ok_or_else(|| {
                 let span = super::locate::span_of(text, "payload.inertia_kg_m2")
                     .or_else(|| Some(p.span()));
                 src.invalid(
@@ -236,7 +238,7 @@ fn no_servo_keys(src: &Source, a: &ActuatorFile) -> Result<(), ScenarioError> {
 /// The servos of an `[actuator]` table with `kind = "rotary"`: horns, rods, directions,
 /// range and mounting, each error at its key.
 fn build_servos(src: &Source, file: &Spanned<ActuatorFile>) -> Result<Actuator, ScenarioError> {
-    use crate::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
+    use crate::io::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
     let a = file.get_ref();
     let missing = |key: &str| {
         src.invalid(
@@ -885,13 +887,13 @@ fn build_keyframes(
     Keyframes::new(frames, interpolation).map_err(|e| {
         // Point at the key the error names, or at the list.
         let span = match &e {
-            crate::trajectory::KeyframeError::NotIncreasing { index, .. }
-            | crate::trajectory::KeyframeError::NotFinite { index }
-            | crate::trajectory::KeyframeError::OutOfRange { index, .. }
-            | crate::trajectory::KeyframeError::TooClose { index, .. } => {
+            crate::model::trajectory::KeyframeError::NotIncreasing { index, .. }
+            | crate::model::trajectory::KeyframeError::NotFinite { index }
+            | crate::model::trajectory::KeyframeError::OutOfRange { index, .. }
+            | crate::model::trajectory::KeyframeError::TooClose { index, .. } => {
                 keys.get_ref().get(index - 1).map(Spanned::span)
             }
-            crate::trajectory::KeyframeError::Empty => None,
+            crate::model::trajectory::KeyframeError::Empty => None,
         };
         src.err(Some(span.unwrap_or_else(|| keys.span())), e)
     })
@@ -966,24 +968,26 @@ fn build_sampling(
     };
     let samples = t.samples.as_ref().map_or(default_samples, |s| *s.get_ref());
     let samples_span = t.samples.as_ref().map(Spanned::span);
-    if !(2..=crate::trajectory::MAX_SAMPLES as i64).contains(&samples) {
+    if !(2..=crate::model::trajectory::MAX_SAMPLES as i64).contains(&samples) {
         return Err(src.invalid(
             samples_span,
             "trajectory.samples",
             format!(
                 "must be a whole number from 2 to {}, got {samples}",
-                crate::trajectory::MAX_SAMPLES
+                crate::model::trajectory::MAX_SAMPLES
             ),
         ));
     }
     Sampling::with_start(start, duration, samples as u64).map_err(|e| {
         let span = match e {
-            crate::trajectory::SamplingError::Duration(_) => {
+            crate::model::trajectory::SamplingError::Duration(_) => {
                 t.duration_s.as_ref().map(Spanned::span)
             }
-            crate::trajectory::SamplingError::TooFewSamples(_)
-            | crate::trajectory::SamplingError::TooFine { .. } => samples_span.clone(),
-            crate::trajectory::SamplingError::Start(_) => t.start_s.as_ref().map(Spanned::span),
+            crate::model::trajectory::SamplingError::TooFewSamples(_)
+            | crate::model::trajectory::SamplingError::TooFine { .. } => samples_span.clone(),
+            crate::model::trajectory::SamplingError::Start(_) => {
+                t.start_s.as_ref().map(Spanned::span)
+            }
         };
         src.err(span, e)
     })

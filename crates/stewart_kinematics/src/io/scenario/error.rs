@@ -4,9 +4,9 @@ use std::fmt;
 
 use thiserror::Error;
 
-use crate::geometry::GeometryError;
-use crate::table::TableError;
-use crate::trajectory::{KeyframeError, SamplingError};
+use crate::io::table::TableError;
+use crate::model::geometry::GeometryError;
+use crate::model::trajectory::{KeyframeError, SamplingError};
 
 /// What is wrong with a scenario.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -22,7 +22,7 @@ pub enum ScenarioProblem {
     Geometry(#[from] GeometryError),
     /// The rotary actuators were refused.
     #[error(transparent)]
-    Actuator(#[from] crate::rotary::RotaryError),
+    Actuator(#[from] crate::model::rotary::RotaryError),
     /// The sampling was refused.
     #[error(transparent)]
     Sampling(#[from] SamplingError),

@@ -8,7 +8,7 @@
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
-use crate::trajectory::{Interpolation, Wave};
+use crate::model::trajectory::{Interpolation, Wave};
 
 /// A whole scenario file.
 #[derive(Debug, Deserialize, Serialize)]
@@ -32,11 +32,11 @@ pub(crate) struct ScenarioFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checks: Option<ChecksFile>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub link: Option<Spanned<crate::link_settings::LinkSettings>>,
+    pub link: Option<Spanned<crate::model::link_settings::LinkSettings>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub cueing: Option<Spanned<crate::cueing_settings::CueingSettings>>,
+    pub cueing: Option<Spanned<crate::model::cueing_settings::CueingSettings>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub dynamics: Option<Spanned<crate::dynamics_settings::DynamicsSettings>>,
+    pub dynamics: Option<Spanned<crate::model::dynamics_settings::DynamicsSettings>>,
 }
 
 /// `[payload]`: the moving mass (platform and load).
@@ -44,7 +44,7 @@ pub(crate) struct ScenarioFile {
 #[serde(deny_unknown_fields)]
 pub(crate) struct PayloadFile {
     pub mass_kg: f64,
-    #[serde(default, deserialize_with = "crate::text::exactly")]
+    #[serde(default, deserialize_with = "crate::io::text::exactly")]
     pub com_m: [f64; 3],
     /// Three principal moments (Ixx, Iyy, Izz) or the whole tensor (Ixx, Iyy, Izz, Ixy,
     /// Ixz, Iyz); none: zero.
@@ -125,12 +125,12 @@ pub(crate) struct ActuatorFile {
     pub servo_trim_deg: Option<Spanned<Vec<f64>>>,
 }
 
-pub(crate) use crate::actuator::ActuatorKind;
+pub(crate) use crate::model::actuator::ActuatorKind;
 
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct PivotFile {
-    #[serde(deserialize_with = "crate::text::exactly_spanned")]
+    #[serde(deserialize_with = "crate::io::text::exactly_spanned")]
     pub offset_m: Spanned<[f64; 3]>,
 }
 

@@ -26,11 +26,11 @@
 //! inertia_kg_m2 = [3.0, 3.0, 5.0]  # about the centre of mass, platform axes: Ixx, Iyy, Izz
 //!                                  # (or six: Ixx, Iyy, Izz, Ixy, Ixz, Iyz)
 //! [dynamics]                       # optional: stiffness, friction and leg parts
-//! actuator_stiffness = 2.0e7       # see crate::dynamics_settings for every key
+//! actuator_stiffness = 2.0e7       # see crate::model::dynamics_settings for every key
 //! [checks]                         # optional thresholds
 //! jump_ratio = 5.0
 //! [link]                           # optional: sending set-points to hardware
-//! transport = "udp"                # see crate::link_settings for every key
+//! transport = "udp"                # see crate::model::link_settings for every key
 //! address = "192.168.1.20:9000"
 //! ```
 //!
@@ -45,14 +45,14 @@ mod write;
 
 pub use error::{ScenarioError, ScenarioProblem};
 
-use crate::checks::CheckSettings;
-use crate::cueing_settings::CueingSettings;
-use crate::dynamics_settings::DynamicsSettings;
-use crate::forces::Payload;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::link_settings::LinkSettings;
-use crate::trajectory::Motion;
+use crate::analysis::checks::CheckSettings;
+use crate::analysis::forces::Payload;
+use crate::model::cueing_settings::CueingSettings;
+use crate::model::dynamics_settings::DynamicsSettings;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::link_settings::LinkSettings;
+use crate::model::trajectory::Motion;
 
 /// A platform, its motion and the check thresholds: everything a run needs.
 #[derive(Clone, Debug, PartialEq)]

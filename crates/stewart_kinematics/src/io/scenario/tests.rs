@@ -1,7 +1,7 @@
 //! Scenario parsing: presets, round trips and located errors.
 
 use super::*;
-use crate::trajectory::{Interpolation, Sampling, Trajectory};
+use crate::model::trajectory::{Interpolation, Sampling, Trajectory};
 
 const GEOMETRY: &str = "[geometry]
 base_radius = 1.0
@@ -61,7 +61,7 @@ fn seed_preset_is_the_article_bit_for_bit() {
     assert_eq!(preset.motion.sample(), code.motion.sample());
     assert_eq!(
         preset.geometry.stroke(),
-        crate::StrokeLimits::new(0.55, 1.30)
+        crate::model::geometry::StrokeLimits::new(0.55, 1.30)
     );
 }
 
@@ -310,7 +310,7 @@ fn rate_limits_belong_to_their_actuator_kind() {
 
 #[test]
 fn the_link_table_reads_writes_back_and_names_bad_values() {
-    use crate::link_settings::{LinkOutput, LinkTransport};
+    use crate::model::link_settings::{LinkOutput, LinkTransport};
     let s = parse(&format!(
         "{GEOMETRY}[link]\ntransport = \"serial\"\nport = \"/dev/ttyACM0\"\nbaud = 1000000\nrate_hz = 500\noutput = \"pulse\"\nactuator = [2, 1, 3, 4, 5, 6]\nreversed = [true, false, false, false, false, true]\n"
     ))

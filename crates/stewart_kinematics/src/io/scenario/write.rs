@@ -8,9 +8,9 @@ use super::file::{
     LinearChannelFile, PayloadFile, PivotFile, PointsFile, ScenarioFile, TrajectoryFile,
     TrajectoryKind,
 };
-use crate::actuator::Actuator;
-use crate::geometry::PlateJoints;
-use crate::trajectory::{Channel, Motion, Trajectory};
+use crate::model::actuator::Actuator;
+use crate::model::geometry::PlateJoints;
+use crate::model::trajectory::{Channel, Motion, Trajectory};
 
 fn s<T>(v: T) -> Spanned<T> {
     Spanned::new(0..0, v)
@@ -197,7 +197,7 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         actuator,
         pivot,
         trajectory: Some(s(t)),
-        limits: (*l != crate::limits::Limits::default()).then_some(limits),
+        limits: (*l != crate::model::limits::Limits::default()).then_some(limits),
         payload: scenario.payload.map(|p| {
             s(PayloadFile {
                 mass_kg: p.mass,
@@ -211,12 +211,13 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
             jump_floor_m: Some(s(c.jump_floor)),
             condition_max: Some(s(c.condition_max)),
         }),
-        link: (scenario.link != crate::link_settings::LinkSettings::default())
+        link: (scenario.link != crate::model::link_settings::LinkSettings::default())
             .then(|| s(scenario.link.clone())),
-        cueing: (scenario.cueing != crate::cueing_settings::CueingSettings::default())
+        cueing: (scenario.cueing != crate::model::cueing_settings::CueingSettings::default())
             .then(|| s(scenario.cueing.clone())),
-        dynamics: (scenario.dynamics != crate::dynamics_settings::DynamicsSettings::default())
-            .then(|| s(scenario.dynamics.clone())),
+        dynamics: (scenario.dynamics
+            != crate::model::dynamics_settings::DynamicsSettings::default())
+        .then(|| s(scenario.dynamics.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
     let text =

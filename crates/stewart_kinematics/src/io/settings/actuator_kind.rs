@@ -3,10 +3,10 @@
 use thiserror::Error;
 
 use super::target::ActuatorKind;
-use crate::actuator::Actuator;
-use crate::geometry::{Geometry, GeometryError};
-use crate::rotary::{RotaryActuators, RotaryError};
-use crate::scenario::Scenario;
+use crate::io::scenario::Scenario;
+use crate::model::actuator::Actuator;
+use crate::model::geometry::{Geometry, GeometryError};
+use crate::model::rotary::{RotaryActuators, RotaryError};
 
 /// Why a switch of actuator kind was refused.
 #[derive(Clone, Debug, PartialEq, Error)]
@@ -53,7 +53,7 @@ pub fn switch_actuator(scenario: &mut Scenario, kind: ActuatorKind) -> Result<()
 
 /// Servos sized for `geometry`'s plates (see [`switch_actuator`]).
 fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, RotaryError> {
-    let horn = 0.3 * geometry.plate_radius(crate::geometry::Plate::Base);
+    let horn = 0.3 * geometry.plate_radius(crate::model::geometry::Plate::Base);
     // Each horn at right angles to its joint's direction from the base centre.
     let directions: [f64; 6] = std::array::from_fn(|i| {
         let turn = if i % 2 == 0 { -90.0 } else { 90.0 };
@@ -76,7 +76,7 @@ fn fitted_servos(geometry: &Geometry) -> Result<RotaryActuators, RotaryError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::checks::{CheckSettings, check_motion};
+    use crate::analysis::checks::{CheckSettings, check_motion};
 
     #[test]
     fn legs_become_level_servos_and_back() {

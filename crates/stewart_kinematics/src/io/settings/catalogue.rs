@@ -10,10 +10,10 @@ use super::target::{
     ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
 };
 use super::{DefaultValue, Group, Setting, Unit};
-use crate::checks::CheckSettings;
-use crate::cueing_settings::CueingSettings;
-use crate::geometry::{GeometryParams, Plate};
-use crate::trajectory::{Sampling, Sinusoid};
+use crate::analysis::checks::CheckSettings;
+use crate::model::cueing_settings::CueingSettings;
+use crate::model::geometry::{GeometryParams, Plate};
+use crate::model::trajectory::{Sampling, Sinusoid};
 
 use DefaultValue::{AboveHome, Off, Value};
 use Unit::{
@@ -112,7 +112,7 @@ const fn not_negative(max: Option<f64>) -> Option<ModelRule> {
 
 /// The rule for `key` (`None`: the unit's range is the rule).
 fn model_rule(key: &str) -> Option<ModelRule> {
-    use crate::cueing_settings::{MAX_OMEGA, MAX_SCALE, MAX_ZETA};
+    use crate::model::cueing_settings::{MAX_OMEGA, MAX_SCALE, MAX_ZETA};
     let (section, name) = key.split_once('.')?;
     match (section, name) {
         ("geometry", "base_radius" | "platform_radius" | "home_height" | "leg_min" | "leg_max")
@@ -193,7 +193,7 @@ fn geometry(d: &mut Declare) {
         Off,
         g(LegMax),
     );
-    let (base_angles, platform_angles) = crate::layout::Layout::seed().angles();
+    let (base_angles, platform_angles) = crate::model::layout::Layout::seed().angles();
     for (plate, angles, key) in [
         ("base", base_angles, BaseAngle as fn(usize) -> GeometryKey),
         ("platform", platform_angles, PlatformAngle),

@@ -1,7 +1,7 @@
 //! The `[cueing]` table's settings: each number (and each switch, as 0 or 1) read and
 //! written by key, a written value checked as the file reader checks it.
 
-use crate::cueing_settings::CueingSettings;
+use crate::model::cueing_settings::CueingSettings;
 
 /// A number or switch of `[cueing]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

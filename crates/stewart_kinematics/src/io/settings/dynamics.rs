@@ -1,8 +1,8 @@
 //! The `[dynamics]` table's settings: each number read and written by key, a written
 //! value checked as the file reader checks it.
 
-use crate::actuator::ActuatorKind;
-use crate::dynamics_settings::DynamicsSettings;
+use crate::model::actuator::ActuatorKind;
+use crate::model::dynamics_settings::DynamicsSettings;
 
 /// A number of `[dynamics]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

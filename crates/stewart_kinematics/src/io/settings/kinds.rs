@@ -1,9 +1,9 @@
 //! The trajectory kinds a user can switch between, and the motion each starts from.
 
 use super::target::{ShapeKey, Target};
-use crate::angle::Angle;
-use crate::pose::Pose;
-use crate::trajectory::{
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
+use crate::model::trajectory::{
     Circle, FigureEight, Helix, Interpolation, Keyframe, Keyframes, Sinusoid, Sway, Trajectory,
 };
 
@@ -125,14 +125,17 @@ fn pick_and_place(h: f64, duration: f64) -> Keyframes {
 /// Switch `scenario` to a trajectory of `choice` with its default numbers, keeping the
 /// duration and sample count and starting at t = 0. Switching to the kind it already
 /// has changes nothing.
-pub fn switch_trajectory(scenario: &mut crate::Scenario, choice: TrajectoryChoice) {
+pub fn switch_trajectory(scenario: &mut crate::io::scenario::Scenario, choice: TrajectoryChoice) {
     if TrajectoryChoice::of(&scenario.motion.trajectory) == choice {
         return;
     }
     let sampling = scenario.motion.sampling;
     scenario.motion.trajectory =
         default_trajectory(choice, scenario.geometry.home_height(), sampling.duration());
-    scenario.motion.sampling =
-        crate::Sampling::with_start(0.0, sampling.duration(), sampling.len() as u64)
-            .unwrap_or(sampling);
+    scenario.motion.sampling = crate::model::trajectory::Sampling::with_start(
+        0.0,
+        sampling.duration(),
+        sampling.len() as u64,
+    )
+    .unwrap_or(sampling);
 }

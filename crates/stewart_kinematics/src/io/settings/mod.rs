@@ -4,8 +4,8 @@
 //! and `stewart settings` prints it, so the three always agree with the file format.
 //!
 //! Reading and writing go through [`Setting::get`] and [`Setting::set`]; a write is
-//! validated by the same constructors the file reader uses ([`crate::Geometry::new`],
-//! [`crate::Sampling::with_start`]), so a refused value leaves the scenario as it was.
+//! validated by the same constructors the file reader uses ([`crate::model::geometry::Geometry::new`],
+//! [`crate::model::trajectory::Sampling::with_start`]), so a refused value leaves the scenario as it was.
 
 mod actuator_kind;
 mod catalogue;
@@ -19,7 +19,7 @@ use std::sync::LazyLock;
 
 use thiserror::Error;
 
-use crate::scenario::Scenario;
+use crate::io::scenario::Scenario;
 pub use actuator_kind::{SwitchError, switch_actuator};
 pub use cueing::{AXES, CueingKey};
 pub use dynamics::DynamicsKey;
@@ -106,10 +106,10 @@ impl Unit {
     }
 
     /// The values a number of this unit may take anywhere (file, `--set`, slider): see
-    /// [`crate::bounds`]. Whether a particular value makes sense (a positive radius) is
+    /// [`crate::io::bounds`]. Whether a particular value makes sense (a positive radius) is
     /// then up to the model's constructors.
     pub fn accepted(self) -> RangeInclusive<f64> {
-        use crate::bounds::{self, symmetric};
+        use crate::io::bounds::{self, symmetric};
         match self {
             Unit::Metre => symmetric(bounds::LENGTH_M),
             Unit::Degree => symmetric(bounds::ANGLE_DEG),
@@ -121,14 +121,14 @@ impl Unit {
             Unit::DegreePerSecondSquared => symmetric(bounds::ANGULAR_ACCEL_DEG_S2),
             Unit::MetrePerSecondCubed => symmetric(bounds::JERK_M_S3),
             Unit::DegreePerSecondCubed => symmetric(bounds::ANGULAR_JERK_DEG_S3),
-            Unit::Count => 2.0..=crate::trajectory::MAX_SAMPLES as f64,
+            Unit::Count => 2.0..=crate::model::trajectory::MAX_SAMPLES as f64,
             Unit::Ratio => symmetric(bounds::RATIO),
-            Unit::RadianPerSecond => symmetric(crate::cueing_settings::MAX_OMEGA),
+            Unit::RadianPerSecond => symmetric(crate::model::cueing_settings::MAX_OMEGA),
             Unit::Switch => 0.0..=1.0,
             Unit::Kilogram => symmetric(bounds::MASS_KG),
             Unit::KilogramSquareMetre => symmetric(bounds::INERTIA_KG_M2),
-            Unit::Stiffness => symmetric(crate::dynamics_settings::MAX_STIFFNESS),
-            Unit::Friction => symmetric(crate::dynamics_settings::MAX_FRICTION),
+            Unit::Stiffness => symmetric(crate::model::dynamics_settings::MAX_STIFFNESS),
+            Unit::Friction => symmetric(crate::model::dynamics_settings::MAX_FRICTION),
         }
     }
 }
@@ -230,7 +230,7 @@ pub enum SettingError {
         /// The key.
         key: String,
         /// The plate.
-        plate: crate::geometry::Plate,
+        plate: crate::model::geometry::Plate,
     },
     /// An actuator key on a platform with linear legs.
     #[error("`{key}` applies to rotary platforms only (`[actuator] kind = \"rotary\"`)")]
@@ -268,7 +268,7 @@ impl Setting {
     /// The accepted range in words, such as `-1000 … 1000 m`, or `above 0 … 1000 m` when
     /// its lower end is refused.
     pub fn accepted_words(&self) -> String {
-        let words = crate::bounds::range_words(&self.accepted, self.unit.symbol());
+        let words = crate::io::bounds::range_words(&self.accepted, self.unit.symbol());
         match (self.min_excluded, self.max_excluded) {
             (false, false) => words,
             (true, false) => format!("above {words}"),
@@ -277,8 +277,8 @@ impl Setting {
                 let above = if min { "above" } else { "from" };
                 format!(
                     "{above} {} and below {} {unit}",
-                    crate::bounds::short(*self.accepted.start()),
-                    crate::bounds::short(*self.accepted.end())
+                    crate::io::bounds::short(*self.accepted.start()),
+                    crate::io::bounds::short(*self.accepted.end())
                 )
                 .trim_end()
                 .to_owned()
@@ -322,9 +322,9 @@ impl Setting {
                 (lo, hi) = (0.5 * mean, 2.0 * mean);
             }
         } else if self.unit == Unit::Stiffness && g.actuator().kind() == ActuatorKind::Rotary {
-            (lo, hi) = crate::dynamics_settings::ROTARY_STIFFNESS_RANGE;
+            (lo, hi) = crate::model::dynamics_settings::ROTARY_STIFFNESS_RANGE;
         } else if self.unit == Unit::Metre && !servo_part {
-            let seed = crate::geometry::Geometry::seed().characteristic_length();
+            let seed = crate::model::geometry::Geometry::seed().characteristic_length();
             let scale = (g.characteristic_length() / seed).clamp(1e-3, 1e3);
             if scale.is_finite() {
                 (lo, hi) = (lo * scale, hi * scale);
@@ -349,7 +349,7 @@ impl Setting {
             return v;
         }
         if self.unit == Unit::Stiffness {
-            return crate::dynamics_settings::typical_stiffness(
+            return crate::model::dynamics_settings::typical_stiffness(
                 scenario.geometry.actuator().kind(),
             );
         }
@@ -359,7 +359,7 @@ impl Setting {
     /// Write `value` (`None`: switch off). Validated as the file reader validates; a
     /// refused value leaves the scenario unchanged.
     pub fn set(&self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), SettingError> {
-        let shown = value.map_or_else(|| "off".to_owned(), crate::bounds::short);
+        let shown = value.map_or_else(|| "off".to_owned(), crate::io::bounds::short);
         let invalid = |reason: String| SettingError::Invalid {
             key: self.key.clone(),
             value: shown.clone(),
@@ -411,7 +411,7 @@ impl Setting {
             // The unit's range here; within it the model refuses what its own rules refuse
             // (a negative radius), in its own words — the rules `accepted` shows.
             Some(v) => {
-                crate::bounds::check(v, &self.unit.accepted(), self.unit.symbol())
+                crate::io::bounds::check(v, &self.unit.accepted(), self.unit.symbol())
                     .map_err(|e| invalid(e.to_string()))?;
             }
             _ => {}
@@ -489,14 +489,14 @@ pub fn quantity_limit_targets(kind: ActuatorKind) -> [Target; 2] {
 pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
     all().iter().find_map(|s| {
         let v = s.get(scenario)?;
-        crate::bounds::check(v, &s.unit.accepted(), s.unit.symbol())
+        crate::io::bounds::check(v, &s.unit.accepted(), s.unit.symbol())
             .err()
             .map(|reason| (s, reason.to_string()))
     })
 }
 
 /// Apply `KEY=VALUE` assignments in order (`link.*` keys take words, see
-/// [`crate::link_settings::LinkSettings::set_text`]); the first refusal stops and is returned, and
+/// [`crate::model::link_settings::LinkSettings::set_text`]); the first refusal stops and is returned, and
 /// the scenario is then left as it was before any of them.
 pub fn apply_all<'a>(
     scenario: &mut Scenario,

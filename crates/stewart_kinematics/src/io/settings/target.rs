@@ -2,12 +2,12 @@
 
 use super::cueing::CueingKey;
 use super::dynamics::DynamicsKey;
-use crate::actuator::Actuator;
-use crate::angle::Angle;
-use crate::geometry::{Geometry, Plate, PlateJoints};
-use crate::rotary::RotaryActuators;
-use crate::scenario::Scenario;
-use crate::trajectory::{Channel, Sampling, Trajectory};
+use crate::io::scenario::Scenario;
+use crate::model::actuator::Actuator;
+use crate::model::angle::Angle;
+use crate::model::geometry::{Geometry, Plate, PlateJoints};
+use crate::model::rotary::RotaryActuators;
+use crate::model::trajectory::{Channel, Sampling, Trajectory};
 
 /// Numbers of `[geometry]` and `[pivot]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -119,7 +119,7 @@ pub enum LimitKey {
     ServoJerk,
 }
 
-pub use crate::actuator::ActuatorKind;
+pub use crate::model::actuator::ActuatorKind;
 
 /// Thresholds of the checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

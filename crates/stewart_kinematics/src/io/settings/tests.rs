@@ -1,6 +1,6 @@
 use super::*;
-use crate::scenario::presets;
-use crate::trajectory::Trajectory;
+use crate::io::scenario::presets;
+use crate::model::trajectory::Trajectory;
 
 fn preset(name: &str) -> Scenario {
     Scenario::preset(name).unwrap_or_else(|e| panic!("{e}"))
@@ -510,7 +510,7 @@ fn slider_ranges_follow_the_platforms_size() {
 
 #[test]
 fn the_quantity_limits_are_the_stroke_or_the_servo_range() {
-    use crate::actuator::ActuatorKind;
+    use crate::model::actuator::ActuatorKind;
     let keys = |kind| quantity_limit_targets(kind).map(|t| of(t).key.clone());
     assert_eq!(
         keys(ActuatorKind::Linear),

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::pose::Pose;
+use crate::model::pose::Pose;
 
 /// How to move between keyframes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -62,7 +62,7 @@ pub enum KeyframeError {
         /// Key number, from 1.
         index: usize,
     },
-    /// A value outside the accepted range of its kind (see [`crate::bounds`]).
+    /// A value outside the accepted range of its kind (see [`crate::io::bounds`]).
     #[error("key {index}: {what}")]
     OutOfRange {
         /// Key number, from 1.
@@ -85,10 +85,10 @@ pub enum KeyframeError {
 /// The smallest time between two keys, seconds (closer keys make splines overflow).
 pub const MIN_KEY_GAP_S: f64 = 1e-6;
 
-/// Check a key's values against [`crate::bounds`]: time, position, angles.
+/// Check a key's values against [`crate::io::bounds`]: time, position, angles.
 fn check_key_ranges(index: usize, k: &Keyframe) -> Result<(), KeyframeError> {
-    use crate::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
-    let out = |name: &str, reason: crate::bounds::OutOfBounds| KeyframeError::OutOfRange {
+    use crate::io::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
+    let out = |name: &str, reason: crate::io::bounds::OutOfBounds| KeyframeError::OutOfRange {
         index,
         what: format!("{name} {reason}"),
     };

@@ -10,7 +10,7 @@ pub mod sinusoid;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::pose::Pose;
+use crate::model::pose::Pose;
 pub use keyframes::{Interpolation, Keyframe, KeyframeError, Keyframes};
 pub use pose_table::{POSE_COLUMNS, PoseTable, check_pose_ranges};
 pub use shapes::{Circle, FigureEight, Helix, Sway};

@@ -3,10 +3,10 @@
 
 use std::io::Read;
 
-use crate::pose::Pose;
-use crate::table::{NumericTable, TableError};
-use crate::trajectory::keyframes::{Interpolation, Keyframe, Keyframes};
-use crate::trajectory::{Motion, Sampling, Trajectory};
+use crate::io::table::{NumericTable, TableError};
+use crate::model::pose::Pose;
+use crate::model::trajectory::keyframes::{Interpolation, Keyframe, Keyframes};
+use crate::model::trajectory::{Motion, Sampling, Trajectory};
 
 /// The pose columns, in order, with their units in the names.
 pub const POSE_COLUMNS: [&str; 6] = ["x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -27,7 +27,7 @@ pub struct PoseTable {
 /// Check a table's pose columns ([`POSE_COLUMNS`]) against the accepted ranges of
 /// lengths and angles; the first value outside is an error naming its line.
 pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
-    use crate::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
+    use crate::io::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
     for (k, name) in POSE_COLUMNS.iter().enumerate() {
         table.check_range(name, &symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k])?;
     }
@@ -37,7 +37,7 @@ pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
 impl PoseTable {
     /// Read a pose table; `file` names the source in error messages.
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
-        use crate::bounds::{TIME_S, symmetric};
+        use crate::io::bounds::{TIME_S, symmetric};
         let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
         check_pose_ranges(&table)?;
         table.check_range("t", &symmetric(TIME_S), "s")?;

@@ -8,8 +8,8 @@ use std::f64::consts::PI;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
 
 fn omega(frequency_hz: f64) -> f64 {
     2.0 * PI * frequency_hz

@@ -5,8 +5,8 @@ use std::f64::consts::PI;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::Angle;
-use crate::pose::Pose;
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
 
 /// Which periodic function a channel follows.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

@@ -11,8 +11,8 @@ use nalgebra::{Matrix3, Vector3};
 use super::homotopy;
 use super::study::{LegParams, placement_of};
 use super::{ForwardError, ForwardOptions, ForwardSolution};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// Two solutions closer than this (metres, and rotation-matrix entries) are the same.
 const SAME_POSE: f64 = 1e-7;
@@ -55,7 +55,7 @@ impl Geometry {
     /// [`Geometry::forward_servos`].
     pub fn servo_assembly_modes(
         &self,
-        angles: &[crate::Angle; 6],
+        angles: &[crate::model::angle::Angle; 6],
     ) -> Result<Vec<ForwardSolution>, ForwardError> {
         let (tips, rod) = self.servo_anchors(angles)?;
         Ok(self.solve_modes(&tips, &[rod; 6])?.modes)
@@ -110,9 +110,9 @@ fn from_rotation(position: Vector3<f64>, r: &Matrix3<f64>) -> Pose {
     let (roll, pitch, yaw) = rot.euler_angles();
     Pose::new(
         position,
-        crate::Angle::from_radians(roll),
-        crate::Angle::from_radians(pitch),
-        crate::Angle::from_radians(yaw),
+        crate::model::angle::Angle::from_radians(roll),
+        crate::model::angle::Angle::from_radians(pitch),
+        crate::model::angle::Angle::from_radians(yaw),
     )
 }
 
@@ -129,8 +129,8 @@ pub fn canonical(pose: &Pose) -> Pose {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::forward::homotopy::SplitMix;
-    use crate::geometry::{GeometryParams, PlateJoints};
+    use crate::model::geometry::{GeometryParams, PlateJoints};
+    use crate::solve::forward::homotopy::SplitMix;
 
     /// A random general platform: joints anywhere in a 2 m box (the platform's within
     /// 1.5 m), and a random pose above the base whose legs are the ones to solve.

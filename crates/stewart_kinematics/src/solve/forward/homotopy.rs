@@ -379,14 +379,14 @@ pub fn real_solutions(solutions: &[Coords], tolerance: f64) -> Vec<SVector<f64, 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::forward::study::placement_of;
+    use crate::solve::forward::study::placement_of;
     use nalgebra::Vector3;
 
     /// P. Dietmaier's platform (1998) whose 40 assembly modes are all real: base joints,
     /// platform joints and leg lengths as published (the CLI tests' files).
     pub(crate) fn dietmaier() -> ([Vector3<f64>; 6], [Vector3<f64>; 6], [f64; 6]) {
         let text = include_str!("../../../../../tests/cli/dietmaier.toml");
-        let s = crate::Scenario::from_toml_str(text, "dietmaier.toml", None)
+        let s = crate::io::scenario::Scenario::from_toml_str(text, "dietmaier.toml", None)
             .unwrap_or_else(|e| panic!("{e}"));
         let legs = include_str!("../../../../../tests/cli/dietmaier_legs.csv");
         let row: Vec<f64> = legs

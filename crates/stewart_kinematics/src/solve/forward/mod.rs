@@ -17,9 +17,9 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::angle::Angle;
-use crate::geometry::Geometry;
-use crate::pose::{Pose, rotation_zyx_from_sin_cos};
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::pose::{Pose, rotation_zyx_from_sin_cos};
 
 /// Settings of the forward solver.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -8,8 +8,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::{ForwardError, ForwardOptions, ForwardSolution};
-use crate::geometry::Geometry;
-use crate::pose::Pose;
+use crate::model::geometry::Geometry;
+use crate::model::pose::Pose;
 
 /// A change of assembly branch between two consecutive samples.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -169,7 +169,7 @@ pub fn placement_of(z: &SVector<f64, 8>) -> (Matrix3<f64>, Vector3<f64>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pose::Pose;
+    use crate::model::pose::Pose;
 
     fn value(m: &Square, z: &Coords) -> C {
         (z.transpose() * m * z)[0]

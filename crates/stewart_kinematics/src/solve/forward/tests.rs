@@ -1,5 +1,5 @@
 use super::*;
-use crate::geometry::StrokeLimits;
+use crate::model::geometry::StrokeLimits;
 use proptest::prelude::*;
 
 /// Normalised condition number above which a pose is taken as near-singular: there two
@@ -57,7 +57,7 @@ proptest! {
         x in -0.3f64..0.3, y in -0.3f64..0.3, z in 0.5f64..1.1,
         r in -60.0f64..60.0, p in -60.0f64..60.0, w in -180.0f64..180.0,
     ) {
-        let mut params = crate::geometry::GeometryParams::seed();
+        let mut params = crate::model::geometry::GeometryParams::seed();
         params.pivot = Vector3::new(0.03, -0.02, 0.05);
         let g = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
         let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
@@ -169,7 +169,7 @@ fn iteration_limit_is_reported() {
 fn near_singular_poses_can_share_their_leg_lengths_with_a_neighbour() {
     // The case proptest found: two poses ~1 mm and 0.2° apart with equal leg lengths (to
     // 2e-16) at κ ≈ 289. The warm solver may return either; both reproduce the lengths.
-    use crate::Angle;
+    use crate::model::angle::Angle;
     let g = crate::test_support::paired_geometry();
     let pose = |p: [f64; 3], r: [f64; 3]| {
         Pose::new(
@@ -299,7 +299,7 @@ fn servo_forward_needs_a_rotary_platform_and_finite_angles() {
 /// servo angles, and the pose those angles were solved from is among them.
 #[test]
 fn servo_assembly_modes_close_every_rod_and_include_the_pose() {
-    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
     let pose = Pose::from_xyz_rpy_deg([0.008, -0.004, 0.115], [3.0, -2.0, 6.0]);

@@ -6,7 +6,7 @@
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::*;
-use crate::geometry::{GeometryParams, PlateJoints};
+use crate::model::geometry::{GeometryParams, PlateJoints};
 
 const SIDE: f64 = 0.3;
 const CENTRE_HEIGHT: f64 = 0.5;
@@ -232,11 +232,11 @@ fn the_lowest_stiffness_of_the_cubic_configuration_is_its_weakest_axis() {
     );
     // A slice through home holds it at the home cell and nothing stiffer elsewhere is
     // assumed: every reachable cell's value is positive and finite.
-    let limits = crate::limits::Limits::default();
+    let limits = crate::model::limits::Limits::default();
     let slice = g.stiffness_slice(
         &limits,
         [Angle::from_degrees(0.0); 3],
-        crate::workspace::Plane::Horizontal,
+        crate::analysis::workspace::Plane::Horizontal,
         CENTRE_HEIGHT,
         [[-0.05, 0.05], [-0.05, 0.05]],
         [5, 5],

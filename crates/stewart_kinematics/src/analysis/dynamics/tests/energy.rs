@@ -10,9 +10,9 @@
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::jet::{Jet, M3, V3, add, dot, mat_mul, mat_vec, norm, scale, sub, v3};
-use crate::dynamics_settings::DynamicsSettings;
-use crate::forces::{Payload, STANDARD_GRAVITY};
-use crate::geometry::Geometry;
+use crate::analysis::forces::{Payload, STANDARD_GRAVITY};
+use crate::model::dynamics_settings::DynamicsSettings;
+use crate::model::geometry::Geometry;
 
 /// The servos' data.
 struct Servos {

@@ -5,7 +5,7 @@ mod jet;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::*;
-use crate::angle::Angle;
+use crate::model::angle::Angle;
 use energy::Model;
 use jet::Jet;
 use parts::joint_acceleration;

@@ -16,9 +16,9 @@ use nalgebra::Vector3;
 
 use super::super::column::{Spans, keep_sampled, push_joined};
 use super::Columns;
-use crate::angle::Angle;
-use crate::checks::servos::ROD_HORN_PAIRS;
-use crate::limits::{LEG_PAIRS, segment_distance};
+use crate::analysis::checks::servos::ROD_HORN_PAIRS;
+use crate::model::angle::Angle;
+use crate::model::limits::{LEG_PAIRS, segment_distance};
 
 /// Two parts that must keep apart.
 #[derive(Clone, Copy)]

@@ -29,12 +29,12 @@ use super::{
     ConstantOrientationWorkspace, WorkspaceControl, WorkspaceError, extent_of, grid_spans, shifted,
     volume_error, volume_of,
 };
-use crate::angle::Angle;
-use crate::checks::servos::rods_allowed;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::pose::Pose;
-use crate::rotary::RotaryActuators;
+use crate::analysis::checks::servos::rods_allowed;
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
+use crate::model::rotary::RotaryActuators;
 use clearance::{Clearance, Column};
 use std::f64::consts::FRAC_PI_2;
 
@@ -287,7 +287,7 @@ pub(super) fn workspace(
     control: &WorkspaceControl,
 ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
     let [roll, pitch, yaw] = orientation;
-    let rotation = crate::pose::rotation_zyx(roll, pitch, yaw);
+    let rotation = crate::model::pose::rotation_zyx(roll, pitch, yaw);
     let c = geometry.pivot();
     let offsets = geometry.platform_joints().map(|a| c + rotation * (a - c));
     let lowest_offset = offsets.iter().map(|d| d.z).fold(f64::INFINITY, f64::min);

@@ -1,10 +1,10 @@
 use std::collections::HashMap;
 
 use super::*;
-use crate::angle::Angle;
-use crate::geometry::Geometry;
-use crate::limits::Limits;
-use crate::scenario::Scenario;
+use crate::io::scenario::Scenario;
+use crate::model::angle::Angle;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
 
 fn preset(name: &str) -> Geometry {
     Scenario::preset(name)
@@ -204,7 +204,7 @@ fn the_upper_surface_holds_every_columns_highest_reachable_point() {
         .constant_orientation_workspace(&Limits::default(), [Angle::ZERO; 3], 64)
         .unwrap_or_else(|e| panic!("{e}"));
     let s = WorkspaceSurface::from_workspace(&ws);
-    let pose = |p: [f64; 3]| crate::pose::Pose::level_at(0.0).with_position(p.into());
+    let pose = |p: [f64; 3]| crate::model::pose::Pose::level_at(0.0).with_position(p.into());
     // The columns' own vertices come first, upper then lower.
     assert_eq!(s.split_columns, 0);
     for p in s.positions[..2 * ws.spans.len()].iter().step_by(2) {

@@ -100,7 +100,7 @@ fn ends_are_edges(
 /// joints and a leg radius that removes a sixth of the volume (0.295 → 0.250 m³).
 #[test]
 fn linear_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
-    let g = crate::Scenario::preset("seed")
+    let g = crate::io::scenario::Scenario::preset("seed")
         .unwrap_or_else(|e| panic!("{e}"))
         .geometry;
     let orientation = [5.0, -3.0, 30.0].map(Angle::from_degrees);
@@ -136,7 +136,7 @@ fn linear_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
 /// volume) and a clearance large enough to bind (another twentieth).
 #[test]
 fn rotary_rod_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
-    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let orientation = [4.0, -6.0, 12.0].map(Angle::from_degrees);
     let servo_only = g

@@ -1,6 +1,6 @@
 use super::*;
-use crate::geometry::{GeometryParams, StrokeLimits};
-use crate::layout::Layout;
+use crate::model::geometry::{GeometryParams, StrokeLimits};
+use crate::model::layout::Layout;
 
 fn paired() -> Geometry {
     let mut p = GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0));
@@ -218,7 +218,7 @@ fn with_a_pivot_the_workspace_is_that_of_the_platform_centre() {
 /// 2e-7), and the spans' ends are the edge of reach.
 #[test]
 fn rotary_workspace_agrees_with_a_brute_force_grid() {
-    let s = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let servos = g.rotary().unwrap_or_else(|| panic!("rotary"));
     let tilt = [
@@ -337,7 +337,7 @@ fn the_error_bound_covers_the_real_error_at_every_resolution() {
     for (preset, reference_resolution) in
         [("seed", 2048), ("crank-rig", 1024), ("servo-desk", 1024)]
     {
-        let s = crate::Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
+        let s = crate::io::scenario::Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
         let at = |n| {
             s.geometry
                 .constant_orientation_workspace(&s.limits, LEVEL, n)
