@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Make the calibration example of README.md and tests/cli/calibrate.rs, independently of
+"""Make the calibration example of docs/guide/analysis.md and tests/cli/calibrate.rs, independently of
 the Rust code: a built `paired` platform (its joints moved by up to 4 mm, its legs'
 length readings off by up to 3 mm), 60 poses measured with noise (10 µm in position,
 0.002° in angle: a laser tracker), and the leg lengths commanded for them.

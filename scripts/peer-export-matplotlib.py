@@ -18,7 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-# The seed geometry (README, "The model").
+# The seed geometry (docs/guide/file-format.md, "The model").
 R_BASE, R_PLATFORM = 1.0, 0.6
 BASE_DEG = [0, 60, 120, 180, 240, 300]
 PLATFORM_DEG = [30, 90, 150, 210, 270, 330]

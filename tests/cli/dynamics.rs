@@ -240,19 +240,22 @@ fn forces_add_the_legs_and_friction_of_the_dynamics_table() {
 }
 
 #[test]
-fn the_readmes_modes_example_prints_what_the_readme_shows() {
+fn the_guides_modes_example_prints_what_the_guide_shows() {
     let file = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../../examples/scenarios/heavy-legs.toml"
     );
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md"))
-        .unwrap_or_else(|e| panic!("{e}"));
+    let readme = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/guide/analysis.md"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
     let o = stewart(&["modes", "--scenario", file]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = stdout(&o);
     assert_eq!(text.lines().count(), 7);
     for line in text.lines() {
-        assert!(readme.contains(line), "README lacks: {line}");
+        assert!(readme.contains(line), "the guide lacks: {line}");
     }
 }
 

@@ -1,5 +1,5 @@
 //! The hostile-input suite: the real binary fed random, mutated and absurd input, failing
-//! sinks and signals, asserting the promises README.md makes ("What happens on bad
+//! sinks and signals, asserting the promises docs/guide/bad-input.md makes ("What happens on bad
 //! input"): no panic, no hang, exit 2 with one `error:` line naming the file, line, key or
 //! value, no output file after a refusal, nothing destroyed at an output path.
 //!

@@ -2,6 +2,7 @@
 //! image, and checks that do not depend on rasteriser details.
 
 use std::sync::Arc;
+use stewart_kinematics::analysis::workspace;
 
 use glam::Vec3;
 use stewart_kinematics::analysis::workspace::{Plane, Slice, WorkspaceSurface};
@@ -22,10 +23,13 @@ fn paired() -> Scenario {
 
 /// The surface at `rpy` (degrees) on a 128-column grid.
 fn surface(s: &Scenario, rpy: [f64; 3], theme: &Theme) -> Arc<AnalysisMesh> {
-    let ws = s
-        .geometry
-        .constant_orientation_workspace(&Limits::default(), rpy.map(Angle::from_degrees), 128)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let ws = workspace::constant_orientation_workspace(
+        &s.geometry,
+        &Limits::default(),
+        rpy.map(Angle::from_degrees),
+        128,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     Arc::new(AnalysisMesh::surface(
         &WorkspaceSurface::from_workspace(&ws),
         linear(theme.workspace),
@@ -35,7 +39,8 @@ fn surface(s: &Scenario, rpy: [f64; 3], theme: &Theme) -> Arc<AnalysisMesh> {
 /// The level slice 0.2 m under the home height (where the workspace is wider than the
 /// platform) over ±0.8 m.
 fn slice(s: &Scenario) -> Slice {
-    s.geometry.workspace_slice(
+    workspace::workspace_slice(
+        &s.geometry,
         &Limits::default(),
         [Angle::ZERO; 3],
         Plane::Horizontal,
@@ -170,7 +175,8 @@ fn a_stiffness_slice_is_yellow_where_the_platform_is_stiffest() {
     let s = paired();
     let theme = Theme::DARK;
     let g = &s.geometry;
-    let cut = g.stiffness_slice(
+    let cut = workspace::stiffness_slice(
+        g,
         &Limits::default(),
         [Angle::ZERO; 3],
         Plane::Horizontal,

@@ -4,6 +4,7 @@
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Pose, Scenario};
 
 fn manual_at(pose: Pose) -> egui_kittest::Harness<'static, ViewerState> {
@@ -20,10 +21,9 @@ fn range_line(pose: &Pose, k: usize, name: &str) -> String {
     let s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
     let c = pose.to_coordinates()[k];
     let span = std::f64::consts::FRAC_PI_2;
-    let [lo, hi] = s
-        .geometry
-        .coordinate_range(&s.limits, pose, k, [c - span, c + span], 120)
-        .unwrap_or_else(|| panic!("out of reach"));
+    let [lo, hi] =
+        workspace::coordinate_range(&s.geometry, &s.limits, pose, k, [c - span, c + span], 120)
+            .unwrap_or_else(|| panic!("out of reach"));
     format!("{name} {:.1}° … {:.1}°", lo.to_degrees(), hi.to_degrees())
 }
 
@@ -91,10 +91,11 @@ fn the_sliders_know_their_reachable_part() {
             if (end - bound).abs() > 1e-12 {
                 let mut beyond = c;
                 beyond[k] = end + outward * 1e-6;
-                assert!(
-                    !s.geometry
-                        .pose_within_limits(&s.limits, &Pose::from_coordinates(beyond))
-                );
+                assert!(!workspace::pose_within_limits(
+                    &s.geometry,
+                    &s.limits,
+                    &Pose::from_coordinates(beyond)
+                ));
             }
         }
     }

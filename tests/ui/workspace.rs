@@ -8,6 +8,8 @@ use stewart_app::i18n::Lang;
 use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
 use stewart_app::viewer::workspace::{WorkspaceTool, format_volume};
+use stewart_kinematics::analysis::dynamics;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Angle, Pose, Scenario};
 
 /// Columns a side of the refinement in these tests (the viewer's 512 are slow in a debug
@@ -46,9 +48,7 @@ fn settle(h: &mut Harness<'static, ViewerState>) {
 
 /// The volume line as the panel writes it, from a workspace computed here.
 fn volume_line(s: &Scenario, orientation: [Angle; 3]) -> String {
-    let ws = s
-        .geometry
-        .constant_orientation_workspace(&s.limits, orientation, FINE)
+    let ws = workspace::constant_orientation_workspace(&s.geometry, &s.limits, orientation, FINE)
         .unwrap_or_else(|e| panic!("{e}"));
     format!(
         "Volume {} m³ ± {} m³",
@@ -153,12 +153,16 @@ fn a_chosen_orientation_can_leave_the_centre_outside() {
     let s = h.state().scenario().clone();
     let at = |roll: f64| Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [roll, 0.0, 0.0]);
     let level = at(0.0);
-    assert!(s.geometry.pose_within_limits(&s.limits, &level));
+    assert!(workspace::pose_within_limits(
+        &s.geometry,
+        &s.limits,
+        &level
+    ));
     // The first roll (5° steps) at which this centre is out of reach; the workspace
     // there is not empty.
     let roll = (1..18)
         .map(|k| 5.0 * k as f64)
-        .find(|&r| !s.geometry.pose_within_limits(&s.limits, &at(r)))
+        .find(|&r| !workspace::pose_within_limits(&s.geometry, &s.limits, &at(r)))
         .unwrap_or_else(|| panic!("always reachable"));
     h.state_mut().playback.manual = level;
     h.run();
@@ -242,10 +246,8 @@ fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
     // The paired platform is stiffest centred: the slice's stiffest cells, next to the
     // centre, come close to the stiffness at home (by the core) without passing it.
     let s = state.scenario();
-    let home = s
-        .geometry
-        .lowest_stiffness(&s.geometry.home_pose(), 1.0)
-        .unwrap_or(f64::NAN);
+    let home =
+        dynamics::lowest_stiffness(&s.geometry, &s.geometry.home_pose(), 1.0).unwrap_or(f64::NAN);
     assert!(
         high <= home * (1.0 + 1e-9) && high > 0.95 * home,
         "{low} … {high}, home {home}"

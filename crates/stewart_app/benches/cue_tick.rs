@@ -6,7 +6,7 @@
 //!
 //! `cargo bench -p stewart_app --bench cue_tick`. Before criterion's means, 100 000
 //! single ticks of each are timed one by one for the mean, the 99th percentile and the
-//! worst (the figures README quotes).
+//! worst (the figures docs/guide/rig.md quotes, "Live telemetry").
 
 use std::hint::black_box;
 use std::net::UdpSocket;

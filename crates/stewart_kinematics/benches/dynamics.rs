@@ -8,6 +8,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use nalgebra::{Matrix3, Vector3};
 use std::hint::black_box;
 use stewart_kinematics::Scenario;
+use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::analysis::dynamics::{DynamicsSettings, MotionState, motion_states};
 use stewart_kinematics::analysis::forces::Payload;
 
@@ -52,7 +53,7 @@ fn bench(c: &mut Criterion) {
         c.bench_function(name, |b| {
             let mut k = 0;
             b.iter(|| {
-                let f = g.inverse_dynamics(black_box(&states[k]), &payload, &dynamics);
+                let f = dynamics::inverse_dynamics(&g, black_box(&states[k]), &payload, &dynamics);
                 k = (k + 1) % n;
                 f
             })
@@ -64,7 +65,7 @@ fn bench(c: &mut Criterion) {
     c.bench_function("modes_legs", |b| {
         let mut k = 0;
         b.iter(|| {
-            let m = g.modes(black_box(&states[k].pose), &payload, &dynamics);
+            let m = dynamics::modes(&g, black_box(&states[k].pose), &payload, &dynamics);
             k = (k + 1) % states.len();
             m
         })

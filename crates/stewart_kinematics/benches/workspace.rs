@@ -6,6 +6,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::WorkspaceSurface;
 use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 
@@ -22,7 +23,12 @@ fn bench(c: &mut Criterion) {
         let orientation = rpy.map(Angle::from_degrees);
         group.bench_function(name, |b| {
             b.iter(|| {
-                g.constant_orientation_workspace(&Limits::default(), black_box(orientation), 1000)
+                workspace::constant_orientation_workspace(
+                    &g,
+                    &Limits::default(),
+                    black_box(orientation),
+                    1000,
+                )
             })
         });
     }
@@ -39,7 +45,12 @@ fn servo_bench(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("servo_desk_200x200_columns", |b| {
         b.iter(|| {
-            g.constant_orientation_workspace(&Limits::default(), black_box([Angle::ZERO; 3]), 200)
+            workspace::constant_orientation_workspace(
+                &g,
+                &Limits::default(),
+                black_box([Angle::ZERO; 3]),
+                200,
+            )
         })
     });
     group.finish();
@@ -59,9 +70,13 @@ fn viewer_bench(c: &mut Criterion) {
         for n in [128, 512] {
             group.bench_function(format!("{preset}_tilted_{n}x{n}"), |b| {
                 b.iter(|| {
-                    let ws = g
-                        .constant_orientation_workspace(&Limits::default(), orientation, n)
-                        .unwrap_or_else(|e| panic!("{e}"));
+                    let ws = workspace::constant_orientation_workspace(
+                        &g,
+                        &Limits::default(),
+                        orientation,
+                        n,
+                    )
+                    .unwrap_or_else(|e| panic!("{e}"));
                     WorkspaceSurface::from_workspace(black_box(&ws))
                 })
             });
@@ -92,10 +107,13 @@ fn limited_bench(c: &mut Criterion) {
         for n in sizes {
             group.bench_function(format!("{preset}{label}_tilted_{n}x{n}"), |b| {
                 b.iter(|| {
-                    let ws = s
-                        .geometry
-                        .constant_orientation_workspace(&limits, orientation, n)
-                        .unwrap_or_else(|e| panic!("{e}"));
+                    let ws = workspace::constant_orientation_workspace(
+                        &s.geometry,
+                        &limits,
+                        orientation,
+                        n,
+                    )
+                    .unwrap_or_else(|e| panic!("{e}"));
                     WorkspaceSurface::from_workspace(black_box(&ws))
                 })
             });

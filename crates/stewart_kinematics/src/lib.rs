@@ -1,7 +1,7 @@
 //! Kinematics of the six-degree-of-freedom Gough–Stewart platform.
 //!
 //! Pure math on `nalgebra` (f64): no GPU, window or UI. The model follows the seed
-//! article (README.md, "The model"): base joints `b_i` on a circle of radius `r_b` in
+//! article (docs/guide/file-format.md, "The model"): base joints `b_i` on a circle of radius `r_b` in
 //! the base plane, platform joints `a_i` on a circle of radius `r_p` in the platform
 //! plane, pose `(p, R)` with `R = Rz(yaw)·Ry(pitch)·Rx(roll)`, and leg `i` the segment
 //! from `b_i` to `q_i = p + c + R (a_i − c)` (`c` the pivot, zero in the seed).

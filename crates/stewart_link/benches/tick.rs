@@ -4,7 +4,7 @@
 //!
 //! `cargo bench -p stewart_link --bench tick`. Criterion gives the means; before it runs,
 //! 200 000 single ticks of each are timed one by one for the mean, the 99th percentile and
-//! the worst (the figures README quotes).
+//! the worst (the figures docs/guide/rig.md quotes, "Tick time").
 
 use std::hint::black_box;
 use std::net::UdpSocket;

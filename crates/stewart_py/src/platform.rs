@@ -5,10 +5,12 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use stewart_kinematics::analysis::architecture;
 use stewart_kinematics::analysis::calibration::{
     Held, Measurement, calibrate as fit, calibrated_scenario,
 };
 use stewart_kinematics::analysis::checks::document::CheckDocument;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::model::angle::Angle;
 use stewart_kinematics::solve::batch::RowError;
 use stewart_kinematics::solve::forward::ForwardSolution;
@@ -227,7 +229,7 @@ impl Platform {
         let rows: Rows<'_> = arrays::finite_table(values, "values", &columns)?;
         let input: Vec<[f64; 6]> = bytemuck::cast_slice(rows.values()).to_vec();
         drop(rows);
-        if g.rotary().is_none() && g.architecture().singular {
+        if g.rotary().is_none() && architecture::architecture(&g).singular {
             return Err(raise(
                 py,
                 "ForwardError",
@@ -399,8 +401,7 @@ impl Platform {
         let ws = waiting::interruptible(py, Some(cancel), move || {
             if budget {
                 let started = std::time::Instant::now();
-                let cost = g
-                    .workspace_cost(&limits, orientation, resolution)
+                let cost = workspace::workspace_cost(&g, &limits, orientation, resolution)
                     .map_err(|e| e.to_string())?;
                 let estimate = cost.estimate(started.elapsed().as_secs_f64(), resolution);
                 if estimate.over_budget {
@@ -413,7 +414,7 @@ impl Platform {
                 }
             }
             let control = WorkspaceControl::stopped_by(stop);
-            g.constant_orientation_workspace_with(&limits, orientation, resolution, &control)
+            workspace::constant_orientation_workspace_with(&g, &limits, orientation, resolution, &control)
                 .map_err(|e| e.to_string())
         })?
         .map_err(PyValueError::new_err)?;

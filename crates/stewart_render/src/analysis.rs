@@ -60,7 +60,7 @@ impl AnalysisMesh {
         })
     }
 
-    /// The reachable cells of a stiffness slice (see `Geometry::stiffness_slice`), each
+    /// The reachable cells of a stiffness slice (see `stewart_kinematics::analysis::workspace::stiffness_slice`), each
     /// in viridis by its stiffness over the range `[low, high]` (soft dark, stiff
     /// yellow), with opacity `alpha`.
     pub fn stiffness_slice(slice: &Slice, [low, high]: [f64; 2], alpha: f32) -> Self {

@@ -2,6 +2,7 @@
 
 use std::io::Write as _;
 use std::process::ExitCode;
+use stewart_kinematics::analysis::architecture;
 
 use anyhow::{Result, anyhow};
 use stewart_kinematics::io::bounds;
@@ -41,7 +42,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
         .map(|r| [r[0], r[1], r[2], r[3], r[4], r[5]])
         .collect();
 
-    let architecture = geometry.architecture();
+    let architecture = architecture::architecture(geometry);
     if architecture.singular {
         return Err(anyhow!(
             "scenario `{}`: the pose is not determined by the leg lengths, so forward kinematics has no answer. {}",

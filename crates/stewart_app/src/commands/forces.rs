@@ -2,6 +2,8 @@
 //! payload along the trajectory.
 
 use std::process::ExitCode;
+use stewart_kinematics::analysis::architecture;
+use stewart_kinematics::analysis::dynamics;
 
 use anyhow::{Result, anyhow};
 use nalgebra::{Matrix3, Vector3};
@@ -35,13 +37,14 @@ pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
         .or(base.map(|p| p.inertia))
         .unwrap_or_else(Matrix3::zeros);
     let payload = Payload::new(mass, com, inertia)?;
-    if g.architecture().singular {
+    if architecture::architecture(g).singular {
         return Err(anyhow!(
             "scenario `{}` is architecturally singular, so the actuator forces are not determined at any pose (use a paired layout)",
             scenario.name
         ));
     }
-    let series = g.efforts_along(&scenario.motion.sample(), &payload, &scenario.dynamics)?;
+    let series =
+        dynamics::efforts_along(g, &scenario.motion.sample(), &payload, &scenario.dynamics)?;
     // Leg forces F (N) or servo torques T (N·m).
     let letter = g.quantity().effort.0;
     let mut header = vec!["t".to_owned()];

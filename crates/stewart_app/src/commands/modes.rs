@@ -4,6 +4,7 @@
 
 use std::fmt::Write as _;
 use std::process::ExitCode;
+use stewart_kinematics::analysis::dynamics;
 
 use anyhow::{Result, anyhow};
 use nalgebra::{Matrix6, Vector6};
@@ -91,8 +92,7 @@ pub fn run(args: &ModesArgs) -> Result<ExitCode> {
         .pose
         .map_or_else(|| g.home_pose(), |p| Pose::from_row(&p));
     let at = pose_words(&pose.to_row());
-    let modes = g
-        .modes(&pose, &payload, &scenario.dynamics)
+    let modes = dynamics::modes(g, &pose, &payload, &scenario.dynamics)
         .map_err(|e| anyhow!("at {at}: {e}"))?;
     let lowest = if args.along_trajectory {
         let samples = scenario.motion.sample();

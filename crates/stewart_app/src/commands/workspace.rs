@@ -2,6 +2,7 @@
 
 use std::fmt::Write as _;
 use std::process::ExitCode;
+use stewart_kinematics::analysis::workspace;
 
 use std::io::Write as _;
 use std::sync::atomic::Ordering;
@@ -155,7 +156,8 @@ fn orientation_lines(
         (Axis::Pitch, "pitch", 90.0),
         (Axis::Yaw, "yaw", 180.0),
     ] {
-        let line = match scenario.geometry.orientation_range(
+        let line = match workspace::orientation_range(
+            &scenario.geometry,
             &scenario.limits,
             &pose,
             axis,
@@ -181,7 +183,7 @@ fn write_surface(
     let Some(_) = ws.extent else {
         bail!("no position is reachable at this orientation: there is no surface to write");
     };
-    let surface = stewart_kinematics::analysis::workspace::WorkspaceSurface::from_workspace(ws);
+    let surface = workspace::WorkspaceSurface::from_workspace(ws);
     let bytes = crate::export::ply::ply(
         &surface,
         &crate::export::ply::PlyHeader {
@@ -212,7 +214,7 @@ fn compute(
     no_budget: bool,
 ) -> Result<ConstantOrientationWorkspace> {
     let started = Instant::now();
-    let cost = g.workspace_cost(limits, orientation, resolution)?;
+    let cost = workspace::workspace_cost(g, limits, orientation, resolution)?;
     let estimate = cost.estimate(started.elapsed().as_secs_f64(), resolution);
     let seconds = estimate.seconds;
     let cost_words = format!(
@@ -250,7 +252,13 @@ fn compute(
     };
     let result = std::thread::scope(|scope| {
         let worker = scope.spawn(|| {
-            g.constant_orientation_workspace_with(limits, orientation, resolution, &control)
+            workspace::constant_orientation_workspace_with(
+                g,
+                limits,
+                orientation,
+                resolution,
+                &control,
+            )
         });
         while !worker.is_finished() {
             if stop.load(Ordering::Relaxed) {

@@ -3,6 +3,7 @@
 //! every curve a `<polyline>`, so the vector outputs are real vectors.
 
 use std::fmt::Write as _;
+use stewart_kinematics::analysis::dynamics;
 
 use stewart_kinematics::model::actuator::Quantity;
 
@@ -519,7 +520,7 @@ pub fn efforts_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> anyho
     })?;
     let samples = scenario.motion.sample();
     let g = &scenario.geometry;
-    let series = g.efforts_along(&samples, &payload, &scenario.dynamics)?;
+    let series = dynamics::efforts_along(g, &samples, &payload, &scenario.dynamics)?;
     let quantity = g.quantity();
     Ok(svg(&PlotData {
         title: &lang.fmt_kind(

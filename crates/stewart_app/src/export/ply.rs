@@ -62,6 +62,7 @@ pub fn ply(surface: &WorkspaceSurface, header: &PlyHeader) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use stewart_kinematics::analysis::workspace;
     use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 
     /// Read back what [`ply`] writes: header lines, vertices, triangles.
@@ -116,10 +117,13 @@ mod tests {
     #[test]
     fn the_file_reads_back_to_the_same_mesh_and_volume() {
         let s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
-        let ws = s
-            .geometry
-            .constant_orientation_workspace(&Limits::default(), [Angle::ZERO; 3], 48)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let ws = workspace::constant_orientation_workspace(
+            &s.geometry,
+            &Limits::default(),
+            [Angle::ZERO; 3],
+            48,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         let surface = WorkspaceSurface::from_workspace(&ws);
         let bytes = ply(
             &surface,

@@ -5,6 +5,7 @@
 //! colour bar. Cells are merged into runs of one colour, so the SVG and PDF stay vectors.
 
 use std::fmt::Write as _;
+use stewart_kinematics::analysis::workspace;
 
 use anyhow::Result;
 use stewart_kinematics::Angle;
@@ -77,7 +78,8 @@ pub fn figure_file(
     let (x, y, z) = (pad(ex), pad(ey), pad(ez));
     let cell = (x[1] - x[0]) / SLICE_CELLS as f64;
     let count = |r: [f64; 2]| (((r[1] - r[0]) / cell).round() as usize).max(2);
-    let horizontal = g.workspace_slice(
+    let horizontal = workspace::workspace_slice(
+        g,
         &scenario.limits,
         orientation,
         Plane::Horizontal,
@@ -85,7 +87,8 @@ pub fn figure_file(
         [x, y],
         [count(x), count(y)],
     );
-    let vertical = g.workspace_slice(
+    let vertical = workspace::workspace_slice(
+        g,
         &scenario.limits,
         orientation,
         Plane::Vertical,

@@ -1,5 +1,6 @@
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+use stewart_kinematics::analysis::architecture;
 
 use stewart_kinematics::model::actuator::ActuatorKind;
 use stewart_kinematics::{
@@ -199,14 +200,12 @@ fn every_finding_has_a_chinese_sentence() {
 
 #[test]
 fn the_architecture_verdict_reads_as_the_core_writes_it() {
-    let seed = Geometry::seed().architecture();
+    let seed = architecture::architecture(&Geometry::seed());
     assert!(seed.singular);
     let paired = {
         let params =
             stewart_kinematics::GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0));
-        Geometry::new(params)
-            .unwrap_or_else(|e| panic!("{e}"))
-            .architecture()
+        architecture::architecture(&Geometry::new(params).unwrap_or_else(|e| panic!("{e}")))
     };
     assert!(!paired.singular);
     for report in [seed, paired] {

@@ -2,6 +2,7 @@
 //! can take with the same six leg lengths (or, for servos, the same six servo angles),
 //! found by the core's homotopy solver.
 
+use stewart_kinematics::analysis::architecture;
 use stewart_kinematics::model::rotary::Unreachable;
 use stewart_kinematics::solve::forward::ForwardError;
 use stewart_kinematics::solve::forward::assembly::same_placement;
@@ -55,7 +56,7 @@ impl AssemblyBrowser {
         });
         if !same {
             // Checked once per geometry and legs, like the modes themselves.
-            if geometry.architecture().singular {
+            if architecture::architecture(geometry).singular {
                 return Err(NoMode::Singular);
             }
             let solved = geometry.actuator_assembly_modes(&actuation);

@@ -5,6 +5,8 @@
 
 use super::job::Job;
 use nalgebra::Vector3;
+use stewart_kinematics::analysis::dynamics;
+use stewart_kinematics::analysis::sound_layout;
 use stewart_kinematics::analysis::sound_layout::SoundLayout;
 use stewart_kinematics::{
     CheckReport, Scenario, analysis::checks::check_motion, model::layout::Layout,
@@ -91,10 +93,10 @@ impl Derived {
                 times: self.times.clone(),
                 poses,
             };
-            stewart_kinematics::analysis::dynamics::motion_states(&samples)
+            dynamics::motion_states(&samples)
                 .iter()
                 .map(|state| {
-                    g.inverse_dynamics(state, &payload, &scenario.dynamics)
+                    dynamics::inverse_dynamics(g, state, &payload, &scenario.dynamics)
                         .unwrap_or([f64::NAN; 6])
                 })
                 .collect()
@@ -106,7 +108,7 @@ impl Derived {
     /// singular (searched on the first call after an edit, then kept).
     pub fn sound_layout(&mut self, scenario: &Scenario) -> Option<&SoundLayout> {
         self.sound_layout
-            .get_or_insert_with(|| scenario.geometry.nearest_sound_layout())
+            .get_or_insert_with(|| sound_layout::nearest_sound_layout(&scenario.geometry))
             .as_ref()
     }
 

@@ -9,6 +9,7 @@
 //! [`super::state::ViewerState`]; panels that only edit the scenario can take this part
 //! alone.
 
+use stewart_kinematics::analysis::sound_layout;
 use stewart_kinematics::io::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
@@ -159,7 +160,7 @@ impl Document {
     /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
     /// goes back to a circle of its size).
     pub fn set_layout(&mut self, layout: Layout) -> bool {
-        let params = self.scenario.geometry.params_with_layout(layout);
+        let params = sound_layout::params_with_layout(&self.scenario.geometry, layout);
         self.set_geometry(params)
     }
 

@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
+use stewart_kinematics::analysis::workspace;
 
 use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget};
@@ -330,7 +331,8 @@ fn workspace(
     if stop.load(Ordering::Relaxed) {
         control.cancel.store(true, Ordering::Relaxed);
     }
-    let ws = scenario.geometry.constant_orientation_workspace_with(
+    let ws = workspace::constant_orientation_workspace_with(
+        &scenario.geometry,
         &scenario.limits,
         orientation,
         crate::viewer::workspace::FINE_COLUMNS,

@@ -3,6 +3,7 @@
 //! beside it). Only the picture moves: the pose the link sends, the plot and the
 //! readouts keep the pose shown without it.
 
+use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::analysis::dynamics::{DynamicsError, Modes};
 use stewart_kinematics::{Pose, Scenario};
 
@@ -53,9 +54,7 @@ impl ModeView {
     /// The modes at `pose`, when the scenario has what they need.
     pub fn modes(scenario: &Scenario, pose: &Pose) -> Result<Modes, NoModes> {
         let payload = scenario.payload.ok_or(NoModes::NoPayload)?;
-        scenario
-            .geometry
-            .modes(pose, &payload, &scenario.dynamics)
+        dynamics::modes(&scenario.geometry, pose, &payload, &scenario.dynamics)
             .map_err(NoModes::Dynamics)
     }
 
@@ -70,14 +69,14 @@ impl ModeView {
         };
         let g = &scenario.geometry;
         let v = modes.modes[self.mode.min(5)];
-        let travel = g.joint_travel(&pose, &v);
+        let travel = dynamics::joint_travel(g, &pose, &v);
         let moves = travel > 0.0;
         if !moves {
             return pose;
         }
         let reach = self.amplitude * g.characteristic_length() / travel;
         let swing = (std::f64::consts::TAU * SHOWN_HZ * self.phase).sin();
-        g.moved_along(&pose, &v, reach * swing)
+        dynamics::moved_along(g, &pose, &v, reach * swing)
     }
 }
 

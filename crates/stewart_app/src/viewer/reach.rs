@@ -3,6 +3,7 @@
 //! by what they depend on, so a still pose costs nothing and a moving one a few thousand
 //! inverse solutions a frame.
 
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::ReachMap;
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 
@@ -62,8 +63,9 @@ impl ReachCache {
         {
             return *ranges;
         }
-        let ranges =
-            std::array::from_fn(|k| geometry.coordinate_range(limits, pose, k, bounds[k], STEPS));
+        let ranges = std::array::from_fn(|k| {
+            workspace::coordinate_range(geometry, limits, pose, k, bounds[k], STEPS)
+        });
         self.sliders = Some((key, ranges));
         ranges
     }
@@ -92,9 +94,17 @@ impl ReachCache {
                     angles: std::array::from_fn(|a| {
                         let c = pose.to_coordinates()[3 + a];
                         // Around the pose's own angle, as far as the span either side.
-                        geometry.coordinate_range(limits, pose, 3 + a, [c - span, c + span], STEPS)
+                        workspace::coordinate_range(
+                            geometry,
+                            limits,
+                            pose,
+                            3 + a,
+                            [c - span, c + span],
+                            STEPS,
+                        )
                     }),
-                    map: geometry.roll_pitch_map(
+                    map: workspace::roll_pitch_map(
+                        geometry,
                         limits,
                         pose,
                         Angle::from_degrees(MAP_SPAN_DEG),

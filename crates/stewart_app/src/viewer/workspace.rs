@@ -12,6 +12,7 @@
 use std::sync::Arc;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
+use stewart_kinematics::analysis::workspace;
 
 use nalgebra::Vector3;
 use stewart_kinematics::analysis::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
@@ -284,18 +285,17 @@ pub(crate) fn compute(
 ) -> Result<Outcome, Option<String>> {
     use stewart_kinematics::analysis::workspace::WorkspaceError;
     let start = Instant::now();
-    let ws = request
-        .geometry
-        .constant_orientation_workspace_with(
-            &request.limits,
-            request.orientation,
-            resolution,
-            control,
-        )
-        .map_err(|e| match e {
-            WorkspaceError::Cancelled => None,
-            e => Some(e.to_string()),
-        })?;
+    let ws = workspace::constant_orientation_workspace_with(
+        &request.geometry,
+        &request.limits,
+        request.orientation,
+        resolution,
+        control,
+    )
+    .map_err(|e| match e {
+        WorkspaceError::Cancelled => None,
+        e => Some(e.to_string()),
+    })?;
     // The mesh drawn has at most DRAWN_COLUMNS a side (lighter to upload and draw); the
     // numbers are the full grid's.
     let surface = WorkspaceSurface::from_workspace(&ws.every(resolution.div_ceil(DRAWN_COLUMNS)));
@@ -317,8 +317,19 @@ pub(crate) fn compute(
             let (g, limits, level) = (&request.geometry, &request.limits, at - shift.z);
             let (o, cells) = (request.orientation, [slice_cells; 2]);
             let cut = match request.slice_stiffness {
-                Some(k) => g.stiffness_slice(limits, o, Plane::Horizontal, level, range, cells, k),
-                None => g.workspace_slice(limits, o, Plane::Horizontal, level, range, cells),
+                Some(k) => workspace::stiffness_slice(
+                    g,
+                    limits,
+                    o,
+                    Plane::Horizontal,
+                    level,
+                    range,
+                    cells,
+                    k,
+                ),
+                None => {
+                    workspace::workspace_slice(g, limits, o, Plane::Horizontal, level, range, cells)
+                }
             };
             let stiffness = request.slice_stiffness.map(|_| {
                 let values = cut.values.iter().flatten();
@@ -406,10 +417,9 @@ mod tests {
         tool.wait(Duration::from_secs(60));
         let o = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
         assert!(o.refined && o.resolution == 128 && o.request == r);
-        let ws = r
-            .geometry
-            .constant_orientation_workspace(&r.limits, r.orientation, 128)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let ws =
+            workspace::constant_orientation_workspace(&r.geometry, &r.limits, r.orientation, 128)
+                .unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(o.volume, ws.volume);
         assert_eq!(o.volume_error, ws.volume_error);
         let slice = o.slice.as_ref().unwrap_or_else(|| panic!("no slice"));

@@ -58,48 +58,45 @@ impl ArchitectureReport {
     }
 }
 
-impl Geometry {
-    /// Decide whether the geometry is singular at every pose.
-    pub fn architecture(&self) -> ArchitectureReport {
-        let home = self.home_pose();
-        let h = self.home_height();
-        let s = self.plate_radius(crate::model::geometry::Plate::Platform);
-        // A spread of poses around home: small translations and rotations in every axis.
-        let probes = [
-            [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-            [0.11, -0.07, 0.05, 4.0, -3.0, 7.0],
-            [-0.09, 0.13, -0.04, -6.0, 5.0, -11.0],
-            [0.05, 0.08, 0.09, 9.0, 2.0, 3.0],
-            [-0.12, -0.1, -0.08, -2.0, -8.0, 15.0],
-            [0.02, -0.15, 0.03, 7.0, 6.0, -5.0],
-        ];
-        let mut worst = f64::INFINITY;
-        let mut all_singular = true;
-        let mut probed = 0;
-        for p in probes {
-            let pose =
-                Pose::from_xyz_rpy_deg([p[0] * s, p[1] * s, h + p[2] * s], [p[3], p[4], p[5]]);
-            // A probe some servo cannot reach says nothing about the architecture.
-            let Some(c) = self.actuated_conditioning(&pose) else {
-                continue;
-            };
-            probed += 1;
-            worst = worst.min(c.inverse_condition());
-            all_singular &= c.is_singular();
-        }
-        ArchitectureReport {
-            singular: probed > 0 && all_singular,
-            // The projective test is about leg lines from the base joints; a rotary
-            // platform's rods start at the horn tips instead.
-            projective_correspondence: match self.actuator() {
-                Actuator::Linear => joints_projectively_related(self),
-                Actuator::Rotary(_) => false,
-            },
-            home: self
-                .actuated_conditioning(&home)
-                .unwrap_or_else(|| Conditioning::unreachable(self.characteristic_length())),
-            worst_inverse_condition: if probed > 0 { worst } else { 0.0 },
-        }
+/// Decide whether the geometry is singular at every pose.
+pub fn architecture(geometry: &Geometry) -> ArchitectureReport {
+    let home = geometry.home_pose();
+    let h = geometry.home_height();
+    let s = geometry.plate_radius(crate::model::geometry::Plate::Platform);
+    // A spread of poses around home: small translations and rotations in every axis.
+    let probes = [
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [0.11, -0.07, 0.05, 4.0, -3.0, 7.0],
+        [-0.09, 0.13, -0.04, -6.0, 5.0, -11.0],
+        [0.05, 0.08, 0.09, 9.0, 2.0, 3.0],
+        [-0.12, -0.1, -0.08, -2.0, -8.0, 15.0],
+        [0.02, -0.15, 0.03, 7.0, 6.0, -5.0],
+    ];
+    let mut worst = f64::INFINITY;
+    let mut all_singular = true;
+    let mut probed = 0;
+    for p in probes {
+        let pose = Pose::from_xyz_rpy_deg([p[0] * s, p[1] * s, h + p[2] * s], [p[3], p[4], p[5]]);
+        // A probe some servo cannot reach says nothing about the architecture.
+        let Some(c) = geometry.actuated_conditioning(&pose) else {
+            continue;
+        };
+        probed += 1;
+        worst = worst.min(c.inverse_condition());
+        all_singular &= c.is_singular();
+    }
+    ArchitectureReport {
+        singular: probed > 0 && all_singular,
+        // The projective test is about leg lines from the base joints; a rotary
+        // platform's rods start at the horn tips instead.
+        projective_correspondence: match geometry.actuator() {
+            Actuator::Linear => joints_projectively_related(geometry),
+            Actuator::Rotary(_) => false,
+        },
+        home: geometry
+            .actuated_conditioning(&home)
+            .unwrap_or_else(|| Conditioning::unreachable(geometry.characteristic_length())),
+        worst_inverse_condition: if probed > 0 { worst } else { 0.0 },
     }
 }
 
@@ -187,7 +184,7 @@ mod tests {
     ///    while the paired layout gives 0.75, 0.73 and 0.65 there: it is not rounding.
     #[test]
     fn seed_geometry_is_architecturally_singular() {
-        let report = Geometry::seed().architecture();
+        let report = architecture(&Geometry::seed());
         assert!(report.singular);
         assert!(report.projective_correspondence);
         assert_eq!(report.worst_inverse_condition, 0.0);
@@ -203,7 +200,7 @@ mod tests {
     #[test]
     fn paired_geometry_is_regular() {
         let g = crate::test_support::paired_geometry();
-        let report = g.architecture();
+        let report = architecture(&g);
         assert!(!report.singular);
         assert!(!report.projective_correspondence);
         assert!(
@@ -229,7 +226,7 @@ mod tests {
                 Layout::Staggered { offset_deg: offset },
             ))
             .unwrap_or_else(|e| panic!("{e}"));
-            assert!(g.architecture().singular, "offset {offset}");
+            assert!(architecture(&g).singular, "offset {offset}");
         }
     }
 }

@@ -8,6 +8,7 @@
 //! (the largest single move, in degrees), of those that are not architecturally singular
 //! and whose normalised Jacobian at home is at least [`MIN_INVERSE_CONDITION`].
 
+use crate::analysis::architecture;
 use crate::model::geometry::{Geometry, GeometryParams, Plate, PlateJoints};
 use crate::model::layout::Layout;
 
@@ -34,81 +35,81 @@ fn angle_between(a: f64, b: f64) -> f64 {
     d.min(360.0 - d)
 }
 
-impl Geometry {
-    /// This geometry's parameters with its joints on circles at `layout`'s angles (the
-    /// plates' radii kept; a plate given as coordinates goes back to a circle of its size).
-    pub fn params_with_layout(&self, layout: Layout) -> GeometryParams {
-        let mut params = self.params().clone();
-        let (base, platform) = layout.angles();
-        params.base = PlateJoints::Circle {
-            radius: self.plate_radius(Plate::Base),
-            angles: base,
-        };
-        params.platform = PlateJoints::Circle {
-            radius: self.plate_radius(Plate::Platform),
-            angles: platform,
-        };
-        params
-    }
+/// This geometry's parameters with its joints on circles at `layout`'s angles (the
+/// plates' radii kept; a plate given as coordinates goes back to a circle of its size).
+pub fn params_with_layout(geometry: &Geometry, layout: Layout) -> GeometryParams {
+    let mut params = geometry.params().clone();
+    let (base, platform) = layout.angles();
+    params.base = PlateJoints::Circle {
+        radius: geometry.plate_radius(Plate::Base),
+        angles: base,
+    };
+    params.platform = PlateJoints::Circle {
+        radius: geometry.plate_radius(Plate::Platform),
+        angles: platform,
+    };
+    params
+}
 
-    /// This geometry with `layout` (see [`Geometry::params_with_layout`]), or `None` when
-    /// that geometry is refused.
-    pub fn with_layout(&self, layout: Layout) -> Option<Geometry> {
-        Geometry::new(self.params_with_layout(layout)).ok()
-    }
+/// This geometry with `layout` (see [`crate::analysis::sound_layout::params_with_layout`]), or `None` when
+/// that geometry is refused.
+pub fn with_layout(geometry: &Geometry, layout: Layout) -> Option<Geometry> {
+    Geometry::new(params_with_layout(geometry, layout)).ok()
+}
 
-    /// The nearest paired layout that is not architecturally singular (see the module's
-    /// documentation), or `None` when no candidate qualifies.
-    pub fn nearest_sound_layout(&self) -> Option<SoundLayout> {
-        let angles = |g: &Geometry, plate: Plate| -> [f64; 6] {
-            g.joints(plate).map(|j| j.y.atan2(j.x).to_degrees())
-        };
-        let (base, platform) = (angles(self, Plate::Base), angles(self, Plate::Platform));
-        let mut best: Option<SoundLayout> = None;
-        let separations = (1..=23).map(|k| 5.0 * f64::from(k));
-        for b in separations.clone() {
-            for p in separations.clone() {
-                let layout = Layout::Paired {
-                    base_separation_deg: b,
-                    platform_separation_deg: p,
-                };
-                let (lb, lp) = layout.angles_deg();
-                let moved_deg = (0..6)
-                    .map(|i| angle_between(lb[i], base[i]).max(angle_between(lp[i], platform[i])))
-                    .fold(0.0, f64::max);
-                if best
-                    .as_ref()
-                    .is_some_and(|s| s.moved_deg < moved_deg - 1e-9)
-                {
-                    continue;
-                }
-                let Some(geometry) = self.with_layout(layout) else {
-                    continue;
-                };
-                let report = geometry.architecture();
-                let inverse_condition = report.home.inverse_condition();
-                let conditioned =
-                    inverse_condition.is_finite() && inverse_condition >= MIN_INVERSE_CONDITION;
-                if report.singular || !conditioned {
-                    continue;
-                }
-                let better = best.as_ref().is_none_or(|s| {
-                    moved_deg < s.moved_deg - 1e-9
-                        || (moved_deg < s.moved_deg + 1e-9
-                            && inverse_condition > s.inverse_condition)
+/// The nearest paired layout that is not architecturally singular (see the module's
+/// documentation), or `None` when no candidate qualifies.
+pub fn nearest_sound_layout(geometry: &Geometry) -> Option<SoundLayout> {
+    let angles = |g: &Geometry, plate: Plate| -> [f64; 6] {
+        g.joints(plate).map(|j| j.y.atan2(j.x).to_degrees())
+    };
+    let (base, platform) = (
+        angles(geometry, Plate::Base),
+        angles(geometry, Plate::Platform),
+    );
+    let mut best: Option<SoundLayout> = None;
+    let separations = (1..=23).map(|k| 5.0 * f64::from(k));
+    for b in separations.clone() {
+        for p in separations.clone() {
+            let layout = Layout::Paired {
+                base_separation_deg: b,
+                platform_separation_deg: p,
+            };
+            let (lb, lp) = layout.angles_deg();
+            let moved_deg = (0..6)
+                .map(|i| angle_between(lb[i], base[i]).max(angle_between(lp[i], platform[i])))
+                .fold(0.0, f64::max);
+            if best
+                .as_ref()
+                .is_some_and(|s| s.moved_deg < moved_deg - 1e-9)
+            {
+                continue;
+            }
+            let Some(geometry) = with_layout(geometry, layout) else {
+                continue;
+            };
+            let report = architecture::architecture(&geometry);
+            let inverse_condition = report.home.inverse_condition();
+            let conditioned =
+                inverse_condition.is_finite() && inverse_condition >= MIN_INVERSE_CONDITION;
+            if report.singular || !conditioned {
+                continue;
+            }
+            let better = best.as_ref().is_none_or(|s| {
+                moved_deg < s.moved_deg - 1e-9
+                    || (moved_deg < s.moved_deg + 1e-9 && inverse_condition > s.inverse_condition)
+            });
+            if better {
+                best = Some(SoundLayout {
+                    layout,
+                    geometry,
+                    moved_deg,
+                    inverse_condition,
                 });
-                if better {
-                    best = Some(SoundLayout {
-                        layout,
-                        geometry,
-                        moved_deg,
-                        inverse_condition,
-                    });
-                }
             }
         }
-        best
     }
+    best
 }
 
 #[cfg(test)]
@@ -118,10 +119,8 @@ mod tests {
     #[test]
     fn the_seed_has_a_nearby_paired_layout_that_is_not_singular() {
         let seed = Geometry::seed();
-        assert!(seed.architecture().singular);
-        let found = seed
-            .nearest_sound_layout()
-            .unwrap_or_else(|| panic!("no layout"));
+        assert!(architecture::architecture(&seed).singular);
+        let found = nearest_sound_layout(&seed).unwrap_or_else(|| panic!("no layout"));
         // Base joints on the regular hexagon turned 30°, platform joints in three close
         // pairs (a 6-3-like platform): every joint moves at most 30°.
         assert_eq!(
@@ -132,7 +131,7 @@ mod tests {
             }
         );
         assert!((found.moved_deg - 30.0).abs() < 1e-9, "{}", found.moved_deg);
-        let report = found.geometry.architecture();
+        let report = architecture::architecture(&found.geometry);
         assert!(!report.singular);
         assert!(report.home.inverse_condition() >= MIN_INVERSE_CONDITION);
     }
@@ -154,9 +153,7 @@ mod more_tests {
         let g = crate::io::scenario::Scenario::preset("paired")
             .unwrap_or_else(|e| panic!("{e}"))
             .geometry;
-        let found = g
-            .nearest_sound_layout()
-            .unwrap_or_else(|| panic!("no layout"));
+        let found = nearest_sound_layout(&g).unwrap_or_else(|| panic!("no layout"));
         assert!(found.moved_deg < 1e-9, "{found:?}");
         assert_eq!(g.params().base, found.geometry.params().base);
     }

@@ -7,7 +7,7 @@
 //! against the range of its kind below, generous enough for any laboratory platform or
 //! motion simulator and small enough that nothing derived from in-range inputs can
 //! overflow. The settings declare their ranges from these (`stewart settings` prints
-//! them) and README.md lists them.
+//! them) and docs/guide/bad-input.md lists them.
 
 use std::ops::RangeInclusive;
 

@@ -3,6 +3,7 @@
 //! the condition number with its colour bar.
 
 use egui::{Color32, RichText};
+use stewart_kinematics::analysis::workspace;
 use stewart_render::colormap;
 
 use super::widgets::{ERROR, OK, WARNING};
@@ -132,7 +133,7 @@ pub fn centre_inside(state: &ViewerState) -> bool {
     let probe = stewart_kinematics::Pose::new(pose.position, roll, pitch, yaw);
     let shift = state.centre() - g.platform_centre(&probe);
     let probe = probe.with_position(pose.position + shift);
-    g.pose_within_limits(&state.scenario().limits, &probe)
+    workspace::pose_within_limits(g, &state.scenario().limits, &probe)
 }
 
 /// The slice's switches, its colour bar and the cells past the threshold: the tool alone,

@@ -25,6 +25,7 @@ pub mod stroke;
 #[cfg(test)]
 mod tests;
 
+use crate::analysis::architecture;
 use serde::{Deserialize, Serialize};
 
 use crate::analysis::architecture::ArchitectureReport;
@@ -228,7 +229,7 @@ pub fn check_motion(
             Some(motion.ranges())
         }
     };
-    let architecture = geometry.architecture();
+    let architecture = architecture::architecture(geometry);
     singularity::check(
         geometry,
         &architecture,

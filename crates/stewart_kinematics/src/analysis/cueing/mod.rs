@@ -7,6 +7,7 @@ mod limiter;
 mod lti;
 mod washout;
 
+use crate::analysis::workspace;
 use nalgebra::Vector3;
 use thiserror::Error;
 
@@ -87,7 +88,9 @@ impl Cueing {
         let limiter = settings
             .workspace_limiter
             .then(|| Limiter::new(settings.limiter_recovery_s));
-        if limiter.is_some() && !geometry.pose_within_limits(limits, &geometry.home_pose()) {
+        if limiter.is_some()
+            && !workspace::pose_within_limits(geometry, limits, &geometry.home_pose())
+        {
             return Err(CueError::HomeOutside);
         }
         Ok(Self {
@@ -116,7 +119,7 @@ impl Cueing {
         };
         let fits = |s: f64| {
             let pose = pose_at(&self.geometry, self.arm, &cue, s * fade);
-            self.geometry.pose_within_limits(&self.limits, &pose)
+            workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
         };
         let s = limiter.scale_for(h, fits);
         pose_at(&self.geometry, self.arm, &cue, s * fade)

@@ -1,3 +1,4 @@
+use crate::analysis::workspace;
 use nalgebra::{Complex, Vector3};
 
 use super::*;
@@ -288,7 +289,7 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
         .poses;
     let outside = unlimited
         .iter()
-        .filter(|p| !g.pose_within_limits(&limits, p))
+        .filter(|p| !workspace::pose_within_limits(&g, &limits, p))
         .count();
     assert!(
         outside > 100,
@@ -301,7 +302,11 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
     let limited = cue_recording(&g, &limits, &limited_settings, &recording)
         .unwrap_or_else(|e| panic!("{e}"))
         .poses;
-    assert!(limited.iter().all(|p| g.pose_within_limits(&limits, p)));
+    assert!(
+        limited
+            .iter()
+            .all(|p| workspace::pose_within_limits(&g, &limits, p))
+    );
     // Where the cue fits from the start, the limiter changes nothing.
     assert_eq!(limited[..5], unlimited[..5]);
     // The limited motion has no jumps: a step no bigger than the unlimited motion's
@@ -349,7 +354,10 @@ fn the_limited_poses_read_back_from_their_table_are_the_poses_judged() {
         for (k, p) in cued.poses.iter().enumerate() {
             let back = Pose::from_row(&p.to_row());
             assert_eq!(&back, p, "{cone}°, sample {k}");
-            assert!(g.pose_within_limits(&limits, &back), "{cone}°, sample {k}");
+            assert!(
+                workspace::pose_within_limits(&g, &limits, &back),
+                "{cone}°, sample {k}"
+            );
         }
         held += cued.scales.iter().filter(|&&s| s < 1.0).count();
     }

@@ -2,6 +2,8 @@
 //! accelerations by central differences, as `forces` takes them) and the lowest natural
 //! frequency over the motion.
 
+use crate::analysis::dynamics;
+use crate::analysis::forces;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::{DynamicsError, DynamicsSettings, MotionState};
@@ -46,43 +48,38 @@ impl DynamicsSettings {
     }
 }
 
-impl Geometry {
-    /// Static efforts (gravity on platform, payload and legs) and dynamic ones (with
-    /// inertia and friction) at every sample of a motion. With massless legs and no
-    /// friction this is [`Geometry::forces_along`] exactly.
-    pub fn efforts_along(
-        &self,
-        samples: &Samples,
-        payload: &Payload,
-        dynamics: &DynamicsSettings,
-    ) -> Result<ForceSeries, ForceError> {
-        if dynamics.adds_nothing() {
-            return self.forces_along(samples, payload);
-        }
-        let states = motion_states(samples);
-        let mut statics = Vec::with_capacity(states.len());
-        let mut efforts = Vec::with_capacity(states.len());
-        for (state, &time) in states.iter().zip(&samples.times) {
-            let located = |e: DynamicsError| match e {
-                DynamicsError::Unreachable { servo } => ForceError::Unreachable { time, servo },
-                _ => ForceError::Singular { time },
-            };
-            let still = MotionState::still(state.pose);
-            statics.push(
-                self.inverse_dynamics(&still, payload, dynamics)
-                    .map_err(located)?,
-            );
-            efforts.push(
-                self.inverse_dynamics(state, payload, dynamics)
-                    .map_err(located)?,
-            );
-        }
-        Ok(ForceSeries {
-            times: samples.times.clone(),
-            statics,
-            dynamics: efforts,
-        })
+/// Static efforts (gravity on platform, payload and legs) and dynamic ones (with
+/// inertia and friction) at every sample of a motion. With massless legs and no
+/// friction this is [`crate::analysis::forces::forces_along`] exactly.
+pub fn efforts_along(
+    geometry: &Geometry,
+    samples: &Samples,
+    payload: &Payload,
+    dynamics: &DynamicsSettings,
+) -> Result<ForceSeries, ForceError> {
+    if dynamics.adds_nothing() {
+        return forces::forces_along(geometry, samples, payload);
     }
+    let states = motion_states(samples);
+    let mut statics = Vec::with_capacity(states.len());
+    let mut efforts = Vec::with_capacity(states.len());
+    for (state, &time) in states.iter().zip(&samples.times) {
+        let located = |e: DynamicsError| match e {
+            DynamicsError::Unreachable { servo } => ForceError::Unreachable { time, servo },
+            _ => ForceError::Singular { time },
+        };
+        let still = MotionState::still(state.pose);
+        statics.push(
+            dynamics::inverse_dynamics(geometry, &still, payload, dynamics).map_err(located)?,
+        );
+        efforts
+            .push(dynamics::inverse_dynamics(geometry, state, payload, dynamics).map_err(located)?);
+    }
+    Ok(ForceSeries {
+        times: samples.times.clone(),
+        statics,
+        dynamics: efforts,
+    })
 }
 
 /// Where along a motion the lowest natural frequency occurs.
@@ -108,9 +105,7 @@ pub fn lowest_mode_along(
 ) -> Result<Option<LowestMode>, (f64, DynamicsError)> {
     let mut lowest: Option<LowestMode> = None;
     for (pose, &time) in samples.poses.iter().zip(&samples.times) {
-        let modes = geometry
-            .modes(pose, payload, dynamics)
-            .map_err(|e| (time, e))?;
+        let modes = dynamics::modes(geometry, pose, payload, dynamics).map_err(|e| (time, e))?;
         if lowest
             .as_ref()
             .is_none_or(|l| modes.frequencies_hz[0] < l.frequency_hz)

@@ -41,8 +41,8 @@ use crate::analysis::forces::{Payload, STANDARD_GRAVITY};
 pub use crate::model::dynamics_settings::DynamicsSettings;
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;
-pub use along::{LowestMode, lowest_mode_along, motion_states};
-pub use modes::{AXES, Modes, dominant};
+pub use along::{LowestMode, efforts_along, lowest_mode_along, motion_states};
+pub use modes::{AXES, Modes, dominant, joint_travel, modes, moved_along};
 use parts::{Leg, LegTrouble, joint_acceleration, wrench_at};
 
 /// The platform's pose and how it moves: the twist and its rate about the pivot point
@@ -135,120 +135,118 @@ fn solve_transposed(j: &Matrix6<f64>, b: &Vector6<f64>) -> Option<Vector6<f64>> 
     lu.solve(b).filter(|x| x.iter().all(|v| v.is_finite()))
 }
 
-impl Geometry {
-    /// The actuator efforts (N for legs, N·m for servos) that move the platform and
-    /// `payload` through `state`, with the legs' parts, friction and gravity of
-    /// `dynamics` (see the module's documentation for the model and signs).
-    pub fn inverse_dynamics(
-        &self,
-        state: &MotionState,
-        payload: &Payload,
-        dynamics: &DynamicsSettings,
-    ) -> Result<[f64; 6], DynamicsError> {
-        let pose = &state.pose;
-        let r = pose.rotation();
-        let pivot = pose.position + self.pivot();
-        let legs = parts::legs(self, pose, &pivot, Some(&state.twist), dynamics)?;
-        let (t, dt) = (&state.twist, &state.twist_rate);
-        let omega = t.fixed_rows::<3>(3).into_owned();
-        let alpha = dt.fixed_rows::<3>(3).into_owned();
-        // The platform and payload (the same wrench `leg_forces` balances).
-        let r_c = r * (payload.centre_of_mass - self.pivot());
-        let a_c = joint_acceleration(t, dt, &r_c);
-        let inertia = r * payload.inertia * r.transpose();
-        let (force, moment) = body_wrench(payload.mass, &inertia, &a_c, &omega, &alpha);
-        let moment = moment + r_c.cross(&force);
-        let mut load = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
-        // Each leg's parts: a force at its platform joint and a load on its actuator.
-        let mut direct = [0.0; 6];
-        let mut j = Matrix6::zeros();
-        for (i, leg) in legs.iter().enumerate() {
-            j.set_row(i, &leg.row.transpose());
-            let a_p = joint_acceleration(t, dt, &leg.arm);
-            let q_ddot = leg.rate_per_joint_acc.dot(&a_p) + leg.rate_bias;
-            let mut at_joint = Vector3::zeros();
-            for part in leg
-                .parts
-                .iter()
-                .filter(|p| p.mass != 0.0 || p.inertia != Matrix3::zeros())
-            {
-                let acc = part.lin_joint * a_p + part.lin_rate * q_ddot + part.acc_bias;
-                let alpha = part.ang_joint * a_p + part.ang_rate * q_ddot + part.alpha_bias;
-                let (f, mu) = body_wrench(part.mass, &part.inertia, &acc, &part.omega, &alpha);
-                at_joint += part.lin_joint.tr_mul(&f) + part.ang_joint.tr_mul(&mu);
-                direct[i] += part.lin_rate.dot(&f) + part.ang_rate.dot(&mu);
-            }
-            if at_joint != Vector3::zeros() {
-                load += wrench_at(&leg.arm, &at_joint);
-            }
+/// The actuator efforts (N for legs, N·m for servos) that move the platform and
+/// `payload` through `state`, with the legs' parts, friction and gravity of
+/// `dynamics` (see the module's documentation for the model and signs).
+pub fn inverse_dynamics(
+    geometry: &Geometry,
+    state: &MotionState,
+    payload: &Payload,
+    dynamics: &DynamicsSettings,
+) -> Result<[f64; 6], DynamicsError> {
+    let pose = &state.pose;
+    let r = pose.rotation();
+    let pivot = pose.position + geometry.pivot();
+    let legs = parts::legs(geometry, pose, &pivot, Some(&state.twist), dynamics)?;
+    let (t, dt) = (&state.twist, &state.twist_rate);
+    let omega = t.fixed_rows::<3>(3).into_owned();
+    let alpha = dt.fixed_rows::<3>(3).into_owned();
+    // The platform and payload (the same wrench `leg_forces` balances).
+    let r_c = r * (payload.centre_of_mass - geometry.pivot());
+    let a_c = joint_acceleration(t, dt, &r_c);
+    let inertia = r * payload.inertia * r.transpose();
+    let (force, moment) = body_wrench(payload.mass, &inertia, &a_c, &omega, &alpha);
+    let moment = moment + r_c.cross(&force);
+    let mut load = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
+    // Each leg's parts: a force at its platform joint and a load on its actuator.
+    let mut direct = [0.0; 6];
+    let mut j = Matrix6::zeros();
+    for (i, leg) in legs.iter().enumerate() {
+        j.set_row(i, &leg.row.transpose());
+        let a_p = joint_acceleration(t, dt, &leg.arm);
+        let q_ddot = leg.rate_per_joint_acc.dot(&a_p) + leg.rate_bias;
+        let mut at_joint = Vector3::zeros();
+        for part in leg
+            .parts
+            .iter()
+            .filter(|p| p.mass != 0.0 || p.inertia != Matrix3::zeros())
+        {
+            let acc = part.lin_joint * a_p + part.lin_rate * q_ddot + part.acc_bias;
+            let alpha = part.ang_joint * a_p + part.ang_rate * q_ddot + part.alpha_bias;
+            let (f, mu) = body_wrench(part.mass, &part.inertia, &acc, &part.omega, &alpha);
+            at_joint += part.lin_joint.tr_mul(&f) + part.ang_joint.tr_mul(&mu);
+            direct[i] += part.lin_rate.dot(&f) + part.ang_rate.dot(&mu);
         }
-        let balance = solve_transposed(&j, &load).ok_or(DynamicsError::Singular)?;
-        let friction = dynamics.actuator_friction;
-        Ok(std::array::from_fn(|i| {
-            balance[i] + direct[i] + friction * legs[i].rate
-        }))
-    }
-
-    /// The legs at `pose` about the platform frame's origin, standing still.
-    fn legs_about_origin(
-        &self,
-        pose: &Pose,
-        dynamics: &DynamicsSettings,
-    ) -> Result<[Leg; 6], DynamicsError> {
-        let origin = self.platform_centre(pose);
-        Ok(parts::legs(self, pose, &origin, None, dynamics)?)
-    }
-
-    /// The Cartesian stiffness `K = J_aᵀ diag(k) J_a` at `pose` for actuators of axial
-    /// stiffness `k` (N/m, or N·m/rad for servos): N/m, N, N·m/rad blocks, about the
-    /// platform frame's origin in base-frame axes.
-    pub fn stiffness(&self, pose: &Pose, k: f64) -> Result<Matrix6<f64>, DynamicsError> {
-        let legs = self.legs_about_origin(pose, &DynamicsSettings::default())?;
-        Ok(legs.iter().fold(Matrix6::zeros(), |sum, leg| {
-            sum + k * leg.row * leg.row.transpose()
-        }))
-    }
-
-    /// The lowest stiffness of the platform at `pose` for actuators of stiffness `k`, N/m:
-    /// the smallest eigenvalue of `D K D` with `D = diag(1, 1, 1, 1/ℓ, 1/ℓ, 1/ℓ)` and `ℓ`
-    /// the characteristic length (a rotation counted as the motion it gives at that
-    /// distance, as the conditioning does). `None` when a servo cannot reach its joint.
-    pub fn lowest_stiffness(&self, pose: &Pose, k: f64) -> Option<f64> {
-        let stiffness = self.stiffness(pose, k).ok()?;
-        let l = self.characteristic_length();
-        let d = Matrix6::from_diagonal(&Vector6::new(1.0, 1.0, 1.0, 1.0 / l, 1.0 / l, 1.0 / l));
-        let scaled = d * stiffness * d;
-        Some(scaled.symmetric_eigenvalues().min().max(0.0))
-    }
-
-    /// The 6×6 mass matrix at `pose`: the kinetic energy of platform, payload and legs is
-    /// `½ tᵀ M t` for the twist `t` about the platform frame's origin (base-frame axes).
-    pub fn mass_matrix(
-        &self,
-        pose: &Pose,
-        payload: &Payload,
-        dynamics: &DynamicsSettings,
-    ) -> Result<Matrix6<f64>, DynamicsError> {
-        let legs = self.legs_about_origin(pose, dynamics)?;
-        let r = pose.rotation();
-        let r_c = r * payload.centre_of_mass;
-        let mut m = body_matrix(
-            payload.mass,
-            &(r * payload.inertia * r.transpose()),
-            &joint_map(&r_c),
-            &angular_map(),
-        );
-        for leg in &legs {
-            let joint = joint_map(&leg.arm);
-            let row = leg.row.transpose();
-            for part in &leg.parts {
-                let lin = part.lin_joint * joint + part.lin_rate * row;
-                let ang = part.ang_joint * joint + part.ang_rate * row;
-                m += body_matrix(part.mass, &part.inertia, &lin, &ang);
-            }
+        if at_joint != Vector3::zeros() {
+            load += wrench_at(&leg.arm, &at_joint);
         }
-        Ok(m)
     }
+    let balance = solve_transposed(&j, &load).ok_or(DynamicsError::Singular)?;
+    let friction = dynamics.actuator_friction;
+    Ok(std::array::from_fn(|i| {
+        balance[i] + direct[i] + friction * legs[i].rate
+    }))
+}
+
+/// The legs at `pose` about the platform frame's origin, standing still.
+fn legs_about_origin(
+    geometry: &Geometry,
+    pose: &Pose,
+    dynamics: &DynamicsSettings,
+) -> Result<[Leg; 6], DynamicsError> {
+    let origin = geometry.platform_centre(pose);
+    Ok(parts::legs(geometry, pose, &origin, None, dynamics)?)
+}
+
+/// The Cartesian stiffness `K = J_aᵀ diag(k) J_a` at `pose` for actuators of axial
+/// stiffness `k` (N/m, or N·m/rad for servos): N/m, N, N·m/rad blocks, about the
+/// platform frame's origin in base-frame axes.
+pub fn stiffness(geometry: &Geometry, pose: &Pose, k: f64) -> Result<Matrix6<f64>, DynamicsError> {
+    let legs = legs_about_origin(geometry, pose, &DynamicsSettings::default())?;
+    Ok(legs.iter().fold(Matrix6::zeros(), |sum, leg| {
+        sum + k * leg.row * leg.row.transpose()
+    }))
+}
+
+/// The lowest stiffness of the platform at `pose` for actuators of stiffness `k`, N/m:
+/// the smallest eigenvalue of `D K D` with `D = diag(1, 1, 1, 1/ℓ, 1/ℓ, 1/ℓ)` and `ℓ`
+/// the characteristic length (a rotation counted as the motion it gives at that
+/// distance, as the conditioning does). `None` when a servo cannot reach its joint.
+pub fn lowest_stiffness(geometry: &Geometry, pose: &Pose, k: f64) -> Option<f64> {
+    let stiffness = stiffness(geometry, pose, k).ok()?;
+    let l = geometry.characteristic_length();
+    let d = Matrix6::from_diagonal(&Vector6::new(1.0, 1.0, 1.0, 1.0 / l, 1.0 / l, 1.0 / l));
+    let scaled = d * stiffness * d;
+    Some(scaled.symmetric_eigenvalues().min().max(0.0))
+}
+
+/// The 6×6 mass matrix at `pose`: the kinetic energy of platform, payload and legs is
+/// `½ tᵀ M t` for the twist `t` about the platform frame's origin (base-frame axes).
+pub fn mass_matrix(
+    geometry: &Geometry,
+    pose: &Pose,
+    payload: &Payload,
+    dynamics: &DynamicsSettings,
+) -> Result<Matrix6<f64>, DynamicsError> {
+    let legs = legs_about_origin(geometry, pose, dynamics)?;
+    let r = pose.rotation();
+    let r_c = r * payload.centre_of_mass;
+    let mut m = body_matrix(
+        payload.mass,
+        &(r * payload.inertia * r.transpose()),
+        &joint_map(&r_c),
+        &angular_map(),
+    );
+    for leg in &legs {
+        let joint = joint_map(&leg.arm);
+        let row = leg.row.transpose();
+        for part in &leg.parts {
+            let lin = part.lin_joint * joint + part.lin_rate * row;
+            let ang = part.ang_joint * joint + part.ang_rate * row;
+            m += body_matrix(part.mass, &part.inertia, &lin, &ang);
+        }
+    }
+    Ok(m)
 }
 
 /// `J_t = [I | −[r]×]`: a platform point's velocity per twist, for the point at `arm`.

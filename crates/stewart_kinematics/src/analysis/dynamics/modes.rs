@@ -1,5 +1,6 @@
 //! Natural modes at a pose: `K v = ω² M v` solved through the Cholesky factor of `M`.
 
+use crate::analysis::dynamics;
 use nalgebra::{Matrix6, Vector6};
 
 use super::{DynamicsError, DynamicsSettings};
@@ -51,67 +52,64 @@ pub fn dominant(v: &Vector6<f64>) -> Vec<(&'static str, f64)> {
     parts
 }
 
-impl Geometry {
-    /// Stiffness, mass matrix and natural modes at `pose` for the actuator stiffness of
-    /// `dynamics` (which must be given).
-    pub fn modes(
-        &self,
-        pose: &Pose,
-        payload: &Payload,
-        dynamics: &DynamicsSettings,
-    ) -> Result<Modes, DynamicsError> {
-        let k = dynamics
-            .actuator_stiffness
-            .ok_or(DynamicsError::NoStiffness)?;
-        if self.rotary().is_none()
-            && let Some(leg) = self.leg_without_direction(pose)
-        {
-            return Err(DynamicsError::LegWithoutDirection { leg: leg + 1 });
-        }
-        let stiffness = self.stiffness(pose, k)?;
-        let mass_matrix = self.mass_matrix(pose, payload, dynamics)?;
-        let (frequencies_hz, modes) = generalised_modes(&stiffness, &mass_matrix)?;
-        Ok(Modes {
-            stiffness,
-            mass_matrix,
-            frequencies_hz,
-            modes,
-        })
+/// Stiffness, mass matrix and natural modes at `pose` for the actuator stiffness of
+/// `dynamics` (which must be given).
+pub fn modes(
+    geometry: &Geometry,
+    pose: &Pose,
+    payload: &Payload,
+    dynamics: &DynamicsSettings,
+) -> Result<Modes, DynamicsError> {
+    let k = dynamics
+        .actuator_stiffness
+        .ok_or(DynamicsError::NoStiffness)?;
+    if geometry.rotary().is_none()
+        && let Some(leg) = geometry.leg_without_direction(pose)
+    {
+        return Err(DynamicsError::LegWithoutDirection { leg: leg + 1 });
     }
+    let stiffness = dynamics::stiffness(geometry, pose, k)?;
+    let mass_matrix = dynamics::mass_matrix(geometry, pose, payload, dynamics)?;
+    let (frequencies_hz, modes) = generalised_modes(&stiffness, &mass_matrix)?;
+    Ok(Modes {
+        stiffness,
+        mass_matrix,
+        frequencies_hz,
+        modes,
+    })
 }
 
-impl Geometry {
-    /// The pose `pose` moved by the small motion `v` (x, y, z in m, rx, ry, rz in rad:
-    /// a mode vector, about the platform frame's origin in base-frame axes) scaled by
-    /// `s`: the origin moves by `s v_xyz` and the platform turns by `s v_r` about it.
-    pub fn moved_along(&self, pose: &Pose, v: &Vector6<f64>, s: f64) -> Pose {
-        let c = self.pivot();
-        let origin = self.platform_centre(pose) + s * v.fixed_rows::<3>(0).into_owned();
-        let turn = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
-        let rotation = turn * nalgebra::Rotation3::from_matrix_unchecked(pose.rotation());
-        let (roll, pitch, yaw) = rotation.euler_angles();
-        use crate::model::angle::Angle;
-        Pose::new(
-            origin - c + rotation * c,
-            Angle::from_radians(roll),
-            Angle::from_radians(pitch),
-            Angle::from_radians(yaw),
-        )
-    }
+/// The pose `pose` moved by the small motion `v` (x, y, z in m, rx, ry, rz in rad:
+/// a mode vector, about the platform frame's origin in base-frame axes) scaled by
+/// `s`: the origin moves by `s v_xyz` and the platform turns by `s v_r` about it.
+pub fn moved_along(geometry: &Geometry, pose: &Pose, v: &Vector6<f64>, s: f64) -> Pose {
+    let c = geometry.pivot();
+    let origin = geometry.platform_centre(pose) + s * v.fixed_rows::<3>(0).into_owned();
+    let turn = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
+    let rotation = turn * nalgebra::Rotation3::from_matrix_unchecked(pose.rotation());
+    let (roll, pitch, yaw) = rotation.euler_angles();
+    use crate::model::angle::Angle;
+    Pose::new(
+        origin - c + rotation * c,
+        Angle::from_radians(roll),
+        Angle::from_radians(pitch),
+        Angle::from_radians(yaw),
+    )
+}
 
-    /// How far the platform joints move, at most, for the motion `v` (as in
-    /// [`Geometry::moved_along`]) at `pose`, per unit of `s`, metres.
-    pub fn joint_travel(&self, pose: &Pose, v: &Vector6<f64>) -> f64 {
-        let r = pose.rotation();
-        let (t, w) = (
-            v.fixed_rows::<3>(0).into_owned(),
-            v.fixed_rows::<3>(3).into_owned(),
-        );
-        self.platform_joints()
-            .iter()
-            .map(|a| (t + w.cross(&(r * a))).norm())
-            .fold(0.0, f64::max)
-    }
+/// How far the platform joints move, at most, for the motion `v` (as in
+/// [`crate::analysis::dynamics::moved_along`]) at `pose`, per unit of `s`, metres.
+pub fn joint_travel(geometry: &Geometry, pose: &Pose, v: &Vector6<f64>) -> f64 {
+    let r = pose.rotation();
+    let (t, w) = (
+        v.fixed_rows::<3>(0).into_owned(),
+        v.fixed_rows::<3>(3).into_owned(),
+    );
+    geometry
+        .platform_joints()
+        .iter()
+        .map(|a| (t + w.cross(&(r * a))).norm())
+        .fold(0.0, f64::max)
 }
 
 /// Frequencies (Hz, ascending) and unit mode vectors of `K v = ω² M v`.

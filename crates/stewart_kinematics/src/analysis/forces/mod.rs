@@ -187,102 +187,99 @@ pub fn inertia_tensor(values: &[f64]) -> Option<Matrix3<f64>> {
     }
 }
 
-impl Geometry {
-    /// Leg forces that hold the payload still at `pose` (weight only).
-    pub fn static_forces(
-        &self,
-        pose: &crate::model::pose::Pose,
-        payload: &Payload,
-    ) -> Option<[f64; 6]> {
-        self.leg_forces(
-            pose,
-            payload,
-            &Vector3::zeros(),
-            &Vector3::zeros(),
-            &Vector3::zeros(),
-        )
-    }
+/// Leg forces that hold the payload still at `pose` (weight only).
+pub fn static_forces(
+    geometry: &Geometry,
+    pose: &crate::model::pose::Pose,
+    payload: &Payload,
+) -> Option<[f64; 6]> {
+    leg_forces(
+        geometry,
+        pose,
+        payload,
+        &Vector3::zeros(),
+        &Vector3::zeros(),
+        &Vector3::zeros(),
+    )
+}
 
-    /// Leg forces (N; servo torques in N·m for a rotary platform) at `pose` for a
-    /// centre-of-mass acceleration `a_c` and angular velocity `omega` and acceleration
-    /// `alpha` (base frame). `None` at a singular pose or one a servo cannot reach.
-    pub fn leg_forces(
-        &self,
-        pose: &crate::model::pose::Pose,
-        payload: &Payload,
-        a_c: &Vector3<f64>,
-        omega: &Vector3<f64>,
-        alpha: &Vector3<f64>,
-    ) -> Option<[f64; 6]> {
-        let r = pose.rotation();
-        let r_c = r * (payload.centre_of_mass - self.pivot());
-        let inertia = r * payload.inertia * r.transpose();
-        let g = Vector3::new(0.0, 0.0, -STANDARD_GRAVITY);
-        let force = payload.mass * (a_c - g);
-        let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
-        let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
-        let (j, cond) = self.actuator_jacobian_and_conditioning(pose)?;
-        if cond.is_singular() {
-            return None;
-        }
-        let f = j.transpose().lu().solve(&wrench)?;
-        Some(std::array::from_fn(|i| f[i]))
+/// Leg forces (N; servo torques in N·m for a rotary platform) at `pose` for a
+/// centre-of-mass acceleration `a_c` and angular velocity `omega` and acceleration
+/// `alpha` (base frame). `None` at a singular pose or one a servo cannot reach.
+pub fn leg_forces(
+    geometry: &Geometry,
+    pose: &crate::model::pose::Pose,
+    payload: &Payload,
+    a_c: &Vector3<f64>,
+    omega: &Vector3<f64>,
+    alpha: &Vector3<f64>,
+) -> Option<[f64; 6]> {
+    let r = pose.rotation();
+    let r_c = r * (payload.centre_of_mass - geometry.pivot());
+    let inertia = r * payload.inertia * r.transpose();
+    let g = Vector3::new(0.0, 0.0, -STANDARD_GRAVITY);
+    let force = payload.mass * (a_c - g);
+    let moment = inertia * alpha + omega.cross(&(inertia * omega)) + r_c.cross(&force);
+    let wrench = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
+    let (j, cond) = geometry.actuator_jacobian_and_conditioning(pose)?;
+    if cond.is_singular() {
+        return None;
     }
+    let f = j.transpose().lu().solve(&wrench)?;
+    Some(std::array::from_fn(|i| f[i]))
+}
 
-    /// Static and dynamic leg forces at every sample of a motion.
-    pub fn forces_along(
-        &self,
-        samples: &Samples,
-        payload: &Payload,
-    ) -> Result<ForceSeries, ForceError> {
-        let times = &samples.times;
-        let rotations: Vec<Matrix3<f64>> = samples.poses.iter().map(|p| p.rotation()).collect();
-        let c = self.pivot();
-        let centres: Vec<Vector3<f64>> = samples
-            .poses
-            .iter()
-            .zip(&rotations)
-            .map(|(p, r)| p.position + c + r * (payload.centre_of_mass - c))
-            .collect();
-        // Ṙ = [ω]× R, so ω = vee(skew(Ṙ Rᵀ)); R̈ = ([α]× + [ω]×²) R and [ω]×² is
-        // symmetric, so α = vee(skew(R̈ Rᵀ)).
-        let zero_v = Vector3::zeros();
-        let zero_m = Matrix3::zeros();
-        let omegas: Vec<Vector3<f64>> = (0..rotations.len())
-            .map(|k| {
-                skew_vector(
-                    &(first_difference(times, &rotations, k).unwrap_or(zero_m)
-                        * rotations[k].transpose()),
-                )
-            })
-            .collect();
-        let mut statics = Vec::with_capacity(times.len());
-        let mut dynamics = Vec::with_capacity(times.len());
-        for (k, pose) in samples.poses.iter().enumerate() {
-            let singular = || match self.servo_angles(pose) {
-                Some(Err(e)) => ForceError::Unreachable {
-                    time: times[k],
-                    servo: e.servo,
-                },
-                _ => ForceError::Singular { time: times[k] },
-            };
-            let a_c = second_difference(times, &centres, k).unwrap_or(zero_v);
-            let alpha = skew_vector(
-                &(second_difference(times, &rotations, k).unwrap_or(zero_m)
+/// Static and dynamic leg forces at every sample of a motion.
+pub fn forces_along(
+    geometry: &Geometry,
+    samples: &Samples,
+    payload: &Payload,
+) -> Result<ForceSeries, ForceError> {
+    let times = &samples.times;
+    let rotations: Vec<Matrix3<f64>> = samples.poses.iter().map(|p| p.rotation()).collect();
+    let c = geometry.pivot();
+    let centres: Vec<Vector3<f64>> = samples
+        .poses
+        .iter()
+        .zip(&rotations)
+        .map(|(p, r)| p.position + c + r * (payload.centre_of_mass - c))
+        .collect();
+    // Ṙ = [ω]× R, so ω = vee(skew(Ṙ Rᵀ)); R̈ = ([α]× + [ω]×²) R and [ω]×² is
+    // symmetric, so α = vee(skew(R̈ Rᵀ)).
+    let zero_v = Vector3::zeros();
+    let zero_m = Matrix3::zeros();
+    let omegas: Vec<Vector3<f64>> = (0..rotations.len())
+        .map(|k| {
+            skew_vector(
+                &(first_difference(times, &rotations, k).unwrap_or(zero_m)
                     * rotations[k].transpose()),
-            );
-            statics.push(self.static_forces(pose, payload).ok_or_else(singular)?);
-            dynamics.push(
-                self.leg_forces(pose, payload, &a_c, &omegas[k], &alpha)
-                    .ok_or_else(singular)?,
-            );
-        }
-        Ok(ForceSeries {
-            times: times.clone(),
-            statics,
-            dynamics,
+            )
         })
+        .collect();
+    let mut statics = Vec::with_capacity(times.len());
+    let mut dynamics = Vec::with_capacity(times.len());
+    for (k, pose) in samples.poses.iter().enumerate() {
+        let singular = || match geometry.servo_angles(pose) {
+            Some(Err(e)) => ForceError::Unreachable {
+                time: times[k],
+                servo: e.servo,
+            },
+            _ => ForceError::Singular { time: times[k] },
+        };
+        let a_c = second_difference(times, &centres, k).unwrap_or(zero_v);
+        let alpha = skew_vector(
+            &(second_difference(times, &rotations, k).unwrap_or(zero_m) * rotations[k].transpose()),
+        );
+        statics.push(static_forces(geometry, pose, payload).ok_or_else(singular)?);
+        dynamics.push(
+            leg_forces(geometry, pose, payload, &a_c, &omegas[k], &alpha).ok_or_else(singular)?,
+        );
     }
+    Ok(ForceSeries {
+        times: times.clone(),
+        statics,
+        dynamics,
+    })
 }
 
 #[cfg(test)]

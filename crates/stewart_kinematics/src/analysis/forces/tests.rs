@@ -36,7 +36,7 @@ proptest! {
         let g = crate::test_support::paired_geometry();
         let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let load = payload(m, [cx, cy, cz]);
-        let f = g.static_forces(&pose, &load).unwrap_or_else(|| panic!("singular"));
+        let f = static_forces(&g, &pose, &load).unwrap_or_else(|| panic!("singular"));
         let (force, moment) = resultant(&g, &pose, &f);
         let weight = Vector3::new(0.0, 0.0, -m * STANDARD_GRAVITY);
         // Σ f_i u_i = −weight, and the moments about the base origin cancel too.
@@ -52,8 +52,7 @@ fn a_centred_load_on_the_level_platform_is_shared_equally() {
     // equally: each leg carries m·g / (6 · u_z), with u_z = 0.8 / L.
     let g = crate::test_support::paired_geometry();
     let home = g.home_pose();
-    let f = g
-        .static_forces(&home, &payload(60.0, [0.0, 0.0, 0.0]))
+    let f = static_forces(&g, &home, &payload(60.0, [0.0, 0.0, 0.0]))
         .unwrap_or_else(|| panic!("singular"));
     let l = g.leg_lengths(&home)[0];
     let expected = 60.0 * STANDARD_GRAVITY / (6.0 * 0.8 / l);
@@ -74,9 +73,7 @@ fn dynamics_adds_mass_times_acceleration_in_a_vertical_lift() {
         .collect();
     let samples = Samples { times, poses };
     let load = payload(50.0, [0.0, 0.0, 0.1]);
-    let series = g
-        .forces_along(&samples, &load)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let series = forces_along(&g, &samples, &load).unwrap_or_else(|e| panic!("{e}"));
     for k in 1..40 {
         let (force, _) = resultant(&g, &samples.poses[k], &series.dynamics[k]);
         assert!(
@@ -109,9 +106,7 @@ fn dynamics_adds_inertia_times_angular_acceleration_in_a_yaw_spin_up() {
         .collect();
     let samples = Samples { times, poses };
     let load = payload(50.0, [0.0, 0.0, 0.0]);
-    let series = g
-        .forces_along(&samples, &load)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let series = forces_along(&g, &samples, &load).unwrap_or_else(|e| panic!("{e}"));
     for k in 1..40 {
         let (force, moment) = resultant(&g, &samples.poses[k], &series.dynamics[k]);
         assert!((force - Vector3::new(0.0, 0.0, 50.0 * STANDARD_GRAVITY)).norm() < 1e-6);
@@ -158,7 +153,7 @@ fn bad_payloads_and_singular_geometry_are_refused() {
     assert!(Payload::new(1.0, Vector3::zeros(), rotated).is_err());
     let seed = Geometry::seed();
     assert_eq!(
-        seed.static_forces(&seed.home_pose(), &payload(10.0, [0.0; 3])),
+        static_forces(&seed, &seed.home_pose(), &payload(10.0, [0.0; 3])),
         None
     );
 }
@@ -176,9 +171,7 @@ fn servo_torques_are_the_weights_work_per_radian() {
         g.home_pose(),
         Pose::from_xyz_rpy_deg([0.01, -0.006, 0.118], [4.0, -3.0, 7.0]),
     ] {
-        let tau = g
-            .static_forces(&pose, &load)
-            .unwrap_or_else(|| panic!("singular"));
+        let tau = static_forces(g, &pose, &load).unwrap_or_else(|| panic!("singular"));
         let angles = g
             .servo_angles(&pose)
             .and_then(Result::ok)
@@ -217,9 +210,7 @@ fn a_servo_out_of_reach_is_named_in_the_torque_error() {
             g.home_pose(),
         ],
     };
-    let e = g
-        .forces_along(&samples, &payload(1.0, [0.0; 3]))
-        .unwrap_err();
+    let e = forces_along(g, &samples, &payload(1.0, [0.0; 3])).unwrap_err();
     assert_eq!(
         e.to_string(),
         "at t = 0.1 s servo 1 cannot reach its platform joint: no torque holds it"

@@ -55,7 +55,7 @@ pub enum WorkspaceError {
 /// Largest resolution (columns per side): 16 million columns.
 pub const MAX_RESOLUTION: usize = 4096;
 
-/// Resolution of the probe [`Geometry::workspace_cost`] runs to estimate a request's cost.
+/// Resolution of the probe [`crate::analysis::workspace::workspace_cost`] runs to estimate a request's cost.
 pub const PROBE_RESOLUTION: usize = 64;
 
 /// Progress and cancellation of a long workspace computation, shared with the thread
@@ -392,197 +392,200 @@ fn volume_error(spans: &[[f64; 4]], bounds: &[[f64; 2]; 2], n: usize, tallest: f
     2.0 * scale * (variance / count).sqrt()
 }
 
-impl Geometry {
-    /// Whether `pose` keeps every leg within its stroke and respects `limits` — for a
-    /// rotary platform: every servo reaches its joint within its range, and the rods
-    /// respect the cone and clearance limits.
-    pub fn pose_within_limits(&self, limits: &Limits, pose: &Pose) -> bool {
-        let solution = self.inverse(pose);
-        if let Some(servos) = self.rotary() {
-            return rotary::servos_allowed(self, servos, limits, pose, &solution.platform_joints);
-        }
-        let stroke = self.stroke();
-        solution
-            .lengths
-            .iter()
-            .all(|&l| stroke.violation(l).is_none())
-            && limits.pose_allowed(pose, &solution)
+/// Whether `pose` keeps every leg within its stroke and respects `limits` — for a
+/// rotary platform: every servo reaches its joint within its range, and the rods
+/// respect the cone and clearance limits.
+pub fn pose_within_limits(geometry: &Geometry, limits: &Limits, pose: &Pose) -> bool {
+    let solution = geometry.inverse(pose);
+    if let Some(servos) = geometry.rotary() {
+        return rotary::servos_allowed(geometry, servos, limits, pose, &solution.platform_joints);
     }
+    let stroke = geometry.stroke();
+    solution
+        .lengths
+        .iter()
+        .all(|&l| stroke.violation(l).is_none())
+        && limits.pose_allowed(pose, &solution)
+}
 
-    /// The platform-centre positions reachable at orientation `[roll, pitch, yaw]`, on an
-    /// `resolution × resolution` grid of columns (see the module docs).
-    pub fn constant_orientation_workspace(
-        &self,
-        limits: &Limits,
-        orientation: [Angle; 3],
-        resolution: usize,
-    ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
-        self.constant_orientation_workspace_with(
-            limits,
-            orientation,
-            resolution,
-            &WorkspaceControl::default(),
-        )
+/// The platform-centre positions reachable at orientation `[roll, pitch, yaw]`, on an
+/// `resolution × resolution` grid of columns (see the module docs).
+pub fn constant_orientation_workspace(
+    geometry: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    resolution: usize,
+) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
+    constant_orientation_workspace_with(
+        geometry,
+        limits,
+        orientation,
+        resolution,
+        &WorkspaceControl::default(),
+    )
+}
+
+/// The cost of [`crate::analysis::workspace::constant_orientation_workspace`] at `resolution`, from a
+/// probe at [`PROBE_RESOLUTION`]: columns, spans and evaluations scale as N² (each
+/// column is solved from its boundary polynomials or by a certified scan whose cost
+/// barely grows with the resolution).
+pub fn workspace_cost(
+    geometry: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    resolution: usize,
+) -> Result<WorkspaceCost, WorkspaceError> {
+    let control = WorkspaceControl::default();
+    let probe = constant_orientation_workspace_with(
+        geometry,
+        limits,
+        orientation,
+        PROBE_RESOLUTION,
+        &control,
+    )?;
+    let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
+    let evaluations = control.evaluations.load(Ordering::Relaxed) as f64;
+    Ok(WorkspaceCost {
+        columns: (resolution * resolution) as f64,
+        evaluations: evaluations * ratio * ratio,
+        bytes: (probe.spans.len() * size_of::<[f64; 4]>()) as f64 * ratio.powi(2),
+    })
+}
+
+/// [`crate::analysis::workspace::constant_orientation_workspace`], counting progress on `control` and
+/// stopping early (with [`WorkspaceError::Cancelled`]) when its `cancel` flag is set.
+pub fn constant_orientation_workspace_with(
+    geometry: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    resolution: usize,
+    control: &WorkspaceControl,
+) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
+    if !(2..=MAX_RESOLUTION).contains(&resolution) {
+        return Err(WorkspaceError::Resolution {
+            got: resolution,
+            max: MAX_RESOLUTION,
+        });
     }
-
-    /// The cost of [`Geometry::constant_orientation_workspace`] at `resolution`, from a
-    /// probe at [`PROBE_RESOLUTION`]: columns, spans and evaluations scale as N² (each
-    /// column is solved from its boundary polynomials or by a certified scan whose cost
-    /// barely grows with the resolution).
-    pub fn workspace_cost(
-        &self,
-        limits: &Limits,
-        orientation: [Angle; 3],
-        resolution: usize,
-    ) -> Result<WorkspaceCost, WorkspaceError> {
-        let control = WorkspaceControl::default();
-        let probe = self.constant_orientation_workspace_with(
-            limits,
-            orientation,
-            PROBE_RESOLUTION,
-            &control,
-        )?;
-        let ratio = resolution as f64 / PROBE_RESOLUTION as f64;
-        let evaluations = control.evaluations.load(Ordering::Relaxed) as f64;
-        Ok(WorkspaceCost {
-            columns: (resolution * resolution) as f64,
-            evaluations: evaluations * ratio * ratio,
-            bytes: (probe.spans.len() * size_of::<[f64; 4]>()) as f64 * ratio.powi(2),
-        })
+    if let Some(servos) = geometry.rotary() {
+        return rotary::workspace(geometry, servos, limits, orientation, resolution, control);
     }
-
-    /// [`Geometry::constant_orientation_workspace`], counting progress on `control` and
-    /// stopping early (with [`WorkspaceError::Cancelled`]) when its `cancel` flag is set.
-    pub fn constant_orientation_workspace_with(
-        &self,
-        limits: &Limits,
-        orientation: [Angle; 3],
-        resolution: usize,
-        control: &WorkspaceControl,
-    ) -> Result<ConstantOrientationWorkspace, WorkspaceError> {
-        if !(2..=MAX_RESOLUTION).contains(&resolution) {
-            return Err(WorkspaceError::Resolution {
-                got: resolution,
-                max: MAX_RESOLUTION,
-            });
-        }
-        if let Some(servos) = self.rotary() {
-            return rotary::workspace(self, servos, limits, orientation, resolution, control);
-        }
-        let (Some(min), Some(max)) = (self.stroke().min, self.stroke().max) else {
-            return Err(WorkspaceError::NoStroke);
-        };
-        let [roll, pitch, yaw] = orientation;
-        let rotation = crate::model::pose::rotation_zyx(roll, pitch, yaw);
-        let shells = Shells::new(self, &rotation, min, max);
-        let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
-        let Some(bounds) = shells.xy_bounds() else {
-            return Ok(empty);
-        };
-        let (spans, cell, volume_error) = if limits.has_pose_limits() {
-            let limited = limited::LegLimits::new(self, limits, &rotation);
-            let column =
-                |x: f64, y: f64, dz: f64, scratch: &mut LimitedScratch, row: &mut Vec<[f64; 4]>| {
-                    let mut stroke = [(0.0, 0.0); MAX_SPANS];
-                    let k = shells.column(x, y, &mut stroke);
-                    scratch.spans.clear();
-                    scratch.spans.extend_from_slice(&stroke[..k]);
-                    let n = limited.narrow(x, y, dz, &mut scratch.spans, &mut scratch.limits);
-                    row.extend(scratch.spans.iter().map(|&(z0, z1)| [x, y, z0, z1]));
-                    n
-                };
-            let (cell, spans) = grid_spans(&bounds, resolution, control, true, column);
-            if control.cancel.load(Ordering::Relaxed) {
-                return Err(WorkspaceError::Cancelled);
-            }
-            let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
-            (spans, cell, error)
-        } else {
-            let (cell, spans) = grid_spans(
-                &bounds,
-                resolution,
-                control,
-                true,
-                |x, y, _, _: &mut (), row| {
-                    let mut stroke = [(0.0, 0.0); MAX_SPANS];
-                    let k = shells.column(x, y, &mut stroke);
-                    row.extend(stroke[..k].iter().map(|&(z0, z1)| [x, y, z0, z1]));
-                    0
-                },
-            );
-            let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
-            (spans, cell, error)
-        };
+    let (Some(min), Some(max)) = (geometry.stroke().min, geometry.stroke().max) else {
+        return Err(WorkspaceError::NoStroke);
+    };
+    let [roll, pitch, yaw] = orientation;
+    let rotation = crate::model::pose::rotation_zyx(roll, pitch, yaw);
+    let shells = Shells::new(geometry, &rotation, min, max);
+    let empty = ConstantOrientationWorkspace::empty(orientation, resolution);
+    let Some(bounds) = shells.xy_bounds() else {
+        return Ok(empty);
+    };
+    let (spans, cell, volume_error) = if limits.has_pose_limits() {
+        let limited = limited::LegLimits::new(geometry, limits, &rotation);
+        let column =
+            |x: f64, y: f64, dz: f64, scratch: &mut LimitedScratch, row: &mut Vec<[f64; 4]>| {
+                let mut stroke = [(0.0, 0.0); MAX_SPANS];
+                let k = shells.column(x, y, &mut stroke);
+                scratch.spans.clear();
+                scratch.spans.extend_from_slice(&stroke[..k]);
+                let n = limited.narrow(x, y, dz, &mut scratch.spans, &mut scratch.limits);
+                row.extend(scratch.spans.iter().map(|&(z0, z1)| [x, y, z0, z1]));
+                n
+            };
+        let (cell, spans) = grid_spans(&bounds, resolution, control, true, column);
         if control.cancel.load(Ordering::Relaxed) {
             return Err(WorkspaceError::Cancelled);
         }
-        // Report platform-centre positions: with a pivot offset `c` the centre sits at
-        // `p + c − R c`, a constant shift at a fixed orientation.
-        let spans = shifted(spans.into_iter(), self.pivot() - rotation * self.pivot());
-        Ok(ConstantOrientationWorkspace {
-            cell,
-            volume: volume_of(&spans, cell),
-            volume_error,
-            extent: extent_of(&spans),
-            spans,
-            ..empty
-        })
+        let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
+        (spans, cell, error)
+    } else {
+        let (cell, spans) = grid_spans(
+            &bounds,
+            resolution,
+            control,
+            true,
+            |x, y, _, _: &mut (), row| {
+                let mut stroke = [(0.0, 0.0); MAX_SPANS];
+                let k = shells.column(x, y, &mut stroke);
+                row.extend(stroke[..k].iter().map(|&(z0, z1)| [x, y, z0, z1]));
+                0
+            },
+        );
+        let error = volume_error(&spans, &bounds, resolution, 2.0 * shells.max);
+        (spans, cell, error)
+    };
+    if control.cancel.load(Ordering::Relaxed) {
+        return Err(WorkspaceError::Cancelled);
     }
+    // Report platform-centre positions: with a pivot offset `c` the centre sits at
+    // `p + c − R c`, a constant shift at a fixed orientation.
+    let spans = shifted(
+        spans.into_iter(),
+        geometry.pivot() - rotation * geometry.pivot(),
+    );
+    Ok(ConstantOrientationWorkspace {
+        cell,
+        volume: volume_of(&spans, cell),
+        volume_error,
+        extent: extent_of(&spans),
+        spans,
+        ..empty
+    })
+}
 
-    /// The range of one angle (others held at the given values) reachable at `pose`'s
-    /// position, searched outward from the pose's own angle in steps of `step` and refined
-    /// by bisection; `None` when the pose itself is not reachable.
-    pub fn orientation_range(
-        &self,
-        limits: &Limits,
-        pose: &Pose,
-        axis: Axis,
-        span: Angle,
-        step: Angle,
-    ) -> Option<[Angle; 2]> {
-        let with = |a: Angle| {
-            let mut p = *pose;
-            match axis {
-                Axis::Roll => p.roll = a,
-                Axis::Pitch => p.pitch = a,
-                Axis::Yaw => p.yaw = a,
-            }
-            self.pose_within_limits(limits, &p)
-        };
-        let centre = match axis {
-            Axis::Roll => pose.roll,
-            Axis::Pitch => pose.pitch,
-            Axis::Yaw => pose.yaw,
-        };
-        // A step that cannot advance, or angles that are not numbers, would never end the
-        // search below: such a question has no answer.
-        let finite = [span, step, centre].iter().all(|a| a.radians().is_finite());
-        if !finite || step.radians() <= 0.0 || !with(centre) {
-            return None;
+/// The range of one angle (others held at the given values) reachable at `pose`'s
+/// position, searched outward from the pose's own angle in steps of `step` and refined
+/// by bisection; `None` when the pose itself is not reachable.
+pub fn orientation_range(
+    geometry: &Geometry,
+    limits: &Limits,
+    pose: &Pose,
+    axis: Axis,
+    span: Angle,
+    step: Angle,
+) -> Option<[Angle; 2]> {
+    let with = |a: Angle| {
+        let mut p = *pose;
+        match axis {
+            Axis::Roll => p.roll = a,
+            Axis::Pitch => p.pitch = a,
+            Axis::Yaw => p.yaw = a,
         }
-        let edge = |direction: f64| {
-            let mut inside = centre;
-            let mut k = 1.0;
-            loop {
-                let a = centre + step * (k * direction);
-                if (a - centre).radians().abs() > span.radians() {
-                    return centre + span * direction;
-                }
-                if !with(a) {
-                    // Bisect between the last reachable and the first unreachable angle.
-                    let (mut lo, mut hi) = (inside, a);
-                    for _ in 0..40 {
-                        let mid = Angle::from_radians(0.5 * (lo.radians() + hi.radians()));
-                        if with(mid) { lo = mid } else { hi = mid }
-                    }
-                    return lo;
-                }
-                inside = a;
-                k += 1.0;
-            }
-        };
-        Some([edge(-1.0), edge(1.0)])
+        pose_within_limits(geometry, limits, &p)
+    };
+    let centre = match axis {
+        Axis::Roll => pose.roll,
+        Axis::Pitch => pose.pitch,
+        Axis::Yaw => pose.yaw,
+    };
+    // A step that cannot advance, or angles that are not numbers, would never end the
+    // search below: such a question has no answer.
+    let finite = [span, step, centre].iter().all(|a| a.radians().is_finite());
+    if !finite || step.radians() <= 0.0 || !with(centre) {
+        return None;
     }
+    let edge = |direction: f64| {
+        let mut inside = centre;
+        let mut k = 1.0;
+        loop {
+            let a = centre + step * (k * direction);
+            if (a - centre).radians().abs() > span.radians() {
+                return centre + span * direction;
+            }
+            if !with(a) {
+                // Bisect between the last reachable and the first unreachable angle.
+                let (mut lo, mut hi) = (inside, a);
+                for _ in 0..40 {
+                    let mid = Angle::from_radians(0.5 * (lo.radians() + hi.radians()));
+                    if with(mid) { lo = mid } else { hi = mid }
+                }
+                return lo;
+            }
+            inside = a;
+            k += 1.0;
+        }
+    };
+    Some([edge(-1.0), edge(1.0)])
 }
 
 /// One of the three Euler angles.
@@ -608,6 +611,6 @@ pub mod surface;
 #[cfg(test)]
 mod tests;
 
-pub use reach::ReachMap;
-pub use slice::{Plane, Slice};
+pub use reach::{ReachMap, coordinate_range, roll_pitch_map};
+pub use slice::{Plane, Slice, stiffness_slice, workspace_slice};
 pub use surface::WorkspaceSurface;

@@ -3,6 +3,8 @@
 //! reachable within the stroke and limits, and how well conditioned (or how stiff) the
 //! platform is there.
 
+use crate::analysis::dynamics;
+use crate::analysis::workspace;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -64,95 +66,95 @@ struct SlicePlace {
 /// The largest grid a slice takes, cells a side.
 pub const MAX_SLICE_CELLS: usize = 1024;
 
-impl Geometry {
-    /// The slice through the workspace at `orientation` in `plane` at `at` over `range`,
-    /// `cells` a side (each 2 ..= [`MAX_SLICE_CELLS`]).
-    pub fn workspace_slice(
-        &self,
-        limits: &Limits,
-        orientation: [Angle; 3],
-        plane: Plane,
-        at: f64,
-        range: [[f64; 2]; 2],
-        cells: [usize; 2],
-    ) -> Slice {
-        let place = SlicePlace {
-            orientation,
-            plane,
-            at,
-            range,
-            cells,
-        };
-        self.slice_of(limits, &place, |pose| {
-            let c = self.actuated_conditioning(pose)?;
-            Some(c.condition_number.unwrap_or(f64::INFINITY))
+/// The slice through the workspace at `orientation` in `plane` at `at` over `range`,
+/// `cells` a side (each 2 ..= [`MAX_SLICE_CELLS`]).
+pub fn workspace_slice(
+    geometry: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    plane: Plane,
+    at: f64,
+    range: [[f64; 2]; 2],
+    cells: [usize; 2],
+) -> Slice {
+    let place = SlicePlace {
+        orientation,
+        plane,
+        at,
+        range,
+        cells,
+    };
+    slice_of(geometry, limits, &place, |pose| {
+        let c = geometry.actuated_conditioning(pose)?;
+        Some(c.condition_number.unwrap_or(f64::INFINITY))
+    })
+}
+
+/// The same grid as [`crate::analysis::workspace::workspace_slice`], each reachable cell holding the
+/// lowest stiffness of the platform there for actuators of stiffness `k`: the smallest
+/// eigenvalue of `K` with its rotations measured at the characteristic length (see
+/// [`crate::analysis::dynamics::lowest_stiffness`]), N/m.
+#[allow(clippy::too_many_arguments)]
+pub fn stiffness_slice(
+    geometry: &Geometry,
+    limits: &Limits,
+    orientation: [Angle; 3],
+    plane: Plane,
+    at: f64,
+    range: [[f64; 2]; 2],
+    cells: [usize; 2],
+    k: f64,
+) -> Slice {
+    let place = SlicePlace {
+        orientation,
+        plane,
+        at,
+        range,
+        cells,
+    };
+    slice_of(geometry, limits, &place, |pose| {
+        dynamics::lowest_stiffness(geometry, pose, k)
+    })
+}
+
+/// A slice at `place` whose reachable cells hold `value` of their pose (`None`: out
+/// of reach there too).
+fn slice_of(
+    geometry: &Geometry,
+    limits: &Limits,
+    place: &SlicePlace,
+    value: impl Fn(&Pose) -> Option<f64> + Sync,
+) -> Slice {
+    let SlicePlace {
+        orientation,
+        plane,
+        at,
+        range,
+        cells,
+    } = *place;
+    let cells = cells.map(|c| c.clamp(2, MAX_SLICE_CELLS));
+    let mut slice = Slice {
+        plane,
+        at,
+        range,
+        cells,
+        values: Vec::new(),
+    };
+    let [roll, pitch, yaw] = orientation;
+    slice.values = (0..cells[0] * cells[1])
+        .into_par_iter()
+        .map(|k| {
+            let [a, b] = slice.centre(k % cells[0], k / cells[0]);
+            let position = match plane {
+                Plane::Horizontal => [a, b, at],
+                Plane::Vertical => [a, at, b],
+            };
+            let pose = Pose::new(position.into(), roll, pitch, yaw);
+            if !workspace::pose_within_limits(geometry, limits, &pose) {
+                return None;
+            }
+            value(&pose)
         })
-    }
-
-    /// The same grid as [`Geometry::workspace_slice`], each reachable cell holding the
-    /// lowest stiffness of the platform there for actuators of stiffness `k`: the smallest
-    /// eigenvalue of `K` with its rotations measured at the characteristic length (see
-    /// [`Geometry::lowest_stiffness`]), N/m.
-    #[allow(clippy::too_many_arguments)]
-    pub fn stiffness_slice(
-        &self,
-        limits: &Limits,
-        orientation: [Angle; 3],
-        plane: Plane,
-        at: f64,
-        range: [[f64; 2]; 2],
-        cells: [usize; 2],
-        k: f64,
-    ) -> Slice {
-        let place = SlicePlace {
-            orientation,
-            plane,
-            at,
-            range,
-            cells,
-        };
-        self.slice_of(limits, &place, |pose| self.lowest_stiffness(pose, k))
-    }
-
-    /// A slice at `place` whose reachable cells hold `value` of their pose (`None`: out
-    /// of reach there too).
-    fn slice_of(
-        &self,
-        limits: &Limits,
-        place: &SlicePlace,
-        value: impl Fn(&Pose) -> Option<f64> + Sync,
-    ) -> Slice {
-        let SlicePlace {
-            orientation,
-            plane,
-            at,
-            range,
-            cells,
-        } = *place;
-        let cells = cells.map(|c| c.clamp(2, MAX_SLICE_CELLS));
-        let mut slice = Slice {
-            plane,
-            at,
-            range,
-            cells,
-            values: Vec::new(),
-        };
-        let [roll, pitch, yaw] = orientation;
-        slice.values = (0..cells[0] * cells[1])
-            .into_par_iter()
-            .map(|k| {
-                let [a, b] = slice.centre(k % cells[0], k / cells[0]);
-                let position = match plane {
-                    Plane::Horizontal => [a, b, at],
-                    Plane::Vertical => [a, at, b],
-                };
-                let pose = Pose::new(position.into(), roll, pitch, yaw);
-                if !self.pose_within_limits(limits, &pose) {
-                    return None;
-                }
-                value(&pose)
-            })
-            .collect();
-        slice
-    }
+        .collect();
+    slice
 }

@@ -3,6 +3,7 @@
 //! `K = k · diag(2, 2, 2, Hc²/6, Hc²/6, 2 Hc²/3)`, `Hc` the cube's height (its diagonal,
 //! `a √3` for side `a`), and with the mass centred there the six modes decouple.
 
+use crate::analysis::workspace;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::*;
@@ -51,9 +52,7 @@ fn cubic_geometry() -> Geometry {
 fn the_cubic_configurations_stiffness_is_the_closed_form() {
     let g = cubic_geometry();
     let k = 2.5e6;
-    let got = g
-        .stiffness(&g.home_pose(), k)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let got = stiffness(&g, &g.home_pose(), k).unwrap_or_else(|e| panic!("{e}"));
     let hc2 = 3.0 * SIDE * SIDE;
     let expected = Matrix6::from_diagonal(&Vector6::new(
         2.0,
@@ -85,9 +84,8 @@ fn a_centred_mass_on_the_cubic_configuration_has_decoupled_modes() {
             actuator_stiffness: Some(k),
             ..DynamicsSettings::default()
         };
-        let modes = g
-            .modes(&g.home_pose(), &payload, &dynamics)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let modes =
+            modes(&g, &g.home_pose(), &payload, &dynamics).unwrap_or_else(|e| panic!("{e}"));
         let hc2 = 3.0 * SIDE * SIDE;
         let w = |stiffness: f64, inertia: f64| (stiffness / inertia).sqrt() / std::f64::consts::TAU;
         let mut expected = [
@@ -122,7 +120,7 @@ fn a_leg_of_zero_length_is_named_not_blamed_on_the_inertia() {
         actuator_stiffness: Some(1e6),
         ..DynamicsSettings::default()
     };
-    let e = g.modes(&pose, &payload, &dynamics).err();
+    let e = modes(&g, &pose, &payload, &dynamics).err();
     assert_eq!(e, Some(DynamicsError::LegWithoutDirection { leg: 1 }));
     assert_eq!(g.leg_without_direction(&home), None);
 }
@@ -140,9 +138,8 @@ fn modes_solve_the_generalised_eigenproblem() {
         for _ in 0..20 {
             let payload = random_payload(&mut rng, size);
             let dynamics = random_dynamics(&mut rng, size, payload.mass);
-            let modes = g
-                .modes(&g.home_pose(), &payload, &dynamics)
-                .unwrap_or_else(|e| panic!("{e}"));
+            let modes =
+                modes(&g, &g.home_pose(), &payload, &dynamics).unwrap_or_else(|e| panic!("{e}"));
             let (kk, mm) = (&modes.stiffness, &modes.mass_matrix);
             for a in 0..6 {
                 let v = modes.modes[a];
@@ -176,11 +173,11 @@ fn a_point_mass_has_no_rotational_inertia_and_is_refused() {
         ..DynamicsSettings::default()
     };
     assert_eq!(
-        g.modes(&g.home_pose(), &payload, &dynamics),
+        modes(&g, &g.home_pose(), &payload, &dynamics),
         Err(DynamicsError::MassMatrixNotPositive)
     );
     assert_eq!(
-        g.modes(&g.home_pose(), &payload, &DynamicsSettings::default()),
+        modes(&g, &g.home_pose(), &payload, &DynamicsSettings::default()),
         Err(DynamicsError::NoStiffness)
     );
 }
@@ -193,14 +190,14 @@ fn moving_along_a_mode_moves_the_origin_and_turns_about_it() {
     let pose = Pose::from_xyz_rpy_deg([0.02, -0.01, 0.85], [4.0, -3.0, 12.0]);
     let v = Vector6::new(0.3, -0.2, 0.5, 0.4, 0.1, -0.6).normalize();
     let s = 0.01;
-    let moved = g.moved_along(&pose, &v, s);
+    let moved = moved_along(&g, &pose, &v, s);
     let shift = g.platform_centre(&moved) - g.platform_centre(&pose);
     assert!((shift - s * v.fixed_rows::<3>(0)).norm() < 1e-15);
     let turn = moved.rotation() * pose.rotation().transpose();
     let expected = nalgebra::Rotation3::new(s * v.fixed_rows::<3>(3).into_owned());
     assert!((turn - expected.matrix()).amax() < 1e-14);
     // Every joint moves by at most the travel the mode allows (to first order).
-    let travel = g.joint_travel(&pose, &v) * s;
+    let travel = joint_travel(&g, &pose, &v) * s;
     let before = g.inverse(&pose).platform_joints;
     let after = g.inverse(&moved).platform_joints;
     let largest = (0..6)
@@ -223,9 +220,7 @@ fn the_lowest_stiffness_of_the_cubic_configuration_is_its_weakest_axis() {
     let expected = k * [2.0, hc2 / 6.0 / (l * l), 2.0 * hc2 / 3.0 / (l * l)]
         .into_iter()
         .fold(f64::INFINITY, f64::min);
-    let got = g
-        .lowest_stiffness(&g.home_pose(), k)
-        .unwrap_or_else(|| panic!("unreachable"));
+    let got = lowest_stiffness(&g, &g.home_pose(), k).unwrap_or_else(|| panic!("unreachable"));
     assert!(
         (got - expected).abs() < 1e-9 * expected,
         "{got} vs {expected}"
@@ -233,10 +228,11 @@ fn the_lowest_stiffness_of_the_cubic_configuration_is_its_weakest_axis() {
     // A slice through home holds it at the home cell and nothing stiffer elsewhere is
     // assumed: every reachable cell's value is positive and finite.
     let limits = crate::model::limits::Limits::default();
-    let slice = g.stiffness_slice(
+    let slice = workspace::stiffness_slice(
+        &g,
         &limits,
         [Angle::from_degrees(0.0); 3],
-        crate::analysis::workspace::Plane::Horizontal,
+        workspace::Plane::Horizontal,
         CENTRE_HEIGHT,
         [[-0.05, 0.05], [-0.05, 0.05]],
         [5, 5],

@@ -2,6 +2,7 @@ mod cubic;
 mod energy;
 mod jet;
 
+use crate::analysis::forces;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::*;
@@ -175,8 +176,7 @@ fn lagrange_agrees(
         let dynamics = random_dynamics(rng, parts, payload.mass);
         let [x0, xd, xdd] = random_motion(rng, home, reach, tilt, speed, accel);
         let expected = Model::new(g, &payload, &dynamics).efforts(&x0, &xd, &xdd);
-        let got = g
-            .inverse_dynamics(&state_of(&x0, &xd, &xdd), &payload, &dynamics)
+        let got = inverse_dynamics(g, &state_of(&x0, &xd, &xdd), &payload, &dynamics)
             .unwrap_or_else(|e| panic!("{e}"));
         let gap = relative_gap(&got, &expected);
         assert!(gap < 1e-9, "case {case}: {got:?} vs {expected:?} ({gap:e})");
@@ -201,11 +201,9 @@ fn massless_legs_give_the_forces_of_leg_forces() {
             let alpha = state.twist_rate.fixed_rows::<3>(3).into_owned();
             let r_c = state.pose.rotation() * (payload.centre_of_mass - g.pivot());
             let a_c = joint_acceleration(&state.twist, &state.twist_rate, &r_c);
-            let old = g
-                .leg_forces(&state.pose, &payload, &a_c, &omega, &alpha)
+            let old = forces::leg_forces(&g, &state.pose, &payload, &a_c, &omega, &alpha)
                 .unwrap_or_else(|| panic!("singular"));
-            let new = g
-                .inverse_dynamics(&state, &payload, &DynamicsSettings::default())
+            let new = inverse_dynamics(&g, &state, &payload, &DynamicsSettings::default())
                 .unwrap_or_else(|e| panic!("{e}"));
             let gap = relative_gap(&new, &old);
             assert!(gap < 1e-13, "{new:?} vs {old:?} ({gap:e})");
@@ -236,9 +234,8 @@ fn the_mass_matrix_holds_the_kinetic_energy_of_every_body() {
             for k in 0..3 {
                 t[k] = origin[k].d1;
             }
-            let m = g
-                .mass_matrix(&state.pose, &payload, &dynamics)
-                .unwrap_or_else(|e| panic!("{e}"));
+            let m =
+                mass_matrix(&g, &state.pose, &payload, &dynamics).unwrap_or_else(|e| panic!("{e}"));
             let got = 0.5 * (t.transpose() * m * t)[0];
             assert!(
                 (got - expected).abs() < 1e-12 * expected,

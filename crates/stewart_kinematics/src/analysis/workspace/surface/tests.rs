@@ -1,3 +1,4 @@
+use crate::analysis::workspace;
 use std::collections::HashMap;
 
 use super::*;
@@ -130,8 +131,7 @@ fn nothing_reachable_gives_an_empty_surface() {
 /// the surface at `n / 2`, as the workspace's own bound is made.
 fn surface_volume(g: &Geometry, orientation: [Angle; 3], n: usize) -> (f64, f64) {
     let at = |n| {
-        let ws = g
-            .constant_orientation_workspace(&Limits::default(), orientation, n)
+        let ws = workspace::constant_orientation_workspace(g, &Limits::default(), orientation, n)
             .unwrap_or_else(|e| panic!("{e}"));
         WorkspaceSurface::from_workspace(&ws).enclosed_volume()
     };
@@ -151,8 +151,7 @@ fn the_enclosed_volume_agrees_with_the_column_sum_within_their_error_bounds() {
     for (name, rpy, n) in cases {
         let g = preset(name);
         let orientation = rpy.map(Angle::from_degrees);
-        let ws = g
-            .constant_orientation_workspace(&Limits::default(), orientation, n)
+        let ws = workspace::constant_orientation_workspace(&g, &Limits::default(), orientation, n)
             .unwrap_or_else(|e| panic!("{e}"));
         let s = WorkspaceSurface::from_workspace(&ws);
         assert_closed(&s);
@@ -182,9 +181,9 @@ fn the_enclosed_volume_converges_to_the_fine_column_sum_at_second_order() {
     // count. Reference: 1024 columns a side (its own bound ~1e-7 m³).
     let g = preset("paired");
     let orientation = [5.0, -3.0, 10.0].map(Angle::from_degrees);
-    let reference = g
-        .constant_orientation_workspace(&Limits::default(), orientation, 1024)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let reference =
+        workspace::constant_orientation_workspace(&g, &Limits::default(), orientation, 1024)
+            .unwrap_or_else(|e| panic!("{e}"));
     let deviation = |n| (surface_volume(&g, orientation, n).0 - reference.volume).abs();
     let (coarse, fine) = (deviation(128), deviation(512));
     assert!(
@@ -200,16 +199,24 @@ fn the_enclosed_volume_converges_to_the_fine_column_sum_at_second_order() {
 fn the_upper_surface_holds_every_columns_highest_reachable_point() {
     // Each upper vertex is a reachable pose (inside by a hair) and a hair above it is not.
     let g = preset("paired");
-    let ws = g
-        .constant_orientation_workspace(&Limits::default(), [Angle::ZERO; 3], 64)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let ws =
+        workspace::constant_orientation_workspace(&g, &Limits::default(), [Angle::ZERO; 3], 64)
+            .unwrap_or_else(|e| panic!("{e}"));
     let s = WorkspaceSurface::from_workspace(&ws);
     let pose = |p: [f64; 3]| crate::model::pose::Pose::level_at(0.0).with_position(p.into());
     // The columns' own vertices come first, upper then lower.
     assert_eq!(s.split_columns, 0);
     for p in s.positions[..2 * ws.spans.len()].iter().step_by(2) {
-        assert!(g.pose_within_limits(&Limits::default(), &pose([p[0], p[1], p[2] - 1e-9])));
-        assert!(!g.pose_within_limits(&Limits::default(), &pose([p[0], p[1], p[2] + 1e-6])));
+        assert!(workspace::pose_within_limits(
+            &g,
+            &Limits::default(),
+            &pose([p[0], p[1], p[2] - 1e-9])
+        ));
+        assert!(!workspace::pose_within_limits(
+            &g,
+            &Limits::default(),
+            &pose([p[0], p[1], p[2] + 1e-6])
+        ));
     }
 }
 
@@ -217,8 +224,7 @@ fn the_upper_surface_holds_every_columns_highest_reachable_point() {
 fn every_other_column_is_a_lighter_mesh_of_the_same_workspace() {
     let g = preset("paired");
     let orientation = [5.0, -3.0, 10.0].map(Angle::from_degrees);
-    let fine = g
-        .constant_orientation_workspace(&Limits::default(), orientation, 256)
+    let fine = workspace::constant_orientation_workspace(&g, &Limits::default(), orientation, 256)
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(fine.every(1), fine);
     let light = fine.every(2);

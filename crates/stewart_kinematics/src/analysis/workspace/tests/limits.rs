@@ -1,5 +1,5 @@
 //! The workspace under cone and clearance limits against an independent brute force: a
-//! 3-D grid of positions each tested with [`Geometry::pose_within_limits`] (plain inverse
+//! 3-D grid of positions each tested with [`crate::analysis::workspace::pose_within_limits`] (plain inverse
 //! kinematics and the limit checks, none of the column code).
 
 use super::*;
@@ -35,7 +35,7 @@ fn brute_force_volume(
                     // The spans are platform-centre positions; the pose is the centre's too
                     // (no pivot offset in these geometries).
                     let pose = Pose::new(centre, roll, pitch, yaw);
-                    count += usize::from(g.pose_within_limits(limits, &pose));
+                    count += usize::from(pose_within_limits(g, limits, &pose));
                 }
             }
             count
@@ -75,7 +75,11 @@ fn ends_are_edges(
 ) -> usize {
     let [roll, pitch, yaw] = orientation;
     let held = |x: f64, y: f64, z: f64| {
-        g.pose_within_limits(limits, &Pose::new(Vector3::new(x, y, z), roll, pitch, yaw))
+        pose_within_limits(
+            g,
+            limits,
+            &Pose::new(Vector3::new(x, y, z), roll, pitch, yaw),
+        )
     };
     let mut checked = 0;
     for &[x, y, z0, z1] in ws.spans.iter().step_by(3) {
@@ -110,18 +114,15 @@ fn linear_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
         leg_radius: Some(0.06),
         ..Limits::default()
     };
-    let free = g
-        .constant_orientation_workspace(&Limits::default(), orientation, 96)
+    let free = constant_orientation_workspace(&g, &Limits::default(), orientation, 96)
         .unwrap_or_else(|e| panic!("{e}"));
-    let ws = g
-        .constant_orientation_workspace(&limits, orientation, 96)
+    let ws = constant_orientation_workspace(&g, &limits, orientation, 96)
         .unwrap_or_else(|e| panic!("{e}"));
     let clearance_only = Limits {
         leg_radius: Some(0.06),
         ..Limits::default()
     };
-    let without_cones = g
-        .constant_orientation_workspace(&clearance_only, orientation, 96)
+    let without_cones = constant_orientation_workspace(&g, &clearance_only, orientation, 96)
         .unwrap_or_else(|e| panic!("{e}"));
     // Each limit binds.
     assert!(ws.volume < 0.9 * without_cones.volume && without_cones.volume < 0.9 * free.volume);
@@ -139,8 +140,7 @@ fn rotary_rod_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
     let s = crate::io::scenario::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
     let orientation = [4.0, -6.0, 12.0].map(Angle::from_degrees);
-    let servo_only = g
-        .constant_orientation_workspace(&Limits::default(), orientation, 64)
+    let servo_only = constant_orientation_workspace(g, &Limits::default(), orientation, 64)
         .unwrap_or_else(|e| panic!("{e}"));
     let cones = Limits {
         base_cone: Some(Angle::from_degrees(55.0)),
@@ -151,11 +151,9 @@ fn rotary_rod_cones_and_clearance_agree_with_brute_force_and_end_on_edges() {
         leg_radius: Some(0.011),
         ..cones
     };
-    let with_cones = g
-        .constant_orientation_workspace(&cones, orientation, 64)
+    let with_cones = constant_orientation_workspace(g, &cones, orientation, 64)
         .unwrap_or_else(|e| panic!("{e}"));
-    let ws = g
-        .constant_orientation_workspace(&tight, orientation, 64)
+    let ws = constant_orientation_workspace(g, &tight, orientation, 64)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(
         ws.volume < 0.97 * with_cones.volume && with_cones.volume < 0.95 * servo_only.volume,

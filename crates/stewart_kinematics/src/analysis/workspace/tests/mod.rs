@@ -13,8 +13,7 @@ const LEVEL: [Angle; 3] = [Angle::ZERO; 3];
 #[test]
 fn volume_agrees_with_an_independent_monte_carlo_estimate() {
     let g = paired();
-    let ws = g
-        .constant_orientation_workspace(&Limits::default(), LEVEL, 400)
+    let ws = constant_orientation_workspace(&g, &Limits::default(), LEVEL, 400)
         .unwrap_or_else(|e| panic!("{e}"));
     let [ex, ey, ez] = ws.extent.unwrap_or_else(|| panic!("empty"));
     // Uniform samples in a box around the extent, tested with plain inverse kinematics.
@@ -34,7 +33,8 @@ fn volume_agrees_with_an_independent_monte_carlo_estimate() {
     let mut inside = 0;
     for _ in 0..n {
         let p = [0, 1, 2].map(|k| lo[k] + (hi[k] - lo[k]) * uniform());
-        if g.pose_within_limits(
+        if pose_within_limits(
+            &g,
             &Limits::default(),
             &Pose::level_at(0.0).with_position(Vector3::from(p)),
         ) {
@@ -58,7 +58,7 @@ fn volume_converges_as_the_resolution_rises() {
     let v: Vec<f64> = [50, 100, 200, 400, 800]
         .iter()
         .map(|&n| {
-            g.constant_orientation_workspace(&Limits::default(), LEVEL, n)
+            constant_orientation_workspace(&g, &Limits::default(), LEVEL, n)
                 .unwrap_or_else(|e| panic!("{e}"))
                 .volume
         })
@@ -77,14 +77,17 @@ fn spans_are_reachable_inside_and_end_at_the_stroke() {
         Angle::from_degrees(-2.0),
         Angle::from_degrees(10.0),
     ];
-    let ws = g
-        .constant_orientation_workspace(&Limits::default(), rpy, 60)
+    let ws = constant_orientation_workspace(&g, &Limits::default(), rpy, 60)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(!ws.spans.is_empty());
     let stroke = g.stroke();
     for s in ws.spans.iter().step_by(7) {
         let at = |z: f64| Pose::new(Vector3::new(s[0], s[1], z), rpy[0], rpy[1], rpy[2]);
-        assert!(g.pose_within_limits(&Limits::default(), &at(0.5 * (s[2] + s[3]))));
+        assert!(pose_within_limits(
+            &g,
+            &Limits::default(),
+            &at(0.5 * (s[2] + s[3]))
+        ));
         // At the upper end some leg is exactly at a stroke limit.
         let lengths = g.leg_lengths(&at(s[3]));
         let at_limit = lengths.iter().any(|&l| {
@@ -98,17 +101,15 @@ fn spans_are_reachable_inside_and_end_at_the_stroke() {
 #[test]
 fn pose_limits_only_shrink_the_workspace() {
     let g = paired();
-    let free = g
-        .constant_orientation_workspace(&Limits::default(), LEVEL, 80)
+    let free = constant_orientation_workspace(&g, &Limits::default(), LEVEL, 80)
         .unwrap_or_else(|e| panic!("{e}"));
     let limits = Limits {
         base_cone: Some(Angle::from_degrees(35.0)),
         leg_radius: Some(0.02),
         ..Limits::default()
     };
-    let limited = g
-        .constant_orientation_workspace(&limits, LEVEL, 80)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let limited =
+        constant_orientation_workspace(&g, &limits, LEVEL, 80).unwrap_or_else(|e| panic!("{e}"));
     assert!(limited.volume < free.volume);
     assert!(limited.volume > 0.0);
     for s in limited.spans.iter().step_by(5) {
@@ -117,7 +118,7 @@ fn pose_limits_only_shrink_the_workspace() {
             s[1],
             0.5 * (s[2] + s[3]),
         ));
-        assert!(g.pose_within_limits(&limits, &p));
+        assert!(pose_within_limits(&g, &limits, &p));
     }
 }
 
@@ -125,14 +126,10 @@ fn pose_limits_only_shrink_the_workspace() {
 fn no_stroke_or_bad_resolution_is_an_error() {
     let g = Geometry::seed();
     assert_eq!(
-        g.constant_orientation_workspace(&Limits::default(), LEVEL, 10),
+        constant_orientation_workspace(&g, &Limits::default(), LEVEL, 10),
         Err(WorkspaceError::NoStroke)
     );
-    assert!(
-        paired()
-            .constant_orientation_workspace(&Limits::default(), LEVEL, 1)
-            .is_err()
-    );
+    assert!(constant_orientation_workspace(&paired(), &Limits::default(), LEVEL, 1).is_err());
 }
 
 #[test]
@@ -141,15 +138,15 @@ fn orientation_range_edges_are_sharp() {
     let pose = g.home_pose();
     let step = Angle::from_degrees(1.0);
     for axis in [Axis::Roll, Axis::Pitch, Axis::Yaw] {
-        let [lo, hi] = g
-            .orientation_range(
-                &Limits::default(),
-                &pose,
-                axis,
-                Angle::from_degrees(90.0),
-                step,
-            )
-            .unwrap_or_else(|| panic!("home unreachable"));
+        let [lo, hi] = orientation_range(
+            &g,
+            &Limits::default(),
+            &pose,
+            axis,
+            Angle::from_degrees(90.0),
+            step,
+        )
+        .unwrap_or_else(|| panic!("home unreachable"));
         assert!(
             lo.degrees() < -1.0 && hi.degrees() > 1.0,
             "{axis:?}: {lo} {hi}"
@@ -161,7 +158,7 @@ fn orientation_range_edges_are_sharp() {
                 Axis::Pitch => p.pitch = a,
                 Axis::Yaw => p.yaw = a,
             }
-            g.pose_within_limits(&Limits::default(), &p)
+            pose_within_limits(&g, &Limits::default(), &p)
         };
         let eps = Angle::from_degrees(1e-6);
         for edge in [lo, hi] {
@@ -185,14 +182,12 @@ fn with_a_pivot_the_workspace_is_that_of_the_platform_centre() {
         Angle::from_degrees(-4.0),
         Angle::from_degrees(12.0),
     ];
-    let plain = paired()
-        .constant_orientation_workspace(&Limits::default(), rpy, 100)
+    let plain = constant_orientation_workspace(&paired(), &Limits::default(), rpy, 100)
         .unwrap_or_else(|e| panic!("{e}"));
     let mut params = paired().params().clone();
     params.pivot = Vector3::new(0.05, -0.02, 0.3);
     let pivoted = Geometry::new(params).unwrap_or_else(|e| panic!("{e}"));
-    let shifted = pivoted
-        .constant_orientation_workspace(&Limits::default(), rpy, 100)
+    let shifted = constant_orientation_workspace(&pivoted, &Limits::default(), rpy, 100)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(
         (plain.volume - shifted.volume).abs() < 1e-9,
@@ -226,8 +221,7 @@ fn rotary_workspace_agrees_with_a_brute_force_grid() {
         Angle::from_degrees(5.0),
         Angle::from_degrees(10.0),
     ];
-    let ws = g
-        .constant_orientation_workspace(&Limits::default(), tilt, 40)
+    let ws = constant_orientation_workspace(g, &Limits::default(), tilt, 40)
         .unwrap_or_else(|e| panic!("{e}"));
     let [ex, ey, ez] = ws.extent.unwrap_or_else(|| panic!("empty"));
     assert!(ez[0] > 0.0 && ez[1] < 0.2, "{ez:?}");
@@ -280,8 +274,9 @@ fn rotary_workspace_agrees_with_a_brute_force_grid() {
         assert!(held(Vector3::new(x, y, z1 - 1e-9)) && !held(Vector3::new(x, y, z1 + 1e-9)));
     }
     // The home position is inside; so is every orientation range's start.
-    assert!(g.pose_within_limits(&Limits::default(), &g.home_pose()));
-    let range = g.orientation_range(
+    assert!(pose_within_limits(g, &Limits::default(), &g.home_pose()));
+    let range = orientation_range(
+        g,
         &Limits::default(),
         &g.home_pose(),
         Axis::Yaw,
@@ -298,9 +293,8 @@ fn a_horizontal_slice_has_the_area_the_column_spans_give() {
     let g = paired();
     let limits = Limits::default();
     let level = [Angle::from_degrees(0.0); 3];
-    let ws = g
-        .constant_orientation_workspace(&limits, level, 200)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let ws =
+        constant_orientation_workspace(&g, &limits, level, 200).unwrap_or_else(|e| panic!("{e}"));
     let z = 0.85;
     // Area from the workspace: columns whose reachable interval holds z.
     let from_spans =
@@ -309,7 +303,7 @@ fn a_horizontal_slice_has_the_area_the_column_spans_give() {
     let pad = 0.05;
     let range = [[x0 - pad, x1 + pad], [y0 - pad, y1 + pad]];
     let n = 200.min(MAX_SLICE_CELLS);
-    let slice = g.workspace_slice(&limits, level, Plane::Horizontal, z, range, [n, n]);
+    let slice = workspace_slice(&g, &limits, level, Plane::Horizontal, z, range, [n, n]);
     let cell = [
         (range[0][1] - range[0][0]) / n as f64,
         (range[1][1] - range[1][0]) / n as f64,
@@ -339,8 +333,7 @@ fn the_error_bound_covers_the_real_error_at_every_resolution() {
     {
         let s = crate::io::scenario::Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
         let at = |n| {
-            s.geometry
-                .constant_orientation_workspace(&s.limits, LEVEL, n)
+            constant_orientation_workspace(&s.geometry, &s.limits, LEVEL, n)
                 .unwrap_or_else(|e| panic!("{preset} at {n}: {e}"))
         };
         let reference = at(reference_resolution).volume;
