@@ -3,8 +3,8 @@
 //! every curve a `<polyline>`, so the vector outputs are real vectors.
 
 use std::fmt::Write as _;
-use stewart_kinematics::analysis::dynamics;
 
+use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::Lang;

@@ -5,10 +5,10 @@
 //! colour bar. Cells are merged into runs of one colour, so the SVG and PDF stay vectors.
 
 use std::fmt::Write as _;
-use stewart_kinematics::analysis::workspace;
 
 use anyhow::Result;
 use stewart_kinematics::Angle;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::{ConstantOrientationWorkspace, Plane, Slice};
 
 use stewart_render::colormap;

@@ -5,10 +5,10 @@
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
-use stewart_kinematics::analysis::workspace;
 
 use anyhow::{Result, anyhow, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget};
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::{
     ConstantOrientationWorkspace, WorkspaceControl, WorkspaceSurface,
 };

@@ -12,9 +12,9 @@
 use std::sync::Arc;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
-use stewart_kinematics::analysis::workspace;
 
 use nalgebra::Vector3;
+use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::{Plane, WorkspaceControl, WorkspaceSurface};
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;

@@ -241,95 +241,6 @@ impl RotaryActuators {
         let (st, ct) = theta.radians().sin_cos();
         base + self.horn_length * Vector3::new(ct * h.x, ct * h.y, st)
     }
-
-    /// The closure terms `(L, M, N)` of servo `i` for platform joint `joint`: the horn
-    /// angle θ closes the rod when `N cos θ + M sin θ = L`.
-    pub(crate) fn closure_terms(
-        &self,
-        i: usize,
-        base: &Vector3<f64>,
-        joint: &Vector3<f64>,
-    ) -> [f64; 3] {
-        self.terms_along(&self.horn_direction(i), &(joint - base))
-    }
-
-    /// The closure terms for a joint at `l` from the shaft centre, the horn pointing along
-    /// `h` at angle 0.
-    pub(crate) fn terms_along(&self, h: &Vector3<f64>, l: &Vector3<f64>) -> [f64; 3] {
-        let a = self.horn_length;
-        let s = self.rod_length;
-        [
-            l.norm_squared() - (s * s - a * a),
-            2.0 * a * l.z,
-            2.0 * a * (h.x * l.x + h.y * l.y),
-        ]
-    }
-
-    /// How far servo `i`'s joint is from the edge of its reach: `|L| / √(M² + N²)`, at
-    /// most 1 when some horn angle closes the rod (1: the horn and rod are in line), and
-    /// infinite for a joint on the shaft's axis.
-    pub fn reach_ratio(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> f64 {
-        let [big_l, m, n] = self.closure_terms(i, base, joint);
-        let ratio = big_l.abs() / m.hypot(n);
-        if ratio.is_nan() { f64::INFINITY } else { ratio }
-    }
-
-    /// The angle of servo `i` whose horn tip comes closest to platform joint `joint` when
-    /// no angle reaches it: the horn pointing towards the joint (`L > 0`, joint too far)
-    /// or away from it (`L < 0`, too near). Where the joint can be reached this is where
-    /// the rod would be in line with the horn.
-    pub fn closest_angle(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> Angle {
-        let [big_l, m, n] = self.closure_terms(i, base, joint);
-        // N cos θ + M sin θ is largest at θ = atan2(M, N), smallest half a turn away.
-        let towards = m.atan2(n);
-        let theta = if big_l >= 0.0 {
-            towards
-        } else {
-            towards + std::f64::consts::PI
-        };
-        Angle::from_radians(wrap_half_turn(theta))
-    }
-
-    /// Servo `i`'s angle (from 0) that puts its rod's end on platform joint `joint` (base
-    /// frame), for shaft centre `base`; or why none does.
-    pub fn servo_angle(
-        &self,
-        i: usize,
-        base: &Vector3<f64>,
-        joint: &Vector3<f64>,
-    ) -> Result<Angle, Unreachable> {
-        Self::angle_from_terms(i, self.closure_terms(i, base, joint))
-    }
-
-    /// Servo `i`'s angle from its closure terms (see [`RotaryActuators::servo_angle`]).
-    pub(crate) fn angle_from_terms(i: usize, terms: [f64; 3]) -> Result<Angle, Unreachable> {
-        let [big_l, m, n] = terms;
-        let r = m.hypot(n);
-        let ratio = big_l.abs() / r;
-        if ratio.is_nan() || ratio > 1.0 {
-            // Also a joint on the shaft's axis (r = 0): no horn angle moves the rod end.
-            return Err(Unreachable {
-                servo: i + 1,
-                ratio,
-                excess: ratio - 1.0,
-            });
-        }
-        let theta = (big_l / r).asin() - n.atan2(m);
-        Ok(Angle::from_radians(wrap_half_turn(theta)))
-    }
-
-    /// All six servo angles for platform joints `joints` and shaft centres `bases`.
-    pub fn servo_angles(
-        &self,
-        bases: &[Vector3<f64>; 6],
-        joints: &[Vector3<f64>; 6],
-    ) -> Result<[Angle; 6], Unreachable> {
-        let mut out = [Angle::from_radians(0.0); 6];
-        for i in 0..6 {
-            out[i] = self.servo_angle(i, &bases[i], &joints[i])?;
-        }
-        Ok(out)
-    }
 }
 
 /// `x` (radians) wrapped to (−π, π].
@@ -346,6 +257,7 @@ pub(crate) fn wrap_half_turn(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::solve::servo_closure;
 
     #[test]
     fn a_joint_far_out_of_reach_is_said_without_hundreds_of_digits() {
@@ -385,12 +297,12 @@ mod tests {
             RotaryActuators::new(0.025, 0.12, [0.0; 6], None).unwrap_or_else(|e| panic!("{e}"));
         let b = Vector3::zeros();
         let q = Vector3::new(0.025, 0.0, 0.12);
-        let theta = act.servo_angle(0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
+        let theta = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
         assert!(theta.radians().abs() < 1e-15, "{}", theta.degrees());
         // Lifted by 30°: the tip moves to a(cos 30°, 0, sin 30°); the joint above it too.
         let tip = act.horn_tip(0, &b, Angle::from_degrees(30.0));
         let q = tip + Vector3::new(0.0, 0.0, 0.12);
-        let theta = act.servo_angle(0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
+        let theta = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
         assert!(
             (theta.degrees() - 30.0).abs() < 1e-12,
             "{}",
@@ -407,7 +319,7 @@ mod tests {
             Vector3::new(0.1, 0.0, 0.05), // nearer than s − a
             Vector3::new(0.1, 0.0, 0.0),  // on the shaft centre
         ] {
-            let e = act.servo_angle(0, &b, &q).unwrap_err();
+            let e = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_err();
             assert_eq!(e.servo, 1);
             assert!(e.ratio > 1.0, "{e:?}");
         }
@@ -506,7 +418,7 @@ mod tests {
                 elevation.sin(),
             );
             let q = tip + act.rod_length() * dir;
-            let found = act.servo_angle(i, &b, &q);
+            let found = servo_closure::servo_angle(&act, i, &b, &q);
             prop_assert!(found.is_ok(), "{found:?}");
             let theta = found.unwrap_or(Angle::from_radians(0.0));
             let closure = (q - act.horn_tip(i, &b, theta)).norm() - act.rod_length();

@@ -7,6 +7,7 @@ use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;
 use crate::model::rotary::Unreachable;
 use crate::solve::forward::ForwardError;
+use crate::solve::servo_closure;
 
 impl Geometry {
     /// The quantity that drives the joints: leg length or servo angle.
@@ -156,8 +157,7 @@ impl Geometry {
             .map(|p| {
                 let joints = self.inverse(p).platform_joints;
                 std::array::from_fn(|i| {
-                    servos
-                        .servo_angle(i, &bases[i], &joints[i])
+                    servo_closure::servo_angle(servos, i, &bases[i], &joints[i])
                         .map_or(f64::NAN, |a| a.degrees())
                 })
             })

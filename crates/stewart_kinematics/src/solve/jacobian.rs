@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;
+use crate::solve::servo_closure;
 
 /// Relative size (σ_min/σ_max) below which the normalised Jacobian counts as rank
 /// deficient. Rounding alone gives about 1e-16; real near-singular poses of sensible
@@ -150,7 +151,7 @@ impl Geometry {
     ) -> Option<Result<Matrix6<f64>, crate::model::rotary::Unreachable>> {
         let servos = self.rotary()?;
         let joints = self.inverse(pose).platform_joints;
-        let angles = match servos.servo_angles(self.base_joints(), &joints) {
+        let angles = match servo_closure::servo_angles(servos, self.base_joints(), &joints) {
             Ok(a) => a,
             Err(e) => return Some(Err(e)),
         };
@@ -332,7 +333,7 @@ mod tests {
                     pivot_point + Vector3::new(vx, vy, vz) * s * h + rot * (g.platform_joints()[i] - c)
                 });
                 let servos = g.rotary().unwrap_or_else(|| panic!("not rotary"));
-                servos.servo_angles(g.base_joints(), &joints).map(|a| Vector6::from_fn(|i, _| a[i].radians()))
+                servo_closure::servo_angles(servos, g.base_joints(), &joints).map(|a| Vector6::from_fn(|i, _| a[i].radians()))
             };
             let (Ok(after), Ok(before)) = (angles_after(1.0), angles_after(-1.0)) else {
                 return Ok(());

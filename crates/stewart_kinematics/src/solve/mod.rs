@@ -5,10 +5,10 @@
 
 pub mod actuation;
 pub mod batch;
-mod batch_lanes;
 pub(crate) mod fast_trig;
 pub mod forward;
 pub mod inverse;
 pub mod jacobian;
 mod scene_frame;
 mod servo_angles;
+pub mod servo_closure;

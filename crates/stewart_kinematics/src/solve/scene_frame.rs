@@ -6,6 +6,7 @@ use nalgebra::Vector3;
 use crate::model::geometry::{Geometry, Plate};
 use crate::model::pose::Pose;
 use crate::model::scene::{LegFrame, LegStatus, SceneFrame, ServoFrame};
+use crate::solve::servo_closure;
 
 /// Fraction of the stroke near either end that counts as "near the limit".
 const NEAR_LIMIT: f64 = 0.05;
@@ -56,8 +57,9 @@ impl Geometry {
         let bases = self.base_joints();
         Some(std::array::from_fn(|i| {
             let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
-            let solved = servos.servo_angle(i, &bases[i], &joints[i]).ok();
-            let theta = solved.unwrap_or_else(|| servos.closest_angle(i, &bases[i], &joints[i]));
+            let solved = servo_closure::servo_angle(servos, i, &bases[i], &joints[i]).ok();
+            let theta = solved
+                .unwrap_or_else(|| servo_closure::closest_angle(servos, i, &bases[i], &joints[i]));
             let usage = solved.and_then(|t| {
                 let (min, max) = servos.range()?;
                 Some((t.radians() - min.radians()) / (max.radians() - min.radians()))

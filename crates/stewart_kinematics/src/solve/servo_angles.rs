@@ -7,6 +7,7 @@ use crate::model::angle::Angle;
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;
 use crate::model::rotary::Unreachable;
+use crate::solve::servo_closure;
 
 impl Geometry {
     /// The home height at which the servos stand level (mean servo angle zero) with the
@@ -24,7 +25,7 @@ impl Geometry {
                 Angle::ZERO,
             );
             let joints = self.inverse(&pose).platform_joints;
-            let angles = servos.servo_angles(self.base_joints(), &joints).ok()?;
+            let angles = servo_closure::servo_angles(servos, self.base_joints(), &joints).ok()?;
             Some(angles.iter().map(|a| a.radians()).sum::<f64>() / 6.0)
         };
         let top = servos.horn_length() + servos.rod_length() + self.pivot().z.abs();
@@ -61,6 +62,10 @@ impl Geometry {
     pub fn servo_angles(&self, pose: &Pose) -> Option<Result<[Angle; 6], Unreachable>> {
         let servos = self.rotary()?;
         let joints = self.inverse(pose).platform_joints;
-        Some(servos.servo_angles(self.base_joints(), &joints))
+        Some(servo_closure::servo_angles(
+            servos,
+            self.base_joints(),
+            &joints,
+        ))
     }
 }

@@ -25,9 +25,9 @@ pub mod stroke;
 #[cfg(test)]
 mod tests;
 
-use crate::analysis::architecture;
 use serde::{Deserialize, Serialize};
 
+use crate::analysis::architecture;
 use crate::analysis::architecture::ArchitectureReport;
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;

@@ -16,6 +16,7 @@ use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
 use crate::model::pose::Pose;
 use crate::model::rotary::RotaryActuators;
 use crate::solve::inverse::LegSolution;
+use crate::solve::servo_closure;
 
 /// The servo side of every sample of a motion.
 pub struct ServoMotion {
@@ -41,8 +42,10 @@ impl ServoMotion {
             let mut a = [f64::NAN; 6];
             let mut t = [missing; 6];
             for i in 0..6 {
-                r[i] = servos.reach_ratio(i, &bases[i], &s.platform_joints[i]);
-                if let Ok(theta) = servos.servo_angle(i, &bases[i], &s.platform_joints[i]) {
+                r[i] = servo_closure::reach_ratio(servos, i, &bases[i], &s.platform_joints[i]);
+                if let Ok(theta) =
+                    servo_closure::servo_angle(servos, i, &bases[i], &s.platform_joints[i])
+                {
                     a[i] = theta.degrees();
                     t[i] = servos.horn_tip(i, &bases[i], theta);
                 }

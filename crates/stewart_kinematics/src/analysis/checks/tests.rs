@@ -12,6 +12,7 @@ use crate::model::limits::Limits;
 use crate::model::pose::Pose;
 use crate::model::rotary::RotaryActuators;
 use crate::model::trajectory::Samples;
+use crate::solve::servo_closure;
 use crate::test_support::servo_geometry;
 
 /// Heave `z(t) = h + amp·sin(2π f t)` sampled every `dt` over `n` samples.
@@ -129,7 +130,9 @@ fn a_platform_lifted_past_horn_and_rod_is_unreachable_not_nan() {
                 let joints = g.inverse(p).platform_joints;
                 let i = f.legs[0] - 1;
                 g.rotary()
-                    .map(|s| s.servo_angle(i, &g.base_joints()[i], &joints[i]).is_err())
+                    .map(|s| {
+                        servo_closure::servo_angle(s, i, &g.base_joints()[i], &joints[i]).is_err()
+                    })
                     .unwrap_or(false)
             })
             .map(|(t, _)| *t);

@@ -7,10 +7,10 @@ mod limiter;
 mod lti;
 mod washout;
 
-use crate::analysis::workspace;
 use nalgebra::Vector3;
 use thiserror::Error;
 
+use crate::analysis::workspace;
 use crate::io::table::TableError;
 use crate::model::angle::Angle;
 use crate::model::cueing_settings::{CueingProblem, CueingSettings};

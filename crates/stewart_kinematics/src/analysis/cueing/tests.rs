@@ -1,7 +1,7 @@
-use crate::analysis::workspace;
 use nalgebra::{Complex, Vector3};
 
 use super::*;
+use crate::analysis::workspace;
 use crate::model::geometry::GeometryParams;
 
 /// Only the channels a test looks at: every scale 1, tilt off.

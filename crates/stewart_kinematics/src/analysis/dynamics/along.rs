@@ -2,12 +2,12 @@
 //! accelerations by central differences, as `forces` takes them) and the lowest natural
 //! frequency over the motion.
 
-use crate::analysis::dynamics;
-use crate::analysis::forces;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::{DynamicsError, DynamicsSettings, MotionState};
 use crate::analysis::differences::{first_difference, second_difference};
+use crate::analysis::dynamics;
+use crate::analysis::forces;
 use crate::analysis::forces::{ForceError, ForceSeries, Payload, skew_vector};
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;

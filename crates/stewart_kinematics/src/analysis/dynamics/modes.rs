@@ -1,9 +1,9 @@
 //! Natural modes at a pose: `K v = ω² M v` solved through the Cholesky factor of `M`.
 
-use crate::analysis::dynamics;
 use nalgebra::{Matrix6, Vector6};
 
 use super::{DynamicsError, DynamicsSettings};
+use crate::analysis::dynamics;
 use crate::analysis::forces::Payload;
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;

@@ -15,6 +15,7 @@ use nalgebra::{Matrix3, Vector3, Vector6};
 use crate::model::dynamics_settings::{DynamicsSettings, LegPart};
 use crate::model::geometry::Geometry;
 use crate::model::pose::Pose;
+use crate::solve::servo_closure;
 
 /// One moving part of a leg at a pose (and, for accelerations, a twist).
 #[derive(Clone, Copy, Debug)]
@@ -122,9 +123,9 @@ pub(crate) fn legs(
         *slot = Some(match geometry.rotary() {
             None => linear_leg(&joint, &geometry.base_joints()[i], arm, v_p, dynamics),
             Some(servos) => {
-                let theta = servos
-                    .servo_angle(i, &geometry.base_joints()[i], &joint)
-                    .map_err(|e| LegTrouble::Unreachable(e.servo))?;
+                let theta =
+                    servo_closure::servo_angle(servos, i, &geometry.base_joints()[i], &joint)
+                        .map_err(|e| LegTrouble::Unreachable(e.servo))?;
                 let horn_direction = servos.horn_direction(i);
                 let servo = Servo {
                     shaft: geometry.base_joints()[i],

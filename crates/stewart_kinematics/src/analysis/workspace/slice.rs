@@ -3,11 +3,11 @@
 //! reachable within the stroke and limits, and how well conditioned (or how stiff) the
 //! platform is there.
 
-use crate::analysis::dynamics;
-use crate::analysis::workspace;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use crate::analysis::dynamics;
+use crate::analysis::workspace;
 use crate::model::angle::Angle;
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;

@@ -3,10 +3,10 @@
 //! `K = k · diag(2, 2, 2, Hc²/6, Hc²/6, 2 Hc²/3)`, `Hc` the cube's height (its diagonal,
 //! `a √3` for side `a`), and with the mass centred there the six modes decouple.
 
-use crate::analysis::workspace;
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::*;
+use crate::analysis::workspace;
 use crate::model::geometry::{GeometryParams, PlateJoints};
 
 const SIDE: f64 = 0.3;

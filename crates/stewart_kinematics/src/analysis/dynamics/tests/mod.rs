@@ -2,10 +2,10 @@ mod cubic;
 mod energy;
 mod jet;
 
-use crate::analysis::forces;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
 use super::*;
+use crate::analysis::forces;
 use crate::model::angle::Angle;
 use energy::Model;
 use jet::Jet;

@@ -35,6 +35,7 @@ use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
 use crate::model::pose::Pose;
 use crate::model::rotary::RotaryActuators;
+use crate::solve::servo_closure;
 use clearance::{Clearance, Column};
 use std::f64::consts::FRAC_PI_2;
 
@@ -53,7 +54,7 @@ pub(super) fn servos_allowed(
     let pose_limits = limits.has_pose_limits();
     let mut tips = [Vector3::zeros(); 6];
     for i in 0..6 {
-        let Ok(theta) = servos.servo_angle(i, &bases[i], &joints[i]) else {
+        let Ok(theta) = servo_closure::servo_angle(servos, i, &bases[i], &joints[i]) else {
             return false;
         };
         if let Some((min, max)) = servos.range()
@@ -86,8 +87,8 @@ struct Columns<'a> {
 impl Columns<'_> {
     /// Servo `i`'s angle holding platform joint `joint` (shaft centre `base`), if any.
     fn angle(&self, i: usize, base: &Vector3<f64>, joint: &Vector3<f64>) -> Option<Angle> {
-        let terms = self.servos.terms_along(&self.horns[i], &(joint - base));
-        RotaryActuators::angle_from_terms(i, terms).ok()
+        let terms = servo_closure::terms_along(self.servos, &self.horns[i], &(joint - base));
+        servo_closure::angle_from_terms(i, terms).ok()
     }
 
     /// Polynomials in `z` whose roots include every height at which servo `i`'s rod meets
@@ -107,7 +108,7 @@ impl Columns<'_> {
     ) -> [Poly; 2] {
         let (a, s) = (self.servos.horn_length(), self.servos.rod_length());
         let q = joint0 - base;
-        let [l0, m0, big_n] = self.servos.closure_terms(i, base, joint0);
+        let [l0, m0, big_n] = servo_closure::closure_terms(self.servos, i, base, joint0);
         let l: Poly = [l0, 2.0 * q.z, 1.0, 0.0, 0.0];
         let m: Poly = [m0, 2.0 * a, 0.0, 0.0, 0.0];
         // The horn at θ = 0 points along (cos β, sin β, 0): T(θ) − B = a (cos θ h + sin θ ẑ).

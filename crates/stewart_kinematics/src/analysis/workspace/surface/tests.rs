@@ -1,7 +1,7 @@
-use crate::analysis::workspace;
 use std::collections::HashMap;
 
 use super::*;
+use crate::analysis::workspace;
 use crate::io::scenario::Scenario;
 use crate::model::angle::Angle;
 use crate::model::geometry::Geometry;

@@ -1,6 +1,7 @@
 use super::*;
 use crate::model::geometry::{GeometryParams, StrokeLimits};
 use crate::model::layout::Layout;
+use crate::solve::servo_closure;
 
 fn paired() -> Geometry {
     let mut p = GeometryParams::from_layout(1.0, 0.6, 0.8, Layout::paired(20.0));
@@ -230,8 +231,7 @@ fn rotary_workspace_agrees_with_a_brute_force_grid() {
         let pose = Pose::new(p, tilt[0], tilt[1], tilt[2]);
         let joints = g.inverse(&pose).platform_joints;
         (0..6).all(|i| {
-            servos
-                .servo_angle(i, &g.base_joints()[i], &joints[i])
+            servo_closure::servo_angle(servos, i, &g.base_joints()[i], &joints[i])
                 .is_ok_and(|t| t.degrees().abs() <= 70.0)
         })
     };

@@ -13,9 +13,8 @@
 
 use std::f64::consts::FRAC_2_PI;
 
-use super::batch::AsPose;
-use super::batch::{BatchSolver, ServoBatch};
-use super::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
+use super::{AsPose, BatchSolver, ServoBatch};
+use crate::solve::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
 
 /// Poses computed together.
 pub const LANES: usize = 8;
