@@ -11,6 +11,8 @@ cargo fmt --all --check
 # The kinematics core's layers (model -> solve -> analysis, io beside): no import or call
 # goes up a layer beyond the exceptions ARCHITECTURE.md lists.
 python3 scripts/layer-check.py
+# ARCHITECTURE.md true: every module it names exists, every public module is named.
+python3 scripts/architecture-check.py
 cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
 # The Python package (a workspace of its own: it builds against Python): lints, then

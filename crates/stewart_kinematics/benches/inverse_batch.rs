@@ -79,7 +79,7 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-/// The desktop servo platform of `tests/cli/rotary.toml`, and small motions about its home.
+/// The desktop servo platform of `tests/fixtures/rotary.toml`, and small motions about its home.
 fn servo_bench(c: &mut Criterion) {
     let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());
     p.base = PlateJoints::Circle {

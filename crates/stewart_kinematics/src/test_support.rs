@@ -16,7 +16,7 @@ pub(crate) fn paired_geometry() -> Geometry {
     .unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The desktop servo platform of `tests/cli/rotary.toml` (hobby servos, 25 mm horns,
+/// The desktop servo platform of `tests/fixtures/rotary.toml` (hobby servos, 25 mm horns,
 /// 120 mm rods), without a servo range.
 pub(crate) fn servo_geometry() -> Geometry {
     let mut p = GeometryParams::from_layout(0.08, 0.06, 0.117, Layout::seed());

@@ -85,7 +85,10 @@ mod tests {
     use super::*;
 
     fn heavy() -> Scenario {
-        let text = include_str!("../../../../examples/scenarios/heavy-legs.toml");
+        let text = include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/scenarios/heavy-legs.toml"
+        ));
         Scenario::from_toml_str(text, "heavy-legs.toml", None).unwrap_or_else(|e| panic!("{e}"))
     }
 

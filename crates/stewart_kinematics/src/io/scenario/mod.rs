@@ -34,7 +34,7 @@
 //! address = "192.168.1.20:9000"
 //! ```
 //!
-//! See `assets/presets/` for a file of every trajectory kind and docs/guide/file-format.md for every key.
+//! See `presets/` (this crate) for a file of every trajectory kind and docs/guide/file-format.md for every key.
 
 pub(crate) mod build;
 mod error;

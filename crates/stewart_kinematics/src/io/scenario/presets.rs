@@ -1,46 +1,58 @@
-//! Scenario presets shipped in `assets/presets/` and compiled into the program.
+//! Scenario presets shipped in `presets/` (this crate) and compiled into the program.
 
 /// Every preset: its name and its TOML text.
 pub const PRESETS: [(&str, &str); 10] = [
     (
         "seed",
-        include_str!("../../../../../assets/presets/seed.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/seed.toml")),
     ),
     (
         "paired",
-        include_str!("../../../../../assets/presets/paired.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/paired.toml")),
     ),
     (
         "circle",
-        include_str!("../../../../../assets/presets/circle.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/circle.toml")),
     ),
     (
         "figure8",
-        include_str!("../../../../../assets/presets/figure8.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/figure8.toml")),
     ),
     (
         "helix",
-        include_str!("../../../../../assets/presets/helix.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/helix.toml")),
     ),
     (
         "sway",
-        include_str!("../../../../../assets/presets/sway.toml"),
+        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/sway.toml")),
     ),
     (
         "keyframes",
-        include_str!("../../../../../assets/presets/keyframes.toml"),
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/presets/keyframes.toml"
+        )),
     ),
     (
         "servo-desk",
-        include_str!("../../../../../assets/presets/servo-desk.toml"),
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/presets/servo-desk.toml"
+        )),
     ),
     (
         "crank-rig",
-        include_str!("../../../../../assets/presets/crank-rig.toml"),
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/presets/crank-rig.toml"
+        )),
     ),
     (
         "dietmaier",
-        include_str!("../../../../../assets/presets/dietmaier.toml"),
+        include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/presets/dietmaier.toml"
+        )),
     ),
 ];
 

@@ -254,7 +254,7 @@ fn trajectory_errors_name_the_key() {
 #[test]
 fn a_rotary_scenario_reads_and_writes_back_the_same() {
     let text = std::fs::read_to_string(format!(
-        "{}/../../tests/cli/rotary.toml",
+        "{}/tests/fixtures/rotary.toml",
         env!("CARGO_MANIFEST_DIR")
     ))
     .unwrap_or_else(|e| panic!("{e}"));
@@ -276,7 +276,7 @@ fn a_rotary_scenario_reads_and_writes_back_the_same() {
 #[test]
 fn rate_limits_belong_to_their_actuator_kind() {
     let rotary = std::fs::read_to_string(format!(
-        "{}/../../tests/cli/rotary.toml",
+        "{}/tests/fixtures/rotary.toml",
         env!("CARGO_MANIFEST_DIR")
     ))
     .unwrap_or_else(|e| panic!("{e}"));

@@ -320,7 +320,7 @@ fn the_extremes_of_every_accepted_range_keep_every_number_finite() {
 #[test]
 fn actuator_settings_read_the_file_and_round_trip_on_a_rotary_scenario() {
     let text = std::fs::read_to_string(format!(
-        "{}/../../tests/cli/rotary.toml",
+        "{}/tests/fixtures/rotary.toml",
         env!("CARGO_MANIFEST_DIR")
     ))
     .unwrap_or_else(|e| panic!("{e}"));

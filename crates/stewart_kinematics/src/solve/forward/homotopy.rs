@@ -385,10 +385,16 @@ mod tests {
     /// P. Dietmaier's platform (1998) whose 40 assembly modes are all real: base joints,
     /// platform joints and leg lengths as published (the CLI tests' files).
     pub(crate) fn dietmaier() -> ([Vector3<f64>; 6], [Vector3<f64>; 6], [f64; 6]) {
-        let text = include_str!("../../../../../tests/cli/dietmaier.toml");
+        let text = include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/fixtures/dietmaier.toml"
+        ));
         let s = crate::io::scenario::Scenario::from_toml_str(text, "dietmaier.toml", None)
             .unwrap_or_else(|e| panic!("{e}"));
-        let legs = include_str!("../../../../../tests/cli/dietmaier_legs.csv");
+        let legs = include_str!(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/fixtures/dietmaier_legs.csv"
+        ));
         let row: Vec<f64> = legs
             .lines()
             .nth(1)

@@ -128,13 +128,14 @@ fn mutated_file(k: usize) -> &'static str {
 }
 
 fn preset_text(name: &str) -> Vec<u8> {
-    let root = env!("CARGO_MANIFEST_DIR");
-    let file = if name == "rotary" {
-        format!("{root}/../../tests/cli/rotary.toml")
-    } else {
-        format!("{root}/../../assets/presets/{name}.toml")
-    };
-    std::fs::read(file).unwrap_or_else(|e| panic!("{e}"))
+    if name == "rotary" {
+        let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/cli/rotary.toml");
+        return std::fs::read(file).unwrap_or_else(|e| panic!("{e}"));
+    }
+    stewart_kinematics::io::scenario::presets::text(name)
+        .unwrap_or_else(|| panic!("no preset {name}"))
+        .as_bytes()
+        .to_vec()
 }
 
 proptest! {

@@ -111,7 +111,8 @@ fn preset_and_scenario_file_give_the_same_result_and_out_writes_a_file() {
     let scenario = write(
         dir.path(),
         "paired.toml",
-        include_str!("../../assets/presets/paired.toml"),
+        stewart_kinematics::io::scenario::presets::text("paired")
+            .unwrap_or_else(|| panic!("no preset paired")),
     );
     let o = stewart(&["solve", "--scenario", &scenario]);
     assert_eq!(stdout(&o), from_preset);

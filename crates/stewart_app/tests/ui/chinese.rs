@@ -142,7 +142,7 @@ fn the_chinese_interface_looks_right() {
     h.snapshot_options(
         "chinese-interface",
         &SnapshotOptions::new()
-            .output_path("../../tests/snapshots/ui")
+            .output_path("tests/snapshots")
             .max_failed_pixels(8),
     );
 }

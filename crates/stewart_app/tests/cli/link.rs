@@ -411,12 +411,10 @@ fn the_device_simulator_reads_the_links_text_form() {
 #[test]
 fn a_dry_run_into_a_file_never_lands_on_an_input_and_leaves_nothing_half_written() {
     let dir = crate::tempdir();
-    let preset = format!(
-        "{}/../../assets/presets/servo-desk.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
     let scenario = dir.path().join("s.toml");
-    std::fs::copy(&preset, &scenario).unwrap_or_else(|e| panic!("{e}"));
+    let preset = stewart_kinematics::io::scenario::presets::text("servo-desk")
+        .unwrap_or_else(|| panic!("no preset servo-desk"));
+    std::fs::write(&scenario, preset).unwrap_or_else(|e| panic!("{e}"));
     let s = scenario.display().to_string();
     let o = stewart(&[
         "link",
@@ -434,7 +432,10 @@ fn a_dry_run_into_a_file_never_lands_on_an_input_and_leaves_nothing_half_written
         "{}",
         stderr(&o)
     );
-    assert_eq!(std::fs::read(&scenario).ok(), std::fs::read(&preset).ok());
+    assert_eq!(
+        std::fs::read(&scenario).ok(),
+        Some(preset.as_bytes().to_vec())
+    );
     let record = dir.path().join("record.txt");
     let r = record.display().to_string();
     let o = stewart(&[

@@ -2,7 +2,11 @@
 
 use crate::{stderr, stdout, stewart, tempdir, write};
 
-const PAIRED: &str = include_str!("../../assets/presets/paired.toml");
+/// The `paired` preset's text.
+fn paired() -> &'static str {
+    stewart_kinematics::io::scenario::presets::text("paired")
+        .unwrap_or_else(|| panic!("no preset paired"))
+}
 
 fn json(o: &std::process::Output) -> serde_json::Value {
     serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", stdout(o)))
@@ -66,7 +70,7 @@ fn a_leg_over_its_stroke_is_located_with_status_1() {
     let scenario = write(
         dir.path(),
         "short.toml",
-        &PAIRED.replace("leg_max = 1.30", "leg_max = 1.15"),
+        &paired().replace("leg_max = 1.30", "leg_max = 1.15"),
     );
     let o = stewart(&["check", "--scenario", &scenario]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
@@ -103,7 +107,7 @@ fn a_leg_over_its_stroke_is_located_with_status_1() {
 #[test]
 fn every_kind_of_limit_is_reported_when_passed() {
     let dir = tempdir();
-    let text = PAIRED
+    let text = paired()
         .replace("leg_speed_max_m_s = 0.5", "leg_speed_max_m_s = 0.1")
         .replace("leg_accel_max_m_s2 = 5.0", "leg_accel_max_m_s2 = 0.1")
         .replace("base_cone_deg = 60.0", "base_cone_deg = 45.0")
@@ -154,7 +158,7 @@ fn a_jump_in_a_pose_table_is_found_and_dated() {
         csv.push_str(&format!("{t},0,0,{z},0,0,0\n"));
     }
     write(dir.path(), "poses.csv", &csv);
-    let geometry = PAIRED
+    let geometry = paired()
         .split("[trajectory]")
         .next()
         .unwrap_or_default()
@@ -202,7 +206,7 @@ fn unusable_input_gives_status_2() {
     let limits = write(
         dir.path(),
         "l.toml",
-        &PAIRED.replace("base_cone_deg = 60.0", "base_cone_deg = 200.0"),
+        &paired().replace("base_cone_deg = 60.0", "base_cone_deg = 200.0"),
     );
     let o = stewart(&["check", "--scenario", &limits]);
     assert_eq!(o.status.code(), Some(2));
@@ -251,12 +255,9 @@ fn a_singular_pose_is_reported_in_words_not_as_inf() {
     // Found by the hostile suite: a keyframe moved to t = 1e6 s makes the spline sweep
     // through singular poses; the condition number there is infinite.
     let dir = tempdir();
-    let text = std::fs::read_to_string(format!(
-        "{}/../../assets/presets/keyframes.toml",
-        env!("CARGO_MANIFEST_DIR")
-    ))
-    .unwrap_or_else(|e| panic!("{e}"))
-    .replacen("t_s = 8.0", "t_s = 1e6", 1);
+    let text = stewart_kinematics::io::scenario::presets::text("keyframes")
+        .unwrap_or_else(|| panic!("no preset"))
+        .replacen("t_s = 8.0", "t_s = 1e6", 1);
     let file = write(dir.path(), "kf.toml", &text);
     let o = stewart(&["check", "--scenario", &file]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));

@@ -10,7 +10,7 @@ use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::{Pose, Scenario};
 
 /// Where the reference images live (relative to the app crate, where tests run).
-const OUTPUT: &str = "../../tests/snapshots/ui";
+const OUTPUT: &str = "tests/snapshots";
 
 fn options() -> SnapshotOptions {
     // The default per-pixel colour tolerance; a handful of pixels may differ between

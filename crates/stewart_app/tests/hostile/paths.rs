@@ -167,12 +167,10 @@ fn links_are_followed_and_kept() {
 fn an_input_is_never_an_output() {
     let dir = tempdir();
     let scenario = dir.path().join("s.toml");
-    std::fs::copy(
-        format!(
-            "{}/../../assets/presets/paired.toml",
-            env!("CARGO_MANIFEST_DIR")
-        ),
+    std::fs::write(
         &scenario,
+        stewart_kinematics::io::scenario::presets::text("paired")
+            .unwrap_or_else(|| panic!("no preset paired")),
     )
     .unwrap_or_else(|e| panic!("{e}"));
     let original = std::fs::read(&scenario).unwrap_or_default();
