@@ -12,6 +12,8 @@ use stewart_kinematics::{
 };
 
 use crate::cli::{CheckArgs, Format};
+use crate::i18n::Lang;
+use crate::i18n::words::{self, finding};
 use crate::long_work::{self, PROBE_SAMPLES};
 use crate::output;
 use crate::source;
@@ -165,13 +167,17 @@ fn text_report(scenario: &Scenario, report: &CheckReport) -> String {
         "Rigid body: largest change of a platform-joint distance {:.1e} m (tolerance {:.1e} m).",
         report.rigid_worst_deviation, scenario.checks.rigid_tolerance
     );
-    let _ = writeln!(s, "Architecture: {}", report.architecture.explanation());
+    let _ = writeln!(
+        s,
+        "Architecture: {}",
+        words::architecture(Lang::En, &report.architecture)
+    );
     if report.is_clean() {
         let _ = writeln!(s, "No problem found.");
     } else {
         let _ = writeln!(s, "{} problem(s) found:", report.findings.len());
         for f in &report.findings {
-            let _ = writeln!(s, "  - {f}");
+            let _ = writeln!(s, "  - {}", finding(Lang::En, f));
         }
     }
     s

@@ -16,6 +16,7 @@ use stewart_kinematics::{
 
 use crate::cli::FkArgs;
 use crate::csv_io::{CsvText, read_input};
+use crate::i18n::{Lang, words};
 use crate::output;
 use crate::source;
 
@@ -47,7 +48,7 @@ pub fn run(args: &FkArgs) -> Result<ExitCode> {
         return Err(anyhow!(
             "scenario `{}`: the pose is not determined by the leg lengths, so forward kinematics has no answer. {}",
             scenario.name,
-            architecture.explanation()
+            words::architecture(Lang::En, &architecture)
         ));
     }
 

@@ -210,7 +210,7 @@ pub fn architecture(lang: Lang, report: &ArchitectureReport) -> String {
     )
 }
 
-/// The twist the legs cannot resist, in words (the core's `describe_weakest_twist`).
+/// The twist the legs cannot resist, in words: its dominant rotation and translation directions and the rotation's share.
 fn weakest_twist(lang: Lang, report: &ArchitectureReport) -> String {
     let w = report.home.weakest_twist;
     let part = |v: [f64; 3], key: &str| {

@@ -68,34 +68,6 @@ impl Conditioning {
     pub fn inverse_condition(&self) -> f64 {
         self.condition_number.map_or(0.0, |c| 1.0 / c)
     }
-
-    /// The weakest twist in words: its dominant translation and rotation directions.
-    pub fn describe_weakest_twist(&self) -> String {
-        let t = Vector3::new(
-            self.weakest_twist[0],
-            self.weakest_twist[1],
-            self.weakest_twist[2],
-        );
-        let r = Vector3::new(
-            self.weakest_twist[3],
-            self.weakest_twist[4],
-            self.weakest_twist[5],
-        );
-        let part = |v: &Vector3<f64>, what: &str| {
-            if v.norm() < 0.05 {
-                None
-            } else {
-                let d = v.normalize();
-                Some(format!("{what} along ({:.2}, {:.2}, {:.2})", d.x, d.y, d.z))
-            }
-        };
-        let parts: Vec<String> = [part(&r, "rotation"), part(&t, "translation")]
-            .into_iter()
-            .flatten()
-            .collect();
-        let share = r.norm_squared() * 100.0;
-        format!("{} ({share:.0}% rotation)", parts.join(" combined with "))
-    }
 }
 
 impl Geometry {

@@ -13,7 +13,6 @@
 
 pub mod collision;
 pub mod cones;
-mod describe;
 pub mod document;
 pub mod jumps;
 pub mod rates;
