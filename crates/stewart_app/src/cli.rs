@@ -288,6 +288,25 @@ pub struct SettingsArgs {
     /// `--as-coordinates`.
     #[arg(long, value_name = "FILE", requires = "as_coordinates")]
     pub out: Option<PathBuf>,
+    /// The table for people, or the settings reference in Markdown (every key by file
+    /// section: meaning, unit, slider and accepted ranges, default; the user guide's
+    /// docs/guide/settings.md is this, for the seed).
+    #[arg(
+        long,
+        value_enum,
+        default_value = "text",
+        conflicts_with = "as_coordinates"
+    )]
+    pub format: SettingsFormat,
+}
+
+/// Forms of `stewart settings`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SettingsFormat {
+    /// A table for the terminal, with the scenario's values.
+    Text,
+    /// The settings reference, in Markdown.
+    Markdown,
 }
 
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset),

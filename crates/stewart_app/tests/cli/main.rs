@@ -7,6 +7,7 @@ mod check;
 mod chinese;
 mod cue;
 mod design;
+mod docs;
 mod dynamics;
 mod export;
 mod firmware;
