@@ -13,13 +13,12 @@ use std::net::UdpSocket;
 use std::time::Instant;
 
 use criterion::{Criterion, criterion_group};
-use stewart_app::hardware;
+use stewart_app::link_plan::LinkPlan;
 use stewart_app::live_cue::LiveCue;
 use stewart_kinematics::Scenario;
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
-use stewart_link::generator::Sample;
-use stewart_link::safety::TargetError;
-use stewart_link::sender::{SenderConfig, Stream, Target, time_each};
+use stewart_link::sender::{Stream, time_each};
+use stewart_link::target::{Sample, Target, TargetError};
 use stewart_link::transport::Udp;
 
 /// The seed platform with its stroke, the default washout and the limiter on.
@@ -64,16 +63,9 @@ fn stream(scenario: &Scenario, target: Target) -> Stream {
         let mut buf = [0u8; 64];
         while peer.recv(&mut buf).is_ok() {}
     });
-    let home = hardware::home_values(scenario).unwrap_or_else(|e| panic!("{e}"));
-    let config = SenderConfig {
-        rate_hz: 1000.0,
-        format: hardware::format(&scenario.link),
-        map: hardware::channel_map(scenario).unwrap_or_else(|e| panic!("{e}")),
-        supervisor: hardware::supervisor(scenario, home),
-        arm_at_start: true,
-        stop_after: None,
-        record: None,
-    };
+    let plan = LinkPlan::new(scenario).unwrap_or_else(|e| panic!("{e}"));
+    let mut config = plan.sender_config(true, None);
+    config.rate_hz = 1000.0;
     let udp = Udp::connect(&address).unwrap_or_else(|e| panic!("{e}"));
     let mut stream = Stream::new(config, target, Box::new(udp));
     for k in 1..=1000 {
@@ -115,7 +107,12 @@ fn live_target(scenario: &Scenario) -> (Target, impl FnMut(usize)) {
             .send_to(line.as_bytes(), to)
             .unwrap_or_else(|e| panic!("{e}"));
     };
-    (live.into_target(scenario), send)
+    (
+        LinkPlan::new(scenario)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .cue_target(live),
+        send,
+    )
 }
 
 /// The mean, 99th percentile and worst of `n` single calls of `tick(k)`, each after an

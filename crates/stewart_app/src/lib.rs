@@ -5,7 +5,7 @@ pub mod cli;
 pub mod commands;
 pub mod csv_io;
 pub mod export;
-pub mod hardware;
+
 pub mod i18n;
 pub mod interrupt;
 pub mod link_plan;

@@ -16,9 +16,6 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use anyhow::{Context as _, Result, bail};
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_kinematics::{Pose, Scenario};
-use stewart_link::generator::Sample;
-use stewart_link::safety::TargetError;
-use stewart_link::sender::Target;
 use stewart_link::vehicle::{self, VehicleSample};
 
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
@@ -232,18 +229,6 @@ impl LiveCue {
             self.cueing.set_fade(1.0);
             self.pose = self.cueing.advance(0.0);
         }
-    }
-
-    /// The link's target: the actuator values of the pose at each tick.
-    pub fn into_target(mut self, scenario: &Scenario) -> Target {
-        let geometry = scenario.geometry.clone();
-        Box::new(move |t| {
-            let pose = self.tick(t);
-            geometry
-                .actuator_values_at(&pose)
-                .map(Sample::At)
-                .map_err(TargetError::source)
-        })
     }
 }
 

@@ -24,13 +24,16 @@ pub fn height_share(text: &str, view: [f32; 2]) -> f32 {
 }
 
 /// The readout's lines in `lang`: `title`, the time (`None`: the manual pose), the pose,
-/// the six actuator values (or why the pose is out of reach).
+/// the six actuator values (or why the pose is out of reach). `solved`: the values when
+/// they are known already (a frame's: `SceneFrame::actuator_values`), so the pose is not
+/// solved twice; else (or when a servo cannot reach, to say which) they are solved here.
 pub fn lines(
     lang: Lang,
     title: &str,
     geometry: &Geometry,
     time: Option<f64>,
     pose: &Pose,
+    solved: Option<[f64; 6]>,
 ) -> String {
     let [x, y, z, roll, pitch, yaw] = pose.to_coordinates();
     let mut out = Vec::new();
@@ -54,7 +57,7 @@ pub fn lines(
     // Four decimals of a metre, two of a degree.
     let decimals = if q.unit == "m" { 4 } else { 2 };
     let unit = if q.unit == "m" { " m" } else { q.unit };
-    match geometry.actuator_values_at(pose) {
+    match solved.map_or_else(|| geometry.actuator_values_at(pose), Ok) {
         Ok(v) => {
             for half in [0..3, 3..6] {
                 let row: Vec<String> = half
@@ -115,7 +118,7 @@ mod tests {
     fn the_readout_says_time_pose_and_the_six_values() {
         let s = Scenario::seed();
         let pose = Pose::from_xyz_rpy_deg([0.01, -0.02, 0.85], [1.0, -2.0, 3.0]);
-        let text = lines(Lang::En, "seed", &s.geometry, Some(1.5), &pose);
+        let text = lines(Lang::En, "seed", &s.geometry, Some(1.5), &pose, None);
         let rows: Vec<&str> = text.lines().collect();
         assert_eq!(rows[0], "seed");
         assert_eq!(rows[1], "t = 1.500 s");
@@ -129,12 +132,38 @@ mod tests {
         assert!(rows[5].starts_with("L4 ") && rows[5].ends_with(" m"));
         let servo = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
         let home = servo.geometry.home_pose();
-        let text = lines(Lang::En, "", &servo.geometry, None, &home);
+        let text = lines(Lang::En, "", &servo.geometry, None, &home, None);
         assert!(text.starts_with("manual pose\n"), "{text}");
         assert!(text.contains("θ1 ") && text.ends_with('°'), "{text}");
         // Out of reach: the reason instead of numbers.
         let far = Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [0.0; 3]);
-        let text = lines(Lang::En, "", &servo.geometry, Some(0.0), &far);
+        let text = lines(Lang::En, "", &servo.geometry, Some(0.0), &far, None);
         assert!(!text.contains("θ1"), "{text}");
+    }
+
+    #[test]
+    fn a_frames_values_read_as_the_values_solved_here() {
+        // The export hands the readout the values its picture was solved with: the same
+        // text, to the last digit, for legs and servos, in reach and out of it.
+        let seed = Scenario::seed();
+        let servo = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+        let cases = [
+            (
+                &seed,
+                Pose::from_xyz_rpy_deg([0.01, -0.02, 0.85], [1.0, -2.0, 3.0]),
+            ),
+            (&servo, servo.geometry.home_pose()),
+            (&servo, Pose::from_xyz_rpy_deg([0.0, 0.0, 1.0], [0.0; 3])),
+        ];
+        for (s, pose) in cases {
+            let g = &s.geometry;
+            let frame = g.scene_frame(&pose, Vec::new());
+            let solved = frame.actuator_values();
+            assert_eq!(solved.is_some(), g.actuator_values_at(&pose).is_ok());
+            assert_eq!(
+                lines(Lang::En, "", g, Some(1.0), &pose, solved),
+                lines(Lang::En, "", g, Some(1.0), &pose, None)
+            );
+        }
     }
 }

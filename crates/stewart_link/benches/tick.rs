@@ -11,9 +11,9 @@ use std::net::UdpSocket;
 
 use criterion::{Criterion, criterion_group};
 use stewart_link::channels::{ChannelMap, Output};
-use stewart_link::generator::{Motion, Sample};
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::{Format, SenderConfig, Stream, Target, time_each};
+use stewart_link::sender::{Format, SenderConfig, Stream, time_each};
+use stewart_link::target::{Motion, Sample, Target};
 use stewart_link::transport::Udp;
 
 /// Linear legs (metres) with the `paired` preset's limits and a jerk limit.

@@ -11,6 +11,8 @@
 //! - [`safety`]: the DISARMED → ARMING → ARMED → STOPPING state machine that decides,
 //!   tick by tick, what may be sent;
 //! - [`sender`]: the real-time thread: absolute deadlines, the supervisor, the wire;
+//! - [`target`]: what a stream follows — the target of stream time, its samples (values,
+//!   with velocity and acceleration when known), and why a tick has none;
 //! - [`telemetry`]: the controller's answers matched to the set-points (commanded and
 //!   measured side by side, latency, unanswered and stale counts);
 //! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches;
@@ -27,6 +29,7 @@ pub mod frame;
 pub mod generator;
 pub mod safety;
 pub mod sender;
+pub mod target;
 pub mod telemetry;
 pub mod text;
 pub mod transport;

@@ -235,8 +235,14 @@ impl<'a> FrameSource<'a> {
         let top = match (&job.readout, job.times.first()) {
             (Some(title), Some(&t)) => {
                 let pose = scenario.motion.trajectory.pose_at(t);
-                let text =
-                    crate::readout::lines(job.lang, title, &scenario.geometry, Some(t), &pose);
+                let text = crate::readout::lines(
+                    job.lang,
+                    title,
+                    &scenario.geometry,
+                    Some(t),
+                    &pose,
+                    None,
+                );
                 crate::readout::height_share(&text, [view_width as f32, job.height as f32])
             }
             _ => 0.0,
@@ -278,9 +284,12 @@ impl<'a> FrameSource<'a> {
         // The path moves into the scene and back: no copy per frame.
         let scene = g.scene_frame(&pose, std::mem::take(&mut self.path));
         let mut list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
+        // The readout shows the values the picture was solved with: one inverse
+        // kinematics per frame.
+        let solved = scene.actuator_values();
         self.path = scene.path;
         if let Some(title) = &self.job.readout {
-            let text = crate::readout::lines(self.job.lang, title, g, Some(t), &pose);
+            let text = crate::readout::lines(self.job.lang, title, g, Some(t), &pose, solved);
             list.texts.push(crate::readout::item(text, &self.job.theme));
         }
         let view = self.offscreen.render(

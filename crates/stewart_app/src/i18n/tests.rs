@@ -421,7 +421,14 @@ fn no_widget_takes_its_words_from_the_code() {
 #[test]
 fn the_readout_speaks_chinese() {
     let s = Scenario::seed();
-    let text = crate::readout::lines(Lang::Zh, "", &s.geometry, None, &s.geometry.home_pose());
+    let text = crate::readout::lines(
+        Lang::Zh,
+        "",
+        &s.geometry,
+        None,
+        &s.geometry.home_pose(),
+        None,
+    );
     assert!(text.contains("手动位姿") && text.contains("横滚") && text.contains("偏航"));
 }
 

@@ -4,16 +4,23 @@
 //! line (`stewart link`) and the viewer's Link panel both start their senders from a plan,
 //! so the same scenario sends the same thing from either.
 
+use std::sync::{Arc, Mutex, PoisonError};
+
 use anyhow::Result;
 use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
-use stewart_link::generator::{Motion, Sample};
-use stewart_link::safety::{Supervisor, TargetError};
-use stewart_link::sender::{SenderConfig, Target};
+use stewart_link::safety::Supervisor;
+use stewart_link::sender::SenderConfig;
+use stewart_link::target::{Motion, Sample, Target, TargetError};
 use stewart_link::transport::Transport;
 
-use crate::hardware;
+use crate::live_cue::LiveCue;
+
+mod follow;
+mod hardware;
+
+pub use follow::{Drive, Followed};
 
 /// The step of the central differences that give the target's velocity and acceleration,
 /// seconds (their error is ~h⁴ of the motion's fifth and sixth derivatives, their rounding
@@ -119,6 +126,42 @@ impl LinkPlan {
                 Ok(Sample::Moving(Motion::at_rest(values)))
             }
             Some(local) => moving_sample(&geometry, |s| trajectory.pose_at(start + s), local, 1.0),
+        })
+    }
+
+    /// A live cue as a target: the actuator values of the cued pose at each tick (the cue
+    /// reads its datagrams and steps the washout on the sender's thread).
+    pub fn cue_target(&self, mut live: LiveCue) -> Target {
+        let geometry = self.geometry.clone();
+        Box::new(move |t| {
+            let pose = live.tick(t);
+            geometry
+                .actuator_values_at(&pose)
+                .map(Sample::At)
+                .map_err(TargetError::source)
+        })
+    }
+
+    /// What a stream that follows the viewer samples, starting with `drive` (the viewer
+    /// changes it as playback goes on).
+    pub fn followed(&self, looping: bool, drive: Drive) -> Arc<Mutex<Followed>> {
+        Arc::new(Mutex::new(Followed::new(
+            self.geometry.clone(),
+            self.trajectory.clone(),
+            self.span,
+            looping,
+            drive,
+        )))
+    }
+
+    /// The target of a stream that follows the viewer: whatever `followed` holds at each
+    /// tick.
+    pub fn followed_target(followed: Arc<Mutex<Followed>>) -> Target {
+        Box::new(move |_t| {
+            followed
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .sample()
         })
     }
 

@@ -5,22 +5,19 @@
 //! stream. Dropping the link stops the stream first (e-stop, then home or hold as the
 //! table says, then disarmed).
 
-use crate::live_cue::{CueCounts, LiveCue};
 use std::collections::VecDeque;
 use std::io::Write;
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
-use std::time::Instant;
 
 use stewart_kinematics::model::link_settings::LinkTransport;
-use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
-use stewart_link::generator::Sample;
-use stewart_link::safety::TargetError;
+use stewart_kinematics::{Pose, Scenario};
 use stewart_link::sender::{Command, Sender, Status};
 use stewart_link::telemetry::Row;
 use stewart_link::transport::{Record, Transport};
 
 use crate::i18n::Lang;
-use crate::link_plan::{LinkPlan, moving_sample};
+use crate::link_plan::{Drive, Followed, LinkPlan};
+use crate::live_cue::{CueCounts, LiveCue};
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
@@ -30,70 +27,10 @@ pub const TRACKING_WINDOW_S: f64 = 10.0;
 /// the sender's clock, seconds.
 const RESYNC_S: f64 = 0.05;
 
-/// What drives the platform, as the sender sees it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Drive {
-    /// The trajectory playing: at `anchor` it was at playback time `time`, moving at `speed`.
-    Playing {
-        /// Playback time at the anchor, seconds.
-        time: f64,
-        /// Wall-clock instant of the anchor.
-        anchor: Instant,
-        /// Playback speed.
-        speed: f64,
-    },
-    /// A pose held (paused playback, manual mode, teleoperation).
-    Still(Pose),
-}
-
-/// Everything the sender's target needs, shared with its thread.
-struct Source {
-    geometry: Geometry,
-    trajectory: Trajectory,
-    start: f64,
-    duration: f64,
-    looping: bool,
-    drive: Drive,
-}
-
-impl Source {
-    /// The target now: a still pose's values, or the playing trajectory's with their
-    /// velocity and acceleration on the wall clock (at rest past either end).
-    fn sample(&self) -> Result<Sample, TargetError> {
-        match self.drive {
-            Drive::Still(pose) => self
-                .geometry
-                .actuator_values_at(&pose)
-                .map(Sample::At)
-                .map_err(TargetError::source),
-            Drive::Playing {
-                time,
-                anchor,
-                speed,
-            } => {
-                let t = time + anchor.elapsed().as_secs_f64() * speed;
-                let (t, speed) = if self.looping && self.duration > 0.0 {
-                    (t.rem_euclid(self.duration), speed)
-                } else if (0.0..self.duration).contains(&t) {
-                    (t, speed)
-                } else {
-                    (t.clamp(0.0, self.duration), 0.0)
-                };
-                moving_sample(
-                    &self.geometry,
-                    |tau| self.trajectory.pose_at(self.start + tau),
-                    t,
-                    speed,
-                )
-            }
-        }
-    }
-}
-
 /// A running stream.
 struct Running {
     sender: Sender,
-    source: Arc<Mutex<Source>>,
+    source: Arc<Mutex<Followed>>,
     described: String,
     stopping: bool,
     /// What the stream was built from (for where an emergency stop left the platform).
@@ -192,30 +129,14 @@ impl LiveLink {
         self.tracking.clear();
         self.measured_pose = None;
         self.commanded = None;
-        let source = Arc::new(Mutex::new(Source {
-            geometry: plan.geometry.clone(),
-            trajectory: plan.trajectory.clone(),
-            start: plan.span.0,
-            duration: plan.span.1,
-            looping,
-            drive,
-        }));
-        let shared = Arc::clone(&source);
-        let (target, cue): (stewart_link::sender::Target, _) = match &self.cue_input {
+        let source = plan.followed(looping, drive);
+        let (target, cue): (stewart_link::target::Target, _) = match &self.cue_input {
             Some(address) => {
                 let live = LiveCue::bind(&format!("udp:{address}"), scenario).map_err(fail)?;
                 let counts = live.counts();
-                (live.into_target(scenario), Some(counts))
+                (plan.cue_target(live), Some(counts))
             }
-            None => (
-                Box::new(move |_t: f64| {
-                    shared
-                        .lock()
-                        .unwrap_or_else(PoisonError::into_inner)
-                        .sample()
-                }),
-                None,
-            ),
+            None => (LinkPlan::followed_target(Arc::clone(&source)), None),
         };
         // Where the frames go, in the reader's words (a UDP address reads the same in both).
         let described = match scenario.link.transport {
@@ -226,7 +147,7 @@ impl LiveLink {
             ),
             LinkTransport::Udp => transport.describe(),
         };
-        let sender = Sender::spawn(config, target, transport)?;
+        let sender = Sender::spawn(config, target, transport).map_err(|e| e.to_string())?;
         self.running = Some(Running {
             sender,
             source,
@@ -479,6 +400,7 @@ impl Drop for LiveLink {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::time::Instant;
     use stewart_link::safety::LinkState;
 
     fn wait_for(link: &LiveLink, what: impl Fn(&Status) -> bool) -> Status {

@@ -20,11 +20,12 @@ use super::document::Document;
 use super::editor::Editor;
 use super::exports::Exports;
 use super::files::Files;
-use super::live_link::{Drive, LiveLink};
+use super::live_link::LiveLink;
 use super::look::Look;
 use super::playback::{MotionMode, Playback};
 use super::teleop::{self, Command, PadState, Rates};
 use crate::export::frames::default_camera;
+use crate::link_plan::Drive;
 
 /// Everything the viewer shows.
 pub struct ViewerState {
@@ -219,6 +220,7 @@ impl ViewerState {
                 &self.doc.scenario().geometry,
                 time,
                 &self.pose(),
+                None,
             );
             let scale = if self.look.presentation {
                 crate::viewer::panels::PRESENTATION_TEXT_SCALE

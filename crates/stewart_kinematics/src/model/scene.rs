@@ -75,3 +75,20 @@ pub struct SceneFrame {
     /// The path traced by the platform centre so far (may be empty).
     pub path: Vec<Vector3<f64>>,
 }
+
+impl SceneFrame {
+    /// The six actuator values this frame shows — leg lengths in metres, or servo model
+    /// angles in degrees — or `None` when a servo cannot reach its joint.
+    pub fn actuator_values(&self) -> Option<[f64; 6]> {
+        match &self.servos {
+            None => Some(self.legs.map(|l| l.length)),
+            Some(servos) => {
+                let mut values = [0.0; 6];
+                for (value, servo) in values.iter_mut().zip(servos) {
+                    *value = servo.angle_deg?;
+                }
+                Some(values)
+            }
+        }
+    }
+}

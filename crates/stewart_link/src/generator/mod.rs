@@ -38,46 +38,7 @@ use rsruckig::prelude::{
 };
 use thiserror::Error;
 
-/// Position, velocity and acceleration of the six actuators, natural units.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Motion {
-    /// Positions (metres or degrees).
-    pub position: [f64; 6],
-    /// Velocities, units per second.
-    pub velocity: [f64; 6],
-    /// Accelerations, units per second squared.
-    pub acceleration: [f64; 6],
-}
-
-impl Motion {
-    /// At rest at `position`.
-    pub fn at_rest(position: [f64; 6]) -> Self {
-        Self {
-            position,
-            ..Self::default()
-        }
-    }
-}
-
-/// The target at one tick: its positions, with their velocity and acceleration when the
-/// source knows them (a trajectory, differentiated), else estimated from the last targets.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Sample {
-    /// Positions only (a teleoperated pose, a live signal).
-    At([f64; 6]),
-    /// Positions with velocity and acceleration.
-    Moving(Motion),
-}
-
-impl Sample {
-    /// The positions.
-    pub fn position(&self) -> &[f64; 6] {
-        match self {
-            Sample::At(p) => p,
-            Sample::Moving(m) => &m.position,
-        }
-    }
-}
+use crate::target::{Motion, Sample};
 
 /// Whether `m` needs more than twice the speed or acceleration of `bounds` on any actuator:
 /// such a target jumped (a step of teleoperation, a seek, a wrap of a looping motion).
@@ -136,6 +97,11 @@ pub struct GeneratorError {
     pub result: String,
 }
 
+/// The solver could not make a plan: its result code, in words.
+#[derive(Clone, Debug, PartialEq, Error)]
+#[error("{0}")]
+struct PlanFailed(String);
+
 /// How a tick ended, per actuator.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Reached(pub [bool; 6]);
@@ -176,7 +142,7 @@ impl Planner {
         now: State,
         goal: State,
         minimum: Option<f64>,
-    ) -> Result<(State, f64), String> {
+    ) -> Result<(State, f64), PlanFailed> {
         self.tracker.delta_time = dt;
         self.tracker.reset();
         // Without a jerk limit the plan is second order: accelerations may jump, and the
@@ -206,7 +172,7 @@ impl Planner {
             {
                 Ok((next, self.output.trajectory.get_duration()))
             }
-            other => Err(format!("{other:?}")),
+            other => Err(PlanFailed(format!("{other:?}"))),
         }
     }
 }
@@ -244,7 +210,7 @@ impl Axis {
         now: State,
         goal: State,
         ahead: Option<f64>,
-    ) -> Result<(State, f64), String> {
+    ) -> Result<(State, f64), PlanFailed> {
         let tau = ahead.unwrap_or(0.0);
         let (p, v, a) = goal;
         // Where the target will be `tau` after the step, were its acceleration constant.
@@ -271,7 +237,7 @@ impl Axis {
     /// in the actuator's own coordinates towards that candidate, so it keeps the limits
     /// whatever the candidate. `None` when the target's own motion leaves no margin (it
     /// moves beyond the limits).
-    fn converge(&mut self, dt: f64, now: State, goal: State) -> Result<Option<State>, String> {
+    fn converge(&mut self, dt: f64, now: State, goal: State) -> Result<Option<State>, PlanFailed> {
         // A target at rest is reached time-optimally by the plain plan.
         let Some(prev) = self.last_goal.filter(|&prev| prev != goal || goal.1 != 0.0) else {
             return Ok(None);
@@ -301,7 +267,7 @@ impl Axis {
     /// meets the target where it will be (the earliest meeting the limits allow, found by
     /// doubling and bisection on the meeting time), or — a target that runs away faster
     /// than the limits — straight after it.
-    fn step(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), String> {
+    fn step(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), PlanFailed> {
         let result = self.follow(dt, now, goal);
         self.last_goal = Some(goal);
         result
@@ -313,7 +279,7 @@ impl Axis {
     /// Should that fail too (a gap of a few nanometres with a little speed left), the
     /// actuator brakes to rest as fast as the limits allow (Ruckig's velocity interface:
     /// no position target, so no edge case), and the next ticks start from rest.
-    fn degenerate(&mut self, dt: f64, now: State, goal: State) -> Result<(State, f64), String> {
+    fn degenerate(&mut self, dt: f64, now: State, goal: State) -> Result<(State, f64), PlanFailed> {
         let input = &mut self.own.input;
         let (accel, jerk) = (input.max_acceleration[0], input.max_jerk[0]);
         input.max_acceleration[0] = accel * (1.0 - 1e-6);
@@ -330,7 +296,7 @@ impl Axis {
         braked
     }
 
-    fn follow(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), String> {
+    fn follow(&mut self, dt: f64, now: State, goal: State) -> Result<(State, bool), PlanFailed> {
         // The solver may fail on a hair-thin case (a plan of exactly one tick): each stage
         // below then gives way to the next, and only a target no plan reaches fails.
         let plain = self.plan(dt, now, goal, None);
@@ -492,9 +458,9 @@ impl Generator {
                 target.velocity[k],
                 target.acceleration[k],
             );
-            let (next, at_target) = axis.step(dt, now, goal).map_err(|result| GeneratorError {
+            let (next, at_target) = axis.step(dt, now, goal).map_err(|failed| GeneratorError {
                 actuator: k + 1,
-                result,
+                result: failed.0,
             })?;
             self.state.position[k] = next.0;
             self.state.velocity[k] = next.1;

@@ -36,61 +36,9 @@
 //!
 //! Nothing here sends anything: the caller encodes what [`Supervisor::tick`] returns.
 
-use thiserror::Error;
+use crate::generator::{Bounds, Generator, TargetHistory};
 
-use crate::generator::{Bounds, Generator, Motion, Sample, TargetHistory};
-
-/// Why a tick has no sound target: the supervisor holds (or, arming, comes to rest) on it.
-#[derive(Clone, Debug, Error)]
-pub enum TargetError {
-    /// The motion has no values at this time (a servo cannot reach its joint, …): the
-    /// source's own error, kept for callers to inspect.
-    #[error(transparent)]
-    Source(std::sync::Arc<dyn std::error::Error + Send + Sync>),
-    /// A value that is NaN or infinite.
-    #[error("actuator {actuator} has no value ({value})")]
-    NotFinite {
-        /// From 1.
-        actuator: usize,
-        /// The value.
-        value: f64,
-    },
-    /// A value outside the actuator's range.
-    #[error("actuator {actuator} would go to {value:.6}, outside its range {min} … {max}")]
-    OutOfRange {
-        /// From 1.
-        actuator: usize,
-        /// The value.
-        value: f64,
-        /// The range's lower end.
-        min: f64,
-        /// Its upper end.
-        max: f64,
-    },
-}
-
-impl TargetError {
-    /// The source's error `e` (why the motion has no values now).
-    pub fn source(e: impl std::error::Error + Send + Sync + 'static) -> Self {
-        TargetError::Source(std::sync::Arc::new(e))
-    }
-}
-
-impl From<&str> for TargetError {
-    fn from(why: &str) -> Self {
-        TargetError::Source(std::sync::Arc::from(Box::<
-            dyn std::error::Error + Send + Sync,
-        >::from(why)))
-    }
-}
-
-impl From<String> for TargetError {
-    fn from(why: String) -> Self {
-        TargetError::Source(std::sync::Arc::from(Box::<
-            dyn std::error::Error + Send + Sync,
-        >::from(why)))
-    }
-}
+use crate::target::{Motion, Sample, TargetError};
 
 /// The state of the link.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

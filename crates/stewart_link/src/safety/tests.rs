@@ -6,7 +6,7 @@
 use proptest::prelude::*;
 
 use super::*;
-use crate::generator::{Motion, Sample};
+use crate::target::{Motion, Sample};
 
 const HOME: [f64; 6] = [0.0; 6];
 

@@ -8,10 +8,12 @@ use std::sync::{Arc, Mutex, PoisonError};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use thiserror::Error;
+
 use crate::channels::ChannelMap;
 use crate::frame::{Decoder, Flags, Frame, FrameKind};
-use crate::generator::Sample;
 use crate::safety::{LinkState, Supervisor};
+use crate::target::Target;
 use crate::telemetry::{Matcher, Row, TelemetryStats};
 use crate::text;
 use crate::transport::Transport;
@@ -187,15 +189,22 @@ pub struct Sender {
     handle: JoinHandle<Summary>,
 }
 
-/// The target at a stream time: six actuator values in natural units (with their velocity
-/// and acceleration when the source knows them), or why there is none.
-pub type Target = Box<dyn FnMut(f64) -> Result<Sample, crate::safety::TargetError> + Send>;
-
 /// How long disarmed frames follow an emergency stop before the stream ends, seconds.
 pub const EMERGENCY_TAIL_S: f64 = 0.25;
 
 /// The lowest and highest rates, hertz.
 pub const RATES_HZ: (f64, f64) = (10.0, 1000.0);
+
+/// Why a sender did not start.
+#[derive(Debug, Error)]
+pub enum SpawnError {
+    /// The rate (hertz) is outside [`RATES_HZ`].
+    #[error("the rate must be between {lo} and {hi} Hz, got {0}", lo = RATES_HZ.0, hi = RATES_HZ.1)]
+    Rate(f64),
+    /// The system refused the thread.
+    #[error("cannot start the sender thread: {0}")]
+    Thread(std::io::Error),
+}
 
 impl Sender {
     /// Start the thread. Refuses a rate outside [`RATES_HZ`].
@@ -203,13 +212,10 @@ impl Sender {
         config: SenderConfig,
         target: Target,
         transport: Box<dyn Transport>,
-    ) -> Result<Sender, String> {
+    ) -> Result<Sender, SpawnError> {
         let (lo, hi) = RATES_HZ;
         if !(lo..=hi).contains(&config.rate_hz) {
-            return Err(format!(
-                "the rate must be between {lo} and {hi} Hz, got {}",
-                config.rate_hz
-            ));
+            return Err(SpawnError::Rate(config.rate_hz));
         }
         let (commands, inbox) = mpsc::channel();
         let status = Arc::new(Mutex::new(Status {
@@ -232,7 +238,7 @@ impl Sender {
         let handle = std::thread::Builder::new()
             .name("stewart-link".to_owned())
             .spawn(move || run(config, target, transport, &inbox, &shared))
-            .map_err(|e| format!("cannot start the sender thread: {e}"))?;
+            .map_err(SpawnError::Thread)?;
         Ok(Sender {
             commands,
             status,

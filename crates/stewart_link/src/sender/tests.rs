@@ -6,8 +6,8 @@ use std::sync::{Arc, Mutex};
 use super::*;
 use crate::channels::Output;
 use crate::frame::{Decoder, Unit};
-use crate::generator::Sample;
 use crate::safety::{ActuatorLimits, StopMode};
+use crate::target::Sample;
 use crate::transport::TransportError;
 
 /// What a capture received: (stream time, bytes) per send.
@@ -202,6 +202,7 @@ fn rates_outside_10_to_1000_hz_are_refused() {
         let target: Target = Box::new(|_t| Ok(Sample::At([0.0; 6])));
         let e = Sender::spawn(config(rate, None), target, Box::new(transport))
             .err()
+            .map(|e| e.to_string())
             .unwrap_or_default();
         assert!(
             e.starts_with("the rate must be between 10 and 1000 Hz"),

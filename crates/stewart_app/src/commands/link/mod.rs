@@ -48,14 +48,14 @@ pub fn run(args: &LinkArgs) -> Result<ExitCode> {
     let (target, cue_counts) = match live {
         Some(live) => {
             let counts = live.counts();
-            (live.into_target(&scenario), Some(counts))
+            (plan.cue_target(live), Some(counts))
         }
         None => {
             plan_arming(&plan, args.repeat, &mut config);
             (plan.trajectory_target(args.repeat), None)
         }
     };
-    let sender = Sender::spawn(config, target, transport).map_err(|e| anyhow!(e))?;
+    let sender = Sender::spawn(config, target, transport)?;
     let stops_seen = supervise(&sender, stream_for);
     let summary = sender.join();
     if PIPE_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
@@ -293,8 +293,7 @@ fn bench(args: &LinkArgs) -> Result<ExitCode> {
             plan.sender_config(true, Some(seconds)),
             plan.trajectory_target(true),
             plan.open_device()?,
-        )
-        .map_err(|e| anyhow!(e))?;
+        )?;
         let summary = sender.join();
         let received = counter
             .join()
