@@ -11,8 +11,8 @@ use std::io::Write as _;
 use crate::cli::ViewArgs;
 use crate::i18n::{Lang, fonts};
 use crate::source;
-use crate::viewer::session::{self, Session};
-use crate::viewer::window_size::{self, WindowSize};
+use crate::viewer::state::session::{self, Session};
+use crate::viewer::window::window_size::{self, WindowSize};
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
 
 /// Run the command.

@@ -7,8 +7,8 @@
 use egui_kittest::kittest::{NodeT, Queryable};
 use egui_kittest::{Harness, SnapshotOptions};
 use stewart_app::i18n::Lang;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::Scenario;
 
 /// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
@@ -26,7 +26,8 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     state.look.lang = Lang::Zh;
     state.look.expand_panels = true;
     // The Workspace panel's numbers and slice too (coarse: a debug build).
-    state.workspace = stewart_app::viewer::workspace::WorkspaceTool::with_resolutions(16, 48);
+    state.workspace =
+        stewart_app::viewer::tools::workspace::WorkspaceTool::with_resolutions(16, 48);
     state.workspace.show = true;
     let mut h = crate::harness_with(state, 4200.0);
     h.state_mut().settle_workspace();
@@ -151,7 +152,7 @@ fn the_chinese_interface_looks_right() {
 fn the_file_dialog_and_help_read_in_chinese() {
     let mut state = ViewerState::new(Scenario::seed());
     state.look.lang = Lang::Zh;
-    state.choose_file(stewart_app::viewer::files::Purpose::Open);
+    state.choose_file(stewart_app::viewer::state::files::Purpose::Open);
     state.look.help = true;
     // The dialog's fields are egui_file's own, without accessible names.
     let mut h = crate::built_harness(state, egui::vec2(1280.0, 900.0), false);

@@ -151,7 +151,7 @@ fn the_plot_switches_to_the_actuator_forces() {
 fn the_modes_of_a_singular_pose_say_which_directions_have_no_stiffness() {
     // The seed's staggered hexagons are singular at home: three directions are free.
     let mut h = crate::tall_harness("seed", 2600.0);
-    h.state_mut().playback.mode = stewart_app::viewer::playback::MotionMode::Manual;
+    h.state_mut().playback.mode = stewart_app::viewer::state::playback::MotionMode::Manual;
     h.run();
     h.get_by_label("Dynamics and modes").click();
     h.run();

@@ -6,8 +6,8 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_app::i18n::Lang;
-use stewart_app::viewer::exports::ExportKind;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::exports::ExportKind;
 
 use crate::tall_harness;
 

@@ -114,8 +114,11 @@ fn a_saved_scenario_opens_as_it_was() {
 #[test]
 fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-    std::fs::write(stewart_app::viewer::session::file_in(dir.path()), "{}")
-        .unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(
+        stewart_app::viewer::state::session::file_in(dir.path()),
+        "{}",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     let mut state = stewart_app::viewer::ViewerState::new(
         Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
     );
@@ -126,7 +129,7 @@ fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
     let mut h = crate::harness_with(state, 800.0);
     h.get_by_label("Reset to defaults").click();
     h.run();
-    assert!(!stewart_app::viewer::session::file_in(dir.path()).exists());
+    assert!(!stewart_app::viewer::state::session::file_in(dir.path()).exists());
     let look = &h.state().look;
     assert!(!look.light_theme && look.labels);
     assert_eq!(look.camera.azimuth_deg, 135.0);

@@ -1,8 +1,8 @@
 //! The Legs panel's distance-to-singularity gauge.
 
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::{Pose, Scenario};
 
 #[test]

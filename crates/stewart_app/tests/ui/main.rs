@@ -23,8 +23,8 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_app::viewer::panels::viewer_ui;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::Scenario;
 
 /// The viewer on a preset, 1280×800 logical pixels.
@@ -68,7 +68,7 @@ pub fn built_harness(
         .with_max_steps(8)
         .with_accessibility_check(accessibility_check)
         .with_context_setup(|ctx| {
-            stewart_app::viewer::fonts::install(ctx);
+            stewart_app::viewer::window::fonts::install(ctx);
         })
         // Each frame starts from a settled report (the check runs on a background job;
         // its arrival changes what the panels show): frames, and so where a click lands,

@@ -2,7 +2,7 @@
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::playback::MotionMode;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::io::settings;
 use stewart_kinematics::solve::forward::assembly::same_placement;
 

@@ -2,8 +2,8 @@
 //! the core's ranges at the pose, and they follow the pose.
 
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Pose, Scenario};
 

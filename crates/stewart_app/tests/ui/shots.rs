@@ -4,8 +4,8 @@
 use std::time::{Duration, Instant};
 
 use egui_kittest::Harness;
-use stewart_app::viewer::shots::{ShotKind, ShotScale};
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::window::shots::{ShotKind, ShotScale};
 
 use crate::harness;
 

@@ -5,8 +5,8 @@
 //! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui snapshots` re-blesses them.
 
 use egui_kittest::SnapshotOptions;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
+use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::{Pose, Scenario};
 
 /// Where the reference images live (relative to the app crate, where tests run).

@@ -5,8 +5,8 @@
 use std::time::{Duration, Instant};
 
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::playback::MotionMode;
-use stewart_app::viewer::teleop::PadState;
+use stewart_app::viewer::state::playback::MotionMode;
+use stewart_app::viewer::state::teleop::PadState;
 use stewart_link::safety::LinkState;
 
 use crate::tall_harness;

@@ -5,9 +5,9 @@
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_app::i18n::Lang;
-use stewart_app::viewer::playback::MotionMode;
 use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::workspace::{WorkspaceTool, format_volume};
+use stewart_app::viewer::state::playback::MotionMode;
+use stewart_app::viewer::tools::workspace::{WorkspaceTool, format_volume};
 use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Angle, Pose, Scenario};

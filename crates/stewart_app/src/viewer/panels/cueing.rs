@@ -13,8 +13,8 @@ use super::side_plot;
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::Lang;
 use crate::live_cue::{CueCounts, TracePoint};
-use crate::viewer::editor::Editor;
-use crate::viewer::vehicle::VehicleSource;
+use crate::viewer::state::editor::Editor;
+use crate::viewer::state::vehicle::VehicleSource;
 
 /// Height of each plot, points.
 const PLOT_HEIGHT: f32 = 200.0;

@@ -6,8 +6,8 @@ use stewart_kinematics::io::settings;
 
 use super::widgets::{ERROR, OK, WARNING};
 use crate::i18n::Lang;
-use crate::viewer::design::DesignTool;
-use crate::viewer::document::Document;
+use crate::viewer::state::document::Document;
+use crate::viewer::tools::design::DesignTool;
 
 /// The panel: the tool and the document it writes limits into, nothing else of the
 /// viewer's state.

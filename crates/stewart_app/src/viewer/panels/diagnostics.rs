@@ -8,7 +8,7 @@ use stewart_kinematics::model::layout::Layout;
 
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::words;
-use crate::viewer::editor::Editor;
+use crate::viewer::state::editor::Editor;
 
 /// Findings listed before "and N more".
 const LISTED: usize = 12;

@@ -10,8 +10,8 @@ use stewart_kinematics::io::settings::{self, Group, Unit};
 use stewart_kinematics::{Pose, Scenario};
 
 use super::widgets::{WARNING, edit_error, setting_slider};
-use crate::viewer::editor::Editor;
-use crate::viewer::mode_view::{ModeView, NoModes, SHOWN_HZ};
+use crate::viewer::state::editor::Editor;
+use crate::viewer::tools::mode_view::{ModeView, NoModes, SHOWN_HZ};
 
 /// A payload in proportion to the platform: a solid disc of the platform's size, 50 kg
 /// on the seed's 0.6 m platform.

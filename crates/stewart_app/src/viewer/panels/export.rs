@@ -8,10 +8,10 @@ use stewart_render::{Overlays, Theme};
 use super::widgets;
 use crate::export::video::{FramePlan, RateNote, VideoRequest, rate_in_words};
 use crate::i18n::Lang;
-use crate::viewer::export_job::{ExportJob, ExportWork, SurfaceView};
-use crate::viewer::exports::ExportKind;
-use crate::viewer::files::{Overwrite, Purpose, WriteAction, absolute};
 use crate::viewer::state::ViewerState;
+use crate::viewer::state::export_job::{ExportJob, ExportWork, SurfaceView};
+use crate::viewer::state::exports::ExportKind;
+use crate::viewer::state::files::{Overwrite, Purpose, WriteAction, absolute};
 
 /// Frame sizes offered.
 const SIZES: [(u32, u32); 7] = [
@@ -140,7 +140,7 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
             .on_hover_text(t.tr("export.show_folder_tip"))
             .clicked()
     {
-        state.exports.status = crate::viewer::reveal::show_in_folder(&written)
+        state.exports.status = crate::viewer::window::reveal::show_in_folder(&written)
             .err()
             .map(Err)
             .or(state.exports.status.take());
@@ -292,7 +292,12 @@ fn title_error(title: &str) -> Option<String> {
 }
 
 /// *Only part of the motion*: from and to, seconds from its start, within `duration`.
-fn span(ui: &mut egui::Ui, form: &mut crate::viewer::exports::ExportForm, duration: f64, t: Lang) {
+fn span(
+    ui: &mut egui::Ui,
+    form: &mut crate::viewer::state::exports::ExportForm,
+    duration: f64,
+    t: Lang,
+) {
     let mut part = form.span_s.is_some();
     ui.horizontal(|ui| {
         if ui

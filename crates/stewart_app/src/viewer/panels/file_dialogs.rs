@@ -2,8 +2,8 @@
 //! window (a scenario `.toml` or a pose table `.csv`; a note says what a hovering file
 //! would do).
 
-use crate::viewer::files::{Purpose, WriteAction};
 use crate::viewer::state::ViewerState;
+use crate::viewer::state::files::{Purpose, WriteAction};
 
 /// Everything about files that floats over the window.
 pub fn show(ctx: &egui::Context, state: &mut ViewerState) {

@@ -8,7 +8,7 @@ use stewart_kinematics::io::settings::{
 use stewart_kinematics::{model::geometry::Plate, model::layout::Layout};
 
 use super::widgets::{edit_error, setting_slider};
-use crate::viewer::editor::Editor;
+use crate::viewer::state::editor::Editor;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, ed: &mut Editor) {

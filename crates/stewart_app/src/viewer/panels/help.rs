@@ -2,7 +2,7 @@
 //! the language shown.
 
 use crate::i18n::Lang;
-use crate::viewer::teleop::KEYS;
+use crate::viewer::state::teleop::KEYS;
 
 /// The keys and gestures, each with the locale key of what it does.
 const ROWS: [(&str, &str); 21] = [

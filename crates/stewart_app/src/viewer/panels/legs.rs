@@ -9,7 +9,7 @@ use super::widgets::ERROR;
 use crate::i18n::Lang;
 use stewart_kinematics::{Pose, Scenario};
 
-use crate::viewer::look::Look;
+use crate::viewer::state::look::Look;
 
 /// The panel: the actuators of `scenario` at `pose`.
 pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {

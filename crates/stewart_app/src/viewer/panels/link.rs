@@ -14,9 +14,9 @@ use stewart_link::transport::list_ports;
 
 use super::widgets;
 use crate::i18n::Lang;
-use crate::viewer::document::Document;
-use crate::viewer::live_link::LiveLink;
 use crate::viewer::state::ViewerState;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::live_link::LiveLink;
 
 /// The colour of each state: grey, amber, green, red.
 pub fn state_colour(state: LinkState) -> Color32 {

@@ -21,11 +21,11 @@ mod view;
 mod widgets;
 mod workspace;
 
-use super::editor::Editor;
-use super::files::Purpose;
-use super::playback::MotionMode;
-use super::state::ViewerState;
-use super::teleop;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::editor::Editor;
+use crate::viewer::state::files::Purpose;
+use crate::viewer::state::playback::MotionMode;
+use crate::viewer::state::teleop;
 
 /// The smallest text the viewer draws, points (body text is 12.5).
 pub const SMALLEST_TEXT: f32 = 11.0;
@@ -264,7 +264,7 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
         });
 }
 
-/// Manual mode: the keys held and the gamepad move the pose (see [`crate::viewer::teleop`]).
+/// Manual mode: the keys held and the gamepad move the pose (see [`crate::viewer::state::teleop`]).
 fn teleoperate(ui: &mut egui::Ui, state: &mut ViewerState) {
     if state.playback.mode != MotionMode::Manual {
         state.teleop.moving = false;

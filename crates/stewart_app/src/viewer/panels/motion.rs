@@ -11,11 +11,11 @@ use stewart_kinematics::model::trajectory::{
 
 use super::widgets::{self, edit_error, setting_slider};
 use crate::i18n::{Lang, words};
-use crate::viewer::assembly::NoMode;
-use crate::viewer::editor::Editor;
-use crate::viewer::playback::MotionMode;
 use crate::viewer::state::ViewerState;
-use crate::viewer::teleop;
+use crate::viewer::state::editor::Editor;
+use crate::viewer::state::playback::MotionMode;
+use crate::viewer::state::teleop;
+use crate::viewer::tools::assembly::NoMode;
 
 /// The manual pose's sliders: name, unit and reach either side of home (z: of the home
 /// height), in the pose's coordinate order x, y, z, roll, pitch, yaw.

@@ -3,7 +3,7 @@
 use stewart_kinematics::Sampling;
 
 use crate::i18n::Lang;
-use crate::viewer::playback::Playback;
+use crate::viewer::state::playback::Playback;
 
 /// Play or pause the trajectory (the toolbar's first button; Space does the same).
 pub(super) fn play_button(ui: &mut egui::Ui, playback: &mut Playback, t: Lang) {

@@ -7,10 +7,10 @@ use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine
 use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::words;
-use crate::viewer::document::Document;
-use crate::viewer::history::History;
-use crate::viewer::look::Look;
-use crate::viewer::playback::Playback;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::history::History;
+use crate::viewer::state::look::Look;
+use crate::viewer::state::playback::Playback;
 
 /// Leg `i`'s colour, as in exported plots.
 pub fn leg_colour(i: usize) -> Color32 {

@@ -8,7 +8,7 @@ use stewart_kinematics::Pose;
 use super::widgets::{ERROR, OK, UNREACHABLE, range_bar};
 use crate::i18n::Lang;
 use crate::i18n::words;
-use crate::viewer::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG, OrientationReach};
+use crate::viewer::tools::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG, OrientationReach};
 
 /// The panel in language `t`, at `pose`, open at first when `open`; `reach` is asked only
 /// while the panel is open.

@@ -7,8 +7,8 @@ use stewart_kinematics::io::scenario::presets;
 
 use super::widgets;
 use crate::i18n::Lang;
-use crate::viewer::files::Purpose;
 use crate::viewer::state::ViewerState;
+use crate::viewer::state::files::Purpose;
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
@@ -164,7 +164,9 @@ fn folder_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
             for file in here {
                 let name = file.display().to_string();
-                let full = crate::viewer::files::absolute(&file).display().to_string();
+                let full = crate::viewer::state::files::absolute(&file)
+                    .display()
+                    .to_string();
                 if ui
                     .selectable_label(false, &name)
                     .on_hover_text(full)

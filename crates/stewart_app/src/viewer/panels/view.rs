@@ -6,7 +6,7 @@ use egui::Color32;
 use stewart_render::OrbitCamera;
 
 use crate::viewer::state::ViewerState;
-use crate::viewer::view3d::SceneCallback;
+use crate::viewer::window::view3d::SceneCallback;
 
 /// Standard views: the label's key, azimuth and elevation (MATLAB's `view(az, el)`).
 const VIEWS: [(&str, f32, f32); 4] = [
@@ -18,7 +18,7 @@ const VIEWS: [(&str, f32, f32); 4] = [
 
 /// The Screenshot menu: what, how large, background; Save (or F12 with these choices).
 fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
-    use crate::viewer::shots::{ShotKind, ShotScale};
+    use crate::viewer::window::shots::{ShotKind, ShotScale};
     let t = state.look.lang;
     let shots = &mut state.shots;
     ui.radio_value(&mut shots.kind, ShotKind::View, t.tr("view.shot_view"));
@@ -215,7 +215,7 @@ fn status_line(ui: &mut egui::Ui, rect: egui::Rect, state: &ViewerState) {
 
 /// The frame-time readout: mean and 95th percentile of the last frames, and how the 3D
 /// view is drawn.
-fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::quality::Quality) -> String {
+fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::window::quality::Quality) -> String {
     let how = t.tr(quality.words_key());
     match quality.frame_times() {
         Some((mean, p95)) => t.fmt(
@@ -231,7 +231,7 @@ fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::quality::Quality) 
 }
 
 /// The drawing settings (Advanced): the frame-time readout and what it says.
-pub fn drawing(ui: &mut egui::Ui, look: &mut crate::viewer::look::Look) {
+pub fn drawing(ui: &mut egui::Ui, look: &mut crate::viewer::state::look::Look) {
     let t = look.lang;
     egui::CollapsingHeader::new(t.tr("quality.advanced"))
         .default_open(look.expand_panels)

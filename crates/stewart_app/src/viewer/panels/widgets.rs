@@ -7,9 +7,9 @@ use stewart_kinematics::model::actuator::ActuatorKind;
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
-use crate::viewer::document::Document;
-use crate::viewer::editor::Editor;
-use crate::viewer::files::Status;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::editor::Editor;
+use crate::viewer::state::files::Status;
 
 /// Red for refusals and errors.
 pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);

@@ -9,7 +9,7 @@ use stewart_render::colormap;
 use super::widgets::{ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
-use crate::viewer::workspace::{WorkspaceTool, format_volume};
+use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
 
 /// The panel.
 pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {

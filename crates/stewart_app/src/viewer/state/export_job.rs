@@ -1,4 +1,4 @@
-//! Exports started from the viewer, run on a background job ([`super::job`]) so the window
+//! Exports started from the viewer, run on a background job ([`crate::viewer::tools::job`]) so the window
 //! stays live: progress is read from the exporter's progress bar (the one the command line
 //! draws), cancel sets the job's flag, which the exporter checks.
 
@@ -14,7 +14,6 @@ use stewart_kinematics::analysis::workspace::{
 };
 use stewart_kinematics::{Angle, Scenario};
 
-use super::job::{Job, JobFailed};
 use crate::export::plot::plot_file;
 use crate::export::ply::{PlyHeader, ply};
 use crate::export::tables::{solve_table, trajectory_place, trajectory_table, write_solved_csv};
@@ -22,6 +21,7 @@ use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_w
 use crate::export::workspace_plot::figure_file;
 use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
+use crate::viewer::tools::job::{Job, JobFailed};
 
 /// What to export.
 #[derive(Clone, Debug)]
@@ -60,7 +60,7 @@ pub struct SurfaceView {
     /// Where.
     pub path: PathBuf,
     /// The workspace to draw.
-    pub request: crate::viewer::workspace::Request,
+    pub request: crate::viewer::tools::workspace::Request,
     /// The scene without analysis.
     pub list: stewart_render::DrawList,
     /// The camera.
@@ -283,9 +283,9 @@ fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<Stri
             }
             control.cancel.store(true, Ordering::Relaxed);
         });
-        let outcome = crate::viewer::workspace::compute(
+        let outcome = crate::viewer::tools::workspace::compute(
             &view.request,
-            crate::viewer::workspace::FINE_COLUMNS,
+            crate::viewer::tools::workspace::FINE_COLUMNS,
             160,
             &control,
         );
@@ -302,7 +302,7 @@ fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<Stri
     if let Some(slice) = outcome.slice {
         list.analysis.push(slice.mesh);
     }
-    crate::viewer::shots::render_view(
+    crate::viewer::window::shots::render_view(
         &list,
         view.camera,
         view.theme,
@@ -335,7 +335,7 @@ fn workspace(
         &scenario.geometry,
         &scenario.limits,
         orientation,
-        crate::viewer::workspace::FINE_COLUMNS,
+        crate::viewer::tools::workspace::FINE_COLUMNS,
         &control,
     )?;
     if ws.extent.is_none() {

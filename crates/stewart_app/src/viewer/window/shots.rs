@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
-use super::files::Status;
-use super::job::Job;
 use crate::i18n::Lang;
+use crate::viewer::state::files::Status;
+use crate::viewer::tools::job::Job;
 
 /// What to capture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -46,7 +46,7 @@ struct Running {
 pub struct LiveLink {
     running: Option<Running>,
     /// The outcome of the last connect or stream (shown until the next).
-    pub status: crate::viewer::files::Status,
+    pub status: crate::viewer::state::files::Status,
     /// The last lines of a dry run (newest last).
     recent: Arc<Mutex<VecDeque<String>>>,
     /// The language of the status messages (the viewer's).

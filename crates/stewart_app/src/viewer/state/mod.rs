@@ -7,6 +7,23 @@
 //! ranges), and either replaces the scenario and rebuilds everything derived from it, or
 //! is refused with its reason and changes nothing.
 
+pub mod derived;
+pub mod document;
+pub mod editor;
+pub mod export_job;
+pub mod exports;
+mod file_actions;
+pub mod files;
+pub mod gamepad;
+pub mod history;
+pub mod live_link;
+pub mod look;
+pub mod playback;
+pub mod session;
+pub mod teleop;
+pub mod undo;
+pub mod vehicle;
+
 use nalgebra::Vector3;
 
 use stewart_kinematics::io::settings::{Group, Setting};
@@ -16,16 +33,16 @@ use stewart_kinematics::{
 };
 use stewart_render::{OrbitCamera, Theme};
 
-use super::document::Document;
-use super::editor::Editor;
-use super::exports::Exports;
-use super::files::Files;
-use super::live_link::LiveLink;
-use super::look::Look;
-use super::playback::{MotionMode, Playback};
-use super::teleop::{self, Command, PadState, Rates};
 use crate::export::frames::default_camera;
 use crate::link_plan::Drive;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::editor::Editor;
+use crate::viewer::state::exports::Exports;
+use crate::viewer::state::files::Files;
+use crate::viewer::state::live_link::LiveLink;
+use crate::viewer::state::look::Look;
+use crate::viewer::state::playback::{MotionMode, Playback};
+use crate::viewer::state::teleop::{Command, PadState, Rates};
 
 /// Everything the viewer shows.
 pub struct ViewerState {
@@ -48,22 +65,22 @@ pub struct ViewerState {
     /// What is remembered between runs.
     pub session: SessionState,
     /// Screenshots.
-    pub shots: super::shots::Shots,
+    pub shots: crate::viewer::window::shots::Shots,
     /// The stroke an envelope of poses needs.
-    pub design: super::design::DesignTool,
+    pub design: crate::viewer::tools::design::DesignTool,
     /// The workspace surface and the conditioning slice in the 3D view.
-    pub workspace: super::workspace::WorkspaceTool,
+    pub workspace: crate::viewer::tools::workspace::WorkspaceTool,
     /// The assembly modes of the legs shown, stepped through one by one.
-    pub assembly: super::assembly::AssemblyBrowser,
+    pub assembly: crate::viewer::tools::assembly::AssemblyBrowser,
     /// Why the last step to another assembly mode found none.
-    pub assembly_error: Option<super::assembly::NoMode>,
+    pub assembly_error: Option<crate::viewer::tools::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
-    reach: super::reach::ReachCache,
+    reach: crate::viewer::tools::reach::ReachCache,
     /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
-    pub modes: super::mode_view::ModeView,
+    pub modes: crate::viewer::tools::mode_view::ModeView,
     /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
     /// frame times.
-    pub quality: super::quality::Quality,
+    pub quality: crate::viewer::window::quality::Quality,
     /// Ctrl+Q was pressed: the window closes as by its close button.
     pub quit_asked: bool,
 }
@@ -120,14 +137,14 @@ impl ViewerState {
                 origin: format!("preset {}", scenario.name),
                 ..SessionState::default()
             },
-            shots: super::shots::Shots::default(),
-            design: super::design::DesignTool::default(),
-            workspace: super::workspace::WorkspaceTool::default(),
-            assembly: super::assembly::AssemblyBrowser::default(),
+            shots: crate::viewer::window::shots::Shots::default(),
+            design: crate::viewer::tools::design::DesignTool::default(),
+            workspace: crate::viewer::tools::workspace::WorkspaceTool::default(),
+            assembly: crate::viewer::tools::assembly::AssemblyBrowser::default(),
             assembly_error: None,
-            reach: super::reach::ReachCache::default(),
-            modes: super::mode_view::ModeView::default(),
-            quality: super::quality::Quality::default(),
+            reach: crate::viewer::tools::reach::ReachCache::default(),
+            modes: crate::viewer::tools::mode_view::ModeView::default(),
+            quality: crate::viewer::window::quality::Quality::default(),
             quit_asked: false,
             doc: Document::new(scenario),
         }
@@ -237,7 +254,7 @@ impl ViewerState {
     /// screen on a thread of its own, or the whole window at the next frame. Playback goes
     /// on; the outcome shows in the menu.
     pub fn take_screenshot(&mut self) {
-        use super::shots::{ShotKind, next_path};
+        use crate::viewer::window::shots::{ShotKind, next_path};
         let path = next_path(&self.shots.folder, &self.doc.scenario().name);
         match self.shots.kind {
             ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
@@ -332,7 +349,7 @@ impl ViewerState {
     /// (the scenario stays); nothing is saved at exit.
     pub fn reset_to_defaults(&mut self) {
         if let Some(folder) = &self.session.folder
-            && let Err(e) = super::session::forget(folder)
+            && let Err(e) = session::forget(folder)
         {
             self.session.note = Some(e);
         }
@@ -441,7 +458,7 @@ impl ViewerState {
     }
 
     /// Roll, pitch, yaw alone and the roll–pitch map at the pose shown.
-    pub fn orientation_reach(&mut self) -> super::reach::OrientationReach {
+    pub fn orientation_reach(&mut self) -> crate::viewer::tools::reach::OrientationReach {
         let pose = self.pose();
         self.reach
             .orientation(
@@ -470,7 +487,7 @@ impl ViewerState {
     }
 
     /// What the workspace is computed for now.
-    pub fn workspace_request(&self) -> super::workspace::Request {
+    pub fn workspace_request(&self) -> crate::viewer::tools::workspace::Request {
         let w = &self.workspace;
         let slice_at = w.show_slice.then(|| {
             if w.slice_follows {
@@ -479,7 +496,7 @@ impl ViewerState {
                 w.slice_height
             }
         });
-        super::workspace::Request {
+        crate::viewer::tools::workspace::Request {
             geometry: self.doc.scenario().geometry.clone(),
             limits: self.doc.scenario().limits,
             orientation: self.workspace_orientation(),

@@ -3,7 +3,7 @@
 
 use stewart_kinematics::Pose;
 
-use super::history::History;
+use crate::viewer::state::history::History;
 
 /// What drives the platform.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -5,7 +5,7 @@
 use stewart_kinematics::analysis::design::{DesignReport, Envelope, envelope_needs};
 use stewart_kinematics::{Geometry, Pose};
 
-use super::job::Job;
+use crate::viewer::tools::job::Job;
 
 /// The envelope, the search running, the last outcome.
 pub struct DesignTool {

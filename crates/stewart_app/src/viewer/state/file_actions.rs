@@ -9,8 +9,10 @@ use stewart_kinematics::Scenario;
 use stewart_kinematics::io::settings::Group;
 use stewart_kinematics::model::trajectory::PoseTable;
 
-use super::files::{OpenKind, Overwrite, Picker, Purpose, WriteAction, absolute, folder_of};
-use super::state::ViewerState;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::files::{
+    OpenKind, Overwrite, Picker, Purpose, WriteAction, absolute, folder_of,
+};
 
 impl ViewerState {
     /// Open whatever `path` is: a scenario (`.toml`) replaces the scenario, a pose table

@@ -1,9 +1,9 @@
 //! The Export panel's side of the viewer: what to write and how, the export running on
 //! its own thread, and the outcome of the last one.
 
-use super::export_job::ExportJob;
-use super::files::Status;
 use crate::i18n::Lang;
+use crate::viewer::state::export_job::ExportJob;
+use crate::viewer::state::files::Status;
 
 /// What the export panel will write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

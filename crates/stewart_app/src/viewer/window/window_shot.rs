@@ -8,13 +8,13 @@ use egui::epaint::textures::TexturesDelta;
 use stewart_render::readback::Readback;
 
 /// MSAA samples of the window and of its shots on a GPU (the 3D pipelines are built to
-/// match); a software rasteriser's window has one (see [`super::quality`]).
+/// match); a software rasteriser's window has one (see [`crate::viewer::window::quality`]).
 pub const SAMPLES: u32 = 4;
 
 /// The pixel density factor that makes a window `width` physical pixels wide come out at
 /// `scale`: 1 (as on screen), 2, or 3840 pixels wide for 4K.
-pub fn factor(scale: super::shots::ShotScale, width: u32) -> f32 {
-    use super::shots::ShotScale;
+pub fn factor(scale: crate::viewer::window::shots::ShotScale, width: u32) -> f32 {
+    use crate::viewer::window::shots::ShotScale;
     match scale {
         ShotScale::One => 1.0,
         ShotScale::Two => 2.0,

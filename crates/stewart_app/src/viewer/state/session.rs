@@ -11,8 +11,8 @@ use serde::{Deserialize, Serialize};
 use stewart_kinematics::Scenario;
 use stewart_render::OrbitCamera;
 
-use super::look::Look;
 use crate::i18n::Lang;
+use crate::viewer::state::look::Look;
 
 /// The session file's format; a file of another version is ignored.
 pub const VERSION: u32 = 1;
@@ -52,7 +52,7 @@ pub struct Session {
     pub recent: Vec<String>,
     /// The export window's choices (absent in older sessions).
     #[serde(default)]
-    pub export: Option<super::exports::ExportForm>,
+    pub export: Option<crate::viewer::state::exports::ExportForm>,
 }
 
 impl Session {
@@ -318,7 +318,7 @@ mod tests {
         look.lang = Lang::Zh;
         let mut session = Session::capture(&scenario, "preset paired", &look, [1500, 900], None);
         session.recent = vec!["/tmp/a.toml".to_owned(), "/tmp/b.csv".to_owned()];
-        session.export = Some(super::super::exports::ExportForm {
+        session.export = Some(crate::viewer::state::exports::ExportForm {
             span_s: Some([1.0, 2.5]),
             title: "Defence, figure 3".to_owned(),
             size: (1024, 768),

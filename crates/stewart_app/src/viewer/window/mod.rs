@@ -1,6 +1,14 @@
 //! The window and its loop: winit 0.30, egui-winit for input, egui-wgpu's painter for the
 //! surface; the 3D view shares its device. Redraws continuously only while playing.
 
+pub mod fonts;
+pub mod quality;
+pub mod reveal;
+pub mod shots;
+pub mod view3d;
+pub mod window_shot;
+pub mod window_size;
+
 use std::io::Write as _;
 use std::num::NonZeroU32;
 use std::path::PathBuf;
@@ -16,9 +24,9 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::{Window, WindowId};
 
 use super::panels::viewer_ui;
-use super::shots::ShotScale;
-use super::state::ViewerState;
-use super::window_shot::SAMPLES;
+use crate::viewer::state::ViewerState;
+use crate::viewer::window::shots::ShotScale;
+use crate::viewer::window::window_shot::SAMPLES;
 
 /// How the viewer runs.
 #[derive(Clone, Debug)]
@@ -32,7 +40,7 @@ pub struct ViewOptions {
     /// Print frame-time statistics when the window closes.
     pub stats: bool,
     /// Where the window's size comes from.
-    pub size: super::window_size::WindowSize,
+    pub size: window_size::WindowSize,
 }
 
 /// A shot of the window at another scale: its path, the scale, and whether it ends a
@@ -101,7 +109,7 @@ struct App {
     /// session at exit asks the window system nothing: it may be gone).
     logical_size: [u32; 2],
     /// Gamepads for teleoperation.
-    gamepads: super::gamepad::Gamepads,
+    gamepads: crate::viewer::state::gamepad::Gamepads,
     /// Whether the window was last put in full screen (F11).
     fullscreen: bool,
     /// Whether the last frame left something moving (playback, an export, the link).
@@ -129,7 +137,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         .panels
         .take()
         .and_then(|text| ron::from_str::<egui::Memory>(&text).ok());
-    super::fonts::start(&ctx, memory);
+    fonts::start(&ctx, memory);
     let mut app = App {
         state,
         ctx,
@@ -144,7 +152,7 @@ pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         times: FrameTimes::default(),
         repaint_at: None,
         logical_size: [0, 0],
-        gamepads: super::gamepad::Gamepads::new(),
+        gamepads: crate::viewer::state::gamepad::Gamepads::new(),
         fullscreen: false,
         was_busy: false,
     };
@@ -273,11 +281,12 @@ impl App {
             render_state.target_format,
             samples,
         );
-        render_state.renderer.write().callback_resources.insert(
-            super::view3d::SceneResources::new(&render_state.device, renderer),
-        );
-        self.state.quality =
-            super::quality::Quality::new(samples == 1, super::quality::Policy::from_env());
+        render_state
+            .renderer
+            .write()
+            .callback_resources
+            .insert(view3d::SceneResources::new(&render_state.device, renderer));
+        self.state.quality = quality::Quality::new(samples == 1, quality::Policy::from_env());
         self.state.quality.window_clears = true;
         let srgb = render_state.target_format.is_srgb();
         self.state.look.renderer_missing = None;
@@ -310,7 +319,10 @@ impl App {
         let dt = if self.options.screenshot.is_some() {
             1.0 / 60.0
         } else {
-            super::playback::frame_step((now - self.last).as_secs_f64(), self.was_busy)
+            crate::viewer::state::playback::frame_step(
+                (now - self.last).as_secs_f64(),
+                self.was_busy,
+            )
         };
         self.last = now;
         self.state.advance(dt);
@@ -493,7 +505,7 @@ impl App {
             return;
         };
         let panels = self.ctx.memory(|m| ron::to_string(m).ok());
-        let mut saved = super::session::Session::capture(
+        let mut saved = crate::viewer::state::session::Session::capture(
             self.state.scenario(),
             &session.origin,
             &self.state.look,
@@ -504,13 +516,13 @@ impl App {
             .map(|p| p.display().to_string())
             .collect();
         saved.export = Some(self.state.exports.form.clone());
-        if let Err(e) = super::session::save(folder, &saved) {
+        if let Err(e) = crate::viewer::state::session::save(folder, &saved) {
             let _ = writeln!(std::io::stderr(), "viewer: the session was not saved: {e}");
         }
     }
 
     /// The whole window at `scale` (2×, 4K): the UI laid out again in the same points at
-    /// that pixel density and drawn off screen (see [`super::window_shot`]).
+    /// that pixel density and drawn off screen (see [`crate::viewer::window::window_shot`]).
     fn scaled_window_shot(
         &mut self,
         path: &std::path::Path,
@@ -523,7 +535,7 @@ impl App {
             return Err("no GPU device for the window".to_owned());
         };
         let native = open.window.scale_factor() as f32;
-        let k = super::window_shot::factor(scale, open.window.inner_size().width);
+        let k = window_shot::factor(scale, open.window.inner_size().width);
         let rect = self.ctx.content_rect();
         let mut raw = egui::RawInput {
             screen_rect: Some(rect),
@@ -546,7 +558,7 @@ impl App {
             (rect.height() * ppp).round() as u32,
         ];
         let clear = clear_colour(&self.ctx, open.srgb);
-        let image = super::window_shot::render(
+        let image = window_shot::render(
             &rs,
             open.samples,
             &primitives,

@@ -7,9 +7,9 @@
 use stewart_kinematics::io::settings::{Group, Setting, TrajectoryChoice};
 use stewart_kinematics::{Scenario, model::layout::Layout};
 
-use super::document::Document;
-use super::playback::Playback;
 use crate::i18n::Lang;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::playback::Playback;
 
 /// The parts of the viewer a scenario edit touches.
 pub struct Editor<'a> {

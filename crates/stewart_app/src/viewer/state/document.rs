@@ -6,7 +6,7 @@
 //! scenario as loaded or saved last tells whether titles say "edited".
 //!
 //! The viewer's other parts (playback, camera, link) react to a replaced scenario in
-//! [`super::state::ViewerState`]; panels that only edit the scenario can take this part
+//! [`crate::viewer::state::ViewerState`]; panels that only edit the scenario can take this part
 //! alone.
 
 use stewart_kinematics::analysis::sound_layout;
@@ -14,10 +14,10 @@ use stewart_kinematics::io::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
 
-use super::derived::Derived;
-use super::undo::Undo;
-use super::vehicle::VehicleSource;
 use crate::i18n::Lang;
+use crate::viewer::state::derived::Derived;
+use crate::viewer::state::undo::Undo;
+use crate::viewer::state::vehicle::VehicleSource;
 
 /// The scenario, its undo history, what is derived from it, and the last refused edit.
 pub struct Document {
@@ -248,7 +248,7 @@ impl Document {
     }
 
     /// Times and leg lengths for the plot (thinned to at most
-    /// [`super::derived::PLOT_SAMPLES`]).
+    /// [`crate::viewer::state::derived::PLOT_SAMPLES`]).
     pub fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
         (&self.derived.times, &self.derived.lengths)
     }

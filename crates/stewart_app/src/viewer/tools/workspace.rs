@@ -2,7 +2,7 @@
 //! view as a translucent surface, and a horizontal slice coloured by the condition
 //! number, both computed off the UI thread.
 //!
-//! A background job ([`super::job`]) takes the newest request only. A request is computed
+//! A background job ([`crate::viewer::tools::job`]) takes the newest request only. A request is computed
 //! coarse first (its result shown at once), then refined; a newer request — a slider
 //! dragged on — cancels the refinement in flight (the job's flag is the
 //! [`WorkspaceControl`]'s) and the job moves to the newest. The UI thread only swaps in
@@ -19,7 +19,7 @@ use stewart_kinematics::analysis::workspace::{Plane, WorkspaceControl, Workspace
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;
 
-use super::job::Job;
+use crate::viewer::tools::job::Job;
 
 /// Columns a side of the first, coarse workspace.
 pub const COARSE_COLUMNS: usize = 128;

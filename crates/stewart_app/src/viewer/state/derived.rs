@@ -3,7 +3,7 @@
 //! [`Derived::rebuild`] (the state's one edit path calls it), so it never falls out of
 //! step; the report is computed off the UI thread, newest request first.
 
-use super::job::Job;
+use crate::viewer::tools::job::Job;
 use nalgebra::Vector3;
 use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::analysis::sound_layout;

@@ -1,9 +1,9 @@
 //! The first connected gamepad, read each frame through `gilrs` into a [`PadState`]; the
-//! mapping to motion lives in [`super::teleop`], where tests reach it with synthetic states.
+//! mapping to motion lives in [`crate::viewer::state::teleop`], where tests reach it with synthetic states.
 
 use gilrs::{Axis, Button, Gilrs};
 
-use super::teleop::PadState;
+use crate::viewer::state::teleop::PadState;
 
 /// Gamepad input, when the system offers it.
 pub struct Gamepads {
