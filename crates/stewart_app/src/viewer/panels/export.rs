@@ -10,7 +10,7 @@ use crate::export::video::{FramePlan, RateNote, VideoRequest, rate_in_words};
 use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::export_job::{ExportJob, ExportWork, SurfaceView};
-use crate::viewer::state::exports::ExportKind;
+use crate::viewer::state::exports::{ExportKind, Exports};
 use crate::viewer::state::files::{Overwrite, Purpose, WriteAction, absolute};
 
 /// Frame sizes offered.
@@ -28,9 +28,8 @@ const SIZES: [(u32, u32); 7] = [
 const MAX_SIDE: u32 = 4096;
 
 /// The toolbar's *Export…* button: opens (or closes) the export window.
-pub(super) fn open_button(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let busy = state.exports.job.is_some();
+pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
+    let busy = exports.job.is_some();
     let words = if busy {
         t.fmt(
             "export.open_busy",
@@ -38,7 +37,7 @@ pub(super) fn open_button(ui: &mut egui::Ui, state: &mut ViewerState) {
                 "percent",
                 &format!(
                     "{:.0}",
-                    100.0 * state.exports.job.as_ref().map_or(0.0, |j| j.fraction())
+                    100.0 * exports.job.as_ref().map_or(0.0, |j| j.fraction())
                 ),
             )],
         )
@@ -65,14 +64,13 @@ pub(super) fn open_button(ui: &mut egui::Ui, state: &mut ViewerState) {
     })
     .fold(0.0, f32::max);
     let width = widest + 2.0 * ui.spacing().button_padding.x;
-    let button =
-        egui::Button::selectable(state.exports.open, words).min_size(egui::vec2(width, 0.0));
+    let button = egui::Button::selectable(exports.open, words).min_size(egui::vec2(width, 0.0));
     if ui
         .add(button)
         .on_hover_text(t.tr("export.open_tip"))
         .clicked()
     {
-        state.exports.open = !state.exports.open;
+        exports.open = !exports.open;
     }
 }
 

@@ -14,7 +14,6 @@ use stewart_link::transport::list_ports;
 
 use super::widgets;
 use crate::i18n::Lang;
-use crate::viewer::state::ViewerState;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
 
@@ -66,28 +65,36 @@ pub fn longest_state_width(ui: &egui::Ui, lang: Lang, size: f32) -> f32 {
     .fold(0.0, f32::max)
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel: the stream's source and settings while disconnected, the live stream while
+/// connected. `link_error`: why the last connection failed; `open`: whether it starts
+/// open. Returns whether *Connect* was pressed (the caller connects: that takes the
+/// playback too).
+pub fn show(
+    ui: &mut egui::Ui,
+    link: &mut LiveLink,
+    doc: &mut Document,
+    link_error: &mut Option<String>,
+    t: Lang,
+    open: bool,
+) -> bool {
+    let mut connect = false;
     egui::CollapsingHeader::new(t.tr("link.heading"))
-        .default_open(state.look.expand_panels || state.link.connected())
+        .default_open(open || link.connected())
         .show(ui, |ui| {
-            if state.link.connected() {
-                let quantity = state.doc.scenario().geometry.quantity();
-                live(ui, &mut state.link, quantity, t, state.look.expand_panels);
+            if link.connected() {
+                let quantity = doc.scenario().geometry.quantity();
+                live(ui, link, quantity, t, open);
             } else {
-                source(ui, &mut state.link, t);
-                settings(ui, &mut state.doc, &mut state.link_error, t);
-                if ui
+                source(ui, link, t);
+                settings(ui, doc, link_error, t);
+                connect = ui
                     .button(RichText::new(t.tr("link.connect")).strong())
                     .on_hover_text(t.tr("link.connect_tip"))
-                    .clicked()
-                {
-                    state.connect_link();
-                }
+                    .clicked();
             }
-            widgets::status(ui, &state.link.status);
+            widgets::status(ui, &link.status);
         });
+    connect
 }
 
 /// What the stream follows: the motion the viewer shows, or live vehicle motion arriving

@@ -43,6 +43,37 @@ const MAX_SIDE: f32 = 480.0;
 /// Text sizes are multiplied by this in presentation mode.
 pub const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
+/// The 3D view: its toolbar's requests done, the camera framed for the view's shape, then
+/// the scene drawn.
+fn view_panel(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let mut parts = view::ViewParts {
+        look: &mut state.look,
+        playback: &mut state.playback,
+        shots: &mut state.shots,
+        exports: &mut state.exports,
+        quality: &mut state.quality,
+    };
+    let (area, action) = view::area(ui, &mut parts);
+    match action {
+        Some(view::ViewAction::LookFrom(azimuth, elevation)) => state.look_from(azimuth, elevation),
+        Some(view::ViewAction::Fit) => state.fit_camera(state.look.view_aspect),
+        Some(view::ViewAction::Screenshot) => state.take_screenshot(),
+        None => {}
+    }
+    state.frame_for_presentation(area.aspect);
+    state.follow_geometry(area.aspect);
+    let list = state.draw_list(&state.theme());
+    let animating = state.animating();
+    let mut parts = view::ViewParts {
+        look: &mut state.look,
+        playback: &mut state.playback,
+        shots: &mut state.shots,
+        exports: &mut state.exports,
+        quality: &mut state.quality,
+    };
+    view::paint(ui, &mut parts, &area, list, animating);
+}
+
 /// The whole window.
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     style(ui.ctx(), state);
@@ -79,7 +110,24 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                         ui.separator();
                         geometry::show(ui, &mut state.editor());
                         ui.separator();
-                        motion::show(ui, state);
+                        let pose = state.pose();
+                        let next_mode = motion::show(
+                            ui,
+                            motion::MotionParts {
+                                doc: &mut state.doc,
+                                playback: &mut state.playback,
+                                teleop: &mut state.teleop,
+                                reach: &mut state.reach,
+                                assembly_shown: state.assembly.shown,
+                                assembly_error: state.assembly_error.as_ref(),
+                                pose,
+                                lang: state.look.lang,
+                                expand: state.look.expand_panels,
+                            },
+                        );
+                        if next_mode {
+                            state.next_assembly_mode();
+                        }
                         ui.separator();
                         playback::show(
                             ui,
@@ -103,11 +151,30 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                             state.look.expand_panels,
                         );
                         ui.separator();
-                        workspace::show(ui, state);
+                        let pose = state.pose();
+                        workspace::show(
+                            ui,
+                            &mut state.workspace,
+                            state.doc.scenario(),
+                            &pose,
+                            state.look.lang,
+                            state.look.expand_panels,
+                        );
                         let (t, open) = (state.look.lang, state.look.expand_panels);
                         reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
                         ui.separator();
-                        link::show(ui, state);
+                        let (t, open) = (state.look.lang, state.look.expand_panels);
+                        let connect = link::show(
+                            ui,
+                            &mut state.link,
+                            &mut state.doc,
+                            &mut state.link_error,
+                            t,
+                            open,
+                        );
+                        if connect {
+                            state.connect_link();
+                        }
                         ui.separator();
                         let now =
                             state.doc.scenario().motion.sampling.start() + state.playback.time;
@@ -177,7 +244,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     state.look.plot_height = if plot_hidden { 0.0 } else { plot_rect.height() };
     egui::CentralPanel::default()
         .frame(central_frame)
-        .show(ui, |ui| view::show(ui, state));
+        .show(ui, |ui| view_panel(ui, state));
     if !plot_hidden {
         splitter_grip(ui, plot_rect);
     }

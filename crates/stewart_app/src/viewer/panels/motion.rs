@@ -1,21 +1,23 @@
 //! Motion: the manual pose's six sliders, or the trajectory's kind, sampling and every
 //! number of that kind (sinusoid channels, shape parameters, keyframes).
 
-use stewart_kinematics::Pose;
 use stewart_kinematics::io::settings::{
     ChannelKey, Group, SamplingKey, ShapeKey, Target, TrajectoryChoice, Unit,
 };
 use stewart_kinematics::model::trajectory::{
     CHANNEL_NAMES, Interpolation, Keyframe, Keyframes, Trajectory, Wave,
 };
+use stewart_kinematics::{Pose, Scenario};
 
 use super::widgets::{self, edit_error, setting_slider};
 use crate::i18n::{Lang, words};
-use crate::viewer::state::ViewerState;
+use crate::viewer::state::Teleop;
+use crate::viewer::state::document::Document;
 use crate::viewer::state::editor::Editor;
-use crate::viewer::state::playback::MotionMode;
+use crate::viewer::state::playback::{MotionMode, Playback};
 use crate::viewer::state::teleop;
 use crate::viewer::tools::assembly::NoMode;
+use crate::viewer::tools::reach::ReachCache;
 
 /// The manual pose's sliders: name, unit and reach either side of home (z: of the home
 /// height), in the pose's coordinate order x, y, z, roll, pitch, yaw.
@@ -28,49 +30,76 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
     ("yaw", Unit::Degree, 45.0),
 ];
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// What the Motion panel edits and reads: the document and playback (the trajectory's
+/// settings, the mode, the manual pose), teleoperation's rates and edge, the reach cache of
+/// the manual sliders, and the assembly mode shown.
+pub struct MotionParts<'a> {
+    /// The scenario being edited.
+    pub doc: &'a mut Document,
+    /// The mode and the manual pose.
+    pub playback: &'a mut Playback,
+    /// The keyboard and gamepad rates, and where a move stopped.
+    pub teleop: &'a mut Teleop,
+    /// The reachable part of each manual slider.
+    pub reach: &'a mut ReachCache,
+    /// The assembly mode shown (its index and the number of modes), if any.
+    pub assembly_shown: Option<(usize, usize)>,
+    /// Why the last *next assembly mode* found none.
+    pub assembly_error: Option<&'a NoMode>,
+    /// The pose shown.
+    pub pose: Pose,
+    /// The interface's language.
+    pub lang: Lang,
+    /// Whether collapsible parts start open.
+    pub expand: bool,
+}
+
+/// The panel. Returns whether *Next assembly mode* was pressed (the caller finds it).
+pub fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
+    let t = parts.lang;
     ui.heading(t.tr("motion.heading"));
     ui.horizontal(|ui| {
         ui.selectable_value(
-            &mut state.playback.mode,
+            &mut parts.playback.mode,
             MotionMode::Trajectory,
             t.tr("motion.trajectory"),
         );
         ui.selectable_value(
-            &mut state.playback.mode,
+            &mut parts.playback.mode,
             MotionMode::Manual,
             t.tr("motion.manual"),
         );
     });
-    assembly_modes(ui, state);
-    match state.playback.mode {
-        MotionMode::Manual => manual(ui, state),
-        MotionMode::Trajectory => trajectory(ui, &mut state.editor()),
+    let next = assembly_modes(ui, &parts);
+    match parts.playback.mode {
+        MotionMode::Manual => manual(ui, &mut parts),
+        MotionMode::Trajectory => trajectory(
+            ui,
+            &mut Editor::new(parts.doc, parts.playback, t, parts.expand),
+        ),
     }
-    edit_error(ui, &state.doc, t, &[Group::Trajectory]);
+    edit_error(ui, parts.doc, t, &[Group::Trajectory]);
+    next
 }
 
 /// The button that shows the next assembly mode of the legs shown, and which one it is.
-fn assembly_modes(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// Returns whether it was pressed.
+fn assembly_modes(ui: &mut egui::Ui, parts: &MotionParts) -> bool {
+    let t = parts.lang;
+    let mut next = false;
     ui.horizontal(|ui| {
-        if ui
+        next = ui
             .button(t.tr("motion.next_mode"))
             .on_hover_text(t.tr("motion.next_mode_tip"))
-            .clicked()
-        {
-            state.next_assembly_mode();
-        }
-        let shown = state.assembly.shown.filter(|_| {
-            state.playback.mode == MotionMode::Manual && state.assembly_error.is_none()
+            .clicked();
+        let shown = parts.assembly_shown.filter(|_| {
+            parts.playback.mode == MotionMode::Manual && parts.assembly_error.is_none()
         });
         if let Some((k, n)) = shown {
             ui.label(t.fmt("motion.mode_of", &[("k", &(k + 1)), ("n", &n)]));
         }
     });
-    if let Some(why) = &state.assembly_error {
+    if let Some(why) = parts.assembly_error {
         let text = match why {
             NoMode::Singular => t.tr("motion.modes_singular").to_owned(),
             NoMode::Unreachable(why) => t.fmt("motion.no_modes", &[("why", why)]),
@@ -79,12 +108,14 @@ fn assembly_modes(ui: &mut egui::Ui, state: &mut ViewerState) {
         };
         ui.colored_label(ui.visuals().warn_fg_color, text);
     }
+    next
 }
 
-fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let home = state.scenario().geometry.home_pose().to_coordinates();
-    let mut c = state.playback.manual.to_coordinates();
+fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
+    let t = parts.lang;
+    let scenario = parts.doc.scenario();
+    let home = scenario.geometry.home_pose().to_coordinates();
+    let mut c = parts.playback.manual.to_coordinates();
     // Each slider's bounds in pose coordinates, and the part of them reachable with the
     // other coordinates held.
     let bounds: [[f64; 2]; 6] = std::array::from_fn(|k| {
@@ -96,7 +127,9 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
         };
         [home[k] - reach, home[k] + reach]
     });
-    let reachable = state.slider_reach(bounds);
+    let reachable = parts
+        .reach
+        .sliders(&scenario.geometry, &scenario.limits, &parts.pose, bounds);
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
         let angular = unit == Unit::Degree;
         let mut value = if angular { c[k].to_degrees() } else { c[k] };
@@ -128,36 +161,35 @@ fn manual(ui: &mut egui::Ui, state: &mut ViewerState) {
             );
         });
     }
-    state.playback.manual = Pose::from_coordinates(c);
+    parts.playback.manual = Pose::from_coordinates(c);
     if ui
         .button(t.tr("motion.home"))
         .on_hover_text(t.tr("motion.home_tip"))
         .clicked()
     {
-        state.playback.manual = state.scenario().geometry.home_pose();
-        state.teleop.blocked = None;
+        parts.playback.manual = scenario.geometry.home_pose();
+        parts.teleop.blocked = None;
     }
-    reach(ui, state);
+    reach(ui, scenario, parts.playback.manual, parts.teleop, t);
     ui.label(t.tr("motion.keys"))
         .on_hover_text(t.tr("motion.keys_tip"));
-    let rates = &mut state.teleop.rates;
+    let rates = &mut parts.teleop.rates;
     ui.add(
         egui::Slider::new(&mut rates.linear_m_s, 0.001..=1.0)
             .logarithmic(true)
             .text(t.tr("motion.move_rate")),
     );
     ui.add(egui::Slider::new(&mut rates.angular_deg_s, 1.0..=90.0).text(t.tr("motion.turn_rate")));
-    if let Some(words) = &state.teleop.pad_words {
+    if let Some(words) = &parts.teleop.pad_words {
         ui.label(words);
     }
 }
 
 /// The reachability indicator: green while the pose can be taken, red with the reason
 /// when a move stopped at the edge or the pose is out of reach.
-fn reach(ui: &mut egui::Ui, state: &ViewerState) {
-    let t = state.look.lang;
-    let now = teleop::unreachable(&state.scenario().geometry, &state.playback.manual);
-    let (colour, words) = match (now, &state.teleop.blocked) {
+fn reach(ui: &mut egui::Ui, scenario: &Scenario, manual: Pose, teleop: &Teleop, t: Lang) {
+    let now = teleop::unreachable(&scenario.geometry, &manual);
+    let (colour, words) = match (now, &teleop.blocked) {
         (Some(why), _) => (
             widgets::ERROR,
             t.fmt("motion.out_of_reach", &[("why", &why.words(t))]),

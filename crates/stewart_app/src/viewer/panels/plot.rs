@@ -382,10 +382,10 @@ mod tests {
 
     #[test]
     fn presentation_mode_draws_wider_curves() {
-        let mut state =
-            crate::viewer::state::ViewerState::new(stewart_kinematics::Scenario::seed());
-        let screen = line_width(&state.look);
-        state.look.presentation = true;
-        assert!(line_width(&state.look) >= 2.0 * screen);
+        let scenario = stewart_kinematics::Scenario::seed();
+        let mut look = Look::new(crate::export::frames::default_camera(&scenario));
+        let screen = line_width(&look);
+        look.presentation = true;
+        assert!(line_width(&look) >= 2.0 * screen);
     }
 }

@@ -5,7 +5,12 @@ use egui::Color32;
 
 use stewart_render::OrbitCamera;
 
-use crate::viewer::state::ViewerState;
+use crate::i18n::Lang;
+use crate::viewer::state::exports::Exports;
+use crate::viewer::state::look::Look;
+use crate::viewer::state::playback::Playback;
+use crate::viewer::window::quality::Quality;
+use crate::viewer::window::shots::Shots;
 use crate::viewer::window::view3d::SceneCallback;
 
 /// Standard views: the label's key, azimuth and elevation (MATLAB's `view(az, el)`).
@@ -17,10 +22,9 @@ const VIEWS: [(&str, f32, f32); 4] = [
 ];
 
 /// The Screenshot menu: what, how large, background; Save (or F12 with these choices).
-fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
+/// Returns whether *Save* was pressed.
+fn screenshot_menu(ui: &mut egui::Ui, shots: &mut Shots, t: Lang) -> bool {
     use crate::viewer::window::shots::{ShotKind, ShotScale};
-    let t = state.look.lang;
-    let shots = &mut state.shots;
     ui.radio_value(&mut shots.kind, ShotKind::View, t.tr("view.shot_view"));
     ui.radio_value(&mut shots.kind, ShotKind::Window, t.tr("view.shot_window"));
     ui.horizontal(|ui| {
@@ -31,42 +35,69 @@ fn screenshot_menu(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.add_enabled_ui(shots.kind == ShotKind::View, |ui| {
         ui.checkbox(&mut shots.transparent, t.tr("view.transparent"));
     });
-    if ui
+    let save = ui
         .add_enabled(!shots.busy(), egui::Button::new(t.tr("view.save_png")))
         .on_hover_text(t.tr("view.save_png_tip"))
-        .clicked()
-    {
-        state.take_screenshot();
+        .clicked();
+    if save {
         ui.close();
     }
+    save
+}
+
+/// What the 3D view asks of the viewer: each needs more of it than the view holds, so the
+/// caller does it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ViewAction {
+    /// Look from this azimuth and elevation, degrees.
+    LookFrom(f32, f32),
+    /// Frame the platform and its motion.
+    Fit,
+    /// Take a screenshot with the menu's choices.
+    Screenshot,
+}
+
+/// The parts the 3D view and its toolbar edit.
+pub struct ViewParts<'a> {
+    /// Camera, theme, overlays, presentation.
+    pub look: &'a mut Look,
+    /// Play and pause; the frames-skipped note.
+    pub playback: &'a mut Playback,
+    /// The screenshot menu's choices and status.
+    pub shots: &'a mut Shots,
+    /// Whether the export window is open, and its job's progress.
+    pub exports: &'a mut Exports,
+    /// How the view is drawn and its frame times.
+    pub quality: &'a mut Quality,
 }
 
 /// The toolbar over the view, always in sight: play/pause and export first; the standard
 /// views and overlays, or in presentation mode full screen and the way out.
-fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
+    let t = parts.look.lang;
+    let mut action = None;
     // Wrapped: a narrow window keeps every switch reachable.
     ui.horizontal_wrapped(|ui| {
-        super::playback::play_button(ui, &mut state.playback, t);
-        if state.look.presentation {
-            let words = if state.look.fullscreen {
+        super::playback::play_button(ui, parts.playback, t);
+        if parts.look.presentation {
+            let words = if parts.look.fullscreen {
                 t.tr("view.leave_fullscreen")
             } else {
                 t.tr("view.fullscreen")
             };
             if ui.button(words).on_hover_text("F11").clicked() {
-                state.look.fullscreen = !state.look.fullscreen;
+                parts.look.fullscreen = !parts.look.fullscreen;
             }
             if ui
                 .button(t.tr("view.leave_presentation"))
                 .on_hover_text(t.tr("view.leave_presentation_tip"))
                 .clicked()
             {
-                state.look.presentation = false;
+                parts.look.presentation = false;
             }
             return;
         }
-        super::export::open_button(ui, state);
+        super::export::open_button(ui, parts.exports, t);
         ui.separator();
         for (label, az, el) in VIEWS {
             if ui
@@ -74,7 +105,7 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
                 .on_hover_text(t.tr("view.standard_tip"))
                 .clicked()
             {
-                state.look_from(az, el);
+                action = Some(ViewAction::LookFrom(az, el));
             }
         }
         if ui
@@ -82,36 +113,52 @@ fn toolbar(ui: &mut egui::Ui, state: &mut ViewerState) {
             .on_hover_text(t.tr("view.reset_tip"))
             .clicked()
         {
-            state.look_from(VIEWS[0].1, VIEWS[0].2);
+            action = Some(ViewAction::LookFrom(VIEWS[0].1, VIEWS[0].2));
         }
         if ui
             .button(t.tr("view.fit"))
             .on_hover_text(t.tr("view.fit_tip"))
             .clicked()
         {
-            let aspect = state.look.view_aspect;
-            state.fit_camera(aspect);
+            action = Some(ViewAction::Fit);
         }
-        ui.checkbox(&mut state.look.show_path, t.tr("view.path"));
-        ui.checkbox(&mut state.look.platform_axes, t.tr("view.platform_axes"));
-        ui.checkbox(&mut state.look.coloured_legs, t.tr("view.leg_colours"))
+        ui.checkbox(&mut parts.look.show_path, t.tr("view.path"));
+        ui.checkbox(&mut parts.look.platform_axes, t.tr("view.platform_axes"));
+        ui.checkbox(&mut parts.look.coloured_legs, t.tr("view.leg_colours"))
             .on_hover_text(t.tr("view.leg_colours_tip"));
-        ui.checkbox(&mut state.look.labels, t.tr("view.labels"))
+        ui.checkbox(&mut parts.look.labels, t.tr("view.labels"))
             .on_hover_text(t.tr("view.labels_tip"));
-        ui.checkbox(&mut state.look.readouts, t.tr("view.readouts"))
+        ui.checkbox(&mut parts.look.readouts, t.tr("view.readouts"))
             .on_hover_text(t.tr("view.readouts_tip"));
-        ui.menu_button(t.tr("view.screenshot"), |ui| screenshot_menu(ui, state))
-            .response
-            .on_hover_text(t.tr("view.screenshot_tip"));
+        let shots = &mut *parts.shots;
+        ui.menu_button(t.tr("view.screenshot"), |ui| {
+            if screenshot_menu(ui, shots, t) {
+                action = Some(ViewAction::Screenshot);
+            }
+        })
+        .response
+        .on_hover_text(t.tr("view.screenshot_tip"));
     });
-    if !state.look.presentation {
-        super::widgets::status(ui, &state.shots.status);
+    if !parts.look.presentation {
+        super::widgets::status(ui, &parts.shots.status);
     }
+    action
 }
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    toolbar(ui, state);
+/// Where the view is drawn this frame and how wide it is.
+pub struct ViewArea {
+    /// The view's rectangle, points.
+    pub rect: egui::Rect,
+    /// Width over height.
+    pub aspect: f32,
+    /// Whether the camera is being dragged.
+    dragged: bool,
+}
+
+/// The toolbar and the camera's input: where the view is this frame, and what the toolbar
+/// asks (the caller does it, frames the camera for the new aspect, then [`paint`]s).
+pub fn area(ui: &mut egui::Ui, parts: &mut ViewParts) -> (ViewArea, Option<ViewAction>) {
+    let action = toolbar(ui, parts);
     let rect = ui.available_rect_before_wrap();
     // The camera's drags start a little inside the view: the splitters of the controls
     // (left) and of the plot (below) take the pointer near their edges.
@@ -122,14 +169,33 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         rect.max - egui::vec2(0.0, keep_clear),
     );
     let response = ui.allocate_rect(camera_rect, egui::Sense::click_and_drag());
-    camera_input(ui, &mut state.look.camera, &response, rect);
+    camera_input(ui, &mut parts.look.camera, &response, rect);
     let aspect = rect.width() / rect.height().max(1.0);
-    state.look.view_aspect = aspect;
-    state.frame_for_presentation(aspect);
-    state.follow_geometry(aspect);
-    let t = state.look.lang;
-    let theme = state.theme();
-    if let Some(missing) = &state.look.renderer_missing {
+    parts.look.view_aspect = aspect;
+    let dragged = response.dragged();
+    (
+        ViewArea {
+            rect,
+            aspect,
+            dragged,
+        },
+        action,
+    )
+}
+
+/// The scene `list` drawn in `area` (or why it cannot be), and the status line.
+/// `animating`: whether the viewer moves on its own this frame (playback, a stream).
+pub fn paint(
+    ui: &mut egui::Ui,
+    parts: &mut ViewParts,
+    area: &ViewArea,
+    list: stewart_render::DrawList,
+    animating: bool,
+) {
+    let rect = area.rect;
+    let t = parts.look.lang;
+    let theme = parts.look.theme();
+    if let Some(missing) = &parts.look.renderer_missing {
         let bg = theme.background.map(|c| (c * 255.0) as u8);
         ui.painter()
             .rect_filled(rect, 0.0, Color32::from_rgb(bg[0], bg[1], bg[2]));
@@ -151,16 +217,14 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
             egui::FontId::proportional(14.0),
             ui.visuals().warn_fg_color,
         );
-        status_line(ui, rect, state);
+        status_line(ui, rect, parts);
         return;
     }
-    let list = state.draw_list(&theme);
     // The view changes from frame to frame: playback, a stream, a drag or the wheel.
-    let moving = state.animating()
-        || response.dragged()
-        || ui.input(|i| i.smooth_scroll_delta != egui::Vec2::ZERO);
-    let drawn = state.quality.choose(moving);
-    state.look.view_px = [
+    let moving =
+        animating || area.dragged || ui.input(|i| i.smooth_scroll_delta != egui::Vec2::ZERO);
+    let drawn = parts.quality.choose(moving);
+    parts.look.view_px = [
         (rect.width() * ui.ctx().pixels_per_point()).round() as u32,
         (rect.height() * ui.ctx().pixels_per_point()).round() as u32,
     ];
@@ -169,32 +233,32 @@ pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
         SceneCallback {
             view: ui.scope_id().with("scene"),
             list,
-            camera: state.look.camera.fitted_to(aspect),
+            camera: parts.look.camera.fitted_to(area.aspect),
             theme,
             viewport: (rect.size() * ui.ctx().pixels_per_point()).into(),
             drawn,
         },
     ));
-    status_line(ui, rect, state);
+    status_line(ui, rect, parts);
 }
 
 /// The view's status line, bottom left, in a place of its own (it never moves the
 /// toolbar): the frame times when asked for (Advanced), else the note that frames are
 /// skipped. Never in presentation mode.
-fn status_line(ui: &mut egui::Ui, rect: egui::Rect, state: &ViewerState) {
-    if state.look.presentation {
+fn status_line(ui: &mut egui::Ui, rect: egui::Rect, parts: &ViewParts) {
+    if parts.look.presentation {
         return;
     }
-    let t = state.look.lang;
-    let (text, tip) = if state.look.frame_times {
-        (frame_words(t, &state.quality), "quality.show_tip")
-    } else if let Some(rate) = state.playback.skipping_frames() {
+    let t = parts.look.lang;
+    let (text, tip) = if parts.look.frame_times {
+        (frame_words(t, parts.quality), "quality.show_tip")
+    } else if let Some(rate) = parts.playback.skipping_frames() {
         let words = t.fmt("playback.skipping", &[("fps", &format!("{rate:.0}"))]);
         (words, "playback.skipping_tip")
     } else {
         return;
     };
-    let colour = if state.look.is_light() {
+    let colour = if parts.look.is_light() {
         Color32::from_rgb(150, 60, 0)
     } else {
         ui.visuals().warn_fg_color
@@ -215,7 +279,7 @@ fn status_line(ui: &mut egui::Ui, rect: egui::Rect, state: &ViewerState) {
 
 /// The frame-time readout: mean and 95th percentile of the last frames, and how the 3D
 /// view is drawn.
-fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::window::quality::Quality) -> String {
+fn frame_words(t: Lang, quality: &Quality) -> String {
     let how = t.tr(quality.words_key());
     match quality.frame_times() {
         Some((mean, p95)) => t.fmt(
@@ -231,7 +295,7 @@ fn frame_words(t: crate::i18n::Lang, quality: &crate::viewer::window::quality::Q
 }
 
 /// The drawing settings (Advanced): the frame-time readout and what it says.
-pub fn drawing(ui: &mut egui::Ui, look: &mut crate::viewer::state::look::Look) {
+pub fn drawing(ui: &mut egui::Ui, look: &mut Look) {
     let t = look.lang;
     egui::CollapsingHeader::new(t.tr("quality.advanced"))
         .default_open(look.expand_panels)

@@ -4,33 +4,40 @@
 
 use egui::{Color32, RichText};
 use stewart_kinematics::analysis::workspace;
+use stewart_kinematics::{Pose, Scenario};
 use stewart_render::colormap;
 
 use super::widgets::{ERROR, OK, WARNING};
 use crate::i18n::Lang;
-use crate::viewer::state::ViewerState;
 use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it
+/// starts open.
+pub fn show(
+    ui: &mut egui::Ui,
+    w: &mut WorkspaceTool,
+    scenario: &Scenario,
+    pose: &Pose,
+    t: Lang,
+    open: bool,
+) {
     egui::CollapsingHeader::new(t.tr("workspace_panel.heading"))
-        .default_open(state.look.expand_panels || state.workspace.show)
+        .default_open(open || w.show)
         .show(ui, |ui| {
-            ui.checkbox(&mut state.workspace.show, t.tr("workspace_panel.show"))
+            ui.checkbox(&mut w.show, t.tr("workspace_panel.show"))
                 .on_hover_text(t.tr("workspace_panel.show_tip"));
-            if !state.workspace.show {
+            if !w.show {
                 return;
             }
-            orientation(ui, &mut state.workspace, t);
-            numbers(ui, state);
+            orientation(ui, w, t);
+            numbers(ui, w, scenario, pose, t);
             ui.separator();
-            let centre_z = state.centre().z;
-            let condition_max = state.scenario().checks.condition_max;
-            let per_unit = state.scenario().dynamics.actuator_stiffness.is_none();
-            slice(ui, &mut state.workspace, centre_z, condition_max, t);
-            if state.workspace.show_slice {
-                stiffness_note(ui, &state.workspace, per_unit, t);
+            let centre_z = scenario.geometry.platform_centre(pose).z;
+            let condition_max = scenario.checks.condition_max;
+            let per_unit = scenario.dynamics.actuator_stiffness.is_none();
+            slice(ui, w, centre_z, condition_max, t);
+            if w.show_slice {
+                stiffness_note(ui, w, per_unit, t);
             }
         });
 }
@@ -54,9 +61,7 @@ fn orientation(ui: &mut egui::Ui, w: &mut WorkspaceTool, t: Lang) {
 }
 
 /// Progress, volume, extent, and where the platform centre lies.
-fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
-    let t = state.look.lang;
-    let w = &state.workspace;
+fn numbers(ui: &mut egui::Ui, w: &WorkspaceTool, scenario: &Scenario, pose: &Pose, t: Lang) {
     if let Some(e) = &w.error {
         ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
         return;
@@ -110,7 +115,7 @@ fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
             .monospace(),
         );
     }
-    let (key, colour) = if centre_inside(state) {
+    let (key, colour) = if centre_inside(w, scenario, pose) {
         ("workspace_panel.inside", OK)
     } else {
         ("workspace_panel.outside", ERROR)
@@ -123,17 +128,16 @@ fn numbers(ui: &mut egui::Ui, state: &ViewerState) {
     }
 }
 
-/// Whether the platform centre of the pose shown is reachable at the workspace's
-/// orientation (the pose itself when the orientation follows it).
-pub fn centre_inside(state: &ViewerState) -> bool {
-    let pose = state.pose();
-    let [roll, pitch, yaw] = state.workspace_orientation();
-    let g = &state.scenario().geometry;
+/// Whether the platform centre of `pose` is reachable at the workspace's orientation (the
+/// pose itself when the orientation follows it).
+pub fn centre_inside(w: &WorkspaceTool, scenario: &Scenario, pose: &Pose) -> bool {
+    let [roll, pitch, yaw] = w.orientation_at(pose);
+    let g = &scenario.geometry;
     // The same centre at the workspace's orientation.
-    let probe = stewart_kinematics::Pose::new(pose.position, roll, pitch, yaw);
-    let shift = state.centre() - g.platform_centre(&probe);
+    let probe = Pose::new(pose.position, roll, pitch, yaw);
+    let shift = g.platform_centre(pose) - g.platform_centre(&probe);
     let probe = probe.with_position(pose.position + shift);
-    workspace::pose_within_limits(g, &state.scenario().limits, &probe)
+    workspace::pose_within_limits(g, &scenario.limits, &probe)
 }
 
 /// The slice's switches, its colour bar and the cells past the threshold: the tool alone,

@@ -75,7 +75,7 @@ pub struct ViewerState {
     /// Why the last step to another assembly mode found none.
     pub assembly_error: Option<crate::viewer::tools::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
-    reach: crate::viewer::tools::reach::ReachCache,
+    pub(crate) reach: crate::viewer::tools::reach::ReachCache,
     /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
     pub modes: crate::viewer::tools::mode_view::ModeView,
     /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
@@ -471,14 +471,7 @@ impl ViewerState {
 
     /// The orientation the workspace is shown at: the pose's, or the one chosen.
     pub fn workspace_orientation(&self) -> [stewart_kinematics::Angle; 3] {
-        if self.workspace.follow_pose {
-            let p = self.pose();
-            [p.roll, p.pitch, p.yaw]
-        } else {
-            self.workspace
-                .orientation_deg
-                .map(stewart_kinematics::Angle::from_degrees)
-        }
+        self.workspace.orientation_at(&self.pose())
     }
 
     /// The platform centre of the pose shown, metres.

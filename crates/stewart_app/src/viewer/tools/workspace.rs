@@ -144,6 +144,16 @@ impl Default for WorkspaceTool {
 }
 
 impl WorkspaceTool {
+    /// The orientation the workspace is shown at when `pose` is shown: the pose's, or the
+    /// one chosen.
+    pub fn orientation_at(&self, pose: &Pose) -> [Angle; 3] {
+        if self.follow_pose {
+            [pose.roll, pose.pitch, pose.yaw]
+        } else {
+            self.orientation_deg.map(Angle::from_degrees)
+        }
+    }
+
     /// A tool computing `coarse` then `fine` columns a side (tests choose slow ones).
     pub fn with_resolutions(coarse: usize, fine: usize) -> Self {
         Self {
