@@ -3,15 +3,11 @@
 
 use std::path::{Path, PathBuf};
 
-use stewart_render::{Overlays, Theme};
-
 use super::widgets;
-use crate::export::video::{FramePlan, RateNote, VideoRequest, rate_in_words};
+use crate::export::video::{FramePlan, RateNote, rate_in_words};
 use crate::i18n::Lang;
-use crate::viewer::state::ViewerState;
-use crate::viewer::state::export_job::{ExportJob, ExportWork, SurfaceView};
 use crate::viewer::state::exports::{ExportKind, Exports};
-use crate::viewer::state::files::{Overwrite, Purpose, WriteAction, absolute};
+use crate::viewer::state::files::absolute;
 
 /// Frame sizes offered.
 const SIZES: [(u32, u32); 7] = [
@@ -75,25 +71,61 @@ pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
 }
 
 /// The export window, while it is open.
-pub fn window(ctx: &egui::Context, state: &mut ViewerState) {
-    if !state.exports.open {
-        return;
+/// What the export window edits and shows: the form, job and status, with the scenario's
+/// name and length, and what a video export would write (planned for the path typed).
+pub struct ExportParts<'a> {
+    /// The form, the running job, the status, the file last written.
+    pub exports: &'a mut Exports,
+    /// The scenario's name (the default file name and title).
+    pub name: &'a str,
+    /// The motion's length, seconds.
+    pub duration: f64,
+    /// A video export's plan and frame count for the form as it stands.
+    pub plan: Option<(FramePlan, usize)>,
+    /// The interface's language.
+    pub lang: Lang,
+}
+
+/// What the export window asks of the viewer.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExportAction {
+    /// Choose the output in the file dialog.
+    Browse,
+    /// Export to this path (asking first when it would replace a file).
+    Export(PathBuf),
+}
+
+/// The export window, while it is open. Returns what it asks of the viewer.
+pub fn window(ctx: &egui::Context, parts: ExportParts) -> Option<ExportAction> {
+    if !parts.exports.open {
+        return None;
     }
-    let t = state.look.lang;
+    let t = parts.lang;
     let mut open = true;
+    let mut action = None;
+    let exports = &mut *parts.exports;
     egui::Window::new(t.tr("export.heading"))
         .open(&mut open)
         .resizable(false)
         .collapsible(false)
         .default_pos(ctx.content_rect().right_top() + egui::vec2(-420.0, 60.0))
-        .show(ctx, |ui| body(ui, state));
-    state.exports.open &= open;
+        .show(ctx, |ui| {
+            action = body(ui, exports, parts.name, parts.duration, &parts.plan, t);
+        });
+    parts.exports.open &= open;
+    action
 }
 
 /// What the export window holds: the form and *Export*, or the running export's progress.
-fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    if let Some(job) = &mut state.exports.job {
+fn body(
+    ui: &mut egui::Ui,
+    exports: &mut Exports,
+    name: &str,
+    duration: f64,
+    plan: &Option<(FramePlan, usize)>,
+    t: Lang,
+) -> Option<ExportAction> {
+    if let Some(job) = &mut exports.job {
         ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
         ui.label(job.describe());
         let label = if job.cancelling() {
@@ -108,11 +140,11 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
         {
             job.cancel();
         }
-        return;
+        return None;
     }
-    form(ui, state);
-    let path = state.exports.form.path.trim().to_owned();
-    let sound = title_error(&state.exports.form.title).is_none();
+    let mut action = form(ui, exports, name, duration, plan, t);
+    let path = exports.form.path.trim().to_owned();
+    let sound = title_error(&exports.form.title).is_none();
     if ui
         .add_enabled(
             !path.is_empty() && sound,
@@ -121,48 +153,33 @@ fn body(ui: &mut egui::Ui, state: &mut ViewerState) {
         .on_hover_text(t.tr("export.export_tip"))
         .clicked()
     {
-        let full = absolute(Path::new(&path));
-        if full.exists() {
-            state.files.confirm = Some(Overwrite {
-                path: full,
-                action: WriteAction::Export,
-            });
-        } else {
-            start(state, full);
-        }
+        action = Some(ExportAction::Export(PathBuf::from(path)));
     }
-    widgets::status(ui, &state.exports.status);
-    if let Some(written) = state.exports.written.clone()
+    widgets::status(ui, &exports.status);
+    if let Some(written) = exports.written.clone()
         && ui
             .button(t.tr("export.show_folder"))
             .on_hover_text(t.tr("export.show_folder_tip"))
             .clicked()
     {
-        state.exports.status = crate::viewer::window::reveal::show_in_folder(&written)
+        exports.status = crate::viewer::window::reveal::show_in_folder(&written)
             .err()
             .map(Err)
-            .or(state.exports.status.take());
+            .or(exports.status.take());
     }
+    action
 }
 
-/// Start the export to `path` (absolute; the user has agreed to replace it if it exists).
-pub(super) fn start(state: &mut ViewerState, path: PathBuf) {
-    let t = state.look.lang;
-    let work = work(state, path.clone());
-    state.exports.status = None;
-    state.exports.written = None;
-    state.exports.writing = Some(path);
-    // Titled as shown: "seed (edited)" once the preset was changed.
-    let mut scenario = state.scenario().clone();
-    scenario.name = state.title();
-    state.exports.job = Some(ExportJob::start(&scenario, work, t));
-}
-
-fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let name = state.scenario().name.clone();
-    let duration = state.duration();
-    let t = state.look.lang;
-    let form = &mut state.exports.form;
+/// The form; returns [`ExportAction::Browse`] when *Browse…* was pressed.
+fn form(
+    ui: &mut egui::Ui,
+    exports: &mut Exports,
+    name: &str,
+    duration: f64,
+    plan: &Option<(FramePlan, usize)>,
+    t: Lang,
+) -> Option<ExportAction> {
+    let form = &mut exports.form;
     let before = form.kind;
     egui::ComboBox::from_label(t.tr("export.what"))
         .selected_text(form.kind.label(t))
@@ -187,10 +204,7 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             .on_hover_text(t.tr("export.browse_tip"))
             .clicked();
     });
-    if browse {
-        state.choose_file(Purpose::ExportTo);
-    }
-    let form = &mut state.exports.form;
+    let action = browse.then_some(ExportAction::Browse);
     let workspace = matches!(
         form.kind,
         ExportKind::WorkspaceSvg
@@ -237,7 +251,7 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             let label = ui.label(t.tr("export.title"));
             ui.add(
                 egui::TextEdit::singleline(&mut form.title)
-                    .hint_text(name.as_str())
+                    .hint_text(name)
                     .desired_width(200.0),
             )
             .labelled_by(label.id)
@@ -248,9 +262,8 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
         }
         // What the export will write, planned for the path as typed (its extension
         // decides the format and so the default rate).
-        let request = request(state, PathBuf::from(state.exports.form.path.trim()));
-        let scenario = state.scenario();
-        if let (Ok(plan), Ok(n)) = (request.plan(scenario), request.frame_count(scenario)) {
+        if let Some((plan, n)) = plan {
+            let n = *n;
             let words = t.fmt(
                 "export.frames",
                 &[
@@ -278,6 +291,7 @@ fn form(ui: &mut egui::Ui, state: &mut ViewerState) {
             }
         }
     }
+    action
 }
 
 /// Why the readout's title cannot be burnt in (`None`: empty, or one line that fits).
@@ -325,117 +339,4 @@ fn span(
             *to = to.max(*from);
         }
     });
-}
-
-/// The frame indices `[first, end)` of `plan` whose times lie within `[from, to]` seconds
-/// of the motion's start (`None` when none does).
-fn frames_within(plan: &FramePlan, [from, to]: [f64; 2]) -> Option<(usize, usize)> {
-    // Times grow with the index: the first at or after `from`, the last at or before `to`.
-    let start = plan.time(0);
-    let tolerance = 1e-9 * (1.0 + to.abs());
-    let first = partition_point(plan.count, |k| plan.time(k) - start < from - tolerance);
-    let end = partition_point(plan.count, |k| plan.time(k) - start <= to + tolerance);
-    (first < end).then_some((first, end))
-}
-
-/// The first index in `0..count` where `before` turns false (it is true, then false).
-fn partition_point(count: usize, before: impl Fn(usize) -> bool) -> usize {
-    let (mut lo, mut hi) = (0, count);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if before(mid) {
-            lo = mid + 1;
-        } else {
-            hi = mid;
-        }
-    }
-    lo
-}
-
-fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
-    let form = &state.exports.form;
-    let mut request = VideoRequest {
-        out,
-        size: form.size,
-        fps: (form.fps > 0.0).then_some(form.fps),
-        frames: (None, None),
-        theme: Theme::from_light(form.light),
-        camera: Some(state.look.camera),
-        composite: form.composite,
-        overlays: Overlays {
-            platform_axes: state.look.platform_axes,
-            path: state.look.show_path,
-            coloured_legs: state.look.coloured_legs,
-            labels: state.look.labels,
-            ..Overlays::default()
-        },
-        readout: if form.title.is_empty() {
-            state.look.readouts.then(|| state.title())
-        } else {
-            Some(form.title.clone())
-        },
-        lang: state.look.lang,
-        speed: form.speed,
-    };
-    if let Some(span) = form.span_s
-        && let Ok(plan) = request.plan(state.scenario())
-        && let Some((first, end)) = frames_within(&plan, span)
-    {
-        request.frames = (Some(first), Some(end));
-    }
-    request
-}
-
-/// Where the workspace figure's slices cross: the platform's position, at the slice's
-/// height when the Workspace panel sets one.
-fn workspace_position(state: &ViewerState) -> [f64; 3] {
-    let p = state.pose().position;
-    let w = &state.workspace;
-    let z = if w.show_slice && !w.slice_follows {
-        // The panel's height is the platform centre's; a pose places the reference point.
-        p.z + w.slice_height - state.centre().z
-    } else {
-        p.z
-    };
-    [p.x, p.y, z]
-}
-
-fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
-    match state.exports.form.kind {
-        ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames => {
-            ExportWork::Video(Box::new(request(state, path)))
-        }
-        ExportKind::PlotSvg | ExportKind::PlotPdf | ExportKind::PlotPng => {
-            let efforts = state.look.plot_efforts && state.doc.plot_efforts().is_some();
-            ExportWork::Plot(path, efforts)
-        }
-        ExportKind::Csv => ExportWork::Csv(path),
-        ExportKind::WorkspaceSvg | ExportKind::WorkspacePdf | ExportKind::WorkspacePng => {
-            ExportWork::WorkspaceFigure {
-                path,
-                orientation: state.workspace_orientation(),
-                position: workspace_position(state),
-            }
-        }
-        ExportKind::SurfacePly => ExportWork::SurfacePly {
-            path,
-            orientation: state.workspace_orientation(),
-        },
-        ExportKind::SurfacePng => {
-            let theme = state.theme();
-            ExportWork::SurfacePng(Box::new(SurfaceView {
-                path,
-                request: state.workspace_request(),
-                list: {
-                    // The job draws the surface it computes, not the one on screen.
-                    let mut list = state.draw_list(&theme);
-                    list.analysis.clear();
-                    list
-                },
-                camera: state.look.camera,
-                theme,
-                size: state.exports.form.size,
-            }))
-        }
-    }
 }

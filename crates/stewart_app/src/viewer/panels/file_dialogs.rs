@@ -2,43 +2,58 @@
 //! window (a scenario `.toml` or a pose table `.csv`; a note says what a hovering file
 //! would do).
 
-use crate::viewer::state::ViewerState;
-use crate::viewer::state::files::{Purpose, WriteAction};
+use std::path::PathBuf;
 
-/// Everything about files that floats over the window.
-pub fn show(ctx: &egui::Context, state: &mut ViewerState) {
-    picker(ctx, state);
-    confirm(ctx, state);
-    dropped(ctx, state);
+use crate::i18n::Lang;
+use crate::viewer::state::files::{Files, Purpose, WriteAction};
+
+/// What the file dialogs ask of the viewer, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FileAction {
+    /// Open what this path is (a scenario or a pose table).
+    Open(PathBuf),
+    /// Save the scenario here, asking before replacing another file.
+    SaveAsking(PathBuf),
+    /// Save the scenario here (replacing it was agreed).
+    Save(PathBuf),
+    /// The export's output is this path.
+    ExportTo(PathBuf),
+    /// Start the export to this path (replacing it was agreed).
+    Export(PathBuf),
+}
+
+/// Everything about files that floats over the window: the dialog, the question before a
+/// file is replaced, files dropped. Returns what they ask of the viewer.
+pub fn show(ctx: &egui::Context, files: &mut Files, t: Lang) -> Vec<FileAction> {
+    let mut asked = Vec::new();
+    asked.extend(picker(ctx, files));
+    asked.extend(confirm(ctx, files, t));
+    asked.extend(dropped(ctx, t));
+    asked
 }
 
 /// The open/save dialog, while one is shown; its choice is acted on once.
-fn picker(ctx: &egui::Context, state: &mut ViewerState) {
-    let Some(picker) = &mut state.files.picker else {
-        return;
-    };
+fn picker(ctx: &egui::Context, files: &mut Files) -> Option<FileAction> {
+    let picker = files.picker.as_mut()?;
     let chosen = picker.dialog.show(ctx).selected();
     let path = picker.dialog.path().map(std::path::Path::to_path_buf);
     let purpose = picker.purpose;
     if !picker.dialog.visible() || chosen {
-        state.files.picker = None;
+        files.picker = None;
     }
     let (true, Some(path)) = (chosen, path) else {
-        return;
+        return None;
     };
-    match purpose {
-        Purpose::Open => state.open_path(&path),
-        Purpose::SaveScenario => state.save_file_asking(&path),
-        Purpose::ExportTo => state.exports.form.path = path.display().to_string(),
-    }
+    Some(match purpose {
+        Purpose::Open => FileAction::Open(path),
+        Purpose::SaveScenario => FileAction::SaveAsking(path),
+        Purpose::ExportTo => FileAction::ExportTo(path),
+    })
 }
 
 /// "`path` exists. Replace it?" before a save or an export overwrites a file.
-fn confirm(ctx: &egui::Context, state: &mut ViewerState) {
-    let Some(question) = state.files.confirm.clone() else {
-        return;
-    };
-    let t = state.look.lang;
+fn confirm(ctx: &egui::Context, files: &mut Files, t: Lang) -> Option<FileAction> {
+    let question = files.confirm.clone()?;
     let mut answer = None;
     egui::Modal::new(egui::Id::unique("replace-file")).show(ctx, |ui| {
         ui.label(t.fmt(
@@ -65,20 +80,23 @@ fn confirm(ctx: &egui::Context, state: &mut ViewerState) {
     });
     match answer {
         Some(true) => {
-            state.files.confirm = None;
-            match question.action {
-                WriteAction::SaveScenario => state.save_file(&question.path),
-                WriteAction::Export => super::export::start(state, question.path),
-            }
+            files.confirm = None;
+            Some(match question.action {
+                WriteAction::SaveScenario => FileAction::Save(question.path),
+                WriteAction::Export => FileAction::Export(question.path),
+            })
         }
-        Some(false) => state.files.confirm = None,
-        None => {}
+        Some(false) => {
+            files.confirm = None;
+            None
+        }
+        None => None,
     }
 }
 
 /// Files dropped on the window are opened (the last scenario wins; a pose table replaces
 /// the motion); while files hover, a note says what dropping them does.
-fn dropped(ctx: &egui::Context, state: &mut ViewerState) {
+fn dropped(ctx: &egui::Context, t: Lang) -> Vec<FileAction> {
     let (dropped, hovering) = ctx.input(|i| {
         (
             i.raw
@@ -89,11 +107,7 @@ fn dropped(ctx: &egui::Context, state: &mut ViewerState) {
             !i.raw.hovered_files.is_empty(),
         )
     });
-    for path in dropped {
-        state.open_path(&path);
-    }
     if hovering {
-        let t = state.look.lang;
         let painter = ctx.layer_painter(egui::LayerId::new(
             egui::Order::Foreground,
             egui::Id::unique("drop-note"),
@@ -108,4 +122,5 @@ fn dropped(ctx: &egui::Context, state: &mut ViewerState) {
             egui::Color32::WHITE,
         );
     }
+    dropped.into_iter().map(FileAction::Open).collect()
 }

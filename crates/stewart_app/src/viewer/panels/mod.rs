@@ -74,6 +74,69 @@ fn view_panel(ui: &mut egui::Ui, state: &mut ViewerState) {
     view::paint(ui, &mut parts, &area, list, animating);
 }
 
+/// The export window, and what it asks done.
+fn export_window(ctx: &egui::Context, state: &mut ViewerState) {
+    let plan = (state.exports.open && state.exports.form.kind.is_video())
+        .then(|| {
+            // What the export will write, planned for the path as typed (its extension
+            // decides the format and so the default rate).
+            let path = std::path::PathBuf::from(state.exports.form.path.trim());
+            let request = state.video_request(path);
+            let scenario = state.scenario();
+            Some((
+                request.plan(scenario).ok()?,
+                request.frame_count(scenario).ok()?,
+            ))
+        })
+        .flatten();
+    let name = state.scenario().name.clone();
+    let asked = export::window(
+        ctx,
+        export::ExportParts {
+            exports: &mut state.exports,
+            name: &name,
+            duration: state.doc.scenario().motion.sampling.duration(),
+            plan,
+            lang: state.look.lang,
+        },
+    );
+    match asked {
+        Some(export::ExportAction::Browse) => state.choose_file(Purpose::ExportTo),
+        Some(export::ExportAction::Export(path)) => state.export_asking(&path),
+        None => {}
+    }
+}
+
+/// What the Scenario panel asked, done.
+fn scenario_action(ctx: &egui::Context, state: &mut ViewerState, action: scenario::ScenarioAction) {
+    use scenario::ScenarioAction;
+    match action {
+        ScenarioAction::Undo => {
+            state.undo_edit();
+        }
+        ScenarioAction::Redo => {
+            state.redo_edit();
+        }
+        ScenarioAction::Preset(name) => match stewart_kinematics::Scenario::preset(&name) {
+            Ok(s) => {
+                state.load_scenario(s);
+                state.session.origin = format!("preset {name}");
+                state.files.status = None;
+            }
+            Err(e) => state.files.status = Some(Err(e.to_string())),
+        },
+        ScenarioAction::OpenPath(path) => state.open_path(&path),
+        ScenarioAction::OpenFile(path) => state.open_file(&path),
+        ScenarioAction::Save(path) => state.save_file_asking(&path),
+        ScenarioAction::Choose(purpose) => state.choose_file(purpose),
+        ScenarioAction::Language(lang) => state.set_language(lang),
+        ScenarioAction::Reset => {
+            state.reset_to_defaults();
+            ctx.memory_mut(|m| *m = egui::Memory::default());
+        }
+    }
+}
+
 /// The whole window.
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     style(ui.ctx(), state);
@@ -106,7 +169,18 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
                 egui::ScrollArea::vertical()
                     .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
                     .show(ui, |ui| {
-                        scenario::show(ui, state);
+                        let asked = scenario::show(
+                            ui,
+                            scenario::ScenarioParts {
+                                doc: &state.doc,
+                                files: &mut state.files,
+                                look: &mut state.look,
+                                session: &state.session,
+                            },
+                        );
+                        if let Some(action) = asked {
+                            scenario_action(ui.ctx(), state, action);
+                        }
                         ui.separator();
                         geometry::show(ui, &mut state.editor());
                         ui.separator();
@@ -248,9 +322,20 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     if !plot_hidden {
         splitter_grip(ui, plot_rect);
     }
-    export::window(ui.ctx(), state);
+    export_window(ui.ctx(), state);
     help::show(ui.ctx(), state.look.lang, &mut state.look.help);
-    file_dialogs::show(ui.ctx(), state);
+    let lang = state.look.lang;
+    for action in file_dialogs::show(ui.ctx(), &mut state.files, lang) {
+        match action {
+            file_dialogs::FileAction::Open(path) => state.open_path(&path),
+            file_dialogs::FileAction::SaveAsking(path) => state.save_file_asking(&path),
+            file_dialogs::FileAction::Save(path) => state.save_file(&path),
+            file_dialogs::FileAction::ExportTo(path) => {
+                state.exports.form.path = path.display().to_string();
+            }
+            file_dialogs::FileAction::Export(path) => state.start_export(path),
+        }
+    }
     if state.link.connected() {
         link_badge(ui.ctx(), state);
     }

@@ -7,78 +7,114 @@ use stewart_kinematics::io::scenario::presets;
 
 use super::widgets;
 use crate::i18n::Lang;
-use crate::viewer::state::ViewerState;
-use crate::viewer::state::files::Purpose;
+use crate::viewer::state::SessionState;
+use crate::viewer::state::document::Document;
+use crate::viewer::state::files::{Files, Purpose};
+use crate::viewer::state::look::Look;
 
-/// The panel.
-pub fn show(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    heading(ui, state);
-    preset_choice(ui, state);
-    if !state.scenario().description.is_empty() {
-        let words = crate::i18n::words::description(
-            t,
-            &state.scenario().name,
-            &state.scenario().description,
-        );
+/// What the Scenario panel asks of the viewer: each touches more than the panel holds
+/// (loading a scenario resets playback, the workspace, the link's plan…), so the caller
+/// does it.
+#[derive(Clone, Debug)]
+pub enum ScenarioAction {
+    /// Undo the last edit.
+    Undo,
+    /// Redo the last undone edit.
+    Redo,
+    /// Show this preset (its name).
+    Preset(String),
+    /// Open what a path is: a scenario or a pose table.
+    OpenPath(PathBuf),
+    /// Open a scenario file.
+    OpenFile(PathBuf),
+    /// Save the scenario here, asking before replacing another file.
+    Save(PathBuf),
+    /// Open the file dialog for this purpose.
+    Choose(Purpose),
+    /// Speak this language.
+    Language(Lang),
+    /// Forget the session: defaults from now on, nothing saved at the end.
+    Reset,
+}
+
+/// The parts the Scenario panel edits or shows.
+pub struct ScenarioParts<'a> {
+    /// The scenario and its undo history (read).
+    pub doc: &'a Document,
+    /// The path typed, the status, the folder's files, the recent files.
+    pub files: &'a mut Files,
+    /// Theme, presentation mode, language.
+    pub look: &'a mut Look,
+    /// Whether a session is kept, and its note.
+    pub session: &'a SessionState,
+}
+
+/// The panel. Returns what it asks of the viewer, if anything.
+pub fn show(ui: &mut egui::Ui, parts: ScenarioParts) -> Option<ScenarioAction> {
+    let t = parts.look.lang;
+    let mut action = heading(ui, parts.doc, t);
+    let scenario = parts.doc.scenario();
+    action = action.or(preset_choice(ui, &scenario.name, t));
+    if !scenario.description.is_empty() {
+        let words = crate::i18n::words::description(t, &scenario.name, &scenario.description);
         ui.label(egui::RichText::new(words).small());
     }
-    file_rows(ui, state);
-    folder_choice(ui, state);
-    recent_choice(ui, state);
-    widgets::status(ui, &state.files.status);
+    action = action.or(file_rows(ui, parts.files, t));
+    action = action.or(folder_choice(ui, parts.files, t));
+    action = action.or(recent_choice(ui, parts.files, t));
+    widgets::status(ui, &parts.files.status);
     ui.horizontal(|ui| {
-        ui.checkbox(&mut state.look.light_theme, t.tr("scenario.light_theme"));
-        ui.checkbox(&mut state.look.presentation, t.tr("scenario.presentation"))
+        ui.checkbox(&mut parts.look.light_theme, t.tr("scenario.light_theme"));
+        ui.checkbox(&mut parts.look.presentation, t.tr("scenario.presentation"))
             .on_hover_text(t.tr("scenario.presentation_tip"));
     });
-    language(ui, state);
-    if state.session.folder.is_some()
+    action = action.or(language(ui, t));
+    if parts.session.folder.is_some()
         && ui
             .button(t.tr("scenario.reset"))
             .on_hover_text(t.tr("scenario.reset_tip"))
             .clicked()
     {
-        state.reset_to_defaults();
-        ui.ctx().memory_mut(|m| *m = egui::Memory::default());
+        action = Some(ScenarioAction::Reset);
     }
-    if let Some(note) = &state.session.note {
+    if let Some(note) = &parts.session.note {
         ui.label(egui::RichText::new(note).color(widgets::WARNING).small());
     }
+    action
 }
 
 /// The heading with *Undo* and *Redo*.
-fn heading(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn heading(ui: &mut egui::Ui, doc: &Document, t: Lang) -> Option<ScenarioAction> {
+    let mut action = None;
     ui.horizontal(|ui| {
         ui.heading(t.tr("scenario.heading"));
         let undo = ui
             .add_enabled(
-                state.doc.undo.can_undo(),
+                doc.undo.can_undo(),
                 egui::Button::new(t.tr("scenario.undo")),
             )
             .on_hover_text(t.tr("scenario.undo_tip"));
         if undo.clicked() {
-            state.undo_edit();
+            action = Some(ScenarioAction::Undo);
         }
         let redo = ui
             .add_enabled(
-                state.doc.undo.can_redo(),
+                doc.undo.can_redo(),
                 egui::Button::new(t.tr("scenario.redo")),
             )
             .on_hover_text(t.tr("scenario.redo_tip"));
         if redo.clicked() {
-            state.redo_edit();
+            action = Some(ScenarioAction::Redo);
         }
     });
+    action
 }
 
 /// The presets, each with its description as a tooltip (read only when hovered).
-fn preset_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    let current = state.scenario().name.clone();
+fn preset_choice(ui: &mut egui::Ui, current: &str, t: Lang) -> Option<ScenarioAction> {
+    let mut action = None;
     egui::ComboBox::from_label(t.tr("scenario.preset"))
-        .selected_text(&current)
+        .selected_text(current)
         .show_ui(ui, |ui| {
             for name in presets::names() {
                 let chosen = ui
@@ -92,73 +128,68 @@ fn preset_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
                     })
                     .clicked();
                 if chosen {
-                    match Scenario::preset(name) {
-                        Ok(s) => {
-                            state.load_scenario(s);
-                            state.session.origin = format!("preset {name}");
-                            state.files.status = None;
-                        }
-                        Err(e) => state.files.status = Some(Err(e.to_string())),
-                    }
+                    action = Some(ScenarioAction::Preset(name.to_owned()));
                 }
             }
         });
+    action
 }
 
 /// The path typed, and *Open*, *Save*, *Open…*, *Save as…*.
-fn file_rows(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn file_rows(ui: &mut egui::Ui, files: &mut Files, t: Lang) -> Option<ScenarioAction> {
     ui.horizontal(|ui| {
         let label = ui.label(t.tr("scenario.file"));
         ui.add(
-            egui::TextEdit::singleline(&mut state.files.path)
+            egui::TextEdit::singleline(&mut files.path)
                 .hint_text("scenario.toml")
                 .desired_width(ui.available_width()),
         )
         .labelled_by(label.id);
     });
+    let mut action = None;
     ui.horizontal(|ui| {
-        let path = PathBuf::from(state.files.path.trim());
-        let has_path = !state.files.path.trim().is_empty();
+        let path = PathBuf::from(files.path.trim());
+        let has_path = !files.path.trim().is_empty();
         if ui
             .add_enabled(has_path, egui::Button::new(t.tr("scenario.open")))
             .on_hover_text(t.tr("scenario.open_tip"))
             .clicked()
         {
-            state.open_path(&path);
+            action = Some(ScenarioAction::OpenPath(path.clone()));
         }
         if ui
             .add_enabled(has_path, egui::Button::new(t.tr("scenario.save")))
             .on_hover_text(t.tr("scenario.save_tip"))
             .clicked()
         {
-            state.save_file_asking(&path);
+            action = Some(ScenarioAction::Save(path));
         }
         if ui
             .button(t.tr("scenario.open_dialog"))
             .on_hover_text(t.tr("scenario.open_dialog_tip"))
             .clicked()
         {
-            state.choose_file(Purpose::Open);
+            action = Some(ScenarioAction::Choose(Purpose::Open));
         }
         if ui
             .button(t.tr("scenario.save_as"))
             .on_hover_text(t.tr("scenario.save_as_tip"))
             .clicked()
         {
-            state.choose_file(Purpose::SaveScenario);
+            action = Some(ScenarioAction::Choose(Purpose::SaveScenario));
         }
     });
+    action
 }
 
 /// The scenario files of the current folder (read while the list is open, at most once a
 /// second), each with its full path as a tooltip.
-fn folder_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+fn folder_choice(ui: &mut egui::Ui, files: &mut Files, t: Lang) -> Option<ScenarioAction> {
+    let mut action = None;
     egui::ComboBox::from_label(t.tr("scenario.in_folder"))
         .selected_text(t.tr("scenario.choose"))
         .show_ui(ui, |ui| {
-            let here = state.files.scenario_files().to_vec();
+            let here = files.scenario_files().to_vec();
             if here.is_empty() {
                 ui.label(t.tr("scenario.none_here"));
             }
@@ -172,24 +203,24 @@ fn folder_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
                     .on_hover_text(full)
                     .clicked()
                 {
-                    state.open_file(&file);
+                    action = Some(ScenarioAction::OpenFile(file));
                 }
             }
         });
+    action
 }
 
 /// The files opened or saved last (kept between runs), newest first; one that is gone is
 /// shown but cannot be chosen.
-fn recent_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
-    if state.files.recent.is_empty() {
-        return;
+fn recent_choice(ui: &mut egui::Ui, files: &Files, t: Lang) -> Option<ScenarioAction> {
+    if files.recent.is_empty() {
+        return None;
     }
     let mut chosen = None;
     egui::ComboBox::from_label(t.tr("scenario.recent"))
         .selected_text(t.tr("scenario.choose"))
         .show_ui(ui, |ui| {
-            for file in &state.files.recent {
+            for file in &files.recent {
                 let name = file.file_name().map_or_else(
                     || file.display().to_string(),
                     |n| n.to_string_lossy().into_owned(),
@@ -210,28 +241,25 @@ fn recent_choice(ui: &mut egui::Ui, state: &mut ViewerState) {
                 }
             }
         });
-    if let Some(file) = chosen {
-        state.open_path(&file);
-    }
+    chosen.map(ScenarioAction::OpenPath)
 }
 
 /// The interface's language: English or Chinese (Chinese only with a font that has it).
-fn language(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let t = state.look.lang;
+/// `t`: the language spoken now.
+fn language(ui: &mut egui::Ui, t: Lang) -> Option<ScenarioAction> {
     let has_font = crate::i18n::fonts::cjk().is_some();
+    let mut action = None;
     ui.horizontal(|ui| {
         ui.label(t.tr("scenario.language"));
         for lang in Lang::ALL {
             let usable = lang == Lang::En || has_font;
             let button = ui
-                .add_enabled(
-                    usable,
-                    egui::Button::selectable(state.look.lang == lang, lang.own_name()),
-                )
+                .add_enabled(usable, egui::Button::selectable(t == lang, lang.own_name()))
                 .on_disabled_hover_text(t.tr("scenario.no_cjk_font"));
-            if button.clicked() && state.look.lang != lang {
-                state.set_language(lang);
+            if button.clicked() && t != lang {
+                action = Some(ScenarioAction::Language(lang));
             }
         }
     });
+    action
 }

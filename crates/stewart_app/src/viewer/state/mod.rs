@@ -11,6 +11,7 @@ pub mod derived;
 pub mod document;
 pub mod editor;
 pub mod export_job;
+mod export_start;
 pub mod exports;
 mod file_actions;
 pub mod files;
