@@ -51,7 +51,7 @@ pub fn params_with_layout(geometry: &Geometry, layout: Layout) -> GeometryParams
     params
 }
 
-/// This geometry with `layout` (see [`crate::analysis::sound_layout::params_with_layout`]), or `None` when
+/// This geometry with `layout` (see [`params_with_layout`]), or `None` when
 /// that geometry is refused.
 pub fn with_layout(geometry: &Geometry, layout: Layout) -> Option<Geometry> {
     Geometry::new(params_with_layout(geometry, layout)).ok()

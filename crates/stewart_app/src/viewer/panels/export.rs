@@ -96,35 +96,27 @@ pub enum ExportAction {
 }
 
 /// The export window, while it is open. Returns what it asks of the viewer.
-pub fn window(ctx: &egui::Context, parts: ExportParts) -> Option<ExportAction> {
+pub fn window(ctx: &egui::Context, mut parts: ExportParts) -> Option<ExportAction> {
     if !parts.exports.open {
         return None;
     }
     let t = parts.lang;
     let mut open = true;
     let mut action = None;
-    let exports = &mut *parts.exports;
     egui::Window::new(t.tr("export.heading"))
         .open(&mut open)
         .resizable(false)
         .collapsible(false)
         .default_pos(ctx.content_rect().right_top() + egui::vec2(-420.0, 60.0))
-        .show(ctx, |ui| {
-            action = body(ui, exports, parts.name, parts.duration, &parts.plan, t);
-        });
+        .show(ctx, |ui| action = body(ui, &mut parts));
     parts.exports.open &= open;
     action
 }
 
 /// What the export window holds: the form and *Export*, or the running export's progress.
-fn body(
-    ui: &mut egui::Ui,
-    exports: &mut Exports,
-    name: &str,
-    duration: f64,
-    plan: &Option<(FramePlan, usize)>,
-    t: Lang,
-) -> Option<ExportAction> {
+fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
+    let t = parts.lang;
+    let exports = &mut *parts.exports;
     if let Some(job) = &mut exports.job {
         ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
         ui.label(job.describe());
@@ -142,7 +134,8 @@ fn body(
         }
         return None;
     }
-    let mut action = form(ui, exports, name, duration, plan, t);
+    let mut action = form(ui, parts);
+    let exports = &mut *parts.exports;
     let path = exports.form.path.trim().to_owned();
     let sound = title_error(&exports.form.title).is_none();
     if ui
@@ -171,15 +164,9 @@ fn body(
 }
 
 /// The form; returns [`ExportAction::Browse`] when *Browse…* was pressed.
-fn form(
-    ui: &mut egui::Ui,
-    exports: &mut Exports,
-    name: &str,
-    duration: f64,
-    plan: &Option<(FramePlan, usize)>,
-    t: Lang,
-) -> Option<ExportAction> {
-    let form = &mut exports.form;
+fn form(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
+    let (t, name, duration) = (parts.lang, parts.name, parts.duration);
+    let form = &mut parts.exports.form;
     let before = form.kind;
     egui::ComboBox::from_label(t.tr("export.what"))
         .selected_text(form.kind.label(t))
@@ -262,7 +249,7 @@ fn form(
         }
         // What the export will write, planned for the path as typed (its extension
         // decides the format and so the default rate).
-        if let Some((plan, n)) = plan {
+        if let Some((plan, n)) = &parts.plan {
             let n = *n;
             let words = t.fmt(
                 "export.frames",

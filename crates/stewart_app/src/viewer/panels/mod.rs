@@ -24,6 +24,7 @@ mod workspace;
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::files::Purpose;
+use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::MotionMode;
 use crate::viewer::state::teleop;
 
@@ -46,14 +47,7 @@ pub const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 /// The 3D view: its toolbar's requests done, the camera framed for the view's shape, then
 /// the scene drawn.
 fn view_panel(ui: &mut egui::Ui, state: &mut ViewerState) {
-    let mut parts = view::ViewParts {
-        look: &mut state.look,
-        playback: &mut state.playback,
-        shots: &mut state.shots,
-        exports: &mut state.exports,
-        quality: &mut state.quality,
-    };
-    let (area, action) = view::area(ui, &mut parts);
+    let (area, action) = view::area(ui, &mut view_parts(state));
     match action {
         Some(view::ViewAction::LookFrom(azimuth, elevation)) => state.look_from(azimuth, elevation),
         Some(view::ViewAction::Fit) => state.fit_camera(state.look.view_aspect),
@@ -64,14 +58,18 @@ fn view_panel(ui: &mut egui::Ui, state: &mut ViewerState) {
     state.follow_geometry(area.aspect);
     let list = state.draw_list(&state.theme());
     let animating = state.animating();
-    let mut parts = view::ViewParts {
+    view::paint(ui, &mut view_parts(state), &area, list, animating);
+}
+
+/// The parts the 3D view edits.
+fn view_parts(state: &mut ViewerState) -> view::ViewParts<'_> {
+    view::ViewParts {
         look: &mut state.look,
         playback: &mut state.playback,
         shots: &mut state.shots,
         exports: &mut state.exports,
         quality: &mut state.quality,
-    };
-    view::paint(ui, &mut parts, &area, list, animating);
+    }
 }
 
 /// The export window, and what it asks done.
@@ -137,6 +135,159 @@ fn scenario_action(ctx: &egui::Context, state: &mut ViewerState, action: scenari
     }
 }
 
+/// The side panel's sections, top to bottom, each given the parts it edits.
+fn controls(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let asked = scenario::show(
+        ui,
+        scenario::ScenarioParts {
+            doc: &state.doc,
+            files: &mut state.files,
+            look: &mut state.look,
+            session: &state.session,
+        },
+    );
+    if let Some(action) = asked {
+        scenario_action(ui.ctx(), state, action);
+    }
+    ui.separator();
+    geometry::show(ui, &mut state.editor());
+    ui.separator();
+    let pose = state.pose();
+    let next_mode = motion::show(
+        ui,
+        motion::MotionParts {
+            doc: &mut state.doc,
+            playback: &mut state.playback,
+            teleop: &mut state.teleop,
+            reach: &mut state.reach,
+            assembly_shown: state.assembly.shown,
+            assembly_error: state.assembly_error.as_ref(),
+            pose,
+            lang: state.look.lang,
+            expand: state.look.expand_panels,
+        },
+    );
+    if next_mode {
+        state.next_assembly_mode();
+    }
+    ui.separator();
+    playback::show(
+        ui,
+        &mut state.playback,
+        &state.doc.scenario().motion.sampling,
+        state.look.lang,
+    );
+    view::drawing(ui, &mut state.look);
+    ui.separator();
+    legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
+    ui.separator();
+    if let Some(time) = diagnostics::show(ui, &mut state.editor()) {
+        let duration = state.duration();
+        state.playback.pause_at(time, duration);
+    }
+    tool_sections(ui, state);
+}
+
+/// The side panel's analysis and hardware sections: design, workspace, reach, the link,
+/// cueing, dynamics.
+fn tool_sections(ui: &mut egui::Ui, state: &mut ViewerState) {
+    design::show(
+        ui,
+        &mut state.design,
+        &mut state.doc,
+        state.look.lang,
+        state.look.expand_panels,
+    );
+    ui.separator();
+    let pose = state.pose();
+    workspace::show(
+        ui,
+        &mut state.workspace,
+        state.doc.scenario(),
+        &pose,
+        state.look.lang,
+        state.look.expand_panels,
+    );
+    let (t, open) = (state.look.lang, state.look.expand_panels);
+    reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
+    ui.separator();
+    let (t, open) = (state.look.lang, state.look.expand_panels);
+    let connect = link::show(
+        ui,
+        &mut state.link,
+        &mut state.doc,
+        &mut state.link_error,
+        t,
+        open,
+    );
+    if connect {
+        state.connect_link();
+    }
+    ui.separator();
+    let now = state.doc.scenario().motion.sampling.start() + state.playback.time;
+    let (lang, expand) = (state.look.lang, state.look.expand_panels);
+    let mut editor = Editor::new(&mut state.doc, &mut state.playback, lang, expand);
+    if cueing::show(ui, &mut editor, now, state.link.cue()) {
+        state.choose_file(Purpose::Open);
+    }
+    ui.separator();
+    let pose = state.pose();
+    let mut editor = Editor::new(&mut state.doc, &mut state.playback, lang, expand);
+    dynamics::show(ui, &mut editor, &pose, &mut state.modes);
+}
+
+/// The plot's panel at the bottom, sized for the window's `height` and the mode: at most
+/// two fifths of the window, a third in presentation mode (the height from before kept to
+/// give back when it ends).
+fn plot_panel(height: f32, frame: egui::Frame, look: &mut Look) -> egui::Panel {
+    let mut plot_panel = egui::Panel::bottom("plot")
+        .frame(frame)
+        .resizable(true)
+        .default_size(if look.presentation {
+            (height / 4.0).max(MIN_PLOT)
+        } else {
+            PLOT_HEIGHT
+        });
+    if look.presentation {
+        // The height from before, taken before this frame's plot (a third at most) is
+        // drawn (started in presentation mode: the default height).
+        if look.plot_height_before_presentation.is_none() {
+            let before = look.plot_height;
+            look.plot_height_before_presentation = Some(if before >= MIN_PLOT {
+                before
+            } else {
+                PLOT_HEIGHT
+            });
+        }
+        plot_panel = plot_panel.size_range(MIN_PLOT..=(height / 3.0).max(MIN_PLOT));
+    } else {
+        // Never more than two fifths of the window: in a short window the 3D view keeps
+        // the larger share.
+        plot_panel = plot_panel.size_range(MIN_PLOT..=(0.4 * height).max(MIN_PLOT));
+        if let Some(before) = look.plot_height_to_restore.take() {
+            plot_panel =
+                plot_panel.exact_size(before.clamp(MIN_PLOT, (0.4 * height).max(MIN_PLOT)));
+        }
+    }
+    plot_panel
+}
+
+/// The file dialogs, and what they ask done.
+fn file_dialogs(ctx: &egui::Context, state: &mut ViewerState) {
+    let lang = state.look.lang;
+    for action in file_dialogs::show(ctx, &mut state.files, lang) {
+        match action {
+            file_dialogs::FileAction::Open(path) => state.open_path(&path),
+            file_dialogs::FileAction::SaveAsking(path) => state.save_file_asking(&path),
+            file_dialogs::FileAction::Save(path) => state.save_file(&path),
+            file_dialogs::FileAction::ExportTo(path) => {
+                state.exports.form.path = path.display().to_string();
+            }
+            file_dialogs::FileAction::Export(path) => state.start_export(path),
+        }
+    }
+}
+
 /// The whole window.
 pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     style(ui.ctx(), state);
@@ -168,137 +319,17 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical()
                     .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
-                    .show(ui, |ui| {
-                        let asked = scenario::show(
-                            ui,
-                            scenario::ScenarioParts {
-                                doc: &state.doc,
-                                files: &mut state.files,
-                                look: &mut state.look,
-                                session: &state.session,
-                            },
-                        );
-                        if let Some(action) = asked {
-                            scenario_action(ui.ctx(), state, action);
-                        }
-                        ui.separator();
-                        geometry::show(ui, &mut state.editor());
-                        ui.separator();
-                        let pose = state.pose();
-                        let next_mode = motion::show(
-                            ui,
-                            motion::MotionParts {
-                                doc: &mut state.doc,
-                                playback: &mut state.playback,
-                                teleop: &mut state.teleop,
-                                reach: &mut state.reach,
-                                assembly_shown: state.assembly.shown,
-                                assembly_error: state.assembly_error.as_ref(),
-                                pose,
-                                lang: state.look.lang,
-                                expand: state.look.expand_panels,
-                            },
-                        );
-                        if next_mode {
-                            state.next_assembly_mode();
-                        }
-                        ui.separator();
-                        playback::show(
-                            ui,
-                            &mut state.playback,
-                            &state.doc.scenario().motion.sampling,
-                            state.look.lang,
-                        );
-                        view::drawing(ui, &mut state.look);
-                        ui.separator();
-                        legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
-                        ui.separator();
-                        if let Some(time) = diagnostics::show(ui, &mut state.editor()) {
-                            let duration = state.duration();
-                            state.playback.pause_at(time, duration);
-                        }
-                        design::show(
-                            ui,
-                            &mut state.design,
-                            &mut state.doc,
-                            state.look.lang,
-                            state.look.expand_panels,
-                        );
-                        ui.separator();
-                        let pose = state.pose();
-                        workspace::show(
-                            ui,
-                            &mut state.workspace,
-                            state.doc.scenario(),
-                            &pose,
-                            state.look.lang,
-                            state.look.expand_panels,
-                        );
-                        let (t, open) = (state.look.lang, state.look.expand_panels);
-                        reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
-                        ui.separator();
-                        let (t, open) = (state.look.lang, state.look.expand_panels);
-                        let connect = link::show(
-                            ui,
-                            &mut state.link,
-                            &mut state.doc,
-                            &mut state.link_error,
-                            t,
-                            open,
-                        );
-                        if connect {
-                            state.connect_link();
-                        }
-                        ui.separator();
-                        let now =
-                            state.doc.scenario().motion.sampling.start() + state.playback.time;
-                        let (lang, expand) = (state.look.lang, state.look.expand_panels);
-                        let mut editor =
-                            Editor::new(&mut state.doc, &mut state.playback, lang, expand);
-                        if cueing::show(ui, &mut editor, now, state.link.cue()) {
-                            state.choose_file(Purpose::Open);
-                        }
-                        ui.separator();
-                        let pose = state.pose();
-                        let mut editor =
-                            Editor::new(&mut state.doc, &mut state.playback, lang, expand);
-                        dynamics::show(ui, &mut editor, &pose, &mut state.modes);
-                    });
+                    .show(ui, |ui| controls(ui, state));
             });
     }
     // The plot's top edge is a splitter: drag it to give the plot more or less height (at
     // most two fifths of the window). In presentation mode it takes at most a third (G
     // hides it); leaving gives the height from before back.
-    let height = ui.ctx().content_rect().height();
-    let mut plot_panel = egui::Panel::bottom("plot")
-        .frame(side_frame)
-        .resizable(true)
-        .default_size(if state.look.presentation {
-            (height / 4.0).max(MIN_PLOT)
-        } else {
-            PLOT_HEIGHT
-        });
-    if state.look.presentation {
-        // The height from before, taken before this frame's plot (a third at most) is
-        // drawn (started in presentation mode: the default height).
-        if state.look.plot_height_before_presentation.is_none() {
-            let before = state.look.plot_height;
-            state.look.plot_height_before_presentation = Some(if before >= MIN_PLOT {
-                before
-            } else {
-                PLOT_HEIGHT
-            });
-        }
-        plot_panel = plot_panel.size_range(MIN_PLOT..=(height / 3.0).max(MIN_PLOT));
-    } else {
-        // Never more than two fifths of the window: in a short window the 3D view keeps
-        // the larger share.
-        plot_panel = plot_panel.size_range(MIN_PLOT..=(0.4 * height).max(MIN_PLOT));
-        if let Some(before) = state.look.plot_height_to_restore.take() {
-            plot_panel =
-                plot_panel.exact_size(before.clamp(MIN_PLOT, (0.4 * height).max(MIN_PLOT)));
-        }
-    }
+    let plot_panel = plot_panel(
+        ui.ctx().content_rect().height(),
+        side_frame,
+        &mut state.look,
+    );
     let plot_hidden = state.look.presentation && state.look.plot_hidden;
     let plot_rect = if plot_hidden {
         egui::Rect::NOTHING
@@ -324,18 +355,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     export_window(ui.ctx(), state);
     help::show(ui.ctx(), state.look.lang, &mut state.look.help);
-    let lang = state.look.lang;
-    for action in file_dialogs::show(ui.ctx(), &mut state.files, lang) {
-        match action {
-            file_dialogs::FileAction::Open(path) => state.open_path(&path),
-            file_dialogs::FileAction::SaveAsking(path) => state.save_file_asking(&path),
-            file_dialogs::FileAction::Save(path) => state.save_file(&path),
-            file_dialogs::FileAction::ExportTo(path) => {
-                state.exports.form.path = path.display().to_string();
-            }
-            file_dialogs::FileAction::Export(path) => state.start_export(path),
-        }
-    }
+    file_dialogs(ui.ctx(), state);
     if state.link.connected() {
         link_badge(ui.ctx(), state);
     }

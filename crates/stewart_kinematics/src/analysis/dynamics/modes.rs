@@ -98,7 +98,7 @@ pub fn moved_along(geometry: &Geometry, pose: &Pose, v: &Vector6<f64>, s: f64) -
 }
 
 /// How far the platform joints move, at most, for the motion `v` (as in
-/// [`crate::analysis::dynamics::moved_along`]) at `pose`, per unit of `s`, metres.
+/// [`moved_along`]) at `pose`, per unit of `s`, metres.
 pub fn joint_travel(geometry: &Geometry, pose: &Pose, v: &Vector6<f64>) -> f64 {
     let r = pose.rotation();
     let (t, w) = (

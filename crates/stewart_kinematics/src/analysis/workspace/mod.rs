@@ -55,7 +55,7 @@ pub enum WorkspaceError {
 /// Largest resolution (columns per side): 16 million columns.
 pub const MAX_RESOLUTION: usize = 4096;
 
-/// Resolution of the probe [`crate::analysis::workspace::workspace_cost`] runs to estimate a request's cost.
+/// Resolution of the probe [`workspace_cost`] runs to estimate a request's cost.
 pub const PROBE_RESOLUTION: usize = 64;
 
 /// Progress and cancellation of a long workspace computation, shared with the thread
@@ -425,7 +425,7 @@ pub fn constant_orientation_workspace(
     )
 }
 
-/// The cost of [`crate::analysis::workspace::constant_orientation_workspace`] at `resolution`, from a
+/// The cost of [`constant_orientation_workspace`] at `resolution`, from a
 /// probe at [`PROBE_RESOLUTION`]: columns, spans and evaluations scale as N² (each
 /// column is solved from its boundary polynomials or by a certified scan whose cost
 /// barely grows with the resolution).
@@ -452,7 +452,7 @@ pub fn workspace_cost(
     })
 }
 
-/// [`crate::analysis::workspace::constant_orientation_workspace`], counting progress on `control` and
+/// [`constant_orientation_workspace`], counting progress on `control` and
 /// stopping early (with [`WorkspaceError::Cancelled`]) when its `cancel` flag is set.
 pub fn constant_orientation_workspace_with(
     geometry: &Geometry,

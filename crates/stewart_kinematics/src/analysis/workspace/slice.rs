@@ -90,7 +90,7 @@ pub fn workspace_slice(
     })
 }
 
-/// The same grid as [`crate::analysis::workspace::workspace_slice`], each reachable cell holding the
+/// The same grid as [`workspace_slice`], each reachable cell holding the
 /// lowest stiffness of the platform there for actuators of stiffness `k`: the smallest
 /// eigenvalue of `K` with its rotations measured at the characteristic length (see
 /// [`crate::analysis::dynamics::lowest_stiffness`]), N/m.

@@ -1,5 +1,5 @@
 //! The workspace under cone and clearance limits against an independent brute force: a
-//! 3-D grid of positions each tested with [`crate::analysis::workspace::pose_within_limits`] (plain inverse
+//! 3-D grid of positions each tested with [`super::super::pose_within_limits`] (plain inverse
 //! kinematics and the limit checks, none of the column code).
 
 use super::*;
