@@ -4,10 +4,10 @@
 Checks three things and prints every miss:
 
 1. every path in the tree at the top of ARCHITECTURE.md exists;
-2. every module a crate's table names (`name`, `folder/`, `parent/child`; in the
+2. every module a crate's table or list names (`name`, `folder/`, `parent/child`; in the
    kinematics crate a module is named without its layer) is a file or folder of that
-   crate, and every `stewart_<crate>::a::b` path the text names leads to a module that
-   exists (its last segments may be items);
+   crate, and every `stewart_<crate>::a::b::C` path the text names leads through modules
+   that exist to an item the last of them defines or re-exports;
 3. every public module (`pub mod`) of each crate is named: a crate's top-level modules
    (for the kinematics crate each layer's modules) by a row of its table, a module inside
    another by the row of its parent (or an ancestor's) (`child`, `parent/child.rs` or `child/` there).
@@ -31,7 +31,7 @@ LAYERS = ["model", "solve", "analysis", "io"]
 
 
 def module_file(src, path):
-    """The file or folder of module `path` (slash-separated) under `src`, or None."""
+    """The file of module `path` (slash-separated) under `src`, or None."""
     for candidate in (src / f"{path}.rs", src / path / "mod.rs"):
         if candidate.exists():
             return candidate
@@ -72,14 +72,10 @@ def main():
     for line in tree.splitlines():
         token = line.split()[0] if line.strip() and not line.startswith(" ") else None
         if token and (token.endswith("/") or "." in token):
-            base = ROOT if not token.startswith("crates/") and token != "crates/" else ROOT
-            if token.endswith("/") and "/" not in token.rstrip("/") and token not in ("crates/",):
-                path = ROOT / token
-                if not path.exists():
-                    # A crate folder is listed under `crates/`.
-                    path = ROOT / "crates" / token
-            else:
-                path = base / token
+            path = ROOT / token
+            if not path.exists() and token.count("/") == 1:
+                # A crate's folder, listed under `crates/`.
+                path = ROOT / "crates" / token
             if not path.exists():
                 misses.append(f"the tree names {token}, which does not exist")
 
@@ -99,6 +95,13 @@ def main():
                     misses.append(f"the {sections[k]} crate's table names `{name}`, which is not a module")
                 else:
                     rows[where] = rest
+            # The bullets' modules (`name`, `name/`) are modules of this crate too.
+        for line in sections[k + 1].splitlines():
+            if not line.lstrip().startswith("- `"):
+                continue
+            for name in re.findall(r"`([a-z_0-9]+/?)`", line):
+                if resolve(crate, name) is None:
+                    misses.append(f"the {sections[k]} crate's list names `{name}`, which is not a module")
         named_rows[crate] = rows
     for crate, rows in named_rows.items():
         for module in public_modules(crate):
@@ -119,18 +122,26 @@ def main():
             misses.append(f"{crate}'s public module {module} is not named in ARCHITECTURE.md")
 
     # `stewart_<crate>::a::b` paths in the text.
-    for m in re.finditer(r"\b(stewart_(?:kinematics|link|render|app))((?:::[a-z_0-9]+)+)", text):
+    for m in re.finditer(r"\b(stewart_(?:kinematics|link|render|app))((?:::[A-Za-z_0-9]+)+)", text):
         crate, segments = m.group(1), m.group(2).strip(":").split("::")
         src = ROOT / "crates" / crate / "src"
-        if not module_file(src, segments[0]) and segments[0] not in ("",):
-            misses.append(f"`{m.group(0)}`: {crate} has no module {segments[0]}")
-            continue
-        path = segments[0]
-        for seg in segments[1:]:
-            if module_file(src, f"{path}/{seg}"):
-                path = f"{path}/{seg}"
+        path, file, rest = "", src / "lib.rs", []
+        for k, seg in enumerate(segments):
+            found = module_file(src, f"{path}/{seg}".lstrip("/"))
+            if found:
+                path, file = f"{path}/{seg}".lstrip("/"), found
             else:
+                rest = segments[k:]
                 break
+        if rest:
+            # The first segment past the modules is an item the module defines or re-exports.
+            source = file.read_text(encoding="utf-8")
+            item = re.escape(rest[0])
+            defined = re.search(
+                rf"\b(?:fn|struct|enum|type|trait|const|static|mod)\s+{item}\b", source
+            ) or re.search(rf"^\s*pub use [^;]*\b{item}\b[^;]*;", source, re.M)
+            if not defined:
+                misses.append(f"`{m.group(0)}`: {crate}::{path.replace('/', '::')} has no item {rest[0]}")
 
     for miss in misses:
         print(miss)

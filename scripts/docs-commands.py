@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Run every command README.md and the user guide (docs/guide/*.md) show.
 
-Each ```sh block is run by bash (`set -eu`) as a reader would type it, from a scratch
+Each ```sh block is run by bash (`set -euo pipefail`: a command that fails inside a pipe
+fails the block) as a reader would type it, from a scratch
 folder that holds links to the repository's `examples/`, `crates/` and `docs/` (so the
 paths the docs name resolve and nothing is written into the tree), with the release
 `stewart` (or the debug one) first on PATH. The blocks of one file share their folder, in order (a later
@@ -53,7 +54,8 @@ def main():
             for line, skip, body in blocks(path):
                 where = f"{path.relative_to(ROOT)}:{line}"
                 xvfb = bool(skip) and skip.startswith("run under Xvfb")
-                if (skip and not xvfb) or any(s in body for s in SELF):
+                two_commands = path.name == "README.md" and any(s in body for s in SELF)
+                if (skip and not xvfb) or two_commands:
                     skipped += 1
                     print(f"skip {where}: {skip or 'the two commands'}")
                     continue
@@ -61,18 +63,25 @@ def main():
                     print(f"run  {where}:\n{body}")
                     continue
                 start = time.monotonic()
-                done = subprocess.run(
-                    (["xvfb-run", "-a"] if xvfb else []) + ["bash", "-c", "set -eu\n" + body],
-                    cwd=scratch,
-                    env=env,
-                    capture_output=True,
-                    text=True,
-                    timeout=600,
-                )
                 ran += 1
+                try:
+                    done = subprocess.run(
+                        (["xvfb-run", "-a"] if xvfb else [])
+                        + ["bash", "-c", "set -euo pipefail\n" + body],
+                        cwd=scratch,
+                        env=env,
+                        capture_output=True,
+                        text=True,
+                        timeout=900,
+                    )
+                except (OSError, subprocess.TimeoutExpired) as e:
+                    failures.append(f"{where}: {e}\n{body}")
+                    print(f"ran  {where}: {e}")
+                    continue
                 print(f"ran  {where} in {time.monotonic() - start:.1f} s: exit {done.returncode}")
                 if done.returncode != 0:
-                    failures.append(f"{where}: exit {done.returncode}\n{body}{done.stdout[-2000:]}{done.stderr[-2000:]}")
+                    output = done.stdout[-2000:] + done.stderr[-2000:]
+                    failures.append(f"{where}: exit {done.returncode}\n{body}{output}")
     for failure in failures:
         print(f"\nFAILED {failure}", file=sys.stderr)
     print(f"docs-commands: {ran} blocks ran, {skipped} skipped, {len(failures)} failed")

@@ -9,7 +9,8 @@ import is printed with its file and line; `impl Geometry` blocks outside model/ 
 counted too (methods of the platform added by other layers).
 
 Modules any layer may name (`bounds`, `text`) and the exceptions ARCHITECTURE.md lists
-are not counted; nor are tests (`tests.rs`, `tests/`, and what follows `#[cfg(test)]`).
+are not counted; nor are tests (`tests.rs`, `tests/`, and what `#[cfg(test)]` guards).
+An `impl Geometry` counts in any form, an extension trait's `impl Trait for Geometry` too.
 
 Usage: layer-check.py [--max N]. Exits 1 when the count of upward imports and calls is
 over N (default 0): scripts/check.sh holds the count where it stands (a ratchet, lowered
@@ -41,6 +42,35 @@ EXCEPTIONS = {
 }
 
 
+def without_tests(text):
+    """`text` without what `#[cfg(test)]` guards: an inline `mod tests { … }` (to its
+    matching brace) or a one-line item (`mod tests;`); the code around it stays."""
+    out = []
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].strip() != "#[cfg(test)]":
+            out.append(lines[i])
+            i += 1
+            continue
+        i += 1
+        while i < len(lines) and not lines[i].strip():
+            i += 1
+        if i < len(lines) and "{" not in lines[i]:
+            i += 1
+            continue
+        depth = 0
+        while i < len(lines):
+            depth += lines[i].count("{") - lines[i].count("}")
+            i += 1
+            if depth <= 0:
+                break
+    return "\n".join(out)
+
+
+IMPL_GEOMETRY = re.compile(r"\s*impl\b(?:\s*<[^>]*>)?\s+(?:[\w:]+(?:<[^>]*>)?\s+for\s+)?Geometry\b")
+
+
 def module_layers():
     """Each module name (a file or folder directly in a layer's folder) -> its layer."""
     found = {}
@@ -56,9 +86,9 @@ def impl_methods(path):
     """The methods defined in the `impl Geometry` blocks of `path` (brace counting)."""
     names = set()
     depth = None
-    for line in path.read_text(encoding="utf-8").split("#[cfg(test)]")[0].splitlines():
+    for line in without_tests(path.read_text(encoding="utf-8")).splitlines():
         if depth is None:
-            if re.match(r"\s*impl\s+Geometry\b", line):
+            if IMPL_GEOMETRY.match(line):
                 depth = line.count("{") - line.count("}")
             continue
         if depth == 1:
@@ -87,7 +117,7 @@ def main():
             here = str(path.relative_to(ROOT))
             text = path.read_text(encoding="utf-8")
             # Tests may reach anywhere: only the code above `#[cfg(test)]` counts.
-            code = text.split("#[cfg(test)]")[0]
+            code = without_tests(text)
             for number, line in enumerate(code.splitlines(), 1):
                 if line.lstrip().startswith("//"):
                     continue
@@ -99,7 +129,7 @@ def main():
                     if target and target not in ALLOWED[layer]:
                         rel = path.relative_to(ROOT.parent.parent.parent)
                         upward.append(f"{rel}:{number}: {layer} names {target} ({m.group(0)})")
-                if layer != "model" and re.match(r"\s*impl\s+Geometry\b", line):
+                if layer != "model" and IMPL_GEOMETRY.match(line):
                     impls.append(str(path.relative_to(ROOT.parent.parent.parent)))
     # Methods of Geometry by the layer that defines them; a method defined in model too is
     # model's.
@@ -115,7 +145,7 @@ def main():
     call = re.compile(r"\.([a-z_][a-z0-9_]*)\(")
     for layer in ["model", "solve", "analysis"]:
         for path in sorted((ROOT / layer).rglob("*.rs")):
-            code = path.read_text(encoding="utf-8").split("#[cfg(test)]")[0]
+            code = without_tests(path.read_text(encoding="utf-8"))
             for number, line in enumerate(code.splitlines(), 1):
                 if line.lstrip().startswith("//"):
                     continue

@@ -266,7 +266,7 @@ def test_the_guides_python_example_runs():
     start = text.index("```python\nimport numpy as np\nimport stewart\n")
     code = text[start + len("```python\n") : text.index("```", start + 3)]
     scope = {}
-    exec(compile(code, "README.md", "exec"), scope)
+    exec(compile(code, "docs/guide/python.md", "exec"), scope)
     assert scope["legs"].shape == (2, 6)
     assert np.max(np.abs(scope["back"] - scope["poses"])) < 1e-9
     assert scope["report"]["scenario"] == "paired"

@@ -88,21 +88,15 @@ pub fn reference(scenario: &Scenario) -> String {
          outside *accepted* (`>`/`<`: that end itself is refused); the slider offers *slider*.\n",
         scenario.name
     );
-    let sections = [
-        (Group::Geometry, "`[geometry]`, `[pivot]`: the platform"),
-        (Group::Trajectory, "`[trajectory]`: the motion"),
-        (
-            Group::Limits,
-            "`[limits]`: speeds, accelerations, joint cones",
-        ),
-        (Group::Checks, "`[checks]`: the pre-flight checks"),
-        (Group::Cueing, "`[cueing]`: motion cueing"),
-        (
-            Group::Dynamics,
-            "`[dynamics]`: stiffness, friction, the legs' parts",
-        ),
-    ];
-    for (group, title) in sections {
+    // Every group that holds a setting, in the catalogue's order.
+    let mut groups: Vec<Group> = Vec::new();
+    for s in settings::all().iter() {
+        if !groups.contains(&s.group) {
+            groups.push(s.group);
+        }
+    }
+    for group in groups {
+        let title = section_title(group);
         let _ = write!(
             out,
             "\n## {title}\n\n| key | meaning | unit | slider | accepted | default |\n|---|---|---|---|---|---|\n"
@@ -138,6 +132,18 @@ pub fn reference(scenario: &Scenario) -> String {
         let _ = writeln!(out, "| `{key}` | `{value}` |");
     }
     out
+}
+
+/// A group's heading in the reference: its file tables and what they describe.
+fn section_title(group: Group) -> &'static str {
+    match group {
+        Group::Geometry => "`[geometry]`, `[actuator]`, `[pivot]`: the platform",
+        Group::Trajectory => "`[trajectory]`: the motion",
+        Group::Limits => "`[limits]`: speeds, accelerations, joint cones",
+        Group::Checks => "`[checks]`: the pre-flight checks",
+        Group::Cueing => "`[cueing]`: motion cueing",
+        Group::Dynamics => "`[dynamics]`: stiffness, friction, the legs' parts",
+    }
 }
 
 /// The table: key, current value, unit, slider range, accepted range, default.

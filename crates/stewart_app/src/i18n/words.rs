@@ -1,7 +1,7 @@
-//! The core's words in the reader's language: setting labels, pose coordinates, the
-//! quantity plotted, trajectory kinds, diagnostics findings and the architecture verdict.
-//! The core keeps its English (the command line and the files use it); English here
-//! reproduces it exactly, which a test checks.
+//! What the core returns as data, in the reader's words: setting labels, pose
+//! coordinates, the quantity plotted, trajectory kinds, diagnostics findings and the
+//! architecture verdict. The core writes no sentences: the catalogues hold every word, in
+//! English (what the command line writes) and in Chinese.
 
 use stewart_kinematics::analysis::architecture::ArchitectureReport;
 use stewart_kinematics::io::settings::{Setting, TrajectoryChoice};
@@ -124,7 +124,7 @@ fn finding_key(kind: FindingKind) -> &'static str {
     }
 }
 
-/// A diagnostics finding in words (English: exactly the core's `Display`).
+/// A diagnostics finding in words (the English of `stewart check`).
 pub fn finding(lang: Lang, f: &Finding) -> String {
     let number = |k: usize| f.legs.get(k).copied().unwrap_or(0);
     let names: Vec<String> = f.legs.iter().map(|l| format!("L{l}")).collect();
@@ -191,7 +191,7 @@ pub fn finding(lang: Lang, f: &Finding) -> String {
     lang.fmt(finding_key(f.kind), &args)
 }
 
-/// The architecture verdict in words (English: exactly the core's `explanation`).
+/// The architecture verdict in words (the English of `stewart check` and `stewart fk`).
 pub fn architecture(lang: Lang, report: &ArchitectureReport) -> String {
     if !report.singular {
         return lang.fmt(

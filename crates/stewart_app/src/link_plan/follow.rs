@@ -33,11 +33,11 @@ pub struct Followed {
     trajectory: Trajectory,
     start: f64,
     /// The motion's length, seconds.
-    pub duration: f64,
+    pub(crate) duration: f64,
     /// Whether playback wraps at the end.
-    pub looping: bool,
+    pub(crate) looping: bool,
     /// What drives the platform now.
-    pub drive: Drive,
+    pub(crate) drive: Drive,
 }
 
 impl Followed {

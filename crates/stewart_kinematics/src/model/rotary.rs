@@ -7,12 +7,8 @@
 //! horizontal along `β_i`, a positive `θ_i` lifts the tip. The rod closes
 //! `|q_i − H_i| = s` with `q_i` the platform joint in the base frame.
 //!
-//! **Inverse kinematics** in closed form, with `l = q_i − B_i`: expanding the closure,
-//! `N cos θ + M sin θ = L` where `L = |l|² − (s² − a²)`, `M = 2a·l_z` and
-//! `N = 2a (cos β_i·l_x + sin β_i·l_y)`; so `θ_i = asin(L / √(M² + N²)) − atan2(N, M)`,
-//! wrapped to (−180°, 180°] (the branch with the horn on the near side of the rod; the
-//! other root, `π − asin(…) − atan2(N, M)`, is the mirrored assembly). When
-//! `|L| > √(M² + N²)` no horn angle reaches the joint: the pose is *unreachable*.
+//! Its inverse kinematics in closed form (the horn angle that closes the rod) is
+//! `crate::solve::servo_closure`'s.
 
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
@@ -257,7 +253,6 @@ pub(crate) fn wrap_half_turn(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solve::servo_closure;
 
     #[test]
     fn a_joint_far_out_of_reach_is_said_without_hundreds_of_digits() {
@@ -282,47 +277,10 @@ mod tests {
         assert_eq!(compact(1.234_56), "1.2346");
         assert_eq!(compact(f64::INFINITY), "inf");
     }
-    use proptest::prelude::*;
 
     fn hobby() -> RotaryActuators {
         RotaryActuators::new(0.025, 0.12, [255.0, 105.0, 15.0, 225.0, 135.0, 345.0], None)
             .unwrap_or_else(|e| panic!("{e}"))
-    }
-
-    #[test]
-    fn a_horn_level_under_a_vertical_rod_is_angle_zero() {
-        // β = 0, shaft at the origin: the tip is at (a, 0, 0); a joint straight above it
-        // at the rod's length needs θ = 0 (asin(a/√(s²+a²)) = atan(a/s) exactly).
-        let act =
-            RotaryActuators::new(0.025, 0.12, [0.0; 6], None).unwrap_or_else(|e| panic!("{e}"));
-        let b = Vector3::zeros();
-        let q = Vector3::new(0.025, 0.0, 0.12);
-        let theta = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
-        assert!(theta.radians().abs() < 1e-15, "{}", theta.degrees());
-        // Lifted by 30°: the tip moves to a(cos 30°, 0, sin 30°); the joint above it too.
-        let tip = act.horn_tip(0, &b, Angle::from_degrees(30.0));
-        let q = tip + Vector3::new(0.0, 0.0, 0.12);
-        let theta = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_or_else(|e| panic!("{e}"));
-        assert!(
-            (theta.degrees() - 30.0).abs() < 1e-12,
-            "{}",
-            theta.degrees()
-        );
-    }
-
-    #[test]
-    fn too_far_or_too_near_is_unreachable_never_nan() {
-        let act = hobby();
-        let b = Vector3::new(0.1, 0.0, 0.0);
-        for q in [
-            Vector3::new(0.1, 0.0, 0.5),  // farther than a + s
-            Vector3::new(0.1, 0.0, 0.05), // nearer than s − a
-            Vector3::new(0.1, 0.0, 0.0),  // on the shaft centre
-        ] {
-            let e = servo_closure::servo_angle(&act, 0, &b, &q).unwrap_err();
-            assert_eq!(e.servo, 1);
-            assert!(e.ratio > 1.0, "{e:?}");
-        }
     }
 
     #[test]
@@ -396,43 +354,5 @@ mod tests {
             e.unwrap_err().to_string(),
             "`actuator.servo_trim_deg[2]` must be a finite number of degrees within ±180, got 200"
         );
-    }
-
-    proptest! {
-        /// Any horn angle and any rod direction: the solver's angle closes the rod
-        /// exactly, and is the very angle used where that lies on the solver's branch.
-        #[test]
-        fn the_closed_form_closes_the_rod(
-            i in 0usize..6,
-            theta_deg in -170.0f64..170.0,
-            azimuth in 0.0f64..std::f64::consts::TAU,
-            elevation in -1.4f64..1.4,
-            bx in -0.2f64..0.2, by in -0.2f64..0.2,
-        ) {
-            let act = hobby();
-            let b = Vector3::new(bx, by, 0.0);
-            let tip = act.horn_tip(i, &b, Angle::from_degrees(theta_deg));
-            let dir = Vector3::new(
-                elevation.cos() * azimuth.cos(),
-                elevation.cos() * azimuth.sin(),
-                elevation.sin(),
-            );
-            let q = tip + act.rod_length() * dir;
-            let found = servo_closure::servo_angle(&act, i, &b, &q);
-            prop_assert!(found.is_ok(), "{found:?}");
-            let theta = found.unwrap_or(Angle::from_radians(0.0));
-            let closure = (q - act.horn_tip(i, &b, theta)).norm() - act.rod_length();
-            prop_assert!(closure.abs() < 1e-12, "closure {closure}");
-            // On the solver's branch (the rod's end on the near side), it is the same angle.
-            let l = q - b;
-            let (sb, cb) = act.horn_angles()[i].radians().sin_cos();
-            let m = 2.0 * act.horn_length() * l.z;
-            let n = 2.0 * act.horn_length() * (cb * l.x + sb * l.y);
-            let phase = wrap_half_turn(theta_deg.to_radians() + n.atan2(m));
-            if phase.abs() < std::f64::consts::FRAC_PI_2 - 1e-6 {
-                let d = wrap_half_turn(theta.radians() - theta_deg.to_radians());
-                prop_assert!(d.abs() < 1e-9, "{} vs {theta_deg}", theta.degrees());
-            }
-        }
     }
 }

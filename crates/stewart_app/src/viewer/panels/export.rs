@@ -70,7 +70,6 @@ pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
     }
 }
 
-/// The export window, while it is open.
 /// What the export window edits and shows: the form, job and status, with the scenario's
 /// name and length, and what a video export would write (planned for the path typed).
 pub struct ExportParts<'a> {

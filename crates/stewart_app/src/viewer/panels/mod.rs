@@ -1,4 +1,6 @@
-//! The panels: each a function of the viewer state, laid out by [`viewer_ui`].
+//! The panels: each a function of only the parts of the viewer it edits, returning what it
+//! asks of the rest; [`viewer_ui`] lays them out, hands out the parts and does what they
+//! ask (this is the one file that names the whole `ViewerState`).
 
 mod cueing;
 mod design;
