@@ -8,7 +8,7 @@ Checks three things and prints every miss:
    kinematics crate a module is named without its layer) is a file or folder of that
    crate, and every `stewart_<crate>::a::b::C` path the text names leads through modules
    that exist to an item the last of them defines or re-exports;
-3. every public module (`pub mod`) of each crate is named: a crate's top-level modules
+3. every module declared `pub` or `pub(crate)` in each crate is named: a crate's top-level modules
    (for the kinematics crate each layer's modules) by a row of its table, a module inside
    another by the row of its parent (or an ancestor's) (`child`, `parent/child.rs` or `child/` there).
 
@@ -56,7 +56,7 @@ def public_modules(crate):
     src = ROOT / "crates" / crate / "src"
     found = []
     for f in sorted(src.rglob("*.rs")):
-        for m in re.finditer(r"^\s*pub mod (\w+);", f.read_text(encoding="utf-8"), re.M):
+        for m in re.finditer(r"^\s*pub(?:\(crate\))? mod (\w+);", f.read_text(encoding="utf-8"), re.M):
             rel = f.relative_to(src)
             parent = rel.parent if rel.name in ("mod.rs", "lib.rs", "main.rs") else rel.with_suffix("")
             found.append(str(parent / m.group(1)).removeprefix("./"))

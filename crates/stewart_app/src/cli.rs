@@ -14,15 +14,15 @@ use crate::shot_scale::ShotScale;
 /// six-degree-of-freedom Gough–Stewart platform.
 #[derive(Debug, Parser)]
 #[command(name = "stewart", version, about, long_about = None)]
-pub struct Cli {
+pub(crate) struct Cli {
     /// What to do.
     #[command(subcommand)]
-    pub command: Option<Command>,
+    pub(crate) command: Option<Command>,
 }
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {
+pub(crate) enum Command {
     /// Leg lengths for a scenario's trajectory or for a table of poses, as CSV.
     Solve(SolveArgs),
     /// The pre-flight check of a scenario's motion: stroke, leg speed and acceleration,
@@ -77,13 +77,13 @@ pub enum Command {
 
 /// Arguments of `stewart device-sim`.
 #[derive(Debug, Args)]
-pub struct DeviceSimArgs {
+pub(crate) struct DeviceSimArgs {
     /// Listen here, HOST:PORT (port 0: any free port, printed on standard error).
     #[arg(long, value_name = "HOST:PORT", conflicts_with = "serial")]
-    pub udp: Option<String>,
+    pub(crate) udp: Option<String>,
     /// Read this serial port instead (a pseudo-terminal stands in for a cable in tests).
     #[arg(long, value_name = "PORT")]
-    pub serial: Option<String>,
+    pub(crate) serial: Option<String>,
     /// The serial line speed, bits per second.
     #[arg(
         long,
@@ -91,47 +91,47 @@ pub struct DeviceSimArgs {
         value_name = "BITS/S",
         default_value = "115200"
     )]
-    pub baud: u32,
+    pub(crate) baud: u32,
     /// Write the record here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// End after this many seconds without a datagram (once the first has come).
     #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "2", value_parser = parse_link_seconds)]
-    pub idle: f64,
+    pub(crate) idle: f64,
     /// End after this many seconds in any case.
     #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "600", value_parser = parse_link_seconds)]
-    pub duration: f64,
+    pub(crate) duration: f64,
     /// Smallest value accepted on any channel, in the wire's unit (µm, 0.01° or µs).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
-    pub min: Option<i32>,
+    pub(crate) min: Option<i32>,
     /// Largest value accepted on any channel, in the wire's unit.
     #[arg(long, value_name = "N", allow_hyphen_values = true)]
-    pub max: Option<i32>,
+    pub(crate) max: Option<i32>,
     /// Answer each set-point with a telemetry frame (kind 02): its sequence number, the
     /// flags received, and where the simulated actuators are (the values received when no
     /// model option is given), as a controller reporting what it measured would.
     #[arg(long)]
-    pub telemetry: bool,
+    pub(crate) telemetry: bool,
     /// The simulated actuators' first-order lag: time constant, seconds (0: none).
     #[arg(long, allow_hyphen_values = true, value_name = "S", default_value = "0", value_parser = parse_lag)]
-    pub lag_s: f64,
+    pub(crate) lag_s: f64,
     /// The simulated actuators' speed limit, wire units per second (µm/s, 0.01°/s, µs/s).
     #[arg(long, allow_hyphen_values = true, value_name = "N", value_parser = parse_wire_speed)]
-    pub speed_max: Option<f64>,
+    pub(crate) speed_max: Option<f64>,
     /// The simulated actuators do not move while the set-point is this close, wire units.
     #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_dead_band)]
-    pub dead_band: f64,
+    pub(crate) dead_band: f64,
     /// The wire format to expect: binary frames, or the text lines of `link --format text`.
     #[arg(long, value_parser = parse_word::<LinkFormat>, default_value = "binary")]
-    pub format: LinkFormat,
+    pub(crate) format: LinkFormat,
     /// The unit this controller's text lines are in (the text form does not say).
     #[arg(long, value_enum, default_value_t = WireUnit::Micrometre)]
-    pub text_unit: WireUnit,
+    pub(crate) text_unit: WireUnit,
 }
 
 /// The unit of a frame's values, as `device-sim --text-unit` names it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum WireUnit {
+pub(crate) enum WireUnit {
     /// Leg lengths, micrometres.
     Micrometre,
     /// Servo angles, hundredths of a degree.
@@ -172,70 +172,70 @@ const WIRE_SPAN: f64 = 2_147_483_648.0;
 
 /// Arguments of `stewart link`. Each option overrides the scenario's `[link]` table.
 #[derive(Debug, Args)]
-pub struct LinkArgs {
+pub(crate) struct LinkArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// List the serial ports the system offers and exit.
     #[arg(long)]
-    pub list_ports: bool,
+    pub(crate) list_ports: bool,
     /// Measure the sender's timing: stream to a receiver on UDP loopback at 500 Hz and
     /// 1 kHz (or --rate) for --duration seconds each (default 10) and print the period
     /// error and wake-up lateness (mean, p99, max).
     #[arg(long, conflicts_with_all = ["list_ports", "dry_run", "transport", "out", "record"])]
-    pub bench: bool,
+    pub(crate) bench: bool,
     /// Where to send: serial, udp, or file (a dry run).
     #[arg(long, value_parser = parse_word::<LinkTransport>)]
-    pub transport: Option<LinkTransport>,
+    pub(crate) transport: Option<LinkTransport>,
     /// The serial port (`/dev/ttyUSB0`, `COM3`; see --list-ports).
     #[arg(long, value_name = "PORT")]
-    pub port: Option<String>,
+    pub(crate) port: Option<String>,
     /// The serial line speed, bits per second (default 115200).
     #[arg(long, allow_hyphen_values = true, value_name = "BITS/S")]
-    pub baud: Option<u32>,
+    pub(crate) baud: Option<u32>,
     /// The UDP peer, HOST:PORT.
     #[arg(long, value_name = "HOST:PORT")]
-    pub address: Option<String>,
+    pub(crate) address: Option<String>,
     /// Record the dry run here instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Set-points per second, 10 to 1000 (default 100).
     #[arg(long, allow_hyphen_values = true, value_name = "HZ", value_parser = parse_link_rate)]
-    pub rate: Option<f64>,
+    pub(crate) rate: Option<f64>,
     /// Seconds to stream (default: the trajectory's duration; with --loop, until Ctrl-C).
     #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
-    pub duration: Option<f64>,
+    pub(crate) duration: Option<f64>,
     /// Play the trajectory again and again.
     #[arg(long = "loop")]
-    pub repeat: bool,
+    pub(crate) repeat: bool,
     /// Send nothing anywhere: record what would be sent (the same as `--transport file`).
     #[arg(long)]
-    pub dry_run: bool,
+    pub(crate) dry_run: bool,
     /// binary (34-byte frames with a CRC, docs/PROTOCOL.md) or text (`S,seq,v1,…,v6` lines).
     #[arg(long, value_parser = parse_word::<LinkFormat>)]
-    pub format: Option<LinkFormat>,
+    pub(crate) format: Option<LinkFormat>,
     /// Seconds of the arming ramp from home to the trajectory (default 2).
     #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
-    pub ramp: Option<f64>,
+    pub(crate) ramp: Option<f64>,
     /// Record each set-point the controller answered with telemetry here (CSV: time,
     /// sequence, six commanded and six measured values, round-trip latency).
     #[arg(long, value_name = "FILE.csv")]
-    pub record: Option<PathBuf>,
+    pub(crate) record: Option<PathBuf>,
     /// Follow live vehicle motion instead of the trajectory: UDP datagrams at this address
     /// (`udp:HOST:PORT`; generic text `t,ax,ay,az,wx,wy,wz`, seven little-endian f32, or
     /// X-Plane DATA) through the scenario's `[cueing]` washout, until Ctrl-C or
     /// `--duration`.
     #[arg(long, value_name = "udp:HOST:PORT", conflicts_with_all = ["repeat", "bench", "list_ports"])]
-    pub cue: Option<String>,
+    pub(crate) cue: Option<String>,
 }
 
 /// A choice of the `[link]` table spelled as in files.
-pub fn parse_word<T: Word>(text: &str) -> Result<T, String> {
+pub(crate) fn parse_word<T: Word>(text: &str) -> Result<T, String> {
     T::from_word(text).ok_or_else(|| format!("`{text}` is not one of {}", T::choices()))
 }
 
 /// A set-point rate, 10 to 1000 Hz.
-pub fn parse_link_rate(text: &str) -> Result<f64, String> {
+pub(crate) fn parse_link_rate(text: &str) -> Result<f64, String> {
     let v: f64 = text
         .trim()
         .parse()
@@ -251,7 +251,7 @@ pub fn parse_link_rate(text: &str) -> Result<f64, String> {
 }
 
 /// A number of seconds for the link, 0 to 1e6.
-pub fn parse_link_seconds(text: &str) -> Result<f64, String> {
+pub(crate) fn parse_link_seconds(text: &str) -> Result<f64, String> {
     let v: f64 = text
         .trim()
         .parse()
@@ -265,29 +265,29 @@ pub fn parse_link_seconds(text: &str) -> Result<f64, String> {
 
 /// Arguments of `stewart firmware`.
 #[derive(Debug, Args)]
-pub struct FirmwareArgs {
+pub(crate) struct FirmwareArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Write the header here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
 }
 
 /// Arguments of `stewart settings`.
 #[derive(Debug, Args)]
-pub struct SettingsArgs {
+pub(crate) struct SettingsArgs {
     /// The scenario whose values to show.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Instead of the table, write the scenario with every joint as coordinates
     /// (`base_joints_m`, `platform_joints_m`): the same platform, ready to edit as built.
     #[arg(long)]
-    pub as_coordinates: bool,
+    pub(crate) as_coordinates: bool,
     /// Write the scenario here (whole or not at all) instead of standard output; with
     /// `--as-coordinates`.
     #[arg(long, value_name = "FILE", requires = "as_coordinates")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// The table for people, or the settings reference in Markdown (every key by file
     /// section: meaning, unit, slider and accepted ranges, default; the user guide's
     /// docs/guide/settings.md is this, for the seed).
@@ -297,12 +297,12 @@ pub struct SettingsArgs {
         default_value = "text",
         conflicts_with = "as_coordinates"
     )]
-    pub format: SettingsFormat,
+    pub(crate) format: SettingsFormat,
 }
 
 /// Forms of `stewart settings`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SettingsFormat {
+pub(crate) enum SettingsFormat {
     /// A table for the terminal, with the scenario's values.
     Text,
     /// The settings reference, in Markdown.
@@ -312,60 +312,60 @@ pub enum SettingsFormat {
 /// Which scenario to use: a shipped preset or a TOML file (default: the `seed` preset),
 /// with settings changed on the way.
 #[derive(Debug, Args, Default)]
-pub struct ScenarioArgs {
+pub(crate) struct ScenarioArgs {
     /// A shipped preset: seed, paired, circle, figure8, helix, sway, keyframes, servo-desk,
     /// crank-rig, dietmaier.
     #[arg(long, value_name = "NAME", conflicts_with = "scenario")]
-    pub preset: Option<String>,
+    pub(crate) preset: Option<String>,
     /// A scenario file (TOML).
     #[arg(long, value_name = "FILE")]
-    pub scenario: Option<PathBuf>,
+    pub(crate) scenario: Option<PathBuf>,
     /// Change one setting of the scenario, such as `geometry.base_radius=1.2` or
     /// `trajectory.x.amplitude_m=0.1` (`off` removes an optional limit); repeatable.
     /// `stewart settings` lists every key with its unit, range and default.
     #[arg(long = "set", value_name = "KEY=VALUE", allow_hyphen_values = true)]
-    pub set: Vec<String>,
+    pub(crate) set: Vec<String>,
 }
 
 /// Arguments of `stewart solve`.
 #[derive(Debug, Args)]
-pub struct SolveArgs {
+pub(crate) struct SolveArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Solve these poses instead of the trajectory: a CSV with columns
     /// x,y,z,roll_deg,pitch_deg,yaw_deg (metres, degrees) and optionally t; `-` reads standard input.
     #[arg(long, value_name = "POSES.csv")]
-    pub poses: Option<PathBuf>,
+    pub(crate) poses: Option<PathBuf>,
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// For a rotary platform: write the angles the servos are commanded — mirrored for
     /// `servo_reversed`, plus `servo_trim_deg` — as cmd1..cmd6 instead of theta1..theta6.
     #[arg(long)]
-    pub commanded: bool,
+    pub(crate) commanded: bool,
 }
 
 /// Arguments of `stewart cue`.
 #[derive(Debug, Args)]
-pub struct CueArgs {
+pub(crate) struct CueArgs {
     /// The scenario: a preset or a file (its `[cueing]` table, geometry and limits).
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// The vehicle motion: a CSV with columns t (s), ax, ay, az (m/s², the vehicle's
     /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s); `-` reads
     /// standard input.
     #[arg(long, value_name = "VEHICLE.csv")]
-    pub input: PathBuf,
+    pub(crate) input: PathBuf,
     /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
     /// at all, instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
 }
 
 /// Report formats of `stewart check`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Format {
+pub(crate) enum Format {
     /// Sentences for people.
     Text,
     /// One JSON object for programs.
@@ -374,81 +374,81 @@ pub enum Format {
 
 /// Arguments of `stewart check`.
 #[derive(Debug, Args)]
-pub struct CheckArgs {
+pub(crate) struct CheckArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Report format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    pub(crate) format: Format,
 }
 
 /// Arguments of `stewart design`.
 #[derive(Debug, Args)]
-pub struct DesignArgs {
+pub(crate) struct DesignArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// The box of poses: x, y, z (m) and roll, pitch, yaw (°), each `±A` about home,
     /// `A..B`, or one value; those left out stay at home. Example:
     /// `x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15`.
     #[arg(long, value_name = "NAME=RANGE,…", allow_hyphen_values = true)]
-    pub envelope: String,
+    pub(crate) envelope: String,
     /// Report format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    pub(crate) format: Format,
 }
 
 /// Arguments of `stewart fk`.
 #[derive(Debug, Args)]
-pub struct FkArgs {
+pub(crate) struct FkArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Leg lengths: a CSV with columns L1..L6 (metres) — or theta1..theta6 (degrees) for a
     /// rotary-servo platform — and optionally t; other columns are ignored; `-` reads
     /// standard input.
     #[arg(long, value_name = "LEGS.csv")]
-    pub legs: PathBuf,
+    pub(crate) legs: PathBuf,
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Start every row from the home pose instead of the previous row's pose.
     #[arg(long)]
-    pub cold: bool,
+    pub(crate) cold: bool,
     /// List every assembly mode the search finds for each row (a `row` column names the
     /// input row, from 1, and a `mode` column numbers its modes, highest platform first)
     /// instead of following one branch.
     #[arg(long, conflicts_with = "cold")]
-    pub assembly_modes: bool,
+    pub(crate) assembly_modes: bool,
 }
 
 /// Arguments of `stewart calibrate`.
 #[derive(Debug, Args)]
-pub struct CalibrateArgs {
+pub(crate) struct CalibrateArgs {
     /// The platform as designed: a preset or a file (the starting values).
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Measured poses and what was commanded for each: a CSV with columns x, y, z
     /// (metres), roll_deg, pitch_deg, yaw_deg (the scenario's base and platform frames),
     /// and L1..L6 (metres) — or theta1..theta6 (model servo angles in degrees, as
     /// `stewart solve` gives them) for a rotary-servo platform; other columns are
     /// ignored; `-` reads standard input.
     #[arg(long, value_name = "MEASUREMENTS.csv")]
-    pub measurements: PathBuf,
+    pub(crate) measurements: PathBuf,
     /// Write the calibrated scenario here (whole or not at all): joints as coordinates,
     /// servo offsets in the trims, leg-length offsets in the link's channel offsets.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Keep a group of parameters at the scenario's values (known from elsewhere);
     /// repeat for several.
     #[arg(long, value_enum, value_name = "GROUP")]
-    pub hold: Vec<HoldGroup>,
+    pub(crate) hold: Vec<HoldGroup>,
 }
 
 /// A group of calibration parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum HoldGroup {
+pub(crate) enum HoldGroup {
     /// The six base joints.
     Base,
     /// The six platform joints.
@@ -458,7 +458,7 @@ pub enum HoldGroup {
 }
 
 /// Three comma-separated finite numbers, such as `0,0,0.8`.
-pub fn parse_triple(text: &str) -> Result<[f64; 3], String> {
+pub(crate) fn parse_triple(text: &str) -> Result<[f64; 3], String> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     let [a, b, c] = parts.as_slice() else {
         return Err(format!("`{text}` is not three comma-separated numbers"));
@@ -487,7 +487,7 @@ fn parse_bounded(
 }
 
 /// ROLL,PITCH,YAW in degrees, each within ±3600°.
-pub fn parse_angles(text: &str) -> Result<[f64; 3], String> {
+pub(crate) fn parse_angles(text: &str) -> Result<[f64; 3], String> {
     let a = || bounds::symmetric(bounds::ANGLE_DEG);
     parse_bounded(
         text,
@@ -496,7 +496,7 @@ pub fn parse_angles(text: &str) -> Result<[f64; 3], String> {
 }
 
 /// X,Y,Z in metres, each within ±1000 m.
-pub fn parse_position(text: &str) -> Result<[f64; 3], String> {
+pub(crate) fn parse_position(text: &str) -> Result<[f64; 3], String> {
     let m = || bounds::symmetric(bounds::LENGTH_M);
     parse_bounded(text, [("x", m(), "m"), ("y", m(), "m"), ("z", m(), "m")])
 }
@@ -504,7 +504,7 @@ pub fn parse_position(text: &str) -> Result<[f64; 3], String> {
 /// The inertia tensor's entries in kg·m², IXX,IYY,IZZ,IXY,IXZ,IYZ: three principal
 /// moments (each from 0 to 1e6; the products then zero), or all six (products within
 /// ±1e6).
-pub fn parse_inertia(text: &str) -> Result<[f64; 6], String> {
+pub(crate) fn parse_inertia(text: &str) -> Result<[f64; 6], String> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     if parts.len() != 3 && parts.len() != 6 {
         return Err(format!(
@@ -527,7 +527,7 @@ pub fn parse_inertia(text: &str) -> Result<[f64; 6], String> {
 }
 
 /// AZ,EL,DIST: degrees within ±3600°, and a distance above 0 up to 1e4 m.
-pub fn parse_camera(text: &str) -> Result<[f64; 3], String> {
+pub(crate) fn parse_camera(text: &str) -> Result<[f64; 3], String> {
     let a = || bounds::symmetric(bounds::ANGLE_DEG);
     let v = parse_bounded(
         text,
@@ -544,7 +544,7 @@ pub fn parse_camera(text: &str) -> Result<[f64; 3], String> {
 }
 
 /// A mass in kilograms: more than 0, at most 1e6.
-pub fn parse_mass(text: &str) -> Result<f64, String> {
+pub(crate) fn parse_mass(text: &str) -> Result<f64, String> {
     let v: f64 = text
         .trim()
         .parse()
@@ -559,7 +559,7 @@ pub fn parse_mass(text: &str) -> Result<f64, String> {
 }
 
 /// A frame rate: from 0.01 to 1000 frames per second.
-pub fn parse_fps(text: &str) -> Result<f64, String> {
+pub(crate) fn parse_fps(text: &str) -> Result<f64, String> {
     let v: f64 = text
         .trim()
         .parse()
@@ -573,59 +573,59 @@ pub fn parse_fps(text: &str) -> Result<f64, String> {
 
 /// Arguments of `stewart workspace`.
 #[derive(Debug, Args)]
-pub struct WorkspaceArgs {
+pub(crate) struct WorkspaceArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Platform orientation ROLL,PITCH,YAW in degrees.
     #[arg(long, value_name = "ROLL,PITCH,YAW", value_parser = parse_angles, default_value = "0,0,0", allow_hyphen_values = true)]
-    pub orientation: [f64; 3],
+    pub(crate) orientation: [f64; 3],
     /// Columns per side of the grid (the volume's error shrinks as it rises).
     #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u16).range(2..=4096), allow_hyphen_values = true)]
-    pub resolution: u16,
+    pub(crate) resolution: u16,
     /// Position X,Y,Z (metres) at which to report the orientation range (default: home).
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
-    pub position: Option<[f64; 3]>,
+    pub(crate) position: Option<[f64; 3]>,
     /// Run even when the estimated cost is over the budget (2 minutes, 2 GB of spans);
     /// a long run shows progress and Ctrl-C stops it.
     #[arg(long)]
-    pub no_budget: bool,
+    pub(crate) no_budget: bool,
     /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
     #[arg(long, value_name = "FILE.csv|FILE.ply")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Draw a horizontal slice (at the position's height) and a vertical slice (through
     /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png`.
     #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png")]
-    pub plot: Option<PathBuf>,
+    pub(crate) plot: Option<PathBuf>,
     /// Write the workspace's surface (a closed triangle mesh around the reachable
     /// positions, from the same columns) as a binary PLY file.
     #[arg(long, value_name = "FILE.ply")]
-    pub surface: Option<PathBuf>,
+    pub(crate) surface: Option<PathBuf>,
     /// The language of the figure's words: `zh` or `en` (default: the environment's).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
-    pub lang: Option<Lang>,
+    pub(crate) lang: Option<Lang>,
 }
 
 /// Arguments of `stewart modes`.
 #[derive(Debug, Args)]
-pub struct ModesArgs {
+pub(crate) struct ModesArgs {
     /// The scenario: a preset or a file, with `[payload]` and `[dynamics]
     /// actuator_stiffness`.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// The pose X,Y,Z,ROLL,PITCH,YAW (metres, degrees); default: home.
     #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", value_parser = parse_pose, allow_hyphen_values = true)]
-    pub pose: Option<[f64; 6]>,
+    pub(crate) pose: Option<[f64; 6]>,
     /// Also find the lowest natural frequency over the trajectory and where it occurs.
     #[arg(long)]
-    pub along_trajectory: bool,
+    pub(crate) along_trajectory: bool,
     /// Report format.
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    pub(crate) format: Format,
 }
 
 /// X,Y,Z,ROLL,PITCH,YAW: metres within ±1000 m, degrees within ±3600°.
-pub fn parse_pose(text: &str) -> Result<[f64; 6], String> {
+pub(crate) fn parse_pose(text: &str) -> Result<[f64; 6], String> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     if parts.len() != 6 {
         return Err(format!(
@@ -646,33 +646,33 @@ pub fn parse_pose(text: &str) -> Result<[f64; 6], String> {
 
 /// Arguments of `stewart forces`.
 #[derive(Debug, Args)]
-pub struct ForcesArgs {
+pub(crate) struct ForcesArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Moving mass in kg (overrides the scenario's `[payload]`).
     #[arg(long, value_name = "KG", allow_hyphen_values = true, value_parser = parse_mass)]
-    pub mass: Option<f64>,
+    pub(crate) mass: Option<f64>,
     /// Centre of mass X,Y,Z in the platform frame, metres.
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
-    pub com: Option<[f64; 3]>,
+    pub(crate) com: Option<[f64; 3]>,
     /// Inertia about the centre of mass, kg·m²: principal moments IXX,IYY,IZZ, or the
     /// tensor's six entries IXX,IYY,IZZ,IXY,IXZ,IYZ (products with their minus sign).
     #[arg(long, value_name = "IXX,IYY,IZZ[,IXY,IXZ,IYZ]", value_parser = parse_inertia, allow_hyphen_values = true)]
-    pub inertia: Option<[f64; 6]>,
+    pub(crate) inertia: Option<[f64; 6]>,
     /// Write the CSV here (whole or not at all) instead of standard output.
     #[arg(long, value_name = "FILE")]
-    pub out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
 }
 
 /// The smallest frame or window side, pixels.
-pub const MIN_SIDE: u32 = 16;
+pub(crate) const MIN_SIDE: u32 = 16;
 
 /// The longest title a readout takes, characters.
-pub const MAX_TITLE_CHARS: usize = 200;
+pub(crate) const MAX_TITLE_CHARS: usize = 200;
 
 /// A title for the readout: one line of at most [`MAX_TITLE_CHARS`] characters.
-pub fn parse_title(text: &str) -> Result<String, String> {
+pub(crate) fn parse_title(text: &str) -> Result<String, String> {
     let n = text.chars().count();
     if n > MAX_TITLE_CHARS {
         return Err(format!(
@@ -689,7 +689,7 @@ pub fn parse_title(text: &str) -> Result<String, String> {
 }
 
 /// A language code: `zh` or `en` (`zh-CN`, `zh_CN` and any case accepted).
-pub fn parse_lang(text: &str) -> Result<Lang, String> {
+pub(crate) fn parse_lang(text: &str) -> Result<Lang, String> {
     let code = text.trim().to_ascii_lowercase();
     match code.split(['-', '_', '.']).next() {
         Some("zh") => Ok(Lang::Zh),
@@ -701,7 +701,7 @@ pub fn parse_lang(text: &str) -> Result<Lang, String> {
 }
 
 /// `WxH`, such as `1280x720`.
-pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
+pub(crate) fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text
         .split_once(['x', 'X', '×'])
         .ok_or_else(|| format!("`{text}` is not a size like 1280x720"))?;
@@ -721,7 +721,7 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 /// A playback speed against real time, within [`crate::export::video::SPEEDS`].
-pub fn parse_speed(text: &str) -> Result<f64, String> {
+pub(crate) fn parse_speed(text: &str) -> Result<f64, String> {
     let speeds = crate::export::video::SPEEDS;
     match text.trim().parse::<f64>() {
         Ok(x) if speeds.contains(&x) => Ok(x),
@@ -734,7 +734,7 @@ pub fn parse_speed(text: &str) -> Result<f64, String> {
 }
 
 /// `A..B`, `A..` or `..B`: frame indices from A (default 0) up to, not including, B.
-pub fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String> {
+pub(crate) fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String> {
     let (a, b) = text
         .split_once("..")
         .ok_or_else(|| format!("`{text}` is not a range like 0..100"))?;
@@ -753,64 +753,64 @@ pub fn parse_frames(text: &str) -> Result<(Option<usize>, Option<usize>), String
 
 /// Arguments of `stewart render`.
 #[derive(Debug, Args)]
-pub struct RenderArgs {
+pub(crate) struct RenderArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
     #[arg(long, value_name = "OUT")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Frame size WxH in pixels (up to 3840x2160 and beyond, 4096 a side at most).
     #[arg(long, allow_hyphen_values = true, value_name = "WxH", value_parser = parse_size, default_value = "1280x720")]
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
     /// Frames per second of the output, the motion resampled (default: 25 for a GIF, 50
     /// for an MP4, one frame per trajectory sample for a folder of frames). A GIF's
     /// frame lasts whole hundredths of a second, at least 2: other rates are rounded
     /// to the nearest such one, with a note.
     #[arg(long, value_name = "N", value_parser = parse_fps, allow_hyphen_values = true)]
-    pub fps: Option<f64>,
+    pub(crate) fps: Option<f64>,
     /// Only frames A..B (indices, B excluded).
     #[arg(long, value_name = "A..B", value_parser = parse_frames, allow_hyphen_values = true)]
-    pub frames: Option<(Option<usize>, Option<usize>)>,
+    pub(crate) frames: Option<(Option<usize>, Option<usize>)>,
     /// How fast the motion plays against real time: 0.25 is slow motion (each second of
     /// motion lasts four seconds of video), 2 twice as fast (0.01 to 100; default 1).
     #[arg(long, value_name = "X", value_parser = parse_speed, allow_hyphen_values = true, default_value = "1")]
-    pub speed: f64,
+    pub(crate) speed: f64,
     /// Colours: `dark` for the screen, `light` for slides and papers.
     #[arg(long, value_enum, default_value_t = ThemeName::Dark)]
-    pub theme: ThemeName,
+    pub(crate) theme: ThemeName,
     /// Camera AZ,EL,DIST (degrees, degrees, metres); default: the seed's view framing the platform.
     #[arg(long, value_name = "AZ,EL,DIST", value_parser = parse_camera, allow_hyphen_values = true)]
-    pub camera: Option<[f64; 3]>,
+    pub(crate) camera: Option<[f64; 3]>,
     /// Put the leg-length plot beside the 3D view, with a marker at the frame's time.
     #[arg(long)]
-    pub composite: bool,
+    pub(crate) composite: bool,
     /// Draw the platform's own axes at its centre.
     #[arg(long)]
-    pub platform_axes: bool,
+    pub(crate) platform_axes: bool,
     /// Draw every leg in one colour (by default each leg takes the colour of its curve
     /// in the plot).
     #[arg(long)]
-    pub single_colour: bool,
+    pub(crate) single_colour: bool,
     /// Leave out the numbered labels (L1…L6, S1…S6) beside the legs.
     #[arg(long)]
-    pub no_labels: bool,
+    pub(crate) no_labels: bool,
     /// Burn a readout into the frames: a title, the time, the pose and the six leg
     /// lengths or servo angles, top left.
     #[arg(long)]
-    pub overlay: bool,
+    pub(crate) overlay: bool,
     /// The readout's title line (default: the scenario's name); implies --overlay.
     #[arg(long, value_name = "TEXT", value_parser = parse_title)]
-    pub title: Option<String>,
+    pub(crate) title: Option<String>,
     /// The language of the words drawn: `zh` (Simplified Chinese) or `en` (default: the
     /// environment's, Chinese for LANG=zh_CN.UTF-8).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
-    pub lang: Option<Lang>,
+    pub(crate) lang: Option<Lang>,
 }
 
 /// The colour themes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ThemeName {
+pub(crate) enum ThemeName {
     /// Dark background.
     Dark,
     /// White background (presentation).
@@ -819,71 +819,71 @@ pub enum ThemeName {
 
 /// Arguments of `stewart plot`.
 #[derive(Debug, Args)]
-pub struct PlotArgs {
+pub(crate) struct PlotArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// `.svg`, `.pdf` or `.png`.
     #[arg(long, value_name = "FILE")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// The language of the words drawn: `zh` (Simplified Chinese) or `en` (default: the
     /// environment's, Chinese for LANG=zh_CN.UTF-8).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
-    pub lang: Option<Lang>,
+    pub(crate) lang: Option<Lang>,
     /// Plot the actuator forces (servo torques) the scenario's `[payload]` needs along the
     /// motion — weight, inertia, and the legs' parts and friction of `[dynamics]` —
     /// instead of the lengths (angles).
     #[arg(long)]
-    pub forces: bool,
+    pub(crate) forces: bool,
 }
 
 /// Arguments of `stewart view`.
 #[derive(Debug, Args)]
-pub struct ViewArgs {
+pub(crate) struct ViewArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
-    pub scenario: ScenarioArgs,
+    pub(crate) scenario: ScenarioArgs,
     /// Start in the light theme.
     #[arg(long)]
-    pub light: bool,
+    pub(crate) light: bool,
     /// Start in presentation mode (light colours, large text, control panels hidden).
     #[arg(long)]
-    pub presentation: bool,
+    pub(crate) presentation: bool,
     /// Start with every collapsible section of the panels open.
     #[arg(long)]
-    pub expand_panels: bool,
+    pub(crate) expand_panels: bool,
     /// Show the reachable workspace (surface and conditioning slice) from the start.
     #[arg(long)]
-    pub workspace: bool,
+    pub(crate) workspace: bool,
     /// Window size WxH in logical pixels (default: the last session's within the screen,
     /// else 85 % of the screen).
     #[arg(long, allow_hyphen_values = true, value_name = "WxH", value_parser = parse_size)]
-    pub size: Option<(u32, u32)>,
+    pub(crate) size: Option<(u32, u32)>,
     /// Start without the saved session (the last scenario, camera, panels, theme and
     /// window size); it is still saved at exit.
     #[arg(long)]
-    pub fresh: bool,
+    pub(crate) fresh: bool,
     /// The interface's language: `zh` (Simplified Chinese) or `en` (default: the last
     /// session's, else the environment's, Chinese for LANG=zh_CN.UTF-8).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
-    pub lang: Option<Lang>,
+    pub(crate) lang: Option<Lang>,
     /// Save the window's image here after `--frames` frames, then exit.
     #[arg(long, value_name = "FILE.png")]
-    pub screenshot: Option<PathBuf>,
+    pub(crate) screenshot: Option<PathBuf>,
     /// Frames to draw before the screenshot.
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=100_000), allow_hyphen_values = true)]
-    pub frames: u32,
+    pub(crate) frames: u32,
     /// The screenshot's size: `1` as on screen, `2` twice that (text drawn anew, not
     /// upscaled), `4k` 3840 pixels wide.
     #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = crate::shot_scale::parse, requires = "screenshot")]
-    pub screenshot_scale: ShotScale,
+    pub(crate) screenshot_scale: ShotScale,
     /// With --screenshot: start from the saved session (a screenshot run otherwise neither
     /// reads nor writes it, so that it does not depend on leftover state).
     #[arg(long, requires = "screenshot", conflicts_with = "fresh")]
-    pub from_session: bool,
+    pub(crate) from_session: bool,
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]
-    pub frame_stats: bool,
+    pub(crate) frame_stats: bool,
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use anyhow::{Context, Result};
 
 /// Open `path` for reading (`-` is standard input) and give `read` the reader and the
 /// name to use in messages.
-pub fn read_input<T>(
+pub(crate) fn read_input<T>(
     path: &Path,
     read: impl FnOnce(&mut dyn Read, &str) -> Result<T>,
 ) -> Result<T> {
@@ -21,25 +21,25 @@ pub fn read_input<T>(
 }
 
 /// A CSV text being built: a header, then rows of numbers.
-pub struct CsvText {
+pub(crate) struct CsvText {
     text: String,
 }
 
 impl CsvText {
     /// Start with the header `columns`.
-    pub fn with_header<S: AsRef<str>>(columns: &[S]) -> Self {
+    pub(crate) fn with_header<S: AsRef<str>>(columns: &[S]) -> Self {
         Self {
             text: header_line(columns),
         }
     }
 
     /// Append one row.
-    pub fn row(&mut self, values: impl IntoIterator<Item = f64>) {
+    pub(crate) fn row(&mut self, values: impl IntoIterator<Item = f64>) {
         push_row(&mut self.text, values);
     }
 
     /// The text.
-    pub fn into_string(self) -> String {
+    pub(crate) fn into_string(self) -> String {
         self.text
     }
 }
@@ -51,7 +51,7 @@ const ROWS_PER_BATCH: usize = 64 * ROWS_PER_TASK;
 
 /// Write a whole table: the header, then rows `0..count` whose values `row(k)` gives.
 /// Numbers are formatted on all cores, batch by batch, and written in order.
-pub fn write_table<F, I>(
+pub(crate) fn write_table<F, I>(
     out: &mut dyn Write,
     columns: &[&str],
     count: usize,

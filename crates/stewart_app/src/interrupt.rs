@@ -12,7 +12,7 @@ static INSTALLED: OnceLock<bool> = OnceLock::new();
 /// The process-wide stop flag, with the signal handler installed on first use. Where no
 /// handler can be installed the signals keep their default meaning (the process ends,
 /// which also leaves no finished-looking output behind).
-pub fn flag() -> &'static AtomicBool {
+pub(crate) fn flag() -> &'static AtomicBool {
     INSTALLED.get_or_init(|| {
         ctrlc::set_handler(|| {
             FLAG.store(true, Ordering::Relaxed);
@@ -25,12 +25,12 @@ pub fn flag() -> &'static AtomicBool {
 
 /// How many stops were asked for so far (the link takes a second Ctrl-C on the way home as
 /// an emergency stop). Installs the handler as [`flag`] does.
-pub fn count() -> u32 {
+pub(crate) fn count() -> u32 {
     let _ = flag();
     COUNT.load(Ordering::Relaxed)
 }
 
 /// Whether a stop was asked for.
-pub fn requested() -> bool {
+pub(crate) fn requested() -> bool {
     FLAG.load(Ordering::Relaxed)
 }

@@ -27,50 +27,50 @@ const DATAGRAM: usize = 65_536;
 /// the tick's period is spent (at least [`MIN_READ_BUDGET`]): 64 a tick is 6 400 samples a
 /// second at 100 Hz (640 at the lowest rate, 10 Hz), far above what a simulator sends
 /// (X-Plane at most 99 a second, games a few hundred).
-pub const MAX_DATAGRAMS_PER_TICK: usize = 64;
+pub(crate) const MAX_DATAGRAMS_PER_TICK: usize = 64;
 
 /// The least time a tick may spend reading (the first tick, or very fast ticks).
-pub const MIN_READ_BUDGET: std::time::Duration = std::time::Duration::from_micros(100);
+pub(crate) const MIN_READ_BUDGET: std::time::Duration = std::time::Duration::from_micros(100);
 
 /// Seconds of the trace kept for the viewer's live plots.
-pub const TRACE_S: f64 = 10.0;
+pub(crate) const TRACE_S: f64 = 10.0;
 
 /// One sample of the trace: stream time, the vehicle's specific force (m/s²), the one the
 /// platform makes felt, and the tilt of roll and pitch (degrees).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TracePoint {
+pub(crate) struct TracePoint {
     /// Stream time, seconds.
-    pub t: f64,
+    pub(crate) t: f64,
     /// The vehicle's specific force, x, y, z.
-    pub vehicle: [f64; 3],
+    pub(crate) vehicle: [f64; 3],
     /// The specific force the platform makes felt, x, y, z.
-    pub platform: [f64; 3],
+    pub(crate) platform: [f64; 3],
     /// Roll and pitch tilt, degrees.
-    pub tilt_deg: [f64; 2],
+    pub(crate) tilt_deg: [f64; 2],
 }
 
 /// What the input brought, for the link's summary and the viewer (shared with the
 /// sender's thread).
 #[derive(Debug, Default)]
-pub struct CueCounts {
+pub(crate) struct CueCounts {
     /// Samples used.
-    pub received: AtomicU64,
+    pub(crate) received: AtomicU64,
     /// Datagrams that could not be read, or came out of order.
-    pub malformed: AtomicU64,
+    pub(crate) malformed: AtomicU64,
     /// Times the input stalled.
-    pub stalls: AtomicU64,
+    pub(crate) stalls: AtomicU64,
     /// The last [`TRACE_S`] of samples, oldest first.
-    pub trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
+    pub(crate) trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
 }
 
 impl CueCounts {
     /// Samples used, dropped, and stalls so far.
-    pub fn numbers(&self) -> [u64; 3] {
+    pub(crate) fn numbers(&self) -> [u64; 3] {
         [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
     }
 
     /// One line for the link's summary.
-    pub fn words(&self) -> String {
+    pub(crate) fn words(&self) -> String {
         format!(
             "cue: {} samples in, {} malformed or out of order dropped, {} stalls",
             self.received.load(Ordering::Relaxed),
@@ -134,7 +134,7 @@ impl LiveCue {
     }
 
     /// The counts, shared.
-    pub fn counts(&self) -> Arc<CueCounts> {
+    pub(crate) fn counts(&self) -> Arc<CueCounts> {
         Arc::clone(&self.counts)
     }
 

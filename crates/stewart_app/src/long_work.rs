@@ -9,15 +9,15 @@ use indicatif::{ProgressBar, ProgressStyle};
 use stewart_kinematics::model::trajectory::Samples;
 
 /// Work estimated shorter than this runs without a word.
-pub const QUIET_BELOW_S: f64 = 2.0;
+pub(crate) const QUIET_BELOW_S: f64 = 2.0;
 
 /// How many samples a probe takes (its time, scaled, is the estimate); a motion no longer
 /// than this runs at once, without a probe.
-pub const PROBE_SAMPLES: usize = 20_000;
+pub(crate) const PROBE_SAMPLES: usize = 20_000;
 
 /// Seconds for `items` from a probe of `probe_items` that took `probe_seconds` (the cost
 /// of each item about the same).
-pub fn scaled(probe_seconds: f64, probe_items: usize, items: usize) -> f64 {
+pub(crate) fn scaled(probe_seconds: f64, probe_items: usize, items: usize) -> f64 {
     if probe_items == 0 {
         return 0.0;
     }
@@ -28,7 +28,7 @@ pub fn scaled(probe_seconds: f64, probe_items: usize, items: usize) -> f64 {
 /// `probe` samples; when the estimate scaled from that is long, `what` and the estimate are
 /// said first, and a spinner with the time spent runs on a terminal until it ends. Ctrl-C
 /// ends the process (nothing is written before the work ends).
-pub fn over_samples<T: Send>(
+pub(crate) fn over_samples<T: Send>(
     what: &str,
     samples: &Samples,
     probe: usize,
@@ -71,7 +71,7 @@ pub fn over_samples<T: Send>(
 }
 
 /// Seconds in words: `40 s`, `12 min`, `3.1 h`.
-pub fn duration_words(seconds: f64) -> String {
+pub(crate) fn duration_words(seconds: f64) -> String {
     if seconds < 90.0 {
         format!("{seconds:.0} s")
     } else if seconds < 5400.0 {

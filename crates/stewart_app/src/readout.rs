@@ -16,7 +16,7 @@ const CORNER: [f32; 2] = [0.015, 0.02];
 
 /// The share of a view's height (`view`: width and height, pixels) that the readout
 /// `text` covers from the top, its box included.
-pub fn height_share(text: &str, view: [f32; 2]) -> f32 {
+pub(crate) fn height_share(text: &str, view: [f32; 2]) -> f32 {
     let px = TextSize::OfView(SIZE).px(view);
     let rows = text.split('\n').count() as f32;
     // The renderer's box reaches a quarter line below the last row.
@@ -27,7 +27,7 @@ pub fn height_share(text: &str, view: [f32; 2]) -> f32 {
 /// the six actuator values (or why the pose is out of reach). `solved`: the values when
 /// they are known already (a frame's: `SceneFrame::actuator_values`), so the pose is not
 /// solved twice; else (or when a servo cannot reach, to say which) they are solved here.
-pub fn lines(
+pub(crate) fn lines(
     lang: Lang,
     title: &str,
     geometry: &Geometry,
@@ -81,13 +81,13 @@ pub fn lines(
 }
 
 /// The readout as text for the renderer, in `theme`'s colours.
-pub fn item(text: String, theme: &Theme) -> TextItem {
+pub(crate) fn item(text: String, theme: &Theme) -> TextItem {
     item_scaled(text, theme, 1.0)
 }
 
 /// [`item`] with its text `scale` times as large (presentation mode: as large as the
 /// interface's text there).
-pub fn item_scaled(text: String, theme: &Theme, scale: f32) -> TextItem {
+pub(crate) fn item_scaled(text: String, theme: &Theme, scale: f32) -> TextItem {
     let [r, g, b, _] = theme.background;
     TextItem {
         text,

@@ -4,7 +4,7 @@
 
 /// How large a 3D-view shot is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShotScale {
+pub(crate) enum ShotScale {
     /// The view's size on screen.
     One,
     /// Twice that.
@@ -15,14 +15,14 @@ pub enum ShotScale {
 
 impl ShotScale {
     /// Every scale, with its words.
-    pub const ALL: [(ShotScale, &'static str); 3] = [
+    pub(crate) const ALL: [(ShotScale, &'static str); 3] = [
         (ShotScale::One, "1×"),
         (ShotScale::Two, "2×"),
         (ShotScale::Uhd, "4K"),
     ];
 
     /// The image size for a view of `view_px` pixels.
-    pub fn size(self, view_px: [u32; 2]) -> (u32, u32) {
+    pub(crate) fn size(self, view_px: [u32; 2]) -> (u32, u32) {
         let [w, h] = view_px.map(|v| v.max(16));
         match self {
             ShotScale::One => (w, h),
@@ -33,7 +33,7 @@ impl ShotScale {
 }
 
 /// A screenshot scale as the command line takes it: `1`, `2` or `4k`.
-pub fn parse(text: &str) -> Result<ShotScale, String> {
+pub(crate) fn parse(text: &str) -> Result<ShotScale, String> {
     match text.trim().to_ascii_lowercase().as_str() {
         "1" | "1x" => Ok(ShotScale::One),
         "2" | "2x" => Ok(ShotScale::Two),

@@ -7,7 +7,7 @@ use crate::cli::ScenarioArgs;
 
 /// The scenario the arguments name (the `seed` preset when they name none), with the
 /// `--set` assignments applied in order.
-pub fn load(args: &ScenarioArgs) -> Result<Scenario> {
+pub(crate) fn load(args: &ScenarioArgs) -> Result<Scenario> {
     let mut scenario = match (&args.preset, &args.scenario) {
         (_, Some(path)) => Scenario::load(path)?,
         (Some(name), None) => Scenario::preset(name)?,
@@ -20,7 +20,7 @@ pub fn load(args: &ScenarioArgs) -> Result<Scenario> {
 
 /// The files a command reads through these arguments, with the words that name them
 /// (an output may not be one of them).
-pub fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
+pub(crate) fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
     args.scenario
         .iter()
         .map(|p| ("the scenario file", p.as_path()))
@@ -29,7 +29,7 @@ pub fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
 
 /// The scenario the arguments name, in words for messages: its file as given, or
 /// `preset NAME`.
-pub fn describe(args: &ScenarioArgs) -> String {
+pub(crate) fn describe(args: &ScenarioArgs) -> String {
     match (&args.scenario, &args.preset) {
         (Some(path), _) => path.display().to_string(),
         (None, Some(name)) => format!("preset `{name}`"),

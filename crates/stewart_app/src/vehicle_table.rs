@@ -10,18 +10,18 @@ use stewart_kinematics::io::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, sy
 use stewart_kinematics::io::table::NumericTable;
 
 /// The columns, in order.
-pub const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
+pub(crate) const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
 
 /// A recording: the table as read (for its lines) and its samples.
-pub struct VehicleTable {
+pub(crate) struct VehicleTable {
     /// The table, for the line of each sample.
-    pub table: NumericTable,
+    pub(crate) table: NumericTable,
     /// Time and motion of each row.
-    pub samples: Vec<(f64, VehicleMotion)>,
+    pub(crate) samples: Vec<(f64, VehicleMotion)>,
 }
 
 /// Read a recording from `input` (named `name` in errors).
-pub fn read(input: &mut dyn Read, name: &str) -> Result<VehicleTable> {
+pub(crate) fn read(input: &mut dyn Read, name: &str) -> Result<VehicleTable> {
     let table = NumericTable::read(input, name, &VEHICLE_COLUMNS, &[])?;
     table.check_range("t", &symmetric(TIME_S), "s")?;
     for column in ["ax", "ay", "az"] {
@@ -45,7 +45,7 @@ pub fn read(input: &mut dyn Read, name: &str) -> Result<VehicleTable> {
 
 /// Whether a CSV's header line names vehicle motion (its acceleration and rate columns)
 /// rather than poses.
-pub fn is_vehicle_header(first_line: &str) -> bool {
+pub(crate) fn is_vehicle_header(first_line: &str) -> bool {
     let columns: Vec<&str> = first_line.split(',').map(str::trim).collect();
     ["ax", "wx"].iter().all(|c| columns.contains(c))
 }

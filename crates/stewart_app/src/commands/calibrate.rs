@@ -24,7 +24,7 @@ const OUTLIER_FACTOR: f64 = 5.0;
 const LARGE_CHANGE: f64 = 0.1;
 
 /// Run the command.
-pub fn run(args: &CalibrateArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &CalibrateArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario);
     inputs.push(("the measurements", &args.measurements));
     let out = output::destination(args.out.as_deref(), &inputs)?;

@@ -19,7 +19,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &CheckArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let samples = scenario.motion.sample();
     // A long motion (millions of samples) says what it will cost before it starts.

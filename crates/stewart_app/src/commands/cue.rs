@@ -18,7 +18,7 @@ use crate::vehicle_table::{self, VehicleTable};
 const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
 
 /// Run the command.
-pub fn run(args: &CueArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario);
     inputs.push(("the vehicle motion", &args.input));
     let out = output::destination(args.out.as_deref(), &inputs)?;

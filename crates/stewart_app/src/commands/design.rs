@@ -29,7 +29,7 @@ struct JsonReport<'a> {
 }
 
 /// Run the command.
-pub fn run(args: &DesignArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &DesignArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let envelope =

@@ -10,7 +10,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &FirmwareArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &FirmwareArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let text = firmware::header(&scenario);

@@ -24,7 +24,7 @@ use crate::source;
 const SOLVER_OUT: [&str; 2] = ["iterations", "residual"];
 
 /// Run the command.
-pub fn run(args: &FkArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &FkArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario);
     inputs.push(("the table", &args.legs));
     let out = output::destination(args.out.as_deref(), &inputs)?;

@@ -15,7 +15,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &ForcesArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &ForcesArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;

@@ -1,28 +1,28 @@
 //! One module per subcommand.
 
-pub mod calibrate;
-pub mod check;
-pub mod cue;
-pub mod design;
-pub mod device_sim;
-pub mod firmware;
-pub mod fk;
-pub mod forces;
-pub mod link;
-pub mod modes;
-pub mod plot;
-pub mod render;
-pub mod settings;
-pub mod solve;
-pub mod view;
-pub mod workspace;
+pub(crate) mod calibrate;
+pub(crate) mod check;
+pub(crate) mod cue;
+pub(crate) mod design;
+pub(crate) mod device_sim;
+pub(crate) mod firmware;
+pub(crate) mod fk;
+pub(crate) mod forces;
+pub(crate) mod link;
+pub(crate) mod modes;
+pub(crate) mod plot;
+pub(crate) mod render;
+pub(crate) mod settings;
+pub(crate) mod solve;
+pub(crate) mod view;
+pub(crate) mod workspace;
 
 use std::process::ExitCode;
 
 use anyhow::Result;
 
 /// `stewart` with no subcommand: the viewer on the seed scenario.
-pub fn no_command() -> Result<ExitCode> {
+pub(crate) fn no_command() -> Result<ExitCode> {
     use clap::Parser;
     let cli = crate::cli::Cli::parse_from(["stewart", "view"]);
     match cli.command {

@@ -79,7 +79,7 @@ fn components(v: &Vector6<f64>) -> [f64; 6] {
 }
 
 /// Run the command.
-pub fn run(args: &ModesArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &ModesArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let payload = scenario.payload.ok_or_else(|| {

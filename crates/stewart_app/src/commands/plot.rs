@@ -11,7 +11,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &PlotArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &PlotArgs) -> Result<ExitCode> {
     let out = output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     out.require_file()?;
     let scenario = source::load(&args.scenario)?;

@@ -14,7 +14,7 @@ use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_w
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &RenderArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // The output is never one of the inputs (a scenario file named `x.gif`, say).
     crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;

@@ -11,7 +11,7 @@ use crate::cli::{SettingsArgs, SettingsFormat};
 use crate::{output, source};
 
 /// Run the command.
-pub fn run(args: &SettingsArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &SettingsArgs) -> Result<ExitCode> {
     if args.as_coordinates {
         let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
         let scenario = source::load(&args.scenario)?;
@@ -79,7 +79,7 @@ fn accepted_range(s: &Setting) -> String {
 /// The settings reference in Markdown: each file section's keys with their meaning, unit,
 /// slider and accepted ranges and default in `scenario` (a key of another trajectory or
 /// actuator kind says so), then the `[link]` table's keys.
-pub fn reference(scenario: &Scenario) -> String {
+pub(crate) fn reference(scenario: &Scenario) -> String {
     let mut out = format!(
         "# Settings reference\n\n\
          Every number a scenario file holds, as `--set KEY=VALUE`, the viewer's sliders and \
@@ -147,7 +147,7 @@ fn section_title(group: Group) -> &'static str {
 }
 
 /// The table: key, current value, unit, slider range, accepted range, default.
-pub fn table(scenario: &Scenario) -> String {
+pub(crate) fn table(scenario: &Scenario) -> String {
     let rows: Vec<[String; 6]> = settings::all()
         .iter()
         .map(|s| {

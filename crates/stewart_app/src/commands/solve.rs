@@ -14,7 +14,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &SolveArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &SolveArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario);
     if let Some(p) = &args.poses {
         inputs.push(("the pose table", p));

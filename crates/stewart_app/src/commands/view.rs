@@ -16,7 +16,7 @@ use crate::viewer::window::window_size::{self, WindowSize};
 use crate::viewer::{ViewOptions, ViewerState, run as run_viewer};
 
 /// Run the command.
-pub fn run(args: &ViewArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
     // Screenshot runs are reproducible: no session is read (unless --from-session asks for
     // it) and none is written.
     let folder = if args.screenshot.is_some() && !args.from_session {

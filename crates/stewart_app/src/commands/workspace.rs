@@ -24,7 +24,7 @@ use crate::output;
 use crate::source;
 
 /// Run the command.
-pub fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let inputs = source::inputs(&args.scenario);
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let plot_out = match &args.plot {

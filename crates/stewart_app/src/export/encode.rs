@@ -40,7 +40,7 @@ impl Target {
 
     /// The output path, checked before any work: a folder of frames must be new or
     /// empty, a video must be a file (or a device or FIFO), and none of them an input.
-    pub fn destination(&self) -> Result<Destination> {
+    pub(crate) fn destination(&self) -> Result<Destination> {
         match self {
             Target::Folder(out) => {
                 let dest = Destination::new(out, &[])?;
@@ -188,7 +188,7 @@ enum Staging {
 }
 
 /// Check that `ffmpeg` runs, or say how to install it.
-pub fn check_ffmpeg() -> Result<()> {
+pub(crate) fn check_ffmpeg() -> Result<()> {
     match Command::new("ffmpeg")
         .arg("-version")
         .stdin(Stdio::null())
@@ -476,11 +476,11 @@ fn first_failure(
 
 /// Shortest GIF frame delay that plays as written: browsers and most viewers show a
 /// delay of 0 or 1 centisecond as 10.
-pub const GIF_MIN_DELAY_CS: u16 = 2;
+pub(crate) const GIF_MIN_DELAY_CS: u16 = 2;
 
 /// A GIF frame's delay for `fps` frames per second: whole centiseconds, at least
 /// [`GIF_MIN_DELAY_CS`].
-pub fn gif_delay_cs(fps: f64) -> u16 {
+pub(crate) fn gif_delay_cs(fps: f64) -> u16 {
     (100.0 / fps)
         .round()
         .clamp(f64::from(GIF_MIN_DELAY_CS), 65535.0) as u16

@@ -55,7 +55,7 @@ fn identifier(name: &str) -> String {
 /// The header text for `scenario`. Everything is in the base frame (z up, metres) and
 /// degrees, as in the scenario file; the joints are listed as points so that firmware
 /// needs no trigonometry to place them.
-pub fn header(scenario: &Scenario) -> String {
+pub(crate) fn header(scenario: &Scenario) -> String {
     let g = &scenario.geometry;
     // What differs by actuator kind: its flag, what the base points are, and its section.
     let (rotary, base_points, section) = match g.actuator() {

@@ -40,7 +40,7 @@ pub fn default_camera(scenario: &Scenario) -> OrbitCamera {
 }
 
 /// Share of the view's half-width and half-height kept free around a framed motion.
-pub const MOTION_MARGIN: f32 = 0.08;
+pub(crate) const MOTION_MARGIN: f32 = 0.08;
 
 /// Most poses sampled to frame a motion; longer exports take evenly spaced ones.
 const FRAMING_POSES: usize = 1024;
@@ -48,7 +48,7 @@ const FRAMING_POSES: usize = 1024;
 /// The seed's angles, with the view (`aspect` = width / height) framing every solid the
 /// motion sweeps at `times` (plates, legs, joints, servos, axes as `overlays` draw them),
 /// centred below the `top` share of the height (kept for a readout).
-pub fn motion_camera(
+pub(crate) fn motion_camera(
     scenario: &Scenario,
     times: &[f64],
     overlays: &Overlays,
@@ -68,7 +68,7 @@ pub fn motion_camera(
 
 /// [`motion_camera`] looking from `[azimuth, elevation]` (degrees) instead of the seed's
 /// angles.
-pub fn motion_camera_from(
+pub(crate) fn motion_camera_from(
     scenario: &Scenario,
     times: &[f64],
     overlays: &Overlays,
@@ -88,7 +88,7 @@ pub fn motion_camera_from(
 /// The camera looking from `[azimuth, elevation]` whose view (`aspect` = width / height)
 /// frames every solid of `scenario`'s platform at each of `poses`, centred below the `top`
 /// share of the height.
-pub fn poses_camera(
+pub(crate) fn poses_camera(
     scenario: &Scenario,
     poses: impl Iterator<Item = Pose>,
     overlays: &Overlays,
@@ -263,17 +263,17 @@ impl<'a> FrameSource<'a> {
     }
 
     /// The adapter in words.
-    pub fn adapter(&self) -> String {
+    pub(crate) fn adapter(&self) -> String {
         self.offscreen.adapter()
     }
 
     /// Width and height of the frames.
-    pub fn frame_size(&self) -> (u32, u32) {
+    pub(crate) fn frame_size(&self) -> (u32, u32) {
         (self.job.width, self.job.height)
     }
 
     /// Render frame `k` (frames must be asked for in order for the traced path).
-    pub fn frame(&mut self, k: usize) -> Result<Frame> {
+    pub(crate) fn frame(&mut self, k: usize) -> Result<Frame> {
         let t = k
             .checked_sub(self.job.first_index)
             .and_then(|i| self.job.times.get(i).copied())

@@ -36,20 +36,20 @@ const FLAT_MIN_SAMPLES: u32 = 16;
 
 /// A rectangle of pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Rect {
+pub(crate) struct Rect {
     /// Left column.
-    pub left: u32,
+    pub(crate) left: u32,
     /// Top row.
-    pub top: u32,
+    pub(crate) top: u32,
     /// Width, pixels.
-    pub width: u32,
+    pub(crate) width: u32,
     /// Height, pixels.
-    pub height: u32,
+    pub(crate) height: u32,
 }
 
 /// The smallest rectangle holding every pixel in which `current` differs from
 /// `previous` (same size), or `None` when they are identical.
-pub fn changed_rect(previous: &Frame, current: &Frame) -> Option<Rect> {
+pub(crate) fn changed_rect(previous: &Frame, current: &Frame) -> Option<Rect> {
     let w = current.width as usize;
     let row_bytes = 4 * w;
     let rows = || {
@@ -83,7 +83,7 @@ pub fn changed_rect(previous: &Frame, current: &Frame) -> Option<Rect> {
 
 /// The GIF frame that turns `previous` (as shown) into `current`; the whole frame when
 /// there is no previous one. The delay is left for the caller.
-pub fn delta_frame(previous: Option<&Frame>, current: &Frame) -> gif::Frame<'static> {
+pub(crate) fn delta_frame(previous: Option<&Frame>, current: &Frame) -> gif::Frame<'static> {
     let full = Rect {
         left: 0,
         top: 0,

@@ -2,12 +2,12 @@
 //! and surface (PLY), and the geometry as a C header for firmware.
 
 pub mod encode;
-pub mod firmware;
+pub(crate) mod firmware;
 pub mod frames;
-pub mod gif_delta;
-pub mod plot;
-pub mod ply;
+pub(crate) mod gif_delta;
+pub(crate) mod plot;
+pub(crate) mod ply;
 pub mod tables;
-pub mod vector;
-pub mod video;
-pub mod workspace_plot;
+pub(crate) mod vector;
+pub(crate) mod video;
+pub(crate) mod workspace_plot;

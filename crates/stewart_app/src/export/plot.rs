@@ -12,30 +12,30 @@ use crate::i18n::words::{effort_name, quantity_name};
 
 /// Actuator `k`'s colour as `#RRGGBB`: the renderer's series colours (Okabe–Ito), so a
 /// curve has the colour of its leg in the 3D view.
-pub fn leg_colour_hex(k: usize) -> String {
+pub(crate) fn leg_colour_hex(k: usize) -> String {
     let [r, g, b] = stewart_render::theme::SERIES_RGB[k % 6];
     format!("#{r:02X}{g:02X}{b:02X}")
 }
 
 /// What to plot.
-pub struct PlotData<'a> {
+pub(crate) struct PlotData<'a> {
     /// Title above the axes.
-    pub title: &'a str,
+    pub(crate) title: &'a str,
     /// Sample times, seconds.
-    pub times: &'a [f64],
+    pub(crate) times: &'a [f64],
     /// Six values per sample in the quantity's unit (NaN: no value, a gap in the curve).
-    pub values: &'a [[f64; 6]],
+    pub(crate) values: &'a [[f64; 6]],
     /// What the values are: leg lengths or servo angles.
-    pub quantity: Quantity,
+    pub(crate) quantity: Quantity,
     /// The quantity's limits (stroke or servo range), each end optional.
-    pub limits: [Option<f64>; 2],
+    pub(crate) limits: [Option<f64>; 2],
     /// A vertical marker at this time (the current frame of a video), seconds.
-    pub marker: Option<f64>,
+    pub(crate) marker: Option<f64>,
     /// The language of the axis labels and the limits' names.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// The values are the actuators' efforts (forces in N or torques in N·m), not the
     /// quantity itself.
-    pub efforts: bool,
+    pub(crate) efforts: bool,
 }
 
 impl PlotData<'_> {
@@ -52,12 +52,15 @@ impl PlotData<'_> {
 }
 
 /// The plot of `scenario`'s trajectory in `lang`: its sample times and the SVG.
-pub fn scenario_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> (Vec<f64>, String) {
+pub(crate) fn scenario_svg(
+    scenario: &stewart_kinematics::Scenario,
+    lang: Lang,
+) -> (Vec<f64>, String) {
     scenario_svg_on(scenario, lang, &PAPER)
 }
 
 /// [`scenario_svg`] on `page`.
-pub fn scenario_svg_on(
+pub(crate) fn scenario_svg_on(
     scenario: &stewart_kinematics::Scenario,
     lang: Lang,
     page: &Page,
@@ -117,9 +120,9 @@ fn capitalised(text: &str) -> String {
 }
 
 /// Page size in CSS pixels (96 per inch): 16 cm × 9 cm.
-pub const WIDTH: f64 = 604.7;
+pub(crate) const WIDTH: f64 = 604.7;
 /// See [`WIDTH`].
-pub const HEIGHT: f64 = 340.2;
+pub(crate) const HEIGHT: f64 = 340.2;
 
 /// Plot area margins: left, right, top, bottom.
 const MARGIN: [f64; 4] = [62.0, 78.0, 30.0, 44.0];
@@ -127,25 +130,25 @@ const MARGIN: [f64; 4] = [62.0, 78.0, 30.0, 44.0];
 /// The colours of a page: background, text and ticks, grid, the axes' frame, the limits'
 /// lines and words, the time marker (SVG colours).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ink {
+pub(crate) struct Ink {
     /// The page.
-    pub background: &'static str,
+    pub(crate) background: &'static str,
     /// Text and tick labels (`None`: SVG's own black, the paper's).
-    pub text: Option<&'static str>,
+    pub(crate) text: Option<&'static str>,
     /// Tick labels.
-    pub ticks: &'static str,
+    pub(crate) ticks: &'static str,
     /// Grid lines.
-    pub grid: &'static str,
+    pub(crate) grid: &'static str,
     /// The axes' frame.
-    pub frame: &'static str,
+    pub(crate) frame: &'static str,
     /// The limits' dashed lines and words.
-    pub limit: &'static str,
+    pub(crate) limit: &'static str,
     /// The time marker.
-    pub marker: &'static str,
+    pub(crate) marker: &'static str,
 }
 
 /// Black on white, for papers and slides.
-pub const PAPER_INK: Ink = Ink {
+pub(crate) const PAPER_INK: Ink = Ink {
     background: "white",
     text: None,
     ticks: "black",
@@ -156,7 +159,7 @@ pub const PAPER_INK: Ink = Ink {
 };
 
 /// Light on the dark 3D view's background, for frames of the dark theme.
-pub const DARK_INK: Ink = Ink {
+pub(crate) const DARK_INK: Ink = Ink {
     background: "#1C1F24",
     text: Some("#DDDDDD"),
     ticks: "#DDDDDD",
@@ -169,19 +172,19 @@ pub const DARK_INK: Ink = Ink {
 /// A page the plot is laid out on: its size in CSS pixels, the text's scale (margins and
 /// text offsets scale with it) and its colours.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Page {
+pub(crate) struct Page {
     /// Width, CSS pixels.
-    pub width: f64,
+    pub(crate) width: f64,
     /// Height, CSS pixels.
-    pub height: f64,
+    pub(crate) height: f64,
     /// Text size against the paper's (11 px body).
-    pub text: f64,
+    pub(crate) text: f64,
     /// Colours.
-    pub ink: Ink,
+    pub(crate) ink: Ink,
 }
 
 /// The paper page: 16 cm × 9 cm, black on white.
-pub const PAPER: Page = Page {
+pub(crate) const PAPER: Page = Page {
     width: WIDTH,
     height: HEIGHT,
     text: 1.0,
@@ -191,7 +194,7 @@ pub const PAPER: Page = Page {
 impl Page {
     /// A page of the paper's width with `aspect` (width / height), text `text` times the
     /// paper's, in `ink`: the plot half of a composite frame fills its half.
-    pub fn fitting(aspect: f64, text: f64, ink: Ink) -> Self {
+    pub(crate) fn fitting(aspect: f64, text: f64, ink: Ink) -> Self {
         Self {
             width: WIDTH,
             height: WIDTH / aspect.clamp(0.2, 5.0),
@@ -201,14 +204,14 @@ impl Page {
     }
 
     /// The plot area's margins (left, right, top, bottom) in CSS pixels of the page.
-    pub fn margins(&self) -> (f64, f64, f64, f64) {
+    pub(crate) fn margins(&self) -> (f64, f64, f64, f64) {
         let k = self.text;
         (MARGIN[0] * k, MARGIN[1] * k, MARGIN[2] * k, MARGIN[3] * k)
     }
 }
 
 /// About `count` "nice" ticks (1, 2, 5 × 10ⁿ apart) covering `[lo, hi]`.
-pub fn nice_ticks(lo: f64, hi: f64, count: usize) -> Vec<f64> {
+pub(crate) fn nice_ticks(lo: f64, hi: f64, count: usize) -> Vec<f64> {
     let span = (hi - lo).abs().max(1e-12);
     let step = stewart_render::ticks::nice_step(span / count.max(1) as f64);
     let first = (lo / step).ceil() as i64;
@@ -278,12 +281,12 @@ impl Axes {
 }
 
 /// The plot as an SVG document on the paper page.
-pub fn svg(data: &PlotData) -> String {
+pub(crate) fn svg(data: &PlotData) -> String {
     svg_on(data, &PAPER)
 }
 
 /// The plot as an SVG document on `page`.
-pub fn svg_on(data: &PlotData, page: &Page) -> String {
+pub(crate) fn svg_on(data: &PlotData, page: &Page) -> String {
     let axes = Axes::of(data, page);
     let (x0, x1) = axes.x;
     let k = page.text;
@@ -511,7 +514,10 @@ pub(crate) fn escape(text: &str) -> String {
 
 /// The plot of the actuator efforts (leg forces or servo torques, with the legs' parts
 /// and friction of `[dynamics]`) along `scenario`'s trajectory for its `[payload]`.
-pub fn efforts_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> anyhow::Result<String> {
+pub(crate) fn efforts_svg(
+    scenario: &stewart_kinematics::Scenario,
+    lang: Lang,
+) -> anyhow::Result<String> {
     let payload = scenario.payload.ok_or_else(|| {
         anyhow::anyhow!(
             "scenario `{}` has no [payload] table: the forces need the moving mass",
@@ -540,7 +546,7 @@ pub fn efforts_svg(scenario: &stewart_kinematics::Scenario, lang: Lang) -> anyho
 
 /// The scenario's leg-length plot (with `efforts`, its actuator forces) in the format
 /// `path` ends in: `.svg` (text stays text), `.pdf` (vector) or `.png` (300 dpi).
-pub fn plot_file(
+pub(crate) fn plot_file(
     scenario: &stewart_kinematics::Scenario,
     path: &std::path::Path,
     lang: Lang,

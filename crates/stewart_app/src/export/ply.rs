@@ -7,19 +7,19 @@ use std::fmt::Write as _;
 use stewart_kinematics::analysis::workspace::WorkspaceSurface;
 
 /// What the file says about where the surface comes from.
-pub struct PlyHeader<'a> {
+pub(crate) struct PlyHeader<'a> {
     /// The scenario's name.
-    pub name: &'a str,
+    pub(crate) name: &'a str,
     /// Roll, pitch, yaw, degrees.
-    pub orientation_deg: [f64; 3],
+    pub(crate) orientation_deg: [f64; 3],
     /// The workspace's volume and its error bound, m³.
-    pub volume: [f64; 2],
+    pub(crate) volume: [f64; 2],
     /// Columns a side.
-    pub resolution: usize,
+    pub(crate) resolution: usize,
 }
 
 /// The file's bytes.
-pub fn ply(surface: &WorkspaceSurface, header: &PlyHeader) -> Vec<u8> {
+pub(crate) fn ply(surface: &WorkspaceSurface, header: &PlyHeader) -> Vec<u8> {
     let mut text = String::from("ply\nformat binary_little_endian 1.0\n");
     let [r, p, y] = header.orientation_deg;
     // Writing to a String cannot fail. Comments stay on one line each.

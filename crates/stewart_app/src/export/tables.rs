@@ -29,9 +29,9 @@ pub fn trajectory_table(scenario: &Scenario) -> PoseTable {
 /// What each pose needs from the actuators: six leg lengths (m) or six servo angles (°).
 pub struct Solved {
     /// `L1..L6` or `theta1..theta6`.
-    pub columns: [&'static str; 6],
+    pub(crate) columns: [&'static str; 6],
     /// One row of six values per pose.
-    pub values: Vec<[f64; 6]>,
+    pub(crate) values: Vec<[f64; 6]>,
 }
 
 /// Leg lengths (linear legs, on all cores) or servo angles (rotary servos) of every pose
@@ -72,7 +72,7 @@ pub fn write_solved_csv(
 }
 
 /// Where pose `k` of the scenario's own trajectory is, for messages.
-pub fn trajectory_place(table: &PoseTable, k: usize) -> String {
+pub(crate) fn trajectory_place(table: &PoseTable, k: usize) -> String {
     match table.times.as_ref().and_then(|t| t.get(k)) {
         Some(t) => format!("the trajectory at t = {t} s"),
         None => format!("pose {}", k + 1),

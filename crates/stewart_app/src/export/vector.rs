@@ -3,7 +3,7 @@ use anyhow::{Context, Result};
 use resvg::{tiny_skia, usvg};
 
 /// Parse an SVG document with the system fonts.
-pub fn tree(svg: &str) -> Result<usvg::Tree> {
+pub(crate) fn tree(svg: &str) -> Result<usvg::Tree> {
     let options = usvg::Options {
         fontdb: crate::i18n::fonts::system(),
         ..usvg::Options::default()
@@ -12,7 +12,7 @@ pub fn tree(svg: &str) -> Result<usvg::Tree> {
 }
 
 /// Refuse a figure path that does not end in `.svg`, `.pdf` or `.png`.
-pub fn check_extension(path: &std::path::Path) -> Result<()> {
+pub(crate) fn check_extension(path: &std::path::Path) -> Result<()> {
     match crate::output::extension(path).as_deref() {
         Some("svg" | "pdf" | "png") => Ok(()),
         _ => anyhow::bail!(
@@ -24,7 +24,7 @@ pub fn check_extension(path: &std::path::Path) -> Result<()> {
 
 /// `svg` in the format `path` ends in: SVG as it is (text stays text), PDF (vector) or
 /// PNG at 300 dpi.
-pub fn by_extension(svg: String, path: &std::path::Path) -> Result<Vec<u8>> {
+pub(crate) fn by_extension(svg: String, path: &std::path::Path) -> Result<Vec<u8>> {
     check_extension(path)?;
     match crate::output::extension(path).as_deref() {
         Some("pdf") => pdf(&svg),
@@ -35,7 +35,7 @@ pub fn by_extension(svg: String, path: &std::path::Path) -> Result<Vec<u8>> {
 }
 
 /// The SVG as a one-page PDF of the same size.
-pub fn pdf(svg: &str) -> Result<Vec<u8>> {
+pub(crate) fn pdf(svg: &str) -> Result<Vec<u8>> {
     // svg2pdf's usvg is the same version as resvg's, so one tree serves both.
     let tree = tree(svg)?;
     svg2pdf::to_pdf(
@@ -47,7 +47,7 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>> {
 }
 
 /// The SVG as a PNG at `scale` × its CSS-pixel size (scale 3.125 ≈ 300 dpi), on white.
-pub fn png(svg: &str, scale: f32) -> Result<Vec<u8>> {
+pub(crate) fn png(svg: &str, scale: f32) -> Result<Vec<u8>> {
     let tree = tree(svg)?;
     let size = tree.size();
     let (w, h) = (
@@ -68,7 +68,7 @@ pub fn png(svg: &str, scale: f32) -> Result<Vec<u8>> {
 
 /// The SVG rasterised into a white `width × height` RGBA image, scaled uniformly to fit
 /// and centred (for video composites). Returns the pixels, the scale and the offset.
-pub fn rgba_fit(svg: &str, width: u32, height: u32) -> Result<(Vec<u8>, f32, (f32, f32))> {
+pub(crate) fn rgba_fit(svg: &str, width: u32, height: u32) -> Result<(Vec<u8>, f32, (f32, f32))> {
     let tree = tree(svg)?;
     let size = tree.size();
     let scale = (width as f32 / size.width()).min(height as f32 / size.height());

@@ -16,69 +16,69 @@ use super::frames::{FrameJob, FrameSource};
 
 /// What to export.
 #[derive(Clone, Debug)]
-pub struct VideoRequest {
+pub(crate) struct VideoRequest {
     /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Frame width and height, pixels.
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
     /// Frames per second; `None`: the format's default ([`GIF_FPS`], [`MP4_FPS`], one
     /// frame per trajectory sample for a folder of frames).
-    pub fps: Option<f64>,
+    pub(crate) fps: Option<f64>,
     /// Only frames `A..B` (`None` ends: from the first, to the last).
-    pub frames: (Option<usize>, Option<usize>),
+    pub(crate) frames: (Option<usize>, Option<usize>),
     /// Colours.
-    pub theme: Theme,
+    pub(crate) theme: Theme,
     /// The camera; `None`: the seed's angles, framing the whole motion of the exported
     /// frames with a margin, centred in the 3D view.
-    pub camera: Option<OrbitCamera>,
+    pub(crate) camera: Option<OrbitCamera>,
     /// Put the leg-length plot beside the 3D view.
-    pub composite: bool,
+    pub(crate) composite: bool,
     /// What to draw beyond the platform.
-    pub overlays: Overlays,
+    pub(crate) overlays: Overlays,
     /// Burn the readout (time, pose, the six values) into the frames under this title.
-    pub readout: Option<String>,
+    pub(crate) readout: Option<String>,
     /// The language of the readout and the composite's plot.
-    pub lang: crate::i18n::Lang,
+    pub(crate) lang: crate::i18n::Lang,
     /// How fast the motion plays in the video against real time (below 1: slow motion;
     /// each second of motion lasts `1 / speed` seconds of video).
-    pub speed: f64,
+    pub(crate) speed: f64,
 }
 
 /// The slowest and fastest playback a video may have against real time.
-pub const SPEEDS: std::ops::RangeInclusive<f64> = 0.01..=100.0;
+pub(crate) const SPEEDS: std::ops::RangeInclusive<f64> = 0.01..=100.0;
 
 /// What an export did.
 #[derive(Clone, Debug, PartialEq)]
-pub struct VideoReport {
+pub(crate) struct VideoReport {
     /// Frames written.
-    pub frames: usize,
+    pub(crate) frames: usize,
     /// Frames per second of the output.
-    pub fps: f64,
+    pub(crate) fps: f64,
     /// How long the written frames play, seconds.
-    pub duration: f64,
+    pub(crate) duration: f64,
     /// Bytes written (the file, or every frame in the folder).
-    pub bytes: u64,
+    pub(crate) bytes: u64,
     /// Why the frame rate differs from the one asked for, if it does.
-    pub note: Option<RateNote>,
+    pub(crate) note: Option<RateNote>,
     /// Wall time, seconds.
-    pub seconds: f64,
+    pub(crate) seconds: f64,
     /// The GPU adapter in words.
-    pub adapter: String,
+    pub(crate) adapter: String,
 }
 
 /// Frames per second of a GIF unless asked otherwise: 4 centiseconds a frame, which every
 /// browser and slide program plays as written, smooth enough for a platform's motion, and
 /// a quarter of the frames (and bytes) of one frame per 100 Hz sample.
-pub const GIF_FPS: f64 = 25.0;
+pub(crate) const GIF_FPS: f64 = 25.0;
 
 /// Frames per second of an MP4 unless asked otherwise: every other sample of a 100 Hz
 /// trajectory, within what 60 Hz displays, browsers and slide software play frame for
 /// frame, and within H.264 level 4.2 at 1920×1080.
-pub const MP4_FPS: f64 = 50.0;
+pub(crate) const MP4_FPS: f64 = 50.0;
 
 /// Why an export's frame rate is not the one asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum RateNote {
+pub(crate) enum RateNote {
     /// A GIF's frame delay is a whole number of centiseconds, at least
     /// [`encode::GIF_MIN_DELAY_CS`] (shorter delays play as 10 cs in browsers): the rate
     /// asked for became the nearest such rate.
@@ -110,7 +110,7 @@ impl std::fmt::Display for RateNote {
 }
 
 /// A frame rate with the decimals it needs (25, 33.33).
-pub fn rate_in_words(fps: f64) -> String {
+pub(crate) fn rate_in_words(fps: f64) -> String {
     // Two decimals, or four significant digits below 1 (0.3003, 0.01).
     let decimals = (3.0 - fps.abs().log10().floor()).clamp(2.0, 12.0) as usize;
     let text = format!("{fps:.decimals$}");
@@ -118,13 +118,13 @@ pub fn rate_in_words(fps: f64) -> String {
 }
 
 /// Slowest frame rate an export may ask for: one frame per 100 s of motion.
-pub const MIN_FPS: f64 = 0.01;
+pub(crate) const MIN_FPS: f64 = 0.01;
 
 /// Fastest frame rate an export may ask for.
-pub const MAX_FPS: f64 = 1000.0;
+pub(crate) const MAX_FPS: f64 = 1000.0;
 
 /// A frame rate asked for, checked: finite, from [`MIN_FPS`] to [`MAX_FPS`].
-pub fn check_rate(fps: f64) -> Result<(), String> {
+pub(crate) fn check_rate(fps: f64) -> Result<(), String> {
     if fps.is_finite() && (MIN_FPS..=MAX_FPS).contains(&fps) {
         Ok(())
     } else {
@@ -135,17 +135,17 @@ pub fn check_rate(fps: f64) -> Result<(), String> {
 }
 
 /// Most frames one export may write (as many as a trajectory may have samples).
-pub const MAX_FRAMES: usize = stewart_kinematics::model::trajectory::MAX_SAMPLES;
+pub(crate) const MAX_FRAMES: usize = stewart_kinematics::model::trajectory::MAX_SAMPLES;
 
 /// The frames of an export: how many the motion gives at the rate, and when each is.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FramePlan {
+pub(crate) struct FramePlan {
     /// Frames over the whole motion.
-    pub count: usize,
+    pub(crate) count: usize,
     /// Frames per second.
-    pub fps: f64,
+    pub(crate) fps: f64,
     /// Why `fps` is not the rate asked for, if it is not.
-    pub note: Option<RateNote>,
+    pub(crate) note: Option<RateNote>,
     /// Time of frame 0, seconds.
     start: f64,
     /// The trajectory's own sampling, when frames are its samples.
@@ -156,7 +156,7 @@ pub struct FramePlan {
 
 impl FramePlan {
     /// Time of frame `k` in the motion, seconds.
-    pub fn time(&self, k: usize) -> f64 {
+    pub(crate) fn time(&self, k: usize) -> f64 {
         match &self.native {
             Some(sampling) => sampling.time(k),
             None => self.start + k as f64 * self.speed / self.fps,
@@ -171,7 +171,7 @@ impl VideoRequest {
     /// A GIF plays exactly the motion's duration: its frames start at the motion's start,
     /// one delay apart, and the last one is shown until the loop begins again. Other
     /// outputs end on the motion's last pose.
-    pub fn plan(&self, scenario: &Scenario) -> Result<FramePlan> {
+    pub(crate) fn plan(&self, scenario: &Scenario) -> Result<FramePlan> {
         let sampling = scenario.motion.sampling;
         let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
         let target = Target::from_path(&self.out);
@@ -226,7 +226,7 @@ impl VideoRequest {
     }
 
     /// The frame indices to write, checked against the number of frames.
-    pub fn range(&self, count: usize) -> Result<Range<usize>> {
+    pub(crate) fn range(&self, count: usize) -> Result<Range<usize>> {
         let (a, b) = (self.frames.0.unwrap_or(0), self.frames.1.unwrap_or(count));
         if a >= b || b > count {
             bail!(
@@ -243,7 +243,7 @@ impl VideoRequest {
     }
 
     /// How many frames the export writes.
-    pub fn frame_count(&self, scenario: &Scenario) -> Result<usize> {
+    pub(crate) fn frame_count(&self, scenario: &Scenario) -> Result<usize> {
         let plan = self.plan(scenario)?;
         Ok(self.range(plan.count)?.len())
     }
@@ -251,7 +251,7 @@ impl VideoRequest {
 
 /// Render and encode `request`, counting frames on `progress`; `stop` cancels (then
 /// nothing is written).
-pub fn export_video(
+pub(crate) fn export_video(
     scenario: &Scenario,
     request: &VideoRequest,
     progress: &ProgressBar,
@@ -317,7 +317,7 @@ fn written_bytes(out: &std::path::Path) -> u64 {
 }
 
 /// A size in bytes for people: 3.4 MB, 812 kB.
-pub fn bytes_in_words(bytes: u64) -> String {
+pub(crate) fn bytes_in_words(bytes: u64) -> String {
     match bytes {
         b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
         b if b >= 1_000 => format!("{} kB", b / 1_000),

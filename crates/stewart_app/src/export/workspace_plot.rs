@@ -31,17 +31,17 @@ fn hex([r, g, b]: [u8; 3]) -> String {
 }
 
 /// What the figure shows.
-pub struct WorkspaceFigure<'a> {
+pub(crate) struct WorkspaceFigure<'a> {
     /// The title line.
-    pub title: &'a str,
+    pub(crate) title: &'a str,
     /// The horizontal slice and the vertical one.
-    pub slices: [&'a Slice; 2],
+    pub(crate) slices: [&'a Slice; 2],
     /// The platform centre, metres.
-    pub centre: [f64; 3],
+    pub(crate) centre: [f64; 3],
     /// The near-singular threshold (`checks.condition_max`).
-    pub condition_max: f64,
+    pub(crate) condition_max: f64,
     /// The language of the words.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
 }
 
 /// Colour of condition number `k`: viridis from 1 to `max` on a log scale
@@ -59,7 +59,7 @@ const SLICE_CELLS: usize = 200;
 
 /// The two slices through the workspace `ws` at `position` (a horizontal one at its
 /// height, a vertical one through its y) as a figure in the format `path` ends in.
-pub fn figure_file(
+pub(crate) fn figure_file(
     scenario: &stewart_kinematics::Scenario,
     ws: &ConstantOrientationWorkspace,
     orientation: [Angle; 3],
@@ -134,7 +134,7 @@ impl Frame {
 }
 
 /// The figure as an SVG document.
-pub fn svg(fig: &WorkspaceFigure) -> String {
+pub(crate) fn svg(fig: &WorkspaceFigure) -> String {
     let t = fig.lang;
     let mut s = String::new();
     // Writing to a String cannot fail.

@@ -15,13 +15,14 @@ static TABLES: LazyLock<[BTreeMap<String, String>; 2]> =
     LazyLock::new(|| [parse(EN, "en.toml"), parse(ZH, "zh.toml")]);
 
 /// The text of `key` in `lang`.
-pub fn lookup(lang: Lang, key: &str) -> Option<&'static str> {
+pub(crate) fn lookup(lang: Lang, key: &str) -> Option<&'static str> {
     let table = &TABLES[lang as usize];
     table.get(key).map(String::as_str)
 }
 
 /// Every key of `lang`'s catalogue, sorted.
-pub fn keys(lang: Lang) -> impl Iterator<Item = &'static str> {
+#[cfg(test)]
+pub(crate) fn keys(lang: Lang) -> impl Iterator<Item = &'static str> {
     TABLES[lang as usize].keys().map(String::as_str)
 }
 

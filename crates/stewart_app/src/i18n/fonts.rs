@@ -8,30 +8,30 @@ use std::sync::{Arc, OnceLock};
 use super::Lang;
 
 /// A font with Simplified Chinese.
-pub struct CjkFont {
+pub(crate) struct CjkFont {
     /// Its family name, as SVG and PDF name it.
-    pub family: String,
+    pub(crate) family: String,
     /// The font file's bytes.
-    pub data: Vec<u8>,
+    pub(crate) data: Vec<u8>,
     /// The face's index in a collection (`.ttc`).
-    pub index: u32,
+    pub(crate) index: u32,
 }
 
 /// The system's fonts, read once per process and shared by the plots (resvg, svg2pdf)
 /// and the Chinese font search (`FONTCONFIG_FILE` narrows them as it does for every
 /// fontconfig program; DejaVu Sans on Debian: `fonts-dejavu-core`).
-pub fn system() -> Arc<fontdb::Database> {
+pub(crate) fn system() -> Arc<fontdb::Database> {
     stewart_render::text::system_database()
 }
 
 /// The system's Chinese font (searched once per process).
-pub fn cjk() -> Option<&'static CjkFont> {
+pub(crate) fn cjk() -> Option<&'static CjkFont> {
     static FONT: OnceLock<Option<CjkFont>> = OnceLock::new();
     FONT.get_or_init(|| find(&system())).as_ref()
 }
 
 /// The first family of [`stewart_render::text::CJK`] that `db` has, regular weight.
-pub fn find(db: &fontdb::Database) -> Option<CjkFont> {
+pub(crate) fn find(db: &fontdb::Database) -> Option<CjkFont> {
     stewart_render::text::CJK.iter().find_map(|name| {
         let id = db.query(&fontdb::Query {
             families: &[fontdb::Family::Name(name)],
@@ -48,7 +48,7 @@ pub fn find(db: &fontdb::Database) -> Option<CjkFont> {
 
 /// The language to use when `wanted` was asked for and a Chinese font is (or is not)
 /// there: Chinese without a font falls back to English, with the note to show once.
-pub fn usable(wanted: Lang, font_found: bool) -> (Lang, Option<String>) {
+pub(crate) fn usable(wanted: Lang, font_found: bool) -> (Lang, Option<String>) {
     if wanted == Lang::Zh && !font_found {
         (
             Lang::En,
@@ -64,6 +64,6 @@ pub fn usable(wanted: Lang, font_found: bool) -> (Lang, Option<String>) {
 }
 
 /// [`usable`] with this system's fonts.
-pub fn usable_here(wanted: Lang) -> (Lang, Option<String>) {
+pub(crate) fn usable_here(wanted: Lang) -> (Lang, Option<String>) {
     usable(wanted, wanted == Lang::En || cjk().is_some())
 }

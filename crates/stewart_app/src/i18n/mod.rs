@@ -8,15 +8,16 @@
 //! their words from here.
 
 mod catalogue;
-pub mod fonts;
-pub mod words;
+pub(crate) mod fonts;
+pub(crate) mod words;
 
 use std::fmt::Display;
 
 use serde::{Deserialize, Serialize};
 use stewart_kinematics::model::actuator::ActuatorKind;
 
-pub use catalogue::keys;
+#[cfg(test)]
+pub(crate) use catalogue::keys;
 
 /// A language of the interface.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -31,10 +32,11 @@ pub enum Lang {
 
 impl Lang {
     /// Both languages, English first.
-    pub const ALL: [Lang; 2] = [Lang::En, Lang::Zh];
+    pub(crate) const ALL: [Lang; 2] = [Lang::En, Lang::Zh];
 
     /// `en` or `zh`, as `--lang` takes it.
-    pub fn code(self) -> &'static str {
+    #[cfg(test)]
+    pub(crate) fn code(self) -> &'static str {
         match self {
             Lang::En => "en",
             Lang::Zh => "zh",
@@ -42,7 +44,7 @@ impl Lang {
     }
 
     /// The language's own name (`English`, `中文`).
-    pub fn own_name(self) -> &'static str {
+    pub(crate) fn own_name(self) -> &'static str {
         match self {
             Lang::En => "English",
             Lang::Zh => "中文",
@@ -51,7 +53,7 @@ impl Lang {
 
     /// The language `LC_ALL`, `LC_MESSAGES` or `LANG` asks for (the first one set, as the
     /// C library reads them): Chinese for `zh…`, else English.
-    pub fn from_env() -> Lang {
+    pub(crate) fn from_env() -> Lang {
         let value = ["LC_ALL", "LC_MESSAGES", "LANG"]
             .into_iter()
             .filter_map(|name| std::env::var(name).ok())
@@ -60,7 +62,7 @@ impl Lang {
     }
 
     /// The language of a POSIX locale name such as `zh_CN.UTF-8` or `en_GB`.
-    pub fn from_locale(locale: &str) -> Lang {
+    pub(crate) fn from_locale(locale: &str) -> Lang {
         if locale.to_ascii_lowercase().starts_with("zh") {
             Lang::Zh
         } else {
@@ -70,23 +72,28 @@ impl Lang {
 
     /// The text of `key` (the key itself when the catalogue lacks it, which a test rules
     /// out for every key the code names).
-    pub fn tr(self, key: &str) -> &'static str {
+    pub(crate) fn tr(self, key: &str) -> &'static str {
         catalogue::lookup(self, key).unwrap_or_else(|| leak_missing(key))
     }
 
     /// The text of `key` for an actuator kind: the catalogue's `key.linear`, `key.rotary`
     /// (a test checks that every such key has each kind's words).
-    pub fn tr_kind(self, key: &str, kind: ActuatorKind) -> &'static str {
+    pub(crate) fn tr_kind(self, key: &str, kind: ActuatorKind) -> &'static str {
         self.tr(&format!("{key}.{}", kind.name()))
     }
 
     /// [`Lang::fmt`] of `key` for an actuator kind, as [`Lang::tr_kind`] finds it.
-    pub fn fmt_kind(self, key: &str, kind: ActuatorKind, args: &[(&str, &dyn Display)]) -> String {
+    pub(crate) fn fmt_kind(
+        self,
+        key: &str,
+        kind: ActuatorKind,
+        args: &[(&str, &dyn Display)],
+    ) -> String {
         self.fmt(&format!("{key}.{}", kind.name()), args)
     }
 
     /// The text of `key` with each `{name}` replaced by its value in `args`.
-    pub fn fmt(self, key: &str, args: &[(&str, &dyn Display)]) -> String {
+    pub(crate) fn fmt(self, key: &str, args: &[(&str, &dyn Display)]) -> String {
         let text = fill(self.tr(key), args);
         match self {
             Lang::Zh => close_han_gaps(&text),
@@ -97,7 +104,7 @@ impl Lang {
 
 /// `text` without the spaces between two Chinese characters (a template such as
 /// `{axis} 通道` spaced for a Latin `x` reads `横滚 通道` with a Chinese word in it).
-pub fn close_han_gaps(text: &str) -> String {
+pub(crate) fn close_han_gaps(text: &str) -> String {
     let han = |c: char| matches!(c, '\u{3400}'..='\u{9fff}' | '\u{f900}'..='\u{faff}');
     let mut out = String::with_capacity(text.len());
     let mut chars = text.chars().peekable();
@@ -114,7 +121,7 @@ pub fn close_han_gaps(text: &str) -> String {
 
 /// The language of a command's drawn words: `asked` (`--lang`), else the environment's.
 /// Chinese without a font for it falls back to English, said once on standard error.
-pub fn for_command(asked: Option<Lang>, command: &str) -> Lang {
+pub(crate) fn for_command(asked: Option<Lang>, command: &str) -> Lang {
     let (lang, note) = fonts::usable_here(asked.unwrap_or_else(Lang::from_env));
     if let Some(note) = note {
         use std::io::Write as _;
@@ -124,12 +131,12 @@ pub fn for_command(asked: Option<Lang>, command: &str) -> Lang {
 }
 
 /// The text of `key` in `lang`, `None` when the catalogue lacks it.
-pub fn catalogue_text(lang: Lang, key: &str) -> Option<&'static str> {
+pub(crate) fn catalogue_text(lang: Lang, key: &str) -> Option<&'static str> {
     catalogue::lookup(lang, key)
 }
 
 /// `template` with `{name}` replaced by the matching value of `args`; unknown names stay.
-pub fn fill(template: &str, args: &[(&str, &dyn Display)]) -> String {
+pub(crate) fn fill(template: &str, args: &[(&str, &dyn Display)]) -> String {
     let mut out = String::with_capacity(template.len() + 16);
     let mut rest = template;
     while let Some(open) = rest.find('{') {

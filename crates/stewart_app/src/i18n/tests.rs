@@ -242,9 +242,16 @@ fn sources() -> Vec<PathBuf> {
         };
         for entry in entries.flatten() {
             let path = entry.path();
+            let name = path
+                .file_name()
+                .and_then(|n| n.to_str())
+                .unwrap_or_default();
             if path.is_dir() {
-                walk(&path, out);
-            } else if path.extension().is_some_and(|e| e == "rs") {
+                // Test modules with files of their own are tests, not the program.
+                if !matches!(name, "tests" | "ui_tests") {
+                    walk(&path, out);
+                }
+            } else if path.extension().is_some_and(|e| e == "rs") && name != "tests.rs" {
                 out.push(path);
             }
         }
@@ -255,13 +262,30 @@ fn sources() -> Vec<PathBuf> {
     out
 }
 
-/// A file's text up to its unit tests.
+/// A file's text without what `#[cfg(test)]` guards: an item on one line (`mod tests;`,
+/// a `use`), or one with a body (an inline `mod tests { … }`, a test-only method) to its
+/// matching brace.
 fn program_text(path: &Path) -> String {
     let text = std::fs::read_to_string(path).unwrap_or_default();
-    match text.find("#[cfg(test)]") {
-        Some(k) => text[..k].to_owned(),
-        None => text,
+    let mut out = String::new();
+    let mut lines = text.lines();
+    while let Some(line) = lines.next() {
+        if line.trim() != "#[cfg(test)]" {
+            out.push_str(line);
+            out.push('\n');
+            continue;
+        }
+        let mut depth = 0i32;
+        let mut opened = false;
+        for guarded in lines.by_ref() {
+            depth += guarded.matches('{').count() as i32 - guarded.matches('}').count() as i32;
+            opened |= guarded.contains('{');
+            if (opened && depth <= 0) || (!opened && guarded.trim_end().ends_with(';')) {
+                break;
+            }
+        }
     }
+    out
 }
 
 /// The string literals of `text` (plain `"…"` ones; raw strings hold SVG, not words).

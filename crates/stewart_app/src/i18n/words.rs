@@ -11,10 +11,10 @@ use stewart_kinematics::{analysis::checks::Finding, analysis::checks::FindingKin
 use super::Lang;
 
 /// The pose's coordinates in file order, as keys of `pose.*`.
-pub const COORDINATES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+pub(crate) const COORDINATES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
 
 /// A pose coordinate's name (`roll` → 横滚); `x`, `y`, `z` stay letters.
-pub fn coordinate(lang: Lang, name: &str) -> &'static str {
+pub(crate) fn coordinate(lang: Lang, name: &str) -> &'static str {
     lang.tr(&format!("pose.{name}"))
 }
 
@@ -54,7 +54,7 @@ fn setting_key(setting: &Setting) -> (String, usize, String) {
 }
 
 /// A setting's label (`base radius`, `底座半径`).
-pub fn setting_label(lang: Lang, setting: &Setting) -> String {
+pub(crate) fn setting_label(lang: Lang, setting: &Setting) -> String {
     let (key, n, axis) = setting_key(setting);
     let axis = if axis.is_empty() {
         String::new()
@@ -66,7 +66,7 @@ pub fn setting_label(lang: Lang, setting: &Setting) -> String {
 
 /// A setting's label with its unit for a platform of `kind`'s actuators, as sliders
 /// show it: `base radius (m)`, `actuator stiffness (N·m/rad)`.
-pub fn setting_label_with_unit(lang: Lang, setting: &Setting, kind: ActuatorKind) -> String {
+pub(crate) fn setting_label_with_unit(lang: Lang, setting: &Setting, kind: ActuatorKind) -> String {
     match setting.unit.symbol_for(kind) {
         "" => setting_label(lang, setting),
         unit => format!("{} ({unit})", setting_label(lang, setting)),
@@ -74,17 +74,17 @@ pub fn setting_label_with_unit(lang: Lang, setting: &Setting, kind: ActuatorKind
 }
 
 /// What the actuators exert: `leg force` / `腿力`, `servo torque` / `舵机力矩`.
-pub fn effort_name(lang: Lang, q: &Quantity) -> &'static str {
+pub(crate) fn effort_name(lang: Lang, q: &Quantity) -> &'static str {
     lang.tr_kind("quantity.effort", q.actuator)
 }
 
 /// What is plotted: `leg length` / `腿长`, `servo angle` / `舵机角`.
-pub fn quantity_name(lang: Lang, q: &Quantity) -> &'static str {
+pub(crate) fn quantity_name(lang: Lang, q: &Quantity) -> &'static str {
     lang.tr_kind("quantity.name", q.actuator)
 }
 
 /// A trajectory kind's name.
-pub fn trajectory_choice(lang: Lang, choice: TrajectoryChoice) -> &'static str {
+pub(crate) fn trajectory_choice(lang: Lang, choice: TrajectoryChoice) -> &'static str {
     lang.tr(match choice {
         TrajectoryChoice::Sinusoid => "trajectory.sinusoid",
         TrajectoryChoice::Circle => "trajectory.circle",
@@ -125,7 +125,7 @@ fn finding_key(kind: FindingKind) -> &'static str {
 }
 
 /// A diagnostics finding in words (the English of `stewart check`).
-pub fn finding(lang: Lang, f: &Finding) -> String {
+pub(crate) fn finding(lang: Lang, f: &Finding) -> String {
     let number = |k: usize| f.legs.get(k).copied().unwrap_or(0);
     let names: Vec<String> = f.legs.iter().map(|l| format!("L{l}")).collect();
     let leg = match names.len() {
@@ -192,7 +192,7 @@ pub fn finding(lang: Lang, f: &Finding) -> String {
 }
 
 /// The architecture verdict in words (the English of `stewart check` and `stewart fk`).
-pub fn architecture(lang: Lang, report: &ArchitectureReport) -> String {
+pub(crate) fn architecture(lang: Lang, report: &ArchitectureReport) -> String {
     if !report.singular {
         return lang.fmt(
             "architecture.sound",
@@ -239,7 +239,7 @@ fn weakest_twist(lang: Lang, report: &ArchitectureReport) -> String {
 
 /// A scenario's description in `lang`: a preset's own (unedited) description is
 /// translated, any other is shown as written.
-pub fn description(lang: Lang, name: &str, description: &str) -> String {
+pub(crate) fn description(lang: Lang, name: &str, description: &str) -> String {
     let key = format!("preset.{name}");
     let english = super::catalogue_text(Lang::En, &key);
     match (english, super::catalogue_text(lang, &key)) {

@@ -11,7 +11,7 @@ use super::moving_sample;
 
 /// What drives the platform, as the sender sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Drive {
+pub(crate) enum Drive {
     /// The trajectory playing: at `anchor` it was at playback time `time`, moving at `speed`.
     Playing {
         /// Playback time at the anchor, seconds.
@@ -28,7 +28,7 @@ pub enum Drive {
 /// What a stream that follows the viewer samples: the platform and its motion, and what
 /// drives it now — shared between the viewer (which says what drives it, every frame) and
 /// the sender's thread (which samples it at each tick).
-pub struct Followed {
+pub(crate) struct Followed {
     geometry: Geometry,
     trajectory: Trajectory,
     start: f64,
@@ -61,7 +61,7 @@ impl Followed {
 
     /// The target now: a still pose's values, or the playing trajectory's with their
     /// velocity and acceleration on the wall clock (at rest past either end).
-    pub fn sample(&self) -> Result<Sample, TargetError> {
+    pub(crate) fn sample(&self) -> Result<Sample, TargetError> {
         match self.drive {
             Drive::Still(pose) => self
                 .geometry

@@ -18,7 +18,7 @@ use stewart_link::transport::{Serial, Transport, Udp, max_rate_hz};
 const SERIAL_WRITE_TIMEOUT: std::time::Duration = std::time::Duration::from_millis(200);
 
 /// The actuator values at the home pose.
-pub fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
+pub(crate) fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
     let g = &scenario.geometry;
     g.actuator_values_at(&g.home_pose())
         .map_err(|why| anyhow!("the home pose of `{}`: {why}", scenario.name))
@@ -26,7 +26,7 @@ pub fn home_values(scenario: &Scenario) -> Result<[f64; 6]> {
 
 /// The channel map of `[link]`: leg lengths in µm or servo angles in 0.01° (`native`), or
 /// servo pulses (`pulse`, servos only).
-pub fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
+pub(crate) fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
     let link = &scenario.link;
     let output = match (link.output, scenario.geometry.actuator().kind()) {
         (LinkOutput::Native, ActuatorKind::Linear) => Output::LegMicrometre,
@@ -51,7 +51,7 @@ pub fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
 }
 
 /// The wire format of `[link]`.
-pub fn format(link: &LinkSettings) -> Format {
+pub(crate) fn format(link: &LinkSettings) -> Format {
     match link.format {
         LinkFormat::Binary => Format::Binary,
         LinkFormat::Text => Format::Text,
@@ -62,7 +62,7 @@ pub fn format(link: &LinkSettings) -> Format {
 /// range of any length or angle when none is set), the leg or servo rate limits, the ramp
 /// of `[link]`, and a stop that holds or returns home at a tenth of the speed limit (or
 /// 5 % of the range per second when no limit is set).
-pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
+pub(crate) fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
     let g = &scenario.geometry;
     let l = &scenario.limits;
     let [lo, hi] = g.quantity_limits();
@@ -90,7 +90,7 @@ pub fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
 
 /// Open the serial port or UDP peer `[link]` names (a `file` transport is the caller's:
 /// the command line records into a file, the viewer into its panel).
-pub fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
+pub(crate) fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
     match link.transport {
         LinkTransport::Udp => {
             let address = link.address.as_deref().ok_or_else(|| {

@@ -20,7 +20,7 @@ use crate::live_cue::LiveCue;
 mod follow;
 mod hardware;
 
-pub use follow::{Drive, Followed};
+pub(crate) use follow::{Drive, Followed};
 
 /// The step of the central differences that give the target's velocity and acceleration,
 /// seconds (their error is ~h⁴ of the motion's fifth and sixth derivatives, their rounding
@@ -31,19 +31,19 @@ const DIFFERENCE_STEP_S: f64 = 1e-3;
 #[derive(Clone, Debug)]
 pub struct LinkPlan {
     /// The scenario's `[link]` table (with any command-line overrides).
-    pub settings: LinkSettings,
+    pub(crate) settings: LinkSettings,
     /// The actuator values at the home pose: where arming starts and the way home ends.
-    pub home: [f64; 6],
+    pub(crate) home: [f64; 6],
     /// Values to wire.
-    pub map: ChannelMap,
+    pub(crate) map: ChannelMap,
     /// The safety state machine for the scenario's limits (disarmed, at home).
-    pub supervisor: Supervisor,
+    pub(crate) supervisor: Supervisor,
     /// The platform, for the target's actuator values.
-    pub geometry: Geometry,
+    pub(crate) geometry: Geometry,
     /// The motion streamed.
-    pub trajectory: Trajectory,
+    pub(crate) trajectory: Trajectory,
     /// The motion's first sample time and length, seconds.
-    pub span: (f64, f64),
+    pub(crate) span: (f64, f64),
 }
 
 impl LinkPlan {
@@ -81,7 +81,7 @@ impl LinkPlan {
 
     /// Where a platform whose actuators stand at `values` is, in words: its pose (forward
     /// kinematics from home, or why there is none) and the values themselves.
-    pub fn left_at(&self, values: &[f64; 6]) -> (String, String) {
+    pub(crate) fn left_at(&self, values: &[f64; 6]) -> (String, String) {
         let q = self.geometry.quantity();
         let (letter, digits) = (q.letter, q.decimals);
         let unit = if q.unit == "m" { " m" } else { q.unit };
@@ -107,14 +107,14 @@ impl LinkPlan {
     }
 
     /// Open the serial port or UDP peer the settings name.
-    pub fn open_device(&self) -> Result<Box<dyn Transport>> {
+    pub(crate) fn open_device(&self) -> Result<Box<dyn Transport>> {
         hardware::open_device(&self.settings)
     }
 
     /// The motion as a target of stream time (from the motion's first sample; wrapping
     /// with `repeat`, else at rest at its last pose), with the actuators' velocity and
     /// acceleration.
-    pub fn trajectory_target(&self, repeat: bool) -> Target {
+    pub(crate) fn trajectory_target(&self, repeat: bool) -> Target {
         let geometry = self.geometry.clone();
         let trajectory = self.trajectory.clone();
         let (start, duration) = self.span;
@@ -144,7 +144,7 @@ impl LinkPlan {
 
     /// What a stream that follows the viewer samples, starting with `drive` (the viewer
     /// changes it as playback goes on).
-    pub fn followed(&self, looping: bool, drive: Drive) -> Arc<Mutex<Followed>> {
+    pub(crate) fn followed(&self, looping: bool, drive: Drive) -> Arc<Mutex<Followed>> {
         Arc::new(Mutex::new(Followed::new(
             self.geometry.clone(),
             self.trajectory.clone(),
@@ -156,7 +156,7 @@ impl LinkPlan {
 
     /// The target of a stream that follows the viewer: whatever `followed` holds at each
     /// tick.
-    pub fn followed_target(followed: Arc<Mutex<Followed>>) -> Target {
+    pub(crate) fn followed_target(followed: Arc<Mutex<Followed>>) -> Target {
         Box::new(move |_t| {
             followed
                 .lock()
@@ -167,7 +167,7 @@ impl LinkPlan {
 
     /// The actuator values the trajectory target asks for at stream time `t` (`None`
     /// where the motion is out of reach), without their derivatives.
-    pub fn values_at(&self, t: f64, repeat: bool) -> Option<[f64; 6]> {
+    pub(crate) fn values_at(&self, t: f64, repeat: bool) -> Option<[f64; 6]> {
         let (start, duration) = self.span;
         let local = motion_time(t, duration, repeat).unwrap_or(duration);
         self.geometry
@@ -179,7 +179,7 @@ impl LinkPlan {
     /// included): the ramp asked when the limits allow it, else the shortest that they
     /// do (`None` when the motion's start is out of reach). See
     /// [`stewart_link::safety::planned_ramp`].
-    pub fn planned_first_ramp(&self, repeat: bool) -> Option<f64> {
+    pub(crate) fn planned_first_ramp(&self, repeat: bool) -> Option<f64> {
         stewart_link::safety::planned_ramp(
             self.supervisor.limits(),
             &self.home,
@@ -207,7 +207,7 @@ fn motion_time(t: f64, duration: f64, repeat: bool) -> Option<f64> {
 /// stream when `pose_at`'s clock runs `speed` times as fast: five-point central
 /// differences. Where a neighbouring pose has no values (the motion leaves the workspace
 /// there), the values alone.
-pub fn moving_sample(
+pub(crate) fn moving_sample(
     geometry: &Geometry,
     pose_at: impl Fn(f64) -> Pose,
     time: f64,

@@ -20,7 +20,7 @@ use special::SpecialFile;
 
 /// What stands at an output path once symbolic links are followed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
+pub(crate) enum Kind {
     /// Nothing yet, or a regular file: staged and renamed into place.
     File,
     /// A folder.
@@ -31,7 +31,7 @@ pub enum Kind {
 
 /// An output path, checked before any work is done.
 #[derive(Clone, Debug)]
-pub struct Destination {
+pub(crate) struct Destination {
     /// The path as the user gave it (for messages).
     shown: PathBuf,
     /// The path with symbolic links followed: where bytes really go.
@@ -90,7 +90,7 @@ fn same_file(a: &Metadata, b: &Path) -> bool {
 }
 
 /// The folder a path lies in (`.` for a bare file name).
-pub fn parent_of(path: &Path) -> &Path {
+pub(crate) fn parent_of(path: &Path) -> &Path {
     match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
@@ -101,7 +101,7 @@ impl Destination {
     /// Check `path` as an output of a command whose inputs are `inputs` (each with the
     /// words that name it, such as `("the scenario", path)`): the output may not be one
     /// of them. Standard input (`-`) is never a file.
-    pub fn new(path: &Path, inputs: &[(&str, &Path)]) -> Result<Self> {
+    pub(crate) fn new(path: &Path, inputs: &[(&str, &Path)]) -> Result<Self> {
         let real = resolve_links(path)?;
         let meta = std::fs::metadata(&real).ok();
         if let Some(meta) = &meta {
@@ -123,23 +123,23 @@ impl Destination {
     }
 
     /// The path as the user gave it.
-    pub fn shown(&self) -> &Path {
+    pub(crate) fn shown(&self) -> &Path {
         &self.shown
     }
 
     /// The path written to, symbolic links followed.
-    pub fn real(&self) -> &Path {
+    pub(crate) fn real(&self) -> &Path {
         &self.real
     }
 
     /// What stands at the path now.
-    pub fn kind(&self) -> Kind {
+    pub(crate) fn kind(&self) -> Kind {
         self.kind
     }
 
     /// The folder where staged files go: beside the output, so that the final rename
     /// stays on one file system; the system's temporary folder for a device or FIFO.
-    pub fn staging_dir(&self) -> PathBuf {
+    pub(crate) fn staging_dir(&self) -> PathBuf {
         match self.kind {
             Kind::Special => std::env::temp_dir(),
             Kind::File | Kind::Folder => parent_of(&self.real).to_path_buf(),
@@ -148,7 +148,7 @@ impl Destination {
 
     /// A new temporary file in [`Destination::staging_dir`] (removed when dropped), for
     /// output that is moved into place by [`Destination::deliver`] when complete.
-    pub fn staged_file(&self, suffix: &str) -> Result<tempfile::NamedTempFile> {
+    pub(crate) fn staged_file(&self, suffix: &str) -> Result<tempfile::NamedTempFile> {
         let dir = self.staging_dir();
         tempfile::Builder::new()
             .prefix(".stewart-")
@@ -164,7 +164,7 @@ impl Destination {
     }
 
     /// Refuse a folder where a file is wanted.
-    pub fn require_file(&self) -> Result<&Self> {
+    pub(crate) fn require_file(&self) -> Result<&Self> {
         if self.kind == Kind::Folder {
             bail!(
                 "cannot write `{}`: it is a folder; give a file name",
@@ -176,7 +176,7 @@ impl Destination {
 
     /// Write what `fill` produces: staged and renamed for a regular file, directly for a
     /// device or FIFO. On any error nothing is left at a regular path.
-    pub fn write_with(
+    pub(crate) fn write_with(
         &self,
         fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
     ) -> Result<()> {
@@ -205,14 +205,14 @@ impl Destination {
     }
 
     /// Write `bytes` (see [`Destination::write_with`]).
-    pub fn write_bytes(&self, bytes: &[u8]) -> Result<()> {
+    pub(crate) fn write_bytes(&self, bytes: &[u8]) -> Result<()> {
         self.write_with(|w| w.write_all(bytes))
     }
 
     /// Move a finished staged file into place: renamed over a regular path (keeping an
     /// existing file's permissions), copied into a device or FIFO. The staged file is
     /// gone afterwards, whatever happens.
-    pub fn deliver(&self, staged: tempfile::TempPath) -> Result<()> {
+    pub(crate) fn deliver(&self, staged: tempfile::TempPath) -> Result<()> {
         let shown = self.shown.display();
         match self.kind {
             Kind::Special => {
@@ -263,12 +263,12 @@ impl<W: Write> Write for StopOnSignal<W> {
 
 /// Write `bytes` to `path` whole or not at all (see [`Destination`]); the path may not
 /// be an input (the caller checks that with [`Destination::new`] where there are inputs).
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
+pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
     Destination::new(path, &[])?.write_bytes(bytes)
 }
 
 /// Give a staged file or folder the usual permissions (temporary files are private).
-pub fn readable_by_all(path: &Path) {
+pub(crate) fn readable_by_all(path: &Path) {
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
@@ -279,7 +279,7 @@ pub fn readable_by_all(path: &Path) {
 }
 
 /// A path's extension in lower case (`None` without one): how outputs choose their format.
-pub fn extension(path: &Path) -> Option<String> {
+pub(crate) fn extension(path: &Path) -> Option<String> {
     path.extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase)
@@ -287,12 +287,12 @@ pub fn extension(path: &Path) -> Option<String> {
 
 /// Write `bytes` to standard output. A closed pipe (`stewart solve | head`) is the
 /// reader's choice and ends the writing quietly; any other failure (a full disk) is an error.
-pub fn stdout(bytes: &[u8]) -> Result<()> {
+pub(crate) fn stdout(bytes: &[u8]) -> Result<()> {
     stdout_with(|w| w.write_all(bytes))
 }
 
 /// Write what `fill` produces to standard output (see [`stdout`]).
-pub fn stdout_with(fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
+pub(crate) fn stdout_with(fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
     let out = std::io::stdout().lock();
     let mut w = BufWriter::with_capacity(1 << 16, out);
     match fill(&mut w).and_then(|()| w.flush()) {
@@ -302,7 +302,7 @@ pub fn stdout_with(fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> 
 }
 
 /// Write to `out` when given (checked already), else to standard output.
-pub fn emit_with(
+pub(crate) fn emit_with(
     out: Option<&Destination>,
     fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<()> {
@@ -313,7 +313,10 @@ pub fn emit_with(
 }
 
 /// Check an optional `--out` path against the command's inputs.
-pub fn destination(path: Option<&Path>, inputs: &[(&str, &Path)]) -> Result<Option<Destination>> {
+pub(crate) fn destination(
+    path: Option<&Path>,
+    inputs: &[(&str, &Path)],
+) -> Result<Option<Destination>> {
     path.map(|p| Destination::new(p, inputs)).transpose()
 }
 

@@ -23,12 +23,12 @@ fn stopped() -> std::io::Error {
 }
 
 /// A device or FIFO opened for writing.
-pub struct SpecialFile(File);
+pub(crate) struct SpecialFile(File);
 
 impl SpecialFile {
     /// Open `path` for writing, waiting for a FIFO's reader until one comes or a stop is
     /// requested.
-    pub fn open(path: &Path) -> std::io::Result<Self> {
+    pub(crate) fn open(path: &Path) -> std::io::Result<Self> {
         loop {
             match std::fs::OpenOptions::new()
                 .write(true)

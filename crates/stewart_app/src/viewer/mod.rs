@@ -11,9 +11,12 @@
 //! - [`panels`]: one egui function per panel, each given the parts it edits.
 
 pub mod panels;
-pub mod state;
-pub mod tools;
-pub mod window;
+pub(crate) mod state;
+pub(crate) mod tools;
+pub(crate) mod window;
+
+#[cfg(test)]
+mod ui_tests;
 
 pub use state::ViewerState;
-pub use window::{ViewOptions, run};
+pub(crate) use window::{ViewOptions, run};

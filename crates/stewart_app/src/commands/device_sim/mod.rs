@@ -23,7 +23,7 @@ use stewart_link::{Decoder, Frame, FrameKind, Unit};
 use crate::cli::{DeviceSimArgs, WireUnit};
 use crate::output;
 
-pub mod model;
+pub(crate) mod model;
 
 use model::{ActuatorModel, Actuators};
 
@@ -41,7 +41,7 @@ struct Tally {
 }
 
 /// Run the command.
-pub fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     if let (Some(min), Some(max)) = (args.min, args.max)
         && min > max
     {

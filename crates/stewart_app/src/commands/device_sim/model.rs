@@ -8,18 +8,18 @@
 
 /// The model's options.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ActuatorModel {
+pub(crate) struct ActuatorModel {
     /// First-order time constant, seconds (0: follows at once).
-    pub lag_s: f64,
+    pub(crate) lag_s: f64,
     /// Largest speed, wire units per second (`None`: unlimited).
-    pub speed_max: Option<f64>,
+    pub(crate) speed_max: Option<f64>,
     /// No motion while the set-point is this close, wire units (0: none).
-    pub dead_band: f64,
+    pub(crate) dead_band: f64,
 }
 
 /// Six actuators following their set-points.
 #[derive(Clone, Debug)]
-pub struct Actuators {
+pub(crate) struct Actuators {
     model: ActuatorModel,
     /// Position, set-point held and the time of the last update; `None` before any frame.
     state: Option<([f64; 6], [f64; 6], f64)>,
@@ -27,7 +27,7 @@ pub struct Actuators {
 
 impl Actuators {
     /// Actuators that have received nothing yet.
-    pub fn new(model: ActuatorModel) -> Self {
+    pub(crate) fn new(model: ActuatorModel) -> Self {
         Self { model, state: None }
     }
 
@@ -35,7 +35,7 @@ impl Actuators {
     /// set-point until `t`, then take `values` as their new one when `armed` (else hold
     /// where they are). Returns the positions at `t` (what the controller measures), rounded
     /// to the wire's whole numbers. The first frame puts the actuators at its values.
-    pub fn frame(&mut self, t: f64, values: &[i32; 6], armed: bool) -> [i32; 6] {
+    pub(crate) fn frame(&mut self, t: f64, values: &[i32; 6], armed: bool) -> [i32; 6] {
         let wanted = values.map(f64::from);
         let (mut x, held, since) = self.state.unwrap_or((wanted, wanted, t));
         let dt = (t - since).max(0.0);

@@ -20,7 +20,7 @@ use crate::{output, source};
 mod record;
 
 /// Run the command.
-pub fn run(args: &LinkArgs) -> Result<ExitCode> {
+pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     if args.list_ports {
         return print_ports();
     }

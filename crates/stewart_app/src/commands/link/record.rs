@@ -16,7 +16,7 @@ use stewart_link::telemetry::Row;
 use crate::output::Destination;
 
 /// A recorder running on its thread.
-pub struct Recorder {
+pub(crate) struct Recorder {
     destination: Destination,
     writer: JoinHandle<std::io::Result<(tempfile::TempPath, u64)>>,
 }
@@ -24,7 +24,7 @@ pub struct Recorder {
 impl Recorder {
     /// Start recording into `destination` (a file); rows come through the returned sender.
     /// `unit` names the natural unit in the header (`m` or `deg`).
-    pub fn start(destination: Destination, unit: &str) -> Result<(mpsc::Sender<Row>, Self)> {
+    pub(crate) fn start(destination: Destination, unit: &str) -> Result<(mpsc::Sender<Row>, Self)> {
         destination.require_file()?;
         let (file, path) = destination.staged_file(".partial")?.into_parts();
         let (rows, inbox) = mpsc::channel::<Row>();
@@ -54,7 +54,7 @@ impl Recorder {
 
     /// Wait for the last row (the sender has ended) and put the record in place. Returns
     /// how many rows it holds.
-    pub fn finish(self) -> Result<u64> {
+    pub(crate) fn finish(self) -> Result<u64> {
         let name = self.destination.shown().display().to_string();
         let (path, count) = self
             .writer

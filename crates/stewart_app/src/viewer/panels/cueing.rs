@@ -22,7 +22,7 @@ const PLOT_HEIGHT: f32 = 200.0;
 /// The panel; `now` is the scenario time shown (the plots' marker); `live`, the link's
 /// live vehicle input while it streams one. Returns whether the user asked to open a
 /// vehicle motion recording (the file dialog is the window's).
-pub fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) -> bool {
+pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) -> bool {
     let t = ed.lang;
     let mut open = false;
     egui::CollapsingHeader::new(t.tr("cueing.heading"))

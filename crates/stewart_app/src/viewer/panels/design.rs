@@ -11,7 +11,13 @@ use crate::viewer::tools::design::DesignTool;
 
 /// The panel: the tool and the document it writes limits into, nothing else of the
 /// viewer's state.
-pub fn show(ui: &mut egui::Ui, tool: &mut DesignTool, doc: &mut Document, t: Lang, open: bool) {
+pub(crate) fn show(
+    ui: &mut egui::Ui,
+    tool: &mut DesignTool,
+    doc: &mut Document,
+    t: Lang,
+    open: bool,
+) {
     egui::CollapsingHeader::new(t.tr("design.heading"))
         .default_open(open)
         .show(ui, |ui| {

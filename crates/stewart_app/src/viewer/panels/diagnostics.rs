@@ -51,7 +51,7 @@ fn singular_note(ui: &mut egui::Ui, ed: &mut Editor, explanation: String) {
 
 /// The panel. Returns the time (seconds from the trajectory's start) of the finding
 /// clicked, to be shown paused.
-pub fn show(ui: &mut egui::Ui, ed: &mut Editor) -> Option<f64> {
+pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) -> Option<f64> {
     let t = ed.lang;
     ui.heading(t.tr("diagnostics.heading"));
     let singular = ed

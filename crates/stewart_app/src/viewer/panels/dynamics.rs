@@ -28,7 +28,7 @@ fn proportionate_payload(scenario: &Scenario) -> Option<Payload> {
 }
 
 /// The panel, at `pose` (the pose shown), with the mode viewer's settings.
-pub fn show(ui: &mut egui::Ui, ed: &mut Editor, pose: &Pose, view: &mut ModeView) {
+pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, pose: &Pose, view: &mut ModeView) {
     let t = ed.lang;
     egui::CollapsingHeader::new(t.tr("dynamics.heading"))
         .default_open(ed.expand)

@@ -72,22 +72,22 @@ pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
 
 /// What the export window edits and shows: the form, job and status, with the scenario's
 /// name and length, and what a video export would write (planned for the path typed).
-pub struct ExportParts<'a> {
+pub(crate) struct ExportParts<'a> {
     /// The form, the running job, the status, the file last written.
-    pub exports: &'a mut Exports,
+    pub(crate) exports: &'a mut Exports,
     /// The scenario's name (the default file name and title).
-    pub name: &'a str,
+    pub(crate) name: &'a str,
     /// The motion's length, seconds.
-    pub duration: f64,
+    pub(crate) duration: f64,
     /// A video export's plan and frame count for the form as it stands.
-    pub plan: Option<(FramePlan, usize)>,
+    pub(crate) plan: Option<(FramePlan, usize)>,
     /// The interface's language.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
 }
 
 /// What the export window asks of the viewer.
 #[derive(Clone, Debug, PartialEq)]
-pub enum ExportAction {
+pub(crate) enum ExportAction {
     /// Choose the output in the file dialog.
     Browse,
     /// Export to this path (asking first when it would replace a file).
@@ -95,7 +95,7 @@ pub enum ExportAction {
 }
 
 /// The export window, while it is open. Returns what it asks of the viewer.
-pub fn window(ctx: &egui::Context, mut parts: ExportParts) -> Option<ExportAction> {
+pub(crate) fn window(ctx: &egui::Context, mut parts: ExportParts) -> Option<ExportAction> {
     if !parts.exports.open {
         return None;
     }

@@ -9,7 +9,7 @@ use crate::viewer::state::files::{Files, Purpose, WriteAction};
 
 /// What the file dialogs ask of the viewer, in order.
 #[derive(Clone, Debug, PartialEq)]
-pub enum FileAction {
+pub(crate) enum FileAction {
     /// Open what this path is (a scenario or a pose table).
     Open(PathBuf),
     /// Save the scenario here, asking before replacing another file.
@@ -24,7 +24,7 @@ pub enum FileAction {
 
 /// Everything about files that floats over the window: the dialog, the question before a
 /// file is replaced, files dropped. Returns what they ask of the viewer.
-pub fn show(ctx: &egui::Context, files: &mut Files, t: Lang) -> Vec<FileAction> {
+pub(crate) fn show(ctx: &egui::Context, files: &mut Files, t: Lang) -> Vec<FileAction> {
     let mut asked = Vec::new();
     asked.extend(picker(ctx, files));
     asked.extend(confirm(ctx, files, t));

@@ -11,7 +11,7 @@ use super::widgets::{edit_error, setting_slider};
 use crate::viewer::state::editor::Editor;
 
 /// The panel.
-pub fn show(ui: &mut egui::Ui, ed: &mut Editor) {
+pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) {
     let t = ed.lang;
     egui::CollapsingHeader::new(t.tr("geometry.heading"))
         .default_open(ed.expand)

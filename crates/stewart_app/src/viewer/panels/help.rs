@@ -30,7 +30,7 @@ const ROWS: [(&str, &str); 21] = [
 ];
 
 /// The window, while `open`; its close button closes it.
-pub fn show(ctx: &egui::Context, t: Lang, open: &mut bool) {
+pub(crate) fn show(ctx: &egui::Context, t: Lang, open: &mut bool) {
     egui::Window::new(t.tr("help.title"))
         .open(open)
         .collapsible(false)

@@ -12,7 +12,7 @@ use stewart_kinematics::{Pose, Scenario};
 use crate::viewer::state::look::Look;
 
 /// The panel: the actuators of `scenario` at `pose`.
-pub fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
+pub(crate) fn show(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, look: &Look) {
     let geometry = &scenario.geometry;
     let kind = geometry.actuator().kind();
     let t = look.lang;

@@ -18,7 +18,7 @@ use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
 
 /// The colour of each state: grey, amber, green, red.
-pub fn state_colour(state: LinkState) -> Color32 {
+pub(crate) fn state_colour(state: LinkState) -> Color32 {
     match state {
         LinkState::Disarmed => Color32::from_rgb(120, 120, 120),
         LinkState::Arming => Color32::from_rgb(230, 160, 20),
@@ -28,7 +28,7 @@ pub fn state_colour(state: LinkState) -> Color32 {
 }
 
 /// The state in words.
-pub fn state_words(lang: Lang, state: LinkState) -> &'static str {
+pub(crate) fn state_words(lang: Lang, state: LinkState) -> &'static str {
     lang.tr(match state {
         LinkState::Disarmed => "link.disarmed",
         LinkState::Arming => "link.arming",
@@ -39,7 +39,7 @@ pub fn state_words(lang: Lang, state: LinkState) -> &'static str {
 
 /// The width of the widest state's words in `lang` at `size` points, strong: a display of
 /// the state sized for it never reflows as the state changes.
-pub fn longest_state_width(ui: &egui::Ui, lang: Lang, size: f32) -> f32 {
+pub(crate) fn longest_state_width(ui: &egui::Ui, lang: Lang, size: f32) -> f32 {
     let font = egui::FontId::proportional(size);
     [
         LinkState::Disarmed,
@@ -69,7 +69,7 @@ pub fn longest_state_width(ui: &egui::Ui, lang: Lang, size: f32) -> f32 {
 /// connected. `link_error`: why the last connection failed; `open`: whether it starts
 /// open. Returns whether *Connect* was pressed (the caller connects: that takes the
 /// playback too).
-pub fn show(
+pub(crate) fn show(
     ui: &mut egui::Ui,
     link: &mut LiveLink,
     doc: &mut Document,

@@ -31,7 +31,7 @@ use crate::viewer::state::playback::MotionMode;
 use crate::viewer::state::teleop;
 
 /// The smallest text the viewer draws, points (body text is 12.5).
-pub const SMALLEST_TEXT: f32 = 11.0;
+pub(crate) const SMALLEST_TEXT: f32 = 11.0;
 
 /// The plot's lowest height, points.
 const MIN_PLOT: f32 = 80.0;
@@ -44,7 +44,7 @@ const MIN_SIDE: f32 = 260.0;
 const MAX_SIDE: f32 = 480.0;
 
 /// Text sizes are multiplied by this in presentation mode.
-pub const PRESENTATION_TEXT_SCALE: f32 = 1.5;
+pub(crate) const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
 /// The 3D view: its toolbar's requests done, the camera framed for the view's shape, then
 /// the scene drawn.

@@ -33,29 +33,29 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
 /// What the Motion panel edits and reads: the document and playback (the trajectory's
 /// settings, the mode, the manual pose), teleoperation's rates and edge, the reach cache of
 /// the manual sliders, and the assembly mode shown.
-pub struct MotionParts<'a> {
+pub(crate) struct MotionParts<'a> {
     /// The scenario being edited.
-    pub doc: &'a mut Document,
+    pub(crate) doc: &'a mut Document,
     /// The mode and the manual pose.
-    pub playback: &'a mut Playback,
+    pub(crate) playback: &'a mut Playback,
     /// The keyboard and gamepad rates, and where a move stopped.
-    pub teleop: &'a mut Teleop,
+    pub(crate) teleop: &'a mut Teleop,
     /// The reachable part of each manual slider.
-    pub reach: &'a mut ReachCache,
+    pub(crate) reach: &'a mut ReachCache,
     /// The assembly mode shown (its index and the number of modes), if any.
-    pub assembly_shown: Option<(usize, usize)>,
+    pub(crate) assembly_shown: Option<(usize, usize)>,
     /// Why the last *next assembly mode* found none.
-    pub assembly_error: Option<&'a NoMode>,
+    pub(crate) assembly_error: Option<&'a NoMode>,
     /// The pose shown.
-    pub pose: Pose,
+    pub(crate) pose: Pose,
     /// The interface's language.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Whether collapsible parts start open.
-    pub expand: bool,
+    pub(crate) expand: bool,
 }
 
 /// The panel. Returns whether *Next assembly mode* was pressed (the caller finds it).
-pub fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
+pub(crate) fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
     let t = parts.lang;
     ui.heading(t.tr("motion.heading"));
     ui.horizontal(|ui| {

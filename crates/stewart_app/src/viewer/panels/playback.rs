@@ -22,7 +22,7 @@ pub(super) fn play_button(ui: &mut egui::Ui, playback: &mut Playback, t: Lang) {
 }
 
 /// The panel: playback alone, stepping through `sampling`'s samples.
-pub fn show(ui: &mut egui::Ui, playback: &mut Playback, sampling: &Sampling, t: Lang) {
+pub(crate) fn show(ui: &mut egui::Ui, playback: &mut Playback, sampling: &Sampling, t: Lang) {
     let duration = sampling.duration();
     ui.heading(t.tr("playback.heading"));
     ui.horizontal(|ui| {

@@ -13,17 +13,17 @@ use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::Playback;
 
 /// Leg `i`'s colour, as in exported plots.
-pub fn leg_colour(i: usize) -> Color32 {
+pub(crate) fn leg_colour(i: usize) -> Color32 {
     let [r, g, b] = stewart_render::theme::SERIES_RGB[i % 6];
     Color32::from_rgb(r, g, b)
 }
 
 /// The mark over the stretches of a curve beyond a limit.
-pub const BEYOND: Color32 = Color32::from_rgb(215, 25, 28);
+pub(crate) const BEYOND: Color32 = Color32::from_rgb(215, 25, 28);
 
 /// The stretches of `points` (time, value) beyond `[min, max]`, each with the crossing
 /// points interpolated on the limit so that the mark starts where the curve crosses it.
-pub fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
+pub(crate) fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]>> {
     let [min, max] = limits;
     let outside = |v: f64| min.is_some_and(|m| v < m) || max.is_some_and(|m| v > m);
     // The limit crossed between two values (the one the outside value is past).
@@ -68,15 +68,15 @@ pub fn beyond(limits: [Option<f64>; 2], points: &[[f64; 2]]) -> Vec<Vec<[f64; 2]
 
 /// What the plot shows besides the scenario.
 #[derive(Clone, Copy, Debug)]
-pub struct Shows {
+pub(crate) struct Shows {
     /// The rolling history of the values shown (manual mode, live vehicle motion through
     /// the link) instead of the trajectory's.
-    pub rolling: bool,
+    pub(crate) rolling: bool,
     /// Those values are the link's commanded ones.
-    pub commanded: bool,
+    pub(crate) commanded: bool,
     /// The plot's own darker background (left out on a software rasteriser, where a fill
     /// that large costs milliseconds a frame: the curves then lie on the panel's colour).
-    pub background: bool,
+    pub(crate) background: bool,
 }
 
 /// Curve width in points (presentation mode: the projector's, twice as wide).
@@ -88,7 +88,7 @@ fn line_width(look: &Look) -> f32 {
 /// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
 /// resets the view).
 ///
-pub fn show(
+pub(crate) fn show(
     ui: &mut egui::Ui,
     doc: &Document,
     playback: &mut Playback,

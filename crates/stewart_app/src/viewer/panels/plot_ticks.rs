@@ -6,18 +6,18 @@
 use egui_plot::{GridInput, GridMark};
 
 /// At least this many labelled ticks in view.
-pub const MIN_LABELLED: usize = 3;
+pub(crate) const MIN_LABELLED: usize = 3;
 
 /// The labelled step for values `lo..hi`: the largest 1-2-5 step with at least
 /// [`MIN_LABELLED`] multiples in the range (`None` for an empty or non-finite range); the
 /// rule is the renderer's ([`stewart_render::ticks`]).
-pub fn major_step(lo: f64, hi: f64) -> Option<f64> {
+pub(crate) fn major_step(lo: f64, hi: f64) -> Option<f64> {
     stewart_render::ticks::largest_step_with(lo, hi, MIN_LABELLED)
 }
 
 /// The marks for egui_plot: the labelled ticks, and unlabelled grid lines between them
 /// (a fifth of the step, or a half when the step is 2 × 10ᵏ).
-pub fn marks(input: GridInput) -> Vec<GridMark> {
+pub(crate) fn marks(input: GridInput) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
     let Some(major) = major_step(lo, hi) else {
         return Vec::new();
@@ -49,7 +49,7 @@ pub fn marks(input: GridInput) -> Vec<GridMark> {
 }
 
 /// A tick's label: as many decimals as its step needs (0.5 → one, 0.02 → two).
-pub fn label(mark: GridMark) -> String {
+pub(crate) fn label(mark: GridMark) -> String {
     let decimals = (-mark.step_size.log10().floor()).max(0.0) as usize;
     let text = format!("{:.*}", decimals, mark.value);
     // No "-0.0".

@@ -12,7 +12,7 @@ use crate::viewer::tools::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG, OrientationReach
 
 /// The panel in language `t`, at `pose`, open at first when `open`; `reach` is asked only
 /// while the panel is open.
-pub fn show(
+pub(crate) fn show(
     ui: &mut egui::Ui,
     t: Lang,
     open: bool,

@@ -16,7 +16,7 @@ use crate::viewer::state::look::Look;
 /// (loading a scenario resets playback, the workspace, the link's plan…), so the caller
 /// does it.
 #[derive(Clone, Debug)]
-pub enum ScenarioAction {
+pub(crate) enum ScenarioAction {
     /// Undo the last edit.
     Undo,
     /// Redo the last undone edit.
@@ -38,19 +38,19 @@ pub enum ScenarioAction {
 }
 
 /// The parts the Scenario panel edits or shows.
-pub struct ScenarioParts<'a> {
+pub(crate) struct ScenarioParts<'a> {
     /// The scenario and its undo history (read).
-    pub doc: &'a Document,
+    pub(crate) doc: &'a Document,
     /// The path typed, the status, the folder's files, the recent files.
-    pub files: &'a mut Files,
+    pub(crate) files: &'a mut Files,
     /// Theme, presentation mode, language.
-    pub look: &'a mut Look,
+    pub(crate) look: &'a mut Look,
     /// Whether a session is kept, and its note.
-    pub session: &'a SessionState,
+    pub(crate) session: &'a SessionState,
 }
 
 /// The panel. Returns what it asks of the viewer, if anything.
-pub fn show(ui: &mut egui::Ui, parts: ScenarioParts) -> Option<ScenarioAction> {
+pub(crate) fn show(ui: &mut egui::Ui, parts: ScenarioParts) -> Option<ScenarioAction> {
     let t = parts.look.lang;
     let mut action = heading(ui, parts.doc, t);
     let scenario = parts.doc.scenario();

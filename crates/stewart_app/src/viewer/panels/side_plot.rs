@@ -7,7 +7,7 @@ use egui_plot::Plot;
 
 /// A side-panel plot `height` points high with the live plot's value-axis ticks, the wheel
 /// left to the panel and drags to the panel's scrolling.
-pub fn plot(id: &str, height: f32) -> Plot<'static> {
+pub(crate) fn plot(id: &str, height: f32) -> Plot<'static> {
     Plot::new(id)
         .height(height)
         .allow_scroll(false)
@@ -19,20 +19,20 @@ pub fn plot(id: &str, height: f32) -> Plot<'static> {
 }
 
 /// One entry of a legend: colour, words, dashed or solid, line width.
-pub struct Entry<'a> {
+pub(crate) struct Entry<'a> {
     /// The line's colour.
-    pub colour: Color32,
+    pub(crate) colour: Color32,
     /// What it is.
-    pub words: &'a str,
+    pub(crate) words: &'a str,
     /// Dashed (else solid).
-    pub dashed: bool,
+    pub(crate) dashed: bool,
     /// The line's width, points.
-    pub width: f32,
+    pub(crate) width: f32,
 }
 
 /// A legend below a plot, outside its data: a short line drawn as the curve is, and its
 /// words, wrapping to the panel's width.
-pub fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
+pub(crate) fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
     ui.horizontal_wrapped(|ui| {
         for e in entries {
             swatch(ui, e.colour, e.dashed, e.width);
@@ -43,7 +43,7 @@ pub fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
 }
 
 /// A 22 × 12 point swatch of a line: dashed or solid.
-pub fn swatch(ui: &mut egui::Ui, colour: Color32, dashed: bool, width: f32) {
+pub(crate) fn swatch(ui: &mut egui::Ui, colour: Color32, dashed: bool, width: f32) {
     let (rect, _) = ui.allocate_exact_size(egui::vec2(22.0, 12.0), egui::Sense::hover());
     let y = rect.center().y;
     let stroke = egui::Stroke::new(width, colour);

@@ -48,7 +48,7 @@ fn screenshot_menu(ui: &mut egui::Ui, shots: &mut Shots, t: Lang) -> bool {
 /// What the 3D view asks of the viewer: each needs more of it than the view holds, so the
 /// caller does it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ViewAction {
+pub(crate) enum ViewAction {
     /// Look from this azimuth and elevation, degrees.
     LookFrom(f32, f32),
     /// Frame the platform and its motion.
@@ -58,17 +58,17 @@ pub enum ViewAction {
 }
 
 /// The parts the 3D view and its toolbar edit.
-pub struct ViewParts<'a> {
+pub(crate) struct ViewParts<'a> {
     /// Camera, theme, overlays, presentation.
-    pub look: &'a mut Look,
+    pub(crate) look: &'a mut Look,
     /// Play and pause; the frames-skipped note.
-    pub playback: &'a mut Playback,
+    pub(crate) playback: &'a mut Playback,
     /// The screenshot menu's choices and status.
-    pub shots: &'a mut Shots,
+    pub(crate) shots: &'a mut Shots,
     /// Whether the export window is open, and its job's progress.
-    pub exports: &'a mut Exports,
+    pub(crate) exports: &'a mut Exports,
     /// How the view is drawn and its frame times.
-    pub quality: &'a mut Quality,
+    pub(crate) quality: &'a mut Quality,
 }
 
 /// The toolbar over the view, always in sight: play/pause and export first; the standard
@@ -146,18 +146,18 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
 }
 
 /// Where the view is drawn this frame and how wide it is.
-pub struct ViewArea {
+pub(crate) struct ViewArea {
     /// The view's rectangle, points.
-    pub rect: egui::Rect,
+    pub(crate) rect: egui::Rect,
     /// Width over height.
-    pub aspect: f32,
+    pub(crate) aspect: f32,
     /// Whether the camera is being dragged.
     dragged: bool,
 }
 
 /// The toolbar and the camera's input: where the view is this frame, and what the toolbar
 /// asks (the caller does it, frames the camera for the new aspect, then [`paint`]s).
-pub fn area(ui: &mut egui::Ui, parts: &mut ViewParts) -> (ViewArea, Option<ViewAction>) {
+pub(crate) fn area(ui: &mut egui::Ui, parts: &mut ViewParts) -> (ViewArea, Option<ViewAction>) {
     let action = toolbar(ui, parts);
     let rect = ui.available_rect_before_wrap();
     // The camera's drags start a little inside the view: the splitters of the controls
@@ -185,7 +185,7 @@ pub fn area(ui: &mut egui::Ui, parts: &mut ViewParts) -> (ViewArea, Option<ViewA
 
 /// The scene `list` drawn in `area` (or why it cannot be), and the status line.
 /// `animating`: whether the viewer moves on its own this frame (playback, a stream).
-pub fn paint(
+pub(crate) fn paint(
     ui: &mut egui::Ui,
     parts: &mut ViewParts,
     area: &ViewArea,
@@ -295,7 +295,7 @@ fn frame_words(t: Lang, quality: &Quality) -> String {
 }
 
 /// The drawing settings (Advanced): the frame-time readout and what it says.
-pub fn drawing(ui: &mut egui::Ui, look: &mut Look) {
+pub(crate) fn drawing(ui: &mut egui::Ui, look: &mut Look) {
     let t = look.lang;
     egui::CollapsingHeader::new(t.tr("quality.advanced"))
         .default_open(look.expand_panels)

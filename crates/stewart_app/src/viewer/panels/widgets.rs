@@ -12,19 +12,19 @@ use crate::viewer::state::editor::Editor;
 use crate::viewer::state::files::Status;
 
 /// Red for refusals and errors.
-pub const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
+pub(crate) const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
 /// Amber for notes that limit but do not refuse.
-pub const WARNING: Color32 = Color32::from_rgb(230, 150, 20);
+pub(crate) const WARNING: Color32 = Color32::from_rgb(230, 150, 20);
 /// Green for success.
-pub const OK: Color32 = Color32::from_rgb(60, 160, 80);
+pub(crate) const OK: Color32 = Color32::from_rgb(60, 160, 80);
 /// What lies out of reach (reach bars, the roll–pitch map).
-pub const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
+pub(crate) const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 
 /// A slider for the setting of `target`, labelled with its unit (a switch is a
 /// checkbox); optional settings get a checkbox that switches them on (at their slider's
 /// start) and off. Right-click resets to the default. Edits go through the setting's
 /// validation.
-pub fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
+pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
     let setting = settings::of(target);
     let scenario = ed.scenario();
     if !setting.applies(scenario) {
@@ -235,7 +235,7 @@ fn slider<'a>(
 }
 
 /// The outcome of the last action, green or red.
-pub fn status(ui: &mut egui::Ui, status: &Status) {
+pub(crate) fn status(ui: &mut egui::Ui, status: &Status) {
     match status {
         Some(Ok(message)) => {
             ui.label(RichText::new(message).color(OK));
@@ -248,7 +248,7 @@ pub fn status(ui: &mut egui::Ui, status: &Status) {
 }
 
 /// Why the last edit in one of `groups` was refused, if it was.
-pub fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[Group]) {
+pub(crate) fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[Group]) {
     if let Some((group, e)) = &doc.edit_error
         && groups.contains(group)
     {
@@ -258,7 +258,7 @@ pub fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[Group]) 
 
 /// A bar over `full` (slider units) with the `reachable` part in green and the `value`
 /// marked: drawn under a slider of that `width`, or alone.
-pub fn range_bar(
+pub(crate) fn range_bar(
     ui: &mut egui::Ui,
     full: [f64; 2],
     reachable: Option<[f64; 2]>,

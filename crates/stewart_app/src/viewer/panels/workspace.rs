@@ -13,7 +13,7 @@ use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
 
 /// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it
 /// starts open.
-pub fn show(
+pub(crate) fn show(
     ui: &mut egui::Ui,
     w: &mut WorkspaceTool,
     scenario: &Scenario,
@@ -130,7 +130,7 @@ fn numbers(ui: &mut egui::Ui, w: &WorkspaceTool, scenario: &Scenario, pose: &Pos
 
 /// Whether the platform centre of `pose` is reachable at the workspace's orientation (the
 /// pose itself when the orientation follows it).
-pub fn centre_inside(w: &WorkspaceTool, scenario: &Scenario, pose: &Pose) -> bool {
+pub(crate) fn centre_inside(w: &WorkspaceTool, scenario: &Scenario, pose: &Pose) -> bool {
     let [roll, pitch, yaw] = w.orientation_at(pose);
     let g = &scenario.geometry;
     // The same centre at the workspace's orientation.

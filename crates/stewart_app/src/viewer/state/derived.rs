@@ -14,23 +14,23 @@ use stewart_kinematics::{
 
 /// Most samples the plot and the traced path hold (a trajectory may have ten million:
 /// the check uses them all, the picture needs far fewer).
-pub const PLOT_SAMPLES: usize = 20_000;
+pub(crate) const PLOT_SAMPLES: usize = 20_000;
 
 /// The plot's and path's samples, the layout, and the report.
-pub struct Derived {
+pub(crate) struct Derived {
     /// Sample times (at most [`PLOT_SAMPLES`], both ends kept), seconds.
-    pub times: Vec<f64>,
+    pub(crate) times: Vec<f64>,
     /// Leg lengths (m) or servo angles (°, NaN out of reach) at those times.
-    pub lengths: Vec<[f64; 6]>,
+    pub(crate) lengths: Vec<[f64; 6]>,
     /// Platform-centre positions at those times, for the traced path.
-    pub centres: Vec<Vector3<f64>>,
+    pub(crate) centres: Vec<Vector3<f64>>,
     /// The named layout of the joint angles, `None` when they follow none.
-    pub layout: Option<Layout>,
+    pub(crate) layout: Option<Layout>,
     /// Whether some plotted value lies beyond a stroke or servo limit.
-    pub beyond_limits: bool,
+    pub(crate) beyond_limits: bool,
     /// The actuator efforts (N or N·m, with the legs' parts and friction) at those
     /// times, when the scenario has a payload; NaN where none is determined.
-    pub efforts: Option<Vec<[f64; 6]>>,
+    pub(crate) efforts: Option<Vec<[f64; 6]>>,
     /// The nearest layout that is not architecturally singular, once asked for (it is
     /// searched only when the report finds the geometry singular).
     sound_layout: Option<Option<SoundLayout>>,
@@ -39,7 +39,7 @@ pub struct Derived {
 
 impl Derived {
     /// Everything for `scenario` (the report is started, not waited for).
-    pub fn new(scenario: &Scenario) -> Self {
+    pub(crate) fn new(scenario: &Scenario) -> Self {
         let mut d = Self {
             times: Vec::new(),
             lengths: Vec::new(),
@@ -56,7 +56,7 @@ impl Derived {
 
     /// Recompute after `scenario` changed: the thinned samples now, the report in the
     /// background (a request made while one runs replaces any waiting one).
-    pub fn rebuild(&mut self, scenario: &Scenario) {
+    pub(crate) fn rebuild(&mut self, scenario: &Scenario) {
         let params = scenario.geometry.params();
         self.layout = match (params.base.circle(), params.platform.circle()) {
             (Some((_, base)), Some((_, platform))) => Layout::recognise(base, platform),
@@ -106,29 +106,29 @@ impl Derived {
 
     /// The nearest paired layout of `scenario`'s geometry that is not architecturally
     /// singular (searched on the first call after an edit, then kept).
-    pub fn sound_layout(&mut self, scenario: &Scenario) -> Option<&SoundLayout> {
+    pub(crate) fn sound_layout(&mut self, scenario: &Scenario) -> Option<&SoundLayout> {
         self.sound_layout
             .get_or_insert_with(|| sound_layout::nearest_sound_layout(&scenario.geometry))
             .as_ref()
     }
 
     /// The latest finished report of the current scenario, if it is in.
-    pub fn report(&self) -> Option<&CheckReport> {
+    pub(crate) fn report(&self) -> Option<&CheckReport> {
         self.report.current.as_ref()
     }
 
     /// Whether a report is being computed (or waits to be).
-    pub fn report_pending(&self) -> bool {
+    pub(crate) fn report_pending(&self) -> bool {
         self.report.job.busy()
     }
 
     /// Collect a finished report and start the waiting request; never blocks.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         self.report.poll(false);
     }
 
     /// Block until the report of the current scenario is in (screenshots and tests).
-    pub fn wait_for_report(&mut self) {
+    pub(crate) fn wait_for_report(&mut self) {
         while self.report_pending() {
             self.report.poll(true);
         }

@@ -20,22 +20,22 @@ use crate::viewer::state::undo::Undo;
 use crate::viewer::state::vehicle::VehicleSource;
 
 /// The scenario, its undo history, what is derived from it, and the last refused edit.
-pub struct Document {
+pub(crate) struct Document {
     scenario: Scenario,
     /// The scenario as loaded (preset or file) or saved last.
     as_loaded: Scenario,
     derived: Derived,
     /// The edits that can be undone and redone.
-    pub undo: Undo,
+    pub(crate) undo: Undo,
     /// Why the last edit was refused (the scenario then stayed as it was).
-    pub edit_error: Option<(Group, String)>,
+    pub(crate) edit_error: Option<(Group, String)>,
     /// The vehicle recording loaded last and the motion cued from it.
     vehicle: Option<VehicleSource>,
 }
 
 impl Document {
     /// A document showing `scenario`, as loaded.
-    pub fn new(scenario: Scenario) -> Self {
+    pub(crate) fn new(scenario: Scenario) -> Self {
         Self {
             derived: Derived::new(&scenario),
             as_loaded: scenario.clone(),
@@ -47,7 +47,7 @@ impl Document {
     }
 
     /// The scenario shown.
-    pub fn scenario(&self) -> &Scenario {
+    pub(crate) fn scenario(&self) -> &Scenario {
         &self.scenario
     }
 
@@ -55,7 +55,7 @@ impl Document {
     /// lies in its accepted range, the copy replaces the scenario (one undo step) and
     /// everything derived is rebuilt; otherwise the reason is recorded under `group` and
     /// nothing changes. Returns whether the change was applied.
-    pub fn edit(
+    pub(crate) fn edit(
         &mut self,
         group: Group,
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
@@ -97,7 +97,7 @@ impl Document {
 
     /// Play the motion cued from a vehicle recording (`samples`, from the file `name`),
     /// one edit; refused with the reason when the scenario cannot cue it.
-    pub fn play_vehicle(
+    pub(crate) fn play_vehicle(
         &mut self,
         name: &str,
         samples: std::sync::Arc<Vec<(f64, stewart_kinematics::analysis::cueing::VehicleMotion)>>,
@@ -120,7 +120,7 @@ impl Document {
 
     /// The vehicle recording whose cued motion is the scenario's now (`None` when the
     /// motion is another: none was loaded, or an undo brought another motion back).
-    pub fn cued_vehicle(&self) -> Option<&VehicleSource> {
+    pub(crate) fn cued_vehicle(&self) -> Option<&VehicleSource> {
         self.vehicle
             .as_ref()
             .filter(|v| v.motion == self.scenario.motion)
@@ -129,7 +129,10 @@ impl Document {
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
     /// sound (else the reason, naming the key). A kept change is an undo step with nothing
     /// derived to rebuild (nothing depends on `[link]`); the same table records nothing.
-    pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) -> Result<(), String> {
+    pub(crate) fn edit_link(
+        &mut self,
+        change: impl FnOnce(&mut LinkSettings),
+    ) -> Result<(), String> {
         let mut link = self.scenario.link.clone();
         change(&mut link);
         if let Some(p) = link.problem() {
@@ -143,14 +146,14 @@ impl Document {
     }
 
     /// Write one setting (`None`: switch an optional one off).
-    pub fn apply(&mut self, setting: &Setting, value: Option<f64>) -> bool {
+    pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) -> bool {
         self.edit(setting.group, |s| {
             setting.set(s, value).map_err(|e| e.to_string())
         })
     }
 
     /// Replace the geometry's numbers.
-    pub fn set_geometry(&mut self, params: GeometryParams) -> bool {
+    pub(crate) fn set_geometry(&mut self, params: GeometryParams) -> bool {
         self.edit(Group::Geometry, |s| {
             s.geometry = stewart_kinematics::Geometry::new(params).map_err(|e| e.to_string())?;
             Ok(())
@@ -159,13 +162,13 @@ impl Document {
 
     /// Rewrite all twelve joint angles from a named layout (a plate given as coordinates
     /// goes back to a circle of its size).
-    pub fn set_layout(&mut self, layout: Layout) -> bool {
+    pub(crate) fn set_layout(&mut self, layout: Layout) -> bool {
         let params = sound_layout::params_with_layout(&self.scenario.geometry, layout);
         self.set_geometry(params)
     }
 
     /// Switch to another kind of trajectory with its default numbers.
-    pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) -> bool {
+    pub(crate) fn switch_trajectory(&mut self, choice: TrajectoryChoice) -> bool {
         self.edit(Group::Trajectory, |s| {
             settings::switch_trajectory(s, choice);
             Ok(())
@@ -173,7 +176,7 @@ impl Document {
     }
 
     /// Show another scenario (a preset or file loaded): one undo step of its own.
-    pub fn replace(&mut self, scenario: Scenario) {
+    pub(crate) fn replace(&mut self, scenario: Scenario) {
         self.undo.record(&self.scenario);
         self.undo.seal();
         self.as_loaded = scenario.clone();
@@ -181,13 +184,13 @@ impl Document {
     }
 
     /// Go back one edit; the scenario it left, or `None` when there was none.
-    pub fn undo(&mut self) -> Option<Scenario> {
+    pub(crate) fn undo(&mut self) -> Option<Scenario> {
         let before = self.undo.undo(&self.scenario)?;
         Some(self.put(before))
     }
 
     /// Do again the edit undone last; the scenario it left, or `None` when there was none.
-    pub fn redo(&mut self) -> Option<Scenario> {
+    pub(crate) fn redo(&mut self) -> Option<Scenario> {
         let after = self.undo.redo(&self.scenario)?;
         Some(self.put(after))
     }
@@ -215,7 +218,7 @@ impl Document {
 
     /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
     /// as edited (in `lang`) when the scenario differs from the preset or file it came from.
-    pub fn title(&self, lang: Lang) -> String {
+    pub(crate) fn title(&self, lang: Lang) -> String {
         if self.scenario == self.as_loaded {
             self.scenario.name.clone()
         } else {
@@ -224,64 +227,64 @@ impl Document {
     }
 
     /// What was saved is now what the scenario came from (its title loses "edited").
-    pub fn mark_saved(&mut self) {
+    pub(crate) fn mark_saved(&mut self) {
         self.as_loaded = self.scenario.clone();
     }
 
     /// The nearest layout that is not architecturally singular (see
     /// [`stewart_kinematics::analysis::sound_layout`]): the layout and the largest joint move, degrees.
-    pub fn sound_layout(&mut self) -> Option<(Layout, f64)> {
+    pub(crate) fn sound_layout(&mut self) -> Option<(Layout, f64)> {
         self.derived
             .sound_layout(&self.scenario)
             .map(|s| (s.layout, s.moved_deg))
     }
 
     /// Whether some plotted value of the trajectory lies beyond a stroke or servo limit.
-    pub fn beyond_limits(&self) -> bool {
+    pub(crate) fn beyond_limits(&self) -> bool {
         self.derived.beyond_limits
     }
 
     /// The named layout of the joint angles, `None` when they were edited one by one
     /// into no named layout.
-    pub fn layout(&self) -> Option<Layout> {
+    pub(crate) fn layout(&self) -> Option<Layout> {
         self.derived.layout
     }
 
     /// Times and leg lengths for the plot (thinned to at most
     /// [`crate::viewer::state::derived::PLOT_SAMPLES`]).
-    pub fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
+    pub(crate) fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
         (&self.derived.times, &self.derived.lengths)
     }
 
     /// The actuator efforts at the plotted times (N or N·m), when there is a payload.
-    pub fn plot_efforts(&self) -> Option<(&[f64], &[[f64; 6]])> {
+    pub(crate) fn plot_efforts(&self) -> Option<(&[f64], &[[f64; 6]])> {
         let efforts = self.derived.efforts.as_ref()?;
         Some((&self.derived.times, efforts))
     }
 
     /// The pre-flight report of the trajectory, once computed (off the UI thread).
-    pub fn report(&self) -> Option<&CheckReport> {
+    pub(crate) fn report(&self) -> Option<&CheckReport> {
         self.derived.report()
     }
 
     /// Whether the report is still being computed.
-    pub fn report_pending(&self) -> bool {
+    pub(crate) fn report_pending(&self) -> bool {
         self.derived.report_pending()
     }
 
     /// Block until the report is in (screenshots and tests want a settled picture).
-    pub fn wait_for_report(&mut self) {
+    pub(crate) fn wait_for_report(&mut self) {
         self.derived.wait_for_report();
     }
 
     /// The platform centre's path over the sampled trajectory up to time `now`.
-    pub fn path_until(&self, now: f64) -> Vec<nalgebra::Vector3<f64>> {
+    pub(crate) fn path_until(&self, now: f64) -> Vec<nalgebra::Vector3<f64>> {
         let done = self.derived.times.partition_point(|&t| t <= now);
         self.derived.centres[..done.min(self.derived.centres.len())].to_vec()
     }
 
     /// Collect a finished report; never blocks.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         self.derived.poll();
     }
 }

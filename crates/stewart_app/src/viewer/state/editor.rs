@@ -12,20 +12,20 @@ use crate::viewer::state::document::Document;
 use crate::viewer::state::playback::Playback;
 
 /// The parts of the viewer a scenario edit touches.
-pub struct Editor<'a> {
+pub(crate) struct Editor<'a> {
     /// The scenario, its history, what is derived from it and the last refused edit.
-    pub doc: &'a mut Document,
+    pub(crate) doc: &'a mut Document,
     /// Kept within the trajectory after each edit.
     playback: &'a mut Playback,
     /// The interface's language.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Whether collapsible parts start open (`--expand-panels`).
-    pub expand: bool,
+    pub(crate) expand: bool,
 }
 
 impl<'a> Editor<'a> {
     /// An editor of `doc` that keeps `playback` within the trajectory.
-    pub fn new(
+    pub(crate) fn new(
         doc: &'a mut Document,
         playback: &'a mut Playback,
         lang: Lang,
@@ -40,13 +40,13 @@ impl<'a> Editor<'a> {
     }
 
     /// The scenario edited.
-    pub fn scenario(&self) -> &Scenario {
+    pub(crate) fn scenario(&self) -> &Scenario {
         self.doc.scenario()
     }
 
     /// Change the scenario through the document's one edit path ([`Document::edit`]);
     /// playback stays within the new duration. Returns whether the change was applied.
-    pub fn edit(
+    pub(crate) fn edit(
         &mut self,
         group: Group,
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
@@ -57,24 +57,24 @@ impl<'a> Editor<'a> {
     }
 
     /// Write one setting (`None`: switch an optional one off).
-    pub fn apply(&mut self, setting: &Setting, value: Option<f64>) {
+    pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) {
         self.doc.apply(setting, value);
         self.keep_time_in_range();
     }
 
     /// Switch to another kind of trajectory with its default numbers.
-    pub fn switch_trajectory(&mut self, choice: TrajectoryChoice) {
+    pub(crate) fn switch_trajectory(&mut self, choice: TrajectoryChoice) {
         self.doc.switch_trajectory(choice);
         self.keep_time_in_range();
     }
 
     /// Rewrite all twelve joint angles from a named layout.
-    pub fn set_layout(&mut self, layout: Layout) {
+    pub(crate) fn set_layout(&mut self, layout: Layout) {
         self.doc.set_layout(layout);
     }
 
     /// Playback time within the trajectory's duration.
-    pub fn keep_time_in_range(&mut self) {
+    pub(crate) fn keep_time_in_range(&mut self) {
         let duration = self.doc.scenario().motion.sampling.duration();
         self.playback.time = self.playback.time.clamp(0.0, duration);
     }

@@ -25,7 +25,7 @@ use crate::viewer::tools::job::{Job, JobFailed};
 
 /// What to export.
 #[derive(Clone, Debug)]
-pub enum ExportWork {
+pub(crate) enum ExportWork {
     /// Frames, a GIF or an MP4.
     Video(Box<VideoRequest>),
     /// The leg-length plot (SVG, PDF or PNG by extension); with `true`, the actuator
@@ -56,23 +56,23 @@ pub enum ExportWork {
 
 /// The 3D view with the workspace surface (and slice) the export computes.
 #[derive(Clone, Debug)]
-pub struct SurfaceView {
+pub(crate) struct SurfaceView {
     /// Where.
-    pub path: PathBuf,
+    pub(crate) path: PathBuf,
     /// The workspace to draw.
-    pub request: crate::viewer::tools::workspace::Request,
+    pub(crate) request: crate::viewer::tools::workspace::Request,
     /// The scene without analysis.
-    pub list: stewart_render::DrawList,
+    pub(crate) list: stewart_render::DrawList,
     /// The camera.
-    pub camera: stewart_render::OrbitCamera,
+    pub(crate) camera: stewart_render::OrbitCamera,
     /// The colours.
-    pub theme: stewart_render::Theme,
+    pub(crate) theme: stewart_render::Theme,
     /// Pixels.
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
 }
 
 /// An export running (or finished) on a background job.
-pub struct ExportJob {
+pub(crate) struct ExportJob {
     job: Job<Result<String>>,
     progress: ProgressBar,
     cancel_asked: bool,
@@ -82,7 +82,7 @@ pub struct ExportJob {
 
 impl ExportJob {
     /// Start `work` on a copy of `scenario`; messages (and the plot's words) in `lang`.
-    pub fn start(scenario: &Scenario, work: ExportWork, lang: Lang) -> Self {
+    pub(crate) fn start(scenario: &Scenario, work: ExportWork, lang: Lang) -> Self {
         let scenario = scenario.clone();
         let progress = ProgressBar::with_draw_target(Some(1), ProgressDrawTarget::hidden());
         let bar = progress.clone();
@@ -101,13 +101,13 @@ impl ExportJob {
     }
 
     /// Done so far, 0 to 1.
-    pub fn fraction(&self) -> f32 {
+    pub(crate) fn fraction(&self) -> f32 {
         let len = self.progress.length().unwrap_or(1).max(1);
         self.progress.position() as f32 / len as f32
     }
 
     /// Progress in words: frames done, rate and time left.
-    pub fn describe(&self) -> String {
+    pub(crate) fn describe(&self) -> String {
         let (done, len) = (
             self.progress.position(),
             self.progress.length().unwrap_or(1),
@@ -132,31 +132,22 @@ impl ExportJob {
     }
 
     /// Ask the export to stop; it then removes what it staged and reports the cancellation.
-    pub fn cancel(&mut self) {
+    pub(crate) fn cancel(&mut self) {
         self.cancel_asked = true;
         self.job.cancel();
     }
 
     /// Whether cancel was asked for.
-    pub fn cancelling(&self) -> bool {
+    pub(crate) fn cancelling(&self) -> bool {
         self.cancel_asked
     }
 
     /// The outcome once the export has finished: a sentence saying what was written, or
     /// why nothing was.
-    pub fn poll(&mut self) -> Option<Result<String, String>> {
+    pub(crate) fn poll(&mut self) -> Option<Result<String, String>> {
         let outcome = self.job.poll()?;
         Some(self.words(outcome))
     }
-
-    /// Wait for the end (tests and shutdown).
-    pub fn wait(&mut self) -> Result<String, String> {
-        match self.job.wait() {
-            Some(outcome) => self.words(outcome),
-            None => Err("already finished".to_owned()),
-        }
-    }
-
     /// The job's outcome in words.
     fn words(
         &self,

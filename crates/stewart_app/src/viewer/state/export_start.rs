@@ -15,7 +15,7 @@ use crate::viewer::state::files::{Overwrite, WriteAction, absolute};
 impl ViewerState {
     /// Export to `path` as the form says: at once, or after asking when it would replace
     /// a file.
-    pub fn export_asking(&mut self, path: &Path) {
+    pub(crate) fn export_asking(&mut self, path: &Path) {
         let full = absolute(path);
         if full.exists() {
             self.files.confirm = Some(Overwrite {
@@ -29,7 +29,7 @@ impl ViewerState {
 
     /// Start the export to `path` (absolute; the user has agreed to replace it if it
     /// exists).
-    pub fn start_export(&mut self, path: PathBuf) {
+    pub(crate) fn start_export(&mut self, path: PathBuf) {
         let t = self.look.lang;
         let work = work(self, path.clone());
         self.exports.status = None;
@@ -42,7 +42,7 @@ impl ViewerState {
     }
 
     /// The video the form asks for, written to `out`.
-    pub fn video_request(&self, out: PathBuf) -> VideoRequest {
+    pub(crate) fn video_request(&self, out: PathBuf) -> VideoRequest {
         request(self, out)
     }
 }

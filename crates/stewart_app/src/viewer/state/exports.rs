@@ -7,7 +7,7 @@ use crate::viewer::state::files::Status;
 
 /// What the export panel will write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum ExportKind {
+pub(crate) enum ExportKind {
     /// Animated GIF.
     Gif,
     /// H.264 MP4 (needs ffmpeg).
@@ -36,7 +36,7 @@ pub enum ExportKind {
 
 impl ExportKind {
     /// Every kind, in menu order.
-    pub const ALL: [ExportKind; 12] = [
+    pub(crate) const ALL: [ExportKind; 12] = [
         ExportKind::Gif,
         ExportKind::Mp4,
         ExportKind::Frames,
@@ -52,7 +52,7 @@ impl ExportKind {
     ];
 
     /// Words for the menu.
-    pub fn label(self, lang: Lang) -> &'static str {
+    pub(crate) fn label(self, lang: Lang) -> &'static str {
         lang.tr(match self {
             ExportKind::Gif => "export.kind_gif",
             ExportKind::Mp4 => "export.kind_mp4",
@@ -70,7 +70,7 @@ impl ExportKind {
     }
 
     /// What the output's name ends in (`""` for a folder).
-    pub fn extension(self) -> &'static str {
+    pub(crate) fn extension(self) -> &'static str {
         match self {
             ExportKind::Gif => ".gif",
             ExportKind::Mp4 => ".mp4",
@@ -84,7 +84,7 @@ impl ExportKind {
     }
 
     /// What the default file name adds to the scenario's name.
-    pub fn suffix(self) -> &'static str {
+    pub(crate) fn suffix(self) -> &'static str {
         match self {
             ExportKind::Frames => "-frames",
             ExportKind::WorkspaceSvg
@@ -97,37 +97,37 @@ impl ExportKind {
     }
 
     /// Whether it renders frames (and so has size, rate and theme).
-    pub fn is_video(self) -> bool {
+    pub(crate) fn is_video(self) -> bool {
         matches!(self, ExportKind::Gif | ExportKind::Mp4 | ExportKind::Frames)
     }
 }
 
 /// The export panel's choices (kept in the session).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct ExportForm {
+pub(crate) struct ExportForm {
     /// What to write.
-    pub kind: ExportKind,
+    pub(crate) kind: ExportKind,
     /// Where.
-    pub path: String,
+    pub(crate) path: String,
     /// Frame size, pixels.
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
     /// Frames per second; 0: the format's default (25 for GIF, 50 for MP4, one frame
     /// per trajectory sample for PNG frames).
-    pub fps: f64,
+    pub(crate) fps: f64,
     /// Light colours.
-    pub light: bool,
+    pub(crate) light: bool,
     /// The plot beside the 3D view.
-    pub composite: bool,
+    pub(crate) composite: bool,
     /// Only this part of the motion, seconds from its start (`None`: all of it).
     #[serde(default)]
-    pub span_s: Option<[f64; 2]>,
+    pub(crate) span_s: Option<[f64; 2]>,
     /// The readout's title burnt into the frames (empty: the readout as the view shows
     /// it, under the scenario's name).
     #[serde(default)]
-    pub title: String,
+    pub(crate) title: String,
     /// How fast the motion plays against real time (below 1: slow motion).
     #[serde(default = "real_time")]
-    pub speed: f64,
+    pub(crate) speed: f64,
 }
 
 /// Real time: the speed of a form saved before there was one.
@@ -153,25 +153,25 @@ impl Default for ExportForm {
 
 /// The Export panel's state.
 #[derive(Default)]
-pub struct Exports {
+pub(crate) struct Exports {
     /// Whether the export window is open.
-    pub open: bool,
+    pub(crate) open: bool,
     /// The choices.
-    pub form: ExportForm,
+    pub(crate) form: ExportForm,
     /// The export running or last run.
-    pub job: Option<ExportJob>,
+    pub(crate) job: Option<ExportJob>,
     /// What the last export did.
-    pub status: Status,
+    pub(crate) status: Status,
     /// Where the running export writes (absolute).
-    pub writing: Option<std::path::PathBuf>,
+    pub(crate) writing: Option<std::path::PathBuf>,
     /// What the last export that succeeded wrote (absolute): *Show in folder* opens its
     /// folder.
-    pub written: Option<std::path::PathBuf>,
+    pub(crate) written: Option<std::path::PathBuf>,
 }
 
 impl Exports {
     /// Collect the outcome of a finished export.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         if let Some(job) = &mut self.job
             && let Some(outcome) = job.poll()
         {

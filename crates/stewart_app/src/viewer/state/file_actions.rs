@@ -17,7 +17,7 @@ use crate::viewer::state::files::{
 impl ViewerState {
     /// Open whatever `path` is: a scenario (`.toml`) replaces the scenario, a pose table
     /// (`.csv`) the motion; anything else is refused with a note.
-    pub fn open_path(&mut self, path: &Path) {
+    pub(crate) fn open_path(&mut self, path: &Path) {
         match OpenKind::of(path) {
             OpenKind::Scenario => self.open_file(path),
             OpenKind::PoseTable => self.open_pose_table(path),
@@ -32,7 +32,7 @@ impl ViewerState {
 
     /// Open a scenario file. A file that cannot be read or is invalid leaves the current
     /// scenario untouched; either way the outcome is shown in the Scenario panel.
-    pub fn open_file(&mut self, path: &Path) {
+    pub(crate) fn open_file(&mut self, path: &Path) {
         let full = absolute(path);
         self.files.status = Some(
             match regular_file(&full)
@@ -58,7 +58,7 @@ impl ViewerState {
     /// Play the poses of a CSV table (`t,x,y,z,roll_deg,pitch_deg,yaw_deg`) as the motion,
     /// one edit (Ctrl+Z takes it back); the platform stays. A table of vehicle motion
     /// (`t,ax,ay,az,wx,wy,wz`) is cued first (see [`ViewerState::open_vehicle`]).
-    pub fn open_pose_table(&mut self, path: &Path) {
+    pub(crate) fn open_pose_table(&mut self, path: &Path) {
         let full = absolute(path);
         let name = full.display().to_string();
         // The header line alone tells (the file is read whole once, by whichever reader).
@@ -111,7 +111,7 @@ impl ViewerState {
     /// Cue a CSV of vehicle motion (`t,ax,ay,az,wx,wy,wz`) with the scenario's `[cueing]`
     /// table and play the poses as the motion, one edit; the Cueing panel then plots it,
     /// and edits of the cueing cue it again.
-    pub fn open_vehicle(&mut self, full: &Path) {
+    pub(crate) fn open_vehicle(&mut self, full: &Path) {
         let name = full.display().to_string();
         let lang = self.look.lang;
         let read = std::fs::File::open(full)
@@ -144,7 +144,7 @@ impl ViewerState {
     }
 
     /// Save the scenario as TOML (whole or not at all).
-    pub fn save_file(&mut self, path: &Path) {
+    pub(crate) fn save_file(&mut self, path: &Path) {
         let full = absolute(path);
         let text = self.scenario().to_toml();
         let lang = self.look.lang;
@@ -164,7 +164,7 @@ impl ViewerState {
 
     /// Save to `path`, first asking whether to replace it when it exists and is not the
     /// file open now.
-    pub fn save_file_asking(&mut self, path: &Path) {
+    pub(crate) fn save_file_asking(&mut self, path: &Path) {
         let full = absolute(path);
         if full.exists() && self.files.current.as_deref() != Some(full.as_path()) {
             self.files.confirm = Some(Overwrite {
@@ -178,7 +178,7 @@ impl ViewerState {
 
     /// Take `origin` (a saved session's, or `--scenario`'s) as the file open now when it
     /// names a regular file: Ctrl+S then saves it without asking where.
-    pub fn remember_file(&mut self, origin: &str) {
+    pub(crate) fn remember_file(&mut self, origin: &str) {
         if origin.starts_with("preset ") {
             return;
         }
@@ -190,7 +190,7 @@ impl ViewerState {
     }
 
     /// Ctrl+S: save to the file open now, or ask where (Save as…) when there is none.
-    pub fn save(&mut self) {
+    pub(crate) fn save(&mut self) {
         match self.files.current.clone() {
             Some(path) => self.save_file(&path),
             None => self.choose_file(Purpose::SaveScenario),
@@ -198,7 +198,7 @@ impl ViewerState {
     }
 
     /// Show the file dialog for `purpose`, starting where the relevant file is.
-    pub fn choose_file(&mut self, purpose: Purpose) {
+    pub(crate) fn choose_file(&mut self, purpose: Purpose) {
         let (start, name) = match purpose {
             Purpose::Open | Purpose::SaveScenario => (
                 self.files.current.clone().unwrap_or_default(),

@@ -8,36 +8,36 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 /// The outcome of the last file or export action, shown until the next one.
-pub type Status = Option<Result<String, String>>;
+pub(crate) type Status = Option<Result<String, String>>;
 
 /// How long a folder listing is trusted before the folder is read again.
 const LISTING_LIFETIME: Duration = Duration::from_secs(1);
 
 /// The viewer's files.
 #[derive(Default)]
-pub struct Files {
+pub(crate) struct Files {
     /// The scenario file path typed in the panel.
-    pub path: String,
+    pub(crate) path: String,
     /// The scenario file opened or saved last (Ctrl+S writes there without asking).
-    pub current: Option<PathBuf>,
+    pub(crate) current: Option<PathBuf>,
     /// What the last open or save did.
-    pub status: Status,
+    pub(crate) status: Status,
     /// The open/save dialog, while one is shown.
-    pub picker: Option<Picker>,
+    pub(crate) picker: Option<Picker>,
     /// A write waiting for the answer to "replace it?".
-    pub confirm: Option<Overwrite>,
+    pub(crate) confirm: Option<Overwrite>,
     /// The files opened or saved last, newest first (at most [`RECENT`]; kept in the
     /// session).
-    pub recent: Vec<PathBuf>,
+    pub(crate) recent: Vec<PathBuf>,
     listing: Option<(Instant, Vec<PathBuf>)>,
 }
 
 /// Files kept in the recent list.
-pub const RECENT: usize = 8;
+pub(crate) const RECENT: usize = 8;
 
 impl Files {
     /// Put `path` (absolute) first in the recent list, once.
-    pub fn remember_recent(&mut self, path: &Path) {
+    pub(crate) fn remember_recent(&mut self, path: &Path) {
         let path = absolute(path);
         self.recent.retain(|p| p != &path);
         self.recent.insert(0, path);
@@ -47,7 +47,7 @@ impl Files {
 
 /// What a file dialog's choice is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Purpose {
+pub(crate) enum Purpose {
     /// Open a scenario (`.toml`) or a pose table (`.csv`).
     Open,
     /// Save the scenario as TOML.
@@ -57,17 +57,22 @@ pub enum Purpose {
 }
 
 /// A file dialog on screen and what its choice is for.
-pub struct Picker {
+pub(crate) struct Picker {
     /// What the chosen path is for.
-    pub purpose: Purpose,
+    pub(crate) purpose: Purpose,
     /// The dialog.
-    pub dialog: egui_file::FileDialog,
+    pub(crate) dialog: egui_file::FileDialog,
 }
 
 impl Picker {
     /// Open a dialog for `purpose` in `folder`, offering `name` for a file to write; its
     /// buttons and title in `lang`.
-    pub fn open(purpose: Purpose, folder: &Path, name: &str, lang: crate::i18n::Lang) -> Self {
+    pub(crate) fn open(
+        purpose: Purpose,
+        folder: &Path,
+        name: &str,
+        lang: crate::i18n::Lang,
+    ) -> Self {
         let (dialog, title) = match purpose {
             Purpose::Open => (
                 egui_file::FileDialog::open_file().show_files_filter(Box::new(|p: &Path| {
@@ -107,16 +112,16 @@ impl Picker {
 
 /// What the user is asked before a file is replaced.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Overwrite {
+pub(crate) struct Overwrite {
     /// The file that exists.
-    pub path: PathBuf,
+    pub(crate) path: PathBuf,
     /// What writes it once the user agrees.
-    pub action: WriteAction,
+    pub(crate) action: WriteAction,
 }
 
 /// A write that can wait for "replace it?".
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WriteAction {
+pub(crate) enum WriteAction {
     /// Save the scenario.
     SaveScenario,
     /// Run the export.
@@ -125,7 +130,7 @@ pub enum WriteAction {
 
 /// What a dropped or chosen file is, by its extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum OpenKind {
+pub(crate) enum OpenKind {
     /// A scenario, `.toml`.
     Scenario,
     /// Poses over time, `.csv`.
@@ -136,7 +141,7 @@ pub enum OpenKind {
 
 impl OpenKind {
     /// The kind of `path`, from its extension (any case).
-    pub fn of(path: &Path) -> Self {
+    pub(crate) fn of(path: &Path) -> Self {
         let ext = path
             .extension()
             .map(|e| e.to_string_lossy().to_ascii_lowercase());
@@ -150,13 +155,13 @@ impl OpenKind {
 
 /// `path` as an absolute path (relative paths from the current folder), for messages that
 /// say where a file went.
-pub fn absolute(path: &Path) -> PathBuf {
+pub(crate) fn absolute(path: &Path) -> PathBuf {
     std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
 /// The folder a file dialog for `path` starts in: the file's own folder, else the current
 /// one.
-pub fn folder_of(path: &Path) -> PathBuf {
+pub(crate) fn folder_of(path: &Path) -> PathBuf {
     absolute(path)
         .parent()
         .map_or_else(|| absolute(Path::new(".")), Path::to_path_buf)
@@ -165,7 +170,7 @@ pub fn folder_of(path: &Path) -> PathBuf {
 impl Files {
     /// The scenario files of the current folder, read again only when the last reading
     /// is older than a second.
-    pub fn scenario_files(&mut self) -> &[PathBuf] {
+    pub(crate) fn scenario_files(&mut self) -> &[PathBuf] {
         let fresh = self
             .listing
             .as_ref()

@@ -6,15 +6,15 @@ use gilrs::{Axis, Button, Gilrs};
 use crate::viewer::state::teleop::PadState;
 
 /// Gamepad input, when the system offers it.
-pub struct Gamepads {
+pub(crate) struct Gamepads {
     gilrs: Option<Gilrs>,
     /// Why there is no gamepad support, the system's words (said in the Motion panel).
-    pub note: Option<String>,
+    pub(crate) note: Option<String>,
 }
 
 impl Gamepads {
     /// Start listening; a system without gamepad support leaves a note and no input.
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         match Gilrs::new() {
             Ok(gilrs) => Self {
                 gilrs: Some(gilrs),
@@ -28,7 +28,7 @@ impl Gamepads {
     }
 
     /// The first connected gamepad's state and name, `None` when none is connected.
-    pub fn poll(&mut self) -> Option<(PadState, String)> {
+    pub(crate) fn poll(&mut self) -> Option<(PadState, String)> {
         let gilrs = self.gilrs.as_mut()?;
         while gilrs.next_event().is_some() {}
         let (_, pad) = gilrs.gamepads().find(|(_, g)| g.is_connected())?;

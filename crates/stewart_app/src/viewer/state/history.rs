@@ -5,17 +5,17 @@ use std::collections::VecDeque;
 
 /// Leg lengths at wall-clock times, the oldest dropped after [`History::WINDOW`] seconds.
 #[derive(Clone, Debug, Default)]
-pub struct History {
+pub(crate) struct History {
     entries: VecDeque<(f64, [f64; 6])>,
     last_change: Option<f64>,
 }
 
 impl History {
     /// Seconds of history kept and shown.
-    pub const WINDOW: f64 = 10.0;
+    pub(crate) const WINDOW: f64 = 10.0;
 
     /// Record the lengths at `clock` seconds.
-    pub fn push(&mut self, clock: f64, lengths: [f64; 6]) {
+    pub(crate) fn push(&mut self, clock: f64, lengths: [f64; 6]) {
         if self.entries.back().is_none_or(|(_, l)| *l != lengths) {
             self.last_change = Some(clock);
         }
@@ -30,17 +30,17 @@ impl History {
     }
 
     /// The entries, oldest first.
-    pub fn entries(&self) -> impl Iterator<Item = &(f64, [f64; 6])> {
+    pub(crate) fn entries(&self) -> impl Iterator<Item = &(f64, [f64; 6])> {
         self.entries.iter()
     }
 
     /// Whether the lengths changed within the window before `clock` (the plot still scrolls).
-    pub fn recently_changed(&self, clock: f64) -> bool {
+    pub(crate) fn recently_changed(&self, clock: f64) -> bool {
         self.last_change.is_some_and(|t| clock - t < Self::WINDOW)
     }
 
     /// Forget everything.
-    pub fn clear(&mut self) {
+    pub(crate) fn clear(&mut self) {
         self.entries.clear();
         self.last_change = None;
     }

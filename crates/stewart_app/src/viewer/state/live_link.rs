@@ -22,7 +22,7 @@ use crate::live_cue::{CueCounts, LiveCue};
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
 /// Seconds of tracking error kept for the panel's plot.
-pub const TRACKING_WINDOW_S: f64 = 10.0;
+pub(crate) const TRACKING_WINDOW_S: f64 = 10.0;
 /// Playback further than this from the sender's extrapolation (a seek, a pause) re-anchors
 /// the sender's clock, seconds.
 const RESYNC_S: f64 = 0.05;
@@ -43,14 +43,14 @@ struct Running {
 
 /// The link panel's state: the stream when connected, the outcome of the last one.
 #[derive(Default)]
-pub struct LiveLink {
+pub(crate) struct LiveLink {
     running: Option<Running>,
     /// The outcome of the last connect or stream (shown until the next).
-    pub status: crate::viewer::state::files::Status,
+    pub(crate) status: crate::viewer::state::files::Status,
     /// The last lines of a dry run (newest last).
     recent: Arc<Mutex<VecDeque<String>>>,
     /// The language of the status messages (the viewer's).
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// The tracking error of the answered set-points, oldest first: stream time and
     /// measured minus commanded per actuator (natural units), the last
     /// [`TRACKING_WINDOW_S`].
@@ -63,7 +63,7 @@ pub struct LiveLink {
     commanded: Option<(Pose, [f64; 6])>,
     /// Follow live vehicle motion arriving at this UDP address (`HOST:PORT`) through the
     /// scenario's washout, instead of what the viewer shows.
-    pub cue_input: Option<String>,
+    pub(crate) cue_input: Option<String>,
 }
 
 /// A dry run's writer: keeps the last whole lines for the panel (a line may come in
@@ -95,7 +95,7 @@ impl Write for RecentLines {
 impl LiveLink {
     /// Start streaming (disarmed until [`LiveLink::arm`]) to where `[link]` says, driven by
     /// `drive`. A transport that cannot open is shown in the status; nothing is sent.
-    pub fn connect(&mut self, scenario: &Scenario, drive: Drive, looping: bool) {
+    pub(crate) fn connect(&mut self, scenario: &Scenario, drive: Drive, looping: bool) {
         self.disconnect_now();
         self.status = Some(self.start(scenario, drive, looping));
     }
@@ -164,32 +164,32 @@ impl LiveLink {
     }
 
     /// With live vehicle motion as the source: what it brought (counts, recent trace).
-    pub fn cue(&self) -> Option<&CueCounts> {
+    pub(crate) fn cue(&self) -> Option<&CueCounts> {
         self.running.as_ref().and_then(|r| r.cue.as_deref())
     }
 
     /// Whether a stream runs (also while it stops).
-    pub fn connected(&self) -> bool {
+    pub(crate) fn connected(&self) -> bool {
         self.running.is_some()
     }
 
     /// Whether the stream is being stopped (after Disconnect).
-    pub fn stopping(&self) -> bool {
+    pub(crate) fn stopping(&self) -> bool {
         self.running.as_ref().is_some_and(|r| r.stopping)
     }
 
     /// What the stream goes to, when connected.
-    pub fn described(&self) -> Option<&str> {
+    pub(crate) fn described(&self) -> Option<&str> {
         self.running.as_ref().map(|r| r.described.as_str())
     }
 
     /// The sender's status, when connected.
-    pub fn sender_status(&self) -> Option<Status> {
+    pub(crate) fn sender_status(&self) -> Option<Status> {
         self.running.as_ref().map(|r| r.sender.status())
     }
 
     /// The last lines of a dry run, oldest first.
-    pub fn recent_lines(&self) -> Vec<String> {
+    pub(crate) fn recent_lines(&self) -> Vec<String> {
         self.recent
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
@@ -199,14 +199,14 @@ impl LiveLink {
     }
 
     /// Ramp from where the platform is to the target, then follow it.
-    pub fn arm(&self) {
+    pub(crate) fn arm(&self) {
         if let Some(r) = &self.running {
             r.sender.command(Command::Arm);
         }
     }
 
     /// Emergency stop: at once; then hold or home as `[link]` says, and disarm.
-    pub fn estop(&self) {
+    pub(crate) fn estop(&self) {
         if let Some(r) = &self.running {
             r.sender.command(Command::EStop);
         }
@@ -215,7 +215,7 @@ impl LiveLink {
     /// Stop the stream (e-stop, home or hold, disarm, end) without waiting; [`LiveLink::poll`]
     /// collects the end. Pressed again while the platform is on its way home, an emergency
     /// stop: disarm where it is.
-    pub fn disconnect(&mut self) {
+    pub(crate) fn disconnect(&mut self) {
         if let Some(r) = &mut self.running {
             r.sender.command(Command::EStop);
             if !r.stopping {
@@ -227,7 +227,7 @@ impl LiveLink {
 
     /// Stop the stream and wait for its end (closing the window): a stream already stopping
     /// goes on home.
-    pub fn disconnect_now(&mut self) {
+    pub(crate) fn disconnect_now(&mut self) {
         if !self.stopping() {
             self.disconnect();
         }
@@ -239,7 +239,7 @@ impl LiveLink {
     /// Tell the sender what drives the platform now (called every frame). While playing,
     /// the sender keeps its own clock; it is re-anchored only when playback jumped
     /// (seek, pause, speed change).
-    pub fn follow(&self, drive: Drive, looping: bool) {
+    pub(crate) fn follow(&self, drive: Drive, looping: bool) {
         let Some(r) = &self.running else {
             return;
         };
@@ -276,30 +276,30 @@ impl LiveLink {
 
     /// The tracking error of the last [`TRACKING_WINDOW_S`]: stream time and measured minus
     /// commanded per actuator, oldest first.
-    pub fn tracking(&self) -> &VecDeque<(f64, [f64; 6])> {
+    pub(crate) fn tracking(&self) -> &VecDeque<(f64, [f64; 6])> {
         &self.tracking
     }
 
     /// The platform as the controller measured it, while connected and answered.
-    pub fn measured_pose(&self) -> Option<Pose> {
+    pub(crate) fn measured_pose(&self) -> Option<Pose> {
         self.running.as_ref().and(self.measured_pose)
     }
 
     /// The platform as the values sent command it, while the stream drives it (arming,
     /// armed, on its way home): what goes to the hardware, whatever the source.
-    pub fn commanded_pose(&self) -> Option<Pose> {
+    pub(crate) fn commanded_pose(&self) -> Option<Pose> {
         self.commanded().map(|(pose, _)| pose)
     }
 
     /// The values sent last (natural units) and the pose they give, while the stream drives
     /// the platform.
-    pub fn commanded(&self) -> Option<(Pose, [f64; 6])> {
+    pub(crate) fn commanded(&self) -> Option<(Pose, [f64; 6])> {
         self.running.as_ref().and(self.commanded)
     }
 
     /// Whether the platform follows live vehicle motion now (the stream drives it, and the
     /// source is the cue input, not what the viewer plays).
-    pub fn cueing_live(&self) -> bool {
+    pub(crate) fn cueing_live(&self) -> bool {
         self.commanded.is_some() && self.cue().is_some()
     }
 
@@ -355,7 +355,7 @@ impl LiveLink {
     }
 
     /// Collect a stream that ended (stopped, or failed: a lost port, a write error).
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         self.take_answers();
         self.take_commanded();
         if self.running.as_ref().is_some_and(|r| r.sender.finished())

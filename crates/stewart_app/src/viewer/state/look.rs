@@ -9,63 +9,63 @@ use crate::i18n::Lang;
 #[derive(Clone, Debug)]
 pub struct Look {
     /// The camera.
-    pub camera: OrbitCamera,
+    pub(crate) camera: OrbitCamera,
     /// The interface's language.
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Light (presentation) or dark colours.
-    pub light_theme: bool,
+    pub(crate) light_theme: bool,
     /// Presentation mode: light colours, large text, control panels hidden.
-    pub presentation: bool,
+    pub(crate) presentation: bool,
     /// The camera before presentation mode re-framed the scene for its larger view, put
     /// back when presentation mode ends (`None` outside it).
-    pub camera_before_presentation: Option<OrbitCamera>,
+    pub(crate) camera_before_presentation: Option<OrbitCamera>,
     /// The camera presentation mode framed and the view's aspect it framed it for: while
     /// the camera is left as framed, a new aspect (the layout settling, a resized window)
     /// frames it again.
-    pub presentation_framed: Option<(OrbitCamera, f32)>,
+    pub(crate) presentation_framed: Option<(OrbitCamera, f32)>,
     /// The plot's height before presentation mode, given back when it ends.
-    pub plot_height_before_presentation: Option<f32>,
+    pub(crate) plot_height_before_presentation: Option<f32>,
     /// The plot's height to set at the next frame (leaving presentation mode).
-    pub plot_height_to_restore: Option<f32>,
+    pub(crate) plot_height_to_restore: Option<f32>,
     /// Presentation mode shows the view alone (G shows the plot again).
-    pub plot_hidden: bool,
+    pub(crate) plot_hidden: bool,
     /// The platform the camera was last checked against (a geometry edit that takes the
     /// scene out of the view fits the camera to it again).
-    pub geometry_seen: Option<stewart_kinematics::GeometryParams>,
+    pub(crate) geometry_seen: Option<stewart_kinematics::GeometryParams>,
     /// The *Help / keys* window is open (F1 or ?).
-    pub help: bool,
+    pub(crate) help: bool,
     /// Full screen (F11); the window follows it.
-    pub fullscreen: bool,
+    pub(crate) fullscreen: bool,
     /// Open every collapsible section at start (for screenshots of everything).
     pub expand_panels: bool,
     /// Draw the path the platform centre has traced.
-    pub show_path: bool,
+    pub(crate) show_path: bool,
     /// Draw the platform's own axes.
-    pub platform_axes: bool,
+    pub(crate) platform_axes: bool,
     /// Each leg in its plot colour (off: the single-colour look).
-    pub coloured_legs: bool,
+    pub(crate) coloured_legs: bool,
     /// Numbered labels beside the legs.
-    pub labels: bool,
+    pub(crate) labels: bool,
     /// The head-up readout (time, pose, values) over the view and in exported frames.
-    pub readouts: bool,
+    pub(crate) readouts: bool,
     /// The frame-time readout in the 3D view's status line (Advanced).
-    pub frame_times: bool,
+    pub(crate) frame_times: bool,
     /// The plot shows the actuator forces (or torques) instead of lengths (or angles).
-    pub plot_efforts: bool,
+    pub(crate) plot_efforts: bool,
     /// The plot panel's height as last drawn, logical pixels (its top edge drags).
-    pub plot_height: f32,
+    pub(crate) plot_height: f32,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
-    pub view_px: [u32; 2],
+    pub(crate) view_px: [u32; 2],
     /// The 3D view's width over its height, as laid out last frame.
-    pub view_aspect: f32,
+    pub(crate) view_aspect: f32,
     /// Why the 3D view cannot be drawn, empty for "no renderer yet" (`None` once the window
     /// registered its renderer).
-    pub renderer_missing: Option<String>,
+    pub(crate) renderer_missing: Option<String>,
 }
 
 impl Look {
     /// Dark colours, path shown, looking through `camera`; no renderer yet.
-    pub fn new(camera: OrbitCamera) -> Self {
+    pub(crate) fn new(camera: OrbitCamera) -> Self {
         Self {
             camera,
             lang: Lang::En,
@@ -95,12 +95,12 @@ impl Look {
     }
 
     /// Whether colours are light (the light theme, or presentation mode).
-    pub fn is_light(&self) -> bool {
+    pub(crate) fn is_light(&self) -> bool {
         self.light_theme || self.presentation
     }
 
     /// The colour theme (presentation mode is always light).
-    pub fn theme(&self) -> Theme {
+    pub(crate) fn theme(&self) -> Theme {
         Theme::from_light(self.is_light())
     }
 }

@@ -7,31 +7,36 @@
 //! ranges), and either replaces the scenario and rebuilds everything derived from it, or
 //! is refused with its reason and changes nothing.
 
-pub mod derived;
-pub mod document;
-pub mod editor;
-pub mod export_job;
+pub(crate) mod derived;
+pub(crate) mod document;
+pub(crate) mod editor;
+pub(crate) mod export_job;
 mod export_start;
-pub mod exports;
+pub(crate) mod exports;
 mod file_actions;
-pub mod files;
-pub mod gamepad;
-pub mod history;
-pub mod live_link;
-pub mod look;
-pub mod playback;
-pub mod session;
-pub mod teleop;
-pub mod undo;
-pub mod vehicle;
+pub(crate) mod files;
+pub(crate) mod gamepad;
+pub(crate) mod history;
+pub(crate) mod live_link;
+pub(crate) mod look;
+pub(crate) mod playback;
+pub(crate) mod session;
+pub(crate) mod teleop;
+pub(crate) mod undo;
+pub(crate) mod vehicle;
 
 use nalgebra::Vector3;
 
-use stewart_kinematics::io::settings::{Group, Setting};
+use stewart_kinematics::io::settings::Group;
+#[cfg(test)]
+use stewart_kinematics::io::settings::Setting;
+#[cfg(test)]
 use stewart_kinematics::model::link_settings::LinkSettings;
+#[cfg(test)]
 use stewart_kinematics::{
-    CheckReport, GeometryParams, Pose, Scenario, model::layout::Layout, solve::inverse::LegSolution,
+    CheckReport, GeometryParams, model::layout::Layout, solve::inverse::LegSolution,
 };
+use stewart_kinematics::{Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
 
 use crate::export::frames::default_camera;
@@ -48,73 +53,73 @@ use crate::viewer::state::teleop::{Command, PadState, Rates};
 /// Everything the viewer shows.
 pub struct ViewerState {
     /// The scenario, its undo history, what is derived from it and the last refused edit.
-    pub doc: Document,
+    pub(crate) doc: Document,
     /// Playback and the manual pose.
-    pub playback: Playback,
+    pub(crate) playback: Playback,
     /// Camera, colours, presentation mode, overlays.
     pub look: Look,
     /// The Scenario panel's file path and status.
-    pub files: Files,
+    pub(crate) files: Files,
     /// The Export panel.
-    pub exports: Exports,
+    pub(crate) exports: Exports,
     /// The link to hardware.
-    pub link: LiveLink,
+    pub(crate) link: LiveLink,
     /// Why the last edit of `[link]` was refused.
-    pub link_error: Option<String>,
+    pub(crate) link_error: Option<String>,
     /// Keyboard and gamepad moves of the manual pose.
-    pub teleop: Teleop,
+    pub(crate) teleop: Teleop,
     /// What is remembered between runs.
-    pub session: SessionState,
+    pub(crate) session: SessionState,
     /// Screenshots.
-    pub shots: crate::viewer::window::shots::Shots,
+    pub(crate) shots: crate::viewer::window::shots::Shots,
     /// The stroke an envelope of poses needs.
-    pub design: crate::viewer::tools::design::DesignTool,
+    pub(crate) design: crate::viewer::tools::design::DesignTool,
     /// The workspace surface and the conditioning slice in the 3D view.
     pub workspace: crate::viewer::tools::workspace::WorkspaceTool,
     /// The assembly modes of the legs shown, stepped through one by one.
-    pub assembly: crate::viewer::tools::assembly::AssemblyBrowser,
+    pub(crate) assembly: crate::viewer::tools::assembly::AssemblyBrowser,
     /// Why the last step to another assembly mode found none.
-    pub assembly_error: Option<crate::viewer::tools::assembly::NoMode>,
+    pub(crate) assembly_error: Option<crate::viewer::tools::assembly::NoMode>,
     /// Reach at the pose shown (orientation panel, manual sliders), cached.
     pub(crate) reach: crate::viewer::tools::reach::ReachCache,
     /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
-    pub modes: crate::viewer::tools::mode_view::ModeView,
+    pub(crate) modes: crate::viewer::tools::mode_view::ModeView,
     /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
     /// frame times.
-    pub quality: crate::viewer::window::quality::Quality,
+    pub(crate) quality: crate::viewer::window::quality::Quality,
     /// Ctrl+Q was pressed: the window closes as by its close button.
-    pub quit_asked: bool,
+    pub(crate) quit_asked: bool,
 }
 
 /// The saved session's state in this run.
 #[derive(Clone, Debug, Default)]
-pub struct SessionState {
+pub(crate) struct SessionState {
     /// Where sessions are kept; `None`: this run neither reads nor writes one (screenshots,
     /// tests, `--fresh`).
-    pub folder: Option<std::path::PathBuf>,
+    pub(crate) folder: Option<std::path::PathBuf>,
     /// Where the scenario came from, in words (a preset, a file).
-    pub origin: String,
+    pub(crate) origin: String,
     /// What happened to the saved session at start (broken, too old), shown once.
-    pub note: Option<String>,
+    pub(crate) note: Option<String>,
     /// *Reset to defaults* was pressed: nothing is saved when the window closes.
-    pub forgotten: bool,
+    pub(crate) forgotten: bool,
     /// egui's memory from the saved session, applied at the first frame.
-    pub panels: Option<String>,
+    pub(crate) panels: Option<String>,
 }
 
 /// Teleoperation's state.
 #[derive(Clone, Debug)]
-pub struct Teleop {
+pub(crate) struct Teleop {
     /// How fast a full command moves.
-    pub rates: Rates,
+    pub(crate) rates: Rates,
     /// Why the last move stopped at the edge of the reachable set.
-    pub blocked: Option<teleop::OutOfReach>,
+    pub(crate) blocked: Option<teleop::OutOfReach>,
     /// Whether input is moving the platform (the window keeps drawing).
-    pub moving: bool,
+    pub(crate) moving: bool,
     /// The gamepad's state this frame (set by the window; `None` without one).
-    pub pad: Option<PadState>,
+    pub(crate) pad: Option<PadState>,
     /// The gamepad's name, or why there is none.
-    pub pad_words: Option<String>,
+    pub(crate) pad_words: Option<String>,
 }
 
 impl ViewerState {
@@ -153,14 +158,14 @@ impl ViewerState {
 
     /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
     /// as edited when the scenario differs from the preset or file it came from.
-    pub fn title(&self) -> String {
+    pub(crate) fn title(&self) -> String {
         self.doc.title(self.look.lang)
     }
 
     /// Show the interface in `lang`. The status lines of files, exports and screenshots were
     /// written in the other language: they are cleared rather than left in it (the link's
     /// outcome stays: where an emergency stop left the platform is not to be lost).
-    pub fn set_language(&mut self, lang: crate::i18n::Lang) {
+    pub(crate) fn set_language(&mut self, lang: crate::i18n::Lang) {
         self.look.lang = lang;
         self.files.status = None;
         self.exports.status = None;
@@ -169,13 +174,14 @@ impl ViewerState {
 
     /// Change the `[link]` table: `change` works on a copy, kept only when the table is
     /// sound (else the reason shows in the Link panel).
-    pub fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
+    #[cfg(test)]
+    pub(crate) fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
         self.link_error = self.doc.edit_link(change).err();
     }
 
     /// Move the manual pose by a velocity command for `dt` seconds (keyboard and gamepad),
     /// stopping at the edge of the reachable set. Only in manual mode.
-    pub fn teleoperate(&mut self, command: Command, dt: f64) {
+    pub(crate) fn teleoperate(&mut self, command: Command, dt: f64) {
         self.teleop.moving = command.moving() && self.playback.mode == MotionMode::Manual;
         if !self.teleop.moving {
             return;
@@ -194,7 +200,7 @@ impl ViewerState {
     /// What the 3D view draws now in `theme`: the platform at the pose shown, the path so
     /// far, the switches of the look and, when on, the readout. The view and its
     /// screenshots draw the same list.
-    pub fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
+    pub(crate) fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
         // Live vehicle motion has no trajectory time nor path.
         let trajectory = self.playback.mode == MotionMode::Trajectory && !self.link.cueing_live();
         let path = if self.look.show_path && trajectory {
@@ -254,7 +260,7 @@ impl ViewerState {
     /// Take a screenshot as the Screenshot menu says (F12): the 3D view rendered again off
     /// screen on a thread of its own, or the whole window at the next frame. Playback goes
     /// on; the outcome shows in the menu.
-    pub fn take_screenshot(&mut self) {
+    pub(crate) fn take_screenshot(&mut self) {
         use crate::viewer::window::shots::{ShotKind, next_path};
         let path = next_path(&self.shots.folder, &self.doc.scenario().name);
         match self.shots.kind {
@@ -271,7 +277,7 @@ impl ViewerState {
     }
 
     /// What drives the platform, for the link's sender.
-    pub fn drive(&self) -> Drive {
+    pub(crate) fn drive(&self) -> Drive {
         if self.playback.mode == MotionMode::Trajectory && self.playback.playing {
             Drive::Playing {
                 time: self.playback.time,
@@ -284,20 +290,20 @@ impl ViewerState {
     }
 
     /// Start the link to hardware from the `[link]` table, following what the viewer shows.
-    pub fn connect_link(&mut self) {
+    pub(crate) fn connect_link(&mut self) {
         let drive = self.drive();
         let looping = self.playback.looping;
         self.link.connect(self.doc.scenario(), drive, looping);
     }
 
     /// The scenario shown.
-    pub fn scenario(&self) -> &Scenario {
+    pub(crate) fn scenario(&self) -> &Scenario {
         self.doc.scenario()
     }
 
     /// The scenario's edit path for a panel: the document, with playback kept within the
     /// trajectory.
-    pub fn editor(&mut self) -> Editor<'_> {
+    pub(crate) fn editor(&mut self) -> Editor<'_> {
         Editor::new(
             &mut self.doc,
             &mut self.playback,
@@ -308,7 +314,7 @@ impl ViewerState {
 
     /// [`Editor::edit`]: change the scenario through the one edit path. Returns whether
     /// the change was applied.
-    pub fn edit(
+    pub(crate) fn edit(
         &mut self,
         group: Group,
         change: impl FnOnce(&mut Scenario) -> Result<(), String>,
@@ -317,24 +323,27 @@ impl ViewerState {
     }
 
     /// [`Editor::apply`]: write one setting (`None`: switch an optional one off).
-    pub fn apply(&mut self, setting: &Setting, value: Option<f64>) {
+    #[cfg(test)]
+    pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) {
         self.editor().apply(setting, value);
     }
 
     /// Replace the geometry's numbers.
-    pub fn set_geometry(&mut self, params: GeometryParams) {
+    #[cfg(test)]
+    pub(crate) fn set_geometry(&mut self, params: GeometryParams) {
         self.doc.set_geometry(params);
     }
 
     /// Rewrite all twelve joint angles from a named layout.
-    pub fn set_layout(&mut self, layout: Layout) {
+    #[cfg(test)]
+    pub(crate) fn set_layout(&mut self, layout: Layout) {
         self.doc.set_layout(layout);
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
     /// presentation, file path, export settings). A running link is stopped first: it was
     /// built for the other platform.
-    pub fn load_scenario(&mut self, scenario: Scenario) {
+    pub(crate) fn load_scenario(&mut self, scenario: Scenario) {
         self.link.disconnect();
         self.teleop.rates = Rates::for_geometry(&scenario.geometry);
         self.teleop.blocked = None;
@@ -348,7 +357,7 @@ impl ViewerState {
 
     /// Forget the saved session and return the look, camera and panels to their defaults
     /// (the scenario stays); nothing is saved at exit.
-    pub fn reset_to_defaults(&mut self) {
+    pub(crate) fn reset_to_defaults(&mut self) {
         if let Some(folder) = &self.session.folder
             && let Err(e) = session::forget(folder)
         {
@@ -361,7 +370,7 @@ impl ViewerState {
     }
 
     /// Go back one edit (Ctrl+Z); returns whether there was one.
-    pub fn undo_edit(&mut self) -> bool {
+    pub(crate) fn undo_edit(&mut self) -> bool {
         let Some(left) = self.doc.undo() else {
             return false;
         };
@@ -370,7 +379,7 @@ impl ViewerState {
     }
 
     /// Do again the edit undone last (Ctrl+Shift+Z, Ctrl+Y); returns whether there was one.
-    pub fn redo_edit(&mut self) -> bool {
+    pub(crate) fn redo_edit(&mut self) -> bool {
         let Some(left) = self.doc.redo() else {
             return false;
         };
@@ -396,32 +405,35 @@ impl ViewerState {
 
     /// The named layout of the joint angles, `None` when they were edited one by one
     /// into no named layout.
-    pub fn layout(&self) -> Option<Layout> {
+    #[cfg(test)]
+    pub(crate) fn layout(&self) -> Option<Layout> {
         self.doc.layout()
     }
 
     /// Times and leg lengths for the plot.
-    pub fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
+    #[cfg(test)]
+    pub(crate) fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
         self.doc.plot_samples()
     }
 
     /// The pre-flight report of the trajectory, once computed (off the UI thread).
-    pub fn report(&self) -> Option<&CheckReport> {
+    #[cfg(test)]
+    pub(crate) fn report(&self) -> Option<&CheckReport> {
         self.doc.report()
     }
 
     /// Whether the report is still being computed.
-    pub fn report_pending(&self) -> bool {
+    pub(crate) fn report_pending(&self) -> bool {
         self.doc.report_pending()
     }
 
     /// Block until the report is in (screenshots and tests want a settled picture).
-    pub fn wait_for_report(&mut self) {
+    pub(crate) fn wait_for_report(&mut self) {
         self.doc.wait_for_report();
     }
 
     /// Collect what background work has finished: the report, an export. Never blocks.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         self.doc.poll();
         self.exports.poll();
         self.link.lang = self.look.lang;
@@ -438,7 +450,7 @@ impl ViewerState {
 
     /// When the workspace is shown, wait (at most thirty seconds) for its refinement at the
     /// pose shown (screenshots and tests want a settled picture).
-    pub fn settle_workspace(&mut self) {
+    pub(crate) fn settle_workspace(&mut self) {
         if self.workspace.show {
             let request = self.workspace_request();
             self.workspace.request(request);
@@ -448,7 +460,8 @@ impl ViewerState {
 
     /// Each manual-pose coordinate's reachable interval within its slider's `bounds` (pose
     /// coordinates: metres, radians), the others held.
-    pub fn slider_reach(&mut self, bounds: [[f64; 2]; 6]) -> [Option<[f64; 2]>; 6] {
+    #[cfg(test)]
+    pub(crate) fn slider_reach(&mut self, bounds: [[f64; 2]; 6]) -> [Option<[f64; 2]>; 6] {
         let pose = self.pose();
         self.reach.sliders(
             &self.doc.scenario().geometry,
@@ -459,7 +472,7 @@ impl ViewerState {
     }
 
     /// Roll, pitch, yaw alone and the roll–pitch map at the pose shown.
-    pub fn orientation_reach(&mut self) -> crate::viewer::tools::reach::OrientationReach {
+    pub(crate) fn orientation_reach(&mut self) -> crate::viewer::tools::reach::OrientationReach {
         let pose = self.pose();
         self.reach
             .orientation(
@@ -471,17 +484,17 @@ impl ViewerState {
     }
 
     /// The orientation the workspace is shown at: the pose's, or the one chosen.
-    pub fn workspace_orientation(&self) -> [stewart_kinematics::Angle; 3] {
+    pub(crate) fn workspace_orientation(&self) -> [stewart_kinematics::Angle; 3] {
         self.workspace.orientation_at(&self.pose())
     }
 
     /// The platform centre of the pose shown, metres.
-    pub fn centre(&self) -> Vector3<f64> {
+    pub(crate) fn centre(&self) -> Vector3<f64> {
         self.doc.scenario().geometry.platform_centre(&self.pose())
     }
 
     /// What the workspace is computed for now.
-    pub fn workspace_request(&self) -> crate::viewer::tools::workspace::Request {
+    pub(crate) fn workspace_request(&self) -> crate::viewer::tools::workspace::Request {
         let w = &self.workspace;
         let slice_at = w.show_slice.then(|| {
             if w.slice_follows {
@@ -508,13 +521,13 @@ impl ViewerState {
     }
 
     /// Duration of the trajectory, seconds.
-    pub fn duration(&self) -> f64 {
+    pub(crate) fn duration(&self) -> f64 {
         self.doc.scenario().motion.sampling.duration()
     }
 
     /// The pose shown now: while the link drives the platform, the pose it commands (what
     /// goes to the hardware, whatever the source); otherwise the one played or set.
-    pub fn pose(&self) -> Pose {
+    pub(crate) fn pose(&self) -> Pose {
         self.link
             .commanded_pose()
             .unwrap_or_else(|| self.played_pose())
@@ -522,7 +535,7 @@ impl ViewerState {
 
     /// The pose the viewer itself plays or holds (the trajectory at the playback time, or
     /// the manual pose): what the link follows unless it cues live vehicle motion.
-    pub fn played_pose(&self) -> Pose {
+    pub(crate) fn played_pose(&self) -> Pose {
         match self.playback.mode {
             MotionMode::Manual => self.playback.manual,
             MotionMode::Trajectory => {
@@ -538,7 +551,7 @@ impl ViewerState {
 
     /// Show the next assembly mode of the legs (or servo angles) shown now: the platform
     /// in another pose with the same actuators, in manual mode.
-    pub fn next_assembly_mode(&mut self) {
+    pub(crate) fn next_assembly_mode(&mut self) {
         let pose = self.pose();
         match self.assembly.next(&self.doc.scenario().geometry, &pose) {
             Ok(next) => {
@@ -554,25 +567,26 @@ impl ViewerState {
     }
 
     /// The platform centre's path from the start of the trajectory up to now.
-    pub fn path_until_now(&self) -> Vec<Vector3<f64>> {
+    pub(crate) fn path_until_now(&self) -> Vec<Vector3<f64>> {
         let now = self.doc.scenario().motion.sampling.start() + self.playback.time;
         self.doc.path_until(now)
     }
 
     /// Legs of the pose shown now.
-    pub fn legs(&self) -> LegSolution {
+    #[cfg(test)]
+    pub(crate) fn legs(&self) -> LegSolution {
         self.doc.scenario().geometry.inverse(&self.pose())
     }
 
     /// The colour theme (presentation mode is always light).
-    pub fn theme(&self) -> Theme {
+    pub(crate) fn theme(&self) -> Theme {
         self.look.theme()
     }
 
     /// Whether the window must keep drawing: playback runs, the manual-mode history is
     /// still scrolling, an export runs, a report is being computed, or the link streams
     /// (its state is shown live).
-    pub fn animating(&self) -> bool {
+    pub(crate) fn animating(&self) -> bool {
         self.playback.animating()
             || self.teleop.moving
             || self.exports.job.is_some()
@@ -585,7 +599,7 @@ impl ViewerState {
 
     /// Whether the plot shows the rolling history of the values shown (manual mode, or
     /// the link following live vehicle motion) rather than the trajectory's.
-    pub fn plot_rolls(&self) -> bool {
+    pub(crate) fn plot_rolls(&self) -> bool {
         self.playback.mode == MotionMode::Manual || self.link.cueing_live()
     }
 
@@ -608,7 +622,7 @@ impl ViewerState {
     }
 
     /// Look from a standard direction (azimuth, elevation in degrees), keeping the framing.
-    pub fn look_from(&mut self, azimuth_deg: f32, elevation_deg: f32) {
+    pub(crate) fn look_from(&mut self, azimuth_deg: f32, elevation_deg: f32) {
         let framed = default_camera(self.doc.scenario());
         self.look.camera = OrbitCamera {
             azimuth_deg,
@@ -622,7 +636,7 @@ impl ViewerState {
     /// motion sweeps (the pose shown, in manual mode) with the controls hidden, and fitted
     /// again while the layout settles or the window changes, as long as nobody moved it;
     /// on leaving, the camera and the plot's height from before come back.
-    pub fn frame_for_presentation(&mut self, aspect: f32) {
+    pub(crate) fn frame_for_presentation(&mut self, aspect: f32) {
         match (self.look.presentation, self.look.camera_before_presentation) {
             (true, None) => {
                 self.look.camera_before_presentation = Some(self.look.camera);
@@ -724,7 +738,7 @@ impl ViewerState {
 
     /// Fit the camera, its angles kept, to the platform at the pose shown in a view of
     /// `aspect` (the toolbar's *Fit*).
-    pub fn fit_camera(&mut self, aspect: f32) {
+    pub(crate) fn fit_camera(&mut self, aspect: f32) {
         let c = self.look.camera;
         if let Some(fitted) = OrbitCamera::fitting_points(
             c.azimuth_deg,
@@ -740,7 +754,7 @@ impl ViewerState {
 
     /// Whether every solid of the platform at the pose shown projects inside a view of
     /// `aspect`.
-    pub fn scene_in_view(&self, aspect: f32) -> bool {
+    pub(crate) fn scene_in_view(&self, aspect: f32) -> bool {
         let matrix = self.look.camera.fitted_to(aspect).view_proj(aspect);
         self.scene_points().iter().all(|p| {
             let ndc = matrix.project_point3(*p);
@@ -750,7 +764,7 @@ impl ViewerState {
 
     /// Called by the view each frame: after an edit of the platform (another geometry
     /// than the one last checked), a scene that left the view is fitted again.
-    pub fn follow_geometry(&mut self, aspect: f32) {
+    pub(crate) fn follow_geometry(&mut self, aspect: f32) {
         let params = self.doc.scenario().geometry.params();
         if self.look.geometry_seen.as_ref() == Some(params) {
             return;
@@ -763,7 +777,7 @@ impl ViewerState {
     }
 
     /// Step playback by one trajectory sample (`direction` ±1).
-    pub fn step(&mut self, direction: f64) {
+    pub(crate) fn step(&mut self, direction: f64) {
         let step = direction * self.doc.scenario().motion.sampling.step();
         let duration = self.duration();
         self.playback.step(step, duration);

@@ -7,7 +7,7 @@ use crate::viewer::state::history::History;
 
 /// What drives the platform.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MotionMode {
+pub(crate) enum MotionMode {
     /// The scenario's trajectory, played back.
     Trajectory,
     /// Six sliders.
@@ -16,37 +16,37 @@ pub enum MotionMode {
 
 /// Playback and the manual pose.
 #[derive(Clone, Debug)]
-pub struct Playback {
+pub(crate) struct Playback {
     /// What drives the platform.
-    pub mode: MotionMode,
+    pub(crate) mode: MotionMode,
     /// The pose of manual mode.
-    pub manual: Pose,
+    pub(crate) manual: Pose,
     /// Playback time, seconds from the trajectory's start.
-    pub time: f64,
+    pub(crate) time: f64,
     /// Whether playback runs.
-    pub playing: bool,
+    pub(crate) playing: bool,
     /// Playback speed factor.
-    pub speed: f64,
+    pub(crate) speed: f64,
     /// Start again at the end.
-    pub looping: bool,
+    pub(crate) looping: bool,
     /// Wall-clock seconds since the viewer started (drives the manual-mode history).
-    pub clock: f64,
+    pub(crate) clock: f64,
     /// Leg lengths of manual mode over the last seconds.
-    pub history: History,
+    pub(crate) history: History,
     /// Frames drawn per second of wall time while playing, smoothed over about a second
     /// (`None` until measured).
-    pub frame_rate: Option<f64>,
+    pub(crate) frame_rate: Option<f64>,
 }
 
 /// The longest step of time one frame makes, seconds: a longer stall (the machine slept,
 /// the window was dragged) is not played through.
-pub const MAX_FRAME_STEP_S: f64 = 1.0;
+pub(crate) const MAX_FRAME_STEP_S: f64 = 1.0;
 
 /// The time a frame moves playback on: the wall time since the last frame, whole (a slow
 /// machine skips frames, it does not play slower), when the last frame left something
 /// moving; zero after an idle wait, so that the time the window sat paused is not played
 /// through when Play is pressed.
-pub fn frame_step(since_last_frame_s: f64, was_moving: bool) -> f64 {
+pub(crate) fn frame_step(since_last_frame_s: f64, was_moving: bool) -> f64 {
     if was_moving && since_last_frame_s.is_finite() {
         since_last_frame_s.clamp(0.0, MAX_FRAME_STEP_S)
     } else {
@@ -55,11 +55,11 @@ pub fn frame_step(since_last_frame_s: f64, was_moving: bool) -> f64 {
 }
 
 /// Below this many frames a second, the viewer says that it skips frames to keep time.
-pub const SMOOTH_FRAME_RATE: f64 = 20.0;
+pub(crate) const SMOOTH_FRAME_RATE: f64 = 20.0;
 
 impl Playback {
     /// Playing the trajectory from its start; the manual pose at `home`.
-    pub fn new(home: Pose) -> Self {
+    pub(crate) fn new(home: Pose) -> Self {
         Self {
             mode: MotionMode::Trajectory,
             manual: home,
@@ -76,7 +76,7 @@ impl Playback {
     /// Move playback on by `dt` seconds of wall time over a trajectory `duration` long
     /// (the whole `dt` however long a frame took: playback keeps true time and skips
     /// frames when drawing is slow); returns whether the time moved.
-    pub fn play(&mut self, dt: f64, duration: f64) -> bool {
+    pub(crate) fn play(&mut self, dt: f64, duration: f64) -> bool {
         if !self.is_playing() {
             self.frame_rate = None;
             return false;
@@ -103,38 +103,38 @@ impl Playback {
     }
 
     /// Whether the trajectory is playing (not paused, not in manual mode).
-    pub fn is_playing(&self) -> bool {
+    pub(crate) fn is_playing(&self) -> bool {
         self.playing && self.mode == MotionMode::Trajectory
     }
 
     /// Play or pause the trajectory (from manual mode: play it).
-    pub fn toggle(&mut self) {
+    pub(crate) fn toggle(&mut self) {
         self.playing = !self.is_playing();
         self.mode = MotionMode::Trajectory;
     }
 
     /// The measured frame rate when it is too low for smooth playback: frames are being
     /// skipped to keep time.
-    pub fn skipping_frames(&self) -> Option<f64> {
+    pub(crate) fn skipping_frames(&self) -> Option<f64> {
         self.frame_rate
             .filter(|r| self.is_playing() && *r < SMOOTH_FRAME_RATE)
     }
 
     /// Show the trajectory paused at `time` seconds from its start, within `[0, duration]`.
-    pub fn pause_at(&mut self, time: f64, duration: f64) {
+    pub(crate) fn pause_at(&mut self, time: f64, duration: f64) {
         self.mode = MotionMode::Trajectory;
         self.playing = false;
         self.time = time.clamp(0.0, duration);
     }
 
     /// Stop and step by `step` seconds (one sample, signed), within `[0, duration]`.
-    pub fn step(&mut self, step: f64, duration: f64) {
+    pub(crate) fn step(&mut self, step: f64, duration: f64) {
         self.playing = false;
         self.time = (self.time + step).clamp(0.0, duration);
     }
 
     /// Whether the window must keep drawing for playback or the history.
-    pub fn animating(&self) -> bool {
+    pub(crate) fn animating(&self) -> bool {
         match self.mode {
             MotionMode::Trajectory => self.playing,
             MotionMode::Manual => self.history.recently_changed(self.clock),

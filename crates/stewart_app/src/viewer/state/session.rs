@@ -15,49 +15,49 @@ use crate::i18n::Lang;
 use crate::viewer::state::look::Look;
 
 /// The session file's format; a file of another version is ignored.
-pub const VERSION: u32 = 1;
+pub(crate) const VERSION: u32 = 1;
 
 /// What the viewer remembers.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Session {
+pub(crate) struct Session {
     /// [`VERSION`] when written.
-    pub version: u32,
+    pub(crate) version: u32,
     /// Where the scenario came from: a preset name or a file path, in words.
-    pub origin: String,
+    pub(crate) origin: String,
     /// The scenario as shown (TOML, edits included).
-    pub scenario: String,
+    pub(crate) scenario: String,
     /// Camera azimuth, elevation (degrees), distance and target (metres).
-    pub camera: [f32; 6],
+    pub(crate) camera: [f32; 6],
     /// Light theme.
-    pub light_theme: bool,
+    pub(crate) light_theme: bool,
     /// The traced path.
-    pub show_path: bool,
+    pub(crate) show_path: bool,
     /// The platform's axes.
-    pub platform_axes: bool,
+    pub(crate) platform_axes: bool,
     /// Legs in their plot colours.
-    pub coloured_legs: bool,
+    pub(crate) coloured_legs: bool,
     /// Leg labels.
-    pub labels: bool,
+    pub(crate) labels: bool,
     /// The head-up readout.
-    pub readouts: bool,
+    pub(crate) readouts: bool,
     /// Window size, logical pixels.
-    pub window: [u32; 2],
+    pub(crate) window: [u32; 2],
     /// egui's memory (open panels, scroll positions), as egui writes it.
-    pub panels: Option<String>,
+    pub(crate) panels: Option<String>,
     /// The interface's language (absent in sessions written before it was remembered).
     #[serde(default)]
-    pub lang: Option<Lang>,
+    pub(crate) lang: Option<Lang>,
     /// The files opened or saved last, newest first (absent in older sessions).
     #[serde(default)]
-    pub recent: Vec<String>,
+    pub(crate) recent: Vec<String>,
     /// The export window's choices (absent in older sessions).
     #[serde(default)]
-    pub export: Option<crate::viewer::state::exports::ExportForm>,
+    pub(crate) export: Option<crate::viewer::state::exports::ExportForm>,
 }
 
 impl Session {
     /// The session of what the viewer shows now.
-    pub fn capture(
+    pub(crate) fn capture(
         scenario: &Scenario,
         origin: &str,
         look: &Look,
@@ -92,14 +92,14 @@ impl Session {
     }
 
     /// The saved scenario, or why it no longer reads.
-    pub fn scenario(&self) -> Result<Scenario, String> {
+    pub(crate) fn scenario(&self) -> Result<Scenario, String> {
         Scenario::from_toml_str(&self.scenario, "the saved session", None)
             .map_err(|e| e.to_string())
     }
 
     /// The saved window size, when it is one a screen can show (320×240 to 8192×8192; a
     /// damaged file's 4294967295² is not taken).
-    pub fn window_size(&self) -> Option<(u32, u32)> {
+    pub(crate) fn window_size(&self) -> Option<(u32, u32)> {
         let [w, h] = self.window;
         ((320..=8192).contains(&w) && (240..=8192).contains(&h)).then_some((w, h))
     }
@@ -107,7 +107,7 @@ impl Session {
     /// Put the saved look (and camera, when it is a usable one: finite, within the bounds a
     /// camera takes anywhere — angles ±3600°, distance up to 10 km, target within 1 km)
     /// on `look`.
-    pub fn restore_look(&self, look: &mut Look) {
+    pub(crate) fn restore_look(&self, look: &mut Look) {
         use stewart_kinematics::io::bounds::{ANGLE_DEG, LENGTH_M};
         let [azimuth_deg, elevation_deg, distance, x, y, z] = self.camera;
         let within = |v: f32, limit: f64| v.is_finite() && f64::from(v.abs()) <= limit;
@@ -137,7 +137,7 @@ impl Session {
 }
 
 /// The folder the session lives in (`None`: the platform has none).
-pub fn folder() -> Option<PathBuf> {
+pub(crate) fn folder() -> Option<PathBuf> {
     match std::env::var_os("STEWART_CONFIG_DIR") {
         Some(dir) if !dir.is_empty() => Some(PathBuf::from(dir)),
         _ => dirs::config_dir().map(|d| d.join("stewart")),
@@ -145,14 +145,14 @@ pub fn folder() -> Option<PathBuf> {
 }
 
 /// The session file in `folder`.
-pub fn file_in(folder: &std::path::Path) -> PathBuf {
+pub(crate) fn file_in(folder: &std::path::Path) -> PathBuf {
     folder.join("session.json")
 }
 
 /// The saved session in `folder`: `Ok(None)` when there is none; `Err(note)` when the file
 /// is broken, of another version or unreadable (it is then left alone and the viewer
 /// starts fresh).
-pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, String> {
+pub(crate) fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, String> {
     let path = file_in(folder);
     let unreadable = |why: &dyn std::fmt::Display| {
         lang.fmt(
@@ -193,10 +193,10 @@ pub fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, Str
 
 /// The largest session file read, bytes (a session is a few kilobytes: its scenario and the
 /// panels' memory).
-pub const MAX_SESSION_BYTES: u64 = 4 << 20;
+pub(crate) const MAX_SESSION_BYTES: u64 = 4 << 20;
 
 /// Write the session into `folder` (whole or not at all).
-pub fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
+pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
     std::fs::create_dir_all(folder)
         .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
     let text = serde_json::to_string_pretty(session).map_err(|e| e.to_string())?;
@@ -245,7 +245,7 @@ fn is_character_device(meta: &std::fs::Metadata) -> bool {
 }
 
 /// Forget the session saved in `folder`.
-pub fn forget(folder: &std::path::Path) -> Result<(), String> {
+pub(crate) fn forget(folder: &std::path::Path) -> Result<(), String> {
     let path = file_in(folder);
     match std::fs::remove_file(&path) {
         Ok(()) => Ok(()),

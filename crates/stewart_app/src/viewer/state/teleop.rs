@@ -22,21 +22,21 @@ const EDGE_STEPS: usize = 30;
 
 /// A velocity command: each axis (x, y, z, roll, pitch, yaw) from −1 to 1 of its rate.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Command {
+pub(crate) struct Command {
     /// Fractions of the rates, in pose order.
-    pub velocity: [f64; 6],
+    pub(crate) velocity: [f64; 6],
     /// Move at a fifth of the rates.
-    pub fine: bool,
+    pub(crate) fine: bool,
 }
 
 impl Command {
     /// Whether it moves anything.
-    pub fn moving(&self) -> bool {
+    pub(crate) fn moving(&self) -> bool {
         self.velocity.iter().any(|v| *v != 0.0)
     }
 
     /// Both commands together, each axis clamped to ±1.
-    pub fn plus(self, other: Command) -> Command {
+    pub(crate) fn plus(self, other: Command) -> Command {
         Command {
             velocity: std::array::from_fn(|k| {
                 (self.velocity[k] + other.velocity[k]).clamp(-1.0, 1.0)
@@ -47,7 +47,7 @@ impl Command {
 }
 
 /// The keys of each axis, (positive, negative), in pose order.
-pub const KEYS: [(egui::Key, egui::Key); 6] = [
+pub(crate) const KEYS: [(egui::Key, egui::Key); 6] = [
     (egui::Key::W, egui::Key::S),
     (egui::Key::A, egui::Key::D),
     (egui::Key::R, egui::Key::F),
@@ -57,7 +57,7 @@ pub const KEYS: [(egui::Key, egui::Key); 6] = [
 ];
 
 /// The command of the keys held down (`down` tells whether a key is held).
-pub fn from_keys(down: impl Fn(egui::Key) -> bool, shift: bool) -> Command {
+pub(crate) fn from_keys(down: impl Fn(egui::Key) -> bool, shift: bool) -> Command {
     Command {
         velocity: KEYS.map(|(plus, minus)| {
             f64::from(u8::from(down(plus))) - f64::from(u8::from(down(minus)))
@@ -69,22 +69,22 @@ pub fn from_keys(down: impl Fn(egui::Key) -> bool, shift: bool) -> Command {
 /// What a gamepad reports: sticks from −1 to 1 (up and right positive), the D-pad, the
 /// dead-man (left bumper) and fine (right bumper) buttons.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PadState {
+pub(crate) struct PadState {
     /// Left stick x, y.
-    pub left: [f32; 2],
+    pub(crate) left: [f32; 2],
     /// Right stick x, y.
-    pub right: [f32; 2],
+    pub(crate) right: [f32; 2],
     /// D-pad x (right +1), y (up +1).
-    pub dpad: [i8; 2],
+    pub(crate) dpad: [i8; 2],
     /// The dead-man button is held.
-    pub deadman: bool,
+    pub(crate) deadman: bool,
     /// The fine button is held.
-    pub fine: bool,
+    pub(crate) fine: bool,
 }
 
 /// The command of a gamepad: nothing unless the dead-man button is held; stick travel
 /// inside the dead zone counts as zero and the rest is rescaled to reach 1.
-pub fn from_pad(p: &PadState) -> Command {
+pub(crate) fn from_pad(p: &PadState) -> Command {
     if !p.deadman {
         return Command::default();
     }
@@ -111,16 +111,16 @@ pub fn from_pad(p: &PadState) -> Command {
 
 /// How fast a full command moves the platform.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rates {
+pub(crate) struct Rates {
     /// Metres per second along x, y, z.
-    pub linear_m_s: f64,
+    pub(crate) linear_m_s: f64,
     /// Degrees per second about roll, pitch, yaw.
-    pub angular_deg_s: f64,
+    pub(crate) angular_deg_s: f64,
 }
 
 impl Rates {
     /// A quarter of the platform radius per second, 15° per second.
-    pub fn for_geometry(g: &Geometry) -> Self {
+    pub(crate) fn for_geometry(g: &Geometry) -> Self {
         Self {
             linear_m_s: 0.25 * g.plate_radius(stewart_kinematics::model::geometry::Plate::Platform),
             angular_deg_s: 15.0,
@@ -130,7 +130,7 @@ impl Rates {
 
 /// Why a pose cannot be taken.
 #[derive(Clone, Debug, PartialEq)]
-pub enum OutOfReach {
+pub(crate) enum OutOfReach {
     /// A coordinate is NaN or infinite.
     NotANumber,
     /// No horn angle of servo `servo` (from 1) closes its rod; `ratio` is |L|/√(M²+N²)
@@ -158,7 +158,7 @@ pub enum OutOfReach {
 
 impl OutOfReach {
     /// The reason in `lang`.
-    pub fn words(&self, lang: Lang) -> String {
+    pub(crate) fn words(&self, lang: Lang) -> String {
         match *self {
             OutOfReach::NotANumber => lang.tr("teleop.not_a_number").to_owned(),
             OutOfReach::Servo { servo, ratio } => lang.fmt(
@@ -199,7 +199,7 @@ impl OutOfReach {
 
 /// Why `pose` cannot be taken: a leg outside its stroke, a servo outside its range or
 /// unable to reach; `None` when it can.
-pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
+pub(crate) fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
     let c = pose.to_coordinates();
     if c.iter().any(|v| !v.is_finite()) {
         return Some(OutOfReach::NotANumber);
@@ -235,7 +235,7 @@ pub fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
 /// Move `pose` by `command` for `dt` seconds at `rates`. A move that would leave the
 /// reachable set stops at its edge (found by bisection) and returns the reason; from a pose
 /// already outside, moves are free (so that one can come back).
-pub fn step(
+pub(crate) fn step(
     g: &Geometry,
     pose: &Pose,
     command: &Command,

@@ -5,11 +5,11 @@
 use stewart_kinematics::Scenario;
 
 /// Steps kept; the oldest go first.
-pub const DEPTH: usize = 200;
+pub(crate) const DEPTH: usize = 200;
 
 /// The scenarios before the present one, and those undone.
 #[derive(Debug, Default)]
-pub struct Undo {
+pub(crate) struct Undo {
     past: Vec<Scenario>,
     future: Vec<Scenario>,
     /// An edit gesture is under way: further edits join its step.
@@ -19,7 +19,7 @@ pub struct Undo {
 impl Undo {
     /// The scenario is about to change from `before`: start a step (unless one gesture's
     /// step is open) and forget what was undone.
-    pub fn record(&mut self, before: &Scenario) {
+    pub(crate) fn record(&mut self, before: &Scenario) {
         if !self.open {
             if self.past.len() == DEPTH {
                 self.past.remove(0);
@@ -31,12 +31,12 @@ impl Undo {
     }
 
     /// The gesture ended (no button held): the next edit starts a new step.
-    pub fn seal(&mut self) {
+    pub(crate) fn seal(&mut self) {
         self.open = false;
     }
 
     /// The scenario before `present`, if any (`present` can be redone).
-    pub fn undo(&mut self, present: &Scenario) -> Option<Scenario> {
+    pub(crate) fn undo(&mut self, present: &Scenario) -> Option<Scenario> {
         self.open = false;
         let before = self.past.pop()?;
         self.future.push(present.clone());
@@ -44,7 +44,7 @@ impl Undo {
     }
 
     /// The scenario undone last, if any (`present` can be undone again).
-    pub fn redo(&mut self, present: &Scenario) -> Option<Scenario> {
+    pub(crate) fn redo(&mut self, present: &Scenario) -> Option<Scenario> {
         self.open = false;
         let after = self.future.pop()?;
         self.past.push(present.clone());
@@ -52,12 +52,12 @@ impl Undo {
     }
 
     /// Whether there is a step to undo.
-    pub fn can_undo(&self) -> bool {
+    pub(crate) fn can_undo(&self) -> bool {
         !self.past.is_empty()
     }
 
     /// Whether there is a step to redo.
-    pub fn can_redo(&self) -> bool {
+    pub(crate) fn can_redo(&self) -> bool {
         !self.future.is_empty()
     }
 }

@@ -9,20 +9,20 @@ use stewart_kinematics::{Scenario, model::trajectory::Motion};
 
 /// The recording and what the washout made of it for a scenario.
 #[derive(Clone, Debug)]
-pub struct VehicleSource {
+pub(crate) struct VehicleSource {
     /// The file, for messages.
-    pub name: String,
+    pub(crate) name: String,
     /// Time and motion of each sample.
-    pub samples: Arc<Vec<(f64, VehicleMotion)>>,
+    pub(crate) samples: Arc<Vec<(f64, VehicleMotion)>>,
     /// The motion cued from it (the scenario's while the two are equal).
-    pub motion: Motion,
+    pub(crate) motion: Motion,
     /// The poses, limiter scales and cues per sample.
-    pub cued: CuedRecording,
+    pub(crate) cued: CuedRecording,
 }
 
 impl VehicleSource {
     /// Cue `samples` (from the file `name`) for `scenario`.
-    pub fn new(
+    pub(crate) fn new(
         name: &str,
         samples: Arc<Vec<(f64, VehicleMotion)>>,
         scenario: &Scenario,
@@ -46,12 +46,12 @@ impl VehicleSource {
 
     /// The same recording cued for `scenario` (after an edit of its cueing, geometry or
     /// limits).
-    pub fn recue(&self, scenario: &Scenario) -> Result<Self, String> {
+    pub(crate) fn recue(&self, scenario: &Scenario) -> Result<Self, String> {
         Self::new(&self.name, Arc::clone(&self.samples), scenario)
     }
 
     /// The times of the samples.
-    pub fn times(&self) -> impl Iterator<Item = f64> + '_ {
+    pub(crate) fn times(&self) -> impl Iterator<Item = f64> + '_ {
         self.samples.iter().map(|s| s.0)
     }
 }

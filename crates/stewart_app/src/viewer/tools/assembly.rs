@@ -17,16 +17,16 @@ struct Key {
 
 /// The modes of the last legs asked about, and which one is shown.
 #[derive(Clone, Debug, Default)]
-pub struct AssemblyBrowser {
+pub(crate) struct AssemblyBrowser {
     key: Option<Key>,
     modes: Vec<Pose>,
     /// Index of the mode shown and how many there are, after a step.
-    pub shown: Option<(usize, usize)>,
+    pub(crate) shown: Option<(usize, usize)>,
 }
 
 /// Why no other mode can be shown.
 #[derive(Clone, Debug, PartialEq)]
-pub enum NoMode {
+pub(crate) enum NoMode {
     /// The geometry is architecturally singular: the legs do not determine the pose.
     Singular,
     /// A servo cannot reach its joint at the pose shown.
@@ -43,7 +43,7 @@ const SAME_ACTUATION: f64 = 1e-9;
 impl AssemblyBrowser {
     /// The mode after the one at `pose`, among the modes of the legs (or servo angles)
     /// that hold `pose` on `geometry`: the pose to show, or why there is none.
-    pub fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, NoMode> {
+    pub(crate) fn next(&mut self, geometry: &Geometry, pose: &Pose) -> Result<Pose, NoMode> {
         let actuation = geometry
             .actuator_values_at(pose)
             .map_err(NoMode::Unreachable)?;

@@ -8,17 +8,17 @@ use stewart_kinematics::{Geometry, Pose};
 use crate::viewer::tools::job::Job;
 
 /// The envelope, the search running, the last outcome.
-pub struct DesignTool {
+pub(crate) struct DesignTool {
     /// The envelope: for x, y, z (m) and roll, pitch, yaw (°), how far below and above the
     /// home pose it reaches (`[0, 0]`: the coordinate stays at home).
-    pub spans: [[f64; 2]; 6],
+    pub(crate) spans: [[f64; 2]; 6],
     /// The last outcome: the report, or why the envelope was refused.
-    pub result: Option<Result<DesignReport, String>>,
+    pub(crate) result: Option<Result<DesignReport, String>>,
     job: Job<DesignReport>,
 }
 
 /// The envelope's coordinates, as `stewart design --envelope` names them.
-pub const COORDINATES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
+pub(crate) const COORDINATES: [&str; 6] = ["x", "y", "z", "roll", "pitch", "yaw"];
 
 impl Default for DesignTool {
     fn default() -> Self {
@@ -40,7 +40,7 @@ impl Default for DesignTool {
 impl DesignTool {
     /// The envelope about `home`, or why there is none (no coordinate with a range, or a
     /// range whose lower end is above its upper end).
-    pub fn envelope(&self, home: &Pose) -> Result<Envelope, String> {
+    pub(crate) fn envelope(&self, home: &Pose) -> Result<Envelope, String> {
         if let Some((k, [a, b])) = self
             .spans
             .iter()
@@ -66,7 +66,7 @@ impl DesignTool {
 
     /// The same envelope in `stewart design --envelope` syntax (±A about home, absolute
     /// A..B otherwise), for the command line.
-    pub fn command_line(&self, home: &Pose) -> String {
+    pub(crate) fn command_line(&self, home: &Pose) -> String {
         let h = home.to_coordinates();
         let parts: Vec<String> = self
             .spans
@@ -87,7 +87,7 @@ impl DesignTool {
 
     /// Start the search for `geometry` on its own thread (a bad envelope is refused at
     /// once, with its reason).
-    pub fn start(&mut self, geometry: &Geometry) {
+    pub(crate) fn start(&mut self, geometry: &Geometry) {
         let envelope = match self.envelope(&geometry.home_pose()) {
             Ok(e) => e,
             Err(e) => {
@@ -105,19 +105,20 @@ impl DesignTool {
     }
 
     /// Whether a search runs.
-    pub fn busy(&self) -> bool {
+    pub(crate) fn busy(&self) -> bool {
         self.job.busy()
     }
 
     /// Collect a finished search.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         if let Some(outcome) = self.job.poll() {
             self.result = Some(outcome.map_err(|e| e.to_string()));
         }
     }
 
     /// Wait for the running search (tests).
-    pub fn wait(&mut self) {
+    #[cfg(test)]
+    pub(crate) fn wait(&mut self) {
         if let Some(outcome) = self.job.wait() {
             self.result = Some(outcome.map_err(|e| e.to_string()));
         }

@@ -14,32 +14,32 @@ use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread::JoinHandle;
 
 /// The work's side: its cancel flag and where its results go.
-pub struct Worker<T> {
+pub(crate) struct Worker<T> {
     cancel: Arc<AtomicBool>,
     results: Sender<T>,
 }
 
 impl<T> Worker<T> {
     /// Whether newer work (or the user) asked this work to stop.
-    pub fn cancelled(&self) -> bool {
+    pub(crate) fn cancelled(&self) -> bool {
         self.cancel.load(Ordering::Relaxed)
     }
 
     /// The cancel flag itself, for code that watches a flag of its own (the workspace's
     /// columns, an export's frames).
-    pub fn cancel_flag(&self) -> Arc<AtomicBool> {
+    pub(crate) fn cancel_flag(&self) -> Arc<AtomicBool> {
         Arc::clone(&self.cancel)
     }
 
     /// Hand a result to the UI; `false` once nobody will read it.
-    pub fn send(&self, result: T) -> bool {
+    pub(crate) fn send(&self, result: T) -> bool {
         self.results.send(result).is_ok()
     }
 }
 
 /// Why a job gave no result.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum JobFailed {
+pub(crate) enum JobFailed {
     /// The thread could not be started.
     NotStarted(String),
     /// The work panicked.
@@ -68,7 +68,7 @@ struct Running<T> {
 }
 
 /// One background job (see the module docs).
-pub struct Job<T> {
+pub(crate) struct Job<T> {
     name: &'static str,
     running: Option<Running<T>>,
     pending: Option<Work<T>>,
@@ -78,7 +78,7 @@ pub struct Job<T> {
 
 impl<T: Send + 'static> Job<T> {
     /// An idle job whose threads are called `name`.
-    pub fn new(name: &'static str) -> Self {
+    pub(crate) fn new(name: &'static str) -> Self {
         Self {
             name,
             running: None,
@@ -91,7 +91,7 @@ impl<T: Send + 'static> Job<T> {
     /// Ask for `work`: work in flight is cancelled and its results dropped; `work` starts
     /// at once when nothing runs, else once the cancelled work has ended (at a later
     /// [`Job::poll`] or [`Job::wait`]). Work asked for meanwhile replaces it.
-    pub fn start(&mut self, work: impl FnOnce(&Worker<T>) + Send + 'static) {
+    pub(crate) fn start(&mut self, work: impl FnOnce(&Worker<T>) + Send + 'static) {
         if let Some(running) = &mut self.running
             && !running.stale
         {
@@ -106,7 +106,7 @@ impl<T: Send + 'static> Job<T> {
 
     /// The newest result of the current work since the last poll (older ones that
     /// arrived meanwhile are skipped), or why it gave none; never blocks.
-    pub fn poll(&mut self) -> Option<Result<T, JobFailed>> {
+    pub(crate) fn poll(&mut self) -> Option<Result<T, JobFailed>> {
         let newest = self.collect(false);
         self.advance();
         newest
@@ -114,7 +114,7 @@ impl<T: Send + 'static> Job<T> {
 
     /// Wait until no work is in flight or asked for, and return the newest result of the
     /// last work (tests, screenshots, shutdown).
-    pub fn wait(&mut self) -> Option<Result<T, JobFailed>> {
+    pub(crate) fn wait(&mut self) -> Option<Result<T, JobFailed>> {
         let mut newest = None;
         loop {
             if let Some(r) = self.collect(true) {
@@ -128,13 +128,13 @@ impl<T: Send + 'static> Job<T> {
     }
 
     /// Whether work is in flight or waiting to start.
-    pub fn busy(&self) -> bool {
+    pub(crate) fn busy(&self) -> bool {
         self.running.as_ref().is_some_and(|r| !r.stale) || self.pending.is_some()
     }
 
     /// Ask the work in flight to stop (it keeps its results: an export says it was
     /// cancelled), and drop work waiting to start.
-    pub fn cancel(&mut self) {
+    pub(crate) fn cancel(&mut self) {
         self.pending = None;
         if let Some(running) = &self.running {
             running.cancel.store(true, Ordering::Relaxed);
@@ -142,14 +142,16 @@ impl<T: Send + 'static> Job<T> {
     }
 
     /// Whether the work in flight was asked to stop.
-    pub fn cancelling(&self) -> bool {
+    #[cfg(test)]
+    pub(crate) fn cancelling(&self) -> bool {
         self.running
             .as_ref()
             .is_some_and(|r| r.cancel.load(Ordering::Relaxed))
     }
 
     /// Work replaced by newer work before it ended.
-    pub fn replaced(&self) -> usize {
+    #[cfg(test)]
+    pub(crate) fn replaced(&self) -> usize {
         self.replaced
     }
 

@@ -3,9 +3,9 @@
 //! [`design`] search, [`reach`] at the pose shown, the Dynamics panel's [`mode_view`], and
 //! the [`assembly`] modes of the legs shown.
 
-pub mod assembly;
-pub mod design;
-pub mod job;
-pub mod mode_view;
-pub mod reach;
-pub mod workspace;
+pub(crate) mod assembly;
+pub(crate) mod design;
+pub(crate) mod job;
+pub(crate) mod mode_view;
+pub(crate) mod reach;
+pub(crate) mod workspace;

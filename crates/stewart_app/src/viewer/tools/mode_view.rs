@@ -8,11 +8,11 @@ use stewart_kinematics::analysis::dynamics::{DynamicsError, Modes};
 use stewart_kinematics::{Pose, Scenario};
 
 /// How often the animation swings, Hz (the real modes are far too fast to watch).
-pub const SHOWN_HZ: f64 = 1.0;
+pub(crate) const SHOWN_HZ: f64 = 1.0;
 
 /// Why there are no modes to show.
 #[derive(Clone, Debug, PartialEq)]
-pub enum NoModes {
+pub(crate) enum NoModes {
     /// The scenario has no payload.
     NoPayload,
     /// The dynamics say why.
@@ -21,13 +21,13 @@ pub enum NoModes {
 
 /// The mode viewer's settings and clock.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ModeView {
+pub(crate) struct ModeView {
     /// Whether the 3D view swings along a mode.
-    pub animate: bool,
+    pub(crate) animate: bool,
     /// Which mode, from 0 (the lowest frequency).
-    pub mode: usize,
+    pub(crate) mode: usize,
     /// How far the farthest platform joint swings, as a share of the platform's size.
-    pub amplitude: f64,
+    pub(crate) amplitude: f64,
     /// Seconds into the current swing.
     phase: f64,
 }
@@ -45,14 +45,14 @@ impl Default for ModeView {
 
 impl ModeView {
     /// Move the swing on by `dt` seconds.
-    pub fn advance(&mut self, dt: f64) {
+    pub(crate) fn advance(&mut self, dt: f64) {
         if self.animate && dt.is_finite() {
             self.phase = (self.phase + dt).rem_euclid(1.0 / SHOWN_HZ);
         }
     }
 
     /// The modes at `pose`, when the scenario has what they need.
-    pub fn modes(scenario: &Scenario, pose: &Pose) -> Result<Modes, NoModes> {
+    pub(crate) fn modes(scenario: &Scenario, pose: &Pose) -> Result<Modes, NoModes> {
         let payload = scenario.payload.ok_or(NoModes::NoPayload)?;
         dynamics::modes(&scenario.geometry, pose, &payload, &scenario.dynamics)
             .map_err(NoModes::Dynamics)
@@ -60,7 +60,7 @@ impl ModeView {
 
     /// What the 3D view draws for the pose shown: `pose` itself, or swung along the
     /// chosen mode when animating (and the modes can be computed there).
-    pub fn shown_pose(&self, scenario: &Scenario, pose: Pose) -> Pose {
+    pub(crate) fn shown_pose(&self, scenario: &Scenario, pose: Pose) -> Pose {
         if !self.animate {
             return pose;
         }

@@ -8,22 +8,22 @@ use stewart_kinematics::analysis::workspace::ReachMap;
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 
 /// Roll, pitch and yaw are searched over ± this many degrees.
-pub const ANGLE_SPAN_DEG: f64 = 90.0;
+pub(crate) const ANGLE_SPAN_DEG: f64 = 90.0;
 /// The roll–pitch map covers ± this many degrees.
-pub const MAP_SPAN_DEG: f64 = 45.0;
+pub(crate) const MAP_SPAN_DEG: f64 = 45.0;
 /// Cells a side of the roll–pitch map (odd: one cell sits on level).
-pub const MAP_CELLS: usize = 41;
+pub(crate) const MAP_CELLS: usize = 41;
 /// Steps of the outward search across a coordinate's bounds.
 const STEPS: usize = 120;
 
 /// Reach around the pose at its position: roll, pitch and yaw alone (radians), and the
 /// roll–pitch map at its yaw.
 #[derive(Clone, Debug, PartialEq)]
-pub struct OrientationReach {
+pub(crate) struct OrientationReach {
     /// Roll, pitch, yaw intervals; `None` when the pose is out of reach.
-    pub angles: [Option<[f64; 2]>; 3],
+    pub(crate) angles: [Option<[f64; 2]>; 3],
     /// The map.
-    pub map: ReachMap,
+    pub(crate) map: ReachMap,
 }
 
 /// What a reach was computed for.
@@ -37,7 +37,7 @@ struct Key {
 
 /// The cached answers.
 #[derive(Clone, Debug, Default)]
-pub struct ReachCache {
+pub(crate) struct ReachCache {
     sliders: Option<(Key, [Option<[f64; 2]>; 6])>,
     orientation: Option<(Key, OrientationReach)>,
 }
@@ -45,7 +45,7 @@ pub struct ReachCache {
 impl ReachCache {
     /// Each coordinate's reachable interval within its slider's `bounds` (pose
     /// coordinates: metres and radians).
-    pub fn sliders(
+    pub(crate) fn sliders(
         &mut self,
         geometry: &Geometry,
         limits: &Limits,
@@ -71,7 +71,7 @@ impl ReachCache {
     }
 
     /// Roll, pitch and yaw alone over ±[`ANGLE_SPAN_DEG`] and the roll–pitch map.
-    pub fn orientation(
+    pub(crate) fn orientation(
         &mut self,
         geometry: &Geometry,
         limits: &Limits,

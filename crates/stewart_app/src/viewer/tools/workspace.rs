@@ -22,12 +22,12 @@ use stewart_render::analysis::AnalysisMesh;
 use crate::viewer::tools::job::Job;
 
 /// Columns a side of the first, coarse workspace.
-pub const COARSE_COLUMNS: usize = 128;
+pub(crate) const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
-pub const FINE_COLUMNS: usize = 512;
+pub(crate) const FINE_COLUMNS: usize = 512;
 /// Columns a side of the surface mesh drawn at most (every other column of the
 /// refinement).
-pub const DRAWN_COLUMNS: usize = 256;
+pub(crate) const DRAWN_COLUMNS: usize = 256;
 
 /// Cells a side of the conditioning slice with a workspace of `columns` a side: 40 with
 /// the coarse pass, 160 with the refinement (each cell needs a Jacobian's singular values,
@@ -38,7 +38,7 @@ fn slice_cells(columns: usize) -> usize {
 
 /// A volume in m³ to four significant digits (a desk platform's workspace is a fraction
 /// of a litre, a motion simulator's a cubic metre).
-pub fn format_volume(v: f64) -> String {
+pub(crate) fn format_volume(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }
@@ -48,63 +48,61 @@ pub fn format_volume(v: f64) -> String {
 
 /// What a surface is computed for.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Request {
+pub(crate) struct Request {
     /// The platform.
-    pub geometry: Geometry,
+    pub(crate) geometry: Geometry,
     /// Its limits.
-    pub limits: Limits,
+    pub(crate) limits: Limits,
     /// Roll, pitch, yaw.
-    pub orientation: [Angle; 3],
+    pub(crate) orientation: [Angle; 3],
     /// The slice's height, metres (`None`: no slice).
-    pub slice_at: Option<f64>,
+    pub(crate) slice_at: Option<f64>,
     /// The near-singular threshold the slice is coloured to.
-    pub condition_max: f64,
+    pub(crate) condition_max: f64,
     /// Colour the slice by the platform's lowest stiffness for this actuator stiffness
     /// instead of the conditioning.
-    pub slice_stiffness: Option<f64>,
+    pub(crate) slice_stiffness: Option<f64>,
     /// Linear colour of the surface.
-    pub colour: [f32; 4],
+    pub(crate) colour: [f32; 4],
 }
 
 /// One finished computation: the workspace's numbers and the meshes to draw.
 #[derive(Clone, Debug)]
-pub struct Outcome {
+pub(crate) struct Outcome {
     /// What it was computed for.
-    pub request: Request,
+    pub(crate) request: Request,
     /// Columns a side.
-    pub resolution: usize,
+    pub(crate) resolution: usize,
     /// Volume and its error bound, m³.
-    pub volume: f64,
+    pub(crate) volume: f64,
     /// Error bound of `volume`, m³.
-    pub volume_error: f64,
+    pub(crate) volume_error: f64,
     /// `[[x_min, x_max], [y_min, y_max], [z_min, z_max]]`, `None` when nothing is reachable.
-    pub extent: Option<[[f64; 2]; 3]>,
+    pub(crate) extent: Option<[[f64; 2]; 3]>,
     /// Columns whose reachable heights split (drawn with their gaps as cavities).
-    pub split_columns: usize,
+    pub(crate) split_columns: usize,
     /// The surface.
-    pub surface: Arc<AnalysisMesh>,
+    pub(crate) surface: Arc<AnalysisMesh>,
     /// The slice, when asked for.
-    pub slice: Option<SliceOutcome>,
+    pub(crate) slice: Option<SliceOutcome>,
     /// Time the computation took.
-    pub elapsed: Duration,
+    pub(crate) elapsed: Duration,
     /// Whether this is the refinement (else the coarse first look).
-    pub refined: bool,
+    pub(crate) refined: bool,
 }
 
 /// The conditioning slice's mesh and its counts.
 #[derive(Clone, Debug)]
-pub struct SliceOutcome {
-    /// Height, metres.
-    pub at: f64,
+pub(crate) struct SliceOutcome {
     /// The coloured cells.
-    pub mesh: Arc<AnalysisMesh>,
+    pub(crate) mesh: Arc<AnalysisMesh>,
     /// Reachable cells.
-    pub reachable: usize,
+    pub(crate) reachable: usize,
     /// Reachable cells past the near-singular threshold (or singular); none for a
     /// stiffness slice.
-    pub past: usize,
+    pub(crate) past: usize,
     /// A stiffness slice's lowest and highest stiffness, N/m (`None`: conditioning).
-    pub stiffness: Option<[f64; 2]>,
+    pub(crate) stiffness: Option<[f64; 2]>,
 }
 
 /// The Workspace panel's switches, the worker and the newest result.
@@ -112,21 +110,21 @@ pub struct WorkspaceTool {
     /// Draw the surface in the 3D view.
     pub show: bool,
     /// Use the pose's own orientation (else `orientation_deg`).
-    pub follow_pose: bool,
+    pub(crate) follow_pose: bool,
     /// The chosen roll, pitch, yaw, degrees.
-    pub orientation_deg: [f64; 3],
+    pub(crate) orientation_deg: [f64; 3],
     /// Draw the conditioning slice.
-    pub show_slice: bool,
+    pub(crate) show_slice: bool,
     /// Colour the slice by stiffness (else by conditioning).
-    pub slice_by_stiffness: bool,
+    pub(crate) slice_by_stiffness: bool,
     /// Put the slice at the platform centre's height (else `slice_height`).
-    pub slice_follows: bool,
+    pub(crate) slice_follows: bool,
     /// The chosen slice height, metres.
-    pub slice_height: f64,
+    pub(crate) slice_height: f64,
     /// The newest finished result.
-    pub latest: Option<Outcome>,
+    pub(crate) latest: Option<Outcome>,
     /// Why the last request could not be computed.
-    pub error: Option<String>,
+    pub(crate) error: Option<String>,
     /// The request last sent.
     sent: Option<Request>,
     /// A newer request waiting for the one in flight to give its first (coarse) result: a
@@ -146,7 +144,7 @@ impl Default for WorkspaceTool {
 impl WorkspaceTool {
     /// The orientation the workspace is shown at when `pose` is shown: the pose's, or the
     /// one chosen.
-    pub fn orientation_at(&self, pose: &Pose) -> [Angle; 3] {
+    pub(crate) fn orientation_at(&self, pose: &Pose) -> [Angle; 3] {
         if self.follow_pose {
             [pose.roll, pose.pitch, pose.yaw]
         } else {
@@ -155,7 +153,7 @@ impl WorkspaceTool {
     }
 
     /// A tool computing `coarse` then `fine` columns a side (tests choose slow ones).
-    pub fn with_resolutions(coarse: usize, fine: usize) -> Self {
+    pub(crate) fn with_resolutions(coarse: usize, fine: usize) -> Self {
         Self {
             show: false,
             follow_pose: true,
@@ -177,7 +175,7 @@ impl WorkspaceTool {
     /// older request stops, and the job takes this one next; a request whose first result
     /// has not come yet is finished first (this one waits, replaced by any newer). Never
     /// blocks.
-    pub fn request(&mut self, request: Request) {
+    pub(crate) fn request(&mut self, request: Request) {
         if self.sent.as_ref() == Some(&request) {
             self.pending = None;
             return;
@@ -199,7 +197,7 @@ impl WorkspaceTool {
 
     /// Whether the surface shown was computed for another request than the newest (the
     /// pose moved on while it was computed).
-    pub fn stale(&self) -> bool {
+    pub(crate) fn stale(&self) -> bool {
         let newest = self.pending.as_ref().or(self.sent.as_ref());
         self.latest
             .as_ref()
@@ -235,7 +233,7 @@ impl WorkspaceTool {
     }
 
     /// Take the newest finished result (older ones that arrived meanwhile are skipped).
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         match self.job.poll() {
             Some(Ok(Ok(outcome))) => {
                 self.latest = Some(outcome);
@@ -255,7 +253,7 @@ impl WorkspaceTool {
     }
 
     /// Whether the newest request is not yet refined.
-    pub fn busy(&self) -> bool {
+    pub(crate) fn busy(&self) -> bool {
         self.pending.is_some()
             || self.sent.is_some()
                 && !self
@@ -266,21 +264,16 @@ impl WorkspaceTool {
     }
 
     /// Wait until the newest request is refined (tests, screenshots), at most `limit`.
-    pub fn wait(&mut self, limit: Duration) {
+    pub(crate) fn wait(&mut self, limit: Duration) {
         let start = Instant::now();
         while self.busy() && start.elapsed() < limit {
             self.poll();
             std::thread::sleep(Duration::from_millis(2));
         }
     }
-
-    /// Columns a side of the coarse pass and of the refinement.
-    pub fn resolutions(&self) -> [usize; 2] {
-        self.resolutions
-    }
-
     /// Computations stopped because a newer request came.
-    pub fn cancelled(&self) -> usize {
+    #[cfg(test)]
+    pub(crate) fn cancelled(&self) -> usize {
         self.job.replaced()
     }
 }
@@ -370,7 +363,6 @@ pub(crate) fn compute(
                     .count()
             };
             Some(SliceOutcome {
-                at,
                 mesh: Arc::new(mesh),
                 reachable: reachable.len(),
                 past,

@@ -11,7 +11,7 @@ use crate::i18n::fonts;
 /// the fonts. In that order: a font added is queued in the memory until the next pass, so a
 /// memory restored after it would drop the Chinese font and show every Chinese glyph as a
 /// box. Returns whether the Chinese font was installed.
-pub fn start(ctx: &egui::Context, memory: Option<egui::Memory>) -> bool {
+pub(crate) fn start(ctx: &egui::Context, memory: Option<egui::Memory>) -> bool {
     if let Some(memory) = memory {
         ctx.memory_mut(|m| *m = memory);
     }
@@ -20,7 +20,7 @@ pub fn start(ctx: &egui::Context, memory: Option<egui::Memory>) -> bool {
 
 /// Add the system's Chinese font after egui's fonts in both families; `false` when the
 /// system has none (Chinese then falls back to English, see [`fonts::usable`]).
-pub fn install(ctx: &egui::Context) -> bool {
+pub(crate) fn install(ctx: &egui::Context) -> bool {
     let Some(cjk) = fonts::cjk() else {
         return false;
     };

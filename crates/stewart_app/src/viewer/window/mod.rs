@@ -1,13 +1,13 @@
 //! The window and its loop: winit 0.30, egui-winit for input, egui-wgpu's painter for the
 //! surface; the 3D view shares its device. Redraws continuously only while playing.
 
-pub mod fonts;
-pub mod quality;
-pub mod reveal;
-pub mod shots;
-pub mod view3d;
-pub mod window_shot;
-pub mod window_size;
+pub(crate) mod fonts;
+pub(crate) mod quality;
+pub(crate) mod reveal;
+pub(crate) mod shots;
+pub(crate) mod view3d;
+pub(crate) mod window_shot;
+pub(crate) mod window_size;
 
 use std::io::Write as _;
 use std::num::NonZeroU32;
@@ -30,17 +30,17 @@ use crate::viewer::window::window_shot::SAMPLES;
 
 /// How the viewer runs.
 #[derive(Clone, Debug)]
-pub struct ViewOptions {
+pub(crate) struct ViewOptions {
     /// After this many frames, save the window's image here and exit.
-    pub screenshot: Option<PathBuf>,
+    pub(crate) screenshot: Option<PathBuf>,
     /// Frames to draw before the screenshot.
-    pub frames: u32,
+    pub(crate) frames: u32,
     /// The screenshot's size: as on screen, twice that, or 3840 pixels wide.
-    pub screenshot_scale: ShotScale,
+    pub(crate) screenshot_scale: ShotScale,
     /// Print frame-time statistics when the window closes.
-    pub stats: bool,
+    pub(crate) stats: bool,
     /// Where the window's size comes from.
-    pub size: window_size::WindowSize,
+    pub(crate) size: window_size::WindowSize,
 }
 
 /// A shot of the window at another scale: its path, the scale, and whether it ends a
@@ -117,7 +117,7 @@ struct App {
 }
 
 /// Open the viewer on `state` and run until the window closes.
-pub fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
+pub(crate) fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
     check_scale_factor_setting()?;
     stewart_render::gpu::check_environment()?;
     if std::env::var_os("DISPLAY").is_none() && std::env::var_os("WAYLAND_DISPLAY").is_none() {

@@ -24,7 +24,7 @@ use std::collections::VecDeque;
 
 /// How the 3D view is drawn this frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Drawn {
+pub(crate) enum Drawn {
     /// Straight into the window's pass with the window's samples.
     Direct,
     /// Off screen with 4× MSAA at full size, drawn in as one picture (only where the
@@ -39,10 +39,10 @@ pub enum Drawn {
 const LEVELS: [Drawn; 3] = [Drawn::Full, Drawn::Direct, Drawn::Scaled];
 
 /// The size of the scaled picture against the view's (each side).
-pub const SCALE: f32 = 0.5;
+pub(crate) const SCALE: f32 = 0.5;
 
 /// The frame time a moving view keeps within: 30 frames a second, milliseconds.
-pub const BUDGET_MS: f64 = 1000.0 / 30.0;
+pub(crate) const BUDGET_MS: f64 = 1000.0 / 30.0;
 
 /// Moving frames at one level averaged to decide that it is too slow.
 const LEVEL_FRAMES: usize = 8;
@@ -56,7 +56,7 @@ const KEPT: usize = 120;
 
 /// What a `STEWART_VIEW_QUALITY` of `full` or `fast` fixes (for measuring), else adapts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Policy {
+pub(crate) enum Policy {
     /// Adapt to the measured frame time.
     Adaptive,
     /// Always the full picture.
@@ -70,7 +70,7 @@ pub enum Policy {
 impl Policy {
     /// From `STEWART_VIEW_QUALITY` (`adaptive`, `full`, `fast`, `scaled`; anything else:
     /// adaptive).
-    pub fn from_env() -> Self {
+    pub(crate) fn from_env() -> Self {
         match std::env::var("STEWART_VIEW_QUALITY").as_deref() {
             Ok("full") => Policy::Full,
             Ok("fast") => Policy::Fast,
@@ -82,16 +82,16 @@ impl Policy {
 
 /// The quality chooser and the frame-time record.
 #[derive(Clone, Debug)]
-pub struct Quality {
+pub(crate) struct Quality {
     /// The window's pass has one sample (a software rasteriser): the full picture is
     /// drawn off screen.
-    pub software: bool,
+    pub(crate) software: bool,
     /// How the choice is made.
-    pub policy: Policy,
+    pub(crate) policy: Policy,
     /// The window clears itself to the panels' colour: the panels draw no fill (on a
     /// software rasteriser each large fill costs milliseconds a frame). Off where nothing
     /// clears so (tests render on a transparent image).
-    pub window_clears: bool,
+    pub(crate) window_clears: bool,
     /// The level while moving now (an index into [`LEVELS`]).
     level: usize,
     /// This level's moving frames' times, newest last (at most [`LEVEL_FRAMES`]).
@@ -114,7 +114,7 @@ impl Default for Quality {
 
 impl Quality {
     /// The chooser for a window whose pass has one sample (`software`) or MSAA.
-    pub fn new(software: bool, policy: Policy) -> Self {
+    pub(crate) fn new(software: bool, policy: Policy) -> Self {
         Self {
             software,
             policy,
@@ -130,19 +130,19 @@ impl Quality {
 
     /// Draw the next frame as the full picture whatever moves (a window screenshot is
     /// taken of it).
-    pub fn ask_full(&mut self) {
+    pub(crate) fn ask_full(&mut self) {
         self.full_next = true;
     }
 
     /// Whether the last frame was the full picture (or drawn on a GPU, where every frame
     /// is).
-    pub fn last_was_full(&self) -> bool {
+    pub(crate) fn last_was_full(&self) -> bool {
         !self.software || self.last.0 == Drawn::Full
     }
 
     /// How to draw this frame: `moving` when the view changes from frame to frame
     /// (playback, a drag, a stream).
-    pub fn choose(&mut self, moving: bool) -> Drawn {
+    pub(crate) fn choose(&mut self, moving: bool) -> Drawn {
         let drawn = if !self.software {
             Drawn::Direct
         } else if !moving || std::mem::take(&mut self.full_next) {
@@ -160,7 +160,7 @@ impl Quality {
     }
 
     /// The whole frame just drawn took `ms` milliseconds: adapt the quality while moving.
-    pub fn record(&mut self, ms: f64) {
+    pub(crate) fn record(&mut self, ms: f64) {
         if !ms.is_finite() {
             return;
         }
@@ -199,12 +199,12 @@ impl Quality {
 
     /// Whether one more frame must be drawn: the last was not the full picture and the
     /// view is still (so the picture left on screen is the full one).
-    pub fn wants_full_frame(&self) -> bool {
+    pub(crate) fn wants_full_frame(&self) -> bool {
         self.software && self.last.0 != Drawn::Full
     }
 
     /// Mean and 95th percentile of the last frames' times, ms (`None` before any).
-    pub fn frame_times(&self) -> Option<(f64, f64)> {
+    pub(crate) fn frame_times(&self) -> Option<(f64, f64)> {
         if self.times.is_empty() {
             return None;
         }
@@ -215,13 +215,8 @@ impl Quality {
         Some((mean, p95))
     }
 
-    /// How the last frame was drawn.
-    pub fn last_drawn(&self) -> Drawn {
-        self.last.0
-    }
-
     /// The locale key of how the last frame's 3D view was drawn.
-    pub fn words_key(&self) -> &'static str {
+    pub(crate) fn words_key(&self) -> &'static str {
         match (self.software, self.last.0) {
             (false, _) => "quality.gpu",
             (true, Drawn::Full) => "quality.full",

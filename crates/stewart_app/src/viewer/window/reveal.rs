@@ -4,7 +4,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 
 /// The command that opens `folder` in the system's file manager.
-pub fn folder_command(folder: &Path) -> Command {
+pub(crate) fn folder_command(folder: &Path) -> Command {
     let program = if cfg!(target_os = "windows") {
         "explorer"
     } else if cfg!(target_os = "macos") {
@@ -23,7 +23,7 @@ pub fn folder_command(folder: &Path) -> Command {
 
 /// Open the folder holding `file` (or `file` itself, when it is a folder of frames) in the
 /// file manager, without waiting for it; an error names what could not be started.
-pub fn show_in_folder(file: &Path) -> Result<(), String> {
+pub(crate) fn show_in_folder(file: &Path) -> Result<(), String> {
     let folder = if file.is_dir() {
         file
     } else {

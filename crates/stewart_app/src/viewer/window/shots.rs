@@ -13,29 +13,29 @@ use crate::viewer::tools::job::Job;
 
 /// What to capture.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShotKind {
+pub(crate) enum ShotKind {
     /// The 3D view alone, rendered again at the chosen size.
     View,
     /// The whole window, as on screen.
     Window,
 }
 
-pub use crate::shot_scale::ShotScale;
+pub(crate) use crate::shot_scale::ShotScale;
 
 /// The Screenshot menu's choices and the shot in progress.
-pub struct Shots {
+pub(crate) struct Shots {
     /// 3D view or whole window.
-    pub kind: ShotKind,
+    pub(crate) kind: ShotKind,
     /// The 3D view's size.
-    pub scale: ShotScale,
+    pub(crate) scale: ShotScale,
     /// A transparent background (3D view only).
-    pub transparent: bool,
+    pub(crate) transparent: bool,
     /// Where the last shot went or why it failed.
-    pub status: Status,
+    pub(crate) status: Status,
     /// A whole-window shot the window is to take at its next frame.
-    pub window_request: Option<(PathBuf, ShotScale)>,
+    pub(crate) window_request: Option<(PathBuf, ShotScale)>,
     /// The folder shots are saved in (the current folder).
-    pub folder: PathBuf,
+    pub(crate) folder: PathBuf,
     job: Job<Status>,
     /// The language of the outcome's words.
     lang: Lang,
@@ -57,7 +57,7 @@ impl Default for Shots {
 }
 
 /// The first `NAME-shot-NN.png` in `folder` that does not exist yet, as an absolute path.
-pub fn next_path(folder: &Path, name: &str) -> PathBuf {
+pub(crate) fn next_path(folder: &Path, name: &str) -> PathBuf {
     // Absolute, so that the message saying where the shot went needs no guessing.
     let folder = std::path::absolute(folder).unwrap_or_else(|_| folder.to_path_buf());
     let stem: String = name
@@ -78,13 +78,13 @@ pub fn next_path(folder: &Path, name: &str) -> PathBuf {
 
 impl Shots {
     /// Whether a shot is being rendered.
-    pub fn busy(&self) -> bool {
+    pub(crate) fn busy(&self) -> bool {
         self.job.busy() || self.window_request.is_some()
     }
 
     /// Render `list` seen by `camera` in `theme` into a PNG at `path` on a thread of its
     /// own, `size` pixels; the outcome shows in `status` once [`Shots::poll`] collects it.
-    pub fn start_view(
+    pub(crate) fn start_view(
         &mut self,
         list: DrawList,
         camera: OrbitCamera,
@@ -109,7 +109,7 @@ impl Shots {
     }
 
     /// Collect a finished shot.
-    pub fn poll(&mut self) {
+    pub(crate) fn poll(&mut self) {
         match self.job.poll() {
             Some(Ok(status)) => self.status = status,
             Some(Err(e)) => {

@@ -18,7 +18,7 @@ const FULL_SAMPLES: u32 = 4;
 
 /// What the window registers in egui-wgpu's callback resources: the renderer, and the
 /// per-frame buffers of each view drawn with it.
-pub struct SceneResources {
+pub(crate) struct SceneResources {
     renderer: Renderer,
     views: HashMap<egui::Id, PreparedView>,
     /// Where the window's pass has one sample: the renderer of the full picture and each
@@ -56,7 +56,7 @@ fn picture_for<'a>(
 impl SceneResources {
     /// Resources around `renderer` (built for the window's pass), with no view prepared
     /// yet; a window pass of one sample also gets the full picture's renderer.
-    pub fn new(device: &wgpu::Device, renderer: Renderer) -> Self {
+    pub(crate) fn new(device: &wgpu::Device, renderer: Renderer) -> Self {
         let full = (renderer.samples == 1).then(|| FullPicture {
             renderer: Renderer::new(device, renderer.format, FULL_SAMPLES),
             views: HashMap::new(),
@@ -71,19 +71,19 @@ impl SceneResources {
 }
 
 /// One frame of one 3D view.
-pub struct SceneCallback {
+pub(crate) struct SceneCallback {
     /// Which view (its buffers are kept from frame to frame).
-    pub view: egui::Id,
+    pub(crate) view: egui::Id,
     /// What to draw.
-    pub list: DrawList,
+    pub(crate) list: DrawList,
     /// Seen from here.
-    pub camera: OrbitCamera,
+    pub(crate) camera: OrbitCamera,
     /// In these colours.
-    pub theme: Theme,
+    pub(crate) theme: Theme,
     /// Size of the view, physical pixels (text is laid out in them).
-    pub viewport: [f32; 2],
+    pub(crate) viewport: [f32; 2],
     /// How it is drawn this frame.
-    pub drawn: Drawn,
+    pub(crate) drawn: Drawn,
 }
 
 impl egui_wgpu::CallbackTrait for SceneCallback {

@@ -9,11 +9,11 @@ use stewart_render::readback::Readback;
 
 /// MSAA samples of the window and of its shots on a GPU (the 3D pipelines are built to
 /// match); a software rasteriser's window has one (see [`crate::viewer::window::quality`]).
-pub const SAMPLES: u32 = 4;
+pub(crate) const SAMPLES: u32 = 4;
 
 /// The pixel density factor that makes a window `width` physical pixels wide come out at
 /// `scale`: 1 (as on screen), 2, or 3840 pixels wide for 4K.
-pub fn factor(scale: crate::viewer::window::shots::ShotScale, width: u32) -> f32 {
+pub(crate) fn factor(scale: crate::viewer::window::shots::ShotScale, width: u32) -> f32 {
     use crate::viewer::window::shots::ShotScale;
     match scale {
         ShotScale::One => 1.0,
@@ -68,7 +68,7 @@ impl Targets {
 /// Draw `primitives` (tessellated at `pixels_per_point`) into a `size`-pixel image on
 /// `clear` with the window's `samples`, applying `textures` (the font atlas at this
 /// density) first.
-pub fn render(
+pub(crate) fn render(
     rs: &egui_wgpu::RenderState,
     samples: u32,
     primitives: &[ClippedPrimitive],

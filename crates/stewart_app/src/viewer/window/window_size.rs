@@ -3,7 +3,7 @@
 
 /// Where the window's size comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WindowSize {
+pub(crate) enum WindowSize {
     /// `--size`: exactly this (screenshots need it), logical pixels.
     Exact(u32, u32),
     /// The last session's, logical pixels: kept unless it does not fit this screen.
@@ -18,12 +18,12 @@ const SCREEN_SHARE: f64 = 0.85;
 /// and a task bar).
 const SCREEN_MAX: f64 = 0.95;
 /// The size when the screen's is unknown, logical pixels.
-pub const FALLBACK: (u32, u32) = (1280, 720);
+pub(crate) const FALLBACK: (u32, u32) = (1280, 720);
 
 impl WindowSize {
     /// The logical size to open at on a screen of `screen` logical pixels (`None`:
     /// unknown, as on some Wayland compositors).
-    pub fn on_screen(self, screen: Option<(f64, f64)>) -> (u32, u32) {
+    pub(crate) fn on_screen(self, screen: Option<(f64, f64)>) -> (u32, u32) {
         let screen =
             screen.filter(|(w, h)| w.is_finite() && h.is_finite() && *w >= 1.0 && *h >= 1.0);
         match (self, screen) {

@@ -4,7 +4,7 @@ use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::Scenario;
 
-use crate::harness;
+use super::harness;
 
 fn tempdir() -> tempfile::TempDir {
     tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"))
@@ -93,7 +93,7 @@ fn a_saved_scenario_opens_as_it_was() {
     // saves it without asking where).
     let full = std::path::absolute(&path).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(h.state().session.origin, full.display().to_string());
-    let mut next = stewart_app::viewer::state::ViewerState::new(h.state().scenario().clone());
+    let mut next = crate::viewer::state::ViewerState::new(h.state().scenario().clone());
     next.remember_file(&h.state().session.origin);
     assert_eq!(next.files.current.as_deref(), Some(full.as_path()));
     next.remember_file("preset seed");
@@ -114,22 +114,18 @@ fn a_saved_scenario_opens_as_it_was() {
 #[test]
 fn reset_to_defaults_forgets_the_saved_session_and_the_look() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-    std::fs::write(
-        stewart_app::viewer::state::session::file_in(dir.path()),
-        "{}",
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
-    let mut state = stewart_app::viewer::ViewerState::new(
-        Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
-    );
+    std::fs::write(crate::viewer::state::session::file_in(dir.path()), "{}")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut state =
+        crate::viewer::ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
     state.session.folder = Some(dir.path().to_path_buf());
     state.look.light_theme = true;
     state.look.labels = false;
     state.look.camera.azimuth_deg = 10.0;
-    let mut h = crate::harness_with(state, 800.0);
+    let mut h = super::harness_with(state, 800.0);
     h.get_by_label("Reset to defaults").click();
     h.run();
-    assert!(!stewart_app::viewer::state::session::file_in(dir.path()).exists());
+    assert!(!crate::viewer::state::session::file_in(dir.path()).exists());
     let look = &h.state().look;
     assert!(!look.light_theme && look.labels);
     assert_eq!(look.camera.azimuth_deg, 135.0);
@@ -154,7 +150,7 @@ impl egui::DroppedFile for Dropped {
 }
 
 pub(crate) fn drop_file(
-    h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>,
+    h: &mut egui_kittest::Harness<'_, crate::viewer::ViewerState>,
     path: &std::path::Path,
 ) {
     h.input_mut()
@@ -181,7 +177,7 @@ fn a_pose_table_or_a_scenario_dropped_on_the_window_opens() {
     });
     // (egui repaints while files hover: one frame, not run until settled.)
     h.step();
-    crate::look(&mut h, "drop-note.png");
+    super::look(&mut h, "drop-note.png");
     h.input_mut().hovered_files.clear();
     // Before: a dropped file did nothing.
     drop_file(&mut h, &poses);
@@ -233,7 +229,7 @@ fn saving_over_another_file_asks_first_and_ctrl_s_saves_the_open_file() {
     // Before: it was replaced at once.
     let question = format!("{} exists. Replace it?", other.display());
     assert!(h.query_by_label(&question).is_some(), "no question");
-    crate::look(&mut h, "replace-question.png");
+    super::look(&mut h, "replace-question.png");
     h.get_by_label("Cancel").click();
     h.run();
     assert!(h.query_by_label(&question).is_none());
@@ -267,10 +263,10 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     let figure = Scenario::preset("figure8").unwrap_or_else(|e| panic!("{e}"));
     std::fs::write(&file, figure.to_toml()).unwrap_or_else(|e| panic!("{e}"));
     // The dialog's two path fields (egui_file's own) carry no accessible name.
-    let state = stewart_app::viewer::ViewerState::new(
+    let state = crate::viewer::ViewerState::new(
         Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
     );
-    let mut h = crate::built_harness(state, egui::vec2(1280.0, 800.0), false);
+    let mut h = super::built_harness(state, egui::vec2(1280.0, 800.0), false);
     // Start the dialog in the temporary folder: the file open now is there.
     h.state_mut().files.current = Some(dir.path().join("start.toml"));
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::O);
@@ -281,7 +277,7 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     );
     h.get_by_label_contains("mine.toml").click();
     h.run();
-    crate::look(&mut h, "file-dialog.png");
+    super::look(&mut h, "file-dialog.png");
     // The dialog's own Open button comes after the Scenario panel's.
     h.get_all_by_role_and_label(Role::Button, "Open")
         .last()
@@ -343,7 +339,7 @@ fn hostile_files_are_refused_and_change_nothing() {
     if made {
         cases.push((fifo, "not a regular file"));
     }
-    let mut state = stewart_app::viewer::ViewerState::new(
+    let mut state = crate::viewer::ViewerState::new(
         Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
     );
     let before = state.scenario().clone();

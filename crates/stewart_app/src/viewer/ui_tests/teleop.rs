@@ -4,12 +4,12 @@
 
 use std::time::{Duration, Instant};
 
+use crate::viewer::state::playback::MotionMode;
+use crate::viewer::state::teleop::PadState;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::playback::MotionMode;
-use stewart_app::viewer::state::teleop::PadState;
 use stewart_link::safety::LinkState;
 
-use crate::tall_harness;
+use super::tall_harness;
 
 #[test]
 fn held_keys_and_the_gamepad_move_the_pose_and_stop_at_the_stroke() {

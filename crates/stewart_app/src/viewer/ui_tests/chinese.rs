@@ -2,13 +2,13 @@
 //! accessibility tree of every panel, opened, holds no English word), its font is loaded
 //! (the snapshot shows characters, not boxes), and the language switch changes it at once.
 //!
-//! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui chinese` re-blesses the image.
+//! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --lib ui_tests::chinese` re-blesses the image.
 
+use crate::i18n::Lang;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
 use egui_kittest::kittest::{NodeT, Queryable};
 use egui_kittest::{Harness, SnapshotOptions};
-use stewart_app::i18n::Lang;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::Scenario;
 
 /// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
@@ -26,10 +26,9 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     state.look.lang = Lang::Zh;
     state.look.expand_panels = true;
     // The Workspace panel's numbers and slice too (coarse: a debug build).
-    state.workspace =
-        stewart_app::viewer::tools::workspace::WorkspaceTool::with_resolutions(16, 48);
+    state.workspace = crate::viewer::tools::workspace::WorkspaceTool::with_resolutions(16, 48);
     state.workspace.show = true;
-    let mut h = crate::harness_with(state, 4200.0);
+    let mut h = super::harness_with(state, 4200.0);
     h.state_mut().settle_workspace();
     h.state_mut()
         .workspace
@@ -108,7 +107,7 @@ fn the_english_interface_is_english() {
     // The same scan finds English where there is English: it would catch a bypass.
     let mut state = ViewerState::new(Scenario::seed());
     state.look.expand_panels = true;
-    let h = crate::harness_with(state, 3600.0);
+    let h = super::harness_with(state, 3600.0);
     assert!(english_words(&h, &[]).len() > 50);
 }
 
@@ -116,7 +115,7 @@ fn the_english_interface_is_english() {
 fn the_language_switch_changes_the_interface_at_once() {
     let mut state = ViewerState::new(Scenario::seed());
     state.look.lang = Lang::En;
-    let mut h = crate::harness_with(state, 1600.0);
+    let mut h = super::harness_with(state, 1600.0);
     assert!(h.query_by_label("Scenario").is_some());
     // A status line written in English does not stay English after the switch.
     h.state_mut().files.status = Some(Ok("Saved to /tmp/x.toml.".to_owned()));
@@ -138,7 +137,7 @@ fn the_chinese_interface_looks_right() {
     state.look.lang = Lang::Zh;
     state.playback.playing = false;
     state.playback.time = 2.5;
-    let mut h = crate::sized_harness(state, egui::vec2(1100.0, 760.0));
+    let mut h = super::sized_harness(state, egui::vec2(1100.0, 760.0));
     h.run();
     h.snapshot_options(
         "chinese-interface",
@@ -152,10 +151,10 @@ fn the_chinese_interface_looks_right() {
 fn the_file_dialog_and_help_read_in_chinese() {
     let mut state = ViewerState::new(Scenario::seed());
     state.look.lang = Lang::Zh;
-    state.choose_file(stewart_app::viewer::state::files::Purpose::Open);
+    state.choose_file(crate::viewer::state::files::Purpose::Open);
     state.look.help = true;
     // The dialog's fields are egui_file's own, without accessible names.
-    let mut h = crate::built_harness(state, egui::vec2(1280.0, 900.0), false);
+    let mut h = super::built_harness(state, egui::vec2(1280.0, 900.0), false);
     h.run();
     for words in ["新建文件夹", "显示隐藏文件", "帮助 / 按键", "车辆运动记录"]
     {

@@ -7,7 +7,7 @@ use stewart_kinematics::io::settings;
 
 #[test]
 fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
-    let mut h = crate::tall_harness("paired", 2600.0);
+    let mut h = super::tall_harness("paired", 2600.0);
     h.get_by_label("Dynamics and modes").click();
     h.run();
     // The preset's own payload, removed.
@@ -85,7 +85,7 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
     );
     h.state_mut().advance(0.25);
     h.run();
-    crate::look(&mut h, "dynamics.png");
+    super::look(&mut h, "dynamics.png");
     assert!(h.query_by_label_contains("Mode 3 (").is_some());
     // The picture swings; the pose the link would send does not.
     let state = h.state();
@@ -117,7 +117,7 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
 
 #[test]
 fn the_plot_switches_to_the_actuator_forces() {
-    let mut h = crate::tall_harness("paired", 2600.0);
+    let mut h = super::tall_harness("paired", 2600.0);
     h.get_by_label("Dynamics and modes").click();
     h.run();
     h.get_by_label("Remove the payload").click();
@@ -127,7 +127,7 @@ fn the_plot_switches_to_the_actuator_forces() {
     h.get_by_label("forces").click();
     h.run();
     assert!(h.state().look.plot_efforts);
-    crate::look(&mut h, "forces_plot.png");
+    super::look(&mut h, "forces_plot.png");
     let (times, efforts) = h
         .state()
         .doc
@@ -150,8 +150,8 @@ fn the_plot_switches_to_the_actuator_forces() {
 #[test]
 fn the_modes_of_a_singular_pose_say_which_directions_have_no_stiffness() {
     // The seed's staggered hexagons are singular at home: three directions are free.
-    let mut h = crate::tall_harness("seed", 2600.0);
-    h.state_mut().playback.mode = stewart_app::viewer::state::playback::MotionMode::Manual;
+    let mut h = super::tall_harness("seed", 2600.0);
+    h.state_mut().playback.mode = crate::viewer::state::playback::MotionMode::Manual;
     h.run();
     h.get_by_label("Dynamics and modes").click();
     h.run();
@@ -176,5 +176,5 @@ fn the_modes_of_a_singular_pose_say_which_directions_have_no_stiffness() {
     h.get_by_label("5").click();
     h.run();
     assert_eq!(h.state().modes.mode, 4);
-    crate::look(&mut h, "modes-singular.png");
+    super::look(&mut h, "modes-singular.png");
 }

@@ -19,39 +19,39 @@ mod teleop;
 mod trajectory;
 mod workspace;
 
+use crate::viewer::panels::viewer_ui;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::panels::viewer_ui;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::Scenario;
 
 /// The viewer on a preset, 1280×800 logical pixels.
-pub fn harness(scenario: &str) -> Harness<'static, ViewerState> {
+pub(crate) fn harness(scenario: &str) -> Harness<'static, ViewerState> {
     tall_harness(scenario, 800.0)
 }
 
 /// The viewer on a preset in a window `height` logical pixels high (widgets scrolled out
 /// of sight have no accessibility node, so panels low in the list need a tall window).
-pub fn tall_harness(scenario: &str, height: f32) -> Harness<'static, ViewerState> {
+pub(crate) fn tall_harness(scenario: &str, height: f32) -> Harness<'static, ViewerState> {
     let state = ViewerState::new(Scenario::preset(scenario).unwrap_or_else(|e| panic!("{e}")));
     harness_with(state, height)
 }
 
 /// The viewer on `state` in a window `height` logical pixels high.
-pub fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerState> {
+pub(crate) fn harness_with(state: ViewerState, height: f32) -> Harness<'static, ViewerState> {
     sized_harness(state, egui::vec2(1280.0, height))
 }
 
 /// The viewer on `state` in a window of `size` logical pixels.
-pub fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
+pub(crate) fn sized_harness(state: ViewerState, size: egui::Vec2) -> Harness<'static, ViewerState> {
     built_harness(state, size, true)
 }
 
 /// The viewer on `state`, with kittest's check that every widget has an accessible name on
 /// or off (off only where a widget that is not ours lacks one: the file dialog's fields).
-pub fn built_harness(
+pub(crate) fn built_harness(
     state: ViewerState,
     size: egui::Vec2,
     accessibility_check: bool,
@@ -68,7 +68,7 @@ pub fn built_harness(
         .with_max_steps(8)
         .with_accessibility_check(accessibility_check)
         .with_context_setup(|ctx| {
-            stewart_app::viewer::window::fonts::install(ctx);
+            crate::viewer::window::fonts::install(ctx);
         })
         // Each frame starts from a settled report (the check runs on a background job;
         // its arrival changes what the panels show): frames, and so where a click lands,
@@ -102,7 +102,7 @@ fn renderer_on_the_shared_device() -> egui_kittest::wgpu::WgpuTestRenderer {
 
 /// With `STEWART_LOOK_DIR` set, the window as it is now, saved there as `name` to be
 /// looked at.
-pub fn look(h: &mut Harness<'_, ViewerState>, name: &str) {
+pub(crate) fn look(h: &mut Harness<'_, ViewerState>, name: &str) {
     if let Some(dir) = std::env::var_os("STEWART_LOOK_DIR") {
         let image = h.render().unwrap_or_else(|e| panic!("{e}"));
         image
@@ -113,7 +113,7 @@ pub fn look(h: &mut Harness<'_, ViewerState>, name: &str) {
 
 /// Wait for the background report of the current scenario and draw again, so that the
 /// panels show a settled state (the report is computed off the UI thread).
-pub fn settle(h: &mut Harness<'static, ViewerState>) {
+pub(crate) fn settle(h: &mut Harness<'static, ViewerState>) {
     h.state_mut().wait_for_report();
     h.run();
 }

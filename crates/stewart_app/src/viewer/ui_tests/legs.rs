@@ -1,14 +1,14 @@
 //! The Legs panel's distance-to-singularity gauge.
 
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::{Pose, Scenario};
 
 #[test]
 fn the_gauge_shows_the_inverse_condition_number_and_falls_toward_a_singularity() {
     let state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
-    let mut h = crate::harness_with(state, 1600.0);
+    let mut h = super::harness_with(state, 1600.0);
     h.state_mut().playback.mode = MotionMode::Manual;
     let gauge = |h: &mut egui_kittest::Harness<'static, ViewerState>, pose: Pose| {
         h.state_mut().playback.manual = pose;

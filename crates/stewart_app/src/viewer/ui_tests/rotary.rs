@@ -4,7 +4,7 @@
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 
-use crate::{settle, tall_harness};
+use super::{settle, tall_harness};
 
 #[test]
 fn legs_switch_to_servos_whose_sliders_edit_the_scenario() {

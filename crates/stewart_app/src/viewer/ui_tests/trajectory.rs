@@ -4,7 +4,7 @@ use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::model::trajectory::Trajectory;
 
-use crate::harness;
+use super::harness;
 
 #[test]
 fn switching_the_kind_and_moving_its_sliders_changes_the_motion() {
@@ -78,7 +78,7 @@ fn sinusoid_channels_have_every_number() {
 #[test]
 fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
     let mut h = harness("keyframes");
-    let keys = |h: &egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>| match &h
+    let keys = |h: &egui_kittest::Harness<'_, crate::viewer::ViewerState>| match &h
         .state()
         .scenario()
         .motion
@@ -126,7 +126,7 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
 }
 
 /// Press and release the primary button at `pos`.
-fn click_at(h: &mut egui_kittest::Harness<'_, stewart_app::viewer::ViewerState>, pos: egui::Pos2) {
+fn click_at(h: &mut egui_kittest::Harness<'_, crate::viewer::ViewerState>, pos: egui::Pos2) {
     h.event(egui::Event::PointerMoved(pos));
     h.run();
     for pressed in [true, false] {

@@ -3,12 +3,12 @@
 
 use std::time::{Duration, Instant};
 
+use crate::viewer::state::ViewerState;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable};
-use stewart_app::viewer::state::ViewerState;
 use stewart_link::safety::LinkState;
 
-use crate::tall_harness;
+use super::tall_harness;
 
 /// Draw until the link's state is `want` (the sender runs on its own thread).
 fn until(h: &mut Harness<'static, ViewerState>, want: LinkState) {
@@ -89,7 +89,7 @@ fn a_dry_run_connects_disarmed_arms_stops_on_escape_and_disconnects() {
 #[test]
 fn the_badge_reads_on_one_line_through_every_state_in_chinese() {
     let mut h = tall_harness("seed", 2400.0);
-    h.state_mut().look.lang = stewart_app::i18n::Lang::Zh;
+    h.state_mut().look.lang = crate::i18n::Lang::Zh;
     h.state_mut().edit_link(|l| l.ramp_s = 0.1);
     h.state_mut().connect_link();
     until(&mut h, LinkState::Disarmed);
@@ -242,7 +242,7 @@ fn the_link_panels_choices_read_as_words() {
         stewart_kinematics::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}")),
     );
     state.look.expand_panels = true;
-    let h = crate::harness_with(state, 3600.0);
+    let h = super::harness_with(state, 3600.0);
     // A combo box shows its choice as its value.
     let shown = |words: &str| {
         h.root().children_recursive().any(|n| {
@@ -353,7 +353,7 @@ fn live_vehicle_motion_is_a_source_the_link_follows_and_the_cueing_panel_plots()
         h.query_by_label_contains("Live vehicle motion from the link")
             .is_some()
     );
-    crate::look(&mut h, "cueing-live.png");
+    super::look(&mut h, "cueing-live.png");
     h.get_by_label("Disconnect").click();
     let started = Instant::now();
     while h.state().link.connected() {

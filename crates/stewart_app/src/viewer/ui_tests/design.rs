@@ -1,15 +1,15 @@
 //! The Design panel: an envelope in, the stroke it needs out, and into the limits.
 
+use crate::viewer::state::ViewerState;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::ViewerState;
 use stewart_kinematics::Scenario;
 
 /// The viewer on the seed preset with every section open.
 fn seed_with_panels_open() -> Harness<'static, ViewerState> {
     let mut state = ViewerState::new(Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")));
     state.look.expand_panels = true;
-    crate::harness_with(state, 3600.0)
+    super::harness_with(state, 3600.0)
 }
 
 #[test]
@@ -24,7 +24,7 @@ fn the_stroke_an_envelope_needs_goes_into_the_limits() {
     h.state_mut().design.wait();
     h.run();
     assert!(h.query_by_label("Needed: 0.6551 .. 1.3520 m").is_some());
-    crate::look(&mut h, "design-panel.png");
+    super::look(&mut h, "design-panel.png");
     assert!(
         h.query_by_label("It does not fit the current limits.")
             .is_some()

@@ -5,7 +5,7 @@ use egui_kittest::kittest::Queryable;
 use stewart_kinematics::analysis::cueing::{VehicleMotion, cue_recording};
 use stewart_kinematics::io::settings;
 
-use crate::files::drop_file;
+use super::files::drop_file;
 
 /// Braking at 5 m/s² from 1 to 3 s with a turn, every 20 ms for 5 s.
 fn braking() -> (String, Vec<(f64, VehicleMotion)>) {
@@ -31,7 +31,7 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     let path = dir.path().join("braking.csv");
     let (text, samples) = braking();
     std::fs::write(&path, text).unwrap_or_else(|e| panic!("{e}"));
-    let mut h = crate::tall_harness("seed", 2400.0);
+    let mut h = super::tall_harness("seed", 2400.0);
     let before = h.state().scenario().clone();
     drop_file(&mut h, &path);
     assert!(
@@ -53,7 +53,7 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     // The panel, opened: the recording and its plots.
     h.get_by_label("Motion cueing").click();
     h.run();
-    crate::look(&mut h, "cueing.png");
+    super::look(&mut h, "cueing.png");
     assert!(
         h.query_by_label_contains("Playing braking.csv: 251 samples")
             .is_some()
@@ -104,7 +104,7 @@ fn the_cueing_plots_read_with_a_legend_below_and_the_wheel_over_them_scrolls_the
     let path = dir.path().join("braking.csv");
     std::fs::write(&path, braking().0).unwrap_or_else(|e| panic!("{e}"));
     // A window of ordinary height: the side panel scrolls.
-    let mut h = crate::harness("seed");
+    let mut h = super::harness("seed");
     drop_file(&mut h, &path);
     // Scroll the side panel down (the wheel over its words, which no longer includes a
     // table that scrolls on its own) until the Motion cueing header is in sight, open it,
@@ -126,7 +126,7 @@ fn the_cueing_plots_read_with_a_legend_below_and_the_wheel_over_them_scrolls_the
     }
     // Then a little further, so that the force plot is wholly in sight.
     wheel(&mut h, egui::pos2(150.0, 400.0), -150.0);
-    crate::look(&mut h, "cueing-scrolled.png");
+    super::look(&mut h, "cueing-scrolled.png");
     // Which line is which, said below the data.
     assert!(
         h.query_by_label_contains("Dashed: the vehicle; solid:")
@@ -146,12 +146,12 @@ fn the_cueing_plots_read_with_a_legend_below_and_the_wheel_over_them_scrolls_the
         moved.top() < header.top() - 40.0,
         "the panel did not scroll: {header:?} → {moved:?}"
     );
-    crate::look(&mut h, "cueing-legend.png");
+    super::look(&mut h, "cueing-legend.png");
 }
 
 /// Turn the wheel by `dy` points at `at` and draw until the smooth scroll has settled.
 fn wheel(
-    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::state::ViewerState>,
+    h: &mut egui_kittest::Harness<'static, crate::viewer::state::ViewerState>,
     at: egui::Pos2,
     dy: f32,
 ) {

@@ -1,9 +1,9 @@
 //! The Orientation reach panel and the manual sliders' reach bars: the numbers shown are
 //! the core's ranges at the pose, and they follow the pose.
 
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Pose, Scenario};
 
@@ -12,7 +12,7 @@ fn manual_at(pose: Pose) -> egui_kittest::Harness<'static, ViewerState> {
     state.look.expand_panels = true;
     state.playback.mode = MotionMode::Manual;
     state.playback.manual = pose;
-    crate::harness_with(state, 4200.0)
+    super::harness_with(state, 4200.0)
 }
 
 /// The line the panel writes for angle `k` (3 roll, 4 pitch, 5 yaw) at `pose`, from the

@@ -2,11 +2,11 @@
 //! drawn by the renderer's own tests: kittest's render pass has no depth buffer, so the
 //! view's area shows the message that no renderer is attached.
 //!
-//! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --test ui snapshots` re-blesses them.
+//! `UPDATE_SNAPSHOTS=1 cargo test -p stewart_app --lib ui_tests::snapshots` re-blesses them.
 
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
 use egui_kittest::SnapshotOptions;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::{Pose, Scenario};
 
 /// Where the reference images live (relative to the app crate, where tests run).
@@ -23,7 +23,7 @@ fn options() -> SnapshotOptions {
 #[test]
 fn over_stroke_legs_take_their_3d_warning_colour_and_the_history_shows_them_leaving_the_stroke() {
     let state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
-    let mut h = crate::sized_harness(state, egui::vec2(960.0, 600.0));
+    let mut h = super::sized_harness(state, egui::vec2(960.0, 600.0));
     h.state_mut().playback.playing = false;
     h.state_mut().playback.mode = MotionMode::Manual;
     // Move x out to 0.26 m and yaw to −41° over 3 s of (simulated) wall time.

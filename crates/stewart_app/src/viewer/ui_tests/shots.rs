@@ -3,11 +3,11 @@
 
 use std::time::{Duration, Instant};
 
+use crate::viewer::state::ViewerState;
+use crate::viewer::window::shots::{ShotKind, ShotScale};
 use egui_kittest::Harness;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::window::shots::{ShotKind, ShotScale};
 
-use crate::harness;
+use super::harness;
 
 /// Press F12 and wait for the shot; the PNG written.
 fn shoot(h: &mut Harness<'static, ViewerState>) -> image::RgbaImage {

@@ -1,12 +1,12 @@
 //! Presentation mode, the manual-mode history and the view toolbar switches.
 
+use crate::viewer::state::playback::MotionMode;
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
-use stewart_app::viewer::state::playback::MotionMode;
 use stewart_kinematics::io::settings;
 use stewart_kinematics::solve::forward::assembly::same_placement;
 
-use crate::harness;
+use super::harness;
 
 #[test]
 fn p_enters_presentation_mode_and_escape_leaves_it() {
@@ -138,7 +138,7 @@ fn the_view_toolbar_switches_leg_colours_and_labels() {
 
 #[test]
 fn next_assembly_mode_steps_through_all_forty_of_dietmaiers_platform() {
-    let mut h = crate::tall_harness("dietmaier", 1000.0);
+    let mut h = super::tall_harness("dietmaier", 1000.0);
     // At home the legs are Dietmaier's.
     h.get_by_label("Manual pose").click();
     h.run();
@@ -280,13 +280,13 @@ fn one_slider_drag_is_one_undo_step() {
 
 #[test]
 fn a_finding_is_a_link_to_its_worst_moment_and_the_plot_marks_what_is_beyond() {
-    let mut h = crate::tall_harness("paired", 1600.0);
+    let mut h = super::tall_harness("paired", 1600.0);
     let setting = settings::all()
         .iter()
         .find(|s| s.key == "geometry.leg_max")
         .unwrap_or_else(|| panic!("no leg_max"));
     h.state_mut().apply(setting, Some(1.1));
-    crate::settle(&mut h);
+    super::settle(&mut h);
     let worst = h
         .state()
         .report()
@@ -375,7 +375,7 @@ fn no_text_style_is_smaller_than_eleven_points() {
 /// not.
 #[test]
 fn check_thresholds_are_behind_advanced() {
-    let mut h = crate::tall_harness("paired", 2400.0);
+    let mut h = super::tall_harness("paired", 2400.0);
     h.get_by_label("Limits and check thresholds").click();
     h.run();
     assert!(
@@ -402,12 +402,12 @@ fn check_thresholds_are_behind_advanced() {
 /// and actuator choices had no tooltip).
 #[test]
 fn buttons_explain_themselves_on_hover() {
-    let mut state = stewart_app::viewer::ViewerState::new(
+    let mut state = crate::viewer::ViewerState::new(
         stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
     );
     state.look.expand_panels = true;
     state.playback.playing = false;
-    let mut h = crate::harness_with(state, 3600.0);
+    let mut h = super::harness_with(state, 3600.0);
     for (button, tip) in [
         ("Iso", "Look from this standard direction"),
         ("Reset view", "The seed's view"),
@@ -443,7 +443,7 @@ fn presentation_enters_and_leaves_exactly_with_the_plot_a_third_at_most() {
     let plot_before = h.state().look.plot_height;
     assert!(plot_before > 800.0 / 3.0, "{plot_before}");
     let camera_before = h.state().look.camera;
-    let readout_size = |h: &egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>| {
+    let readout_size = |h: &egui_kittest::Harness<'static, crate::viewer::ViewerState>| {
         let s = h.state();
         let list = s.draw_list(&s.theme());
         let view = s.look.view_px.map(|v| v as f32);
@@ -534,7 +534,7 @@ fn f1_lists_every_key_and_ctrl_q_quits() {
     ] {
         assert!(h.query_by_label(keys).is_some(), "{keys} is not listed");
     }
-    crate::look(&mut h, "help.png");
+    super::look(&mut h, "help.png");
     h.key_press(egui::Key::F1);
     h.run();
     assert!(h.query_by_label("Help / keys").is_none());
@@ -546,10 +546,7 @@ fn f1_lists_every_key_and_ctrl_q_quits() {
 
 /// Drag the plot's top edge (the horizontal splitter, grabbed just above its line) by
 /// `dy` points (negative: up).
-fn drag_plot_edge(
-    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
-    dy: f32,
-) {
+fn drag_plot_edge(h: &mut egui_kittest::Harness<'static, crate::viewer::ViewerState>, dy: f32) {
     let edge = h
         .get_all_by_role(Role::Splitter)
         .map(|n| n.rect())

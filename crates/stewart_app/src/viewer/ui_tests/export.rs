@@ -2,14 +2,14 @@
 
 use std::time::{Duration, Instant};
 
+use crate::i18n::Lang;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::exports::ExportKind;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use stewart_app::i18n::Lang;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::exports::ExportKind;
 
-use crate::tall_harness;
+use super::tall_harness;
 
 /// Tall enough for the Export panel at the bottom of the controls.
 const HEIGHT: f32 = 2400.0;

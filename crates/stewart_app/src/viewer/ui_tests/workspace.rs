@@ -2,12 +2,12 @@
 //! with `stewart workspace`, the platform centre is placed inside or outside, and the
 //! conditioning slice counts the cells past the threshold — in English and in Chinese.
 
+use crate::i18n::Lang;
+use crate::viewer::state::ViewerState;
+use crate::viewer::state::playback::MotionMode;
+use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use stewart_app::i18n::Lang;
-use stewart_app::viewer::state::ViewerState;
-use stewart_app::viewer::state::playback::MotionMode;
-use stewart_app::viewer::tools::workspace::{WorkspaceTool, format_volume};
 use stewart_kinematics::analysis::dynamics;
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Angle, Pose, Scenario};
@@ -31,7 +31,7 @@ fn shown(preset: &str, lang: Lang) -> Harness<'static, ViewerState> {
     let mut state = viewer(preset);
     state.look.lang = lang;
     state.workspace.show = true;
-    let mut h = crate::harness_with(state, 4200.0);
+    let mut h = super::harness_with(state, 4200.0);
     settle(&mut h);
     h
 }
@@ -59,7 +59,7 @@ fn volume_line(s: &Scenario, orientation: [Angle; 3]) -> String {
 
 #[test]
 fn the_checkbox_shows_the_surface_and_its_numbers() {
-    let mut h = crate::harness_with(viewer("paired"), 4200.0);
+    let mut h = super::harness_with(viewer("paired"), 4200.0);
     let theme = h.state().theme();
     assert!(h.state().draw_list(&theme).analysis.is_empty());
     h.get_by_label("Show the reachable workspace").click();
@@ -226,7 +226,7 @@ fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
     h.get_by_label("coloured by stiffness").click();
     h.run();
     settle(&mut h);
-    crate::look(&mut h, "stiffness_slice.png");
+    super::look(&mut h, "stiffness_slice.png");
     let state = h.state();
     let slice = state
         .workspace

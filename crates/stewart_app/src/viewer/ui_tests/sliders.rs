@@ -5,11 +5,11 @@ use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::io::settings;
 
-use crate::harness;
+use super::harness;
 
 /// Drag from `from` by `dx` points, with `modifiers` held until the button is released.
 fn drag(
-    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
+    h: &mut egui_kittest::Harness<'static, crate::viewer::ViewerState>,
     from: egui::Pos2,
     dx: f32,
     modifiers: egui::Modifiers,
@@ -20,7 +20,7 @@ fn drag(
 /// [`drag`], letting the modifiers go before the button when `early` (in the same frame,
 /// as a hand lets go of both at once).
 fn drag_letting_go(
-    h: &mut egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>,
+    h: &mut egui_kittest::Harness<'static, crate::viewer::ViewerState>,
     from: egui::Pos2,
     dx: f32,
     modifiers: egui::Modifiers,
@@ -57,7 +57,7 @@ fn drag_letting_go(
     h.run();
 }
 
-fn duration(h: &egui_kittest::Harness<'static, stewart_app::viewer::ViewerState>) -> f64 {
+fn duration(h: &egui_kittest::Harness<'static, crate::viewer::ViewerState>) -> f64 {
     h.state().scenario().motion.sampling.duration()
 }
 
@@ -145,7 +145,7 @@ fn a_fine_drag_keeps_its_value_when_shift_is_let_go_with_the_button_and_is_one_u
 
 #[test]
 fn a_desk_platforms_radius_slider_is_not_pinned_at_its_left_end() {
-    let mut h = crate::tall_harness("servo-desk", 1600.0);
+    let mut h = super::tall_harness("servo-desk", 1600.0);
     h.get_by_label("Geometry").click();
     h.run();
     let node = h.get_by_role_and_label(Role::Slider, "base radius (m)");
