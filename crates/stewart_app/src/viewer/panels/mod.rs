@@ -76,19 +76,19 @@ fn view_parts(state: &mut ViewerState) -> view::ViewParts<'_> {
 
 /// The export window, and what it asks done.
 fn export_window(ctx: &egui::Context, state: &mut ViewerState) {
-    let plan = (state.exports.open && state.exports.form.kind.is_video())
-        .then(|| {
-            // What the export will write, planned for the path as typed (its extension
-            // decides the format and so the default rate).
-            let path = std::path::PathBuf::from(state.exports.form.path.trim());
-            let request = state.video_request(path);
-            let scenario = state.scenario();
-            Some((
-                request.plan(scenario).ok()?,
-                request.frame_count(scenario).ok()?,
-            ))
-        })
-        .flatten();
+    // Planned only while the form is shown (open, no export running, a video kind), for
+    // the path as typed: its extension decides the format and so the default rate.
+    let exports = &state.exports;
+    let plan = if exports.open && exports.job.is_none() && exports.form.kind.is_video() {
+        let request = state.video_request(std::path::PathBuf::from(exports.form.path.trim()));
+        let scenario = state.scenario();
+        request
+            .plan(scenario)
+            .ok()
+            .zip(request.frame_count(scenario).ok())
+    } else {
+        None
+    };
     let name = state.scenario().name.clone();
     let asked = export::window(
         ctx,
