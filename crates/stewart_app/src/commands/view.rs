@@ -26,9 +26,9 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
     };
     let wanted = args.lang.unwrap_or_else(Lang::from_env);
     let (saved, mut note) = match (&folder, args.fresh) {
-        (Some(f), false) => match session::load(f, wanted) {
+        (Some(f), false) => match session::load(f) {
             Ok(s) => (s, None),
-            Err(n) => (None, Some(n)),
+            Err(e) => (None, Some(e.words(wanted))),
         },
         _ => (None, None),
     };
@@ -39,7 +39,8 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
         (Some(s), false) => match s.scenario() {
             Ok(scenario) => Some((scenario, s.origin.clone())),
             Err(e) => {
-                note = Some(wanted.fmt("session.scenario_broken", &[("why", &e)]));
+                let why = e.words(wanted);
+                note = Some(wanted.fmt("session.scenario_broken", &[("why", &why)]));
                 None
             }
         },

@@ -8,8 +8,10 @@
 //!   workspace, the design search, reach, the mode viewer, assembly modes;
 //! - [`window`]: the window around it all — winit and egui-wgpu, the 3D view's paint
 //!   callback and its quality, screenshots, the window's size, fonts, *Show in folder*;
-//! - [`panels`]: one egui function per panel, each given the parts it edits.
+//! - [`panels`]: one egui function per panel, each given the parts it edits;
+//! - [`error`]: the one error everything above returns, worded only where it is shown.
 
+pub(crate) mod error;
 pub mod panels;
 pub(crate) mod state;
 pub(crate) mod tools;

@@ -4,7 +4,7 @@
 use egui::RichText;
 use stewart_kinematics::io::settings;
 
-use super::widgets::{ERROR, OK, WARNING};
+use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::state::document::Document;
 use crate::viewer::tools::design::DesignTool;
@@ -107,7 +107,7 @@ fn result(ui: &mut egui::Ui, tool: &DesignTool, doc: &mut Document, t: Lang) {
     let report = match &tool.result {
         None => return,
         Some(Err(e)) => {
-            ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
+            widgets::not_applied(ui, e, t);
             return;
         }
         Some(Ok(report)) => report.clone(),

@@ -122,8 +122,7 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
         let [ixx, iyy, izz, ixy, ixz, iyz] = inertia;
         let tensor = Matrix3::new(ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz);
         ed.edit(Group::Dynamics, |s| {
-            s.payload =
-                Some(Payload::new(mass, Vector3::from(com), tensor).map_err(|e| e.to_string())?);
+            s.payload = Some(Payload::new(mass, Vector3::from(com), tensor)?);
             Ok(())
         });
     }

@@ -147,7 +147,7 @@ fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
     {
         action = Some(ExportAction::Export(PathBuf::from(path)));
     }
-    widgets::status(ui, &exports.status);
+    widgets::status(ui, &exports.status, t);
     if let Some(written) = exports.written.clone()
         && ui
             .button(t.tr("export.show_folder"))

@@ -143,9 +143,7 @@ fn actuators(ui: &mut egui::Ui, ed: &mut Editor) {
         }
     });
     if let Some(kind) = chosen {
-        ed.edit(Group::Geometry, |s| {
-            switch_actuator(s, kind).map_err(|e| e.to_string())
-        });
+        ed.edit(Group::Geometry, |s| Ok(switch_actuator(s, kind)?));
     }
     // Each slider shows only for the kind it belongs to.
     for key in [GeometryKey::LegMin, GeometryKey::LegMax] {

@@ -14,6 +14,7 @@ use stewart_link::transport::list_ports;
 
 use super::widgets;
 use crate::i18n::Lang;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
 
@@ -73,7 +74,7 @@ pub(crate) fn show(
     ui: &mut egui::Ui,
     link: &mut LiveLink,
     doc: &mut Document,
-    link_error: &mut Option<String>,
+    link_error: &mut Option<ViewerError>,
     t: Lang,
     open: bool,
 ) -> bool {
@@ -92,7 +93,7 @@ pub(crate) fn show(
                     .on_hover_text(t.tr("link.connect_tip"))
                     .clicked();
             }
-            widgets::status(ui, &link.status);
+            widgets::status(ui, &link.status, t);
         });
     connect
 }
@@ -308,7 +309,7 @@ fn choice<T: Word>(ui: &mut egui::Ui, lang: Lang, label: &str, current: T) -> Op
 
 /// Where the stream goes: a serial port (typed or chosen from those present) and its
 /// speed, a UDP address, or nowhere (a dry run to a file).
-fn transport(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+fn transport(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerError>, t: Lang) {
     let link = doc.scenario().link.clone();
     match link.transport {
         LinkTransport::Serial => {
@@ -374,7 +375,7 @@ fn transport(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, 
 }
 
 /// The `[link]` table.
-fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerError>, t: Lang) {
     let link = doc.scenario().link.clone();
     let outputs = doc.scenario().geometry.actuator().kind().link_outputs();
     if let Some(chosen) = choice::<LinkTransport>(ui, t, "link.transport", link.transport) {
@@ -425,12 +426,12 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t
     }
     egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, doc, error, t));
     if let Some(e) = error {
-        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(widgets::ERROR));
+        widgets::not_applied(ui, e, t);
     }
 }
 
 /// Channel k: which actuator, scale, offset, reversed.
-fn channels(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<String>, t: Lang) {
+fn channels(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerError>, t: Lang) {
     let link = doc.scenario().link.clone();
     let unit = doc.scenario().geometry.quantity().unit;
     egui::Grid::new("link-channels")

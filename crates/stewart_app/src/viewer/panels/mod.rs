@@ -123,7 +123,7 @@ fn scenario_action(ctx: &egui::Context, state: &mut ViewerState, action: scenari
                 state.session.origin = format!("preset {name}");
                 state.files.status = None;
             }
-            Err(e) => state.files.status = Some(Err(e.to_string())),
+            Err(e) => state.files.status = Some(Err(e.into())),
         },
         ScenarioAction::OpenPath(path) => state.open_path(&path),
         ScenarioAction::OpenFile(path) => state.open_file(&path),

@@ -375,7 +375,7 @@ fn keyframes(ui: &mut egui::Ui, ed: &mut Editor) {
     });
     if changed {
         ed.edit(Group::Trajectory, |s| {
-            let k = Keyframes::new(keys, interpolation).map_err(|e| e.to_string())?;
+            let k = Keyframes::new(keys, interpolation)?;
             s.motion.trajectory = Trajectory::Keyframes(k);
             Ok(())
         });

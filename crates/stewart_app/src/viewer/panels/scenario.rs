@@ -62,7 +62,7 @@ pub(crate) fn show(ui: &mut egui::Ui, parts: ScenarioParts) -> Option<ScenarioAc
     action = action.or(file_rows(ui, parts.files, t));
     action = action.or(folder_choice(ui, parts.files, t));
     action = action.or(recent_choice(ui, parts.files, t));
-    widgets::status(ui, &parts.files.status);
+    widgets::status(ui, &parts.files.status, t);
     ui.horizontal(|ui| {
         ui.checkbox(&mut parts.look.light_theme, t.tr("scenario.light_theme"));
         ui.checkbox(&mut parts.look.presentation, t.tr("scenario.presentation"))

@@ -140,7 +140,7 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
         .on_hover_text(t.tr("view.screenshot_tip"));
     });
     if !parts.look.presentation {
-        super::widgets::status(ui, &parts.shots.status);
+        super::widgets::status(ui, &parts.shots.status, t);
     }
     action
 }

@@ -7,6 +7,7 @@ use stewart_kinematics::model::actuator::ActuatorKind;
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::files::Status;
@@ -234,14 +235,14 @@ fn slider<'a>(
     }
 }
 
-/// The outcome of the last action, green or red.
-pub(crate) fn status(ui: &mut egui::Ui, status: &Status) {
+/// The outcome of the last action, green or red (an error in `t`'s words).
+pub(crate) fn status(ui: &mut egui::Ui, status: &Status, t: Lang) {
     match status {
         Some(Ok(message)) => {
             ui.label(RichText::new(message).color(OK));
         }
-        Some(Err(message)) => {
-            ui.label(RichText::new(message).color(ERROR));
+        Some(Err(e)) => {
+            ui.label(RichText::new(e.words(t)).color(ERROR));
         }
         None => {}
     }
@@ -252,8 +253,14 @@ pub(crate) fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[G
     if let Some((group, e)) = &doc.edit_error
         && groups.contains(group)
     {
-        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
+        not_applied(ui, e, t);
     }
+}
+
+/// "Not applied", and why, in red.
+pub(crate) fn not_applied(ui: &mut egui::Ui, e: &ViewerError, t: Lang) {
+    let why = e.words(t);
+    ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", &why)])).color(ERROR));
 }
 
 /// A bar over `full` (slider units) with the `reachable` part in green and the `value`

@@ -7,7 +7,7 @@ use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::colormap;
 
-use super::widgets::{ERROR, OK, WARNING};
+use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
 
@@ -63,7 +63,7 @@ fn orientation(ui: &mut egui::Ui, w: &mut WorkspaceTool, t: Lang) {
 /// Progress, volume, extent, and where the platform centre lies.
 fn numbers(ui: &mut egui::Ui, w: &WorkspaceTool, scenario: &Scenario, pose: &Pose, t: Lang) {
     if let Some(e) = &w.error {
-        ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", e)])).color(ERROR));
+        widgets::not_applied(ui, e, t);
         return;
     }
     let Some(o) = &w.latest else {

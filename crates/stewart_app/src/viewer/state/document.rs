@@ -15,6 +15,7 @@ use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
 
 use crate::i18n::Lang;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::derived::Derived;
 use crate::viewer::state::undo::Undo;
 use crate::viewer::state::vehicle::VehicleSource;
@@ -28,7 +29,7 @@ pub(crate) struct Document {
     /// The edits that can be undone and redone.
     pub(crate) undo: Undo,
     /// Why the last edit was refused (the scenario then stayed as it was).
-    pub(crate) edit_error: Option<(Group, String)>,
+    pub(crate) edit_error: Option<(Group, ViewerError)>,
     /// The vehicle recording loaded last and the motion cued from it.
     vehicle: Option<VehicleSource>,
 }
@@ -58,13 +59,25 @@ impl Document {
     pub(crate) fn edit(
         &mut self,
         group: Group,
-        change: impl FnOnce(&mut Scenario) -> Result<(), String>,
+        change: impl FnOnce(&mut Scenario) -> Result<(), ViewerError>,
     ) -> bool {
+        self.try_edit(group, change).is_ok()
+    }
+
+    /// [`Document::edit`], returning why a refused change was refused.
+    pub(crate) fn try_edit(
+        &mut self,
+        group: Group,
+        change: impl FnOnce(&mut Scenario) -> Result<(), ViewerError>,
+    ) -> Result<(), ViewerError> {
         let mut edited = self.scenario.clone();
         let mut recued = None;
         let checked = change(&mut edited)
             .and_then(|()| match settings::out_of_range(&edited) {
-                Some((setting, reason)) => Err(format!("`{}` {reason}", setting.key)),
+                Some((setting, reason)) => Err(ViewerError::OutOfRange {
+                    key: setting.key.to_owned(),
+                    reason,
+                }),
                 None => Ok(()),
             })
             .and_then(|()| {
@@ -86,11 +99,11 @@ impl Document {
                     self.vehicle = recued;
                 }
                 self.derived.rebuild(&self.scenario);
-                true
+                Ok(())
             }
             Err(reason) => {
-                self.edit_error = Some((group, reason));
-                false
+                self.edit_error = Some((group, reason.clone()));
+                Err(reason)
             }
         }
     }
@@ -101,21 +114,15 @@ impl Document {
         &mut self,
         name: &str,
         samples: std::sync::Arc<Vec<(f64, stewart_kinematics::analysis::cueing::VehicleMotion)>>,
-    ) -> Result<(), String> {
+    ) -> Result<(), ViewerError> {
         let source = VehicleSource::new(name, samples, &self.scenario)?;
         let motion = source.motion.clone();
-        if self.edit(Group::Trajectory, |s| {
+        self.try_edit(Group::Trajectory, |s| {
             s.motion = motion;
             Ok(())
-        }) {
-            self.vehicle = Some(source);
-            Ok(())
-        } else {
-            Err(self
-                .edit_error
-                .as_ref()
-                .map_or_else(String::new, |(_, why)| why.clone()))
-        }
+        })?;
+        self.vehicle = Some(source);
+        Ok(())
     }
 
     /// The vehicle recording whose cued motion is the scenario's now (`None` when the
@@ -132,11 +139,14 @@ impl Document {
     pub(crate) fn edit_link(
         &mut self,
         change: impl FnOnce(&mut LinkSettings),
-    ) -> Result<(), String> {
+    ) -> Result<(), ViewerError> {
         let mut link = self.scenario.link.clone();
         change(&mut link);
         if let Some(p) = link.problem() {
-            return Err(format!("`{}` {}", p.key, p.reason));
+            return Err(ViewerError::OutOfRange {
+                key: p.key,
+                reason: p.reason,
+            });
         }
         if link != self.scenario.link {
             self.undo.record(&self.scenario);
@@ -147,15 +157,13 @@ impl Document {
 
     /// Write one setting (`None`: switch an optional one off).
     pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) -> bool {
-        self.edit(setting.group, |s| {
-            setting.set(s, value).map_err(|e| e.to_string())
-        })
+        self.edit(setting.group, |s| Ok(setting.set(s, value)?))
     }
 
     /// Replace the geometry's numbers.
     pub(crate) fn set_geometry(&mut self, params: GeometryParams) -> bool {
         self.edit(Group::Geometry, |s| {
-            s.geometry = stewart_kinematics::Geometry::new(params).map_err(|e| e.to_string())?;
+            s.geometry = stewart_kinematics::Geometry::new(params)?;
             Ok(())
         })
     }

@@ -8,6 +8,7 @@ use stewart_kinematics::io::settings::{Group, Setting, TrajectoryChoice};
 use stewart_kinematics::{Scenario, model::layout::Layout};
 
 use crate::i18n::Lang;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::playback::Playback;
 
@@ -49,7 +50,7 @@ impl<'a> Editor<'a> {
     pub(crate) fn edit(
         &mut self,
         group: Group,
-        change: impl FnOnce(&mut Scenario) -> Result<(), String>,
+        change: impl FnOnce(&mut Scenario) -> Result<(), ViewerError>,
     ) -> bool {
         let applied = self.doc.edit(group, change);
         self.keep_time_in_range();

@@ -3,6 +3,7 @@
 //! draws), cancel sets the job's flag, which the exporter checks.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -21,6 +22,7 @@ use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_w
 use crate::export::workspace_plot::figure_file;
 use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
+use crate::viewer::error::ViewerError;
 use crate::viewer::tools::job::{Job, JobFailed};
 
 /// What to export.
@@ -144,7 +146,7 @@ impl ExportJob {
 
     /// The outcome once the export has finished: a sentence saying what was written, or
     /// why nothing was.
-    pub(crate) fn poll(&mut self) -> Option<Result<String, String>> {
+    pub(crate) fn poll(&mut self) -> Option<Result<String, ViewerError>> {
         let outcome = self.job.poll()?;
         Some(self.words(outcome))
     }
@@ -152,14 +154,13 @@ impl ExportJob {
     fn words(
         &self,
         outcome: std::result::Result<Result<String>, JobFailed>,
-    ) -> Result<String, String> {
+    ) -> Result<String, ViewerError> {
         match outcome {
             Ok(Ok(message)) => Ok(message),
             // The user's own choice: said, not as an error.
             Ok(Err(_)) if self.cancel_asked => Ok(self.lang.tr("export.cancelled").to_owned()),
-            Ok(Err(e)) => Err(format!("{e:#}")),
-            Err(JobFailed::Panicked) => Err(self.lang.tr("export.panicked").to_owned()),
-            Err(e) => Err(e.to_string()),
+            Ok(Err(e)) => Err(ViewerError::Export(Arc::new(e))),
+            Err(e) => Err(e.into()),
         }
     }
 }
@@ -284,7 +285,10 @@ fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<Stri
         let _ = watch.join();
         outcome
     })
-    .map_err(|e| anyhow!(e.unwrap_or_else(|| lang.tr("export.cancelled").to_owned())))?;
+    .map_err(|e| match e {
+        Some(e) => anyhow::Error::from(e),
+        None => anyhow!("{}", lang.tr("export.cancelled")),
+    })?;
     if outcome.extent.is_none() {
         bail!("{}", lang.tr("export.no_workspace"));
     }
@@ -301,8 +305,7 @@ fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<Stri
         view.size,
         &view.path,
         lang,
-    )
-    .map_err(|e| anyhow!(e))?;
+    )?;
     let (w, h) = view.size;
     Ok(lang.fmt(
         "export.wrote_view",

@@ -4,11 +4,13 @@
 //! as it was.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use stewart_kinematics::Scenario;
 use stewart_kinematics::io::settings::Group;
 use stewart_kinematics::model::trajectory::PoseTable;
 
+use crate::viewer::error::{Doing, ViewerError};
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::files::{
     OpenKind, Overwrite, Picker, Purpose, WriteAction, absolute, folder_of,
@@ -22,10 +24,7 @@ impl ViewerState {
             OpenKind::Scenario => self.open_file(path),
             OpenKind::PoseTable => self.open_pose_table(path),
             OpenKind::Other => {
-                self.files.status = Some(Err(self
-                    .look
-                    .lang
-                    .fmt("files.unknown_kind", &[("path", &absolute(path).display())])));
+                self.files.status = Some(Err(ViewerError::UnknownKind(absolute(path))));
             }
         }
     }
@@ -35,9 +34,7 @@ impl ViewerState {
     pub(crate) fn open_file(&mut self, path: &Path) {
         let full = absolute(path);
         self.files.status = Some(
-            match regular_file(&full)
-                .and_then(|()| Scenario::load(&full).map_err(|e| e.to_string()))
-            {
+            match regular_file(&full).and_then(|()| Ok(Scenario::load(&full)?)) {
                 Ok(s) => {
                     let name = s.name.clone();
                     self.session.origin = full.display().to_string();
@@ -74,38 +71,35 @@ impl ViewerState {
             return;
         }
         let motion = regular_file(&full).and_then(|()| {
-            let file = std::fs::File::open(&full).map_err(|e| format!("{name}: {e}"))?;
-            let table = PoseTable::read(file, &name).map_err(|e| e.to_string())?;
-            table.to_motion(&name).map_err(|e| e.to_string())
+            let file =
+                std::fs::File::open(&full).map_err(|e| ViewerError::io(&full, Doing::Read, e))?;
+            let table = PoseTable::read(file, &name)?;
+            Ok(table.to_motion(&name)?)
         });
         let lang = self.look.lang;
-        self.files.status = Some(match motion {
-            Ok(motion) => {
-                let (count, seconds) = (motion.sampling.len(), motion.sampling.duration());
-                if self.edit(Group::Trajectory, |s| {
-                    s.motion = motion;
-                    Ok(())
-                }) {
-                    self.playback.time = 0.0;
-                    self.files.remember_recent(&full);
-                    Ok(lang.fmt(
-                        "files.poses_opened",
-                        &[
-                            ("count", &count),
-                            ("seconds", &format!("{seconds:.2}")),
-                            ("path", &name),
-                        ],
-                    ))
-                } else {
-                    Err(self
-                        .doc
-                        .edit_error
-                        .as_ref()
-                        .map_or_else(String::new, |(_, why)| format!("{name}: {why}")))
-                }
-            }
-            Err(e) => Err(e),
+        let played = motion.and_then(|motion| {
+            let (count, seconds) = (motion.sampling.len(), motion.sampling.duration());
+            let set = |s: &mut Scenario| {
+                s.motion = motion;
+                Ok(())
+            };
+            (self.doc.try_edit(Group::Trajectory, set))
+                .map_err(|why| why.in_file(&name))
+                .map(|()| (count, seconds))
         });
+        self.files.status = Some(played.map(|(count, seconds)| {
+            // The motion starts again (and the time stays within the new one).
+            self.playback.time = 0.0;
+            self.files.remember_recent(&full);
+            lang.fmt(
+                "files.poses_opened",
+                &[
+                    ("count", &count),
+                    ("seconds", &format!("{seconds:.2}")),
+                    ("path", &name),
+                ],
+            )
+        }));
     }
 
     /// Cue a CSV of vehicle motion (`t,ax,ay,az,wx,wy,wz`) with the scenario's `[cueing]`
@@ -115,16 +109,17 @@ impl ViewerState {
         let name = full.display().to_string();
         let lang = self.look.lang;
         let read = std::fs::File::open(full)
-            .map_err(|e| format!("{name}: {e}"))
+            .map_err(|e| ViewerError::io(full, Doing::Read, e))
             .and_then(|mut file| {
-                crate::vehicle_table::read(&mut file, &name).map_err(|e| format!("{e:#}"))
+                crate::vehicle_table::read(&mut file, &name)
+                    .map_err(|e| ViewerError::VehicleTable(Arc::new(e)))
             });
         let outcome = read.and_then(|table| {
             let count = table.samples.len();
             let seconds = table.samples.last().map_or(0.0, |l| l.0)
                 - table.samples.first().map_or(0.0, |f| f.0);
             self.doc
-                .play_vehicle(&name, std::sync::Arc::new(table.samples))
+                .play_vehicle(&name, Arc::new(table.samples))
                 .map(|()| (count, seconds))
         });
         if outcome.is_ok() {
@@ -150,7 +145,7 @@ impl ViewerState {
         let lang = self.look.lang;
         let written = crate::output::write_atomically(&full, text.as_bytes())
             .map(|()| lang.fmt("scenario.saved", &[("path", &full.display())]))
-            .map_err(|e| format!("{e:#}"));
+            .map_err(|e| ViewerError::Export(Arc::new(e)));
         if written.is_ok() {
             self.doc.mark_saved();
             // The saved session remembers the file now (Ctrl+S at the next start saves it).
@@ -223,10 +218,10 @@ impl ViewerState {
 }
 
 /// Only regular files are read: a FIFO would block the window, a device never ends.
-fn regular_file(path: &Path) -> Result<(), String> {
+fn regular_file(path: &Path) -> Result<(), ViewerError> {
     match std::fs::metadata(path) {
         Ok(m) if m.is_file() => Ok(()),
-        Ok(_) => Err(format!("{}: not a regular file", path.display())),
-        Err(e) => Err(format!("{}: cannot be read ({e})", path.display())),
+        Ok(_) => Err(ViewerError::NotRegularFile(path.to_owned())),
+        Err(e) => Err(ViewerError::io(path, Doing::Read, e)),
     }
 }

@@ -7,8 +7,10 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use crate::viewer::error::ViewerError;
+
 /// The outcome of the last file or export action, shown until the next one.
-pub(crate) type Status = Option<Result<String, String>>;
+pub(crate) type Status = Option<Result<String, ViewerError>>;
 
 /// How long a folder listing is trusted before the folder is read again.
 const LISTING_LIFETIME: Duration = Duration::from_secs(1);

@@ -18,6 +18,7 @@ use stewart_link::transport::{Record, Transport};
 use crate::i18n::Lang;
 use crate::link_plan::{Drive, Followed, LinkPlan};
 use crate::live_cue::{CueCounts, LiveCue};
+use crate::viewer::error::ViewerError;
 
 /// Lines of a dry run kept for the panel.
 const RECENT_LINES: usize = 8;
@@ -105,8 +106,8 @@ impl LiveLink {
         scenario: &Scenario,
         drive: Drive,
         looping: bool,
-    ) -> Result<String, String> {
-        let fail = |e: anyhow::Error| format!("{e:#}");
+    ) -> Result<String, ViewerError> {
+        let fail = |e: anyhow::Error| ViewerError::Link(Arc::new(e));
         let plan = LinkPlan::new(scenario).map_err(fail)?;
         let transport: Box<dyn Transport> = if scenario.link.transport == LinkTransport::File {
             self.recent
@@ -147,7 +148,8 @@ impl LiveLink {
             ),
             LinkTransport::Udp => transport.describe(),
         };
-        let sender = Sender::spawn(config, target, transport).map_err(|e| e.to_string())?;
+        let sender = Sender::spawn(config, target, transport)
+            .map_err(|e| ViewerError::LinkSpawn(Arc::new(e)))?;
         self.running = Some(Running {
             sender,
             source,
@@ -367,7 +369,7 @@ impl LiveLink {
 }
 
 /// The words for how a stream ended.
-fn outcome(lang: Lang, running: Running) -> Result<String, String> {
+fn outcome(lang: Lang, running: Running) -> Result<String, ViewerError> {
     let Running {
         sender,
         described,
@@ -377,13 +379,14 @@ fn outcome(lang: Lang, running: Running) -> Result<String, String> {
     let summary = sender.join();
     if summary.status.emergency {
         let (pose, values) = plan.left_at(&summary.status.values);
-        return Err(lang.fmt(
-            "link.emergency",
-            &[("to", &described), ("pose", &pose), ("values", &values)],
-        ));
+        return Err(ViewerError::LinkEmergency {
+            to: described,
+            pose,
+            values,
+        });
     }
     match summary.failure {
-        Some(failure) => Err(lang.fmt("link.stopped", &[("to", &described), ("why", &failure)])),
+        Some(why) => Err(ViewerError::LinkStopped { to: described, why }),
         None => Ok(lang.fmt(
             "link.disconnected",
             &[("to", &described), ("frames", &summary.status.frames)],
@@ -468,9 +471,8 @@ mod tests {
             assert!(started.elapsed().as_secs() < 10);
             std::thread::sleep(std::time::Duration::from_millis(5));
         }
-        let ended = link
-            .status
-            .clone()
+        let ended = (link.status.clone())
+            .map(|s| s.map_err(|e| e.to_string()))
             .unwrap_or_else(|| Err("no status".into()));
         assert!(
             ended.as_ref().is_ok_and(|m| m.contains("ended disarmed")),
@@ -486,11 +488,9 @@ mod tests {
         let mut link = LiveLink::default();
         link.connect(&scenario, Drive::Still(scenario.geometry.home_pose()), true);
         assert!(!link.connected());
-        let e = link
-            .status
-            .clone()
-            .and_then(Result::err)
-            .unwrap_or_default();
+        let e = link.status.clone().and_then(Result::err);
+        assert!(matches!(e, Some(ViewerError::Link(_))), "{e:?}");
+        let e = e.map(|e| e.to_string()).unwrap_or_default();
         assert!(
             e.contains("cannot open the serial port /dev/no-such-port"),
             "{e}"

@@ -27,7 +27,6 @@ pub(crate) mod vehicle;
 
 use nalgebra::Vector3;
 
-use stewart_kinematics::io::settings::Group;
 #[cfg(test)]
 use stewart_kinematics::io::settings::Setting;
 #[cfg(test)]
@@ -41,6 +40,7 @@ use stewart_render::{OrbitCamera, Theme};
 
 use crate::export::frames::default_camera;
 use crate::link_plan::Drive;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::exports::Exports;
@@ -65,7 +65,7 @@ pub struct ViewerState {
     /// The link to hardware.
     pub(crate) link: LiveLink,
     /// Why the last edit of `[link]` was refused.
-    pub(crate) link_error: Option<String>,
+    pub(crate) link_error: Option<ViewerError>,
     /// Keyboard and gamepad moves of the manual pose.
     pub(crate) teleop: Teleop,
     /// What is remembered between runs.
@@ -312,16 +312,6 @@ impl ViewerState {
         )
     }
 
-    /// [`Editor::edit`]: change the scenario through the one edit path. Returns whether
-    /// the change was applied.
-    pub(crate) fn edit(
-        &mut self,
-        group: Group,
-        change: impl FnOnce(&mut Scenario) -> Result<(), String>,
-    ) -> bool {
-        self.editor().edit(group, change)
-    }
-
     /// [`Editor::apply`]: write one setting (`None`: switch an optional one off).
     #[cfg(test)]
     pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) {
@@ -361,7 +351,7 @@ impl ViewerState {
         if let Some(folder) = &self.session.folder
             && let Err(e) = session::forget(folder)
         {
-            self.session.note = Some(e);
+            self.session.note = Some(e.words(self.look.lang));
         }
         self.session.forgotten = true;
         let missing = self.look.renderer_missing.take();
@@ -837,7 +827,7 @@ mod tests {
             s.doc
                 .edit_error
                 .as_ref()
-                .is_some_and(|(g, _)| *g == Group::Geometry)
+                .is_some_and(|(g, _)| *g == stewart_kinematics::io::settings::Group::Geometry)
         );
     }
 
@@ -849,7 +839,7 @@ mod tests {
             .unwrap_or_else(|e| panic!("{e}"));
         let now = key.get(s.scenario()).unwrap_or(0.0);
         s.apply(key, Some(now + 7.0));
-        assert_eq!(s.doc.edit_error, None);
+        assert!(s.doc.edit_error.is_none());
         assert_eq!(
             s.layout(),
             None,

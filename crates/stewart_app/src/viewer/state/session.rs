@@ -6,12 +6,14 @@
 //! note, never a crash; *Reset to defaults* forgets it.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 use stewart_kinematics::Scenario;
 use stewart_render::OrbitCamera;
 
 use crate::i18n::Lang;
+use crate::viewer::error::{Doing, ViewerError};
 use crate::viewer::state::look::Look;
 
 /// The session file's format; a file of another version is ignored.
@@ -92,9 +94,12 @@ impl Session {
     }
 
     /// The saved scenario, or why it no longer reads.
-    pub(crate) fn scenario(&self) -> Result<Scenario, String> {
-        Scenario::from_toml_str(&self.scenario, "the saved session", None)
-            .map_err(|e| e.to_string())
+    pub(crate) fn scenario(&self) -> Result<Scenario, ViewerError> {
+        Ok(Scenario::from_toml_str(
+            &self.scenario,
+            "the saved session",
+            None,
+        )?)
     }
 
     /// The saved window size, when it is one a screen can show (320×240 to 8192×8192; a
@@ -149,16 +154,18 @@ pub(crate) fn file_in(folder: &std::path::Path) -> PathBuf {
     folder.join("session.json")
 }
 
-/// The saved session in `folder`: `Ok(None)` when there is none; `Err(note)` when the file
-/// is broken, of another version or unreadable (it is then left alone and the viewer
-/// starts fresh).
-pub(crate) fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Session>, String> {
+/// The saved session in `folder`: `Ok(None)` when there is none; an error when the file is
+/// broken, of another version or unreadable (it is then left alone and the viewer starts
+/// fresh).
+pub(crate) fn load(folder: &std::path::Path) -> Result<Option<Session>, ViewerError> {
     let path = file_in(folder);
-    let unreadable = |why: &dyn std::fmt::Display| {
-        lang.fmt(
-            "session.unreadable",
-            &[("path", &path.display()), ("why", why)],
-        )
+    let unreadable = |why: &dyn std::fmt::Display| ViewerError::SessionUnreadable {
+        path: path.clone(),
+        why: why.to_string(),
+    };
+    let damaged = |why: &dyn std::fmt::Display| ViewerError::SessionDamaged {
+        path: path.clone(),
+        why: why.to_string(),
     };
     // The rules of every input: a regular file (not a device such as /dev/zero, not a FIFO
     // that would block the start for ever), of a bounded size, read with a limit.
@@ -174,19 +181,14 @@ pub(crate) fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Sessio
         .map_err(|e| e.to_string())
         .and_then(|file| stewart_kinematics::io::text::read_capped(file, MAX_SESSION_BYTES))
         .map_err(|e| unreadable(&e))?;
-    let text = String::from_utf8(bytes)
-        .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
-    let session: Session = serde_json::from_str(&text)
-        .map_err(|e| lang.fmt("session.damaged", &[("path", &path.display()), ("why", &e)]))?;
+    let text = String::from_utf8(bytes).map_err(|e| damaged(&e))?;
+    let session: Session = serde_json::from_str(&text).map_err(|e| damaged(&e))?;
     if session.version != VERSION {
-        return Err(lang.fmt(
-            "session.other_version",
-            &[
-                ("path", &path.display()),
-                ("found", &session.version),
-                ("version", &VERSION),
-            ],
-        ));
+        return Err(ViewerError::SessionVersion {
+            path,
+            found: session.version,
+            version: VERSION,
+        });
     }
     Ok(Some(session))
 }
@@ -196,17 +198,18 @@ pub(crate) fn load(folder: &std::path::Path, lang: Lang) -> Result<Option<Sessio
 pub(crate) const MAX_SESSION_BYTES: u64 = 4 << 20;
 
 /// Write the session into `folder` (whole or not at all).
-pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), String> {
-    std::fs::create_dir_all(folder)
-        .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
-    let text = serde_json::to_string_pretty(session).map_err(|e| e.to_string())?;
+pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), ViewerError> {
+    std::fs::create_dir_all(folder).map_err(|e| ViewerError::io(folder, Doing::CreateFolder, e))?;
+    let text = serde_json::to_string_pretty(session)
+        .map_err(|e| ViewerError::SessionEncode(Arc::new(e)))?;
     // The output rules' path (a symbolic link is followed and stays a link), staged beside
     // the real file and renamed over it. Not their writing: a session is saved also when a
     // signal asked the viewer to close. A character device (a link to `/dev/null` keeps the
     // viewer from remembering) is written as it is; a FIFO is not: at exit it would wait
     // for a reader for ever.
     let path = file_in(folder);
-    let destination = crate::output::Destination::new(&path, &[]).map_err(|e| format!("{e:#}"))?;
+    let destination = crate::output::Destination::new(&path, &[])
+        .map_err(|e| ViewerError::Export(Arc::new(e)))?;
     let real = destination.real();
     if destination.kind() != crate::output::Kind::File {
         let device = std::fs::metadata(real).is_ok_and(|m| is_character_device(&m));
@@ -215,14 +218,11 @@ pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), St
                 .write(true)
                 .open(real)
                 .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-                .map_err(|e| format!("cannot write {}: {e}", path.display()));
+                .map_err(|e| ViewerError::io(&path, Doing::Write, e));
         }
-        return Err(format!(
-            "{} is not a regular file: the session was not saved there",
-            path.display()
-        ));
+        return Err(ViewerError::NotRegularFile(path));
     }
-    let fail = |e: std::io::Error| format!("cannot write {}: {e}", path.display());
+    let fail = |e: std::io::Error| ViewerError::io(&path, Doing::Write, e);
     let mut staged =
         tempfile::NamedTempFile::new_in(crate::output::parent_of(real)).map_err(fail)?;
     std::io::Write::write_all(&mut staged, text.as_bytes()).map_err(fail)?;
@@ -245,12 +245,12 @@ fn is_character_device(meta: &std::fs::Metadata) -> bool {
 }
 
 /// Forget the session saved in `folder`.
-pub(crate) fn forget(folder: &std::path::Path) -> Result<(), String> {
+pub(crate) fn forget(folder: &std::path::Path) -> Result<(), ViewerError> {
     let path = file_in(folder);
     match std::fs::remove_file(&path) {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
-        Err(e) => Err(format!("cannot remove {}: {e}", path.display())),
+        Err(e) => Err(ViewerError::io(path, Doing::Remove, e)),
     }
 }
 
@@ -281,7 +281,7 @@ mod tests {
         save(&folder, &session).unwrap_or_else(|e| panic!("{e}"));
         let link = std::fs::symlink_metadata(file_in(&folder)).unwrap_or_else(|e| panic!("{e}"));
         assert!(link.file_type().is_symlink());
-        assert!(matches!(load(&folder, Lang::En), Ok(Some(_))));
+        assert!(matches!(load(&folder), Ok(Some(_))));
         let kept = std::fs::read_to_string(&elsewhere).unwrap_or_default();
         assert!(kept.contains("\"version\""), "{kept}");
         // A link to /dev/null: written there (nothing kept), still a link. A FIFO: refused
@@ -297,7 +297,10 @@ mod tests {
         let path = file_in(&folder);
         let made = std::process::Command::new("mkfifo").arg(&path).status();
         assert!(made.is_ok_and(|s| s.success()));
-        let note = save(&folder, &session).err().unwrap_or_default();
+        let note = save(&folder, &session)
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(note.contains("not a regular file"), "{note}");
         let meta = std::fs::symlink_metadata(&path).unwrap_or_else(|e| panic!("{e}"));
         assert!(meta.file_type().is_fifo(), "the FIFO was replaced");
@@ -306,7 +309,7 @@ mod tests {
     #[test]
     fn a_session_round_trips_and_restores_the_look() {
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(load(dir.path(), Lang::En), Ok(None));
+        assert!(matches!(load(dir.path()), Ok(None)));
         let mut scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
         stewart_kinematics::io::settings::apply_all(&mut scenario, ["geometry.base_radius=1.1"])
             .unwrap_or_else(|e| panic!("{e}"));
@@ -325,7 +328,7 @@ mod tests {
             ..Default::default()
         });
         save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
-        let back = load(dir.path(), Lang::En)
+        let back = load(dir.path())
             .unwrap_or_else(|e| panic!("{e}"))
             .unwrap_or_else(|| panic!("nothing saved"));
         assert_eq!(back, session);
@@ -352,7 +355,7 @@ mod tests {
         older.restore_look(&mut english);
         assert_eq!(english.lang, Lang::En);
         forget(dir.path()).unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(load(dir.path(), Lang::En), Ok(None));
+        assert!(matches!(load(dir.path()), Ok(None)));
     }
 
     #[test]
@@ -365,7 +368,10 @@ mod tests {
             ("\u{0}\u{1}binary", "is damaged"),
         ] {
             std::fs::write(&file, text).unwrap_or_else(|e| panic!("{e}"));
-            let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+            let note = load(dir.path())
+                .err()
+                .map(|e| e.to_string())
+                .unwrap_or_default();
             assert!(
                 note.contains(words) && note.ends_with("starting fresh"),
                 "{note}"
@@ -377,7 +383,10 @@ mod tests {
         old.version = 0;
         std::fs::write(&file, serde_json::to_string(&old).unwrap_or_default())
             .unwrap_or_else(|e| panic!("{e}"));
-        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        let note = load(dir.path())
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(note.contains("another version (0"), "{note}");
         // A saved scenario that no longer reads, and a camera of NaNs, restore nothing.
         let mut bad = Session::capture(&scenario, "preset seed", &look, [800, 600], None);
@@ -414,7 +423,10 @@ mod tests {
         let file = file_in(dir.path());
         // A link to /dev/zero (it used to grow memory without end).
         std::os::unix::fs::symlink("/dev/zero", &file).unwrap_or_else(|e| panic!("{e}"));
-        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        let note = load(dir.path())
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(note.contains("not a regular file"), "{note}");
         std::fs::remove_file(&file).unwrap_or_else(|e| panic!("{e}"));
         // A FIFO with no writer (opening it used to block the start for ever).
@@ -424,14 +436,20 @@ mod tests {
             .map(|s| s.success());
         assert_eq!(made.ok(), Some(true));
         let started = std::time::Instant::now();
-        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        let note = load(dir.path())
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(note.contains("not a regular file"), "{note}");
         assert!(started.elapsed().as_secs() < 2);
         std::fs::remove_file(&file).unwrap_or_else(|e| panic!("{e}"));
         // Larger than the cap.
         let big = vec![b' '; (MAX_SESSION_BYTES + 1) as usize];
         std::fs::write(&file, big).unwrap_or_else(|e| panic!("{e}"));
-        let note = load(dir.path(), Lang::En).err().unwrap_or_default();
+        let note = load(dir.path())
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
         assert!(note.contains("larger than 4 MiB"), "{note}");
         assert!(note.ends_with("starting fresh"), "{note}");
     }

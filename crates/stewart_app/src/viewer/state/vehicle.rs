@@ -7,6 +7,8 @@ use std::sync::Arc;
 use stewart_kinematics::analysis::cueing::{CuedRecording, VehicleMotion, cue_recording};
 use stewart_kinematics::{Scenario, model::trajectory::Motion};
 
+use crate::viewer::error::ViewerError;
+
 /// The recording and what the washout made of it for a scenario.
 #[derive(Clone, Debug)]
 pub(crate) struct VehicleSource {
@@ -26,16 +28,16 @@ impl VehicleSource {
         name: &str,
         samples: Arc<Vec<(f64, VehicleMotion)>>,
         scenario: &Scenario,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, ViewerError> {
         let cued = cue_recording(
             &scenario.geometry,
             &scenario.limits,
             &scenario.cueing,
             &samples,
         )
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| ViewerError::from(e).in_file(name))?;
         let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
-        let motion = cued.to_motion(&times, name).map_err(|e| e.to_string())?;
+        let motion = cued.to_motion(&times, name)?;
         Ok(Self {
             name: name.to_owned(),
             samples,
@@ -46,7 +48,7 @@ impl VehicleSource {
 
     /// The same recording cued for `scenario` (after an edit of its cueing, geometry or
     /// limits).
-    pub(crate) fn recue(&self, scenario: &Scenario) -> Result<Self, String> {
+    pub(crate) fn recue(&self, scenario: &Scenario) -> Result<Self, ViewerError> {
         Self::new(&self.name, Arc::clone(&self.samples), scenario)
     }
 

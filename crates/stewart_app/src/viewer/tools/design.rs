@@ -5,6 +5,7 @@
 use stewart_kinematics::analysis::design::{DesignReport, Envelope, envelope_needs};
 use stewart_kinematics::{Geometry, Pose};
 
+use crate::viewer::error::ViewerError;
 use crate::viewer::tools::job::Job;
 
 /// The envelope, the search running, the last outcome.
@@ -13,7 +14,7 @@ pub(crate) struct DesignTool {
     /// home pose it reaches (`[0, 0]`: the coordinate stays at home).
     pub(crate) spans: [[f64; 2]; 6],
     /// The last outcome: the report, or why the envelope was refused.
-    pub(crate) result: Option<Result<DesignReport, String>>,
+    pub(crate) result: Option<Result<DesignReport, ViewerError>>,
     job: Job<DesignReport>,
 }
 
@@ -40,20 +41,21 @@ impl Default for DesignTool {
 impl DesignTool {
     /// The envelope about `home`, or why there is none (no coordinate with a range, or a
     /// range whose lower end is above its upper end).
-    pub(crate) fn envelope(&self, home: &Pose) -> Result<Envelope, String> {
+    pub(crate) fn envelope(&self, home: &Pose) -> Result<Envelope, ViewerError> {
         if let Some((k, [a, b])) = self
             .spans
             .iter()
             .enumerate()
             .find(|(_, [a, b])| !(a.is_finite() && b.is_finite() && a <= b))
         {
-            return Err(format!(
-                "`{}`: the range {a} .. {b} is inverted or not a number",
-                COORDINATES[k]
-            ));
+            return Err(ViewerError::InvertedRange {
+                coordinate: COORDINATES[k],
+                lo: *a,
+                hi: *b,
+            });
         }
         if self.spans.iter().all(|[a, b]| a == b && *a == 0.0) {
-            return Err("the envelope is empty: give at least one coordinate a range".to_owned());
+            return Err(ViewerError::EmptyEnvelope);
         }
         let h = home.to_coordinates();
         let at_home: [f64; 6] =
@@ -112,7 +114,7 @@ impl DesignTool {
     /// Collect a finished search.
     pub(crate) fn poll(&mut self) {
         if let Some(outcome) = self.job.poll() {
-            self.result = Some(outcome.map_err(|e| e.to_string()));
+            self.result = Some(outcome.map_err(ViewerError::from));
         }
     }
 
@@ -120,7 +122,7 @@ impl DesignTool {
     #[cfg(test)]
     pub(crate) fn wait(&mut self) {
         if let Some(outcome) = self.job.wait() {
-            self.result = Some(outcome.map_err(|e| e.to_string()));
+            self.result = Some(outcome.map_err(ViewerError::from));
         }
     }
 }
@@ -144,8 +146,25 @@ mod tests {
         }
         assert!((env.lo[2] - (g.home_height() - 0.1)).abs() < 1e-12);
         tool.spans = [[0.0; 2]; 6];
-        assert!(tool.envelope(&home).is_err_and(|e| e.contains("empty")));
+        let empty = tool.envelope(&home);
+        assert!(
+            matches!(empty, Err(ViewerError::EmptyEnvelope)),
+            "{empty:?}"
+        );
         tool.spans[3] = [5.0, -5.0];
-        assert!(tool.envelope(&home).is_err_and(|e| e.contains("`roll`")));
+        let inverted = tool.envelope(&home);
+        assert!(
+            matches!(
+                inverted,
+                Err(ViewerError::InvertedRange {
+                    coordinate: "roll",
+                    lo: 5.0,
+                    hi: -5.0
+                })
+            ),
+            "{inverted:?}"
+        );
+        let words = inverted.err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(words.starts_with("`roll`: the range 5 .. -5"), "{words}");
     }
 }

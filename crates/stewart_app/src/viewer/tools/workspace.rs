@@ -19,6 +19,7 @@ use stewart_kinematics::analysis::workspace::{Plane, WorkspaceControl, Workspace
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;
 
+use crate::viewer::error::ViewerError;
 use crate::viewer::tools::job::Job;
 
 /// Columns a side of the first, coarse workspace.
@@ -124,14 +125,14 @@ pub struct WorkspaceTool {
     /// The newest finished result.
     pub(crate) latest: Option<Outcome>,
     /// Why the last request could not be computed.
-    pub(crate) error: Option<String>,
+    pub(crate) error: Option<ViewerError>,
     /// The request last sent.
     sent: Option<Request>,
     /// A newer request waiting for the one in flight to give its first (coarse) result: a
     /// pose that moves every frame (playback on a slow machine) would otherwise cancel
     /// every computation before it gave anything.
     pending: Option<Request>,
-    job: Job<Result<Outcome, String>>,
+    job: Job<Result<Outcome, ViewerError>>,
     resolutions: [usize; 2],
 }
 
@@ -240,7 +241,7 @@ impl WorkspaceTool {
                 self.error = None;
             }
             Some(Ok(Err(e))) => self.error = Some(e),
-            Some(Err(e)) => self.error = Some(e.to_string()),
+            Some(Err(e)) => self.error = Some(e.into()),
             None => {}
         }
         // The request in flight gave its first result (or ended): the newest waiting one
@@ -285,7 +286,7 @@ pub(crate) fn compute(
     resolution: usize,
     slice_cells: usize,
     control: &WorkspaceControl,
-) -> Result<Outcome, Option<String>> {
+) -> Result<Outcome, Option<ViewerError>> {
     use stewart_kinematics::analysis::workspace::WorkspaceError;
     let start = Instant::now();
     let ws = workspace::constant_orientation_workspace_with(
@@ -297,7 +298,7 @@ pub(crate) fn compute(
     )
     .map_err(|e| match e {
         WorkspaceError::Cancelled => None,
-        e => Some(e.to_string()),
+        e => Some(e.into()),
     })?;
     // The mesh drawn has at most DRAWN_COLUMNS a side (lighter to upload and draw); the
     // numbers are the full grid's.

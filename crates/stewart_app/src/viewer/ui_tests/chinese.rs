@@ -132,6 +132,36 @@ fn the_language_switch_changes_the_interface_at_once() {
 }
 
 #[test]
+fn a_refusal_reads_in_the_language_shown_and_follows_a_switch() {
+    // The error is kept typed and worded where it is shown: a file that cannot be read
+    // and an envelope with no range read in Chinese, and in English after the switch.
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let missing = dir.path().join("no-such-poses.csv");
+    let mut state = ViewerState::new(Scenario::seed());
+    state.look.lang = Lang::Zh;
+    state.look.expand_panels = true;
+    state.open_path(&missing);
+    state.design.spans = [[0.0; 2]; 6];
+    state.design.start(&Scenario::seed().geometry);
+    let mut h = super::harness_with(state, 3600.0);
+    h.run();
+    let shown = |h: &Harness<'static, ViewerState>, words: &str| {
+        h.query_all_by_label_contains(words).next().is_some()
+    };
+    let path = missing.display().to_string();
+    assert!(
+        shown(&h, &format!("{path}：无法读取")),
+        "the file's error in Chinese"
+    );
+    assert!(shown(&h, "包络为空"), "the envelope's refusal in Chinese");
+    assert!(!shown(&h, "cannot be read") && !shown(&h, "envelope is empty"));
+    h.state_mut().look.lang = Lang::En;
+    h.run();
+    assert!(shown(&h, &format!("{path}: cannot be read")));
+    assert!(shown(&h, "Not applied: the envelope is empty"));
+}
+
+#[test]
 fn the_chinese_interface_looks_right() {
     let mut state = ViewerState::new(Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")));
     state.look.lang = Lang::Zh;

@@ -25,10 +25,8 @@ fn finish(h: &mut Harness<'_, ViewerState>) -> Result<String, String> {
         std::thread::sleep(Duration::from_millis(20));
         h.run();
     }
-    h.state()
-        .exports
-        .status
-        .clone()
+    (h.state().exports.status.clone())
+        .map(|s| s.map_err(|e| e.to_string()))
         .unwrap_or_else(|| Err("no outcome".to_owned()))
 }
 

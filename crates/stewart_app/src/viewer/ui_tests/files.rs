@@ -349,7 +349,7 @@ fn hostile_files_are_refused_and_change_nothing() {
         assert!(
             status
                 .as_ref()
-                .is_some_and(|s| s.as_ref().is_err_and(|e| e.contains(words))),
+                .is_some_and(|s| s.as_ref().is_err_and(|e| e.to_string().contains(words))),
             "{}: {status:?}",
             path.display()
         );

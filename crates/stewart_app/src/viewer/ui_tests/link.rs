@@ -3,6 +3,7 @@
 
 use std::time::{Duration, Instant};
 
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::ViewerState;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable};
@@ -227,8 +228,12 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
         assert!(started.elapsed() < Duration::from_secs(15));
         std::thread::sleep(Duration::from_millis(10));
     }
-    let ended = h.state().link.status.clone();
-    let words = ended.and_then(Result::err).unwrap_or_default();
+    let ended = h.state().link.status.clone().and_then(Result::err);
+    assert!(
+        matches!(ended, Some(ViewerError::LinkEmergency { .. })),
+        "{ended:?}"
+    );
+    let words = ended.map(|e| e.to_string()).unwrap_or_default();
     assert!(words.starts_with("Emergency stop"), "{words}");
     assert!(words.contains("Left at x = "), "{words}");
     let _ = controller.join();

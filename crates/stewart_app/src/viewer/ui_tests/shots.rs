@@ -19,11 +19,8 @@ fn shoot(h: &mut Harness<'static, ViewerState>) -> image::RgbaImage {
         assert!(started.elapsed() < Duration::from_secs(60), "no screenshot");
         std::thread::sleep(Duration::from_millis(20));
     }
-    let status = h
-        .state()
-        .shots
-        .status
-        .clone()
+    let status = (h.state().shots.status.clone())
+        .map(|s| s.map_err(|e| e.to_string()))
         .unwrap_or_else(|| Err("none".into()));
     let words = status.unwrap_or_else(|e| panic!("{e}"));
     let path = words

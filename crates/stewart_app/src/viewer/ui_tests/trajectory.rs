@@ -3,6 +3,9 @@
 use egui::accesskit::Role;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::model::trajectory::Trajectory;
+use stewart_kinematics::model::trajectory::keyframes::KeyframeError;
+
+use crate::viewer::error::ViewerError;
 
 use super::harness;
 
@@ -118,7 +121,10 @@ fn keyframes_are_edited_in_a_table_and_bad_times_refused() {
             .doc
             .edit_error
             .as_ref()
-            .is_some_and(|(_, e)| e.contains("times must increase")),
+            .is_some_and(|(_, e)| matches!(
+                e,
+                ViewerError::Keyframes(KeyframeError::NotIncreasing { index: 3, .. })
+            )),
         "{:?}",
         h.state().doc.edit_error
     );

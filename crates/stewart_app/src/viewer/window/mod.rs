@@ -24,6 +24,7 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::{Window, WindowId};
 
 use super::panels::viewer_ui;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::ViewerState;
 use crate::viewer::window::shots::ShotScale;
 use crate::viewer::window::window_shot::SAMPLES;
@@ -99,7 +100,7 @@ struct App {
     screenshot: Arc<Mutex<Option<Result<()>>>>,
     screenshot_asked: bool,
     /// The outcome of a whole-window shot asked for from the Screenshot menu.
-    window_shot: Arc<Mutex<Option<Result<String, String>>>>,
+    window_shot: Arc<Mutex<Option<Result<String, ViewerError>>>>,
     error: Option<anyhow::Error>,
     times: FrameTimes,
     /// When egui asked to be drawn again (a tooltip delay, the text cursor's blink, an
@@ -460,7 +461,7 @@ impl App {
                                 &[("w", &w), ("h", &h), ("path", &path.display())],
                             )
                         })
-                        .map_err(|e| format!("{e:#}"));
+                        .map_err(|e| ViewerError::Export(Arc::new(e)));
                     if let Ok(mut s) = slot.lock() {
                         *s = Some(status);
                     }
@@ -477,7 +478,7 @@ impl App {
             let outcome = self.scaled_window_shot(&path, scale);
             if exit {
                 // A --screenshot run: done (or failed) once the image is written.
-                let result = outcome.map(|_| ()).map_err(|e| anyhow!(e));
+                let result = outcome.map(|_| ()).map_err(anyhow::Error::from);
                 if let Ok(mut s) = self.screenshot.lock() {
                     *s = Some(result);
                 }
@@ -527,12 +528,12 @@ impl App {
         &mut self,
         path: &std::path::Path,
         scale: ShotScale,
-    ) -> Result<String, String> {
+    ) -> Result<String, ViewerError> {
         let Some(open) = self.open.as_ref() else {
-            return Err("the window is gone".to_owned());
+            return Err(ViewerError::WindowGone);
         };
         let Some(rs) = open.painter.render_state() else {
-            return Err("no GPU device for the window".to_owned());
+            return Err(ViewerError::NoGpuDevice);
         };
         let native = open.window.scale_factor() as f32;
         let k = window_shot::factor(scale, open.window.inner_size().width);
@@ -581,7 +582,7 @@ impl App {
         }
         let image = image?;
         let [w, h] = image.size;
-        save_png(path, &image).map_err(|e| format!("{e:#}"))?;
+        save_png(path, &image).map_err(|e| ViewerError::Export(Arc::new(e)))?;
         Ok(self.state.look.lang.fmt(
             "shots.saved_window",
             &[("w", &w), ("h", &h), ("path", &path.display())],

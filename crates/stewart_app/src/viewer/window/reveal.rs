@@ -2,6 +2,9 @@
 
 use std::path::Path;
 use std::process::{Command, Stdio};
+use std::sync::Arc;
+
+use crate::viewer::error::ViewerError;
 
 /// The command that opens `folder` in the system's file manager.
 pub(crate) fn folder_command(folder: &Path) -> Command {
@@ -23,7 +26,7 @@ pub(crate) fn folder_command(folder: &Path) -> Command {
 
 /// Open the folder holding `file` (or `file` itself, when it is a folder of frames) in the
 /// file manager, without waiting for it; an error names what could not be started.
-pub(crate) fn show_in_folder(file: &Path) -> Result<(), String> {
+pub(crate) fn show_in_folder(file: &Path) -> Result<(), ViewerError> {
     let folder = if file.is_dir() {
         file
     } else {
@@ -31,11 +34,10 @@ pub(crate) fn show_in_folder(file: &Path) -> Result<(), String> {
     };
     let mut command = folder_command(folder);
     let program = command.get_program().to_string_lossy().into_owned();
-    let mut child = command.spawn().map_err(|e| {
-        format!(
-            "cannot open {} in the file manager: `{program}` did not start ({e})",
-            folder.display()
-        )
+    let mut child = command.spawn().map_err(|e| ViewerError::FileManager {
+        folder: folder.to_owned(),
+        program,
+        source: Arc::new(e),
     })?;
     // Reap it in the background so it leaves no zombie behind.
     std::thread::spawn(move || child.wait());

@@ -4,10 +4,12 @@
 //! screen.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
 use crate::i18n::Lang;
+use crate::viewer::error::ViewerError;
 use crate::viewer::state::files::Status;
 use crate::viewer::tools::job::Job;
 
@@ -112,9 +114,7 @@ impl Shots {
     pub(crate) fn poll(&mut self) {
         match self.job.poll() {
             Some(Ok(status)) => self.status = status,
-            Some(Err(e)) => {
-                self.status = Some(Err(self.lang.fmt("shots.cannot_start", &[("why", &e)])));
-            }
+            Some(Err(e)) => self.status = Some(Err(e.into())),
             None => {}
         }
     }
@@ -129,16 +129,17 @@ pub(crate) fn render_view(
     (w, h): (u32, u32),
     path: &Path,
     lang: Lang,
-) -> Result<String, String> {
+) -> Result<String, ViewerError> {
     let mut theme = theme;
     if transparent {
         theme.background[3] = 0.0;
     }
-    let mut offscreen = Offscreen::new().map_err(|e| e.to_string())?;
+    let render_failed = |e| ViewerError::Render(Arc::new(e));
+    let mut offscreen = Offscreen::new().map_err(render_failed)?;
     let camera = camera.fitted_to(w as f32 / h as f32);
     let frame = offscreen
         .render(list, &camera, &theme, w, h)
-        .map_err(|e| e.to_string())?;
+        .map_err(render_failed)?;
     let mut png = Vec::new();
     image::ImageEncoder::write_image(
         image::codecs::png::PngEncoder::new(&mut png),
@@ -147,8 +148,8 @@ pub(crate) fn render_view(
         h,
         image::ExtendedColorType::Rgba8,
     )
-    .map_err(|e| format!("cannot encode the screenshot: {e}"))?;
-    crate::output::write_atomically(path, &png).map_err(|e| format!("{e:#}"))?;
+    .map_err(|e| ViewerError::Encode(Arc::new(e)))?;
+    crate::output::write_atomically(path, &png).map_err(|e| ViewerError::Export(Arc::new(e)))?;
     Ok(lang.fmt(
         "shots.saved_view",
         &[("w", &w), ("h", &h), ("path", &path.display())],

@@ -7,6 +7,8 @@ use egui::epaint::ClippedPrimitive;
 use egui::epaint::textures::TexturesDelta;
 use stewart_render::readback::Readback;
 
+use crate::viewer::error::ViewerError;
+
 /// MSAA samples of the window and of its shots on a GPU (the 3D pipelines are built to
 /// match); a software rasteriser's window has one (see [`crate::viewer::window::quality`]).
 pub(crate) const SAMPLES: u32 = 4;
@@ -76,13 +78,10 @@ pub(crate) fn render(
     size: [u32; 2],
     pixels_per_point: f32,
     clear: [f32; 4],
-) -> Result<egui::ColorImage, String> {
+) -> Result<egui::ColorImage, ViewerError> {
     let max = rs.device.limits().max_texture_dimension_2d;
     if size[0] == 0 || size[1] == 0 || size[0] > max || size[1] > max {
-        return Err(format!(
-            "a {}×{} image exceeds what this GPU draws ({max} pixels a side)",
-            size[0], size[1]
-        ));
+        return Err(ViewerError::TooLarge { size, max });
     }
     let (device, queue) = (&rs.device, &rs.queue);
     let targets = Targets::new(device, rs.target_format, size, samples);
@@ -141,9 +140,7 @@ pub(crate) fn render(
     readback.copy_from(&mut encoder, &targets.resolve);
     commands.push(encoder.finish());
     queue.submit(commands);
-    let data = readback
-        .read(device)
-        .map_err(|e| format!("cannot read the screenshot back: {e}"))?;
+    let data = readback.read(device).map_err(ViewerError::Readback)?;
     let bgra = matches!(
         rs.target_format,
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
