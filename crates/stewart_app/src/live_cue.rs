@@ -1,13 +1,15 @@
-//! Live motion cueing for the link: vehicle motion arriving as UDP datagrams (generic text
-//! or `f32`, or X-Plane `DATA`: `stewart_link::vehicle`) made into the pose the link
-//! follows, tick by tick, through the scenario's washout and limiter.
+//! Live motion cueing for the link: vehicle motion arriving as UDP datagrams (the studio's
+//! generic text or `f32`, X-Plane, Forza, F1 24, BeamNG.drive, Live for Speed:
+//! `stewart_link::vehicle`) made into the pose the link follows, tick by tick, through the
+//! scenario's washout and limiter.
 //!
 //! Each sample steps the washout at its own time (the sender's clock; X-Plane's, which
 //! has none, at its arrival), exactly as `stewart cue` steps a recording, so a recording
 //! played live gives the poses `stewart cue` writes for it. A datagram that cannot be
 //! read, or a sample older than the last, is counted and dropped. When nothing arrives for
-//! `[cueing] stall_s`, the input is taken as a vehicle at rest and the cue fades to
-//! neutral over `fade_s`; samples that come back fade it in again.
+//! `[cueing] stall_s`, or the game says it is in its menus or paused, the input is taken
+//! as a vehicle at rest and the cue fades to neutral over `fade_s`; samples that come
+//! back fade it in again.
 
 use std::net::UdpSocket;
 use std::sync::Arc;
@@ -16,7 +18,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use anyhow::{Context as _, Result, bail};
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_kinematics::{Pose, Scenario};
-use stewart_link::vehicle::{self, VehicleSample};
+use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
 
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
@@ -92,8 +94,12 @@ pub struct LiveCue {
     /// Stream time of the last tick.
     last_tick: Option<f64>,
     stalled: bool,
+    /// The game says it is in its menus or paused (until its next sample).
+    idle: bool,
     pose: Pose,
     buffer: Vec<u8>,
+    /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks).
+    decoder: Decoder,
     /// `stall_s` and `fade_s`.
     stall_s: f64,
     fade_s: f64,
@@ -121,8 +127,10 @@ impl LiveCue {
             last_arrival: None,
             last_tick: None,
             stalled: false,
+            idle: false,
             pose: scenario.geometry.home_pose(),
             buffer: vec![0; DATAGRAM],
+            decoder: Decoder::new(),
             stall_s: scenario.cueing.stall_s,
             fade_s: scenario.cueing.fade_s,
         })
@@ -155,14 +163,17 @@ impl LiveCue {
             let Ok(n) = self.socket.recv(&mut self.buffer) else {
                 break;
             };
-            match vehicle::decode(&self.buffer[..n]) {
-                Ok(sample) => self.take(sample, t),
+            match self.decoder.decode(&self.buffer[..n]).reading {
+                Ok(Reading::Sample(sample)) => self.take(sample, t),
+                // The game's menus or pause: as if the input had stalled.
+                Ok(Reading::Idle) => self.idle = true,
+                Ok(Reading::Ignored) => {}
                 Err(_) => {
                     self.counts.malformed.fetch_add(1, Ordering::Relaxed);
                 }
             }
         }
-        let quiet = self.last_arrival.is_none_or(|at| t - at > self.stall_s);
+        let quiet = self.idle || self.last_arrival.is_none_or(|at| t - at > self.stall_s);
         if quiet && self.last_arrival.is_some() {
             self.stall(dt);
         } else if !quiet && self.cueing.fade() < 1.0 {
@@ -208,6 +219,7 @@ impl LiveCue {
         self.last_sample = Some(time);
         self.last_arrival = Some(now);
         self.stalled = false;
+        self.idle = false;
         self.counts.received.fetch_add(1, Ordering::Relaxed);
     }
 
@@ -363,6 +375,59 @@ mod tests {
         assert_eq!(pose, expected.poses[199]);
         assert!(ticks as usize >= 200 / MAX_DATAGRAMS_PER_TICK, "{ticks}");
         assert_eq!(counts.malformed.load(Ordering::Relaxed), 0);
+    }
+
+    /// A Forza *Sled* packet (232 bytes, Turn 10's layout): race on or not, its clock, and
+    /// a forward acceleration (local Z).
+    fn forza(race_on: bool, ms: u32, forward: f32) -> Vec<u8> {
+        let mut p = vec![0u8; 232];
+        p[0..4].copy_from_slice(&i32::from(race_on).to_le_bytes());
+        p[4..8].copy_from_slice(&ms.to_le_bytes());
+        p[28..32].copy_from_slice(&forward.to_le_bytes());
+        p
+    }
+
+    #[test]
+    fn a_game_in_its_menus_fades_the_cue_to_neutral_at_once() {
+        // Forza braking hard, then its menus (IsRaceOn = 0) arriving as often as before:
+        // not a stall by silence, yet the cue fades to home within the fade time, and the
+        // next race sample fades it in again.
+        let scenario = Scenario::seed();
+        let mut live =
+            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
+        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let sender = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+        let home = scenario.geometry.home_pose();
+        let mut t = 0.0;
+        for k in 0..30u32 {
+            sender
+                .send_to(&forza(true, 1000 + 20 * k, -8.0), at)
+                .unwrap_or_else(|e| panic!("{e}"));
+            settle();
+            t += 0.02;
+            live.tick(t);
+        }
+        let braking = live.tick(t);
+        assert_ne!(braking, home);
+        let c = &scenario.cueing;
+        let fade_ends = t + c.fade_s + 0.05;
+        while t < fade_ends {
+            sender
+                .send_to(&forza(false, 0, 0.0), at)
+                .unwrap_or_else(|e| panic!("{e}"));
+            settle();
+            t += 0.02;
+            live.tick(t);
+        }
+        assert_eq!(live.tick(t), home);
+        assert_eq!(live.counts().stalls.load(Ordering::Relaxed), 1);
+        assert_eq!(live.counts().malformed.load(Ordering::Relaxed), 0);
+        sender
+            .send_to(&forza(true, 5000, -8.0), at)
+            .unwrap_or_else(|e| panic!("{e}"));
+        settle();
+        live.tick(t + 0.02);
+        assert_eq!(live.counts().received.load(Ordering::Relaxed), 31);
     }
 
     #[test]

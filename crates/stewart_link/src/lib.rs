@@ -17,8 +17,9 @@
 //!   measured side by side, latency, unanswered and stale counts);
 //! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches;
 //! - [`transport`]: UDP, or a dry-run record of what would be sent.
-//! - [`vehicle`]: vehicle motion coming in for motion cueing (a generic text or `f32`
-//!   datagram, or X-Plane's `DATA`).
+//! - [`vehicle`]: vehicle motion coming in for motion cueing — the studio's generic text
+//!   or `f32` datagram, or a game's telemetry (X-Plane `DATA` and `RREF`, Forza Data Out,
+//!   F1 24, BeamNG.drive MotionSim, Live for Speed OutSim), told apart per datagram.
 //!
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.

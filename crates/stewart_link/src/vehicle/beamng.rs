@@ -1,0 +1,49 @@
+//! BeamNG.drive's MotionSim protocol (port 4444), from BeamNG's *Protocols* page
+//! (<https://documentation.beamng.com/modding/protocols/>) and the game's own
+//! `lua/vehicle/protocols/motionSim.lua` that sends it: `BNG1`, then 21 little-endian
+//! `f32` — 88 bytes. Read: `accX, accY, accZ` at 28 ("acceleration of the car, gravity not
+//! included", m/s², in the car's frame) and `rollRate, pitchRate, yawRate` at 64 (rad/s).
+//! It has no clock (the receiver's is used).
+//!
+//! The page gives the accelerations' frame but not their signs. The studio takes the
+//! motion-simulator convention BeamNG says it follows: `accX` to the right, `accY`
+//! forward, `accZ` up; roll positive with the right side down, pitch nose up, yaw nose
+//! right. In our axes: `ax = accY`, `ay = −accX`, `az = accZ`, `wx = roll`,
+//! `wy = −pitch`, `wz = −yaw`. Check with `stewart telemetry` (accelerating reads
+//! `ax > 0`, a left turn `ay > 0` and `wz > 0`).
+//!
+//! OutGauge (the dashboard protocol BeamNG and Live for Speed share, 92 bytes or 96 with
+//! an ID) may arrive at the same port: it carries no motion and reads as
+//! [`Reading::Ignored`].
+
+use super::fields::vector_at;
+use super::{Format, Reading, VehicleError, VehicleSample};
+
+/// The MotionSim packet's length.
+pub const MOTION_SIM_BYTES: usize = 88;
+/// OutGauge's length, without and with its ID.
+pub const OUTGAUGE_BYTES: usize = 92;
+/// OutGauge's length with its ID.
+pub const OUTGAUGE_WITH_ID_BYTES: usize = 96;
+
+/// Byte offsets of the fields read.
+const ACCELERATION: usize = 28;
+const RATES: usize = 64;
+
+/// A MotionSim packet (`BNG1`).
+pub(crate) fn motion_sim(bytes: &[u8]) -> Result<Reading, VehicleError> {
+    if bytes.len() != MOTION_SIM_BYTES {
+        return Err(VehicleError::Length {
+            format: Format::BeamNg,
+            got: bytes.len(),
+            expected: "88",
+        });
+    }
+    let [acc_right, acc_forward, acc_up] = vector_at(bytes, ACCELERATION);
+    let [roll, pitch, yaw] = vector_at(bytes, RATES);
+    Ok(Reading::Sample(VehicleSample {
+        t: None,
+        accel: [acc_forward, -acc_right, acc_up],
+        rates_deg_s: [roll, -pitch, -yaw].map(f64::to_degrees),
+    }))
+}

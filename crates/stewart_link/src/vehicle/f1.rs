@@ -1,0 +1,132 @@
+//! EA SPORTS F1 24's UDP telemetry (port 20777), from Codemasters' *F1 24 UDP
+//! Specification* (<https://answers.ea.com/t5/General-Discussion/F1-24-UDP-Specification/td-p/13745220>):
+//! little-endian, packed.
+//!
+//! Every packet starts with a 29-byte header: `packetFormat` (`u16`, 2024) at 0,
+//! `packetId` (`u8`) at 6, `sessionUID` (`u64`) at 7, `sessionTime` (`f32`, s) at 15,
+//! `frameIdentifier` (`u32`) at 19 and `playerCarIndex` (`u8`) at 27. Two packets are read:
+//!
+//! - `Motion` (id 0, 1349 bytes): 22 cars of 60 bytes from byte 29; the player's car's
+//!   `gForceLateral`, `gForceLongitudinal`, `gForceVertical` (`f32`, g) at 36, 40, 44 of
+//!   its block;
+//! - `Motion Ex` (id 13, 237 bytes, the player's car): `angularVelocityX, Y, Z` (`f32`,
+//!   rad/s) at 173.
+//!
+//! The two of one frame (same session and `frameIdentifier`) make one sample, at
+//! `sessionTime`; the first to arrive reads as [`Reading::Ignored`], as do packets of the
+//! other ids. Packets of another year's format (F1 24 can send 2023's and 2022's) are
+//! refused, naming the year.
+//!
+//! The specification draws the axes (pitch about X, yaw about Y, roll about Z; the world
+//! right-handed with Y up); with Z the car's forward, X is its left. So
+//! `(wx, wy, wz) = (ωZ, ωX, ωY)` in °/s, and the g-forces are taken along those axes,
+//! gravity excluded: `ax = g·longitudinal`, `ay = g·lateral`, `az = g·vertical`. The
+//! specification gives their signs in no words: check them with `stewart telemetry`
+//! (braking reads `ax < 0`, a left turn `ay > 0`).
+
+use super::fields::{f32_at, u16_at, u32_at, vector_at};
+use super::{Format, GRAVITY, Reading, VehicleError, VehicleSample};
+
+/// The format read.
+pub const PACKET_FORMAT: u16 = 2024;
+/// The header's length.
+pub const HEADER_BYTES: usize = 29;
+/// `Motion`'s id and length.
+pub const MOTION: (u8, usize) = (0, 1349);
+/// `Motion Ex`'s id and length.
+pub const MOTION_EX: (u8, usize) = (13, 237);
+/// Cars in a `Motion` packet, and the bytes of each.
+pub const CARS: (u8, usize) = (22, 60);
+
+/// Byte offsets of the fields read.
+const PACKET_ID: usize = 6;
+const SESSION_UID: usize = 7;
+const SESSION_TIME: usize = 15;
+const FRAME: usize = 19;
+const PLAYER_CAR: usize = 27;
+const G_FORCES: usize = 36;
+const ANGULAR_VELOCITY: usize = 173;
+
+/// Whether `bytes` begin with an F1 header: a `packetFormat` that is a year of the series
+/// (2018 on).
+pub(crate) fn is_f1(bytes: &[u8]) -> bool {
+    bytes.len() >= HEADER_BYTES && u16_at(bytes, 0).is_some_and(|y| (2018..=2030).contains(&y))
+}
+
+/// The halves of the frame being paired.
+#[derive(Debug, Default)]
+pub(crate) struct Pairing {
+    /// The last `Motion`'s frame and its g-forces `[lateral, longitudinal, vertical]`.
+    motion: Option<(Frame, [f64; 3])>,
+    /// The last `Motion Ex`'s frame and its angular velocity `[X, Y, Z]`.
+    motion_ex: Option<(Frame, [f64; 3])>,
+}
+
+/// Which frame a packet belongs to: session, frame number, and its time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Frame {
+    session: [u8; 8],
+    number: Option<u32>,
+    time: f64,
+}
+
+/// One F1 packet.
+pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, VehicleError> {
+    let format = u16_at(bytes, 0).unwrap_or(0);
+    if format != PACKET_FORMAT {
+        return Err(VehicleError::F1Format(format));
+    }
+    let id = bytes.get(PACKET_ID).copied();
+    let length = |expected| match bytes.len() == expected {
+        true => Ok(()),
+        false => Err(VehicleError::Length {
+            format: Format::F1,
+            got: bytes.len(),
+            expected: if expected == MOTION.1 {
+                "1349 for Motion"
+            } else {
+                "237 for Motion Ex"
+            },
+        }),
+    };
+    let session = (bytes.get(SESSION_UID..SESSION_UID + 8))
+        .and_then(|s| <[u8; 8]>::try_from(s).ok())
+        .unwrap_or_default();
+    let frame = Frame {
+        session,
+        number: u32_at(bytes, FRAME),
+        time: f32_at(bytes, SESSION_TIME),
+    };
+    if id == Some(MOTION.0) {
+        length(MOTION.1)?;
+        let car = bytes.get(PLAYER_CAR).copied().unwrap_or(u8::MAX);
+        if car >= CARS.0 {
+            return Err(VehicleError::F1Car(car));
+        }
+        let block = HEADER_BYTES + CARS.1 * usize::from(car);
+        pairing.motion = Some((frame, vector_at(bytes, block + G_FORCES)));
+    } else if id == Some(MOTION_EX.0) {
+        length(MOTION_EX.1)?;
+        pairing.motion_ex = Some((frame, vector_at(bytes, ANGULAR_VELOCITY)));
+    } else {
+        return Ok(Reading::Ignored);
+    }
+    match (pairing.motion, pairing.motion_ex) {
+        (Some((a, [lateral, longitudinal, vertical])), Some((b, [wx_pitch, wy_yaw, wz_roll])))
+            if same_frame(&a, &b) =>
+        {
+            pairing.motion = None;
+            pairing.motion_ex = None;
+            Ok(Reading::Sample(VehicleSample {
+                t: Some(frame.time),
+                accel: [longitudinal, lateral, vertical].map(|g| GRAVITY * g),
+                rates_deg_s: [wz_roll, wx_pitch, wy_yaw].map(f64::to_degrees),
+            }))
+        }
+        _ => Ok(Reading::Ignored),
+    }
+}
+
+fn same_frame(a: &Frame, b: &Frame) -> bool {
+    a.session == b.session && a.number == b.number
+}

@@ -1,0 +1,318 @@
+//! Vehicle motion coming in as UDP datagrams, for motion cueing: the studio's own forms
+//! and the telemetry that games send, told apart per datagram by magic and size, so one
+//! port takes any of them.
+//!
+//! Every form becomes a [`VehicleSample`] in the studio's vehicle axes — x forward, y left,
+//! z up (right-handed) — with the specific force in m/s², gravity excluded, and the
+//! rotation rates in °/s: the columns `stewart cue` reads. Each format's module says how
+//! its axes, units and clock are turned into ours, and from which published layout:
+//!
+//! | format | module | how it is recognised |
+//! |---|---|---|
+//! | generic text `t,ax,ay,az,wx,wy,wz` | [`generic`] | seven numbers, printable |
+//! | generic binary, seven `f32` | [`generic`] | 28 bytes |
+//! | X-Plane `DATA` | [`xplane`] | `DATA` |
+//! | X-Plane `RREF` replies | [`xplane`] | `RREF` |
+//! | Forza Data Out (Sled, Dash, Horizon, Motorsport 2023) | [`forza`] | 232, 311, 324 or 331 bytes |
+//! | EA SPORTS F1 24 (`Motion` and `Motion Ex`) | [`f1`] | a header whose `packetFormat` is a year |
+//! | BeamNG.drive MotionSim | [`beamng`] | `BNG1`, 88 bytes |
+//! | OutGauge (BeamNG, Live for Speed): a dashboard, no motion | [`beamng`] | 92 or 96 bytes |
+//! | Live for Speed OutSim (classic, and `LFST` packs) | [`outsim`] | 64 or 68 bytes; `LFST` |
+//!
+//! A [`Decoder`] keeps what spans datagrams: F1's two packets of one frame are paired,
+//! and the games' millisecond clocks are unwrapped. Anything that cannot be read is
+//! refused with the reason (the receiver counts it), never a panic.
+
+pub mod beamng;
+pub mod f1;
+pub mod forza;
+pub mod generic;
+pub mod outsim;
+pub mod xplane;
+
+mod fields;
+
+use thiserror::Error;
+
+/// Standard gravity, m/s² (games that give g-loads give them in g).
+pub const GRAVITY: f64 = 9.80665;
+
+/// One sample of vehicle motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VehicleSample {
+    /// The sender's time, seconds (`None`: the format has no clock; the arrival time is
+    /// used).
+    pub t: Option<f64>,
+    /// Specific force along the vehicle's x, y, z (forward, left, up), m/s², gravity
+    /// excluded.
+    pub accel: [f64; 3],
+    /// Rotation rates about x, y, z, °/s.
+    pub rates_deg_s: [f64; 3],
+}
+
+/// The formats a datagram can be in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Format {
+    /// `t,ax,ay,az,wx,wy,wz` as text.
+    Text,
+    /// The same seven numbers as little-endian `f32`.
+    Binary,
+    /// X-Plane's `DATA` (the Data Output screen).
+    XPlaneData,
+    /// X-Plane's `RREF` replies to a dataref subscription.
+    XPlaneRref,
+    /// Forza Data Out, the 232-byte *Sled* form.
+    ForzaSled,
+    /// Forza Motorsport 7's 311-byte *Dash* form.
+    ForzaDash,
+    /// Forza Horizon 4 and 5 (324 bytes).
+    ForzaHorizon,
+    /// Forza Motorsport (2023), 331 bytes.
+    ForzaMotorsport2023,
+    /// EA SPORTS F1 24's UDP telemetry.
+    F1,
+    /// BeamNG.drive's MotionSim (`BNG1`).
+    BeamNg,
+    /// OutGauge (BeamNG.drive, Live for Speed): dashboard data, no motion.
+    OutGauge,
+    /// Live for Speed's classic OutSim packet.
+    OutSim,
+    /// Live for Speed's OutSim pack with the `LFST` header (`OutSim Opts`).
+    OutSimPack,
+}
+
+impl Format {
+    /// Every format.
+    pub const ALL: [Format; 13] = [
+        Format::Text,
+        Format::Binary,
+        Format::XPlaneData,
+        Format::XPlaneRref,
+        Format::ForzaSled,
+        Format::ForzaDash,
+        Format::ForzaHorizon,
+        Format::ForzaMotorsport2023,
+        Format::F1,
+        Format::BeamNg,
+        Format::OutGauge,
+        Format::OutSim,
+        Format::OutSimPack,
+    ];
+
+    /// The format's name, as people know it (the same in every language).
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::Text => "generic text",
+            Format::Binary => "generic f32",
+            Format::XPlaneData => "X-Plane DATA",
+            Format::XPlaneRref => "X-Plane RREF",
+            Format::ForzaSled => "Forza Sled",
+            Format::ForzaDash => "Forza Motorsport 7 Dash",
+            Format::ForzaHorizon => "Forza Horizon",
+            Format::ForzaMotorsport2023 => "Forza Motorsport (2023)",
+            Format::F1 => "F1 24",
+            Format::BeamNg => "BeamNG MotionSim",
+            Format::OutGauge => "OutGauge",
+            Format::OutSim => "LFS OutSim",
+            Format::OutSimPack => "LFS OutSim (LFST)",
+        }
+    }
+}
+
+/// What a datagram that could be read brings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reading {
+    /// A sample of the vehicle's motion.
+    Sample(VehicleSample),
+    /// The game is in its menus or paused (Forza's `IsRaceOn = 0`): the cue fades to
+    /// neutral as it does when the input stalls.
+    Idle,
+    /// A datagram of the game's that carries no motion for the studio (F1's other packets,
+    /// an OutGauge dashboard), or the first half of a pair (F1's `Motion` before its
+    /// `Motion Ex`): not an error, nothing to use.
+    Ignored,
+}
+
+/// One datagram, decoded: its format (when it was recognised) and what it brings, or why
+/// it was refused.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decoded {
+    /// The format recognised (`None`: none was).
+    pub format: Option<Format>,
+    /// What the datagram brings.
+    pub reading: Result<Reading, VehicleError>,
+}
+
+/// Why a datagram was refused.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum VehicleError {
+    /// Text that is not seven numbers.
+    #[error("a text datagram must be t,ax,ay,az,wx,wy,wz (seven numbers), got {0}")]
+    Text(String),
+    /// A number that is NaN or infinite, or beyond any vehicle (`|a| > 1e4 m/s²`,
+    /// `|ω| > 1e5 °/s`, `|t| > 1e9 s`).
+    #[error("{name} = {value} is not a finite number within its bounds")]
+    Value {
+        /// Which column (ours) or field (the format's).
+        name: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// A datagram whose length its format does not allow.
+    #[error("{format:?}: {got} bytes, not {expected}")]
+    Length {
+        /// The format its magic or header names.
+        format: Format,
+        /// The length received.
+        got: usize,
+        /// The lengths allowed, in words.
+        expected: &'static str,
+    },
+    /// An X-Plane datagram without the values a sample needs.
+    #[error("an X-Plane {0} datagram needs {1}")]
+    XPlaneMissing(&'static str, &'static str),
+    /// An F1 packet of another year's format (F1 24 can send the 2023 and 2022 ones:
+    /// choose 2024 in its telemetry settings).
+    #[error("an F1 packet of the {0} format: set the game's UDP format to 2024")]
+    F1Format(u16),
+    /// An F1 packet whose player car index is not one of its 22 cars.
+    #[error("an F1 packet names car {0} as the player's, of 22")]
+    F1Car(u8),
+    /// Neither text nor any format recognised.
+    #[error("not a vehicle sample: {0} bytes in none of the formats read")]
+    Unknown(usize),
+}
+
+/// Reads datagrams of any format, keeping what spans them: F1's `Motion` and `Motion Ex`
+/// of one frame paired, and the games' millisecond clocks unwrapped.
+#[derive(Debug, Default)]
+pub struct Decoder {
+    f1: f1::Pairing,
+    forza_clock: WrappingClock,
+    outsim_clock: WrappingClock,
+}
+
+impl Decoder {
+    /// A decoder that has seen nothing.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Decode one datagram.
+    pub fn decode(&mut self, bytes: &[u8]) -> Decoded {
+        let (format, reading) = self.read(bytes);
+        Decoded {
+            format,
+            reading: reading.and_then(checked),
+        }
+    }
+
+    fn read(&mut self, bytes: &[u8]) -> (Option<Format>, Result<Reading, VehicleError>) {
+        let n = bytes.len();
+        let magic = bytes.get(..4).unwrap_or(&[]);
+        match magic {
+            b"DATA" => return (Some(Format::XPlaneData), xplane::data(bytes)),
+            b"RREF" => return (Some(Format::XPlaneRref), xplane::rref(bytes)),
+            b"BNG1" => return (Some(Format::BeamNg), beamng::motion_sim(bytes)),
+            b"LFST" => {
+                let reading = outsim::pack(bytes, &mut self.outsim_clock);
+                return (Some(Format::OutSimPack), reading);
+            }
+            _ => {}
+        }
+        // Printable bytes are text first (a text line may have any length).
+        let text = generic::as_text(bytes).map(generic::text);
+        if let Some(Ok(sample)) = text {
+            return (Some(Format::Text), Ok(Reading::Sample(sample)));
+        }
+        let format = match n {
+            generic::BINARY_BYTES => Some(Format::Binary),
+            forza::SLED_BYTES => Some(Format::ForzaSled),
+            forza::DASH_BYTES => Some(Format::ForzaDash),
+            forza::HORIZON_BYTES => Some(Format::ForzaHorizon),
+            forza::MOTORSPORT_2023_BYTES => Some(Format::ForzaMotorsport2023),
+            outsim::CLASSIC_BYTES | outsim::CLASSIC_WITH_ID_BYTES => Some(Format::OutSim),
+            beamng::OUTGAUGE_BYTES | beamng::OUTGAUGE_WITH_ID_BYTES => Some(Format::OutGauge),
+            _ if f1::is_f1(bytes) => Some(Format::F1),
+            _ => None,
+        };
+        let reading = match format {
+            Some(Format::Binary) => Ok(generic::binary(bytes)),
+            Some(
+                Format::ForzaSled
+                | Format::ForzaDash
+                | Format::ForzaHorizon
+                | Format::ForzaMotorsport2023,
+            ) => Ok(forza::sled(bytes, &mut self.forza_clock)),
+            Some(Format::OutSim) => Ok(outsim::classic(bytes, &mut self.outsim_clock)),
+            Some(Format::OutGauge) => Ok(Reading::Ignored),
+            Some(Format::F1) => f1::packet(bytes, &mut self.f1),
+            _ => match text {
+                Some(Err(e)) => Err(e),
+                _ => Err(VehicleError::Unknown(n)),
+            },
+        };
+        (format, reading)
+    }
+}
+
+/// Decode one datagram alone (no F1 pairing, no clock unwrapping across datagrams): the
+/// sample, or why there is none.
+pub fn decode(bytes: &[u8]) -> Result<VehicleSample, VehicleError> {
+    match Decoder::new().decode(bytes).reading? {
+        Reading::Sample(sample) => Ok(sample),
+        Reading::Idle | Reading::Ignored => Err(VehicleError::Unknown(bytes.len())),
+    }
+}
+
+/// A sample whose every number is finite and within the bounds of a vehicle.
+fn checked(reading: Reading) -> Result<Reading, VehicleError> {
+    let Reading::Sample(sample) = reading else {
+        return Ok(reading);
+    };
+    let [ax, ay, az] = sample.accel;
+    let [wx, wy, wz] = sample.rates_deg_s;
+    let columns = [
+        ("t", sample.t.unwrap_or(0.0), 1e9),
+        ("ax", ax, 1e4),
+        ("ay", ay, 1e4),
+        ("az", az, 1e4),
+        ("wx", wx, 1e5),
+        ("wy", wy, 1e5),
+        ("wz", wz, 1e5),
+    ];
+    for (name, value, bound) in columns {
+        if !(value.is_finite() && value.abs() <= bound) {
+            return Err(VehicleError::Value { name, value });
+        }
+    }
+    Ok(reading)
+}
+
+/// A `u32` millisecond clock that wraps to 0 (after 49.7 days), unwrapped into seconds: a
+/// reading far below the last (by more than half the range) is the next lap of the
+/// counter; a reading a little below is the game's clock going back, kept as it is (the
+/// receiver refuses a sample older than the last).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct WrappingClock {
+    last: Option<u32>,
+    laps: u64,
+}
+
+impl WrappingClock {
+    /// Seconds since the counter's first zero for the reading `ms`.
+    pub fn seconds(&mut self, ms: u32) -> f64 {
+        if let Some(last) = self.last
+            && ms < last
+            && last - ms > u32::MAX / 2
+        {
+            self.laps += 1;
+        }
+        self.last = Some(ms);
+        let total = (self.laps << 32) + u64::from(ms);
+        total as f64 / 1000.0
+    }
+}
+
+#[cfg(test)]
+mod tests;
