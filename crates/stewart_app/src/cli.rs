@@ -33,8 +33,9 @@ pub(crate) enum Command {
     /// Forward kinematics: poses from a table of leg lengths, as CSV.
     Fk(FkArgs),
     /// Motion cueing: platform poses from vehicle motion (a CSV of time, specific force
-    /// and rotation rates) by classical washout, as a pose table for `solve --poses`,
-    /// `check` and `link`; the scenario's `[cueing]` table sets the filters.
+    /// and rotation rates, or a packet capture of a game's telemetry) by classical washout,
+    /// as a pose table for `solve --poses`, `check` and `link`; the scenario's `[cueing]`
+    /// table sets the filters.
     Cue(CueArgs),
     /// Calibrate a built platform: its joint coordinates and actuator offsets from
     /// measured poses and the leg lengths (or servo angles) commanded for them, by
@@ -353,9 +354,11 @@ pub(crate) struct CueArgs {
     #[command(flatten)]
     pub(crate) scenario: ScenarioArgs,
     /// The vehicle motion: a CSV with columns t (s), ax, ay, az (m/s², the vehicle's
-    /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s); `-` reads
-    /// standard input.
-    #[arg(long, value_name = "VEHICLE.csv")]
+    /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s), or a packet
+    /// capture (pcap or pcapng, from Wireshark or tcpdump) of a game's UDP telemetry in any
+    /// format the live link reads (Forza, F1 24, BeamNG, Live for Speed, X-Plane); `-`
+    /// reads standard input.
+    #[arg(long, value_name = "RECORDING")]
     pub(crate) input: PathBuf,
     /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
     /// at all, instead of standard output.

@@ -26,6 +26,7 @@ pub(crate) mod output;
 pub(crate) mod readout;
 pub(crate) mod shot_scale;
 pub(crate) mod source;
+pub(crate) mod vehicle_capture;
 pub(crate) mod vehicle_table;
 pub mod viewer;
 

@@ -82,13 +82,49 @@ impl CueCounts {
     }
 }
 
+/// How a sample steps the washout: the rule the live link and a replayed capture share.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Step {
+    /// The first sample of a stretch: nothing to step.
+    First,
+    /// A sample this much later than the last, seconds.
+    By(f64),
+    /// A sample without a clock of its own at the same time as the last (X-Plane's read in
+    /// one tick): the newest holds, nothing to step.
+    Same,
+    /// A sample not later than the last by its own clock: dropped (and counted).
+    Stale,
+}
+
+/// The time of the last sample taken: its own clock, or its arrival when it has none.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct SampleClock {
+    last: Option<f64>,
+}
+
+impl SampleClock {
+    /// How a sample of clock `t` (`None`: it has none) arriving at `arrival` steps the
+    /// washout; a sample that is not [`Step::Stale`] becomes the last.
+    pub(crate) fn step(&mut self, t: Option<f64>, arrival: f64) -> Step {
+        let time = t.unwrap_or(arrival);
+        let step = match self.last {
+            None => Step::First,
+            Some(last) if time > last => Step::By(time - last),
+            Some(_) if t.is_none() => Step::Same,
+            Some(_) => return Step::Stale,
+        };
+        self.last = Some(time);
+        step
+    }
+}
+
 /// The live input and the cueing it feeds.
 pub struct LiveCue {
     socket: UdpSocket,
     cueing: Cueing,
     counts: Arc<CueCounts>,
-    /// The last sample's time (its clock), `None` before the first and after a stall.
-    last_sample: Option<f64>,
+    /// The samples' clock (restarted after a stall).
+    clock: SampleClock,
     /// Stream time of the last sample used.
     last_arrival: Option<f64>,
     /// Stream time of the last tick.
@@ -123,7 +159,7 @@ impl LiveCue {
             socket,
             cueing,
             counts: Arc::default(),
-            last_sample: None,
+            clock: SampleClock::default(),
             last_arrival: None,
             last_tick: None,
             stalled: false,
@@ -184,16 +220,13 @@ impl LiveCue {
 
     /// Step the washout to `sample`'s time and hold its motion.
     fn take(&mut self, sample: VehicleSample, now: f64) {
-        let time = sample.t.unwrap_or(now);
-        let h = match self.last_sample {
-            Some(last) if time > last => time - last,
-            // X-Plane's samples read in one tick share its time: the newest holds.
-            Some(_) if sample.t.is_none() => 0.0,
-            Some(_) => {
+        let h = match self.clock.step(sample.t, now) {
+            Step::First | Step::Same => 0.0,
+            Step::By(h) => h,
+            Step::Stale => {
                 self.counts.malformed.fetch_add(1, Ordering::Relaxed);
                 return;
             }
-            None => 0.0,
         };
         self.pose = self.cueing.advance(h);
         self.cueing.hold(&VehicleMotion {
@@ -216,7 +249,6 @@ impl LiveCue {
             trace.pop_front();
         }
         drop(trace);
-        self.last_sample = Some(time);
         self.last_arrival = Some(now);
         self.stalled = false;
         self.idle = false;
@@ -231,7 +263,7 @@ impl LiveCue {
             self.counts.stalls.fetch_add(1, Ordering::Relaxed);
             self.cueing.hold(&VehicleMotion::default());
             // The next sample starts a new stretch of the sender's clock.
-            self.last_sample = None;
+            self.clock = SampleClock::default();
         }
         let fade = self.cueing.fade() - dt / self.fade_s;
         self.cueing.set_fade(fade);

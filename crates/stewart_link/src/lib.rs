@@ -1,5 +1,7 @@
 //! The set-point link to a real platform: what goes on the wire.
 //!
+//! - [`capture`]: the UDP datagrams of a packet capture (pcap, pcapng), for replaying a
+//!   game's telemetry;
 //! - [`channels`]: which actuator goes out on which channel, scaled, mirrored, as µm,
 //!   0.01° or servo pulse µs;
 //! - [`crc`]: CRC-16/CCITT-FALSE, the frame checksum;
@@ -24,6 +26,7 @@
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.
 
+pub mod capture;
 pub mod channels;
 pub mod crc;
 pub mod frame;

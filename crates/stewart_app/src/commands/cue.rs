@@ -1,5 +1,7 @@
 //! `stewart cue`: platform poses from vehicle motion by classical washout (the scenario's
-//! `[cueing]` table), as a pose table that `solve --poses`, `check` and `link` take.
+//! `[cueing]` table), as a pose table that `solve --poses`, `check` and `link` take. The
+//! motion is a CSV recording or a packet capture of a game's telemetry (told apart by the
+//! file's first bytes).
 
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -12,7 +14,9 @@ use crate::cli::CueArgs;
 use crate::csv_io::{CsvText, read_input};
 use crate::output;
 use crate::source;
+use crate::vehicle_capture::{self, CapturedMotion};
 use crate::vehicle_table::{self, VehicleTable};
+use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
 
 /// The pose table's columns.
 const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -23,21 +27,26 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     inputs.push(("the vehicle motion", &args.input));
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
-    let (VehicleTable { table, samples }, file) = read_input(&args.input, |r, name| {
-        Ok((vehicle_table::read(r, name)?, name.to_owned()))
+    let (bytes, file) = read_input(&args.input, |r, name| {
+        let bytes = read_capped(r, MAX_TABLE_BYTES).map_err(|e| anyhow!("{name} {e}"))?;
+        Ok((bytes, name.to_owned()))
     })?;
+    let recording = if vehicle_capture::is_capture(&bytes) {
+        Recording::Capture(vehicle_capture::read(&bytes, &file)?)
+    } else {
+        Recording::Table(vehicle_table::read(&mut bytes.as_slice(), &file)?)
+    };
+    let samples = recording.samples();
     let cued = cue_recording(
         &scenario.geometry,
         &scenario.limits,
         &scenario.cueing,
-        &samples,
+        samples,
     )
     .map_err(|e| match e {
-        CueError::Time { index, .. } => {
-            anyhow!("{file}, line {}, column `t`: {e}", table.line(index))
-        }
+        CueError::Time { index, .. } => anyhow!("{file}, {}: {e}", recording.place(index, "t")),
         CueError::PoseOutside { index, .. } => {
-            anyhow!("{file}, line {}: {e}", table.line(index))
+            anyhow!("{file}, {}: {e}", recording.place(index, ""))
         }
         other => anyhow!("{}: {other}", source::describe(&args.scenario)),
     })?;
@@ -47,8 +56,41 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     }
     let text = csv.into_string();
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
-    let _ = std::io::stderr().write_all(summary(&samples, &cued.scales).as_bytes());
+    let mut said = summary(samples, &cued.scales);
+    if let Recording::Capture(c) = &recording {
+        said.push_str(&format!("cue: read from {file}: {}\n", c.contents()));
+    }
+    let _ = std::io::stderr().write_all(said.as_bytes());
     Ok(ExitCode::SUCCESS)
+}
+
+/// The vehicle motion read: a CSV table or a packet capture.
+enum Recording {
+    Table(VehicleTable),
+    Capture(CapturedMotion),
+}
+
+impl Recording {
+    /// Time and motion of each sample.
+    fn samples(&self) -> &[(f64, VehicleMotion)] {
+        match self {
+            Recording::Table(t) => &t.samples,
+            Recording::Capture(c) => &c.samples,
+        }
+    }
+
+    /// Where sample `index` came from: the table's line (and `column`, when one is
+    /// named), or the capture's packet.
+    fn place(&self, index: usize, column: &str) -> String {
+        match self {
+            Recording::Table(t) if column.is_empty() => format!("line {}", t.table.line(index)),
+            Recording::Table(t) => format!("line {}, column `{column}`", t.table.line(index)),
+            Recording::Capture(c) => {
+                let packet = c.packets.get(index).copied().unwrap_or_default();
+                format!("packet {packet}")
+            }
+        }
+    }
 }
 
 /// One line on what was cued, and how much the limiter held back.

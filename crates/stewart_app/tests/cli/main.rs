@@ -3,6 +3,7 @@
 
 mod analysis;
 mod calibrate;
+mod capture;
 mod check;
 mod chinese;
 mod cue;
