@@ -74,6 +74,35 @@ pub(crate) enum Command {
     /// CRC, sequence and limits, and records them as CSV. Exit status 1 when a frame was
     /// damaged, lost or outside the limits.
     DeviceSim(DeviceSimArgs),
+    /// What a game's telemetry brings, live: which format arrives at what rate, with its
+    /// numbers decoded into vehicle motion — a check that the game is set up right — and,
+    /// with `--out`, the motion as the CSV `stewart cue` reads.
+    Telemetry(TelemetryArgs),
+}
+
+/// Arguments of `stewart telemetry`.
+#[derive(Debug, Args)]
+pub(crate) struct TelemetryArgs {
+    /// Listen here, `udp:HOST:PORT` (the port the game sends to: Forza's choice, F1 20777,
+    /// BeamNG 4444, Live for Speed's OutSim port, X-Plane's reply port; port 0: any free
+    /// port, printed on standard error).
+    #[arg(long, value_name = "udp:HOST:PORT")]
+    pub(crate) listen: String,
+    /// Write the decoded vehicle motion (t, ax, ay, az, wx, wy, wz) here when listening
+    /// ends, whole or not at all.
+    #[arg(long, value_name = "VEHICLE.csv")]
+    pub(crate) out: Option<PathBuf>,
+    /// Stop after this many seconds (else at Ctrl-C).
+    #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
+    pub(crate) duration: Option<f64>,
+    /// Ask X-Plane at this address (its port is 49000) for the datarefs of motion by
+    /// `RREF`, at `--rate` a second, again every few seconds (X-Plane forgets them when
+    /// it restarts), and stop them at the end.
+    #[arg(long, value_name = "HOST:PORT")]
+    pub(crate) xplane: Option<String>,
+    /// The rate asked of X-Plane, a second.
+    #[arg(long, allow_hyphen_values = true, value_name = "HZ", default_value = "60", value_parser = parse_link_rate)]
+    pub(crate) rate: f64,
 }
 
 /// Arguments of `stewart device-sim`.
@@ -223,11 +252,17 @@ pub(crate) struct LinkArgs {
     #[arg(long, value_name = "FILE.csv")]
     pub(crate) record: Option<PathBuf>,
     /// Follow live vehicle motion instead of the trajectory: UDP datagrams at this address
-    /// (`udp:HOST:PORT`; generic text `t,ax,ay,az,wx,wy,wz`, seven little-endian f32, or
-    /// X-Plane DATA) through the scenario's `[cueing]` washout, until Ctrl-C or
-    /// `--duration`.
+    /// (`udp:HOST:PORT`; a game's telemetry — Forza Data Out, F1 24, BeamNG MotionSim,
+    /// Live for Speed OutSim, X-Plane DATA or RREF — or the generic text
+    /// `t,ax,ay,az,wx,wy,wz` or seven little-endian f32) through the scenario's `[cueing]`
+    /// washout, until Ctrl-C or `--duration`.
     #[arg(long, value_name = "udp:HOST:PORT", conflicts_with_all = ["repeat", "bench", "list_ports"])]
     pub(crate) cue: Option<String>,
+    /// With `--cue`: ask X-Plane at this address (its port is 49000) for the datarefs of
+    /// motion by `RREF`, at the link's rate, renewed every few seconds and stopped at the
+    /// end.
+    #[arg(long, value_name = "HOST:PORT", requires = "cue")]
+    pub(crate) xplane: Option<String>,
 }
 
 /// A choice of the `[link]` table spelled as in files.

@@ -29,6 +29,7 @@ pub(crate) mod source;
 pub(crate) mod vehicle_capture;
 pub(crate) mod vehicle_table;
 pub mod viewer;
+pub(crate) mod xplane_rref;
 
 use std::io::Write as _;
 use std::process::ExitCode;
@@ -87,6 +88,7 @@ pub fn main() -> ExitCode {
         Some(Command::Firmware(args)) => commands::firmware::run(&args),
         Some(Command::Link(args)) => commands::link::run(&args),
         Some(Command::DeviceSim(args)) => commands::device_sim::run(&args),
+        Some(Command::Telemetry(args)) => commands::telemetry::run(&args),
         None => commands::no_command(),
     };
     match result {

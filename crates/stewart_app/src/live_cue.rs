@@ -20,6 +20,8 @@ use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_kinematics::{Pose, Scenario};
 use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
 
+use crate::xplane_rref::RrefSubscription;
+
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
 
@@ -82,6 +84,14 @@ impl CueCounts {
     }
 }
 
+impl Drop for LiveCue {
+    fn drop(&mut self) {
+        if let Some(x) = &self.xplane {
+            x.end(&self.socket);
+        }
+    }
+}
+
 /// How a sample steps the washout: the rule the live link and a replayed capture share.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Step {
@@ -136,6 +146,8 @@ pub struct LiveCue {
     buffer: Vec<u8>,
     /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks).
     decoder: Decoder,
+    /// X-Plane asked for its datarefs of motion, when it is.
+    xplane: Option<RrefSubscription>,
     /// `stall_s` and `fade_s`.
     stall_s: f64,
     fade_s: f64,
@@ -167,9 +179,16 @@ impl LiveCue {
             pose: scenario.geometry.home_pose(),
             buffer: vec![0; DATAGRAM],
             decoder: Decoder::new(),
+            xplane: None,
             stall_s: scenario.cueing.stall_s,
             fade_s: scenario.cueing.fade_s,
         })
+    }
+
+    /// Ask X-Plane for its datarefs of motion (`RREF`) while listening: at once, renewed
+    /// every few seconds, stopped when this input is dropped.
+    pub(crate) fn subscribe_xplane(&mut self, subscription: RrefSubscription) {
+        self.xplane = Some(subscription);
     }
 
     /// Where it listens.
@@ -188,6 +207,9 @@ impl LiveCue {
     pub fn tick(&mut self, t: f64) -> Pose {
         let dt = self.last_tick.map_or(0.0, |last| (t - last).max(0.0));
         self.last_tick = Some(t);
+        if let Some(x) = self.xplane.as_mut() {
+            x.keep(&self.socket, std::time::Instant::now());
+        }
         // Until nothing more is waiting (or an ICMP error from a previous send), or the
         // tick's share of datagrams or of time is used.
         let budget = std::time::Duration::from_secs_f64(0.2 * dt).max(MIN_READ_BUDGET);

@@ -10,16 +10,16 @@ const G: f64 = 9.80665;
 /// The manoeuvre at sample `k` of 60 a second, in the formats' own numbers: braking
 /// (forward acceleration, m/s² and g), sliding left (m/s² and g) and turning left
 /// (rad/s and °/s), each exactly an `f32`.
-struct Moment {
-    forward: f32,
-    left: f32,
-    yaw_rad: f32,
-    forward_g: f32,
-    left_g: f32,
-    yaw_deg: f32,
+pub(crate) struct Moment {
+    pub(crate) forward: f32,
+    pub(crate) left: f32,
+    pub(crate) yaw_rad: f32,
+    pub(crate) forward_g: f32,
+    pub(crate) left_g: f32,
+    pub(crate) yaw_deg: f32,
 }
 
-fn moment(k: usize) -> Moment {
+pub(crate) fn moment(k: usize) -> Moment {
     let braking = (60..180).contains(&k);
     let turning = (120..240).contains(&k);
     let pick = |on: bool, v: f32| if on { v } else { 0.0 };
@@ -61,13 +61,13 @@ impl Packet {
 }
 
 /// Milliseconds of sample `k` at 60 a second.
-fn ms(k: usize) -> u32 {
+pub(crate) fn ms(k: usize) -> u32 {
     ((k as f64) * 1000.0 / 60.0).round() as u32
 }
 
 /// Forza Horizon (324 bytes): IsRaceOn, TimestampMS, AccelerationX (right), Y, Z
 /// (forward), AngularVelocityX (pitch), Y (yaw, left-handed: a left turn is negative), Z.
-fn forza(k: usize) -> Vec<Vec<u8>> {
+pub(crate) fn forza(k: usize) -> Vec<Vec<u8>> {
     let m = moment(k);
     let p = Packet::new(324, &[])
         .u32(0, 1)

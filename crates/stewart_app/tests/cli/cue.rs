@@ -512,3 +512,88 @@ fn a_flood_on_the_cue_port_does_not_hold_up_the_stream() {
         "{frames} frames in {seconds} s under a flood of {sent} datagrams: {summary}"
     );
 }
+
+#[test]
+fn the_link_asks_x_plane_for_its_datarefs_and_follows_the_replies() {
+    // A stand-in X-Plane: it waits for the six RREF requests, then answers each second's
+    // worth of replies to the address they came from, as X-Plane does; at the end it is
+    // told to stop (the same requests at 0 a second).
+    let x_plane = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let x_plane_at = x_plane.local_addr().unwrap_or_else(|e| panic!("{e}"));
+    // A link that never asks fails the test instead of hanging it.
+    x_plane
+        .set_read_timeout(Some(Duration::from_secs(60)))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let input = crate::link::free_port();
+    let link = cued_link(
+        &input,
+        &[
+            "--dry-run",
+            "--rate",
+            "50",
+            "--duration",
+            "3",
+            "--xplane",
+            &x_plane_at.to_string(),
+        ],
+    );
+    let mut buffer = [0u8; 1024];
+    let mut requests = Vec::new();
+    let mut reply_to = None;
+    while requests.len() < 6 {
+        let (n, from) = x_plane
+            .recv_from(&mut buffer)
+            .unwrap_or_else(|e| panic!("{e}"));
+        requests.push(buffer[..n].to_vec());
+        reply_to = Some(from);
+    }
+    let reply_to = reply_to.unwrap_or_else(|| panic!("no request"));
+    let asked: Vec<(i32, i32, String)> = requests
+        .iter()
+        .map(|r| {
+            let word = |k: usize| i32::from_le_bytes([r[k], r[k + 1], r[k + 2], r[k + 3]]);
+            let path: Vec<u8> = r[13..].iter().copied().take_while(|&b| b != 0).collect();
+            (
+                word(5),
+                word(9),
+                String::from_utf8_lossy(&path).into_owned(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        asked[0],
+        (50, 0, "sim/flightmodel/forces/g_nrml".to_owned())
+    );
+    assert_eq!(asked[5], (50, 5, "sim/flightmodel/position/R".to_owned()));
+    assert!(
+        requests
+            .iter()
+            .all(|r| r.len() == 413 && r[..5] == *b"RREF\0")
+    );
+    // Braking at 0.3 g for 40 replies.
+    for _ in 0..40 {
+        let mut reply = b"RREF,".to_vec();
+        for (index, value) in [1.0f32, -0.3, 0.0, 0.0, 0.0, 0.0].into_iter().enumerate() {
+            reply.extend((index as i32).to_le_bytes());
+            reply.extend(value.to_le_bytes());
+        }
+        x_plane
+            .send_to(&reply, reply_to)
+            .unwrap_or_else(|e| panic!("{e}"));
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let said = stderr(&o);
+    assert!(said.contains("cue: 40 samples in, 0 malformed"), "{said}");
+    // Told to stop: six requests at 0 a second (after any renewals).
+    x_plane
+        .set_nonblocking(true)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mut last = Vec::new();
+    while let Ok((n, _)) = x_plane.recv_from(&mut buffer) {
+        last.push(buffer[..n].to_vec());
+    }
+    let stops = last.iter().filter(|r| r[5..9] == [0; 4]).count();
+    assert_eq!(stops, 6, "{} requests after the first six", last.len());
+}

@@ -19,6 +19,7 @@ mod rotary;
 mod serial;
 mod settings;
 mod solve;
+mod telemetry;
 mod video_timing;
 mod view;
 

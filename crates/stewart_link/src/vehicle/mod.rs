@@ -265,11 +265,15 @@ pub fn decode(bytes: &[u8]) -> Result<VehicleSample, VehicleError> {
     }
 }
 
-/// A sample whose every number is finite and within the bounds of a vehicle.
+/// A sample whose every number is finite and within the bounds of a vehicle (a zero
+/// that an axis turned negative reads as zero).
 fn checked(reading: Reading) -> Result<Reading, VehicleError> {
-    let Reading::Sample(sample) = reading else {
+    let Reading::Sample(mut sample) = reading else {
         return Ok(reading);
     };
+    for v in sample.accel.iter_mut().chain(&mut sample.rates_deg_s) {
+        *v += 0.0;
+    }
     let [ax, ay, az] = sample.accel;
     let [wx, wy, wz] = sample.rates_deg_s;
     let columns = [
@@ -286,7 +290,7 @@ fn checked(reading: Reading) -> Result<Reading, VehicleError> {
             return Err(VehicleError::Value { name, value });
         }
     }
-    Ok(reading)
+    Ok(Reading::Sample(sample))
 }
 
 /// A `u32` millisecond clock that wraps to 0 (after 49.7 days), unwrapped into seconds: a

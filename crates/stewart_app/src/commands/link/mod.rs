@@ -15,6 +15,7 @@ use stewart_link::transport::{Record, Transport, list_ports};
 use crate::cli::LinkArgs;
 use crate::link_plan::LinkPlan;
 use crate::live_cue::LiveCue;
+use crate::xplane_rref::RrefSubscription;
 use crate::{output, source};
 
 mod record;
@@ -31,11 +32,14 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     scenario.link = settings(&scenario.link, args)?;
     let plan = LinkPlan::new(&scenario)?;
     // Live vehicle motion, when asked: listening before anything is opened or sent.
-    let live = args
+    let mut live = args
         .cue
         .as_deref()
         .map(|source| LiveCue::bind(source, &scenario))
         .transpose()?;
+    if let (Some(live), Some(xplane)) = (live.as_mut(), args.xplane.as_deref()) {
+        live.subscribe_xplane(RrefSubscription::new(xplane, scenario.link.rate_hz)?);
+    }
     let (transport, staged) = open_transport(&plan, args)?;
     let stream_for = match (args.duration, args.repeat || live.is_some()) {
         (Some(d), _) => Some(d),

@@ -1,0 +1,92 @@
+//! `stewart telemetry`: what a game sends, shown a line a second and written as the CSV
+//! `stewart cue` reads.
+
+use std::io::{BufRead as _, BufReader};
+use std::net::UdpSocket;
+use std::process::{Command, Stdio};
+
+use crate::capture::{forza, moment, ms};
+use crate::{parse_csv, tempdir};
+
+#[test]
+fn a_games_datagrams_are_named_counted_and_written_as_vehicle_motion() {
+    let dir = tempdir();
+    let out = dir.path().join("vehicle.csv");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args([
+            "telemetry",
+            "--listen",
+            "udp:127.0.0.1:0",
+            "--duration",
+            "2",
+        ])
+        .arg("--out")
+        .arg(&out)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap_or_else(|e| panic!("{e}"));
+    // The first line says where it listens: the datagrams go there once it does.
+    let mut err = BufReader::new(child.stderr.take().unwrap_or_else(|| panic!("no stderr")));
+    let mut first = String::new();
+    err.read_line(&mut first).unwrap_or_else(|e| panic!("{e}"));
+    let at = first
+        .trim()
+        .strip_prefix("telemetry: listening at ")
+        .and_then(|rest| rest.split(' ').next())
+        .unwrap_or_else(|| panic!("{first}"))
+        .to_owned();
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    for k in 150..210 {
+        for datagram in forza(k) {
+            socket
+                .send_to(&datagram, &at)
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+    }
+    socket
+        .send_to(b"not telemetry", &at)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let o = child.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let mut rest = String::new();
+    std::io::Read::read_to_string(&mut err, &mut rest).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(0), "{rest}");
+    // A line a second names each format with its count (a loaded machine may read the
+    // burst over two seconds: the counts add up).
+    let shown = String::from_utf8_lossy(&o.stdout);
+    let count = |name: &str| -> usize {
+        (shown.lines())
+            .filter_map(|l| l.split(&format!("{name} ")).nth(1))
+            .filter_map(|rest| rest.split("/s").next()?.parse::<usize>().ok())
+            .sum()
+    };
+    assert_eq!(count("Forza Horizon"), 60, "{shown}");
+    assert_eq!(count("unknown"), 1, "{shown}");
+    // The last sample (the turn, braking over): no "-0.0" for a zero.
+    assert!(
+        shown.contains("ax 0.00 ay 3.00 az 0.00 m/s²  wx 0.0 wy 0.0 wz 21.5 °/s"),
+        "{shown}"
+    );
+    assert!(
+        rest.contains("61 datagrams, 60 samples of motion kept, 1 unreadable"),
+        "{rest}"
+    );
+    // The CSV: the game's clock, the motion in our axes — what `stewart cue` reads.
+    let text = std::fs::read_to_string(&out).unwrap_or_else(|e| panic!("{e}"));
+    let (header, rows) = parse_csv(&text);
+    assert_eq!(header, ["t", "ax", "ay", "az", "wx", "wy", "wz"]);
+    assert_eq!(rows.len(), 60);
+    for (row, k) in rows.iter().zip(150..) {
+        let m = moment(k);
+        let expected = [
+            f64::from(5_000 + ms(k)) / 1000.0,
+            f64::from(m.forward),
+            f64::from(m.left),
+            0.0,
+            0.0,
+            0.0,
+            f64::from(m.yaw_rad).to_degrees(),
+        ];
+        assert_eq!(row[..], expected, "sample {k}");
+    }
+}
