@@ -65,12 +65,23 @@ pub(crate) struct CueCounts {
     pub(crate) stalls: AtomicU64,
     /// The last [`TRACE_S`] of samples, oldest first.
     pub(crate) trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
+    /// The formats that arrived in the last whole second, with their datagrams a second
+    /// (named as their makers name them).
+    pub(crate) arriving: std::sync::Mutex<Vec<(&'static str, f64)>>,
 }
 
 impl CueCounts {
     /// Samples used, dropped, and stalls so far.
     pub(crate) fn numbers(&self) -> [u64; 3] {
         [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
+    }
+
+    /// The formats arriving, with their rates: `[("F1 24", 120.0)]`.
+    pub(crate) fn arriving(&self) -> Vec<(&'static str, f64)> {
+        self.arriving
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone()
     }
 
     /// One line for the link's summary.
@@ -148,6 +159,10 @@ pub struct LiveCue {
     decoder: Decoder,
     /// X-Plane asked for its datarefs of motion, when it is.
     xplane: Option<RrefSubscription>,
+    /// Datagrams per format since `window_start` (stream time), published as rates each
+    /// second.
+    window: Vec<(&'static str, u32)>,
+    window_start: Option<f64>,
     /// `stall_s` and `fade_s`.
     stall_s: f64,
     fade_s: f64,
@@ -180,6 +195,8 @@ impl LiveCue {
             buffer: vec![0; DATAGRAM],
             decoder: Decoder::new(),
             xplane: None,
+            window: Vec::new(),
+            window_start: None,
             stall_s: scenario.cueing.stall_s,
             fade_s: scenario.cueing.fade_s,
         })
@@ -221,7 +238,9 @@ impl LiveCue {
             let Ok(n) = self.socket.recv(&mut self.buffer) else {
                 break;
             };
-            match self.decoder.decode(&self.buffer[..n]).reading {
+            let decoded = self.decoder.decode(&self.buffer[..n]);
+            self.count_format(decoded.format.map_or("unknown", |f| f.name()));
+            match decoded.reading {
                 Ok(Reading::Sample(sample)) => self.take(sample, t),
                 // The game's menus or pause: as if the input had stalled.
                 Ok(Reading::Idle) => self.idle = true,
@@ -231,6 +250,7 @@ impl LiveCue {
                 }
             }
         }
+        self.publish_rates(t);
         let quiet = self.idle || self.last_arrival.is_none_or(|at| t - at > self.stall_s);
         if quiet && self.last_arrival.is_some() {
             self.stall(dt);
@@ -238,6 +258,35 @@ impl LiveCue {
             self.cueing.set_fade(self.cueing.fade() + dt / self.fade_s);
         }
         self.pose
+    }
+
+    /// One more datagram of format `name` in this second's window.
+    fn count_format(&mut self, name: &'static str) {
+        match self.window.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, count)) => *count += 1,
+            None => self.window.push((name, 1)),
+        }
+    }
+
+    /// Once a second of stream time has passed, publish the window's rates and start the
+    /// next.
+    fn publish_rates(&mut self, t: f64) {
+        let start = *self.window_start.get_or_insert(t);
+        let elapsed = t - start;
+        if elapsed < 1.0 {
+            return;
+        }
+        let rates = self
+            .window
+            .drain(..)
+            .map(|(name, n)| (name, f64::from(n) / elapsed))
+            .collect();
+        *self
+            .counts
+            .arriving
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner) = rates;
+        self.window_start = Some(t);
     }
 
     /// Step the washout to `sample`'s time and hold its motion.
@@ -474,6 +523,12 @@ mod tests {
             live.tick(t);
         }
         assert_eq!(live.tick(t), home);
+        // The Link panel's "arriving": Forza's form at its rate, one a tick of 20 ms.
+        let arriving = live.counts().arriving();
+        assert!(
+            matches!(arriving[..], [("Forza Sled", rate)] if (rate - 50.0).abs() < 0.5),
+            "{arriving:?}"
+        );
         assert_eq!(live.counts().stalls.load(Ordering::Relaxed), 1);
         assert_eq!(live.counts().malformed.load(Ordering::Relaxed), 0);
         sender

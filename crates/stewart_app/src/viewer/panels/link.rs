@@ -154,6 +154,14 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
                 ("stalls", &stalls),
             ],
         ));
+        let arriving: Vec<String> = (cue.arriving().iter())
+            .map(|(name, rate)| format!("{name} {rate:.0}/s"))
+            .collect();
+        ui.label(if arriving.is_empty() {
+            t.tr("link.cue_nothing").to_owned()
+        } else {
+            t.fmt("link.cue_arriving", &[("formats", &arriving.join(", "))])
+        });
     }
     let width = ui.available_width();
     let big = |text: &str, fill: Color32| {

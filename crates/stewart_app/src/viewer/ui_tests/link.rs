@@ -333,6 +333,22 @@ fn live_vehicle_motion_is_a_source_the_link_follows_and_the_cueing_panel_plots()
         h.query_by_label("Live input: 60 samples, 2 dropped, 0 stalls")
             .is_some()
     );
+    // The formats arriving are named, with their rate, once a second of them is counted.
+    while h
+        .state()
+        .link
+        .cue()
+        .is_some_and(|c| c.arriving().is_empty())
+    {
+        h.run();
+        assert!(started.elapsed() < Duration::from_secs(30), "no rates");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    h.run();
+    assert!(
+        h.query_by_label_contains("Arriving: generic text")
+            .is_some()
+    );
     // The platform moved off home: braking surges it back.
     let values = h.state().link.sender_status().map(|s| s.values);
     let home = h
