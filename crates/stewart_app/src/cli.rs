@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use stewart_kinematics::io::bounds;
 use stewart_kinematics::model::link_settings::{LinkFormat, LinkTransport, Word};
+use stewart_link::template::Template;
 
 use crate::i18n::Lang;
 use crate::shot_scale::ShotScale;
@@ -151,9 +152,11 @@ pub(crate) struct DeviceSimArgs {
     /// The simulated actuators do not move while the set-point is this close, wire units.
     #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_dead_band)]
     pub(crate) dead_band: f64,
-    /// The wire format to expect: binary frames, or the text lines of `link --format text`.
-    #[arg(long, value_parser = parse_word::<LinkFormat>, default_value = "binary")]
-    pub(crate) format: LinkFormat,
+    /// The wire format to expect: binary frames, the text lines of `link --format text`,
+    /// or an output template's bytes (`template:<255><255>{a1:u16be}…`, as `link` was
+    /// given it; recorded with unit 3: the template's numbers, 0 to the type's largest).
+    #[arg(long, value_parser = parse_wire_format, default_value = "binary", value_name = "FORMAT")]
+    pub(crate) format: WireFormat,
     /// The unit this controller's text lines are in (the text form does not say).
     #[arg(long, value_enum, default_value_t = WireUnit::Micrometre)]
     pub(crate) text_unit: WireUnit,
@@ -241,9 +244,13 @@ pub(crate) struct LinkArgs {
     /// Send nothing anywhere: record what would be sent (the same as `--transport file`).
     #[arg(long)]
     pub(crate) dry_run: bool,
-    /// binary (34-byte frames with a CRC, docs/PROTOCOL.md) or text (`S,seq,v1,…,v6` lines).
-    #[arg(long, value_parser = parse_word::<LinkFormat>)]
-    pub(crate) format: Option<LinkFormat>,
+    /// binary (34-byte frames with a CRC, docs/PROTOCOL.md), text (`S,seq,v1,…,v6`
+    /// lines), or an output template for a hobby board, as FlyPT Mover and SimTools write
+    /// them: `template:<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>`
+    /// (`<N>` a byte; `{aK:T}` actuator K scaled from its range to T = u8, u10be, u12be,
+    /// u16be, u16le, u24be, u32be, dec or dec3; other printable characters as they are).
+    #[arg(long, value_parser = parse_wire_format, value_name = "FORMAT")]
+    pub(crate) format: Option<WireFormat>,
     /// Seconds of the arming ramp from home to the trajectory (default 2).
     #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
     pub(crate) ramp: Option<f64>,
@@ -263,6 +270,44 @@ pub(crate) struct LinkArgs {
     /// end.
     #[arg(long, value_name = "HOST:PORT", requires = "cue")]
     pub(crate) xplane: Option<String>,
+}
+
+/// A wire format named on the command line.
+#[derive(Clone, Debug)]
+pub(crate) enum WireFormat {
+    /// The 34-byte frames.
+    Binary,
+    /// `S,seq,…` lines.
+    Text,
+    /// An output template's bytes.
+    Template(Template),
+}
+
+impl WireFormat {
+    /// The value of `link.format` that says it (`template:…` sets the template too).
+    pub(crate) fn setting(&self) -> String {
+        match self {
+            WireFormat::Binary => LinkFormat::Binary.word().to_owned(),
+            WireFormat::Text => LinkFormat::Text.word().to_owned(),
+            WireFormat::Template(t) => format!("template:{}", t.text()),
+        }
+    }
+}
+
+/// `binary`, `text`, or `template:…` (the template checked, its column named when refused).
+pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormat, String> {
+    if let Some(template) = text.trim().strip_prefix("template:") {
+        return Template::parse(template)
+            .map(WireFormat::Template)
+            .map_err(|e| e.to_string());
+    }
+    match parse_word::<LinkFormat>(text)? {
+        LinkFormat::Binary => Ok(WireFormat::Binary),
+        LinkFormat::Text => Ok(WireFormat::Text),
+        LinkFormat::Template => {
+            Err("a template is written out: template:<255><255>{a1:u16be}…{a6:u16be}".to_owned())
+        }
+    }
 }
 
 /// A choice of the `[link]` table spelled as in files.

@@ -17,6 +17,8 @@
 //!   with velocity and acceleration when known), and why a tick has none;
 //! - [`telemetry`]: the controller's answers matched to the set-points (commanded and
 //!   measured side by side, latency, unanswered and stale counts);
+//! - [`template`]: output templates (`<255><255>{a1:u16be}…`), the byte strings hobby
+//!   boards read, written and read back;
 //! - [`text`]: the plain text line form `S,seq,v1,…,v6` for the simplest sketches;
 //! - [`transport`]: UDP, or a dry-run record of what would be sent.
 //! - [`vehicle`]: vehicle motion coming in for motion cueing — the studio's generic text
@@ -35,6 +37,7 @@ pub mod safety;
 pub mod sender;
 pub mod target;
 pub mod telemetry;
+pub mod template;
 pub mod text;
 pub mod transport;
 pub mod vehicle;

@@ -12,6 +12,7 @@ use stewart_link::channels::{Channel, ChannelMap, Output};
 use stewart_link::frame::FRAME_LEN;
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
 use stewart_link::sender::Format;
+use stewart_link::template::Template;
 use stewart_link::transport::{Serial, Transport, Udp, max_rate_hz};
 
 /// How long a serial write may block before the link counts the device as gone.
@@ -50,11 +51,25 @@ pub(crate) fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
     ChannelMap::new(channels, output).map_err(|e| anyhow!("[link] {e}"))
 }
 
-/// The wire format of `[link]`.
-pub(crate) fn format(link: &LinkSettings) -> Format {
-    match link.format {
+/// The wire format of `[link]` (a template parsed, or refused at its column).
+pub(crate) fn format(link: &LinkSettings) -> Result<Format> {
+    Ok(match link.format {
         LinkFormat::Binary => Format::Binary,
         LinkFormat::Text => Format::Text,
+        LinkFormat::Template => {
+            let text = link.template.as_deref().unwrap_or_default();
+            Format::Template(Template::parse(text).map_err(|e| anyhow!("link.template: {e}"))?)
+        }
+    })
+}
+
+/// The most bytes one set-point takes on the wire in `format`.
+pub(crate) fn frame_bytes(format: &Format) -> usize {
+    match format {
+        Format::Binary => FRAME_LEN,
+        // The longest text line: `S,65535,` and six signed 11-character values.
+        Format::Text => 8 + 6 * 12,
+        Format::Template(t) => t.max_len(),
     }
 }
 
@@ -105,11 +120,7 @@ pub(crate) fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
                 .port
                 .as_deref()
                 .ok_or_else(|| anyhow!("the serial transport needs a port (`--port /dev/ttyUSB0` or `link.port`; `stewart link --list-ports` lists them)"))?;
-            let bytes = match link.format {
-                LinkFormat::Binary => FRAME_LEN,
-                // The longest text line: `S,65535,` and six signed 11-character values.
-                LinkFormat::Text => 8 + 6 * 12,
-            };
+            let bytes = frame_bytes(&format(link)?);
             let most = max_rate_hz(link.baud, bytes);
             if link.rate_hz > most {
                 bail!(

@@ -11,7 +11,7 @@ use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
 use stewart_link::safety::Supervisor;
-use stewart_link::sender::SenderConfig;
+use stewart_link::sender::{Format, SenderConfig};
 use stewart_link::target::{Motion, Sample, Target, TargetError};
 use stewart_link::transport::Transport;
 
@@ -36,6 +36,8 @@ pub struct LinkPlan {
     pub(crate) home: [f64; 6],
     /// Values to wire.
     pub(crate) map: ChannelMap,
+    /// What goes on the wire: frames, lines, or a template's bytes.
+    pub(crate) format: Format,
     /// The safety state machine for the scenario's limits (disarmed, at home).
     pub(crate) supervisor: Supervisor,
     /// The platform, for the target's actuator values.
@@ -48,13 +50,15 @@ pub struct LinkPlan {
 
 impl LinkPlan {
     /// The plan for `scenario` (its `[link]` as it stands). Fails, naming the setting,
-    /// when the channel map is refused or the home pose has no actuator values.
+    /// when the channel map or the template is refused or the home pose has no actuator
+    /// values.
     pub fn new(scenario: &Scenario) -> Result<Self> {
         let home = hardware::home_values(scenario)?;
         Ok(Self {
             settings: scenario.link.clone(),
             home,
             map: hardware::channel_map(scenario)?,
+            format: hardware::format(&scenario.link)?,
             supervisor: hardware::supervisor(scenario, home),
             geometry: scenario.geometry.clone(),
             trajectory: scenario.motion.trajectory.clone(),
@@ -70,7 +74,7 @@ impl LinkPlan {
     pub fn sender_config(&self, arm_at_start: bool, stop_after: Option<f64>) -> SenderConfig {
         SenderConfig {
             rate_hz: self.settings.rate_hz,
-            format: hardware::format(&self.settings),
+            format: self.format.clone(),
             map: self.map,
             supervisor: self.supervisor.clone(),
             arm_at_start,

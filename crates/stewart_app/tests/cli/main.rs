@@ -2,6 +2,7 @@
 //! prints, writes and returns.
 
 mod analysis;
+mod boards;
 mod calibrate;
 mod capture;
 mod check;

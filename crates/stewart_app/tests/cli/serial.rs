@@ -9,15 +9,15 @@ use crate::link::device_sim_on;
 use crate::{parse_csv, stderr, stewart};
 
 /// Two connected pseudo-terminals, `a` and `b`; the pair goes when this is dropped.
-struct PtyPair {
+pub(crate) struct PtyPair {
     socat: Child,
-    a: PathBuf,
-    b: PathBuf,
+    pub(crate) a: PathBuf,
+    pub(crate) b: PathBuf,
     _dir: tempfile::TempDir,
 }
 
 impl PtyPair {
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
         let (a, b) = (dir.path().join("a"), dir.path().join("b"));
         let end = |p: &Path| format!("pty,raw,echo=0,link={}", p.display());
@@ -43,7 +43,7 @@ impl PtyPair {
         }
     }
 
-    fn path(p: &Path) -> &str {
+    pub(crate) fn path(p: &Path) -> &str {
         p.to_str().unwrap_or_else(|| panic!("{p:?}"))
     }
 

@@ -38,7 +38,7 @@ pub enum LinkTransport {
     File,
 }
 
-/// Binary frames or text lines.
+/// Binary frames, text lines, or a board's own bytes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LinkFormat {
@@ -47,6 +47,9 @@ pub enum LinkFormat {
     Binary,
     /// `S,seq,v1,…,v6` lines.
     Text,
+    /// The bytes of `link.template` (`<255><255>{a1:u16be}…`: FlyPT Mover's and SimTools'
+    /// output strings).
+    Template,
 }
 
 /// The unit of the values on the wire.
@@ -87,8 +90,11 @@ pub struct LinkSettings {
     pub address: Option<String>,
     /// Set-points per second.
     pub rate_hz: f64,
-    /// Frames or lines.
+    /// Frames, lines, or a template's bytes.
     pub format: LinkFormat,
+    /// The output template of `format = "template"`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub template: Option<String>,
     /// The unit on the wire.
     pub output: LinkOutput,
     /// Servo pulse at 0°, µs.
@@ -122,6 +128,7 @@ impl Default for LinkSettings {
             address: None,
             rate_hz: 100.0,
             format: LinkFormat::Binary,
+            template: None,
             output: LinkOutput::Native,
             pulse_zero_us: 1500.0,
             pulse_us_per_deg: 10.0,
@@ -170,7 +177,18 @@ impl LinkSettings {
                 format!("must be between 1 and {MAX_BAUD}, got {}", self.baud),
             );
         }
-        for (key, text) in [("port", &self.port), ("address", &self.address)] {
+        if self.format == LinkFormat::Template && self.template.is_none() {
+            return bad(
+                "link.template".into(),
+                "the template format needs a template, such as \"<255><255>{a1:u16be}…{a6:u16be}\""
+                    .into(),
+            );
+        }
+        for (key, text) in [
+            ("port", &self.port),
+            ("address", &self.address),
+            ("template", &self.template),
+        ] {
             if text.as_ref().is_some_and(|t| t.trim().is_empty()) {
                 return bad(format!("link.{key}"), "must not be empty".into());
             }
@@ -289,8 +307,16 @@ impl LinkSettings {
                 })?;
             }
             ("rate_hz", None) => edited.rate_hz = number()?,
-            ("format", None) => {
-                edited.format = choice(value).map_err(refuse)?;
+            ("format", None) => match value.trim().strip_prefix("template:") {
+                // `template:<255>…` sets both.
+                Some(template) => {
+                    edited.format = LinkFormat::Template;
+                    edited.template = Some(template.to_owned());
+                }
+                None => edited.format = choice(value).map_err(refuse)?,
+            },
+            ("template", None) => {
+                edited.template = (!value.eq_ignore_ascii_case("off")).then(|| value.to_owned());
             }
             ("output", None) => {
                 edited.output = choice(value).map_err(refuse)?;
@@ -339,6 +365,10 @@ impl LinkSettings {
             ),
             ("rate_hz".to_owned(), self.rate_hz.to_string()),
             ("format".to_owned(), self.format.word().to_owned()),
+            (
+                "template".to_owned(),
+                self.template.clone().unwrap_or_else(|| "off".into()),
+            ),
             ("output".to_owned(), self.output.word().to_owned()),
             ("pulse_zero_us".to_owned(), self.pulse_zero_us.to_string()),
             (
@@ -400,8 +430,11 @@ impl Word for LinkTransport {
 }
 
 impl Word for LinkFormat {
-    const WORDS: &'static [(Self, &'static str)] =
-        &[(LinkFormat::Binary, "binary"), (LinkFormat::Text, "text")];
+    const WORDS: &'static [(Self, &'static str)] = &[
+        (LinkFormat::Binary, "binary"),
+        (LinkFormat::Text, "text"),
+        (LinkFormat::Template, "template"),
+    ];
 }
 
 impl Word for LinkOutput {

@@ -15,16 +15,21 @@ use crate::frame::{Decoder, Flags, Frame, FrameKind};
 use crate::safety::{LinkState, Supervisor};
 use crate::target::Target;
 use crate::telemetry::{Matcher, Row, TelemetryStats};
+use crate::template::Template;
 use crate::text;
 use crate::transport::Transport;
 
-/// Binary frames or text lines.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Binary frames, text lines, or a board's own bytes.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Format {
     /// The 34-byte frame.
     Binary,
     /// The `S,seq,…` line.
     Text,
+    /// An output template's bytes ([`crate::template`]): each actuator's value scaled from
+    /// its range, sent while the supervisor drives the platform (armed, arming, or on its
+    /// way home); nothing while disarmed, as the text line.
+    Template(Template),
 }
 
 /// What the sender is asked to do.
@@ -381,6 +386,8 @@ pub struct Stream {
     note: Option<String>,
     telemetry: Telemetry,
     values: [f64; 6],
+    /// A template's frame, written here each tick (no allocation once it has its size).
+    bytes: Vec<u8>,
 }
 
 impl Stream {
@@ -401,6 +408,7 @@ impl Stream {
             note: None,
             telemetry,
             values,
+            bytes: Vec::with_capacity(64),
         }
     }
 
@@ -442,9 +450,15 @@ impl Stream {
             unit: self.config.map.output().unit(),
             values,
         };
-        let sent = match self.config.format {
+        let sent = match &self.config.format {
             Format::Binary => Some(self.transport.send(t, &frame.encode())),
             Format::Text => text::line(&frame).map(|line| self.transport.send(t, line.as_bytes())),
+            Format::Template(template) => (tick.armed || tick.home).then(|| {
+                self.bytes.clear();
+                let ranges = &self.config.supervisor.limits().range;
+                template.encode(&tick.values, ranges, &mut self.bytes);
+                self.transport.send(t, &self.bytes)
+            }),
         };
         let delivered = match sent {
             Some(Err(e)) => {

@@ -139,10 +139,12 @@ impl Transport for Udp {
 }
 
 /// A dry run: each frame as a line `t_s <TAB> bytes in hex` (or the text line itself,
-/// after the time), into any writer (a file, standard output).
+/// after the time), into any writer (a file, standard output); or, [`Record::raw`], the
+/// bytes exactly as they would go to the port.
 pub struct Record<W: Write + Send> {
     out: W,
     name: String,
+    raw: bool,
 }
 
 impl<W: Write + Send> Record<W> {
@@ -151,6 +153,16 @@ impl<W: Write + Send> Record<W> {
         Self {
             out,
             name: name.into(),
+            raw: false,
+        }
+    }
+
+    /// Write the bytes into `out` as they are, nothing added (a board's own bytes, to
+    /// compare with what it expects).
+    pub fn raw(out: W, name: impl Into<String>) -> Self {
+        Self {
+            raw: true,
+            ..Self::new(out, name)
         }
     }
 
@@ -162,6 +174,15 @@ impl<W: Write + Send> Record<W> {
 
 impl<W: Write + Send> Transport for Record<W> {
     fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        let failed = |cause, name: &str| TransportError::Io {
+            what: format!("writing the dry run to {name}"),
+            cause,
+        };
+        if self.raw {
+            return (self.out.write_all(bytes))
+                .and_then(|()| self.out.flush())
+                .map_err(|cause| failed(cause, &self.name));
+        }
         let body = if bytes.ends_with(b"\n") && bytes.is_ascii() {
             String::from_utf8_lossy(bytes).trim_end().to_owned()
         } else {
@@ -173,10 +194,7 @@ impl<W: Write + Send> Transport for Record<W> {
         };
         writeln!(self.out, "{t:.6}\t{body}")
             .and_then(|()| self.out.flush())
-            .map_err(|cause| TransportError::Io {
-                what: format!("writing the dry run to {}", self.name),
-                cause,
-            })
+            .map_err(|cause| failed(cause, &self.name))
     }
 
     fn describe(&self) -> String {

@@ -6,7 +6,10 @@
 //! telemetry frame: the set-point's sequence number, and where its simulated actuators are
 //! ([`model`]: a first-order lag, a speed limit, a dead band; without them, the values
 //! received). `--format text` reads the lines of `link --format text` instead (`S`, `E`,
-//! `H`; their unit is `--text-unit`, as the text form does not carry one).
+//! `H`; their unit is `--text-unit`, as the text form does not carry one); `--format
+//! template:…` a template's frames (a hobby board's: numbered in the order they come,
+//! recorded with unit 3, their numbers 0 to the type's largest, an actuator the template
+//! leaves out as 0; bytes that match no frame count as a damaged frame; no telemetry).
 
 use std::io::Write as _;
 use std::net::UdpSocket;
@@ -14,13 +17,13 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
-use stewart_kinematics::model::link_settings::LinkFormat;
+use stewart_link::template::TemplateDecoder;
 use stewart_link::text::LineDecoder;
 use stewart_link::transport::Transport as _;
 use stewart_link::transport::{NOTHING_YET, Serial, bytes_read};
-use stewart_link::{Decoder, Frame, FrameKind, Unit};
+use stewart_link::{Decoder, Flags, Frame, FrameKind, Unit};
 
-use crate::cli::{DeviceSimArgs, WireUnit};
+use crate::cli::{DeviceSimArgs, WireFormat, WireUnit};
 use crate::output;
 
 pub(crate) mod model;
@@ -88,6 +91,7 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
             stream.reset();
         }
         let decoder = &mut stream;
+        let skipped_before = decoder.skipped();
         let mut any = false;
         let mut damaged = false;
         let t = (now - t0).as_secs_f64();
@@ -100,7 +104,9 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                     record(&mut tally, t, &frame, args);
                     let armed = frame.flags.armed && !frame.flags.estop;
                     let measured = actuators.frame(t, &frame.values, armed);
-                    if args.telemetry {
+                    // A template's board answers nothing.
+                    let template = matches!(args.format, WireFormat::Template(_));
+                    if args.telemetry && !template {
                         replies.push(Frame {
                             kind: FrameKind::Telemetry,
                             values: if modelled { measured } else { frame.values },
@@ -114,6 +120,11 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                 }
                 None => {}
             }
+        }
+        // Template bytes that matched no frame: a damaged frame (once a read).
+        if decoder.skipped() > skipped_before {
+            tally.bad += 1;
+            damaged = true;
         }
         if input.datagrams && !damaged && (!any || decoder.pending()) {
             // A datagram with no frame in it at all, or that ends inside a line, is damaged
@@ -142,29 +153,59 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     })
 }
 
-/// Reads binary frames or text lines, as `--format` says.
+/// Reads binary frames, text lines or a template's frames, as `--format` says.
 enum WireDecoder {
     Binary(Decoder),
     Text(LineDecoder),
+    /// A template's frames, numbered here (the bytes carry no sequence).
+    Template(TemplateDecoder, u16),
 }
 
 impl WireDecoder {
     fn new(args: &DeviceSimArgs) -> Self {
-        match args.format {
-            LinkFormat::Binary => Self::Binary(Decoder::new()),
-            LinkFormat::Text => Self::Text(LineDecoder::new(match args.text_unit {
+        match &args.format {
+            WireFormat::Binary => Self::Binary(Decoder::new()),
+            WireFormat::Text => Self::Text(LineDecoder::new(match args.text_unit {
                 WireUnit::Micrometre => Unit::Micrometre,
                 WireUnit::Centidegree => Unit::Centidegree,
                 WireUnit::Microsecond => Unit::PulseMicrosecond,
             })),
+            WireFormat::Template(t) => Self::Template(TemplateDecoder::new(t.clone()), 0),
         }
     }
 
-    /// Take one byte; a frame, or that one was refused (`Err(())`), when one ends.
+    /// Take one byte; a frame, or that one was refused (`Err(())`), when one ends. A
+    /// template's frame is a set-point of its numbers (sent only while the platform is
+    /// driven: armed); bytes that match no frame are counted by [`WireDecoder::skipped`].
     fn push(&mut self, byte: u8) -> Option<Result<Frame, ()>> {
         match self {
             Self::Binary(d) => d.push(byte).map(|r| r.map_err(drop)),
             Self::Text(d) => d.push(byte).map(|r| r.map_err(drop)),
+            Self::Template(d, sequence) => {
+                d.push(&[byte]);
+                let numbers = d.next_frame()?;
+                let frame = Frame {
+                    kind: FrameKind::SetPoint,
+                    sequence: *sequence,
+                    flags: Flags {
+                        armed: true,
+                        estop: false,
+                        home: false,
+                    },
+                    unit: Unit::Micrometre,
+                    values: numbers.map(|n| n.map_or(0, |n| i32::try_from(n).unwrap_or(i32::MAX))),
+                };
+                *sequence = sequence.wrapping_add(1);
+                Some(Ok(frame))
+            }
+        }
+    }
+
+    /// Bytes of a template stream that matched no frame.
+    fn skipped(&self) -> u64 {
+        match self {
+            Self::Template(d, _) => d.skipped(),
+            _ => 0,
         }
     }
 
@@ -173,15 +214,17 @@ impl WireDecoder {
         match self {
             Self::Binary(d) => *d = Decoder::new(),
             Self::Text(d) => d.reset(),
+            Self::Template(d, _) => d.reset(),
         }
     }
 
-    /// Whether part of a line waits for its end (a binary frame cut short is found by the
-    /// datagram holding no frame).
+    /// Whether part of a line or template frame waits for its end (a binary frame cut
+    /// short is found by the datagram holding no frame).
     fn pending(&self) -> bool {
         match self {
             Self::Binary(_) => false,
             Self::Text(d) => d.pending(),
+            Self::Template(d, _) => d.pending(),
         }
     }
 }
@@ -274,10 +317,11 @@ fn record(tally: &mut Tally, t: f64, f: &Frame, args: &DeviceSimArgs) {
     tally.last_sequence = Some(f.sequence);
     let outside = |v: &i32| args.min.is_some_and(|m| *v < m) || args.max.is_some_and(|m| *v > m);
     tally.outside += f.values.iter().filter(|v| outside(v)).count() as u64;
-    let unit = match f.unit {
-        Unit::Micrometre => 0,
-        Unit::Centidegree => 1,
-        Unit::PulseMicrosecond => 2,
+    let unit = match (&args.format, f.unit) {
+        (WireFormat::Template(_), _) => 3,
+        (_, Unit::Micrometre) => 0,
+        (_, Unit::Centidegree) => 1,
+        (_, Unit::PulseMicrosecond) => 2,
     };
     let values: Vec<String> = f.values.iter().map(i32::to_string).collect();
     tally.rows.push_str(&format!(

@@ -8,11 +8,11 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::model::link_settings::{LinkSettings, LinkTransport, Word as _};
-use stewart_link::sender::{Command, Sender, SenderConfig, Status};
+use stewart_link::sender::{Command, Format, Sender, SenderConfig, Status};
 use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};
 
-use crate::cli::LinkArgs;
+use crate::cli::{LinkArgs, WireFormat};
 use crate::link_plan::LinkPlan;
 use crate::live_cue::LiveCue;
 use crate::xplane_rref::RrefSubscription;
@@ -351,7 +351,7 @@ fn settings(base: &LinkSettings, args: &LinkArgs) -> Result<LinkSettings> {
         ("address", args.address.clone()),
         ("baud", baud),
         ("rate_hz", rate),
-        ("format", args.format.map(|f| f.word().to_owned())),
+        ("format", args.format.as_ref().map(WireFormat::setting)),
         ("ramp_s", ramp),
     ];
     for (key, value) in overrides {
@@ -386,10 +386,22 @@ fn open_transport(plan: &LinkPlan, args: &LinkArgs) -> Result<(Box<dyn Transport
         return Ok((plan.open_device()?, None));
     }
     // The record never lands on an input, and a regular file is written whole or not at all.
+    // A template's bytes are recorded as they would go to the port; frames and lines, a
+    // line each with its time.
+    fn record<W: std::io::Write + Send + 'static>(
+        plan: &LinkPlan,
+        out: W,
+        name: String,
+    ) -> Box<dyn Transport> {
+        match plan.format {
+            Format::Template(_) => Box::new(Record::raw(out, name)),
+            _ => Box::new(Record::new(out, name)),
+        }
+    }
     let inputs = source::inputs(&args.scenario);
     let Some(destination) = output::destination(args.out.as_deref(), &inputs)? else {
-        let stdout = Record::new(QuietPipe(std::io::stdout()), "standard output");
-        return Ok((Box::new(stdout), None));
+        let stdout = QuietPipe(std::io::stdout());
+        return Ok((record(plan, stdout, "standard output".to_owned()), None));
     };
     destination.require_file()?;
     let name = destination.shown().display().to_string();
@@ -398,10 +410,10 @@ fn open_transport(plan: &LinkPlan, args: &LinkArgs) -> Result<(Box<dyn Transport
             .write(true)
             .open(destination.real())
             .map_err(|e| anyhow!("cannot write `{name}`: {e}"))?;
-        return Ok((Box::new(Record::new(device, name)), None));
+        return Ok((record(plan, device, name), None));
     }
     let (file, path) = destination.staged_file(".partial")?.into_parts();
-    Ok((Box::new(Record::new(file, name)), Some((destination, path))))
+    Ok((record(plan, file, name), Some((destination, path))))
 }
 
 /// Standard output for a dry run: a reader that closed the pipe (`| head`) ends the stream;
