@@ -80,9 +80,7 @@ pub(crate) fn frame_bytes(format: &Format) -> usize {
 pub(crate) fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
     let g = &scenario.geometry;
     let l = &scenario.limits;
-    let [lo, hi] = g.quantity_limits();
-    let widest = g.quantity().widest;
-    let range = (lo.unwrap_or(widest.0), hi.unwrap_or(widest.1));
+    let range = actuator_range(scenario);
     let [speed, accel, jerk] = g.actuator_rate_limits(l);
     let stop = match scenario.link.stop {
         LinkStop::Hold => StopMode::Hold,
@@ -101,6 +99,15 @@ pub(crate) fn supervisor(scenario: &Scenario, home: [f64; 6]) -> Supervisor {
         stop,
         home,
     )
+}
+
+/// The range every actuator is kept in: the stroke or servo range, or the accepted range
+/// of any length or angle where the scenario sets none (a template scales from it).
+pub(crate) fn actuator_range(scenario: &Scenario) -> (f64, f64) {
+    let g = &scenario.geometry;
+    let [lo, hi] = g.quantity_limits();
+    let widest = g.quantity().widest;
+    (lo.unwrap_or(widest.0), hi.unwrap_or(widest.1))
 }
 
 /// Open the serial port or UDP peer `[link]` names (a `file` transport is the caller's:

@@ -10,10 +10,12 @@ use stewart_kinematics::model::link_settings::{
 };
 use stewart_link::safety::LinkState;
 use stewart_link::sender::Status as SenderStatus;
+use stewart_link::template::Template;
 use stewart_link::transport::list_ports;
 
 use super::widgets;
 use crate::i18n::Lang;
+use crate::link_plan::actuator_range;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
@@ -402,7 +404,18 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
         *error = doc.edit_link(|l| l.rate_hz = rate.round()).err();
     }
     if let Some(f) = choice::<LinkFormat>(ui, t, "link.format", link.format) {
-        *error = doc.edit_link(|l| l.format = f).err();
+        // A template chosen for the first time starts as a common board's frame.
+        *error = doc
+            .edit_link(|l| {
+                l.format = f;
+                if f == LinkFormat::Template && l.template.is_none() {
+                    l.template = Some(STARTING_TEMPLATE.to_owned());
+                }
+            })
+            .err();
+    }
+    if link.format == LinkFormat::Template {
+        template(ui, doc, error, t);
     }
     // The choice shows where the kind offers more than its native unit.
     if outputs.len() > 1 {
@@ -435,6 +448,49 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
     egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, doc, error, t));
     if let Some(e) = error {
         widgets::not_applied(ui, e, t);
+    }
+}
+
+/// The template a board's frame starts from: six 16-bit legs between two 0xFF bytes and a
+/// line end.
+const STARTING_TEMPLATE: &str =
+    "<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>";
+
+/// The output template, edited in place, and a live preview: the bytes it sends at the
+/// home pose, or where it is wrong.
+fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerError>, t: Lang) {
+    let mut text = doc.scenario().link.template.clone().unwrap_or_default();
+    ui.label(t.tr("link.template_text"));
+    let edited = ui
+        .add(
+            egui::TextEdit::singleline(&mut text)
+                .font(egui::TextStyle::Monospace)
+                .desired_width(f32::INFINITY),
+        )
+        .on_hover_text(t.tr("link.template_tip"))
+        .changed();
+    if edited {
+        *error = doc.edit_link(|l| l.template = Some(text.clone())).err();
+    }
+    let scenario = doc.scenario();
+    let g = &scenario.geometry;
+    let home = g.actuator_values_at(&g.home_pose());
+    match (Template::parse(&text), home) {
+        (Err(e), _) => {
+            ui.label(RichText::new(e.to_string()).color(widgets::ERROR));
+        }
+        (Ok(template), Ok(values)) => {
+            let mut bytes = Vec::new();
+            template.encode(&values, &[actuator_range(scenario); 6], &mut bytes);
+            let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+            let preview = t.fmt(
+                "link.template_preview",
+                &[("bytes", &hex.join(" ")), ("count", &bytes.len())],
+            );
+            ui.label(RichText::new(preview).monospace());
+        }
+        // A home pose out of reach is said by the panels that show the pose.
+        (Ok(_), Err(_)) => {}
     }
 }
 

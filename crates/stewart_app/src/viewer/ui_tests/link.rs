@@ -7,6 +7,7 @@ use crate::viewer::error::ViewerError;
 use crate::viewer::state::ViewerState;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable};
+use stewart_kinematics::model::link_settings::LinkFormat;
 use stewart_link::safety::LinkState;
 
 use super::tall_harness;
@@ -265,6 +266,62 @@ fn the_link_panels_choices_read_as_words() {
     for raw in ["file", "binary", "native"] {
         assert!(!shown(raw), "`{raw}` shown");
     }
+}
+
+#[test]
+fn an_output_template_is_chosen_edited_and_previewed_as_bytes() {
+    let mut state = ViewerState::new(
+        stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    state.look.expand_panels = true;
+    // Tall enough for the whole side panel: the combo's list opens on screen.
+    let mut h = super::harness_with(state, 7000.0);
+    h.get_by_role_and_label(egui::accesskit::Role::ComboBox, "Format")
+        .click();
+    h.run();
+    h.get_by_label("Output template (a board's own bytes)")
+        .click();
+    h.run();
+    let link = h.state().scenario().link.clone();
+    assert_eq!(link.format, LinkFormat::Template);
+    let starting = "<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>";
+    assert_eq!(link.template.as_deref(), Some(starting));
+    // The preview: the bytes at home, computed here from the paired preset's home legs
+    // and stroke (0.55 to 1.3 m) as the template says.
+    let g = &h.state().scenario().geometry;
+    let home = g.leg_lengths(&g.home_pose());
+    let mut expected = String::from("At home: FF FF");
+    for leg in home {
+        let n = ((leg - 0.55) / (1.3 - 0.55) * 65535.0).round() as u32;
+        expected.push_str(&format!(" {:02X} {:02X}", n >> 8, n & 0xff));
+    }
+    expected.push_str(" 0A 0D (16 bytes)");
+    assert!(h.query_by_label(&expected).is_some(), "no `{expected}`");
+    super::look(&mut h, "link-template.png");
+    // Typed into: a fault is said at its column, and the link keeps the text typed.
+    let field = || {
+        egui_kittest::kittest::By::new()
+            .role(egui::accesskit::Role::TextInput)
+            .value(starting)
+    };
+    h.get(field()).focus();
+    h.run();
+    h.get(field()).type_text("{a9:u8}");
+    h.run();
+    let typed = h
+        .state()
+        .scenario()
+        .link
+        .template
+        .clone()
+        .unwrap_or_default();
+    let column = typed.find("{a9:u8}").map(|i| i + 1);
+    assert!(column.is_some(), "{typed}");
+    let said = format!(
+        "template column {}: `a9` names no actuator",
+        column.unwrap_or_default()
+    );
+    assert!(h.query_by_label_contains(&said).is_some(), "no `{said}`");
 }
 
 /// A `[link]` edit goes through the same path as every other: refused when unsound,
