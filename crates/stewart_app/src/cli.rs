@@ -153,10 +153,16 @@ pub(crate) struct DeviceSimArgs {
     #[arg(long, allow_hyphen_values = true, value_name = "N", default_value = "0", value_parser = parse_dead_band)]
     pub(crate) dead_band: f64,
     /// The wire format to expect: binary frames, the text lines of `link --format text`,
-    /// or an output template's bytes (`template:<255><255>{a1:u16be}…`, as `link` was
-    /// given it; recorded with unit 3: the template's numbers, 0 to the type's largest).
+    /// an output template's bytes (`template:<255><255>{a1:u16be}…`, as `link` was given
+    /// it; recorded with unit 3: the template's numbers, 0 to the type's largest), or one
+    /// board of `smc3` (unit 4: its numbers, 0–1023) or `odrive` (unit 5: millionths of a
+    /// turn) — which one, `--board`.
     #[arg(long, value_parser = parse_wire_format, default_value = "binary", value_name = "FORMAT")]
     pub(crate) format: WireFormat,
+    /// With `--format smc3` or `odrive`: which board this is (1 to 3; SMC3's second board
+    /// carries actuators 4–6, ODrive's second 3–4 and third 5–6).
+    #[arg(long, value_parser = clap::value_parser!(u8).range(1..=3), default_value = "1")]
+    pub(crate) board: u8,
     /// The unit this controller's text lines are in (the text form does not say).
     #[arg(long, value_enum, default_value_t = WireUnit::Micrometre)]
     pub(crate) text_unit: WireUnit,
@@ -229,6 +235,18 @@ pub(crate) struct LinkArgs {
     /// The UDP peer, HOST:PORT.
     #[arg(long, value_name = "HOST:PORT")]
     pub(crate) address: Option<String>,
+    /// The second board's serial port (`--format smc3`: actuators 4–6; `odrive`: 3–4).
+    #[arg(long, value_name = "PORT")]
+    pub(crate) port2: Option<String>,
+    /// The third board's serial port (`--format odrive`: actuators 5–6).
+    #[arg(long, value_name = "PORT")]
+    pub(crate) port3: Option<String>,
+    /// The second board's UDP peer, HOST:PORT (board protocols over UDP).
+    #[arg(long, value_name = "HOST:PORT")]
+    pub(crate) address2: Option<String>,
+    /// The third board's UDP peer, HOST:PORT.
+    #[arg(long, value_name = "HOST:PORT")]
+    pub(crate) address3: Option<String>,
     /// Record the dry run here instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
@@ -245,8 +263,10 @@ pub(crate) struct LinkArgs {
     #[arg(long)]
     pub(crate) dry_run: bool,
     /// binary (34-byte frames with a CRC, docs/PROTOCOL.md), text (`S,seq,v1,…,v6`
-    /// lines), or an output template for a hobby board, as FlyPT Mover and SimTools write
-    /// them: `template:<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>`
+    /// lines), smc3 (two SMC3 boards: `[A hi lo]` frames, 0–1023, on --port and --port2),
+    /// odrive (three two-axis ODrives: `p axis turns turns/s 0` lines, on --port, --port2,
+    /// --port3; `link.turns_per_unit`, `link.turns_offset`), or an output template for a
+    /// hobby board, as FlyPT Mover and SimTools write them: `template:<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>`
     /// (`<N>` a byte; `{aK:T}` actuator K scaled from its range to T = u8, u10be, u12be,
     /// u16be, u16le, u24be, u32be, dec or dec3; other printable characters as they are).
     #[arg(long, value_parser = parse_wire_format, value_name = "FORMAT")]
@@ -281,6 +301,10 @@ pub(crate) enum WireFormat {
     Text,
     /// An output template's bytes.
     Template(Template),
+    /// SMC3 boards' frames.
+    Smc3,
+    /// ODrive boards' lines.
+    Odrive,
 }
 
 impl WireFormat {
@@ -290,6 +314,8 @@ impl WireFormat {
             WireFormat::Binary => LinkFormat::Binary.word().to_owned(),
             WireFormat::Text => LinkFormat::Text.word().to_owned(),
             WireFormat::Template(t) => format!("template:{}", t.text()),
+            WireFormat::Smc3 => LinkFormat::Smc3.word().to_owned(),
+            WireFormat::Odrive => LinkFormat::Odrive.word().to_owned(),
         }
     }
 }
@@ -304,6 +330,8 @@ pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormat, String> {
     match parse_word::<LinkFormat>(text)? {
         LinkFormat::Binary => Ok(WireFormat::Binary),
         LinkFormat::Text => Ok(WireFormat::Text),
+        LinkFormat::Smc3 => Ok(WireFormat::Smc3),
+        LinkFormat::Odrive => Ok(WireFormat::Odrive),
         LinkFormat::Template => {
             Err("a template is written out: template:<255><255>{a1:u16be}…{a6:u16be}".to_owned())
         }

@@ -1,5 +1,7 @@
 //! The set-point link to a real platform: what goes on the wire.
 //!
+//! - [`boards`]: hobby controller boards on several serial ports (SMC3, ODrive): their
+//!   set-points and arming commands, written and read back;
 //! - [`capture`]: the UDP datagrams of a packet capture (pcap, pcapng), for replaying a
 //!   game's telemetry;
 //! - [`channels`]: which actuator goes out on which channel, scaled, mirrored, as µm,
@@ -28,6 +30,7 @@
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.
 
+pub mod boards;
 pub mod capture;
 pub mod channels;
 pub mod crc;

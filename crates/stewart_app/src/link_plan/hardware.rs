@@ -5,15 +5,17 @@
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::Scenario;
 use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::link_settings::Word as _;
 use stewart_kinematics::model::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
+use stewart_link::boards::{Board, Turns};
 use stewart_link::channels::{Channel, ChannelMap, Output};
 use stewart_link::frame::FRAME_LEN;
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
 use stewart_link::sender::Format;
 use stewart_link::template::Template;
-use stewart_link::transport::{Serial, Transport, Udp, max_rate_hz};
+use stewart_link::transport::{Ports, Serial, Transport, Udp, max_rate_hz};
 
 /// How long a serial write may block before the link counts the device as gone.
 const SERIAL_WRITE_TIMEOUT: std::time::Duration = std::time::Duration::from_millis(200);
@@ -60,6 +62,11 @@ pub(crate) fn format(link: &LinkSettings) -> Result<Format> {
             let text = link.template.as_deref().unwrap_or_default();
             Format::Template(Template::parse(text).map_err(|e| anyhow!("link.template: {e}"))?)
         }
+        LinkFormat::Smc3 => Format::Board(Board::Smc3),
+        LinkFormat::Odrive => Format::Board(Board::ODrive(Turns {
+            per_unit: link.turns_per_unit,
+            offset: link.turns_offset,
+        })),
     })
 }
 
@@ -70,6 +77,7 @@ pub(crate) fn frame_bytes(format: &Format) -> usize {
         // The longest text line: `S,65535,` and six signed 11-character values.
         Format::Text => 8 + 6 * 12,
         Format::Template(t) => t.max_len(),
+        Format::Board(b) => b.max_frame_bytes(),
     }
 }
 
@@ -110,12 +118,50 @@ pub(crate) fn actuator_range(scenario: &Scenario) -> (f64, f64) {
     (lo.unwrap_or(widest.0), hi.unwrap_or(widest.1))
 }
 
-/// Open the serial port or UDP peer `[link]` names (a `file` transport is the caller's:
-/// the command line records into a file, the viewer into its panel).
+/// Open the serial port or UDP peer `[link]` names — a board protocol's ports, one a
+/// board — (a `file` transport is the caller's: the command line records into a file, the
+/// viewer into its panel).
 pub(crate) fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
+    let boards = match format(link)? {
+        Format::Board(board) => board.ports(),
+        _ => 1,
+    };
+    if boards == 1 {
+        return open_one(link, link.port.as_deref(), link.address.as_deref());
+    }
+    let ports = [&link.port, &link.port2, &link.port3];
+    let addresses = [&link.address, &link.address2, &link.address3];
+    let mut opened: Vec<Box<dyn Transport>> = Vec::new();
+    for k in 0..boards {
+        let named = match link.transport {
+            LinkTransport::Serial => ports[k].is_some(),
+            _ => addresses[k].is_some(),
+        };
+        if k > 0 && !named {
+            let n = k + 1;
+            bail!(
+                "`link.format = {}` drives {boards} boards: give board {n}'s port too (--port{n} or `link.port{n}`; over UDP --address{n})",
+                link.format.word()
+            );
+        }
+        opened.push(open_one(
+            link,
+            ports[k].as_deref(),
+            addresses[k].as_deref(),
+        )?);
+    }
+    Ok(Box::new(Ports(opened)))
+}
+
+/// Open one serial port or UDP peer.
+fn open_one(
+    link: &LinkSettings,
+    port: Option<&str>,
+    address: Option<&str>,
+) -> Result<Box<dyn Transport>> {
     match link.transport {
         LinkTransport::Udp => {
-            let address = link.address.as_deref().ok_or_else(|| {
+            let address = address.ok_or_else(|| {
                 anyhow!(
                     "the UDP transport needs an address (`--address HOST:PORT` or `link.address`)"
                 )
@@ -123,9 +169,7 @@ pub(crate) fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
             Ok(Box::new(Udp::connect(address)?))
         }
         LinkTransport::Serial => {
-            let port = link
-                .port
-                .as_deref()
+            let port = port
                 .ok_or_else(|| anyhow!("the serial transport needs a port (`--port /dev/ttyUSB0` or `link.port`; `stewart link --list-ports` lists them)"))?;
             let bytes = frame_bytes(&format(link)?);
             let most = max_rate_hz(link.baud, bytes);

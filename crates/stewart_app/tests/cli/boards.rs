@@ -221,3 +221,236 @@ fn a_bad_template_is_one_error_naming_its_column() {
         stderr(&o)
     );
 }
+
+/// The lines of a board protocol's dry run for `port` (1-based): (time, line).
+fn dry_run_lines(format: &str, port: usize, extra: &[&str]) -> Vec<(f64, String)> {
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "paired",
+                "--dry-run",
+                "--format",
+                format,
+            ][..],
+            extra,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    stdout(&o)
+        .lines()
+        .filter_map(|l| {
+            let mut parts = l.splitn(3, '\t');
+            let (t, p, rest) = (parts.next()?, parts.next()?, parts.next()?);
+            (p == format!("port {port}")).then(|| (t.parse().unwrap_or(f64::NAN), rest.to_owned()))
+        })
+        .collect()
+}
+
+#[test]
+fn smc3_boards_get_the_legs_scaled_to_1023_and_are_enabled_once() {
+    // Board 1 carries legs 1–3, board 2 legs 4–6: five-byte frames [A hi lo][B hi lo]
+    // [C hi lo] each tick, [ena] first.
+    let rate = 200.0;
+    let timing = ["--rate", "200"];
+    let solved = stewart(&["solve", "--preset", "paired"]);
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let first = header.iter().position(|c| c == "L1").unwrap_or(7);
+    let step = rows[1][0] - rows[0][0];
+    for port in [1, 2] {
+        let lines = dry_run_lines("smc3", port, &timing);
+        let bytes = |hex: &str| -> Vec<u8> {
+            hex.split_whitespace()
+                .map(|h| u8::from_str_radix(h, 16).unwrap_or_else(|e| panic!("{e}")))
+                .collect()
+        };
+        assert!(bytes(&lines[0].1).starts_with(b"[ena]"), "{:?}", lines[0]);
+        let enables = lines.iter().filter(|(_, l)| bytes(l).starts_with(b"[ena]"));
+        assert_eq!(enables.count(), 1, "enabled once");
+        let (mut compared, mut worst) = (0, 0.0f64);
+        for (t, hex) in &lines {
+            let b = bytes(hex);
+            let frames = &b[b.len() - 15..];
+            let row = (t / step).round() as usize;
+            if *t < 3.0 || row + 1 >= rows.len() || (t - rows[row][0]).abs() > 1e-9 {
+                continue;
+            }
+            for (c, frame) in frames.chunks(5).enumerate() {
+                assert_eq!([frame[0], frame[1], frame[4]], [b'[', b'A' + c as u8, b']']);
+                let n = u16::from_be_bytes([frame[2], frame[3]]);
+                assert!(n <= 1023);
+                let leg = rows[row][first + 3 * (port - 1) + c];
+                let exact = (leg - STROKE.0) / (STROKE.1 - STROKE.0) * 1023.0;
+                worst = worst.max((f64::from(n) - exact).abs());
+            }
+            compared += 1;
+        }
+        assert!(compared > 100, "{compared}");
+        assert!(worst <= 0.5 + 1e-3, "board {port}: {worst}");
+        let _ = rate;
+    }
+}
+
+#[test]
+fn odrive_boards_get_turns_and_are_put_in_closed_loop_then_idle() {
+    // 20 turns per metre, −20 turns at 1 m: leg L is 20·L − 20 turns.
+    let set = [
+        "--set",
+        "link.turns_per_unit.1=20",
+        "--set",
+        "link.turns_offset.1=-20",
+    ];
+    let lines = dry_run_lines("odrive", 1, &[&["--rate", "100"][..], &set].concat());
+    assert_eq!(lines[0].1, "w axis0.requested_state 8");
+    assert_eq!(lines[1].1, "w axis1.requested_state 8");
+    let last = &lines[lines.len() - 2..];
+    assert_eq!(last[0].1, "w axis0.requested_state 1", "idle at the end");
+    let solved = stewart(&["solve", "--preset", "paired"]);
+    let (header, rows) = parse_csv(&stdout(&solved));
+    let l1 = header.iter().position(|c| c == "L1").unwrap_or(7);
+    let step = rows[1][0] - rows[0][0];
+    let mut compared = 0;
+    for (t, line) in &lines {
+        let words: Vec<&str> = line.split(' ').collect();
+        if words[..2] != ["p", "0"] {
+            continue;
+        }
+        let row = (t / step).round() as usize;
+        if *t < 3.0 || row + 1 >= rows.len() || (t - rows[row][0]).abs() > 1e-9 {
+            continue;
+        }
+        let turns: f64 = words[2].parse().unwrap_or(f64::NAN);
+        let want = 20.0 * rows[row][l1] - 20.0;
+        // Six decimals on the wire.
+        assert!((turns - want).abs() <= 5e-7 + 1e-9, "{line}: {want}");
+        assert_eq!(words[4], "0", "no torque feed-forward");
+        compared += 1;
+    }
+    assert!(compared > 100, "{compared}");
+}
+
+#[test]
+fn device_sim_reads_each_smc3_board_over_serial_and_each_odrive_board_over_udp() {
+    // SMC3: two pty pairs, a device-sim on each, the link on both.
+    let (one, two) = (PtyPair::new(), PtyPair::new());
+    let sims: Vec<_> = [(&one, "1"), (&two, "2")]
+        .iter()
+        .map(|(pair, board)| {
+            device_sim_on(
+                &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
+                &["--format", "smc3", "--board", board],
+            )
+        })
+        .collect();
+    let timing = ["--duration", "1", "--rate", "100", "--ramp", "0.2"];
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "paired",
+                "--transport",
+                "serial",
+                "--format",
+                "smc3",
+            ][..],
+            &[
+                "--port",
+                PtyPair::path(&one.a),
+                "--port2",
+                PtyPair::path(&two.a),
+            ],
+            &["--baud", "1000000"],
+            &timing,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent = frames_sent(&o);
+    for (board, sim) in sims.into_iter().enumerate() {
+        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+        assert!(
+            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
+            "{log}"
+        );
+        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+        // Unit 4; armed from the first frame ([ena] came first); this board's columns
+        // within 0–1023, the other board's empty.
+        for r in &rows {
+            assert_eq!((r[2], r[5]), (1.0, 4.0));
+            let (mine, others) = if board == 0 {
+                (&r[6..9], &r[9..12])
+            } else {
+                (&r[9..12], &r[6..9])
+            };
+            assert!(mine.iter().all(|v| (0.0..=1023.0).contains(v)), "{r:?}");
+            assert!(others.iter().all(|&v| v == 0.0), "{r:?}");
+        }
+    }
+    // ODrive: three boards over UDP, each read back.
+    let addresses = [free_port(), free_port(), free_port()];
+    let sims: Vec<_> = (addresses.iter().zip(["1", "2", "3"]))
+        .map(|(address, board)| device_sim(address, &["--format", "odrive", "--board", board]))
+        .collect();
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "paired",
+                "--transport",
+                "udp",
+                "--format",
+                "odrive",
+            ][..],
+            &["--address", &addresses[0], "--address2", &addresses[1]],
+            &["--address3", &addresses[2]],
+            &timing,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent = frames_sent(&o);
+    for (board, sim) in sims.into_iter().enumerate() {
+        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+        assert!(
+            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
+            "{log}"
+        );
+        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+        // Unit 5, millionths of a turn: with one turn per metre, the legs in micrometres,
+        // in this board's two columns.
+        let mine = 6 + 2 * board..8 + 2 * board;
+        for r in &rows {
+            assert_eq!(r[5], 5.0);
+            assert!(
+                r[mine.clone()]
+                    .iter()
+                    .all(|v| (550_000.0..=1_300_000.0).contains(v)),
+                "{r:?}"
+            );
+        }
+    }
+    // A missing board's port is one clear error before anything is sent.
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--format",
+        "odrive",
+        "--address",
+        &addresses[0],
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("drives 3 boards: give board 2's port too"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -50,6 +50,12 @@ pub enum LinkFormat {
     /// The bytes of `link.template` (`<255><255>{a1:u16be}…`: FlyPT Mover's and SimTools'
     /// output strings).
     Template,
+    /// SMC3 (the Arduino DC-motor sketch): two boards of three motors, on `port` and
+    /// `port2` (or `address`, `address2`).
+    Smc3,
+    /// ODrive's ASCII protocol: three two-axis boards on `port`, `port2`, `port3` (or the
+    /// addresses), positions in turns (`turns_per_unit`, `turns_offset`).
+    Odrive,
 }
 
 /// The unit of the values on the wire.
@@ -88,6 +94,18 @@ pub struct LinkSettings {
     /// The UDP peer, `host:port`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub address: Option<String>,
+    /// The second board's serial port (SMC3, ODrive).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub port2: Option<String>,
+    /// The third board's serial port (ODrive).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub port3: Option<String>,
+    /// The second board's UDP peer.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub address2: Option<String>,
+    /// The third board's UDP peer.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub address3: Option<String>,
     /// Set-points per second.
     pub rate_hz: f64,
     /// Frames, lines, or a template's bytes.
@@ -117,6 +135,12 @@ pub struct LinkSettings {
     /// Per channel: mirror the value.
     #[serde(deserialize_with = "crate::io::text::exactly")]
     pub reversed: [bool; 6],
+    /// Per actuator, for ODrive: motor turns per metre of leg (or per degree of servo).
+    #[serde(deserialize_with = "crate::io::text::exactly")]
+    pub turns_per_unit: [f64; 6],
+    /// Per actuator, for ODrive: motor turns where the value is zero.
+    #[serde(deserialize_with = "crate::io::text::exactly")]
+    pub turns_offset: [f64; 6],
 }
 
 impl Default for LinkSettings {
@@ -126,6 +150,10 @@ impl Default for LinkSettings {
             port: None,
             baud: 115_200,
             address: None,
+            port2: None,
+            port3: None,
+            address2: None,
+            address3: None,
             rate_hz: 100.0,
             format: LinkFormat::Binary,
             template: None,
@@ -138,6 +166,8 @@ impl Default for LinkSettings {
             scale: [1.0; 6],
             offset: [0.0; 6],
             reversed: [false; 6],
+            turns_per_unit: [1.0; 6],
+            turns_offset: [0.0; 6],
         }
     }
 }
@@ -187,6 +217,10 @@ impl LinkSettings {
         for (key, text) in [
             ("port", &self.port),
             ("address", &self.address),
+            ("port2", &self.port2),
+            ("port3", &self.port3),
+            ("address2", &self.address2),
+            ("address3", &self.address3),
             ("template", &self.template),
         ] {
             if text.as_ref().is_some_and(|t| t.trim().is_empty()) {
@@ -252,6 +286,20 @@ impl LinkSettings {
                     format!("must be a number of size at most 1e6, got {o}"),
                 );
             }
+            let per = self.turns_per_unit[k];
+            if !(per.is_finite() && per != 0.0 && per.abs() <= 1e6) {
+                return bad(
+                    format!("link.turns_per_unit[{k}]"),
+                    format!("must be a non-zero number of size at most 1e6, got {per}"),
+                );
+            }
+            let at_zero = self.turns_offset[k];
+            if !(at_zero.is_finite() && at_zero.abs() <= 1e6) {
+                return bad(
+                    format!("link.turns_offset[{k}]"),
+                    format!("must be a number of size at most 1e6, got {at_zero}"),
+                );
+            }
         }
         None
     }
@@ -291,13 +339,16 @@ impl LinkSettings {
             ("transport", None) => {
                 edited.transport = choice(value).map_err(refuse)?;
             }
-            ("port" | "address", None) => {
+            ("port" | "address" | "port2" | "port3" | "address2" | "address3", None) => {
                 let text = (!value.eq_ignore_ascii_case("off")).then(|| value.to_owned());
-                if name == "port" {
-                    edited.port = text;
-                } else {
-                    edited.address = text;
-                }
+                *match name {
+                    "port" => &mut edited.port,
+                    "port2" => &mut edited.port2,
+                    "port3" => &mut edited.port3,
+                    "address" => &mut edited.address,
+                    "address2" => &mut edited.address2,
+                    _ => &mut edited.address3,
+                } = text;
             }
             ("baud", None) => {
                 edited.baud = value.parse::<u32>().map_err(|_| {
@@ -331,6 +382,8 @@ impl LinkSettings {
                     .map_err(|_| refuse(format!("`{value}` is not an actuator number 1 to 6")))?;
             }
             ("scale", Some(k)) => edited.scale[k] = number()?,
+            ("turns_per_unit", Some(k)) => edited.turns_per_unit[k] = number()?,
+            ("turns_offset", Some(k)) => edited.turns_offset[k] = number()?,
             ("offset", Some(k)) => edited.offset[k] = number()?,
             ("reversed", Some(k)) => {
                 edited.reversed[k] = value
@@ -363,6 +416,22 @@ impl LinkSettings {
                 "address".to_owned(),
                 self.address.clone().unwrap_or_else(|| "off".into()),
             ),
+            (
+                "port2".to_owned(),
+                self.port2.clone().unwrap_or_else(|| "off".into()),
+            ),
+            (
+                "port3".to_owned(),
+                self.port3.clone().unwrap_or_else(|| "off".into()),
+            ),
+            (
+                "address2".to_owned(),
+                self.address2.clone().unwrap_or_else(|| "off".into()),
+            ),
+            (
+                "address3".to_owned(),
+                self.address3.clone().unwrap_or_else(|| "off".into()),
+            ),
             ("rate_hz".to_owned(), self.rate_hz.to_string()),
             ("format".to_owned(), self.format.word().to_owned()),
             (
@@ -383,6 +452,14 @@ impl LinkSettings {
             rows.push((format!("scale.{}", k + 1), self.scale[k].to_string()));
             rows.push((format!("offset.{}", k + 1), self.offset[k].to_string()));
             rows.push((format!("reversed.{}", k + 1), self.reversed[k].to_string()));
+            rows.push((
+                format!("turns_per_unit.{}", k + 1),
+                self.turns_per_unit[k].to_string(),
+            ));
+            rows.push((
+                format!("turns_offset.{}", k + 1),
+                self.turns_offset[k].to_string(),
+            ));
         }
         rows.into_iter()
             .map(|(k, v)| (format!("link.{k}"), v))
@@ -434,6 +511,8 @@ impl Word for LinkFormat {
         (LinkFormat::Binary, "binary"),
         (LinkFormat::Text, "text"),
         (LinkFormat::Template, "template"),
+        (LinkFormat::Smc3, "smc3"),
+        (LinkFormat::Odrive, "odrive"),
     ];
 }
 

@@ -10,6 +10,7 @@ use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
+use crate::boards::Board;
 use crate::channels::ChannelMap;
 use crate::frame::{Decoder, Flags, Frame, FrameKind};
 use crate::safety::{LinkState, Supervisor};
@@ -20,7 +21,7 @@ use crate::text;
 use crate::transport::Transport;
 
 /// Binary frames, text lines, or a board's own bytes.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Format {
     /// The 34-byte frame.
     Binary,
@@ -30,6 +31,10 @@ pub enum Format {
     /// its range, sent while the supervisor drives the platform (armed, arming, or on its
     /// way home); nothing while disarmed, as the text line.
     Template(Template),
+    /// A board protocol on several ports ([`crate::boards`]): set-points while the
+    /// supervisor drives the platform, the board's arming commands when that begins and
+    /// its disarming ones when it ends.
+    Board(Board),
 }
 
 /// What the sender is asked to do.
@@ -388,6 +393,10 @@ pub struct Stream {
     values: [f64; 6],
     /// A template's frame, written here each tick (no allocation once it has its size).
     bytes: Vec<u8>,
+    /// A board protocol's bytes for each port this tick, and whether the boards were last
+    /// told the platform is driven.
+    board_bytes: Vec<Vec<u8>>,
+    board_driven: bool,
 }
 
 impl Stream {
@@ -409,6 +418,8 @@ impl Stream {
             telemetry,
             values,
             bytes: Vec::with_capacity(64),
+            board_bytes: Vec::new(),
+            board_driven: false,
         }
     }
 
@@ -459,6 +470,27 @@ impl Stream {
                 template.encode(&tick.values, ranges, &mut self.bytes);
                 self.transport.send(t, &self.bytes)
             }),
+            Format::Board(board) => {
+                let driven = tick.armed || tick.home;
+                self.board_bytes.resize(board.ports(), Vec::new());
+                self.board_bytes.iter_mut().for_each(Vec::clear);
+                if driven != self.board_driven {
+                    board.arming(driven, &mut self.board_bytes);
+                    self.board_driven = driven;
+                }
+                if driven {
+                    let sv = &self.config.supervisor;
+                    let (ranges, velocities) = (&sv.limits().range, &sv.motion().velocity);
+                    board.set_point(&tick.values, velocities, ranges, &mut self.board_bytes);
+                }
+                let mut sent = Ok(());
+                for (port, bytes) in self.board_bytes.iter().enumerate() {
+                    if !bytes.is_empty() && sent.is_ok() {
+                        sent = self.transport.send_on(port, t, bytes);
+                    }
+                }
+                driven.then_some(sent)
+            }
         };
         let delivered = match sent {
             Some(Err(e)) => {

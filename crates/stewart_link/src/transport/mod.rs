@@ -68,6 +68,50 @@ pub trait Transport: Send {
     fn receive(&mut self, _buf: &mut [u8]) -> Result<usize, TransportError> {
         Ok(0)
     }
+
+    /// Send to port `port` of a transport with several (a board protocol's boards, each on
+    /// its own serial port); a transport of one port takes port 0 only.
+    fn send_on(&mut self, port: usize, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        if port == 0 {
+            self.send(t, bytes)
+        } else {
+            Err(TransportError::Setting(format!(
+                "{} is one port; the board protocol sends to {} (give --port2, --port3)",
+                self.describe(),
+                port + 1
+            )))
+        }
+    }
+}
+
+/// Several transports, one a board: port k is the k-th.
+pub struct Ports(pub Vec<Box<dyn Transport>>);
+
+impl Transport for Ports {
+    fn send(&mut self, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        self.send_on(0, t, bytes)
+    }
+
+    fn send_on(&mut self, port: usize, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        let count = self.0.len();
+        let transport = self
+            .0
+            .get_mut(port)
+            .ok_or_else(|| TransportError::Setting(format!("port {} of {count}", port + 1)))?;
+        transport.send(t, bytes)
+    }
+
+    fn describe(&self) -> String {
+        let each: Vec<String> = self.0.iter().map(|p| p.describe()).collect();
+        each.join(" and ")
+    }
+
+    fn receive(&mut self, buf: &mut [u8]) -> Result<usize, TransportError> {
+        match self.0.first_mut() {
+            Some(first) => first.receive(buf),
+            None => Ok(0),
+        }
+    }
 }
 
 /// UDP datagrams to one peer, one frame per datagram.
@@ -199,6 +243,38 @@ impl<W: Write + Send> Transport for Record<W> {
 
     fn describe(&self) -> String {
         format!("dry run into {}", self.name)
+    }
+
+    /// A board's port: its lines (or bytes in hex) after the time and `port k`; raw, the
+    /// bytes as they are.
+    fn send_on(&mut self, port: usize, t: f64, bytes: &[u8]) -> Result<(), TransportError> {
+        if self.raw {
+            return self.send(t, bytes);
+        }
+        let text = String::from_utf8_lossy(bytes);
+        let lines: Vec<String> = if bytes.is_ascii() && bytes.ends_with(b"\n") {
+            text.lines().map(str::to_owned).collect()
+        } else {
+            vec![
+                bytes
+                    .iter()
+                    .map(|b| format!("{b:02X}"))
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            ]
+        };
+        for line in lines {
+            writeln!(self.out, "{t:.6}\tport {}\t{line}", port + 1).map_err(|cause| {
+                TransportError::Io {
+                    what: format!("writing the dry run to {}", self.name),
+                    cause,
+                }
+            })?;
+        }
+        self.out.flush().map_err(|cause| TransportError::Io {
+            what: format!("writing the dry run to {}", self.name),
+            cause,
+        })
     }
 }
 

@@ -17,6 +17,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
+use stewart_link::boards::{Board, BoardReader, BoardRecord, Turns};
 use stewart_link::template::TemplateDecoder;
 use stewart_link::text::LineDecoder;
 use stewart_link::transport::Transport as _;
@@ -92,6 +93,7 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         }
         let decoder = &mut stream;
         let skipped_before = decoder.skipped();
+        let commands_before = decoder.commands();
         let mut any = false;
         let mut damaged = false;
         let t = (now - t0).as_secs_f64();
@@ -104,8 +106,11 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                     record(&mut tally, t, &frame, args);
                     let armed = frame.flags.armed && !frame.flags.estop;
                     let measured = actuators.frame(t, &frame.values, armed);
-                    // A template's board answers nothing.
-                    let template = matches!(args.format, WireFormat::Template(_));
+                    // A board of a template or a board protocol answers nothing.
+                    let template = matches!(
+                        args.format,
+                        WireFormat::Template(_) | WireFormat::Smc3 | WireFormat::Odrive
+                    );
                     if args.telemetry && !template {
                         replies.push(Frame {
                             kind: FrameKind::Telemetry,
@@ -121,6 +126,7 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
                 None => {}
             }
         }
+        any |= decoder.commands() > commands_before;
         // Template bytes that matched no frame: a damaged frame (once a read).
         if decoder.skipped() > skipped_before {
             tally.bad += 1;
@@ -159,6 +165,9 @@ enum WireDecoder {
     Text(LineDecoder),
     /// A template's frames, numbered here (the bytes carry no sequence).
     Template(TemplateDecoder, u16),
+    /// One board of a board protocol (0-based), its ticks numbered here, whether it was
+    /// last told the motors are enabled, and how many such commands came.
+    Board(BoardReader, usize, u16, bool, u64),
 }
 
 impl WireDecoder {
@@ -171,6 +180,27 @@ impl WireDecoder {
                 WireUnit::Microsecond => Unit::PulseMicrosecond,
             })),
             WireFormat::Template(t) => Self::Template(TemplateDecoder::new(t.clone()), 0),
+            WireFormat::Smc3 => Self::Board(
+                BoardReader::new(Board::Smc3),
+                usize::from(args.board - 1),
+                0,
+                false,
+                0,
+            ),
+            WireFormat::Odrive => {
+                // Reading needs no turns: the lines carry them.
+                let turns = Turns {
+                    per_unit: [1.0; 6],
+                    offset: [0.0; 6],
+                };
+                Self::Board(
+                    BoardReader::new(Board::ODrive(turns)),
+                    usize::from(args.board - 1),
+                    0,
+                    false,
+                    0,
+                )
+            }
         }
     }
 
@@ -198,6 +228,54 @@ impl WireDecoder {
                 *sequence = sequence.wrapping_add(1);
                 Some(Ok(frame))
             }
+            Self::Board(reader, board, sequence, armed, commands) => {
+                reader.push(&[byte]);
+                let values = loop {
+                    match reader.next_record()? {
+                        BoardRecord::Armed(on) => {
+                            *armed = on;
+                            *commands += 1;
+                        }
+                        BoardRecord::Unknown => return Some(Err(())),
+                        BoardRecord::SetPoint(values) => break values,
+                    }
+                };
+                // SMC3's numbers as they are, ODrive's turns in millionths; in the columns
+                // of the actuators this board drives.
+                let first = *board * values.len();
+                let mut wire = [0i32; 6];
+                for (k, v) in values.iter().enumerate() {
+                    let n = if values.len() == 3 {
+                        *v
+                    } else {
+                        (v * 1e6).round()
+                    };
+                    if let Some(slot) = wire.get_mut(first + k) {
+                        *slot = n.clamp(f64::from(i32::MIN), f64::from(i32::MAX)) as i32;
+                    }
+                }
+                let frame = Frame {
+                    kind: FrameKind::SetPoint,
+                    sequence: *sequence,
+                    flags: Flags {
+                        armed: *armed,
+                        estop: false,
+                        home: false,
+                    },
+                    unit: Unit::Micrometre,
+                    values: wire,
+                };
+                *sequence = sequence.wrapping_add(1);
+                Some(Ok(frame))
+            }
+        }
+    }
+
+    /// Arming and disarming commands a board got (a datagram of them alone is sound).
+    fn commands(&self) -> u64 {
+        match self {
+            Self::Board(.., commands) => *commands,
+            _ => 0,
         }
     }
 
@@ -215,6 +293,7 @@ impl WireDecoder {
             Self::Binary(d) => *d = Decoder::new(),
             Self::Text(d) => d.reset(),
             Self::Template(d, _) => d.reset(),
+            Self::Board(reader, ..) => *reader = BoardReader::new(reader.board().clone()),
         }
     }
 
@@ -225,6 +304,7 @@ impl WireDecoder {
             Self::Binary(_) => false,
             Self::Text(d) => d.pending(),
             Self::Template(d, _) => d.pending(),
+            Self::Board(reader, ..) => reader.pending(),
         }
     }
 }
@@ -319,6 +399,8 @@ fn record(tally: &mut Tally, t: f64, f: &Frame, args: &DeviceSimArgs) {
     tally.outside += f.values.iter().filter(|v| outside(v)).count() as u64;
     let unit = match (&args.format, f.unit) {
         (WireFormat::Template(_), _) => 3,
+        (WireFormat::Smc3, _) => 4,
+        (WireFormat::Odrive, _) => 5,
         (_, Unit::Micrometre) => 0,
         (_, Unit::Centidegree) => 1,
         (_, Unit::PulseMicrosecond) => 2,

@@ -414,8 +414,11 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
             })
             .err();
     }
-    if link.format == LinkFormat::Template {
-        template(ui, doc, error, t);
+    match link.format {
+        LinkFormat::Template => template(ui, doc, error, t),
+        LinkFormat::Smc3 => board_ports(ui, doc, error, t, 2),
+        LinkFormat::Odrive => board_ports(ui, doc, error, t, 3),
+        LinkFormat::Binary | LinkFormat::Text => {}
     }
     // The choice shows where the kind offers more than its native unit.
     if outputs.len() > 1 {
@@ -448,6 +451,56 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
     egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, doc, error, t));
     if let Some(e) = error {
         widgets::not_applied(ui, e, t);
+    }
+}
+
+/// The other boards' serial ports (or UDP peers) of a board protocol driving `boards`.
+fn board_ports(
+    ui: &mut egui::Ui,
+    doc: &mut Document,
+    error: &mut Option<ViewerError>,
+    t: Lang,
+    boards: usize,
+) {
+    let link = doc.scenario().link.clone();
+    let serial = match link.transport {
+        LinkTransport::Serial => true,
+        LinkTransport::Udp => false,
+        LinkTransport::File => return,
+    };
+    for n in 2..=boards {
+        let current = match (serial, n) {
+            (true, 2) => &link.port2,
+            (true, _) => &link.port3,
+            (false, 2) => &link.address2,
+            (false, _) => &link.address3,
+        };
+        let mut text = current.clone().unwrap_or_default();
+        ui.horizontal(|ui| {
+            let key = if serial {
+                "link.board_port"
+            } else {
+                "link.board_address"
+            };
+            let label = ui.label(t.fmt(key, &[("n", &n)]));
+            if ui
+                .text_edit_singleline(&mut text)
+                .labelled_by(label.id)
+                .changed()
+            {
+                let value = (!text.trim().is_empty()).then(|| text.trim().to_owned());
+                *error = doc
+                    .edit_link(|l| {
+                        *match (serial, n) {
+                            (true, 2) => &mut l.port2,
+                            (true, _) => &mut l.port3,
+                            (false, 2) => &mut l.address2,
+                            (false, _) => &mut l.address3,
+                        } = value;
+                    })
+                    .err();
+            }
+        });
     }
 }
 

@@ -7,7 +7,7 @@ use crate::viewer::error::ViewerError;
 use crate::viewer::state::ViewerState;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable};
-use stewart_kinematics::model::link_settings::LinkFormat;
+use stewart_kinematics::model::link_settings::{LinkFormat, LinkTransport};
 use stewart_link::safety::LinkState;
 
 use super::tall_harness;
@@ -155,7 +155,7 @@ fn telemetry_shows_the_measured_ghost_and_the_tracking_error_and_a_second_stop_i
     let (address, controller) = lagging_controller(2000);
     let mut h = tall_harness("paired", 2400.0);
     h.state_mut().edit_link(|l| {
-        l.transport = stewart_kinematics::model::link_settings::LinkTransport::Udp;
+        l.transport = LinkTransport::Udp;
         l.address = Some(address.clone());
         l.ramp_s = 0.1;
         l.rate_hz = 200.0;
@@ -322,6 +322,32 @@ fn an_output_template_is_chosen_edited_and_previewed_as_bytes() {
         column.unwrap_or_default()
     );
     assert!(h.query_by_label_contains(&said).is_some(), "no `{said}`");
+}
+
+#[test]
+fn a_board_protocol_asks_for_each_boards_port() {
+    let mut state = ViewerState::new(
+        stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}")),
+    );
+    state.look.expand_panels = true;
+    state.edit_link(|l| l.transport = LinkTransport::Serial);
+    // Tall enough for the whole side panel: the combo's list opens on screen.
+    let mut h = super::harness_with(state, 7000.0);
+    h.get_by_role_and_label(egui::accesskit::Role::ComboBox, "Format")
+        .click();
+    h.run();
+    h.get_by_label("ODrive (three two-axis boards, in turns)")
+        .click();
+    h.run();
+    assert_eq!(h.state().scenario().link.format, LinkFormat::Odrive);
+    assert!(h.query_by_label("Board 2's port").is_some());
+    h.get_by_label("Board 3's port").focus();
+    h.run();
+    h.get_by_label("Board 3's port").type_text("/dev/ttyACM2");
+    h.run();
+    let link = h.state().scenario().link.clone();
+    assert_eq!(link.port3.as_deref(), Some("/dev/ttyACM2"));
+    assert_eq!(link.port2, None);
 }
 
 /// A `[link]` edit goes through the same path as every other: refused when unsound,
