@@ -322,7 +322,8 @@ impl WireFormat {
 
 /// `binary`, `text`, or `template:…` (the template checked, its column named when refused).
 pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormat, String> {
-    if let Some(template) = text.trim().strip_prefix("template:") {
+    // Only the front is trimmed: a template may end in a space.
+    if let Some(template) = text.trim_start().strip_prefix("template:") {
         return Template::parse(template)
             .map(WireFormat::Template)
             .map_err(|e| e.to_string());

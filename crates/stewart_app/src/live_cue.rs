@@ -36,6 +36,9 @@ pub(crate) const MAX_DATAGRAMS_PER_TICK: usize = 64;
 /// The least time a tick may spend reading (the first tick, or very fast ticks).
 pub(crate) const MIN_READ_BUDGET: std::time::Duration = std::time::Duration::from_micros(100);
 
+/// The name counted for datagrams of no format known (the viewer says it in its words).
+pub(crate) const UNKNOWN_FORMAT: &str = "unknown";
+
 /// Seconds of the trace kept for the viewer's live plots.
 pub(crate) const TRACE_S: f64 = 10.0;
 
@@ -113,7 +116,8 @@ pub(crate) enum Step {
     /// A sample without a clock of its own at the same time as the last (X-Plane's read in
     /// one tick): the newest holds, nothing to step.
     Same,
-    /// A sample not later than the last by its own clock: dropped (and counted).
+    /// A sample not later than the last (by its own clock, or arriving before it): dropped
+    /// (and counted).
     Stale,
 }
 
@@ -131,7 +135,7 @@ impl SampleClock {
         let step = match self.last {
             None => Step::First,
             Some(last) if time > last => Step::By(time - last),
-            Some(_) if t.is_none() => Step::Same,
+            Some(last) if t.is_none() && time == last => Step::Same,
             Some(_) => return Step::Stale,
         };
         self.last = Some(time);
@@ -239,7 +243,7 @@ impl LiveCue {
                 break;
             };
             let decoded = self.decoder.decode(&self.buffer[..n]);
-            self.count_format(decoded.format.map_or("unknown", |f| f.name()));
+            self.count_format(decoded.format.map_or(UNKNOWN_FORMAT, |f| f.name()));
             match decoded.reading {
                 Ok(Reading::Sample(sample)) => self.take(sample, t),
                 // The game's menus or pause: as if the input had stalled.

@@ -45,7 +45,10 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
         socket.local_addr()?
     );
     let stop = crate::interrupt::flag();
-    let mut heard = Heard::default();
+    let mut heard = Heard {
+        keep: out.is_some(),
+        ..Heard::default()
+    };
     let start = Instant::now();
     let mut next_line = 1.0;
     let mut buffer = vec![0u8; 65_536];
@@ -86,6 +89,8 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
 /// What has arrived: the rows of motion, and this second's datagrams per format.
 #[derive(Default)]
 struct Heard {
+    /// Whether the rows are kept (for `--out`; else only counted).
+    keep: bool,
     decoder: Decoder,
     clock: SampleClock,
     rows: Vec<[f64; 7]>,
@@ -94,7 +99,8 @@ struct Heard {
     samples: usize,
     /// The last sample decoded.
     last: Option<VehicleSample>,
-    /// All along: datagrams, unreadable ones, stale samples, menus.
+    /// All along: samples kept, datagrams, unreadable ones, stale samples, menus.
+    kept: usize,
     datagrams: usize,
     malformed: usize,
     stale: usize,
@@ -127,7 +133,12 @@ impl Heard {
         let [wx, wy, wz] = sample.rates_deg_s;
         let row = [time, ax, ay, az, wx, wy, wz];
         match self.clock.step(sample.t, arrival) {
-            Step::First | Step::By(_) => self.rows.push(row),
+            Step::First | Step::By(_) => {
+                self.kept += 1;
+                if self.keep {
+                    self.rows.push(row);
+                }
+            }
             Step::Same => {
                 if let Some(last) = self.rows.last_mut() {
                     *last = row;
@@ -166,11 +177,7 @@ impl Heard {
         format!(
             "{} datagrams, {} samples of motion kept, {} unreadable, {} older than the one \
              before, {} in the game's menus or pause",
-            self.datagrams,
-            self.rows.len(),
-            self.malformed,
-            self.stale,
-            self.idle
+            self.datagrams, self.kept, self.malformed, self.stale, self.idle
         )
     }
 }

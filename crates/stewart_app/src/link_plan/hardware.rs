@@ -70,6 +70,45 @@ pub(crate) fn format(link: &LinkSettings) -> Result<Format> {
     })
 }
 
+/// A board's own bytes (a template, SMC3, ODrive) scale each actuator from the stroke (or
+/// servo range) and name the actuators themselves: refused, naming what to set, when the
+/// scenario sets no range (the accepted range of any length, 0–1000 m, would send every
+/// leg to the bottom), or when `[link]` asks for a channel map these formats do not apply
+/// (another order, reversal, scale, offset, servo pulses).
+pub(crate) fn check_board_format(scenario: &Scenario) -> Result<()> {
+    let link = &scenario.link;
+    let board = !matches!(link.format, LinkFormat::Binary | LinkFormat::Text);
+    if !board {
+        return Ok(());
+    }
+    let format = link.format.word();
+    let [lo, hi] = scenario.geometry.quantity_limits();
+    if lo.is_none() || hi.is_none() {
+        let (min, max) = match scenario.geometry.actuator().kind() {
+            // Quoted as the keys are written (and not taken for words of the catalogues).
+            ActuatorKind::Linear => ("`geometry.leg_min`", "`geometry.leg_max`"),
+            ActuatorKind::Rotary => ("`actuator.servo_min_deg`", "`actuator.servo_max_deg`"),
+        };
+        bail!(
+            "`link.format = {format}` scales each actuator from its range: set both {min} and {max}"
+        );
+    }
+    let default = LinkSettings::default();
+    let mapped = [
+        ("`link.actuator`", link.actuator != default.actuator),
+        ("`link.reversed`", link.reversed != default.reversed),
+        ("`link.scale`", link.scale != default.scale),
+        ("`link.offset`", link.offset != default.offset),
+        ("`link.output`", link.output != default.output),
+    ];
+    if let Some((key, _)) = mapped.iter().find(|(_, set)| *set) {
+        bail!(
+            "`link.format = {format}` sends each actuator as the board reads it and applies no channel map: leave {key} at its default (reverse or reorder on the board; ODrive: a negative `link.turns_per_unit`)"
+        );
+    }
+    Ok(())
+}
+
 /// The most bytes one set-point takes on the wire in `format`.
 pub(crate) fn frame_bytes(format: &Format) -> usize {
     match format {

@@ -51,10 +51,11 @@ pub struct LinkPlan {
 
 impl LinkPlan {
     /// The plan for `scenario` (its `[link]` as it stands). Fails, naming the setting,
-    /// when the channel map or the template is refused or the home pose has no actuator
-    /// values.
+    /// when the channel map, the template or a board format is refused or the home pose has
+    /// no actuator values.
     pub fn new(scenario: &Scenario) -> Result<Self> {
         let home = hardware::home_values(scenario)?;
+        hardware::check_board_format(scenario)?;
         Ok(Self {
             settings: scenario.link.clone(),
             home,

@@ -454,3 +454,58 @@ fn device_sim_reads_each_smc3_board_over_serial_and_each_odrive_board_over_udp()
         stderr(&o)
     );
 }
+
+#[test]
+fn board_formats_need_a_range_apply_no_channel_map_and_let_go_only_at_home() {
+    // No stroke: every leg would scale from 0–1000 m (all at the bottom): refused.
+    for format in ["smc3", "odrive", "template:{a1:u16be}"] {
+        let o = stewart(&[
+            "link",
+            "--preset",
+            "paired",
+            "--dry-run",
+            "--format",
+            format,
+            "--set",
+            "geometry.leg_min=off",
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{format}");
+        assert!(
+            stderr(&o).contains("scales each actuator from its range: set both `geometry.leg_min` and `geometry.leg_max`"),
+            "{format}: {}",
+            stderr(&o)
+        );
+        assert!(stdout(&o).is_empty());
+    }
+    // A channel map the format would not apply: refused, not ignored.
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--dry-run",
+        "--format",
+        "smc3",
+        "--set",
+        "link.reversed.2=true",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("applies no channel map: leave `link.reversed` at its default"),
+        "{}",
+        stderr(&o)
+    );
+    // ODrive: idle (no torque) only once the way home has ended there; a stop that holds
+    // leaves the axes in closed loop where they are.
+    let idle = |stop: &str| {
+        dry_run_lines(
+            "odrive",
+            1,
+            &["--duration", "1", "--set", &format!("link.stop={stop}")],
+        )
+        .iter()
+        .filter(|(_, l)| l.ends_with("requested_state 1"))
+        .count()
+    };
+    assert_eq!(idle("home"), 2);
+    assert_eq!(idle("hold"), 0);
+}

@@ -97,12 +97,12 @@ fn f1(k: usize) -> Vec<Vec<u8>> {
 }
 
 /// BeamNG MotionSim (88 bytes): `BNG1`, accX (right), accY (forward), accZ at 28; roll,
-/// pitch, yaw rates at 64 (yaw positive to the right).
+/// pitch, yaw rates at 64 (as the car gives them: yaw positive to the left).
 fn beamng(k: usize) -> Vec<Vec<u8>> {
     let m = moment(k);
     let p = Packet::new(88, b"BNG1")
         .f32(28, &[-m.left, m.forward, 0.0])
-        .f32(64, &[0.0, 0.0, -m.yaw_rad]);
+        .f32(64, &[0.0, 0.0, m.yaw_rad]);
     vec![p.0]
 }
 

@@ -164,6 +164,7 @@ fn help_lists_every_command() {
             "firmware",
             "link",
             "device-sim",
+            "telemetry",
             "help"
         ]
     );

@@ -358,7 +358,7 @@ impl LinkSettings {
                 })?;
             }
             ("rate_hz", None) => edited.rate_hz = number()?,
-            ("format", None) => match value.trim().strip_prefix("template:") {
+            ("format", None) => match value.trim_start().strip_prefix("template:") {
                 // `template:<255>…` sets both.
                 Some(template) => {
                     edited.format = LinkFormat::Template;

@@ -92,6 +92,7 @@ pub fn read(input: impl Read + Send) -> Result<Capture, CaptureError> {
     })?;
     let mut state = State::default();
     let mut offset: u64 = 0;
+    let mut capacity = BUFFER;
     loop {
         let packet = state.capture.packets;
         let damaged = CaptureError::Damaged {
@@ -115,8 +116,8 @@ pub fn read(input: impl Read + Send) -> Result<Capture, CaptureError> {
                 reader.refill().map_err(|_| CaptureError::Read { packet })?;
             }
             Err(PcapError::BufferTooSmall) => {
-                let size = reader.data().len().max(BUFFER) * 2;
-                if size > MAX_BLOCK || !reader.grow(size) {
+                capacity *= 2;
+                if capacity > MAX_BLOCK || !reader.grow(capacity) {
                     return Err(damaged);
                 }
                 reader.refill().map_err(|_| CaptureError::Read { packet })?;

@@ -397,6 +397,8 @@ pub struct Stream {
     /// told the platform is driven.
     board_bytes: Vec<Vec<u8>>,
     board_driven: bool,
+    /// Whether the last tick that drove the platform was on the way home.
+    board_home_last: bool,
 }
 
 impl Stream {
@@ -420,6 +422,48 @@ impl Stream {
             bytes: Vec::with_capacity(64),
             board_bytes: Vec::new(),
             board_driven: false,
+            board_home_last: false,
+        }
+    }
+
+    /// One tick of a board protocol: the arming commands when the supervisor begins to drive
+    /// the platform, its set-points while it does, and the disarming ones only once the
+    /// way home has ended there (a hold or an emergency leaves the boards holding where
+    /// they are: ODrive's idle would let a loaded rig sink). Every port gets its bytes; the
+    /// first failure is the stream's. `None`: nothing was sent as a set-point.
+    fn send_to_boards(
+        &mut self,
+        board: &Board,
+        t: f64,
+        tick: &crate::safety::Tick,
+    ) -> Option<Result<(), crate::transport::TransportError>> {
+        let driven = tick.armed || tick.home;
+        self.board_bytes.resize(board.ports(), Vec::new());
+        self.board_bytes.iter_mut().for_each(Vec::clear);
+        if driven && !self.board_driven {
+            board.arming(true, &mut self.board_bytes);
+        }
+        if !driven && self.board_driven && self.board_home_last {
+            board.arming(false, &mut self.board_bytes);
+        }
+        self.board_driven = driven;
+        if driven {
+            self.board_home_last = tick.home;
+            let sv = &self.config.supervisor;
+            let (ranges, velocities) = (&sv.limits().range, &sv.motion().velocity);
+            board.set_point(&tick.values, velocities, ranges, &mut self.board_bytes);
+        }
+        let mut first_error = None;
+        for (port, bytes) in self.board_bytes.iter().enumerate() {
+            if !bytes.is_empty()
+                && let Err(e) = self.transport.send_on(port, t, bytes)
+            {
+                first_error.get_or_insert(e);
+            }
+        }
+        match first_error {
+            Some(e) => Some(Err(e)),
+            None => driven.then_some(Ok(())),
         }
     }
 
@@ -471,25 +515,8 @@ impl Stream {
                 self.transport.send(t, &self.bytes)
             }),
             Format::Board(board) => {
-                let driven = tick.armed || tick.home;
-                self.board_bytes.resize(board.ports(), Vec::new());
-                self.board_bytes.iter_mut().for_each(Vec::clear);
-                if driven != self.board_driven {
-                    board.arming(driven, &mut self.board_bytes);
-                    self.board_driven = driven;
-                }
-                if driven {
-                    let sv = &self.config.supervisor;
-                    let (ranges, velocities) = (&sv.limits().range, &sv.motion().velocity);
-                    board.set_point(&tick.values, velocities, ranges, &mut self.board_bytes);
-                }
-                let mut sent = Ok(());
-                for (port, bytes) in self.board_bytes.iter().enumerate() {
-                    if !bytes.is_empty() && sent.is_ok() {
-                        sent = self.transport.send_on(port, t, bytes);
-                    }
-                }
-                driven.then_some(sent)
+                let board = board.clone();
+                self.send_to_boards(&board, t, &tick)
             }
         };
         let delivered = match sent {

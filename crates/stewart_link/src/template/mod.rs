@@ -187,6 +187,26 @@ impl Template {
                 }
             }
         }
+        // A `dec` field's digits end where the next byte is not a digit: it must be
+        // followed by one, or no board (and no reader) can tell where the number ends.
+        for (k, piece) in pieces.iter().enumerate() {
+            if let Piece::Field {
+                kind: FieldType::Dec,
+                actuator,
+            } = piece
+            {
+                let next = pieces.get(k + 1);
+                if !matches!(next, Some(Piece::Byte(b)) if !b.is_ascii_digit()) {
+                    return refuse(
+                        column_of(&chars, k),
+                        format!(
+                            "{{a{}:dec}} has no end: follow it with a byte that is not a digit, such as `,` or <10>",
+                            actuator + 1
+                        ),
+                    );
+                }
+            }
+        }
         if !pieces.iter().any(|p| matches!(p, Piece::Field { .. })) {
             return refuse(
                 chars.len().max(1),
@@ -254,6 +274,24 @@ pub fn scaled(value: f64, (lo, hi): (f64, f64), kind: FieldType) -> u32 {
 /// [`scaled`], to its resolution).
 pub fn unscaled(n: u32, (lo, hi): (f64, f64), kind: FieldType) -> f64 {
     lo + (hi - lo) * f64::from(n) / f64::from(kind.largest())
+}
+
+/// The column (from 1) where piece `index` of the template `chars` begins.
+fn column_of(chars: &[char], index: usize) -> usize {
+    let mut k = 0;
+    for _ in 0..index {
+        k += match chars.get(k) {
+            Some(&open @ ('<' | '{')) => {
+                let close = if open == '<' { '>' } else { '}' };
+                chars[k..]
+                    .iter()
+                    .position(|&c| c == close)
+                    .map_or(1, |len| len + 1)
+            }
+            _ => 1,
+        };
+    }
+    k + 1
 }
 
 /// The byte of `<N>`.

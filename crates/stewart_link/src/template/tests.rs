@@ -22,7 +22,7 @@ fn a_template_writes_the_bytes_computed_by_hand() {
         ]
     );
     assert_eq!(out.len(), t.max_len());
-    let wide = Template::parse("{a1:u12be}{a2:u24be}{a3:u32be}|{a4:dec}|{a5:dec3}|{a6:dec}")
+    let wide = Template::parse("{a1:u12be}{a2:u24be}{a3:u32be}|{a4:dec}|{a5:dec3}|{a6:dec}<10>")
         .unwrap_or_else(|e| panic!("{e}"));
     out.clear();
     wide.encode(&[0.6, 0.6, 0.7, 0.55, 0.6, 0.5], &RANGES, &mut out);
@@ -30,7 +30,7 @@ fn a_template_writes_the_bytes_computed_by_hand() {
     // (0x800000); the top of u32; 0.25 × 65535 = 16383.75 → 16384; 0.5 × 999 = 499.5 → 500;
     // the bottom: "0".
     let mut expected = vec![0x08, 0x00, 0x80, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff];
-    expected.extend(b"|16384|500|0");
+    expected.extend(b"|16384|500|0\n");
     assert_eq!(out, expected);
 }
 
@@ -78,6 +78,13 @@ fn a_bad_template_is_refused_at_its_column() {
     assert_eq!(refused("{a1:u8}\t").0, 8);
     assert_eq!(refused("").0, 1);
     assert!(refused("{a1}").1.contains("is not {aK:T}"));
+    // A decimal number needs a byte that is not a digit after it.
+    let (column, what) = refused("<255>{a1:dec}{a2:dec},");
+    assert_eq!(column, 6);
+    assert!(what.contains("{a1:dec} has no end"), "{what}");
+    assert_eq!(refused("A{a1:u8}{a2:dec}").0, 9);
+    assert_eq!(refused("{a1:dec}7").0, 1);
+    assert!(Template::parse("{a1:dec},{a2:dec}<10>").is_ok());
     assert!(refused("<x>").1.contains("<x> is not a byte"));
     let e = Template::parse("<255>{a0:u8}").err().map(|e| e.to_string());
     assert_eq!(

@@ -6,11 +6,13 @@
 //! It has no clock (the receiver's is used).
 //!
 //! The page gives the accelerations' frame but not their signs. The studio takes the
-//! motion-simulator convention BeamNG says it follows: `accX` to the right, `accY`
-//! forward, `accZ` up; roll positive with the right side down, pitch nose up, yaw nose
-//! right. In our axes: `ax = accY`, `ay = −accX`, `az = accZ`, `wx = roll`,
-//! `wy = −pitch`, `wz = −yaw`. Check with `stewart telemetry` (accelerating reads
-//! `ax > 0`, a left turn `ay > 0` and `wz > 0`).
+//! motion-simulator convention BeamNG says it follows for the accelerations: `accX` to
+//! the right, `accY` forward, `accZ` up. The script turns the roll and yaw *angles* to that
+//! convention (it negates them) but sends the rates as the vehicle gives them, so the
+//! rates keep the opposite sense for roll and yaw: roll positive with the left side down,
+//! pitch nose up, yaw nose left. In our axes: `ax = accY`, `ay = −accX`, `az = accZ`,
+//! `wx = −roll`, `wy = −pitch`, `wz = yaw`. Check with `stewart telemetry` (accelerating
+//! reads `ax > 0`, a left turn `ay > 0` and `wz > 0`).
 //!
 //! OutGauge (the dashboard protocol BeamNG and Live for Speed share, 92 bytes or 96 with
 //! an ID) may arrive at the same port: it carries no motion and reads as
@@ -44,6 +46,6 @@ pub(crate) fn motion_sim(bytes: &[u8]) -> Result<Reading, VehicleError> {
     Ok(Reading::Sample(VehicleSample {
         t: None,
         accel: [acc_forward, -acc_right, acc_up],
-        rates_deg_s: [roll, -pitch, -yaw].map(f64::to_degrees),
+        rates_deg_s: [-roll, -pitch, yaw].map(f64::to_degrees),
     }))
 }

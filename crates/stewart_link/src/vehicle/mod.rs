@@ -222,8 +222,12 @@ impl Decoder {
         }
         // Printable bytes are text first (a text line may have any length).
         let text = generic::as_text(bytes).map(generic::text);
-        if let Some(Ok(sample)) = text {
-            return (Some(Format::Text), Ok(Reading::Sample(sample)));
+        match text {
+            Some(Ok(sample)) => return (Some(Format::Text), Ok(Reading::Sample(sample))),
+            // Printable bytes that are not seven numbers are a text error — but 28 of them
+            // may be seven f32 that happen to print.
+            Some(Err(e)) if n != generic::BINARY_BYTES => return (None, Err(e)),
+            _ => {}
         }
         let format = match n {
             generic::BINARY_BYTES => Some(Format::Binary),
@@ -294,9 +298,10 @@ fn checked(reading: Reading) -> Result<Reading, VehicleError> {
 }
 
 /// A `u32` millisecond clock that wraps to 0 (after 49.7 days), unwrapped into seconds: a
-/// reading far below the last (by more than half the range) is the next lap of the
-/// counter; a reading a little below is the game's clock going back, kept as it is (the
-/// receiver refuses a sample older than the last).
+/// reading near the bottom after one near the top (within a sixteenth of the range of
+/// each end) is the next lap of the counter; any other reading below the last is the
+/// game's clock going back (a restart), kept as it is (the receiver refuses a sample older
+/// than the last), so no stream of readings can add laps faster than the counter does.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct WrappingClock {
     last: Option<u32>,
@@ -306,11 +311,16 @@ pub struct WrappingClock {
 impl WrappingClock {
     /// Seconds since the counter's first zero for the reading `ms`.
     pub fn seconds(&mut self, ms: u32) -> f64 {
+        const EDGE: u32 = u32::MAX / 16;
+        // 200 laps are 27 years: more can only come from readings sent to fool it, and they
+        // stop there (seconds stay within the samples' bound; the receiver's clock starts
+        // again after a stall).
+        const MAX_LAPS: u64 = 200;
         if let Some(last) = self.last
-            && ms < last
-            && last - ms > u32::MAX / 2
+            && last > u32::MAX - EDGE
+            && ms < EDGE
         {
-            self.laps += 1;
+            self.laps = (self.laps + 1).min(MAX_LAPS);
         }
         self.last = Some(ms);
         let total = (self.laps << 32) + u64::from(ms);

@@ -206,6 +206,18 @@ fn forza_menus_read_as_idle_and_its_clock_unwraps() {
     // A clock going back a little is not a wrap: the receiver sees an older sample.
     let back = sample_of(&d.decode(&forza(232, 5, [0.0; 3], [0.0; 3], [0.0; 3])));
     assert!(back.t < after.t);
+    // Nor is a restart from the middle of the range.
+    d.decode(&forza(232, u32::MAX / 2, [0.0; 3], [0.0; 3], [0.0; 3]));
+    let restarted = sample_of(&d.decode(&forza(232, 3, [0.0; 3], [0.0; 3], [0.0; 3])));
+    assert!((restarted.t.unwrap_or(0.0) - (4_294_967.296 + 0.003)).abs() < 1e-6);
+    // Readings sent to fool it (top, bottom, top, …) add laps only up to a bound: the
+    // samples stay readable.
+    for _ in 0..1000 {
+        d.decode(&forza(232, u32::MAX, [0.0; 3], [0.0; 3], [0.0; 3]));
+        d.decode(&forza(232, 0, [0.0; 3], [0.0; 3], [0.0; 3]));
+    }
+    let last = sample_of(&d.decode(&forza(232, 1, [0.0; 3], [0.0; 3], [0.0; 3])));
+    assert!(last.t.is_some_and(|t| t < 1e9), "{last:?}");
 }
 
 /// An F1 24 packet: its header (format, id, session, time, frame, player car) and room
@@ -304,7 +316,7 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
     let mut p = packet(88, b"BNG1");
     put_f32s(&mut p, 4, &[100.0, 200.0, 3.0]); // position, not read
     put_f32s(&mut p, 28, &[1.5, -4.0, 0.25]); // accX (right), accY (forward), accZ (up)
-    put_f32s(&mut p, 64, &[0.1, 0.2, 0.3]); // roll, pitch, yaw rates
+    put_f32s(&mut p, 64, &[0.1, 0.2, 0.3]); // roll, pitch, yaw rates (as the car gives them)
     let mut d = Decoder::new();
     let decoded = d.decode(&p);
     assert_eq!(decoded.format, Some(Format::BeamNg));
@@ -312,7 +324,7 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
     assert_eq!(s.t, None);
     assert!(close(s.accel, [-4.0, -1.5, 0.25], 1e-6), "{s:?}");
     let deg = f64::to_degrees;
-    assert!(close(s.rates_deg_s, [deg(0.1), -deg(0.2), -deg(0.3)], 1e-4));
+    assert!(close(s.rates_deg_s, [-deg(0.1), -deg(0.2), deg(0.3)], 1e-4));
     assert!(matches!(
         d.decode(&p[..87]).reading,
         Err(VehicleError::Length {

@@ -16,6 +16,7 @@ use stewart_link::transport::list_ports;
 use super::widgets;
 use crate::i18n::Lang;
 use crate::link_plan::actuator_range;
+use crate::live_cue::UNKNOWN_FORMAT;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
@@ -157,7 +158,14 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
             ],
         ));
         let arriving: Vec<String> = (cue.arriving().iter())
-            .map(|(name, rate)| format!("{name} {rate:.0}/s"))
+            .map(|(name, rate)| {
+                let name = if *name == UNKNOWN_FORMAT {
+                    t.tr("link.cue_unknown")
+                } else {
+                    name
+                };
+                format!("{name} {rate:.0}/s")
+            })
             .collect();
         ui.label(if arriving.is_empty() {
             t.tr("link.cue_nothing").to_owned()
@@ -530,7 +538,11 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
     let home = g.actuator_values_at(&g.home_pose());
     match (Template::parse(&text), home) {
         (Err(e), _) => {
-            ui.label(RichText::new(e.to_string()).color(widgets::ERROR));
+            let said = t.fmt(
+                "link.template_error",
+                &[("column", &e.column), ("what", &e.what)],
+            );
+            ui.label(RichText::new(said).color(widgets::ERROR));
         }
         (Ok(template), Ok(values)) => {
             let mut bytes = Vec::new();

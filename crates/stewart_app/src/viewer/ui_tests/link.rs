@@ -318,7 +318,7 @@ fn an_output_template_is_chosen_edited_and_previewed_as_bytes() {
     let column = typed.find("{a9:u8}").map(|i| i + 1);
     assert!(column.is_some(), "{typed}");
     let said = format!(
-        "template column {}: `a9` names no actuator",
+        "Template column {}: `a9` names no actuator",
         column.unwrap_or_default()
     );
     assert!(h.query_by_label_contains(&said).is_some(), "no `{said}`");
