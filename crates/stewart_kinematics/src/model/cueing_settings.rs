@@ -87,6 +87,9 @@ pub struct CueingSettings {
     pub stall_s: f64,
     /// Seconds a stalled cue takes to fade to neutral (and a resumed one to come back).
     pub fade_s: f64,
+    /// Live input only: how far ahead of the last sample, seconds, each tick extrapolates
+    /// the input (0: off — the platform steps from sample to sample).
+    pub input_prediction_s: f64,
 }
 
 impl Default for CueingSettings {
@@ -114,6 +117,7 @@ impl Default for CueingSettings {
             limiter_recovery_s: 1.0,
             stall_s: 0.5,
             fade_s: 2.0,
+            input_prediction_s: 0.0,
         }
     }
 }
@@ -131,6 +135,8 @@ pub struct CueingProblem {
 
 /// The largest scale accepted.
 pub const MAX_SCALE: f64 = 10.0;
+/// The longest input prediction, seconds (beyond a few samples an extrapolation is a guess).
+pub const MAX_PREDICTION_S: f64 = 0.5;
 /// The highest filter frequency accepted, rad/s.
 pub const MAX_OMEGA: f64 = 1000.0;
 /// The largest damping ratio accepted.
@@ -181,6 +187,13 @@ impl CueingSettings {
                     format!("must be a positive number of at most {max}, got {v}"),
                 );
             }
+        }
+        let p = self.input_prediction_s;
+        if !(0.0..=MAX_PREDICTION_S).contains(&p) {
+            return bad(
+                "input_prediction_s",
+                format!("must be between 0 (off) and {MAX_PREDICTION_S} s, got {p}"),
+            );
         }
         let wb = self.translation_hp_wb;
         if !(0.0..=MAX_OMEGA).contains(&wb) {

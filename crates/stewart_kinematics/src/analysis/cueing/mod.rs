@@ -125,6 +125,27 @@ impl Cueing {
         pose_at(&self.geometry, self.arm, &cue, s * fade)
     }
 
+    /// The pose `h` seconds ahead with `motion` held from now, the state left as it is: a
+    /// live input's look between two samples (its limiter judged as [`Cueing::advance`]
+    /// would, on a copy). No allocation.
+    pub fn preview(&self, h: f64, motion: &VehicleMotion) -> Pose {
+        let mut ahead = self.washout.clone();
+        ahead.hold(motion);
+        ahead.advance(h);
+        let cue = ahead.cue();
+        let fade = self.fade;
+        let Some(limiter) = &self.limiter else {
+            return pose_at(&self.geometry, self.arm, &cue, fade);
+        };
+        let mut limiter = limiter.clone();
+        let fits = |s: f64| {
+            let pose = pose_at(&self.geometry, self.arm, &cue, s * fade);
+            workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
+        };
+        let s = limiter.scale_for(h, fits);
+        pose_at(&self.geometry, self.arm, &cue, s * fade)
+    }
+
     /// Give only `fade` (0 to 1) of the cue from the next step on: a live input that
     /// stalls is faded to neutral by lowering it.
     pub fn set_fade(&mut self, fade: f64) {

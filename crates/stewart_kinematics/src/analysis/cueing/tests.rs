@@ -386,3 +386,42 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
         Err(CueError::Settings(p)) if p.key == "cueing.tilt_lp_wn"
     ));
 }
+
+#[test]
+fn a_preview_is_the_step_taken_on_a_copy_and_changes_nothing() {
+    // With the limiter on (a tight joint cone), and without: the preview h ahead with a motion
+    // held is the pose a copy reaches by holding it and advancing h; the cueing itself is
+    // where it was.
+    for limiter in [false, true] {
+        let settings = CueingSettings {
+            translation_scale: 1.0,
+            workspace_limiter: limiter,
+            ..CueingSettings::default()
+        };
+        let g = Geometry::seed();
+        let limits = Limits {
+            platform_cone: limiter.then(|| Angle::from_degrees(38.0)),
+            ..Limits::default()
+        };
+        let mut c = Cueing::new(&g, &limits, &settings).unwrap_or_else(|e| panic!("{e}"));
+        let braking = VehicleMotion {
+            accel: [-7.0, 2.0, 0.0],
+            rates_deg_s: [0.0, 0.0, 25.0],
+        };
+        c.hold(&braking);
+        c.advance(0.4);
+        let turning = VehicleMotion {
+            accel: [1.0, -3.0, 0.5],
+            rates_deg_s: [5.0, 0.0, -10.0],
+        };
+        let before = c.advance(0.0);
+        let preview = c.preview(0.025, &turning);
+        let mut copy = c.clone();
+        copy.hold(&turning);
+        assert_eq!(preview, copy.advance(0.025), "limiter {limiter}");
+        assert_ne!(preview, before);
+        // Nothing moved: the next step is the one it would have been.
+        let mut untouched = c.clone();
+        assert_eq!(c.advance(0.01), untouched.advance(0.01));
+    }
+}

@@ -136,6 +136,7 @@ fn model_rule(key: &str) -> Option<ModelRule> {
         ("cueing", n) if n.ends_with("_zeta") => positive(Some(MAX_ZETA)),
         ("cueing", "tilt_rate_max_deg_s") => positive(Some(360.0)),
         ("cueing", "limiter_recovery_s" | "stall_s" | "fade_s") => positive(Some(3600.0)),
+        ("cueing", "input_prediction_s") => not_negative(Some(0.5)),
         ("dynamics", n)
             if n == "actuator_friction"
                 || n.ends_with("_mass_kg")
@@ -578,7 +579,7 @@ fn checks(d: &mut Declare) {
 type Row<K> = (&'static str, &'static str, Unit, (f64, f64), K);
 
 /// The `[cueing]` table's settings; each default is the table's own.
-const CUEING: [Row<CueingKey>; 15] = {
+const CUEING: [Row<CueingKey>; 16] = {
     use CueingKey::*;
     let (scale, omega, zeta) = ((0.0, 2.0), (0.05, 20.0), (0.1, 2.0));
     let switch = (0.0, 1.0);
@@ -664,6 +665,13 @@ const CUEING: [Row<CueingKey>; 15] = {
         ),
         ("stall_s", "input stall time", Second, (0.05, 5.0), Stall),
         ("fade_s", "fade to neutral", Second, (0.1, 10.0), Fade),
+        (
+            "input_prediction_s",
+            "input prediction",
+            Second,
+            (0.0, 0.2),
+            Prediction,
+        ),
     ]
 };
 

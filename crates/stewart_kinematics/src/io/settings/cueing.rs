@@ -40,6 +40,8 @@ pub enum CueingKey {
     Stall,
     /// `fade_s`.
     Fade,
+    /// `input_prediction_s`.
+    Prediction,
 }
 
 /// The axes' keys in the file, x to yaw.
@@ -80,6 +82,7 @@ fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
         LimiterRecovery => Number(&mut c.limiter_recovery_s),
         Stall => Number(&mut c.stall_s),
         Fade => Number(&mut c.fade_s),
+        Prediction => Number(&mut c.input_prediction_s),
     })
 }
 

@@ -22,6 +22,8 @@ use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
 
 use crate::xplane_rref::RrefSubscription;
 
+pub mod measure;
+
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
 
@@ -106,6 +108,59 @@ impl Drop for LiveCue {
     }
 }
 
+/// The last two samples of the input: the straight line through them, extrapolated ahead
+/// of the last, and drawn to the next.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Prediction {
+    /// The last sample: its time and motion.
+    last: Option<(f64, VehicleMotion)>,
+    /// The input's rate of change between the last two samples, per second.
+    slope: VehicleMotion,
+}
+
+impl Prediction {
+    /// A sample at `time`.
+    fn sampled(&mut self, time: f64, motion: VehicleMotion) {
+        self.slope = match self.last {
+            Some((before, m)) if time > before => {
+                let per = |a: f64, b: f64| (a - b) / (time - before);
+                VehicleMotion {
+                    accel: std::array::from_fn(|k| per(motion.accel[k], m.accel[k])),
+                    rates_deg_s: std::array::from_fn(|k| {
+                        per(motion.rates_deg_s[k], m.rates_deg_s[k])
+                    }),
+                }
+            }
+            _ => VehicleMotion::default(),
+        };
+        self.last = Some((time, motion));
+    }
+
+    /// The input held over the `ahead` seconds after the last sample: the line's value
+    /// half-way (the middle of a line holds its integrals exactly).
+    fn midpoint(&self, ahead: f64) -> VehicleMotion {
+        let Some((_, m)) = self.last else {
+            return VehicleMotion::default();
+        };
+        let at = |v: f64, s: f64| v + s * 0.5 * ahead;
+        VehicleMotion {
+            accel: std::array::from_fn(|k| at(m.accel[k], self.slope.accel[k])),
+            rates_deg_s: std::array::from_fn(|k| at(m.rates_deg_s[k], self.slope.rates_deg_s[k])),
+        }
+    }
+
+    /// The input held from the last sample to `next`: their middle.
+    fn middle_to(&self, next: &VehicleMotion) -> VehicleMotion {
+        let Some((_, m)) = self.last else {
+            return *next;
+        };
+        VehicleMotion {
+            accel: std::array::from_fn(|k| 0.5 * (m.accel[k] + next.accel[k])),
+            rates_deg_s: std::array::from_fn(|k| 0.5 * (m.rates_deg_s[k] + next.rates_deg_s[k])),
+        }
+    }
+}
+
 /// How a sample steps the washout: the rule the live link and a replayed capture share.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Step {
@@ -163,6 +218,10 @@ pub struct LiveCue {
     decoder: Decoder,
     /// X-Plane asked for its datarefs of motion, when it is.
     xplane: Option<RrefSubscription>,
+    /// The last two samples, for the look ahead (`None`: `input_prediction_s` is 0).
+    prediction: Option<Prediction>,
+    /// How far ahead of the last sample a tick looks, seconds.
+    prediction_s: f64,
     /// Datagrams per format since `window_start` (stream time), published as rates each
     /// second.
     window: Vec<(&'static str, u32)>,
@@ -199,6 +258,8 @@ impl LiveCue {
             buffer: vec![0; DATAGRAM],
             decoder: Decoder::new(),
             xplane: None,
+            prediction: (scenario.cueing.input_prediction_s > 0.0).then(Prediction::default),
+            prediction_s: scenario.cueing.input_prediction_s,
             window: Vec::new(),
             window_start: None,
             stall_s: scenario.cueing.stall_s,
@@ -215,6 +276,11 @@ impl LiveCue {
     /// Where it listens.
     pub fn local_addr(&self) -> Result<std::net::SocketAddr> {
         Ok(self.socket.local_addr()?)
+    }
+
+    /// Samples taken so far.
+    pub fn samples_taken(&self) -> u64 {
+        self.counts.received.load(Ordering::Relaxed)
     }
 
     /// The counts, shared.
@@ -242,18 +308,34 @@ impl LiveCue {
             let Ok(n) = self.socket.recv(&mut self.buffer) else {
                 break;
             };
-            let decoded = self.decoder.decode(&self.buffer[..n]);
-            self.count_format(decoded.format.map_or(UNKNOWN_FORMAT, |f| f.name()));
-            match decoded.reading {
-                Ok(Reading::Sample(sample)) => self.take(sample, t),
-                // The game's menus or pause: as if the input had stalled.
-                Ok(Reading::Idle) => self.idle = true,
-                Ok(Reading::Ignored) => {}
-                Err(_) => {
-                    self.counts.malformed.fetch_add(1, Ordering::Relaxed);
-                }
+            let buffer = std::mem::take(&mut self.buffer);
+            self.receive(&buffer[..n], t);
+            self.buffer = buffer;
+        }
+        self.settle(t, dt)
+    }
+
+    /// One datagram arriving at stream time `t`, decoded and taken (what [`LiveCue::tick`]
+    /// does with each datagram it reads; public for measurements that feed it directly).
+    pub fn receive(&mut self, bytes: &[u8], t: f64) {
+        let decoded = self.decoder.decode(bytes);
+        self.count_format(decoded.format.map_or(UNKNOWN_FORMAT, |f| f.name()));
+        match decoded.reading {
+            Ok(Reading::Sample(sample)) => self.take(sample, t),
+            // The game's menus or pause: as if the input had stalled.
+            Ok(Reading::Idle) => self.idle = true,
+            Ok(Reading::Ignored) => {}
+            Err(_) => {
+                self.counts.malformed.fetch_add(1, Ordering::Relaxed);
             }
         }
+    }
+
+    /// After a tick's datagrams (`dt` after the last tick): the rates published, a stall or
+    /// a menu faded, and the pose to follow — the last sample's, or, with
+    /// `input_prediction_s`, where the washout goes with the input extrapolated that far
+    /// beyond it.
+    pub fn settle(&mut self, t: f64, dt: f64) -> Pose {
         self.publish_rates(t);
         let quiet = self.idle || self.last_arrival.is_none_or(|at| t - at > self.stall_s);
         if quiet && self.last_arrival.is_some() {
@@ -261,7 +343,13 @@ impl LiveCue {
         } else if !quiet && self.cueing.fade() < 1.0 {
             self.cueing.set_fade(self.cueing.fade() + dt / self.fade_s);
         }
-        self.pose
+        match (&self.prediction, self.last_arrival) {
+            (Some(p), Some(arrived)) if !quiet => {
+                let ahead = (t - arrived).clamp(0.0, self.prediction_s);
+                self.cueing.preview(ahead, &p.midpoint(ahead))
+            }
+            _ => self.pose,
+        }
     }
 
     /// One more datagram of format `name` in this second's window.
@@ -303,11 +391,21 @@ impl LiveCue {
                 return;
             }
         };
-        self.pose = self.cueing.advance(h);
-        self.cueing.hold(&VehicleMotion {
+        let motion = VehicleMotion {
             accel: sample.accel,
             rates_deg_s: sample.rates_deg_s,
-        });
+        };
+        // Predicting, the input between two samples is taken as the straight line between
+        // them (its middle held: exact for the integrals of a line), as the look ahead
+        // extrapolated it.
+        if let Some(p) = &mut self.prediction {
+            if h > 0.0 {
+                self.cueing.hold(&p.middle_to(&motion));
+            }
+            p.sampled(sample.t.unwrap_or(now), motion);
+        }
+        self.pose = self.cueing.advance(h);
+        self.cueing.hold(&motion);
         let cue = self.cueing.cue();
         let mut trace = self
             .counts
@@ -339,6 +437,9 @@ impl LiveCue {
             self.cueing.hold(&VehicleMotion::default());
             // The next sample starts a new stretch of the sender's clock.
             self.clock = SampleClock::default();
+            if let Some(p) = &mut self.prediction {
+                *p = Prediction::default();
+            }
         }
         let fade = self.cueing.fade() - dt / self.fade_s;
         self.cueing.set_fade(fade);
@@ -541,6 +642,27 @@ mod tests {
         settle();
         live.tick(t + 0.02);
         assert_eq!(live.counts().received.load(Ordering::Relaxed), 31);
+    }
+
+    #[test]
+    fn predicting_the_input_takes_out_the_lag_of_a_slow_input() {
+        // A 1 Hz manoeuvre sent at 60 Hz lags the same one at 1 kHz by about a sample
+        // (half of it the hold of each sample, half the platform stepping from one to the
+        // next); looking 1/60 s ahead takes nearly all of it out.
+        use measure::{lag, surge};
+        let held = lag(60.0, 1.0, 0.0);
+        let predicted = lag(60.0, 1.0, 1.0 / 60.0);
+        assert!((0.012..0.022).contains(&held), "{held}");
+        assert!(predicted.abs() < 0.003, "{predicted}");
+        // And the platform no longer steps at each sample: its largest move in a tick.
+        let largest_step = |trace: Vec<(f64, f64)>| {
+            (trace.windows(2))
+                .map(|w| (w[1].1 - w[0].1).abs())
+                .fold(0.0, f64::max)
+        };
+        let stepped = largest_step(surge(60.0, 1.0, 0.0, 5.0));
+        let smooth = largest_step(surge(60.0, 1.0, 1.0 / 60.0, 5.0));
+        assert!(smooth * 5.0 < stepped, "{smooth} against {stepped}");
     }
 
     #[test]
