@@ -509,3 +509,85 @@ fn board_formats_need_a_range_apply_no_channel_map_and_let_go_only_at_home() {
     assert_eq!(idle("home"), 2);
     assert_eq!(idle("hold"), 0);
 }
+
+#[test]
+fn device_sim_reads_each_smc3_board_over_udp_and_each_odrive_board_over_serial() {
+    let timing = ["--duration", "1", "--rate", "100", "--ramp", "0.2"];
+    // SMC3 over UDP: two boards, two addresses.
+    let addresses = [free_port(), free_port()];
+    let sims: Vec<_> = (addresses.iter().zip(["1", "2"]))
+        .map(|(address, board)| device_sim(address, &["--format", "smc3", "--board", board]))
+        .collect();
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "paired",
+                "--transport",
+                "udp",
+                "--format",
+                "smc3",
+            ][..],
+            &["--address", &addresses[0], "--address2", &addresses[1]],
+            &timing,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent = frames_sent(&o);
+    for sim in sims {
+        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+        assert!(
+            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
+            "{log}"
+        );
+    }
+    // ODrive over serial: three pty pairs.
+    let pairs = [PtyPair::new(), PtyPair::new(), PtyPair::new()];
+    let sims: Vec<_> = (pairs.iter().zip(["1", "2", "3"]))
+        .map(|(pair, board)| {
+            device_sim_on(
+                &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
+                &["--format", "odrive", "--board", board],
+            )
+        })
+        .collect();
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "paired",
+                "--transport",
+                "serial",
+                "--format",
+                "odrive",
+            ][..],
+            &["--port", PtyPair::path(&pairs[0].a)],
+            &["--port2", PtyPair::path(&pairs[1].a)],
+            &["--port3", PtyPair::path(&pairs[2].a), "--baud", "1000000"],
+            &timing,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent = frames_sent(&o);
+    for (board, sim) in sims.into_iter().enumerate() {
+        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+        assert!(
+            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
+            "{log}"
+        );
+        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
+        let mine = 6 + 2 * board..8 + 2 * board;
+        assert!(rows.iter().all(|r| {
+            r[5] == 5.0
+                && r[mine.clone()]
+                    .iter()
+                    .all(|v| (550_000.0..=1_300_000.0).contains(v))
+        }));
+    }
+}
