@@ -463,6 +463,13 @@ mod tests {
             .unwrap_or_else(|e| panic!("{e}"));
     }
 
+    /// A live input on a free loopback port for `scenario`, and where it listens.
+    fn listening(scenario: &Scenario) -> (LiveCue, std::net::SocketAddr) {
+        let live = LiveCue::bind("udp:127.0.0.1:0", scenario).unwrap_or_else(|e| panic!("{e}"));
+        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        (live, at)
+    }
+
     /// Wait until the socket has something to read (loopback delivers at once, almost).
     fn settle() {
         std::thread::sleep(std::time::Duration::from_millis(20));
@@ -471,9 +478,7 @@ mod tests {
     #[test]
     fn live_samples_give_the_poses_of_the_recording_and_a_stall_fades_to_neutral() {
         let scenario = Scenario::seed();
-        let mut live =
-            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
-        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let (mut live, at) = listening(&scenario);
         let samples: Vec<(f64, VehicleMotion)> = (0..50)
             .map(|k| {
                 let t = 10.0 + 0.02 * f64::from(k);
@@ -534,9 +539,7 @@ mod tests {
         // tick takes at least one and at most its share, and after enough ticks the pose
         // is the one the whole recording gives.
         let scenario = Scenario::seed();
-        let mut live =
-            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
-        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let (mut live, at) = listening(&scenario);
         let samples: Vec<(f64, VehicleMotion)> = (0..200)
             .map(|k| {
                 let motion = VehicleMotion {
@@ -601,9 +604,7 @@ mod tests {
         // not a stall by silence, yet the cue fades to home within the fade time, and the
         // next race sample fades it in again.
         let scenario = Scenario::seed();
-        let mut live =
-            LiveCue::bind("udp:127.0.0.1:0", &scenario).unwrap_or_else(|e| panic!("{e}"));
-        let at = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
+        let (mut live, at) = listening(&scenario);
         let sender = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
         let home = scenario.geometry.home_pose();
         let mut t = 0.0;

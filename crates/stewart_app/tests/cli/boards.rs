@@ -332,130 +332,6 @@ fn odrive_boards_get_turns_and_are_put_in_closed_loop_then_idle() {
 }
 
 #[test]
-fn device_sim_reads_each_smc3_board_over_serial_and_each_odrive_board_over_udp() {
-    // SMC3: two pty pairs, a device-sim on each, the link on both.
-    let (one, two) = (PtyPair::new(), PtyPair::new());
-    let sims: Vec<_> = [(&one, "1"), (&two, "2")]
-        .iter()
-        .map(|(pair, board)| {
-            device_sim_on(
-                &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
-                &["--format", "smc3", "--board", board],
-            )
-        })
-        .collect();
-    let timing = ["--duration", "1", "--rate", "100", "--ramp", "0.2"];
-    let o = stewart(
-        &[
-            &[
-                "link",
-                "--preset",
-                "paired",
-                "--transport",
-                "serial",
-                "--format",
-                "smc3",
-            ][..],
-            &[
-                "--port",
-                PtyPair::path(&one.a),
-                "--port2",
-                PtyPair::path(&two.a),
-            ],
-            &["--baud", "1000000"],
-            &timing,
-        ]
-        .concat(),
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sent = frames_sent(&o);
-    for (board, sim) in sims.into_iter().enumerate() {
-        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
-        assert!(
-            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
-            "{log}"
-        );
-        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
-        // Unit 4; armed from the first frame ([ena] came first); this board's columns
-        // within 0–1023, the other board's empty.
-        for r in &rows {
-            assert_eq!((r[2], r[5]), (1.0, 4.0));
-            let (mine, others) = if board == 0 {
-                (&r[6..9], &r[9..12])
-            } else {
-                (&r[9..12], &r[6..9])
-            };
-            assert!(mine.iter().all(|v| (0.0..=1023.0).contains(v)), "{r:?}");
-            assert!(others.iter().all(|&v| v == 0.0), "{r:?}");
-        }
-    }
-    // ODrive: three boards over UDP, each read back.
-    let addresses = [free_port(), free_port(), free_port()];
-    let sims: Vec<_> = (addresses.iter().zip(["1", "2", "3"]))
-        .map(|(address, board)| device_sim(address, &["--format", "odrive", "--board", board]))
-        .collect();
-    let o = stewart(
-        &[
-            &[
-                "link",
-                "--preset",
-                "paired",
-                "--transport",
-                "udp",
-                "--format",
-                "odrive",
-            ][..],
-            &["--address", &addresses[0], "--address2", &addresses[1]],
-            &["--address3", &addresses[2]],
-            &timing,
-        ]
-        .concat(),
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sent = frames_sent(&o);
-    for (board, sim) in sims.into_iter().enumerate() {
-        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
-        assert!(
-            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
-            "{log}"
-        );
-        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
-        // Unit 5, millionths of a turn: with one turn per metre, the legs in micrometres,
-        // in this board's two columns.
-        let mine = 6 + 2 * board..8 + 2 * board;
-        for r in &rows {
-            assert_eq!(r[5], 5.0);
-            assert!(
-                r[mine.clone()]
-                    .iter()
-                    .all(|v| (550_000.0..=1_300_000.0).contains(v)),
-                "{r:?}"
-            );
-        }
-    }
-    // A missing board's port is one clear error before anything is sent.
-    let o = stewart(&[
-        "link",
-        "--preset",
-        "paired",
-        "--transport",
-        "udp",
-        "--format",
-        "odrive",
-        "--address",
-        &addresses[0],
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("drives 3 boards: give board 2's port too"),
-        "{}",
-        stderr(&o)
-    );
-}
-
-#[test]
 fn board_formats_need_a_range_apply_no_channel_map_and_let_go_only_at_home() {
     // No stroke: every leg would scale from 0–1000 m (all at the bottom): refused.
     for format in ["smc3", "odrive", "template:{a1:u16be}"] {
@@ -510,84 +386,133 @@ fn board_formats_need_a_range_apply_no_channel_map_and_let_go_only_at_home() {
     assert_eq!(idle("hold"), 0);
 }
 
-#[test]
-fn device_sim_reads_each_smc3_board_over_udp_and_each_odrive_board_over_serial() {
-    let timing = ["--duration", "1", "--rate", "100", "--ramp", "0.2"];
-    // SMC3 over UDP: two boards, two addresses.
-    let addresses = [free_port(), free_port()];
-    let sims: Vec<_> = (addresses.iter().zip(["1", "2"]))
-        .map(|(address, board)| device_sim(address, &["--format", "smc3", "--board", board]))
+/// `link` of the paired preset in board `format` (2 or 3 boards) over `transport` (`serial`
+/// on pty pairs, or `udp`), a `device-sim` standing in for each board: the frames sent, and
+/// each board's record (rows of numbers), each read without damage.
+fn boards_end_to_end(format: &str, boards: usize, transport: &str) -> (usize, Vec<Vec<Vec<f64>>>) {
+    let serial = transport == "serial";
+    let pairs: Vec<PtyPair> = (0..boards)
+        .filter(|_| serial)
+        .map(|_| PtyPair::new())
         .collect();
-    let o = stewart(
-        &[
-            &[
-                "link",
-                "--preset",
-                "paired",
-                "--transport",
-                "udp",
-                "--format",
-                "smc3",
-            ][..],
-            &["--address", &addresses[0], "--address2", &addresses[1]],
-            &timing,
-        ]
-        .concat(),
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sent = frames_sent(&o);
-    for sim in sims {
-        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
-        assert!(
-            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
-            "{log}"
-        );
-    }
-    // ODrive over serial: three pty pairs.
-    let pairs = [PtyPair::new(), PtyPair::new(), PtyPair::new()];
-    let sims: Vec<_> = (pairs.iter().zip(["1", "2", "3"]))
-        .map(|(pair, board)| {
-            device_sim_on(
-                &["--serial", PtyPair::path(&pair.b), "--baud", "1000000"],
-                &["--format", "odrive", "--board", board],
-            )
+    let addresses: Vec<String> = (0..boards).map(|_| free_port()).collect();
+    let sims: Vec<_> = (1..=boards)
+        .map(|n| {
+            let board = ["--format", format, "--board", &n.to_string()].map(str::to_owned);
+            let board: Vec<&str> = board.iter().map(String::as_str).collect();
+            if serial {
+                let port = PtyPair::path(&pairs[n - 1].b);
+                device_sim_on(&["--serial", port, "--baud", "1000000"], &board)
+            } else {
+                device_sim(&addresses[n - 1], &board)
+            }
         })
         .collect();
-    let o = stewart(
-        &[
-            &[
-                "link",
-                "--preset",
-                "paired",
-                "--transport",
-                "serial",
-                "--format",
-                "odrive",
-            ][..],
-            &["--port", PtyPair::path(&pairs[0].a)],
-            &["--port2", PtyPair::path(&pairs[1].a)],
-            &["--port3", PtyPair::path(&pairs[2].a), "--baud", "1000000"],
-            &timing,
-        ]
-        .concat(),
-    );
+    let mut args: Vec<String> = ["link", "--preset", "paired", "--transport", transport]
+        .into_iter()
+        .chain([
+            "--format",
+            format,
+            "--duration",
+            "1",
+            "--rate",
+            "100",
+            "--ramp",
+            "0.2",
+        ])
+        .map(str::to_owned)
+        .collect();
+    for n in 1..=boards {
+        let suffix = if n == 1 { String::new() } else { n.to_string() };
+        let (flag, end) = match serial {
+            true => (
+                format!("--port{suffix}"),
+                PtyPair::path(&pairs[n - 1].a).to_owned(),
+            ),
+            false => (format!("--address{suffix}"), addresses[n - 1].clone()),
+        };
+        args.extend([flag, end]);
+    }
+    if serial {
+        args.extend(["--baud".to_owned(), "1000000".to_owned()]);
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let o = stewart(&args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent = frames_sent(&o);
-    for (board, sim) in sims.into_iter().enumerate() {
-        let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
-        let log = String::from_utf8_lossy(&sim.stderr).into_owned();
-        assert!(
-            log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
-            "{log}"
-        );
-        let (_, rows) = parse_csv(&String::from_utf8_lossy(&sim.stdout));
-        let mine = 6 + 2 * board..8 + 2 * board;
-        assert!(rows.iter().all(|r| {
-            r[5] == 5.0
-                && r[mine.clone()]
-                    .iter()
-                    .all(|v| (550_000.0..=1_300_000.0).contains(v))
-        }));
+    let records = sims
+        .into_iter()
+        .map(|sim| {
+            let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+            let log = String::from_utf8_lossy(&sim.stderr).into_owned();
+            assert!(
+                log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
+                "{log}"
+            );
+            parse_csv(&String::from_utf8_lossy(&sim.stdout)).1
+        })
+        .collect();
+    (sent, records)
+}
+
+#[test]
+fn device_sim_reads_each_smc3_board_over_serial_and_over_udp() {
+    for transport in ["serial", "udp"] {
+        let (_, records) = boards_end_to_end("smc3", 2, transport);
+        for (board, rows) in records.iter().enumerate() {
+            // Unit 4; armed from the first frame ([ena] came first); this board's columns
+            // within 0–1023, the other board's empty.
+            let (mine, others) = if board == 0 {
+                (6..9, 9..12)
+            } else {
+                (9..12, 6..9)
+            };
+            for r in rows {
+                assert_eq!((r[2], r[5]), (1.0, 4.0), "{transport}");
+                assert!(
+                    r[mine.clone()].iter().all(|v| (0.0..=1023.0).contains(v)),
+                    "{r:?}"
+                );
+                assert!(r[others.clone()].iter().all(|&v| v == 0.0), "{r:?}");
+            }
+        }
     }
+}
+
+#[test]
+fn device_sim_reads_each_odrive_board_over_udp_and_over_serial() {
+    for transport in ["udp", "serial"] {
+        let (_, records) = boards_end_to_end("odrive", 3, transport);
+        for (board, rows) in records.iter().enumerate() {
+            // Unit 5, millionths of a turn: with one turn per metre, the legs in
+            // micrometres, in this board's two columns.
+            let mine = 6 + 2 * board..8 + 2 * board;
+            for r in rows {
+                assert_eq!(r[5], 5.0, "{transport}");
+                let legs = &r[mine.clone()];
+                assert!(
+                    legs.iter().all(|v| (550_000.0..=1_300_000.0).contains(v)),
+                    "{r:?}"
+                );
+            }
+        }
+    }
+    // A missing board's port is one clear error before anything is sent.
+    let o = stewart(&[
+        "link",
+        "--preset",
+        "paired",
+        "--transport",
+        "udp",
+        "--format",
+        "odrive",
+        "--address",
+        &free_port(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("drives 3 boards: give board 2's port too"),
+        "{}",
+        stderr(&o)
+    );
 }
