@@ -14,7 +14,9 @@
 //!
 //! The two of one frame (same session and `frameIdentifier`) make one sample, at
 //! `sessionTime`; the first to arrive reads as [`Reading::Ignored`], as do packets of the
-//! other ids. Packets of another year's format (F1 24 can send 2023's and 2022's) are
+//! other ids. A pair of the frame already made into a sample (the game paused sends its
+//! last frame again and again) reads as [`Reading::Idle`]: the cue fades to neutral, as in
+//! Forza's menus. Packets of another year's format (F1 24 can send 2023's and 2022's) are
 //! refused, naming the year.
 //!
 //! The specification draws the axes (pitch about X, yaw about Y, roll about Z; the world
@@ -60,6 +62,8 @@ pub(crate) struct Pairing {
     motion: Option<(Frame, [f64; 3])>,
     /// The last `Motion Ex`'s frame and its angular velocity `[X, Y, Z]`.
     motion_ex: Option<(Frame, [f64; 3])>,
+    /// The frame of the last pair made into a sample.
+    last_pair: Option<Frame>,
 }
 
 /// Which frame a packet belongs to: session, frame number, and its time.
@@ -117,6 +121,12 @@ pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, Veh
         {
             pairing.motion = None;
             pairing.motion_ex = None;
+            // The game paused sends its last frame again and again: not a new sample but
+            // a game at rest, faded to neutral as its menus are.
+            if pairing.last_pair.is_some_and(|last| same_frame(&last, &a)) {
+                return Ok(Reading::Idle);
+            }
+            pairing.last_pair = Some(a);
             Ok(Reading::Sample(VehicleSample {
                 t: Some(frame.time),
                 accel: [longitudinal, lateral, vertical].map(|g| GRAVITY * g),

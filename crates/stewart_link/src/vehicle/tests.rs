@@ -280,6 +280,12 @@ fn f1_motion_and_motion_ex_of_one_frame_make_one_sample() {
     );
     let pair = sample_of(&d.decode(&f1_motion_ex(12.7, 702, [0.0; 3])));
     assert_eq!(pair.t, Some(f64::from(12.7f32)));
+    // Paused, the game sends its last frame again: idle, not a sample older than the last.
+    d.decode(&f1_motion(12.7, 702, [0.0; 3]));
+    assert_eq!(
+        d.decode(&f1_motion_ex(12.7, 702, [0.0; 3])).reading,
+        Ok(Reading::Idle)
+    );
     // Other packets (a Car Telemetry, id 6) are nothing to use, and no error.
     let telemetry = d.decode(&f1(1352, 2024, 6, 12.8, 703, 5));
     assert_eq!(telemetry.format, Some(Format::F1));
