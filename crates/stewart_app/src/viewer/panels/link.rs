@@ -456,7 +456,18 @@ fn settings(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
     if let Some(stop) = choice::<LinkStop>(ui, t, "link.stop", link.stop) {
         *error = doc.edit_link(|l| l.stop = stop).err();
     }
-    egui::CollapsingHeader::new(t.tr("link.channels")).show(ui, |ui| channels(ui, doc, error, t));
+    // A board's own bytes apply no channel map (the link refuses one): ODrive asks for its
+    // turns instead.
+    match link.format {
+        LinkFormat::Binary | LinkFormat::Text => {
+            egui::CollapsingHeader::new(t.tr("link.channels"))
+                .show(ui, |ui| channels(ui, doc, error, t));
+        }
+        LinkFormat::Odrive => {
+            egui::CollapsingHeader::new(t.tr("link.turns")).show(ui, |ui| turns(ui, doc, error, t));
+        }
+        LinkFormat::Template | LinkFormat::Smc3 => {}
+    }
     if let Some(e) = error {
         widgets::not_applied(ui, e, t);
     }
@@ -557,6 +568,36 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
         // A home pose out of reach is said by the panels that show the pose.
         (Ok(_), Err(_)) => {}
     }
+}
+
+/// ODrive: each actuator's motor turns per unit of its value and turns at zero.
+fn turns(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerError>, t: Lang) {
+    let link = doc.scenario().link.clone();
+    let unit = doc.scenario().geometry.quantity().unit;
+    egui::Grid::new("link-turns").striped(true).show(ui, |ui| {
+        for head in [
+            t.tr("link.col_actuator"),
+            &t.fmt("link.col_turns_per_unit", &[("unit", &unit)]),
+            t.tr("link.col_turns_offset"),
+        ] {
+            ui.label(head);
+        }
+        ui.end_row();
+        for k in 0..6 {
+            ui.label(format!("{}", k + 1));
+            let mut per = link.turns_per_unit[k];
+            let mut offset = link.turns_offset[k];
+            let changed = ui.add(egui::DragValue::new(&mut per).speed(0.01)).changed()
+                | ui.add(egui::DragValue::new(&mut offset).speed(0.01))
+                    .changed();
+            if changed {
+                *error = doc
+                    .edit_link(|l| (l.turns_per_unit[k], l.turns_offset[k]) = (per, offset))
+                    .err();
+            }
+            ui.end_row();
+        }
+    });
 }
 
 /// Channel k: which actuator, scale, offset, reversed.

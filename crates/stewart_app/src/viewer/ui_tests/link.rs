@@ -348,6 +348,9 @@ fn a_board_protocol_asks_for_each_boards_port() {
     let link = h.state().scenario().link.clone();
     assert_eq!(link.port3.as_deref(), Some("/dev/ttyACM2"));
     assert_eq!(link.port2, None);
+    // The turns take the channel map's place (which a board format does not apply).
+    assert!(h.query_by_label("Turns (ODrive)").is_some());
+    assert!(h.query_by_label("Channels").is_none());
 }
 
 /// A `[link]` edit goes through the same path as every other: refused when unsound,
