@@ -57,21 +57,9 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     let started = Instant::now();
     let mut first: Option<Instant> = None;
     let mut last = Instant::now();
-    let mut tally = Tally {
-        rows: "t_s,seq,armed,estop,home,unit,v1,v2,v3,v4,v5,v6\n".to_owned(),
-        ..Tally::default()
-    };
     let stop = crate::interrupt::flag();
     let mut buf = [0u8; 2048];
-    // A serial line is one stream (frames may span reads); each datagram stands alone.
-    let mut stream = WireDecoder::new(args);
-    let model = ActuatorModel {
-        lag_s: args.lag_s,
-        speed_max: args.speed_max,
-        dead_band: args.dead_band,
-    };
-    let modelled = model != ActuatorModel::default();
-    let mut actuators = Actuators::new(model);
+    let mut controller = Controller::new(args);
     loop {
         if stop.load(std::sync::atomic::Ordering::Relaxed)
             || started.elapsed().as_secs_f64() >= args.duration
@@ -86,61 +74,12 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
         let now = Instant::now();
         let t0 = *first.get_or_insert(now);
         last = now;
-        let mut replies = Vec::new();
-        if input.datagrams {
-            // Each datagram stands alone.
-            stream.reset();
-        }
-        let decoder = &mut stream;
-        let skipped_before = decoder.skipped();
-        let commands_before = decoder.commands();
-        let mut any = false;
-        let mut damaged = false;
         let t = (now - t0).as_secs_f64();
-        for &b in &buf[..n] {
-            match decoder.push(b) {
-                // Another host's telemetry is not a set-point: not recorded, not answered.
-                Some(Ok(frame)) if frame.kind == FrameKind::Telemetry => any = true,
-                Some(Ok(frame)) => {
-                    any = true;
-                    record(&mut tally, t, &frame, args);
-                    let armed = frame.flags.armed && !frame.flags.estop;
-                    let measured = actuators.frame(t, &frame.values, armed);
-                    // A board of a template or a board protocol answers nothing.
-                    let template = matches!(
-                        args.format,
-                        WireFormat::Template(_) | WireFormat::Smc3 | WireFormat::Odrive
-                    );
-                    if args.telemetry && !template {
-                        replies.push(Frame {
-                            kind: FrameKind::Telemetry,
-                            values: if modelled { measured } else { frame.values },
-                            ..frame
-                        });
-                    }
-                }
-                Some(Err(_)) => {
-                    tally.bad += 1;
-                    damaged = true;
-                }
-                None => {}
-            }
-        }
-        any |= decoder.commands() > commands_before;
-        // Template bytes that matched no frame: a damaged frame (once a read).
-        if decoder.skipped() > skipped_before {
-            tally.bad += 1;
-            damaged = true;
-        }
-        if input.datagrams && !damaged && (!any || decoder.pending()) {
-            // A datagram with no frame in it at all, or that ends inside a line, is damaged
-            // too (once).
-            tally.bad += 1;
-        }
-        for reply in replies {
+        for reply in controller.read(&buf[..n], t, input.datagrams, args) {
             input.reply(&reply.encode())?;
         }
     }
+    let mut tally = controller.tally;
     let rows = std::mem::take(&mut tally.rows);
     output::emit_with(out.as_ref(), |w| w.write_all(rows.as_bytes()))?;
     let _ = writeln!(
@@ -157,6 +96,96 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// The stand-in controller: its decoder (a serial line is one stream, frames may span
+/// reads; each datagram stands alone), what it received, and its simulated actuators.
+struct Controller {
+    decoder: WireDecoder,
+    tally: Tally,
+    actuators: Actuators,
+    /// Whether the actuators lag, saturate or dead-band (else they are where told).
+    modelled: bool,
+    /// Whether set-points are answered with telemetry (a board of a template or a board
+    /// protocol answers nothing).
+    answers: bool,
+}
+
+impl Controller {
+    fn new(args: &DeviceSimArgs) -> Self {
+        let model = ActuatorModel {
+            lag_s: args.lag_s,
+            speed_max: args.speed_max,
+            dead_band: args.dead_band,
+        };
+        let board = matches!(
+            args.format,
+            WireFormat::Template(_) | WireFormat::Smc3 | WireFormat::Odrive
+        );
+        Self {
+            decoder: WireDecoder::new(args),
+            tally: Tally {
+                rows: "t_s,seq,armed,estop,home,unit,v1,v2,v3,v4,v5,v6\n".to_owned(),
+                ..Tally::default()
+            },
+            actuators: Actuators::new(model),
+            modelled: model != ActuatorModel::default(),
+            answers: args.telemetry && !board,
+        }
+    }
+
+    /// The bytes of one read (a datagram when `datagram`) at `t` seconds since the first:
+    /// frames recorded and counted, damage counted; the telemetry answers to send.
+    fn read(&mut self, bytes: &[u8], t: f64, datagram: bool, args: &DeviceSimArgs) -> Vec<Frame> {
+        let mut replies = Vec::new();
+        let decoder = &mut self.decoder;
+        if datagram {
+            // Each datagram stands alone.
+            decoder.reset();
+        }
+        let (skipped_before, commands_before) = (decoder.skipped(), decoder.commands());
+        let (mut any, mut damaged) = (false, false);
+        for &b in bytes {
+            match decoder.push(b) {
+                // Another host's telemetry is not a set-point: not recorded, not answered.
+                Some(Ok(frame)) if frame.kind == FrameKind::Telemetry => any = true,
+                Some(Ok(frame)) => {
+                    any = true;
+                    record(&mut self.tally, t, &frame, args);
+                    let armed = frame.flags.armed && !frame.flags.estop;
+                    let measured = self.actuators.frame(t, &frame.values, armed);
+                    if self.answers {
+                        replies.push(Frame {
+                            kind: FrameKind::Telemetry,
+                            values: if self.modelled {
+                                measured
+                            } else {
+                                frame.values
+                            },
+                            ..frame
+                        });
+                    }
+                }
+                Some(Err(_)) => {
+                    self.tally.bad += 1;
+                    damaged = true;
+                }
+                None => {}
+            }
+        }
+        any |= decoder.commands() > commands_before;
+        // Template bytes that matched no frame: a damaged frame (once a read).
+        if decoder.skipped() > skipped_before {
+            self.tally.bad += 1;
+            damaged = true;
+        }
+        if datagram && !damaged && (!any || decoder.pending()) {
+            // A datagram with no frame in it at all, or that ends inside a line, is damaged
+            // too (once).
+            self.tally.bad += 1;
+        }
+        replies
+    }
 }
 
 /// Reads binary frames, text lines or a template's frames, as `--format` says.
