@@ -9,11 +9,13 @@
 //! - [`draw_list`]: scene frame → instances, plates and lines (CPU);
 //! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
 //! - [`renderer`]: pipelines and the one draw entry point;
+//! - [`cad`]: CAD parts: STL, OBJ and glTF files read into meshes, placed by `[appearance]`;
 //! - [`offscreen`]: headless targets and read-back;
 //! - [`Picture`]: a view rendered off screen at its own quality, drawn into another pass;
 //! - [`gpu`]: adapter choice (a GPU, else lavapipe), honouring `WGPU_BACKEND` / `WGPU_ADAPTER_NAME`.
 
 pub mod analysis;
+pub mod cad;
 pub mod camera;
 mod camera_fit;
 pub mod colormap;

@@ -1,9 +1,10 @@
 //! The platform and its motion as data: angles and poses, the geometry and its layouts,
 //! the actuators (linear legs or rotary servos), pose limits, trajectories, the `[link]`
-//! table, and the scene to draw.
+//! table, the `[appearance]` table (CAD parts), and the scene to draw.
 
 pub mod actuator;
 pub mod angle;
+pub mod appearance;
 pub mod cueing_settings;
 pub mod dynamics_settings;
 pub mod geometry;

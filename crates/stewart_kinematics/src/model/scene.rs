@@ -3,7 +3,7 @@
 //! the stroke or past a servo's range (`solve::scene_frame` builds a frame from a pose);
 //! the renderer only chooses colours.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
 
 /// How a leg stands relative to its stroke.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,4 +91,79 @@ impl SceneFrame {
             }
         }
     }
+}
+
+/// Where a part's frame stands (see [`crate::model::appearance::Part`] for each part's):
+/// its origin and orientation in the base frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    /// The frame's origin, base frame, metres.
+    pub origin: Vector3<f64>,
+    /// The frame's orientation: its axes in the base frame.
+    pub rotation: UnitQuaternion<f64>,
+}
+
+impl SceneFrame {
+    /// The platform frame: its origin (the pose's position) and axes.
+    pub fn platform_placement(&self) -> Placement {
+        Placement {
+            origin: self.platform_centre,
+            rotation: UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(
+                self.platform_rotation,
+            )),
+        }
+    }
+
+    /// Leg `k`'s two moving parts: the body at the base joint and the rod at the
+    /// platform joint (for servos, the rod at the horn tip), each turned so its +y runs
+    /// along the leg from base (horn tip) to platform joint.
+    pub fn leg_placements(&self, k: usize) -> [Placement; 2] {
+        let leg = &self.legs[k];
+        let rotation = along_y(&(leg.top - leg.base));
+        [
+            Placement {
+                origin: leg.base,
+                rotation,
+            },
+            Placement {
+                origin: leg.top,
+                rotation,
+            },
+        ]
+    }
+
+    /// Servo `k`'s horn (`None` for linear legs): origin on the shaft's centre, +x along
+    /// the horn to its tip, +z along the shaft (the opposite of [`ServoFrame::axis`]) so
+    /// that the servo angle turns the horn about +z, +y up at angle 0.
+    pub fn horn_placement(&self, k: usize) -> Option<Placement> {
+        let servo = self.servos.as_ref()?.get(k)?;
+        let x = (servo.horn_tip - servo.shaft)
+            .try_normalize(0.0)
+            .unwrap_or_else(|| servo.axis.cross(&Vector3::z()));
+        let z = -servo.axis;
+        let y = z.cross(&x);
+        let axes = Matrix3::from_columns(&[x, y, z]);
+        Some(Placement {
+            origin: servo.shaft,
+            rotation: UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(axes)),
+        })
+    }
+
+    /// Actuator `k`'s rod: of a linear leg at the platform joint, of a servo at the horn
+    /// tip; +y along the leg towards the platform joint either way.
+    pub fn rod_placement(&self, k: usize) -> Placement {
+        let [start, end] = self.leg_placements(k);
+        if self.servos.is_some() { start } else { end }
+    }
+}
+
+/// The shortest rotation taking +y onto `d` (half a turn about z when `d` points along −y;
+/// no turn when `d` is zero).
+fn along_y(d: &Vector3<f64>) -> UnitQuaternion<f64> {
+    if d.norm() == 0.0 || !d.iter().all(|v| v.is_finite()) {
+        return UnitQuaternion::identity();
+    }
+    UnitQuaternion::rotation_between(&Vector3::y(), d).unwrap_or_else(|| {
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::PI)
+    })
 }

@@ -173,4 +173,67 @@ mod tests {
             assert_eq!(s.status, LegStatus::OverLimit);
         }
     }
+
+    #[test]
+    fn part_frames_stand_where_the_appearance_table_says() {
+        use crate::model::angle::Angle;
+        use crate::model::pose::Pose;
+        let g = Geometry::seed();
+        let pose = Pose::new(
+            Vector3::new(0.05, -0.03, 0.85),
+            Angle::from_degrees(4.0),
+            Angle::from_degrees(-3.0),
+            Angle::from_degrees(10.0),
+        );
+        let frame = g.scene_frame(&pose, Vec::new());
+        // The platform frame carries each joint from the platform's own coordinates.
+        let p = frame.platform_placement();
+        for (a, q) in g.platform_joints().iter().zip(&frame.platform_joints) {
+            assert!((p.origin + p.rotation * a - q).norm() < 1e-12);
+        }
+        for k in 0..6 {
+            let [body, rod] = frame.leg_placements(k);
+            let leg = &frame.legs[k];
+            assert_eq!((body.origin, rod.origin), (leg.base, leg.top));
+            assert_eq!(frame.rod_placement(k), rod);
+            // +y runs along the leg: the body's +y · length reaches the platform joint.
+            let tip = body.origin + body.rotation * Vector3::new(0.0, leg.length, 0.0);
+            assert!((tip - leg.top).norm() < 1e-12);
+            assert!(frame.horn_placement(k).is_none());
+        }
+        // Servos: +x along the horn, turned by the servo angle about +z from its zero
+        // direction, +y up at angle 0.
+        let g = crate::test_support::servo_geometry();
+        let frame = g.scene_frame(
+            &Pose::new(
+                Vector3::new(0.004, 0.0, g.home_height() + 0.003),
+                Angle::from_degrees(3.0),
+                Angle::from_degrees(-2.0),
+                Angle::from_degrees(5.0),
+            ),
+            Vec::new(),
+        );
+        let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));
+        let rotary = g.rotary().unwrap_or_else(|| panic!("rotary"));
+        for (k, servo) in servos.iter().enumerate() {
+            let h = frame.horn_placement(k).unwrap_or_else(|| panic!("horn"));
+            assert_eq!(h.origin, servo.shaft);
+            let x = h.rotation * Vector3::x();
+            let tip = servo.shaft + x * rotary.horn_length();
+            assert!((tip - servo.horn_tip).norm() < 1e-12);
+            let beta = rotary.horn_angles()[k].radians();
+            let zero = Vector3::new(beta.cos(), beta.sin(), 0.0);
+            let angle = x.dot(&Vector3::z()).atan2(x.dot(&zero)).to_degrees();
+            let theta = servo.angle_deg.unwrap_or_else(|| panic!("reachable"));
+            assert!((angle - theta).abs() < 1e-9, "{angle} vs {theta}");
+            // Turning about +z by θ takes the zero direction onto the horn.
+            let z = h.rotation * Vector3::z();
+            let turned = nalgebra::UnitQuaternion::from_axis_angle(
+                &nalgebra::Unit::new_normalize(z),
+                theta.to_radians(),
+            ) * zero;
+            assert!((turned - x).norm() < 1e-9);
+            assert_eq!(frame.rod_placement(k).origin, servo.horn_tip);
+        }
+    }
 }

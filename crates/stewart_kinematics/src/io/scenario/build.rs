@@ -131,6 +131,9 @@ pub(crate) fn parse(
     let dynamics = checked_table(&src, text, parsed.dynamics.as_ref(), |d| {
         d.problem().map(|p| (p.key, p.reason))
     })?;
+    let appearance = checked_table(&src, text, parsed.appearance.as_ref(), |a| {
+        a.problem().map(|p| (p.key, p.reason))
+    })?;
     let name = parsed.name.unwrap_or_else(|| {
         Path::new(file)
             .file_stem()
@@ -147,6 +150,7 @@ pub(crate) fn parse(
         link,
         cueing,
         dynamics,
+        appearance,
     };
     Ok(scenario)
 }

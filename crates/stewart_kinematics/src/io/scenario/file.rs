@@ -37,6 +37,8 @@ pub(crate) struct ScenarioFile {
     pub cueing: Option<Spanned<crate::model::cueing_settings::CueingSettings>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<Spanned<crate::model::dynamics_settings::DynamicsSettings>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub appearance: Option<Spanned<crate::model::appearance::AppearanceSettings>>,
 }
 
 /// `[payload]`: the moving mass (platform and load).

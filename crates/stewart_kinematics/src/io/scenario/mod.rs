@@ -32,6 +32,9 @@
 //! [link]                           # optional: sending set-points to hardware
 //! transport = "udp"                # see crate::model::link_settings for every key
 //! address = "192.168.1.20:9000"
+//! [appearance.base]                # optional: a CAD part drawn for a body
+//! file = "parts/base.stl"          # see crate::model::appearance for every key
+//! scale = "mm"
 //! ```
 //!
 //! See `presets/` (this crate) for a file of every trajectory kind and docs/guide/file-format.md for every key.
@@ -47,6 +50,7 @@ pub use error::{ScenarioError, ScenarioProblem};
 
 use crate::analysis::checks::CheckSettings;
 use crate::analysis::forces::Payload;
+use crate::model::appearance::AppearanceSettings;
 use crate::model::cueing_settings::CueingSettings;
 use crate::model::dynamics_settings::DynamicsSettings;
 use crate::model::geometry::Geometry;
@@ -78,6 +82,9 @@ pub struct Scenario {
     /// What the actuators add to the moving mass: stiffness, friction, leg parts
     /// (`[dynamics]`).
     pub dynamics: DynamicsSettings,
+    /// Mesh files drawn for the base, the platform and the actuators' parts
+    /// (`[appearance]`).
+    pub appearance: AppearanceSettings,
 }
 
 impl Scenario {
@@ -95,6 +102,7 @@ impl Scenario {
             link: LinkSettings::default(),
             cueing: CueingSettings::default(),
             dynamics: DynamicsSettings::default(),
+            appearance: AppearanceSettings::default(),
         }
     }
 

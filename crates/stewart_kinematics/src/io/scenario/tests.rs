@@ -544,3 +544,54 @@ fn a_fixed_size_array_with_a_value_too_many_or_too_few_is_refused_not_cut() {
         assert!(e.contains(", line "), "{table}: {e}");
     }
 }
+
+#[test]
+fn the_appearance_table_reads_writes_back_and_names_bad_values() {
+    use crate::model::appearance::{Colour, MeshScale, Part};
+    let s = parse(&format!(
+        "{GEOMETRY}[appearance.base]\nfile = \"parts/base.stl\"\nscale = \"mm\"\n\n[appearance.rod]\nfile = \"rod.glb\"\nscale = 0.5\nrotation_deg = [90, 0, 0]\noffset_m = [0, 0.01, 0]\ncolour = \"#c0c0c0\"\n"
+    ))
+    .unwrap_or_else(|e| panic!("{e}"));
+    let base = s
+        .appearance
+        .part(Part::Base)
+        .unwrap_or_else(|| panic!("base"));
+    assert_eq!(
+        (base.file.as_str(), base.scale),
+        ("parts/base.stl", MeshScale::Millimetre)
+    );
+    let rod = s
+        .appearance
+        .part(Part::Rod)
+        .unwrap_or_else(|| panic!("rod"));
+    assert_eq!(rod.scale, MeshScale::Factor(0.5));
+    assert_eq!(rod.rotation_deg, [90.0, 0.0, 0.0]);
+    assert_eq!(rod.colour, Some(Colour([0xc0, 0xc0, 0xc0])));
+    assert!(s.appearance.part(Part::Platform).is_none());
+    let back = parse(&s.to_toml()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(back.appearance, s.appearance);
+    assert!(
+        !parse(GEOMETRY)
+            .map(|s| s.to_toml())
+            .unwrap_or_default()
+            .contains("[appearance")
+    );
+    assert_eq!(
+        error(&format!(
+            "{GEOMETRY}[appearance.rod]\nfile = \"rod.stl\"\noffset_m = [0, 0, 1e9]\n"
+        )),
+        "s.toml, line 9, column 12: `appearance.rod.offset_m` each coordinate must be a finite number within ±100 m, got 1000000000"
+    );
+    let bad_scale = error(&format!(
+        "{GEOMETRY}[appearance.rod]\nfile = \"rod.stl\"\nscale = \"feet\"\n"
+    ));
+    assert!(
+        bad_scale.starts_with("s.toml, line 9, column 9: ")
+            && bad_scale.contains("`feet` is not mm, cm, m, in"),
+        "{bad_scale}"
+    );
+    assert!(
+        error(&format!("{GEOMETRY}[appearance.wheel]\nfile = \"w.stl\"\n"))
+            .contains("unknown field `wheel`"),
+    );
+}

@@ -218,6 +218,9 @@ pub(super) fn to_toml(scenario: &Scenario) -> String {
         dynamics: (scenario.dynamics
             != crate::model::dynamics_settings::DynamicsSettings::default())
         .then(|| s(scenario.dynamics.clone())),
+        appearance: (scenario.appearance
+            != crate::model::appearance::AppearanceSettings::default())
+        .then(|| s(scenario.appearance.clone())),
     };
     // Serialising plain numbers, strings and tables cannot fail.
     let text =

@@ -495,8 +495,9 @@ pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
     })
 }
 
-/// Apply `KEY=VALUE` assignments in order (`link.*` keys take words, see
-/// [`crate::model::link_settings::LinkSettings::set_text`]); the first refusal stops and is returned, and
+/// Apply `KEY=VALUE` assignments in order (`link.*` and `appearance.*` keys take words,
+/// see [`crate::model::link_settings::LinkSettings::set_text`] and
+/// [`crate::model::appearance::AppearanceSettings::set_text`]); the first refusal stops and is returned, and
 /// the scenario is then left as it was before any of them.
 pub fn apply_all<'a>(
     scenario: &mut Scenario,
@@ -510,6 +511,19 @@ pub fn apply_all<'a>(
             edited
                 .link
                 .set_text(link_key, value)
+                .map_err(|p| SettingError::Invalid {
+                    key: p.key,
+                    value: value.trim().to_owned(),
+                    reason: p.reason,
+                })?;
+            continue;
+        }
+        if let Some((key, value)) = text.split_once('=')
+            && let Some(part_key) = key.trim().strip_prefix("appearance.")
+        {
+            edited
+                .appearance
+                .set_text(part_key, value)
                 .map_err(|p| SettingError::Invalid {
                     key: p.key,
                     value: value.trim().to_owned(),

@@ -1,0 +1,192 @@
+//! A scenario's `[appearance]` table read: each part's mesh file loaded (paths relative to
+//! the scenario file's folder) and placed in its part's frame by the table's scale,
+//! rotation and offset.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use glam::{EulerRot, Mat4, Quat, Vec3};
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::appearance::{AppearanceSettings, MeshScale, Part, PartLook};
+use thiserror::Error;
+
+use super::{CadError, PartMesh};
+
+/// One part's mesh, ready to place.
+#[derive(Clone, Debug)]
+pub struct LoadedPart {
+    /// The file as read.
+    pub mesh: Arc<PartMesh>,
+    /// From the file's units and axes into the part's frame: offset · rotation · scale.
+    pub transform: Mat4,
+    /// The table's colour (sRGB, alpha), which wins over the file's.
+    pub colour: Option<[f32; 4]>,
+    /// The file's path as read.
+    pub path: PathBuf,
+}
+
+/// The meshes of every part that has one.
+#[derive(Clone, Debug, Default)]
+pub struct PartSet {
+    parts: [Option<LoadedPart>; 5],
+}
+
+/// Why a part's mesh was refused: the table key and file at fault, and the reason.
+#[derive(Debug, Error)]
+#[error("`appearance.{part}.{key}` ({file}): {fault}")]
+pub struct PartError {
+    /// The part.
+    pub part: Part,
+    /// The key at fault: `file` or `scale`.
+    pub key: &'static str,
+    /// The file as the table names it.
+    pub file: String,
+    /// What is wrong.
+    pub fault: PartFault,
+}
+
+/// What is wrong with a part's mesh.
+#[derive(Debug, Error)]
+pub enum PartFault {
+    /// The file could not be read as a mesh.
+    #[error(transparent)]
+    Cad(#[from] CadError),
+    /// At its scale the part is absurdly large or small against the platform.
+    #[error(
+        "at scale `{scale}` the part is {size_m:.3e} m across, against a platform of {platform_m:.3} m: {hint}"
+    )]
+    Scale {
+        /// The scale as written.
+        scale: String,
+        /// The part's size at that scale, metres.
+        size_m: f64,
+        /// The platform's size, metres.
+        platform_m: f64,
+        /// What scale would fit.
+        hint: String,
+    },
+}
+
+/// The largest and smallest part against the platform's size.
+const SIZE_RATIO: (f64, f64) = (1e-3, 50.0);
+
+fn slot(part: Part) -> usize {
+    Part::ALL.iter().position(|&p| p == part).unwrap_or(0)
+}
+
+impl PartSet {
+    /// No part has a mesh.
+    pub fn none() -> Self {
+        Self::default()
+    }
+
+    /// Read the meshes `appearance` names for a platform of actuator `kind` and size
+    /// `platform_m` (the larger plate radius), files relative to `folder`. Meshes of
+    /// `previous` read from the same path are kept rather than read again (a slider
+    /// moving a part's offset does not reread its file).
+    pub fn load(
+        appearance: &AppearanceSettings,
+        folder: &Path,
+        kind: ActuatorKind,
+        platform_m: f64,
+        previous: Option<&PartSet>,
+    ) -> Result<PartSet, PartError> {
+        let mut set = PartSet::default();
+        for (part, look) in appearance.parts().filter(|(p, _)| p.applies_to(kind)) {
+            let path = folder.join(&look.file);
+            let error = |key, fault| PartError {
+                part,
+                key,
+                file: look.file.clone(),
+                fault,
+            };
+            let kept = previous
+                .and_then(|p| p.get(part))
+                .filter(|p| p.path == path)
+                .map(|p| Arc::clone(&p.mesh));
+            let mesh = match kept {
+                Some(mesh) => mesh,
+                None => Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?),
+            };
+            check_size(&mesh, look.scale, platform_m).map_err(|f| error("scale", f))?;
+            set.parts[slot(part)] = Some(LoadedPart {
+                transform: transform(look),
+                colour: look.colour.map(|c| c.rgba()),
+                mesh,
+                path,
+            });
+        }
+        Ok(set)
+    }
+
+    /// The mesh of `part`, if it has one.
+    pub fn get(&self, part: Part) -> Option<&LoadedPart> {
+        self.parts[slot(part)].as_ref()
+    }
+
+    /// Whether no part has a mesh.
+    pub fn is_empty(&self) -> bool {
+        self.parts.iter().all(Option::is_none)
+    }
+
+    /// How many triangles the parts hold (each counted once, however often drawn).
+    pub fn triangles(&self) -> usize {
+        self.parts.iter().flatten().map(|p| p.mesh.triangles).sum()
+    }
+}
+
+/// The table's placement of a file in its part's frame: offset · Rz · Ry · Rx · scale.
+pub fn transform(look: &PartLook) -> Mat4 {
+    let [rx, ry, rz] = look.rotation_deg.map(|d| (d as f32).to_radians());
+    Mat4::from_scale_rotation_translation(
+        Vec3::splat(look.scale.metres() as f32),
+        Quat::from_euler(EulerRot::ZYX, rz, ry, rx),
+        Vec3::from_array(look.offset_m.map(|v| v as f32)),
+    )
+}
+
+/// Refuse a scale that makes the part more than 50 times the platform's size or less
+/// than a thousandth of it, naming the unit that would fit.
+fn check_size(mesh: &PartMesh, scale: MeshScale, platform_m: f64) -> Result<(), PartFault> {
+    let size = f64::from(mesh.size());
+    let size_m = size * scale.metres();
+    let ratio = size_m / platform_m;
+    if !platform_m.is_finite()
+        || platform_m <= 0.0
+        || (SIZE_RATIO.0..=SIZE_RATIO.1).contains(&ratio)
+    {
+        return Ok(());
+    }
+    let best = [
+        MeshScale::Millimetre,
+        MeshScale::Centimetre,
+        MeshScale::Metre,
+        MeshScale::Inch,
+    ]
+    .into_iter()
+    .min_by(|a, b| {
+        let off = |s: &MeshScale| (size * s.metres() / platform_m).ln().abs();
+        off(a).total_cmp(&off(b))
+    })
+    .unwrap_or(MeshScale::Metre);
+    let hint = if (SIZE_RATIO.0..=SIZE_RATIO.1).contains(&(size * best.metres() / platform_m)) {
+        format!(
+            "is the file in {}? (`scale = \"{}\"`)",
+            match best {
+                MeshScale::Millimetre => "millimetres",
+                MeshScale::Centimetre => "centimetres",
+                MeshScale::Inch => "inches",
+                _ => "metres",
+            },
+            best.word()
+        )
+    } else {
+        "give the metres per file unit as the scale".to_owned()
+    };
+    Err(PartFault::Scale {
+        scale: scale.word(),
+        size_m,
+        platform_m,
+        hint,
+    })
+}

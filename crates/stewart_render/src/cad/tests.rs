@@ -1,0 +1,282 @@
+//! The CAD readers against the shipped example parts (made by
+//! `scripts/make-cad-examples.py`, whose numbers these check) and against broken files.
+
+use std::path::{Path, PathBuf};
+
+use glam::Vec3;
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::appearance::{AppearanceSettings, MeshScale, Part, PartLook};
+
+use super::parts::{PartFault, PartSet};
+use super::{CadError, Location, load};
+
+fn example(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/cad")
+        .join(name)
+}
+
+fn near(a: Vec3, b: Vec3, tol: f32) -> bool {
+    (a - b).abs().max_element() <= tol
+}
+
+#[test]
+fn the_example_parts_read_with_their_sizes_colours_and_frames() {
+    // Binary STL in millimetres: the hexagon's corners at 1100 mm, top face at z = 0.
+    let base = load(&example("base.stl")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(base.triangles, 1608);
+    assert!(
+        near(
+            base.bounds[1],
+            Vec3::new(1100.0 * 0.866_025_4, 1100.0, 0.0),
+            0.1
+        ),
+        "{:?}",
+        base.bounds
+    );
+    assert!((base.bounds[0].z + 40.0).abs() < 1e-3);
+    assert_eq!(base.pieces[0].colour, None);
+    // ASCII STL: the rod reaches down along -y to -760 mm.
+    let rod = load(&example("rod.stl")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(rod.triangles, 512);
+    assert!((rod.bounds[0].y + 760.0).abs() < 1e-3 && rod.bounds[1].y.abs() < 1e-3);
+    // OBJ with two MTL colours.
+    let platform = load(&example("platform.obj")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(platform.triangles, 280);
+    let colours: Vec<_> = platform.pieces.iter().map(|p| p.colour).collect();
+    assert!(
+        colours.contains(&Some([0.85, 0.45, 0.12, 1.0])),
+        "{colours:?}"
+    );
+    assert!(
+        colours.contains(&Some([0.2, 0.2, 0.22, 1.0])),
+        "{colours:?}"
+    );
+    // GLB in metres, its base colour turned from linear to sRGB.
+    let cylinder = load(&example("cylinder.glb")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(cylinder.triangles, 512);
+    assert!((cylinder.bounds[1].y - 0.5).abs() < 1e-6 && cylinder.bounds[0].y.abs() < 1e-6);
+    let [r, ..] = cylinder.pieces[0]
+        .colour
+        .unwrap_or_else(|| panic!("a material"));
+    assert!((r - 0.7681).abs() < 2e-3, "{r}"); // linear 0.55 → sRGB 0.768
+    // GLB modelled in millimetres under a node scaled by 0.001: metres after the node.
+    let horn = load(&example("horn.glb")).unwrap_or_else(|e| panic!("{e}"));
+    assert!((horn.bounds[1].x - 0.025).abs() < 1e-6, "{:?}", horn.bounds);
+    assert!(
+        (horn.bounds[1].z - 0.0025).abs() < 1e-6,
+        "{:?}",
+        horn.bounds
+    );
+    // Every normal is unit length (the file's, or a flat one from the winding).
+    for part in [&base, &rod, &platform, &cylinder, &horn] {
+        for v in part.pieces.iter().flat_map(|p| &p.mesh.vertices) {
+            assert!((Vec3::from(v.normal).length() - 1.0).abs() < 1e-3);
+        }
+    }
+}
+
+fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, bytes).unwrap_or_else(|e| panic!("{e}"));
+    path
+}
+
+fn binary_stl(header: &[u8], triangles: &[[[f32; 3]; 3]]) -> Vec<u8> {
+    let mut out = vec![b' '; 80];
+    out[..header.len()].copy_from_slice(header);
+    out.extend((triangles.len() as u32).to_le_bytes());
+    for t in triangles {
+        out.extend([0u8; 12]);
+        for p in t {
+            for c in p {
+                out.extend(c.to_le_bytes());
+            }
+        }
+        out.extend([0u8; 2]);
+    }
+    out
+}
+
+fn error(path: &Path) -> String {
+    match load(path) {
+        Ok(m) => panic!("{} read as {} triangles", path.display(), m.triangles),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn a_binary_stl_whose_header_says_solid_is_still_binary() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let path = write(
+        dir.path(),
+        "sw.stl",
+        &binary_stl(b"solid SolidWorks export", &[t, t]),
+    );
+    let mesh = load(&path).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(mesh.triangles, 2);
+    assert_eq!(mesh.pieces[0].mesh.vertices[0].normal, [0.0, 0.0, 1.0]);
+}
+
+#[test]
+fn broken_stl_files_are_refused_at_their_byte_or_line() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let t = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    // Cut short: the header promises 3 facets.
+    let mut cut = binary_stl(b"part", &[t, t, t]);
+    cut.truncate(84 + 50 * 2 + 7);
+    let e = error(&write(dir.path(), "cut.stl", &cut));
+    assert!(
+        e.contains("promises 3 facets, 234 bytes in all, but the file has 191"),
+        "{e}"
+    );
+    // NaN in the second facet's third vertex, x: byte 84 + 50 + 12 + 24.
+    let mut nan = t;
+    nan[2][0] = f32::NAN;
+    let e = error(&write(
+        dir.path(),
+        "nan.stl",
+        &binary_stl(b"part", &[t, nan]),
+    ));
+    assert!(
+        e.ends_with("nan.stl, byte 170: a vertex coordinate is not a finite number (NaN)"),
+        "{e}"
+    );
+    // ASCII: a vertex with two numbers, and a file that stops inside a facet.
+    let ascii = "solid x\nfacet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0\n  vertex 0 1 0\n endloop\nendfacet\nendsolid x\n";
+    let e = error(&write(dir.path(), "a.stl", ascii.as_bytes()));
+    assert!(
+        e.contains("a.stl, line 5: expected `vertex x y z` with three numbers, found `vertex 1 0`"),
+        "{e}"
+    );
+    let cut = ascii.find("  vertex 1").unwrap_or(0);
+    let e = error(&write(dir.path(), "b.stl", &ascii.as_bytes()[..cut]));
+    assert!(
+        e.contains("b.stl, line 4: the file ends where `vertex x y z` should follow"),
+        "{e}"
+    );
+    let e = error(&write(
+        dir.path(),
+        "c.stl",
+        b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 inf\n",
+    ));
+    assert!(
+        e.contains("c.stl, line 4: a vertex coordinate is not a finite number (inf)"),
+        "{e}"
+    );
+    // No triangles: an empty solid, and a binary file of no facets.
+    let e = error(&write(dir.path(), "empty.stl", b"solid x\nendsolid x\n"));
+    assert!(e.ends_with("empty.stl: holds no triangles to draw"), "{e}");
+    let e = error(&write(dir.path(), "none.stl", &binary_stl(b"", &[])));
+    assert!(e.ends_with("holds no triangles to draw"), "{e}");
+    assert!(error(&write(dir.path(), "tiny.stl", b"abc")).contains("3 bytes: too short"));
+}
+
+#[test]
+fn broken_obj_and_gltf_files_are_refused_with_their_place() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let e = error(&write(
+        dir.path(),
+        "f.obj",
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n",
+    ));
+    assert!(
+        e.contains("f.obj, line 5: `9` refers to vertex 9, but 3 are given before this line"),
+        "{e}"
+    );
+    let e = error(&write(
+        dir.path(),
+        "n.obj",
+        b"v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n",
+    ));
+    assert!(
+        e.contains("n.obj, line 2: a vertex coordinate is not a finite number"),
+        "{e}"
+    );
+    let e = error(&write(
+        dir.path(),
+        "v.obj",
+        b"v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n",
+    ));
+    assert!(
+        e.contains("v.obj, line 2: a vertex needs three numbers: `v 1 x 0`"),
+        "{e}"
+    );
+    let e = error(&write(dir.path(), "e.obj", b"# nothing\nv 0 0 0\n"));
+    assert!(e.ends_with("e.obj: holds no triangles to draw"), "{e}");
+    // A GLB cut in its binary chunk, and a glTF whose JSON breaks.
+    let glb = std::fs::read(example("cylinder.glb")).unwrap_or_else(|e| panic!("{e}"));
+    let e = error(&write(dir.path(), "cut.glb", &glb[..glb.len() / 2]));
+    assert!(
+        e.starts_with(&format!(
+            "{}: not a valid glTF 2.0 file",
+            dir.path().join("cut.glb").display()
+        )),
+        "{e}"
+    );
+    let e = error(&write(
+        dir.path(),
+        "j.gltf",
+        b"{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [\n",
+    ));
+    assert!(
+        e.contains("j.gltf: not a valid glTF 2.0 file") && e.contains("line 2"),
+        "{e}"
+    );
+    let e = error(&write(dir.path(), "x.ply", b"ply\n"));
+    assert!(e.contains("not a mesh file this studio reads"), "{e}");
+    assert!(matches!(
+        load(&dir.path().join("missing.stl")),
+        Err(CadError::Io { .. })
+    ));
+    assert_eq!(Location::Byte(3).to_string(), "byte 3");
+}
+
+#[test]
+fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files() {
+    let folder = example("");
+    let mut a = AppearanceSettings::default();
+    a.base = Some(PartLook {
+        scale: MeshScale::Millimetre,
+        ..PartLook::new("base.stl")
+    });
+    a.horn = Some(PartLook::new("horn.glb"));
+    let set = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(set.get(Part::Base).is_some());
+    assert!(
+        set.get(Part::Horn).is_none(),
+        "a linear platform has no horns"
+    );
+    // Unchanged file: the same mesh, not read again.
+    a.base.as_mut().map(|b| b.offset_m = [0.0, 0.0, 0.1]);
+    let again = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, Some(&set))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let mesh = |s: &PartSet| s.get(Part::Base).map(|p| std::sync::Arc::as_ptr(&p.mesh));
+    assert_eq!(mesh(&set), mesh(&again));
+    // The millimetre file at the default scale (metres): 2.2 km across.
+    a.base.as_mut().map(|b| b.scale = MeshScale::Metre);
+    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+        .err()
+        .unwrap_or_else(|| panic!("accepted"));
+    assert!(matches!(e.fault, PartFault::Scale { .. }));
+    let words = e.to_string();
+    assert!(
+        words.starts_with("`appearance.base.scale` (base.stl): at scale `m` the part is 2."),
+        "{words}"
+    );
+    assert!(
+        words.ends_with("is the file in millimetres? (`scale = \"mm\"`)"),
+        "{words}"
+    );
+    a.base.as_mut().map(|b| b.file = "nowhere.stl".into());
+    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+        .err()
+        .unwrap_or_else(|| panic!("accepted"));
+    assert!(
+        e.to_string()
+            .starts_with("`appearance.base.file` (nowhere.stl): "),
+        "{e}"
+    );
+}
