@@ -15,6 +15,7 @@ PACKAGES=(gcc g++ libc6-dev pkg-config ca-certificates                  # g++: t
   time                                                                   # GNU time: peak memory in scripts/bench-inputs.sh
   libudev-dev                                                            # serial port and gamepad discovery (serialport, gilrs)
   socat                                                                  # a pseudo-terminal pair stands in for a serial cable in tests
+  nodejs                                                                 # the Khronos glTF-Validator (npm) checks exported glTF
 )
 
 # Python 3 with venv (the Python package is built and tested in a virtual environment);

@@ -4,6 +4,9 @@
 use glam::{Mat3, Mat4, Quat, Vec3};
 use stewart_kinematics::model::scene::{LegStatus, SceneFrame, ServoFrame};
 
+use stewart_kinematics::model::appearance::Part;
+
+use crate::cad::parts::PartSet;
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
 use crate::plate_shape::plate_shape;
@@ -64,6 +67,9 @@ pub struct DrawList {
     /// over it); a view keeps each on the GPU while the same `Arc`
     /// comes back.
     pub analysis: Vec<std::sync::Arc<crate::analysis::AnalysisMesh>>,
+    /// CAD parts (`[appearance]`): each piece of each placed part, opaque, lit, seen from
+    /// both sides; the renderer keeps each mesh on the GPU while the same `Arc` comes back.
+    pub parts: Vec<crate::draw_parts::PartInstance>,
 }
 
 /// Radii, as fractions of the larger plate's radius.
@@ -92,7 +98,7 @@ fn along(from: Vec3, to: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
 }
 
 /// Black or white, whichever reads on the sRGB colour `rgb` (by its relative luminance).
-fn ink_on(rgb: [f32; 3]) -> crate::theme::Srgba {
+pub(crate) fn ink_on(rgb: [f32; 3]) -> crate::theme::Srgba {
     let lin = rgb.map(|c| c.powf(2.2));
     let luminance = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2];
     if luminance > 0.2 {
@@ -111,9 +117,32 @@ fn ball(at: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
 }
 
 /// How actuators are coloured.
-struct LegColours<'a> {
-    theme: &'a Theme,
-    coloured: bool,
+pub(crate) struct LegColours<'a> {
+    pub(crate) theme: &'a Theme,
+    pub(crate) coloured: bool,
+}
+
+/// Which bodies keep their usual drawing (those without a CAD part).
+#[derive(Clone, Copy)]
+struct Drawn {
+    base: bool,
+    platform: bool,
+    cylinder: bool,
+    rod: bool,
+    horn: bool,
+}
+
+impl Drawn {
+    fn of(parts: &PartSet) -> Self {
+        let usual = |part| parts.get(part).is_none();
+        Self {
+            base: usual(Part::Base),
+            platform: usual(Part::Platform),
+            cylinder: usual(Part::Cylinder),
+            rod: usual(Part::Rod),
+            horn: usual(Part::Horn),
+        }
+    }
 }
 
 impl LegColours<'_> {
@@ -121,7 +150,11 @@ impl LegColours<'_> {
     /// actuator's own colour (so it can be told apart), the rod neutral or, near or over
     /// a limit, the warning colour. Single-coloured: the theme's colours, the warning
     /// colour on both.
-    fn of(&self, k: usize, status: LegStatus) -> (crate::theme::Srgba, crate::theme::Srgba) {
+    pub(crate) fn of(
+        &self,
+        k: usize,
+        status: LegStatus,
+    ) -> (crate::theme::Srgba, crate::theme::Srgba) {
         let (body, rod) = self.theme.leg_colours(status);
         if self.coloured {
             (crate::theme::series(k), rod)
@@ -129,11 +162,33 @@ impl LegColours<'_> {
             (body, rod)
         }
     }
+
+    /// Servo `k`'s horn in `status`: the servo's colour (coloured) or the theme's horn
+    /// colour, the warning colour near or past the range.
+    pub(crate) fn horn(&self, k: usize, status: LegStatus) -> crate::theme::Srgba {
+        match (status, self.coloured) {
+            (LegStatus::Normal, true) => crate::theme::series(k),
+            (LegStatus::Normal, false) => self.theme.horn,
+            // Near or past the range: the horn shows it.
+            (_, _) => self.theme.leg_colours(status).0,
+        }
+    }
 }
 
 impl DrawList {
-    /// Build the draw list of `frame` in `theme`.
+    /// Build the draw list of `frame` in `theme`, every part drawn as usual.
     pub fn build(frame: &SceneFrame, theme: &Theme, overlays: &Overlays) -> DrawList {
+        Self::build_with_parts(frame, theme, overlays, &PartSet::none())
+    }
+
+    /// Build the draw list of `frame` in `theme`, the parts `parts` has meshes for drawn
+    /// from them in place of the usual plate, body, rod or horn.
+    pub fn build_with_parts(
+        frame: &SceneFrame,
+        theme: &Theme,
+        overlays: &Overlays,
+        parts: &PartSet,
+    ) -> DrawList {
         let mut list = DrawList::default();
         let s = frame.base_radius.max(frame.platform_radius) as f32;
         let joint_radius = JOINT_RADIUS * s;
@@ -143,10 +198,12 @@ impl DrawList {
             theme,
             coloured: overlays.coloured_legs,
         };
+        let drawn = Drawn::of(parts);
         match &frame.servos {
-            None => list.linear_legs(frame, &colours, s),
-            Some(servos) => list.servos(frame, servos, &colours, s),
+            None => list.linear_legs(frame, &colours, s, drawn),
+            Some(servos) => list.servos(frame, servos, &colours, s, drawn),
         }
+        list.cad_parts(frame, &colours, parts);
         if overlays.labels {
             list.labels(frame, &colours, overlays.label_scale);
         }
@@ -161,15 +218,25 @@ impl DrawList {
             frame.platform_rotation[(k % 3, k / 3)] as f32
         }));
         let centre = v3(&frame.platform_centre);
-        for (origin, axes, joints, colour) in [
+        for (origin, axes, joints, colour, usual) in [
             (
                 Vec3::ZERO,
                 Mat3::IDENTITY,
                 &frame.base_joints,
                 theme.base_plate,
+                drawn.base,
             ),
-            (centre, rotation, &frame.platform_joints, theme.platform),
+            (
+                centre,
+                rotation,
+                &frame.platform_joints,
+                theme.platform,
+                drawn.platform,
+            ),
         ] {
+            if !usual {
+                continue;
+            }
             let world: Vec<Vec3> = joints.iter().map(v3).collect();
             let shape = plate_shape(origin, axes, &world, plate_thickness);
             list.plates.push((
@@ -244,7 +311,7 @@ impl DrawList {
     /// Linear legs: an actuator body from the base joint and a thinner rod from the
     /// platform joint; the body is as long as the shortest leg (or 55 % of the leg).
     /// `s` is the size of the larger plate.
-    fn linear_legs(&mut self, frame: &SceneFrame, colours: &LegColours, s: f32) {
+    fn linear_legs(&mut self, frame: &SceneFrame, colours: &LegColours, s: f32, drawn: Drawn) {
         let theme = colours.theme;
         for (k, leg) in frame.legs.iter().enumerate() {
             let (base, top) = (v3(&leg.base), v3(&leg.top));
@@ -254,18 +321,22 @@ impl DrawList {
                 .min_length
                 .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
             let (body, rod) = colours.of(k, leg.status);
-            self.cylinders.push(along(
-                base,
-                base + dir * body_length,
-                BODY_RADIUS * s,
-                linear(body),
-            ));
-            self.cylinders.push(along(
-                base + dir * (body_length - 0.02 * s),
-                top,
-                ROD_RADIUS * s,
-                linear(rod),
-            ));
+            if drawn.cylinder {
+                self.cylinders.push(along(
+                    base,
+                    base + dir * body_length,
+                    BODY_RADIUS * s,
+                    linear(body),
+                ));
+            }
+            if drawn.rod {
+                self.cylinders.push(along(
+                    base + dir * (body_length - 0.02 * s),
+                    top,
+                    ROD_RADIUS * s,
+                    linear(rod),
+                ));
+            }
         }
         for p in &frame.base_joints {
             self.spheres
@@ -283,6 +354,7 @@ impl DrawList {
         servos: &[ServoFrame; 6],
         colours: &LegColours,
         s: f32,
+        drawn: Drawn,
     ) {
         let theme = colours.theme;
         for (k, (servo, leg)) in servos.iter().zip(&frame.legs).enumerate() {
@@ -296,12 +368,7 @@ impl DrawList {
                 -axis
             };
             let (body, rod) = colours.of(k, servo.status);
-            let horn_colour = match (servo.status, colours.coloured) {
-                (LegStatus::Normal, true) => body,
-                (LegStatus::Normal, false) => theme.horn,
-                // Near or past the range: the horn shows it.
-                (_, _) => theme.leg_colours(servo.status).0,
-            };
+            let horn_colour = colours.horn(k, servo.status);
             // The body: 1.3 horns long along the horn's zero direction, 1.1 high, 0.6
             // deep along the shaft, the shaft near its front end.
             let forward = Vec3::Z.cross(side);
@@ -323,10 +390,14 @@ impl DrawList {
                 0.10 * horn,
                 linear(theme.joint),
             ));
-            self.cylinders
-                .push(along(shaft, tip, 0.13 * horn, linear(horn_colour)));
-            self.cylinders
-                .push(along(tip, v3(&leg.top), ROD_RADIUS * s, linear(rod)));
+            if drawn.horn {
+                self.cylinders
+                    .push(along(shaft, tip, 0.13 * horn, linear(horn_colour)));
+            }
+            if drawn.rod {
+                self.cylinders
+                    .push(along(tip, v3(&leg.top), ROD_RADIUS * s, linear(rod)));
+            }
             self.spheres
                 .push(ball(tip, 0.16 * horn, linear(theme.joint)));
         }

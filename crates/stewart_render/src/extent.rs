@@ -1,5 +1,5 @@
 //! How far a draw list's solids reach: points whose convex hull holds every cylinder,
-//! sphere, cone, box and plate drawn, for framing a view around them (lines, the grid
+//! sphere, cone, box, plate and CAD part drawn, for framing a view around them (lines, the grid
 //! and screen-space text are left out).
 
 use glam::{Mat4, Vec3};
@@ -29,6 +29,9 @@ impl DrawList {
         }
         for (mesh, _, _) in &self.plates {
             out.extend(mesh.vertices.iter().map(|v| Vec3::from(v.position)));
+        }
+        for part in &self.parts {
+            corners(&part.instance, (part.bounds[0], part.bounds[1]), out);
         }
     }
 }

@@ -6,7 +6,7 @@
 //! read back for export and tests. It knows nothing of egui or winit.
 //!
 //! - [`camera`]: the orbit camera (glam), and the camera that frames a cloud of points;
-//! - [`draw_list`]: scene frame → instances, plates and lines (CPU);
+//! - [`draw_list`]: scene frame → instances, plates and lines (CPU); [`draw_parts`]: CAD parts placed;
 //! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
 //! - [`renderer`]: pipelines and the one draw entry point;
 //! - [`cad`]: CAD parts: STL, OBJ and glTF files read into meshes, placed by `[appearance]`;
@@ -20,6 +20,7 @@ pub mod camera;
 mod camera_fit;
 pub mod colormap;
 pub mod draw_list;
+pub mod draw_parts;
 mod extent;
 pub mod gpu;
 mod gpu_mesh;

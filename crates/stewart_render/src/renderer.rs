@@ -20,6 +20,7 @@ pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// workspace view) with one renderer.
 pub struct Renderer {
     opaque: wgpu::RenderPipeline,
+    parts: wgpu::RenderPipeline,
     translucent: wgpu::RenderPipeline,
     analysis: wgpu::RenderPipeline,
     lines: wgpu::RenderPipeline,
@@ -93,6 +94,9 @@ impl Renderer {
             )
         };
         let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
+        // CAD parts: opaque, but both faces drawn (files do not always wind their
+        // triangles the same way; the shading is two-sided).
+        let parts = mesh_pipeline("CAD parts", true, None);
         // Translucent plates: depth-tested against the opaque scene, not written, both
         // faces drawn, back to front.
         let translucent = mesh_pipeline("translucent plates", false, None);
@@ -131,6 +135,7 @@ impl Renderer {
             picture,
             picture_layout,
             opaque,
+            parts,
             translucent,
             analysis,
             lines,
@@ -234,7 +239,8 @@ impl Renderer {
                 + list.spheres.len()
                 + list.cones.len()
                 + list.boxes.len()
-                + list.plates.len(),
+                + list.plates.len()
+                + list.parts.len(),
         );
         let range = |items: &[MeshInstance], all: &mut Vec<MeshInstance>| {
             let start = all.len() as u32;
@@ -245,6 +251,15 @@ impl Renderer {
         let spheres = range(&list.spheres, &mut instances);
         let cones = range(&list.cones, &mut instances);
         let boxes = range(&list.boxes, &mut instances);
+        let slots = view.keep_parts(device, list.parts.iter().map(|p| &p.mesh));
+        let parts = slots
+            .into_iter()
+            .zip(&list.parts)
+            .map(|(slot, part)| {
+                instances.push(part.instance);
+                (slot, instances.len() as u32 - 1)
+            })
+            .collect();
         // Plates back to front from the eye.
         let mut order: Vec<usize> = (0..list.plates.len()).collect();
         order.sort_by(|&a, &b| {
@@ -288,6 +303,7 @@ impl Renderer {
             plates,
             lines: list.lines.len() as u32,
             text: text.len() as u32,
+            parts,
         };
     }
 
@@ -355,6 +371,15 @@ impl Renderer {
             pass.set_vertex_buffer(0, mesh.vertices.slice(..));
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..mesh.count, 0, range.clone());
+        }
+        if !view.batches.parts.is_empty() {
+            pass.set_pipeline(&self.parts);
+            for &(slot, instance) in &view.batches.parts {
+                let mesh = &view.parts[slot].1;
+                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..mesh.count, 0, instance..instance + 1);
+            }
         }
         if !view.batches.plates.is_empty() {
             pass.set_pipeline(&self.translucent);

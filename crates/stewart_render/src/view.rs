@@ -7,6 +7,7 @@ use std::sync::Arc;
 use crate::analysis::AnalysisMesh;
 use crate::gpu_mesh::GpuMesh;
 use crate::gpu_types::Globals;
+use crate::mesh::Mesh;
 
 /// A vertex or instance buffer rewritten every frame, grown when needed.
 pub(crate) struct DynamicBuffer {
@@ -62,6 +63,8 @@ pub(crate) struct Batches {
     pub(crate) lines: u32,
     /// Vertices of text quads.
     pub(crate) text: u32,
+    /// CAD part pieces: (index into the view's part meshes, instance).
+    pub(crate) parts: Vec<(usize, u32)>,
 }
 
 /// The GPU side of one view: made by [`crate::Renderer::new_view`], filled by
@@ -79,6 +82,8 @@ pub struct PreparedView {
     /// The draw list's analysis meshes on the GPU, in drawing order, each kept while the
     /// same `Arc` comes back.
     pub(crate) analysis: Vec<(Arc<AnalysisMesh>, GpuMesh)>,
+    /// The CAD parts' meshes on the GPU, each kept while the same `Arc` comes back.
+    pub(crate) parts: Vec<(Arc<Mesh>, GpuMesh)>,
 }
 
 impl PreparedView {
@@ -112,24 +117,64 @@ impl PreparedView {
             batches: Batches::default(),
             clear: wgpu::Color::BLACK,
             analysis: Vec::new(),
+            parts: Vec::new(),
         }
     }
 
     /// Keep `meshes` on the GPU: upload those not there yet, drop those no longer drawn.
     pub(crate) fn keep_analysis(&mut self, device: &wgpu::Device, meshes: &[Arc<AnalysisMesh>]) {
-        let mut kept = Vec::with_capacity(meshes.len());
-        for mesh in meshes.iter().filter(|m| !m.is_empty()) {
-            let gpu = match self.analysis.iter().position(|(m, _)| Arc::ptr_eq(m, mesh)) {
-                Some(k) => self.analysis.swap_remove(k).1,
-                None => GpuMesh::from_parts(
+        keep(
+            &mut self.analysis,
+            meshes.iter().filter(|m| !m.is_empty()),
+            |mesh| {
+                GpuMesh::from_parts(
                     device,
                     bytemuck::cast_slice(&mesh.vertices),
                     &mesh.indices,
                     "analysis",
-                ),
-            };
-            kept.push((Arc::clone(mesh), gpu));
-        }
-        self.analysis = kept;
+                )
+            },
+        );
     }
+
+    /// Keep the CAD parts' `meshes` on the GPU (each once, however often it is drawn);
+    /// the index of each in the view's list, in the order given.
+    pub(crate) fn keep_parts<'a>(
+        &mut self,
+        device: &wgpu::Device,
+        meshes: impl Iterator<Item = &'a Arc<Mesh>>,
+    ) -> Vec<usize> {
+        let mut unique: Vec<&Arc<Mesh>> = Vec::new();
+        let slots: Vec<usize> = meshes
+            .map(|m| match unique.iter().position(|u| Arc::ptr_eq(u, m)) {
+                Some(k) => k,
+                None => {
+                    unique.push(m);
+                    unique.len() - 1
+                }
+            })
+            .collect();
+        keep(&mut self.parts, unique.into_iter(), |mesh| {
+            GpuMesh::new(device, mesh, "CAD part")
+        });
+        slots
+    }
+}
+
+/// Keep on the GPU the meshes of `wanted`, in its order: those already in `cache` (the
+/// same `Arc`) moved, the others uploaded by `upload`; the rest dropped.
+fn keep<'a, T: 'a>(
+    cache: &mut Vec<(Arc<T>, GpuMesh)>,
+    wanted: impl Iterator<Item = &'a Arc<T>>,
+    upload: impl Fn(&T) -> GpuMesh,
+) {
+    let mut kept = Vec::with_capacity(cache.len());
+    for mesh in wanted {
+        let gpu = match cache.iter().position(|(m, _)| Arc::ptr_eq(m, mesh)) {
+            Some(k) => cache.swap_remove(k).1,
+            None => upload(mesh),
+        };
+        kept.push((Arc::clone(mesh), gpu));
+    }
+    *cache = kept;
 }

@@ -529,8 +529,10 @@ mod tests {
 
     #[test]
     fn entries_name_every_part() {
-        let mut a = AppearanceSettings::default();
-        a.base = Some(PartLook::new("base.stl"));
+        let a = AppearanceSettings {
+            base: Some(PartLook::new("base.stl")),
+            ..AppearanceSettings::default()
+        };
         let e = a.entries();
         assert_eq!(e[0], ("base.file".to_owned(), "base.stl".to_owned()));
         assert!(e.contains(&("horn.file".to_owned(), "off".to_owned())));

@@ -20,7 +20,6 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
         triangulate: true,
         ignore_points: true,
         ignore_lines: true,
-        ..tobj::LoadOptions::default()
     };
     let text = String::from_utf8_lossy(bytes);
     let fault = |reason: String| {

@@ -236,12 +236,14 @@ fn broken_obj_and_gltf_files_are_refused_with_their_place() {
 #[test]
 fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files() {
     let folder = example("");
-    let mut a = AppearanceSettings::default();
-    a.base = Some(PartLook {
-        scale: MeshScale::Millimetre,
-        ..PartLook::new("base.stl")
-    });
-    a.horn = Some(PartLook::new("horn.glb"));
+    let mut a = AppearanceSettings {
+        base: Some(PartLook {
+            scale: MeshScale::Millimetre,
+            ..PartLook::new("base.stl")
+        }),
+        horn: Some(PartLook::new("horn.glb")),
+        ..AppearanceSettings::default()
+    };
     let set = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(set.get(Part::Base).is_some());
@@ -250,13 +252,17 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
         "a linear platform has no horns"
     );
     // Unchanged file: the same mesh, not read again.
-    a.base.as_mut().map(|b| b.offset_m = [0.0, 0.0, 0.1]);
+    if let Some(b) = a.base.as_mut() {
+        b.offset_m = [0.0, 0.0, 0.1];
+    }
     let again = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, Some(&set))
         .unwrap_or_else(|e| panic!("{e}"));
     let mesh = |s: &PartSet| s.get(Part::Base).map(|p| std::sync::Arc::as_ptr(&p.mesh));
     assert_eq!(mesh(&set), mesh(&again));
     // The millimetre file at the default scale (metres): 2.2 km across.
-    a.base.as_mut().map(|b| b.scale = MeshScale::Metre);
+    if let Some(b) = a.base.as_mut() {
+        b.scale = MeshScale::Metre;
+    }
     let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
         .err()
         .unwrap_or_else(|| panic!("accepted"));
@@ -270,7 +276,9 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
         words.ends_with("is the file in millimetres? (`scale = \"mm\"`)"),
         "{words}"
     );
-    a.base.as_mut().map(|b| b.file = "nowhere.stl".into());
+    if let Some(b) = a.base.as_mut() {
+        b.file = "nowhere.stl".into();
+    }
     let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
         .err()
         .unwrap_or_else(|| panic!("accepted"));

@@ -1,6 +1,7 @@
 //! Headless rendering tests: shaders validate, frames show what they must, and match
 //! reference images. They run on whatever adapter `Gpu::headless` finds (lavapipe in CI).
 
+mod cad;
 mod picture;
 mod shaders;
 mod snapshots;

@@ -1,0 +1,96 @@
+//! CAD parts in the draw list: each part's pieces placed in its part's frame (see
+//! [`stewart_kinematics::model::appearance::Part`]) by the `[appearance]` table's scale,
+//! rotation and offset, coloured by the table, else the file, else the studio (the leg's
+//! colour, the theme's plates); a rod, body or horn near or past its limit takes the
+//! warning colour whatever its file says, as the usual drawing does.
+
+use std::sync::Arc;
+
+use glam::{Mat4, Quat, Vec3};
+use stewart_kinematics::model::appearance::Part;
+use stewart_kinematics::model::scene::{LegStatus, Placement, SceneFrame};
+
+use crate::cad::parts::{LoadedPart, PartSet};
+use crate::draw_list::{DrawList, LegColours};
+use crate::gpu_types::MeshInstance;
+use crate::mesh::Mesh;
+use crate::theme::{Srgba, linear};
+
+/// One piece of a placed part.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PartInstance {
+    /// The piece's triangles, in the file's units.
+    pub mesh: Arc<Mesh>,
+    /// Where (file units → world) and in what linear colour.
+    pub instance: MeshInstance,
+    /// The part's bounding box corners, file units.
+    pub bounds: [Vec3; 2],
+}
+
+/// A part's frame as a matrix (f64 → f32 here, where kinematics data enters the renderer).
+pub fn frame_matrix(p: &Placement) -> Mat4 {
+    let q = p.rotation.quaternion();
+    Mat4::from_rotation_translation(
+        Quat::from_xyzw(q.i as f32, q.j as f32, q.k as f32, q.w as f32).normalize(),
+        Vec3::new(p.origin.x as f32, p.origin.y as f32, p.origin.z as f32),
+    )
+}
+
+impl DrawList {
+    /// Place every part `parts` has a mesh for.
+    pub(crate) fn cad_parts(&mut self, frame: &SceneFrame, colours: &LegColours, parts: &PartSet) {
+        if parts.is_empty() {
+            return;
+        }
+        let theme = colours.theme;
+        if let Some(p) = parts.get(Part::Base) {
+            self.place(p, Mat4::IDENTITY, theme.base_plate, false);
+        }
+        if let Some(p) = parts.get(Part::Platform) {
+            self.place(
+                p,
+                frame_matrix(&frame.platform_placement()),
+                theme.platform,
+                false,
+            );
+        }
+        for (k, leg) in frame.legs.iter().enumerate() {
+            let (body, rod) = colours.of(k, leg.status);
+            let warn = leg.status != LegStatus::Normal;
+            if frame.servos.is_none()
+                && let Some(p) = parts.get(Part::Cylinder)
+            {
+                let [at, _] = frame.leg_placements(k);
+                self.place(p, frame_matrix(&at), body, warn && !colours.coloured);
+            }
+            if let Some(p) = parts.get(Part::Rod) {
+                self.place(p, frame_matrix(&frame.rod_placement(k)), rod, warn);
+            }
+            if let (Some(p), Some(at)) = (parts.get(Part::Horn), frame.horn_placement(k)) {
+                self.place(p, frame_matrix(&at), colours.horn(k, leg.status), warn);
+            }
+        }
+    }
+
+    /// Each piece of `part` at `frame`: in `studio` when `warning`, else in the table's
+    /// colour, the file's, or `studio`; always opaque.
+    fn place(&mut self, part: &LoadedPart, frame: Mat4, studio: Srgba, warning: bool) {
+        let model = (frame * part.transform).to_cols_array_2d();
+        for piece in &part.mesh.pieces {
+            let chosen = if warning {
+                studio
+            } else {
+                part.colour.or(piece.colour).unwrap_or(studio)
+            };
+            let [r, g, b, _] = linear(chosen);
+            self.parts.push(PartInstance {
+                mesh: Arc::clone(&piece.mesh),
+                instance: MeshInstance {
+                    model,
+                    color: [r, g, b, 1.0],
+                },
+                bounds: part.mesh.bounds,
+            });
+        }
+    }
+}
