@@ -23,6 +23,7 @@ pub mod link_plan;
 pub mod live_cue;
 pub(crate) mod long_work;
 pub(crate) mod output;
+pub(crate) mod parts;
 pub(crate) mod readout;
 pub(crate) mod shot_scale;
 pub(crate) mod source;

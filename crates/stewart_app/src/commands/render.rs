@@ -18,6 +18,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // The output is never one of the inputs (a scenario file named `x.gif`, say).
     crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
+    let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario), None)?;
     let camera = args.camera.map(|[az, el, dist]| OrbitCamera {
         azimuth_deg: az as f32,
         elevation_deg: el as f32,
@@ -42,6 +43,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
             .then(|| args.title.clone().unwrap_or_else(|| scenario.name.clone())),
         lang: crate::i18n::for_command(args.lang, "render"),
         speed: args.speed,
+        parts,
     };
     let progress = ProgressBar::new(0);
     progress.set_style(

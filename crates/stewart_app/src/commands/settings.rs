@@ -143,6 +143,7 @@ fn section_title(group: Group) -> &'static str {
         Group::Checks => "`[checks]`: the pre-flight checks",
         Group::Cueing => "`[cueing]`: motion cueing",
         Group::Dynamics => "`[dynamics]`: stiffness, friction, the legs' parts",
+        Group::Appearance => "`[appearance]`: CAD parts",
     }
 }
 

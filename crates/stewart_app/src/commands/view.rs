@@ -55,7 +55,21 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
             (scenario, origin)
         }
     };
+    // Part files are named from the scenario file's folder (for a session's scenario, the
+    // file it came from, when it came from one).
+    let parts_folder = if restored {
+        Some(std::path::Path::new(&origin))
+            .filter(|p| !origin.starts_with("preset ") && p.is_file())
+            .and_then(std::path::Path::parent)
+            .map_or_else(
+                || std::path::PathBuf::from("."),
+                std::path::Path::to_path_buf,
+            )
+    } else {
+        crate::parts::folder_of(&args.scenario)
+    };
     let mut state = ViewerState::new(scenario);
+    state.doc.set_folder(parts_folder);
     if let Some(s) = &saved {
         restore(&mut state, s, restored);
     }

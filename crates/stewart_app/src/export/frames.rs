@@ -3,6 +3,7 @@
 use anyhow::{Result, anyhow};
 use nalgebra::Vector3;
 use stewart_kinematics::{Pose, Scenario};
+use stewart_render::cad::parts::PartSet;
 use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
 
 use super::plot;
@@ -32,6 +33,8 @@ pub struct FrameJob {
     pub readout: Option<String>,
     /// The language of the readout and the plot.
     pub lang: Lang,
+    /// The CAD parts drawn in place of the usual plates and legs.
+    pub parts: PartSet,
 }
 
 /// The seed's view framing `scenario`'s platform.
@@ -45,13 +48,16 @@ pub(crate) const MOTION_MARGIN: f32 = 0.08;
 /// Most poses sampled to frame a motion; longer exports take evenly spaced ones.
 const FRAMING_POSES: usize = 1024;
 
+/// What a framed view draws: the overlays' solids and the CAD parts.
+pub(crate) type Drawn<'a> = (&'a Overlays, &'a PartSet);
+
 /// The seed's angles, with the view (`aspect` = width / height) framing every solid the
-/// motion sweeps at `times` (plates, legs, joints, servos, axes as `overlays` draw them),
-/// centred below the `top` share of the height (kept for a readout).
+/// motion sweeps at `times` (plates, legs, joints, servos, axes as `overlays` draw them,
+/// CAD parts), centred below the `top` share of the height (kept for a readout).
 pub(crate) fn motion_camera(
     scenario: &Scenario,
     times: &[f64],
-    overlays: &Overlays,
+    drawn: Drawn<'_>,
     aspect: f32,
     top: f32,
 ) -> OrbitCamera {
@@ -59,7 +65,7 @@ pub(crate) fn motion_camera(
     motion_camera_from(
         scenario,
         times,
-        overlays,
+        drawn,
         aspect,
         top,
         [seed.azimuth_deg, seed.elevation_deg],
@@ -71,7 +77,7 @@ pub(crate) fn motion_camera(
 pub(crate) fn motion_camera_from(
     scenario: &Scenario,
     times: &[f64],
-    overlays: &Overlays,
+    drawn: Drawn<'_>,
     aspect: f32,
     top: f32,
     angles: [f32; 2],
@@ -82,7 +88,7 @@ pub(crate) fn motion_camera_from(
         .step_by(step)
         .chain(times.last())
         .map(|&t| scenario.motion.trajectory.pose_at(t));
-    poses_camera(scenario, poses, overlays, aspect, top, angles)
+    poses_camera(scenario, poses, drawn, aspect, top, angles)
 }
 
 /// The camera looking from `[azimuth, elevation]` whose view (`aspect` = width / height)
@@ -91,7 +97,7 @@ pub(crate) fn motion_camera_from(
 pub(crate) fn poses_camera(
     scenario: &Scenario,
     poses: impl Iterator<Item = Pose>,
-    overlays: &Overlays,
+    (overlays, parts): Drawn<'_>,
     aspect: f32,
     top: f32,
     [azimuth_deg, elevation_deg]: [f32; 2],
@@ -112,7 +118,7 @@ pub(crate) fn poses_camera(
     let mut points = Vec::new();
     for pose in poses {
         let frame = g.scene_frame(&pose, Vec::new());
-        DrawList::build(&frame, &Theme::DARK, &solids).solid_extent(&mut points);
+        DrawList::build_with_parts(&frame, &Theme::DARK, &solids, parts).solid_extent(&mut points);
     }
     OrbitCamera::fitting_points(
         seed.azimuth_deg,
@@ -249,7 +255,13 @@ impl<'a> FrameSource<'a> {
         };
         let camera = match job.camera {
             Some(c) => c.fitted_to(aspect),
-            None => motion_camera(scenario, &job.times, &job.overlays, aspect, top),
+            None => motion_camera(
+                scenario,
+                &job.times,
+                (&job.overlays, &job.parts),
+                aspect,
+                top,
+            ),
         };
         Ok(Self {
             scenario,
@@ -283,7 +295,12 @@ impl<'a> FrameSource<'a> {
         self.path.push(g.platform_centre(&pose));
         // The path moves into the scene and back: no copy per frame.
         let scene = g.scene_frame(&pose, std::mem::take(&mut self.path));
-        let mut list = DrawList::build(&scene, &self.job.theme, &self.job.overlays);
+        let mut list = DrawList::build_with_parts(
+            &scene,
+            &self.job.theme,
+            &self.job.overlays,
+            &self.job.parts,
+        );
         // The readout shows the values the picture was solved with: one inverse
         // kinematics per frame.
         let solved = scene.actuator_values();
@@ -329,7 +346,13 @@ mod tests {
         let times: Vec<f64> = scenario.motion.sampling.times().step_by(10).collect();
         let overlays = Overlays::default();
         for (aspect, top) in [(16.0 / 9.0, 0.0), (16.0 / 9.0, 0.2), (0.98, 0.3)] {
-            let camera = motion_camera(&scenario, &times, &overlays, aspect, top);
+            let camera = motion_camera(
+                &scenario,
+                &times,
+                (&overlays, &PartSet::none()),
+                aspect,
+                top,
+            );
             let vp = camera.view_proj(aspect);
             let (mut low, mut high) = (f32::INFINITY, f32::NEG_INFINITY);
             for &t in &times {

@@ -42,6 +42,8 @@ pub(crate) struct VideoRequest {
     /// How fast the motion plays in the video against real time (below 1: slow motion;
     /// each second of motion lasts `1 / speed` seconds of video).
     pub(crate) speed: f64,
+    /// The CAD parts drawn in place of the usual plates and legs.
+    pub(crate) parts: stewart_render::cad::parts::PartSet,
 }
 
 /// The slowest and fastest playback a video may have against real time.
@@ -284,6 +286,7 @@ pub(crate) fn export_video(
         overlays: request.overlays,
         readout: request.readout.clone(),
         lang: request.lang,
+        parts: request.parts.clone(),
     };
     let mut source = FrameSource::new(scenario, &job)?;
     progress.set_length(range.len() as u64);
@@ -342,6 +345,7 @@ mod tests {
             readout: None,
             lang: crate::i18n::Lang::En,
             speed: 1.0,
+            parts: stewart_render::cad::parts::PartSet::none(),
         }
     }
 

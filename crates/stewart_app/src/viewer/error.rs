@@ -70,6 +70,8 @@ pub(crate) enum ViewerError {
     },
     /// A setting refused its value.
     Setting(SettingError),
+    /// A CAD part's mesh could not be read or placed (`[appearance]`).
+    Part(Arc<stewart_render::cad::parts::PartError>),
     /// The numbers do not make a platform.
     Geometry(GeometryError),
     /// Keyframes that do not make a motion.
@@ -204,6 +206,7 @@ impl ViewerError {
                 lang.fmt("errors.setting", &[("key", key), ("why", reason)])
             }
             E::Setting(e) => e.to_string(),
+            E::Part(e) => lang.fmt("errors.part", &[("why", e)]),
             E::Geometry(e) => e.to_string(),
             E::Keyframes(e) => e.to_string(),
             E::Actuator(e) => e.to_string(),

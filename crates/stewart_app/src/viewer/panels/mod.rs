@@ -119,7 +119,7 @@ fn scenario_action(ctx: &egui::Context, state: &mut ViewerState, action: scenari
         }
         ScenarioAction::Preset(name) => match stewart_kinematics::Scenario::preset(&name) {
             Ok(s) => {
-                state.load_scenario(s);
+                state.load_scenario(s, std::path::PathBuf::from("."));
                 state.session.origin = format!("preset {name}");
                 state.files.status = None;
             }

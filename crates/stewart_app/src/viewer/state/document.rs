@@ -14,6 +14,11 @@ use stewart_kinematics::io::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
 
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use stewart_render::cad::parts::PartSet;
+
 use crate::i18n::Lang;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::derived::Derived;
@@ -32,18 +37,52 @@ pub(crate) struct Document {
     pub(crate) edit_error: Option<(Group, ViewerError)>,
     /// The vehicle recording loaded last and the motion cued from it.
     vehicle: Option<VehicleSource>,
+    /// The CAD parts the scenario's `[appearance]` names, read (none when they failed:
+    /// the reason is then in `edit_error`).
+    parts: PartSet,
+    /// The folder part files are named from (the scenario file's).
+    folder: PathBuf,
 }
 
 impl Document {
-    /// A document showing `scenario`, as loaded.
+    /// A document showing `scenario`, as loaded, its part files named from the working
+    /// folder (see [`Document::set_folder`]).
     pub(crate) fn new(scenario: Scenario) -> Self {
-        Self {
+        let mut doc = Self {
             derived: Derived::new(&scenario),
             as_loaded: scenario.clone(),
             scenario,
             undo: Undo::default(),
             edit_error: None,
             vehicle: None,
+            parts: PartSet::none(),
+            folder: PathBuf::from("."),
+        };
+        doc.reload_parts();
+        doc
+    }
+
+    /// Name the scenario's part files from `folder` (its file's) and read them again.
+    pub(crate) fn set_folder(&mut self, folder: PathBuf) {
+        self.folder = folder;
+        self.parts = PartSet::none();
+        self.reload_parts();
+    }
+
+    /// The CAD parts read for the scenario shown.
+    pub(crate) fn parts(&self) -> &PartSet {
+        &self.parts
+    }
+
+    /// Read the scenario's parts (files read before and unchanged are kept); when they
+    /// fail, none are drawn and the reason waits in `edit_error`.
+    fn reload_parts(&mut self) {
+        match crate::parts::load(&self.scenario, &self.folder, Some(&self.parts)) {
+            Ok(parts) => self.parts = parts,
+            Err(e) => {
+                self.parts = PartSet::none();
+                self.edit_error = Some((Group::Appearance, ViewerError::Part(Arc::new(e))));
+            }
         }
     }
 
@@ -72,6 +111,7 @@ impl Document {
     ) -> Result<(), ViewerError> {
         let mut edited = self.scenario.clone();
         let mut recued = None;
+        let mut parts = None;
         let checked = change(&mut edited)
             .and_then(|()| match settings::out_of_range(&edited) {
                 Some((setting, reason)) => Err(ViewerError::OutOfRange {
@@ -89,6 +129,19 @@ impl Document {
                     recued = Some(again);
                 }
                 Ok(())
+            })
+            .and_then(|()| {
+                // New part files or another actuator kind: the parts are read (and
+                // judged) before the edit is kept; a refused mesh keeps the picture.
+                let kind = |s: &Scenario| s.geometry.actuator().kind();
+                if edited.appearance != self.scenario.appearance
+                    || kind(&edited) != kind(&self.scenario)
+                {
+                    let read = crate::parts::load(&edited, &self.folder, Some(&self.parts))
+                        .map_err(|e| ViewerError::Part(Arc::new(e)))?;
+                    parts = Some(read);
+                }
+                Ok(())
             });
         match checked {
             Ok(()) => {
@@ -97,6 +150,9 @@ impl Document {
                 self.edit_error = None;
                 if recued.is_some() {
                     self.vehicle = recued;
+                }
+                if let Some(parts) = parts {
+                    self.parts = parts;
                 }
                 self.derived.rebuild(&self.scenario);
                 Ok(())
@@ -113,7 +169,7 @@ impl Document {
     pub(crate) fn play_vehicle(
         &mut self,
         name: &str,
-        samples: std::sync::Arc<Vec<(f64, stewart_kinematics::analysis::cueing::VehicleMotion)>>,
+        samples: Arc<Vec<(f64, stewart_kinematics::analysis::cueing::VehicleMotion)>>,
     ) -> Result<(), ViewerError> {
         let source = VehicleSource::new(name, samples, &self.scenario)?;
         let motion = source.motion.clone();
@@ -183,12 +239,16 @@ impl Document {
         })
     }
 
-    /// Show another scenario (a preset or file loaded): one undo step of its own.
-    pub(crate) fn replace(&mut self, scenario: Scenario) {
+    /// Show another scenario (a preset or file loaded), its part files named from
+    /// `folder`: one undo step of its own.
+    pub(crate) fn replace(&mut self, scenario: Scenario, folder: PathBuf) {
         self.undo.record(&self.scenario);
         self.undo.seal();
         self.as_loaded = scenario.clone();
+        self.folder = folder;
+        self.parts = PartSet::none();
         self.put(scenario);
+        self.reload_parts();
     }
 
     /// Go back one edit; the scenario it left, or `None` when there was none.
@@ -215,10 +275,15 @@ impl Document {
             // Cheap first: a motion cued from it has one sample per recorded sample.
             && v.motion.sampling == self.scenario.motion.sampling
             && let Ok(again) =
-                VehicleSource::new(&v.name, std::sync::Arc::clone(&v.samples), &self.scenario)
+                VehicleSource::new(&v.name, Arc::clone(&v.samples), &self.scenario)
             && again.motion == self.scenario.motion
         {
             self.vehicle = Some(again);
+        }
+        if old.appearance != self.scenario.appearance
+            || old.geometry.actuator().kind() != self.scenario.geometry.actuator().kind()
+        {
+            self.reload_parts();
         }
         self.derived.rebuild(&self.scenario);
         old

@@ -97,6 +97,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
         },
         lang: state.look.lang,
         speed: form.speed,
+        parts: state.doc.parts().clone(),
     };
     if let Some(span) = form.span_s
         && let Ok(plan) = request.plan(state.scenario())

@@ -38,7 +38,7 @@ impl ViewerState {
                 Ok(s) => {
                     let name = s.name.clone();
                     self.session.origin = full.display().to_string();
-                    self.load_scenario(s);
+                    self.load_scenario(s, folder_of(&full));
                     self.files.path = full.display().to_string();
                     self.files.current = Some(full.clone());
                     self.files.remember_recent(&full);

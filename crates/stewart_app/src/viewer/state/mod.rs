@@ -218,7 +218,8 @@ impl ViewerState {
             label_scale: if self.look.presentation { 1.6 } else { 1.0 },
             ..stewart_render::Overlays::default()
         };
-        let mut list = stewart_render::DrawList::build(&frame, theme, &overlays);
+        let mut list =
+            stewart_render::DrawList::build_with_parts(&frame, theme, &overlays, self.doc.parts());
         if let Some(measured) = self.link.measured_pose() {
             let ghost = self
                 .doc
@@ -331,9 +332,9 @@ impl ViewerState {
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
-    /// presentation, file path, export settings). A running link is stopped first: it was
-    /// built for the other platform.
-    pub(crate) fn load_scenario(&mut self, scenario: Scenario) {
+    /// presentation, file path, export settings), its part files named from `folder`. A
+    /// running link is stopped first: it was built for the other platform.
+    pub(crate) fn load_scenario(&mut self, scenario: Scenario, folder: std::path::PathBuf) {
         self.link.disconnect();
         self.teleop.rates = Rates::for_geometry(&scenario.geometry);
         self.teleop.blocked = None;
@@ -341,7 +342,7 @@ impl ViewerState {
         self.playback.manual = scenario.geometry.home_pose();
         self.playback.time = 0.0;
         self.playback.history.clear();
-        self.doc.replace(scenario);
+        self.doc.replace(scenario, folder);
         self.editor().keep_time_in_range();
     }
 
@@ -667,7 +668,7 @@ impl ViewerState {
             MotionMode::Trajectory => crate::export::frames::motion_camera_from(
                 self.doc.scenario(),
                 &times,
-                &overlays,
+                (&overlays, self.doc.parts()),
                 aspect,
                 0.0,
                 angles,
@@ -675,7 +676,7 @@ impl ViewerState {
             MotionMode::Manual => crate::export::frames::poses_camera(
                 self.doc.scenario(),
                 std::iter::once(self.pose()),
-                &overlays,
+                (&overlays, self.doc.parts()),
                 aspect,
                 0.0,
                 angles,

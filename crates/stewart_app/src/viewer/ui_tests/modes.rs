@@ -249,6 +249,7 @@ fn ctrl_z_undoes_scenario_edits_and_ctrl_shift_z_redoes_them() {
     assert_eq!(h.state().scenario(), &edited);
     h.state_mut().load_scenario(
         stewart_kinematics::Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
+        std::path::PathBuf::from("."),
     );
     h.run();
     h.get_by_label("Undo").click();

@@ -200,6 +200,8 @@ pub enum Group {
     Cueing,
     /// `[dynamics]`.
     Dynamics,
+    /// `[appearance]` (CAD parts: files and words, no numbers of the catalogue).
+    Appearance,
 }
 
 /// Why a setting could not be read or written.

@@ -1,0 +1,44 @@
+//! A scenario's CAD parts (`[appearance]`) read for drawing: files relative to the
+//! scenario file's folder, each part's scale judged against the platform's size.
+
+use std::path::{Path, PathBuf};
+
+use stewart_kinematics::Scenario;
+use stewart_render::cad::parts::{PartError, PartSet};
+
+use crate::cli::ScenarioArgs;
+
+/// The folder a scenario's part files are named from: its file's folder, or the working
+/// folder for a preset.
+pub(crate) fn folder_of(args: &ScenarioArgs) -> PathBuf {
+    args.scenario
+        .as_deref()
+        .and_then(Path::parent)
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+}
+
+/// The platform's size: the farthest joint from the z axis, metres.
+pub(crate) fn platform_size(scenario: &Scenario) -> f64 {
+    let g = &scenario.geometry;
+    g.base_joints()
+        .iter()
+        .chain(g.platform_joints())
+        .map(|p| p.xy().norm())
+        .fold(0.0, f64::max)
+}
+
+/// Read the parts `scenario` names, files relative to `folder`; meshes of `previous` read
+/// from the same file are kept.
+pub(crate) fn load(
+    scenario: &Scenario,
+    folder: &Path,
+    previous: Option<&PartSet>,
+) -> Result<PartSet, PartError> {
+    PartSet::load(
+        &scenario.appearance,
+        folder,
+        scenario.geometry.actuator().kind(),
+        platform_size(scenario),
+        previous,
+    )
+}
