@@ -17,6 +17,8 @@ cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
 # Every command README.md and the user guide show, with the binary the tests just built.
 python3 scripts/docs-commands.py --debug
+# Every preset exported as an animated glTF scene, checked by the Khronos glTF-Validator.
+bash scripts/gltf-check.sh --debug
 # The Python package (a workspace of its own: it builds against Python): lints, then
 # built and tested from a clean virtual environment.
 cargo fmt --manifest-path crates/stewart_py/Cargo.toml --check

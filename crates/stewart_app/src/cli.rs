@@ -55,7 +55,7 @@ pub(crate) enum Command {
     /// value of each leg length (servo angle) over a 6-D box of poses, where each occurs,
     /// and the worst conditioning inside the box.
     Design(DesignArgs),
-    /// Render the trajectory headlessly: a PNG sequence (folder), a GIF or an MP4.
+    /// Render the trajectory headlessly: a PNG sequence (folder), a GIF, an MP4, or an animated glTF scene (.glb, .gltf).
     Render(RenderArgs),
     /// The leg-length plot for a paper: SVG, PDF or PNG.
     Plot(PlotArgs),
@@ -869,7 +869,9 @@ pub(crate) struct RenderArgs {
     /// The scenario: a preset or a file.
     #[command(flatten)]
     pub(crate) scenario: ScenarioArgs,
-    /// A folder (numbered PNG files), a `.gif` or an `.mp4`.
+    /// A folder (numbered PNG files), a `.gif` or an `.mp4`; or a `.glb` (or `.gltf`, its
+    /// buffer in a `.bin` beside it): the whole trajectory as an animated glTF 2.0 scene
+    /// for slides, Blender and web pages (only `--theme` and `--single-colour` apply).
     #[arg(long, value_name = "OUT")]
     pub(crate) out: PathBuf,
     /// Frame size WxH in pixels (up to 3840x2160 and beyond, 4096 a side at most).

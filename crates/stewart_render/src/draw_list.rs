@@ -72,17 +72,27 @@ pub struct DrawList {
     pub parts: Vec<crate::draw_parts::PartInstance>,
 }
 
-/// Radii, as fractions of the larger plate's radius.
-const BODY_RADIUS: f32 = 0.030;
-const ROD_RADIUS: f32 = 0.017;
-const JOINT_RADIUS: f32 = 0.040;
+/// An actuator body's radius, as a fraction of the larger plate's radius.
+pub const BODY_RADIUS: f32 = 0.030;
+/// A rod's radius, likewise.
+pub const ROD_RADIUS: f32 = 0.017;
+/// A joint ball's radius, likewise.
+pub const JOINT_RADIUS: f32 = 0.040;
+/// A plate's thickness, likewise.
+pub const PLATE_THICKNESS: f32 = 0.025;
 
 fn v3(v: &nalgebra::Vector3<f64>) -> Vec3 {
     Vec3::new(v.x as f32, v.y as f32, v.z as f32)
 }
 
+/// The length a linear leg's body is drawn: 92 % of the shortest leg (at most 90 % of the
+/// leg now), or 55 % of the leg without a stroke.
+pub fn body_length(min_length: Option<f64>, length: f32) -> f32 {
+    min_length.map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length))
+}
+
 /// A unit cylinder or cone (along +z) placed from `from` to `to` with `radius`.
-fn along(from: Vec3, to: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
+pub fn along(from: Vec3, to: Vec3, radius: f32, color: [f32; 4]) -> MeshInstance {
     let d = to - from;
     let length = d.length();
     let rotation = Quat::from_rotation_arc(Vec3::Z, d.normalize_or(Vec3::Z));
@@ -192,7 +202,7 @@ impl DrawList {
         let mut list = DrawList::default();
         let s = frame.base_radius.max(frame.platform_radius) as f32;
         let joint_radius = JOINT_RADIUS * s;
-        let plate_thickness = 0.025 * s;
+        let plate_thickness = PLATE_THICKNESS * s;
 
         let colours = LegColours {
             theme,
@@ -317,9 +327,7 @@ impl DrawList {
             let (base, top) = (v3(&leg.base), v3(&leg.top));
             let length = leg.length as f32;
             let dir = (top - base).normalize_or(Vec3::Z);
-            let body_length = leg
-                .min_length
-                .map_or(0.55 * length, |m| (0.92 * m as f32).min(0.9 * length));
+            let body_length = body_length(leg.min_length, length);
             let (body, rod) = colours.of(k, leg.status);
             if drawn.cylinder {
                 self.cylinders.push(along(

@@ -1,4 +1,5 @@
-//! `stewart render`: frames, GIF and MP4 of a trajectory, with no display.
+//! `stewart render`: frames, GIF and MP4 of a trajectory, with no display, or the
+//! trajectory as an animated glTF scene.
 
 use std::io::Write as _;
 use std::process::ExitCode;
@@ -13,12 +14,41 @@ use crate::export::frames::default_camera;
 use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_words};
 use crate::source;
 
+/// The trajectory as an animated glTF scene (`--out FILE.glb|.gltf`).
+fn animation(
+    args: &RenderArgs,
+    scenario: &stewart_kinematics::Scenario,
+    parts: stewart_render::cad::parts::PartSet,
+) -> Result<ExitCode> {
+    let request = crate::export::gltf::GltfRequest {
+        out: args.out.clone(),
+        theme: Theme::from_light(args.theme == ThemeName::Light),
+        coloured_legs: !args.single_colour,
+        parts,
+    };
+    let report =
+        crate::export::gltf::export_gltf(scenario, &request, &source::inputs(&args.scenario))?;
+    let _ = writeln!(
+        std::io::stderr(),
+        "Wrote a glTF animation of {} keys for {} moving parts to {} ({}) in {:.2} s.",
+        report.samples,
+        report.moving,
+        args.out.display(),
+        bytes_in_words(report.bytes),
+        report.seconds
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
 /// Run the command.
 pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // The output is never one of the inputs (a scenario file named `x.gif`, say).
     crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
     let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario), None)?;
+    if crate::export::gltf::is_gltf(&args.out) {
+        return animation(args, &scenario, parts);
+    }
     let camera = args.camera.map(|[az, el, dist]| OrbitCamera {
         azimuth_deg: az as f32,
         elevation_deg: el as f32,

@@ -5,6 +5,7 @@ pub mod encode;
 pub(crate) mod firmware;
 pub mod frames;
 pub(crate) mod gif_delta;
+pub(crate) mod gltf;
 pub(crate) mod plot;
 pub(crate) mod ply;
 pub mod tables;
