@@ -30,6 +30,7 @@ use stewart_render::cad::parts::PartSet;
 use document::Document;
 
 /// What to export.
+#[derive(Clone, Debug)]
 pub(crate) struct GltfRequest {
     /// `.glb`, or `.gltf` (its buffer in a `.bin` of the same name beside it).
     pub(crate) out: PathBuf,

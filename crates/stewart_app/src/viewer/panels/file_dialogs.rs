@@ -4,6 +4,9 @@
 
 use std::path::PathBuf;
 
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::appearance::Part;
+
 use crate::i18n::Lang;
 use crate::viewer::state::files::{Files, Purpose, WriteAction};
 
@@ -20,13 +23,21 @@ pub(crate) enum FileAction {
     ExportTo(PathBuf),
     /// Start the export to this path (replacing it was agreed).
     Export(PathBuf),
+    /// Draw this part from this mesh file.
+    Mesh(Part, PathBuf),
 }
 
 /// Everything about files that floats over the window: the dialog, the question before a
 /// file is replaced, files dropped. Returns what they ask of the viewer.
-pub(crate) fn show(ctx: &egui::Context, files: &mut Files, t: Lang) -> Vec<FileAction> {
+pub(crate) fn show(
+    ctx: &egui::Context,
+    files: &mut Files,
+    kind: ActuatorKind,
+    t: Lang,
+) -> Vec<FileAction> {
     let mut asked = Vec::new();
     asked.extend(picker(ctx, files));
+    asked.extend(which_part(ctx, files, kind, t));
     asked.extend(confirm(ctx, files, t));
     asked.extend(dropped(ctx, t));
     asked
@@ -48,7 +59,41 @@ fn picker(ctx: &egui::Context, files: &mut Files) -> Option<FileAction> {
         Purpose::Open => FileAction::Open(path),
         Purpose::SaveScenario => FileAction::SaveAsking(path),
         Purpose::ExportTo => FileAction::ExportTo(path),
+        Purpose::Mesh(part) => FileAction::Mesh(part, path),
     })
+}
+
+/// "Which part is `file`?" after a mesh file was dropped: a button per part the
+/// platform has.
+fn which_part(
+    ctx: &egui::Context,
+    files: &mut Files,
+    kind: ActuatorKind,
+    t: Lang,
+) -> Option<FileAction> {
+    let path = files.mesh_dropped.clone()?;
+    let mut answer = None;
+    let mut cancel = false;
+    egui::Modal::new(egui::Id::unique("which-part")).show(ctx, |ui| {
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        ui.label(t.fmt("appearance.which_part", &[("file", &name)]));
+        ui.horizontal_wrapped(|ui| {
+            for part in Part::ALL.into_iter().filter(|p| p.applies_to(kind)) {
+                if ui.button(super::appearance::part_name(part, t)).clicked() {
+                    answer = Some(part);
+                }
+            }
+            cancel = ui.button(t.tr("files.cancel")).clicked()
+                || ui.input(|i| i.key_pressed(egui::Key::Escape));
+        });
+    });
+    if answer.is_some() || cancel {
+        files.mesh_dropped = None;
+    }
+    answer.map(|part| FileAction::Mesh(part, path))
 }
 
 /// "`path` exists. Replace it?" before a save or an export overwrites a file.

@@ -2,6 +2,7 @@
 //! asks of the rest; [`viewer_ui`] lays them out, hands out the parts and does what they
 //! ask (this is the one file that names the whole `ViewerState`).
 
+mod appearance;
 mod cueing;
 mod design;
 mod diagnostics;
@@ -181,6 +182,12 @@ fn controls(ui: &mut egui::Ui, state: &mut ViewerState) {
     );
     view::drawing(ui, &mut state.look);
     ui.separator();
+    if let Some(appearance::AppearanceAction::Browse(part)) =
+        appearance::show(ui, &mut state.editor())
+    {
+        state.choose_file(Purpose::Mesh(part));
+    }
+    ui.separator();
     legs::show(ui, state.doc.scenario(), &state.pose(), &state.look);
     ui.separator();
     if let Some(time) = diagnostics::show(ui, &mut state.editor()) {
@@ -277,7 +284,8 @@ fn plot_panel(height: f32, frame: egui::Frame, look: &mut Look) -> egui::Panel {
 /// The file dialogs, and what they ask done.
 fn file_dialogs(ctx: &egui::Context, state: &mut ViewerState) {
     let lang = state.look.lang;
-    for action in file_dialogs::show(ctx, &mut state.files, lang) {
+    let kind = state.doc.scenario().geometry.actuator().kind();
+    for action in file_dialogs::show(ctx, &mut state.files, kind, lang) {
         match action {
             file_dialogs::FileAction::Open(path) => state.open_path(&path),
             file_dialogs::FileAction::SaveAsking(path) => state.save_file_asking(&path),
@@ -286,6 +294,7 @@ fn file_dialogs(ctx: &egui::Context, state: &mut ViewerState) {
                 state.exports.form.path = path.display().to_string();
             }
             file_dialogs::FileAction::Export(path) => state.start_export(path),
+            file_dialogs::FileAction::Mesh(part, path) => state.attach_mesh(part, &path),
         }
     }
 }

@@ -14,7 +14,7 @@ use stewart_kinematics::io::settings::{self, Group, Setting, TrajectoryChoice};
 use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::Layout};
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use stewart_render::cad::parts::PartSet;
@@ -67,6 +67,11 @@ impl Document {
         self.folder = folder;
         self.parts = PartSet::none();
         self.reload_parts();
+    }
+
+    /// The folder part files are named from.
+    pub(crate) fn folder(&self) -> &Path {
+        &self.folder
     }
 
     /// The CAD parts read for the scenario shown.

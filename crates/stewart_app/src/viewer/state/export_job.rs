@@ -35,6 +35,8 @@ pub(crate) enum ExportWork {
     Plot(PathBuf, bool),
     /// Poses and leg lengths along the trajectory, CSV.
     Csv(PathBuf),
+    /// The trajectory as an animated glTF scene.
+    Gltf(Box<crate::export::gltf::GltfRequest>),
     /// The workspace's slices through `position` at `orientation` (SVG, PDF or PNG by
     /// extension).
     WorkspaceFigure {
@@ -177,6 +179,17 @@ fn run(
         ExportWork::Plot(path, efforts) => {
             write_atomically(path, &plot_file(scenario, path, lang, *efforts)?)?;
             Ok(lang.fmt("export.wrote_plot", &[("path", &path.display())]))
+        }
+        ExportWork::Gltf(request) => {
+            let report = crate::export::gltf::export_gltf(scenario, request, &[])?;
+            Ok(lang.fmt(
+                "export.wrote_gltf",
+                &[
+                    ("keys", &report.samples),
+                    ("path", &request.out.display()),
+                    ("size", &bytes_in_words(report.bytes)),
+                ],
+            ))
         }
         ExportWork::Csv(path) => {
             let table = trajectory_table(scenario);

@@ -133,6 +133,12 @@ fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
             ExportWork::Plot(path, efforts)
         }
         ExportKind::Csv => ExportWork::Csv(path),
+        ExportKind::Gltf => ExportWork::Gltf(Box::new(crate::export::gltf::GltfRequest {
+            out: path,
+            theme: Theme::from_light(state.exports.form.light),
+            coloured_legs: state.look.coloured_legs,
+            parts: state.doc.parts().clone(),
+        })),
         ExportKind::WorkspaceSvg | ExportKind::WorkspacePdf | ExportKind::WorkspacePng => {
             ExportWork::WorkspaceFigure {
                 path,

@@ -14,6 +14,8 @@ pub(crate) enum ExportKind {
     Mp4,
     /// A folder of numbered PNG frames.
     Frames,
+    /// The whole trajectory as an animated glTF 2.0 scene (GLB).
+    Gltf,
     /// The leg-length plot as SVG.
     PlotSvg,
     /// The leg-length plot as PDF.
@@ -36,10 +38,11 @@ pub(crate) enum ExportKind {
 
 impl ExportKind {
     /// Every kind, in menu order.
-    pub(crate) const ALL: [ExportKind; 12] = [
+    pub(crate) const ALL: [ExportKind; 13] = [
         ExportKind::Gif,
         ExportKind::Mp4,
         ExportKind::Frames,
+        ExportKind::Gltf,
         ExportKind::PlotSvg,
         ExportKind::PlotPdf,
         ExportKind::PlotPng,
@@ -57,6 +60,7 @@ impl ExportKind {
             ExportKind::Gif => "export.kind_gif",
             ExportKind::Mp4 => "export.kind_mp4",
             ExportKind::Frames => "export.kind_frames",
+            ExportKind::Gltf => "export.kind_gltf",
             ExportKind::PlotSvg => "export.kind_svg",
             ExportKind::PlotPdf => "export.kind_pdf",
             ExportKind::PlotPng => "export.kind_png",
@@ -75,6 +79,7 @@ impl ExportKind {
             ExportKind::Gif => ".gif",
             ExportKind::Mp4 => ".mp4",
             ExportKind::Frames => "",
+            ExportKind::Gltf => ".glb",
             ExportKind::PlotSvg | ExportKind::WorkspaceSvg => ".svg",
             ExportKind::PlotPdf | ExportKind::WorkspacePdf => ".pdf",
             ExportKind::PlotPng | ExportKind::WorkspacePng | ExportKind::SurfacePng => ".png",

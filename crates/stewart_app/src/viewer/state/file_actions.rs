@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use stewart_kinematics::Scenario;
 use stewart_kinematics::io::settings::Group;
+use stewart_kinematics::model::appearance::{MeshScale, Part, PartLook};
 use stewart_kinematics::model::trajectory::PoseTable;
 
 use crate::viewer::error::{Doing, ViewerError};
@@ -23,6 +24,8 @@ impl ViewerState {
         match OpenKind::of(path) {
             OpenKind::Scenario => self.open_file(path),
             OpenKind::PoseTable => self.open_pose_table(path),
+            // Which part it is for is asked (see `panels::file_dialogs`).
+            OpenKind::Mesh => self.files.mesh_dropped = Some(absolute(path)),
             OpenKind::Other => {
                 self.files.status = Some(Err(ViewerError::UnknownKind(absolute(path))));
             }
@@ -199,6 +202,14 @@ impl ViewerState {
                 self.files.current.clone().unwrap_or_default(),
                 format!("{}.toml", self.scenario().name),
             ),
+            Purpose::Mesh(part) => (
+                self.scenario()
+                    .appearance
+                    .part(part)
+                    .map(|look| self.doc.folder().join(&look.file))
+                    .unwrap_or_else(|| self.doc.folder().join("part.stl")),
+                String::new(),
+            ),
             Purpose::ExportTo => {
                 let path = PathBuf::from(self.exports.form.path.trim());
                 let name = path
@@ -214,6 +225,56 @@ impl ViewerState {
             &name,
             self.look.lang,
         ));
+    }
+}
+
+impl ViewerState {
+    /// Draw `part` from the mesh file at `path` (named relative to the scenario's folder
+    /// when it lies below it): one edit of `[appearance]`. A new part's unit is guessed —
+    /// millimetres for STL and OBJ, metres for glTF, else the first of mm, m, cm, in that
+    /// makes the part a sensible size against the platform; a refused mesh leaves the
+    /// picture and says why.
+    pub(crate) fn attach_mesh(&mut self, part: Part, path: &Path) {
+        let folder = absolute(self.doc.folder());
+        let full = absolute(path);
+        let file = full
+            .strip_prefix(&folder)
+            .map_or_else(|_| full.clone(), Path::to_path_buf)
+            .to_string_lossy()
+            .into_owned();
+        let kept = self.scenario().appearance.part(part).cloned();
+        let first = match stewart_render::cad::Format::of(&full) {
+            Some(stewart_render::cad::Format::Gltf) => MeshScale::Metre,
+            _ => MeshScale::Millimetre,
+        };
+        let units = match &kept {
+            Some(look) => vec![look.scale],
+            None => vec![
+                first,
+                MeshScale::Millimetre,
+                MeshScale::Metre,
+                MeshScale::Centimetre,
+                MeshScale::Inch,
+            ],
+        };
+        let mut refused = None;
+        for scale in units {
+            let look = PartLook {
+                file: file.clone(),
+                scale,
+                ..kept.clone().unwrap_or_else(|| PartLook::new(""))
+            };
+            match self.doc.try_edit(Group::Appearance, |s| {
+                *s.appearance.slot_mut(part) = Some(look);
+                Ok(())
+            }) {
+                Ok(()) => return,
+                Err(e) => refused = refused.or(Some(e)),
+            }
+        }
+        if let Some(e) = refused {
+            self.doc.edit_error = Some((Group::Appearance, e));
+        }
     }
 }
 

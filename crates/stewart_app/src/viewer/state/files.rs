@@ -28,6 +28,8 @@ pub(crate) struct Files {
     pub(crate) picker: Option<Picker>,
     /// A write waiting for the answer to "replace it?".
     pub(crate) confirm: Option<Overwrite>,
+    /// A mesh file dropped on the window, waiting for the part it is for.
+    pub(crate) mesh_dropped: Option<PathBuf>,
     /// The files opened or saved last, newest first (at most [`RECENT`]; kept in the
     /// session).
     pub(crate) recent: Vec<PathBuf>,
@@ -56,6 +58,8 @@ pub(crate) enum Purpose {
     SaveScenario,
     /// Choose where the export writes.
     ExportTo,
+    /// Choose a mesh file (STL, OBJ, glTF) for a CAD part.
+    Mesh(stewart_kinematics::model::appearance::Part),
 }
 
 /// A file dialog on screen and what its choice is for.
@@ -89,6 +93,11 @@ impl Picker {
             Purpose::ExportTo => (
                 egui_file::FileDialog::save_file().default_filename(name),
                 "files.export_title",
+            ),
+            Purpose::Mesh(_) => (
+                egui_file::FileDialog::open_file()
+                    .show_files_filter(Box::new(|p: &Path| OpenKind::of(p) == OpenKind::Mesh)),
+                "appearance.choose_title",
             ),
         };
         let mut dialog = dialog
@@ -137,6 +146,8 @@ pub(crate) enum OpenKind {
     Scenario,
     /// Poses over time, `.csv`.
     PoseTable,
+    /// A mesh for a CAD part: `.stl`, `.obj`, `.gltf`, `.glb`.
+    Mesh,
     /// Anything else.
     Other,
 }
@@ -150,6 +161,7 @@ impl OpenKind {
         match ext.as_deref() {
             Some("toml") => OpenKind::Scenario,
             Some("csv") => OpenKind::PoseTable,
+            Some("stl" | "obj" | "gltf" | "glb") => OpenKind::Mesh,
             _ => OpenKind::Other,
         }
     }

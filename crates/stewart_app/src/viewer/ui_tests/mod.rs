@@ -1,6 +1,7 @@
 //! The viewer's panels driven through their accessibility labels (egui_kittest): each
 //! test changes something as a user would and checks the state it edits.
 
+mod appearance;
 mod chinese;
 mod cueing;
 mod design;
