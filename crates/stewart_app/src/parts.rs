@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use stewart_kinematics::Scenario;
+use stewart_kinematics::model::appearance::{AppearanceSettings, Part};
 use stewart_render::cad::parts::{PartError, PartSet};
 
 use crate::cli::ScenarioArgs;
@@ -15,6 +16,29 @@ pub(crate) fn folder_of(args: &ScenarioArgs) -> PathBuf {
         .as_deref()
         .and_then(Path::parent)
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+}
+
+/// `appearance` with its files, named from `from`, named from `to` instead (a scenario
+/// saved to another folder keeps its parts): relative below `to`, else absolute.
+pub(crate) fn rebase(
+    appearance: &AppearanceSettings,
+    from: &Path,
+    to: &Path,
+) -> AppearanceSettings {
+    let mut out = appearance.clone();
+    for part in Part::ALL {
+        if let Some(look) = out.slot_mut(part) {
+            let full = std::path::absolute(from.join(&look.file))
+                .unwrap_or_else(|_| from.join(&look.file));
+            let to = std::path::absolute(to).unwrap_or_else(|_| to.to_path_buf());
+            look.file = full
+                .strip_prefix(&to)
+                .map_or_else(|_| full.clone(), Path::to_path_buf)
+                .to_string_lossy()
+                .into_owned();
+        }
+    }
+    out
 }
 
 /// The platform's size: the farthest joint from the z axis, metres.

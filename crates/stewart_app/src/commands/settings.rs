@@ -131,6 +131,19 @@ pub(crate) fn reference(scenario: &Scenario) -> String {
     for (key, value) in scenario.link.entries() {
         let _ = writeln!(out, "| `{key}` | `{value}` |");
     }
+    let _ = write!(
+        out,
+        "\n## `[appearance]`: CAD parts\n\n\
+         A mesh file (STL, OBJ, glTF, GLB; relative to the scenario file) per part, \
+         `--set appearance.PART.KEY=VALUE` with PART one of `base`, `platform`, `cylinder`, \
+         `rod`, `horn`; `PART.file = off` draws the part as usual. For a part with a file: \
+         `scale` (`mm`, `cm`, `m`, `in` or metres per unit), `rotation_deg` and `offset_m` \
+         (`x,y,z`, in the part's frame), `colour` (`#rrggbb` or `off`).\n\n\
+         | key | value |\n|---|---|\n"
+    );
+    for (key, value) in scenario.appearance.entries() {
+        let _ = writeln!(out, "| `{key}` | `{value}` |");
+    }
     out
 }
 
@@ -205,6 +218,15 @@ pub(crate) fn table(scenario: &Scenario) -> String {
         "\nThe link to hardware ([link]; words or numbers, --set link.KEY=VALUE, K = channel 1..6):"
     );
     let entries = scenario.link.entries();
+    let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
+    for (key, value) in entries {
+        let _ = writeln!(out, "{key:width$}  {value}");
+    }
+    let _ = writeln!(
+        out,
+        "\nCAD parts ([appearance]; --set appearance.PART.KEY=VALUE, PART = base, platform, cylinder, rod, horn):"
+    );
+    let entries = scenario.appearance.entries();
     let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
     for (key, value) in entries {
         let _ = writeln!(out, "{key:width$}  {value}");

@@ -3,6 +3,7 @@
 
 mod analysis;
 mod boards;
+mod cad;
 mod calibrate;
 mod capture;
 mod check;

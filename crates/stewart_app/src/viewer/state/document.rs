@@ -69,6 +69,15 @@ impl Document {
         self.reload_parts();
     }
 
+    /// The scenario is now a file in `folder`: its part files named from there (the same
+    /// files: no edit to undo, no mesh read again).
+    pub(crate) fn moved_to(&mut self, folder: PathBuf) {
+        let rebased = crate::parts::rebase(&self.scenario.appearance, &self.folder, &folder);
+        self.scenario.appearance = rebased;
+        self.folder = folder;
+        self.reload_parts();
+    }
+
     /// The folder part files are named from.
     pub(crate) fn folder(&self) -> &Path {
         &self.folder

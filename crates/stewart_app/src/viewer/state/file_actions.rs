@@ -144,12 +144,17 @@ impl ViewerState {
     /// Save the scenario as TOML (whole or not at all).
     pub(crate) fn save_file(&mut self, path: &Path) {
         let full = absolute(path);
-        let text = self.scenario().to_toml();
+        // Part files stay the same files: named from the folder saved to.
+        let mut saved = self.scenario().clone();
+        saved.appearance =
+            crate::parts::rebase(&saved.appearance, self.doc.folder(), &folder_of(&full));
+        let text = saved.to_toml();
         let lang = self.look.lang;
         let written = crate::output::write_atomically(&full, text.as_bytes())
             .map(|()| lang.fmt("scenario.saved", &[("path", &full.display())]))
             .map_err(|e| ViewerError::Export(Arc::new(e)));
         if written.is_ok() {
+            self.doc.moved_to(folder_of(&full));
             self.doc.mark_saved();
             // The saved session remembers the file now (Ctrl+S at the next start saves it).
             self.session.origin = full.display().to_string();

@@ -112,3 +112,27 @@ impl egui::DroppedFile for Dropped {
         std::fs::read(&self.0).map_err(|e| e.to_string())
     }
 }
+
+#[test]
+fn a_scenario_saved_elsewhere_keeps_its_parts() {
+    let mut h = seed_with_parts();
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let copy = dir.path().join("copy.toml");
+    h.state_mut().save_file(&copy);
+    h.run();
+    // The saved file names the same meshes from its own folder, and reads back with them.
+    let saved = stewart_kinematics::Scenario::load(&copy).unwrap_or_else(|e| panic!("{e}"));
+    let base = saved
+        .appearance
+        .part(Part::Base)
+        .cloned()
+        .unwrap_or_else(|| panic!("base"));
+    assert_eq!(
+        std::fs::canonicalize(dir.path().join(&base.file)).ok(),
+        std::fs::canonicalize(examples().join("base.stl")).ok()
+    );
+    h.state_mut().open_file(&copy);
+    h.run();
+    assert_eq!(h.state().doc.parts().triangles(), 1608 + 280 + 512 + 512);
+    assert!(h.state().doc.edit_error.is_none());
+}
