@@ -29,6 +29,9 @@ pub struct Overlays {
     pub labels: bool,
     /// The labels' size against the usual (larger for a projector).
     pub label_scale: f32,
+    /// CAD parts drawn from their lighter stand-ins (a view on a software rasteriser);
+    /// off: from their files (exports, screenshots, a GPU).
+    pub cad_preview: bool,
 }
 
 impl Default for Overlays {
@@ -41,6 +44,7 @@ impl Default for Overlays {
             coloured_legs: true,
             labels: true,
             label_scale: 1.0,
+            cad_preview: false,
         }
     }
 }
@@ -213,7 +217,7 @@ impl DrawList {
             None => list.linear_legs(frame, &colours, s, drawn),
             Some(servos) => list.servos(frame, servos, &colours, s, drawn),
         }
-        list.cad_parts(frame, &colours, parts);
+        list.cad_parts(frame, &colours, parts, overlays.cad_preview);
         if overlays.labels {
             list.labels(frame, &colours, overlays.label_scale);
         }
@@ -540,6 +544,7 @@ mod tests {
                 coloured_legs: true,
                 labels: true,
                 label_scale: 1.0,
+                cad_preview: false,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
@@ -581,6 +586,7 @@ mod tests {
             coloured_legs: false,
             labels: false,
             label_scale: 1.0,
+            cad_preview: false,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

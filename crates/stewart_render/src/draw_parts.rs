@@ -38,17 +38,24 @@ pub fn frame_matrix(p: &Placement) -> Mat4 {
 
 impl DrawList {
     /// Place every part `parts` has a mesh for.
-    pub(crate) fn cad_parts(&mut self, frame: &SceneFrame, colours: &LegColours, parts: &PartSet) {
+    pub(crate) fn cad_parts(
+        &mut self,
+        frame: &SceneFrame,
+        colours: &LegColours,
+        parts: &PartSet,
+        preview: bool,
+    ) {
         if parts.is_empty() {
             return;
         }
         let theme = colours.theme;
         if let Some(p) = parts.get(Part::Base) {
-            self.place(p, Mat4::IDENTITY, theme.base_plate, false);
+            self.place(p, preview, Mat4::IDENTITY, theme.base_plate, false);
         }
         if let Some(p) = parts.get(Part::Platform) {
             self.place(
                 p,
+                preview,
                 frame_matrix(&frame.platform_placement()),
                 theme.platform,
                 false,
@@ -61,22 +68,42 @@ impl DrawList {
                 && let Some(p) = parts.get(Part::Cylinder)
             {
                 let [at, _] = frame.leg_placements(k);
-                self.place(p, frame_matrix(&at), body, warn && !colours.coloured);
+                self.place(
+                    p,
+                    preview,
+                    frame_matrix(&at),
+                    body,
+                    warn && !colours.coloured,
+                );
             }
             if let Some(p) = parts.get(Part::Rod) {
-                self.place(p, frame_matrix(&frame.rod_placement(k)), rod, warn);
+                self.place(p, preview, frame_matrix(&frame.rod_placement(k)), rod, warn);
             }
             if let (Some(p), Some(at)) = (parts.get(Part::Horn), frame.horn_placement(k)) {
-                self.place(p, frame_matrix(&at), colours.horn(k, leg.status), warn);
+                self.place(
+                    p,
+                    preview,
+                    frame_matrix(&at),
+                    colours.horn(k, leg.status),
+                    warn,
+                );
             }
         }
     }
 
-    /// Each piece of `part` at `frame`: in `studio` when `warning`, else in the table's
+    /// Each piece of `part` (its stand-in when `preview`) at `frame`: in `studio` when `warning`, else in the table's
     /// colour, the file's, or `studio`; always opaque.
-    fn place(&mut self, part: &LoadedPart, frame: Mat4, studio: Srgba, warning: bool) {
+    fn place(
+        &mut self,
+        part: &LoadedPart,
+        preview: bool,
+        frame: Mat4,
+        studio: Srgba,
+        warning: bool,
+    ) {
         let model = (frame * part.transform).to_cols_array_2d();
-        for piece in &part.mesh.pieces {
+        let mesh = if preview { &part.preview } else { &part.mesh };
+        for piece in &mesh.pieces {
             let chosen = if warning {
                 studio
             } else {

@@ -5,7 +5,9 @@
 //!   (`tobj`), glTF 2.0 / GLB (`gltf`: meshes under the default scene with their node
 //!   transforms, base-colour materials) — into a [`PartMesh`], its pieces one colour each;
 //! - [`parts`]: the scenario's table read into a [`parts::PartSet`] (paths relative to the
-//!   scenario file, each part's scale checked against the platform's size).
+//!   scenario file, each part's scale checked against the platform's size);
+//! - [`simplify`]: a lighter stand-in for a heavy part, for views a software rasteriser
+//!   draws.
 //!
 //! Files without normals get flat ones (each triangle its own), as glTF prescribes. Every
 //! fault is a [`CadError`] naming the file and, where the format has them, the line,
@@ -15,6 +17,7 @@ mod gltf_file;
 mod normals;
 mod obj;
 pub mod parts;
+pub mod simplify;
 mod stl;
 
 use std::path::{Path, PathBuf};

@@ -17,6 +17,9 @@ use super::{CadError, PartMesh};
 pub struct LoadedPart {
     /// The file as read.
     pub mesh: Arc<PartMesh>,
+    /// A stand-in of at most [`super::simplify::PREVIEW_TRIANGLES`] triangles (the same
+    /// mesh when it has no more), for views a software rasteriser draws.
+    pub preview: Arc<PartMesh>,
     /// From the file's units and axes into the part's frame: offset · rotation · scale.
     pub transform: Mat4,
     /// The table's colour (sRGB, alpha), which wins over the file's.
@@ -103,16 +106,23 @@ impl PartSet {
             let kept = previous
                 .and_then(|p| p.get(part))
                 .filter(|p| p.path == path)
-                .map(|p| Arc::clone(&p.mesh));
-            let mesh = match kept {
-                Some(mesh) => mesh,
-                None => Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?),
+                .map(|p| (Arc::clone(&p.mesh), Arc::clone(&p.preview)));
+            let (mesh, preview) = match kept {
+                Some(both) => both,
+                None => {
+                    let mesh = Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?);
+                    let preview =
+                        super::simplify::simplified(&mesh, super::simplify::PREVIEW_TRIANGLES)
+                            .map_or_else(|| Arc::clone(&mesh), Arc::new);
+                    (mesh, preview)
+                }
             };
             check_size(&mesh, look.scale, platform_m).map_err(|f| error("scale", f))?;
             set.parts[slot(part)] = Some(LoadedPart {
                 transform: transform(look),
                 colour: look.colour.map(|c| c.rgba()),
                 mesh,
+                preview,
                 path,
             });
         }

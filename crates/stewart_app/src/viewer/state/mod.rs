@@ -201,6 +201,13 @@ impl ViewerState {
     /// far, the switches of the look and, when on, the readout. The view and its
     /// screenshots draw the same list.
     pub(crate) fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
+        // A software rasteriser draws heavy CAD parts' stand-ins to stay interactive.
+        self.scene_list(theme, self.quality.software)
+    }
+
+    /// [`ViewerState::draw_list`] with CAD parts drawn from their files in full (`preview`
+    /// off: screenshots, exports) or from their lighter stand-ins.
+    pub(crate) fn scene_list(&self, theme: &Theme, preview: bool) -> stewart_render::DrawList {
         // Live vehicle motion has no trajectory time nor path.
         let trajectory = self.playback.mode == MotionMode::Trajectory && !self.link.cueing_live();
         let path = if self.look.show_path && trajectory {
@@ -216,6 +223,7 @@ impl ViewerState {
             coloured_legs: self.look.coloured_legs,
             labels: self.look.labels,
             label_scale: if self.look.presentation { 1.6 } else { 1.0 },
+            cad_preview: preview,
             ..stewart_render::Overlays::default()
         };
         let mut list =
@@ -268,7 +276,7 @@ impl ViewerState {
             ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
             ShotKind::View => {
                 let theme = self.theme();
-                let list = self.draw_list(&theme);
+                let list = self.scene_list(&theme, false);
                 let size = self.shots.scale.size(self.look.view_px);
                 let camera = self.look.camera;
                 self.shots
