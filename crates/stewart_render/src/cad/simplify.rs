@@ -19,7 +19,9 @@ pub fn simplified(part: &PartMesh, budget: usize) -> Option<PartMesh> {
     if part.triangles <= budget {
         return None;
     }
-    let extent = (part.bounds[1] - part.bounds[0]).max_element().max(f32::MIN_POSITIVE);
+    let extent = (part.bounds[1] - part.bounds[0])
+        .max_element()
+        .max(f32::MIN_POSITIVE);
     let at = |cells: u32| {
         let pieces: Vec<Piece> = part
             .pieces
