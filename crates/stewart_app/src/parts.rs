@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use stewart_kinematics::Scenario;
 use stewart_kinematics::model::appearance::{AppearanceSettings, Part};
-use stewart_render::cad::parts::{PartError, PartSet};
+use stewart_render::cad::parts::{PartError, PartSet, platform_size};
 
 use crate::cli::ScenarioArgs;
 
@@ -41,28 +41,49 @@ pub(crate) fn rebase(
     out
 }
 
-/// The platform's size: the farthest joint from the z axis, metres.
-pub(crate) fn platform_size(scenario: &Scenario) -> f64 {
-    let g = &scenario.geometry;
-    g.base_joints()
-        .iter()
-        .chain(g.platform_joints())
-        .map(|p| p.xy().norm())
-        .fold(0.0, f64::max)
+/// `appearance` with every file named by its absolute path from `folder` (the viewer's
+/// document keeps them so: undo and a scenario from another folder name the same files).
+pub(crate) fn anchored(appearance: &AppearanceSettings, folder: &Path) -> AppearanceSettings {
+    let mut out = appearance.clone();
+    for part in Part::ALL {
+        if let Some(look) = out.slot_mut(part) {
+            let full = folder.join(&look.file);
+            look.file = std::path::absolute(&full)
+                .unwrap_or(full)
+                .to_string_lossy()
+                .into_owned();
+        }
+    }
+    out
 }
 
-/// Read the parts `scenario` names, files relative to `folder`; meshes of `previous` read
-/// from the same file are kept.
-pub(crate) fn load(
-    scenario: &Scenario,
-    folder: &Path,
-    previous: Option<&PartSet>,
-) -> Result<PartSet, PartError> {
+/// Read the parts `scenario` names, files relative to `folder`, for a command (no
+/// stand-ins); the first that fails is the error.
+pub(crate) fn load(scenario: &Scenario, folder: &Path) -> Result<PartSet, PartError> {
     PartSet::load(
         &scenario.appearance,
         folder,
         scenario.geometry.actuator().kind(),
-        platform_size(scenario),
+        platform_size(&scenario.geometry),
+        None,
+        false,
+    )
+}
+
+/// Read the parts `scenario` names for the viewer, part by part (stand-ins for software
+/// rasterisers made), meshes of `previous` read from the same file kept: those that
+/// read, and why each other failed.
+pub(crate) fn read(
+    scenario: &Scenario,
+    folder: &Path,
+    previous: Option<&PartSet>,
+) -> (PartSet, Vec<PartError>) {
+    PartSet::read(
+        &scenario.appearance,
+        folder,
+        scenario.geometry.actuator().kind(),
+        platform_size(&scenario.geometry),
         previous,
+        true,
     )
 }

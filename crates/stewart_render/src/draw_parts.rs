@@ -27,11 +27,17 @@ pub struct PartInstance {
     pub bounds: [Vec3; 2],
 }
 
-/// A part's frame as a matrix (f64 → f32 here, where kinematics data enters the renderer).
-pub fn frame_matrix(p: &Placement) -> Mat4 {
+/// A part frame's orientation in single precision (f64 → f32 here, where kinematics data
+/// enters the renderer).
+pub fn frame_rotation(p: &Placement) -> Quat {
     let q = p.rotation.quaternion();
+    Quat::from_xyzw(q.i as f32, q.j as f32, q.k as f32, q.w as f32).normalize()
+}
+
+/// A part's frame as a matrix.
+pub fn frame_matrix(p: &Placement) -> Mat4 {
     Mat4::from_rotation_translation(
-        Quat::from_xyzw(q.i as f32, q.j as f32, q.k as f32, q.w as f32).normalize(),
+        frame_rotation(p),
         Vec3::new(p.origin.x as f32, p.origin.y as f32, p.origin.z as f32),
     )
 }
@@ -103,11 +109,11 @@ impl DrawList {
     ) {
         let model = (frame * part.transform).to_cols_array_2d();
         let mesh = if preview { &part.preview } else { &part.mesh };
-        for piece in &mesh.pieces {
+        for piece in mesh.pieces.iter().filter(|p| !p.mesh.indices.is_empty()) {
             let chosen = if warning {
                 studio
             } else {
-                part.colour.or(piece.colour).unwrap_or(studio)
+                part.colour_of(piece, studio)
             };
             let [r, g, b, _] = linear(chosen);
             self.parts.push(PartInstance {

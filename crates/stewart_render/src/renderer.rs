@@ -376,6 +376,9 @@ impl Renderer {
             pass.set_pipeline(&self.parts);
             for &(slot, instance) in &view.batches.parts {
                 let mesh = &view.parts[slot].1;
+                if mesh.count == 0 {
+                    continue;
+                }
                 pass.set_vertex_buffer(0, mesh.vertices.slice(..));
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
                 pass.draw_indexed(0..mesh.count, 0, instance..instance + 1);

@@ -45,7 +45,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // The output is never one of the inputs (a scenario file named `x.gif`, say).
     crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
-    let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario), None)?;
+    let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario))?;
     if crate::export::gltf::is_gltf(&args.out) {
         return animation(args, &scenario, parts);
     }

@@ -68,8 +68,7 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
     } else {
         crate::parts::folder_of(&args.scenario)
     };
-    let mut state = ViewerState::new(scenario);
-    state.doc.set_folder(parts_folder);
+    let mut state = ViewerState::new_in(scenario, parts_folder);
     if let Some(s) = &saved {
         restore(&mut state, s, restored);
     }

@@ -37,14 +37,14 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
     let mut pieces = Vec::new();
     let mut stack: Vec<(gltf::Node, Mat4)> =
         roots.into_iter().map(|n| (n, Mat4::IDENTITY)).collect();
-    let mut visited = 0usize;
+    let mut visited = vec![false; document.nodes().len()];
     while let Some((node, parent)) = stack.pop() {
-        visited += 1;
-        if visited > 1_000_000 {
+        // A tree: a node reached twice (two parents, or its own ancestor) is refused.
+        if std::mem::replace(&mut visited[node.index()], true) {
             return Err(malformed(
                 path,
-                None,
-                "its node tree does not end (a node is its own ancestor)".into(),
+                Some(format!("nodes[{}]", node.index())),
+                "is reached twice in the scene: its nodes must form a tree".into(),
             ));
         }
         let world = parent * Mat4::from_cols_array_2d(&node.transform().matrix());
@@ -160,6 +160,23 @@ fn primitive_piece(
     ) {
         return Ok(None);
     }
+    use gltf::Semantic;
+    use gltf::accessor::{DataType, Dimensions};
+    let positions = primitive
+        .get(&Semantic::Positions)
+        .ok_or_else(|| malformed(path, at(), "has no vertex positions".into()))?;
+    accessor_fits(path, &positions, &[DataType::F32], Dimensions::Vec3)?;
+    if let Some(normals) = primitive.get(&Semantic::Normals) {
+        accessor_fits(path, &normals, &[DataType::F32], Dimensions::Vec3)?;
+    }
+    if let Some(indices) = primitive.indices() {
+        accessor_fits(
+            path,
+            &indices,
+            &[DataType::U8, DataType::U16, DataType::U32],
+            Dimensions::Scalar,
+        )?;
+    }
     let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
     let positions: Vec<Vec3> = reader
         .read_positions()
@@ -171,8 +188,9 @@ fn primitive_piece(
             )
         })?
         .map(|p| -> Result<Vec3, CadError> {
-            finite(path, p, || at().map(Location::Item))?;
-            Ok(world.transform_point3(Vec3::from_array(p)))
+            let placed = world.transform_point3(Vec3::from_array(p)).to_array();
+            finite(path, placed, || at().map(Location::Item))?;
+            Ok(Vec3::from_array(placed))
         })
         .collect::<Result<_, _>>()?;
     let list: Vec<u32> = match reader.read_indices() {
@@ -195,31 +213,34 @@ fn primitive_piece(
         n.map(|n| (to_world * Vec3::from_array(n)).normalize_or_zero())
             .collect()
     });
-    let mesh =
-        match normals.filter(|n| n.len() == positions.len() && n.iter().all(|v| v.is_finite())) {
-            Some(normals) => Mesh {
-                vertices: positions
-                    .iter()
-                    .zip(&normals)
-                    .map(|(p, n)| MeshVertex {
-                        position: p.to_array(),
-                        normal: n.to_array(),
-                    })
-                    .collect(),
-                indices: triangles,
-            },
-            None => {
-                let mut flat = FlatMesh::with_capacity(triangles.len() / 3);
-                for t in triangles.chunks_exact(3) {
-                    flat.push(
-                        positions[t[0] as usize],
-                        positions[t[1] as usize],
-                        positions[t[2] as usize],
-                    );
-                }
-                flat.finish()
+    // The file's normals when every one is a direction, else flat ones.
+    let usable = |n: &Vec<Vec3>| {
+        n.len() == positions.len() && n.iter().all(|v| (v.length() - 1.0).abs() < 1e-3)
+    };
+    let mesh = match normals.filter(usable) {
+        Some(normals) => Mesh {
+            vertices: positions
+                .iter()
+                .zip(&normals)
+                .map(|(p, n)| MeshVertex {
+                    position: p.to_array(),
+                    normal: n.to_array(),
+                })
+                .collect(),
+            indices: triangles,
+        },
+        None => {
+            let mut flat = FlatMesh::with_capacity(triangles.len() / 3);
+            for t in triangles.chunks_exact(3) {
+                flat.push(
+                    positions[t[0] as usize],
+                    positions[t[1] as usize],
+                    positions[t[2] as usize],
+                );
             }
-        };
+            flat.finish()
+        }
+    };
     // The base colour factor is linear; the studio's colours are sRGB.
     let [r, g, b, a] = primitive
         .material()
@@ -233,6 +254,62 @@ fn primitive_piece(
         mesh: Arc::new(mesh),
         colour,
     }))
+}
+
+/// Refuse an accessor of another type than the attribute needs, of no elements, or
+/// reaching past its buffer view (the reader would otherwise fail inside).
+fn accessor_fits(
+    path: &Path,
+    accessor: &gltf::Accessor,
+    types: &[gltf::accessor::DataType],
+    dimensions: gltf::accessor::Dimensions,
+) -> Result<(), CadError> {
+    let at = || Some(format!("accessors[{}]", accessor.index()));
+    if !types.contains(&accessor.data_type()) || accessor.dimensions() != dimensions {
+        return Err(malformed(
+            path,
+            at(),
+            format!(
+                "is {:?} {:?}, where {:?} of {:?} is needed",
+                accessor.dimensions(),
+                accessor.data_type(),
+                dimensions,
+                types
+            ),
+        ));
+    }
+    if accessor.count() == 0 {
+        return Err(malformed(path, at(), "holds no elements".into()));
+    }
+    if accessor.sparse().is_some() {
+        return Err(malformed(
+            path,
+            at(),
+            "is sparse, which parts do not take".into(),
+        ));
+    }
+    let Some(view) = accessor.view() else {
+        return Err(malformed(path, at(), "has no buffer view".into()));
+    };
+    let size = accessor.size();
+    let stride = view.stride().unwrap_or(size).max(size);
+    let end = (accessor.count() - 1)
+        .checked_mul(stride)
+        .and_then(|n| n.checked_add(size))
+        .and_then(|n| n.checked_add(accessor.offset()));
+    match end {
+        Some(end) if end <= view.length() => Ok(()),
+        _ => Err(malformed(
+            path,
+            at(),
+            format!(
+                "reaches past its buffer view ({} elements of {stride} bytes from byte {}, in {} bytes)",
+                accessor.count(),
+                accessor.offset(),
+                view.length()
+            ),
+        )),
+    }
 }
 
 /// A linear channel value encoded as sRGB.

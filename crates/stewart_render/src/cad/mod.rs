@@ -1,7 +1,7 @@
 //! CAD parts: mesh files read into triangle meshes the renderer draws in place of a
 //! body's usual drawing (`[appearance]` in a scenario file).
 //!
-//! - [`load`]: one file — STL (binary or ASCII, `stl_io`), OBJ with its MTL colours
+//! - [`load`]: one file — STL (binary or ASCII, read here: see `stl.rs`), OBJ with its MTL colours
 //!   (`tobj`), glTF 2.0 / GLB (`gltf`: meshes under the default scene with their node
 //!   transforms, base-colour materials) — into a [`PartMesh`], its pieces one colour each;
 //! - [`parts`]: the scenario's table read into a [`parts::PartSet`] (paths relative to the
@@ -86,8 +86,6 @@ pub enum Location {
     Line(usize),
     /// A byte offset from the file's start.
     Byte(u64),
-    /// A facet (triangle) from 1, for ASCII STL.
-    Facet(usize),
     /// A place in a glTF document: `meshes[2].primitives[0]`, `accessors[5]`.
     Item(String),
 }
@@ -97,7 +95,6 @@ impl std::fmt::Display for Location {
         match self {
             Location::Line(n) => write!(f, "line {n}"),
             Location::Byte(b) => write!(f, "byte {b}"),
-            Location::Facet(n) => write!(f, "facet {n}"),
             Location::Item(s) => f.write_str(s),
         }
     }

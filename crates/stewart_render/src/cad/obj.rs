@@ -61,7 +61,13 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
             })?;
             Ok(Vec3::from_array(p))
         };
-        let mesh = if m.normals.len() == m.positions.len() {
+        // The file's normals when every one is a direction, else flat ones.
+        let usable = m.normals.len() == m.positions.len()
+            && m.normals.chunks_exact(3).all(|n| {
+                let n = Vec3::new(n[0], n[1], n[2]);
+                n.is_finite() && n.length() > 1e-6
+            });
+        let mesh = if usable {
             // The file's normals, one per corner.
             let mut mesh = Mesh {
                 vertices: Vec::with_capacity(m.positions.len() / 3),
@@ -71,7 +77,9 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
                 let k = 3 * i as usize;
                 mesh.vertices.push(MeshVertex {
                     position: position(i)?.to_array(),
-                    normal: [m.normals[k], m.normals[k + 1], m.normals[k + 2]],
+                    normal: Vec3::new(m.normals[k], m.normals[k + 1], m.normals[k + 2])
+                        .normalize()
+                        .to_array(),
                 });
             }
             if let Some(&bad) = mesh

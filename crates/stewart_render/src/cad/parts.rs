@@ -84,49 +84,44 @@ impl PartSet {
     }
 
     /// Read the meshes `appearance` names for a platform of actuator `kind` and size
-    /// `platform_m` (the larger plate radius), files relative to `folder`. Meshes of
-    /// `previous` read from the same path are kept rather than read again (a slider
-    /// moving a part's offset does not reread its file).
+    /// `platform_m` (the larger plate radius), files relative to `folder`; the first part
+    /// that fails is the error. Meshes of `previous` read from the same path are kept
+    /// rather than read again (a slider moving a part's offset does not reread its
+    /// file); with `previews`, heavy parts get their stand-ins for software rasterisers.
     pub fn load(
         appearance: &AppearanceSettings,
         folder: &Path,
         kind: ActuatorKind,
         platform_m: f64,
         previous: Option<&PartSet>,
+        previews: bool,
     ) -> Result<PartSet, PartError> {
-        let mut set = PartSet::default();
-        for (part, look) in appearance.parts().filter(|(p, _)| p.applies_to(kind)) {
-            let path = folder.join(&look.file);
-            let error = |key, fault| PartError {
-                part,
-                key,
-                file: look.file.clone(),
-                fault,
-            };
-            let kept = previous
-                .and_then(|p| p.get(part))
-                .filter(|p| p.path == path)
-                .map(|p| (Arc::clone(&p.mesh), Arc::clone(&p.preview)));
-            let (mesh, preview) = match kept {
-                Some(both) => both,
-                None => {
-                    let mesh = Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?);
-                    let preview =
-                        super::simplify::simplified(&mesh, super::simplify::PREVIEW_TRIANGLES)
-                            .map_or_else(|| Arc::clone(&mesh), Arc::new);
-                    (mesh, preview)
-                }
-            };
-            check_size(&mesh, look.scale, platform_m).map_err(|f| error("scale", f))?;
-            set.parts[slot(part)] = Some(LoadedPart {
-                transform: transform(look),
-                colour: look.colour.map(|c| c.rgba()),
-                mesh,
-                preview,
-                path,
-            });
+        let (set, mut errors) =
+            Self::read(appearance, folder, kind, platform_m, previous, previews);
+        match errors.is_empty() {
+            true => Ok(set),
+            false => Err(errors.swap_remove(0)),
         }
-        Ok(set)
+    }
+
+    /// [`PartSet::load`] part by part: the parts that read, and why each other failed.
+    pub fn read(
+        appearance: &AppearanceSettings,
+        folder: &Path,
+        kind: ActuatorKind,
+        platform_m: f64,
+        previous: Option<&PartSet>,
+        previews: bool,
+    ) -> (PartSet, Vec<PartError>) {
+        let mut set = PartSet::default();
+        let mut errors = Vec::new();
+        for (part, look) in appearance.parts().filter(|(p, _)| p.applies_to(kind)) {
+            match read_part(part, look, folder, platform_m, previous, previews) {
+                Ok(loaded) => set.parts[slot(part)] = Some(loaded),
+                Err(e) => errors.push(e),
+            }
+        }
+        (set, errors)
     }
 
     /// The mesh of `part`, if it has one.
@@ -145,6 +140,64 @@ impl PartSet {
     }
 }
 
+/// A platform's size for judging parts: the farthest joint from the z axis, metres.
+pub fn platform_size(g: &stewart_kinematics::model::geometry::Geometry) -> f64 {
+    g.base_joints()
+        .iter()
+        .chain(g.platform_joints())
+        .map(|p| p.xy().norm())
+        .fold(0.0, f64::max)
+}
+
+/// One part's mesh read (or kept from `previous`) and judged against the platform.
+fn read_part(
+    part: Part,
+    look: &PartLook,
+    folder: &Path,
+    platform_m: f64,
+    previous: Option<&PartSet>,
+    previews: bool,
+) -> Result<LoadedPart, PartError> {
+    let path = folder.join(&look.file);
+    let error = |key, fault| PartError {
+        part,
+        key,
+        file: look.file.clone(),
+        fault,
+    };
+    let kept = previous
+        .and_then(|p| p.get(part))
+        .filter(|p| p.path == path)
+        .map(|p| (Arc::clone(&p.mesh), Arc::clone(&p.preview)));
+    let (mesh, preview) = match kept {
+        Some(both) => both,
+        None => {
+            let mesh = Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?);
+            let preview = previews
+                .then(|| super::simplify::simplified(&mesh, super::simplify::PREVIEW_TRIANGLES))
+                .flatten()
+                .map_or_else(|| Arc::clone(&mesh), Arc::new);
+            (mesh, preview)
+        }
+    };
+    check_size(&mesh, look.scale, platform_m).map_err(|f| error("scale", f))?;
+    Ok(LoadedPart {
+        transform: transform(look),
+        colour: look.colour.map(|c| c.rgba()),
+        mesh,
+        preview,
+        path,
+    })
+}
+
+impl LoadedPart {
+    /// The colour `piece` of this part is drawn in: the table's, else the file's, else
+    /// `studio`'s.
+    pub fn colour_of(&self, piece: &super::Piece, studio: [f32; 4]) -> [f32; 4] {
+        self.colour.or(piece.colour).unwrap_or(studio)
+    }
+}
+
 /// The table's placement of a file in its part's frame: offset · Rz · Ry · Rx · scale.
 pub fn transform(look: &PartLook) -> Mat4 {
     let [rx, ry, rz] = look.rotation_deg.map(|d| (d as f32).to_radians());
@@ -153,6 +206,24 @@ pub fn transform(look: &PartLook) -> Mat4 {
         Quat::from_euler(EulerRot::ZYX, rz, ry, rx),
         Vec3::from_array(look.offset_m.map(|v| v as f32)),
     )
+}
+
+/// The unit (mm, cm, m, in) that makes `mesh` nearest the platform's size `platform_m`
+/// (for a file whose unit nobody said).
+pub fn likely_unit(mesh: &PartMesh, platform_m: f64) -> MeshScale {
+    let size = f64::from(mesh.size());
+    [
+        MeshScale::Millimetre,
+        MeshScale::Centimetre,
+        MeshScale::Metre,
+        MeshScale::Inch,
+    ]
+    .into_iter()
+    .min_by(|a, b| {
+        let off = |s: &MeshScale| (size * s.metres() / platform_m).ln().abs();
+        off(a).total_cmp(&off(b))
+    })
+    .unwrap_or(MeshScale::Metre)
 }
 
 /// Refuse a scale that makes the part more than 50 times the platform's size or less
@@ -167,18 +238,7 @@ fn check_size(mesh: &PartMesh, scale: MeshScale, platform_m: f64) -> Result<(), 
     {
         return Ok(());
     }
-    let best = [
-        MeshScale::Millimetre,
-        MeshScale::Centimetre,
-        MeshScale::Metre,
-        MeshScale::Inch,
-    ]
-    .into_iter()
-    .min_by(|a, b| {
-        let off = |s: &MeshScale| (size * s.metres() / platform_m).ln().abs();
-        off(a).total_cmp(&off(b))
-    })
-    .unwrap_or(MeshScale::Metre);
+    let best = likely_unit(mesh, platform_m);
     let hint = if (SIZE_RATIO.0..=SIZE_RATIO.1).contains(&(size * best.metres() / platform_m)) {
         format!(
             "is the file in {}? (`scale = \"{}\"`)",

@@ -23,6 +23,7 @@ pub fn simplified(part: &PartMesh, budget: usize) -> Option<PartMesh> {
         .max_element()
         .max(f32::MIN_POSITIVE);
     let at = |cells: u32| {
+        // A small piece can collapse into one cell: it is left out, never drawn empty.
         let pieces: Vec<Piece> = part
             .pieces
             .iter()
@@ -30,6 +31,7 @@ pub fn simplified(part: &PartMesh, budget: usize) -> Option<PartMesh> {
                 mesh: Arc::new(clustered(&p.mesh, part.bounds[0], extent / cells as f32)),
                 colour: p.colour,
             })
+            .filter(|p| !p.mesh.indices.is_empty())
             .collect();
         let triangles: usize = pieces.iter().map(|p| p.mesh.indices.len() / 3).sum();
         PartMesh {

@@ -244,7 +244,7 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
         horn: Some(PartLook::new("horn.glb")),
         ..AppearanceSettings::default()
     };
-    let set = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+    let set = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None, true)
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(set.get(Part::Base).is_some());
     assert!(
@@ -255,7 +255,7 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
     if let Some(b) = a.base.as_mut() {
         b.offset_m = [0.0, 0.0, 0.1];
     }
-    let again = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, Some(&set))
+    let again = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, Some(&set), true)
         .unwrap_or_else(|e| panic!("{e}"));
     let mesh = |s: &PartSet| s.get(Part::Base).map(|p| std::sync::Arc::as_ptr(&p.mesh));
     assert_eq!(mesh(&set), mesh(&again));
@@ -263,7 +263,7 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
     if let Some(b) = a.base.as_mut() {
         b.scale = MeshScale::Metre;
     }
-    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None, true)
         .err()
         .unwrap_or_else(|| panic!("accepted"));
     assert!(matches!(e.fault, PartFault::Scale { .. }));
@@ -279,7 +279,7 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
     if let Some(b) = a.base.as_mut() {
         b.file = "nowhere.stl".into();
     }
-    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None)
+    let e = PartSet::load(&a, &folder, ActuatorKind::Linear, 1.0, None, true)
         .err()
         .unwrap_or_else(|| panic!("accepted"));
     assert!(
@@ -287,4 +287,90 @@ fn a_part_set_reads_the_table_names_the_key_at_fault_and_keeps_unchanged_files()
             .starts_with("`appearance.base.file` (nowhere.stl): "),
         "{e}"
     );
+}
+
+/// A one-triangle glTF with its buffer inline, `accessors` and `nodes` as given.
+fn tiny_gltf(accessors: &str, nodes: &str, scene_nodes: &str) -> String {
+    use base64::Engine as _;
+    let mut bin = Vec::new();
+    for v in [0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+        bin.extend(v.to_le_bytes());
+    }
+    let data = base64::engine::general_purpose::STANDARD.encode(&bin);
+    format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":{scene_nodes}}}],"nodes":{nodes},"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}}}}]}}],"buffers":[{{"byteLength":36,"uri":"data:application/octet-stream;base64,{data}"}}],"bufferViews":[{{"buffer":0,"byteLength":36}}],"accessors":{accessors}}}"#
+    )
+}
+
+#[test]
+fn hostile_gltf_accessors_and_node_trees_are_refused_not_read() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let good = r#"[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]"#;
+    let one = r#"[{"mesh":0}]"#;
+    let ok = write(
+        dir.path(),
+        "ok.gltf",
+        tiny_gltf(good, one, "[0]").as_bytes(),
+    );
+    assert_eq!(load(&ok).map(|m| m.triangles).ok(), Some(1));
+    for (name, accessors, nodes, roots, says) in [
+        (
+            "many.gltf",
+            r#"[{"bufferView":0,"componentType":5126,"count":4000000000,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]"#,
+            one,
+            "[0]",
+            "accessors[0]: reaches past its buffer view",
+        ),
+        (
+            "vec2.gltf",
+            r#"[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC2","min":[0,0],"max":[1,1]}]"#,
+            one,
+            "[0]",
+            "attributes[\"POSITION\"]",
+        ),
+        (
+            "twice.gltf",
+            good,
+            r#"[{"children":[1]},{"mesh":0}]"#,
+            "[0,1]",
+            "is reached twice in the scene",
+        ),
+    ] {
+        let e = error(&write(
+            dir.path(),
+            name,
+            tiny_gltf(accessors, nodes, roots).as_bytes(),
+        ));
+        assert!(e.contains(says), "{name}: {e}");
+    }
+}
+
+#[test]
+fn a_heavy_part_whose_small_piece_vanishes_keeps_no_empty_piece() {
+    use crate::cad::simplify::simplified;
+    use crate::mesh::Mesh;
+    // A big sphere and a tiny one (a screw) far from it: at the coarse grid the screw
+    // falls into one cell.
+    let big = Mesh::sphere();
+    let mut tiny = Mesh::sphere();
+    for v in &mut tiny.vertices {
+        v.position = (Vec3::from(v.position) * 1e-4 + Vec3::new(3.0, 0.0, 0.0)).to_array();
+    }
+    let part = crate::cad::PartMesh::new(
+        Path::new("x"),
+        vec![
+            crate::cad::Piece {
+                mesh: std::sync::Arc::new(big),
+                colour: None,
+            },
+            crate::cad::Piece {
+                mesh: std::sync::Arc::new(tiny),
+                colour: Some([1.0; 4]),
+            },
+        ],
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let light = simplified(&part, 200).unwrap_or_else(|| panic!("not simplified"));
+    assert!(light.pieces.iter().all(|p| !p.mesh.indices.is_empty()));
+    assert!(light.triangles <= 200);
 }

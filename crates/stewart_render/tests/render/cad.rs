@@ -23,14 +23,16 @@ fn scenario(name: &str, assignments: &[&str]) -> (Scenario, PartSet) {
     let mut s = Scenario::load(&examples().join(name)).unwrap_or_else(|e| panic!("{e}"));
     settings::apply_all(&mut s, assignments.iter().copied()).unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
-    let size = g
-        .base_joints()
-        .iter()
-        .chain(g.platform_joints())
-        .map(|p| p.xy().norm())
-        .fold(0.0, f64::max);
-    let parts = PartSet::load(&s.appearance, &examples(), g.actuator().kind(), size, None)
-        .unwrap_or_else(|e| panic!("{e}"));
+    let size = stewart_render::cad::parts::platform_size(g);
+    let parts = PartSet::load(
+        &s.appearance,
+        &examples(),
+        g.actuator().kind(),
+        size,
+        None,
+        false,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     (s, parts)
 }
 

@@ -3,6 +3,7 @@
 //! materials made once per colour.
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use glam::{Mat3, Mat4, Vec3};
 use gltf_json as json;
@@ -21,12 +22,14 @@ pub(super) struct Geometry {
 /// The document and its binary data.
 #[derive(Default)]
 pub(super) struct Document {
+    /// The glTF document (nodes, meshes, accessors, …).
     pub(super) root: json::Root,
+    /// The one buffer's bytes.
     pub(super) bin: Vec<u8>,
     materials: HashMap<[u32; 4], json::Index<json::Material>>,
-    /// Geometry written, by mesh address and transform (a CAD part drawn six times is
-    /// written once).
-    geometries: HashMap<(usize, [u32; 16]), Geometry>,
+    /// Geometry written, by mesh and transform (a CAD part drawn six times is written
+    /// once); each mesh held, so no other can take its address while the key stands.
+    geometries: HashMap<(usize, [u32; 16]), (Geometry, Arc<Mesh>)>,
 }
 
 impl Document {
@@ -101,18 +104,18 @@ impl Document {
     }
 
     /// `mesh` placed by `transform` (any affine map: normals go through its inverse
-    /// transpose), written once for a mesh that lives through the whole export (the same
-    /// mesh and transform asked again give the same accessors).
-    pub(super) fn geometry(&mut self, mesh: &Mesh, transform: Mat4) -> Geometry {
+    /// transpose), written once (the same mesh and transform asked again give the same
+    /// accessors).
+    pub(super) fn geometry(&mut self, mesh: &Arc<Mesh>, transform: Mat4) -> Geometry {
         let key = (
-            std::ptr::from_ref(mesh) as usize,
+            Arc::as_ptr(mesh) as usize,
             transform.to_cols_array().map(f32::to_bits),
         );
-        if let Some(&g) = self.geometries.get(&key) {
-            return g;
+        if let Some((g, _)) = self.geometries.get(&key) {
+            return *g;
         }
         let g = self.write_geometry(mesh, transform);
-        self.geometries.insert(key, g);
+        self.geometries.insert(key, (g, Arc::clone(mesh)));
         g
     }
 

@@ -2,6 +2,8 @@
 //! with their posts and joint balls, actuator bodies, rods, horns, servo bodies) at the
 //! sizes the renderer draws them, or the scenario's CAD parts.
 
+use std::sync::Arc;
+
 use glam::{Mat3, Mat4, Quat, Vec3};
 use gltf_json as json;
 use stewart_kinematics::model::appearance::Part;
@@ -30,7 +32,9 @@ pub(super) struct Looks<'a> {
 
 /// The meshes made: the base's and one per moving node (in `super::placements`' order).
 pub(super) struct Meshes {
+    /// The base's (plate, joints, servo bodies).
     pub(super) base: json::Index<json::Mesh>,
+    /// The platform's, then each actuator's two parts'.
     pub(super) moving: Vec<json::Index<json::Mesh>>,
 }
 
@@ -38,18 +42,18 @@ type Pieces = Vec<(Geometry, json::Index<json::Material>)>;
 
 /// The shared shapes, written once.
 struct Shapes {
-    cylinder: Mesh,
-    sphere: Mesh,
-    cuboid: Mesh,
+    cylinder: Arc<Mesh>,
+    sphere: Arc<Mesh>,
+    cuboid: Arc<Mesh>,
 }
 
 /// Every mesh of the scene of the platform at `home`, rods long enough for legs of
 /// `longest` metres.
 pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longest: f32) -> Meshes {
     let shapes = Shapes {
-        cylinder: Mesh::cylinder(),
-        sphere: Mesh::sphere(),
-        cuboid: Mesh::cuboid(),
+        cylinder: Arc::new(Mesh::cylinder()),
+        sphere: Arc::new(Mesh::sphere()),
+        cuboid: Arc::new(Mesh::cuboid()),
     };
     let s = home.base_radius.max(home.platform_radius) as f32;
     let theme = looks.theme;
@@ -229,7 +233,7 @@ fn cad(doc: &mut Document, part: &LoadedPart, studio: Srgba) -> Pieces {
         .pieces
         .iter()
         .map(|piece| {
-            let chosen = part.colour.or(piece.colour).unwrap_or(studio);
+            let chosen = part.colour_of(piece, studio);
             let g = doc.geometry(&piece.mesh, part.transform);
             (g, doc.material(doc_colour(chosen)))
         })

@@ -82,8 +82,7 @@ impl Track {
 
     /// Add the key at `p`, its quaternion on the side of the previous one.
     fn key(&mut self, p: &Placement) {
-        let q = p.rotation.quaternion();
-        let mut q = Quat::from_xyzw(q.i as f32, q.j as f32, q.k as f32, q.w as f32).normalize();
+        let mut q = stewart_render::draw_parts::frame_rotation(p);
         if self.last.is_some_and(|last| last.dot(q) < 0.0) {
             q = -q;
         }

@@ -130,6 +130,10 @@ fn the_seed_read_back_has_the_platform_and_legs_of_inverse_kinematics_at_every_s
         for (k, length) in lengths.iter().enumerate() {
             let base = vector(keys[&format!("leg{}_cylinder", k + 1)].1[i]);
             let top = vector(keys[&format!("leg{}_rod", k + 1)].1[i]);
+            // At base joint k and platform joint k.
+            worst[0] = worst[0].max((base - g.base_joints()[k]).norm());
+            let joint = centre + pose.rotation() * g.platform_joints()[k];
+            worst[0] = worst[0].max((top - joint).norm());
             worst[2] = worst[2].max(((top - base).norm() - length).abs());
             // And the cylinder's +y points along it.
             let along = rotation(keys[&format!("leg{}_cylinder", k + 1)].2[i]) * Vector3::y();

@@ -6,7 +6,7 @@
 
 use egui::RichText;
 use stewart_kinematics::io::settings::Group;
-use stewart_kinematics::model::appearance::{Colour, MeshScale, Part, PartLook};
+use stewart_kinematics::model::appearance::{Colour, MAX_OFFSET_M, MeshScale, Part, PartLook};
 
 use super::widgets::edit_error;
 use crate::i18n::Lang;
@@ -44,6 +44,9 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) -> Option<AppearanceActio
                     asked = Some(a);
                 }
             }
+            if let Some(e) = ed.doc.parts_error() {
+                super::widgets::not_shown(ui, e, t);
+            }
             edit_error(ui, ed.doc, t, &[Group::Appearance]);
         });
     asked
@@ -57,10 +60,18 @@ fn part_row(ui: &mut egui::Ui, ed: &mut Editor, part: Part) -> Option<Appearance
     let mut asked = None;
     ui.horizontal(|ui| {
         ui.label(RichText::new(part_name(part, t)).strong());
-        let file = look
-            .as_ref()
-            .map_or_else(|| t.tr("appearance.usual").to_owned(), |l| l.file.clone());
-        ui.label(file);
+        match &look {
+            None => {
+                ui.label(t.tr("appearance.usual"));
+            }
+            // The file's name; its whole path on hover.
+            Some(l) => {
+                let name = std::path::Path::new(&l.file)
+                    .file_name()
+                    .map_or_else(|| l.file.clone(), |n| n.to_string_lossy().into_owned());
+                ui.label(name).on_hover_text(&l.file);
+            }
+        }
         if ui
             .button(t.tr("appearance.choose"))
             .on_hover_text(t.tr("appearance.choose_tip"))
@@ -91,7 +102,7 @@ fn part_row(ui: &mut egui::Ui, ed: &mut Editor, part: Part) -> Option<Appearance
             for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
                 ui.add(
                     egui::DragValue::new(&mut edited.rotation_deg[k])
-                        .range(-180.0..=180.0)
+                        .range(-360.0..=360.0)
                         .speed(1.0)
                         .prefix(format!("{axis} "))
                         .suffix("°"),
@@ -104,7 +115,7 @@ fn part_row(ui: &mut egui::Ui, ed: &mut Editor, part: Part) -> Option<Appearance
             for (k, axis) in ["x", "y", "z"].into_iter().enumerate() {
                 ui.add(
                     egui::DragValue::new(&mut edited.offset_m[k])
-                        .range(-1.0..=1.0)
+                        .range(-MAX_OFFSET_M..=MAX_OFFSET_M)
                         .speed(0.001)
                         .max_decimals(4)
                         .prefix(format!("{axis} "))

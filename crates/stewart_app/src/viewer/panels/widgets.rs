@@ -257,6 +257,12 @@ pub(crate) fn edit_error(ui: &mut egui::Ui, doc: &Document, t: Lang, groups: &[G
     }
 }
 
+/// "Not drawn", and why, in red (a CAD part whose file cannot be used now).
+pub(crate) fn not_shown(ui: &mut egui::Ui, e: &ViewerError, t: Lang) {
+    let why = e.words(t);
+    ui.label(RichText::new(t.fmt("widgets.not_shown", &[("why", &why)])).color(ERROR));
+}
+
 /// "Not applied", and why, in red.
 pub(crate) fn not_applied(ui: &mut egui::Ui, e: &ViewerError, t: Lang) {
     let why = e.words(t);

@@ -37,17 +37,23 @@ pub(crate) struct Document {
     pub(crate) edit_error: Option<(Group, ViewerError)>,
     /// The vehicle recording loaded last and the motion cued from it.
     vehicle: Option<VehicleSource>,
-    /// The CAD parts the scenario's `[appearance]` names, read (none when they failed:
-    /// the reason is then in `edit_error`).
+    /// The CAD parts the scenario's `[appearance]` names, those that read.
     parts: PartSet,
-    /// The folder part files are named from (the scenario file's).
+    /// Why a part the scenario names is not drawn (its file went missing, say), shown in
+    /// the Appearance section until the parts read again.
+    parts_error: Option<ViewerError>,
+    /// The folder of the scenario's file (where the mesh dialog starts). The document
+    /// names part files by their absolute paths: undo, and a scenario from another
+    /// folder, name the same files.
     folder: PathBuf,
 }
 
 impl Document {
-    /// A document showing `scenario`, as loaded, its part files named from the working
-    /// folder (see [`Document::set_folder`]).
-    pub(crate) fn new(scenario: Scenario) -> Self {
+    /// A document showing `scenario`, as loaded, its part files named from `folder` (its
+    /// file's).
+    pub(crate) fn new(scenario: Scenario, folder: PathBuf) -> Self {
+        let mut scenario = scenario;
+        scenario.appearance = crate::parts::anchored(&scenario.appearance, &folder);
         let mut doc = Self {
             derived: Derived::new(&scenario),
             as_loaded: scenario.clone(),
@@ -56,29 +62,20 @@ impl Document {
             edit_error: None,
             vehicle: None,
             parts: PartSet::none(),
-            folder: PathBuf::from("."),
+            parts_error: None,
+            folder,
         };
         doc.reload_parts();
         doc
     }
 
-    /// Name the scenario's part files from `folder` (its file's) and read them again.
-    pub(crate) fn set_folder(&mut self, folder: PathBuf) {
-        self.folder = folder;
-        self.parts = PartSet::none();
-        self.reload_parts();
-    }
-
-    /// The scenario is now a file in `folder`: its part files named from there (the same
-    /// files: no edit to undo, no mesh read again).
+    /// The scenario is now the file in `folder` (saved there; its part files, named by
+    /// their absolute paths here, stay the same files).
     pub(crate) fn moved_to(&mut self, folder: PathBuf) {
-        let rebased = crate::parts::rebase(&self.scenario.appearance, &self.folder, &folder);
-        self.scenario.appearance = rebased;
         self.folder = folder;
-        self.reload_parts();
     }
 
-    /// The folder part files are named from.
+    /// The folder of the scenario's file.
     pub(crate) fn folder(&self) -> &Path {
         &self.folder
     }
@@ -88,16 +85,20 @@ impl Document {
         &self.parts
     }
 
-    /// Read the scenario's parts (files read before and unchanged are kept); when they
-    /// fail, none are drawn and the reason waits in `edit_error`.
+    /// Why a part the scenario names is not drawn, if one is not.
+    pub(crate) fn parts_error(&self) -> Option<&ViewerError> {
+        self.parts_error.as_ref()
+    }
+
+    /// Read the scenario's parts (files read before and unchanged are kept); those that
+    /// fail are not drawn, the first one's reason kept for the Appearance section.
     fn reload_parts(&mut self) {
-        match crate::parts::load(&self.scenario, &self.folder, Some(&self.parts)) {
-            Ok(parts) => self.parts = parts,
-            Err(e) => {
-                self.parts = PartSet::none();
-                self.edit_error = Some((Group::Appearance, ViewerError::Part(Arc::new(e))));
-            }
-        }
+        let (parts, errors) = crate::parts::read(&self.scenario, &self.folder, Some(&self.parts));
+        self.parts = parts;
+        self.parts_error = errors
+            .into_iter()
+            .next()
+            .map(|e| ViewerError::Part(Arc::new(e)));
     }
 
     /// The scenario shown.
@@ -146,14 +147,22 @@ impl Document {
             })
             .and_then(|()| {
                 // New part files or another actuator kind: the parts are read (and
-                // judged) before the edit is kept; a refused mesh keeps the picture.
+                // judged) before the edit is kept. A part this edit changed that fails
+                // refuses it (the picture stays); one that failed before does not.
                 let kind = |s: &Scenario| s.geometry.actuator().kind();
                 if edited.appearance != self.scenario.appearance
                     || kind(&edited) != kind(&self.scenario)
                 {
-                    let read = crate::parts::load(&edited, &self.folder, Some(&self.parts))
-                        .map_err(|e| ViewerError::Part(Arc::new(e)))?;
-                    parts = Some(read);
+                    let (read, mut errors) =
+                        crate::parts::read(&edited, &self.folder, Some(&self.parts));
+                    let changed = |e: &stewart_render::cad::parts::PartError| {
+                        edited.appearance.part(e.part) != self.scenario.appearance.part(e.part)
+                    };
+                    if let Some(k) = errors.iter().position(changed) {
+                        return Err(ViewerError::Part(Arc::new(errors.swap_remove(k))));
+                    }
+                    let first = errors.into_iter().next();
+                    parts = Some((read, first.map(|e| ViewerError::Part(Arc::new(e)))));
                 }
                 Ok(())
             });
@@ -165,8 +174,9 @@ impl Document {
                 if recued.is_some() {
                     self.vehicle = recued;
                 }
-                if let Some(parts) = parts {
-                    self.parts = parts;
+                if let Some((read, error)) = parts {
+                    self.parts = read;
+                    self.parts_error = error;
                 }
                 self.derived.rebuild(&self.scenario);
                 Ok(())
@@ -256,11 +266,12 @@ impl Document {
     /// Show another scenario (a preset or file loaded), its part files named from
     /// `folder`: one undo step of its own.
     pub(crate) fn replace(&mut self, scenario: Scenario, folder: PathBuf) {
+        let mut scenario = scenario;
+        scenario.appearance = crate::parts::anchored(&scenario.appearance, &folder);
         self.undo.record(&self.scenario);
         self.undo.seal();
         self.as_loaded = scenario.clone();
         self.folder = folder;
-        self.parts = PartSet::none();
         self.put(scenario);
         self.reload_parts();
     }

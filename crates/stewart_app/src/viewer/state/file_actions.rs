@@ -10,6 +10,7 @@ use stewart_kinematics::Scenario;
 use stewart_kinematics::io::settings::Group;
 use stewart_kinematics::model::appearance::{MeshScale, Part, PartLook};
 use stewart_kinematics::model::trajectory::PoseTable;
+use stewart_render::cad::parts::{likely_unit, platform_size};
 
 use crate::viewer::error::{Doing, ViewerError};
 use crate::viewer::state::ViewerState;
@@ -234,52 +235,28 @@ impl ViewerState {
 }
 
 impl ViewerState {
-    /// Draw `part` from the mesh file at `path` (named relative to the scenario's folder
-    /// when it lies below it): one edit of `[appearance]`. A new part's unit is guessed —
-    /// millimetres for STL and OBJ, metres for glTF, else the first of mm, m, cm, in that
-    /// makes the part a sensible size against the platform; a refused mesh leaves the
-    /// picture and says why.
+    /// Draw `part` from the mesh file at `path`: one edit of `[appearance]` (the file
+    /// named by its absolute path; saving names it from the scenario's folder). A part
+    /// that had no file takes the unit (mm, cm, m, in) that makes the mesh nearest the
+    /// platform's size; a refused mesh leaves the picture and says why.
     pub(crate) fn attach_mesh(&mut self, part: Part, path: &Path) {
-        let folder = absolute(self.doc.folder());
         let full = absolute(path);
-        let file = full
-            .strip_prefix(&folder)
-            .map_or_else(|_| full.clone(), Path::to_path_buf)
-            .to_string_lossy()
-            .into_owned();
         let kept = self.scenario().appearance.part(part).cloned();
-        let first = match stewart_render::cad::Format::of(&full) {
-            Some(stewart_render::cad::Format::Gltf) => MeshScale::Metre,
-            _ => MeshScale::Millimetre,
+        let scale = match &kept {
+            Some(look) => look.scale,
+            None => stewart_render::cad::load(&full).map_or(MeshScale::Millimetre, |mesh| {
+                likely_unit(&mesh, platform_size(&self.scenario().geometry))
+            }),
         };
-        let units = match &kept {
-            Some(look) => vec![look.scale],
-            None => vec![
-                first,
-                MeshScale::Millimetre,
-                MeshScale::Metre,
-                MeshScale::Centimetre,
-                MeshScale::Inch,
-            ],
+        let look = PartLook {
+            file: full.to_string_lossy().into_owned(),
+            scale,
+            ..kept.unwrap_or_else(|| PartLook::new(""))
         };
-        let mut refused = None;
-        for scale in units {
-            let look = PartLook {
-                file: file.clone(),
-                scale,
-                ..kept.clone().unwrap_or_else(|| PartLook::new(""))
-            };
-            match self.doc.try_edit(Group::Appearance, |s| {
-                *s.appearance.slot_mut(part) = Some(look);
-                Ok(())
-            }) {
-                Ok(()) => return,
-                Err(e) => refused = refused.or(Some(e)),
-            }
-        }
-        if let Some(e) = refused {
-            self.doc.edit_error = Some((Group::Appearance, e));
-        }
+        self.doc.edit(Group::Appearance, |s| {
+            *s.appearance.slot_mut(part) = Some(look);
+            Ok(())
+        });
     }
 }
 

@@ -123,8 +123,14 @@ pub(crate) struct Teleop {
 }
 
 impl ViewerState {
-    /// The viewer on `scenario`, playing its trajectory from the start.
+    /// The viewer on `scenario`, playing its trajectory from the start (its part files
+    /// named from the working folder).
     pub fn new(scenario: Scenario) -> Self {
+        Self::new_in(scenario, std::path::PathBuf::from("."))
+    }
+
+    /// The viewer on `scenario` whose file is in `folder` (its part files named from there).
+    pub(crate) fn new_in(scenario: Scenario, folder: std::path::PathBuf) -> Self {
         Self {
             playback: Playback::new(scenario.geometry.home_pose()),
             look: Look::new(default_camera(&scenario)),
@@ -152,7 +158,7 @@ impl ViewerState {
             modes: crate::viewer::tools::mode_view::ModeView::default(),
             quality: crate::viewer::window::quality::Quality::default(),
             quit_asked: false,
-            doc: Document::new(scenario),
+            doc: Document::new(scenario, folder),
         }
     }
 

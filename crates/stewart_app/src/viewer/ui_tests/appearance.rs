@@ -136,3 +136,82 @@ fn a_scenario_saved_elsewhere_keeps_its_parts() {
     assert_eq!(h.state().doc.parts().triangles(), 1608 + 280 + 512 + 512);
     assert!(h.state().doc.edit_error.is_none());
 }
+
+#[test]
+fn parts_are_read_from_the_scenario_folder_and_undo_brings_back_the_same_files() {
+    // The scenario's folder given at start, whatever the working folder.
+    let file = examples().join("seed-cad.toml");
+    let scenario = stewart_kinematics::Scenario::load(&file).unwrap_or_else(|e| panic!("{e}"));
+    let state = crate::viewer::state::ViewerState::new_in(scenario, examples());
+    assert!(state.doc.parts_error().is_none());
+    assert_eq!(state.doc.parts().triangles(), 1608 + 280 + 512 + 512);
+    let mut h = super::harness_with(state, 1400.0);
+    // Another scenario from another folder, then undo: the parts are the same files.
+    let other =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenarios/heavy-legs.toml");
+    h.state_mut().open_file(&other);
+    h.run();
+    assert!(h.state().doc.parts().is_empty());
+    h.state_mut().undo_edit();
+    h.run();
+    assert_eq!(h.state().doc.parts().triangles(), 1608 + 280 + 512 + 512);
+    assert!(h.state().doc.parts_error().is_none());
+}
+
+#[test]
+fn a_part_whose_file_is_gone_is_not_drawn_and_blocks_no_other_edit() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let text = std::fs::read_to_string(examples().join("seed-cad.toml"))
+        .unwrap_or_else(|e| panic!("{e}"))
+        .replace(
+            "\"base.stl\"",
+            &format!("{:?}", examples().join("base.stl")),
+        )
+        .replace(
+            "\"platform.obj\"",
+            &format!("{:?}", examples().join("platform.obj")),
+        )
+        .replace(
+            "\"cylinder.glb\"",
+            &format!("{:?}", examples().join("cylinder.glb")),
+        )
+        .replace("\"rod.stl\"", "\"gone.stl\"");
+    let file = dir.path().join("s.toml");
+    std::fs::write(&file, text).unwrap_or_else(|e| panic!("{e}"));
+    let mut h = super::tall_harness("seed", 2600.0);
+    h.state_mut().open_file(&file);
+    h.run();
+    h.get_by_label("Appearance: CAD parts").click();
+    super::settle(&mut h);
+    assert!(h.state().doc.parts().get(Part::Base).is_some());
+    assert!(h.state().doc.parts().get(Part::Rod).is_none());
+    let said = "Not drawn: a CAD part cannot be drawn: `appearance.rod.file`";
+    assert!(h.query_by_label_contains(said).is_some());
+    assert!(
+        h.query_by_label_contains("gone.stl: No such file")
+            .is_some()
+    );
+    // The base moved: accepted although the rod still fails.
+    let applied =
+        h.state_mut()
+            .doc
+            .edit(stewart_kinematics::io::settings::Group::Appearance, |s| {
+                if let Some(b) = s.appearance.slot_mut(Part::Base) {
+                    b.offset_m = [0.0, 0.0, -0.01];
+                }
+                Ok(())
+            });
+    assert!(applied);
+    // A new file for the rod that is missing too: refused, naming it.
+    h.state_mut()
+        .attach_mesh(Part::Rod, &dir.path().join("also-gone.stl"));
+    h.run();
+    assert!(
+        h.state()
+            .scenario()
+            .appearance
+            .part(Part::Rod)
+            .is_some_and(|r| r.file.ends_with("gone.stl"))
+    );
+    assert!(h.query_by_label_contains("also-gone.stl").is_some());
+}
