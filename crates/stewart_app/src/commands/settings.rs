@@ -160,6 +160,14 @@ fn section_title(group: Group) -> &'static str {
     }
 }
 
+/// `entries` (key, value) one a line, the values aligned.
+fn aligned(out: &mut String, entries: &[(String, String)]) {
+    let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
+    for (key, value) in entries {
+        let _ = writeln!(out, "{key:width$}  {value}");
+    }
+}
+
 /// The table: key, current value, unit, slider range, accepted range, default.
 pub(crate) fn table(scenario: &Scenario) -> String {
     let rows: Vec<[String; 6]> = settings::all()
@@ -217,20 +225,12 @@ pub(crate) fn table(scenario: &Scenario) -> String {
         out,
         "\nThe link to hardware ([link]; words or numbers, --set link.KEY=VALUE, K = channel 1..6):"
     );
-    let entries = scenario.link.entries();
-    let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
-    for (key, value) in entries {
-        let _ = writeln!(out, "{key:width$}  {value}");
-    }
+    aligned(&mut out, &scenario.link.entries());
     let _ = writeln!(
         out,
         "\nCAD parts ([appearance]; --set appearance.PART.KEY=VALUE, PART = base, platform, cylinder, rod, horn):"
     );
-    let entries = scenario.appearance.entries();
-    let width = entries.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
-    for (key, value) in entries {
-        let _ = writeln!(out, "{key:width$}  {value}");
-    }
+    aligned(&mut out, &scenario.appearance.entries());
     if scenario.geometry.actuator().kind().has_level_home() {
         let _ = match scenario.geometry.servo_home_height() {
             Some(h) => writeln!(

@@ -116,8 +116,6 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
     }
     let mut moving = vec![doc.mesh("platform", &platform)];
 
-    let rod_part = looks.parts.get(Part::Rod);
-    let rod_colour = theme.leg_rod;
     match &home.servos {
         None => {
             let home_length = home.legs[0].length as f32;
@@ -127,22 +125,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
                 along(Vec3::ZERO, Vec3::Y * body, BODY_RADIUS * s, [0.0; 4]).model_matrix();
             // The rod reaches into the body at the longest leg.
             let rod_length = longest.max(home_length) - body + 0.02 * s;
-            let rod: Pieces = match rod_part {
-                Some(part) => cad(doc, part, rod_colour),
-                None => {
-                    let g = doc.geometry(
-                        &shapes.cylinder,
-                        along(
-                            Vec3::NEG_Y * rod_length,
-                            Vec3::ZERO,
-                            ROD_RADIUS * s,
-                            [0.0; 4],
-                        )
-                        .model_matrix(),
-                    );
-                    vec![(g, doc.material(colour(rod_colour)))]
-                }
-            };
+            let rod = rod_pieces(doc, &shapes, looks, Vec3::NEG_Y * rod_length, Vec3::ZERO, s);
             let rod = doc.mesh("rod", &rod);
             for k in 0..6 {
                 let studio = if looks.coloured {
@@ -163,17 +146,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         }
         Some(servos) => {
             let rod_length = (home.legs[0].top - home.legs[0].base).norm() as f32;
-            let rod: Pieces = match rod_part {
-                Some(part) => cad(doc, part, rod_colour),
-                None => {
-                    let g = doc.geometry(
-                        &shapes.cylinder,
-                        along(Vec3::ZERO, Vec3::Y * rod_length, ROD_RADIUS * s, [0.0; 4])
-                            .model_matrix(),
-                    );
-                    vec![(g, doc.material(colour(rod_colour)))]
-                }
-            };
+            let rod = rod_pieces(doc, &shapes, looks, Vec3::ZERO, Vec3::Y * rod_length, s);
             let rod = doc.mesh("rod", &rod);
             let horn = (servos[0].horn_tip - servos[0].shaft).norm() as f32;
             let arm = along(Vec3::ZERO, Vec3::X * horn, 0.13 * horn, [0.0; 4]).model_matrix();
@@ -200,6 +173,27 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         }
     }
     Meshes { base, moving }
+}
+
+/// The rod's pieces: its CAD part, or a tube from `from` to `to` in its frame (`s`: the
+/// larger plate's radius), in the theme's rod colour.
+fn rod_pieces(
+    doc: &mut Document,
+    shapes: &Shapes,
+    looks: &Looks,
+    from: Vec3,
+    to: Vec3,
+    s: f32,
+) -> Pieces {
+    let colour = looks.theme.leg_rod;
+    match looks.parts.get(Part::Rod) {
+        Some(part) => cad(doc, part, colour),
+        None => {
+            let tube = along(from, to, ROD_RADIUS * s, [0.0; 4]).model_matrix();
+            let g = doc.geometry(&shapes.cylinder, tube);
+            vec![(g, doc.material(doc_colour(colour)))]
+        }
+    }
 }
 
 /// An sRGB colour as glTF's linear base colour.

@@ -17,7 +17,7 @@ use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::L
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use stewart_render::cad::parts::PartSet;
+use stewart_render::cad::parts::{PartSet, platform_size};
 
 use crate::i18n::Lang;
 use crate::viewer::error::ViewerError;
@@ -161,6 +161,15 @@ impl Document {
                     if let Some(k) = errors.iter().position(changed) {
                         return Err(ViewerError::Part(Arc::new(errors.swap_remove(k))));
                     }
+                    let first = errors.into_iter().next();
+                    parts = Some((read, first.map(|e| ViewerError::Part(Arc::new(e)))));
+                } else if edited.appearance.parts().next().is_some()
+                    && platform_size(&edited.geometry) != platform_size(&self.scenario.geometry)
+                {
+                    // A platform of another size judges its parts' sizes again (a part
+                    // now absurd is left out and said, the edit kept).
+                    let (read, errors) =
+                        crate::parts::read(&edited, &self.folder, Some(&self.parts));
                     let first = errors.into_iter().next();
                     parts = Some((read, first.map(|e| ViewerError::Part(Arc::new(e)))));
                 }

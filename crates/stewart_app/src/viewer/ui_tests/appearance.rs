@@ -215,3 +215,36 @@ fn a_part_whose_file_is_gone_is_not_drawn_and_blocks_no_other_edit() {
     );
     assert!(h.query_by_label_contains("also-gone.stl").is_some());
 }
+
+#[test]
+fn a_platform_made_much_smaller_judges_its_parts_again_and_keeps_the_edit() {
+    let mut h = seed_with_parts();
+    // A desk-sized platform: the 2.2 m base plate is now far too big for it.
+    let applied = h
+        .state_mut()
+        .doc
+        .edit(stewart_kinematics::io::settings::Group::Geometry, |s| {
+            Ok(stewart_kinematics::io::settings::apply_all(
+                s,
+                [
+                    "geometry.base_radius=0.01",
+                    "geometry.platform_radius=0.006",
+                    "geometry.home_height=0.008",
+                ],
+            )?)
+        });
+    assert!(
+        applied,
+        "{:?}",
+        h.state().doc.edit_error.as_ref().map(|e| e.1.to_string())
+    );
+    h.run();
+    assert!(h.state().doc.parts().get(Part::Base).is_none());
+    let said = h
+        .state()
+        .doc
+        .parts_error()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(said.contains("`appearance.base.scale`"), "{said}");
+}

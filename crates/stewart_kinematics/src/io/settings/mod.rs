@@ -507,31 +507,32 @@ pub fn apply_all<'a>(
 ) -> Result<(), SettingError> {
     let mut edited = scenario.clone();
     for text in assignments {
-        if let Some((key, value)) = text.split_once('=')
-            && let Some(link_key) = key.trim().strip_prefix("link.")
-        {
-            edited
-                .link
-                .set_text(link_key, value)
-                .map_err(|p| SettingError::Invalid {
-                    key: p.key,
+        // The tables that take words: (key, reason) of a refusal.
+        if let Some((key, value)) = text.split_once('=') {
+            let key = key.trim();
+            let worded = if let Some(k) = key.strip_prefix("link.") {
+                Some(
+                    edited
+                        .link
+                        .set_text(k, value)
+                        .map_err(|p| (p.key, p.reason)),
+                )
+            } else {
+                key.strip_prefix("appearance.").map(|k| {
+                    edited
+                        .appearance
+                        .set_text(k, value)
+                        .map_err(|p| (p.key, p.reason))
+                })
+            };
+            if let Some(done) = worded {
+                done.map_err(|(key, reason)| SettingError::Invalid {
+                    key,
                     value: value.trim().to_owned(),
-                    reason: p.reason,
+                    reason,
                 })?;
-            continue;
-        }
-        if let Some((key, value)) = text.split_once('=')
-            && let Some(part_key) = key.trim().strip_prefix("appearance.")
-        {
-            edited
-                .appearance
-                .set_text(part_key, value)
-                .map_err(|p| SettingError::Invalid {
-                    key: p.key,
-                    value: value.trim().to_owned(),
-                    reason: p.reason,
-                })?;
-            continue;
+                continue;
+            }
         }
         let (setting, value) = parse_assignment(text)?;
         setting.set(&mut edited, value)?;
