@@ -353,3 +353,38 @@ fn a_part_of_the_motion_under_a_title_at_a_four_by_three_size() {
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!((decoder.width(), decoder.height()), (320, 240));
 }
+
+#[test]
+fn the_3d_animation_is_written_as_glb_with_the_cad_parts_shown() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let mut h = tall_harness("seed", HEIGHT);
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/cad");
+    h.state_mut().open_file(&examples.join("seed-cad.toml"));
+    h.run();
+    let glb = dir.path().join("seed.glb");
+    export_to(&mut h, ExportKind::Gltf, &glb);
+    let outcome = finish(&mut h);
+    assert!(
+        outcome
+            .as_ref()
+            .is_ok_and(|m| m.contains("Wrote a glTF animation of 1001 keys")),
+        "{outcome:?}"
+    );
+    // Read back by the `gltf` crate: the animation, and the base drawn from base.stl
+    // (1608 triangles) rather than the studio's plate.
+    let bytes = std::fs::read(&glb).unwrap_or_else(|e| panic!("{e}"));
+    let gltf = gltf::Gltf::from_slice(&bytes).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(gltf.document.animations().count(), 1);
+    let base = gltf
+        .document
+        .nodes()
+        .find(|n| n.name() == Some("base"))
+        .and_then(|n| n.mesh())
+        .unwrap_or_else(|| panic!("no base mesh"));
+    let first = base
+        .primitives()
+        .next()
+        .and_then(|p| p.indices())
+        .map(|a| a.count());
+    assert_eq!(first, Some(3 * 1608));
+}
