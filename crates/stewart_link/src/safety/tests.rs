@@ -304,8 +304,9 @@ proptest! {
     }
 
     /// A target that moves within the limits (a sum of sinusoids using at most 70 % of the
-    /// speed, acceleration and jerk) is caught up soon after the arming ramp and from then
-    /// on sent exactly, at any rate, with its velocity and acceleration given (a
+    /// speed, acceleration and jerk) is caught up within 2 s of the arming ramp's end (the
+    /// last 30 % of the jerk is all the catching up has: with a low jerk limit it takes over
+    /// a second) and from then on, for at least 2 s more, sent exactly, at any rate, with its velocity and acceleration given (a
     /// trajectory: to the solver's precision); estimated from the positions alone (then at 1 kHz under the acceleration
     /// limit alone: a jerk limit needs the trajectory's derivatives), to within 1e-5.
     #[test]
@@ -342,14 +343,15 @@ proptest! {
         let dt = 1.0 / rate;
         // The ramp lasts as long as the limits need (seconds, when the target moves fast
         // from the start); after it the generator may need a moment to catch the target up
-        // (the ramp ends with a jump in jerk). From then on, it never leaves it.
+        // (the ramp ends with a jump in jerk; a second and more under a low jerk limit).
+        // From then on, it never leaves it.
         let mut armed_at: Option<f64> = None;
         let mut last_off: Option<(f64, [f64; 6], [f64; 6])> = None;
         let mut k = 0;
         loop {
             k += 1;
             let t = k as f64 * dt;
-            if armed_at.is_some_and(|a| t > a + 2.5) {
+            if armed_at.is_some_and(|a| t > a + 4.0) {
                 break;
             }
             prop_assert!(t < 30.0, "never armed");
@@ -376,7 +378,7 @@ proptest! {
                 last_off = Some((t, tick.values, target));
             }
         }
-        let caught_by = armed_at.map_or(0.0, |a| a + 1.0);
+        let caught_by = armed_at.map_or(0.0, |a| a + 2.0);
         prop_assert!(
             last_off.is_none_or(|(t, ..)| t <= caught_by),
             "off target at {:?}, armed at {:?}",
