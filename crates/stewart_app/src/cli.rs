@@ -473,6 +473,16 @@ pub(crate) struct CueArgs {
     /// at all, instead of standard output.
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
+    /// Run both algorithms (the classical washout with its workspace limiter on, and the
+    /// model-predictive cueing) on the input with the same scales, rig and limits, and
+    /// print how each reproduces what is felt instead of the poses: specific-force error
+    /// (RMSE) and shape correlation per axis, rotation-rate error, the false rotation of
+    /// tilt, the largest stroke used, the time the limiter held back.
+    #[arg(long)]
+    pub(crate) compare: bool,
+    /// The comparison's format.
+    #[arg(long, value_enum, default_value = "text", requires = "compare")]
+    pub(crate) format: Format,
 }
 
 /// Report formats of `stewart check`.

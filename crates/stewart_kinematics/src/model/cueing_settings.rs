@@ -1,11 +1,13 @@
 //! The `[cueing]` table of a scenario: how vehicle motion (accelerations and rotation
-//! rates, from a recording or a game) becomes platform motion by classical washout
-//! (Reid & Nahon) — the scale and high-pass filters of the translational and rotational
-//! channels, tilt coordination, the axes used, the point the motion is cued at, and the
-//! workspace limiter. Plain data, checked here; `analysis::cueing` runs the filters.
+//! rates, from a recording or a game) becomes platform motion — by classical washout
+//! (Reid & Nahon: the scale and high-pass filters of the translational and rotational
+//! channels, tilt coordination, the workspace limiter) or by model-predictive cueing (the
+//! horizon, the weights, the look-ahead) — the axes used and the point the motion
+//! is cued at. Plain data, checked here; `analysis::cueing` runs it.
 //!
 //! ```toml
 //! [cueing]
+//! algorithm = "washout"       # or "mpc": model-predictive cueing
 //! translation_scale = 0.5     # vehicle specific force × this
 //! translation_hp_wn = 2.5     # rad/s: second-order high-pass s²/(s²+2ζωs+ω²)
 //! translation_hp_zeta = 1.0
@@ -28,6 +30,17 @@
 //! limiter_recovery_s = 1.0    # how fast the limiter gives the full cue back
 //! stall_s = 0.5               # live input: silent this long, it has stalled
 //! fade_s = 2.0                # and the cue fades to neutral over this long
+//! mpc_horizon_steps = 15      # MPC: steps looked ahead: the first the solve interval,
+//! mpc_step_s = 0.1            # the others this long (the horizon: 1.41 s)
+//! mpc_solve_interval_s = 0.01 # a new plan this often (100 Hz)
+//! mpc_force_weight = 1.0      # per (m/s²)² of felt specific-force error
+//! mpc_rate_weight = 10.0      # per (rad/s)² of felt rotation-rate error
+//! mpc_displacement_weight = 1.0  # per m² (and rad² of yaw) away from neutral
+//! mpc_velocity_weight = 0.1   # per (m/s)² and (rad/s)²
+//! mpc_tilt_weight = 1.0       # per rad² of roll and pitch
+//! mpc_input_weight = 0.001    # per (m/s²)² and (rad/s²)² of acceleration
+//! mpc_margin = 0.02           # share of the stroke (range) kept clear of each end
+//! mpc_preview = true          # a recording: plan with the motion ahead in it
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -36,10 +49,42 @@ use serde::{Deserialize, Serialize};
 /// platform until gravity's component along it is `f`.
 pub const GRAVITY: f64 = 9.80665;
 
+/// How vehicle motion is made into platform motion.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum CueingAlgorithm {
+    /// Classical washout: fixed filters, tilt coordination, the optional limiter.
+    #[default]
+    Washout,
+    /// Model-predictive cueing: each step, the motion over a horizon that best reproduces
+    /// what the occupant feels within the rig's limits.
+    Mpc,
+}
+
+impl CueingAlgorithm {
+    /// Both, in the order a choice lists them.
+    pub const ALL: [CueingAlgorithm; 2] = [CueingAlgorithm::Washout, CueingAlgorithm::Mpc];
+
+    /// The word the file and `--set` use.
+    pub fn word(self) -> &'static str {
+        match self {
+            CueingAlgorithm::Washout => "washout",
+            CueingAlgorithm::Mpc => "mpc",
+        }
+    }
+
+    /// The algorithm a word names, if any.
+    pub fn from_word(word: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|a| a.word() == word.trim())
+    }
+}
+
 /// The `[cueing]` table.
 #[derive(Clone, Debug, PartialEq, Deserialize, Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct CueingSettings {
+    /// The algorithm: classical washout or model-predictive cueing.
+    pub algorithm: CueingAlgorithm,
     /// Multiplies the vehicle's specific force (translational channel and tilt).
     pub translation_scale: f64,
     /// Natural frequency of the translational second-order high-pass, rad/s.
@@ -90,6 +135,31 @@ pub struct CueingSettings {
     /// Live input only: how far ahead of the last sample, seconds, each tick extrapolates
     /// the input (0: off — the platform steps from sample to sample).
     pub input_prediction_s: f64,
+    /// MPC: the number of steps looked ahead.
+    pub mpc_horizon_steps: u32,
+    /// MPC: the length of each step, seconds.
+    pub mpc_step_s: f64,
+    /// MPC: seconds between two plans (the plan is followed in between).
+    pub mpc_solve_interval_s: f64,
+    /// MPC: weight of the felt specific-force error, per (m/s²)².
+    pub mpc_force_weight: f64,
+    /// MPC: weight of the felt rotation-rate error, per (rad/s)².
+    pub mpc_rate_weight: f64,
+    /// MPC: weight of the displacement from neutral, per m² (and per rad² of yaw).
+    pub mpc_displacement_weight: f64,
+    /// MPC: weight of the velocity, per (m/s)² and (rad/s)².
+    pub mpc_velocity_weight: f64,
+    /// MPC: weight of roll and pitch (the tilt that renders sustained force), per rad².
+    pub mpc_tilt_weight: f64,
+    /// MPC: weight of the accelerations, per (m/s²)² and (rad/s²)²: the smoothness.
+    pub mpc_input_weight: f64,
+    /// MPC: the share of each actuator's stroke (or range) kept clear of either end, and of
+    /// its speed and acceleration limits, so that the linearised limits hold exactly.
+    pub mpc_margin: f64,
+    /// MPC: when a whole recording is cued (`stewart cue`, the viewer), plan with the
+    /// vehicle's motion ahead in it rather than the last sample held (a live input never
+    /// knows what comes).
+    pub mpc_preview: bool,
 }
 
 impl Default for CueingSettings {
@@ -118,6 +188,18 @@ impl Default for CueingSettings {
             stall_s: 0.5,
             fade_s: 2.0,
             input_prediction_s: 0.0,
+            algorithm: CueingAlgorithm::Washout,
+            mpc_horizon_steps: 15,
+            mpc_step_s: 0.1,
+            mpc_solve_interval_s: 0.01,
+            mpc_force_weight: 1.0,
+            mpc_rate_weight: 10.0,
+            mpc_displacement_weight: 1.0,
+            mpc_velocity_weight: 0.1,
+            mpc_tilt_weight: 1.0,
+            mpc_input_weight: 0.001,
+            mpc_margin: 0.02,
+            mpc_preview: true,
         }
     }
 }
@@ -137,6 +219,10 @@ pub struct CueingProblem {
 pub const MAX_SCALE: f64 = 10.0;
 /// The longest input prediction, seconds (beyond a few samples an extrapolation is a guess).
 pub const MAX_PREDICTION_S: f64 = 0.5;
+/// The longest MPC horizon, steps (the programme grows with its square).
+pub const MAX_HORIZON_STEPS: u32 = 40;
+/// The largest MPC weight accepted.
+pub const MAX_WEIGHT: f64 = 1e6;
 /// The highest filter frequency accepted, rad/s.
 pub const MAX_OMEGA: f64 = 1000.0;
 /// The largest damping ratio accepted.
@@ -202,6 +288,9 @@ impl CueingSettings {
                 format!("must be between 0 (off) and {MAX_OMEGA} rad/s, got {wb}"),
             );
         }
+        if let Some(p) = self.mpc_problem() {
+            return Some(p);
+        }
         let far = crate::io::bounds::LENGTH_M;
         for (i, v) in self.reference_m.iter().enumerate() {
             if !(v.is_finite() && v.abs() <= far) {
@@ -210,6 +299,65 @@ impl CueingSettings {
                     format!("must be a number of metres within ±{far}, got {v}"),
                 );
             }
+        }
+        None
+    }
+
+    /// The first MPC value that cannot work: a horizon outside 1…40 steps, a step outside
+    /// 5 ms…1 s, a solve interval that is not positive or longer than a step, a weight
+    /// below 0 or above 10⁶ (the acceleration's must be positive: it makes the programme
+    /// strictly convex), a margin outside 0…0.4.
+    fn mpc_problem(&self) -> Option<CueingProblem> {
+        let bad = |key: &str, reason: String| {
+            Some(CueingProblem {
+                key: format!("cueing.{key}"),
+                reason,
+            })
+        };
+        if !(1..=MAX_HORIZON_STEPS).contains(&self.mpc_horizon_steps) {
+            return bad(
+                "mpc_horizon_steps",
+                format!(
+                    "must be a whole number of steps from 1 to {MAX_HORIZON_STEPS}, got {}",
+                    self.mpc_horizon_steps
+                ),
+            );
+        }
+        let step = self.mpc_step_s;
+        if !(0.005..=1.0).contains(&step) {
+            return bad(
+                "mpc_step_s",
+                format!("must be between 0.005 and 1 s, got {step}"),
+            );
+        }
+        let every = self.mpc_solve_interval_s;
+        if !(every >= 0.001 && every <= step) {
+            return bad(
+                "mpc_solve_interval_s",
+                format!("must be between 0.001 s and the step ({step} s), got {every}"),
+            );
+        }
+        for (key, v) in [
+            ("mpc_force_weight", self.mpc_force_weight),
+            ("mpc_rate_weight", self.mpc_rate_weight),
+            ("mpc_displacement_weight", self.mpc_displacement_weight),
+            ("mpc_velocity_weight", self.mpc_velocity_weight),
+            ("mpc_tilt_weight", self.mpc_tilt_weight),
+        ] {
+            if !(0.0..=MAX_WEIGHT).contains(&v) {
+                return bad(key, format!("must be between 0 and {MAX_WEIGHT}, got {v}"));
+            }
+        }
+        let w = self.mpc_input_weight;
+        if !(1e-9..=MAX_WEIGHT).contains(&w) {
+            return bad(
+                "mpc_input_weight",
+                format!("must be between 1e-9 and {MAX_WEIGHT}, got {w}"),
+            );
+        }
+        let m = self.mpc_margin;
+        if !(0.0..=0.4).contains(&m) {
+            return bad("mpc_margin", format!("must be between 0 and 0.4, got {m}"));
         }
         None
     }

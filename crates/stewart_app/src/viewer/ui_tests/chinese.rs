@@ -14,10 +14,10 @@ use stewart_kinematics::Scenario;
 /// Latin words a Chinese interface keeps: units, file types, key names, protocols, the
 /// names of languages and of mathematical functions, and the inertia tensor's entries
 /// (Ixx … Iyz, written so in Chinese textbooks too).
-const KEPT: [&str; 35] = [
+const KEPT: [&str; 36] = [
     "PNG", "GIF", "MP4", "SVG", "PDF", "CSV", "dpi", "UDP", "Hz", "Esc", "Shift", "Home",
     "English", "sin", "cos", "FIFO", "mm", "toml", "geometry", "µs", "ms", "ch", "CRC", "rad",
-    "Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz", "CAD", "STL", "OBJ", "glTF", "GLB",
+    "Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz", "CAD", "STL", "OBJ", "glTF", "GLB", "MPC",
 ];
 
 /// The viewer on `preset` in Chinese with every section open.

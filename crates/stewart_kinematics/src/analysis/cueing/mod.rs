@@ -1,10 +1,12 @@
 //! Motion cueing: vehicle motion (a recording, or live telemetry) made into platform poses
-//! by classical washout ([`washout`]), cued at the occupant's head (the `[cueing]`
-//! reference point: the platform turns about it), and, when asked, kept within the stroke
-//! and limits by the workspace limiter ([`limiter`]).
+//! by classical washout ([`washout`]; kept within the stroke and limits, when asked, by
+//! the workspace limiter, [`limiter`]) or by model-predictive cueing ([`mpc`]), cued at
+//! the occupant's head (the `[cueing]` reference point: the platform turns about it).
 
+pub mod compare;
 mod limiter;
 mod lti;
+pub mod mpc;
 mod washout;
 
 use nalgebra::Vector3;
@@ -13,7 +15,7 @@ use thiserror::Error;
 use crate::analysis::workspace;
 use crate::io::table::TableError;
 use crate::model::angle::Angle;
-use crate::model::cueing_settings::{CueingProblem, CueingSettings};
+use crate::model::cueing_settings::{CueingAlgorithm, CueingProblem, CueingSettings};
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
 use crate::model::pose::{Pose, rotation_zyx};
@@ -21,6 +23,7 @@ use crate::model::trajectory::{Motion, PoseTable};
 
 pub use limiter::Limiter;
 pub use lti::Lti;
+pub use mpc::{Mpc, MpcCounts};
 pub use washout::{Cue, VehicleMotion, Washout};
 
 /// Why vehicle motion could not be cued.
@@ -62,10 +65,18 @@ pub enum CueError {
     HomeOutside,
 }
 
-/// The cueing of one platform: washout, the pose at the reference point, the limiter.
+/// What turns vehicle motion into the cue.
+#[derive(Clone, Debug)]
+enum Engine {
+    Washout(Box<Washout>),
+    Mpc(Box<Mpc>),
+}
+
+/// The cueing of one platform: washout (the pose at the reference point, the limiter) or
+/// the model-predictive planner.
 #[derive(Clone, Debug)]
 pub struct Cueing {
-    washout: Washout,
+    engine: Engine,
     limiter: Option<Limiter>,
     geometry: Geometry,
     limits: Limits,
@@ -73,6 +84,8 @@ pub struct Cueing {
     arm: Vector3<f64>,
     /// The share of the cue given (1: all; a stalled live input fades it to 0).
     fade: f64,
+    /// Whether the planner looks ahead through a recording.
+    preview: bool,
 }
 
 impl Cueing {
@@ -88,31 +101,66 @@ impl Cueing {
         let limiter = settings
             .workspace_limiter
             .then(|| Limiter::new(settings.limiter_recovery_s));
-        if limiter.is_some()
+        let mpc = settings.algorithm == CueingAlgorithm::Mpc;
+        if (limiter.is_some() || mpc)
             && !workspace::pose_within_limits(geometry, limits, &geometry.home_pose())
         {
             return Err(CueError::HomeOutside);
         }
+        let engine = if mpc {
+            let planner = Mpc::new(geometry, limits, settings).map_err(|_| CueingProblem {
+                key: "cueing.mpc_input_weight".to_owned(),
+                reason: "leaves the planner's cost without a unique minimum: raise it".to_owned(),
+            })?;
+            Engine::Mpc(Box::new(planner))
+        } else {
+            Engine::Washout(Box::new(Washout::new(settings)))
+        };
         Ok(Self {
-            washout: Washout::new(settings),
+            engine,
             limiter,
             geometry: geometry.clone(),
             limits: *limits,
             arm: Vector3::from(settings.reference_m) - geometry.pivot(),
             fade: 1.0,
+            preview: settings.mpc_preview,
         })
     }
 
     /// Hold `motion` as the input from now until the next sample.
     pub fn hold(&mut self, motion: &VehicleMotion) {
-        self.washout.hold(motion);
+        match &mut self.engine {
+            Engine::Washout(w) => w.hold(motion),
+            Engine::Mpc(m) => m.hold(motion),
+        }
+    }
+
+    /// Hold the vehicle's motion from now on as `samples` (times from now, the first at
+    /// 0): the planner with its look-ahead on plans with it; otherwise the first is held.
+    pub fn hold_ahead(&mut self, samples: &[(f64, VehicleMotion)]) {
+        let Some((_, first)) = samples.first() else {
+            return;
+        };
+        match &mut self.engine {
+            Engine::Mpc(m) if self.preview => m.hold_ahead(samples),
+            Engine::Mpc(m) => m.hold(first),
+            Engine::Washout(w) => w.hold(first),
+        }
     }
 
     /// Advance `h` seconds and return the pose then (scaled back by the limiter when it
-    /// runs and the full cue would leave the limits).
+    /// runs and the full cue would leave the limits; the planner keeps within them
+    /// itself).
     pub fn advance(&mut self, h: f64) -> Pose {
-        self.washout.advance(h);
-        let cue = self.washout.cue();
+        let washout = match &mut self.engine {
+            Engine::Washout(w) => w,
+            Engine::Mpc(m) => {
+                m.set_fade(self.fade);
+                return m.advance(h);
+            }
+        };
+        washout.advance(h);
+        let cue = washout.cue();
         let fade = self.fade;
         let Some(limiter) = &mut self.limiter else {
             return pose_at(&self.geometry, self.arm, &cue, fade);
@@ -129,7 +177,12 @@ impl Cueing {
     /// live input's look between two samples (its limiter judged as [`Cueing::advance`]
     /// would, on a copy). No allocation.
     pub fn preview(&self, h: f64, motion: &VehicleMotion) -> Pose {
-        let mut ahead = self.washout.clone();
+        let washout = match &self.engine {
+            Engine::Washout(w) => w,
+            // The plan, followed: the next solve takes the new motion in.
+            Engine::Mpc(m) => return m.preview(h),
+        };
+        let mut ahead = washout.clone();
         ahead.hold(motion);
         ahead.advance(h);
         let cue = ahead.cue();
@@ -157,9 +210,28 @@ impl Cueing {
         self.fade
     }
 
-    /// The washout's cue now (before the limiter).
+    /// The cue now (the washout's before the limiter; the planner's motion).
     pub fn cue(&self) -> Cue {
-        self.washout.cue()
+        match &self.engine {
+            Engine::Washout(w) => w.cue(),
+            Engine::Mpc(m) => m.cue(),
+        }
+    }
+
+    /// How far ahead the planner looks, seconds (0 for the washout).
+    pub fn horizon_s(&self) -> f64 {
+        match &self.engine {
+            Engine::Washout(_) => 0.0,
+            Engine::Mpc(m) => m.horizon_s(),
+        }
+    }
+
+    /// How the planner has fared (`None` for the washout).
+    pub fn mpc_counts(&self) -> Option<MpcCounts> {
+        match &self.engine {
+            Engine::Washout(_) => None,
+            Engine::Mpc(m) => Some(m.counts()),
+        }
     }
 
     /// The limiter's scale now (1 without a limiter).
@@ -169,7 +241,10 @@ impl Cueing {
 
     /// Back to neutral and rest.
     pub fn reset(&mut self) {
-        self.washout.reset();
+        match &mut self.engine {
+            Engine::Washout(w) => w.reset(),
+            Engine::Mpc(m) => m.reset(),
+        }
         if let Some(l) = &mut self.limiter {
             l.reset();
         }
@@ -179,7 +254,7 @@ impl Cueing {
 /// The pose of `geometry` whose reference point (at `arm` from the rotation centre, in
 /// the platform frame) is at its home place plus `s` times the cue's translation, the
 /// platform turned by `s` times the cue's angles about it.
-fn pose_at(geometry: &Geometry, arm: Vector3<f64>, cue: &Cue, s: f64) -> Pose {
+pub(crate) fn pose_at(geometry: &Geometry, arm: Vector3<f64>, cue: &Cue, s: f64) -> Pose {
     // The angles as a pose table writes and reads them, so that the limiter judges the
     // very pose `stewart check` reads back from `stewart cue`'s output.
     let [roll, pitch, yaw] = cue.angles.map(|a| Angle::from_radians(s * a).as_written());
@@ -201,6 +276,8 @@ pub struct CuedRecording {
     /// The washout's cue at each sample (before the limiter): its translation,
     /// acceleration, angles, tilt and the specific force it makes felt.
     pub cues: Vec<Cue>,
+    /// How the planner fared (`None` for the washout).
+    pub planner: Option<MpcCounts>,
 }
 
 impl CuedRecording {
@@ -231,6 +308,7 @@ pub fn cue_recording(
     let mut scales = Vec::with_capacity(samples.len());
     let mut cues = Vec::with_capacity(samples.len());
     let mut previous: Option<f64> = None;
+    let mut ahead = Vec::new();
     for (index, (t, motion)) in samples.iter().enumerate() {
         let h = match previous {
             Some(p) if *t > p => t - p,
@@ -255,13 +333,26 @@ pub fn cue_recording(
         poses.push(pose);
         scales.push(cueing.scale());
         cues.push(cueing.cue());
-        cueing.hold(motion);
+        if cueing.preview {
+            ahead.clear();
+            let end = t + cueing.horizon_s();
+            ahead.extend(
+                samples[index..]
+                    .iter()
+                    .take_while(|(ts, _)| *ts <= end)
+                    .map(|(ts, m)| (ts - t, *m)),
+            );
+            cueing.hold_ahead(&ahead);
+        } else {
+            cueing.hold(motion);
+        }
         previous = Some(*t);
     }
     Ok(CuedRecording {
         poses,
         scales,
         cues,
+        planner: cueing.mpc_counts(),
     })
 }
 

@@ -579,7 +579,7 @@ fn checks(d: &mut Declare) {
 type Row<K> = (&'static str, &'static str, Unit, (f64, f64), K);
 
 /// The `[cueing]` table's settings; each default is the table's own.
-const CUEING: [Row<CueingKey>; 16] = {
+const CUEING: [Row<CueingKey>; 27] = {
     use CueingKey::*;
     let (scale, omega, zeta) = ((0.0, 2.0), (0.05, 20.0), (0.1, 2.0));
     let switch = (0.0, 1.0);
@@ -672,6 +672,65 @@ const CUEING: [Row<CueingKey>; 16] = {
             (0.0, 0.2),
             Prediction,
         ),
+        (
+            "mpc_horizon_steps",
+            "MPC horizon steps",
+            Count,
+            (2.0, 30.0),
+            HorizonSteps,
+        ),
+        ("mpc_step_s", "MPC step", Second, (0.02, 0.3), Step),
+        (
+            "mpc_solve_interval_s",
+            "MPC solve interval",
+            Second,
+            (0.005, 0.05),
+            SolveInterval,
+        ),
+        (
+            "mpc_force_weight",
+            "MPC force weight",
+            Ratio,
+            (0.0, 10.0),
+            ForceWeight,
+        ),
+        (
+            "mpc_rate_weight",
+            "MPC rate weight",
+            Ratio,
+            (0.0, 100.0),
+            RateWeight,
+        ),
+        (
+            "mpc_displacement_weight",
+            "MPC displacement weight",
+            Ratio,
+            (0.0, 10.0),
+            DisplacementWeight,
+        ),
+        (
+            "mpc_velocity_weight",
+            "MPC velocity weight",
+            Ratio,
+            (0.0, 10.0),
+            VelocityWeight,
+        ),
+        (
+            "mpc_tilt_weight",
+            "MPC tilt weight",
+            Ratio,
+            (0.0, 100.0),
+            TiltWeight,
+        ),
+        (
+            "mpc_input_weight",
+            "MPC acceleration weight",
+            Ratio,
+            (0.0001, 0.1),
+            InputWeight,
+        ),
+        ("mpc_margin", "MPC margin", Ratio, (0.0, 0.1), Margin),
+        ("mpc_preview", "MPC look-ahead", Switch, switch, Preview),
     ]
 };
 
@@ -706,6 +765,25 @@ fn cueing(d: &mut Declare) {
             format!("reference {axis}"),
         );
         add(key, label, Metre, (-1.0, 1.0), CueingKey::Reference(i));
+    }
+    // The planner's own ranges (`CueingSettings::problem`).
+    use crate::model::cueing_settings::{MAX_HORIZON_STEPS, MAX_WEIGHT};
+    let weight = 0.0..=MAX_WEIGHT;
+    for (key, accepted) in [
+        ("mpc_horizon_steps", 1.0..=f64::from(MAX_HORIZON_STEPS)),
+        ("mpc_step_s", 0.005..=1.0),
+        ("mpc_solve_interval_s", 0.001..=1.0),
+        ("mpc_force_weight", weight.clone()),
+        ("mpc_rate_weight", weight.clone()),
+        ("mpc_displacement_weight", weight.clone()),
+        ("mpc_velocity_weight", weight.clone()),
+        ("mpc_tilt_weight", weight),
+        ("mpc_input_weight", 1e-9..=MAX_WEIGHT),
+        ("mpc_margin", 0.0..=0.4),
+    ] {
+        if let Some(s) = d.list.iter_mut().find(|s| s.key == format!("cueing.{key}")) {
+            s.accepted = accepted;
+        }
     }
 }
 

@@ -42,20 +42,43 @@ pub enum CueingKey {
     Fade,
     /// `input_prediction_s`.
     Prediction,
+    /// `mpc_horizon_steps` (a whole number).
+    HorizonSteps,
+    /// `mpc_step_s`.
+    Step,
+    /// `mpc_solve_interval_s`.
+    SolveInterval,
+    /// `mpc_force_weight`.
+    ForceWeight,
+    /// `mpc_rate_weight`.
+    RateWeight,
+    /// `mpc_displacement_weight`.
+    DisplacementWeight,
+    /// `mpc_velocity_weight`.
+    VelocityWeight,
+    /// `mpc_tilt_weight`.
+    TiltWeight,
+    /// `mpc_input_weight`.
+    InputWeight,
+    /// `mpc_margin`.
+    Margin,
+    /// `mpc_preview` (a switch).
+    Preview,
 }
 
 /// The axes' keys in the file, x to yaw.
 pub const AXES: [&str; 6] = ["surge", "sway", "heave", "roll", "pitch", "yaw"];
 
-/// A field of the table: a number, or a switch.
+/// A field of the table: a number, a whole number, or a switch.
 enum Field<'a> {
     Number(&'a mut f64),
+    Count(&'a mut u32),
     Switch(&'a mut bool),
 }
 
 fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
     use CueingKey::*;
-    use Field::{Number, Switch};
+    use Field::{Count, Number, Switch};
     Some(match key {
         TranslationScale => Number(&mut c.translation_scale),
         TranslationHpWn => Number(&mut c.translation_hp_wn),
@@ -83,6 +106,17 @@ fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
         Stall => Number(&mut c.stall_s),
         Fade => Number(&mut c.fade_s),
         Prediction => Number(&mut c.input_prediction_s),
+        HorizonSteps => Count(&mut c.mpc_horizon_steps),
+        Step => Number(&mut c.mpc_step_s),
+        SolveInterval => Number(&mut c.mpc_solve_interval_s),
+        ForceWeight => Number(&mut c.mpc_force_weight),
+        RateWeight => Number(&mut c.mpc_rate_weight),
+        DisplacementWeight => Number(&mut c.mpc_displacement_weight),
+        VelocityWeight => Number(&mut c.mpc_velocity_weight),
+        TiltWeight => Number(&mut c.mpc_tilt_weight),
+        InputWeight => Number(&mut c.mpc_input_weight),
+        Margin => Number(&mut c.mpc_margin),
+        Preview => Switch(&mut c.mpc_preview),
     })
 }
 
@@ -91,6 +125,7 @@ pub(super) fn get(c: &CueingSettings, key: CueingKey) -> Option<f64> {
     let mut copy = c.clone();
     Some(match field(&mut copy, key)? {
         Field::Number(v) => *v,
+        Field::Count(n) => f64::from(*n),
         Field::Switch(b) => f64::from(u8::from(*b)),
     })
 }
@@ -101,6 +136,10 @@ pub(super) fn set(c: &mut CueingSettings, key: CueingKey, v: f64) -> Result<(), 
     let mut edited = c.clone();
     match field(&mut edited, key) {
         Some(Field::Number(x)) => *x = v,
+        Some(Field::Count(n)) if v.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&v) => {
+            *n = v as u32
+        }
+        Some(Field::Count(_)) => return Err(format!("must be a whole number, got {v}")),
         Some(Field::Switch(b)) => *b = v != 0.0,
         None => return Err("no such item".to_owned()),
     }

@@ -517,6 +517,12 @@ pub fn apply_all<'a>(
                         .set_text(k, value)
                         .map_err(|p| (p.key, p.reason)),
                 )
+            } else if key == "cueing.algorithm" {
+                Some(
+                    crate::model::cueing_settings::CueingAlgorithm::from_word(value)
+                        .map(|a| edited.cueing.algorithm = a)
+                        .ok_or_else(|| (key.to_owned(), "must be `washout` or `mpc`".to_owned())),
+                )
             } else {
                 key.strip_prefix("appearance.").map(|k| {
                     edited

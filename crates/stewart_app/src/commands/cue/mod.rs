@@ -1,16 +1,20 @@
 //! `stewart cue`: platform poses from vehicle motion by classical washout (the scenario's
 //! `[cueing]` table), as a pose table that `solve --poses`, `check` and `link` take. The
 //! motion is a CSV recording or a packet capture of a game's telemetry (told apart by the
-//! file's first bytes).
+//! file's first bytes). `--compare` runs both algorithms and reports how each reproduces
+//! what is felt ([`comparison`]).
+
+mod comparison;
 
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
+use stewart_kinematics::analysis::cueing::compare::compare;
 use stewart_kinematics::analysis::cueing::{CueError, VehicleMotion, cue_recording};
 
-use crate::cli::CueArgs;
+use crate::cli::{CueArgs, Format};
 use crate::csv_io::{CsvText, read_input};
 use crate::output;
 use crate::source;
@@ -37,19 +41,36 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         Recording::Table(vehicle_table::read(&mut bytes.as_slice(), &file)?)
     };
     let samples = recording.samples();
+    let place = |e: CueError| match e {
+        CueError::Time { index, .. } => anyhow!("{file}, {}: {e}", recording.place(index, "t")),
+        CueError::PoseOutside { index, .. } => {
+            anyhow!("{file}, {}: {e}", recording.place(index, ""))
+        }
+        other => anyhow!("{}: {other}", source::describe(&args.scenario)),
+    };
+    if args.compare {
+        let both = compare(
+            &scenario.geometry,
+            &scenario.limits,
+            &scenario.cueing,
+            samples,
+        )
+        .map_err(place)?;
+        let measures = both.map(|(m, _)| m);
+        let text = match args.format {
+            Format::Text => comparison::table(&measures),
+            Format::Json => comparison::json(&measures, &file),
+        };
+        output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let cued = cue_recording(
         &scenario.geometry,
         &scenario.limits,
         &scenario.cueing,
         samples,
     )
-    .map_err(|e| match e {
-        CueError::Time { index, .. } => anyhow!("{file}, {}: {e}", recording.place(index, "t")),
-        CueError::PoseOutside { index, .. } => {
-            anyhow!("{file}, {}: {e}", recording.place(index, ""))
-        }
-        other => anyhow!("{}: {other}", source::describe(&args.scenario)),
-    })?;
+    .map_err(place)?;
     let mut csv = CsvText::with_header(&POSE_COLUMNS);
     for ((t, _), pose) in samples.iter().zip(&cued.poses) {
         csv.row(std::iter::once(*t).chain(pose.to_row()));

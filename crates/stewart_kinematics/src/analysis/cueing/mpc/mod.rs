@@ -1,0 +1,429 @@
+//! Model-predictive motion cueing: every `mpc_solve_interval_s`, the accelerations of the
+//! six axes over the next `mpc_horizon_steps` steps of `mpc_step_s` that best reproduce
+//! what the occupant feels — the specific force at the reference point in the platform's
+//! axes, gravity included, and the body rates — against the vehicle's scaled ones, within
+//! the rig's limits ([`cost`], [`rig`]); the plan is followed until the next.
+//!
+//! - **Model.** Each axis (`x, y, z` of the reference point, roll, pitch, yaw) is a double
+//!   integrator, exact; only the felt force's and the limits' slopes are linearised
+//!   ([`horizon`]). The vehicle's motion is held over the horizon (a live input knows no
+//!   more).
+//! - **Constraints, all hard**: every actuator within its stroke (range) and each joint
+//!   within its cone at the end of every step, linearised about the pose now and kept
+//!   `mpc_margin` inside; actuator speed and acceleration limits; at rest at the
+//!   horizon's end (so the last plan is always a way to stop within the limits). The
+//!   tilt-rate limit — roll and pitch turning no faster than `tilt_rate_max_deg_s` more
+//!   than the vehicle asks — is kept by an exact penalty: met whenever it can be.
+//! - **Solver**: the dense dual active-set method of [`qp`], its matrix factored once,
+//!   warm-started from the last active set.
+//! - **Safety.** A solve that fails (no plan within the limits, or the iteration limit)
+//!   keeps the last plan, which brakes to rest within them; a pose the exact check
+//!   ([`workspace::pose_within_limits`]) refuses is never given: the platform stops at the
+//!   last pose that passed.
+
+pub mod cost;
+pub mod horizon;
+pub mod qp;
+pub mod rig;
+
+use nalgebra::Vector3;
+
+use crate::analysis::cueing::{Cue, VehicleMotion};
+use crate::analysis::workspace;
+use crate::model::cueing_settings::CueingSettings;
+use crate::model::geometry::Geometry;
+use crate::model::limits::Limits;
+use crate::model::pose::Pose;
+use cost::{Cost, Now};
+use horizon::{Layout, Quantity};
+use qp::{Constraints, DenseQp};
+use rig::{Rig, pose_of};
+
+/// The linear and quadratic cost of the tilt-rate slack: large enough that the penalty is
+/// exact (no slack while the limit can be met).
+const SLACK_LINEAR: f64 = 1e6;
+const SLACK_QUADRATIC: f64 = 10.0;
+
+/// How the planner has fared.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MpcCounts {
+    /// Plans made.
+    pub solves: u64,
+    /// Solves that found no plan within the limits (the last plan was kept).
+    pub failed: u64,
+    /// Poses the exact check refused (the platform held the last good pose instead).
+    pub stops: u64,
+    /// Constraints active in the last plan.
+    pub active: usize,
+}
+
+/// The planner and its state.
+#[derive(Clone, Debug)]
+pub struct Mpc {
+    settings: CueingSettings,
+    geometry: Geometry,
+    limits: Limits,
+    arm: Vector3<f64>,
+    layout: Layout,
+    cost: Cost,
+    rig: Rig,
+    qp: DenseQp,
+    constraints: Constraints,
+    gradient: Vec<f64>,
+    /// Positions and angles, and their rates.
+    s: [f64; 6],
+    v: [f64; 6],
+    /// The plan (step-major accelerations of the cued axes) and how long it has run.
+    plan: Vec<f64>,
+    plan_age: f64,
+    /// Seconds since the last solve (`∞` before the first).
+    since_solve: f64,
+    /// The vehicle's motion in each step of the horizon, scaled (m/s², rad/s), before the
+    /// fade.
+    wanted: Vec<[f64; 6]>,
+    /// The same at each step's end.
+    wanted_end: Vec<[f64; 6]>,
+    fade: f64,
+    /// The last state whose pose passed the exact check.
+    last_good: [f64; 6],
+    counts: MpcCounts,
+}
+
+/// Why a planner cannot be made.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BadCost;
+
+impl Mpc {
+    /// The planner of `settings` for `geometry` within `limits`, at rest at neutral.
+    pub fn new(
+        geometry: &Geometry,
+        limits: &Limits,
+        settings: &CueingSettings,
+    ) -> Result<Self, BadCost> {
+        let axes: Vec<usize> = (0..6).filter(|&i| settings.axes()[i]).collect();
+        let tilts = axes.iter().filter(|&&a| a == 3 || a == 4).count();
+        let layout = Layout {
+            axes,
+            steps: settings.mpc_horizon_steps as usize,
+            first: settings.mpc_solve_interval_s,
+            step: settings.mpc_step_s,
+            extra: tilts,
+        };
+        let arm = Vector3::from(settings.reference_m) - geometry.pivot();
+        let cost = Cost::new(settings, &layout);
+        let n = layout.len();
+        let mut g = cost.hessian();
+        for e in 0..layout.extra {
+            let i = layout.plan_len() + e;
+            g[i * n + i] += SLACK_QUADRATIC;
+        }
+        let rig = Rig::new(geometry, limits, arm, settings.mpc_margin);
+        let rows = layout.axes.len() + rig.rows(layout.steps) + 4 * layout.steps * tilts + tilts;
+        let qp = DenseQp::new(&g, n, rows).map_err(|_| BadCost)?;
+        Ok(Self {
+            settings: settings.clone(),
+            geometry: geometry.clone(),
+            limits: *limits,
+            arm,
+            constraints: Constraints::new(n, rows),
+            gradient: vec![0.0; n],
+            plan: vec![0.0; layout.plan_len()],
+            layout,
+            cost,
+            rig,
+            qp,
+            s: [0.0; 6],
+            v: [0.0; 6],
+            plan_age: 0.0,
+            since_solve: f64::INFINITY,
+            wanted: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
+            wanted_end: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
+            fade: 1.0,
+            last_good: [0.0; 6],
+            counts: MpcCounts::default(),
+        })
+    }
+
+    /// `motion` scaled by `s`: specific force (m/s²) and rates (rad/s).
+    fn scaled(s: &CueingSettings, motion: &VehicleMotion) -> [f64; 6] {
+        let [ax, ay, az] = motion.accel.map(|a| s.translation_scale * a);
+        let [wx, wy, wz] = motion
+            .rates_deg_s
+            .map(|r| s.rotation_scale * r.to_radians());
+        [ax, ay, az, wx, wy, wz]
+    }
+
+    /// Hold `motion` as the vehicle's from now on, over the whole horizon (what a live
+    /// input knows).
+    pub fn hold(&mut self, motion: &VehicleMotion) {
+        let w = Self::scaled(&self.settings, motion);
+        self.wanted.iter_mut().for_each(|v| *v = w);
+        self.wanted_end.iter_mut().for_each(|v| *v = w);
+    }
+
+    /// The vehicle's motion from now on as `samples` (times from now, seconds, the first
+    /// at 0, each held until the next): each step of the horizon asks for the sample held
+    /// at its middle, and at its end (a recording, known ahead).
+    pub fn hold_ahead(&mut self, samples: &[(f64, VehicleMotion)]) {
+        let settings = &self.settings;
+        let held_at = |at: f64| {
+            // A sample due at `at` to rounding counts as come.
+            let i = samples.partition_point(|(t, _)| *t <= at + 1e-9).max(1) - 1;
+            samples
+                .get(i)
+                .map_or([0.0; 6], |(_, m)| Self::scaled(settings, m))
+        };
+        for k in 0..self.layout.steps {
+            let (start, length) = (self.layout.start(k), self.layout.length(k));
+            self.wanted[k] = held_at(start + 0.5 * length);
+            self.wanted_end[k] = held_at(start + length);
+        }
+    }
+
+    /// Ask for only `fade` (0 to 1) of the vehicle's motion.
+    pub fn set_fade(&mut self, fade: f64) {
+        self.fade = fade;
+    }
+
+    /// How far ahead the plan reaches, seconds.
+    pub fn horizon_s(&self) -> f64 {
+        self.layout.start(self.layout.steps)
+    }
+
+    /// How the planner has fared so far.
+    pub fn counts(&self) -> MpcCounts {
+        self.counts
+    }
+
+    /// The acceleration of each axis the plan holds `age` seconds after it began.
+    fn input_at(&self, age: f64) -> [f64; 6] {
+        let mut u = [0.0; 6];
+        let Some(j) = self.layout.step_at(age) else {
+            return u;
+        };
+        for (slot, &axis) in self.layout.axes.iter().enumerate() {
+            u[axis] = self.plan[j * self.layout.axes.len() + slot];
+        }
+        u
+    }
+
+    /// `(s, v, age)` moved on by `h` seconds along the plan.
+    fn integrate(
+        &self,
+        mut s: [f64; 6],
+        mut v: [f64; 6],
+        mut age: f64,
+        mut h: f64,
+    ) -> ([f64; 6], [f64; 6], f64) {
+        while h > 0.0 {
+            // To the end of this plan step (or all of h once the plan is over).
+            let left = match self.layout.step_at(age) {
+                Some(k) => (self.layout.start(k) + self.layout.length(k) - age).max(1e-12),
+                None => h,
+            };
+            let dt = h.min(left);
+            let u = self.input_at(age);
+            for i in 0..6 {
+                s[i] += v[i] * dt + 0.5 * u[i] * dt * dt;
+                v[i] += u[i] * dt;
+            }
+            age += dt;
+            h -= dt;
+        }
+        (s, v, age)
+    }
+
+    /// Advance `h` seconds — planning again whenever the solve interval has passed — and
+    /// return the pose then.
+    pub fn advance(&mut self, mut h: f64) -> Pose {
+        let every = self.settings.mpc_solve_interval_s;
+        // Times from a recording's differences are off by rounding: a remainder this
+        // small is no interval of its own.
+        const ROUNDING: f64 = 1e-9;
+        while h > 0.0 {
+            if self.since_solve >= every - ROUNDING {
+                self.solve();
+                self.since_solve = 0.0;
+            }
+            let mut dt = h.min(every - self.since_solve);
+            if h - dt < ROUNDING {
+                dt = h;
+            }
+            (self.s, self.v, self.plan_age) = self.integrate(self.s, self.v, self.plan_age, dt);
+            self.since_solve += dt;
+            h -= dt;
+        }
+        let pose = pose_of(&self.geometry, self.arm, &self.s);
+        if workspace::pose_within_limits(&self.geometry, &self.limits, &pose) {
+            self.last_good = self.s;
+            return pose;
+        }
+        // Never a pose outside the limits: stop at the last one that passed.
+        self.counts.stops += 1;
+        self.s = self.last_good;
+        self.v = [0.0; 6];
+        self.plan.iter_mut().for_each(|u| *u = 0.0);
+        self.since_solve = f64::INFINITY;
+        pose_of(&self.geometry, self.arm, &self.s)
+    }
+
+    /// The pose `h` seconds ahead along the plan, the state left as it is. No allocation.
+    pub fn preview(&self, h: f64) -> Pose {
+        let (s, _, _) = self.integrate(self.s, self.v, self.plan_age, h.max(0.0));
+        let pose = pose_of(&self.geometry, self.arm, &s);
+        if workspace::pose_within_limits(&self.geometry, &self.limits, &pose) {
+            pose
+        } else {
+            pose_of(&self.geometry, self.arm, &self.last_good)
+        }
+    }
+
+    /// The motion now, as a cue: translation, acceleration, angles (all of roll and pitch
+    /// counted as tilt: the planner does not split them).
+    pub fn cue(&self) -> Cue {
+        let u = self.input_at(self.plan_age);
+        Cue {
+            position: [self.s[0], self.s[1], self.s[2]],
+            acceleration: [u[0], u[1], u[2]],
+            angles: [self.s[3], self.s[4], self.s[5]],
+            tilt: [self.s[3], self.s[4]],
+        }
+    }
+
+    /// Back to neutral and rest, the plan cleared.
+    pub fn reset(&mut self) {
+        self.s = [0.0; 6];
+        self.v = [0.0; 6];
+        self.last_good = [0.0; 6];
+        self.plan.iter_mut().for_each(|u| *u = 0.0);
+        self.plan_age = 0.0;
+        self.since_solve = f64::INFINITY;
+        self.wanted.iter_mut().for_each(|v| *v = [0.0; 6]);
+        self.wanted_end.iter_mut().for_each(|v| *v = [0.0; 6]);
+    }
+
+    /// Plan again from the state now; on failure keep the last plan.
+    fn solve(&mut self) {
+        self.counts.solves += 1;
+        let Some(lin) = self.rig.linearise(&self.s, &self.v) else {
+            self.counts.failed += 1;
+            return;
+        };
+        let cue = self.cue();
+        let a0 = self.input_at(self.plan_age);
+        let now = Now {
+            s: self.s,
+            v: self.v,
+            a: a0,
+            force: cue.specific_force(),
+            rates: body_rates(&self.s, &self.v),
+            wanted: &self.wanted,
+            wanted_end: &self.wanted_end,
+            fade: self.fade,
+        };
+        self.cost.gradient(&self.layout, &now, &mut self.gradient);
+        let plan_len = self.layout.plan_len();
+        for e in 0..self.layout.extra {
+            self.gradient[plan_len + e] += SLACK_LINEAR;
+        }
+        // Kept the margin inside, like the rig's limits: when the rig's limits leave the
+        // tilt rate no way to be met exactly, its penalty lets it over by a hair.
+        let tilt_limit = if self.settings.tilt {
+            self.settings.tilt_rate_max_deg_s.to_radians() * (1.0 - self.settings.mpc_margin)
+        } else {
+            0.0
+        };
+        build_constraints(
+            &mut self.constraints,
+            &self.layout,
+            &self.rig,
+            tilt_limit,
+            &lin,
+            &now,
+        );
+        match self.qp.solve(&self.gradient, &self.constraints) {
+            Ok(x) => {
+                self.plan.copy_from_slice(&x[..plan_len]);
+                self.plan_age = 0.0;
+                self.counts.active = self.qp.active_count();
+            }
+            Err(_) => self.counts.failed += 1,
+        }
+    }
+}
+
+/// The plan's constraints from the state `now`: at rest at the horizon's end, the rig's
+/// limits linearised as `lin`, roll and pitch turning no faster than `tilt_limit` (rad/s)
+/// beyond what the vehicle asks (each axis by its slack).
+fn build_constraints(
+    c: &mut Constraints,
+    layout: &Layout,
+    rig: &Rig,
+    tilt_limit: f64,
+    lin: &rig::Linearised,
+    now: &Now,
+) {
+    c.clear();
+    let last = layout.steps - 1;
+    // At rest at the horizon's end.
+    for &axis in &layout.axes {
+        let free = layout.free(Quantity::EndVelocity, last, now.s[axis], now.v[axis]);
+        let row = c.push(-free, -free);
+        layout.add_quantity(row, Quantity::EndVelocity, last, axis, 1.0);
+    }
+    rig.push_rows(c, layout, lin, &now.s, &now.v);
+    let limit = tilt_limit;
+    let plan_len = layout.plan_len();
+    let tilt_axes = layout.axes.iter().filter(|&&a| a == 3 || a == 4);
+    for (e, &axis) in tilt_axes.enumerate() {
+        // Not at the horizon's end, where the platform is at rest whatever the vehicle does.
+        for k in 0..layout.steps - 1 {
+            // Within the limit of the vehicle's rate over the step and of its rate from the
+            // step's end on: so also over every interval between two samples.
+            let during = now.wanted(k, axis);
+            let after = now.wanted_end(k, axis);
+            // The body rate, linear in the angles' rates at the angles now.
+            let slopes = body_rate_slopes(&now.s)[axis - 3];
+            let free: f64 = (0..3)
+                .map(|j| {
+                    slopes[j] * layout.free(Quantity::EndVelocity, k, now.s[3 + j], now.v[3 + j])
+                })
+                .sum();
+            for wanted in [during, after]
+                .into_iter()
+                .take(if during == after { 1 } else { 2 })
+            {
+                for side in [1.0, -1.0] {
+                    // side (ω_k − wanted) − slack ≤ limit.
+                    let row = c.push(f64::NEG_INFINITY, limit - side * (free - wanted));
+                    for (j, m) in slopes.iter().enumerate() {
+                        if *m != 0.0 {
+                            layout.add_quantity(row, Quantity::EndVelocity, k, 3 + j, side * m);
+                        }
+                    }
+                    row[plan_len + e] = -1.0;
+                }
+            }
+        }
+        c.push(0.0, f64::INFINITY)[plan_len + e] = 1.0;
+    }
+    c.normalise();
+}
+
+/// The body rates' slopes in the angles' rates: row `i` gives rate `i` about the
+/// platform's own axes from the rates of roll, pitch and yaw at angles `s[3..6]`
+/// (`R = R_z(yaw) R_y(pitch) R_x(roll)`).
+pub fn body_rate_slopes(s: &[f64; 6]) -> [[f64; 3]; 3] {
+    let (sr, cr) = s[3].sin_cos();
+    let (sp, cp) = s[4].sin_cos();
+    [[1.0, 0.0, -sp], [0.0, cr, sr * cp], [0.0, -sr, cr * cp]]
+}
+
+/// The body rates (about the platform's own axes, rad/s) of angles `s[3..6]` turning at
+/// `v[3..6]`.
+pub fn body_rates(s: &[f64; 6], v: &[f64; 6]) -> [f64; 3] {
+    body_rate_slopes(s).map(|row| row[0] * v[3] + row[1] * v[4] + row[2] * v[5])
+}
+
+#[cfg(test)]
+mod tests;
