@@ -4,6 +4,10 @@
 //! (`LiveCue`: reading and decoding one datagram a tick too; the datagram is sent before
 //! each timed tick, outside the time).
 //!
+//! The model-predictive cueing the same way: one planning step (a solve and 10 ms of its
+//! plan, as `stewart cue` makes them), and the whole live sender tick with it (the
+//! solves on the planner's thread, the tick following the plans).
+//!
 //! `cargo bench -p stewart_app --bench cue_tick`. Before criterion's means, 100 000
 //! single ticks of each are timed one by one for the mean, the 99th percentile and the
 //! worst (the figures docs/guide/rig.md quotes, "Live telemetry").
@@ -33,6 +37,14 @@ fn scenario() -> Scenario {
         ],
     )
     .unwrap_or_else(|e| panic!("{e}"));
+    s
+}
+
+/// The same platform cued by the model-predictive planner.
+fn scenario_mpc() -> Scenario {
+    let mut s = scenario();
+    stewart_kinematics::io::settings::apply_all(&mut s, ["cueing.algorithm=mpc"])
+        .unwrap_or_else(|e| panic!("{e}"));
     s
 }
 
@@ -162,6 +174,33 @@ fn bench(c: &mut Criterion) {
             total
         })
     });
+    let m = scenario_mpc();
+    let mut planner =
+        Cueing::new(&m.geometry, &m.limits, &m.cueing).unwrap_or_else(|e| panic!("{e}"));
+    let mut t = 0.0;
+    group.bench_function("mpc_solve_and_10_ms", |b| {
+        b.iter(|| {
+            t += 1e-2;
+            planner.hold(&vehicle(t));
+            black_box(planner.advance(1e-2))
+        })
+    });
+    let (target, mut send) = live_target(&m);
+    let mut live = stream(&m, target);
+    let mut k = 0;
+    group.bench_function("mpc_live_udp_cue_supervisor_encode_send", |b| {
+        b.iter_custom(|iterations| {
+            let mut total = std::time::Duration::ZERO;
+            for _ in 0..iterations {
+                k += 1;
+                send(k);
+                let started = Instant::now();
+                black_box(live.tick(1.0 + k as f64 * 1e-3));
+                total += started.elapsed();
+            }
+            total
+        })
+    });
     group.finish();
 }
 
@@ -194,6 +233,28 @@ fn main() {
     percentiles("live_udp_cue_supervisor_encode_send", 100_000, send, |k| {
         black_box(live.tick(1.0 + (k + 1) as f64 * 1e-3));
     });
+    let m = scenario_mpc();
+    let mut planner =
+        Cueing::new(&m.geometry, &m.limits, &m.cueing).unwrap_or_else(|e| panic!("{e}"));
+    percentiles(
+        "mpc_solve_and_10_ms",
+        20_000,
+        |_| {},
+        |k| {
+            planner.hold(&vehicle(k as f64 * 1e-2));
+            black_box(planner.advance(1e-2));
+        },
+    );
+    let (target, send) = live_target(&m);
+    let mut live = stream(&m, target);
+    percentiles(
+        "mpc_live_udp_cue_supervisor_encode_send",
+        100_000,
+        send,
+        |k| {
+            black_box(live.tick(1.0 + (k + 1) as f64 * 1e-3));
+        },
+    );
     benches();
     Criterion::default().configure_from_args().final_summary();
 }

@@ -23,6 +23,7 @@ use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
 use crate::xplane_rref::RrefSubscription;
 
 pub mod measure;
+mod planner;
 
 /// The largest datagram read (X-Plane sends up to a few hundred bytes).
 const DATAGRAM: usize = 65_536;
@@ -229,6 +230,8 @@ pub struct LiveCue {
     /// `stall_s` and `fade_s`.
     stall_s: f64,
     fade_s: f64,
+    /// The model-predictive planner's thread (`None` for the washout).
+    planner: Option<planner::PlannerThread>,
 }
 
 impl LiveCue {
@@ -238,8 +241,18 @@ impl LiveCue {
         let Some(address) = source.strip_prefix("udp:") else {
             bail!("--cue takes udp:HOST:PORT (such as udp:0.0.0.0:4123), got `{source}`");
         };
-        let cueing = Cueing::new(&scenario.geometry, &scenario.limits, &scenario.cueing)
+        let mut cueing = Cueing::new(&scenario.geometry, &scenario.limits, &scenario.cueing)
             .map_err(|e| anyhow::anyhow!("scenario `{}`: {e}", scenario.name))?;
+        // The planner solves on a thread of its own; the tick only follows its plans.
+        let planner = match cueing.mpc_mut() {
+            Some(follower) => {
+                let thread = planner::PlannerThread::start(follower.clone())
+                    .context("cannot start the cueing planner's thread")?;
+                follower.set_remote(true);
+                Some(thread)
+            }
+            None => None,
+        };
         let socket =
             UdpSocket::bind(address).with_context(|| format!("cannot listen at `{address}`"))?;
         socket
@@ -264,6 +277,7 @@ impl LiveCue {
             window_start: None,
             stall_s: scenario.cueing.stall_s,
             fade_s: scenario.cueing.fade_s,
+            planner,
         })
     }
 
@@ -404,7 +418,7 @@ impl LiveCue {
             }
             p.sampled(sample.t.unwrap_or(now), motion);
         }
-        self.pose = self.cueing.advance(h);
+        self.pose = self.advance(h);
         self.cueing.hold(&motion);
         let cue = self.cueing.cue();
         let mut trace = self
@@ -443,12 +457,28 @@ impl LiveCue {
         }
         let fade = self.cueing.fade() - dt / self.fade_s;
         self.cueing.set_fade(fade);
-        self.pose = self.cueing.advance(dt);
+        self.pose = self.advance(dt);
         if fade <= 0.0 {
             self.cueing.reset();
             self.cueing.set_fade(1.0);
-            self.pose = self.cueing.advance(0.0);
+            self.pose = self.advance(0.0);
         }
+    }
+
+    /// The cueing advanced `h` seconds; with the planner, the replies that came offered
+    /// before and the next request sent after.
+    fn advance(&mut self, h: f64) -> Pose {
+        let Some(planner) = &self.planner else {
+            return self.cueing.advance(h);
+        };
+        if let Some(follower) = self.cueing.mpc_mut() {
+            planner.exchange(follower);
+        }
+        let pose = self.cueing.advance(h);
+        if let Some(follower) = self.cueing.mpc_mut() {
+            planner.exchange(follower);
+        }
+        pose
     }
 }
 
@@ -473,6 +503,49 @@ mod tests {
     /// Wait until the socket has something to read (loopback delivers at once, almost).
     fn settle() {
         std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+
+    #[test]
+    fn a_live_planner_keeps_the_limits_whatever_its_thread_does_and_fades_home() {
+        // Model-predictive cueing, live: the tick follows plans from the planner's thread
+        // (answered when they come: this test does not wait for them, so whatever the
+        // thread's pace) and every pose is within the limits; silence fades it home.
+        let mut scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        scenario.cueing.algorithm =
+            stewart_kinematics::model::cueing_settings::CueingAlgorithm::Mpc;
+        let (mut live, at) = listening(&scenario);
+        for k in 0..200 {
+            let t = 0.01 * f64::from(k);
+            let sign = if (k / 40) % 2 == 0 { 1.0 } else { -1.0 };
+            send(
+                at,
+                &format!("{t},{},{},0,0,0,{}\n", 9.0 * sign, -6.0 * sign, 40.0 * sign),
+            );
+            settle();
+            let pose = live.tick(t);
+            assert!(
+                stewart_kinematics::analysis::workspace::pose_within_limits(
+                    &scenario.geometry,
+                    &scenario.limits,
+                    &pose
+                ),
+                "sample {k}"
+            );
+        }
+        let home = scenario.geometry.home_pose();
+        let c = &scenario.cueing;
+        let mut t = 2.0;
+        let mut last = live.tick(t);
+        while t < 2.0 + c.stall_s + c.fade_s + 0.1 {
+            t += 0.01;
+            last = live.tick(t);
+            assert!(stewart_kinematics::analysis::workspace::pose_within_limits(
+                &scenario.geometry,
+                &scenario.limits,
+                &last
+            ));
+        }
+        assert_eq!(last, home);
     }
 
     #[test]

@@ -226,6 +226,14 @@ impl Cueing {
         }
     }
 
+    /// The planner, when it is one (to plan elsewhere: [`mpc::remote`]).
+    pub fn mpc_mut(&mut self) -> Option<&mut Mpc> {
+        match &mut self.engine {
+            Engine::Washout(_) => None,
+            Engine::Mpc(m) => Some(m),
+        }
+    }
+
     /// How the planner has fared (`None` for the washout).
     pub fn mpc_counts(&self) -> Option<MpcCounts> {
         match &self.engine {

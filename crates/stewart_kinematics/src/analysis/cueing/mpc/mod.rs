@@ -24,6 +24,7 @@
 pub mod cost;
 pub mod horizon;
 pub mod qp;
+pub mod remote;
 pub mod rig;
 
 use nalgebra::Vector3;
@@ -55,6 +56,8 @@ pub struct MpcCounts {
     pub stops: u64,
     /// Constraints active in the last plan.
     pub active: usize,
+    /// Planning elsewhere: solve instants whose plan had not come (the last went on).
+    pub late: u64,
 }
 
 /// The planner and its state.
@@ -87,6 +90,12 @@ pub struct Mpc {
     /// The last state whose pose passed the exact check.
     last_good: [f64; 6],
     counts: MpcCounts,
+    /// Planning elsewhere ([`remote`]): the solve instants so far, the request left for
+    /// the next and the reply offered.
+    remote: bool,
+    instant: u64,
+    request: Option<remote::PlanRequest>,
+    reply: Option<remote::PlanReply>,
 }
 
 /// Why a planner cannot be made.
@@ -141,6 +150,10 @@ impl Mpc {
             fade: 1.0,
             last_good: [0.0; 6],
             counts: MpcCounts::default(),
+            remote: false,
+            instant: 0,
+            request: None,
+            reply: None,
         })
     }
 
@@ -242,7 +255,11 @@ impl Mpc {
         const ROUNDING: f64 = 1e-9;
         while h > 0.0 {
             if self.since_solve >= every - ROUNDING {
-                self.solve();
+                if self.remote {
+                    self.remote_instant();
+                } else {
+                    self.solve();
+                }
                 self.since_solve = 0.0;
             }
             let mut dt = h.min(every - self.since_solve);
@@ -300,22 +317,36 @@ impl Mpc {
         self.since_solve = f64::INFINITY;
         self.wanted.iter_mut().for_each(|v| *v = [0.0; 6]);
         self.wanted_end.iter_mut().for_each(|v| *v = [0.0; 6]);
+        self.request = None;
+        self.reply = None;
     }
 
     /// Plan again from the state now; on failure keep the last plan.
     fn solve(&mut self) {
+        let a0 = self.input_at(self.plan_age);
+        if self.plan_from(a0) {
+            self.plan_age = 0.0;
+        }
+    }
+
+    /// Plan from the state now, `a0` the accelerations held just before; on failure keep
+    /// the last plan. Whether a plan was found.
+    fn plan_from(&mut self, a0: [f64; 6]) -> bool {
         self.counts.solves += 1;
         let Some(lin) = self.rig.linearise(&self.s, &self.v) else {
             self.counts.failed += 1;
-            return;
+            return false;
         };
-        let cue = self.cue();
-        let a0 = self.input_at(self.plan_age);
+        let held = Cue {
+            acceleration: [a0[0], a0[1], a0[2]],
+            angles: [self.s[3], self.s[4], self.s[5]],
+            ..Cue::default()
+        };
         let now = Now {
             s: self.s,
             v: self.v,
             a: a0,
-            force: cue.specific_force(),
+            force: held.specific_force(),
             rates: body_rates(&self.s, &self.v),
             wanted: &self.wanted,
             wanted_end: &self.wanted_end,
@@ -344,10 +375,13 @@ impl Mpc {
         match self.qp.solve(&self.gradient, &self.constraints) {
             Ok(x) => {
                 self.plan.copy_from_slice(&x[..plan_len]);
-                self.plan_age = 0.0;
                 self.counts.active = self.qp.active_count();
+                true
             }
-            Err(_) => self.counts.failed += 1,
+            Err(_) => {
+                self.counts.failed += 1;
+                false
+            }
         }
     }
 }

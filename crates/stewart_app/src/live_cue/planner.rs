@@ -1,0 +1,98 @@
+//! The live cue's planner thread: with model-predictive cueing, the sender's tick follows
+//! the plan and never solves; each solve instant's request goes to this thread, which
+//! answers it within the solve interval (`Mpc`'s remote planning). A request that finds
+//! the thread busy is dropped and its instant goes on with the last plan; so no solve,
+//! however long, delays a tick.
+
+use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
+
+use stewart_kinematics::analysis::cueing::Mpc;
+use stewart_kinematics::analysis::cueing::mpc::remote::{PlanReply, PlanRequest};
+
+/// The thread and the two ways to it.
+pub(crate) struct PlannerThread {
+    requests: SyncSender<PlanRequest>,
+    replies: Receiver<PlanReply>,
+}
+
+impl PlannerThread {
+    /// Answer requests with `planner` (a copy of the follower's, planning locally) on a
+    /// thread of its own, until this is dropped.
+    pub(crate) fn start(mut planner: Mpc) -> std::io::Result<Self> {
+        let (requests, asked) = sync_channel::<PlanRequest>(1);
+        let (answered, replies) = sync_channel::<PlanReply>(2);
+        std::thread::Builder::new()
+            .name("cue planner".to_owned())
+            .spawn(move || {
+                while let Ok(request) = asked.recv() {
+                    let reply = planner.answer(&request);
+                    match answered.try_send(reply) {
+                        Ok(()) | Err(TrySendError::Full(_)) => {}
+                        Err(TrySendError::Disconnected(_)) => break,
+                    }
+                }
+            })?;
+        Ok(Self { requests, replies })
+    }
+
+    /// Offer `follower` the replies that have come, and send its request, if any.
+    pub(crate) fn exchange(&self, follower: &mut Mpc) {
+        while let Ok(reply) = self.replies.try_recv() {
+            follower.offer(&reply);
+        }
+        if let Some(request) = follower.take_request() {
+            // Busy: this instant will go on with the last plan.
+            let _ = self.requests.try_send(request);
+        }
+    }
+
+    /// Wait for the next reply and offer it (tests: an answer without racing the thread).
+    #[cfg(test)]
+    pub(crate) fn wait(&self, follower: &mut Mpc) -> bool {
+        match self.replies.recv() {
+            Ok(reply) => {
+                follower.offer(&reply);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_kinematics::Scenario;
+    use stewart_kinematics::analysis::cueing::VehicleMotion;
+
+    #[test]
+    fn the_thread_answers_as_the_planner_would_here() {
+        let mut s = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        s.cueing.algorithm = stewart_kinematics::model::cueing_settings::CueingAlgorithm::Mpc;
+        let planner = Mpc::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|_| panic!());
+        let mut here = planner.clone();
+        let thread = PlannerThread::start(planner.clone()).unwrap_or_else(|e| panic!("{e}"));
+        let mut follower = planner;
+        follower.set_remote(true);
+        follower.hold(&VehicleMotion {
+            accel: [2.0, 1.0, 0.0],
+            rates_deg_s: [0.0, 0.0, 10.0],
+        });
+        let mut followed = Vec::new();
+        for _ in 0..50 {
+            followed.push(follower.advance(0.01));
+            let request = follower
+                .take_request()
+                .unwrap_or_else(|| panic!("a request"));
+            let expected = here.answer(&request);
+            follower.offer(&expected);
+            // The thread's answer to the same request, waited for.
+            let _ = thread.requests.try_send(request);
+            let mut other = follower.clone();
+            assert!(thread.wait(&mut other));
+            let (a, b) = (follower.clone().advance(0.01), other.advance(0.01));
+            assert_eq!(a, b, "the same plan from the thread");
+        }
+        assert!(followed.iter().any(|p| *p != followed[0]), "it moved");
+    }
+}

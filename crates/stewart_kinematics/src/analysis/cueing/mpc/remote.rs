@@ -1,0 +1,199 @@
+//! Planning elsewhere: a live stream at 1 kHz cannot wait for a solve inside its tick, so
+//! the planner that follows the plan hands each solve to another (on its own thread)
+//! one solve interval ahead.
+//!
+//! At each solve instant `tᵢ` the follower asks for the plan that starts at `tᵢ₊₁`: the
+//! state then is known exactly (the plan is followed exactly until then), the vehicle's
+//! motion is the one known at `tᵢ`. When the answer has come by `tᵢ₊₁` it is adopted
+//! there, seamlessly; when it has not (or found no plan), the current plan goes on — it
+//! ends at rest within the limits — and the next one is asked for. The poses still pass
+//! the exact check before they are given. Requests and answers are plain values: no
+//! allocation on either side.
+
+use super::Mpc;
+use crate::model::cueing_settings::MAX_HORIZON_STEPS;
+
+/// The most steps of a horizon.
+const STEPS: usize = MAX_HORIZON_STEPS as usize;
+
+/// A plan asked for: the state at the instant it will start and what is wanted then.
+#[derive(Clone, Copy, Debug)]
+pub struct PlanRequest {
+    /// Which solve instant (from 1).
+    pub id: u64,
+    s: [f64; 6],
+    v: [f64; 6],
+    a: [f64; 6],
+    wanted: [[f64; 6]; STEPS],
+    wanted_end: [[f64; 6]; STEPS],
+    fade: f64,
+}
+
+/// A plan made for a request.
+#[derive(Clone, Copy, Debug)]
+pub struct PlanReply {
+    /// The request's id.
+    pub id: u64,
+    /// Whether a plan within the limits was found.
+    pub found: bool,
+    plan: [f64; 6 * STEPS],
+    active: usize,
+}
+
+impl Mpc {
+    /// Plan elsewhere (`true`): from now on [`Mpc::advance`] never solves; at each solve
+    /// instant it adopts the reply offered for it, if any, and leaves a request for the
+    /// next ([`Mpc::take_request`]).
+    pub fn set_remote(&mut self, remote: bool) {
+        self.remote = remote;
+    }
+
+    /// The request left at the last solve instant, if not taken yet.
+    pub fn take_request(&mut self) -> Option<PlanRequest> {
+        self.request.take()
+    }
+
+    /// Offer a reply: it is adopted at its solve instant if it is the one asked for then.
+    pub fn offer(&mut self, reply: &PlanReply) {
+        self.reply = Some(*reply);
+    }
+
+    /// Plan for `request` (on the planner that answers), from its state.
+    pub fn answer(&mut self, request: &PlanRequest) -> PlanReply {
+        let steps = self.layout.steps;
+        self.s = request.s;
+        self.v = request.v;
+        self.wanted.copy_from_slice(&request.wanted[..steps]);
+        self.wanted_end
+            .copy_from_slice(&request.wanted_end[..steps]);
+        self.fade = request.fade;
+        let found = self.plan_from(request.a);
+        let mut plan = [0.0; 6 * STEPS];
+        plan[..self.plan.len()].copy_from_slice(&self.plan);
+        PlanReply {
+            id: request.id,
+            found,
+            plan,
+            active: self.counts.active,
+        }
+    }
+
+    /// At a solve instant, planning elsewhere: adopt the reply for this instant, or go on
+    /// with the plan; then ask for the plan of the next instant.
+    pub(super) fn remote_instant(&mut self) {
+        self.instant += 1;
+        match self.reply.take() {
+            Some(r) if r.id == self.instant && r.found => {
+                let n = self.plan.len();
+                self.plan.copy_from_slice(&r.plan[..n]);
+                self.plan_age = 0.0;
+                self.counts.active = r.active;
+                self.counts.solves += 1;
+            }
+            Some(r) if r.id == self.instant => {
+                self.counts.solves += 1;
+                self.counts.failed += 1;
+            }
+            _ => self.counts.late += 1,
+        }
+        let every = self.settings.mpc_solve_interval_s;
+        let (s, v, age) = self.integrate(self.s, self.v, self.plan_age, every);
+        let mut request = PlanRequest {
+            id: self.instant + 1,
+            s,
+            v,
+            a: self.input_at(age),
+            wanted: [[0.0; 6]; STEPS],
+            wanted_end: [[0.0; 6]; STEPS],
+            fade: self.fade,
+        };
+        let steps = self.layout.steps;
+        request.wanted[..steps].copy_from_slice(&self.wanted);
+        request.wanted_end[..steps].copy_from_slice(&self.wanted_end);
+        self.request = Some(request);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::cueing::VehicleMotion;
+    use crate::io::scenario::Scenario;
+    use crate::model::cueing_settings::{CueingAlgorithm, CueingSettings};
+
+    fn planners() -> (Mpc, Mpc) {
+        let s = Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}"));
+        let settings = CueingSettings {
+            algorithm: CueingAlgorithm::Mpc,
+            mpc_tilt_weight: 0.0,
+            ..s.cueing.clone()
+        };
+        let mpc = Mpc::new(&s.geometry, &s.limits, &settings).unwrap_or_else(|_| panic!());
+        let mut follower = mpc.clone();
+        follower.set_remote(true);
+        (follower, mpc)
+    }
+
+    #[test]
+    fn answered_at_once_the_remote_plan_reaches_the_same_steady_state() {
+        let (mut follower, mut answering) = planners();
+        let (mut local, _) = planners();
+        local.set_remote(false);
+        let force = VehicleMotion {
+            accel: [1.5, -1.0, 0.0],
+            rates_deg_s: [0.0; 3],
+        };
+        follower.hold(&force);
+        local.hold(&force);
+        for _ in 0..3000 {
+            follower.advance(0.01);
+            local.advance(0.01);
+            if let Some(request) = follower.take_request() {
+                let reply = answering.answer(&request);
+                follower.offer(&reply);
+            }
+        }
+        let (f, l) = (
+            follower.cue().specific_force(),
+            local.cue().specific_force(),
+        );
+        for i in 0..3 {
+            assert!((f[i] - l[i]).abs() < 1e-6, "{f:?} vs {l:?}");
+        }
+        let counts = follower.counts();
+        assert_eq!(counts.late, 1, "only the first instant, before any request");
+        assert_eq!(follower.counts().stops, 0);
+    }
+
+    #[test]
+    fn unanswered_the_plan_goes_on_to_rest_within_the_limits() {
+        let (mut follower, mut answering) = planners();
+        follower.hold(&VehicleMotion {
+            accel: [3.0, 0.0, 0.0],
+            rates_deg_s: [0.0; 3],
+        });
+        // Answered for half a second: the platform moves.
+        for _ in 0..50 {
+            follower.advance(0.01);
+            if let Some(request) = follower.take_request() {
+                follower.offer(&answering.answer(&request));
+            }
+        }
+        assert!(follower.v.iter().any(|v| v.abs() > 1e-3));
+        // Then the answers stop: the last plan is followed to rest.
+        for _ in 0..300 {
+            let pose = follower.advance(0.01);
+            assert!(crate::analysis::workspace::pose_within_limits(
+                &follower.geometry,
+                &follower.limits,
+                &pose
+            ));
+        }
+        assert!(
+            follower.v.iter().all(|v| v.abs() < 1e-12),
+            "{:?}",
+            follower.v
+        );
+        assert!(follower.counts().late >= 300);
+    }
+}
