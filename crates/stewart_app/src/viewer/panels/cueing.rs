@@ -1,12 +1,15 @@
-//! Motion cueing: the washout's settings (the scenario's `[cueing]` table), and, while a
-//! vehicle recording plays as the motion, the vehicle's specific force against the one the
-//! platform makes felt, and the tilt that renders the sustained part, over time.
+//! Motion cueing: the algorithm (classical washout or model-predictive) and its settings
+//! (the scenario's `[cueing]` table), and, while a vehicle recording plays as the motion,
+//! the vehicle's scaled specific force against the one each algorithm makes felt, their
+//! errors and the stroke each uses, and the tilt, over time.
 
 use std::sync::PoisonError;
 
 use egui::RichText;
 use egui_plot::{Line, LineStyle, PlotPoints, VLine};
+use stewart_kinematics::analysis::cueing::compare::CueMeasures;
 use stewart_kinematics::io::settings::{self, Group};
+use stewart_kinematics::model::cueing_settings::CueingAlgorithm;
 
 use super::plot::leg_colour;
 use super::side_plot;
@@ -38,10 +41,13 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
                 _ if live.is_some() => {
                     ui.label(t.tr("cueing.live"));
                     let end = trace.last().map_or(0.0, |p| p.t);
+                    let times: Vec<f64> = trace.iter().map(|p| p.t - end).collect();
                     let channels = Channels {
-                        times: trace.iter().map(|p| p.t - end).collect(),
+                        times: times.clone(),
                         vehicle: trace.iter().map(|p| p.vehicle).collect(),
                         platform: trace.iter().map(|p| p.platform).collect(),
+                        other: None,
+                        tilt_times: times,
                         tilt_deg: trace.iter().map(|p| p.tilt_deg).collect(),
                     };
                     plots(ui, &channels, t, None);
@@ -55,6 +61,9 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
                         &[("name", &file), ("count", &v.samples.len())],
                     ));
                     plots(ui, &Channels::of(v), t, Some(now));
+                    for c in &v.compared {
+                        measures(ui, &c.measures, t);
+                    }
                 }
                 None => {
                     open = ui.button(t.tr("cueing.open_recording")).clicked();
@@ -64,37 +73,117 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
             egui::CollapsingHeader::new(t.tr("cueing.settings"))
                 .default_open(ed.expand)
                 .show(ui, |ui| {
+                    let algorithm = ed.scenario().cueing.algorithm;
+                    ui.horizontal(|ui| {
+                        ui.label(t.tr("cueing.algorithm"));
+                        for choice in CueingAlgorithm::ALL {
+                            if ui
+                                .selectable_label(
+                                    algorithm == choice,
+                                    t.tr(algorithm_words(choice)),
+                                )
+                                .clicked()
+                                && algorithm != choice
+                            {
+                                ed.edit(Group::Cueing, |s| {
+                                    s.cueing.algorithm = choice;
+                                    Ok(())
+                                });
+                            }
+                        }
+                    });
                     let targets: Vec<_> = settings::all()
                         .iter()
-                        .filter(|s| s.group == Group::Cueing)
+                        .filter(|s| s.group == Group::Cueing && shown_for(&s.key, algorithm))
                         .map(|s| s.target)
                         .collect();
                     for target in targets {
                         setting_slider(ui, ed, target);
                     }
-                    ui.label(RichText::new(t.tr("cueing.limiter_keeps")).small());
+                    let note = match algorithm {
+                        CueingAlgorithm::Washout => "cueing.limiter_keeps",
+                        CueingAlgorithm::Mpc => "cueing.mpc_keeps",
+                    };
+                    ui.label(RichText::new(t.tr(note)).small());
                 });
             edit_error(ui, ed.doc, t, &[Group::Cueing]);
         });
     open
 }
 
-/// What the plots draw, per sample: time, the vehicle's and the platform's specific force,
-/// the tilt.
+/// The words naming `algorithm`.
+fn algorithm_words(algorithm: CueingAlgorithm) -> &'static str {
+    match algorithm {
+        CueingAlgorithm::Washout => "cueing.washout",
+        CueingAlgorithm::Mpc => "cueing.mpc",
+    }
+}
+
+/// The washout's own settings (its filters and limiter), by their names in `[cueing]`.
+const WASHOUT_ONLY: [&str; 9] = [
+    "translation_hp_wn",
+    "translation_hp_zeta",
+    "translation_hp_wb",
+    "tilt_lp_wn",
+    "tilt_lp_zeta",
+    "rotation_hp_wn",
+    "rotation_hp_zeta",
+    "workspace_limiter",
+    "limiter_recovery_s",
+];
+
+/// Whether the slider of setting `key` is shown for `algorithm` (the other's own are not).
+fn shown_for(key: &str, algorithm: CueingAlgorithm) -> bool {
+    let name = key.split_once('.').map_or(key, |(_, name)| name);
+    match algorithm {
+        CueingAlgorithm::Washout => !name.starts_with("mpc_"),
+        CueingAlgorithm::Mpc => !WASHOUT_ONLY.contains(&name),
+    }
+}
+
+/// One line on how an algorithm did on the recording.
+fn measures(ui: &mut egui::Ui, m: &CueMeasures, t: Lang) {
+    ui.label(
+        RichText::new(t.fmt(
+            "cueing.measures",
+            &[
+                ("algorithm", &t.tr(algorithm_words(m.algorithm))),
+                ("rmse", &format!("{:.3}", m.force_rmse_xy)),
+                ("stroke", &format!("{:.0}", 100.0 * m.stroke_used)),
+                ("limiter", &format!("{:.2}", m.limiter_s)),
+            ],
+        ))
+        .small(),
+    );
+}
+
+/// What the plots draw, per sample: time, the wanted (or vehicle's) and the felt specific
+/// force, the other algorithm's felt force when compared, and the tilt at its own times.
 struct Channels {
     times: Vec<f64>,
     vehicle: Vec<[f64; 3]>,
     platform: Vec<[f64; 3]>,
+    other: Option<Vec<[f64; 3]>>,
+    tilt_times: Vec<f64>,
     tilt_deg: Vec<[f64; 2]>,
 }
 
 impl Channels {
-    /// A recording's, through the washout.
+    /// A recording's, through both algorithms: the scenario's solid, the other thin.
     fn of(v: &VehicleSource) -> Self {
+        let times: Vec<f64> = v.times().collect();
+        let [mine, other] = &v.compared;
         Self {
-            times: v.times().collect(),
-            vehicle: v.samples.iter().map(|s| s.1.accel).collect(),
-            platform: v.cued.cues.iter().map(|c| c.specific_force()).collect(),
+            times: times
+                .iter()
+                .skip(1)
+                .take(mine.felt.len())
+                .copied()
+                .collect(),
+            vehicle: mine.felt.iter().map(|f| f.1).collect(),
+            platform: mine.felt.iter().map(|f| f.0).collect(),
+            other: Some(other.felt.iter().map(|f| f.0).collect()),
+            tilt_times: times,
             tilt_deg: v
                 .cued
                 .cues
@@ -108,13 +197,14 @@ impl Channels {
 /// The specific-force plot (vehicle dashed, platform solid, x and y) and the tilt plot,
 /// with a marker at `now` when given.
 fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
-    let series = |value: &dyn Fn(usize) -> f64| -> PlotPoints<'static> {
-        c.times
+    let along = |times: &[f64], value: &dyn Fn(usize) -> f64| -> PlotPoints<'static> {
+        times
             .iter()
             .enumerate()
             .map(|(k, &time)| [time, value(k)])
             .collect()
     };
+    let series = |value: &dyn Fn(usize) -> f64| along(&c.times, value);
     let ink = ui.visuals().text_color();
     let marker = |plot: &mut egui_plot::PlotUi| {
         if let Some(now) = now {
@@ -139,6 +229,14 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
                         .color(colour)
                         .width(2.0),
                 );
+                if let Some(other) = &c.other {
+                    let words = ["cueing.other_x", "cueing.other_y"][axis];
+                    plot.line(
+                        Line::new(t.tr(words), series(&|k| other[k][axis]))
+                            .color(colour.gamma_multiply(0.6))
+                            .width(1.0),
+                    );
+                }
             }
             marker(plot);
         });
@@ -148,23 +246,36 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
         dashed,
         width: if dashed { 1.5 } else { 2.0 },
     };
-    side_plot::legend(
-        ui,
-        &[
-            entry(0, "cueing.vehicle_x", true),
-            entry(0, "cueing.platform_x", false),
-            entry(1, "cueing.vehicle_y", true),
-            entry(1, "cueing.platform_y", false),
-        ],
-    );
-    ui.label(RichText::new(t.tr("cueing.dashed_solid")).small());
+    let mut entries = vec![
+        entry(0, "cueing.vehicle_x", true),
+        entry(0, "cueing.platform_x", false),
+        entry(1, "cueing.vehicle_y", true),
+        entry(1, "cueing.platform_y", false),
+    ];
+    if c.other.is_some() {
+        for (axis, words) in [(0, "cueing.other_x"), (1, "cueing.other_y")] {
+            entries.push(side_plot::Entry {
+                colour: leg_colour(axis).gamma_multiply(0.6),
+                words: t.tr(words),
+                dashed: false,
+                width: 1.0,
+            });
+        }
+    }
+    side_plot::legend(ui, &entries);
+    let note = if c.other.is_some() {
+        "cueing.compared"
+    } else {
+        "cueing.dashed_solid"
+    };
+    ui.label(RichText::new(t.tr(note)).small());
     side_plot::plot("cueing tilt", PLOT_HEIGHT)
         .y_axis_label(t.tr("cueing.tilt_axis"))
         .x_axis_label(t.tr("plot.time"))
         .show(ui, |plot| {
             for (axis, words) in [(0, "cueing.tilt_roll"), (1, "cueing.tilt_pitch")] {
                 plot.line(
-                    Line::new(t.tr(words), series(&|k| c.tilt_deg[k][axis]))
+                    Line::new(t.tr(words), along(&c.tilt_times, &|k| c.tilt_deg[k][axis]))
                         .color(leg_colour(axis + 2))
                         .width(2.0),
                 );

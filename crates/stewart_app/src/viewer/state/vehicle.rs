@@ -4,7 +4,9 @@
 
 use std::sync::Arc;
 
+use stewart_kinematics::analysis::cueing::compare::{CueMeasures, FeltSample, felt, measure};
 use stewart_kinematics::analysis::cueing::{CuedRecording, VehicleMotion, cue_recording};
+use stewart_kinematics::model::cueing_settings::{CueingAlgorithm, CueingSettings};
 use stewart_kinematics::{Scenario, model::trajectory::Motion};
 
 use crate::viewer::error::ViewerError;
@@ -20,6 +22,32 @@ pub(crate) struct VehicleSource {
     pub(crate) motion: Motion,
     /// The poses, limiter scales and cues per sample.
     pub(crate) cued: CuedRecording,
+    /// Both algorithms side by side, the scenario's first: what each makes felt at
+    /// every inner sample, and its measures.
+    pub(crate) compared: [Compared; 2],
+}
+
+/// One algorithm's cue of the recording, as the Cueing panel compares them.
+#[derive(Clone, Debug)]
+pub(crate) struct Compared {
+    /// Felt and wanted force and rates at samples `1..n−1`.
+    pub(crate) felt: Vec<FeltSample>,
+    /// Its measures (errors, stroke used, limiter time).
+    pub(crate) measures: CueMeasures,
+}
+
+impl Compared {
+    fn of(
+        scenario: &Scenario,
+        settings: &CueingSettings,
+        samples: &[(f64, VehicleMotion)],
+        cued: &CuedRecording,
+    ) -> Self {
+        Self {
+            felt: felt(&scenario.geometry, settings, samples, &cued.poses),
+            measures: measure(&scenario.geometry, settings, samples, cued),
+        }
+    }
 }
 
 impl VehicleSource {
@@ -38,11 +66,26 @@ impl VehicleSource {
         .map_err(|e| ViewerError::from(e).in_file(name))?;
         let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
         let motion = cued.to_motion(&times, name)?;
+        // The other algorithm on the same recording, for the comparison.
+        let other = CueingSettings {
+            algorithm: match scenario.cueing.algorithm {
+                CueingAlgorithm::Washout => CueingAlgorithm::Mpc,
+                CueingAlgorithm::Mpc => CueingAlgorithm::Washout,
+            },
+            ..scenario.cueing.clone()
+        };
+        let other_cued = cue_recording(&scenario.geometry, &scenario.limits, &other, &samples)
+            .map_err(|e| ViewerError::from(e).in_file(name))?;
+        let compared = [
+            Compared::of(scenario, &scenario.cueing, &samples, &cued),
+            Compared::of(scenario, &other, &samples, &other_cued),
+        ];
         Ok(Self {
             name: name.to_owned(),
             samples,
             motion,
             cued,
+            compared,
         })
     }
 

@@ -129,7 +129,7 @@ fn the_cueing_plots_read_with_a_legend_below_and_the_wheel_over_them_scrolls_the
     super::look(&mut h, "cueing-scrolled.png");
     // Which line is which, said below the data.
     assert!(
-        h.query_by_label_contains("Dashed: the vehicle; solid:")
+        h.query_by_label_contains("Dashed: the vehicle's specific force")
             .is_some()
     );
     let legend = h.get_by_label("vehicle x").rect();
@@ -167,4 +167,78 @@ fn wheel(
         h.step();
     }
     h.run();
+}
+
+#[test]
+fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_the_washout() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.path().join("braking.csv");
+    let (text, samples) = braking();
+    std::fs::write(&path, text).unwrap_or_else(|e| panic!("{e}"));
+    let mut h = super::tall_harness("seed", 2600.0);
+    drop_file(&mut h, &path);
+    h.get_by_label("Motion cueing").click();
+    h.run();
+    // The panel's settings, opened (the last "Settings" header: the panel's own).
+    let headers: Vec<_> = h.query_all_by_label("Settings").collect();
+    assert!(!headers.is_empty());
+    headers[headers.len() - 1].click();
+    h.run();
+    // The washout's filters are offered, the planner's weights are not.
+    assert!(
+        h.query_all_by_label_contains("translation high-pass ω")
+            .next()
+            .is_some()
+    );
+    assert!(
+        h.query_all_by_label_contains("MPC force weight")
+            .next()
+            .is_none()
+    );
+    h.get_by_label("Model-predictive (MPC)").click();
+    h.run();
+    let s = h.state().scenario().clone();
+    assert_eq!(
+        s.cueing.algorithm,
+        stewart_kinematics::model::cueing_settings::CueingAlgorithm::Mpc
+    );
+    // The recording is cued again by the planner, as `stewart cue` would.
+    let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
+    let planned = cue_recording(&s.geometry, &s.limits, &s.cueing, &samples)
+        .and_then(|c| Ok(c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}"))))
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.motion.trajectory, planned.trajectory);
+    // Its weights are offered now, the washout's filters not.
+    assert!(
+        h.query_all_by_label_contains("MPC force weight")
+            .next()
+            .is_some()
+    );
+    assert!(
+        h.query_all_by_label_contains("translation high-pass ω")
+            .next()
+            .is_none()
+    );
+    // Both algorithms measured on the recording, the planner first.
+    let v = h
+        .state()
+        .doc
+        .cued_vehicle()
+        .unwrap_or_else(|| panic!("a recording"));
+    let [mpc, washout] = &v.compared;
+    assert!(mpc.measures.force_rmse_xy < washout.measures.force_rmse_xy);
+    for words in [
+        "Model-predictive (MPC): felt-force error in surge and sway",
+        "Classical washout: felt-force error in surge and sway",
+    ] {
+        assert!(h.query_by_label_contains(words).is_some(), "{words}");
+    }
+    super::look(&mut h, "cueing-mpc.png");
+    // One edit: undone, the washout again.
+    h.state_mut().undo_edit();
+    h.run();
+    assert_eq!(
+        h.state().scenario().cueing.algorithm,
+        stewart_kinematics::model::cueing_settings::CueingAlgorithm::Washout
+    );
 }
