@@ -205,7 +205,7 @@ fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_th
     // The recording is cued again by the planner, as `stewart cue` would.
     let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
     let planned = cue_recording(&s.geometry, &s.limits, &s.cueing, &samples)
-        .and_then(|c| Ok(c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}"))))
+        .map(|c| c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}")))
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.motion.trajectory, planned.trajectory);
     // Its weights are offered now, the washout's filters not.
