@@ -36,6 +36,13 @@ pub struct Platform {
     scenario: Scenario,
 }
 
+impl Platform {
+    /// The scenario behind it.
+    pub(crate) fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+}
+
 /// A pose as a row `[x, y, z, roll, pitch, yaw]` (metres, degrees), its angles in the
 /// forward solver's canonical range (as `stewart fk` writes them).
 fn row_of(s: &ForwardSolution) -> [f64; 6] {
@@ -78,7 +85,8 @@ impl Platform {
 
     /// Change one setting by its key, as `stewart settings` lists them and `--set` takes
     /// them: a number (`p.set("geometry.base_radius", 1.2)`), `None` to switch an optional
-    /// one off, `True`/`False` for switches, or words for `link.*` keys. A refused value
+    /// one off, `True`/`False` for switches, or words for `link.*` keys and
+    /// `cueing.algorithm` (`"washout"`, `"mpc"`). A refused value
     /// leaves the platform unchanged.
     fn set(&mut self, py: Python<'_>, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let text = if value.is_none() {
@@ -95,7 +103,8 @@ impl Platform {
     }
 
     /// The value of a setting: a number (`None` when it is off or does not apply), or for
-    /// `link.*` keys, which `set` takes as words, their word (a number where it is one).
+    /// `link.*` keys, which `set` takes as words, their word (a number where it is one);
+    /// `cueing.algorithm` gives `"washout"` or `"mpc"`.
     fn get<'py>(&self, py: Python<'py>, key: &str) -> PyResult<Bound<'py, PyAny>> {
         if key.trim().starts_with("link.") {
             let entries = self.scenario.link.entries();
@@ -116,6 +125,10 @@ impl Platform {
                 ("false", _) => false.into_pyobject(py)?.to_owned().into_any(),
                 (_, Err(_)) => word.into_pyobject(py)?.into_any(),
             });
+        }
+        if key.trim() == "cueing.algorithm" {
+            let word = self.scenario.cueing.algorithm.word();
+            return Ok(word.into_pyobject(py)?.into_any());
         }
         let setting = settings::find(key).map_err(|e| scenario_error(py, e))?;
         Ok(setting.get(&self.scenario).into_pyobject(py)?.into_any())

@@ -388,3 +388,35 @@ def test_settings_change_while_a_batch_runs_and_link_keys_read_back():
     assert p.get("link.reversed.2") is False
     with pytest.raises(stewart.ScenarioError, match="unknown setting `link.nope`"):
         p.get("link.nope")
+
+
+def test_cueing_gives_the_clis_poses_and_comparison_for_either_algorithm():
+    recording = ROOT / "examples" / "cueing" / "braking-step.csv"
+    vehicle = np.loadtxt(recording, delimiter=",", skiprows=1)
+    for algorithm in ("washout", "mpc"):
+        p = stewart.Platform.preset("paired")
+        p.set("cueing.algorithm", algorithm)
+        assert p.get("cueing.algorithm") == algorithm
+        poses = stewart.cue(p, vehicle)
+        expected = columns(
+            cli("cue", "--preset", "paired", "--input", str(recording), "--set", f"cueing.algorithm={algorithm}"),
+            ["x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"],
+        )
+        # The CLI writes the shortest text that reads back to the same float.
+        assert np.array_equal(poses, expected)
+    compared = stewart.cue_compare(stewart.Platform.preset("paired"), vehicle)
+    cli_json = json.loads(cli("cue", "--preset", "paired", "--input", str(recording), "--compare", "--format", "json"))
+    for algorithm in ("washout", "mpc"):
+        assert compared[algorithm] == cli_json[algorithm]
+    assert compared["mpc"]["force_rmse_xy_m_s2"] < 0.7 * compared["washout"]["force_rmse_xy_m_s2"]
+    # Bad input: one clear error naming the row.
+    backwards = vehicle.copy()
+    backwards[5, 0] = 0.0
+    with pytest.raises(ValueError, match="vehicle, row 5"):
+        stewart.cue(p, backwards)
+    bad = vehicle.copy()
+    bad[7, 2] = np.nan
+    with pytest.raises(ValueError, match="vehicle, row 7 .*column ay"):
+        stewart.cue(p, bad)
+    with pytest.raises(ValueError, match="must be `washout` or `mpc`"):
+        p.set("cueing.algorithm", "fuzzy")

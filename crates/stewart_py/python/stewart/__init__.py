@@ -17,11 +17,13 @@ from ._errors import (
     StewartError,
     UnreachableError,
 )
-from ._stewart import Platform, calibrate, presets
+from ._stewart import Platform, calibrate, cue, cue_compare, presets
 
 __all__ = [
     "Platform",
     "calibrate",
+    "cue",
+    "cue_compare",
     "presets",
     "StewartError",
     "ScenarioError",

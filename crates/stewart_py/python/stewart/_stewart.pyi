@@ -75,5 +75,14 @@ def calibrate(
     """Joints and actuator offsets from `(n, 12)` measurements (pose, then the six values
     commanded); returns the calibrated platform and a report."""
 
+def cue(platform: Platform, vehicle: ArrayLike) -> Array:
+    """Platform poses `(n, 6)` from vehicle motion `(n, 7)`: t, ax, ay, az (m/s²), wx, wy,
+    wz (°/s), by the platform's `[cueing]` table (washout or model-predictive), as
+    `stewart cue` writes them."""
+
+def cue_compare(platform: Platform, vehicle: ArrayLike) -> Dict[str, Any]:
+    """Both cueing algorithms on `vehicle` and their measures: `{"washout": {...},
+    "mpc": {...}}`, as `stewart cue --compare --format json`."""
+
 def presets() -> List[str]:
     """The names of the shipped presets."""
