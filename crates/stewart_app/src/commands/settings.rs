@@ -133,6 +133,13 @@ pub(crate) fn reference(scenario: &Scenario) -> String {
     }
     let _ = write!(
         out,
+        "\n## `[cueing] algorithm`: how vehicle motion is cued\n\n\
+         A word, `--set cueing.algorithm=WORD`: `washout` (the classical filters) or `mpc` \
+         (model-predictive cueing); the default is `{}`.\n",
+        scenario.cueing.algorithm.word()
+    );
+    let _ = write!(
+        out,
         "\n## `[appearance]`: CAD parts\n\n\
          A mesh file (STL, OBJ, glTF, GLB; relative to the scenario file) per part, \
          `--set appearance.PART.KEY=VALUE` with PART one of `base`, `platform`, `cylinder`, \
@@ -226,6 +233,11 @@ pub(crate) fn table(scenario: &Scenario) -> String {
         "\nThe link to hardware ([link]; words or numbers, --set link.KEY=VALUE, K = channel 1..6):"
     );
     aligned(&mut out, &scenario.link.entries());
+    let _ = writeln!(
+        out,
+        "\nThe cueing algorithm (--set cueing.algorithm=washout or mpc): {}",
+        scenario.cueing.algorithm.word()
+    );
     let _ = writeln!(
         out,
         "\nCAD parts ([appearance]; --set appearance.PART.KEY=VALUE, PART = base, platform, cylinder, rod, horn):"
