@@ -41,6 +41,7 @@
 //! mpc_input_weight = 0.001    # per (m/s²)² and (rad/s²)² of acceleration
 //! mpc_margin = 0.02           # share of the stroke (range) kept clear of each end
 //! mpc_preview = true          # a recording: plan with the motion ahead in it
+//! vestibular = false          # track what the otoliths and canals sense
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -160,6 +161,9 @@ pub struct CueingSettings {
     /// vehicle's motion ahead in it rather than the last sample held (a live input never
     /// knows what comes).
     pub mpc_preview: bool,
+    /// MPC: track what the vestibular organs sense (otoliths and semicircular canals)
+    /// rather than the specific force and rates themselves.
+    pub vestibular: bool,
 }
 
 impl Default for CueingSettings {
@@ -200,6 +204,7 @@ impl Default for CueingSettings {
             mpc_input_weight: 0.001,
             mpc_margin: 0.02,
             mpc_preview: true,
+            vestibular: false,
         }
     }
 }

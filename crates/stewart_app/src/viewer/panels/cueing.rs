@@ -136,7 +136,7 @@ const WASHOUT_ONLY: [&str; 9] = [
 fn shown_for(key: &str, algorithm: CueingAlgorithm) -> bool {
     let name = key.split_once('.').map_or(key, |(_, name)| name);
     match algorithm {
-        CueingAlgorithm::Washout => !name.starts_with("mpc_"),
+        CueingAlgorithm::Washout => !name.starts_with("mpc_") && name != "vestibular",
         CueingAlgorithm::Mpc => !WASHOUT_ONLY.contains(&name),
     }
 }

@@ -579,7 +579,7 @@ fn checks(d: &mut Declare) {
 type Row<K> = (&'static str, &'static str, Unit, (f64, f64), K);
 
 /// The `[cueing]` table's settings; each default is the table's own.
-const CUEING: [Row<CueingKey>; 27] = {
+const CUEING: [Row<CueingKey>; 28] = {
     use CueingKey::*;
     let (scale, omega, zeta) = ((0.0, 2.0), (0.05, 20.0), (0.1, 2.0));
     let switch = (0.0, 1.0);
@@ -731,6 +731,13 @@ const CUEING: [Row<CueingKey>; 27] = {
         ),
         ("mpc_margin", "MPC margin", Ratio, (0.0, 0.1), Margin),
         ("mpc_preview", "MPC look-ahead", Switch, switch, Preview),
+        (
+            "vestibular",
+            "MPC vestibular model",
+            Switch,
+            switch,
+            Vestibular,
+        ),
     ]
 };
 

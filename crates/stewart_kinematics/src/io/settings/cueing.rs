@@ -64,6 +64,8 @@ pub enum CueingKey {
     Margin,
     /// `mpc_preview` (a switch).
     Preview,
+    /// `vestibular` (a switch).
+    Vestibular,
 }
 
 /// The axes' keys in the file, x to yaw.
@@ -117,6 +119,7 @@ fn field(c: &mut CueingSettings, key: CueingKey) -> Option<Field<'_>> {
         InputWeight => Number(&mut c.mpc_input_weight),
         Margin => Number(&mut c.mpc_margin),
         Preview => Switch(&mut c.mpc_preview),
+        Vestibular => Switch(&mut c.vestibular),
     })
 }
 

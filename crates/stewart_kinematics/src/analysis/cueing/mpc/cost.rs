@@ -22,7 +22,11 @@
 //! error is of the order of the change over the horizon times the tilt.
 
 use super::horizon::{Layout, Quantity};
-use crate::model::cueing_settings::{CueingSettings, GRAVITY};
+use super::vestibular::Organ;
+use crate::model::cueing_settings::{CueingSettings, GRAVITY, MAX_HORIZON_STEPS};
+
+/// The most steps of a horizon.
+const STEPS: usize = MAX_HORIZON_STEPS as usize;
 
 /// One residual: what it measures, in which step, on which axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,7 +49,14 @@ struct Residual {
     step: usize,
     axis: usize,
     weight: f64,
+    /// A force or rate error as the vestibular organs sense it (else as it is).
+    sensed: bool,
 }
+
+/// With the vestibular model, the share of the force and rate errors' weights kept on the
+/// errors as they are: what the organs hardly sense within a step (a jolt of a few
+/// milliseconds) must still cost, or the plan would be free to make it.
+pub const RAW_SHARE: f64 = 0.1;
 
 /// The slope of felt force `i` in the angle of axis `3 + j` (gravity along the tilt).
 fn gravity_slope(i: usize, j: usize) -> f64 {
@@ -75,6 +86,9 @@ pub struct Now<'a> {
     pub wanted_end: &'a [[f64; 6]],
     /// The share of `wanted` asked for (a stalled live input fades it).
     pub fade: f64,
+    /// The vestibular filters' states now (otoliths x, y, z, canals roll, pitch, yaw),
+    /// driven by the error felt so far (zeros without the vestibular model).
+    pub sensed: [[f64; 3]; 6],
 }
 
 impl Now<'_> {
@@ -96,7 +110,18 @@ pub struct Cost {
     /// One row per residual, `n` wide, row-major.
     rows: Vec<f64>,
     n: usize,
+    /// With the vestibular model: the otoliths' and the canals' responses over the
+    /// horizon's steps (`h[k][j]`, `free[k]`), which the force and rate errors go through.
+    sensing: Option<[Responses; 2]>,
 }
+
+/// An organ's responses over the horizon: `h[k][j]` and `free[k]`
+/// ([`Organ::responses`]).
+type Responses = (Vec<Vec<f64>>, Vec<Vec<f64>>);
+
+/// The raw force (`0..3`) and rate (`3..6`) errors of each step for the plan of no
+/// acceleration.
+type Raw = [[f64; 6]; STEPS];
 
 impl Cost {
     /// The residuals of `settings` for `layout`.
@@ -106,52 +131,81 @@ impl Cost {
         for step in 0..layout.steps {
             // Each step counts for its length: the sums stand for integrals over time.
             let share = layout.length(step) / layout.step;
-            let mut add = |term, axis, weight: f64| {
+            let mut add = |term, axis, weight: f64, sensed| {
                 if weight > 0.0 {
                     residuals.push(Residual {
                         term,
                         step,
                         axis,
                         weight: weight * share,
+                        sensed,
                     });
                 }
             };
             for axis in 0..3 {
-                add(Term::Force, axis, s.mpc_force_weight);
-                add(Term::Rate, axis, s.mpc_rate_weight);
+                for (term, weight) in [
+                    (Term::Force, s.mpc_force_weight),
+                    (Term::Rate, s.mpc_rate_weight),
+                ] {
+                    if s.vestibular {
+                        add(term, axis, weight, true);
+                        add(term, axis, weight * RAW_SHARE, false);
+                    } else {
+                        add(term, axis, weight, false);
+                    }
+                }
             }
             for &axis in &layout.axes {
-                add(Term::Input, axis, s.mpc_input_weight);
+                add(Term::Input, axis, s.mpc_input_weight, false);
                 let displacement = if axis == 3 || axis == 4 {
                     s.mpc_tilt_weight
                 } else {
                     s.mpc_displacement_weight
                 };
-                add(Term::Displacement, axis, displacement);
-                add(Term::Velocity, axis, s.mpc_velocity_weight);
+                add(Term::Displacement, axis, displacement, false);
+                add(Term::Velocity, axis, s.mpc_velocity_weight, false);
             }
         }
         let n = layout.len();
         let mut rows = vec![0.0; residuals.len() * n];
         for (r, row) in residuals.iter().zip(rows.chunks_mut(n.max(1))) {
-            let (k, i) = (r.step, r.axis);
-            match r.term {
-                Term::Force => {
-                    layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0);
-                    for j in 0..3 {
-                        let g = gravity_slope(i, j);
-                        if g != 0.0 {
-                            layout.add_quantity(row, Quantity::MidPosition, k, 3 + j, g);
-                        }
+            raw_row(layout, r.term, r.step, r.axis, row);
+        }
+        let sensing = settings.vestibular.then(|| {
+            let lengths: Vec<f64> = (0..layout.steps).map(|k| layout.length(k)).collect();
+            [
+                Organ::otolith().responses(&lengths),
+                Organ::canal().responses(&lengths),
+            ]
+        });
+        if let Some(organs) = &sensing {
+            // What is sensed at the end of step k: the errors of steps j ≤ k through the
+            // organ, h[k][j].
+            let mut raw = vec![0.0; n];
+            for (r, row) in residuals.iter().zip(rows.chunks_mut(n.max(1))) {
+                let organ = match r.term {
+                    _ if !r.sensed => continue,
+                    Term::Force => &organs[0],
+                    Term::Rate => &organs[1],
+                    _ => continue,
+                };
+                row.iter_mut().for_each(|v| *v = 0.0);
+                for j in 0..=r.step {
+                    raw.iter_mut().for_each(|v| *v = 0.0);
+                    raw_row(layout, r.term, j, r.axis, &mut raw);
+                    let h = organ.0[r.step][j];
+                    for (v, w) in row.iter_mut().zip(&raw) {
+                        *v += h * w;
                     }
                 }
-                Term::Rate => layout.add_quantity(row, Quantity::MidVelocity, k, 3 + i, 1.0),
-                Term::Input => layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0),
-                Term::Displacement => layout.add_quantity(row, Quantity::EndPosition, k, i, 1.0),
-                Term::Velocity => layout.add_quantity(row, Quantity::EndVelocity, k, i, 1.0),
             }
         }
-        Self { residuals, rows, n }
+        Self {
+            residuals,
+            rows,
+            n,
+            sensing,
+        }
     }
 
     /// `G = 2 Σ w φ φᵀ`, column-major (`n × n`).
@@ -171,9 +225,24 @@ impl Cost {
         g
     }
 
-    /// The offset of residual `r` (its value for the plan of no acceleration).
-    fn offset(r: &Residual, layout: &Layout, now: &Now) -> f64 {
-        let (k, i) = (r.step, r.axis);
+    /// The raw force and rate errors of every step for the plan of no acceleration.
+    fn raw(layout: &Layout, now: &Now) -> Raw {
+        let mut raw = [[0.0; 6]; STEPS];
+        for (k, errors) in raw.iter_mut().enumerate().take(layout.steps) {
+            for (i, e) in errors.iter_mut().enumerate() {
+                let (term, axis) = if i < 3 {
+                    (Term::Force, i)
+                } else {
+                    (Term::Rate, i - 3)
+                };
+                *e = Self::raw_offset(term, k, axis, layout, now);
+            }
+        }
+        raw
+    }
+
+    /// The offset of a residual without the vestibular model.
+    fn raw_offset(term: Term, k: usize, i: usize, layout: &Layout, now: &Now) -> f64 {
         let free = |q: Quantity, axis: usize| {
             if layout.axes.contains(&axis) {
                 layout.free(q, k, now.s[axis], now.v[axis])
@@ -181,7 +250,7 @@ impl Cost {
                 0.0
             }
         };
-        match r.term {
+        match term {
             Term::Force => {
                 let mut o = now.force[i] - now.a[i] - now.wanted(k, i);
                 for j in 0..3 {
@@ -202,11 +271,33 @@ impl Cost {
         }
     }
 
+    /// The offset of residual `r` (its value for the plan of no acceleration), the raw
+    /// errors `raw` at hand.
+    fn offset(&self, r: &Residual, layout: &Layout, now: &Now, raw: &Raw) -> f64 {
+        let (organ, channel) = match (r.term, &self.sensing) {
+            (Term::Force, Some(o)) if r.sensed => (&o[0], r.axis),
+            (Term::Rate, Some(o)) if r.sensed => (&o[1], 3 + r.axis),
+            (Term::Force, _) => return raw[r.step][r.axis],
+            (Term::Rate, _) => return raw[r.step][3 + r.axis],
+            _ => return Self::raw_offset(r.term, r.step, r.axis, layout, now),
+        };
+        let (h, free) = organ;
+        let k = r.step;
+        let driven: f64 = (0..=k).map(|j| h[k][j] * raw[j][channel]).sum();
+        let held: f64 = free[k]
+            .iter()
+            .zip(&now.sensed[channel])
+            .map(|(f, x)| f * x)
+            .sum();
+        driven + held
+    }
+
     /// The linear term `a = 2 Σ w o φ` for the state and wishes `now` (into `out`).
     pub fn gradient(&self, layout: &Layout, now: &Now, out: &mut [f64]) {
         out.iter_mut().for_each(|v| *v = 0.0);
+        let raw = Self::raw(layout, now);
         for (r, row) in self.residuals.iter().zip(self.rows.chunks(self.n.max(1))) {
-            let o = Self::offset(r, layout, now);
+            let o = self.offset(r, layout, now, &raw);
             if o == 0.0 {
                 continue;
             }
@@ -220,14 +311,34 @@ impl Cost {
     /// The cost `J(U)` of a plan (for the tests: the programme's objective plus its
     /// constant).
     pub fn value(&self, layout: &Layout, now: &Now, plan: &[f64]) -> f64 {
+        let raw = Self::raw(layout, now);
         self.residuals
             .iter()
             .zip(self.rows.chunks(self.n.max(1)))
             .map(|(r, row)| {
-                let e: f64 = Self::offset(r, layout, now)
+                let e: f64 = self.offset(r, layout, now, &raw)
                     + row.iter().zip(plan).map(|(p, u)| p * u).sum::<f64>();
                 r.weight * e * e
             })
             .sum()
+    }
+}
+
+/// The row of a residual without the vestibular model, added into `row`.
+fn raw_row(layout: &Layout, term: Term, k: usize, i: usize, row: &mut [f64]) {
+    match term {
+        Term::Force => {
+            layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0);
+            for j in 0..3 {
+                let g = gravity_slope(i, j);
+                if g != 0.0 {
+                    layout.add_quantity(row, Quantity::MidPosition, k, 3 + j, g);
+                }
+            }
+        }
+        Term::Rate => layout.add_quantity(row, Quantity::MidVelocity, k, 3 + i, 1.0),
+        Term::Input => layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0),
+        Term::Displacement => layout.add_quantity(row, Quantity::EndPosition, k, i, 1.0),
+        Term::Velocity => layout.add_quantity(row, Quantity::EndVelocity, k, i, 1.0),
     }
 }

@@ -26,6 +26,7 @@ pub mod horizon;
 pub mod qp;
 pub mod remote;
 pub mod rig;
+pub mod vestibular;
 
 use nalgebra::Vector3;
 
@@ -96,6 +97,8 @@ pub struct Mpc {
     instant: u64,
     request: Option<remote::PlanRequest>,
     reply: Option<remote::PlanReply>,
+    /// With the vestibular model: the organs' states.
+    sensed: Option<vestibular::Sensed>,
 }
 
 /// Why a planner cannot be made.
@@ -154,6 +157,9 @@ impl Mpc {
             instant: 0,
             request: None,
             reply: None,
+            sensed: settings
+                .vestibular
+                .then(|| vestibular::Sensed::new(settings.mpc_solve_interval_s)),
         })
     }
 
@@ -319,14 +325,40 @@ impl Mpc {
         self.wanted_end.iter_mut().for_each(|v| *v = [0.0; 6]);
         self.request = None;
         self.reply = None;
+        if let Some(s) = &mut self.sensed {
+            s.reset();
+        }
     }
 
     /// Plan again from the state now; on failure keep the last plan.
     fn solve(&mut self) {
         let a0 = self.input_at(self.plan_age);
+        self.sense(a0);
         if self.plan_from(a0) {
             self.plan_age = 0.0;
         }
+    }
+
+    /// At a solve instant, with the vestibular model: the organs stepped over the last
+    /// interval, and the error felt now (with `a0` held) held over the next.
+    fn sense(&mut self, a0: [f64; 6]) {
+        let Some(sensed) = &self.sensed else {
+            return;
+        };
+        let held = Cue {
+            acceleration: [a0[0], a0[1], a0[2]],
+            angles: [self.s[3], self.s[4], self.s[5]],
+            ..Cue::default()
+        };
+        let force = held.specific_force();
+        let rates = body_rates(&self.s, &self.v);
+        let error: [f64; 6] = std::array::from_fn(|i| {
+            let felt = if i < 3 { force[i] } else { rates[i - 3] };
+            felt - self.fade * self.wanted[0][i]
+        });
+        let mut sensed = sensed.clone();
+        sensed.step(error);
+        self.sensed = Some(sensed);
     }
 
     /// Plan from the state now, `a0` the accelerations held just before; on failure keep
@@ -351,6 +383,7 @@ impl Mpc {
             wanted: &self.wanted,
             wanted_end: &self.wanted_end,
             fade: self.fade,
+            sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.states),
         };
         self.cost.gradient(&self.layout, &now, &mut self.gradient);
         let plan_len = self.layout.plan_len();

@@ -27,6 +27,8 @@ pub struct PlanRequest {
     wanted: [[f64; 6]; STEPS],
     wanted_end: [[f64; 6]; STEPS],
     fade: f64,
+    /// The vestibular organs' states then.
+    sensed: [[f64; 3]; 6],
 }
 
 /// A plan made for a request.
@@ -67,6 +69,9 @@ impl Mpc {
         self.wanted_end
             .copy_from_slice(&request.wanted_end[..steps]);
         self.fade = request.fade;
+        if let Some(s) = &mut self.sensed {
+            s.states = request.sensed;
+        }
         let found = self.plan_from(request.a);
         let mut plan = [0.0; 6 * STEPS];
         plan[..self.plan.len()].copy_from_slice(&self.plan);
@@ -96,6 +101,7 @@ impl Mpc {
             }
             _ => self.counts.late += 1,
         }
+        self.sense(self.input_at(self.plan_age));
         let every = self.settings.mpc_solve_interval_s;
         let (s, v, age) = self.integrate(self.s, self.v, self.plan_age, every);
         let mut request = PlanRequest {
@@ -106,6 +112,7 @@ impl Mpc {
             wanted: [[0.0; 6]; STEPS],
             wanted_end: [[0.0; 6]; STEPS],
             fade: self.fade,
+            sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.next()),
         };
         let steps = self.layout.steps;
         request.wanted[..steps].copy_from_slice(&self.wanted);

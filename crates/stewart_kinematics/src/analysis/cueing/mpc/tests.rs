@@ -76,6 +76,7 @@ fn without_limits_the_plan_is_the_cost_s_closed_form_minimiser() {
         wanted: &wanted,
         wanted_end: &wanted,
         fade: 1.0,
+        sensed: [[0.0; 3]; 6],
     };
     let mut a = vec![0.0; layout.len()];
     cost.gradient(&layout, &now, &mut a);
@@ -95,11 +96,20 @@ fn without_limits_the_plan_is_the_cost_s_closed_form_minimiser() {
 #[test]
 fn a_sustained_force_is_reproduced_by_tilt_at_steady_state() {
     // 1 m/s² forward, held: at rest, tilted nose up until gravity's share along the
-    // platform is the force: pitch = −asin(f/g), felt force exactly f, back at neutral.
+    // platform is the force: pitch = −asin(f/g), felt force exactly f, back at neutral —
+    // tracking the force itself or what the otoliths sense of it (their gain for a
+    // sustained force is 0.4: the error sensed is still least with none).
+    for vestibular in [false, true] {
+        sustained_force_by_tilt(vestibular);
+    }
+}
+
+fn sustained_force_by_tilt(vestibular: bool) {
     let s = preset("seed");
     let settings = CueingSettings {
         mpc_tilt_weight: 0.0,
         translation_scale: 1.0,
+        vestibular,
         ..mpc_settings(&s)
     };
     let mut mpc =
@@ -111,20 +121,23 @@ fn a_sustained_force_is_reproduced_by_tilt_at_steady_state() {
     for _ in 0..6000 {
         mpc.advance(0.01);
     }
+    // After 60 s: settled to rounding, or, sensing, within the otoliths' slow approach
+    // (their 5.3 s time constant and the canals' 80 s adaptation).
+    let tolerance = if vestibular { 2e-3 } else { 1e-6 };
     let cue = mpc.cue();
     let f = cue.specific_force();
-    assert!((f[0] - 1.0).abs() < 1e-6 && f[1].abs() < 1e-9, "{f:?}");
+    assert!((f[0] - 1.0).abs() < tolerance && f[1].abs() < 1e-9, "{f:?}");
     assert!(
-        (cue.angles[1] + (1.0 / GRAVITY).asin()).abs() < 1e-6,
+        (cue.angles[1] + (1.0 / GRAVITY).asin()).abs() < tolerance,
         "{:?}",
         cue.angles
     );
     assert!(
-        cue.position.iter().all(|p| p.abs() < 1e-6),
+        cue.position.iter().all(|p| p.abs() < 20.0 * tolerance),
         "{:?}",
         cue.position
     );
-    assert!(mpc.v.iter().all(|v| v.abs() < 1e-6));
+    assert!(mpc.v.iter().all(|v| v.abs() < tolerance));
     assert_eq!(mpc.counts().failed, 0);
 }
 
