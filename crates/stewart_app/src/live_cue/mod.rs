@@ -420,6 +420,7 @@ impl LiveCue {
         }
         self.pose = self.advance(h);
         self.cueing.hold(&motion);
+        self.ask();
         let cue = self.cueing.cue();
         let mut trace = self
             .counts
@@ -458,7 +459,10 @@ impl LiveCue {
         let fade = self.cueing.fade() - dt / self.fade_s;
         self.cueing.set_fade(fade);
         self.pose = self.advance(dt);
-        if fade <= 0.0 {
+        self.ask();
+        // Faded out: at rest (the planner brings the platform home first; its pose is not
+        // scaled by the fade, so it is reset only there, never with a jump).
+        if fade <= 0.0 && self.cueing.settled() {
             self.cueing.reset();
             self.cueing.set_fade(1.0);
             self.pose = self.advance(0.0);
@@ -466,19 +470,29 @@ impl LiveCue {
     }
 
     /// The cueing advanced `h` seconds; with the planner, the replies that came offered
-    /// before and the next request sent after.
+    /// first.
     fn advance(&mut self, h: f64) -> Pose {
-        let Some(planner) = &self.planner else {
-            return self.cueing.advance(h);
-        };
-        if let Some(follower) = self.cueing.mpc_mut() {
-            planner.exchange(follower);
+        if let (Some(planner), Some(follower)) = (&mut self.planner, self.cueing.mpc_mut()) {
+            planner.receive(follower);
         }
-        let pose = self.cueing.advance(h);
-        if let Some(follower) = self.cueing.mpc_mut() {
-            planner.exchange(follower);
+        self.cueing.advance(h)
+    }
+
+    /// With the planner, its request for the next solve instant sent (with the motion held
+    /// now).
+    fn ask(&mut self) {
+        if let (Some(planner), Some(follower)) = (&mut self.planner, self.cueing.mpc_mut()) {
+            planner.send(follower);
         }
-        pose
+    }
+
+    /// Wait for the planner's reply to the request it took, if any (tests: the thread's
+    /// answers in time, whatever its pace).
+    #[cfg(test)]
+    fn wait_for_plan(&mut self) {
+        if let (Some(planner), Some(follower)) = (&mut self.planner, self.cueing.mpc_mut()) {
+            planner.wait(follower);
+        }
     }
 }
 
@@ -532,20 +546,27 @@ mod tests {
                 "sample {k}"
             );
         }
+        // Silence: the cue fades, the planner (each of its replies waited for now) brings
+        // the platform home without a jump, and there it is reset.
         let home = scenario.geometry.home_pose();
-        let c = &scenario.cueing;
         let mut t = 2.0;
         let mut last = live.tick(t);
-        while t < 2.0 + c.stall_s + c.fade_s + 0.1 {
+        while last != home {
             t += 0.01;
-            last = live.tick(t);
+            live.wait_for_plan();
+            let pose = live.tick(t);
             assert!(stewart_kinematics::analysis::workspace::pose_within_limits(
                 &scenario.geometry,
                 &scenario.limits,
-                &last
+                &pose
             ));
+            assert!(
+                (pose.position - last.position).norm() < 0.01,
+                "a jump at {t}"
+            );
+            last = pose;
+            assert!(t < 60.0, "not home after {t} s: {last:?}");
         }
-        assert_eq!(last, home);
     }
 
     #[test]

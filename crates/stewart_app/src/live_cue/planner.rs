@@ -1,8 +1,8 @@
 //! The live cue's planner thread: with model-predictive cueing, the sender's tick follows
 //! the plan and never solves; each solve instant's request goes to this thread, which
 //! answers it within the solve interval (`Mpc`'s remote planning). A request that finds
-//! the thread busy is dropped and its instant goes on with the last plan; so no solve,
-//! however long, delays a tick.
+//! another still waiting is dropped, and an instant whose plan has not come goes on with
+//! the last plan; so no solve, however long, delays a tick.
 
 use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
 
@@ -13,12 +13,15 @@ use stewart_kinematics::analysis::cueing::mpc::remote::{PlanReply, PlanRequest};
 pub(crate) struct PlannerThread {
     requests: SyncSender<PlanRequest>,
     replies: Receiver<PlanReply>,
+    /// Requests taken by the thread whose replies have not been offered yet.
+    pending: usize,
 }
 
 impl PlannerThread {
     /// Answer requests with `planner` (a copy of the follower's, planning locally) on a
     /// thread of its own, until this is dropped.
     pub(crate) fn start(mut planner: Mpc) -> std::io::Result<Self> {
+        // Room for one: a request finding another still waiting is dropped.
         let (requests, asked) = sync_channel::<PlanRequest>(1);
         let (answered, replies) = sync_channel::<PlanReply>(2);
         std::thread::Builder::new()
@@ -32,25 +35,42 @@ impl PlannerThread {
                     }
                 }
             })?;
-        Ok(Self { requests, replies })
+        Ok(Self {
+            requests,
+            replies,
+            pending: 0,
+        })
     }
 
-    /// Offer `follower` the replies that have come, and send its request, if any.
-    pub(crate) fn exchange(&self, follower: &mut Mpc) {
+    /// Offer `follower` the replies that have come.
+    pub(crate) fn receive(&mut self, follower: &mut Mpc) {
         while let Ok(reply) = self.replies.try_recv() {
+            self.pending = self.pending.saturating_sub(1);
             follower.offer(&reply);
         }
+    }
+
+    /// Send `follower`'s request, if it has one.
+    pub(crate) fn send(&mut self, follower: &mut Mpc) {
         if let Some(request) = follower.take_request() {
-            // Busy: this instant will go on with the last plan.
-            let _ = self.requests.try_send(request);
+            // One still waiting: this one is dropped, its instant goes on with the last
+            // plan.
+            if self.requests.try_send(request).is_ok() {
+                self.pending += 1;
+            }
         }
     }
 
-    /// Wait for the next reply and offer it (tests: an answer without racing the thread).
+    /// Wait for the reply to the request the thread took, if any, and offer it (tests:
+    /// the thread's answers without racing it).
     #[cfg(test)]
-    pub(crate) fn wait(&self, follower: &mut Mpc) -> bool {
+    pub(crate) fn wait(&mut self, follower: &mut Mpc) -> bool {
+        if self.pending == 0 {
+            return false;
+        }
         match self.replies.recv() {
             Ok(reply) => {
+                self.pending -= 1;
                 follower.offer(&reply);
                 true
             }
@@ -71,7 +91,7 @@ mod tests {
         s.cueing.algorithm = stewart_kinematics::model::cueing_settings::CueingAlgorithm::Mpc;
         let planner = Mpc::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|_| panic!());
         let mut here = planner.clone();
-        let thread = PlannerThread::start(planner.clone()).unwrap_or_else(|e| panic!("{e}"));
+        let mut thread = PlannerThread::start(planner.clone()).unwrap_or_else(|e| panic!("{e}"));
         let mut follower = planner;
         follower.set_remote(true);
         follower.hold(&VehicleMotion {
@@ -86,8 +106,13 @@ mod tests {
                 .unwrap_or_else(|| panic!("a request"));
             let expected = here.answer(&request);
             follower.offer(&expected);
-            // The thread's answer to the same request, waited for.
-            let _ = thread.requests.try_send(request);
+            // The thread's answer to the same request, waited for (it is waiting for
+            // one: nothing else is asked of it).
+            thread
+                .requests
+                .send(request)
+                .unwrap_or_else(|e| panic!("{e}"));
+            thread.pending += 1;
             let mut other = follower.clone();
             assert!(thread.wait(&mut other));
             let (a, b) = (follower.clone().advance(0.01), other.advance(0.01));

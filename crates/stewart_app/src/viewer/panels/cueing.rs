@@ -172,7 +172,8 @@ impl Channels {
     /// A recording's, through both algorithms: the scenario's solid, the other thin.
     fn of(v: &VehicleSource) -> Self {
         let times: Vec<f64> = v.times().collect();
-        let [mine, other] = &v.compared;
+        let mine = &v.compared[0];
+        let other = v.compared.get(1);
         Self {
             times: times
                 .iter()
@@ -182,7 +183,7 @@ impl Channels {
                 .collect(),
             vehicle: mine.felt.iter().map(|f| f.1).collect(),
             platform: mine.felt.iter().map(|f| f.0).collect(),
-            other: Some(other.felt.iter().map(|f| f.0).collect()),
+            other: other.map(|o| o.felt.iter().map(|f| f.0).collect()),
             tilt_times: times,
             tilt_deg: v
                 .cued

@@ -23,8 +23,9 @@ pub(crate) struct VehicleSource {
     /// The poses, limiter scales and cues per sample.
     pub(crate) cued: CuedRecording,
     /// Both algorithms side by side, the scenario's first: what each makes felt at
-    /// every inner sample, and its measures.
-    pub(crate) compared: [Compared; 2],
+    /// every inner sample, and its measures (the other left out where it cannot cue
+    /// this scenario: its failure is not the edit's).
+    pub(crate) compared: Vec<Compared>,
 }
 
 /// One algorithm's cue of the recording, as the Cueing panel compares them.
@@ -74,12 +75,12 @@ impl VehicleSource {
             },
             ..scenario.cueing.clone()
         };
-        let other_cued = cue_recording(&scenario.geometry, &scenario.limits, &other, &samples)
-            .map_err(|e| ViewerError::from(e).in_file(name))?;
-        let compared = [
-            Compared::of(scenario, &scenario.cueing, &samples, &cued),
-            Compared::of(scenario, &other, &samples, &other_cued),
-        ];
+        let mut compared = vec![Compared::of(scenario, &scenario.cueing, &samples, &cued)];
+        if let Ok(other_cued) =
+            cue_recording(&scenario.geometry, &scenario.limits, &other, &samples)
+        {
+            compared.push(Compared::of(scenario, &other, &samples, &other_cued));
+        }
         Ok(Self {
             name: name.to_owned(),
             samples,

@@ -225,7 +225,9 @@ fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_th
         .doc
         .cued_vehicle()
         .unwrap_or_else(|| panic!("a recording"));
-    let [mpc, washout] = &v.compared;
+    let [mpc, washout] = &v.compared[..] else {
+        panic!("both algorithms compared")
+    };
     assert!(mpc.measures.force_rmse_xy < washout.measures.force_rmse_xy);
     for words in [
         "Model-predictive (MPC): felt-force error in surge and sway",

@@ -90,7 +90,10 @@ pub fn felt(
         let w = turn.scaled_axis() / (t2 - t0);
         let (f0, w0) = wanted(&samples[k - 1].1);
         let (f1, w1) = wanted(&samples[k].1);
-        let mean = |x: [f64; 3], y: [f64; 3]| std::array::from_fn(|i| 0.5 * (x[i] + y[i]));
+        // Each held sample counts for its interval, as in the second difference.
+        let share = (t1 - t0) / (t2 - t0);
+        let mean =
+            |x: [f64; 3], y: [f64; 3]| std::array::from_fn(|i| share * x[i] + (1.0 - share) * y[i]);
         out.push(([f.x, f.y, f.z], mean(f0, f1), [w.x, w.y, w.z], mean(w0, w1)));
     }
     out
@@ -191,6 +194,11 @@ pub fn compare(
     settings: &CueingSettings,
     samples: &[(f64, VehicleMotion)],
 ) -> Result<[(CueMeasures, CuedRecording); 2], CueError> {
+    if samples.len() < 3 {
+        return Err(CueError::TooShort {
+            samples: samples.len(),
+        });
+    }
     let run = |algorithm| -> Result<(CueMeasures, CuedRecording), CueError> {
         let s = CueingSettings {
             algorithm,

@@ -63,6 +63,12 @@ pub enum CueError {
         "the workspace limiter needs the home pose within the stroke and limits, and it is not"
     )]
     HomeOutside,
+    /// What a motion makes felt needs an acceleration: three samples at least.
+    #[error("comparing needs at least 3 samples (an acceleration), the input has {samples}")]
+    TooShort {
+        /// The samples the input has.
+        samples: usize,
+    },
 }
 
 /// What turns vehicle motion into the cue.
@@ -218,6 +224,15 @@ impl Cueing {
         }
     }
 
+    /// Whether a reset would not move the platform: always for the washout (its fade
+    /// scales the pose), for the planner once it is home and at rest (to 0.1 mm, 0.1 mm/s).
+    pub fn settled(&self) -> bool {
+        match &self.engine {
+            Engine::Washout(_) => true,
+            Engine::Mpc(m) => m.settled(),
+        }
+    }
+
     /// How far ahead the planner looks, seconds (0 for the washout).
     pub fn horizon_s(&self) -> f64 {
         match &self.engine {
@@ -343,7 +358,8 @@ pub fn cue_recording(
         cues.push(cueing.cue());
         if cueing.preview {
             ahead.clear();
-            let end = t + cueing.horizon_s();
+            // The horizon from every solve until the next sample (a second more than it).
+            let end = t + cueing.horizon_s() + 1.0;
             ahead.extend(
                 samples[index..]
                     .iter()

@@ -81,8 +81,9 @@ impl Layout {
         if age < self.first {
             return Some(0);
         }
-        let k = 1 + ((age - self.first) / self.step).floor() as usize;
-        (k < self.steps).then_some(k)
+        // In floats first: a plan long over may be any age.
+        let k = 1.0 + ((age - self.first) / self.step).floor();
+        (k < self.steps as f64).then_some(k as usize)
     }
 
     /// The moment (from the step's start) at which `quantity` of step `k` is taken.

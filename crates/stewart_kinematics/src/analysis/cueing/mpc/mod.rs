@@ -87,6 +87,10 @@ pub struct Mpc {
     wanted: Vec<[f64; 6]>,
     /// The same at each step's end.
     wanted_end: Vec<[f64; 6]>,
+    /// A recording's samples from the last one given on (times from it), and how long
+    /// ago it was given (empty: the motion is held).
+    ahead: Vec<(f64, VehicleMotion)>,
+    ahead_age: f64,
     fade: f64,
     /// The last state whose pose passed the exact check.
     last_good: [f64; 6],
@@ -95,6 +99,8 @@ pub struct Mpc {
     /// the next and the reply offered.
     remote: bool,
     instant: u64,
+    /// Bumped by a stop, a reset or a skipped gap: replies asked for before are dropped.
+    epoch: u64,
     request: Option<remote::PlanRequest>,
     reply: Option<remote::PlanReply>,
     /// With the vestibular model: the organs' states.
@@ -150,11 +156,14 @@ impl Mpc {
             since_solve: f64::INFINITY,
             wanted: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
             wanted_end: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
+            ahead: Vec::new(),
+            ahead_age: 0.0,
             fade: 1.0,
             last_good: [0.0; 6],
             counts: MpcCounts::default(),
             remote: false,
             instant: 0,
+            epoch: 0,
             request: None,
             reply: None,
             sensed: settings
@@ -175,6 +184,7 @@ impl Mpc {
     /// Hold `motion` as the vehicle's from now on, over the whole horizon (what a live
     /// input knows).
     pub fn hold(&mut self, motion: &VehicleMotion) {
+        self.ahead.clear();
         let w = Self::scaled(&self.settings, motion);
         self.wanted.iter_mut().for_each(|v| *v = w);
         self.wanted_end.iter_mut().for_each(|v| *v = w);
@@ -182,26 +192,74 @@ impl Mpc {
 
     /// The vehicle's motion from now on as `samples` (times from now, seconds, the first
     /// at 0, each held until the next): each step of the horizon asks for the sample held
-    /// at its middle, and at its end (a recording, known ahead).
+    /// at its middle, and at its end (a recording, known ahead). Kept until the next
+    /// sample, so that a solve between two samples looks from its own time.
     pub fn hold_ahead(&mut self, samples: &[(f64, VehicleMotion)]) {
-        let settings = &self.settings;
-        let held_at = |at: f64| {
-            // A sample due at `at` to rounding counts as come.
-            let i = samples.partition_point(|(t, _)| *t <= at + 1e-9).max(1) - 1;
+        self.ahead.clear();
+        self.ahead.extend_from_slice(samples);
+        self.ahead_age = 0.0;
+        self.look_ahead();
+    }
+
+    /// `wanted` from the samples ahead, as seen `ahead_age` after they were given: each
+    /// step asks for the vehicle's motion averaged over it (so that the plan slides
+    /// smoothly along the recording), and at its end for the sample held then.
+    fn look_ahead(&mut self) {
+        if self.ahead.is_empty() {
+            return;
+        }
+        let (settings, samples, age) = (&self.settings, &self.ahead, self.ahead_age);
+        // The sample held at `at` (one due at `at` to rounding counts as come).
+        let index = |at: f64| {
             samples
-                .get(i)
-                .map_or([0.0; 6], |(_, m)| Self::scaled(settings, m))
+                .partition_point(|(t, _)| *t <= age + at + 1e-9)
+                .max(1)
+                - 1
+        };
+        let scaled = |i: usize| Self::scaled(settings, &samples[i].1);
+        // The mean of the held samples over [a, b].
+        let mean = |a: f64, b: f64| {
+            let mut sum = [0.0; 6];
+            let mut i = index(a);
+            let mut from = a;
+            while from < b {
+                let until = samples
+                    .get(i + 1)
+                    .map_or(b, |(t, _)| (t - age).min(b))
+                    .max(from);
+                let w = scaled(i);
+                for (s, v) in sum.iter_mut().zip(w) {
+                    *s += v * (until - from);
+                }
+                from = until;
+                if i + 1 >= samples.len() {
+                    break;
+                }
+                i += 1;
+            }
+            if from < b {
+                let w = scaled(samples.len() - 1);
+                for (s, v) in sum.iter_mut().zip(w) {
+                    *s += v * (b - from);
+                }
+            }
+            sum.map(|s| s / (b - a))
         };
         for k in 0..self.layout.steps {
             let (start, length) = (self.layout.start(k), self.layout.length(k));
-            self.wanted[k] = held_at(start + 0.5 * length);
-            self.wanted_end[k] = held_at(start + length);
+            self.wanted[k] = mean(start, start + length);
+            self.wanted_end[k] = scaled(index(start + length));
         }
     }
 
     /// Ask for only `fade` (0 to 1) of the vehicle's motion.
     pub fn set_fade(&mut self, fade: f64) {
         self.fade = fade;
+    }
+
+    /// Whether the platform is home and at rest (to 1e-4 m or rad, per second).
+    pub fn settled(&self) -> bool {
+        self.s.iter().chain(&self.v).all(|x| x.abs() < 1e-4)
     }
 
     /// How far ahead the plan reaches, seconds.
@@ -259,11 +317,25 @@ impl Mpc {
         // Times from a recording's differences are off by rounding: a remainder this
         // small is no interval of its own.
         const ROUNDING: f64 = 1e-9;
+        // A gap longer than a plan (a clock that jumps): the plan is followed to its end,
+        // at rest, in one go, and only the last stretch is planned — the work bounded
+        // whatever the gap.
+        let span = self.horizon_s() + 2.0 * every;
+        if h > span {
+            let skipped = h - span;
+            (self.s, self.v, self.plan_age) =
+                self.integrate(self.s, self.v, self.plan_age, skipped);
+            self.ahead_age += skipped;
+            self.since_solve = f64::INFINITY;
+            self.epoch += 1;
+            h = span;
+        }
         while h > 0.0 {
             if self.since_solve >= every - ROUNDING {
                 if self.remote {
                     self.remote_instant();
                 } else {
+                    self.look_ahead();
                     self.solve();
                 }
                 self.since_solve = 0.0;
@@ -274,15 +346,20 @@ impl Mpc {
             }
             (self.s, self.v, self.plan_age) = self.integrate(self.s, self.v, self.plan_age, dt);
             self.since_solve += dt;
+            self.ahead_age += dt;
             h -= dt;
         }
         let pose = pose_of(&self.geometry, self.arm, &self.s);
-        if workspace::pose_within_limits(&self.geometry, &self.limits, &pose) {
+        if self.s.iter().chain(&self.v).all(|x| x.is_finite())
+            && workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
+        {
             self.last_good = self.s;
             return pose;
         }
-        // Never a pose outside the limits: stop at the last one that passed.
+        // Never a pose outside the limits: stop at the last one that passed (a plan on its
+        // way for the state left behind is no longer adopted).
         self.counts.stops += 1;
+        self.epoch += 1;
         self.s = self.last_good;
         self.v = [0.0; 6];
         self.plan.iter_mut().for_each(|u| *u = 0.0);
@@ -323,8 +400,10 @@ impl Mpc {
         self.since_solve = f64::INFINITY;
         self.wanted.iter_mut().for_each(|v| *v = [0.0; 6]);
         self.wanted_end.iter_mut().for_each(|v| *v = [0.0; 6]);
+        self.ahead.clear();
         self.request = None;
         self.reply = None;
+        self.epoch += 1;
         if let Some(s) = &mut self.sensed {
             s.reset();
         }
@@ -406,12 +485,13 @@ impl Mpc {
             &now,
         );
         match self.qp.solve(&self.gradient, &self.constraints) {
-            Ok(x) => {
+            Ok(x) if x.iter().all(|v| v.is_finite()) => {
                 self.plan.copy_from_slice(&x[..plan_len]);
                 self.counts.active = self.qp.active_count();
                 true
             }
-            Err(_) => {
+            // No plan, or one that is not a number (a wish beyond any float's range).
+            _ => {
                 self.counts.failed += 1;
                 false
             }
@@ -435,8 +515,9 @@ fn build_constraints(
     // At rest at the horizon's end.
     for &axis in &layout.axes {
         let free = layout.free(Quantity::EndVelocity, last, now.s[axis], now.v[axis]);
-        let row = c.push(-free, -free);
-        layout.add_quantity(row, Quantity::EndVelocity, last, axis, 1.0);
+        if let Some(row) = c.push_equality(-free) {
+            layout.add_quantity(row, Quantity::EndVelocity, last, axis, 1.0);
+        }
     }
     rig.push_rows(c, layout, lin, &now.s, &now.v);
     let limit = tilt_limit;

@@ -73,13 +73,24 @@ impl Constraints {
         self.equalities
     }
 
-    /// Add the row `l ≤ c x ≤ u` (infinite bounds for a one-sided row), its coefficients
-    /// zero, returned to be filled. Equalities must come first.
-    pub fn push(&mut self, lower: f64, upper: f64) -> &mut [f64] {
-        if lower == upper {
-            debug_assert_eq!(self.equalities, self.len(), "equalities come first");
-            self.equalities += 1;
+    /// Add the equality row `c x = value`, its coefficients zero, returned to be filled.
+    /// Equalities come first: one after an inequality is refused (`None`).
+    pub fn push_equality(&mut self, value: f64) -> Option<&mut [f64]> {
+        if self.equalities != self.len() {
+            return None;
         }
+        self.equalities += 1;
+        Some(self.push_row(value, value))
+    }
+
+    /// Add the inequality row `l ≤ c x ≤ u` (infinite bounds for a one-sided row; equal
+    /// bounds are still an inequality's two sides), its coefficients zero, returned to be
+    /// filled.
+    pub fn push(&mut self, lower: f64, upper: f64) -> &mut [f64] {
+        self.push_row(lower, upper)
+    }
+
+    fn push_row(&mut self, lower: f64, upper: f64) -> &mut [f64] {
         self.lower.push(lower);
         self.upper.push(upper);
         let start = self.rows.len();
@@ -350,7 +361,8 @@ impl DenseQp {
             let mut partial: Option<(f64, usize)> = None;
             for k in 0..q {
                 if self.step[k] > 0.0 && self.active[k].row >= c.equalities() {
-                    let t = self.multipliers[k] / self.step[k];
+                    // A multiplier rounded just below 0 is 0.
+                    let t = (self.multipliers[k] / self.step[k]).max(0.0);
                     if partial.is_none_or(|(b, _)| t < b) {
                         partial = Some((t, k));
                     }

@@ -21,6 +21,8 @@ const STEPS: usize = MAX_HORIZON_STEPS as usize;
 pub struct PlanRequest {
     /// Which solve instant (from 1).
     pub id: u64,
+    /// The follower's epoch when asked: a stop or reset since makes the reply stale.
+    epoch: u64,
     s: [f64; 6],
     v: [f64; 6],
     a: [f64; 6],
@@ -36,6 +38,7 @@ pub struct PlanRequest {
 pub struct PlanReply {
     /// The request's id.
     pub id: u64,
+    epoch: u64,
     /// Whether a plan within the limits was found.
     pub found: bool,
     plan: [f64; 6 * STEPS],
@@ -50,9 +53,15 @@ impl Mpc {
         self.remote = remote;
     }
 
-    /// The request left at the last solve instant, if not taken yet.
+    /// The request left at the last solve instant, if not taken yet, with the vehicle's
+    /// motion held now (a sample taken since the instant is in it).
     pub fn take_request(&mut self) -> Option<PlanRequest> {
-        self.request.take()
+        let mut request = self.request.take()?;
+        let steps = self.layout.steps;
+        request.wanted[..steps].copy_from_slice(&self.wanted);
+        request.wanted_end[..steps].copy_from_slice(&self.wanted_end);
+        request.fade = self.fade;
+        Some(request)
     }
 
     /// Offer a reply: it is adopted at its solve instant if it is the one asked for then.
@@ -77,6 +86,7 @@ impl Mpc {
         plan[..self.plan.len()].copy_from_slice(&self.plan);
         PlanReply {
             id: request.id,
+            epoch: request.epoch,
             found,
             plan,
             active: self.counts.active,
@@ -88,14 +98,14 @@ impl Mpc {
     pub(super) fn remote_instant(&mut self) {
         self.instant += 1;
         match self.reply.take() {
-            Some(r) if r.id == self.instant && r.found => {
+            Some(r) if r.id == self.instant && r.epoch == self.epoch && r.found => {
                 let n = self.plan.len();
                 self.plan.copy_from_slice(&r.plan[..n]);
                 self.plan_age = 0.0;
                 self.counts.active = r.active;
                 self.counts.solves += 1;
             }
-            Some(r) if r.id == self.instant => {
+            Some(r) if r.id == self.instant && r.epoch == self.epoch => {
                 self.counts.solves += 1;
                 self.counts.failed += 1;
             }
@@ -106,6 +116,7 @@ impl Mpc {
         let (s, v, age) = self.integrate(self.s, self.v, self.plan_age, every);
         let mut request = PlanRequest {
             id: self.instant + 1,
+            epoch: self.epoch,
             s,
             v,
             a: self.input_at(age),
@@ -202,5 +213,24 @@ mod tests {
             follower.v
         );
         assert!(follower.counts().late >= 300);
+    }
+
+    #[test]
+    fn a_reply_asked_for_before_a_reset_is_not_adopted() {
+        let (mut follower, mut answering) = planners();
+        follower.hold(&VehicleMotion {
+            accel: [3.0, 0.0, 0.0],
+            rates_deg_s: [0.0; 3],
+        });
+        follower.advance(0.01);
+        let request = follower.take_request().unwrap_or_else(|| panic!("a request"));
+        let reply = answering.answer(&request);
+        // Reset (or an exact-check stop) while the plan was on its way: dropped.
+        follower.reset();
+        follower.offer(&reply);
+        let late = follower.counts().late;
+        follower.advance(0.01);
+        assert_eq!(follower.counts().late, late + 1);
+        assert!(follower.plan.iter().all(|u| *u == 0.0));
     }
 }

@@ -353,3 +353,36 @@ fn body_rates_are_those_of_the_rotation_matrices() {
         assert!((w[i] - b[i]).abs() < 1e-8, "{w:?} vs {b:?}");
     }
 }
+
+#[test]
+fn a_clock_that_jumps_or_a_wish_past_any_float_is_a_bounded_safe_step() {
+    let s = preset("paired");
+    let mut mpc = Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s))
+        .unwrap_or_else(|_| panic!("a planner"));
+    mpc.hold(&VehicleMotion {
+        accel: [3.0, -2.0, 0.0],
+        rates_deg_s: [0.0, 0.0, 20.0],
+    });
+    for _ in 0..50 {
+        mpc.advance(0.01);
+    }
+    // A gap of 10¹² s (and of 10³⁰⁰ s): one plan to its end, a few solves, a pose
+    // within the limits.
+    let solves = mpc.counts().solves;
+    for gap in [1e12, 1e300] {
+        let pose = mpc.advance(gap);
+        assert!(pose.to_row().iter().all(|v| v.is_finite()));
+        assert!(workspace::pose_within_limits(&s.geometry, &s.limits, &pose));
+    }
+    assert!(mpc.counts().solves - solves < 1000, "{:?}", mpc.counts());
+    // A vehicle at 10³⁰⁰ m/s²: scaled, no float holds it; no plan, no NaN, no move.
+    mpc.hold(&VehicleMotion {
+        accel: [1e300, -1e300, 1e300],
+        rates_deg_s: [1e300, 0.0, 0.0],
+    });
+    for _ in 0..20 {
+        let pose = mpc.advance(0.01);
+        assert!(pose.to_row().iter().all(|v| v.is_finite()));
+        assert!(workspace::pose_within_limits(&s.geometry, &s.limits, &pose));
+    }
+}

@@ -41,7 +41,9 @@ fn an_equality_is_met_exactly() {
     // min ½|x|² with x₁ + 2 x₂ = 5: x = (1, 2).
     let mut qp = solver(&[1.0, 0.0, 0.0, 1.0], 2);
     let mut c = Constraints::new(2, 1);
-    c.push(5.0, 5.0).copy_from_slice(&[1.0, 2.0]);
+    c.push_equality(5.0)
+        .unwrap_or_else(|| panic!("first"))
+        .copy_from_slice(&[1.0, 2.0]);
     let x = qp
         .solve(&[0.0, 0.0], &c)
         .unwrap_or_else(|e| panic!("{e:?}"));
@@ -60,8 +62,15 @@ fn contradicting_constraints_are_infeasible() {
     assert_eq!(qp.solve(&[0.0, 0.0], &c), Err(QpFailure::Infeasible));
     // Two equalities that disagree.
     let mut c = Constraints::new(2, 2);
-    c.push(1.0, 1.0).copy_from_slice(&[1.0, 1.0]);
-    c.push(2.0, 2.0).copy_from_slice(&[2.0, 2.0]);
+    c.push_equality(1.0)
+        .unwrap_or_else(|| panic!("first"))
+        .copy_from_slice(&[1.0, 1.0]);
+    c.push_equality(2.0)
+        .unwrap_or_else(|| panic!("second"))
+        .copy_from_slice(&[2.0, 2.0]);
+    // After an inequality, an equality is refused.
+    c.push(0.0, 1.0);
+    assert!(c.push_equality(0.0).is_none());
     assert_eq!(qp.solve(&[0.0, 0.0], &c), Err(QpFailure::Infeasible));
 }
 
@@ -121,6 +130,19 @@ fn programme() -> impl Strategy<Value = Programme> {
     })
 }
 
+/// The rows into `c`: those with equal bounds (the first) as equalities.
+fn push_all(c: &mut Constraints, rows: &[(Vec<f64>, f64, f64)]) {
+    for (row, l, u) in rows {
+        let coefficients = if l == u {
+            c.push_equality(*l)
+                .unwrap_or_else(|| panic!("equalities first"))
+        } else {
+            c.push(*l, *u)
+        };
+        coefficients.copy_from_slice(row);
+    }
+}
+
 proptest! {
     /// The answer meets the optimality conditions (Karush–Kuhn–Tucker), which for a
     /// strictly convex programme make it the one minimiser: every row met, `G x + a`
@@ -130,9 +152,7 @@ proptest! {
     fn every_answer_meets_the_optimality_conditions((n, g, a, rows, _eq) in programme()) {
         let mut qp = solver(&g, n);
         let mut c = Constraints::new(n, rows.len());
-        for (row, l, u) in &rows {
-            c.push(*l, *u).copy_from_slice(row);
-        }
+        push_all(&mut c, &rows);
         let x = qp.solve(&a, &c).unwrap_or_else(|e| panic!("{e:?}")).to_vec();
         let mut m = vec![0.0; rows.len()];
         qp.row_multipliers(rows.len(), &mut m);
@@ -157,9 +177,7 @@ proptest! {
     fn a_warm_start_changes_nothing_but_the_path((n, g, a, rows, _eq) in programme()) {
         let mut qp = solver(&g, n);
         let mut c = Constraints::new(n, rows.len());
-        for (row, l, u) in &rows {
-            c.push(*l, *u).copy_from_slice(row);
-        }
+        push_all(&mut c, &rows);
         let cold = solver(&g, n).solve(&a, &c).map(<[f64]>::to_vec);
         let _ = qp.solve(&a.iter().map(|v| -v).collect::<Vec<_>>(), &c);
         let warm = qp.solve(&a, &c).map(<[f64]>::to_vec);
