@@ -223,7 +223,9 @@ mod tests {
             rates_deg_s: [0.0; 3],
         });
         follower.advance(0.01);
-        let request = follower.take_request().unwrap_or_else(|| panic!("a request"));
+        let request = follower
+            .take_request()
+            .unwrap_or_else(|| panic!("a request"));
         let reply = answering.answer(&request);
         // Reset (or an exact-check stop) while the plan was on its way: dropped.
         follower.reset();

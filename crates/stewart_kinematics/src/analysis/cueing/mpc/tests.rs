@@ -357,8 +357,8 @@ fn body_rates_are_those_of_the_rotation_matrices() {
 #[test]
 fn a_clock_that_jumps_or_a_wish_past_any_float_is_a_bounded_safe_step() {
     let s = preset("paired");
-    let mut mpc = Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s))
-        .unwrap_or_else(|_| panic!("a planner"));
+    let mut mpc =
+        Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s)).unwrap_or_else(|_| panic!("a planner"));
     mpc.hold(&VehicleMotion {
         accel: [3.0, -2.0, 0.0],
         rates_deg_s: [0.0, 0.0, 20.0],
