@@ -65,7 +65,10 @@ pub fn cue<'py>(
         .detach(|| cue_recording(&s.geometry, &s.limits, &s.cueing, &samples))
         .map_err(refused)?;
     let rows: Vec<[f64; 6]> = cued.poses.iter().map(Pose::to_row).collect();
-    Ok(PyArray2::from_vec2(py, &rows.iter().map(|r| r.to_vec()).collect::<Vec<_>>())?)
+    Ok(PyArray2::from_vec2(
+        py,
+        &rows.iter().map(|r| r.to_vec()).collect::<Vec<_>>(),
+    )?)
 }
 
 /// One algorithm's measures as a dict (the keys of `stewart cue --compare --format json`).
