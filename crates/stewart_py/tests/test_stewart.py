@@ -418,5 +418,9 @@ def test_cueing_gives_the_clis_poses_and_comparison_for_either_algorithm():
     bad[7, 2] = np.nan
     with pytest.raises(ValueError, match="vehicle, row 7 .*column ay"):
         stewart.cue(p, bad)
+    huge = vehicle.copy()
+    huge[3, 1] = 1e300
+    with pytest.raises(ValueError, match="vehicle, row 3 .*column ax"):
+        stewart.cue(p, huge)
     with pytest.raises(ValueError, match="must be `washout` or `mpc`"):
         p.set("cueing.algorithm", "fuzzy")

@@ -46,6 +46,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         CueError::PoseOutside { index, .. } => {
             anyhow!("{file}, {}: {e}", recording.place(index, ""))
         }
+        CueError::TooShort { .. } => anyhow!("{file}: {e}"),
         other => anyhow!("{}: {other}", source::describe(&args.scenario)),
     };
     if args.compare {

@@ -418,18 +418,23 @@ impl Mpc {
         }
     }
 
+    /// The specific force felt now with the accelerations `a0` held.
+    fn felt_force(&self, a0: [f64; 6]) -> [f64; 3] {
+        Cue {
+            acceleration: [a0[0], a0[1], a0[2]],
+            angles: [self.s[3], self.s[4], self.s[5]],
+            ..Cue::default()
+        }
+        .specific_force()
+    }
+
     /// At a solve instant, with the vestibular model: the organs stepped over the last
     /// interval, and the error felt now (with `a0` held) held over the next.
     fn sense(&mut self, a0: [f64; 6]) {
         let Some(sensed) = &self.sensed else {
             return;
         };
-        let held = Cue {
-            acceleration: [a0[0], a0[1], a0[2]],
-            angles: [self.s[3], self.s[4], self.s[5]],
-            ..Cue::default()
-        };
-        let force = held.specific_force();
+        let force = self.felt_force(a0);
         let rates = body_rates(&self.s, &self.v);
         let error: [f64; 6] = std::array::from_fn(|i| {
             let felt = if i < 3 { force[i] } else { rates[i - 3] };
@@ -448,16 +453,11 @@ impl Mpc {
             self.counts.failed += 1;
             return false;
         };
-        let held = Cue {
-            acceleration: [a0[0], a0[1], a0[2]],
-            angles: [self.s[3], self.s[4], self.s[5]],
-            ..Cue::default()
-        };
         let now = Now {
             s: self.s,
             v: self.v,
             a: a0,
-            force: held.specific_force(),
+            force: self.felt_force(a0),
             rates: body_rates(&self.s, &self.v),
             wanted: &self.wanted,
             wanted_end: &self.wanted_end,
