@@ -87,8 +87,21 @@ pub(crate) struct TelemetryArgs {
     /// Listen here, `udp:HOST:PORT` (the port the game sends to: Forza's choice, F1 20777,
     /// BeamNG 4444, Live for Speed's OutSim port, X-Plane's reply port; port 0: any free
     /// port, printed on standard error).
-    #[arg(long, value_name = "udp:HOST:PORT")]
-    pub(crate) listen: String,
+    #[arg(
+        long,
+        value_name = "udp:HOST:PORT",
+        required_unless_present = "input",
+        conflicts_with = "input"
+    )]
+    pub(crate) listen: Option<String>,
+    /// Read a packet capture (pcap or pcapng, from Wireshark or tcpdump) instead of
+    /// listening: the same decoder, the same summary, a line per second of its time.
+    #[arg(long, value_name = "CAPTURE", conflicts_with_all = ["duration", "xplane"])]
+    pub(crate) input: Option<PathBuf>,
+    /// With `--input`: read the datagrams to this UDP port (default: the port whose
+    /// datagrams give vehicle motion; the others are counted, never read).
+    #[arg(long, allow_hyphen_values = true, value_name = "N", requires = "input")]
+    pub(crate) port: Option<u16>,
     /// Write the decoded vehicle motion (t, ax, ay, az, wx, wy, wz) here when listening
     /// ends, whole or not at all.
     #[arg(long, value_name = "VEHICLE.csv")]
@@ -279,7 +292,7 @@ pub(crate) struct LinkArgs {
     #[arg(long, value_name = "FILE.csv")]
     pub(crate) record: Option<PathBuf>,
     /// Follow live vehicle motion instead of the trajectory: UDP datagrams at this address
-    /// (`udp:HOST:PORT`; a game's telemetry — Forza Data Out, F1 24, BeamNG MotionSim,
+    /// (`udp:HOST:PORT`; a game's telemetry — Forza Data Out, F1 24 and 25, BeamNG MotionSim,
     /// Live for Speed OutSim, X-Plane DATA or RREF — or the generic text
     /// `t,ax,ay,az,wx,wy,wz` or seven little-endian f32) through the scenario's `[cueing]`
     /// washout, until Ctrl-C or `--duration`.
@@ -465,10 +478,14 @@ pub(crate) struct CueArgs {
     /// The vehicle motion: a CSV with columns t (s), ax, ay, az (m/s², the vehicle's
     /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s), or a packet
     /// capture (pcap or pcapng, from Wireshark or tcpdump) of a game's UDP telemetry in any
-    /// format the live link reads (Forza, F1 24, BeamNG, Live for Speed, X-Plane); `-`
+    /// format the live link reads (Forza, F1 24 and 25, BeamNG, Live for Speed, X-Plane); `-`
     /// reads standard input.
     #[arg(long, value_name = "RECORDING")]
     pub(crate) input: PathBuf,
+    /// For a capture: read the datagrams to this UDP port (default: the port whose
+    /// datagrams give vehicle motion; the others are counted, never read).
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
+    pub(crate) port: Option<u16>,
     /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
     /// at all, instead of standard output.
     #[arg(long, value_name = "FILE")]

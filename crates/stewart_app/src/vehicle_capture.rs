@@ -1,21 +1,17 @@
 //! A packet capture of a game's telemetry (pcap or pcapng) made into vehicle motion, as
-//! the live link takes the same datagrams: decoded in capture order by one
-//! `stewart_link::vehicle::Decoder` (any format, F1's halves paired, clocks unwrapped), each
-//! sample at its own clock or, for formats without one, at its capture time, a sample not
-//! later than the last by its own clock dropped, a clockless one at the same time replacing
-//! the last ([`crate::live_cue::SampleClock`], the live link's rule). The live link fades
-//! the cue to neutral where the game is in its menus or the input stalls; a capture is
-//! cued sample by sample, as `stewart cue` cues a CSV, and says how many such packets it
-//! held.
-
-use std::collections::BTreeMap;
+//! the live link takes the same datagrams: the datagrams to one port (`--port`, or the one
+//! whose datagrams give motion) read by `stewart_link::vehicle::replay` through the live
+//! link's intake (any format, F1's halves paired, clocks unwrapped, repeated stamps placed
+//! between their neighbours), each sample at its own clock or, for formats without one, at
+//! its capture time. The live link fades the cue to neutral where the game is in its menus
+//! or the input stalls; a capture is cued sample by sample, as `stewart cue` cues a CSV,
+//! and says how many such packets it held.
 
 use anyhow::{Result, bail};
 use stewart_kinematics::analysis::cueing::VehicleMotion;
 use stewart_link::capture::{self, CaptureError};
-use stewart_link::vehicle::{Decoder, Reading};
-
-use crate::live_cue::{SampleClock, Step};
+use stewart_link::vehicle::intake::Tally;
+use stewart_link::vehicle::replay::{Replay, replay};
 
 /// The vehicle motion of a capture, and what else it held.
 #[derive(Debug, Default)]
@@ -24,84 +20,40 @@ pub(crate) struct CapturedMotion {
     pub(crate) samples: Vec<(f64, VehicleMotion)>,
     /// The capture's packet number of each sample used.
     pub(crate) packets: Vec<usize>,
-    /// The capture's UDP datagrams.
-    pub(crate) datagrams: usize,
-    /// Datagrams per format recognised.
-    pub(crate) formats: BTreeMap<&'static str, usize>,
-    /// Datagrams that could not be read.
-    pub(crate) malformed: usize,
-    /// Samples dropped: not later than the last by their own clock.
-    pub(crate) stale: usize,
-    /// Datagrams saying the game was in its menus or paused.
-    pub(crate) idle: usize,
+    /// The telemetry read: its port, what its datagrams were, the other ports.
+    pub(crate) replay: Replay,
     /// The capture's own counts: packets, not UDP, fragments, cut.
     pub(crate) capture: capture::Capture,
 }
 
 /// Whether `bytes` begin as a pcap or pcapng file does.
 pub(crate) fn is_capture(bytes: &[u8]) -> bool {
-    const MAGICS: [[u8; 4]; 5] = [
-        [0xd4, 0xc3, 0xb2, 0xa1],
-        [0xa1, 0xb2, 0xc3, 0xd4],
-        [0x4d, 0x3c, 0xb2, 0xa1],
-        [0xa1, 0xb2, 0x3c, 0x4d],
-        [0x0a, 0x0d, 0x0d, 0x0a],
-    ];
-    bytes
-        .get(..4)
-        .is_some_and(|m| MAGICS.iter().any(|k| k == m))
+    capture::is_capture(bytes)
 }
 
-/// The vehicle motion in the capture `bytes` (named `name` in errors).
-pub(crate) fn read(bytes: &[u8], name: &str) -> Result<CapturedMotion> {
+/// The vehicle motion in the capture `bytes` (named `name` in errors), of the datagrams
+/// to `port` (`None`: the port whose datagrams give motion).
+pub(crate) fn read(bytes: &[u8], name: &str, port: Option<u16>) -> Result<CapturedMotion> {
     let mut capture = capture::read(bytes).map_err(|e| located(e, name))?;
-    let mut out = CapturedMotion::default();
-    let mut decoder = Decoder::new();
-    let mut clock = SampleClock::default();
     let datagrams = std::mem::take(&mut capture.datagrams);
-    out.datagrams = datagrams.len();
-    for datagram in datagrams {
-        let decoded = decoder.decode(&datagram.payload);
-        if let Some(format) = decoded.format {
-            *out.formats.entry(format.name()).or_default() += 1;
-        }
-        let sample = match decoded.reading {
-            Ok(Reading::Sample(sample)) => sample,
-            Ok(Reading::Idle) => {
-                out.idle += 1;
-                continue;
-            }
-            Ok(Reading::Ignored) => continue,
-            Err(_) => {
-                out.malformed += 1;
-                continue;
-            }
-        };
-        let time = sample.t.unwrap_or(datagram.time_s);
+    let mut replay = replay(&datagrams, port);
+    let mut out = CapturedMotion::default();
+    for (timed, packet) in std::mem::take(&mut replay.samples) {
+        let s = timed.sample;
         let motion = VehicleMotion {
-            accel: sample.accel,
-            rates_deg_s: sample.rates_deg_s,
+            accel: s.accel,
+            rates_deg_s: s.rates_deg_s,
         };
-        match clock.step(sample.t, datagram.time_s) {
-            Step::First | Step::By(_) => {
-                out.samples.push((time, motion));
-                out.packets.push(datagram.packet);
-            }
-            Step::Same => {
-                if let (Some(last), Some(packet)) = (out.samples.last_mut(), out.packets.last_mut())
-                {
-                    *last = (time, motion);
-                    *packet = datagram.packet;
-                }
-            }
-            Step::Stale => out.stale += 1,
-        }
+        out.samples.push((timed.t, motion));
+        out.packets.push(packet);
     }
     out.capture = capture;
+    out.replay = replay;
+    out.capture.datagrams = datagrams;
     if out.samples.is_empty() {
         bail!(
-            "{name}: no vehicle motion in this capture ({}): a game's telemetry (Forza, F1 24, \
-             BeamNG, Live for Speed, X-Plane) or the studio's own datagrams are read",
+            "{name}: no vehicle motion in this capture ({}): a game's telemetry (Forza, F1 24 and \
+             25, BeamNG, Live for Speed, X-Plane) or the studio's own datagrams are read",
             out.contents()
         );
     }
@@ -115,19 +67,24 @@ impl CapturedMotion {
         let c = &self.capture;
         let mut parts = vec![format!(
             "{} packets, {} UDP datagrams",
-            c.packets, self.datagrams
+            c.packets,
+            c.datagrams.len()
         )];
-        let formats: Vec<String> = (self.formats.iter())
-            .map(|(name, n)| format!("{n} {name}"))
-            .collect();
-        if !formats.is_empty() {
-            parts.push(formats.join(", "));
+        if let Some(port) = self.replay.port {
+            parts.push(format!("telemetry read from port {port}"));
+        }
+        parts.extend(tally_words(&self.replay.tally));
+        if !self.replay.other_ports.is_empty() {
+            let others: Vec<String> = (self.replay.other_ports.iter())
+                .map(|(port, n)| format!("{n} to port {port}"))
+                .collect();
+            parts.push(format!(
+                "not telemetry (other ports, --port chooses): {}",
+                others.join(", ")
+            ));
         }
         let s = &c.skipped;
         for (n, what) in [
-            (self.malformed, "malformed"),
-            (self.stale, "older than the sample before (dropped)"),
-            (self.idle, "in the game's menus or pause"),
             (s.not_udp, "not UDP"),
             (s.fragments, "IP fragments"),
             (s.cut, "cut short"),
@@ -142,6 +99,33 @@ impl CapturedMotion {
         }
         parts.join("; ")
     }
+}
+
+/// What the datagrams of a stream were, in words: the formats, then what was not used (the
+/// words `stewart telemetry` and `stewart cue` share).
+pub(crate) fn tally_words(tally: &Tally) -> Vec<String> {
+    let mut parts = Vec::new();
+    let formats: Vec<String> = (tally.formats())
+        .map(|(format, n)| format!("{n} {}", format.name()))
+        .collect();
+    if !formats.is_empty() {
+        parts.push(formats.join(", "));
+    }
+    for (n, what) in [
+        (tally.refused, "unreadable"),
+        (tally.repeats, "repeating the sample before (dropped)"),
+        (tally.stale, "older than the sample before (dropped)"),
+        (
+            tally.unplaced,
+            "held on a repeated stamp at the end (dropped)",
+        ),
+        (tally.idle, "in the game's menus or pause"),
+    ] {
+        if n > 0 {
+            parts.push(format!("{n} {what}"));
+        }
+    }
+    parts
 }
 
 /// A capture error with the file's name.

@@ -25,7 +25,7 @@
 //! - [`transport`]: UDP, or a dry-run record of what would be sent.
 //! - [`vehicle`]: vehicle motion coming in for motion cueing — the studio's generic text
 //!   or `f32` datagram, or a game's telemetry (X-Plane `DATA` and `RREF`, Forza Data Out,
-//!   F1 24, BeamNG.drive MotionSim, Live for Speed OutSim), told apart per datagram.
+//!   F1 24 and 25, BeamNG.drive MotionSim, Live for Speed OutSim), told apart per datagram.
 //!
 //! `docs/PROTOCOL.md` documents the format with byte-exact examples, which the tests of
 //! this crate reproduce.

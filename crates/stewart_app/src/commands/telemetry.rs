@@ -2,7 +2,9 @@
 //! which formats arrive at what rate and the motion decoded from them (in our axes: x
 //! forward, y left, z up; m/s² and °/s) — the check that a game is set up right — and,
 //! with `--out`, write that motion as the CSV `stewart cue` reads. Datagrams are read as
-//! the live link reads them (one `Decoder`, the live link's sample clock).
+//! the live link reads them (`stewart_link::vehicle::intake`). With `--input`, a packet
+//! capture of a session is read the same way, a line per second of its own time, so a
+//! recorded session can be checked without the game.
 
 use std::collections::BTreeMap;
 use std::io::Write as _;
@@ -10,13 +12,18 @@ use std::net::UdpSocket;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use anyhow::{Context as _, Result, bail};
-use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
+use anyhow::{Context as _, Result, anyhow, bail};
+use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
+use stewart_link::capture;
+use stewart_link::vehicle::VehicleSample;
+use stewart_link::vehicle::intake::Intake;
+use stewart_link::vehicle::replay::telemetry_port;
+use stewart_link::vehicle::timeline::Step;
 
 use crate::cli::TelemetryArgs;
-use crate::csv_io::CsvText;
-use crate::live_cue::{SampleClock, Step};
-use crate::output;
+use crate::csv_io::{CsvText, read_input};
+use crate::output::{self, Destination};
+use crate::vehicle_capture::tally_words;
 use crate::vehicle_table::VEHICLE_COLUMNS;
 use crate::xplane_rref::RrefSubscription;
 
@@ -25,12 +32,29 @@ const POLL: Duration = Duration::from_millis(50);
 
 /// Run the command.
 pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
-    let out = output::destination(args.out.as_deref(), &[])?;
-    let Some(address) = args.listen.strip_prefix("udp:") else {
-        bail!(
-            "--listen takes udp:HOST:PORT (such as udp:0.0.0.0:20777), got `{}`",
-            args.listen
-        );
+    let mut inputs = Vec::new();
+    if let Some(input) = &args.input {
+        inputs.push(("the capture", input.as_path()));
+    }
+    // Checked before listening: a session is never recorded only to be refused.
+    let out = output::destination(args.out.as_deref(), &inputs)?;
+    let mut heard = Heard {
+        keep: out.is_some(),
+        ..Heard::default()
+    };
+    match (&args.input, &args.listen) {
+        (Some(input), _) => replay(input, args.port, &mut heard)?,
+        (None, Some(listen)) => listen_to(listen, args, &mut heard)?,
+        (None, None) => bail!("give --listen udp:HOST:PORT or --input CAPTURE"),
+    }
+    write_rows(&heard, out.as_ref())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Listen at `listen` until `--duration` or Ctrl-C.
+fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()> {
+    let Some(address) = listen.strip_prefix("udp:") else {
+        bail!("--listen takes udp:HOST:PORT (such as udp:0.0.0.0:20777), got `{listen}`");
     };
     let socket =
         UdpSocket::bind(address).with_context(|| format!("cannot listen at `{address}`"))?;
@@ -45,10 +69,6 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
         socket.local_addr()?
     );
     let stop = crate::interrupt::flag();
-    let mut heard = Heard {
-        keep: out.is_some(),
-        ..Heard::default()
-    };
     let start = Instant::now();
     let mut next_line = 1.0;
     let mut buffer = vec![0u8; 65_536];
@@ -66,24 +86,83 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
             heard.take(&buffer[..n], start.elapsed().as_secs_f64());
         }
         if now >= next_line {
-            let mut stdout = std::io::stdout();
-            let _ = writeln!(stdout, "{}", heard.second(next_line));
+            let _ = writeln!(std::io::stdout(), "{}", heard.second(next_line));
             next_line += 1.0;
         }
     }
     if let Some(x) = &xplane {
         x.end(&socket);
     }
+    heard.intake.restart();
     let _ = writeln!(err, "telemetry: {}", heard.summary());
-    if let Some(out) = &out {
-        let mut csv = CsvText::with_header(&VEHICLE_COLUMNS);
-        for row in &heard.rows {
-            csv.row(row.iter().copied());
-        }
-        let text = csv.into_string();
-        output::emit_with(Some(out), |w| w.write_all(text.as_bytes()))?;
+    Ok(())
+}
+
+/// Read the capture `input`: the datagrams to `port` (default: the port whose datagrams
+/// give motion), a line per second of the capture's time.
+fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Result<()> {
+    let (bytes, name) = read_input(input, |r, name| {
+        let bytes = read_capped(r, MAX_TABLE_BYTES).map_err(|e| anyhow!("{name} {e}"))?;
+        Ok((bytes, name.to_owned()))
+    })?;
+    if !capture::is_capture(&bytes) {
+        bail!(
+            "{name}: not a packet capture (pcap or pcapng): its first bytes are neither format's"
+        );
     }
-    Ok(ExitCode::SUCCESS)
+    let capture = capture::read(bytes.as_slice()).map_err(|e| anyhow!("{name}: {e}"))?;
+    let port = port.or_else(|| telemetry_port(&capture.datagrams));
+    let mut stdout = std::io::stdout().lock();
+    let mut next_line = 1.0;
+    let mut others: BTreeMap<u16, usize> = BTreeMap::new();
+    for d in &capture.datagrams {
+        while d.time_s >= next_line {
+            let _ = writeln!(stdout, "{}", heard.second(next_line));
+            next_line += 1.0;
+        }
+        if Some(d.port) == port {
+            heard.take(&d.payload, d.time_s);
+        } else {
+            *others.entry(d.port).or_default() += 1;
+        }
+    }
+    if heard.intake.tally().datagrams > 0 || !others.is_empty() {
+        let _ = writeln!(stdout, "{}", heard.second(next_line));
+    }
+    heard.intake.restart();
+    let mut said = format!(
+        "telemetry: read from {name}: {} packets, {} UDP datagrams",
+        capture.packets,
+        capture.datagrams.len()
+    );
+    if let Some(port) = port {
+        said.push_str(&format!(", telemetry from port {port}"));
+    }
+    if !others.is_empty() {
+        let list: Vec<String> = others
+            .iter()
+            .map(|(p, n)| format!("{n} to port {p}"))
+            .collect();
+        said.push_str(&format!(
+            "; not telemetry (other ports, --port chooses): {}",
+            list.join(", ")
+        ));
+    }
+    let _ = writeln!(std::io::stderr(), "{said}\ntelemetry: {}", heard.summary());
+    Ok(())
+}
+
+/// Write the rows kept, whole or not at all.
+fn write_rows(heard: &Heard, out: Option<&Destination>) -> Result<()> {
+    let Some(out) = out else {
+        return Ok(());
+    };
+    let mut csv = CsvText::with_header(&VEHICLE_COLUMNS);
+    for row in &heard.rows {
+        csv.row(row.iter().copied());
+    }
+    let text = csv.into_string();
+    output::emit_with(Some(out), |w| w.write_all(text.as_bytes()))
 }
 
 /// What has arrived: the rows of motion, and this second's datagrams per format.
@@ -91,60 +170,35 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
 struct Heard {
     /// Whether the rows are kept (for `--out`; else only counted).
     keep: bool,
-    decoder: Decoder,
-    clock: SampleClock,
+    intake: Intake,
     rows: Vec<[f64; 7]>,
     /// This second's datagrams per format, and its samples.
     second: BTreeMap<&'static str, usize>,
     samples: usize,
     /// The last sample decoded.
     last: Option<VehicleSample>,
-    /// All along: samples kept, datagrams, unreadable ones, stale samples, menus.
-    kept: usize,
-    datagrams: usize,
-    malformed: usize,
-    stale: usize,
-    idle: usize,
 }
 
 impl Heard {
     /// Take one datagram arriving at `arrival` (seconds since listening began).
     fn take(&mut self, bytes: &[u8], arrival: f64) {
-        self.datagrams += 1;
-        let decoded = self.decoder.decode(bytes);
-        let name = decoded.format.map_or("unknown", |f| f.name());
+        let (format, _, placed) = self.intake.take(bytes, arrival);
+        let name = format.map_or("unknown", |f| f.name());
         *self.second.entry(name).or_default() += 1;
-        let sample = match decoded.reading {
-            Ok(Reading::Sample(s)) => s,
-            Ok(Reading::Idle) => {
-                self.idle += 1;
-                return;
+        for timed in placed.iter() {
+            let s = timed.sample;
+            self.last = Some(s);
+            self.samples += 1;
+            let [ax, ay, az] = s.accel;
+            let [wx, wy, wz] = s.rates_deg_s;
+            let row = [timed.t, ax, ay, az, wx, wy, wz];
+            if !self.keep {
+                continue;
             }
-            Ok(Reading::Ignored) => return,
-            Err(_) => {
-                self.malformed += 1;
-                return;
+            match (timed.step, self.rows.last_mut()) {
+                (Step::Same, Some(last)) => *last = row,
+                _ => self.rows.push(row),
             }
-        };
-        self.last = Some(sample);
-        self.samples += 1;
-        let time = sample.t.unwrap_or(arrival);
-        let [ax, ay, az] = sample.accel;
-        let [wx, wy, wz] = sample.rates_deg_s;
-        let row = [time, ax, ay, az, wx, wy, wz];
-        match self.clock.step(sample.t, arrival) {
-            Step::First | Step::By(_) => {
-                self.kept += 1;
-                if self.keep {
-                    self.rows.push(row);
-                }
-            }
-            Step::Same => {
-                if let Some(last) = self.rows.last_mut() {
-                    *last = row;
-                }
-            }
-            Step::Stale => self.stale += 1,
         }
     }
 
@@ -174,10 +228,12 @@ impl Heard {
 
     /// What arrived, all along.
     fn summary(&self) -> String {
-        format!(
-            "{} datagrams, {} samples of motion kept, {} unreadable, {} older than the one \
-             before, {} in the game's menus or pause",
-            self.datagrams, self.kept, self.malformed, self.stale, self.idle
-        )
+        let tally = self.intake.tally();
+        let mut parts = vec![format!(
+            "{} datagrams, {} samples of motion kept",
+            tally.datagrams, tally.placed
+        )];
+        parts.extend(tally_words(tally));
+        parts.join("; ")
     }
 }

@@ -140,7 +140,7 @@ pub(crate) fn check_rate(fps: f64) -> Result<(), String> {
 pub(crate) const MAX_FRAMES: usize = stewart_kinematics::model::trajectory::MAX_SAMPLES;
 
 /// The frames of an export: how many the motion gives at the rate, and when each is.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(crate) struct FramePlan {
     /// Frames over the whole motion.
     pub(crate) count: usize,
@@ -150,17 +150,27 @@ pub(crate) struct FramePlan {
     pub(crate) note: Option<RateNote>,
     /// Time of frame 0, seconds.
     start: f64,
-    /// The trajectory's own sampling, when frames are its samples.
-    native: Option<stewart_kinematics::Sampling>,
+    /// The motion's own sample times, when frames are its samples.
+    native: Option<NativeTimes>,
     /// Seconds of motion per second of video.
     speed: f64,
+}
+
+/// A motion's own sample times: even ones (computed, nothing stored), or a table's rows.
+#[derive(Clone, Debug, PartialEq)]
+enum NativeTimes {
+    Even(stewart_kinematics::Sampling),
+    Rows(Vec<f64>),
 }
 
 impl FramePlan {
     /// Time of frame `k` in the motion, seconds.
     pub(crate) fn time(&self, k: usize) -> f64 {
         match &self.native {
-            Some(sampling) => sampling.time(k),
+            Some(NativeTimes::Even(sampling)) => sampling.time(k),
+            Some(NativeTimes::Rows(times)) => {
+                times.get(k).or(times.last()).copied().unwrap_or(self.start)
+            }
             None => self.start + k as f64 * self.speed / self.fps,
         }
     }
@@ -192,8 +202,17 @@ impl VideoRequest {
             // Frames are the samples, unless the motion is slowed: then at their rate.
             Target::Folder(_) => slowed.then_some(native_fps),
         });
-        if let Some(fps) = asked {
-            check_rate(fps).map_err(anyhow::Error::msg)?;
+        match (asked, self.fps) {
+            // The motion's own rate, slowed into a folder of frames: say it is the motion's.
+            (Some(fps), None) => check_rate(fps).map_err(|_| {
+                anyhow::anyhow!(
+                    "slowed to {speed}× its speed, the motion's frames would come at its own \
+                     sample rate, {fps} a second, beyond what a video or folder of frames \
+                     takes: give --fps"
+                )
+            })?,
+            (Some(fps), Some(_)) => check_rate(fps).map_err(anyhow::Error::msg)?,
+            (None, _) => {}
         }
         let fps = asked.unwrap_or(native_fps);
         let (fps, note) = match target {
@@ -222,7 +241,10 @@ impl VideoRequest {
             fps,
             note,
             start: sampling.start(),
-            native: asked.is_none().then_some(sampling),
+            native: asked.is_none().then(|| match sampling.is_at_keys() {
+                true => NativeTimes::Rows(scenario.motion.times().collect()),
+                false => NativeTimes::Even(sampling),
+            }),
             speed,
         })
     }

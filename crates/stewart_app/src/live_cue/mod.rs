@@ -1,5 +1,5 @@
 //! Live motion cueing for the link: vehicle motion arriving as UDP datagrams (the studio's
-//! generic text or `f32`, X-Plane, Forza, F1 24, BeamNG.drive, Live for Speed:
+//! generic text or `f32`, X-Plane, Forza, F1 24 and 25, BeamNG.drive, Live for Speed:
 //! `stewart_link::vehicle`) made into the pose the link follows, tick by tick, through the
 //! scenario's washout and limiter.
 //!
@@ -18,7 +18,8 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use anyhow::{Context as _, Result, bail};
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_kinematics::{Pose, Scenario};
-use stewart_link::vehicle::{Decoder, Reading, VehicleSample};
+use stewart_link::vehicle::intake::{Intake, Intaken};
+use stewart_link::vehicle::timeline::{Placement, Step, Timed};
 
 use crate::xplane_rref::RrefSubscription;
 
@@ -82,7 +83,7 @@ impl CueCounts {
         [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
     }
 
-    /// The formats arriving, with their rates: `[("F1 24", 120.0)]`.
+    /// The formats arriving, with their rates: `[("F1 24/25", 120.0)]`.
     pub(crate) fn arriving(&self) -> Vec<(&'static str, f64)> {
         self.arriving
             .lock()
@@ -162,50 +163,11 @@ impl Prediction {
     }
 }
 
-/// How a sample steps the washout: the rule the live link and a replayed capture share.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Step {
-    /// The first sample of a stretch: nothing to step.
-    First,
-    /// A sample this much later than the last, seconds.
-    By(f64),
-    /// A sample without a clock of its own at the same time as the last (X-Plane's read in
-    /// one tick): the newest holds, nothing to step.
-    Same,
-    /// A sample not later than the last (by its own clock, or arriving before it): dropped
-    /// (and counted).
-    Stale,
-}
-
-/// The time of the last sample taken: its own clock, or its arrival when it has none.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct SampleClock {
-    last: Option<f64>,
-}
-
-impl SampleClock {
-    /// How a sample of clock `t` (`None`: it has none) arriving at `arrival` steps the
-    /// washout; a sample that is not [`Step::Stale`] becomes the last.
-    pub(crate) fn step(&mut self, t: Option<f64>, arrival: f64) -> Step {
-        let time = t.unwrap_or(arrival);
-        let step = match self.last {
-            None => Step::First,
-            Some(last) if time > last => Step::By(time - last),
-            Some(last) if t.is_none() && time == last => Step::Same,
-            Some(_) => return Step::Stale,
-        };
-        self.last = Some(time);
-        step
-    }
-}
-
 /// The live input and the cueing it feeds.
 pub struct LiveCue {
     socket: UdpSocket,
     cueing: Cueing,
     counts: Arc<CueCounts>,
-    /// The samples' clock (restarted after a stall).
-    clock: SampleClock,
     /// Stream time of the last sample used.
     last_arrival: Option<f64>,
     /// Stream time of the last tick.
@@ -215,8 +177,9 @@ pub struct LiveCue {
     idle: bool,
     pose: Pose,
     buffer: Vec<u8>,
-    /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks).
-    decoder: Decoder,
+    /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks) and
+    /// places their samples on the time line (restarted after a stall).
+    intake: Intake,
     /// X-Plane asked for its datarefs of motion, when it is.
     xplane: Option<RrefSubscription>,
     /// The last two samples, for the look ahead (`None`: `input_prediction_s` is 0).
@@ -262,14 +225,13 @@ impl LiveCue {
             socket,
             cueing,
             counts: Arc::default(),
-            clock: SampleClock::default(),
             last_arrival: None,
             last_tick: None,
             stalled: false,
             idle: false,
             pose: scenario.geometry.home_pose(),
             buffer: vec![0; DATAGRAM],
-            decoder: Decoder::new(),
+            intake: Intake::new(),
             xplane: None,
             prediction: (scenario.cueing.input_prediction_s > 0.0).then(Prediction::default),
             prediction_s: scenario.cueing.input_prediction_s,
@@ -332,16 +294,19 @@ impl LiveCue {
     /// One datagram arriving at stream time `t`, decoded and taken (what [`LiveCue::tick`]
     /// does with each datagram it reads; public for measurements that feed it directly).
     pub fn receive(&mut self, bytes: &[u8], t: f64) {
-        let decoded = self.decoder.decode(bytes);
-        self.count_format(decoded.format.map_or(UNKNOWN_FORMAT, |f| f.name()));
-        match decoded.reading {
-            Ok(Reading::Sample(sample)) => self.take(sample, t),
+        let (format, what, placed) = self.intake.take(bytes, t);
+        self.count_format(format.map_or(UNKNOWN_FORMAT, |f| f.name()));
+        match what {
             // The game's menus or pause: as if the input had stalled.
-            Ok(Reading::Idle) => self.idle = true,
-            Ok(Reading::Ignored) => {}
-            Err(_) => {
+            Intaken::Idle => self.idle = true,
+            Intaken::Refused(_) | Intaken::Sample(Placement::Stale) => {
                 self.counts.malformed.fetch_add(1, Ordering::Relaxed);
             }
+            // A true repeat carries nothing new; a held sample comes with the next stamp.
+            Intaken::Ignored | Intaken::Sample(_) => {}
+        }
+        for timed in placed.iter() {
+            self.take(timed, t);
         }
     }
 
@@ -395,16 +360,13 @@ impl LiveCue {
         self.window_start = Some(t);
     }
 
-    /// Step the washout to `sample`'s time and hold its motion.
-    fn take(&mut self, sample: VehicleSample, now: f64) {
-        let h = match self.clock.step(sample.t, now) {
+    /// Step the washout to the placed sample's time and hold its motion.
+    fn take(&mut self, timed: &Timed, now: f64) {
+        let h = match timed.step {
             Step::First | Step::Same => 0.0,
             Step::By(h) => h,
-            Step::Stale => {
-                self.counts.malformed.fetch_add(1, Ordering::Relaxed);
-                return;
-            }
         };
+        let sample = timed.sample;
         let motion = VehicleMotion {
             accel: sample.accel,
             rates_deg_s: sample.rates_deg_s,
@@ -416,7 +378,7 @@ impl LiveCue {
             if h > 0.0 {
                 self.cueing.hold(&p.middle_to(&motion));
             }
-            p.sampled(sample.t.unwrap_or(now), motion);
+            p.sampled(timed.t, motion);
         }
         self.pose = self.advance(h);
         self.cueing.hold(&motion);
@@ -451,7 +413,7 @@ impl LiveCue {
             self.counts.stalls.fetch_add(1, Ordering::Relaxed);
             self.cueing.hold(&VehicleMotion::default());
             // The next sample starts a new stretch of the sender's clock.
-            self.clock = SampleClock::default();
+            self.intake.restart();
             if let Some(p) = &mut self.prediction {
                 *p = Prediction::default();
             }

@@ -102,7 +102,7 @@ fn beamng(k: usize) -> Vec<Vec<u8>> {
     let m = moment(k);
     let p = Packet::new(88, b"BNG1")
         .f32(28, &[-m.left, m.forward, 0.0])
-        .f32(64, &[0.0, 0.0, m.yaw_rad]);
+        .f32(64, &[0.0, 0.0, -m.yaw_rad]); // yawRate: positive turning right
     vec![p.0]
 }
 
@@ -117,12 +117,12 @@ fn outsim(k: usize) -> Vec<Vec<u8>> {
     vec![p.0]
 }
 
-/// An X-Plane `RREF` reply: indices 0–5 are g_nrml, g_axil, g_side (g; side positive to
-/// the right) and P, Q, R (°/s; R positive to the right).
+/// An X-Plane `RREF` reply: indices 0–5 are g_nrml, g_axil, g_side (g; axial positive
+/// backwards, side positive to the right) and P, Q, R (°/s; R positive to the right).
 fn xplane(k: usize) -> Vec<Vec<u8>> {
     let m = moment(k);
     let mut p = b"RREF,".to_vec();
-    for (index, value) in [1.0, m.forward_g, -m.left_g, 0.0, 0.0, -m.yaw_deg]
+    for (index, value) in [1.0, -m.forward_g, -m.left_g, 0.0, 0.0, -m.yaw_deg]
         .into_iter()
         .enumerate()
     {
@@ -165,13 +165,18 @@ fn csv(time: impl Fn(usize) -> f64, units: Units) -> String {
 /// A legacy pcap (Ethernet, microseconds) of UDP datagrams to `port`, sample `k`'s sent
 /// at 1000.5 s + k/60 (µs).
 fn pcap(port: u16, datagrams: impl Fn(usize) -> Vec<Vec<u8>>) -> Vec<u8> {
+    pcap_to_ports(|k| datagrams(k).into_iter().map(|d| (port, d)).collect())
+}
+
+/// [`pcap`] of datagrams each to its own port.
+pub(crate) fn pcap_to_ports(datagrams: impl Fn(usize) -> Vec<(u16, Vec<u8>)>) -> Vec<u8> {
     let mut out = Vec::new();
     for word in [0xa1b2_c3d4u32, 0x0004_0002, 0, 0, 65535, 1] {
         out.extend(word.to_le_bytes());
     }
     for k in 0..SAMPLES {
         let usec = 500_000 + (k as u64 * 1_000_000).div_ceil(60);
-        for payload in datagrams(k) {
+        for (port, payload) in datagrams(k) {
             let frame = ethernet_udp(port, &payload);
             out.extend(((1000 + usec / 1_000_000) as u32).to_le_bytes());
             out.extend(((usec % 1_000_000) as u32).to_le_bytes());
@@ -223,10 +228,11 @@ fn every_games_capture_gives_the_poses_of_the_same_motion_as_csv() {
     let game_ms = |offset: u32| move |k: usize| f64::from(offset + ms(k)) / 1000.0;
     let f1_time = |k: usize| f64::from(k as f32 / 60.0);
     let cases: [(&str, u16, Sends, String); 5] = [
-        ("forza", 5300, forza, csv(game_ms(5_000), Units::Si)),
+        // The games' millisecond clocks count from the first datagram (5 s and 90 s here).
+        ("forza", 5300, forza, csv(game_ms(0), Units::Si)),
         ("f1", 20777, f1, csv(f1_time, Units::GRad)),
         ("beamng", 4444, beamng, csv(captured_at, Units::Si)),
-        ("outsim", 4123, outsim, csv(game_ms(90_000), Units::Si)),
+        ("outsim", 4123, outsim, csv(game_ms(0), Units::Si)),
         ("xplane", 49001, xplane, csv(captured_at, Units::GDeg)),
     ];
     for (game, port, datagrams, table) in cases {
@@ -261,7 +267,9 @@ fn a_capture_says_what_it_held_and_one_without_motion_is_refused() {
     ]);
     let said = stderr(&o);
     assert!(
-        said.contains("300 packets, 300 UDP datagrams; 300 Forza Horizon"),
+        said.contains(
+            "300 packets, 300 UDP datagrams; telemetry read from port 5300; 300 Forza Horizon"
+        ),
         "{said}"
     );
     // A capture of F1's other packets only (Car Telemetry, id 6): no motion, refused,
@@ -290,7 +298,7 @@ fn a_capture_says_what_it_held_and_one_without_motion_is_refused() {
         "{}",
         stderr(&o)
     );
-    assert!(stderr(&o).contains("300 F1 24"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("300 F1 24/25"), "{}", stderr(&o));
     assert!(!out.exists());
     // A file that is neither CSV nor a capture's beginning is a CSV error; a damaged
     // capture names the packet and the byte.

@@ -1,6 +1,6 @@
 //! `stewart check`: the pre-flight report.
 
-use crate::{stderr, stdout, stewart, tempdir, write};
+use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
 /// The `paired` preset's text.
 fn paired() -> &'static str {
@@ -177,6 +177,53 @@ fn a_jump_in_a_pose_table_is_found_and_dated() {
         assert_eq!(f["first_time"], 1.0);
         assert_eq!(f["count"], 1);
     }
+}
+
+#[test]
+fn a_pose_table_is_judged_at_its_own_rows() {
+    // Rows a second apart, and one at t = 5.001 s lifted 0.6 m (beyond every leg's stroke):
+    // twelve rows over 10 s, which twelve even times (0, 0.909, …) would step over.
+    let dir = tempdir();
+    let mut csv = String::from("t,x,y,z,roll_deg,pitch_deg,yaw_deg\n");
+    for t in [
+        0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.001, 6.0, 7.0, 8.0, 9.0, 10.0,
+    ] {
+        let z = if t == 5.001 { 1.4 } else { 0.8 };
+        csv.push_str(&format!("{t},0,0,{z},0,0,0\n"));
+    }
+    write(dir.path(), "poses.csv", &csv);
+    let geometry = paired()
+        .split("[trajectory]")
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    let scenario = write(
+        dir.path(),
+        "s.toml",
+        &(geometry + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
+    );
+    let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    let findings = json(&o)["findings"].as_array().cloned().unwrap_or_default();
+    let stroke: Vec<_> = findings
+        .iter()
+        .filter(|f| f["kind"] == "stroke_max")
+        .collect();
+    assert!(!stroke.is_empty(), "{findings:?}");
+    for f in stroke {
+        assert_eq!(f["first_time"], 5.001, "{f}");
+    }
+    // `solve` writes the very rows judged.
+    let o = stewart(&["solve", "--scenario", &scenario]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let (_, rows) = parse_csv(&stdout(&o));
+    let times: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+    assert_eq!(
+        times,
+        [
+            0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 5.001, 6.0, 7.0, 8.0, 9.0, 10.0
+        ]
+    );
 }
 
 #[test]

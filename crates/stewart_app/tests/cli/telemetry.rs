@@ -5,7 +5,7 @@ use std::io::{BufRead as _, BufReader};
 use std::net::UdpSocket;
 use std::process::{Command, Stdio};
 
-use crate::capture::{forza, moment, ms};
+use crate::capture::{forza, moment, ms, pcap_to_ports};
 use crate::{parse_csv, tempdir};
 
 #[test]
@@ -68,10 +68,10 @@ fn a_games_datagrams_are_named_counted_and_written_as_vehicle_motion() {
         "{shown}"
     );
     assert!(
-        rest.contains("61 datagrams, 60 samples of motion kept, 1 unreadable"),
+        rest.contains("61 datagrams, 60 samples of motion kept; 60 Forza Horizon; 1 unreadable"),
         "{rest}"
     );
-    // The CSV: the game's clock, the motion in our axes — what `stewart cue` reads.
+    // The CSV: the game's clock from its first reading, the motion in our axes — what `stewart cue` reads.
     let text = std::fs::read_to_string(&out).unwrap_or_else(|e| panic!("{e}"));
     let (header, rows) = parse_csv(&text);
     assert_eq!(header, ["t", "ax", "ay", "az", "wx", "wy", "wz"]);
@@ -79,7 +79,8 @@ fn a_games_datagrams_are_named_counted_and_written_as_vehicle_motion() {
     for (row, k) in rows.iter().zip(150..) {
         let m = moment(k);
         let expected = [
-            f64::from(5_000 + ms(k)) / 1000.0,
+            // The game's clock, counted from the first datagram heard (sample 150).
+            f64::from(ms(k) - ms(150)) / 1000.0,
             f64::from(m.forward),
             f64::from(m.left),
             0.0,
@@ -89,4 +90,75 @@ fn a_games_datagrams_are_named_counted_and_written_as_vehicle_motion() {
         ];
         assert_eq!(row[..], expected, "sample {k}");
     }
+}
+
+#[test]
+fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
+    // Forza to 5300, and every tenth sample a 64-byte mDNS-like datagram to 5353 (the
+    // length of a Live for Speed OutSim packet, which it must not become).
+    let dir = tempdir();
+    let capture = dir.path().join("session.pcap");
+    let file = pcap_to_ports(|k| {
+        let mut out: Vec<(u16, Vec<u8>)> = forza(k).into_iter().map(|d| (5300, d)).collect();
+        if k % 10 == 0 {
+            out.push((5353, vec![0x11; 64]));
+        }
+        out
+    });
+    std::fs::write(&capture, file).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.path().join("vehicle.csv");
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["telemetry", "--input"])
+        .arg(&capture)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{said}");
+    assert!(said.contains("telemetry from port 5300"), "{said}");
+    assert!(
+        said.contains("not telemetry (other ports, --port chooses): 30 to port 5353"),
+        "{said}"
+    );
+    assert!(
+        said.contains("300 datagrams, 300 samples of motion kept; 300 Forza Horizon"),
+        "{said}"
+    );
+    assert!(!said.contains("OutSim"), "{said}");
+    // A line per second of the capture's own time, as listening prints.
+    let shown = String::from_utf8_lossy(&o.stdout);
+    assert!(shown.lines().count() >= 5, "{shown}");
+    assert!(
+        shown
+            .lines()
+            .next()
+            .is_some_and(|l| l.contains("Forza Horizon 60/s")),
+        "{shown}"
+    );
+    // What it writes, `stewart cue` reads.
+    let (_, rows) = parse_csv(&std::fs::read_to_string(&out).unwrap_or_else(|e| panic!("{e}")));
+    assert_eq!(rows.len(), 300);
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["cue", "--preset", "paired", "--input"])
+        .arg(&out)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // Asked for, the other port is read (as the 64-byte form it happens to have).
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["telemetry", "--port", "5353", "--input"])
+        .arg(&capture)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        said.contains("telemetry from port 5353") && said.contains("30 datagrams,"),
+        "{said}"
+    );
 }

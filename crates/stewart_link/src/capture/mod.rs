@@ -10,8 +10,6 @@
 //! that ends inside a packet (a capture stopped abruptly) gives the packets before it and
 //! says where it ends.
 
-use std::io::Read;
-
 use etherparse::{EtherType, NetSlice, SlicedPacket, TransportSlice};
 use pcap_parser::data::{PacketData, get_packetdata};
 use pcap_parser::{Linktype, PcapBlockOwned, PcapError, create_reader};
@@ -24,6 +22,8 @@ pub struct Datagram {
     pub packet: usize,
     /// When it was captured, seconds since the first packet.
     pub time_s: f64,
+    /// The UDP destination port.
+    pub port: u16,
     /// The UDP payload.
     pub payload: Vec<u8>,
 }
@@ -69,6 +69,12 @@ pub enum CaptureError {
         /// Where the damage starts.
         byte: u64,
     },
+    /// Kuznetzov's "modified" pcap written on a big-endian machine, which is not read.
+    #[error(
+        "a \"modified\" pcap (magic a1b2cd34) in big-endian byte order, which is not read: \
+         save it again as pcapng (Wireshark: File → Save As)"
+    )]
+    BigEndianModified,
     /// The file could not be read.
     #[error("the capture could not be read after packet {packet}")]
     Read {
@@ -77,14 +83,35 @@ pub enum CaptureError {
     },
 }
 
+/// Whether `bytes` begin as a capture does: pcap (microsecond, nanosecond, or Kuznetzov's
+/// "modified" form, in either byte order) or pcapng.
+pub fn is_capture(bytes: &[u8]) -> bool {
+    const MAGICS: [[u8; 4]; 7] = [
+        [0xd4, 0xc3, 0xb2, 0xa1],
+        [0xa1, 0xb2, 0xc3, 0xd4],
+        [0x4d, 0x3c, 0xb2, 0xa1],
+        [0xa1, 0xb2, 0x3c, 0x4d],
+        [0x34, 0xcd, 0xb2, 0xa1],
+        [0xa1, 0xb2, 0xcd, 0x34],
+        [0x0a, 0x0d, 0x0d, 0x0a],
+    ];
+    bytes
+        .get(..4)
+        .is_some_and(|m| MAGICS.iter().any(|k| k == m))
+}
+
 /// The buffer the reader starts with, bytes (grown for a larger packet, up to
 /// [`MAX_BLOCK`]).
 const BUFFER: usize = 1 << 16;
 /// The largest block read, bytes.
 const MAX_BLOCK: usize = 1 << 24;
 
-/// Read the UDP datagrams of the capture `input`.
-pub fn read(input: impl Read + Send) -> Result<Capture, CaptureError> {
+/// Read the UDP datagrams of the capture `input` (a whole file, read beforehand under its
+/// size cap).
+pub fn read(input: &[u8]) -> Result<Capture, CaptureError> {
+    if input.starts_with(&[0xa1, 0xb2, 0xcd, 0x34]) {
+        return Err(CaptureError::BigEndianModified);
+    }
     let mut reader = create_reader(BUFFER, input).map_err(|e| match e {
         PcapError::Eof | PcapError::HeaderNotRecognized => CaptureError::NotACapture,
         PcapError::ReadError => CaptureError::Read { packet: 0 },
@@ -134,12 +161,75 @@ pub fn read(input: impl Read + Send) -> Result<Capture, CaptureError> {
 }
 
 /// A link layer and its clock: the ticks a second of a pcapng interface's timestamps
-/// and its offset, seconds (a legacy file's seconds and fraction are read as they are).
+/// (`if_tsresol`: a power of ten, or of two when its high bit is set) and its offset in
+/// whole seconds (`if_tsoffset`, in the section's byte order); a legacy file's seconds and
+/// fraction are read as they are.
 #[derive(Clone, Copy, Debug)]
 struct Link {
     kind: Linktype,
-    per_second: f64,
-    offset_s: f64,
+    per_second: u64,
+    offset_s: i64,
+}
+
+/// A packet's time: whole seconds and the fraction of the next, kept apart so that a large
+/// offset or tick count costs the times between packets no precision.
+#[derive(Clone, Copy, Debug, Default)]
+struct Stamp {
+    whole: i128,
+    fraction: f64,
+}
+
+impl Stamp {
+    /// `ticks` of `per_second` a second after `offset_s`.
+    fn of(offset_s: i64, ticks: u64, per_second: u64) -> Stamp {
+        Stamp {
+            whole: i128::from(offset_s) + i128::from(ticks / per_second),
+            fraction: (ticks % per_second) as f64 / per_second as f64,
+        }
+    }
+
+    /// Seconds since `start`.
+    fn since(self, start: Stamp) -> f64 {
+        (self.whole - start.whole) as f64 + (self.fraction - start.fraction)
+    }
+}
+
+impl Link {
+    /// A pcapng interface, in a section of the byte order `big_endian`.
+    fn of_interface(
+        idb: &pcap_parser::InterfaceDescriptionBlock<'_>,
+        big_endian: bool,
+    ) -> Option<Link> {
+        let mut per_second = Some(1_000_000u64);
+        let mut offset_s = 0;
+        for option in &idb.options {
+            let value = option.as_bytes().ok()?;
+            match option.code {
+                pcap_parser::OptionCode::IfTsresol => {
+                    let &[resolution] = value else { return None };
+                    let exponent = u32::from(resolution & 0x7f);
+                    per_second = match resolution & 0x80 {
+                        0 => 10u64.checked_pow(exponent),
+                        _ => 2u64.checked_pow(exponent),
+                    };
+                }
+                pcap_parser::OptionCode::IfTsoffset => {
+                    let bytes = <[u8; 8]>::try_from(value).ok()?;
+                    offset_s = match big_endian {
+                        true => i64::from_be_bytes(bytes),
+                        false => i64::from_le_bytes(bytes),
+                    };
+                }
+                _ => {}
+            }
+        }
+        // A resolution beyond 64 bits is damage.
+        Some(Link {
+            kind: idb.linktype,
+            per_second: per_second?,
+            offset_s,
+        })
+    }
 }
 
 /// What reading has gathered: the interfaces described, the first packet's time, the
@@ -147,8 +237,10 @@ struct Link {
 #[derive(Default)]
 struct State {
     links: Vec<Link>,
-    first: Option<f64>,
-    last: f64,
+    /// The current pcapng section's byte order.
+    big_endian: bool,
+    first: Option<Stamp>,
+    last: Stamp,
     capture: Capture,
 }
 
@@ -160,39 +252,39 @@ impl State {
         let (link, time, data, cut) = match block {
             PcapBlockOwned::LegacyHeader(h) => {
                 let per_second = if h.is_nanosecond_precision() {
-                    1e9
+                    1_000_000_000
                 } else {
-                    1e6
+                    1_000_000
                 };
                 self.links = vec![Link {
                     kind: h.network,
                     per_second,
-                    offset_s: 0.0,
+                    offset_s: 0,
                 }];
                 return Some(());
             }
             PcapBlockOwned::Legacy(b) => {
                 let link = *self.links.first()?;
-                let time = f64::from(b.ts_sec) + f64::from(b.ts_usec) / link.per_second;
+                let time = Stamp {
+                    whole: i128::from(b.ts_sec),
+                    fraction: f64::from(b.ts_usec) / link.per_second as f64,
+                };
                 (link, time, b.data, b.caplen < b.origlen)
             }
-            PcapBlockOwned::NG(Block::SectionHeader(_)) => {
-                // A new section describes its interfaces anew.
+            PcapBlockOwned::NG(Block::SectionHeader(shb)) => {
+                // A new section describes its interfaces anew, in its own byte order.
                 self.links.clear();
+                self.big_endian = shb.big_endian();
                 return Some(());
             }
             PcapBlockOwned::NG(Block::InterfaceDescription(idb)) => {
-                self.links.push(Link {
-                    kind: idb.linktype,
-                    per_second: idb.ts_resolution().unwrap_or(1_000_000) as f64,
-                    offset_s: idb.ts_offset() as f64,
-                });
+                self.links.push(Link::of_interface(idb, self.big_endian)?);
                 return Some(());
             }
             PcapBlockOwned::NG(Block::EnhancedPacket(epb)) => {
                 let link = *self.links.get(usize::try_from(epb.if_id).ok()?)?;
                 let ticks = (u64::from(epb.ts_high) << 32) | u64::from(epb.ts_low);
-                let time = link.offset_s + ticks as f64 / link.per_second;
+                let time = Stamp::of(link.offset_s, ticks, link.per_second);
                 (link, time, epb.data, epb.caplen < epb.origlen)
             }
             // A simple packet has no time: it is taken at the previous packet's.
@@ -212,9 +304,10 @@ impl State {
             return Some(());
         }
         match udp_payload(link.kind, data) {
-            Payload::Udp(payload) => capture.datagrams.push(Datagram {
+            Payload::Udp(port, payload) => capture.datagrams.push(Datagram {
                 packet: capture.packets,
-                time_s: time - start,
+                time_s: time.since(start),
+                port,
                 payload: payload.to_vec(),
             }),
             Payload::NotUdp => skipped.not_udp += 1,
@@ -228,7 +321,8 @@ impl State {
 
 /// What a packet carries.
 enum Payload<'a> {
-    Udp(&'a [u8]),
+    /// The destination port and the payload.
+    Udp(u16, &'a [u8]),
     NotUdp,
     Fragment,
     Unreadable,
@@ -246,7 +340,7 @@ fn udp_payload(link: Linktype, data: &[u8]) -> Payload<'_> {
         }
         Some(PacketData::L4(17, datagram)) => {
             return match etherparse::UdpSlice::from_slice(datagram) {
-                Ok(udp) => Payload::Udp(udp.payload()),
+                Ok(udp) => Payload::Udp(udp.destination_port(), udp.payload()),
                 Err(_) => Payload::Unreadable,
             };
         }
@@ -264,7 +358,7 @@ fn udp_payload(link: Linktype, data: &[u8]) -> Payload<'_> {
     };
     match packet.transport {
         _ if fragment => Payload::Fragment,
-        Some(TransportSlice::Udp(udp)) => Payload::Udp(udp.payload()),
+        Some(TransportSlice::Udp(udp)) => Payload::Udp(udp.destination_port(), udp.payload()),
         _ => Payload::NotUdp,
     }
 }

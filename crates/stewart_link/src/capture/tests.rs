@@ -224,3 +224,148 @@ proptest! {
         }
     }
 }
+
+/// A pcapng file in either byte order: one interface (Ethernet) with the resolution byte
+/// `tsresol` (`if_tsresol`: a power of ten, or of two with the high bit set) and the offset
+/// `tsoffset` in seconds (`if_tsoffset`), and `packets` (ticks, frame).
+fn pcapng_clocked(big: bool, tsresol: u8, tsoffset: i64, packets: &[(u64, Vec<u8>)]) -> Vec<u8> {
+    let u16b = |v: u16| {
+        if big {
+            v.to_be_bytes()
+        } else {
+            v.to_le_bytes()
+        }
+    };
+    let u32b = |v: u32| {
+        if big {
+            v.to_be_bytes()
+        } else {
+            v.to_le_bytes()
+        }
+    };
+    let i64b = |v: i64| {
+        if big {
+            v.to_be_bytes()
+        } else {
+            v.to_le_bytes()
+        }
+    };
+    let block = |kind: u32, body: &[u8]| {
+        let padded = body.len().div_ceil(4) * 4;
+        let total = (12 + padded) as u32;
+        let mut out = Vec::new();
+        out.extend(u32b(kind));
+        out.extend(u32b(total));
+        out.extend(body);
+        out.resize(8 + padded, 0);
+        out.extend(u32b(total));
+        out
+    };
+    let mut shb = Vec::new();
+    shb.extend(u32b(0x1a2b_3c4d)); // byte-order magic, in the section's order
+    shb.extend(u16b(1));
+    shb.extend(u16b(0));
+    shb.extend(i64b(-1));
+    let mut out = block(0x0a0d_0d0a, &shb);
+    let mut idb = Vec::new();
+    idb.extend(u16b(1)); // Ethernet
+    idb.extend(u16b(0));
+    idb.extend(u32b(0));
+    idb.extend(u16b(9)); // if_tsresol
+    idb.extend(u16b(1));
+    idb.extend([tsresol, 0, 0, 0]);
+    idb.extend(u16b(14)); // if_tsoffset
+    idb.extend(u16b(8));
+    idb.extend(i64b(tsoffset));
+    idb.extend([0, 0, 0, 0]);
+    out.extend(block(1, &idb));
+    for (ticks, frame) in packets {
+        let mut epb = Vec::new();
+        epb.extend(u32b(0));
+        epb.extend(u32b((ticks >> 32) as u32));
+        epb.extend(u32b(*ticks as u32));
+        epb.extend(u32b(frame.len() as u32));
+        epb.extend(u32b(frame.len() as u32));
+        epb.extend(frame);
+        epb.resize(20 + frame.len().div_ceil(4) * 4, 0);
+        out.extend(block(6, &epb));
+    }
+    out
+}
+
+#[test]
+fn pcapng_clocks_of_powers_of_two_and_offsets_in_either_byte_order_are_read() {
+    // 100 datagrams 10 ms apart, at 2^-20 s a tick (if_tsresol 0x94) after an offset of
+    // 1.7e9 s: the times are 10 ms apart to within a tick, in both byte orders.
+    let tick = 2f64.powi(-20);
+    let packets: Vec<(u64, Vec<u8>)> = (0..100u64)
+        .map(|k| {
+            (
+                ((k as f64 * 0.01) / tick).round() as u64 + 12_345,
+                udp4(b"x", 4444),
+            )
+        })
+        .collect();
+    for big in [false, true] {
+        let file = pcapng_clocked(big, 0x80 | 20, 1_700_000_000, &packets);
+        let c = read(file.as_slice()).unwrap_or_else(|e| panic!("{big}: {e}"));
+        assert_eq!(c.datagrams.len(), 100, "{big}");
+        for (k, d) in c.datagrams.iter().enumerate() {
+            assert!(
+                (d.time_s - k as f64 * 0.01).abs() <= tick,
+                "{big}: {k}: {}",
+                d.time_s
+            );
+            assert_eq!(d.port, 4444);
+        }
+    }
+    // A power of ten (10^-3) and a negative offset, big-endian.
+    let file = pcapng_clocked(true, 3, -5, &[(1000, udp4(b"a", 1)), (1250, udp4(b"b", 1))]);
+    let c = read(file.as_slice()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(c.datagrams[1].time_s, 0.25);
+    // A resolution beyond 64 bits is damage, named.
+    let file = pcapng_clocked(false, 0x80 | 70, 0, &[(1, udp4(b"a", 1))]);
+    assert!(matches!(
+        read(file.as_slice()),
+        Err(CaptureError::Damaged { .. })
+    ));
+}
+
+#[test]
+fn a_modified_pcap_is_a_capture_and_read() {
+    // Kuznetzov's "modified" pcap (magic a1b2cd34): each record header has 8 more bytes
+    // (interface index, protocol, packet type, padding).
+    let mut out = Vec::new();
+    out.extend(0xa1b2_cd34u32.to_le_bytes());
+    out.extend(2u16.to_le_bytes());
+    out.extend(4u16.to_le_bytes());
+    out.extend(0i32.to_le_bytes());
+    out.extend(0u32.to_le_bytes());
+    out.extend(65535u32.to_le_bytes());
+    out.extend(1u32.to_le_bytes());
+    for (usec, payload) in [(0u32, &b"one"[..]), (500_000, b"two")] {
+        let frame = udp4(payload, 4444);
+        out.extend(7u32.to_le_bytes());
+        out.extend(usec.to_le_bytes());
+        out.extend((frame.len() as u32).to_le_bytes());
+        out.extend((frame.len() as u32).to_le_bytes());
+        out.extend([0u8; 8]);
+        out.extend(&frame);
+    }
+    assert!(is_capture(&out));
+    let c = read(out.as_slice()).unwrap_or_else(|e| panic!("{e}"));
+    let got: Vec<(&[u8], f64)> = c
+        .datagrams
+        .iter()
+        .map(|d| (d.payload.as_slice(), d.time_s))
+        .collect();
+    assert_eq!(got, [(&b"one"[..], 0.0), (&b"two"[..], 0.5)]);
+    // In big-endian order it is refused by name.
+    let mut big = out.clone();
+    big[..4].copy_from_slice(&[0xa1, 0xb2, 0xcd, 0x34]);
+    assert!(is_capture(&big));
+    assert!(matches!(
+        read(big.as_slice()),
+        Err(CaptureError::BigEndianModified)
+    ));
+}

@@ -5,14 +5,17 @@
 //! included", m/s², in the car's frame) and `rollRate, pitchRate, yawRate` at 64 (rad/s).
 //! It has no clock (the receiver's is used).
 //!
-//! The page gives the accelerations' frame but not their signs. The studio takes the
-//! motion-simulator convention BeamNG says it follows for the accelerations: `accX` to
-//! the right, `accY` forward, `accZ` up. The script turns the roll and yaw *angles* to that
-//! convention (it negates them) but sends the rates as the vehicle gives them, so the
-//! rates keep the opposite sense for roll and yaw: roll positive with the left side down,
-//! pitch nose up, yaw nose left. In our axes: `ax = accY`, `ay = −accX`, `az = accZ`,
-//! `wx = −roll`, `wy = −pitch`, `wz = yaw`. Check with `stewart telemetry` (accelerating
-//! reads `ax > 0`, a left turn `ay > 0` and `wz > 0`).
+//! The page gives the accelerations' frame but not their signs; the game's own packets
+//! settle them (`tests/real_telemetry.rs` decodes five recorded from the game). Two cars
+//! parked on 52° and 28° slopes read `acc ≈ 0` (gravity is not included); a car in free
+//! fall reads `|acc| ≈ g`. `accX` is to the right, `accY` forward, `accZ` up. A car turning
+//! right at 13.2 m/s reads `accX = +7.41` and `yawRate = +0.598 rad/s` (`ω·v ≈ 7.9 m/s²`):
+//! the yaw rate is positive turning right, nose right, so opposite to ours; braking with the
+//! nose going down reads a negative `pitchRate`, positive nose up. The roll rate is positive
+//! rolling right side down, as ours. In our axes: `ax = accY`, `ay = −accX`, `az = accZ`,
+//! `wx = rollRate`, `wy = −pitchRate`, `wz = −yawRate`, so that in a steady turn
+//! `ay = wz·vx` as in any right-handed frame. Check with `stewart telemetry`
+//! (accelerating reads `ax > 0`, a left turn `ay > 0` and `wz > 0`).
 //!
 //! OutGauge (the dashboard protocol BeamNG and Live for Speed share, 92 bytes or 96 with
 //! an ID) may arrive at the same port: it carries no motion and reads as
@@ -46,6 +49,6 @@ pub(crate) fn motion_sim(bytes: &[u8]) -> Result<Reading, VehicleError> {
     Ok(Reading::Sample(VehicleSample {
         t: None,
         accel: [acc_forward, -acc_right, acc_up],
-        rates_deg_s: [-roll, -pitch, yaw].map(f64::to_degrees),
+        rates_deg_s: [roll, -pitch, -yaw].map(f64::to_degrees),
     }))
 }

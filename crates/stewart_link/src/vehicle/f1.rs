@@ -1,23 +1,27 @@
-//! EA SPORTS F1 24's UDP telemetry (port 20777), from Codemasters' *F1 24 UDP
-//! Specification* (<https://answers.ea.com/t5/General-Discussion/F1-24-UDP-Specification/td-p/13745220>):
-//! little-endian, packed.
+//! EA SPORTS F1 24's and F1 25's UDP telemetry (port 20777), from Codemasters' *F1 24 UDP
+//! Specification* (<https://answers.ea.com/t5/General-Discussion/F1-24-UDP-Specification/td-p/13745220>)
+//! and EA's *F1 25 UDP Specification*: little-endian, packed. The 2025 format keeps the
+//! 2024 one's header, `Motion` and the start of `Motion Ex`, which only grows at its end
+//! (`chassisPitch`, wheel camber and camber gain: 273 bytes); packets logged from both
+//! games (`tests/real_telemetry.rs`) read the same fields at the same offsets.
 //!
-//! Every packet starts with a 29-byte header: `packetFormat` (`u16`, 2024) at 0,
+//! Every packet starts with a 29-byte header: `packetFormat` (`u16`, 2024 or 2025) at 0,
 //! `packetId` (`u8`) at 6, `sessionUID` (`u64`) at 7, `sessionTime` (`f32`, s) at 15,
 //! `frameIdentifier` (`u32`) at 19 and `playerCarIndex` (`u8`) at 27. Two packets are read:
 //!
 //! - `Motion` (id 0, 1349 bytes): 22 cars of 60 bytes from byte 29; the player's car's
 //!   `gForceLateral`, `gForceLongitudinal`, `gForceVertical` (`f32`, g) at 36, 40, 44 of
 //!   its block;
-//! - `Motion Ex` (id 13, 237 bytes, the player's car): `angularVelocityX, Y, Z` (`f32`,
-//!   rad/s) at 173.
+//! - `Motion Ex` (id 13, 237 bytes in 2024, 273 in 2025; the player's car):
+//!   `angularVelocityX, Y, Z` (`f32`, rad/s) at 173.
 //!
 //! The two of one frame (same session and `frameIdentifier`) make one sample, at
 //! `sessionTime`; the first to arrive reads as [`Reading::Ignored`], as do packets of the
 //! other ids. A pair of the frame already made into a sample (the game paused sends its
 //! last frame again and again) reads as [`Reading::Idle`]: the cue fades to neutral, as in
-//! Forza's menus. Packets of another year's format (F1 24 can send 2023's and 2022's) are
-//! refused, naming the year.
+//! Forza's menus, as does a `Motion` whose player car is 255 (no car of the player's: a
+//! spectator). Packets of another year's format (the games can send the two years before
+//! theirs) are refused, naming the year and the game's *UDP Format* setting.
 //!
 //! The specification draws the axes (pitch about X, yaw about Y, roll about Z; the world
 //! right-handed with Y up); with Z the car's forward, X is its left. So
@@ -29,14 +33,18 @@
 use super::fields::{f32_at, u16_at, u32_at, vector_at};
 use super::{Format, GRAVITY, Reading, VehicleError, VehicleSample};
 
-/// The format read.
-pub const PACKET_FORMAT: u16 = 2024;
+/// The formats read: F1 24's and F1 25's.
+pub const PACKET_FORMATS: [u16; 2] = [2024, 2025];
 /// The header's length.
 pub const HEADER_BYTES: usize = 29;
 /// `Motion`'s id and length.
 pub const MOTION: (u8, usize) = (0, 1349);
-/// `Motion Ex`'s id and length.
+/// `Motion Ex`'s id and length in the 2024 format.
 pub const MOTION_EX: (u8, usize) = (13, 237);
+/// `Motion Ex`'s length in the 2025 format.
+pub const MOTION_EX_2025_BYTES: usize = 273;
+/// The player car index of a spectator (no car of the player's).
+const SPECTATOR: u8 = 255;
 /// Cars in a `Motion` packet, and the bytes of each.
 pub const CARS: (u8, usize) = (22, 60);
 
@@ -77,19 +85,23 @@ struct Frame {
 /// One F1 packet.
 pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, VehicleError> {
     let format = u16_at(bytes, 0).unwrap_or(0);
-    if format != PACKET_FORMAT {
+    if !PACKET_FORMATS.contains(&format) {
         return Err(VehicleError::F1Format(format));
     }
     let id = bytes.get(PACKET_ID).copied();
-    let length = |expected| match bytes.len() == expected {
+    let motion_ex_bytes = match format {
+        2024 => MOTION_EX.1,
+        _ => MOTION_EX_2025_BYTES,
+    };
+    let length = |expected: usize| match bytes.len() == expected {
         true => Ok(()),
         false => Err(VehicleError::Length {
             format: Format::F1,
             got: bytes.len(),
-            expected: if expected == MOTION.1 {
-                "1349 for Motion"
-            } else {
-                "237 for Motion Ex"
+            expected: match expected {
+                e if e == MOTION.1 => "1349 for Motion",
+                e if e == MOTION_EX.1 => "237 for Motion Ex (2024 format)",
+                _ => "273 for Motion Ex (2025 format)",
             },
         }),
     };
@@ -104,13 +116,16 @@ pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, Veh
     if id == Some(MOTION.0) {
         length(MOTION.1)?;
         let car = bytes.get(PLAYER_CAR).copied().unwrap_or(u8::MAX);
+        if car == SPECTATOR {
+            return Ok(Reading::Idle);
+        }
         if car >= CARS.0 {
             return Err(VehicleError::F1Car(car));
         }
         let block = HEADER_BYTES + CARS.1 * usize::from(car);
         pairing.motion = Some((frame, vector_at(bytes, block + G_FORCES)));
     } else if id == Some(MOTION_EX.0) {
-        length(MOTION_EX.1)?;
+        length(motion_ex_bytes)?;
         pairing.motion_ex = Some((frame, vector_at(bytes, ANGULAR_VELOCITY)));
     } else {
         return Ok(Reading::Ignored);

@@ -14,7 +14,7 @@
 //! | X-Plane `DATA` | [`xplane`] | `DATA` |
 //! | X-Plane `RREF` replies | [`xplane`] | `RREF` |
 //! | Forza Data Out (Sled, Dash, Horizon, Motorsport 2023) | [`forza`] | 232, 311, 324 or 331 bytes |
-//! | EA SPORTS F1 24 (`Motion` and `Motion Ex`) | [`f1`] | a header whose `packetFormat` is a year |
+//! | EA SPORTS F1 24 and F1 25 (`Motion` and `Motion Ex`) | [`f1`] | a header whose `packetFormat` is a year |
 //! | BeamNG.drive MotionSim | [`beamng`] | `BNG1`, 88 bytes |
 //! | OutGauge (BeamNG, Live for Speed): a dashboard, no motion | [`beamng`] | 92 or 96 bytes |
 //! | Live for Speed OutSim (classic, and `LFST` packs) | [`outsim`] | 64 or 68 bytes; `LFST` |
@@ -27,12 +27,19 @@ pub mod beamng;
 pub mod f1;
 pub mod forza;
 pub mod generic;
+pub mod intake;
 pub mod outsim;
+pub mod replay;
+pub mod timeline;
 pub mod xplane;
 
 mod fields;
 
 use thiserror::Error;
+
+/// The largest |time| of a sample, seconds: the bound of every table's times
+/// (`stewart_kinematics::io::bounds::TIME_S`), so that every sample written reads back.
+pub const MAX_TIME_S: f64 = 1e6;
 
 /// Standard gravity, m/s² (games that give g-loads give them in g).
 pub const GRAVITY: f64 = 9.80665;
@@ -69,7 +76,7 @@ pub enum Format {
     ForzaHorizon,
     /// Forza Motorsport (2023), 331 bytes.
     ForzaMotorsport2023,
-    /// EA SPORTS F1 24's UDP telemetry.
+    /// EA SPORTS F1 24's and F1 25's UDP telemetry.
     F1,
     /// BeamNG.drive's MotionSim (`BNG1`).
     BeamNg,
@@ -99,6 +106,11 @@ impl Format {
         Format::OutSimPack,
     ];
 
+    /// The format's place in [`Format::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
     /// The format's name, as people know it (the same in every language).
     pub fn name(self) -> &'static str {
         match self {
@@ -110,7 +122,7 @@ impl Format {
             Format::ForzaDash => "Forza Motorsport 7 Dash",
             Format::ForzaHorizon => "Forza Horizon",
             Format::ForzaMotorsport2023 => "Forza Motorsport (2023)",
-            Format::F1 => "F1 24",
+            Format::F1 => "F1 24/25",
             Format::BeamNg => "BeamNG MotionSim",
             Format::OutGauge => "OutGauge",
             Format::OutSim => "LFS OutSim",
@@ -150,7 +162,9 @@ pub enum VehicleError {
     #[error("a text datagram must be t,ax,ay,az,wx,wy,wz (seven numbers), got {0}")]
     Text(String),
     /// A number that is NaN or infinite, or beyond any vehicle (`|a| > 1e4 m/s²`,
-    /// `|ω| > 1e5 °/s`, `|t| > 1e9 s`).
+    /// `|ω| > 1e5 °/s`), or a time beyond the studio's tables (`|t| > 1e6 s`, about 11.6
+    /// days: what `stewart cue` reads back; the games' millisecond clocks count from their
+    /// first reading).
     #[error("{name} = {value} is not a finite number within its bounds")]
     Value {
         /// Which column (ours) or field (the format's).
@@ -171,9 +185,12 @@ pub enum VehicleError {
     /// An X-Plane datagram without the values a sample needs.
     #[error("an X-Plane {0} datagram needs {1}")]
     XPlaneMissing(&'static str, &'static str),
-    /// An F1 packet of another year's format (F1 24 can send the 2023 and 2022 ones:
-    /// choose 2024 in its telemetry settings).
-    #[error("an F1 packet of the {0} format: set the game's UDP format to 2024")]
+    /// An F1 packet of another year's format (the games can send the two years before
+    /// theirs: choose the game's own year in its telemetry settings).
+    #[error(
+        "an F1 packet of the {0} format: set the game's UDP Format (Settings → Telemetry \
+         Settings) to 2025 in F1 25 or 2024 in F1 24"
+    )]
     F1Format(u16),
     /// An F1 packet whose player car index is not one of its 22 cars.
     #[error("an F1 packet names car {0} as the player's, of 22")]
@@ -281,7 +298,7 @@ fn checked(reading: Reading) -> Result<Reading, VehicleError> {
     let [ax, ay, az] = sample.accel;
     let [wx, wy, wz] = sample.rates_deg_s;
     let columns = [
-        ("t", sample.t.unwrap_or(0.0), 1e9),
+        ("t", sample.t.unwrap_or(0.0), MAX_TIME_S),
         ("ax", ax, 1e4),
         ("ay", ay, 1e4),
         ("az", az, 1e4),
@@ -297,19 +314,27 @@ fn checked(reading: Reading) -> Result<Reading, VehicleError> {
     Ok(Reading::Sample(sample))
 }
 
-/// A `u32` millisecond clock that wraps to 0 (after 49.7 days), unwrapped into seconds: a
-/// reading near the bottom after one near the top (within a sixteenth of the range of
-/// each end) is the next lap of the counter; any other reading below the last is the
-/// game's clock going back (a restart), kept as it is (the receiver refuses a sample older
-/// than the last), so no stream of readings can add laps faster than the counter does.
+/// A `u32` millisecond clock that wraps to 0 (after 49.7 days), unwrapped and read as
+/// seconds since its first reading: a reading near the bottom after one near the top
+/// (within a sixteenth of the range of each end) is the next lap of the counter; any other
+/// reading below the last is the game's clock going back (a restart), kept as it is (an
+/// earlier time, which the receiver refuses as older than the last), so no stream of
+/// readings can add laps faster than the counter does.
+///
+/// Counting from the first reading keeps the times small whatever the game's clock reads
+/// (Forza's counts from the PC's start: 11.6 days are 1e6 s) and exact: the difference of
+/// two readings is taken in whole milliseconds before it becomes seconds, so a capture
+/// across the counter's wrap gives the very times of the same capture away from it.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct WrappingClock {
     last: Option<u32>,
     laps: u64,
+    /// The first reading, unwrapped, milliseconds.
+    origin: Option<u64>,
 }
 
 impl WrappingClock {
-    /// Seconds since the counter's first zero for the reading `ms`.
+    /// Seconds since the first reading for the reading `ms`.
     pub fn seconds(&mut self, ms: u32) -> f64 {
         const EDGE: u32 = u32::MAX / 16;
         // 200 laps are 27 years: more can only come from readings sent to fool it, and they
@@ -324,7 +349,10 @@ impl WrappingClock {
         }
         self.last = Some(ms);
         let total = (self.laps << 32) + u64::from(ms);
-        total as f64 / 1000.0
+        let origin = *self.origin.get_or_insert(total);
+        // Both below 2^40: the difference is exact, and so is its conversion.
+        let since = total as i64 - origin as i64;
+        since as f64 / 1000.0
     }
 }
 

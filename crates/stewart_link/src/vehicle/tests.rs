@@ -66,9 +66,10 @@ fn the_generic_forms_decode_to_the_same_motion() {
 
 #[test]
 fn x_plane_data_g_loads_and_body_rates_become_our_axes() {
-    // Braking at 0.5 g, 0.2 g to the right, 1.3 g pulling up; rolling right, pitching
-    // up and yawing right at 0.1, 0.2, 0.3 rad/s.
-    let bytes = xplane_datagram([1.3, -0.5, 0.2], [0.2, 0.1, 0.3]);
+    // Braking at 0.5 g (g_axil positive backwards, as `faxil_plug_acf` pushes: +0.5), 0.2 g
+    // to the right (g_side positive to the right, as `fside_plug_acf`), 1.3 g pulling up;
+    // rolling right, pitching up and yawing right at 0.1, 0.2, 0.3 rad/s.
+    let bytes = xplane_datagram([1.3, 0.5, 0.2], [0.2, 0.1, 0.3]);
     assert_eq!(bytes.len(), 5 + 2 * 36);
     let s = decode(&bytes).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.t, None);
@@ -76,6 +77,15 @@ fn x_plane_data_g_loads_and_body_rates_become_our_axes() {
     assert!(close(s.accel, [-0.5 * g, -0.2 * g, 0.3 * g], 1e-5));
     let deg = f64::to_degrees;
     assert!(close(s.rates_deg_s, [deg(0.1), -deg(0.2), -deg(0.3)], 1e-4));
+}
+
+#[test]
+fn an_x_plane_take_off_roll_reads_forwards() {
+    // Accelerating down the runway at 0.3 g: the total force pushes the aircraft forwards,
+    // against `faxil_plug_acf`'s positive (backwards), so g_axil = −0.3; level, 1 g normal.
+    let s = decode(&xplane_datagram([1.0, -0.3, 0.0], [0.0; 3])).unwrap_or_else(|e| panic!("{e}"));
+    assert!((s.accel[0] - 0.3 * GRAVITY).abs() < 1e-5, "{s:?}");
+    assert!(s.accel[1].abs() < 1e-9 && s.accel[2].abs() < 1e-9, "{s:?}");
 }
 
 #[test]
@@ -87,7 +97,7 @@ fn x_plane_rref_replies_give_the_same_motion_as_data() {
         (2, 0.2),
         (9, 123.0),
         (0, 1.3),
-        (1, -0.5),
+        (1, 0.5),
         (5, 0.3f32.to_degrees()),
         (3, 0.1f32.to_degrees()),
         (4, 0.2f32.to_degrees()),
@@ -100,7 +110,7 @@ fn x_plane_rref_replies_give_the_same_motion_as_data() {
     let decoded = d.decode(&reply);
     assert_eq!(decoded.format, Some(Format::XPlaneRref));
     let from_rref = sample_of(&decoded);
-    let from_data = decode(&xplane_datagram([1.3, -0.5, 0.2], [0.2, 0.1, 0.3]))
+    let from_data = decode(&xplane_datagram([1.3, 0.5, 0.2], [0.2, 0.1, 0.3]))
         .unwrap_or_else(|e| panic!("{e}"));
     assert!(close(from_rref.accel, from_data.accel, 1e-5));
     assert!(close(from_rref.rates_deg_s, from_data.rates_deg_s, 1e-4));
@@ -158,7 +168,8 @@ fn forza_packets_of_every_length_give_the_sled_motion_in_our_axes() {
         let decoded = Decoder::new().decode(&p);
         assert_eq!(decoded.format, Some(format));
         let s = sample_of(&decoded);
-        assert_eq!(s.t, Some(1.5));
+        assert_eq!(s.t, Some(0.0)); // the first reading
+
         // x = Z (forward), y = −X (left), z = Y (up).
         assert!(close(s.accel, [-3.0, -1.0, 2.0], 1e-6), "{len}: {s:?}");
         // (wx, wy, wz) = (−ωZ, ωX, −ωY), °/s.
@@ -199,25 +210,52 @@ fn forza_menus_read_as_idle_and_its_clock_unwraps() {
     let mut menus = forza(324, 10, [5.0; 3], [0.0; 3], [0.0; 3]);
     put_u32(&mut menus, 0, 0);
     assert_eq!(d.decode(&menus).reading, Ok(Reading::Idle));
+    // Times count from the first reading, exactly.
     let before = sample_of(&d.decode(&forza(232, u32::MAX - 5, [0.0; 3], [0.0; 3], [0.0; 3])));
+    assert_eq!(before.t, Some(0.0));
     let after = sample_of(&d.decode(&forza(232, 11, [0.0; 3], [0.0; 3], [0.0; 3])));
-    let gap = after.t.unwrap_or(0.0) - before.t.unwrap_or(0.0);
-    assert!((gap - 0.017).abs() < 1e-9, "{gap}");
+    assert_eq!(after.t, Some(0.017));
     // A clock going back a little is not a wrap: the receiver sees an older sample.
     let back = sample_of(&d.decode(&forza(232, 5, [0.0; 3], [0.0; 3], [0.0; 3])));
     assert!(back.t < after.t);
     // Nor is a restart from the middle of the range.
     d.decode(&forza(232, u32::MAX / 2, [0.0; 3], [0.0; 3], [0.0; 3]));
     let restarted = sample_of(&d.decode(&forza(232, 3, [0.0; 3], [0.0; 3], [0.0; 3])));
-    assert!((restarted.t.unwrap_or(0.0) - (4_294_967.296 + 0.003)).abs() < 1e-6);
-    // Readings sent to fool it (top, bottom, top, …) add laps only up to a bound: the
-    // samples stay readable.
+    assert_eq!(restarted.t, Some(0.009));
+    // Readings sent to fool it (top, bottom, top, …) add laps only up to a bound, and a
+    // time beyond the tables' bound is refused by name, never a panic or an infinity.
     for _ in 0..1000 {
         d.decode(&forza(232, u32::MAX, [0.0; 3], [0.0; 3], [0.0; 3]));
         d.decode(&forza(232, 0, [0.0; 3], [0.0; 3], [0.0; 3]));
     }
-    let last = sample_of(&d.decode(&forza(232, 1, [0.0; 3], [0.0; 3], [0.0; 3])));
-    assert!(last.t.is_some_and(|t| t < 1e9), "{last:?}");
+    let last = d.decode(&forza(232, 1, [0.0; 3], [0.0; 3], [0.0; 3]));
+    assert!(
+        matches!(last.reading, Err(VehicleError::Value { name: "t", value }) if value.is_finite()),
+        "{last:?}"
+    );
+}
+
+#[test]
+fn a_forza_clock_near_its_wrap_gives_the_times_of_one_far_from_it() {
+    // The same 16 ms ticks, once from 1 s and once across the counter's wrap: the times
+    // (counted from the first reading) are equal bit for bit.
+    let starts = [1000u32, u32::MAX - 40];
+    let times: Vec<Vec<f64>> = starts
+        .iter()
+        .map(|&start| {
+            let mut d = Decoder::new();
+            (0..10u32)
+                .map(|k| {
+                    let ms = start.wrapping_add(16 * k);
+                    sample_of(&d.decode(&forza(232, ms, [0.0; 3], [0.0; 3], [0.0; 3])))
+                        .t
+                        .unwrap_or(f64::NAN)
+                })
+                .collect()
+        })
+        .collect();
+    assert_eq!(times[0], times[1]);
+    assert_eq!(times[0][9], 0.144);
 }
 
 /// An F1 24 packet: its header (format, id, session, time, frame, player car) and room
@@ -293,6 +331,55 @@ fn f1_motion_and_motion_ex_of_one_frame_make_one_sample() {
 }
 
 #[test]
+fn every_format_has_its_place_in_the_list() {
+    for (k, format) in Format::ALL.iter().enumerate() {
+        assert_eq!(format.index(), k);
+    }
+}
+
+#[test]
+fn f1_25_packets_pair_as_f1_24_ones_and_a_spectator_is_idle() {
+    let year = |mut p: Vec<u8>| {
+        p[..2].copy_from_slice(&2025u16.to_le_bytes());
+        p
+    };
+    let mut d = Decoder::new();
+    let motion = year(f1_motion(3.0, 9, [0.5, -1.2, 0.1]));
+    let mut ex = year(f1_motion_ex(3.0, 9, [0.01, 0.2, -0.05]));
+    // The 2025 Motion Ex is 273 bytes; the 2024 length is refused in the 2025 format.
+    assert!(matches!(
+        d.decode(&ex).reading,
+        Err(VehicleError::Length { got: 237, .. })
+    ));
+    ex.resize(273, 0);
+    assert_eq!(d.decode(&motion).reading, Ok(Reading::Ignored));
+    let s = sample_of(&d.decode(&ex));
+    assert!(
+        close(
+            s.accel,
+            [-1.2 * GRAVITY, 0.5 * GRAVITY, 0.1 * GRAVITY],
+            1e-5
+        ),
+        "{s:?}"
+    );
+    let mut spectating = year(f1_motion(3.1, 10, [0.0; 3]));
+    spectating[27] = 255;
+    assert_eq!(d.decode(&spectating).reading, Ok(Reading::Idle));
+    // Another year names the setting to change.
+    let old = f1(1349, 2023, 0, 1.0, 1, 0);
+    let said = d
+        .decode(&old)
+        .reading
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        said.contains("UDP Format") && said.contains("2025"),
+        "{said}"
+    );
+}
+
+#[test]
 fn f1_packets_of_other_years_lengths_or_cars_are_refused() {
     let mut d = Decoder::new();
     let old = f1(1349, 2023, 0, 1.0, 1, 0);
@@ -330,7 +417,7 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
     assert_eq!(s.t, None);
     assert!(close(s.accel, [-4.0, -1.5, 0.25], 1e-6), "{s:?}");
     let deg = f64::to_degrees;
-    assert!(close(s.rates_deg_s, [-deg(0.1), -deg(0.2), deg(0.3)], 1e-4));
+    assert!(close(s.rates_deg_s, [deg(0.1), -deg(0.2), -deg(0.3)], 1e-4));
     assert!(matches!(
         d.decode(&p[..87]).reading,
         Err(VehicleError::Length {
@@ -372,7 +459,7 @@ fn outsim_world_vectors_are_turned_into_the_car() {
         };
         assert_eq!(decoded.format, Some(format), "{len}");
         let s = sample_of(&decoded);
-        assert_eq!(s.t, Some(4.321));
+        assert_eq!(s.t, Some(0.0)); // the first reading of its clock
         assert!(close(s.accel, [2.0, 1.0, 0.0], 1e-6), "{len}: {s:?}");
         assert!(close(s.rates_deg_s, [0.0, 0.0, 0.3f64.to_degrees()], 1e-4));
     }

@@ -14,8 +14,20 @@
 //!   and `P`, `Q`, `R` (°/s).
 //!
 //! X-Plane's body axes are x forward, y right, z down; ours are x forward, y left, z up.
-//! So `ax = g·axial`, `ay = −g·side`, `az = g·(normal − 1)` (level flight reads 1 g normal:
-//! no acceleration), and the rates are `wx = P`, `wy = −Q`, `wz = −R`. Neither form has a
+//! The g-loads' signs are those of the aircraft's force axes in Laminar's `DataRefs.txt`
+//! (<https://developer.x-plane.com/datarefs/>; X-Plane 10.41's copy at
+//! <http://www.xsquawkbox.net/xpsdk/docs/DataRefs.txt>): `g_axil`, `g_side` and `g_nrml`
+//! are "total g-forces on the plane as a multiple" along the plane, sideways and downward
+//! (their own lines give no sign), measured along the axes of `faxil_plug_acf` ("ACF Z
+//! axis, positive pushes airplane backward"), `fside_plug_acf` ("ACF X axis, positive
+//! pushes airplane to the right") and `fnrml_plug_acf` ("ACF Y axis, positive pushes
+//! airplane up"). So a take-off roll reads `g_axil < 0`, a push to the right `g_side > 0`,
+//! and level flight `g_nrml = 1`. Independent plugins read them the same way: px4xplane
+//! (`src/MAVLinkManager.cpp`: `x = -g_axil, y = +g_side` forward-right-down, checked
+//! against recorded flights), MatrixPilot's HILSIM (`Tools/HILSIM_XPlane/HILSIM.cpp`) and
+//! the Mdx motion platform's telemetry plugin (`-g_axil` surge, `-g_side` sway). In ours:
+//! `ax = −g·axial`, `ay = −g·side`, `az = g·(normal − 1)` (level flight: no acceleration),
+//! and the rates are `wx = P`, `wy = −Q`, `wz = −R`. Neither form has a
 //! time (the receiver's clock is used). A datagram without every value is refused.
 
 use super::fields::{f32_at, i32_at};
@@ -131,7 +143,7 @@ pub(crate) fn rref(bytes: &[u8]) -> Result<Reading, VehicleError> {
 fn ours([normal, axial, side]: [f64; 3], [p, q, r]: [f64; 3]) -> Reading {
     Reading::Sample(VehicleSample {
         t: None,
-        accel: [GRAVITY * axial, -GRAVITY * side, GRAVITY * (normal - 1.0)],
+        accel: [-GRAVITY * axial, -GRAVITY * side, GRAVITY * (normal - 1.0)],
         rates_deg_s: [p, -q, -r],
     })
 }

@@ -36,7 +36,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         Ok((bytes, name.to_owned()))
     })?;
     let recording = if vehicle_capture::is_capture(&bytes) {
-        Recording::Capture(vehicle_capture::read(&bytes, &file)?)
+        Recording::Capture(Box::new(vehicle_capture::read(&bytes, &file, args.port)?))
     } else {
         Recording::Table(vehicle_table::read(&mut bytes.as_slice(), &file)?)
     };
@@ -89,7 +89,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
 /// The vehicle motion read: a CSV table or a packet capture.
 enum Recording {
     Table(VehicleTable),
-    Capture(CapturedMotion),
+    Capture(Box<CapturedMotion>),
 }
 
 impl Recording {

@@ -74,7 +74,7 @@ impl Derived {
             }
         };
         let g = &scenario.geometry;
-        self.times = (0..m).map(|i| sampling.time(index(i))).collect();
+        self.times = (0..m).map(|i| scenario.motion.time(index(i))).collect();
         let poses: Vec<_> = self
             .times
             .iter()

@@ -672,7 +672,7 @@ impl ViewerState {
     /// `aspect`, with the workspace when it is shown.
     fn frame_presented(&mut self, aspect: f32) {
         let before = self.look.camera;
-        let times: Vec<f64> = self.doc.scenario().motion.sampling.times().collect();
+        let times: Vec<f64> = self.doc.scenario().motion.times().collect();
         let overlays = stewart_render::Overlays {
             platform_axes: self.look.platform_axes,
             ..stewart_render::Overlays::default()

@@ -173,7 +173,7 @@ impl Cueing {
         };
         let fits = |s: f64| {
             let pose = pose_at(&self.geometry, self.arm, &cue, s * fade);
-            workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
+            workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose)
         };
         let s = limiter.scale_for(h, fits);
         pose_at(&self.geometry, self.arm, &cue, s * fade)
@@ -199,7 +199,7 @@ impl Cueing {
         let mut limiter = limiter.clone();
         let fits = |s: f64| {
             let pose = pose_at(&self.geometry, self.arm, &cue, s * fade);
-            workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
+            workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose)
         };
         let s = limiter.scale_for(h, fits);
         pose_at(&self.geometry, self.arm, &cue, s * fade)

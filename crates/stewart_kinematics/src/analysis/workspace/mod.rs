@@ -408,6 +408,15 @@ pub fn pose_within_limits(geometry: &Geometry, limits: &Limits, pose: &Pose) -> 
         && limits.pose_allowed(pose, &solution)
 }
 
+/// [`pose_within_limits`] both of the pose and of the pose its table row gives back
+/// (`Pose::from_row(&pose.to_row())`, degrees rounded to radians): what a command that
+/// writes poses for `check` to read must keep, so that the pose judged is the pose read,
+/// bit for bit.
+pub fn pose_within_limits_as_written(geometry: &Geometry, limits: &Limits, pose: &Pose) -> bool {
+    pose_within_limits(geometry, limits, pose)
+        && pose_within_limits(geometry, limits, &Pose::from_row(&pose.to_row()))
+}
+
 /// The platform-centre positions reachable at orientation `[roll, pitch, yaw]`, on an
 /// `resolution × resolution` grid of columns (see the module docs).
 pub fn constant_orientation_workspace(

@@ -928,11 +928,53 @@ fn read_pose_table(
         .map_err(|e| src.err(Some(path.span()), e))
 }
 
+/// Sampled at the keys' own times; a table of one moment is refused as evenly sampled ones are.
+fn keys_sampling(
+    src: &Source,
+    t: &TrajectoryFile,
+    keys: &Keyframes,
+) -> Result<Sampling, ScenarioError> {
+    Sampling::at_keys(keys).map_err(|_| {
+        let (span, key, what) = match &t.file {
+            Some(file) => (Some(file.span()), "trajectory.file", "holds a single moment in time (one row, or every row at the same time): add a row at another time, or give `duration_s` to hold the pose that long"),
+            None => (t.keys.as_ref().map(Spanned::span), "trajectory.keys", "hold a single moment in time: add a key at another time, or give `duration_s` to hold the pose that long"),
+        };
+        src.invalid(span, key, what)
+    })
+}
+
 fn build_sampling(
     src: &Source,
     t: &TrajectoryFile,
     trajectory: &Trajectory,
 ) -> Result<Sampling, ScenarioError> {
+    // Keyframed motions may be sampled at their keys' own times: a table is by default
+    // (every row judged and played as it is), keys when `at_keys = true` says so.
+    let given = t.start_s.is_some() || t.duration_s.is_some() || t.samples.is_some();
+    let at_keys = t.at_keys.as_ref().map(|v| (*v.get_ref(), v.span()));
+    match (trajectory, at_keys) {
+        (Trajectory::Keyframes(keys), Some((true, span))) => {
+            if given {
+                return Err(src.invalid(
+                    Some(span),
+                    "trajectory.at_keys",
+                    "samples at the keys' own times: leave out start_s, duration_s and samples (or set at_keys = false)",
+                ));
+            }
+            return keys_sampling(src, t, keys);
+        }
+        (Trajectory::Keyframes(keys), None) if t.file.is_some() && !given => {
+            return keys_sampling(src, t, keys);
+        }
+        (Trajectory::Keyframes(_), _) | (_, None | Some((false, _))) => {}
+        (_, Some((true, span))) => {
+            return Err(src.invalid(
+                Some(span),
+                "trajectory.at_keys",
+                "applies to keyframes and pose tables only",
+            ));
+        }
+    }
     // Keyframed motions default to their own time span and, for tables, their row count.
     let (default_start, default_duration, default_samples) = match trajectory {
         Trajectory::Keyframes(k) => {

@@ -175,6 +175,9 @@ pub(crate) struct TrajectoryFile {
     pub duration_s: Option<Spanned<f64>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub samples: Option<Spanned<i64>>,
+    /// Keyframes and pose tables: sampled at the keys' own times (a table's default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub at_keys: Option<Spanned<bool>>,
     // Sinusoid channels.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub x: Option<Spanned<LinearChannelFile>>,

@@ -89,11 +89,17 @@ fn actuator_table(actuator: &Actuator) -> Option<Spanned<ActuatorFile>> {
 /// The `[trajectory]` table: the sampling and the kind's own keys.
 fn trajectory_table(motion: &Motion) -> TrajectoryFile {
     let sampling = motion.sampling;
-    let mut t = TrajectoryFile {
-        start_s: (sampling.start() != 0.0).then(|| s(sampling.start())),
-        duration_s: Some(s(sampling.duration())),
-        samples: Some(s(sampling.len() as i64)),
-        ..TrajectoryFile::default()
+    let mut t = match sampling.is_at_keys() {
+        true => TrajectoryFile {
+            at_keys: Some(s(true)),
+            ..TrajectoryFile::default()
+        },
+        false => TrajectoryFile {
+            start_s: (sampling.start() != 0.0).then(|| s(sampling.start())),
+            duration_s: Some(s(sampling.duration())),
+            samples: Some(s(sampling.len() as i64)),
+            ..TrajectoryFile::default()
+        },
     };
     let kind = match &motion.trajectory {
         Trajectory::Sinusoid(c) => {

@@ -84,12 +84,18 @@ pub enum SamplingError {
 }
 
 /// Evenly spaced sample times over `[start, start + duration]`, both ends included
-/// (MATLAB's `linspace(start, start + duration, samples)`).
+/// (MATLAB's `linspace(start, start + duration, samples)`), or, for a keyframed motion
+/// such as a pose table, its keys' own times ([`Sampling::at_keys`]: what `check` judges
+/// is then exactly what every command plays, row for row).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Sampling {
     start: f64,
     duration: f64,
     samples: usize,
+    /// Sampled at the keys' own times (`start`, `duration` and `samples` are then the
+    /// keys' span and count).
+    #[serde(default)]
+    at_keys: bool,
 }
 
 /// Most samples a sampling may ask for (about 80 MB of poses); protects against typos.
@@ -101,6 +107,7 @@ impl Sampling {
         start: 0.0,
         duration: 10.0,
         samples: 1001,
+        at_keys: false,
     };
 
     /// `samples` times from 0 to `duration` seconds.
@@ -128,7 +135,24 @@ impl Sampling {
             start,
             duration,
             samples: samples as usize,
+            at_keys: false,
         })
+    }
+
+    /// Sampled at the times of `keys` themselves (a pose table's rows): the first is the
+    /// start, the last the end.
+    pub fn at_keys(keys: &Keyframes) -> Result<Self, SamplingError> {
+        let (first, last) = keys.time_span();
+        let n = keys.keys().len().max(2) as u64;
+        Ok(Self {
+            at_keys: true,
+            ..Self::with_start(first, last - first, n)?
+        })
+    }
+
+    /// Whether the samples are the keys' own times.
+    pub const fn is_at_keys(&self) -> bool {
+        self.at_keys
     }
 
     /// Number of samples.
@@ -186,9 +210,28 @@ impl Motion {
         }
     }
 
+    /// Time of sample `k` (0-based): the `k`-th key's when the motion is sampled at its
+    /// keys, else the sampling's even time.
+    pub fn time(&self, k: usize) -> f64 {
+        match &self.trajectory {
+            Trajectory::Keyframes(keys) if self.sampling.is_at_keys() => {
+                let keys = keys.keys();
+                keys.get(k)
+                    .or(keys.last())
+                    .map_or(self.sampling.start(), |key| key.t)
+            }
+            _ => self.sampling.time(k),
+        }
+    }
+
+    /// All sample times.
+    pub fn times(&self) -> impl ExactSizeIterator<Item = f64> + '_ {
+        (0..self.sampling.len()).map(|k| self.time(k))
+    }
+
     /// Sample times and poses.
     pub fn sample(&self) -> Samples {
-        let times: Vec<f64> = self.sampling.times().collect();
+        let times: Vec<f64> = self.times().collect();
         let poses = times.iter().map(|&t| self.trajectory.pose_at(t)).collect();
         Samples { times, poses }
     }

@@ -105,18 +105,15 @@ impl PoseTable {
 
 impl PoseTable {
     /// The table as a motion, as `kind = "pose_table"` makes it: the rows joined by straight
-    /// lines, sampled once per row over the table's own time span.
+    /// lines, sampled at the rows' own times.
     pub fn to_motion(&self, file: &str) -> Result<Motion, TableError> {
         let keyframes = self.to_keyframes(file, Interpolation::Linear)?;
-        let (first, last) = keyframes.time_span();
-        let rows = keyframes.keys().len().max(2) as u64;
-        let sampling =
-            Sampling::with_start(first, last - first, rows).map_err(|e| TableError::BadValue {
-                file: file.to_owned(),
-                line: self.lines.first().copied().unwrap_or(1),
-                column: "t".to_owned(),
-                message: e.to_string(),
-            })?;
+        let sampling = Sampling::at_keys(&keyframes).map_err(|e| TableError::BadValue {
+            file: file.to_owned(),
+            line: self.lines.first().copied().unwrap_or(1),
+            column: "t".to_owned(),
+            message: e.to_string(),
+        })?;
         Ok(Motion {
             trajectory: Trajectory::Keyframes(keyframes),
             sampling,
@@ -168,9 +165,9 @@ mod tests {
         let text = "t,x,y,z,roll_deg,pitch_deg,yaw_deg\n2,0,0,1,0,0,0\n3,0.1,0,1,5,0,0\n5,0,0.2,1.1,0,0,-10\n";
         let table = PoseTable::read(text.as_bytes(), "p.csv").unwrap_or_else(|e| panic!("{e}"));
         let motion = table.to_motion("p.csv").unwrap_or_else(|e| panic!("{e}"));
-        let times: Vec<f64> = motion.sampling.times().collect();
-        assert_eq!(times.len(), 3);
-        assert_eq!((times[0], times[2]), (2.0, 5.0));
+        let times: Vec<f64> = motion.times().collect();
+        // The rows' own times, not three even ones (2, 3.5, 5).
+        assert_eq!(times, vec![2.0, 3.0, 5.0]);
         for (t, pose) in [2.0, 3.0, 5.0].iter().zip(&table.poses) {
             let at = motion.trajectory.pose_at(*t);
             assert!((at.position - pose.position).norm() < 1e-12);

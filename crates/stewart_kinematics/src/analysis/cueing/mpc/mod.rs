@@ -351,7 +351,7 @@ impl Mpc {
         }
         let pose = pose_of(&self.geometry, self.arm, &self.s);
         if self.s.iter().chain(&self.v).all(|x| x.is_finite())
-            && workspace::pose_within_limits(&self.geometry, &self.limits, &pose)
+            && workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose)
         {
             self.last_good = self.s;
             return pose;
@@ -371,7 +371,7 @@ impl Mpc {
     pub fn preview(&self, h: f64) -> Pose {
         let (s, _, _) = self.integrate(self.s, self.v, self.plan_age, h.max(0.0));
         let pose = pose_of(&self.geometry, self.arm, &s);
-        if workspace::pose_within_limits(&self.geometry, &self.limits, &pose) {
+        if workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose) {
             pose
         } else {
             pose_of(&self.geometry, self.arm, &self.last_good)
