@@ -18,13 +18,24 @@ pub(crate) fn load(args: &ScenarioArgs) -> Result<Scenario> {
     Ok(scenario)
 }
 
-/// The files a command reads through these arguments, with the words that name them
-/// (an output may not be one of them).
-pub(crate) fn inputs(args: &ScenarioArgs) -> Vec<(&'static str, &std::path::Path)> {
-    args.scenario
-        .iter()
-        .map(|p| ("the scenario file", p.as_path()))
-        .collect()
+/// The files a command reads through these arguments, with the words that name them (an
+/// output may never be one of them): the scenario file, and every file the scenario itself
+/// read or draws — its pose table, its CAD parts (named from its folder).
+pub(crate) fn inputs(
+    args: &ScenarioArgs,
+    scenario: &Scenario,
+) -> Vec<(&'static str, std::path::PathBuf)> {
+    let mut out: Vec<(&'static str, std::path::PathBuf)> = (args.scenario.iter())
+        .map(|p| ("the scenario file", p.clone()))
+        .collect();
+    out.extend((scenario.files_read.iter()).map(|p| ("the scenario's pose table", p.clone())));
+    let folder = crate::parts::folder_of(args);
+    for part in stewart_kinematics::model::appearance::Part::ALL {
+        if let Some(look) = scenario.appearance.part(part) {
+            out.push(("one of the scenario's CAD parts", folder.join(&look.file)));
+        }
+    }
+    out
 }
 
 /// The scenario the arguments name, in words for messages: its file as given, or

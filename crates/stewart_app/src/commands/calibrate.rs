@@ -25,10 +25,10 @@ const LARGE_CHANGE: f64 = 0.1;
 
 /// Run the command.
 pub(crate) fn run(args: &CalibrateArgs) -> Result<ExitCode> {
-    let mut inputs = source::inputs(&args.scenario);
-    inputs.push(("the measurements", &args.measurements));
-    let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
+    let mut inputs = source::inputs(&args.scenario, &scenario);
+    inputs.push(("the measurements", args.measurements.clone()));
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let quantity = scenario.geometry.quantity();
     let commanded_columns = quantity.columns;
     let required: Vec<&str> = POSE_COLUMNS

@@ -11,8 +11,9 @@ use crate::source;
 
 /// Run the command.
 pub(crate) fn run(args: &FirmwareArgs) -> Result<ExitCode> {
-    let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
+    let inputs = source::inputs(&args.scenario, &scenario);
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let text = firmware::header(&scenario);
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     Ok(ExitCode::SUCCESS)

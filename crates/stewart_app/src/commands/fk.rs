@@ -25,10 +25,10 @@ const SOLVER_OUT: [&str; 2] = ["iterations", "residual"];
 
 /// Run the command.
 pub(crate) fn run(args: &FkArgs) -> Result<ExitCode> {
-    let mut inputs = source::inputs(&args.scenario);
-    inputs.push(("the table", &args.legs));
-    let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
+    let mut inputs = source::inputs(&args.scenario, &scenario);
+    inputs.push(("the table", args.legs.clone()));
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     // Each kind has its own forward solver.
     match scenario.geometry.actuator() {
         Actuator::Rotary(_) => return servos(args, &scenario, out.as_ref()),

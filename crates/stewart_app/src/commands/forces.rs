@@ -16,8 +16,11 @@ use crate::source;
 
 /// Run the command.
 pub(crate) fn run(args: &ForcesArgs) -> Result<ExitCode> {
-    let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
     let scenario = source::load(&args.scenario)?;
+    let out = output::destination(
+        args.out.as_deref(),
+        &source::inputs(&args.scenario, &scenario),
+    )?;
     let g = &scenario.geometry;
     let base = scenario.payload;
     let mass = args.mass.or(base.map(|p| p.mass)).ok_or_else(|| {

@@ -12,9 +12,9 @@ use crate::source;
 
 /// Run the command.
 pub(crate) fn run(args: &PlotArgs) -> Result<ExitCode> {
-    let out = output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
-    out.require_file()?;
     let scenario = source::load(&args.scenario)?;
+    let out = output::Destination::new(&args.out, &source::inputs(&args.scenario, &scenario))?;
+    out.require_file()?;
     let lang = crate::i18n::for_command(args.lang, "plot");
     let bytes = plot_file(&scenario, &args.out, lang, args.forces)?;
     out.write_bytes(&bytes)?;

@@ -26,8 +26,11 @@ fn animation(
         coloured_legs: !args.single_colour,
         parts,
     };
-    let report =
-        crate::export::gltf::export_gltf(scenario, &request, &source::inputs(&args.scenario))?;
+    let report = crate::export::gltf::export_gltf(
+        scenario,
+        &request,
+        &source::inputs(&args.scenario, scenario),
+    )?;
     let _ = writeln!(
         std::io::stderr(),
         "Wrote a glTF animation of {} keys for {} moving parts to {} ({}) in {:.2} s.",
@@ -42,9 +45,10 @@ fn animation(
 
 /// Run the command.
 pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
-    // The output is never one of the inputs (a scenario file named `x.gif`, say).
-    crate::output::Destination::new(&args.out, &source::inputs(&args.scenario))?;
+    // The output is never one of the inputs (a scenario file named `x.gif`, its pose table,
+    // one of its CAD parts).
     let scenario = source::load(&args.scenario)?;
+    crate::output::Destination::new(&args.out, &source::inputs(&args.scenario, &scenario))?;
     let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario))?;
     if crate::export::gltf::is_gltf(&args.out) {
         return animation(args, &scenario, parts);

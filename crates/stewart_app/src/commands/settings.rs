@@ -13,8 +13,9 @@ use crate::{output, source};
 /// Run the command.
 pub(crate) fn run(args: &SettingsArgs) -> Result<ExitCode> {
     if args.as_coordinates {
-        let out = output::destination(args.out.as_deref(), &source::inputs(&args.scenario))?;
         let scenario = source::load(&args.scenario)?;
+        let inputs = source::inputs(&args.scenario, &scenario);
+        let out = output::destination(args.out.as_deref(), &inputs)?;
         let text = scenario.as_coordinates().to_toml();
         output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
         return Ok(ExitCode::SUCCESS);

@@ -15,12 +15,12 @@ use crate::source;
 
 /// Run the command.
 pub(crate) fn run(args: &SolveArgs) -> Result<ExitCode> {
-    let mut inputs = source::inputs(&args.scenario);
+    let scenario = source::load(&args.scenario)?;
+    let mut inputs = source::inputs(&args.scenario, &scenario);
     if let Some(p) = &args.poses {
-        inputs.push(("the pose table", p));
+        inputs.push(("the pose table", p.clone()));
     }
     let out = output::destination(args.out.as_deref(), &inputs)?;
-    let scenario = source::load(&args.scenario)?;
     let (table, file) = match &args.poses {
         Some(path) => read_input(path, |r, name| {
             Ok((PoseTable::read(r, name)?, Some(name.to_owned())))

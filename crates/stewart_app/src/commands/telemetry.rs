@@ -36,8 +36,13 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
     if let Some(input) = &args.input {
         inputs.push(("the capture", input.as_path()));
     }
-    // Checked before listening: a session is never recorded only to be refused.
+    // Checked before listening: a session is never recorded only to be refused (a folder,
+    // an input, a folder that cannot take a file).
     let out = output::destination(args.out.as_deref(), &inputs)?;
+    if let Some(out) = &out {
+        out.require_file()?;
+        drop(out.staged_file(".check")?);
+    }
     let mut heard = Heard {
         keep: out.is_some(),
         ..Heard::default()

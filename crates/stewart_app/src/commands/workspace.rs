@@ -25,7 +25,8 @@ use crate::source;
 
 /// Run the command.
 pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
-    let inputs = source::inputs(&args.scenario);
+    let scenario = source::load(&args.scenario)?;
+    let inputs = source::inputs(&args.scenario, &scenario);
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let plot_out = match &args.plot {
         Some(path) => {
@@ -50,7 +51,6 @@ pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         }
         None => None,
     };
-    let scenario = source::load(&args.scenario)?;
     let g = &scenario.geometry;
     let orientation = args.orientation.map(Angle::from_degrees);
     let ws = compute(

@@ -43,7 +43,7 @@ impl Target {
     pub(crate) fn destination(&self) -> Result<Destination> {
         match self {
             Target::Folder(out) => {
-                let dest = Destination::new(out, &[])?;
+                let dest = Destination::new(out, crate::output::NO_INPUTS)?;
                 match dest.kind() {
                     Kind::Folder => {
                         let empty = std::fs::read_dir(dest.real())
@@ -69,7 +69,7 @@ impl Target {
                 Ok(dest)
             }
             Target::Gif(out) | Target::Mp4(out) => {
-                let dest = Destination::new(out, &[])?;
+                let dest = Destination::new(out, crate::output::NO_INPUTS)?;
                 dest.require_file()?;
                 Ok(dest)
             }

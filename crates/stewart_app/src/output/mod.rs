@@ -29,6 +29,9 @@ pub(crate) enum Kind {
     Special,
 }
 
+/// No inputs: for an output that no file the command reads could be.
+pub(crate) const NO_INPUTS: &[(&str, &Path)] = &[];
+
 /// An output path, checked before any work is done.
 #[derive(Clone, Debug)]
 pub(crate) struct Destination {
@@ -101,16 +104,18 @@ impl Destination {
     /// Check `path` as an output of a command whose inputs are `inputs` (each with the
     /// words that name it, such as `("the scenario", path)`): the output may not be one
     /// of them. Standard input (`-`) is never a file.
-    pub(crate) fn new(path: &Path, inputs: &[(&str, &Path)]) -> Result<Self> {
+    pub(crate) fn new(path: &Path, inputs: &[(&str, impl AsRef<Path>)]) -> Result<Self> {
         let real = resolve_links(path)?;
         let meta = std::fs::metadata(&real).ok();
         if let Some(meta) = &meta {
             for (what, input) in inputs {
+                let input = input.as_ref();
                 if input.as_os_str() != "-" && kind_of(meta) == Kind::File && same_file(meta, input)
                 {
                     bail!(
-                        "refusing to write `{}`: it is {what} this command reads; choose another output file",
-                        path.display()
+                        "refusing to write `{}`: it is {what} this command reads (`{}`); choose another output file",
+                        path.display(),
+                        input.display()
                     );
                 }
             }
@@ -264,7 +269,7 @@ impl<W: Write> Write for StopOnSignal<W> {
 /// Write `bytes` to `path` whole or not at all (see [`Destination`]); the path may not
 /// be an input (the caller checks that with [`Destination::new`] where there are inputs).
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> Result<()> {
-    Destination::new(path, &[])?.write_bytes(bytes)
+    Destination::new(path, NO_INPUTS)?.write_bytes(bytes)
 }
 
 /// Give a staged file or folder the usual permissions (temporary files are private).
@@ -315,7 +320,7 @@ pub(crate) fn emit_with(
 /// Check an optional `--out` path against the command's inputs.
 pub(crate) fn destination(
     path: Option<&Path>,
-    inputs: &[(&str, &Path)],
+    inputs: &[(&str, impl AsRef<Path>)],
 ) -> Result<Option<Destination>> {
     path.map(|p| Destination::new(p, inputs)).transpose()
 }

@@ -45,12 +45,13 @@ fn an_input_is_never_an_output() {
 #[test]
 fn devices_are_written_not_replaced() {
     let null = Path::new("/dev/null");
-    let d = Destination::new(null, &[]).unwrap_or_else(|e| panic!("{e}"));
+    let d = Destination::new(null, NO_INPUTS).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(d.kind(), Kind::Special);
     d.write_bytes(b"anything").unwrap_or_else(|e| panic!("{e}"));
     let m = std::fs::metadata(null).unwrap_or_else(|e| panic!("{e}"));
     assert!(!m.is_file(), "/dev/null is still a device");
-    let full = Destination::new(Path::new("/dev/full"), &[]).unwrap_or_else(|e| panic!("{e}"));
+    let full =
+        Destination::new(Path::new("/dev/full"), NO_INPUTS).unwrap_or_else(|e| panic!("{e}"));
     let e = full.write_bytes(&[0; 100_000]).unwrap_err();
     assert!(
         format!("{e:#}").starts_with("cannot write `/dev/full`: "),
@@ -62,7 +63,7 @@ fn devices_are_written_not_replaced() {
 fn a_failed_write_leaves_nothing() {
     let dir = tmp();
     let out = dir.path().join("out.csv");
-    let d = Destination::new(&out, &[]).unwrap_or_else(|e| panic!("{e}"));
+    let d = Destination::new(&out, NO_INPUTS).unwrap_or_else(|e| panic!("{e}"));
     let e = d
         .write_with(|w| {
             w.write_all(b"half")?;

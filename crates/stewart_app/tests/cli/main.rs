@@ -16,6 +16,7 @@ mod export;
 mod firmware;
 mod fk;
 mod framing;
+mod gates;
 mod link;
 mod rotary;
 mod serial;

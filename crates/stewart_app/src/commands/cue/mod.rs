@@ -27,10 +27,10 @@ const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "y
 
 /// Run the command.
 pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
-    let mut inputs = source::inputs(&args.scenario);
-    inputs.push(("the vehicle motion", &args.input));
-    let out = output::destination(args.out.as_deref(), &inputs)?;
     let scenario = source::load(&args.scenario)?;
+    let mut inputs = source::inputs(&args.scenario, &scenario);
+    inputs.push(("the vehicle motion", args.input.clone()));
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let (bytes, file) = read_input(&args.input, |r, name| {
         let bytes = read_capped(r, MAX_TABLE_BYTES).map_err(|e| anyhow!("{name} {e}"))?;
         Ok((bytes, name.to_owned()))

@@ -51,7 +51,7 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
     {
         bail!("--min {min} is above --max {max}: no value could be accepted");
     }
-    let out = output::destination(args.out.as_deref(), &[])?;
+    let out = output::destination(args.out.as_deref(), output::NO_INPUTS)?;
     let mut input = Input::open(args)?;
     let _ = writeln!(std::io::stderr(), "device-sim: listening on {}", input.name);
     let started = Instant::now();

@@ -31,6 +31,17 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     let mut scenario = source::load(&args.scenario)?;
     scenario.link = settings(&scenario.link, args)?;
     let plan = LinkPlan::new(&scenario)?;
+    // The outputs checked before anything listens, opens or sends: never a file the
+    // scenario reads, never a folder.
+    let inputs = source::inputs(&args.scenario, &scenario);
+    for path in [args.out.as_deref(), args.record.as_deref()]
+        .into_iter()
+        .flatten()
+    {
+        if path.as_os_str() != "-" {
+            output::Destination::new(path, &inputs)?.require_file()?;
+        }
+    }
     // Live vehicle motion, when asked: listening before anything is opened or sent.
     let mut live = args
         .cue
@@ -40,7 +51,7 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     if let (Some(live), Some(xplane)) = (live.as_mut(), args.xplane.as_deref()) {
         live.subscribe_xplane(RrefSubscription::new(xplane, scenario.link.rate_hz)?);
     }
-    let (transport, staged) = open_transport(&plan, args)?;
+    let (transport, staged) = open_transport(&plan, args, &inputs)?;
     let stream_for = match (args.duration, args.repeat || live.is_some()) {
         (Some(d), _) => Some(d),
         (None, false) => Some(plan.span.1),
@@ -48,7 +59,7 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     };
     let described = transport.describe();
     let mut config = plan.sender_config(true, stream_for);
-    let recorder = start_recorder(args, &plan, &mut config)?;
+    let recorder = start_recorder(args, &plan, &mut config, &inputs)?;
     let (target, cue_counts) = match live {
         Some(live) => {
             let counts = live.counts();
@@ -131,11 +142,12 @@ fn start_recorder(
     args: &LinkArgs,
     plan: &LinkPlan,
     config: &mut SenderConfig,
+    inputs: &[(&'static str, std::path::PathBuf)],
 ) -> Result<Option<record::Recorder>> {
     let Some(path) = args.record.as_deref() else {
         return Ok(None);
     };
-    let mut inputs = source::inputs(&args.scenario);
+    let mut inputs = inputs.to_vec();
     if let Some(out) = args.out.as_deref() {
         // Also when neither exists yet: the two records would overwrite each other.
         let same = |p: &std::path::Path| std::path::absolute(p).ok();
@@ -145,7 +157,7 @@ fn start_recorder(
                 path.display()
             );
         }
-        inputs.push(("the dry run's record", out));
+        inputs.push(("the dry run's record", out.to_path_buf()));
     }
     let destination = output::destination(Some(path), &inputs)?
         .ok_or_else(|| anyhow!("--record needs a file name"))?;
@@ -379,7 +391,11 @@ type Staged = Option<(output::Destination, tempfile::TempPath)>;
 
 /// The transport the settings ask for (and, for a dry run into a regular file, the staged
 /// file to deliver at the end).
-fn open_transport(plan: &LinkPlan, args: &LinkArgs) -> Result<(Box<dyn Transport>, Staged)> {
+fn open_transport(
+    plan: &LinkPlan,
+    args: &LinkArgs,
+    inputs: &[(&'static str, std::path::PathBuf)],
+) -> Result<(Box<dyn Transport>, Staged)> {
     if plan.settings.transport != LinkTransport::File {
         if args.out.is_some() {
             bail!(
@@ -402,8 +418,7 @@ fn open_transport(plan: &LinkPlan, args: &LinkArgs) -> Result<(Box<dyn Transport
             _ => Box::new(Record::new(out, name)),
         }
     }
-    let inputs = source::inputs(&args.scenario);
-    let Some(destination) = output::destination(args.out.as_deref(), &inputs)? else {
+    let Some(destination) = output::destination(args.out.as_deref(), inputs)? else {
         let stdout = QuietPipe(std::io::stdout());
         return Ok((record(plan, stdout, "standard output".to_owned()), None));
     };

@@ -126,7 +126,7 @@ fn names(rotary: bool) -> Vec<String> {
 pub(crate) fn export_gltf(
     scenario: &Scenario,
     request: &GltfRequest,
-    inputs: &[(&str, &Path)],
+    inputs: &[(&str, impl AsRef<Path>)],
 ) -> Result<GltfReport> {
     let started = Instant::now();
     let glb = crate::output::extension(&request.out).as_deref() == Some("glb");

@@ -76,7 +76,7 @@ fn export(scenario: &Scenario, out: &Path) -> super::GltfReport {
         coloured_legs: true,
         parts: PartSet::none(),
     };
-    export_gltf(scenario, &request, &[]).unwrap_or_else(|e| panic!("{e:#}"))
+    export_gltf(scenario, &request, crate::output::NO_INPUTS).unwrap_or_else(|e| panic!("{e:#}"))
 }
 
 #[test]

@@ -181,7 +181,8 @@ fn run(
             Ok(lang.fmt("export.wrote_plot", &[("path", &path.display())]))
         }
         ExportWork::Gltf(request) => {
-            let report = crate::export::gltf::export_gltf(scenario, request, &[])?;
+            let report =
+                crate::export::gltf::export_gltf(scenario, request, crate::output::NO_INPUTS)?;
             Ok(lang.fmt(
                 "export.wrote_gltf",
                 &[
@@ -194,7 +195,8 @@ fn run(
         ExportWork::Csv(path) => {
             let table = trajectory_table(scenario);
             let solved = solve_table(&scenario.geometry, &table, |k| trajectory_place(&table, k))?;
-            Destination::new(path, &[])?.write_with(|w| write_solved_csv(w, &table, &solved))?;
+            Destination::new(path, crate::output::NO_INPUTS)?
+                .write_with(|w| write_solved_csv(w, &table, &solved))?;
             Ok(lang.fmt(
                 "export.wrote_csv",
                 &[

@@ -208,7 +208,7 @@ pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), Vi
     // viewer from remembering) is written as it is; a FIFO is not: at exit it would wait
     // for a reader for ever.
     let path = file_in(folder);
-    let destination = crate::output::Destination::new(&path, &[])
+    let destination = crate::output::Destination::new(&path, crate::output::NO_INPUTS)
         .map_err(|e| ViewerError::Export(Arc::new(e)))?;
     let real = destination.real();
     if destination.kind() != crate::output::Kind::File {
@@ -226,8 +226,11 @@ pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), Vi
     let mut staged =
         tempfile::NamedTempFile::new_in(crate::output::parent_of(real)).map_err(fail)?;
     std::io::Write::write_all(&mut staged, text.as_bytes()).map_err(fail)?;
-    staged.persist(real).map_err(|e| fail(e.error))?;
-    Ok(())
+    // Renamed over the old file keeping its permissions (a new one readable by all), as
+    // every output is.
+    destination
+        .deliver(staged.into_temp_path())
+        .map_err(|e| ViewerError::Export(Arc::new(e)))
 }
 
 /// Whether `meta` is a character device (`/dev/null`).
@@ -257,6 +260,33 @@ pub(crate) fn forget(folder: &std::path::Path) -> Result<(), ViewerError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[cfg(unix)]
+    fn saving_keeps_the_files_permissions() {
+        use std::os::unix::fs::PermissionsExt as _;
+        let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+        let session = Session::capture(
+            &Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
+            "seed",
+            &Look::new(OrbitCamera::seed_view(glam::Vec3::ZERO, 1.0)),
+            [1280, 720],
+            None,
+        );
+        let mode = |p: &std::path::Path| {
+            std::fs::metadata(p).map_or(0, |m| m.permissions().mode() & 0o777)
+        };
+        // A new file: readable by all, as every output.
+        save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(mode(&file_in(dir.path())), 0o644);
+        // An existing file keeps its own.
+        for kept in [0o640, 0o604] {
+            std::fs::set_permissions(file_in(dir.path()), std::fs::Permissions::from_mode(kept))
+                .unwrap_or_else(|e| panic!("{e}"));
+            save(dir.path(), &session).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(mode(&file_in(dir.path())), kept);
+        }
+    }
 
     #[test]
     #[cfg(unix)]

@@ -151,6 +151,9 @@ pub(crate) fn parse(
         cueing,
         dynamics,
         appearance,
+        files_read: pose_table_path(parsed.trajectory.as_ref().map(Spanned::get_ref), base_dir)
+            .into_iter()
+            .collect(),
     };
     Ok(scenario)
 }
@@ -903,17 +906,32 @@ fn build_keyframes(
     })
 }
 
+/// The path of the pose table `[trajectory] file` names, as it is opened (relative to the
+/// scenario's folder).
+fn table_path(path: &str, base_dir: Option<&Path>) -> std::path::PathBuf {
+    let relative = Path::new(path);
+    match base_dir {
+        Some(dir) if relative.is_relative() => dir.join(relative),
+        _ => relative.to_path_buf(),
+    }
+}
+
+/// The pose table a `[trajectory]` table reads, if it reads one.
+fn pose_table_path(
+    t: Option<&TrajectoryFile>,
+    base_dir: Option<&Path>,
+) -> Option<std::path::PathBuf> {
+    let file = t?.file.as_ref()?;
+    Some(table_path(file.get_ref(), base_dir))
+}
+
 fn read_pose_table(
     src: &Source,
     path: &Spanned<String>,
     base_dir: Option<&Path>,
     interpolation: Interpolation,
 ) -> Result<Keyframes, ScenarioError> {
-    let relative = Path::new(path.get_ref());
-    let full = match base_dir {
-        Some(dir) if relative.is_relative() => dir.join(relative),
-        _ => relative.to_path_buf(),
-    };
+    let full = table_path(path.get_ref(), base_dir);
     let name = full.display().to_string();
     let reader = std::fs::File::open(&full).map_err(|e| {
         src.invalid(

@@ -85,6 +85,9 @@ pub struct Scenario {
     /// Mesh files drawn for the base, the platform and the actuators' parts
     /// (`[appearance]`).
     pub appearance: AppearanceSettings,
+    /// The other files its text named and its loader read (its pose table), as opened:
+    /// a command may never write one of them.
+    pub files_read: Vec<std::path::PathBuf>,
 }
 
 impl Scenario {
@@ -103,6 +106,7 @@ impl Scenario {
             cueing: CueingSettings::default(),
             dynamics: DynamicsSettings::default(),
             appearance: AppearanceSettings::default(),
+            files_read: Vec::new(),
         }
     }
 
