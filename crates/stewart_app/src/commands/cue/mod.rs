@@ -79,6 +79,18 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let text = csv.into_string();
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     let mut said = summary(samples, &cued.scales);
+    if let Some(p) = cued.planner.filter(|p| p.guarded + p.guard_stops > 0) {
+        said.push_str(&format!(
+            "cue: the planner's plan left the actuators' range, speed or acceleration limits at {} poses: the actuator guard held them within{}\n",
+            p.guarded + p.guard_stops,
+            match p.guard_stops {
+                0 => String::new(),
+                n => format!(
+                    " ({n} of them by giving the last pose again, as no pose near the plan kept every other limit)"
+                ),
+            }
+        ));
+    }
     if let Recording::Capture(c) = &recording {
         said.push_str(&format!("cue: read from {file}: {}\n", c.contents()));
     }

@@ -4,6 +4,7 @@
 //! the occupant's head (the `[cueing]` reference point: the platform turns about it).
 
 pub mod compare;
+pub mod guard;
 mod limiter;
 mod lti;
 pub mod mpc;
@@ -327,6 +328,9 @@ pub fn cue_recording(
     samples: &[(f64, VehicleMotion)],
 ) -> Result<CuedRecording, CueError> {
     let mut cueing = Cueing::new(geometry, limits, settings)?;
+    // The planner promises the actuators' limits as `check` measures them: kept after it.
+    let mut guard = (settings.algorithm == CueingAlgorithm::Mpc)
+        .then(|| guard::ActuatorGuard::new(geometry, limits, settings.mpc_margin));
     let mut poses = Vec::with_capacity(samples.len());
     let mut scales = Vec::with_capacity(samples.len());
     let mut cues = Vec::with_capacity(samples.len());
@@ -344,7 +348,10 @@ pub fn cue_recording(
             }
             None => 0.0,
         };
-        let pose = cueing.advance(h);
+        let mut pose = cueing.advance(h);
+        if let Some(guard) = &mut guard {
+            pose = guard.pass(*t, pose);
+        }
         if let Err((column, why)) = crate::io::bounds::check_pose_row(&pose.to_row()) {
             return Err(CueError::PoseOutside {
                 index,
@@ -372,11 +379,18 @@ pub fn cue_recording(
         }
         previous = Some(*t);
     }
+    let planner = cueing.mpc_counts().map(|mut counts| {
+        if let Some(g) = &guard {
+            counts.guarded = g.held as u64;
+            counts.guard_stops = g.stopped as u64;
+        }
+        counts
+    });
     Ok(CuedRecording {
         poses,
         scales,
         cues,
-        planner: cueing.mpc_counts(),
+        planner,
     })
 }
 

@@ -59,6 +59,13 @@ pub struct MpcCounts {
     pub active: usize,
     /// Planning elsewhere: solve instants whose plan had not come (the last went on).
     pub late: u64,
+    /// Poses of a recording the actuator guard replaced to keep the actuators' range,
+    /// speed and acceleration limits where the plan's linearisation did not
+    /// ([`super::guard`]).
+    pub guarded: u64,
+    /// Poses of a recording for which the guard found no allowed pose (the last was
+    /// given again).
+    pub guard_stops: u64,
 }
 
 /// The planner and its state.

@@ -187,6 +187,11 @@ impl Rig {
                 if lo == f64::NEG_INFINITY && hi == f64::INFINITY {
                     continue;
                 }
+                // A value already inside the margin (the exact motion left the
+                // linearisation, or the platform was stopped there) may stay where it is
+                // or come back, never go further: the programme stays feasible and the
+                // planner recovers instead of holding the platform for ever.
+                let (lo, hi) = (lo.min(lin.values[i]), hi.max(lin.values[i]));
                 let row = c.push(lo - here, hi - here);
                 for (axis, m) in slope.iter().enumerate() {
                     layout.add_quantity(row, Quantity::EndPosition, k, axis, *m);
