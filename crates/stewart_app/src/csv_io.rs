@@ -4,7 +4,8 @@
 use std::io::{Read, Write};
 use std::path::Path;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
+use stewart_kinematics::io::file::{FileKind, read_file};
 
 /// Open `path` for reading (`-` is standard input) and give `read` the reader and the
 /// name to use in messages.
@@ -16,8 +17,10 @@ pub(crate) fn read_input<T>(
         return read(&mut std::io::stdin().lock(), "standard input");
     }
     let name = path.display().to_string();
-    let mut file = std::fs::File::open(path).with_context(|| format!("cannot read `{name}`"))?;
-    read(&mut file, &name)
+    // The gate: a regular file only, within the tables' cap (a FIFO or device refused
+    // by name instead of waited on or read for ever).
+    let bytes = read_file(path, FileKind::Table)?;
+    read(&mut bytes.as_slice(), &name)
 }
 
 /// A CSV text being built: a header, then rows of numbers.

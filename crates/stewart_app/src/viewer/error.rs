@@ -45,6 +45,13 @@ pub(crate) enum ViewerError {
     /// Not a regular file (a folder, a FIFO, a device): the viewer neither reads nor
     /// writes it.
     NotRegularFile(PathBuf),
+    /// A file larger than its kind's cap (MiB).
+    FileTooLarge {
+        /// The file.
+        path: PathBuf,
+        /// The cap, MiB.
+        cap_mib: u64,
+    },
     /// A file of a kind the viewer does not open.
     UnknownKind(PathBuf),
     /// What went wrong, in the file named (a pose table, a vehicle recording).
@@ -194,6 +201,10 @@ impl ViewerError {
             E::NotRegularFile(path) => {
                 lang.fmt("errors.not_regular_file", &[("path", &path.display())])
             }
+            E::FileTooLarge { path, cap_mib } => lang.fmt(
+                "errors.file_too_large",
+                &[("path", &path.display()), ("cap", cap_mib)],
+            ),
             E::UnknownKind(path) => lang.fmt("files.unknown_kind", &[("path", &path.display())]),
             E::InFile { file, error } => lang.fmt(
                 "errors.in_file",
@@ -300,6 +311,18 @@ impl std::fmt::Display for ViewerError {
 /// The words already say the reason below (the system's, the core's), so `source()` is
 /// none: a chain printed with `{:#}` would say it twice.
 impl std::error::Error for ViewerError {}
+
+/// A file the gate refused (`stewart_kinematics::io::file`), in the viewer's words.
+impl From<stewart_kinematics::io::file::FileError> for ViewerError {
+    fn from(e: stewart_kinematics::io::file::FileError) -> Self {
+        use stewart_kinematics::io::file::FileError;
+        match e {
+            FileError::NotRegular { path, .. } => Self::NotRegularFile(path),
+            FileError::Io { path, source } => Self::io(path, Doing::Read, source),
+            FileError::TooLarge { path, cap_mib, .. } => Self::FileTooLarge { path, cap_mib },
+        }
+    }
+}
 
 /// `From` for the errors of the crates below that an edit or a tool passes on with `?`.
 macro_rules! from_below {

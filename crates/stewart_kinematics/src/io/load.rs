@@ -33,10 +33,8 @@ impl Scenario {
             column: None,
             problem: Box::new(ScenarioProblem::Unreadable(message)),
         };
-        let file =
-            std::fs::File::open(path).map_err(|e| unreadable(format!("cannot be read ({e})")))?;
-        let bytes = crate::io::text::read_capped(file, crate::io::text::MAX_SCENARIO_BYTES)
-            .map_err(unreadable)?;
+        let bytes = crate::io::file::read_file(path, crate::io::file::FileKind::Scenario)
+            .map_err(|e| unreadable(gate_words(&e)))?;
         let text = crate::io::text::decode(bytes).map_err(unreadable)?;
         Self::from_toml_str(&text, &name, path.parent())
     }
@@ -53,5 +51,17 @@ impl Scenario {
             }),
         })?;
         Self::from_toml_str(text, &format!("preset `{name}`"), None)
+    }
+}
+
+/// A gate refusal in the words a scenario error puts after the file's name.
+fn gate_words(e: &crate::io::file::FileError) -> String {
+    use crate::io::file::FileError;
+    match e {
+        FileError::Io { source, .. } => format!("cannot be read ({source})"),
+        FileError::NotRegular { what, .. } => format!("is {what}, not a file"),
+        FileError::TooLarge { cap_mib, .. } => {
+            format!("is larger than {cap_mib} MiB, the most this program reads from such a file")
+        }
     }
 }

@@ -13,6 +13,8 @@ use super::{CadError, Location, Piece, finite};
 use crate::gpu_types::MeshVertex;
 use crate::mesh::Mesh;
 
+use stewart_kinematics::io::file::{FileKind, read_file};
+
 fn malformed(path: &Path, at: Option<String>, reason: String) -> CadError {
     CadError::Malformed {
         path: path.to_owned(),
@@ -88,12 +90,8 @@ fn buffers(path: &Path, gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, CadError> {
             }
             gltf::buffer::Source::Uri(uri) => {
                 let file = folder.join(percent_decode(uri));
-                std::fs::read(&file).map_err(|e| {
-                    malformed(
-                        path,
-                        at(),
-                        format!("its data file {} cannot be read: {e}", file.display()),
-                    )
+                read_file(&file, FileKind::MeshSidecar).map_err(|e| {
+                    malformed(path, at(), format!("its data file cannot be read: {e}"))
                 })?
             }
         };
@@ -165,13 +163,20 @@ fn primitive_piece(
     let positions = primitive
         .get(&Semantic::Positions)
         .ok_or_else(|| malformed(path, at(), "has no vertex positions".into()))?;
-    accessor_fits(path, &positions, &[DataType::F32], Dimensions::Vec3)?;
+    accessor_fits(
+        path,
+        buffers,
+        &positions,
+        &[DataType::F32],
+        Dimensions::Vec3,
+    )?;
     if let Some(normals) = primitive.get(&Semantic::Normals) {
-        accessor_fits(path, &normals, &[DataType::F32], Dimensions::Vec3)?;
+        accessor_fits(path, buffers, &normals, &[DataType::F32], Dimensions::Vec3)?;
     }
     if let Some(indices) = primitive.indices() {
         accessor_fits(
             path,
+            buffers,
             &indices,
             &[DataType::U8, DataType::U16, DataType::U32],
             Dimensions::Scalar,
@@ -256,10 +261,12 @@ fn primitive_piece(
     }))
 }
 
-/// Refuse an accessor of another type than the attribute needs, of no elements, or
-/// reaching past its buffer view (the reader would otherwise fail inside).
+/// Refuse an accessor of another type than the attribute needs, of no elements, reaching
+/// past its buffer view, or whose view has a stride that cannot hold its elements or
+/// reaches past its buffer (the reader would otherwise fail, or panic, inside).
 fn accessor_fits(
     path: &Path,
+    buffers: &[Vec<u8>],
     accessor: &gltf::Accessor,
     types: &[gltf::accessor::DataType],
     dimensions: gltf::accessor::Dimensions,
@@ -292,7 +299,38 @@ fn accessor_fits(
         return Err(malformed(path, at(), "has no buffer view".into()));
     };
     let size = accessor.size();
-    let stride = view.stride().unwrap_or(size).max(size);
+    // A stride must hold an element, keep its components aligned and stay within the
+    // 4 … 252 bytes glTF allows (the reader would otherwise slice out of bounds).
+    let component = accessor.data_type().size();
+    if let Some(stride) = view.stride()
+        && (stride < size || stride % component != 0 || !(4..=252).contains(&stride))
+    {
+        return Err(malformed(
+            path,
+            Some(format!("bufferViews[{}]", view.index())),
+            format!(
+                "has a byteStride of {stride}, where an element of {size} bytes needs a multiple of {component} from {} to 252",
+                size.max(4)
+            ),
+        ));
+    }
+    let stride = view.stride().unwrap_or(size);
+    let in_buffer = buffers.get(view.buffer().index()).is_some_and(|b| {
+        view.offset()
+            .checked_add(view.length())
+            .is_some_and(|end| end <= b.len())
+    });
+    if !in_buffer {
+        return Err(malformed(
+            path,
+            Some(format!("bufferViews[{}]", view.index())),
+            format!(
+                "reaches past its buffer ({} bytes from byte {})",
+                view.length(),
+                view.offset()
+            ),
+        ));
+    }
     let end = (accessor.count() - 1)
         .checked_mul(stride)
         .and_then(|n| n.checked_add(size))

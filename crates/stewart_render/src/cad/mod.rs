@@ -24,6 +24,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use glam::Vec3;
+use stewart_kinematics::io::file::{FileError, FileKind};
 use thiserror::Error;
 
 use crate::mesh::Mesh;
@@ -111,6 +112,14 @@ pub enum CadError {
         /// The system's reason.
         source: std::io::Error,
     },
+    /// Not read: not a regular file (a folder, FIFO, device), or larger than a part may be.
+    #[error("{reason}")]
+    Refused {
+        /// The file.
+        path: PathBuf,
+        /// Why, naming the file.
+        reason: String,
+    },
     /// Neither its name nor its first bytes say STL, OBJ or glTF.
     #[error("{}: not a mesh file this studio reads (STL, OBJ, glTF or GLB, told by the name's ending)", path.display())]
     UnknownFormat {
@@ -174,10 +183,17 @@ pub fn load(path: &Path) -> Result<PartMesh, CadError> {
     let format = Format::of(path).ok_or_else(|| CadError::UnknownFormat {
         path: path.to_owned(),
     })?;
-    let bytes = std::fs::read(path).map_err(|source| CadError::Io {
-        path: path.to_owned(),
-        source,
-    })?;
+    let bytes =
+        stewart_kinematics::io::file::read_file(path, FileKind::Mesh).map_err(|e| match e {
+            FileError::Io { source, .. } => CadError::Io {
+                path: path.to_owned(),
+                source,
+            },
+            refused => CadError::Refused {
+                path: path.to_owned(),
+                reason: refused.to_string(),
+            },
+        })?;
     let pieces = match format {
         Format::Stl => stl::read(path, &bytes)?,
         Format::Obj => obj::read(path, &bytes)?,

@@ -6,6 +6,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use glam::Vec3;
+use stewart_kinematics::io::file::{FileKind, read_file};
 
 use super::normals::FlatMesh;
 use super::{CadError, Location, Piece, finite};
@@ -35,7 +36,11 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
     };
     let (models, materials) =
         tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
-            tobj::load_mtl(folder.join(mtl))
+            // Through the gate: a regular file within the cap (`mtllib /dev/zero` would
+            // otherwise be read until memory runs out).
+            let file = read_file(&folder.join(mtl), FileKind::MeshSidecar)
+                .map_err(|_| tobj::LoadError::OpenFileFailed)?;
+            tobj::load_mtl_buf(&mut std::io::Cursor::new(file))
         })
         .map_err(|e| fault(format!("not a readable OBJ file ({e})")))?;
     // No MTL file, or one that cannot be read: the parts take the studio's colours.

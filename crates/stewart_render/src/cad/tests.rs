@@ -374,3 +374,58 @@ fn a_heavy_part_whose_small_piece_vanishes_keeps_no_empty_piece() {
     assert!(light.pieces.iter().all(|p| !p.mesh.indices.is_empty()));
     assert!(light.triangles <= 200);
 }
+
+#[test]
+fn a_stride_that_cannot_hold_its_elements_and_files_that_are_not_files_are_refused() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let good = r#"[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]"#;
+    let one = r#"[{"mesh":0}]"#;
+    // byteStride 5 (and 8, too small for a VEC3 of floats): refused at the view, not a
+    // panic inside the reader.
+    for stride in [5, 8, 13] {
+        let text = tiny_gltf(good, one, "[0]").replace(
+            r#""bufferViews":[{"buffer":0,"byteLength":36}]"#,
+            &format!(r#""bufferViews":[{{"buffer":0,"byteLength":36,"byteStride":{stride}}}]"#),
+        );
+        let e = error(&write(
+            dir.path(),
+            &format!("s{stride}.gltf"),
+            text.as_bytes(),
+        ));
+        assert!(
+            e.contains("bufferViews[0]") && e.contains("byteStride"),
+            "{stride}: {e}"
+        );
+    }
+    // A view reaching past its buffer.
+    let text = tiny_gltf(good, one, "[0]").replace(
+        r#""bufferViews":[{"buffer":0,"byteLength":36}]"#,
+        r#""bufferViews":[{"buffer":0,"byteOffset":8,"byteLength":36}]"#,
+    );
+    let e = error(&write(dir.path(), "past.gltf", text.as_bytes()));
+    assert!(e.contains("bufferViews[0]"), "{e}");
+    #[cfg(unix)]
+    {
+        // `mtllib /dev/zero`: the material file is refused (the part takes the studio's
+        // colours), never read until memory runs out.
+        let obj = write(
+            dir.path(),
+            "zero.obj",
+            b"mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+        );
+        let part = load(&obj).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(part.triangles, 1);
+        // A folder or a FIFO named as a part: refused at once, by name.
+        let folder = dir.path().join("folder.stl");
+        std::fs::create_dir(&folder).unwrap_or_else(|e| panic!("{e}"));
+        assert!(error(&folder).contains("is a folder"), "{}", error(&folder));
+        let fifo = dir.path().join("pipe.glb");
+        if std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .is_ok_and(|s| s.success())
+        {
+            assert!(error(&fifo).contains("FIFO"), "{}", error(&fifo));
+        }
+    }
+}

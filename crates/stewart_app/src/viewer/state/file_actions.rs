@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use stewart_kinematics::Scenario;
+use stewart_kinematics::io::file::{FileKind, read_file};
 use stewart_kinematics::io::settings::Group;
 use stewart_kinematics::model::appearance::{MeshScale, Part, PartLook};
 use stewart_kinematics::model::trajectory::PoseTable;
@@ -62,22 +63,17 @@ impl ViewerState {
     pub(crate) fn open_pose_table(&mut self, path: &Path) {
         let full = absolute(path);
         let name = full.display().to_string();
-        // The header line alone tells (the file is read whole once, by whichever reader).
-        let header = regular_file(&full).ok().and_then(|()| {
-            use std::io::BufRead as _;
-            let mut line = String::new();
-            let file = std::fs::File::open(&full).ok()?;
-            std::io::BufReader::new(file).read_line(&mut line).ok()?;
-            Some(line)
+        // Read once through the gate; the header line tells which reader parses it.
+        let bytes = read_file(&full, FileKind::Table);
+        let header = bytes.as_ref().ok().map(|b| {
+            String::from_utf8_lossy(b.split(|c| *c == b'\n').next().unwrap_or(&[])).into_owned()
         });
         if header.is_some_and(|h| crate::vehicle_table::is_vehicle_header(&h)) {
             self.open_vehicle(&full);
             return;
         }
-        let motion = regular_file(&full).and_then(|()| {
-            let file =
-                std::fs::File::open(&full).map_err(|e| ViewerError::io(&full, Doing::Read, e))?;
-            let table = PoseTable::read(file, &name)?;
+        let motion = bytes.map_err(ViewerError::from).and_then(|bytes| {
+            let table = PoseTable::read(bytes.as_slice(), &name)?;
             Ok(table.to_motion(&name)?)
         });
         let lang = self.look.lang;
@@ -112,10 +108,10 @@ impl ViewerState {
     pub(crate) fn open_vehicle(&mut self, full: &Path) {
         let name = full.display().to_string();
         let lang = self.look.lang;
-        let read = std::fs::File::open(full)
-            .map_err(|e| ViewerError::io(full, Doing::Read, e))
-            .and_then(|mut file| {
-                crate::vehicle_table::read(&mut file, &name)
+        let read = read_file(full, FileKind::Table)
+            .map_err(ViewerError::from)
+            .and_then(|bytes| {
+                crate::vehicle_table::read(&mut bytes.as_slice(), &name)
                     .map_err(|e| ViewerError::VehicleTable(Arc::new(e)))
             });
         let outcome = read.and_then(|table| {

@@ -169,18 +169,16 @@ pub(crate) fn load(folder: &std::path::Path) -> Result<Option<Session>, ViewerEr
     };
     // The rules of every input: a regular file (not a device such as /dev/zero, not a FIFO
     // that would block the start for ever), of a bounded size, read with a limit.
-    let meta = match std::fs::metadata(&path) {
-        Ok(meta) => meta,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(unreadable(&e)),
+    use stewart_kinematics::io::file::{FileError, FileKind, read_file};
+    let bytes = match read_file(&path, FileKind::Session) {
+        Ok(bytes) => bytes,
+        Err(FileError::Io { source, .. }) if source.kind() == std::io::ErrorKind::NotFound => {
+            return Ok(None);
+        }
+        Err(FileError::Io { source, .. }) => return Err(unreadable(&source)),
+        Err(FileError::NotRegular { .. }) => return Err(unreadable(&"not a regular file")),
+        Err(e @ FileError::TooLarge { .. }) => return Err(unreadable(&e)),
     };
-    if !meta.is_file() {
-        return Err(unreadable(&"not a regular file"));
-    }
-    let bytes = std::fs::File::open(&path)
-        .map_err(|e| e.to_string())
-        .and_then(|file| stewart_kinematics::io::text::read_capped(file, MAX_SESSION_BYTES))
-        .map_err(|e| unreadable(&e))?;
     let text = String::from_utf8(bytes).map_err(|e| damaged(&e))?;
     let session: Session = serde_json::from_str(&text).map_err(|e| damaged(&e))?;
     if session.version != VERSION {
@@ -194,8 +192,9 @@ pub(crate) fn load(folder: &std::path::Path) -> Result<Option<Session>, ViewerEr
 }
 
 /// The largest session file read, bytes (a session is a few kilobytes: its scenario and the
-/// panels' memory).
-pub(crate) const MAX_SESSION_BYTES: u64 = 4 << 20;
+/// panels' memory): the gate's cap for sessions.
+#[cfg(test)]
+pub(crate) const MAX_SESSION_BYTES: u64 = stewart_kinematics::io::file::FileKind::Session.cap();
 
 /// Write the session into `folder` (whole or not at all).
 pub(crate) fn save(folder: &std::path::Path, session: &Session) -> Result<(), ViewerError> {

@@ -933,14 +933,21 @@ fn read_pose_table(
 ) -> Result<Keyframes, ScenarioError> {
     let full = table_path(path.get_ref(), base_dir);
     let name = full.display().to_string();
-    let reader = std::fs::File::open(&full).map_err(|e| {
-        src.invalid(
-            Some(path.span()),
-            "trajectory.file",
-            format!("names `{name}`, which cannot be opened ({e})"),
-        )
-    })?;
-    let table = PoseTable::read(reader, &name).map_err(|e| src.err(Some(path.span()), e))?;
+    let bytes =
+        crate::io::file::read_file(&full, crate::io::file::FileKind::Table).map_err(|e| {
+            src.invalid(
+                Some(path.span()),
+                "trajectory.file",
+                match e {
+                    crate::io::file::FileError::Io { source, .. } => {
+                        format!("names `{name}`, which cannot be opened ({source})")
+                    }
+                    other => format!("names a file that cannot be read: {other}"),
+                },
+            )
+        })?;
+    let table =
+        PoseTable::read(bytes.as_slice(), &name).map_err(|e| src.err(Some(path.span()), e))?;
     table
         .to_keyframes(&name, interpolation)
         .map_err(|e| src.err(Some(path.span()), e))
