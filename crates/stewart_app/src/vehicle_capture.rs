@@ -32,11 +32,17 @@ pub(crate) fn is_capture(bytes: &[u8]) -> bool {
 }
 
 /// The vehicle motion in the capture `bytes` (named `name` in errors), of the datagrams
-/// to `port` (`None`: the port whose datagrams give motion).
-pub(crate) fn read(bytes: &[u8], name: &str, port: Option<u16>) -> Result<CapturedMotion> {
+/// to `port` (`None`: the port whose datagrams give motion), a silence of `stall_s` taken
+/// as the live link takes it.
+pub(crate) fn read(
+    bytes: &[u8],
+    name: &str,
+    port: Option<u16>,
+    stall_s: f64,
+) -> Result<CapturedMotion> {
     let mut capture = capture::read(bytes).map_err(|e| located(e, name))?;
     let datagrams = std::mem::take(&mut capture.datagrams);
-    let mut replay = replay(&datagrams, port);
+    let mut replay = replay(&datagrams, port, stall_s);
     let mut out = CapturedMotion::default();
     for (timed, packet) in std::mem::take(&mut replay.samples) {
         let s = timed.sample;
@@ -64,41 +70,62 @@ impl CapturedMotion {
     /// What the capture held, in words: its packets and UDP datagrams, the formats and what
     /// was not used.
     pub(crate) fn contents(&self) -> String {
-        let c = &self.capture;
-        let mut parts = vec![format!(
-            "{} packets, {} UDP datagrams",
-            c.packets,
-            c.datagrams.len()
-        )];
-        if let Some(port) = self.replay.port {
-            parts.push(format!("telemetry read from port {port}"));
-        }
+        let mut parts = capture_words(&self.capture, self.replay.port, &self.replay.other_ports);
         parts.extend(tally_words(&self.replay.tally));
-        if !self.replay.other_ports.is_empty() {
-            let others: Vec<String> = (self.replay.other_ports.iter())
-                .map(|(port, n)| format!("{n} to port {port}"))
-                .collect();
-            parts.push(format!(
-                "not telemetry (other ports, --port chooses): {}",
-                others.join(", ")
-            ));
-        }
-        let s = &c.skipped;
-        for (n, what) in [
-            (s.not_udp, "not UDP"),
-            (s.fragments, "IP fragments"),
-            (s.cut, "cut short"),
-            (s.other_link, "of another link layer"),
-        ] {
-            if n > 0 {
-                parts.push(format!("{n} {what}"));
-            }
-        }
-        if let Some(byte) = c.ends_inside {
-            parts.push(format!("the file ends inside a packet at byte {byte}"));
-        }
         parts.join("; ")
     }
+}
+
+/// The ports named one by one; more are counted.
+const PORTS_NAMED: usize = 8;
+
+/// What a capture held, in words: its packets and UDP datagrams, the port read, the other
+/// ports' datagrams, and what was not UDP, cut or damaged (the words `stewart cue` and
+/// `stewart telemetry --input` share).
+pub(crate) fn capture_words(
+    capture: &capture::Capture,
+    port: Option<u16>,
+    other_ports: &std::collections::BTreeMap<u16, usize>,
+) -> Vec<String> {
+    let mut parts = vec![format!(
+        "{} packets, {} UDP datagrams",
+        capture.packets,
+        capture.datagrams.len()
+    )];
+    if let Some(port) = port {
+        parts.push(format!("telemetry read from port {port}"));
+    }
+    if !other_ports.is_empty() {
+        let mut named: Vec<String> = (other_ports.iter().take(PORTS_NAMED))
+            .map(|(port, n)| format!("{n} to port {port}"))
+            .collect();
+        if other_ports.len() > PORTS_NAMED {
+            let rest: usize = other_ports.values().skip(PORTS_NAMED).sum();
+            named.push(format!(
+                "{rest} to {} other ports",
+                other_ports.len() - PORTS_NAMED
+            ));
+        }
+        parts.push(format!(
+            "not telemetry (other ports, --port chooses): {}",
+            named.join(", ")
+        ));
+    }
+    let s = &capture.skipped;
+    for (n, what) in [
+        (s.not_udp, "not UDP"),
+        (s.fragments, "IP fragments"),
+        (s.cut, "cut short"),
+        (s.other_link, "of another link layer"),
+    ] {
+        if n > 0 {
+            parts.push(format!("{n} {what}"));
+        }
+    }
+    if let Some(byte) = capture.ends_inside {
+        parts.push(format!("the file ends inside a packet at byte {byte}"));
+    }
+    parts
 }
 
 /// What the datagrams of a stream were, in words: the formats, then what was not used (the
@@ -113,6 +140,10 @@ pub(crate) fn tally_words(tally: &Tally) -> Vec<String> {
     }
     for (n, what) in [
         (tally.refused, "unreadable"),
+        (
+            tally.restarts,
+            "times the sender's clock started again (after its menus or a stall)",
+        ),
         (tally.repeats, "repeating the sample before (dropped)"),
         (tally.stale, "older than the sample before (dropped)"),
         (
@@ -124,6 +155,9 @@ pub(crate) fn tally_words(tally: &Tally) -> Vec<String> {
         if n > 0 {
             parts.push(format!("{n} {what}"));
         }
+    }
+    if let Some(why) = &tally.first_refusal {
+        parts.push(format!("the first unreadable: {why}"));
     }
     parts
 }

@@ -131,7 +131,7 @@ fn beamngs_loopback_capture_gives_the_five_packets() {
     };
     let capture = capture::read(bytes.as_slice()).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(capture.datagrams.len(), 5);
-    let r = replay(&capture.datagrams, None);
+    let r = replay(&capture.datagrams, None, Intake::STALL_S);
     assert_eq!(r.port, Some(4444));
     assert_eq!(r.samples.len(), 5);
     // Clockless: each at its capture time, 0.1 s apart.
@@ -156,7 +156,7 @@ fn every_forza_horizon_datagram_with_new_motion_is_kept() {
     let Some(datagrams) = fh5() else {
         return;
     };
-    let mut intake = Intake::new();
+    let mut intake = Intake::default();
     let mut times = Vec::new();
     for (k, d) in datagrams.iter().enumerate() {
         let (format, what, placed) = intake.take(d, k as f64 / 80.0);
@@ -167,7 +167,7 @@ fn every_forza_horizon_datagram_with_new_motion_is_kept() {
         );
         times.extend(placed.iter().map(|p| p.t));
     }
-    intake.restart();
+    intake.finish();
     let tally = intake.tally();
     // 127 repeat the stamp before with new motion: none is dropped, none is a repeat.
     assert_eq!((tally.placed, tally.repeats, tally.stale), (600, 0, 0));
@@ -178,7 +178,7 @@ fn every_forza_horizon_datagram_with_new_motion_is_kept() {
         return;
     };
     let capture = capture::read(pcap.as_slice()).unwrap_or_else(|e| panic!("{e}"));
-    let r = replay(&capture.datagrams, None);
+    let r = replay(&capture.datagrams, None, Intake::STALL_S);
     assert_eq!(r.samples.len(), 600);
     for (k, ((timed, packet), t)) in r.samples.iter().zip(&times).enumerate() {
         assert_eq!(timed.t, *t, "{k}");
@@ -195,7 +195,7 @@ fn forza_horizons_motion_obeys_its_own_velocity() {
     let Some(datagrams) = fh5() else {
         return;
     };
-    let mut intake = Intake::new();
+    let mut intake = Intake::default();
     let mut rows = Vec::new();
     let mut pending = Vec::new();
     for d in &datagrams {
@@ -337,7 +337,7 @@ fn f1_24s_joined_pair_is_one_sample_and_real_halves_of_two_frames_none() {
         return;
     };
     let capture = capture::read(joined.as_slice()).unwrap_or_else(|e| panic!("{e}"));
-    let r = replay(&capture.datagrams, None);
+    let r = replay(&capture.datagrams, None, Intake::STALL_S);
     assert_eq!(r.samples.len(), 1);
     let s = r.samples[0].0.sample;
     // The player's car 19: lateral −1.221 g (to the right), longitudinal +0.543 g.
@@ -348,7 +348,7 @@ fn f1_24s_joined_pair_is_one_sample_and_real_halves_of_two_frames_none() {
         return;
     };
     let capture = capture::read(unpaired.as_slice()).unwrap_or_else(|e| panic!("{e}"));
-    let r = replay(&capture.datagrams, None);
+    let r = replay(&capture.datagrams, None, Intake::STALL_S);
     assert!(r.samples.is_empty());
     assert_eq!((r.tally.of(Format::F1), r.tally.refused), (2, 0));
 }

@@ -98,7 +98,7 @@ fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()
     if let Some(x) = &xplane {
         x.end(&socket);
     }
-    heard.intake.restart();
+    heard.intake.finish();
     let _ = writeln!(err, "telemetry: {}", heard.summary());
     Ok(())
 }
@@ -121,9 +121,11 @@ fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Resu
     let mut next_line = 1.0;
     let mut others: BTreeMap<u16, usize> = BTreeMap::new();
     for d in &capture.datagrams {
-        while d.time_s >= next_line {
+        // A line for each second of the capture that held datagrams (a silence of any
+        // length is skipped, not printed second by second).
+        if d.time_s >= next_line {
             let _ = writeln!(stdout, "{}", heard.second(next_line));
-            next_line += 1.0;
+            next_line = d.time_s.floor() + 1.0;
         }
         if Some(d.port) == port {
             heard.take(&d.payload, d.time_s);
@@ -131,29 +133,17 @@ fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Resu
             *others.entry(d.port).or_default() += 1;
         }
     }
-    if heard.intake.tally().datagrams > 0 || !others.is_empty() {
+    if !capture.datagrams.is_empty() {
         let _ = writeln!(stdout, "{}", heard.second(next_line));
     }
-    heard.intake.restart();
-    let mut said = format!(
-        "telemetry: read from {name}: {} packets, {} UDP datagrams",
-        capture.packets,
-        capture.datagrams.len()
+    heard.intake.finish();
+    let words = crate::vehicle_capture::capture_words(&capture, port, &others);
+    let _ = writeln!(
+        std::io::stderr(),
+        "telemetry: read from {name}: {}\ntelemetry: {}",
+        words.join("; "),
+        heard.summary()
     );
-    if let Some(port) = port {
-        said.push_str(&format!(", telemetry from port {port}"));
-    }
-    if !others.is_empty() {
-        let list: Vec<String> = others
-            .iter()
-            .map(|(p, n)| format!("{n} to port {p}"))
-            .collect();
-        said.push_str(&format!(
-            "; not telemetry (other ports, --port chooses): {}",
-            list.join(", ")
-        ));
-    }
-    let _ = writeln!(std::io::stderr(), "{said}\ntelemetry: {}", heard.summary());
     Ok(())
 }
 
@@ -162,6 +152,13 @@ fn write_rows(heard: &Heard, out: Option<&Destination>) -> Result<()> {
     let Some(out) = out else {
         return Ok(());
     };
+    if heard.rows.is_empty() {
+        bail!(
+            "no vehicle motion arrived: nothing written to `{}` (a table without rows is \
+             not one `stewart cue` reads)",
+            out.shown().display()
+        );
+    }
     let mut csv = CsvText::with_header(&VEHICLE_COLUMNS);
     for row in &heard.rows {
         csv.row(row.iter().copied());

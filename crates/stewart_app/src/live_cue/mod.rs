@@ -231,7 +231,7 @@ impl LiveCue {
             idle: false,
             pose: scenario.geometry.home_pose(),
             buffer: vec![0; DATAGRAM],
-            intake: Intake::new(),
+            intake: Intake::new(scenario.cueing.stall_s),
             xplane: None,
             prediction: (scenario.cueing.input_prediction_s > 0.0).then(Prediction::default),
             prediction_s: scenario.cueing.input_prediction_s,
@@ -412,8 +412,8 @@ impl LiveCue {
             self.stalled = true;
             self.counts.stalls.fetch_add(1, Ordering::Relaxed);
             self.cueing.hold(&VehicleMotion::default());
-            // The next sample starts a new stretch of the sender's clock.
-            self.intake.restart();
+            // The intake starts a new stretch of the sender's clock itself at the next
+            // datagram (by the same stall time), as a replayed capture does.
             if let Some(p) = &mut self.prediction {
                 *p = Prediction::default();
             }

@@ -196,7 +196,7 @@ fn captured_at(k: usize) -> f64 {
 
 /// An Ethernet II frame holding an IPv4 header (no options) and a UDP header around
 /// `payload`, as the RFCs lay them out (checksums left 0: "not computed" for UDP).
-fn ethernet_udp(port: u16, payload: &[u8]) -> Vec<u8> {
+pub(crate) fn ethernet_udp(port: u16, payload: &[u8]) -> Vec<u8> {
     let mut f = vec![2, 0, 0, 0, 0, 2, 2, 0, 0, 0, 0, 1, 0x08, 0x00];
     let total = (20 + 8 + payload.len()) as u16;
     f.extend([0x45, 0]);

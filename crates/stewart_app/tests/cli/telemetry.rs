@@ -5,7 +5,7 @@ use std::io::{BufRead as _, BufReader};
 use std::net::UdpSocket;
 use std::process::{Command, Stdio};
 
-use crate::capture::{forza, moment, ms, pcap_to_ports};
+use crate::capture::{ethernet_udp, forza, moment, ms, pcap_to_ports};
 use crate::{parse_csv, tempdir};
 
 #[test]
@@ -116,7 +116,7 @@ fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
         .unwrap_or_else(|e| panic!("{e}"));
     let said = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(0), "{said}");
-    assert!(said.contains("telemetry from port 5300"), "{said}");
+    assert!(said.contains("telemetry read from port 5300"), "{said}");
     assert!(
         said.contains("not telemetry (other ports, --port chooses): 30 to port 5353"),
         "{said}"
@@ -158,7 +158,60 @@ fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
         .unwrap_or_else(|e| panic!("{e}"));
     let said = String::from_utf8_lossy(&o.stderr);
     assert!(
-        said.contains("telemetry from port 5353") && said.contains("30 datagrams,"),
+        said.contains("telemetry read from port 5353") && said.contains("30 datagrams,"),
         "{said}"
     );
+}
+
+#[test]
+fn a_capture_with_a_long_silence_is_read_at_once_and_nothing_unreadable_is_written() {
+    // Text samples at 0 s and 0.1 s, then one 100 000 s later: one line per second that
+    // held datagrams (not 100 000 lines), and every sample within the tables' times.
+    let mut file = Vec::new();
+    for word in [0xa1b2_c3d4u32, 0x0004_0002, 0, 0, 65535, 1] {
+        file.extend(word.to_le_bytes());
+    }
+    for (sec, usec, text) in [
+        (0u32, 0u32, "0,1,0,0,0,0,0"),
+        (0, 100_000, "0.1,2,0,0,0,0,0"),
+        (100_000, 0, "0.2,3,0,0,0,0,0"),
+    ] {
+        let frame = ethernet_udp(4123, text.as_bytes());
+        file.extend(sec.to_le_bytes());
+        file.extend(usec.to_le_bytes());
+        file.extend((frame.len() as u32).to_le_bytes());
+        file.extend((frame.len() as u32).to_le_bytes());
+        file.extend(frame);
+    }
+    let dir = tempdir();
+    let capture = dir.path().join("gap.pcap");
+    std::fs::write(&capture, file).unwrap_or_else(|e| panic!("{e}"));
+    let started = std::time::Instant::now();
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["telemetry", "--input"])
+        .arg(&capture)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(started.elapsed().as_secs() < 20);
+    let said = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{said}");
+    assert!(String::from_utf8_lossy(&o.stdout).lines().count() <= 3);
+    // The sender's clock (0.2 s) goes on after the silence: a new stretch, kept.
+    assert!(said.contains("3 samples of motion kept"), "{said}");
+    // Nothing arrived on another port: no table of no rows is written.
+    let out = dir.path().join("none.csv");
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["telemetry", "--port", "9", "--input"])
+        .arg(&capture)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!out.exists());
 }

@@ -2,9 +2,15 @@
 //! its sample on the time line ([`Timeline`]) and counts what it was ([`Tally`], by
 //! [`Format`]). The live link, a replayed capture and `stewart telemetry` all read through
 //! it, so they agree datagram for datagram.
+//!
+//! A sender's clock may start again (a new F1 session, a restarted game): after the game
+//! said it is in its menus, or after nothing came for the stall time, the time line starts
+//! a new stretch, so the samples that follow are not dropped as older than the last. The
+//! rule is the intake's, by arrival times, so a capture replayed gives what the live link
+//! took.
 
-use super::timeline::{Placed, Placement, Timeline};
-use super::{Decoder, Format, Reading, VehicleError};
+use super::timeline::{Placed, Placement, Step, Timeline};
+use super::{Decoder, Format, MAX_TIME_S, Reading, VehicleError};
 
 /// What one datagram was.
 #[derive(Clone, Debug, PartialEq)]
@@ -20,13 +26,14 @@ pub enum Intaken {
 }
 
 /// Counts of what arrived, all along.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Tally {
     /// Datagrams taken.
     pub datagrams: u64,
     /// Datagrams per format recognised, in the order of [`Format::ALL`].
     per_format: [u64; Format::ALL.len()],
-    /// Samples placed on the time line.
+    /// Samples placed on the time line as samples of their own (a clockless sample that
+    /// replaced the last, arriving with it, is not counted again).
     pub placed: u64,
     /// Datagrams that could not be read (of a format recognised or of none).
     pub refused: u64,
@@ -38,6 +45,10 @@ pub struct Tally {
     pub idle: u64,
     /// Samples held on a repeated stamp when the stream stopped or stalled (dropped).
     pub unplaced: u64,
+    /// Times the sender's clock was started again (after its menus or a stall).
+    pub restarts: u64,
+    /// Why the first datagram refused was refused (the advice a game's setting needs).
+    pub first_refusal: Option<VehicleError>,
 }
 
 impl Tally {
@@ -57,34 +68,70 @@ impl Tally {
 }
 
 /// Reads datagrams into placed samples, counting them.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct Intake {
     decoder: Decoder,
     timeline: Timeline,
     tally: Tally,
+    /// Silent this long (seconds of arrival), the input has stalled: a new stretch.
+    stall_s: f64,
+    /// The last datagram's arrival.
+    last_arrival: Option<f64>,
+}
+
+impl Default for Intake {
+    fn default() -> Self {
+        Self::new(Self::STALL_S)
+    }
 }
 
 impl Intake {
-    /// An intake that has seen nothing.
-    pub fn new() -> Self {
-        Self::default()
+    /// The stall time of [`Intake::default`], seconds (the `[cueing] stall_s` default).
+    pub const STALL_S: f64 = 0.5;
+
+    /// An intake that has seen nothing, taking a silence of `stall_s` seconds as a stall.
+    pub fn new(stall_s: f64) -> Self {
+        Self {
+            decoder: Decoder::new(),
+            timeline: Timeline::new(),
+            tally: Tally::default(),
+            stall_s,
+            last_arrival: None,
+        }
     }
 
     /// Take one datagram arriving at `arrival` (seconds on the receiver's clock): its
     /// format, what it was, and the samples it placed (oldest first).
     pub fn take(&mut self, bytes: &[u8], arrival: f64) -> (Option<Format>, Intaken, Placed) {
+        if self
+            .last_arrival
+            .is_some_and(|last| arrival - last > self.stall_s)
+        {
+            self.restart();
+        }
+        self.last_arrival = Some(arrival);
         let decoded = self.decoder.decode(bytes);
-        let tally = &mut self.tally;
-        tally.datagrams += 1;
+        self.tally.datagrams += 1;
         if let Some(format) = decoded.format {
-            tally.per_format[format.index()] += 1;
+            self.tally.per_format[format.index()] += 1;
         }
         let mut placed = Placed::default();
-        let what = match decoded.reading {
+        let reading = match decoded.reading {
+            // A clockless sample is placed at its arrival: within the tables' times too.
+            Ok(Reading::Sample(s)) if s.t.is_none() && !(arrival.abs() <= MAX_TIME_S) => {
+                Err(VehicleError::Value {
+                    name: "arrival time",
+                    value: arrival,
+                })
+            }
+            other => other,
+        };
+        let what = match reading {
             Ok(Reading::Sample(sample)) => {
                 let (placement, p) = self.timeline.push(sample, arrival);
                 placed = p;
-                tally.placed += placed.len() as u64;
+                let tally = &mut self.tally;
+                tally.placed += placed.iter().filter(|p| p.step != Step::Same).count() as u64;
                 match placement {
                     Placement::Repeat => tally.repeats += 1,
                     Placement::Stale => tally.stale += 1,
@@ -93,26 +140,85 @@ impl Intake {
                 Intaken::Sample(placement)
             }
             Ok(Reading::Idle) => {
-                tally.idle += 1;
+                self.tally.idle += 1;
+                // The game's menus or pause: its clock may start again after them.
+                self.restart();
                 Intaken::Idle
             }
             Ok(Reading::Ignored) => Intaken::Ignored,
             Err(e) => {
-                tally.refused += 1;
+                self.tally.refused += 1;
+                self.tally.first_refusal.get_or_insert_with(|| e.clone());
                 Intaken::Refused(e)
             }
         };
         (decoded.format, what, placed)
     }
 
-    /// Start a new stretch of the senders' clocks (after a stall, or at the end): samples
-    /// held on a repeated stamp are dropped and counted.
+    /// Start a new stretch of the senders' clocks (after their menus or a stall, which
+    /// [`Intake::take`] sees itself): samples held on a repeated stamp are dropped and
+    /// counted.
     pub fn restart(&mut self) {
+        if !self.timeline.is_empty() {
+            self.tally.restarts += 1;
+        }
+        self.finish();
+    }
+
+    /// The stream has ended: samples held on a repeated stamp are dropped and counted.
+    pub fn finish(&mut self) {
         self.tally.unplaced += self.timeline.restart() as u64;
     }
 
     /// What arrived so far.
     pub fn tally(&self) -> &Tally {
         &self.tally
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text(t: f64, ax: f64) -> String {
+        format!("{t},{ax},0,0,0,0,0")
+    }
+
+    #[test]
+    fn a_clock_that_starts_again_after_a_stall_or_the_menus_is_a_new_stretch() {
+        let mut intake = Intake::new(0.5);
+        for (k, arrival) in [0.0, 0.1, 0.2].into_iter().enumerate() {
+            let (_, what, _) = intake.take(text(10.0 + k as f64 * 0.1, 1.0).as_bytes(), arrival);
+            assert_eq!(what, Intaken::Sample(Placement::Placed));
+        }
+        // Back to 0 at once: older than the last, dropped.
+        let (_, what, _) = intake.take(text(0.0, 2.0).as_bytes(), 0.3);
+        assert_eq!(what, Intaken::Sample(Placement::Stale));
+        // Back to 0 after a second of silence: a new stretch, kept.
+        let (_, what, placed) = intake.take(text(0.05, 2.0).as_bytes(), 1.3);
+        assert_eq!(
+            (what, placed.len()),
+            (Intaken::Sample(Placement::Placed), 1)
+        );
+        assert_eq!(intake.tally().restarts, 1);
+        // A clockless sample beyond the tables' times is refused by name.
+        let mut far = Intake::default();
+        let beamng = {
+            let mut p = vec![0u8; 88];
+            p[..4].copy_from_slice(b"BNG1");
+            p
+        };
+        let (_, what, _) = far.take(&beamng, 2e6);
+        assert!(
+            matches!(
+                what,
+                Intaken::Refused(VehicleError::Value {
+                    name: "arrival time",
+                    ..
+                })
+            ),
+            "{what:?}"
+        );
+        assert!(far.tally().first_refusal.is_some());
     }
 }

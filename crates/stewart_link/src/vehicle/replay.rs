@@ -28,14 +28,15 @@ pub struct Replay {
 }
 
 /// Read the telemetry of `port` (`None`: the port whose datagrams give the most samples)
-/// in `datagrams`.
-pub fn replay(datagrams: &[Datagram], port: Option<u16>) -> Replay {
+/// in `datagrams`, a silence of `stall_s` seconds taken as a stall (the sender's clock may
+/// start again after it), as the live link takes it.
+pub fn replay(datagrams: &[Datagram], port: Option<u16>, stall_s: f64) -> Replay {
     let port = port.or_else(|| telemetry_port(datagrams));
     let mut out = Replay {
         port,
         ..Replay::default()
     };
-    let mut intake = Intake::new();
+    let mut intake = Intake::new(stall_s);
     // The packets of the samples held on a repeated stamp, oldest first.
     let mut held = Vec::new();
     for d in datagrams {
@@ -56,7 +57,7 @@ pub fn replay(datagrams: &[Datagram], port: Option<u16>) -> Replay {
             }
         }
     }
-    intake.restart();
+    intake.finish();
     out.tally = intake.tally().clone();
     out
 }
@@ -103,14 +104,14 @@ mod tests {
             datagram(3, 5353, 0.005, &noise),
             datagram(4, 4123, 0.01, b"0.01,2,0,0,0,0,0"),
         ];
-        let r = replay(&datagrams, None);
+        let r = replay(&datagrams, None, Intake::STALL_S);
         assert_eq!(r.port, Some(4123));
         assert_eq!(r.samples.len(), 2);
         assert_eq!(r.samples[1].1, 4);
         assert_eq!(r.other_ports.get(&5353), Some(&2));
         assert_eq!(r.tally.datagrams, 2);
         // Asked for, the other port is read (and gives no motion of ours).
-        let r = replay(&datagrams, Some(5353));
+        let r = replay(&datagrams, Some(5353), Intake::STALL_S);
         assert_eq!(r.port, Some(5353));
         assert!(r.samples.iter().all(|(_, p)| *p == 1 || *p == 3));
         assert_eq!(r.other_ports.get(&4123), Some(&2));
@@ -124,7 +125,7 @@ mod tests {
             datagram(2, 9, 0.0, text(0.0, 2.0).as_bytes()),
             datagram(3, 9, 0.0, text(0.02, 3.0).as_bytes()),
         ];
-        let r = replay(&datagrams, None);
+        let r = replay(&datagrams, None, Intake::STALL_S);
         let got: Vec<(f64, usize)> = r.samples.iter().map(|(t, p)| (t.t, *p)).collect();
         assert_eq!(got, vec![(0.0, 1), (0.01, 2), (0.02, 3)]);
     }

@@ -163,6 +163,11 @@ impl Timeline {
         }
     }
 
+    /// Whether nothing is placed on it yet.
+    pub fn is_empty(&self) -> bool {
+        self.last.is_none()
+    }
+
     /// Start a new stretch (after a stall: the sender's clock may have started again);
     /// returns how many held samples were dropped.
     pub fn restart(&mut self) -> usize {

@@ -36,7 +36,12 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         Ok((bytes, name.to_owned()))
     })?;
     let recording = if vehicle_capture::is_capture(&bytes) {
-        Recording::Capture(Box::new(vehicle_capture::read(&bytes, &file, args.port)?))
+        Recording::Capture(Box::new(vehicle_capture::read(
+            &bytes,
+            &file,
+            args.port,
+            scenario.cueing.stall_s,
+        )?))
     } else {
         Recording::Table(vehicle_table::read(&mut bytes.as_slice(), &file)?)
     };

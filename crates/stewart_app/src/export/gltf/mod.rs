@@ -140,7 +140,7 @@ pub(crate) fn export_gltf(
     };
 
     let g = &scenario.geometry;
-    let times: Vec<f64> = scenario.motion.sampling.times().collect();
+    let times: Vec<f64> = scenario.motion.times().collect();
     let rotary = g.rotary().is_some();
     let mut tracks: Vec<Track> = names(rotary)
         .into_iter()

@@ -10,6 +10,24 @@ use crate::analysis::checks::{CheckSettings, Finding, FindingKind};
 /// Steps on each side compared with a step.
 const NEIGHBOURS: usize = 4;
 
+/// On an uneven grid, each interval's factor to the median interval (`None`: the intervals
+/// are equal, as a sampled motion's are, to rounding).
+fn interval_scales(times: &[f64]) -> Option<Vec<f64>> {
+    let intervals: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+    let (lo, hi) = intervals
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), &h| {
+            (lo.min(h), hi.max(h))
+        });
+    if lo.is_nan() || lo <= 0.0 || hi <= lo * (1.0 + 1e-6) {
+        return None;
+    }
+    let mut sorted = intervals.clone();
+    sorted.sort_by(f64::total_cmp);
+    let typical = sorted[sorted.len() / 2];
+    Some(intervals.iter().map(|h| typical / h).collect())
+}
+
 /// One finding per leg that jumps, with the first and last jump and the largest.
 pub fn check(times: &[f64], lengths: &[[f64; 6]], settings: &CheckSettings) -> Vec<Finding> {
     check_series(
@@ -39,9 +57,12 @@ pub(crate) fn check_series(
     }
     let mut findings = Vec::new();
     let mut steps = vec![0.0; n - 1];
+    // On an uneven grid (a pose table's own rows) a step is judged as the step it would
+    // be at the typical interval: a motion sampled more sparsely is no jump.
+    let scale = interval_scales(times);
     for leg in 0..6 {
-        for (s, pair) in steps.iter_mut().zip(values.windows(2)) {
-            *s = (pair[1][leg] - pair[0][leg]).abs();
+        for (k, (s, pair)) in steps.iter_mut().zip(values.windows(2)).enumerate() {
+            *s = (pair[1][leg] - pair[0][leg]).abs() * scale.as_ref().map_or(1.0, |c| c[k]);
         }
         let mut found: Option<Finding> = None;
         for k in 0..steps.len() {
@@ -150,5 +171,31 @@ mod tests {
             ),
             (vec![6], 2, times[300], times[301])
         );
+    }
+}
+
+#[cfg(test)]
+mod uneven_tests {
+    use super::*;
+
+    #[test]
+    fn a_smooth_motion_sampled_unevenly_does_not_jump_and_a_real_jump_still_does() {
+        // 0.05·sin(t) at rows 0.01 s apart, then 0.2 s apart (a table's own rows).
+        let mut times: Vec<f64> = (0..120).map(|k| k as f64 * 0.01).collect();
+        times.extend((1..20).map(|k| 1.19 + k as f64 * 0.2));
+        let values: Vec<[f64; 6]> = times.iter().map(|t| [0.05 * t.sin(); 6]).collect();
+        let settings = CheckSettings::default();
+        assert!(check(&times, &values, &settings).is_empty());
+        // A 10 cm step between two of the sparse rows (10 times what the motion moves
+        // there) is still a jump.
+        let mut jumped = values.clone();
+        for v in jumped.iter_mut().skip(130) {
+            for x in v.iter_mut() {
+                *x += 0.1;
+            }
+        }
+        let found = check(&times, &jumped, &settings);
+        assert_eq!(found.len(), 6, "{found:?}");
+        assert!(found.iter().all(|f| f.first_time == times[130]));
     }
 }

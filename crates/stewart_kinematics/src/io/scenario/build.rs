@@ -961,6 +961,7 @@ fn keys_sampling(
 ) -> Result<Sampling, ScenarioError> {
     Sampling::at_keys(keys).map_err(|_| {
         let (span, key, what) = match &t.file {
+            Some(file) if t.at_keys.is_some() => (Some(file.span()), "trajectory.file", "holds a single moment in time (one row, or every row at the same time): add a row at another time (or, without `at_keys`, give `duration_s` to hold the pose that long)"),
             Some(file) => (Some(file.span()), "trajectory.file", "holds a single moment in time (one row, or every row at the same time): add a row at another time, or give `duration_s` to hold the pose that long"),
             None => (t.keys.as_ref().map(Spanned::span), "trajectory.keys", "hold a single moment in time: add a key at another time, or give `duration_s` to hold the pose that long"),
         };
