@@ -118,7 +118,9 @@ impl Intake {
         let mut placed = Placed::default();
         let reading = match decoded.reading {
             // A clockless sample is placed at its arrival: within the tables' times too.
-            Ok(Reading::Sample(s)) if s.t.is_none() && !(arrival.abs() <= MAX_TIME_S) => {
+            Ok(Reading::Sample(s))
+                if s.t.is_none() && (arrival.is_nan() || arrival.abs() > MAX_TIME_S) =>
+            {
                 Err(VehicleError::Value {
                     name: "arrival time",
                     value: arrival,
