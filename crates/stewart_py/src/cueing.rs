@@ -78,6 +78,12 @@ pub fn cue<'py>(
     let scenario = platform.scenario().clone();
     drop(platform);
     let samples = samples(vehicle)?;
+    if samples.is_empty() {
+        // As `stewart cue` refuses a table of no rows.
+        return Err(PyValueError::new_err(
+            "vehicle holds no rows: a recording needs at least one sample",
+        ));
+    }
     let s = &scenario;
     let cued = py
         .detach(|| cue_recording(&s.geometry, &s.limits, &s.cueing, &samples))

@@ -174,9 +174,29 @@ impl Platform {
     fn ik<'py>(
         slf: PyRef<'py, Self>,
         poses: &Bound<'py, PyAny>,
-        out: Option<Bound<'py, PyArray2<f64>>>,
+        out: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let py = slf.py();
+        // Not a float64 array: said as such (numpy's own cast error names no dtype).
+        let out = out
+            .map(|o| match o.cast_into::<PyArray2<f64>>() {
+                Ok(array) => Ok(array),
+                Err(e) => {
+                    let o = e.into_inner();
+                    let dtype = o.getattr("dtype").map_or_else(
+                        |_| {
+                            o.get_type()
+                                .name()
+                                .map_or_else(|_| "?".to_owned(), |n| n.to_string())
+                        },
+                        |d| d.to_string(),
+                    );
+                    Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                        "out must be a two-dimensional float64 array of shape (n, 6), got {dtype}"
+                    )))
+                }
+            })
+            .transpose()?;
         // The platform as it is now; `set` from another thread meanwhile waits for nothing.
         let g = slf.scenario.geometry.clone();
         drop(slf);

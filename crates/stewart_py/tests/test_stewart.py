@@ -173,6 +173,9 @@ def test_bad_input_is_a_clear_exception_never_a_crash(tmp_path):
         p.fk(np.array([[np.nan] * 6]))
     with pytest.raises(ValueError, match=r"out must have shape \(10, 6\)"):
         p.ik(good, out=np.empty((9, 6)))
+    # An out of another dtype is named as such (not "'ndarray' is not an instance of 'ndarray'").
+    with pytest.raises(TypeError, match="out must be a two-dimensional float64 array .* float32"):
+        p.ik(good, out=np.empty((10, 6), dtype=np.float32))
     with pytest.raises(ValueError, match="pose must be six numbers"):
         p.jacobian([0, 0, 0.8])
     # A servo out of reach: the row and the servo, in the CLI's words.
@@ -422,5 +425,8 @@ def test_cueing_gives_the_clis_poses_and_comparison_for_either_algorithm():
     huge[3, 1] = 1e300
     with pytest.raises(ValueError, match="vehicle, row 3 .*column ax"):
         stewart.cue(p, huge)
+    # A recording of no rows is refused, as `stewart cue` refuses it.
+    with pytest.raises(ValueError, match="no rows"):
+        stewart.cue(stewart.Platform.preset("seed"), np.zeros((0, 7)))
     with pytest.raises(ValueError, match="must be `washout` or `mpc`"):
         p.set("cueing.algorithm", "fuzzy")

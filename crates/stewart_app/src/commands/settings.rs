@@ -103,9 +103,14 @@ pub(crate) fn reference(scenario: &Scenario) -> String {
             "\n## {title}\n\n| key | meaning | unit | slider | accepted | default |\n|---|---|---|---|---|---|\n"
         );
         for s in settings::all().iter().filter(|s| s.group == group) {
+            // Why a setting has no value here, said by what it belongs to.
+            let kind = scenario.geometry.actuator().kind();
             let default = match s.target {
                 _ if s.applies(scenario) => value_of(s, s.default_for(scenario)),
                 Target::Geometry(_) => "(joints on a circle)".to_owned(),
+                _ if s.target.actuator_kind().is_some_and(|k| k != kind) => {
+                    "(the other actuator kind)".to_owned()
+                }
                 Target::Actuator(_) => "(the other actuator kind)".to_owned(),
                 _ => "(another trajectory kind)".to_owned(),
             };
@@ -187,8 +192,14 @@ pub(crate) fn table(scenario: &Scenario) -> String {
                 && key.circle_plate().is_some()
             {
                 "(joints as coordinates)".to_owned()
+            } else if s
+                .target
+                .actuator_kind()
+                .is_some_and(|k| k != scenario.geometry.actuator().kind())
+            {
+                "(the other actuator kind)".to_owned()
             } else {
-                "(other kinds)".to_owned()
+                "(another trajectory kind)".to_owned()
             };
             [
                 s.key.clone(),

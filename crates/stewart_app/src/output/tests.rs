@@ -31,7 +31,8 @@ fn an_input_is_never_an_output() {
     assert_eq!(
         e.to_string(),
         format!(
-            "refusing to write `{}`: it is the scenario this command reads; choose another output file",
+            "refusing to write `{}`: it is the scenario this command reads (`{}`); choose another output file",
+            input.display(),
             input.display()
         )
     );

@@ -259,7 +259,15 @@ fn foreign_encodings_and_binary_files_are_named() {
 
 #[test]
 fn endless_inputs_are_cut_off_not_read_forever() {
+    // A device is refused before it is opened; a file over the cap before it is read.
     let o = run(&["check", "--scenario", "/dev/zero"]);
+    o.assert_refused();
+    assert!(o.stderr.contains("is a device, not a file"), "{}", o.stderr);
+    let dir = tempdir();
+    let big = dir.path().join("big.toml");
+    let file = std::fs::File::create(&big).unwrap_or_else(|e| panic!("{e}"));
+    file.set_len(17 << 20).unwrap_or_else(|e| panic!("{e}"));
+    let o = run(&["check", "--scenario", &big.display().to_string()]);
     o.assert_refused();
     assert!(o.stderr.contains("larger than 16 MiB"), "{}", o.stderr);
 }
