@@ -33,8 +33,11 @@ pub enum CueError {
     /// A `[cueing]` value that cannot work.
     #[error(transparent)]
     Settings(#[from] CueingProblem),
-    /// Sample `index` (from 0) does not come after the one before it.
-    #[error("t = {t} s does not come after the previous sample's {previous} s")]
+    /// Sample `index` (from 0) does not come after the one before it by at least a
+    /// microsecond (the least gap between a pose table's rows).
+    #[error(
+        "t = {t} s does not come at least 1e-6 s after the previous sample's {previous} s (a pose table's rows must be that far apart)"
+    )]
     Time {
         /// The sample, from 0.
         index: usize,
@@ -337,8 +340,10 @@ pub fn cue_recording(
     let mut previous: Option<f64> = None;
     let mut ahead = Vec::new();
     for (index, (t, motion)) in samples.iter().enumerate() {
+        // Samples as far apart as a pose table's rows must be (its keys): the table
+        // written reads back.
         let h = match previous {
-            Some(p) if *t > p => t - p,
+            Some(p) if *t - p >= crate::model::trajectory::keyframes::MIN_KEY_GAP_S => t - p,
             Some(p) => {
                 return Err(CueError::Time {
                     index,

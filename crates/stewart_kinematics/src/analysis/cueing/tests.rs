@@ -377,6 +377,13 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
             previous: 0.1
         })
     );
+    // Samples a nanosecond apart would make a pose table no command reads back (its rows
+    // must be a microsecond apart): refused where they come in.
+    let close = [(1.0, m), (1.0 + 1e-9, m)];
+    assert!(matches!(
+        cue_recording(&g, &Limits::default(), &plain(), &close),
+        Err(CueError::Time { index: 1, .. })
+    ));
     let bad = CueingSettings {
         tilt_lp_wn: -1.0,
         ..plain()
