@@ -17,7 +17,12 @@ fn settings_lists_every_key_with_value_unit_and_default() {
     };
     assert_eq!(row("geometry.base_angles_deg[0]")[1], "10");
     assert_eq!(row("trajectory.radius_m")[1..3], ["0.15", "m"]);
-    assert_eq!(row("trajectory.x.amplitude_m")[1], "(other");
+    // Why a key has no value here, by what it belongs to.
+    assert_eq!(
+        row("trajectory.x.amplitude_m")[1..3],
+        ["(another", "trajectory"]
+    );
+    assert_eq!(row("limits.servo_speed_max_deg_s")[1..3], ["(the", "other"]);
     assert_eq!(row("limits.leg_speed_max_m_s")[1], "off");
     // The accepted range (what files, --set and sliders may hold), before the default: a
     // radius is positive (above 0, which is itself refused).
