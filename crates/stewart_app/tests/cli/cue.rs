@@ -274,7 +274,7 @@ fn bad_vehicle_motion_is_one_located_error_and_writes_nothing() {
         &[],
     );
     assert!(
-        e.contains("time.csv, line 4, column `t`: t = 0.1 s does not come after"),
+        e.contains("time.csv, line 4, column `t`: t = 0.1 s does not come at least 1e-6 s after"),
         "{e}"
     );
     let e = run(
