@@ -8,6 +8,22 @@ fn paired() -> &'static str {
         .unwrap_or_else(|| panic!("no preset paired"))
 }
 
+/// A scenario in `dir` on the paired preset's geometry playing `csv` (written beside it as
+/// `poses.csv`) as its pose table; its path.
+fn paired_playing(dir: &std::path::Path, csv: &str) -> String {
+    write(dir, "poses.csv", csv);
+    let geometry = paired()
+        .split("[trajectory]")
+        .next()
+        .unwrap_or_default()
+        .to_owned();
+    write(
+        dir,
+        "s.toml",
+        &(geometry + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
+    )
+}
+
 fn json(o: &std::process::Output) -> serde_json::Value {
     serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{e}: {}", stdout(o)))
 }
@@ -157,17 +173,7 @@ fn a_jump_in_a_pose_table_is_found_and_dated() {
         let z = 0.8 + 0.02 * (t * 2.0).sin() + if k >= 100 { 0.03 } else { 0.0 };
         csv.push_str(&format!("{t},0,0,{z},0,0,0\n"));
     }
-    write(dir.path(), "poses.csv", &csv);
-    let geometry = paired()
-        .split("[trajectory]")
-        .next()
-        .unwrap_or_default()
-        .to_owned();
-    let scenario = write(
-        dir.path(),
-        "s.toml",
-        &(geometry + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
-    );
+    let scenario = paired_playing(dir.path(), &csv);
     let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
     assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
     let findings = json(&o)["findings"].as_array().cloned().unwrap_or_default();
@@ -191,17 +197,7 @@ fn a_pose_table_is_judged_at_its_own_rows() {
         let z = if t == 5.001 { 1.4 } else { 0.8 };
         csv.push_str(&format!("{t},0,0,{z},0,0,0\n"));
     }
-    write(dir.path(), "poses.csv", &csv);
-    let geometry = paired()
-        .split("[trajectory]")
-        .next()
-        .unwrap_or_default()
-        .to_owned();
-    let scenario = write(
-        dir.path(),
-        "s.toml",
-        &(geometry + "[trajectory]\nkind = \"pose_table\"\nfile = \"poses.csv\"\n"),
-    );
+    let scenario = paired_playing(dir.path(), &csv);
     let o = stewart(&["check", "--scenario", &scenario, "--format", "json"]);
     assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
     let findings = json(&o)["findings"].as_array().cloned().unwrap_or_default();
