@@ -335,8 +335,8 @@ impl WireFormat {
 
 /// `binary`, `text`, or `template:…` (the template checked, its column named when refused).
 pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormat, String> {
-    // Only the front is trimmed: a template may end in a space.
-    if let Some(template) = text.trim_start().strip_prefix("template:") {
+    // The one rule of the scenario's `link.format`: a template may end in a space.
+    if let Some(template) = stewart_kinematics::model::link_settings::template_of_format(text) {
         return Template::parse(template)
             .map(WireFormat::Template)
             .map_err(|e| e.to_string());

@@ -6,16 +6,30 @@ use stewart_kinematics::{Scenario, io::settings};
 use crate::cli::ScenarioArgs;
 
 /// The scenario the arguments name (the `seed` preset when they name none), with the
-/// `--set` assignments applied in order.
+/// `--set` assignments applied in order. A template that is no template is refused where
+/// it is written: at its line in the file, or as the `--set` that wrote it.
 pub(crate) fn load(args: &ScenarioArgs) -> Result<Scenario> {
     let mut scenario = match (&args.preset, &args.scenario) {
-        (_, Some(path)) => Scenario::load(path)?,
+        (_, Some(path)) => Scenario::load_checked(path, &crate::link_plan::template_problem)?,
         (Some(name), None) => Scenario::preset(name)?,
         (None, None) => Scenario::preset("seed")?,
     };
-    settings::apply_all(&mut scenario, args.set.iter().map(String::as_str))
-        .map_err(|e| anyhow::anyhow!("--set: {e}"))?;
+    for text in &args.set {
+        settings::apply_all(&mut scenario, [text.as_str()])
+            .map_err(|e| anyhow::anyhow!("--set: {e}"))?;
+        if let Some((key, reason)) = crate::link_plan::template_problem(&scenario) {
+            anyhow::bail!("--set `{text}`: `{key}` refused: {reason}");
+        }
+    }
     Ok(scenario)
+}
+
+/// A scenario file, its template checked as [`load`] checks it (the viewer's Open and a
+/// session's scenario).
+pub(crate) fn load_file(
+    path: &std::path::Path,
+) -> Result<Scenario, stewart_kinematics::io::scenario::ScenarioError> {
+    Scenario::load_checked(path, &crate::link_plan::template_problem)
 }
 
 /// The files a command reads through these arguments, with the words that name them (an

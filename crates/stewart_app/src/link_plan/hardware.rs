@@ -53,6 +53,16 @@ pub(crate) fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
     ChannelMap::new(channels, output).map_err(|e| anyhow!("[link] {e}"))
 }
 
+/// Why the scenario's template (its `link.template`, whether or not it is the format in
+/// use) is no template: `(key, reason)` for a scenario loader to place at its line, so a
+/// bad template is refused where it is written, not first when a link starts.
+pub(crate) fn template_problem(scenario: &Scenario) -> Option<(String, String)> {
+    let text = scenario.link.template.as_deref()?;
+    Template::parse(text)
+        .err()
+        .map(|e| ("link.template".to_owned(), e.to_string()))
+}
+
 /// The wire format of `[link]` (a template parsed, or refused at its column).
 pub(crate) fn format(link: &LinkSettings) -> Result<Format> {
     Ok(match link.format {

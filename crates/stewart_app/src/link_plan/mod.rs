@@ -21,7 +21,7 @@ mod follow;
 mod hardware;
 
 pub(crate) use follow::{Drive, Followed};
-pub(crate) use hardware::actuator_range;
+pub(crate) use hardware::{actuator_range, template_problem};
 
 /// The step of the central differences that give the target's velocity and acceleration,
 /// seconds (their error is ~h⁴ of the motion's fifth and sixth derivatives, their rounding

@@ -203,7 +203,7 @@ fn a_bad_template_is_one_error_naming_its_column() {
         assert!(stderr(&o).contains(said), "{template}: {}", stderr(&o));
         assert!(stdout(&o).is_empty(), "{template}: sent something");
     }
-    // The same template in a scenario file is refused when the link is planned.
+    // The same template given by `--set` is refused as that `--set`, before any work.
     let o = stewart(&[
         "link",
         "--preset",
@@ -216,7 +216,9 @@ fn a_bad_template_is_one_error_naming_its_column() {
     ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(
-        stderr(&o).contains("link.template: template column 1: `a9` names no actuator"),
+        stderr(&o).contains(
+            "--set `link.template={a9:u8}`: `link.template` refused: template column 1: `a9` names no actuator"
+        ),
         "{}",
         stderr(&o)
     );
@@ -515,4 +517,106 @@ fn device_sim_reads_each_odrive_board_over_udp_and_over_serial() {
         "{}",
         stderr(&o)
     );
+}
+
+/// A template whose frame ends in a space (a board that reads space-ended numbers).
+const SPACED: &str = "<255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be} ";
+
+/// The bytes of a short dry run of the paired preset with `args` (a scenario or `--set`s).
+fn dry_run_bytes(args: &[&str]) -> Vec<u8> {
+    let dir = tempdir();
+    let out = dir.path().join("frames.bin");
+    let path = out.display().to_string();
+    let timing = ["--duration", "0.1", "--rate", "100", "--ramp", "0.05"];
+    let o = stewart(&[&["link", "--dry-run"][..], args, &timing, &["--out", &path]].concat());
+    assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+    std::fs::read(&out).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The paired preset with `[link]` written in a file, in `dir`.
+fn paired_file_with_link(dir: &std::path::Path, link: &str) -> String {
+    let preset = include_str!("../../../stewart_kinematics/presets/paired.toml");
+    let path = dir.join("paired-board.toml");
+    std::fs::write(&path, format!("{preset}\n[link]\n{link}\n")).unwrap_or_else(|e| panic!("{e}"));
+    path.display().to_string()
+}
+
+#[test]
+fn a_template_ending_in_a_space_is_sent_whole_from_every_place_it_is_written() {
+    let dir = tempdir();
+    let file = paired_file_with_link(
+        dir.path(),
+        &format!("format = \"template\"\ntemplate = \"{SPACED}\""),
+    );
+    let from_file = dry_run_bytes(&["--scenario", &file]);
+    // Seven bytes and twelve, then the space: every frame ends in it.
+    assert_eq!(from_file.len() % 14, 0, "{}", from_file.len());
+    assert!(from_file.chunks(14).all(|f| f[0] == 255 && f[13] == b' '));
+    let format = format!("template:{SPACED}");
+    let set_format = format!("link.format={format}");
+    let set_template = format!("link.template={SPACED}");
+    for args in [
+        &["--preset", "paired", "--format", &format][..],
+        &["--preset", "paired", "--set", &set_format],
+        &[
+            "--preset",
+            "paired",
+            "--set",
+            &set_template,
+            "--set",
+            "link.format=template",
+        ],
+    ] {
+        assert_eq!(dry_run_bytes(args), from_file, "{args:?}");
+    }
+    // And the stand-in board given the same template on its command line reads every
+    // frame the file's link sends (a dropped space damaged all of them).
+    let address = free_port();
+    let sim = device_sim(&address, &["--format", &format]);
+    let o = stewart(&[
+        "link",
+        "--scenario",
+        &file,
+        "--transport",
+        "udp",
+        "--address",
+        &address,
+        "--duration",
+        "0.5",
+        "--rate",
+        "100",
+        "--ramp",
+        "0.1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let sent = frames_sent(&o);
+    assert!(sent > 20, "{sent}");
+    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        stderr(&sim).contains(&format!("device-sim: {sent} frames, 0 damaged, 0 lost")),
+        "{}",
+        stderr(&sim)
+    );
+}
+
+#[test]
+fn a_bad_template_in_a_file_is_refused_at_its_line_by_every_command() {
+    let dir = tempdir();
+    let file = paired_file_with_link(dir.path(), "template = \"<255>{a7:u16be}\"");
+    let line = std::fs::read_to_string(&file)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .lines()
+        .position(|l| l.starts_with("template"))
+        .map(|k| k + 1)
+        .unwrap_or_else(|| panic!("no template line"));
+    for command in [&["check"][..], &["solve"], &["link", "--dry-run"]] {
+        let o = stewart(&[command, &["--scenario", &file]].concat());
+        assert_eq!(o.status.code(), Some(2), "{command:?}");
+        let said = stderr(&o);
+        assert!(
+            said.contains(&format!("paired-board.toml, line {line}"))
+                && said.contains("`link.template` template column 6: `a7` names no actuator"),
+            "{command:?}: {said}"
+        );
+    }
 }

@@ -16,16 +16,38 @@ impl Scenario {
         file: &str,
         base_dir: Option<&Path>,
     ) -> Result<Self, ScenarioError> {
+        Self::from_toml_str_checked(text, file, base_dir, &|_| None)
+    }
+
+    /// [`Scenario::from_toml_str`], then `check` (a rule of a layer above, such as the
+    /// link's template grammar): its `(key, reason)` is refused at the key's line.
+    pub fn from_toml_str_checked(
+        text: &str,
+        file: &str,
+        base_dir: Option<&Path>,
+        check: &dyn Fn(&Scenario) -> Option<(String, String)>,
+    ) -> Result<Self, ScenarioError> {
         let scenario = build::parse(text, file, base_dir)?;
         // Values no constructor refused may still be absurd (a 1e300 m radius).
         if let Some((setting, reason)) = crate::io::settings::out_of_range(&scenario) {
             return Err(build::invalid_key(text, file, &setting.key, reason));
+        }
+        if let Some((key, reason)) = check(&scenario) {
+            return Err(build::invalid_key(text, file, &key, reason));
         }
         Ok(scenario)
     }
 
     /// Load a scenario file.
     pub fn load(path: &Path) -> Result<Self, ScenarioError> {
+        Self::load_checked(path, &|_| None)
+    }
+
+    /// [`Scenario::load`], then `check` as [`Scenario::from_toml_str_checked`] does.
+    pub fn load_checked(
+        path: &Path,
+        check: &dyn Fn(&Scenario) -> Option<(String, String)>,
+    ) -> Result<Self, ScenarioError> {
         let name = path.display().to_string();
         let unreadable = |message: String| ScenarioError {
             file: name.clone(),
@@ -36,7 +58,7 @@ impl Scenario {
         let bytes = crate::io::file::read_file(path, crate::io::file::FileKind::Scenario)
             .map_err(|e| unreadable(gate_words(&e)))?;
         let text = crate::io::text::decode(bytes).map_err(unreadable)?;
-        Self::from_toml_str(&text, &name, path.parent())
+        Self::from_toml_str_checked(&text, &name, path.parent(), check)
     }
 
     /// A shipped preset by name.

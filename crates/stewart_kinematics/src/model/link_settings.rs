@@ -188,6 +188,23 @@ pub struct LinkProblem {
     pub reason: String,
 }
 
+/// A template as written after `=` (in `--set`) or `template:` (in `--format`): its
+/// leading spaces dropped and its end kept, as a space may be a byte the board reads.
+/// The one rule for every place a template is written (a scenario file's quoted string
+/// is taken whole).
+pub fn template_text(written: &str) -> &str {
+    written.trim_start()
+}
+
+/// The template of a format written as `template:…` (see [`template_text`]), or `None`
+/// for any other format word.
+pub fn template_of_format(written: &str) -> Option<&str> {
+    written
+        .trim_start()
+        .strip_prefix("template:")
+        .map(template_text)
+}
+
 impl LinkSettings {
     /// The first value that cannot work, if any: a rate outside 10–1000 Hz, a baud rate of 0,
     /// an empty port or address, NaN or infinite numbers, a zero scale or pulse step, a pulse
@@ -315,6 +332,9 @@ impl LinkSettings {
             key: full.clone(),
             reason,
         };
+        // A template's text keeps its end (see [`template_text`]); every other value is
+        // trimmed.
+        let raw = value;
         let value = value.trim();
         let mut edited = self.clone();
         let number = || -> Result<f64, LinkProblem> {
@@ -358,7 +378,7 @@ impl LinkSettings {
                 })?;
             }
             ("rate_hz", None) => edited.rate_hz = number()?,
-            ("format", None) => match value.trim_start().strip_prefix("template:") {
+            ("format", None) => match template_of_format(raw) {
                 // `template:<255>…` sets both.
                 Some(template) => {
                     edited.format = LinkFormat::Template;
@@ -367,7 +387,8 @@ impl LinkSettings {
                 None => edited.format = choice(value).map_err(refuse)?,
             },
             ("template", None) => {
-                edited.template = (!value.eq_ignore_ascii_case("off")).then(|| value.to_owned());
+                edited.template =
+                    (!value.eq_ignore_ascii_case("off")).then(|| template_text(raw).to_owned());
             }
             ("output", None) => {
                 edited.output = choice(value).map_err(refuse)?;

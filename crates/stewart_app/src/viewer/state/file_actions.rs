@@ -39,7 +39,7 @@ impl ViewerState {
     pub(crate) fn open_file(&mut self, path: &Path) {
         let full = absolute(path);
         self.files.status = Some(
-            match regular_file(&full).and_then(|()| Ok(Scenario::load(&full)?)) {
+            match regular_file(&full).and_then(|()| Ok(crate::source::load_file(&full)?)) {
                 Ok(s) => {
                     let name = s.name.clone();
                     self.session.origin = full.display().to_string();

@@ -95,10 +95,11 @@ impl Session {
 
     /// The saved scenario, or why it no longer reads.
     pub(crate) fn scenario(&self) -> Result<Scenario, ViewerError> {
-        Ok(Scenario::from_toml_str(
+        Ok(Scenario::from_toml_str_checked(
             &self.scenario,
             "the saved session",
             None,
+            &crate::link_plan::template_problem,
         )?)
     }
 

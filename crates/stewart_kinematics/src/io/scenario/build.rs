@@ -177,9 +177,14 @@ fn checked_table<T: Clone + Default>(
 }
 
 /// The error for the value of `key` in `text` (the file `file`), refused for `reason`,
-/// located at the key when the text has it.
+/// located at the key when the text has it, else at its table (`link.template` written
+/// as `link.format = "template:…"` is found at `[link]`).
 pub(crate) fn invalid_key(text: &str, file: &str, key: &str, reason: String) -> ScenarioError {
-    Source { text, file }.invalid(super::locate::span_of(text, key), key, reason)
+    let span = super::locate::span_of(text, key).or_else(|| {
+        let (table, _) = key.rsplit_once('.')?;
+        super::locate::span_of(text, table)
+    });
+    Source { text, file }.invalid(span, key, reason)
 }
 
 fn angles(src: &Source, field: &str, v: &Spanned<Vec<f64>>) -> Result<[Angle; 6], ScenarioError> {
