@@ -5,6 +5,7 @@
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::Scenario;
 use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::link_settings;
 use stewart_kinematics::model::link_settings::Word as _;
 use stewart_kinematics::model::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
@@ -60,7 +61,7 @@ pub(crate) fn template_problem(scenario: &Scenario) -> Option<(String, String)> 
     let text = scenario.link.template.as_deref()?;
     Template::parse(text)
         .err()
-        .map(|e| ("link.template".to_owned(), e.to_string()))
+        .map(|e| (link_settings::TEMPLATE_KEY.to_owned(), e.to_string()))
 }
 
 /// The wire format of `[link]` (a template parsed, or refused at its column).

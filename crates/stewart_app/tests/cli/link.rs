@@ -179,14 +179,14 @@ fn a_udp_stream_arrives_in_order_and_ends_disarmed() {
 #[test]
 fn a_peer_that_goes_away_disarms_the_link_with_a_clear_error() {
     // A port nobody listens on: loopback answers with "connection refused", which the
-    // sender sees on a following send.
-    let gone = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let address = gone
-        .local_addr()
-        .unwrap_or_else(|e| panic!("{e}"))
-        .to_string();
-    drop(gone);
+    // sender sees on a following send. The port is held on 127.0.0.1 while the link sends
+    // to it on 127.0.0.2, so no other test running beside this one can be given it (a
+    // wildcard bind of it is refused while it is held).
+    let held = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    let port = held.local_addr().unwrap_or_else(|e| panic!("{e}")).port();
+    let address = format!("127.0.0.2:{port}");
     let o = udp_link("paired", &address, "2", "100", "2");
+    drop(held);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("error: the link stopped: sending to"), "{err}");

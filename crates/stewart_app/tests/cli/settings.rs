@@ -78,7 +78,15 @@ fn a_refused_setting_is_one_clear_error() {
     for (args, expected) in [
         (
             vec!["solve", "--set", "geometry.base_radius=-1"],
-            "error: --set: `geometry.base_radius` = -1 refused: `base_radius` must be positive, got -1",
+            "error: --set: `geometry.base_radius` = -1 refused: -1 is outside the accepted range above 0 … 1000 m",
+        ),
+        (
+            vec!["check", "--set", "cueing.mpc_horizon_steps=41"],
+            "error: --set: `cueing.mpc_horizon_steps` = 41 refused: 41 is outside the accepted range 1 … 40",
+        ),
+        (
+            vec!["check", "--set", "cueing.tilt=maybe"],
+            "error: --set: `cueing.tilt` = maybe refused: it is a switch: true or false (on or off, 1 or 0)",
         ),
         (
             vec![

@@ -188,6 +188,9 @@ pub struct LinkProblem {
     pub reason: String,
 }
 
+/// The scenario key of the output template (where a refusal of it is placed).
+pub const TEMPLATE_KEY: &str = "link.template";
+
 /// A template as written after `=` (in `--set`) or `template:` (in `--format`): its
 /// leading spaces dropped and its end kept, as a space may be a byte the board reads.
 /// The one rule for every place a template is written (a scenario file's quoted string

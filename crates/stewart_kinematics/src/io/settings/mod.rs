@@ -270,12 +270,21 @@ impl Setting {
     /// The accepted range in words, such as `-1000 … 1000 m`, or `above 0 … 1000 m` when
     /// its lower end is refused.
     pub fn accepted_words(&self) -> String {
-        let words = crate::io::bounds::range_words(&self.accepted, self.unit.symbol());
+        self.accepted_words_in(self.unit.symbol())
+    }
+
+    /// [`Setting::accepted_words`] in the unit of a platform whose actuators are of
+    /// `kind` (a stiffness in N/m or N·m/rad).
+    pub fn accepted_words_for(&self, kind: ActuatorKind) -> String {
+        self.accepted_words_in(self.unit.symbol_for(kind))
+    }
+
+    fn accepted_words_in(&self, unit: &str) -> String {
+        let words = crate::io::bounds::range_words(&self.accepted, unit);
         match (self.min_excluded, self.max_excluded) {
             (false, false) => words,
             (true, false) => format!("above {words}"),
             (min, true) => {
-                let unit = self.unit.symbol();
                 let above = if min { "above" } else { "from" };
                 format!(
                     "{above} {} and below {} {unit}",
@@ -286,6 +295,26 @@ impl Setting {
                 .to_owned()
             }
         }
+    }
+
+    /// Whether `v` lies in the accepted range (its excluded ends refused); the refusal
+    /// names this setting's own rule, as `stewart settings` prints it.
+    pub fn check_accepted(&self, v: f64, kind: ActuatorKind) -> Result<(), String> {
+        if !v.is_finite() {
+            return Err("it must be a finite number".to_owned());
+        }
+        let (lo, hi) = (*self.accepted.start(), *self.accepted.end());
+        let inside = self.accepted.contains(&v)
+            && !(self.min_excluded && v == lo)
+            && !(self.max_excluded && v == hi);
+        if inside {
+            return Ok(());
+        }
+        Err(format!(
+            "{} is outside the accepted range {}",
+            crate::io::bounds::short(v),
+            self.accepted_words_for(kind)
+        ))
     }
 
     /// Whether the setting may be absent (`off`).
@@ -400,9 +429,9 @@ impl Setting {
                 return Err(invalid("it must be a finite number".to_owned()));
             }
             Some(v) if self.unit == Unit::Switch && v != 0.0 && v != 1.0 => {
-                return Err(invalid(format!(
-                    "it is a switch: true (1) or false (0), got {v}"
-                )));
+                return Err(invalid(
+                    "it is a switch: true or false (on or off, 1 or 0)".to_owned(),
+                ));
             }
             Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
                 return Err(invalid(format!(
@@ -410,12 +439,11 @@ impl Setting {
                     self.accepted_words()
                 )));
             }
-            // The unit's range here; within it the model refuses what its own rules refuse
-            // (a negative radius), in its own words — the rules `accepted` shows.
-            Some(v) => {
-                crate::io::bounds::check(v, &self.unit.accepted(), self.unit.symbol())
-                    .map_err(|e| invalid(e.to_string()))?;
-            }
+            // The setting's own accepted range, as printed; within it the model refuses
+            // only what depends on other settings (a stroke minimum above its maximum).
+            Some(v) => self
+                .check_accepted(v, scenario.geometry.actuator().kind())
+                .map_err(invalid)?,
             _ => {}
         }
         self.target.set(scenario, value).map_err(invalid)
@@ -466,7 +494,16 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
     } else if value.eq_ignore_ascii_case("off") {
         None
     } else {
-        Some(value.parse::<f64>().map_err(|_| syntax())?)
+        let reason = match setting.unit {
+            Unit::Switch => "it is a switch: true or false (on or off, 1 or 0)",
+            _ if setting.optional() => "it must be a number, or `off`",
+            _ => "it must be a number",
+        };
+        Some(value.parse::<f64>().map_err(|_| SettingError::Invalid {
+            key: setting.key.clone(),
+            value: value.to_owned(),
+            reason: reason.to_owned(),
+        })?)
     };
     Ok((setting, value))
 }
@@ -491,9 +528,9 @@ pub fn quantity_limit_targets(kind: ActuatorKind) -> [Target; 2] {
 pub fn out_of_range(scenario: &Scenario) -> Option<(&'static Setting, String)> {
     all().iter().find_map(|s| {
         let v = s.get(scenario)?;
-        crate::io::bounds::check(v, &s.unit.accepted(), s.unit.symbol())
+        s.check_accepted(v, scenario.geometry.actuator().kind())
             .err()
-            .map(|reason| (s, reason.to_string()))
+            .map(|reason| (s, reason))
     })
 }
 

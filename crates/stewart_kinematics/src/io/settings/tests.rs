@@ -146,7 +146,7 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
     let cases = [
         (
             "geometry.base_radius=-1",
-            "`geometry.base_radius` = -1 refused: `base_radius` must be positive, got -1",
+            "`geometry.base_radius` = -1 refused: -1 is outside the accepted range above 0 … 1000 m",
         ),
         ("geometry.leg_min=2", "`geometry.leg_min` = 2 refused"),
         ("geometry.base_radius=off", "it cannot be switched off"),
@@ -156,7 +156,7 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
         ("trajectory.samples=1", "outside the accepted range 2 … 1e7"),
         (
             "trajectory.duration_s=0",
-            "`duration_s` must be a positive finite number",
+            "0 is outside the accepted range above 0 … 1e6 s",
         ),
         (
             "trajectory.radius_m=0.1",
@@ -164,12 +164,26 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
         ),
         (
             "limits.base_cone_deg=200",
-            "a cone must be less than 180°, got 200",
+            "200 is outside the accepted range above 0 and below 180 °",
         ),
-        ("checks.jump_ratio=-3", "it must be positive, got -3"),
+        (
+            "checks.jump_ratio=-3",
+            "-3 is outside the accepted range above 0 … 1e12",
+        ),
         ("geometry.radius=1", "unknown setting `geometry.radius`"),
         ("geometry.base_radius", "is not KEY=VALUE"),
-        ("geometry.base_radius=big", "is not KEY=VALUE"),
+        (
+            "geometry.base_radius=big",
+            "`geometry.base_radius` = big refused: it must be a number",
+        ),
+        (
+            "cueing.tilt=yes",
+            "`cueing.tilt` = yes refused: it is a switch: true or false",
+        ),
+        (
+            "limits.leg_speed_max_m_s=fast",
+            "it must be a number, or `off`",
+        ),
     ];
     for (text, expected) in cases {
         let mut s = preset("paired");
@@ -246,7 +260,7 @@ fn values_outside_the_accepted_range_are_refused_by_set_and_by_files() {
         .unwrap_err();
     assert_eq!(
         e.to_string(),
-        "`trajectory.duration_s` = 1e308 refused: 1e308 is outside the accepted range -1e6 … 1e6 s"
+        "`trajectory.duration_s` = 1e308 refused: 1e308 is outside the accepted range above 0 … 1e6 s"
     );
     assert_eq!(s, before);
     let e = find("trajectory.samples")
@@ -275,7 +289,7 @@ fn values_outside_the_accepted_range_are_refused_by_set_and_by_files() {
     assert_eq!(
         e.to_string(),
         format!(
-            "big.toml, line {line}, column 15: `geometry.base_radius` 1e300 is outside the accepted range -1000 … 1000 m"
+            "big.toml, line {line}, column 15: `geometry.base_radius` 1e300 is outside the accepted range above 0 … 1000 m"
         )
     );
 }
@@ -548,7 +562,11 @@ fn cueing_settings_take_numbers_and_switches_and_refuse_what_cannot_work() {
         e.map(|e| e.to_string()).unwrap_or_default()
     };
     assert!(refused("cueing.tilt=2").contains("switch"));
-    assert!(refused("cueing.tilt_lp_wn=-1").contains("must be a positive number"));
+    assert!(
+        refused("cueing.tilt_lp_wn=-1").contains("-1 is outside the accepted range above 0 … "),
+        "{}",
+        refused("cueing.tilt_lp_wn=-1")
+    );
     assert!(refused("cueing.translation_scale=off").contains("cannot be switched off"));
     assert!(refused("cueing.washout=1").contains("unknown setting"));
 }
@@ -583,11 +601,11 @@ fn dynamics_settings_are_read_written_and_refused_by_key() {
     };
     assert_eq!(
         refused(&mut seed, "dynamics.actuator_stiffness=0"),
-        "`dynamics.actuator_stiffness` = 0 refused: must be a positive stiffness of at most 1e12, got 0"
+        "`dynamics.actuator_stiffness` = 0 refused: 0 is outside the accepted range above 0 … 1e12 N/m"
     );
     assert_eq!(
         refused(&mut seed, "dynamics.rod_mass_kg=-2"),
-        "`dynamics.rod_mass_kg` = -2 refused: must be a mass in kg from 0 to 1e6, got -2"
+        "`dynamics.rod_mass_kg` = -2 refused: -2 is outside the accepted range 0 … 1e6 kg"
     );
     assert_eq!(
         refused(&mut seed, "dynamics.rod_mass_kg=off"),
@@ -662,4 +680,74 @@ fn a_stiffness_switched_on_starts_at_a_typical_actuators_and_servos_get_their_ow
         clearance.value_when_switched_on(&legs),
         *clearance.range.end()
     );
+}
+
+#[test]
+fn every_refusal_outside_a_settings_range_names_that_settings_own_printed_rule() {
+    // For each preset and each setting that applies to it: a value just past either end
+    // of the range `stewart settings` prints (or on an end printed as excluded) is refused
+    // as that setting, quoting that range — never another key's rule, nor a unit's range
+    // wider or narrower than the one printed. And each printed end itself, when not
+    // excluded, is not refused for being outside a range.
+    let mut tried = 0;
+    for name in presets::names() {
+        let scenario = preset(name);
+        let kind = scenario.geometry.actuator().kind();
+        for setting in all().iter().filter(|s| s.applies(&scenario)) {
+            if setting.target.actuator_kind().is_some_and(|k| k != kind) {
+                continue;
+            }
+            let (lo, hi) = (*setting.accepted.start(), *setting.accepted.end());
+            let past = |v: f64, down: bool| {
+                let step = (v.abs() * 1e-9).max(1e-9);
+                if down { v - step } else { v + step }
+            };
+            let below = if setting.min_excluded {
+                lo
+            } else {
+                past(lo, true)
+            };
+            let above = if setting.max_excluded {
+                hi
+            } else {
+                past(hi, false)
+            };
+            let rule = setting.accepted_words_for(kind);
+            for v in [below, above] {
+                let mut s = scenario.clone();
+                match setting.set(&mut s, Some(v)) {
+                    Err(SettingError::Invalid { key, reason, .. }) => {
+                        assert_eq!(key, setting.key, "{name}: {v}");
+                        if setting.unit == Unit::Count && v.fract() != 0.0 {
+                            assert!(reason.contains(&rule), "{name} {key}={v}: {reason}");
+                        } else if setting.unit != Unit::Switch {
+                            assert!(
+                                reason.contains(&format!("outside the accepted range {rule}")),
+                                "{name} {key}={v}: {reason}"
+                            );
+                        }
+                    }
+                    other => panic!("{name} {}={v}: {other:?}", setting.key),
+                }
+                assert_eq!(s, scenario, "{name} {}={v} changed it", setting.key);
+                tried += 1;
+            }
+            for v in [lo, hi] {
+                let excluded =
+                    (v == lo && setting.min_excluded) || (v == hi && setting.max_excluded);
+                if excluded || !v.is_finite() {
+                    continue;
+                }
+                let mut s = scenario.clone();
+                if let Err(e) = setting.set(&mut s, Some(v)) {
+                    assert!(
+                        !e.to_string().contains("accepted range"),
+                        "{name} {}={v}: an end printed as accepted is refused as outside: {e}",
+                        setting.key
+                    );
+                }
+            }
+        }
+    }
+    assert!(tried > 1000, "{tried}");
 }
