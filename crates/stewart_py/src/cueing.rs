@@ -86,7 +86,7 @@ pub fn cue<'py>(
     }
     let s = &scenario;
     let cued = py
-        .detach(|| cue_recording(&s.geometry, &s.limits, &s.cueing, &samples))
+        .detach(|| cue_recording(&s.geometry, &s.limits, &s.checks, &s.cueing, &samples))
         .map_err(refused)?;
     let rows: Vec<[f64; 6]> = cued.poses.iter().map(Pose::to_row).collect();
     Ok(PyArray2::from_vec2(
@@ -128,7 +128,7 @@ pub fn cue_compare<'py>(
     let samples = samples(vehicle)?;
     let s = &scenario;
     let both = py
-        .detach(|| compare(&s.geometry, &s.limits, &s.cueing, &samples))
+        .detach(|| compare(&s.geometry, &s.limits, &s.checks, &s.cueing, &samples))
         .map_err(refused)?;
     let out = PyDict::new(py);
     out.set_item("washout", measures(py, &both[0].0)?)?;

@@ -548,6 +548,7 @@ mod tests {
         let expected = cue_recording(
             &scenario.geometry,
             &scenario.limits,
+            &scenario.checks,
             &scenario.cueing,
             &samples,
         )
@@ -635,6 +636,7 @@ mod tests {
         let expected = cue_recording(
             &scenario.geometry,
             &scenario.limits,
+            &scenario.checks,
             &scenario.cueing,
             &samples,
         )

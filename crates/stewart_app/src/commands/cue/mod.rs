@@ -58,6 +58,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         let both = compare(
             &scenario.geometry,
             &scenario.limits,
+            &scenario.checks,
             &scenario.cueing,
             samples,
         )
@@ -73,6 +74,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let cued = cue_recording(
         &scenario.geometry,
         &scenario.limits,
+        &scenario.checks,
         &scenario.cueing,
         samples,
     )
@@ -86,12 +88,17 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let mut said = summary(samples, &cued.scales);
     if let Some(p) = cued.planner.filter(|p| p.guarded + p.guard_stops > 0) {
         said.push_str(&format!(
-            "cue: the planner's plan left the actuators' range, speed or acceleration limits at {} poses: the actuator guard held them within{}\n",
+            "cue: the actuator guard changed {} of {} poses so that every limit `check` judges holds (where the plan broke one, and on the way back to it){}{}\n",
             p.guarded + p.guard_stops,
+            cued.poses.len(),
+            match p.guard_rewinds {
+                0 => String::new(),
+                n => format!("; it went back {n} times to brake earlier"),
+            },
             match p.guard_stops {
                 0 => String::new(),
                 n => format!(
-                    " ({n} of them by giving the last pose again, as no pose near the plan kept every other limit)"
+                    "; at {n} of them no pose near the plan kept every limit and the last pose was given again"
                 ),
             }
         ));

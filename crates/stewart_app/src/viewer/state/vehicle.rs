@@ -61,6 +61,7 @@ impl VehicleSource {
         let cued = cue_recording(
             &scenario.geometry,
             &scenario.limits,
+            &scenario.checks,
             &scenario.cueing,
             &samples,
         )
@@ -76,9 +77,13 @@ impl VehicleSource {
             ..scenario.cueing.clone()
         };
         let mut compared = vec![Compared::of(scenario, &scenario.cueing, &samples, &cued)];
-        if let Ok(other_cued) =
-            cue_recording(&scenario.geometry, &scenario.limits, &other, &samples)
-        {
+        if let Ok(other_cued) = cue_recording(
+            &scenario.geometry,
+            &scenario.limits,
+            &scenario.checks,
+            &other,
+            &samples,
+        ) {
             compared.push(Compared::of(scenario, &other, &samples, &other_cued));
         }
         Ok(Self {

@@ -44,7 +44,7 @@ fn a_vehicle_recording_plays_through_the_washout_and_follows_its_settings() {
     let scenario = h.state().scenario().clone();
     let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
     let cue = |s: &stewart_kinematics::Scenario| {
-        cue_recording(&s.geometry, &s.limits, &s.cueing, &samples)
+        cue_recording(&s.geometry, &s.limits, &s.checks, &s.cueing, &samples)
             .map(|c| c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}")))
             .unwrap_or_else(|e| panic!("{e}"))
     };
@@ -204,7 +204,7 @@ fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_th
     );
     // The recording is cued again by the planner, as `stewart cue` would.
     let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
-    let planned = cue_recording(&s.geometry, &s.limits, &s.cueing, &samples)
+    let planned = cue_recording(&s.geometry, &s.limits, &s.checks, &s.cueing, &samples)
         .map(|c| c.to_motion(&times, "x").unwrap_or_else(|e| panic!("{e}")))
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.motion.trajectory, planned.trajectory);

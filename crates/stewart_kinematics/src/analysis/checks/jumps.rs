@@ -51,33 +51,12 @@ pub(crate) fn check_series(
     ratio: f64,
     floor: f64,
 ) -> Vec<Finding> {
-    let n = values.len();
-    if n < 2 {
-        return Vec::new();
-    }
     let mut findings = Vec::new();
-    let mut steps = vec![0.0; n - 1];
-    // On an uneven grid (a pose table's own rows) a step is judged as the step it would
-    // be at the typical interval: a motion sampled more sparsely is no jump.
-    let scale = interval_scales(times);
     for leg in 0..6 {
-        for (k, (s, pair)) in steps.iter_mut().zip(values.windows(2)).enumerate() {
-            *s = (pair[1][leg] - pair[0][leg]).abs() * scale.as_ref().map_or(1.0, |c| c[k]);
-        }
         let mut found: Option<Finding> = None;
-        for k in 0..steps.len() {
-            let step = steps[k];
-            // A NaN step (or neighbourhood) is never a jump.
-            if step.is_nan() || step <= floor {
-                continue;
-            }
-            let typical = median_of_neighbours(&steps, k);
-            let limit = ratio * typical;
-            if limit.is_nan() || step <= limit {
-                continue;
-            }
+        for jump in jumps_in(times, values, ratio, floor).filter(|j| j.column == leg) {
             // The jump happens between samples k and k + 1; it is dated at k + 1.
-            let t = times[k + 1];
+            let (t, step, limit) = (times[jump.after], jump.step, jump.limit);
             let f = found.get_or_insert_with(|| Finding {
                 kind,
                 legs: vec![leg + 1],
@@ -86,8 +65,8 @@ pub(crate) fn check_series(
                 count: 0,
                 worst_time: t,
                 worst_value: step,
-                limit: limit.max(floor),
-                margin: limit.max(floor) - step,
+                limit,
+                margin: limit - step,
                 unit: unit.to_owned(),
             });
             f.last_time = t;
@@ -95,13 +74,62 @@ pub(crate) fn check_series(
             if step > f.worst_value {
                 f.worst_value = step;
                 f.worst_time = t;
-                f.limit = limit.max(floor);
+                f.limit = limit;
                 f.margin = f.limit - step;
             }
         }
         findings.extend(found);
     }
     findings
+}
+
+/// One step judged a jump: in which column, the sample it ends at, its size (at the
+/// typical interval) and the most it could have been.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Jump {
+    pub column: usize,
+    pub after: usize,
+    pub step: f64,
+    pub limit: f64,
+}
+
+/// Every step of `values` more than `ratio` times the median of its neighbours and more
+/// than `floor`, column by column (the rule of [`check_series`]).
+pub(crate) fn jumps_in<'a>(
+    times: &'a [f64],
+    values: &'a [[f64; 6]],
+    ratio: f64,
+    floor: f64,
+) -> impl Iterator<Item = Jump> + 'a {
+    let n = values.len();
+    // On an uneven grid (a pose table's own rows) a step is judged as the step it would
+    // be at the typical interval: a motion sampled more sparsely is no jump.
+    let scale = if n < 2 { None } else { interval_scales(times) };
+    (0..6).flat_map(move |column| {
+        let steps: Vec<f64> = values
+            .windows(2)
+            .enumerate()
+            .map(|(k, pair)| {
+                (pair[1][column] - pair[0][column]).abs() * scale.as_ref().map_or(1.0, |c| c[k])
+            })
+            .collect();
+        (0..steps.len())
+            .filter_map(|k| {
+                let step = steps[k];
+                // A NaN step (or neighbourhood) is never a jump.
+                if step.is_nan() || step <= floor {
+                    return None;
+                }
+                let limit = ratio * median_of_neighbours(&steps, k);
+                (!limit.is_nan() && step > limit).then_some(Jump {
+                    column,
+                    after: k + 1,
+                    step,
+                    limit: limit.max(floor),
+                })
+            })
+            .collect::<Vec<_>>()
+    })
 }
 
 fn median_of_neighbours(steps: &[f64], k: usize) -> f64 {

@@ -191,6 +191,7 @@ pub fn measure(
 pub fn compare(
     geometry: &Geometry,
     limits: &Limits,
+    checks: &crate::analysis::checks::CheckSettings,
     settings: &CueingSettings,
     samples: &[(f64, VehicleMotion)],
 ) -> Result<[(CueMeasures, CuedRecording); 2], CueError> {
@@ -205,7 +206,7 @@ pub fn compare(
             workspace_limiter: settings.workspace_limiter || algorithm == CueingAlgorithm::Washout,
             ..settings.clone()
         };
-        let cued = cue_recording(geometry, limits, &s, samples)?;
+        let cued = cue_recording(geometry, limits, checks, &s, samples)?;
         Ok((measure(geometry, &s, samples, &cued), cued))
     };
     Ok([run(CueingAlgorithm::Washout)?, run(CueingAlgorithm::Mpc)?])

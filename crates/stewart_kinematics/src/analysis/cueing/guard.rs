@@ -1,19 +1,28 @@
 //! The actuator guard: what model-predictive cueing promises — every actuator (leg or
 //! servo) within its range, its speed and its acceleration limit, as `check` measures
-//! them (finite differences of the values at the samples) — kept after the planner, in
-//! the actuators' own space.
+//! them (finite differences of the values at the samples), every pose within the joint
+//! cones and clearances and under the check's condition-number limit — kept after the
+//! planner, in the actuators' own space.
 //!
 //! The planner keeps these limits on its linearisation; where the rig is strongly
-//! nonlinear (a servo near the end of its travel) the exact motion can leave them. Each
-//! pose the planner gives is therefore judged by its actuator values against the last two
-//! given: the slope over the new interval must lie within the speed limit (less what the
-//! acceleration can add at the ends of a table, where `check` extrapolates), within the
-//! acceleration limit of the slope before, and slow enough to stop before the range's end
-//! at the acceleration limit. A pose outside is replaced by the pose whose actuator values
-//! are the nearest allowed (each actuator's slope clamped; the pose found by forward
-//! kinematics from the planner's), and counted: the planner's own state goes on, and the
-//! guard lets the motion back onto it as fast as the limits allow.
+//! nonlinear (a servo near the end of its travel, a rig near a singular pose) the exact
+//! motion can leave them. Each pose the planner gives is therefore judged by its actuator
+//! values against the last two given: the slope over the new interval must lie within the
+//! speed limit, within the acceleration limit of the slope before, and slow enough to stop
+//! before the range's end at the acceleration limit; the pose itself must keep every
+//! other limit. A pose outside is replaced by the pose whose actuator values are the
+//! nearest allowed (each actuator's slope clamped; the pose found by forward kinematics
+//! from the last), and counted.
+//!
+//! A motion heading fast into a cone or a singular pose may find no allowed pose at all
+//! (it cannot stop within one sample). The guard sees the whole recording, so it then goes
+//! back — two samples, then four, eight … — and brakes from there as hard as the limits
+//! allow, until the motion stops short of what it could not keep; at rest, staying put is
+//! always allowed. The planner's own state goes on throughout, and the guard lets the
+//! motion back onto it as fast as the limits allow.
 
+use crate::analysis::checks::CheckSettings;
+use crate::analysis::checks::jumps::jumps_in;
 use crate::analysis::workspace;
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
@@ -24,22 +33,82 @@ use crate::model::pose::Pose;
 pub struct ActuatorGuard {
     geometry: Geometry,
     limits: Limits,
+    /// The check's largest condition number (none on a geometry singular at every pose,
+    /// which `check` judges once, as the rig's, not pose by pose).
+    condition_max: Option<f64>,
+    /// The check's jump rule: ratio, and floor in the actuators' unit.
+    jump_ratio: f64,
+    jump_floor: f64,
     /// The range, the margin taken off (`±∞` where unset).
     range: (f64, f64),
     /// Speed and acceleration limits, the margin taken off.
     speed: Option<f64>,
     accel: Option<f64>,
-    /// The last two values given and their times, newest last.
-    history: Vec<(f64, [f64; 6], Pose)>,
+}
+
+/// One pose given: its time, actuator values and pose.
+type Given = (f64, [f64; 6], Pose);
+
+/// One actuator's recent motion: its slope over the last interval and that interval,
+/// and its acceleration at the last sample, where the poses given so far have them.
+#[derive(Clone, Copy, Debug)]
+struct Recent {
+    previous: Option<(f64, f64)>,
+    accel: Option<f64>,
+}
+
+/// Where a pose lies in the motion (its index in `times`), and whether it is to brake
+/// rather than follow.
+#[derive(Clone, Copy, Debug)]
+struct Place<'a> {
+    index: usize,
+    times: &'a [f64],
+    braking: bool,
+    /// Near a jump found before (how many times): every acceleration changes smoothly,
+    /// more slowly each time.
+    careful: u8,
+}
+
+/// A pass of [`ActuatorGuard::step`]: the planner's pose taken as it is, or a
+/// replacement steered towards it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Pass {
+    Accept,
+    Steer,
+}
+
+/// The samples over which a smooth motion's acceleration may go from nought to its limit.
+const SMOOTH_SAMPLES: f64 = 4.0;
+
+/// The most a sample's smoothing is doubled around the jumps found near it.
+const MOST_CAREFUL: u8 = 4;
+
+/// The most times a motion is guarded again around the jumps found in it.
+const JUMP_PASSES: usize = 16;
+
+/// What the guard did to a whole motion.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Guarded {
+    /// The poses given, one per pose planned.
+    pub poses: Vec<Pose>,
     /// Poses replaced to keep the limits.
     pub held: usize,
-    /// Poses for which no allowed pose was found: the last pose given again.
+    /// Times the guard went back to brake earlier.
+    pub rewound: usize,
+    /// Poses for which no allowed pose was found even so (the last pose given again):
+    /// none unless the motion starts outside the limits.
     pub stopped: usize,
 }
 
+/// The most times the guard steps through the motion, per pose planned, before it gives
+/// the last pose again where it finds no allowed one (a bound on the work, never reached
+/// by a motion that starts within the limits).
+const WORK_PER_POSE: usize = 64;
+
 impl ActuatorGuard {
-    /// The guard of `geometry` within `limits`, each kept `margin` (a share) inside.
-    pub fn new(geometry: &Geometry, limits: &Limits, margin: f64) -> Self {
+    /// The guard of `geometry` within `limits` and the thresholds of `checks` (the
+    /// condition number, jumps), each limit kept `margin` (a share) inside.
+    pub fn new(geometry: &Geometry, limits: &Limits, checks: &CheckSettings, margin: f64) -> Self {
         let [lo, hi] = geometry.quantity_limits();
         let width = match (lo, hi) {
             (Some(l), Some(h)) => h - l,
@@ -50,6 +119,13 @@ impl ActuatorGuard {
         Self {
             geometry: geometry.clone(),
             limits: *limits,
+            condition_max: (!crate::analysis::architecture::architecture(geometry).singular)
+                .then_some(checks.condition_max),
+            jump_ratio: checks.jump_ratio,
+            // As `check` judges servo angles: a jump of the horn tip by the floor.
+            jump_floor: geometry.rotary().map_or(checks.jump_floor, |servos| {
+                (checks.jump_floor / servos.horn_length()).to_degrees()
+            }),
             range: (
                 lo.map_or(f64::NEG_INFINITY, |l| l + keep),
                 hi.map_or(f64::INFINITY, |h| h - keep),
@@ -58,63 +134,226 @@ impl ActuatorGuard {
             // the planner's envelope by more than half of it.
             speed: speed.map(|v| v * (1.0 - 0.5 * margin)),
             accel: accel.map(|a| a * (1.0 - 0.5 * margin)),
-            history: Vec::with_capacity(3),
-            held: 0,
-            stopped: 0,
         }
     }
 
-    /// The pose to give at time `t` for the planner's `pose`.
-    pub fn pass(&mut self, t: f64, pose: Pose) -> Pose {
-        let Ok(wanted) = self.geometry.actuator_values_at(&pose) else {
-            return self.stop(t, pose);
-        };
-        let Some(&(t1, q1, last)) = self.history.last() else {
-            self.remember(t, wanted, pose);
-            return pose;
+    /// The poses to give for the planner's `planned` poses at `times` (as many): each
+    /// limit kept, and no step `check` would call a jump (where one is found, the motion
+    /// around it is guarded again, its acceleration changed smoothly there).
+    pub fn guard_all(&self, times: &[f64], planned: &[Pose]) -> Guarded {
+        let n = planned.len().min(times.len());
+        let mut careful = vec![0u8; n];
+        let mut out = self.guard_with(times, planned, &careful);
+        for _ in 0..JUMP_PASSES {
+            let values: Vec<[f64; 6]> = (out.poses.iter())
+                .map(|p| self.geometry.actuator_values_at(p).unwrap_or([f64::NAN; 6]))
+                .collect();
+            let mut found = false;
+            for jump in jumps_in(&times[..n], &values, self.jump_ratio, self.jump_floor) {
+                found = true;
+                let from = jump.after.saturating_sub(3 * SMOOTH_SAMPLES as usize);
+                let to = (jump.after + 3 * SMOOTH_SAMPLES as usize).min(n);
+                for c in &mut careful[from..to] {
+                    *c = (*c + 1).min(MOST_CAREFUL);
+                }
+            }
+            if !found {
+                break;
+            }
+            out = self.guard_with(times, planned, &careful);
+        }
+        out
+    }
+
+    /// [`ActuatorGuard::guard_all`] once, each sample marked in `careful` guarded
+    /// smoothly.
+    fn guard_with(&self, times: &[f64], planned: &[Pose], careful: &[u8]) -> Guarded {
+        let n = planned.len().min(times.len());
+        let mut given: Vec<(Given, bool)> = Vec::with_capacity(n);
+        let mut out = Guarded::default();
+        // Samples before this one are braked rather than steered towards the plan.
+        let mut brake_until = 0;
+        // How far the last failure went back, and where it happened.
+        let (mut span, mut failed_at) = (0usize, 0usize);
+        let budget = WORK_PER_POSE * n + 1000;
+        let mut work = 0;
+        let mut k = 0;
+        while k < n {
+            work += 1;
+            let history: [Option<Given>; 3] =
+                std::array::from_fn(|back| given.len().checked_sub(3 - back).map(|i| given[i].0));
+            let place = Place {
+                index: k,
+                times: &times[..n],
+                braking: k < brake_until,
+                careful: careful[k],
+            };
+            let wanted_before = (k > 0)
+                .then(|| self.geometry.actuator_values_at(&planned[k - 1]).ok())
+                .flatten();
+            match self.step(times[k], planned[k], wanted_before, history, place) {
+                Some((g, replaced)) => {
+                    given.push((g, replaced));
+                    k += 1;
+                }
+                None if k > 0 && work < budget => {
+                    // Go back and brake earlier: twice as far as last time when this
+                    // failure is no later than the last.
+                    span = if k <= failed_at { (span * 2).max(2) } else { 2 };
+                    failed_at = k;
+                    brake_until = brake_until.max(k + 1);
+                    let to = k.saturating_sub(span);
+                    given.truncate(to);
+                    k = to;
+                    out.rewound += 1;
+                }
+                None => {
+                    out.stopped += 1;
+                    let last = history[2].unwrap_or_else(|| {
+                        let q = self
+                            .geometry
+                            .actuator_values_at(&planned[k])
+                            .unwrap_or([0.0; 6]);
+                        (times[k], q, planned[k])
+                    });
+                    given.push(((times[k], last.1, last.2), true));
+                    k += 1;
+                }
+            }
+        }
+        out.held = given.iter().filter(|(_, replaced)| *replaced).count() - out.stopped;
+        out.poses = given.into_iter().map(|((_, _, pose), _)| pose).collect();
+        out
+    }
+
+    /// The pose to give at `t` for the planner's `pose` (whose actuator values at the
+    /// sample before were `wanted_before`) after the `history` (the last three given,
+    /// newest last), and whether it replaced the planner's; `None` when no allowed pose
+    /// was found.
+    fn step(
+        &self,
+        t: f64,
+        pose: Pose,
+        wanted_before: Option<[f64; 6]>,
+        history: [Option<Given>; 3],
+        place: Place,
+    ) -> Option<(Given, bool)> {
+        let wanted = self.geometry.actuator_values_at(&pose).ok();
+        let Some((t1, q1, last)) = history[2] else {
+            // The first pose: where the motion starts (at rest).
+            return Some(((t, wanted?, pose), false));
         };
         let dt = t - t1;
         if dt.is_nan() || dt <= 0.0 {
-            self.remember(t, wanted, pose);
-            return pose;
+            return Some(((t, wanted?, pose), false));
         }
-        let before = match self.history.as_slice() {
-            [(t0, q0, _), _] => Some((t1 - t0, *q0)),
-            _ => None,
+        // Each actuator's slope over the last interval and its acceleration at the last
+        // sample, where the history has them.
+        let slope = |a: &Given, b: &Given, i: usize| (b.1[i] - a.1[i]) / (b.0 - a.0);
+        let motion: [Recent; 6] = std::array::from_fn(|i| Recent {
+            previous: history[1].map(|g| (slope(&g, &history[2].unwrap_or(g), i), t1 - g.0)),
+            accel: match (history[0], history[1], history[2]) {
+                (Some(a), Some(b), Some(c)) => {
+                    Some((slope(&b, &c, i) - slope(&a, &b, i)) / (0.5 * (c.0 - a.0)))
+                }
+                _ => None,
+            },
+        });
+        let going_on: [f64; 6] = std::array::from_fn(|i| motion[i].previous.map_or(0.0, |p| p.0));
+        let steering: &[(f64, f64)] = match (place.braking, wanted) {
+            (false, Some(_)) => &[(1.0, 1.0), (0.5, 1.0), (0.0, 1.0), (0.0, 0.5), (0.0, 0.0)],
+            (false, None) => &[(0.0, 1.0), (0.0, 0.5), (0.0, 0.0)],
+            (true, _) => &[(0.0, 0.0)],
         };
-        let mut allowed = [(0.0, 0.0); 6];
-        let mut inside = true;
-        for i in 0..6 {
-            let previous = before.map(|(h0, q0)| ((q1[i] - q0[i]) / h0, h0));
-            allowed[i] = self.slopes(q1[i], dt, previous);
-            let s = (wanted[i] - q1[i]) / dt;
-            inside &= s >= allowed[i].0 && s <= allowed[i].1;
-        }
-        if inside {
-            self.remember(t, wanted, pose);
-            return pose;
-        }
-        // The nearest allowed to what the planner wants, else to half of it, else the
-        // motion going on as it was, at half its speed, or braking (each clamped to what
-        // is allowed): the first whose pose keeps every other limit too.
-        let going_on: [f64; 6] =
-            std::array::from_fn(|i| before.map_or(0.0, |(h0, q0)| (q1[i] - q0[i]) / h0));
-        // Last, braking as hard as allowed.
-        let candidates = [(1.0, 1.0), (0.5, 1.0), (0.0, 1.0), (0.0, 0.5), (0.0, 0.0)];
-        for (blend, keep_going) in candidates {
-            let values: [f64; 6] = std::array::from_fn(|i| {
-                let wanted_slope = (wanted[i] - q1[i]) / dt;
-                let s = blend * wanted_slope + (1.0 - blend) * keep_going * going_on[i];
-                q1[i] + s.clamp(allowed[i].0, allowed[i].1) * dt
+        // The planner's pose as it is when it keeps the limits (changing the
+        // acceleration smoothly, where a jump was found before); else a replacement that
+        // changes the acceleration smoothly (over a few samples, as a motion without jumps
+        // does), else as hard as the limits allow.
+        let passes = [
+            (Pass::Accept, place.careful > 0),
+            (Pass::Steer, true),
+            (Pass::Steer, false),
+        ];
+        // Near a jump found before, smoothly or not at all (then the guard goes back).
+        let passes = if place.careful > 0 {
+            &passes[..2]
+        } else {
+            &passes[..]
+        };
+        for &(pass, smooth) in passes {
+            let mut allowed = [(0.0, 0.0); 6];
+            let mut possible = true;
+            for (i, a) in allowed.iter_mut().enumerate() {
+                match self.slopes(q1[i], dt, motion[i], place, smooth) {
+                    Some(range) => *a = range,
+                    None => possible = false,
+                }
+            }
+            if !possible {
+                continue;
+            }
+            if pass == Pass::Accept {
+                if !place.braking
+                    && let Some(w) = wanted
+                    && (0..6).all(|i| {
+                        let s = (w[i] - q1[i]) / dt;
+                        s >= allowed[i].0 && s <= allowed[i].1
+                    })
+                    && self.keeps_the_other_limits(&pose)
+                {
+                    return Some(((t, w, pose), false));
+                }
+                continue;
+            }
+            // The nearest allowed to what the planner wants, else to half of it, else
+            // the motion going on as it was, at half its speed, or braking (each clamped
+            // to what is allowed): the first whose pose keeps every other limit too.
+            let target = wanted.unwrap_or(q1);
+            // First back onto the plan gently: the plan's own slope, and a quarter of the
+            // way the motion has strayed from it, so that it settles without overshoot.
+            let tracking = match (place.braking, wanted, wanted_before) {
+                (false, Some(w), Some(before)) => Some(std::array::from_fn::<f64, 6, _>(|i| {
+                    (w[i] - before[i]) / dt + (before[i] - q1[i]) / (SMOOTH_SAMPLES * dt)
+                })),
+                _ => None,
+            };
+            let slopes_tried =
+                tracking
+                    .into_iter()
+                    .chain(steering.iter().map(|&(blend, keep_going)| {
+                        std::array::from_fn(|i| {
+                            let wanted_slope = (target[i] - q1[i]) / dt;
+                            blend * wanted_slope + (1.0 - blend) * keep_going * going_on[i]
+                        })
+                    }));
+            let found = slopes_tried.into_iter().find_map(|slope: [f64; 6]| {
+                let values: [f64; 6] = std::array::from_fn(|i| {
+                    q1[i] + slope[i].clamp(allowed[i].0, allowed[i].1) * dt
+                });
+                if values == q1 {
+                    // Staying put: the last pose, already judged.
+                    return Some(((t, q1, last), true));
+                }
+                self.pose_of(&values, &last)
+                    .map(|found| ((t, values, found), true))
             });
-            // Found from the last pose given, whose values these are close to.
-            if let Some(found) = self.pose_of(&values, &last) {
-                self.held += 1;
-                self.remember(t, values, found);
+            if found.is_some() {
                 return found;
             }
         }
-        self.stop(t, pose)
+        None
+    }
+
+    /// Whether `pose` keeps the joint cones, clearances and (as its table row reads back)
+    /// the condition-number limit.
+    fn keeps_the_other_limits(&self, pose: &Pose) -> bool {
+        workspace::pose_within_limits_as_written(&self.geometry, &self.limits, pose)
+            && self.condition_max.is_none_or(|max| {
+                self.geometry
+                    .actuated_conditioning(&Pose::from_row(&pose.to_row()))
+                    .and_then(|c| c.condition_number)
+                    .is_some_and(|c| c <= max)
+            })
     }
 
     /// The pose whose actuator values are `values`, found from `near`, when it keeps every
@@ -125,25 +364,86 @@ impl ActuatorGuard {
             .geometry
             .actuator_values_at(&found)
             .is_ok_and(|q| q.iter().zip(values).all(|(a, b)| (a - b).abs() < 1e-6));
-        (exact && workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &found))
-            .then_some(found)
+        (exact && self.keeps_the_other_limits(&found)).then_some(found)
     }
 
-    /// The slopes allowed over the next interval of `dt` from value `q`, after the slope
-    /// `previous` over an interval of `h0` (none: the first interval, from rest).
-    fn slopes(&self, q: f64, dt: f64, previous: Option<(f64, f64)>) -> (f64, f64) {
+    /// The slopes allowed over the next interval of `dt` from value `q` after the
+    /// `recent` motion (none: from rest) at `place`; `None` when none keeps every limit.
+    /// `smooth`: the acceleration may change by a quarter of its limit a sample.
+    fn slopes(
+        &self,
+        q: f64,
+        dt: f64,
+        recent: Recent,
+        place: Place,
+        smooth: bool,
+    ) -> Option<(f64, f64)> {
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        let (s0, h0) = recent.previous.unwrap_or((0.0, dt));
+        let tau = 0.5 * (h0 + dt);
+        let (k, times) = (place.index, place.times);
+        let n = times.len();
         if let Some(a) = self.accel {
-            let (s0, h0) = previous.unwrap_or((0.0, dt));
-            let change = a * 0.5 * (h0 + dt);
-            (lo, hi) = (s0 - change, s0 + change);
+            let (mut least, mut most) = (-a, a);
+            if let Some(a0) = recent.accel {
+                if smooth {
+                    let change = a / (SMOOTH_SAMPLES * f64::from(1u8 << place.careful));
+                    (least, most) = (least.max(a0 - change), most.min(a0 + change));
+                }
+                // `check` extrapolates each end of a table from the two accelerations
+                // inside it, a₁(1 + w) − a₂·w with w from the four end samples' times:
+                // the second of them keeps that within the limit too.
+                let ends = |w: f64, known: f64, new_is_first: bool| {
+                    if new_is_first {
+                        // a_end = new·(1 + w) − known·w
+                        ((known * w - a) / (1.0 + w), (known * w + a) / (1.0 + w))
+                    } else {
+                        // a_end = known·(1 + w) − new·w
+                        ((known * (1.0 + w) - a) / w, (known * (1.0 + w) + a) / w)
+                    }
+                };
+                let mut keep_accel = |(l, h): (f64, f64)| {
+                    least = least.max(l);
+                    most = most.min(h);
+                };
+                if n >= 4 && k == 3 {
+                    let w = (2.0 * (times[1] - times[0]) + (times[2] - times[1]))
+                        / (times[3] - times[0]);
+                    keep_accel(ends(w, a0, false));
+                }
+                if n >= 4 && k + 1 == n {
+                    let w = (2.0 * (times[n - 1] - times[n - 2]) + (times[n - 2] - times[n - 3]))
+                        / (times[n - 1] - times[n - 4]);
+                    keep_accel(ends(w, a0, true));
+                }
+            }
+            if least > most {
+                return None;
+            }
+            (lo, hi) = (s0 + least * tau, s0 + most * tau);
         }
         let mut keep = |l: f64, h: f64| {
             lo = lo.max(l);
             hi = hi.min(h);
         };
+        if place.careful > 0 {
+            // Near a jump found before, each step at most twice the last (or the check's
+            // floor): a motion that grows so is no jump, whatever limits are set.
+            let grow = (self.jump_floor / dt).max(2.0 * s0.abs());
+            keep(-grow, grow);
+        }
         if let Some(v) = self.speed {
             keep(-v, v);
+            // The speed `check` extrapolates at each end: at the start from the first two
+            // slopes, s₀ − (s₁ − s₀)·h₀/(h₀ + h₁); at the end s + (s − s₀)·h/(h₀ + h).
+            if k == 2 {
+                let r = h0 / (h0 + dt);
+                keep((s0 * (1.0 + r) - v) / r, (s0 * (1.0 + r) + v) / r);
+            }
+            if k + 1 == n && k >= 2 {
+                let r = dt / (h0 + dt);
+                keep((s0 * r - v) / (1.0 + r), (s0 * r + v) / (1.0 + r));
+            }
         }
         let (bottom, top) = self.range;
         // Slow enough to stop before the end: s·dt to the next sample, one more interval
@@ -165,39 +465,21 @@ impl ActuatorGuard {
                 f64::INFINITY
             },
         );
-        if lo > hi {
-            // The limits cannot all hold (a margin already used up): the acceleration's
-            // bound nearest the others, which keeps the motion smooth.
-            let mid = 0.5 * (lo + hi);
-            (mid, mid)
-        } else {
-            (lo, hi)
-        }
-    }
-
-    /// The last pose given again (none: `pose`).
-    fn stop(&mut self, t: f64, pose: Pose) -> Pose {
-        self.stopped += 1;
-        let Some(&(_, q, last)) = self.history.last() else {
-            return pose;
-        };
-        self.remember(t, q, last);
-        last
-    }
-
-    fn remember(&mut self, t: f64, q: [f64; 6], pose: Pose) {
-        if self.history.len() == 2 {
-            self.history.remove(0);
-        }
-        self.history.push((t, q, pose));
+        (lo <= hi).then_some((lo, hi))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::checks::rates::leg_accelerations;
+    use crate::analysis::checks::rates::{leg_accelerations, leg_speeds};
     use crate::io::scenario::Scenario;
+    use crate::model::angle::Angle;
+    use crate::model::limits::joint_angles;
+
+    fn worst(series: &[[f64; 6]]) -> f64 {
+        series.iter().flatten().fold(0.0f64, |m, a| m.max(a.abs()))
+    }
 
     #[test]
     fn a_motion_within_the_limits_passes_untouched_and_a_sudden_stop_is_braked() {
@@ -207,35 +489,86 @@ mod tests {
             leg_accel_max: Some(2.0),
             ..s.limits
         };
-        let mut guard = ActuatorGuard::new(&s.geometry, &limits, 0.0);
+        let guard = ActuatorGuard::new(&s.geometry, &limits, &CheckSettings::default(), 0.0);
         let home = s.geometry.home_pose();
         let at = |z: f64| home.with_position(home.position + nalgebra::Vector3::new(0.0, 0.0, z));
         // Heaving at 0.1 m/s from rest after a gentle start (legs well inside the limits),
         // then stopping dead: the guard leaves the first part as it is and brakes the stop.
         let dt = 0.01;
-        let mut z = 0.0;
-        let mut v: f64 = 0.0;
+        let (mut z, mut v) = (0.0, 0.0f64);
         let mut times = Vec::new();
-        let mut given = Vec::new();
+        let mut planned = Vec::new();
         for k in 0..80 {
-            let t = k as f64 * dt;
             if k < 40 {
                 v = (v + 1.0 * dt).min(0.1);
                 z += v * dt;
             }
-            let planned = at(z);
-            let out = guard.pass(t, planned);
-            if k < 40 {
-                assert_eq!(out, planned, "{k}");
-            }
-            times.push(t);
-            given.push(s.geometry.leg_lengths(&out));
+            times.push(k as f64 * dt);
+            planned.push(at(z));
         }
-        assert!(guard.held > 0 && guard.stopped == 0, "{guard:?}");
-        let worst = leg_accelerations(&times, &given)
+        let out = guard.guard_all(&times, &planned);
+        assert_eq!(out.poses[..40], planned[..40]);
+        let counts = (out.held, out.rewound, out.stopped);
+        assert!(out.held > 0 && out.stopped == 0, "{counts:?}");
+        let given: Vec<_> = out
+            .poses
             .iter()
-            .flatten()
-            .fold(0.0f64, |m, a| m.max(a.abs()));
-        assert!(worst <= 2.0 + 1e-6, "{worst}");
+            .map(|p| s.geometry.leg_lengths(p))
+            .collect();
+        assert!(worst(&leg_accelerations(&times, &given)) <= 2.0 + 1e-6);
+    }
+
+    #[test]
+    fn a_motion_heading_fast_into_a_cone_is_braked_in_time_by_going_back() {
+        // Sliding sideways at 0.3 m/s into a base-joint cone set where the platform is
+        // 4 cm over: no pose within one sample of the cone keeps it, so the guard must
+        // have started braking earlier — it goes back and does.
+        let s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+        let home = s.geometry.home_pose();
+        let at = |x: f64| home.with_position(home.position + nalgebra::Vector3::new(x, 0.0, 0.0));
+        let cone_at = |x: f64| {
+            let p = at(x);
+            let angles = joint_angles(&p, &s.geometry.inverse(&p));
+            angles.iter().fold(0.0f64, |m, a| m.max(a[0]))
+        };
+        let wall = cone_at(0.04);
+        assert!(wall > cone_at(0.0), "the cone grows as the platform slides");
+        let limits = Limits {
+            leg_speed_max: Some(0.5),
+            leg_accel_max: Some(2.0),
+            base_cone: Some(Angle::from_radians(wall)),
+            platform_cone: None,
+            ..s.limits
+        };
+        let guard = ActuatorGuard::new(&s.geometry, &limits, &CheckSettings::default(), 0.0);
+        let dt = 0.01;
+        let (mut x, mut v) = (0.0, 0.0f64);
+        let mut times = Vec::new();
+        let mut planned = Vec::new();
+        for k in 0..100 {
+            v = (v + 1.0 * dt).min(0.3);
+            x += v * dt;
+            times.push(k as f64 * dt);
+            planned.push(at(x));
+        }
+        let out = guard.guard_all(&times, &planned);
+        let counts = (out.held, out.rewound, out.stopped);
+        assert!(out.rewound > 0 && out.stopped == 0, "{counts:?}");
+        for p in &out.poses {
+            assert!(workspace::pose_within_limits_as_written(
+                &s.geometry,
+                &limits,
+                p
+            ));
+        }
+        let given: Vec<_> = out
+            .poses
+            .iter()
+            .map(|p| s.geometry.leg_lengths(p))
+            .collect();
+        assert!(worst(&leg_speeds(&times, &given)) <= 0.5 + 1e-9);
+        assert!(worst(&leg_accelerations(&times, &given)) <= 2.0 + 1e-6);
+        // What was planned broke the cone; what is given does not.
+        assert!((planned.iter()).any(|p| !workspace::pose_within_limits(&s.geometry, &limits, p)));
     }
 }

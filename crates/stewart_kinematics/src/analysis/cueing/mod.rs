@@ -323,17 +323,16 @@ impl CuedRecording {
 }
 
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at
-/// neutral: the filters start at rest), each sample's motion held until the next.
+/// neutral: the filters start at rest), each sample's motion held until the next. A
+/// model-predictive cue keeps every limit `check` judges with `checks` (see [`guard`]).
 pub fn cue_recording(
     geometry: &Geometry,
     limits: &Limits,
+    checks: &crate::analysis::checks::CheckSettings,
     settings: &CueingSettings,
     samples: &[(f64, VehicleMotion)],
 ) -> Result<CuedRecording, CueError> {
     let mut cueing = Cueing::new(geometry, limits, settings)?;
-    // The planner promises the actuators' limits as `check` measures them: kept after it.
-    let mut guard = (settings.algorithm == CueingAlgorithm::Mpc)
-        .then(|| guard::ActuatorGuard::new(geometry, limits, settings.mpc_margin));
     let mut poses = Vec::with_capacity(samples.len());
     let mut scales = Vec::with_capacity(samples.len());
     let mut cues = Vec::with_capacity(samples.len());
@@ -353,19 +352,7 @@ pub fn cue_recording(
             }
             None => 0.0,
         };
-        let mut pose = cueing.advance(h);
-        if let Some(guard) = &mut guard {
-            pose = guard.pass(*t, pose);
-        }
-        if let Err((column, why)) = crate::io::bounds::check_pose_row(&pose.to_row()) {
-            return Err(CueError::PoseOutside {
-                index,
-                t: *t,
-                column: crate::model::trajectory::POSE_COLUMNS[column],
-                why,
-            });
-        }
-        poses.push(pose);
+        poses.push(cueing.advance(h));
         scales.push(cueing.scale());
         cues.push(cueing.cue());
         if cueing.preview {
@@ -384,13 +371,27 @@ pub fn cue_recording(
         }
         previous = Some(*t);
     }
-    let planner = cueing.mpc_counts().map(|mut counts| {
-        if let Some(g) = &guard {
-            counts.guarded = g.held as u64;
-            counts.guard_stops = g.stopped as u64;
+    let mut planner = cueing.mpc_counts();
+    // The planner promises every limit as `check` measures it: kept after it.
+    if let Some(counts) = &mut planner {
+        let times: Vec<f64> = samples.iter().map(|(t, _)| *t).collect();
+        let guard = guard::ActuatorGuard::new(geometry, limits, checks, settings.mpc_margin);
+        let guarded = guard.guard_all(&times, &poses);
+        counts.guarded = guarded.held as u64;
+        counts.guard_rewinds = guarded.rewound as u64;
+        counts.guard_stops = guarded.stopped as u64;
+        poses = guarded.poses;
+    }
+    for (index, (pose, (t, _))) in poses.iter().zip(samples).enumerate() {
+        if let Err((column, why)) = crate::io::bounds::check_pose_row(&pose.to_row()) {
+            return Err(CueError::PoseOutside {
+                index,
+                t: *t,
+                column: crate::model::trajectory::POSE_COLUMNS[column],
+                why,
+            });
         }
-        counts
-    });
+    }
     Ok(CuedRecording {
         poses,
         scales,

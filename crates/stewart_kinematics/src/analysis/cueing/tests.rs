@@ -60,12 +60,18 @@ fn pose_coordinates(
     recording: &[(f64, VehicleMotion)],
     settings: &CueingSettings,
 ) -> Vec<[f64; 6]> {
-    cue_recording(geometry, &Limits::default(), settings, recording)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses
-        .iter()
-        .map(Pose::to_coordinates)
-        .collect()
+    cue_recording(
+        geometry,
+        &Limits::default(),
+        &crate::analysis::checks::CheckSettings::default(),
+        settings,
+        recording,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses
+    .iter()
+    .map(Pose::to_coordinates)
+    .collect()
 }
 
 #[test]
@@ -143,9 +149,15 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         accel: [force, 0.0, 0.0],
         rates_deg_s: [0.0; 3],
     };
-    let poses = cue_recording(&g, &Limits::default(), &settings, &held(step, &t))
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses;
+    let poses = cue_recording(
+        &g,
+        &Limits::default(),
+        &crate::analysis::checks::CheckSettings::default(),
+        &settings,
+        &held(step, &t),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses;
     let pitch: Vec<f64> = poses.iter().map(|p| p.to_coordinates()[4]).collect();
     let limit = settings.tilt_rate_max_deg_s.to_radians() * h;
     let steps: Vec<f64> = pitch.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
@@ -180,9 +192,15 @@ fn tilt_reaches_asin_f_over_g_no_faster_than_its_rate_limit() {
         accel: [0.0, force, 0.0],
         rates_deg_s: [0.0; 3],
     };
-    let poses = cue_recording(&g, &Limits::default(), &settings, &held(left, &t))
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses;
+    let poses = cue_recording(
+        &g,
+        &Limits::default(),
+        &crate::analysis::checks::CheckSettings::default(),
+        &settings,
+        &held(left, &t),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses;
     let gravity = poses[3000].rotation().transpose() * Vector3::new(0.0, 0.0, -9.80665);
     assert!((gravity.y + force).abs() < 1e-9, "{gravity}");
 }
@@ -235,9 +253,15 @@ fn tilting_turns_about_the_reference_point_and_switched_off_axes_stay_at_neutral
         rates_deg_s: [0.0; 3],
     };
     let t: Vec<f64> = (0..=500).map(|k| f64::from(k) * 0.01).collect();
-    let poses = cue_recording(&g, &Limits::default(), &settings, &held(motion, &t))
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses;
+    let poses = cue_recording(
+        &g,
+        &Limits::default(),
+        &crate::analysis::checks::CheckSettings::default(),
+        &settings,
+        &held(motion, &t),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses;
     let c = g.pivot();
     let h = Vector3::from(head);
     let home_head = g.home_pose().position + h;
@@ -284,9 +308,15 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
         rotation_scale: 1.0,
         ..CueingSettings::default()
     };
-    let unlimited = cue_recording(&g, &limits, &free, &recording)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses;
+    let unlimited = cue_recording(
+        &g,
+        &limits,
+        &crate::analysis::checks::CheckSettings::default(),
+        &free,
+        &recording,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses;
     let outside = unlimited
         .iter()
         .filter(|p| !workspace::pose_within_limits(&g, &limits, p))
@@ -299,9 +329,15 @@ fn the_limiter_keeps_a_hard_manoeuvre_within_the_stroke() {
         workspace_limiter: true,
         ..free
     };
-    let limited = cue_recording(&g, &limits, &limited_settings, &recording)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .poses;
+    let limited = cue_recording(
+        &g,
+        &limits,
+        &crate::analysis::checks::CheckSettings::default(),
+        &limited_settings,
+        &recording,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .poses;
     assert!(
         limited
             .iter()
@@ -349,8 +385,14 @@ fn the_limited_poses_read_back_from_their_table_are_the_poses_judged() {
             platform_cone: Some(Angle::from_degrees(cone)),
             ..Limits::default()
         };
-        let cued =
-            cue_recording(&g, &limits, &settings, &recording).unwrap_or_else(|e| panic!("{e}"));
+        let cued = cue_recording(
+            &g,
+            &limits,
+            &crate::analysis::checks::CheckSettings::default(),
+            &settings,
+            &recording,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         for (k, p) in cued.poses.iter().enumerate() {
             let back = Pose::from_row(&p.to_row());
             assert_eq!(&back, p, "{cone}°, sample {k}");
@@ -370,7 +412,14 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
     let m = VehicleMotion::default();
     let recording = [(0.0, m), (0.1, m), (0.1, m)];
     assert_eq!(
-        cue_recording(&g, &Limits::default(), &plain(), &recording).map(|c| c.poses),
+        cue_recording(
+            &g,
+            &Limits::default(),
+            &crate::analysis::checks::CheckSettings::default(),
+            &plain(),
+            &recording
+        )
+        .map(|c| c.poses),
         Err(CueError::Time {
             index: 2,
             t: 0.1,
@@ -381,7 +430,13 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
     // must be a microsecond apart): refused where they come in.
     let close = [(1.0, m), (1.0 + 1e-9, m)];
     assert!(matches!(
-        cue_recording(&g, &Limits::default(), &plain(), &close),
+        cue_recording(
+            &g,
+            &Limits::default(),
+            &crate::analysis::checks::CheckSettings::default(),
+            &plain(),
+            &close
+        ),
         Err(CueError::Time { index: 1, .. })
     ));
     let bad = CueingSettings {
@@ -389,7 +444,7 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
         ..plain()
     };
     assert!(matches!(
-        cue_recording(&g, &Limits::default(), &bad, &recording[..1]),
+        cue_recording(&g, &Limits::default(), &crate::analysis::checks::CheckSettings::default(), &bad, &recording[..1]),
         Err(CueError::Settings(p)) if p.key == "cueing.tilt_lp_wn"
     ));
 }

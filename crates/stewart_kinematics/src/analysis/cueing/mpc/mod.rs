@@ -63,8 +63,11 @@ pub struct MpcCounts {
     /// speed and acceleration limits where the plan's linearisation did not
     /// ([`super::guard`]).
     pub guarded: u64,
-    /// Poses of a recording for which the guard found no allowed pose (the last was
-    /// given again).
+    /// Times the guard went back in a recording to brake earlier, as no allowed pose
+    /// followed where it was.
+    pub guard_rewinds: u64,
+    /// Poses of a recording for which the guard found no allowed pose even so (the last
+    /// was given again).
     pub guard_stops: u64,
 }
 

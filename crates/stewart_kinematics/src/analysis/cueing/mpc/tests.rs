@@ -1,5 +1,5 @@
 use super::*;
-use crate::analysis::checks::{CheckSettings, check_motion};
+use crate::analysis::checks::check_motion;
 use crate::analysis::cueing::compare::{compare, felt};
 use crate::analysis::cueing::cue_recording;
 use crate::io::scenario::Scenario;
@@ -147,18 +147,14 @@ fn assert_checks_pass(s: &Scenario, times: &[f64], poses: &[Pose], what: &str) {
         times: times.to_vec(),
         poses: poses.to_vec(),
     };
-    let report = check_motion(&s.geometry, &s.limits, &samples, &CheckSettings::default());
+    let report = check_motion(&s.geometry, &s.limits, &samples, &s.checks);
     let problems: Vec<_> = report
         .findings
         .iter()
         .filter(|f| {
-            // The seed's motion passes through poses its conditioning limit flags at
-            // home too; only the limits the planner keeps are judged here.
-            !matches!(
-                f.kind,
-                crate::analysis::checks::FindingKind::NearSingular
-                    | crate::analysis::checks::FindingKind::ArchitectureSingular
-            )
+            // The seed's geometry is singular at every pose: `check` says so once, of the
+            // rig, whatever the motion.
+            f.kind != crate::analysis::checks::FindingKind::ArchitectureSingular
         })
         .collect();
     assert!(problems.is_empty(), "{what}: {problems:#?}");
@@ -175,7 +171,8 @@ fn a_braking_step_is_cued_within_every_limit_and_better_than_the_washout() {
     for name in ["seed", "paired"] {
         let s = preset(name);
         let [(washout, _), (mpc, cued)] =
-            compare(&s.geometry, &s.limits, &s.cueing, &braking).unwrap_or_else(|e| panic!("{e}"));
+            compare(&s.geometry, &s.limits, &s.checks, &s.cueing, &braking)
+                .unwrap_or_else(|e| panic!("{e}"));
         assert!(
             mpc.force_rmse_xy < 0.7 * washout.force_rmse_xy,
             "{name}: {} vs {}",
@@ -219,7 +216,7 @@ fn adversarial_input_never_takes_a_pose_outside_the_limits() {
                 mpc_preview: preview,
                 ..mpc_settings(&s)
             };
-            let cued = cue_recording(&s.geometry, &s.limits, &settings, &input)
+            let cued = cue_recording(&s.geometry, &s.limits, &s.checks, &settings, &input)
                 .unwrap_or_else(|e| panic!("{e}"));
             for p in &cued.poses {
                 assert!(workspace::pose_within_limits(&s.geometry, &s.limits, p));
@@ -291,7 +288,7 @@ fn the_same_input_gives_the_same_bits() {
     let s = preset("paired");
     let input = recording("braking-step");
     let run = || {
-        cue_recording(&s.geometry, &s.limits, &mpc_settings(&s), &input)
+        cue_recording(&s.geometry, &s.limits, &s.checks, &mpc_settings(&s), &input)
             .unwrap_or_else(|e| panic!("{e}"))
             .poses
             .iter()
@@ -397,6 +394,7 @@ fn a_stop_near_a_servos_range_end_does_not_freeze_the_planner() {
     let cued = cue_recording(
         &s.geometry,
         &s.limits,
+        &s.checks,
         &mpc_settings(&s),
         &recording("braking-step"),
     )
@@ -409,4 +407,38 @@ fn a_stop_near_a_servos_range_end_does_not_freeze_the_planner() {
         .windows(2)
         .any(|w| (w[1].position - w[0].position).norm() > 1e-6);
     assert!(moved_late);
+}
+
+#[test]
+fn every_rig_kind_cued_from_every_example_and_hostile_input_passes_check() {
+    // The promise of model-predictive cueing, as a property over the rigs of every kind
+    // (linear: seed, paired; rotary: servo-desk, crank-rig) × the four example recordings
+    // and a hostile one: `check` of what comes out finds nothing (the rotary rigs' servo
+    // accelerations reached 24 645 °/s² against 3 000 before the guard kept them, and
+    // their condition number 51 against 30).
+    use rayon::prelude::*;
+    let inputs: Vec<(&str, Vec<(f64, VehicleMotion)>)> = [
+        "braking-step",
+        "launch-and-brake",
+        "multisine-surge-sway",
+        "slalom-yaw",
+    ]
+    .into_iter()
+    .map(|name| (name, recording(name)))
+    .chain(std::iter::once(("hostile", hostile())))
+    .collect();
+    let cases: Vec<(&str, usize)> = ["seed", "paired", "servo-desk", "crank-rig"]
+        .into_iter()
+        .flat_map(|rig| (0..inputs.len()).map(move |k| (rig, k)))
+        .collect();
+    cases.par_iter().for_each(|&(rig, k)| {
+        let s = preset(rig);
+        let (name, input) = &inputs[k];
+        let times: Vec<f64> = input.iter().map(|m| m.0).collect();
+        let cued = cue_recording(&s.geometry, &s.limits, &s.checks, &mpc_settings(&s), input)
+            .unwrap_or_else(|e| panic!("{rig} {name}: {e}"));
+        let counts = cued.planner.unwrap_or_else(|| panic!("no planner counts"));
+        assert_eq!(counts.guard_stops, 0, "{rig} {name}");
+        assert_checks_pass(&s, &times, &cued.poses, &format!("{rig} {name}"));
+    });
 }
