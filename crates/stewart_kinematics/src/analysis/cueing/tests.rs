@@ -487,3 +487,84 @@ fn a_preview_is_the_step_taken_on_a_copy_and_changes_nothing() {
         assert_eq!(c.advance(0.01), untouched.advance(0.01));
     }
 }
+
+#[test]
+fn the_limiters_pose_on_a_cones_edge_passes_check_as_its_row_reads_back() {
+    // The limiter bisects to the last scale whose pose fits; that pose lies on a limit to
+    // the last bits. Over many cues pushed through joint cones (45° and others) and the stroke, the
+    // pose it gives, written as a table row and read back as `check --scenario` reads
+    // it, is judged within every single-pose limit by `check` (it once read
+    // 45.00000000000001° and called the limiter's pose a violation).
+    use crate::analysis::checks::{CheckSettings, FindingKind, check_motion};
+    use crate::model::trajectory::Samples;
+    let s = crate::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+    let arm = Vector3::zeros();
+    let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut random = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let mut limited = 0;
+    for n in 0..400 {
+        // 45°, and cones whose degrees do not come back from radians to the last bit.
+        let cone = if n % 2 == 0 {
+            45.0
+        } else {
+            (400.0 + 200.0 * random().abs()).round() / 10.0
+        };
+        let limits = Limits {
+            platform_cone: Some(Angle::from_degrees(cone)),
+            base_cone: Some(Angle::from_degrees(cone)),
+            ..s.limits
+        };
+        let cue = Cue {
+            position: [0.4 * random(), 0.4 * random(), 0.2 * random()],
+            angles: [0.8 * random(), 0.8 * random(), 0.8 * random()],
+            ..Cue::default()
+        };
+        let fits = |k: f64| {
+            let pose = pose_at(&s.geometry, arm, &cue, k);
+            workspace::pose_within_limits_as_written(&s.geometry, &limits, &pose)
+        };
+        if !fits(0.0) {
+            continue;
+        }
+        // The limiter's scale, then on to the very last float that fits: the edge itself.
+        let mut limiter = Limiter::new(1.0);
+        let (mut k, mut out) = (limiter.scale_for(0.0, fits), 1.0);
+        while k < 1.0 && fits(k) && !fits(out) {
+            let mid = 0.5 * (k + out);
+            if mid <= k || mid >= out {
+                break;
+            }
+            if fits(mid) {
+                k = mid;
+            } else {
+                out = mid;
+            }
+        }
+        limited += usize::from(k < 1.0);
+        let given = pose_at(&s.geometry, arm, &cue, k);
+        let samples = Samples {
+            times: vec![0.0],
+            poses: vec![Pose::from_row(&given.to_row())],
+        };
+        let report = check_motion(&s.geometry, &limits, &samples, &CheckSettings::default());
+        let broken: Vec<_> = (report.findings.iter())
+            .filter(|f| {
+                [
+                    FindingKind::BaseCone,
+                    FindingKind::PlatformCone,
+                    FindingKind::StrokeMax,
+                    FindingKind::StrokeMin,
+                    FindingKind::LegCollision,
+                ]
+                .contains(&f.kind)
+            })
+            .collect();
+        assert!(broken.is_empty(), "scale {k}: {broken:#?}");
+    }
+    assert!(limited > 300, "{limited}");
+}

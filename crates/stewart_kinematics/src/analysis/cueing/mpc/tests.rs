@@ -442,3 +442,61 @@ fn every_rig_kind_cued_from_every_example_and_hostile_input_passes_check() {
         assert_checks_pass(&s, &times, &cued.poses, &format!("{rig} {name}"));
     });
 }
+
+#[test]
+fn a_limited_washout_keeps_a_45_degree_cone_as_check_judges_it_bit_for_bit() {
+    // The washout's limiter holds the platform on its joint cones through the example
+    // recordings; `check` reads the same poses from their table rows and judges them by
+    // the same test, so nothing on the edge is called a violation (it once read
+    // 45.00000000000001° at t = 5.435 s). The limiter keeps the limits of single poses:
+    // stroke, cones, clearance.
+    use crate::analysis::checks::FindingKind;
+    for rig in ["seed", "paired"] {
+        for cone in ["base", "platform"] {
+            let mut s = preset(rig);
+            let edge = Some(crate::model::angle::Angle::from_degrees(45.0));
+            match cone {
+                "base" => s.limits.base_cone = edge,
+                _ => s.limits.platform_cone = edge,
+            }
+            let settings = CueingSettings {
+                workspace_limiter: true,
+                ..s.cueing.clone()
+            };
+            let mut on_edge = 0;
+            for name in [
+                "braking-step",
+                "launch-and-brake",
+                "multisine-surge-sway",
+                "slalom-yaw",
+            ] {
+                let input = recording(name);
+                let times: Vec<f64> = input.iter().map(|m| m.0).collect();
+                let cued = cue_recording(&s.geometry, &s.limits, &s.checks, &settings, &input)
+                    .unwrap_or_else(|e| panic!("{e}"));
+                // Through the table's text, as `check --scenario` reads it.
+                let read: Vec<Pose> = (cued.poses.iter())
+                    .map(|p| Pose::from_row(&p.to_row()))
+                    .collect();
+                let samples = Samples {
+                    times: times.clone(),
+                    poses: read,
+                };
+                let report = check_motion(&s.geometry, &s.limits, &samples, &s.checks);
+                let kept = [
+                    FindingKind::BaseCone,
+                    FindingKind::PlatformCone,
+                    FindingKind::StrokeMax,
+                    FindingKind::StrokeMin,
+                    FindingKind::LegCollision,
+                ];
+                let broken: Vec<_> = (report.findings.iter())
+                    .filter(|f| kept.contains(&f.kind))
+                    .collect();
+                assert!(broken.is_empty(), "{rig} {cone} {name}: {broken:#?}");
+                on_edge += usize::from(cued.scales.iter().any(|&k| k < 1.0));
+            }
+            assert!(on_edge > 0, "{rig} {cone}: the limiter never acted");
+        }
+    }
+}
