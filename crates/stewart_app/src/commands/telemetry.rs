@@ -13,7 +13,6 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
 use stewart_link::capture;
 use stewart_link::vehicle::VehicleSample;
 use stewart_link::vehicle::intake::Intake;
@@ -21,7 +20,7 @@ use stewart_link::vehicle::replay::telemetry_port;
 use stewart_link::vehicle::timeline::Step;
 
 use crate::cli::TelemetryArgs;
-use crate::csv_io::{CsvText, read_input};
+use crate::csv_io::{CsvText, read_input_bytes};
 use crate::output::{self, Destination};
 use crate::vehicle_capture::tally_words;
 use crate::vehicle_table::VEHICLE_COLUMNS;
@@ -106,10 +105,7 @@ fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()
 /// Read the capture `input`: the datagrams to `port` (default: the port whose datagrams
 /// give motion), a line per second of the capture's time.
 fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Result<()> {
-    let (bytes, name) = read_input(input, |r, name| {
-        let bytes = read_capped(r, MAX_TABLE_BYTES).map_err(|e| anyhow!("{name} {e}"))?;
-        Ok((bytes, name.to_owned()))
-    })?;
+    let (bytes, name) = read_input_bytes(input)?;
     if !capture::is_capture(&bytes) {
         bail!(
             "{name}: not a packet capture (pcap or pcapng): its first bytes are neither format's"

@@ -15,12 +15,11 @@ use stewart_kinematics::analysis::cueing::compare::compare;
 use stewart_kinematics::analysis::cueing::{CueError, VehicleMotion, cue_recording};
 
 use crate::cli::{CueArgs, Format};
-use crate::csv_io::{CsvText, read_input};
+use crate::csv_io::{CsvText, read_input_bytes};
 use crate::output;
 use crate::source;
 use crate::vehicle_capture::{self, CapturedMotion};
 use crate::vehicle_table::{self, VehicleTable};
-use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
 
 /// The pose table's columns.
 const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -31,10 +30,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario, &scenario);
     inputs.push(("the vehicle motion", args.input.clone()));
     let out = output::destination(args.out.as_deref(), &inputs)?;
-    let (bytes, file) = read_input(&args.input, |r, name| {
-        let bytes = read_capped(r, MAX_TABLE_BYTES).map_err(|e| anyhow!("{name} {e}"))?;
-        Ok((bytes, name.to_owned()))
-    })?;
+    let (bytes, file) = read_input_bytes(&args.input)?;
     let recording = if vehicle_capture::is_capture(&bytes) {
         Recording::Capture(Box::new(vehicle_capture::read(
             &bytes,
