@@ -69,6 +69,17 @@ struct Place<'a> {
     careful: u8,
 }
 
+/// What became of a planned pose.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Outcome {
+    /// Given as planned.
+    Kept,
+    /// Replaced by an allowed pose.
+    Replaced,
+    /// No allowed pose was found: the last pose given again.
+    Stopped,
+}
+
 /// A pass of [`ActuatorGuard::step`]: the planner's pose taken as it is, or a
 /// replacement steered towards it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,7 +180,7 @@ impl ActuatorGuard {
     /// smoothly.
     fn guard_with(&self, times: &[f64], planned: &[Pose], careful: &[u8]) -> Guarded {
         let n = planned.len().min(times.len());
-        let mut given: Vec<(Given, bool)> = Vec::with_capacity(n);
+        let mut given: Vec<(Given, Outcome)> = Vec::with_capacity(n);
         let mut out = Guarded::default();
         // Samples before this one are braked rather than steered towards the plan.
         let mut brake_until = 0;
@@ -193,7 +204,12 @@ impl ActuatorGuard {
                 .flatten();
             match self.step(times[k], planned[k], wanted_before, history, place) {
                 Some((g, replaced)) => {
-                    given.push((g, replaced));
+                    let outcome = if replaced {
+                        Outcome::Replaced
+                    } else {
+                        Outcome::Kept
+                    };
+                    given.push((g, outcome));
                     k += 1;
                 }
                 None if k > 0 && work < budget => {
@@ -208,7 +224,6 @@ impl ActuatorGuard {
                     out.rewound += 1;
                 }
                 None => {
-                    out.stopped += 1;
                     let last = history[2].unwrap_or_else(|| {
                         let q = self
                             .geometry
@@ -216,12 +231,14 @@ impl ActuatorGuard {
                             .unwrap_or([0.0; 6]);
                         (times[k], q, planned[k])
                     });
-                    given.push(((times[k], last.1, last.2), true));
+                    given.push(((times[k], last.1, last.2), Outcome::Stopped));
                     k += 1;
                 }
             }
         }
-        out.held = given.iter().filter(|(_, replaced)| *replaced).count() - out.stopped;
+        // Counted from what was given in the end (a rewind takes back what it passes).
+        let count = |o: Outcome| given.iter().filter(|(_, x)| *x == o).count();
+        (out.held, out.stopped) = (count(Outcome::Replaced), count(Outcome::Stopped));
         out.poses = given.into_iter().map(|((_, _, pose), _)| pose).collect();
         out
     }
