@@ -82,7 +82,7 @@ fn a_refused_setting_is_one_clear_error() {
         ),
         (
             vec!["check", "--set", "cueing.mpc_horizon_steps=41"],
-            "error: --set: `cueing.mpc_horizon_steps` = 41 refused: 41 is outside the accepted range 1 … 40",
+            "error: --set: `cueing.mpc_horizon_steps` = 41 refused: 41 is outside the accepted range 2 … 40",
         ),
         (
             vec!["check", "--set", "cueing.tilt=maybe"],

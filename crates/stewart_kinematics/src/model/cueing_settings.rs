@@ -319,11 +319,13 @@ impl CueingSettings {
                 reason,
             })
         };
-        if !(1..=MAX_HORIZON_STEPS).contains(&self.mpc_horizon_steps) {
+        // One step plans only the move to the next solve, which the end-at-rest rule
+        // pins: the platform would never move.
+        if !(2..=MAX_HORIZON_STEPS).contains(&self.mpc_horizon_steps) {
             return bad(
                 "mpc_horizon_steps",
                 format!(
-                    "must be a whole number of steps from 1 to {MAX_HORIZON_STEPS}, got {}",
+                    "must be a whole number of steps from 2 to {MAX_HORIZON_STEPS}, got {}",
                     self.mpc_horizon_steps
                 ),
             );

@@ -193,8 +193,8 @@ pub const TEMPLATE_KEY: &str = "link.template";
 
 /// A template as written after `=` (in `--set`) or `template:` (in `--format`): its
 /// leading spaces dropped and its end kept, as a space may be a byte the board reads.
-/// The one rule for every place a template is written (a scenario file's quoted string
-/// is taken whole).
+/// The one rule for every place a template is written: `--set`, `--format`, a scenario
+/// file's quoted string and the viewer's Link panel.
 pub fn template_text(written: &str) -> &str {
     written.trim_start()
 }

@@ -82,9 +82,12 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let text = csv.into_string();
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     let mut said = summary(samples, &cued.scales);
-    if let Some(p) = cued.planner.filter(|p| p.guarded + p.guard_stops > 0) {
+    if let Some(p) = cued
+        .planner
+        .filter(|p| p.guarded + p.guard_stops + p.guard_jumps_left > 0)
+    {
         said.push_str(&format!(
-            "cue: the actuator guard changed {} of {} poses so that every limit `check` judges holds (where the plan broke one, and on the way back to it){}{}\n",
+            "cue: the actuator guard changed {} of {} poses to keep the actuators' range, speed and acceleration, the joint cones, the clearances and the condition number as `check` judges them (where the plan broke one, and on the way back to it){}{}{}\n",
             p.guarded + p.guard_stops,
             cued.poses.len(),
             match p.guard_rewinds {
@@ -95,6 +98,12 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
                 0 => String::new(),
                 n => format!(
                     "; at {n} of them no pose near the plan kept every limit and the last pose was given again"
+                ),
+            },
+            match p.guard_jumps_left {
+                0 => String::new(),
+                n => format!(
+                    "; {n} steps would still read as jumps to `check` (run it on the output)"
                 ),
             }
         ));

@@ -542,7 +542,8 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
         .on_hover_text(t.tr("link.template_tip"))
         .changed();
     if edited {
-        *error = doc.edit_link(|l| l.template = Some(text.clone())).err();
+        let written = stewart_kinematics::model::link_settings::template_text(&text).to_owned();
+        *error = doc.edit_link(|l| l.template = Some(written)).err();
     }
     let scenario = doc.scenario();
     let g = &scenario.geometry;

@@ -95,11 +95,12 @@ impl Session {
 
     /// The saved scenario, or why it no longer reads.
     pub(crate) fn scenario(&self) -> Result<Scenario, ViewerError> {
-        Ok(Scenario::from_toml_str_checked(
+        // Not held to the template grammar: the Link panel keeps a template being typed
+        // (and shows why it is not one yet); a session restores it as it was left.
+        Ok(Scenario::from_toml_str(
             &self.scenario,
             "the saved session",
             None,
-            &crate::link_plan::template_problem,
         )?)
     }
 

@@ -91,6 +91,11 @@ enum Pass {
 /// The samples over which a smooth motion's acceleration may go from nought to its limit.
 const SMOOTH_SAMPLES: f64 = 4.0;
 
+/// The share of a limit the guard uses at most, even with no margin asked for: the poses
+/// are judged again from their table rows, whose rounding must not carry a value kept
+/// exactly on a limit over it.
+const ROUNDING_KEPT: f64 = 1.0 - 1e-6;
+
 /// The most a sample's smoothing is doubled around the jumps found near it.
 const MOST_CAREFUL: u8 = 4;
 
@@ -109,6 +114,8 @@ pub struct Guarded {
     /// Poses for which no allowed pose was found even so (the last pose given again):
     /// none unless the motion starts outside the limits.
     pub stopped: usize,
+    /// Steps `check` would still call jumps when the guard's passes ran out.
+    pub jumps_left: usize,
 }
 
 /// The most times the guard steps through the motion, per pose planned, before it gives
@@ -143,8 +150,8 @@ impl ActuatorGuard {
             ),
             // Half the planner's margin: the guard acts only where the exact motion left
             // the planner's envelope by more than half of it.
-            speed: speed.map(|v| v * (1.0 - 0.5 * margin)),
-            accel: accel.map(|a| a * (1.0 - 0.5 * margin)),
+            speed: speed.map(|v| v * (1.0 - 0.5 * margin).min(ROUNDING_KEPT)),
+            accel: accel.map(|a| a * (1.0 - 0.5 * margin).min(ROUNDING_KEPT)),
         }
     }
 
@@ -155,21 +162,28 @@ impl ActuatorGuard {
         let n = planned.len().min(times.len());
         let mut careful = vec![0u8; n];
         let mut out = self.guard_with(times, planned, &careful);
-        for _ in 0..JUMP_PASSES {
+        for pass in 0..=JUMP_PASSES {
+            // Judged as `check` will read them: from their table rows.
             let values: Vec<[f64; 6]> = (out.poses.iter())
-                .map(|p| self.geometry.actuator_values_at(p).unwrap_or([f64::NAN; 6]))
+                .map(|p| {
+                    let read = Pose::from_row(&p.to_row());
+                    self.geometry
+                        .actuator_values_at(&read)
+                        .unwrap_or([f64::NAN; 6])
+                })
                 .collect();
-            let mut found = false;
-            for jump in jumps_in(&times[..n], &values, self.jump_ratio, self.jump_floor) {
-                found = true;
+            let jumps: Vec<_> =
+                jumps_in(&times[..n], &values, self.jump_ratio, self.jump_floor).collect();
+            if jumps.is_empty() || pass == JUMP_PASSES {
+                out.jumps_left = jumps.len();
+                break;
+            }
+            for jump in jumps {
                 let from = jump.after.saturating_sub(3 * SMOOTH_SAMPLES as usize);
                 let to = (jump.after + 3 * SMOOTH_SAMPLES as usize).min(n);
                 for c in &mut careful[from..to] {
                     *c = (*c + 1).min(MOST_CAREFUL);
                 }
-            }
-            if !found {
-                break;
             }
             out = self.guard_with(times, planned, &careful);
         }
@@ -446,7 +460,7 @@ impl ActuatorGuard {
         if place.careful > 0 {
             // Near a jump found before, each step at most twice the last (or the check's
             // floor): a motion that grows so is no jump, whatever limits are set.
-            let grow = (self.jump_floor / dt).max(2.0 * s0.abs());
+            let grow = (ROUNDING_KEPT * self.jump_floor / dt).max(2.0 * s0.abs());
             keep(-grow, grow);
         }
         if let Some(v) = self.speed {

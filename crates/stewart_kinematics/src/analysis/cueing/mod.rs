@@ -324,7 +324,9 @@ impl CuedRecording {
 
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at
 /// neutral: the filters start at rest), each sample's motion held until the next. A
-/// model-predictive cue keeps every limit `check` judges with `checks` (see [`guard`]).
+/// model-predictive cue keeps the actuators' range, speed and acceleration, the joint
+/// cones, the clearances and the condition number as `check` judges them with `checks`,
+/// and avoids what it would call jumps (see [`guard`]; jerk limits are not kept).
 pub fn cue_recording(
     geometry: &Geometry,
     limits: &Limits,
@@ -380,6 +382,7 @@ pub fn cue_recording(
         counts.guarded = guarded.held as u64;
         counts.guard_rewinds = guarded.rewound as u64;
         counts.guard_stops = guarded.stopped as u64;
+        counts.guard_jumps_left = guarded.jumps_left as u64;
         poses = guarded.poses;
     }
     for (index, (pose, (t, _))) in poses.iter().zip(samples).enumerate() {

@@ -122,9 +122,12 @@ pub(crate) fn parse(
                 .map_err(|e| src.invalid(Some(p.span()), "payload", e.to_string()))
         })
         .transpose()?;
-    let link = checked_table(&src, text, parsed.link.as_ref(), |l| {
+    let mut link = checked_table(&src, text, parsed.link.as_ref(), |l| {
         l.problem().map(|p| (p.key, p.reason))
     })?;
+    // A template reads the same wherever it is written: its leading spaces dropped.
+    link.template =
+        (link.template).map(|t| crate::model::link_settings::template_text(&t).to_owned());
     let cueing = checked_table(&src, text, parsed.cueing.as_ref(), |c| {
         c.problem().map(|p| (p.key, p.reason))
     })?;

@@ -127,6 +127,19 @@ fn model_rule(key: &str) -> Option<ModelRule> {
             max_excluded: true,
         }),
         ("limits", "leg_radius_m") => positive(None),
+        // A servo range end in (−180°, 180°]; a trim within ±180° (`model::rotary`).
+        ("actuator", "servo_min_deg" | "servo_max_deg") => Some(ModelRule {
+            min: -180.0,
+            min_excluded: true,
+            max: Some(180.0),
+            max_excluded: false,
+        }),
+        ("actuator", n) if n.starts_with("servo_trim_deg") => Some(ModelRule {
+            min: -180.0,
+            min_excluded: false,
+            max: Some(180.0),
+            max_excluded: false,
+        }),
         ("limits", n) if n.contains("_max_") => positive(None),
         ("cueing", "translation_scale" | "rotation_scale") => not_negative(Some(MAX_SCALE)),
         ("cueing", "translation_hp_wb") => not_negative(Some(MAX_OMEGA)),
@@ -777,7 +790,7 @@ fn cueing(d: &mut Declare) {
     use crate::model::cueing_settings::{MAX_HORIZON_STEPS, MAX_WEIGHT};
     let weight = 0.0..=MAX_WEIGHT;
     for (key, accepted) in [
-        ("mpc_horizon_steps", 1.0..=f64::from(MAX_HORIZON_STEPS)),
+        ("mpc_horizon_steps", 2.0..=f64::from(MAX_HORIZON_STEPS)),
         ("mpc_step_s", 0.005..=1.0),
         ("mpc_solve_interval_s", 0.001..=1.0),
         ("mpc_force_weight", weight.clone()),

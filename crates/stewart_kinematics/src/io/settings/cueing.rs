@@ -147,7 +147,9 @@ pub(super) fn set(c: &mut CueingSettings, key: CueingKey, v: f64) -> Result<(), 
         None => return Err("no such item".to_owned()),
     }
     if let Some(p) = edited.problem() {
-        return Err(p.reason);
+        // Named with its key: it may be another key's rule (the step and the solve
+        // interval bound each other); [`super::Setting::set`] drops its own.
+        return Err(format!("`{}` {}", p.key, p.reason));
     }
     *c = edited;
     Ok(())

@@ -446,7 +446,15 @@ impl Setting {
                 .map_err(invalid)?,
             _ => {}
         }
-        self.target.set(scenario, value).map_err(invalid)
+        self.target.set(scenario, value).map_err(|reason| {
+            // A rule named with its key is this setting's own when the key is its own.
+            let own = format!("`{}` ", self.key);
+            invalid(
+                reason
+                    .strip_prefix(&own)
+                    .map_or(reason.clone(), str::to_owned),
+            )
+        })
     }
 }
 

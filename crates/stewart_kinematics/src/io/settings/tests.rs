@@ -568,6 +568,20 @@ fn cueing_settings_take_numbers_and_switches_and_refuse_what_cannot_work() {
         refused("cueing.tilt_lp_wn=-1")
     );
     assert!(refused("cueing.translation_scale=off").contains("cannot be switched off"));
+    // A rule of another key is named with that key (the step bounds the solve interval).
+    let other = refused("cueing.mpc_step_s=0.005");
+    assert!(
+        other.starts_with(
+            "`cueing.mpc_step_s` = 0.005 refused: `cueing.mpc_solve_interval_s` must be"
+        ),
+        "{other}"
+    );
+    // One's own is not named twice.
+    let own = refused("cueing.mpc_horizon_steps=1");
+    assert_eq!(
+        own,
+        "`cueing.mpc_horizon_steps` = 1 refused: 1 is outside the accepted range 2 … 40"
+    );
     assert!(refused("cueing.washout=1").contains("unknown setting"));
 }
 

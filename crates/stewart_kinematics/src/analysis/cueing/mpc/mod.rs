@@ -69,6 +69,9 @@ pub struct MpcCounts {
     /// Poses of a recording for which the guard found no allowed pose even so (the last
     /// was given again).
     pub guard_stops: u64,
+    /// Steps of a recording that `check` would still call jumps when the guard's passes
+    /// ran out.
+    pub guard_jumps_left: u64,
 }
 
 /// The planner and its state.
