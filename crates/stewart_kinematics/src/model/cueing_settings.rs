@@ -76,7 +76,9 @@ impl CueingAlgorithm {
 
     /// The algorithm a word names, if any.
     pub fn from_word(word: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|a| a.word() == word.trim())
+        Self::ALL
+            .into_iter()
+            .find(|a| a.word().eq_ignore_ascii_case(word.trim()))
     }
 }
 

@@ -410,9 +410,16 @@ impl LinkSettings {
             ("turns_offset", Some(k)) => edited.turns_offset[k] = number()?,
             ("offset", Some(k)) => edited.offset[k] = number()?,
             ("reversed", Some(k)) => {
-                edited.reversed[k] = value
-                    .parse::<bool>()
-                    .map_err(|_| refuse(format!("`{value}` is not true or false")))?;
+                // As every switch takes it: true or false, on or off, 1 or 0.
+                edited.reversed[k] = match value.to_ascii_lowercase().as_str() {
+                    "true" | "on" | "1" => true,
+                    "false" | "off" | "0" => false,
+                    _ => {
+                        return Err(refuse(format!(
+                            "`{value}` is not a switch: true or false (on or off, 1 or 0)"
+                        )));
+                    }
+                };
             }
             _ => {
                 return Err(refuse(
@@ -600,6 +607,12 @@ mod tests {
         assert_eq!(s.transport, LinkTransport::Udp);
         assert_eq!(s.address.as_deref(), Some("127.0.0.1:9000"));
         assert_eq!(s.reversed, [false, false, true, false, false, false]);
+        // A switch takes the words every switch takes.
+        s.set_text("reversed.5", "ON")
+            .unwrap_or_else(|p| panic!("{}", p.reason));
+        s.set_text("reversed.5", "0")
+            .unwrap_or_else(|p| panic!("{}", p.reason));
+        assert_eq!(s.reversed, [false, false, true, false, false, false]);
         assert_eq!(s.actuator, [1, 2, 3, 4, 5, 6]);
         let before = s.clone();
         for (key, value, words) in [
@@ -615,6 +628,7 @@ mod tests {
             ("pulse_us_per_deg", "0", "non-zero"),
             ("ramp_s", "-1", "between 0 and"),
             ("colour", "red", "unknown link setting"),
+            ("reversed.1", "maybe", "not a switch: true or false"),
         ] {
             let p = s
                 .set_text(key, value)

@@ -425,13 +425,14 @@ impl Setting {
             None if !self.optional() => {
                 return Err(invalid("it cannot be switched off".to_owned()));
             }
-            Some(v) if !v.is_finite() => {
-                return Err(invalid("it must be a finite number".to_owned()));
-            }
+            // A switch first: NaN is no more a switch than 2 is.
             Some(v) if self.unit == Unit::Switch && v != 0.0 && v != 1.0 => {
                 return Err(invalid(
                     "it is a switch: true or false (on or off, 1 or 0)".to_owned(),
                 ));
+            }
+            Some(v) if !v.is_finite() => {
+                return Err(invalid("it must be a finite number".to_owned()));
             }
             Some(v) if self.unit == Unit::Count && v.fract() != 0.0 => {
                 return Err(invalid(format!(

@@ -181,6 +181,10 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
             "`cueing.tilt` = yes refused: it is a switch: true or false",
         ),
         (
+            "cueing.tilt=nan",
+            "`cueing.tilt` = NaN refused: it is a switch: true or false",
+        ),
+        (
             "limits.leg_speed_max_m_s=fast",
             "it must be a number, or `off`",
         ),
@@ -568,6 +572,13 @@ fn cueing_settings_take_numbers_and_switches_and_refuse_what_cannot_work() {
         refused("cueing.tilt_lp_wn=-1")
     );
     assert!(refused("cueing.translation_scale=off").contains("cannot be switched off"));
+    // Words are taken in any case, as the switches' are.
+    let mut upper = s.clone();
+    apply_all(&mut upper, ["cueing.algorithm=MPC"]).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        upper.cueing.algorithm,
+        crate::model::cueing_settings::CueingAlgorithm::Mpc
+    );
     // A rule of another key is named with that key (the step bounds the solve interval).
     let other = refused("cueing.mpc_step_s=0.005");
     assert!(
