@@ -16,6 +16,8 @@ use std::hint::black_box;
 use std::net::UdpSocket;
 use std::time::Instant;
 
+mod support;
+
 use criterion::{Criterion, criterion_group};
 use stewart_app::link_plan::LinkPlan;
 use stewart_app::live_cue::LiveCue;
@@ -24,25 +26,11 @@ use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_link::sender::{Stream, time_each};
 use stewart_link::target::{Sample, Target, TargetError};
 use stewart_link::transport::Udp;
-
-/// The seed platform with its stroke, the default washout and the limiter on.
-fn scenario() -> Scenario {
-    let mut s = Scenario::seed();
-    stewart_kinematics::io::settings::apply_all(
-        &mut s,
-        [
-            "geometry.leg_min=0.55",
-            "geometry.leg_max=1.3",
-            "cueing.workspace_limiter=true",
-        ],
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
-    s
-}
+use support::{drained_peer, limited_seed};
 
 /// The same platform cued by the model-predictive planner.
 fn scenario_mpc() -> Scenario {
-    let mut s = scenario();
+    let mut s = limited_seed();
     stewart_kinematics::io::settings::apply_all(&mut s, ["cueing.algorithm=mpc"])
         .unwrap_or_else(|e| panic!("{e}"));
     s
@@ -66,15 +54,7 @@ fn vehicle(t: f64) -> VehicleMotion {
 
 /// A sender stream to a local UDP peer (drained on its own thread) following `target`.
 fn stream(scenario: &Scenario, target: Target) -> Stream {
-    let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let address = peer
-        .local_addr()
-        .unwrap_or_else(|e| panic!("{e}"))
-        .to_string();
-    std::thread::spawn(move || {
-        let mut buf = [0u8; 64];
-        while peer.recv(&mut buf).is_ok() {}
-    });
+    let address = drained_peer();
     let plan = LinkPlan::new(scenario).unwrap_or_else(|e| panic!("{e}"));
     let mut config = plan.sender_config(true, None);
     config.rate_hz = 1000.0;
@@ -138,7 +118,7 @@ fn percentiles(name: &str, n: usize, before: impl FnMut(usize), tick: impl FnMut
 }
 
 fn bench(c: &mut Criterion) {
-    let s = scenario();
+    let s = limited_seed();
     let mut group = c.benchmark_group("cue_tick");
     let mut cueing =
         Cueing::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|e| panic!("{e}"));
@@ -207,7 +187,7 @@ fn bench(c: &mut Criterion) {
 criterion_group!(benches, bench);
 
 fn main() {
-    let s = scenario();
+    let s = limited_seed();
     let mut cueing =
         Cueing::new(&s.geometry, &s.limits, &s.cueing).unwrap_or_else(|e| panic!("{e}"));
     percentiles(

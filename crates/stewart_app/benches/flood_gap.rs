@@ -17,28 +17,15 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Duration;
 
+mod support;
+
 use criterion::{Criterion, criterion_group};
 use stewart_app::link_plan::LinkPlan;
 use stewart_app::live_cue::LiveCue;
 use stewart_kinematics::Scenario;
 use stewart_link::sender::{Sender, Stream};
 use stewart_link::transport::Udp;
-
-/// The seed platform with its stroke, the default washout and the limiter on (each
-/// sample costs a bisection over the limits).
-fn scenario() -> Scenario {
-    let mut s = Scenario::seed();
-    stewart_kinematics::io::settings::apply_all(
-        &mut s,
-        [
-            "geometry.leg_min=0.55",
-            "geometry.leg_max=1.3",
-            "cueing.workspace_limiter=true",
-        ],
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
-    s
-}
+use support::{drained_peer, limited_seed};
 
 /// A flood of datagrams to `to` until `done`; counts what it sent in `sent`.
 fn flood(to: SocketAddr, done: Arc<AtomicBool>, sent: Arc<AtomicU64>) {
@@ -61,20 +48,6 @@ fn flood(to: SocketAddr, done: Arc<AtomicBool>, sent: Arc<AtomicU64>) {
     });
 }
 
-/// A local peer that drains what the sender sends; its address.
-fn peer() -> String {
-    let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let address = peer
-        .local_addr()
-        .unwrap_or_else(|e| panic!("{e}"))
-        .to_string();
-    std::thread::spawn(move || {
-        let mut buf = [0u8; 64];
-        while peer.recv(&mut buf).is_ok() {}
-    });
-    address
-}
-
 /// Three seconds of the real sender at 1 kHz under the flood: its timing, printed.
 fn stream_under_flood(scenario: &Scenario) {
     let plan = LinkPlan::new(scenario).unwrap_or_else(|e| panic!("{e}"));
@@ -82,7 +55,7 @@ fn stream_under_flood(scenario: &Scenario) {
     let to = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
     let mut config = plan.sender_config(true, Some(3.0));
     config.rate_hz = 1000.0;
-    let udp = Udp::connect(&peer()).unwrap_or_else(|e| panic!("{e}"));
+    let udp = Udp::connect(&drained_peer()).unwrap_or_else(|e| panic!("{e}"));
     let done = Arc::new(AtomicBool::new(false));
     let sent = Arc::new(AtomicU64::new(0));
     flood(to, Arc::clone(&done), Arc::clone(&sent));
@@ -107,7 +80,7 @@ fn stream_under_flood(scenario: &Scenario) {
 }
 
 fn bench(c: &mut Criterion) {
-    let s = scenario();
+    let s = limited_seed();
     for _ in 0..3 {
         stream_under_flood(&s);
     }
@@ -117,7 +90,7 @@ fn bench(c: &mut Criterion) {
     let to = live.local_addr().unwrap_or_else(|e| panic!("{e}"));
     let mut config = plan.sender_config(true, None);
     config.rate_hz = 1000.0;
-    let udp = Udp::connect(&peer()).unwrap_or_else(|e| panic!("{e}"));
+    let udp = Udp::connect(&drained_peer()).unwrap_or_else(|e| panic!("{e}"));
     let mut stream = Stream::new(config, plan.cue_target(live), Box::new(udp));
     let done = Arc::new(AtomicBool::new(false));
     flood(to, Arc::clone(&done), Arc::new(AtomicU64::new(0)));

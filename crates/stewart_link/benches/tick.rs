@@ -7,7 +7,10 @@
 //! the worst (the figures docs/guide/rig.md quotes, "Tick time").
 
 use std::hint::black_box;
-use std::net::UdpSocket;
+
+#[path = "support/drained_peer.rs"]
+mod support;
+use support::drained_peer;
 
 use criterion::{Criterion, criterion_group};
 use stewart_link::channels::{ChannelMap, Output};
@@ -59,18 +62,9 @@ fn armed(wave: (f64, f64), seconds: f64) -> (Supervisor, f64) {
     (s, t)
 }
 
-/// A sender's stream, armed and following, to a local UDP peer that drains what it gets
-/// on its own thread.
+/// A sender's stream, armed and following, to a local UDP peer that drains what it gets.
 fn stream() -> Stream {
-    let peer = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
-    let address = peer
-        .local_addr()
-        .unwrap_or_else(|e| panic!("{e}"))
-        .to_string();
-    std::thread::spawn(move || {
-        let mut buf = [0u8; 64];
-        while peer.recv(&mut buf).is_ok() {}
-    });
+    let address = drained_peer();
     let mut supervisor = Supervisor::new(limits(), 0.5, StopMode::Hold, [1.1; 6]);
     supervisor.arm(0.0, [1.1; 6]);
     let config = SenderConfig {

@@ -12,6 +12,7 @@ use stewart_kinematics::analysis::calibration::{
 use stewart_kinematics::analysis::checks::document::CheckDocument;
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::model::angle::Angle;
+use stewart_kinematics::model::link_settings::TEMPLATE_KEY;
 use stewart_kinematics::solve::batch::RowError;
 use stewart_kinematics::solve::forward::ForwardSolution;
 use stewart_kinematics::solve::forward::assembly::canonical;
@@ -49,6 +50,14 @@ fn row_of(s: &ForwardSolution) -> [f64; 6] {
     canonical(&s.pose).to_row()
 }
 
+/// A link template that the link's grammar refuses, as (key, reason): held to it where it is
+/// written, as the command line holds it.
+fn template_problem(scenario: &Scenario) -> Option<(String, String)> {
+    let text = scenario.link.template.as_deref()?;
+    let refused = stewart_link::template::Template::parse(text).err()?;
+    Some((TEMPLATE_KEY.to_owned(), refused.to_string()))
+}
+
 /// A new `(n, 6)` array of `rows`.
 fn array<'py>(py: Python<'py>, rows: &[[f64; 6]]) -> Bound<'py, PyArray2<f64>> {
     let flat: Vec<f64> = rows.iter().flatten().copied().collect();
@@ -78,9 +87,11 @@ impl Platform {
     /// released, Ctrl-C ending the wait (a FIFO no one writes to blocks nothing else).
     #[staticmethod]
     fn from_file(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
-        waiting::interruptible(py, None, move || Scenario::load(&path))?
-            .map(|scenario| Self { scenario })
-            .map_err(|e| scenario_error(py, e))
+        waiting::interruptible(py, None, move || {
+            Scenario::load_checked(&path, &template_problem)
+        })?
+        .map(|scenario| Self { scenario })
+        .map_err(|e| scenario_error(py, e))
     }
 
     /// Change one setting by its key, as `stewart settings` lists them and `--set` takes
@@ -98,8 +109,14 @@ impl Platform {
         } else {
             value.str()?.to_string()
         };
-        settings::apply_all(&mut self.scenario, [format!("{key}={text}").as_str()])
-            .map_err(|e| scenario_error(py, e))
+        let mut edited = self.scenario.clone();
+        settings::apply_all(&mut edited, [format!("{key}={text}").as_str()])
+            .map_err(|e| scenario_error(py, e))?;
+        if let Some((key, reason)) = template_problem(&edited) {
+            return Err(scenario_error(py, format!("`{key}` refused: {reason}")));
+        }
+        self.scenario = edited;
+        Ok(())
     }
 
     /// The value of a setting: a number (`None` when it is off or does not apply), or for

@@ -140,6 +140,21 @@ def test_settings_change_the_platform_and_refusals_leave_it_alone():
     assert np.array_equal(again.ik(home), p.ik(home))
 
 
+def test_a_link_template_is_held_to_the_links_grammar_where_it_is_written():
+    p = stewart.Platform.preset("paired")
+    p.set("link.format", "template:{a1:u8} ")
+    with pytest.raises(stewart.ScenarioError, match="link.template"):
+        p.set("link.template", "{a9:u8}")
+    # Refused: the platform keeps the template it had, and what it writes reads back.
+    assert p.get("link.template") == "{a1:u8} "
+    again = stewart.Platform.from_file(_write(p.to_toml()))
+    assert again.get("link.template") == "{a1:u8} "
+    bad = p.to_toml().replace('"{a1:u8} "', '"{a9:u8}"')
+    assert "{a9:u8}" in bad
+    with pytest.raises(stewart.ScenarioError, match=r"line \d+.*link.template|link.template.*line \d+"):
+        stewart.Platform.from_file(_write(bad))
+
+
 def _write(text: str) -> str:
     import tempfile
 

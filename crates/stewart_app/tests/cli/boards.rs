@@ -144,7 +144,7 @@ fn device_sim_reads_a_templates_frames_over_udp_as_they_were_sent() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent = frames_sent(&o);
     assert!(sent > 50, "{sent}");
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let got = recorded_numbers(&sim, sent);
     assert_eq!(got, dry_run_numbers(&timing));
 }
@@ -168,7 +168,7 @@ fn device_sim_reads_a_templates_frames_over_a_serial_line() {
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent = frames_sent(&o);
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let got = recorded_numbers(&sim, sent);
     assert_eq!(got, dry_run_numbers(&timing));
 }
@@ -445,7 +445,7 @@ fn boards_end_to_end(format: &str, boards: usize, transport: &str) -> (usize, Ve
     let records = sims
         .into_iter()
         .map(|sim| {
-            let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+            let sim = sim.finish();
             let log = String::from_utf8_lossy(&sim.stderr).into_owned();
             assert!(
                 log.contains(&format!("device-sim: {sent} frames, 0 damaged")),
@@ -592,7 +592,7 @@ fn a_template_is_read_the_same_from_every_place_it_is_written() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent = frames_sent(&o);
     assert!(sent > 20, "{sent}");
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     assert!(
         stderr(&sim).contains(&format!("device-sim: {sent} frames, 0 damaged, 0 lost")),
         "{}",

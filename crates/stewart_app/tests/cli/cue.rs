@@ -3,6 +3,7 @@
 use std::net::UdpSocket;
 use std::time::{Duration, Instant};
 
+use crate::watched::Watched;
 use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
 /// A braking manoeuvre with a turn: 6 m/s² from 1 to 3 s, 20°/s of yaw from 2 to 4 s,
@@ -338,14 +339,14 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
             }
         }
     });
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let o = link.finish();
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(
         stderr(&o).contains("cue: 301 samples in, 2 malformed or out of order dropped"),
         "{}",
         stderr(&o)
     );
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     // Every frame arrived, none outside the stroke.
     assert_eq!(sim.status.code(), Some(0), "{log}");
@@ -375,24 +376,22 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
 }
 
 /// `stewart link` on the seed following live vehicle motion at `input`, with a short ramp
-/// and `extra` options. A loaded machine may pause the sender: only a silence of 3 s is a
+/// and `extra` options, once it listens. A loaded machine may pause the sender: only a silence of 3 s is a
 /// stall here (the stall and fade are tested on their own, with the defaults).
-fn cued_link(input: &str, extra: &[&str]) -> std::process::Child {
-    std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args(["link", "--preset", "seed", "--cue", &format!("udp:{input}")])
-        .args(["--ramp", "0.2", "--set", "cueing.stall_s=3"])
-        .args(extra)
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"))
+fn cued_link(input: &str, extra: &[&str]) -> Watched {
+    let link = Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["link", "--preset", "seed", "--cue", &format!("udp:{input}")])
+            .args(["--ramp", "0.2", "--set", "cueing.stall_s=3"])
+            .args(extra),
+    );
+    link.wait_for("link: cueing from vehicle motion on");
+    link
 }
 
-/// Half a second for the link to start listening at `to`, then each datagram sent when
-/// it is due (seconds from the first), in real time; `after(k, socket)` runs after the
-/// `k`-th.
+/// Each datagram sent to `to` (where a link listens) when it is due (seconds from the
+/// first), in real time; `after(k, socket)` runs after the `k`-th.
 fn play(to: &str, datagrams: &[(f64, Vec<u8>)], mut after: impl FnMut(usize, &UdpSocket)) {
-    std::thread::sleep(Duration::from_millis(500));
     let socket = UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
     let start = Instant::now();
     for (k, (t, bytes)) in datagrams.iter().enumerate() {
@@ -427,7 +426,7 @@ fn an_x_plane_recording_drives_the_link() {
         .collect();
     let sent = datagrams.len();
     play(&input, &datagrams, |_, _| {});
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let o = link.finish();
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let said = stderr(&o);
     assert!(
@@ -493,7 +492,7 @@ fn a_flood_on_the_cue_port_does_not_hold_up_the_stream() {
             k
         })
     };
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let o = link.finish();
     done.store(true, std::sync::atomic::Ordering::Relaxed);
     let sent = flood.join().unwrap_or(0);
     let err = String::from_utf8_lossy(&o.stderr).into_owned();
@@ -582,7 +581,7 @@ fn the_link_asks_x_plane_for_its_datarefs_and_follows_the_replies() {
             .unwrap_or_else(|e| panic!("{e}"));
         std::thread::sleep(Duration::from_millis(20));
     }
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let o = link.finish();
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let said = stderr(&o);
     assert!(said.contains("cue: 40 samples in, 0 malformed"), "{said}");

@@ -341,14 +341,20 @@ fn an_interrupted_export_leaves_nothing_behind() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap_or_else(|e| panic!("{e}"));
-    // Wait until the export has staged its file (the Ctrl-C handler is in place by then),
-    // let it encode a little, then press Ctrl-C.
+    // Wait until the export has staged its file (the Ctrl-C handler is in place by then)
+    // and written frames into it, then press Ctrl-C mid-encoding.
+    let encoding = || {
+        std::fs::read_dir(dir.path())
+            .into_iter()
+            .flatten()
+            .flatten()
+            .any(|e| e.metadata().is_ok_and(|m| m.len() > 0))
+    };
     let started = std::time::Instant::now();
-    while names(dir.path()).is_empty() && started.elapsed().as_secs() < 60 {
-        std::thread::sleep(std::time::Duration::from_millis(50));
+    while !encoding() && started.elapsed().as_secs() < 60 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
     }
-    assert!(!names(dir.path()).is_empty(), "the export never started");
-    std::thread::sleep(std::time::Duration::from_millis(300));
+    assert!(encoding(), "the export never started");
     let killed = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()

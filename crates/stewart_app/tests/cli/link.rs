@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use stewart_link::{Decoder, Frame, Unit};
 
+use crate::watched::Watched;
 use crate::{parse_csv, stderr, stdout, stewart};
 
 /// `stewart link` streaming `preset` over UDP to `address` for `duration` seconds at
@@ -284,26 +285,24 @@ pub fn free_port() -> String {
     s.local_addr().unwrap_or_else(|e| panic!("{e}")).to_string()
 }
 
-/// `stewart device-sim` on UDP `address` in the background, with `extra` options.
-pub fn device_sim(address: &str, extra: &[&str]) -> std::process::Child {
+/// `stewart device-sim` on UDP `address` in the background, with `extra` options, once it
+/// listens.
+pub fn device_sim(address: &str, extra: &[&str]) -> Watched {
     device_sim_on(&["--udp", address], extra)
 }
 
 /// `stewart device-sim` reading `source` (`--udp ADDR` or `--serial PORT`) in the
-/// background, with `extra` options.
-pub fn device_sim_on(source: &[&str], extra: &[&str]) -> std::process::Child {
-    let child = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .arg("device-sim")
-        .args(source)
-        .args(["--idle", "1", "--duration", "30"])
-        .args(extra)
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    // Give it time to bind before anything is sent.
-    std::thread::sleep(Duration::from_millis(300));
-    child
+/// background, with `extra` options, once it listens.
+pub fn device_sim_on(source: &[&str], extra: &[&str]) -> Watched {
+    let sim = Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .arg("device-sim")
+            .args(source)
+            .args(["--idle", "1", "--duration", "30"])
+            .args(extra),
+    );
+    sim.wait_for("device-sim: listening on");
+    sim
 }
 
 #[test]
@@ -319,7 +318,7 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
         stderr(&o)
     );
     let sent = frames_sent(&o);
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert_eq!(sim.status.code(), Some(0), "{log}");
     assert!(
@@ -342,7 +341,7 @@ fn the_device_simulator_records_a_whole_stream_and_flags_values_over_its_limits(
     let sim = device_sim(&address, &["--min", "-3000", "--max", "3000"]);
     let o = udp_link("servo-desk", &address, "3", "100", "0.1");
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     assert_eq!(sim.status.code(), Some(1));
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert!(!log.contains(" 0 values outside"), "{log}");
@@ -365,7 +364,7 @@ fn the_device_simulator_reads_the_links_text_form() {
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let sent = frames_sent(&o);
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     // Before: the binary decoder called every line damaged.
     assert!(
@@ -403,7 +402,7 @@ fn the_device_simulator_reads_the_links_text_form() {
         &["--format", "text"],
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     assert_eq!(sim.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&sim.stderr).contains("device-sim: 0 frames"));
 }
@@ -498,33 +497,17 @@ fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_bri
 
     let address = free_port();
     let sim = device_sim(&address, &["--min", "-2000", "--max", "2000"]);
-    let mut link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args([
-            "link",
-            "--preset",
-            "servo-desk",
-            "--transport",
-            "udp",
-            "--address",
-        ])
-        .arg(&address)
-        .args(["--rate", "100", "--ramp", "0.5", "--loop"])
-        .args(narrow)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    std::thread::sleep(Duration::from_millis(3000));
-    let interrupted = std::process::Command::new("kill")
-        .args(["-INT", &link.id().to_string()])
-        .status()
-        .map(|s| s.success());
-    assert_eq!(interrupted.ok(), Some(true));
-    let started = std::time::Instant::now();
-    while link.try_wait().ok().flatten().is_none() {
-        assert!(started.elapsed().as_secs() < 30, "the link did not stop");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    let o = link.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let link = Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["link", "--preset", "servo-desk", "--transport", "udp"])
+            .args(["--address", &address])
+            .args(["--rate", "100", "--ramp", "0.5", "--loop"])
+            .args(narrow),
+    );
+    // Held on the first servo for most of a second, then on the next: stopped there.
+    link.wait_for("actuator 3 would go to");
+    interrupt(link.id());
+    let o = link.finish();
     assert_eq!(o.status.code(), Some(2));
     assert!(
         stderr(&o).contains("stopped by the user (e-stop)"),
@@ -532,7 +515,7 @@ fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_bri
         stderr(&o)
     );
 
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     // Nothing outside ±20° arrived, none lost or damaged.
     assert_eq!(sim.status.code(), Some(0), "{log}");
@@ -564,38 +547,31 @@ fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_bri
     assert_eq!(values(&rows[last]), home);
 }
 
-/// Send SIGINT to a child process.
-fn interrupt(child: &std::process::Child) {
+/// Send SIGINT to the process `pid`.
+fn interrupt(pid: u32) {
     let sent = std::process::Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
+        .args(["-INT", &pid.to_string()])
         .status()
         .map(|s| s.success());
     assert_eq!(sent.ok(), Some(true));
 }
 
-/// `link` on the paired preset at 200 Hz, looping, recording into `record`, 4 s in: its
-/// legs are centimetres from home, and home is a tenth of the 0.5 m/s limit away, so the
-/// way home takes seconds.
-fn paired_dry_run_four_seconds_in(record: &std::path::Path) -> std::process::Child {
-    let link = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
-        .args(["link", "--preset", "paired", "--dry-run", "--loop"])
-        .args(["--rate", "200", "--out"])
-        .arg(record)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap_or_else(|e| panic!("{e}"));
-    std::thread::sleep(Duration::from_millis(4000));
+/// `link` on the paired preset at 200 Hz, looping, recording into `record`, once it has
+/// followed the motion for 4 s: its legs are centimetres from home, and home is a tenth of
+/// the 0.5 m/s limit away, so the way home takes seconds.
+fn paired_dry_run_four_seconds_in(record: &std::path::Path) -> Watched {
+    let link = Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["link", "--preset", "paired", "--dry-run", "--loop"])
+            .args(["--rate", "200", "--out"])
+            .arg(record),
+    );
+    // The log's lines: `link: ARMED  4.01 s  …`.
+    link.wait_for_line("ARMED, 4 s in", |line| {
+        let mut words = line.split_whitespace();
+        words.nth(1) == Some("ARMED") && words.next().and_then(|t| t.parse().ok()) >= Some(4.0)
+    });
     link
-}
-
-/// The output of `link` once it has ended (within 20 s).
-fn ended(mut link: std::process::Child) -> std::process::Output {
-    let started = std::time::Instant::now();
-    while link.try_wait().ok().flatten().is_none() {
-        assert!(started.elapsed().as_secs() < 20, "the link did not stop");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    link.wait_with_output().unwrap_or_else(|e| panic!("{e}"))
 }
 
 #[test]
@@ -603,10 +579,10 @@ fn a_second_ctrl_c_on_the_way_home_is_an_emergency_stop() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let record = dir.path().join("frames.txt");
     let link = paired_dry_run_four_seconds_in(&record);
-    interrupt(&link);
-    std::thread::sleep(Duration::from_millis(300));
-    interrupt(&link);
-    let o = ended(link);
+    interrupt(link.id());
+    link.wait_for("STOPPING");
+    interrupt(link.id());
+    let o = link.finish();
     let err = stderr(&o);
     assert_eq!(o.status.code(), Some(2), "{err}");
     let line = err
@@ -658,7 +634,7 @@ fn two_stops_delivered_at_once_are_an_emergency_stop() {
         .status()
         .map(|s| s.success());
     assert_eq!(sent.ok(), Some(true));
-    let o = ended(link);
+    let o = link.finish();
     let err = stderr(&o);
     assert!(
         err.lines().any(|l| l.starts_with("link: emergency stop")),
@@ -871,7 +847,7 @@ fn telemetry_over_udp_is_recorded_beside_the_commands_and_follows_the_actuator_m
     let err = stderr(&o);
     assert!(err.contains("link: telemetry answered "), "{err}");
     assert!(err.contains("(0 unanswered, 0 stale)"), "{err}");
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let sim_csv = String::from_utf8_lossy(&sim.stdout).into_owned();
     let response = model_response_of(&sim_csv, 0.05, 100_000.0, 2.0);
     let recorded = std::fs::read_to_string(&record).unwrap_or_else(|e| panic!("{e}"));

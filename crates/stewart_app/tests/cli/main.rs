@@ -25,6 +25,7 @@ mod solve;
 mod telemetry;
 mod video_timing;
 mod view;
+mod watched;
 
 use std::path::Path;
 use std::process::{Command, Output};

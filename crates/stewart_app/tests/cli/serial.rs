@@ -6,6 +6,7 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::link::device_sim_on;
+use crate::watched::Watched;
 use crate::{parse_csv, stderr, stewart};
 
 /// Two connected pseudo-terminals, `a` and `b`; the pair goes when this is dropped.
@@ -104,7 +105,7 @@ fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
         .and_then(|n| n.parse().ok())
         .unwrap_or(0);
     assert!(count + 5 >= sent && count <= sent, "{line}");
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let log = String::from_utf8_lossy(&sim.stderr).into_owned();
     assert_eq!(sim.status.code(), Some(0), "{log}");
     assert!(
@@ -127,10 +128,16 @@ fn a_stream_over_a_serial_line_arrives_whole_in_order_and_ends_home_disarmed() {
 fn a_cable_pulled_mid_stream_disarms_with_a_clear_error() {
     let mut pair = PtyPair::new();
     let port = PtyPair::path(&pair.a).to_owned();
-    let link = std::thread::spawn(move || serial_link("paired", &port, "10", "100"));
-    std::thread::sleep(Duration::from_millis(800));
+    let link = Watched::spawn(
+        Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["link", "--preset", "paired", "--transport", "serial"])
+            .args(["--port", &port, "--baud", "1000000", "--duration", "10"])
+            .args(["--rate", "100", "--ramp", "0.2"]),
+    );
+    // Mid-stream: armed and following the motion.
+    link.wait_for("link: ARMED");
     pair.cut();
-    let o = link.join().unwrap_or_else(|_| panic!("link thread"));
+    let o = link.finish();
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(
@@ -192,7 +199,7 @@ fn telemetry_over_a_serial_line_follows_the_actuator_model() {
         record.to_str().unwrap_or_default(),
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let sim = sim.wait_with_output().unwrap_or_else(|e| panic!("{e}"));
+    let sim = sim.finish();
     let sim_csv = String::from_utf8_lossy(&sim.stdout).into_owned();
     let response = model_response_of(&sim_csv, 0.08, 50_000.0, 0.0);
     let recorded = std::fs::read_to_string(&record).unwrap_or_else(|e| panic!("{e}"));

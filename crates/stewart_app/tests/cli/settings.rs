@@ -104,7 +104,7 @@ fn a_refused_setting_is_one_clear_error() {
         ),
         (
             vec!["solve", "--set", "trajectory.samples=nan"],
-            "error: --set: `trajectory.samples` = NaN refused: it must be a finite number",
+            "error: --set: `trajectory.samples` = nan refused: it must be a finite number",
         ),
     ] {
         let o = stewart(&args);

@@ -1,8 +1,10 @@
 //! Where the bytes go: a serial port, a UDP peer, or a dry-run record of exactly what
 //! would be sent.
 
+#[cfg(feature = "serial")]
 mod serial;
 
+#[cfg(feature = "serial")]
 pub use serial::{PortInfo, Serial, list_ports, max_rate_hz};
 
 use std::io::Write;

@@ -48,6 +48,14 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
         .as_deref()
         .map(|source| LiveCue::bind(source, &scenario))
         .transpose()?;
+    if let Some(live) = &live
+        && let Ok(at) = live.local_addr()
+    {
+        let _ = writeln!(
+            std::io::stderr(),
+            "link: cueing from vehicle motion on udp:{at}"
+        );
+    }
     if let (Some(live), Some(xplane)) = (live.as_mut(), args.xplane.as_deref()) {
         live.subscribe_xplane(RrefSubscription::new(xplane, scenario.link.rate_hz)?);
     }
@@ -167,7 +175,8 @@ fn start_recorder(
     Ok(Some(recorder))
 }
 
-/// Watch the stream until it ends, showing progress on a terminal. Ctrl-C is the e-stop:
+/// Watch the stream until it ends, showing progress: a line kept up to date on a terminal,
+/// else (a log) a line at each change of state, at each new note and once a second. Ctrl-C is the e-stop:
 /// stop at once, return home at the safe speed, disarm; a second one on the way home is
 /// an emergency stop: disarm where the platform is. Returns the Ctrl-Cs seen.
 fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
@@ -175,6 +184,7 @@ fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
     let mut stops_seen = 0;
     let progress = std::io::stderr().is_terminal();
     let mut shown = Instant::now();
+    let mut logged = (None, None);
     while !sender.finished() {
         // Every stop counts, however close together: two within one poll are two.
         let stops = crate::interrupt::count() - stops_before;
@@ -194,6 +204,21 @@ fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
                 "\r{}\x1b[K",
                 progress_line(&sender.status(), stream_for)
             );
+        } else if !progress {
+            // A log (a file, a pipe): a line at each change of state, at a new kind of
+            // note (at most five a second) and once a second.
+            let status = sender.status();
+            let since = shown.elapsed();
+            let kind = status.note.as_deref().map(note_kind);
+            let new_note = kind.is_some() && kind != logged.1;
+            if logged.0 != Some(status.state)
+                || new_note && since >= Duration::from_millis(200)
+                || since >= Duration::from_secs(1)
+            {
+                shown = Instant::now();
+                let _ = writeln!(std::io::stderr(), "{}", progress_line(&status, stream_for));
+                logged = (Some(status.state), kind);
+            }
         }
         std::thread::sleep(Duration::from_millis(20));
     }
@@ -277,6 +302,12 @@ fn progress_line(s: &Status, total: Option<f64>) -> String {
             .map(|n| format!("  ({n})"))
             .unwrap_or_default()
     )
+}
+
+/// A note without its figures: notes that differ only in them (the value that would go
+/// out of range, growing each tick) are one kind, logged once.
+fn note_kind(note: &str) -> String {
+    note.chars().filter(|c| !c.is_ascii_digit()).collect()
 }
 
 /// `--bench`: the scenario streamed over UDP loopback to a receiver thread at each rate;

@@ -508,11 +508,22 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
             _ if setting.optional() => "it must be a number, or `off`",
             _ => "it must be a number",
         };
-        Some(value.parse::<f64>().map_err(|_| SettingError::Invalid {
+        let refused = |reason: &str| SettingError::Invalid {
             key: setting.key.clone(),
             value: value.to_owned(),
             reason: reason.to_owned(),
-        })?)
+        };
+        let number = value.parse::<f64>().map_err(|_| refused(reason))?;
+        // Refused as typed (`1e400`, not the `inf` it reads as).
+        if !number.is_finite() {
+            let switch = setting.unit == Unit::Switch;
+            return Err(refused(if switch {
+                reason
+            } else {
+                "it must be a finite number"
+            }));
+        }
+        Some(number)
     };
     Ok((setting, value))
 }

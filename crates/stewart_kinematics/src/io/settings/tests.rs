@@ -152,6 +152,14 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
         ("geometry.base_radius=off", "it cannot be switched off"),
         ("geometry.platform_angles_deg[1]=50", "refused"),
         ("trajectory.x.amplitude_m=nan", "it must be a finite number"),
+        (
+            "geometry.base_radius=1e400",
+            "`geometry.base_radius` = 1e400 refused: it must be a finite number",
+        ),
+        (
+            "geometry.leg_max=-inf",
+            "`geometry.leg_max` = -inf refused: it must be a finite number",
+        ),
         ("trajectory.samples=2.5", "it must be a whole number"),
         ("trajectory.samples=1", "outside the accepted range 2 … 1e7"),
         (
@@ -182,7 +190,7 @@ fn refused_values_leave_the_scenario_unchanged_and_say_why() {
         ),
         (
             "cueing.tilt=nan",
-            "`cueing.tilt` = NaN refused: it is a switch: true or false",
+            "`cueing.tilt` = nan refused: it is a switch: true or false",
         ),
         (
             "limits.leg_speed_max_m_s=fast",
