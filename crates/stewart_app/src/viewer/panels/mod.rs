@@ -15,7 +15,8 @@ mod legs;
 mod link;
 mod motion;
 mod playback;
-mod plot;
+pub(crate) mod plot;
+mod plot_legend;
 mod plot_ticks;
 mod reach;
 mod scenario;
@@ -343,6 +344,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
     );
     let plot_hidden = state.look.presentation && state.look.plot_hidden;
     let plot_rect = if plot_hidden {
+        state.look.plot_placement = None;
         egui::Rect::NOTHING
     } else {
         let shows = plot::Shows {
@@ -350,12 +352,11 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             commanded: state.link.commanded_pose().is_some(),
             background: !state.quality.software,
         };
-        plot_panel
-            .show(ui, |ui| {
-                plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows);
-            })
-            .response
-            .rect
+        let shown = plot_panel.show(ui, |ui| {
+            plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows)
+        });
+        state.look.plot_placement = Some(shown.inner);
+        shown.response.rect
     };
     state.look.plot_height = if plot_hidden { 0.0 } else { plot_rect.height() };
     egui::CentralPanel::default()

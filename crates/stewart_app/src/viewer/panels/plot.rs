@@ -84,78 +84,55 @@ fn line_width(look: &Look) -> f32 {
     if look.presentation { 3.5 } else { 1.5 }
 }
 
-/// The panel: the plot, and its legend beside it (outside the curves). In trajectory mode,
-/// clicking or dragging on the plot scrubs the time (the wheel still zooms, double-click
-/// resets the view).
-///
+/// Where the plot drew its parts, screen points (as last drawn): what a plot that fits its
+/// panel is judged by.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PlotPlacement {
+    /// The space the panel gave the plot and its legend.
+    pub(crate) space: egui::Rect,
+    /// The plot's data area (inside its axes).
+    pub(crate) frame: egui::Rect,
+    /// Each limit line drawn: its screen height and its label's rectangle.
+    pub(crate) limits: Vec<(f32, egui::Rect)>,
+    /// Each legend row.
+    pub(crate) legend: Vec<egui::Rect>,
+    /// The values/forces toggle, when there is one.
+    pub(crate) toggle: Option<egui::Rect>,
+}
+
+/// The panel: the plot, and its legend beside it (outside the curves) in as many columns
+/// as its rows need to fit the panel's height; the values/forces toggle sits in the plot's
+/// top right corner. In trajectory mode, clicking or dragging on the plot scrubs the time
+/// (the wheel still zooms, double-click resets the view). Returns where it all went.
 pub(crate) fn show(
     ui: &mut egui::Ui,
     doc: &Document,
     playback: &mut Playback,
     look: &mut Look,
     shows: Shows,
-) {
+) -> PlotPlacement {
     let Shows {
         rolling,
         commanded,
         background,
     } = shows;
-    let legend_width = if look.presentation { 110.0 } else { 76.0 };
     let size = ui.available_size();
-    ui.horizontal(|ui| {
-        ui.allocate_ui(
-            egui::vec2((size.x - legend_width).max(100.0), size.y),
-            |ui| {
-                plot(ui, doc, playback, look, [rolling, commanded, background]);
-            },
-        );
-        ui.vertical(|ui| legend(ui, doc, look, rolling));
-    });
-}
-
-/// The legend: a swatch and the name of each curve, the limits and the time marker.
-fn legend(ui: &mut egui::Ui, doc: &Document, look: &mut Look, rolling: bool) {
-    let quantity = doc.scenario().geometry.quantity();
-    let t = look.lang;
-    if doc.plot_efforts().is_some() && !rolling {
-        ui.selectable_value(&mut look.plot_efforts, false, t.tr("plot.lengths"));
-        ui.selectable_value(&mut look.plot_efforts, true, t.tr("plot.efforts"))
-            .on_hover_text(t.tr("plot.efforts_tip"));
-        ui.separator();
-    }
+    let space = ui.available_rect_before_wrap();
     let efforts = efforts_shown(doc, look, rolling).is_some();
-    let width = line_width(look);
-    let swatch = |ui: &mut egui::Ui, colour: Color32, text: String, dashed: bool| {
-        ui.horizontal(|ui| {
-            super::side_plot::swatch(ui, colour, dashed, width);
-            ui.label(text);
-        });
-    };
-    let symbol = if efforts {
-        quantity.effort.0
-    } else {
-        quantity.symbol
-    };
-    for leg in 0..6 {
-        swatch(ui, leg_colour(leg), format!("{symbol}{}", leg + 1), false);
-    }
-    let [min, max] = doc.scenario().geometry.quantity_limits();
-    for (name, limit) in [("plot.max", max), ("plot.min", min)] {
-        if limit.is_some() && !efforts {
-            swatch(
-                ui,
-                Color32::GRAY,
-                format!("{}{}", quantity.symbol, t.tr(name)),
-                true,
-            );
-        }
-    }
-    if !rolling && doc.beyond_limits() && !efforts {
-        swatch(ui, BEYOND, t.tr("plot.beyond").to_owned(), false);
-    }
-    if !rolling {
-        swatch(ui, marker_colour(look), t.tr("plot.now").to_owned(), false);
-    }
+    let entries = super::plot_legend::entries(doc, look, efforts, rolling);
+    let columns = super::plot_legend::Columns::fitting(ui, &entries, size.y);
+    ui.horizontal(|ui| {
+        let mut placement = ui
+            .allocate_ui(
+                egui::vec2((size.x - columns.width()).max(100.0), size.y),
+                |ui| plot(ui, doc, playback, look, [rolling, commanded, background]),
+            )
+            .inner;
+        placement.legend = super::plot_legend::show(ui, &entries, columns, line_width(look));
+        placement.space = space;
+        placement
+    })
+    .inner
 }
 
 /// The actuator efforts to plot instead of the lengths: when asked for, along the
@@ -179,14 +156,14 @@ fn marker_colour(look: &Look) -> Color32 {
     }
 }
 
-/// The plot itself.
+/// The plot itself, with the values/forces toggle in its corner.
 fn plot(
     ui: &mut egui::Ui,
     doc: &Document,
     playback: &mut Playback,
-    look: &Look,
+    look: &mut Look,
     [rolling, commanded, background]: [bool; 3],
-) {
+) -> PlotPlacement {
     let width = line_width(look);
     let scenario = doc.scenario();
     let quantity = scenario.geometry.quantity();
@@ -222,6 +199,10 @@ fn plot(
     if rolling {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
     }
+    // The limits always in view: how close the legs come to them is the point.
+    for limit in [min, max].into_iter().flatten() {
+        plot = plot.include_y(limit);
+    }
     let left_end = if rolling {
         -History::WINDOW
     } else {
@@ -248,6 +229,86 @@ fn plot(
         let start = scenario.motion.sampling.start();
         playback.time = (t - start).clamp(0.0, scenario.motion.sampling.duration());
         playback.playing = false;
+    }
+    let frame = *shown.transform.frame();
+    let limits = [min, max]
+        .into_iter()
+        .zip(["plot.min", "plot.max"])
+        .filter_map(|(limit, name)| {
+            let v = limit?;
+            let at = shown
+                .transform
+                .position_from_point(&PlotPoint::new(left_end, v));
+            let size = ui
+                .painter()
+                .layout_no_wrap(
+                    limit_label(&quantity, t, name, v),
+                    egui::TextStyle::Body.resolve(ui.style()),
+                    Color32::WHITE,
+                )
+                .size();
+            let anchor = limit_anchor(name);
+            Some((at.y, anchor.anchor_size(at, size)))
+        })
+        .collect();
+    let toggle =
+        (doc.plot_efforts().is_some() && !rolling).then(|| efforts_toggle(ui, frame, look));
+    PlotPlacement {
+        space: egui::Rect::NOTHING,
+        frame,
+        limits,
+        legend: Vec::new(),
+        toggle,
+    }
+}
+
+/// The values/forces toggle in the plot's top right corner, on a backing of the panel's
+/// colour (over the curves); returns its rectangle.
+fn efforts_toggle(ui: &mut egui::Ui, frame: egui::Rect, look: &mut Look) -> egui::Rect {
+    let t = look.lang;
+    let corner = egui::Rect::from_min_max(
+        frame.left_top() + egui::vec2(4.0, 4.0),
+        frame.right_bottom() - egui::vec2(4.0, 4.0),
+    );
+    let builder = egui::UiBuilder::new()
+        .max_rect(corner)
+        .layout(egui::Layout::right_to_left(egui::Align::Min));
+    ui.scope_builder(builder, |ui| {
+        egui::Frame::NONE
+            .fill(ui.visuals().panel_fill)
+            .corner_radius(4.0)
+            .inner_margin(2.0)
+            .show(ui, |ui| {
+                // Right to left: forces last on the screen, as read.
+                ui.selectable_value(&mut look.plot_efforts, true, t.tr("plot.efforts"))
+                    .on_hover_text(t.tr("plot.efforts_tip"));
+                ui.selectable_value(&mut look.plot_efforts, false, t.tr("plot.lengths"));
+            })
+            .response
+            .rect
+    })
+    .inner
+}
+
+/// A limit line's label: `Lmax 1.3 m`.
+fn limit_label(quantity: &Quantity, t: crate::i18n::Lang, name: &str, v: f64) -> String {
+    format!(
+        " {}{} {} {}",
+        quantity.symbol,
+        t.tr(name),
+        stewart_kinematics::io::bounds::short(v),
+        quantity.unit
+    )
+}
+
+/// Where a limit's label hangs from its point on the line: inside the band between the
+/// limits (a label outside it would be cut by the plot's edge, where the bounds end at the
+/// limit).
+fn limit_anchor(name: &str) -> egui::Align2 {
+    if name == "plot.max" {
+        egui::Align2::LEFT_TOP
+    } else {
+        egui::Align2::LEFT_BOTTOM
     }
 }
 
@@ -336,21 +397,11 @@ fn limit_lines(
                 Text::new(
                     words.clone(),
                     PlotPoint::new(left_end, v),
-                    egui::RichText::new(format!(
-                        " {words} {} {}",
-                        stewart_kinematics::io::bounds::short(v),
-                        quantity.unit
-                    ))
-                    .text_style(egui::TextStyle::Body)
-                    .color(label_colour),
+                    egui::RichText::new(limit_label(quantity, t, name, v))
+                        .text_style(egui::TextStyle::Body)
+                        .color(label_colour),
                 )
-                // Inside the band between the limits: a label outside it would be cut
-                // by the plot's edge, where the bounds end at the limit.
-                .anchor(if name == "plot.max" {
-                    egui::Align2::LEFT_TOP
-                } else {
-                    egui::Align2::LEFT_BOTTOM
-                }),
+                .anchor(limit_anchor(name)),
             );
         }
     }

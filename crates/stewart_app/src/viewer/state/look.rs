@@ -54,6 +54,9 @@ pub struct Look {
     pub(crate) plot_efforts: bool,
     /// The plot panel's height as last drawn, logical pixels (its top edge drags).
     pub(crate) plot_height: f32,
+    /// Where the plot drew its frame, limits, legend and toggle last (`None` while hidden
+    /// or before the first frame).
+    pub(crate) plot_placement: Option<crate::viewer::panels::plot::PlotPlacement>,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub(crate) view_px: [u32; 2],
     /// The 3D view's width over its height, as laid out last frame.
@@ -88,6 +91,7 @@ impl Look {
             frame_times: false,
             plot_efforts: false,
             plot_height: 0.0,
+            plot_placement: None,
             view_px: [1280, 720],
             view_aspect: 16.0 / 9.0,
             renderer_missing: Some(String::new()),

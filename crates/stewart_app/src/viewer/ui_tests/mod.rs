@@ -11,6 +11,7 @@ mod files;
 mod legs;
 mod link;
 mod modes;
+mod plot_fit;
 mod reach;
 mod rotary;
 mod shots;
