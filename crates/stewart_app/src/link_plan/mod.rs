@@ -21,6 +21,9 @@ mod follow;
 mod hardware;
 
 pub(crate) use follow::{Drive, Followed};
+
+/// The pose a live cue asked for last, shared with whoever shows it.
+pub(crate) type AskedPose = Arc<Mutex<Option<Pose>>>;
 pub(crate) use hardware::{actuator_range, template_problem};
 
 /// The step of the central differences that give the target's velocity and acceleration,
@@ -137,10 +140,22 @@ impl LinkPlan {
 
     /// A live cue as a target: the actuator values of the cued pose at each tick (the cue
     /// reads its datagrams and steps the washout on the sender's thread).
-    pub fn cue_target(&self, mut live: LiveCue) -> Target {
+    pub fn cue_target(&self, live: LiveCue) -> Target {
+        self.cue_target_telling(live, None)
+    }
+
+    /// A live cue as a target, each tick's cued pose also left in `asked` (for the viewer:
+    /// the values sent may give no pose by forward kinematics, on a singular layout). The
+    /// tick never waits for it: a pose the viewer is reading is left for the next tick.
+    pub(crate) fn cue_target_telling(&self, mut live: LiveCue, asked: Option<AskedPose>) -> Target {
         let geometry = self.geometry.clone();
         Box::new(move |t| {
             let pose = live.tick(t);
+            if let Some(cell) = &asked
+                && let Ok(mut slot) = cell.try_lock()
+            {
+                *slot = Some(pose);
+            }
             geometry
                 .actuator_values_at(&pose)
                 .map(Sample::At)

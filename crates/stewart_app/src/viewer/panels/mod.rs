@@ -28,6 +28,7 @@ mod workspace;
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::files::Purpose;
+use crate::viewer::state::live_link::CommandedFrom;
 use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::MotionMode;
 use crate::viewer::state::teleop;
@@ -418,10 +419,11 @@ fn link_badge(ctx: &egui::Context, state: &mut ViewerState) {
                     ui.add(egui::Label::new(big(link::state_words(t, status.state))).extend());
                     let shown = if state.link.commanded_pose().is_some() {
                         let measured = state.link.measured_pose().is_some();
-                        Some(t.tr(if measured {
-                            "link.view_commanded_measured"
-                        } else {
-                            "link.view_commanded"
+                        Some(t.tr(match state.link.commanded_from {
+                            Some(CommandedFrom::Asked) => "link.view_cue_asked",
+                            Some(CommandedFrom::LastGood) => "link.view_last_good",
+                            _ if measured => "link.view_commanded_measured",
+                            _ => "link.view_commanded",
                         }))
                     } else {
                         None

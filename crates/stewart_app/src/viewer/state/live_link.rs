@@ -16,7 +16,7 @@ use stewart_link::telemetry::Row;
 use stewart_link::transport::{Record, Transport};
 
 use crate::i18n::Lang;
-use crate::link_plan::{Drive, Followed, LinkPlan};
+use crate::link_plan::{AskedPose, Drive, Followed, LinkPlan};
 use crate::live_cue::{CueCounts, LiveCue};
 use crate::viewer::error::ViewerError;
 
@@ -40,6 +40,21 @@ struct Running {
     cue: Option<Arc<CueCounts>>,
     /// The set-points the controller answered, as they come.
     answered: mpsc::Receiver<Row>,
+    /// With live vehicle motion as the source: the pose it asked for last.
+    asked: Option<AskedPose>,
+}
+
+/// Where the commanded pose shown comes from when the values sent give none by forward
+/// kinematics (a singular layout such as the seed's, or values on their way home).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum CommandedFrom {
+    /// Forward kinematics of the values sent (or the cue's pose, which gives them exactly).
+    Values,
+    /// The pose the live cue asked for; the values sent are still on their way to it (a
+    /// ramp, a hold).
+    Asked,
+    /// The last pose the values sent gave; the newest give none.
+    LastGood,
 }
 
 /// The link panel's state: the stream when connected, the outcome of the last one.
@@ -62,6 +77,8 @@ pub(crate) struct LiveLink {
     /// The values sent last and the pose they give (forward kinematics), while the stream
     /// drives the platform (arming, armed, stopping).
     commanded: Option<(Pose, [f64; 6])>,
+    /// How that pose was found.
+    pub(crate) commanded_from: Option<CommandedFrom>,
     /// Follow live vehicle motion arriving at this UDP address (`HOST:PORT`) through the
     /// scenario's washout, instead of what the viewer shows.
     pub(crate) cue_input: Option<String>,
@@ -131,11 +148,14 @@ impl LiveLink {
         self.measured_pose = None;
         self.commanded = None;
         let source = plan.followed(looping, drive);
+        let mut asked_pose = None;
         let (target, cue): (stewart_link::target::Target, _) = match &self.cue_input {
             Some(address) => {
                 let live = LiveCue::bind(&format!("udp:{address}"), scenario).map_err(fail)?;
                 let counts = live.counts();
-                (plan.cue_target(live), Some(counts))
+                let asked = AskedPose::default();
+                asked_pose = Some(Arc::clone(&asked));
+                (plan.cue_target_telling(live, Some(asked)), Some(counts))
             }
             None => (LinkPlan::followed_target(Arc::clone(&source)), None),
         };
@@ -158,6 +178,7 @@ impl LiveLink {
             plan,
             answered,
             cue,
+            asked: asked_pose,
         });
         Ok(self.lang.fmt(
             "link.connected",
@@ -306,25 +327,52 @@ impl LiveLink {
     }
 
     /// The commanded pose from the values sent last (forward kinematics from the last
-    /// commanded pose, or home); none while disarmed (nothing is driven).
+    /// commanded pose, or home); none while disarmed (nothing is driven). Where forward
+    /// kinematics finds none (a singular layout): the pose a live cue asked for, else the
+    /// last good one, said by [`LiveLink::commanded_from`], never the pose the viewer plays
+    /// behind the stream.
     fn take_commanded(&mut self) {
         let Some(r) = &self.running else {
             self.commanded = None;
+            self.commanded_from = None;
             return;
         };
         let status = r.sender.status();
         if status.state == stewart_link::safety::LinkState::Disarmed || status.frames == 0 {
             self.commanded = None;
+            self.commanded_from = None;
             return;
         }
         let geometry = &r.plan.geometry;
         let near = self
             .commanded
             .map_or_else(|| geometry.home_pose(), |(pose, _)| pose);
-        self.commanded = geometry
-            .pose_from_actuator_values(&status.values, &near)
-            .ok()
-            .map(|pose| (pose, status.values));
+        let values = status.values;
+        let found = match geometry.pose_from_actuator_values(&values, &near) {
+            Ok(pose) => Some((pose, CommandedFrom::Values)),
+            Err(_) => {
+                let asked = (r.asked.as_ref())
+                    .and_then(|cell| *cell.lock().unwrap_or_else(PoisonError::into_inner));
+                match (asked, self.commanded) {
+                    (Some(pose), _) => {
+                        let gives = geometry.actuator_values_at(&pose).ok();
+                        let reached = gives.is_some_and(|g| {
+                            g.iter().zip(&values).all(|(a, b)| (a - b).abs() <= 1e-6)
+                        });
+                        let from = if reached {
+                            CommandedFrom::Values
+                        } else {
+                            CommandedFrom::Asked
+                        };
+                        Some((pose, from))
+                    }
+                    (None, Some((last, _))) => Some((last, CommandedFrom::LastGood)),
+                    (None, None) => None,
+                }
+            }
+        };
+        self.commanded = found.map(|(pose, _)| (pose, values));
+        self.commanded_from = found.map(|(_, from)| from);
     }
 
     /// Take in the answered set-points: the tracking error, and the measured pose from the

@@ -524,3 +524,70 @@ fn badge_reads_on_one_line(h: &Harness<'static, ViewerState>, words: &str) {
         assert!(height < 40.0, "{words}: {height} px high, wrapped");
     }
 }
+
+/// Armed on live vehicle motion on the seed, whose layout is singular (forward kinematics
+/// of the values sent finds no pose), every frame shows what is commanded, the pose the
+/// cue asks for, and never the trajectory paused behind the stream.
+#[test]
+fn a_live_cue_on_the_seed_shows_the_commanded_pose_in_every_frame() {
+    let mut h = tall_harness("seed", 800.0);
+    h.state_mut().edit_link(|l| l.ramp_s = 0.1);
+    let port = std::net::UdpSocket::bind("127.0.0.1:0")
+        .and_then(|s| s.local_addr())
+        .unwrap_or_else(|e| panic!("{e}"));
+    h.state_mut().link.cue_input = Some(port.to_string());
+    h.state_mut().connect_link();
+    until(&mut h, LinkState::Disarmed);
+    h.state().link.arm();
+    until(&mut h, LinkState::Armed);
+    // A vehicle braking and turning, a sample every 10 ms on a thread of its own.
+    let done = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let player = {
+        let done = std::sync::Arc::clone(&done);
+        std::thread::spawn(move || {
+            let sender = std::net::UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+            let mut k = 0u32;
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                let t = f64::from(k) * 0.01;
+                let line = format!("{t},-4,2,0,0,0,{}", 20.0 * (2.0 * t).sin());
+                let _ = sender.send_to(line.as_bytes(), port);
+                k += 1;
+                std::thread::sleep(Duration::from_millis(10));
+            }
+        })
+    };
+    // Frames until 100 samples have come, each showing the commanded pose.
+    let started = Instant::now();
+    let mut frames = 0;
+    let mut away = 0;
+    while h.state().link.cue().map_or(0, |c| c.numbers()[0]) < 100 {
+        h.run();
+        let s = h.state();
+        let (pose, _) = s.link.commanded().unwrap_or_else(|| {
+            panic!(
+                "frame {frames}: no commanded pose ({:?})",
+                s.link.commanded_from
+            )
+        });
+        assert_eq!(s.pose(), pose, "frame {frames} shows another pose");
+        if (pose.position - s.played_pose().position).norm() > 1e-3 {
+            away += 1;
+        }
+        frames += 1;
+        if frames % 6 == 0 {
+            super::look(&mut h, &format!("seed-live-cue-{frames}.png"));
+        }
+        assert!(
+            started.elapsed() < Duration::from_secs(30),
+            "{frames} frames"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    done.store(true, std::sync::atomic::Ordering::Relaxed);
+    let _ = player.join();
+    assert!(
+        away > frames / 2,
+        "{away} of {frames} frames away from the trajectory"
+    );
+    h.state_mut().link.disconnect_now();
+}
