@@ -80,20 +80,21 @@ pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target)
                         .any(|b| i.pointer.button_down(b) || i.pointer.button_released(b))
                 });
                 let fine = ui.input(|i| i.modifiers.shift);
-                // A slider senses drags only: clicks too, so that the right button's click
-                // opens the reset menu.
-                let slid = ui.add(slider(t, setting, kind, range.clone(), &mut v));
+                // A drag that went fine stays fine until its button is up, even when Shift is
+                // let go first (the plain slider would then jump to the pointer, as a
+                // second undo step). Keyed by the setting: one slider is dragged at a time.
+                let fine_id = ui.scope_id().with(("fine drag", &setting.key));
+                let was_fine = ui.data(|d| d.get_temp::<bool>(fine_id)).unwrap_or(false);
+                // While a fine drag may go on, the slider shows the value applied, not where
+                // the pointer would put a plain drag.
+                let frozen = (fine || was_fine) && ui.input(|i| i.pointer.primary_down());
+                let slid = ui.add(slider(t, setting, kind, range.clone(), &mut v, frozen));
                 // A slider senses drags only: clicks too, so that the right button's click
                 // opens the reset menu.
                 let response = slid
                     .union(slid.interact(egui::Sense::click()))
                     .on_hover_text(slider_tip(t, setting, scenario));
                 let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
-                // A drag that went fine stays fine until its button is up, even when Shift is
-                // let go first (the plain slider would then jump to the pointer, as a
-                // second undo step).
-                let fine_id = slid.id.with("fine drag");
-                let was_fine = ui.data(|d| d.get_temp::<bool>(fine_id)).unwrap_or(false);
                 let fine = fine || (held && was_fine);
                 let still_fine = fine && slid.is_pointer_button_down_on();
                 if still_fine != was_fine {
@@ -212,15 +213,25 @@ fn unit_of(setting: &Setting, scenario: &Scenario) -> &'static str {
     setting.unit.symbol_for(scenario.geometry.actuator().kind())
 }
 
+/// A setting's slider over `range` showing `value`; `frozen`, it keeps the value (a fine
+/// drag moves it instead, from the pointer's motion).
 fn slider<'a>(
     lang: Lang,
     setting: &Setting,
     kind: ActuatorKind,
     range: std::ops::RangeInclusive<f64>,
     value: &'a mut f64,
+    frozen: bool,
 ) -> egui::Slider<'a> {
     let logarithmic = is_logarithmic(&range);
-    let s = egui::Slider::new(value, range)
+    let s = egui::Slider::from_get_set(range, move |set| {
+        if let Some(new) = set
+            && !frozen
+        {
+            *value = new;
+        }
+        *value
+    })
         .text(setting_label_with_unit(lang, setting, kind))
         .clamping(egui::SliderClamping::Never)
         .logarithmic(logarithmic);

@@ -2,7 +2,7 @@
 //! right-click without the knob jumping, a tooltip naming the file key.
 
 use egui::accesskit::Role;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT as _, Queryable};
 use stewart_kinematics::io::settings;
 
 use super::harness;
@@ -165,4 +165,41 @@ fn a_desk_platforms_radius_slider_is_not_pinned_at_its_left_end() {
         h.query_by_label_contains("`geometry.base_radius` in scenario files")
             .is_some()
     );
+}
+
+#[test]
+fn a_fine_drag_shows_the_value_applied_while_it_goes_on() {
+    let mut h = harness("paired");
+    let rect = h.get_by_role_and_label(Role::Slider, "duration (s)").rect();
+    let grab = egui::pos2(rect.left() + 10.0, rect.center().y);
+    h.event(egui::Event::ModifiersChanged(egui::Modifiers::SHIFT));
+    h.hover_at(grab);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: grab,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::SHIFT,
+    });
+    h.run();
+    for k in 1..=4 {
+        h.hover_at(grab + egui::vec2(10.0 * k as f32, 0.0));
+        h.run();
+        // The slider reads what is applied (not where the pointer would put a plain drag).
+        let node = h.get_by_role_and_label(Role::Slider, "duration (s)");
+        let shown = (node.accesskit_node().numeric_value()).unwrap_or_else(|| panic!("no value"));
+        let applied = duration(&h);
+        assert!(
+            (shown - applied).abs() < 0.01,
+            "step {k}: the slider shows {shown}, {applied} is applied"
+        );
+    }
+    h.event(egui::Event::PointerButton {
+        pos: grab + egui::vec2(40.0, 0.0),
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::SHIFT,
+    });
+    h.event(egui::Event::ModifiersChanged(egui::Modifiers::NONE));
+    h.run();
 }
