@@ -502,8 +502,8 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
     }
 }
 
-/// Esc: while a link is connected, its e-stop and nothing else; otherwise it leaves full
-/// screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
+/// Esc: while a link is connected, its e-stop and nothing else; otherwise it closes the
+/// Help window when open, else leaves full screen and presentation mode. Space: play/pause; ←/→: step; Home: back to the start;
 /// P or F5: presentation mode (G: the plot hidden or shown there); F11: full screen; F12:
 /// screenshot; Ctrl+Z undo, Ctrl+Shift+Z or Ctrl+Y redo; Ctrl+O open, Ctrl+S save,
 /// Ctrl+Shift+S save as; Ctrl+Q quit; F1 or ?: the keys (outside text fields, which keep
@@ -514,6 +514,9 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     if pressed(egui::Key::Escape) {
         if state.link.connected() {
             state.link.estop();
+        } else if state.look.help {
+            // The window on top goes first.
+            state.look.help = false;
         } else {
             state.look.presentation = false;
             state.look.fullscreen = false;
@@ -579,6 +582,8 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
         state.take_screenshot();
     }
     if pressed(egui::Key::P) || pressed(egui::Key::F5) {
+        // The audience sees the view, not the list of keys.
+        state.look.help = false;
         state.look.presentation = !state.look.presentation;
     }
     if pressed(egui::Key::G) && state.look.presentation {

@@ -47,6 +47,33 @@ fn p_enters_presentation_mode_and_escape_leaves_it() {
 }
 
 #[test]
+fn escape_closes_the_help_window_first_and_p_closes_it_for_the_audience() {
+    let mut h = harness("seed");
+    let help_open = |h: &egui_kittest::Harness<'static, crate::viewer::ViewerState>| {
+        h.state().look.help && h.query_by_label("Help / keys").is_some()
+    };
+    h.key_press(egui::Key::F1);
+    h.run();
+    assert!(help_open(&h));
+    // P: the audience sees the view, not the list of keys.
+    h.key_press(egui::Key::P);
+    h.run();
+    assert!(h.state().look.presentation);
+    assert!(!help_open(&h), "P left the keys over the presentation");
+    h.key_press(egui::Key::F1);
+    h.run();
+    assert!(help_open(&h));
+    // Esc: the window on top goes, nothing else.
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(!help_open(&h), "Esc left the help open");
+    assert!(h.state().look.presentation, "Esc closed the help and more");
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(!h.state().look.presentation);
+}
+
+#[test]
 fn play_and_export_are_in_the_toolbar_and_the_controls_scroll_bar_is_always_drawn() {
     let mut h = harness("seed");
     // Play/pause in the toolbar, whatever the side panel shows.
