@@ -74,7 +74,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
                 .default_open(ed.expand)
                 .show(ui, |ui| {
                     let algorithm = ed.scenario().cueing.algorithm;
-                    ui.horizontal(|ui| {
+                    ui.horizontal_wrapped(|ui| {
                         ui.label(t.tr("cueing.algorithm"));
                         for choice in CueingAlgorithm::ALL {
                             if ui

@@ -9,7 +9,7 @@ use stewart_kinematics::analysis::forces::Payload;
 use stewart_kinematics::io::settings::{self, Group, Unit};
 use stewart_kinematics::{Pose, Scenario};
 
-use super::widgets::{WARNING, edit_error, setting_slider};
+use super::widgets::{WARNING, edit_error, fitted_slider, setting_slider};
 use crate::viewer::state::editor::Editor;
 use crate::viewer::tools::mode_view::{ModeView, NoModes, SHOWN_HZ};
 
@@ -76,7 +76,8 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
         i[(1, 2)],
     ];
     let mut changed = false;
-    egui::Grid::new("payload").num_columns(4).show(ui, |ui| {
+    // Each quantity's name above its values, so that the rows fit a narrow panel.
+    ui.horizontal_wrapped(|ui| {
         ui.label(t.tr("dynamics.mass"));
         changed |= ui
             .add(
@@ -85,9 +86,10 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
                     .suffix(format!(" {}", Unit::Kilogram.symbol())),
             )
             .changed();
-        ui.end_row();
-        ui.label(t.tr("dynamics.com"));
-        let size = ed.scenario().geometry.characteristic_length();
+    });
+    ui.label(t.tr("dynamics.com"));
+    let size = ed.scenario().geometry.characteristic_length();
+    ui.horizontal_wrapped(|ui| {
         for c in &mut com {
             changed |= ui
                 .add(
@@ -97,27 +99,26 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
                 )
                 .changed();
         }
-        ui.end_row();
-        let moments = p.inertia.diagonal().max().max(1e-9);
-        for (row, names) in [(0, ["Ixx", "Iyy", "Izz"]), (3, ["Ixy", "Ixz", "Iyz"])] {
-            ui.label(if row == 0 {
-                t.tr("dynamics.inertia")
-            } else {
-                ""
-            });
-            for (k, name) in names.iter().enumerate() {
-                changed |= ui
-                    .add(
-                        egui::DragValue::new(&mut inertia[row + k])
-                            .speed(0.005 * moments)
-                            .prefix(format!("{name} ")),
-                    )
-                    .on_hover_text(t.tr("dynamics.inertia_tip"))
-                    .changed();
-            }
-            ui.end_row();
-        }
     });
+    ui.label(t.tr("dynamics.inertia"));
+    let moments = p.inertia.diagonal().max().max(1e-9);
+    egui::Grid::new("payload inertia")
+        .num_columns(3)
+        .show(ui, |ui| {
+            for (row, names) in [(0, ["Ixx", "Iyy", "Izz"]), (3, ["Ixy", "Ixz", "Iyz"])] {
+                for (k, name) in names.iter().enumerate() {
+                    changed |= ui
+                        .add(
+                            egui::DragValue::new(&mut inertia[row + k])
+                                .speed(0.005 * moments)
+                                .prefix(format!("{name} ")),
+                        )
+                        .on_hover_text(t.tr("dynamics.inertia_tip"))
+                        .changed();
+                }
+                ui.end_row();
+            }
+        });
     if changed {
         let [ixx, iyy, izz, ixy, ixz, iyz] = inertia;
         let tensor = Matrix3::new(ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz);
@@ -194,10 +195,9 @@ fn modes(ui: &mut egui::Ui, ed: &Editor, pose: &Pose, view: &mut ModeView) {
     ui.checkbox(&mut view.animate, t.tr("dynamics.animate"))
         .on_hover_text(t.fmt("dynamics.animate_tip", &[("hz", &SHOWN_HZ)]));
     let mut percent = view.amplitude * 100.0;
-    if ui
-        .add(egui::Slider::new(&mut percent, 1.0..=20.0).text(t.tr("dynamics.amplitude")))
-        .changed()
-    {
+    let value = percent;
+    let slider = egui::Slider::new(&mut percent, 1.0..=20.0);
+    if fitted_slider(ui, t.tr("dynamics.amplitude"), value, slider).changed() {
         view.amplitude = percent / 100.0;
     }
     if view.animate {

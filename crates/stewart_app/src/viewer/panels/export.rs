@@ -221,13 +221,13 @@ fn form(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
         });
     }
     if form.kind.is_video() {
-        ui.add(egui::Slider::new(&mut form.fps, 0.0..=120.0).text(t.tr("export.fps")));
-        ui.add(
-            egui::Slider::new(&mut form.speed, 0.05..=2.0)
-                .logarithmic(true)
-                .text(t.tr("export.speed")),
-        )
-        .on_hover_text(t.tr("export.speed_tip"));
+        let fps = form.fps;
+        let slider = egui::Slider::new(&mut form.fps, 0.0..=120.0);
+        widgets::fitted_slider(ui, t.tr("export.fps"), fps, slider);
+        let speed = form.speed;
+        let slider = egui::Slider::new(&mut form.speed, 0.05..=2.0).logarithmic(true);
+        widgets::fitted_slider(ui, t.tr("export.speed"), speed, slider)
+            .on_hover_text(t.tr("export.speed_tip"));
         ui.horizontal(|ui| {
             ui.checkbox(&mut form.light, t.tr("export.light"));
             ui.checkbox(&mut form.composite, t.tr("export.composite"));

@@ -7,7 +7,7 @@ use stewart_kinematics::io::settings::{
 };
 use stewart_kinematics::{model::geometry::Plate, model::layout::Layout};
 
-use super::widgets::{edit_error, setting_slider};
+use super::widgets::{edit_error, fitted_slider, setting_slider};
 use crate::viewer::state::editor::Editor;
 
 /// The panel.
@@ -212,22 +212,22 @@ fn layout(ui: &mut egui::Ui, ed: &mut Editor) {
     });
     match &mut chosen {
         Some(Layout::Staggered { offset_deg }) => {
-            ui.add(
-                egui::Slider::new(offset_deg, 1.0..=59.0).text(t.tr("geometry.platform_offset")),
-            );
+            let value = *offset_deg;
+            let slider = egui::Slider::new(offset_deg, 1.0..=59.0);
+            fitted_slider(ui, t.tr("geometry.platform_offset"), value, slider);
         }
         Some(Layout::Paired {
             base_separation_deg,
             platform_separation_deg,
         }) => {
-            ui.add(
-                egui::Slider::new(base_separation_deg, 1.0..=110.0)
-                    .text(t.tr("geometry.base_separation")),
-            );
-            ui.add(
-                egui::Slider::new(platform_separation_deg, 1.0..=110.0)
-                    .text(t.tr("geometry.platform_separation")),
-            );
+            for (words, separation) in [
+                ("geometry.base_separation", base_separation_deg),
+                ("geometry.platform_separation", platform_separation_deg),
+            ] {
+                let value = *separation;
+                let slider = egui::Slider::new(separation, 1.0..=110.0);
+                fitted_slider(ui, t.tr(words), value, slider);
+            }
         }
         None => {
             ui.label(egui::RichText::new(t.tr("geometry.no_layout")).small());

@@ -20,6 +20,7 @@ mod plot_legend;
 mod plot_ticks;
 mod reach;
 mod scenario;
+pub(crate) mod side_panel;
 mod side_plot;
 mod view;
 mod widgets;
@@ -324,16 +325,11 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
         // Capped: a long status line wraps instead of widening the panel (the width is
         // remembered between runs, so it only ever grew).
         let widest = (0.4 * ui.ctx().content_rect().width()).clamp(MIN_SIDE, MAX_SIDE);
-        egui::Panel::left("controls")
-            .frame(side_frame)
-            .resizable(true)
-            .default_size(320.0)
-            .size_range(MIN_SIDE..=widest)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical()
-                    .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
-                    .show(ui, |ui| controls(ui, state));
-            });
+        state.look.side_width = side_panel::show(ui, side_frame, MIN_SIDE..=widest, |ui| {
+            egui::ScrollArea::vertical()
+                .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+                .show(ui, |ui| controls(ui, state));
+        });
     }
     // The plot's top edge is a splitter: drag it to give the plot more or less height (at
     // most two fifths of the window). In presentation mode it takes at most a third (G

@@ -3,7 +3,6 @@
 use egui::{Color32, RichText};
 use stewart_kinematics::Scenario;
 use stewart_kinematics::io::settings::{self, Group, Setting, Target, Unit};
-use stewart_kinematics::model::actuator::ActuatorKind;
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
@@ -88,7 +87,17 @@ pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target)
                 // While a fine drag may go on, the slider shows the value applied, not where
                 // the pointer would put a plain drag.
                 let frozen = (fine || was_fine) && ui.input(|i| i.pointer.primary_down());
-                let slid = ui.add(slider(t, setting, kind, range.clone(), &mut v, frozen));
+                let label = setting_label_with_unit(t, setting, kind);
+                let fits = make_room_for_the_label(ui, &label, value);
+                let text = fits.then(|| label.clone());
+                let slid = ui.add(slider(setting, text, range.clone(), &mut v, frozen));
+                // Too long even beside the shortest track: its own label, wrapped, names it.
+                let slid = if fits {
+                    slid
+                } else {
+                    let words = ui.add(egui::Label::new(label).wrap());
+                    slid.labelled_by(words.id)
+                };
                 // A slider senses drags only: clicks too, so that the right button's click
                 // opens the reset menu.
                 let response = slid
@@ -159,6 +168,55 @@ fn reset_menu(
     chosen
 }
 
+/// The shortest a slider's track gets to leave its label room, points.
+const SHORTEST_TRACK: f32 = 48.0;
+
+/// Shorten this row's slider track (down to [`SHORTEST_TRACK`]) so that its number box and
+/// `label` fit in the width left: a long label ("cylinder centre of mass (m)") is read
+/// whole in a narrow panel instead of cut at its edge. Whether it fits on one line.
+fn make_room_for_the_label(ui: &mut egui::Ui, label: &str, value: f64) -> bool {
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let width = |text: String| {
+        ui.painter()
+            .layout_no_wrap(text, font.clone(), Color32::WHITE)
+            .size()
+            .x
+    };
+    let number = width(format!("{value:.4}")).max(ui.spacing().interact_size.x)
+        + 2.0 * ui.spacing().button_padding.x;
+    let gaps = 3.0 * ui.spacing().item_spacing.x;
+    // The width left in sight (a wider row above may have widened the layout past the
+    // panel's edge, where the panel cuts).
+    let left = ui
+        .available_width()
+        .min(ui.clip_rect().right() - ui.cursor().min.x);
+    let room = left - width(label.to_owned()) - number - gaps;
+    let track = &mut ui.spacing_mut().slider_width;
+    *track = room.clamp(SHORTEST_TRACK, *track);
+    room >= SHORTEST_TRACK
+}
+
+/// `slider` (given no text) in a row of its own with `text` beside it, its track shortened
+/// to leave the text room, or the text wrapped beside the shortest track; `value` is the
+/// value it shows (for the width of its number box).
+pub(super) fn fitted_slider(
+    ui: &mut egui::Ui,
+    text: &str,
+    value: f64,
+    slider: egui::Slider<'_>,
+) -> egui::Response {
+    ui.horizontal(|ui| {
+        if make_room_for_the_label(ui, text, value) {
+            ui.add(slider.text(text))
+        } else {
+            let slid = ui.add(slider);
+            let words = ui.add(egui::Label::new(text).wrap());
+            slid.labelled_by(words.id)
+        }
+    })
+    .inner
+}
+
 /// How far a drag with Shift held moves the value, against a plain drag.
 const FINE: f64 = 0.1;
 
@@ -213,12 +271,12 @@ fn unit_of(setting: &Setting, scenario: &Scenario) -> &'static str {
     setting.unit.symbol_for(scenario.geometry.actuator().kind())
 }
 
-/// A setting's slider over `range` showing `value`; `frozen`, it keeps the value (a fine
-/// drag moves it instead, from the pointer's motion).
+/// A setting's slider over `range` showing `value`, with `text` beside it (none: its label
+/// is laid out apart); `frozen`, it keeps the value (a fine drag moves it instead, from the
+/// pointer's motion).
 fn slider<'a>(
-    lang: Lang,
     setting: &Setting,
-    kind: ActuatorKind,
+    text: Option<String>,
     range: std::ops::RangeInclusive<f64>,
     value: &'a mut f64,
     frozen: bool,
@@ -232,9 +290,9 @@ fn slider<'a>(
         }
         *value
     })
-        .text(setting_label_with_unit(lang, setting, kind))
-        .clamping(egui::SliderClamping::Never)
-        .logarithmic(logarithmic);
+    .text(text.unwrap_or_default())
+    .clamping(egui::SliderClamping::Never)
+    .logarithmic(logarithmic);
     if setting.unit == Unit::Count {
         s.integer()
     } else if *setting.range.start() > 0.0 && *setting.range.start() < 1e-3 {

@@ -328,9 +328,10 @@ impl LiveLink {
 
     /// The commanded pose from the values sent last (forward kinematics from the last
     /// commanded pose, or home); none while disarmed (nothing is driven). Where forward
-    /// kinematics finds none (a singular layout): the pose a live cue asked for, else the
-    /// last good one, said by [`LiveLink::commanded_from`], never the pose the viewer plays
-    /// behind the stream.
+    /// kinematics finds none (a singular layout): following the viewer, none (the pose it
+    /// plays is the one asked for); following a live cue, the pose the cue asked for, else
+    /// the last good one, said by [`LiveLink::commanded_from`], never the pose the viewer
+    /// plays behind the stream.
     fn take_commanded(&mut self) {
         let Some(r) = &self.running else {
             self.commanded = None;
@@ -350,6 +351,8 @@ impl LiveLink {
         let values = status.values;
         let found = match geometry.pose_from_actuator_values(&values, &near) {
             Ok(pose) => Some((pose, CommandedFrom::Values)),
+            // Following the viewer: the pose it plays is the one asked for (shown as such).
+            Err(_) if r.asked.is_none() => None,
             Err(_) => {
                 let asked = (r.asked.as_ref())
                     .and_then(|cell| *cell.lock().unwrap_or_else(PoisonError::into_inner));

@@ -52,6 +52,8 @@ pub struct Look {
     pub(crate) frame_times: bool,
     /// The plot shows the actuator forces (or torques) instead of lengths (or angles).
     pub(crate) plot_efforts: bool,
+    /// The controls' panel's width as last drawn, logical pixels (its edge drags).
+    pub(crate) side_width: f32,
     /// The plot panel's height as last drawn, logical pixels (its top edge drags).
     pub(crate) plot_height: f32,
     /// Where the plot drew its frame, limits, legend and toggle last (`None` while hidden
@@ -90,6 +92,7 @@ impl Look {
             readouts: false,
             frame_times: false,
             plot_efforts: false,
+            side_width: 0.0,
             plot_height: 0.0,
             plot_placement: None,
             view_px: [1280, 720],

@@ -15,6 +15,7 @@ mod plot_fit;
 mod reach;
 mod rotary;
 mod shots;
+mod sidebar;
 mod sliders;
 mod snapshots;
 mod teleop;
