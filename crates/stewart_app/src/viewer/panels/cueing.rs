@@ -28,6 +28,12 @@ const PLOT_HEIGHT: f32 = 200.0;
 pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) -> bool {
     let t = ed.lang;
     let mut open = false;
+    // Whether the recording played is new since the last frame (the panel open or not).
+    let seen = ui.make_persistent_id("cueing recording seen");
+    let name = ed.doc.cued_vehicle().map(|v| v.name.clone());
+    let just_opened =
+        name.is_some() && ui.data(|d| d.get_temp::<Option<String>>(seen)) != Some(name.clone());
+    ui.data_mut(|d| d.insert_temp(seen, name));
     egui::CollapsingHeader::new(t.tr("cueing.heading"))
         .default_open(ed.expand)
         .show(ui, |ui| {
@@ -56,10 +62,15 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
                     let file = std::path::Path::new(&v.name)
                         .file_name()
                         .map_or_else(|| v.name.clone(), |f| f.to_string_lossy().into_owned());
-                    ui.label(t.fmt(
+                    let playing = ui.label(t.fmt(
                         "cueing.playing",
                         &[("name", &file), ("count", &v.samples.len())],
                     ));
+                    // A recording just opened: its plots in sight (the motion it becomes
+                    // lays out a keyframe table above, pushing them down by screens).
+                    if just_opened {
+                        playing.scroll_to_me(Some(egui::Align::Min));
+                    }
                     plots(ui, &Channels::of(v), t, Some(now));
                     for c in &v.compared {
                         measures(ui, &c.measures, t);
@@ -143,18 +154,21 @@ fn shown_for(key: &str, algorithm: CueingAlgorithm) -> bool {
 
 /// One line on how an algorithm did on the recording.
 fn measures(ui: &mut egui::Ui, m: &CueMeasures, t: Lang) {
-    ui.label(
-        RichText::new(t.fmt(
-            "cueing.measures",
-            &[
-                ("algorithm", &t.tr(algorithm_words(m.algorithm))),
-                ("rmse", &format!("{:.3}", m.force_rmse_xy)),
-                ("stroke", &format!("{:.0}", 100.0 * m.stroke_used)),
-                ("limiter", &format!("{:.2}", m.limiter_s)),
-            ],
-        ))
-        .small(),
+    // The planner has no limiter to engage.
+    let key = match m.algorithm {
+        CueingAlgorithm::Washout => "cueing.measures",
+        CueingAlgorithm::Mpc => "cueing.measures_mpc",
+    };
+    let line = t.fmt(
+        key,
+        &[
+            ("algorithm", &t.tr(algorithm_words(m.algorithm))),
+            ("rmse", &format!("{:.3}", m.force_rmse_xy)),
+            ("stroke", &format!("{:.0}", 100.0 * m.stroke_used)),
+            ("limiter", &format!("{:.2}", m.limiter_s)),
+        ],
     );
+    ui.label(RichText::new(line).small());
 }
 
 /// What the plots draw, per sample: time, the wanted (or vehicle's) and the felt specific

@@ -87,7 +87,9 @@ impl Picker {
                 "files.open_title",
             ),
             Purpose::SaveScenario => (
-                egui_file::FileDialog::save_file().default_filename(name),
+                egui_file::FileDialog::save_file()
+                    .default_filename(name)
+                    .show_files_filter(Box::new(|p: &Path| OpenKind::of(p) == OpenKind::Scenario)),
                 "files.save_title",
             ),
             Purpose::ExportTo => (
@@ -115,6 +117,8 @@ impl Picker {
             .show_new_folder(true)
             .show_rename(false)
             .anchor(egui::Align2::CENTER_CENTER, [0.0, 0.0])
+            // Wide enough for the longest title, in either language, at presentation size.
+            .default_size([720.0, 480.0])
             .id(egui::Id::unique("stewart_file_dialog"));
         dialog.open();
         Self { purpose, dialog }

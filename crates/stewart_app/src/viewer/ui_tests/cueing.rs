@@ -235,6 +235,12 @@ fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_th
     ] {
         assert!(h.query_by_label_contains(words).is_some(), "{words}");
     }
+    // The planner has no limiter: its line does not speak of one.
+    let planner = h
+        .get_by_label_contains("Model-predictive (MPC): felt-force error")
+        .value()
+        .unwrap_or_default();
+    assert!(!planner.contains("limiter"), "{planner}");
     super::look(&mut h, "cueing-mpc.png");
     // One edit: undone, the washout again.
     h.state_mut().undo_edit();
@@ -243,4 +249,50 @@ fn the_planner_is_chosen_in_the_panel_cues_the_recording_and_is_compared_with_th
         h.state().scenario().cueing.algorithm,
         stewart_kinematics::model::cueing_settings::CueingAlgorithm::Washout
     );
+}
+
+/// Opening a recording brings its plots into sight (the keyframe table it lays out above
+/// pushed them two screens down), and the legend wraps between entries, never between a
+/// swatch and its words, in either language.
+#[test]
+fn an_opened_recording_shows_its_plots_and_legend_entries_stay_whole() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.path().join("braking.csv");
+    std::fs::write(&path, braking().0).unwrap_or_else(|e| panic!("{e}"));
+    for lang in [crate::i18n::Lang::En, crate::i18n::Lang::Zh] {
+        let mut state = crate::viewer::ViewerState::new(
+            stewart_kinematics::Scenario::preset("seed").unwrap_or_else(|e| panic!("{e}")),
+        );
+        state.look.expand_panels = true;
+        state.look.lang = lang;
+        let mut h = super::harness_with(state, 800.0);
+        drop_file(&mut h, &path);
+        for _ in 0..4 {
+            h.run();
+        }
+        let playing = lang.fmt(
+            "cueing.playing",
+            &[("name", &"braking.csv"), ("count", &251)],
+        );
+        let shown = h.query_by_label(&playing).map(|n| n.rect());
+        let shown = shown.unwrap_or_else(|| panic!("{lang:?}: the plots are out of sight"));
+        assert!(
+            (0.0..800.0).contains(&shown.top()),
+            "{lang:?}: {shown:?} out of the window"
+        );
+        // Each legend word right of its swatch: none starts a row on its own.
+        let words: Vec<&str> = ["cueing.vehicle_x", "cueing.platform_x", "cueing.vehicle_y"]
+            .into_iter()
+            .chain(["cueing.platform_y"])
+            .map(|k| lang.tr(k))
+            .collect();
+        let first = h.get_by_label(words[0]).rect().left();
+        for w in &words {
+            let left = h.get_by_label(w).rect().left();
+            assert!(
+                left >= first - 0.5,
+                "{lang:?}: `{w}` starts a row at {left} (first {first})"
+            );
+        }
+    }
 }

@@ -271,9 +271,18 @@ fn ctrl_o_shows_the_file_dialog_and_its_choice_opens() {
     h.state_mut().files.current = Some(dir.path().join("start.toml"));
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::O);
     h.run();
+    // The title whole, inside the dialog.
+    let title = h
+        .get_by_label_contains("Open a scenario, a pose table or a vehicle motion recording")
+        .rect();
+    let dialog = h
+        .get_all_by_role(Role::Window)
+        .map(|n| n.rect())
+        .find(|r| r.contains_rect(title.shrink(1.0)) || r.intersects(title))
+        .unwrap_or_else(|| panic!("no dialog window"));
     assert!(
-        h.query_by_label_contains("Open a scenario, a pose table or a vehicle motion recording")
-            .is_some()
+        dialog.right() >= title.right(),
+        "title {title:?} cut by {dialog:?}"
     );
     h.get_by_label_contains("mine.toml").click();
     h.run();
