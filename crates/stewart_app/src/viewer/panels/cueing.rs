@@ -227,9 +227,8 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
         }
     };
     let dashed = LineStyle::dashed_loose();
-    side_plot::plot("cueing force", PLOT_HEIGHT)
+    side_plot::plot("cueing force", PLOT_HEIGHT, t.tr("plot.time"))
         .y_axis_label(t.tr("cueing.force_axis"))
-        .x_axis_label(t.tr("plot.time"))
         .show(ui, |plot| {
             for (axis, colour) in [(0, leg_colour(0)), (1, leg_colour(1))] {
                 let words = ["cueing.vehicle_x", "cueing.vehicle_y"][axis];
@@ -284,9 +283,8 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
         "cueing.dashed_solid"
     };
     ui.label(RichText::new(t.tr(note)).small());
-    side_plot::plot("cueing tilt", PLOT_HEIGHT)
+    side_plot::plot("cueing tilt", PLOT_HEIGHT, t.tr("plot.time"))
         .y_axis_label(t.tr("cueing.tilt_axis"))
-        .x_axis_label(t.tr("plot.time"))
         .show(ui, |plot| {
             for (axis, words) in [(0, "cueing.tilt_roll"), (1, "cueing.tilt_pitch")] {
                 plot.line(

@@ -276,8 +276,7 @@ fn tracking_plot(ui: &mut egui::Ui, link: &LiveLink, q: Quantity, t: Lang) {
     let rows = link.tracking();
     ui.label(t.fmt("link.tracking", &[("unit", &unit)]));
     // Zero always in sight: an error is read against it, not against its own wobble.
-    super::side_plot::plot("link-tracking", 160.0)
-        .x_axis_label(t.tr("plot.time"))
+    super::side_plot::plot("link-tracking", 160.0, t.tr("plot.time"))
         .y_axis_label(unit)
         .include_y(0.0)
         .show(ui, |plot| {

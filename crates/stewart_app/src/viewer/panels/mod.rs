@@ -17,7 +17,7 @@ mod motion;
 mod playback;
 pub(crate) mod plot;
 mod plot_legend;
-mod plot_ticks;
+pub(crate) mod plot_ticks;
 mod reach;
 mod scenario;
 pub(crate) mod side_panel;

@@ -92,6 +92,8 @@ pub(crate) struct PlotPlacement {
     pub(crate) space: egui::Rect,
     /// The plot's data area (inside its axes).
     pub(crate) frame: egui::Rect,
+    /// The times at its left and right edges, seconds.
+    pub(crate) times: [f64; 2],
     /// Each limit line drawn: its screen height and its label's rectangle.
     pub(crate) limits: Vec<(f32, egui::Rect)>,
     /// Each legend row.
@@ -194,7 +196,8 @@ fn plot(
     .show_background(background)
     .y_grid_spacer(super::plot_ticks::marks)
     .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
-    .x_axis_label(x_label)
+    .x_grid_spacer(super::plot_ticks::time_marks)
+    .custom_x_axes(vec![super::plot_ticks::time_axis(x_label)])
     .y_axis_label(y_label);
     if rolling {
         plot = plot.include_x(-History::WINDOW).include_x(0.0);
@@ -253,9 +256,11 @@ fn plot(
         .collect();
     let toggle =
         (doc.plot_efforts().is_some() && !rolling).then(|| efforts_toggle(ui, frame, look));
+    let bounds = shown.transform.bounds();
     PlotPlacement {
         space: egui::Rect::NOTHING,
         frame,
+        times: [bounds.min()[0], bounds.max()[0]],
         limits,
         legend: Vec::new(),
         toggle,

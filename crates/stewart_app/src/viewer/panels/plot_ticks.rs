@@ -15,11 +15,43 @@ pub(crate) fn major_step(lo: f64, hi: f64) -> Option<f64> {
     stewart_render::ticks::largest_step_with(lo, hi, MIN_LABELLED)
 }
 
+/// At least this many labelled ticks on a time axis (egui_plot's own spacer gave a narrow
+/// plot's 10 s only "0" and "10").
+pub(crate) const MIN_TIME_LABELS: usize = 5;
+
+/// Time labels are drawn once this far apart, faded in over the range, points (egui_plot's
+/// 60 to 80 suits long numbers; times are short).
+pub(crate) const TIME_LABEL_SPACING: std::ops::RangeInclusive<f32> = 24.0..=32.0;
+
 /// The marks for egui_plot: the labelled ticks, and unlabelled grid lines between them
 /// (a fifth of the step, or a half when the step is 2 × 10ᵏ).
 pub(crate) fn marks(input: GridInput) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
-    let Some(major) = major_step(lo, hi) else {
+    marks_with(input, major_step(lo, hi))
+}
+
+/// The marks of a time axis: as [`marks`], with at least [`MIN_TIME_LABELS`] labelled.
+pub(crate) fn time_marks(input: GridInput) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    marks_with(
+        input,
+        stewart_render::ticks::largest_step_with(lo, hi, MIN_TIME_LABELS),
+    )
+}
+
+/// A time axis below a plot, named `name`: its labels as [`label`] writes them, drawn at
+/// [`TIME_LABEL_SPACING`] (with [`time_marks`] as the plot's x spacer).
+pub(crate) fn time_axis<'a>(name: impl Into<egui::WidgetText>) -> egui_plot::AxisHints<'a> {
+    egui_plot::AxisHints::new_x()
+        .label(name)
+        .formatter(|mark, _| label(mark))
+        .label_spacing(TIME_LABEL_SPACING)
+}
+
+/// The marks labelled every `major` (none without one).
+fn marks_with(input: GridInput, major: Option<f64>) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    let Some(major) = major else {
         return Vec::new();
     };
     let leading = major / 10f64.powf(major.log10().floor());
@@ -109,6 +141,32 @@ mod tests {
             let mut unique = labels.clone();
             unique.dedup();
             assert_eq!(unique.len(), labels.len(), "{labels:?}");
+        }
+    }
+
+    #[test]
+    fn a_time_axis_gets_five_labels_or_more() {
+        for (lo, hi) in [
+            (0.0, 10.0),
+            (-10.0, 0.0),
+            (0.0, 5.0),
+            (0.0, 12.0),
+            (0.0, 60.0),
+        ] {
+            let input = GridInput {
+                bounds: (lo, hi),
+                base_step_size: (hi - lo) / 100.0,
+            };
+            let all = time_marks(input);
+            let major = all.iter().map(|m| m.step_size).fold(0.0, f64::max);
+            let labelled: Vec<String> = (all.into_iter())
+                .filter(|m| m.step_size == major)
+                .map(label)
+                .collect();
+            assert!(
+                labelled.len() >= MIN_TIME_LABELS,
+                "{lo}..{hi}: {labelled:?}"
+            );
         }
     }
 

@@ -5,15 +5,15 @@
 use egui::Color32;
 use egui_plot::Plot;
 
-/// A side-panel plot `height` points high with the live plot's value-axis ticks, the wheel
-/// left to the panel and drags to the panel's scrolling.
-pub(crate) fn plot(id: &str, height: f32) -> Plot<'static> {
+/// A side-panel plot over time (its axis named `time`) `height` points high with the live
+/// plot's ticks, the wheel left to the panel and drags to the panel's scrolling.
+pub(crate) fn plot(id: &str, height: f32, time: &str) -> Plot<'static> {
     Plot::new(id)
         .height(height)
         .allow_scroll(false)
         .allow_drag(false)
-        .x_grid_spacer(super::plot_ticks::marks)
-        .x_axis_formatter(|mark, _| super::plot_ticks::label(mark))
+        .x_grid_spacer(super::plot_ticks::time_marks)
+        .custom_x_axes(vec![super::plot_ticks::time_axis(time.to_owned())])
         .y_grid_spacer(super::plot_ticks::marks)
         .y_axis_formatter(|mark, _| super::plot_ticks::label(mark))
 }

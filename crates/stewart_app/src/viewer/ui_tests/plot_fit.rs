@@ -2,6 +2,7 @@
 //! large again) and out of it: both limit lines and their labels inside the plot's frame,
 //! every legend row and the values/forces toggle inside the panel.
 
+use crate::viewer::panels::plot_ticks::{MIN_TIME_LABELS, TIME_LABEL_SPACING};
 use crate::viewer::state::ViewerState;
 use stewart_kinematics::Scenario;
 
@@ -64,6 +65,17 @@ fn the_plot_shows_its_limits_and_whole_legend_at_projector_sizes() {
                     );
                 }
                 assert_eq!(placed.toggle.is_some(), preset == "paired", "{case}");
+                // Five time labels at least, as far apart as egui_plot needs to draw them.
+                let [lo, hi] = placed.times;
+                let step = stewart_render::ticks::largest_step_with(lo, hi, MIN_TIME_LABELS)
+                    .unwrap_or_else(|| panic!("{case}: no step for {lo}..{hi}"));
+                let apart = f64::from(frame.width()) * step / (hi - lo);
+                assert!(
+                    apart > f64::from(*TIME_LABEL_SPACING.start()),
+                    "{case}: time labels {apart} points apart"
+                );
+                let labels = ((hi / step).floor() - (lo / step).ceil()) as usize + 1;
+                assert!(labels >= MIN_TIME_LABELS, "{case}: {labels} time labels");
             }
         }
     }
