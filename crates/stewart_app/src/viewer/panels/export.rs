@@ -162,6 +162,19 @@ fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
     action
 }
 
+/// A scenario's name as the start of a file name: runs of spaces and of characters a
+/// shell or another system would stumble on (`/ \ : * ? " < > | ( ) [ ]`) become one `-`,
+/// none at either end ("My rig (v2)" → "My-rig-v2"; an empty name → "scenario").
+pub(crate) fn file_stem(name: &str) -> String {
+    let awkward = |c: char| c.is_whitespace() || "/\\:*?\"<>|()[]".contains(c);
+    let parts: Vec<&str> = name.split(awkward).filter(|p| !p.is_empty()).collect();
+    if parts.is_empty() {
+        "scenario".to_owned()
+    } else {
+        parts.join("-")
+    }
+}
+
 /// The form; returns [`ExportAction::Browse`] when *Browse…* was pressed.
 fn form(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
     let (t, name, duration) = (parts.lang, parts.name, parts.duration);
@@ -177,7 +190,12 @@ fn form(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
             }
         });
     if form.kind != before || form.path.is_empty() {
-        form.path = format!("{name}{}{}", form.kind.suffix(), form.kind.extension());
+        form.path = format!(
+            "{}{}{}",
+            file_stem(name),
+            form.kind.suffix(),
+            form.kind.extension()
+        );
     }
     let mut browse = false;
     ui.horizontal(|ui| {
@@ -325,4 +343,18 @@ fn span(
             *to = to.max(*from);
         }
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::file_stem;
+
+    #[test]
+    fn a_name_becomes_a_file_name_without_spaces_or_awkward_characters() {
+        assert_eq!(file_stem("My rig (v2)"), "My-rig-v2");
+        assert_eq!(file_stem("seed"), "seed");
+        assert_eq!(file_stem("  a/b:c  "), "a-b-c");
+        assert_eq!(file_stem("六自由度 平台"), "六自由度-平台");
+        assert_eq!(file_stem(" () "), "scenario");
+    }
 }

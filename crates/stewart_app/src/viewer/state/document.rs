@@ -323,9 +323,9 @@ impl Document {
         old
     }
 
-    /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
-    /// as edited (in `lang`) when the scenario differs from the preset or file it came from.
-    pub(crate) fn title(&self, lang: Lang) -> String {
+    /// The scenario's name marked as edited (in `lang`) when the scenario differs from the
+    /// preset or file it came from (the window's title).
+    pub(crate) fn marked_name(&self, lang: Lang) -> String {
         if self.scenario == self.as_loaded {
             self.scenario.name.clone()
         } else {

@@ -35,7 +35,7 @@ impl ViewerState {
         self.exports.status = None;
         self.exports.written = None;
         self.exports.writing = Some(path);
-        // Titled as shown: "seed (edited)" once the preset was changed.
+        // Titled for the audience: the name, without the window's edit mark.
         let mut scenario = self.scenario().clone();
         scenario.name = self.title();
         self.exports.job = Some(ExportJob::start(&scenario, work, t));

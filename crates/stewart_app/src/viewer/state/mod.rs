@@ -162,10 +162,18 @@ impl ViewerState {
         }
     }
 
-    /// The scenario's name for titles (exported plots, readouts, shots): the name, marked
-    /// as edited when the scenario differs from the preset or file it came from.
+    /// The scenario's name for what the audience sees (exported plots and videos, the
+    /// glTF animation, readouts, shots): the name alone, never an edit mark.
     pub(crate) fn title(&self) -> String {
-        self.doc.title(self.look.lang)
+        self.scenario().name.clone()
+    }
+
+    /// The window's title: the program and the scenario's name, marked as edited (in the
+    /// interface's language) when the scenario differs from the preset or file it came
+    /// from; the one place the mark is shown.
+    pub(crate) fn window_title(&self) -> String {
+        let name = self.doc.marked_name(self.look.lang);
+        self.look.lang.fmt("window.title", &[("name", &name)])
     }
 
     /// Show the interface in `lang`. The status lines of files, exports and screenshots were

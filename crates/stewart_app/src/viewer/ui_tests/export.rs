@@ -283,28 +283,53 @@ fn an_export_names_its_full_path_offers_its_folder_and_asks_before_replacing() {
     assert!(text.starts_with("t,x,y,z"), "{text}");
 }
 
-/// An exported plot's title says the scenario was edited (before: "seed" after any edit).
+/// What the audience sees carries the scenario's name alone: an exported plot after an
+/// edit, the readout; the edit mark is the window title's (it once reached export titles,
+/// the glTF animation's name and the presentation readout). Default export names have no
+/// spaces.
 #[test]
-fn a_plot_exported_after_an_edit_is_titled_as_edited() {
+fn an_edit_marks_the_window_title_only() {
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut h = tall_harness("paired", HEIGHT);
-    let plain = dir.path().join("plain.svg");
-    export_to(&mut h, ExportKind::PlotSvg, &plain);
-    assert!(finish(&mut h).is_ok());
-    let text = std::fs::read_to_string(&plain).unwrap_or_default();
-    assert!(text.contains("paired") && !text.contains("(edited)"));
     h.get_by_role_and_label(Role::Slider, "samples")
         .set_value_accesskit(60.0);
     h.run();
+    assert!(h.state().window_title().contains("paired (edited)"));
     let edited = dir.path().join("edited.svg");
-    export_again(&mut h, ExportKind::PlotSvg, &edited);
+    export_to(&mut h, ExportKind::PlotSvg, &edited);
     assert!(finish(&mut h).is_ok());
     let text = std::fs::read_to_string(&edited).unwrap_or_default();
-    assert!(text.contains("paired (edited)"), "no edited title");
-    // Undone back to the preset, the title is plain again.
+    assert!(
+        text.contains("paired") && !text.contains("edited"),
+        "an edit mark exported"
+    );
+    h.state_mut().look.readouts = true;
+    let list = h.state().draw_list(&h.state().theme());
+    let readout = list
+        .texts
+        .last()
+        .map(|t| t.text.clone())
+        .unwrap_or_default();
+    assert!(
+        readout.contains("paired") && !readout.contains("edited"),
+        "{readout}"
+    );
+    // Undone back to the preset, the window's title is plain again.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
     h.run();
-    assert_eq!(h.state().title(), "paired");
+    assert!(!h.state().window_title().contains("edited"));
+    // A name with spaces gives a default export name without them.
+    let mut scenario =
+        stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+    scenario.name = "My rig (v2)".to_owned();
+    let mut h = super::harness_with(ViewerState::new(scenario), HEIGHT);
+    h.get_by_label("Export…").click();
+    h.run();
+    let path = h.state().exports.form.path.clone();
+    assert!(
+        path.starts_with("My-rig-v2") && !path.contains(' '),
+        "{path}"
+    );
 }
 
 /// A part of the motion, a title, a 4:3 or typed size: as `stewart render` has them.

@@ -212,12 +212,7 @@ fn clamp_surface(w: NonZeroU32, h: NonZeroU32) -> (NonZeroU32, NonZeroU32) {
 impl App {
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
         let attributes = Window::default_attributes()
-            .with_title(
-                self.state
-                    .look
-                    .lang
-                    .fmt("window.title", &[("name", &self.state.scenario().name)]),
-            )
+            .with_title(self.state.window_title())
             .with_inner_size({
                 // A HiDPI scale makes the window larger in pixels than asked in points:
                 // keep it within what the GPU can draw into.
@@ -339,6 +334,11 @@ impl App {
             state.settle_workspace();
         }
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        // The title follows the scenario (its name, the edit mark, the language).
+        let title = state.window_title();
+        if open.window.title() != title {
+            open.window.set_title(&title);
+        }
         if state.quit_asked {
             // Ctrl+Q: as the close button (the link stops first, the session is kept).
             self.state.link.disconnect_now();
@@ -552,6 +552,11 @@ impl App {
         let state = &mut self.state;
         state.quality.ask_full();
         let mut output = self.ctx.run_ui(raw, |ui| viewer_ui(ui, state));
+        // The title follows the scenario (its name, the edit mark, the language).
+        let title = state.window_title();
+        if open.window.title() != title {
+            open.window.set_title(&title);
+        }
         let ppp = output.pixels_per_point;
         let primitives = self.ctx.tessellate(std::mem::take(&mut output.shapes), ppp);
         let size = [
