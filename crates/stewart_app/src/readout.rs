@@ -72,7 +72,7 @@ pub(crate) fn lines(
                 ("n", &e.servo),
                 (
                     "pct",
-                    &stewart_kinematics::model::rotary::compact(100.0 * e.excess),
+                    &stewart_kinematics::model::rotary::percent(100.0 * e.excess),
                 ),
             ],
         )),

@@ -65,13 +65,13 @@ pub enum RotaryError {
     },
 }
 
-/// `x` with four decimals when it is of a reasonable size, else in scientific notation (a
-/// joint far out of reach gives ratios like 1e300, which are not printed digit by digit).
-pub fn compact(x: f64) -> String {
+/// A percentage in words: one decimal (a reason shown live, `250.8`, does not flicker
+/// through four changing decimals), and in scientific form from 10 000 on (`1.0e302`).
+pub fn percent(x: f64) -> String {
     if x.is_finite() && x.abs() < 1e4 {
-        format!("{x:.4}")
+        format!("{x:.1}")
     } else {
-        format!("{x:.3e}")
+        format!("{x:.1e}")
     }
 }
 
@@ -79,7 +79,7 @@ pub fn compact(x: f64) -> String {
 #[derive(Debug, Clone, Copy, PartialEq, Error)]
 #[error(
     "servo {servo} cannot reach its platform joint: no horn angle closes its rod ({} % beyond its reach)",
-    compact(100.0 * *.excess)
+    percent(100.0 * *.excess)
 )]
 pub struct Unreachable {
     /// Servo number, from 1.
@@ -262,7 +262,7 @@ mod tests {
             excess: 1e300,
         };
         let text = e.to_string();
-        assert!(text.contains("(1.000e302 % beyond its reach)"), "{text}");
+        assert!(text.contains("(1.0e302 % beyond its reach)"), "{text}");
         assert!(!text.contains('√'), "no formula in the words: {text}");
         let near = Unreachable {
             servo: 1,
@@ -270,12 +270,12 @@ mod tests {
             excess: 0.125,
         };
         assert!(
-            near.to_string().contains("(12.5000 % beyond its reach)"),
+            near.to_string().contains("(12.5 % beyond its reach)"),
             "{near}"
         );
         assert!(text.len() < 140, "{text}");
-        assert_eq!(compact(1.234_56), "1.2346");
-        assert_eq!(compact(f64::INFINITY), "inf");
+        assert_eq!(percent(250.831_7), "250.8");
+        assert_eq!(percent(f64::INFINITY), "inf");
     }
 
     fn hobby() -> RotaryActuators {

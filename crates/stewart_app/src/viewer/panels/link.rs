@@ -536,7 +536,11 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
         .add(
             egui::TextEdit::singleline(&mut text)
                 .font(egui::TextStyle::Monospace)
-                .desired_width(f32::INFINITY),
+                // The width in sight: a long template scrolls inside its field.
+                .desired_width(
+                    ui.available_width()
+                        .min(ui.clip_rect().right() - ui.cursor().min.x),
+                ),
         )
         .on_hover_text(t.tr("link.template_tip"))
         .changed();
@@ -558,12 +562,10 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
         (Ok(template), Ok(values)) => {
             let mut bytes = Vec::new();
             template.encode(&values, &[actuator_range(scenario); 6], &mut bytes);
-            let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
-            let preview = t.fmt(
-                "link.template_preview",
-                &[("bytes", &hex.join(" ")), ("count", &bytes.len())],
-            );
-            ui.label(RichText::new(preview).monospace());
+            ui.label(t.fmt("link.template_preview", &[("count", &bytes.len())]));
+            // Hex and text side by side, eight bytes a row: it fits the panel.
+            let dump = super::byte_dump::rows(&bytes).join("\n");
+            ui.label(RichText::new(dump).monospace());
         }
         // A home pose out of reach is said by the panels that show the pose.
         (Ok(_), Err(_)) => {}

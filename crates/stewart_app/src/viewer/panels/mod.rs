@@ -3,6 +3,7 @@
 //! ask (this is the one file that names the whole `ViewerState`).
 
 mod appearance;
+mod byte_dump;
 mod cueing;
 mod design;
 mod diagnostics;

@@ -167,7 +167,7 @@ impl OutOfReach {
                     ("n", &servo),
                     (
                         "pct",
-                        &stewart_kinematics::model::rotary::compact(100.0 * (ratio - 1.0)),
+                        &stewart_kinematics::model::rotary::percent(100.0 * (ratio - 1.0)),
                     ),
                 ],
             ),

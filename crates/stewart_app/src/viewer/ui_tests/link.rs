@@ -290,13 +290,40 @@ fn an_output_template_is_chosen_edited_and_previewed_as_bytes() {
     // and stroke (0.55 to 1.3 m) as the template says.
     let g = &h.state().scenario().geometry;
     let home = g.leg_lengths(&g.home_pose());
-    let mut expected = String::from("At home: FF FF");
+    let mut bytes = vec![0xff, 0xff];
     for leg in home {
         let n = ((leg - 0.55) / (1.3 - 0.55) * 65535.0).round() as u32;
-        expected.push_str(&format!(" {:02X} {:02X}", n >> 8, n & 0xff));
+        bytes.extend([(n >> 8) as u8, (n & 0xff) as u8]);
     }
-    expected.push_str(" 0A 0D (16 bytes)");
-    assert!(h.query_by_label(&expected).is_some(), "no `{expected}`");
+    bytes.extend([0x0a, 0x0d]);
+    assert!(
+        h.query_by_label("At home (16 bytes), in hex and as text:")
+            .is_some()
+    );
+    // Two rows of eight, each in hex and as text.
+    let hex = |row: &[u8]| {
+        row.iter()
+            .map(|b| format!("{b:02X}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let shown = h
+        .get_by_label_contains(&hex(&bytes[..8]))
+        .value()
+        .unwrap_or_default();
+    let rows: Vec<&str> = shown.lines().collect();
+    assert_eq!(rows.len(), 2, "{shown}");
+    assert!(
+        rows[0].starts_with(&hex(&bytes[..8])) && rows[1].starts_with(&hex(&bytes[8..])),
+        "{shown}"
+    );
+    assert!(rows[1].ends_with("··"), "the line end as text: {shown}");
+    // Within the side panel.
+    let right = h.get_by_label_contains(&hex(&bytes[..8])).rect().right();
+    assert!(
+        right <= h.state().look.side_width,
+        "the preview runs to {right}"
+    );
     super::look(&mut h, "link-template.png");
     // Typed into: a fault is said at its column, and the link keeps the text typed.
     let field = || {
