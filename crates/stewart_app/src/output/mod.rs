@@ -41,6 +41,8 @@ pub(crate) struct Destination {
     real: PathBuf,
     /// What stands there now.
     kind: Kind,
+    /// A FIFO opened before the work (see [`Destination::open_early`]), taken by the write.
+    held: std::sync::Arc<std::sync::Mutex<Option<SpecialFile>>>,
 }
 
 /// Follow symbolic links (also dangling ones, whose target will be created).
@@ -124,7 +126,49 @@ impl Destination {
             shown: path.to_path_buf(),
             real,
             kind: meta.as_ref().map_or(Kind::File, kind_of),
+            held: std::sync::Arc::default(),
         })
+    }
+
+    /// A FIFO (a named pipe) is opened now, before the command's work, waiting for its
+    /// reader (said on standard error) until Ctrl-C, as the shell's `>` does: a session
+    /// recorded for minutes is never lost waiting for a reader at the end. Other kinds
+    /// are left to the write.
+    pub(crate) fn open_early(self) -> Result<Self> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            let fifo = std::fs::metadata(&self.real).is_ok_and(|m| m.file_type().is_fifo());
+            if fifo {
+                crate::interrupt::flag();
+                let shown = self.shown.display();
+                let file = SpecialFile::open_saying(&self.real, &format!(
+                    "waiting for a reader of `{shown}` (a named pipe) before starting; Ctrl-C stops"
+                ))
+                .with_context(|| format!("cannot write `{shown}`"))?;
+                *self
+                    .held
+                    .lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(file);
+            }
+        }
+        Ok(self)
+    }
+
+    /// The device or FIFO to write: the one held open, else opened now.
+    fn special_file(&self) -> std::io::Result<SpecialFile> {
+        let held = self
+            .held
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .take();
+        match held {
+            Some(file) => Ok(file),
+            None => {
+                crate::interrupt::flag();
+                SpecialFile::open(&self.real)
+            }
+        }
     }
 
     /// The path as the user gave it.
@@ -188,9 +232,9 @@ impl Destination {
         self.require_file()?;
         let shown = self.shown.display();
         if self.kind == Kind::Special {
-            crate::interrupt::flag();
-            let file =
-                SpecialFile::open(&self.real).with_context(|| format!("cannot write `{shown}`"))?;
+            let file = self
+                .special_file()
+                .with_context(|| format!("cannot write `{shown}`"))?;
             let mut w = BufWriter::new(file);
             return fill(&mut w)
                 .and_then(|()| w.flush())
@@ -223,8 +267,8 @@ impl Destination {
             Kind::Special => {
                 let mut from = std::fs::File::open(&staged)
                     .with_context(|| format!("cannot write `{shown}`"))?;
-                crate::interrupt::flag();
-                let mut to = SpecialFile::open(&self.real)
+                let mut to = self
+                    .special_file()
                     .with_context(|| format!("cannot write `{shown}`"))?;
                 std::io::copy(&mut from, &mut to)
                     .and_then(|_| to.flush())
@@ -322,7 +366,8 @@ pub(crate) fn destination(
     path: Option<&Path>,
     inputs: &[(&str, impl AsRef<Path>)],
 ) -> Result<Option<Destination>> {
-    path.map(|p| Destination::new(p, inputs)).transpose()
+    path.map(|p| Destination::new(p, inputs).and_then(Destination::open_early))
+        .transpose()
 }
 
 #[cfg(test)]

@@ -23,12 +23,21 @@ fn stopped() -> std::io::Error {
 }
 
 /// A device or FIFO opened for writing.
+#[derive(Debug)]
 pub(crate) struct SpecialFile(File);
 
 impl SpecialFile {
     /// Open `path` for writing, waiting for a FIFO's reader until one comes or a stop is
     /// requested.
     pub(crate) fn open(path: &Path) -> std::io::Result<Self> {
+        Self::open_saying(path, "")
+    }
+
+    /// [`SpecialFile::open`], saying `waiting` on standard error (when not empty) once the
+    /// reader has kept it waiting half a second.
+    pub(crate) fn open_saying(path: &Path, waiting: &str) -> std::io::Result<Self> {
+        let started = std::time::Instant::now();
+        let mut said = waiting.is_empty();
         loop {
             match std::fs::OpenOptions::new()
                 .write(true)
@@ -40,6 +49,10 @@ impl SpecialFile {
                 Err(e) if e.raw_os_error() == Some(libc::ENXIO) => {
                     if crate::interrupt::requested() {
                         return Err(stopped());
+                    }
+                    if !said && started.elapsed() >= Duration::from_millis(500) {
+                        said = true;
+                        let _ = writeln!(std::io::stderr(), "{waiting}");
                     }
                     std::thread::sleep(WAIT);
                 }

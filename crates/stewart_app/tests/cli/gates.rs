@@ -82,3 +82,39 @@ fn telemetry_refuses_a_folder_before_it_listens() {
         "{said}"
     );
 }
+
+/// A named pipe as the output is opened before the work, waiting for its reader (said),
+/// so a session recorded for minutes is never lost waiting at the end; with the reader
+/// there, every row arrives.
+#[test]
+fn a_named_pipe_output_is_opened_before_listening() {
+    let dir = tempdir();
+    let fifo = dir.path().join("rows.fifo");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo");
+    let port = crate::link::free_port();
+    let telemetry = crate::watched::Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["telemetry", "--listen", &format!("udp:{port}")])
+            .args(["--duration", "2", "--out"])
+            .arg(&fifo),
+    );
+    // Nothing is listened to until the pipe has a reader.
+    telemetry.wait_for("waiting for a reader of");
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap_or_default())
+    };
+    telemetry.wait_for("telemetry: listening");
+    let socket = std::net::UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
+    for k in 0..20 {
+        let line = format!("{},-3,0.5,0,0,0,10", f64::from(k) * 0.01);
+        socket
+            .send_to(line.as_bytes(), &port)
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+    let o = telemetry.finish();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let rows = reader.join().unwrap_or_default();
+    assert_eq!(rows.lines().count(), 21, "{rows}");
+}
