@@ -409,7 +409,12 @@ impl Platform {
         let s = slf.scenario.clone();
         drop(slf);
         let (report, s) = waiting::interruptible(py, None, move || {
-            let report = check_motion(&s.geometry, &s.limits, &s.motion.sample(), &s.checks);
+            let report = check_motion(
+                &s.geometry,
+                &s.limits,
+                &s.motion.samples_judged(s.link.rate_hz),
+                &s.checks,
+            );
             (report, s)
         })?;
         let doc = CheckDocument::new(&s.name, &s.geometry, &report);

@@ -21,7 +21,7 @@ use crate::source;
 /// Run the command.
 pub(crate) fn run(args: &CheckArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    let samples = scenario.motion.sample();
+    let samples = scenario.motion.samples_judged(scenario.link.rate_hz);
     // A long motion (millions of samples) says what it will cost before it starts.
     let report = long_work::over_samples(
         &format!("check: {} samples", samples.len()),

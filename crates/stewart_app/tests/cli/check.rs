@@ -308,3 +308,32 @@ fn a_singular_pose_is_reported_in_words_not_as_inf() {
     assert!(out.contains("worst singular at t ="), "{out}");
     assert!(!out.contains("inf"), "{out}");
 }
+
+/// A table joined by a cubic spline is judged between its rows too, at every instant the
+/// link plays: rows within the stroke whose spline overshoots it are found (they were
+/// passed while `link` held at the stroke's end); joined by straight lines, they pass.
+#[test]
+fn a_spline_through_a_table_is_judged_where_it_plays_between_the_rows() {
+    let dir = tempdir();
+    let mut csv = String::from("t,x,y,z,roll_deg,pitch_deg,yaw_deg\n");
+    for k in 0..25 {
+        let z = 0.906 + 0.23 * (60f64 + 60.0 * f64::from(k)).to_radians().sin();
+        csv.push_str(&format!("{},0,0,{z:.6},0,0,0\n", 10 * k));
+    }
+    let linear = paired_playing(dir.path(), &csv);
+    let o = stewart(&["check", "--scenario", &linear]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
+    let text = std::fs::read_to_string(&linear).unwrap_or_default();
+    let cubic = write(
+        dir.path(),
+        "cubic.toml",
+        &(text + "interpolation = \"cubic\"\n"),
+    );
+    let o = stewart(&["check", "--scenario", &cubic, "--format", "json"]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    let findings = json(&o)["findings"].as_array().cloned().unwrap_or_default();
+    assert!(
+        findings.iter().any(|f| f["kind"] == "stroke_max"),
+        "{findings:?}"
+    );
+}

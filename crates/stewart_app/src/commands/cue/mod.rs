@@ -11,8 +11,12 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 use anyhow::{Result, anyhow};
+use stewart_kinematics::analysis::checks::{FindingKind, check_motion};
 use stewart_kinematics::analysis::cueing::compare::compare;
 use stewart_kinematics::analysis::cueing::{CueError, VehicleMotion, cue_recording};
+use stewart_kinematics::model::actuator::ActuatorKind;
+use stewart_kinematics::model::trajectory::Samples;
+use stewart_kinematics::{Pose, Scenario};
 
 use crate::cli::{CueArgs, Format};
 use crate::csv_io::{CsvText, read_input_bytes};
@@ -47,7 +51,9 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         CueError::PoseOutside { index, .. } => {
             anyhow!("{file}, {}: {e}", recording.place(index, ""))
         }
-        CueError::TooShort { .. } => anyhow!("{file}: {e}"),
+        CueError::TooShort { .. } | CueError::OneSample { .. } | CueError::TimesTooFine { .. } => {
+            anyhow!("{file}: {e}")
+        }
         other => anyhow!("{}: {other}", source::describe(&args.scenario)),
     };
     if args.compare {
@@ -108,11 +114,38 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
             }
         ));
     }
+    said.push_str(&jerk_note(&scenario, samples, &cued.poses));
     if let Recording::Capture(c) = &recording {
         said.push_str(&format!("cue: read from {file}: {}\n", c.contents()));
     }
     let _ = std::io::stderr().write_all(said.as_bytes());
     Ok(ExitCode::SUCCESS)
+}
+
+/// Cueing keeps no jerk limit (see [`cue_recording`]): with one set, the samples where the
+/// cue breaks it as `check` judges them, said (empty when none does or none is set).
+fn jerk_note(scenario: &Scenario, samples: &[(f64, VehicleMotion)], poses: &[Pose]) -> String {
+    let limits = &scenario.limits;
+    let key = match scenario.geometry.actuator().kind() {
+        ActuatorKind::Linear if limits.leg_jerk_max.is_some() => "limits.leg_jerk_max_m_s3",
+        ActuatorKind::Rotary if limits.servo_jerk_max.is_some() => "limits.servo_jerk_max_deg_s3",
+        _ => return String::new(),
+    };
+    let cued = Samples {
+        times: samples.iter().map(|(t, _)| *t).collect(),
+        poses: poses.to_vec(),
+    };
+    let report = check_motion(&scenario.geometry, limits, &cued, &scenario.checks);
+    let over: usize = (report.findings.iter())
+        .filter(|f| matches!(f.kind, FindingKind::LegJerk | FindingKind::ServoJerk))
+        .map(|f| f.count)
+        .sum();
+    if over == 0 {
+        return String::new();
+    }
+    format!(
+        "cue: cueing does not limit jerk: at {over} samples an actuator's jerk is above `{key}` (`check` of the output lists them)\n"
+    )
 }
 
 /// The vehicle motion read: a CSV table or a packet capture.

@@ -156,7 +156,7 @@ impl ReportWorker {
     fn request(&mut self, scenario: Scenario) {
         self.current = None;
         self.job.start(move |worker| {
-            let samples = scenario.motion.sample();
+            let samples = scenario.motion.samples_judged(scenario.link.rate_hz);
             worker.send(check_motion(
                 &scenario.geometry,
                 &scenario.limits,

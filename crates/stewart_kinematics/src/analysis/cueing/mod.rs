@@ -67,6 +67,36 @@ pub enum CueError {
         "the workspace limiter needs the home pose within the stroke and limits, and it is not"
     )]
     HomeOutside,
+    /// The actuator guard keeps the check's condition-number limit, which the home pose
+    /// (where a cue starts and returns) already breaks.
+    #[error(
+        "the model-predictive cue keeps the condition number under `checks.condition_max` = {max}, and the home pose is already at {condition:.2}: raise the limit or change the layout"
+    )]
+    HomeIllConditioned {
+        /// The home pose's condition number (infinite when singular).
+        condition: f64,
+        /// The limit.
+        max: f64,
+    },
+    /// A cue is a pose table, which needs two moments.
+    #[error(
+        "a cue needs at least 2 samples (a pose table holds two moments at least), the input has {samples}"
+    )]
+    OneSample {
+        /// The samples the input has.
+        samples: usize,
+    },
+    /// The samples' times too close for their distance from zero: the table written
+    /// would not read back (see [`crate::model::trajectory::SamplingError::TooFine`]).
+    #[error(
+        "the samples are {step:.3e} s apart on average, too fine to tell apart {at:e} s from zero (at most 1e10 steps per unit of time from zero): the pose table written would not read back; start the times nearer 0"
+    )]
+    TimesTooFine {
+        /// The average step, seconds.
+        step: f64,
+        /// The time farthest from zero, seconds.
+        at: f64,
+    },
     /// What a motion makes felt needs an acceleration: three samples at least.
     #[error("comparing needs at least 3 samples (an acceleration), the input has {samples}")]
     TooShort {
@@ -335,6 +365,35 @@ pub fn cue_recording(
     samples: &[(f64, VehicleMotion)],
 ) -> Result<CuedRecording, CueError> {
     let mut cueing = Cueing::new(geometry, limits, settings)?;
+    // The times as a pose table's rows must be (the table written reads back).
+    if let [(first, _), .., (last, _)] = samples {
+        if let Err(crate::model::trajectory::SamplingError::TooFine { step, at }) =
+            crate::model::trajectory::Sampling::with_start(
+                *first,
+                last - first,
+                samples.len() as u64,
+            )
+        {
+            return Err(CueError::TimesTooFine { step, at });
+        }
+    } else {
+        return Err(CueError::OneSample {
+            samples: samples.len(),
+        });
+    }
+    if settings.algorithm == CueingAlgorithm::Mpc
+        && !crate::analysis::architecture::architecture(geometry).singular
+    {
+        let condition = (geometry.actuated_conditioning(&geometry.home_pose()))
+            .and_then(|c| c.condition_number)
+            .unwrap_or(f64::INFINITY);
+        if condition > checks.condition_max {
+            return Err(CueError::HomeIllConditioned {
+                condition,
+                max: checks.condition_max,
+            });
+        }
+    }
     let mut poses = Vec::with_capacity(samples.len());
     let mut scales = Vec::with_capacity(samples.len());
     let mut cues = Vec::with_capacity(samples.len());
@@ -344,7 +403,7 @@ pub fn cue_recording(
         // Samples as far apart as a pose table's rows must be (its keys): the table
         // written reads back.
         let h = match previous {
-            Some(p) if *t - p >= crate::model::trajectory::keyframes::MIN_KEY_GAP_S => t - p,
+            Some(p) if crate::model::trajectory::keyframes::far_enough_apart(*t - p) => t - p,
             Some(p) => {
                 return Err(CueError::Time {
                     index,

@@ -449,6 +449,58 @@ fn samples_out_of_order_and_unsound_settings_are_refused() {
     ));
 }
 
+/// What a cue writes reads back as a pose table: one sample, or times too fine for their
+/// distance from zero, are refused where they come in; times typed to the microsecond are
+/// taken; and the model-predictive cue refuses a home pose above the condition-number
+/// limit it promises to keep.
+#[test]
+fn a_cue_writes_only_what_reads_back_and_refuses_what_it_cannot_keep() {
+    let g = Geometry::seed();
+    let m = VehicleMotion::default();
+    let checks = crate::analysis::checks::CheckSettings::default();
+    let cue = |samples: &[(f64, VehicleMotion)]| {
+        cue_recording(&g, &Limits::default(), &checks, &plain(), samples)
+    };
+    assert!(matches!(
+        cue(&[(0.0, m)]),
+        Err(CueError::OneSample { samples: 1 })
+    ));
+    let fine: Vec<(f64, VehicleMotion)> = (0..300)
+        .map(|k| (99_999.0 + 1.1e-6 * f64::from(k), m))
+        .collect();
+    assert!(matches!(cue(&fine), Err(CueError::TimesTooFine { .. })));
+    // Written to the microsecond: 0.000000, 0.000001, … (a hair under 1e-6 apart once read).
+    let typed: Vec<(f64, VehicleMotion)> = (0..10)
+        .map(|k| {
+            (
+                format!("{:.6}", f64::from(k) * 1e-6)
+                    .parse()
+                    .unwrap_or(f64::NAN),
+                m,
+            )
+        })
+        .collect();
+    let cued = cue(&typed).unwrap_or_else(|e| panic!("{e}"));
+    let times: Vec<f64> = typed.iter().map(|s| s.0).collect();
+    assert!(cued.to_motion(&times, "typed").is_ok());
+    // A servo desk whose home pose is above a condition-number limit of 3.
+    let desk = crate::Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
+    let tight = crate::analysis::checks::CheckSettings {
+        condition_max: 3.0,
+        ..desk.checks
+    };
+    let mpc = CueingSettings {
+        algorithm: CueingAlgorithm::Mpc,
+        ..desk.cueing.clone()
+    };
+    let samples: Vec<(f64, VehicleMotion)> = (0..20).map(|k| (0.01 * f64::from(k), m)).collect();
+    assert!(matches!(
+        cue_recording(&desk.geometry, &desk.limits, &tight, &mpc, &samples),
+        Err(CueError::HomeIllConditioned { max: 3.0, .. })
+    ));
+    assert!(cue_recording(&desk.geometry, &desk.limits, &desk.checks, &mpc, &samples).is_ok());
+}
+
 #[test]
 fn a_preview_is_the_step_taken_on_a_copy_and_changes_nothing() {
     // With the limiter on (a tight joint cone), and without: the preview h ahead with a motion

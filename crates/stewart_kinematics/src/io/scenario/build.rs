@@ -967,7 +967,20 @@ fn keys_sampling(
     t: &TrajectoryFile,
     keys: &Keyframes,
 ) -> Result<Sampling, ScenarioError> {
-    Sampling::at_keys(keys).map_err(|_| {
+    Sampling::at_keys(keys).map_err(|e| {
+        if let crate::model::trajectory::SamplingError::TooFine { step, at } = e {
+            let (span, key) = match &t.file {
+                Some(file) => (Some(file.span()), "trajectory.file"),
+                None => (t.keys.as_ref().map(Spanned::span), "trajectory.keys"),
+            };
+            return src.invalid(
+                span,
+                key,
+                format!(
+                    "has times {step:.3e} s apart on average, too fine to tell apart {at:e} s from zero (at most 1e10 steps per unit of time from zero): start the times nearer 0, or space them more"
+                ),
+            );
+        }
         let (span, key, what) = match &t.file {
             Some(file) if t.at_keys.is_some() => (Some(file.span()), "trajectory.file", "holds a single moment in time (one row, or every row at the same time): add a row at another time (or, without `at_keys`, give `duration_s` to hold the pose that long)"),
             Some(file) => (Some(file.span()), "trajectory.file", "holds a single moment in time (one row, or every row at the same time): add a row at another time, or give `duration_s` to hold the pose that long"),

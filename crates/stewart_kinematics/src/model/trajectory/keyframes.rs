@@ -72,7 +72,7 @@ pub enum KeyframeError {
     },
     /// Two keys closer in time than [`MIN_KEY_GAP_S`].
     #[error(
-        "key {index} is only {gap:e} s after the previous key; keys must be at least 1e-6 s apart"
+        "key {index} is only {gap:.3e} s after the previous key; keys must be at least 1e-6 s apart"
     )]
     TooClose {
         /// Key number, from 1.
@@ -84,6 +84,26 @@ pub enum KeyframeError {
 
 /// The smallest time between two keys, seconds (closer keys make splines overflow).
 pub const MIN_KEY_GAP_S: f64 = 1e-6;
+
+/// Whether two keys `gap` seconds apart are far enough: [`MIN_KEY_GAP_S`] at least, to a
+/// millionth of it (times written to the microsecond, `0.000004` then `0.000005`, differ
+/// by a hair less than 1e-6 once read).
+pub fn far_enough_apart(gap: f64) -> bool {
+    gap >= MIN_KEY_GAP_S * (1.0 - 1e-6)
+}
+
+impl KeyframeError {
+    /// The key the error names, from 1 (none for an empty list).
+    pub fn index(&self) -> Option<usize> {
+        match self {
+            Self::NotIncreasing { index, .. }
+            | Self::NotFinite { index }
+            | Self::OutOfRange { index, .. }
+            | Self::TooClose { index, .. } => Some(*index),
+            Self::Empty => None,
+        }
+    }
+}
 
 /// Check a key's values against [`crate::io::bounds`]: time, position, angles.
 fn check_key_ranges(index: usize, k: &Keyframe) -> Result<(), KeyframeError> {
@@ -121,7 +141,7 @@ impl Keyframes {
                     previous: keys[i - 1].t,
                 });
             }
-            if i > 0 && k.t - keys[i - 1].t < MIN_KEY_GAP_S {
+            if i > 0 && !far_enough_apart(k.t - keys[i - 1].t) {
                 return Err(KeyframeError::TooClose {
                     index: i + 1,
                     gap: k.t - keys[i - 1].t,

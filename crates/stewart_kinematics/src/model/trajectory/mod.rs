@@ -229,6 +229,47 @@ impl Motion {
         (0..self.sampling.len()).map(|k| self.time(k))
     }
 
+    /// What `check` judges: the samples, and for keys sampled at their own times but
+    /// joined by curves (cubic, smoothstep: a spline overshoots between rows) also every
+    /// instant the link plays at `link_rate_hz` from the first key, so that what is judged
+    /// is what plays. An instant within a quarter period of a key is left to the key (the
+    /// differences that judge speed, acceleration and jerk need steps of that order).
+    pub fn samples_judged(&self, link_rate_hz: f64) -> Samples {
+        let curved = match &self.trajectory {
+            Trajectory::Keyframes(keys) if self.sampling.is_at_keys() => {
+                (keys.interpolation() != Interpolation::Linear).then_some(keys)
+            }
+            _ => None,
+        };
+        let Some(keys) = curved else {
+            return self.sample();
+        };
+        let (first, last) = keys.time_span();
+        let period = 1.0 / link_rate_hz.max(1e-3);
+        let ticks = ((last - first) / period).floor();
+        if !(link_rate_hz.is_finite() && ticks.is_finite() && ticks < MAX_SAMPLES as f64) {
+            return self.sample();
+        }
+        let mut times: Vec<f64> = Vec::with_capacity(keys.keys().len() + ticks as usize + 1);
+        let mut key_times = keys.keys().iter().map(|k| k.t).peekable();
+        let mut previous_key = f64::NEG_INFINITY;
+        for k in 0..=ticks as u64 {
+            let tick = first + k as f64 * period;
+            while let Some(&t) = key_times.peek().filter(|&&t| t <= tick) {
+                times.push(t);
+                previous_key = t;
+                key_times.next();
+            }
+            let next_key = key_times.peek().copied().unwrap_or(f64::INFINITY);
+            if tick - previous_key > 0.25 * period && next_key - tick > 0.25 * period {
+                times.push(tick);
+            }
+        }
+        times.extend(key_times);
+        let poses = times.iter().map(|&t| self.trajectory.pose_at(t)).collect();
+        Samples { times, poses }
+    }
+
     /// Sample times and poses.
     pub fn sample(&self) -> Samples {
         let times: Vec<f64> = self.times().collect();

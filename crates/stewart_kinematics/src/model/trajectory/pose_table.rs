@@ -96,7 +96,10 @@ impl PoseTable {
         // Times increase and values are finite (checked above and by the reader).
         Keyframes::new(keys, interpolation).map_err(|e| TableError::BadValue {
             file: file.to_owned(),
-            line: 1,
+            // The row of the key named (not the header).
+            line: (e.index())
+                .and_then(|i| self.lines.get(i - 1).copied())
+                .unwrap_or(1),
             column: "t".to_owned(),
             message: e.to_string(),
         })
