@@ -23,10 +23,10 @@ pub(crate) fn read_input<T>(
     read(&mut bytes.as_slice(), &name)
 }
 
-/// The whole of `path` (`-` is standard input), within the tables' cap, and the name to
-/// use in messages: a file's bytes as the gate read them, once (a recording or a capture
-/// is not copied a second time).
-pub(crate) fn read_input_bytes(path: &Path) -> Result<(Vec<u8>, String)> {
+/// The whole of `path` (`-` is standard input) read as `kind` (a table, a capture: what a
+/// refusal names), within the tables' cap, and the name to use in messages: a file's bytes
+/// as the gate read them, once (a recording or a capture is not copied a second time).
+pub(crate) fn read_input_bytes(path: &Path, kind: FileKind) -> Result<(Vec<u8>, String)> {
     use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
     if path.as_os_str() == "-" {
         let name = "standard input";
@@ -34,10 +34,7 @@ pub(crate) fn read_input_bytes(path: &Path) -> Result<(Vec<u8>, String)> {
             .map_err(|e| anyhow::anyhow!("{name} {e}"))?;
         return Ok((bytes, name.to_owned()));
     }
-    Ok((
-        read_file(path, FileKind::Table)?,
-        path.display().to_string(),
-    ))
+    Ok((read_file(path, kind)?, path.display().to_string()))
 }
 
 /// A CSV text being built: a header, then rows of numbers.

@@ -102,6 +102,12 @@ impl Platform {
     fn set(&mut self, py: Python<'_>, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let text = if value.is_none() {
             "off".to_owned()
+        } else if value.is_instance_of::<pyo3::types::PyBytes>() {
+            // Its repr (`b'…'`) would be taken as the words.
+            return Err(scenario_error(
+                py,
+                format!("`{key}`: give text (a str), not bytes"),
+            ));
         } else if let Ok(b) = value.extract::<bool>() {
             b.to_string()
         } else if let Ok(v) = value.extract::<f64>() {

@@ -105,7 +105,7 @@ fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()
 /// Read the capture `input`: the datagrams to `port` (default: the port whose datagrams
 /// give motion), a line per second of the capture's time.
 fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Result<()> {
-    let (bytes, name) = read_input_bytes(input)?;
+    let (bytes, name) = read_input_bytes(input, stewart_kinematics::io::file::FileKind::Capture)?;
     if !capture::is_capture(&bytes) {
         bail!(
             "{name}: not a packet capture (pcap or pcapng): its first bytes are neither format's"

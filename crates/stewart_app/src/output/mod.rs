@@ -105,19 +105,28 @@ pub(crate) fn parent_of(path: &Path) -> &Path {
 impl Destination {
     /// Check `path` as an output of a command whose inputs are `inputs` (each with the
     /// words that name it, such as `("the scenario", path)`): the output may not be one
-    /// of them. Standard input (`-`) is never a file.
+    /// of them. Standard input (`-`) is one when it is redirected from that file.
     pub(crate) fn new(path: &Path, inputs: &[(&str, impl AsRef<Path>)]) -> Result<Self> {
         let real = resolve_links(path)?;
         let meta = std::fs::metadata(&real).ok();
         if let Some(meta) = &meta {
             for (what, input) in inputs {
                 let input = input.as_ref();
-                if input.as_os_str() != "-" && kind_of(meta) == Kind::File && same_file(meta, input)
-                {
+                // Standard input (`-`) redirected from a file is that file.
+                let read = if input.as_os_str() == "-" {
+                    Path::new("/dev/stdin")
+                } else {
+                    input
+                };
+                if kind_of(meta) == Kind::File && same_file(meta, read) {
+                    let named = if read == input {
+                        format!("`{}`", input.display())
+                    } else {
+                        "standard input, redirected from it".to_owned()
+                    };
                     bail!(
-                        "refusing to write `{}`: it is {what} this command reads (`{}`); choose another output file",
+                        "refusing to write `{}`: it is {what} this command reads ({named}); choose another output file",
                         path.display(),
-                        input.display()
                     );
                 }
             }

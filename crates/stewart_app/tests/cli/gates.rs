@@ -118,3 +118,33 @@ fn a_named_pipe_output_is_opened_before_listening() {
     let rows = reader.join().unwrap_or_default();
     assert_eq!(rows.lines().count(), 21, "{rows}");
 }
+
+/// Standard input redirected from a file is that file: writing the output over it is
+/// refused before any work, as naming it would be.
+#[test]
+fn standard_input_redirected_from_the_output_file_is_refused() {
+    let dir = tempdir();
+    let table = dir.path().join("table.csv");
+    let o = stewart(&[
+        "solve",
+        "--preset",
+        "paired",
+        "--out",
+        &table.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let before = std::fs::read(&table).unwrap_or_default();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        .args(["solve", "--preset", "paired", "--poses", "-", "--out"])
+        .arg(&table)
+        .stdin(std::fs::File::open(&table).unwrap_or_else(|e| panic!("{e}")))
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("standard input, redirected from it"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read(&table).unwrap_or_default(), before);
+}

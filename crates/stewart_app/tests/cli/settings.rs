@@ -176,3 +176,46 @@ fn as_coordinates_writes_the_same_platform_with_every_joint_a_point() {
     let o = stewart(&["settings", "--preset", "seed", "--out", &file]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
 }
+
+/// One switch rule everywhere (words, or a number equal to 1 or 0), refusals quoting the
+/// value as typed, `--set`s taken in any order, and a UDP address that cannot be one
+/// refused where it is written.
+#[test]
+fn switches_quotes_orders_and_addresses_read_the_same_everywhere() {
+    for set in ["link.reversed.1=1.0", "cueing.tilt=1.0", "cueing.tilt=00"] {
+        let o = stewart(&["settings", "--set", set]);
+        assert_eq!(o.status.code(), Some(0), "{set}: {}", stderr(&o));
+    }
+    for (set, said) in [
+        (
+            "cueing.tilt=3.0",
+            "`cueing.tilt` = 3.0 refused: it is a switch: true or false",
+        ),
+        (
+            "link.reversed.1=3.0",
+            "`3.0` is not a switch: true or false",
+        ),
+        (
+            "geometry.base_radius=2e3",
+            "`geometry.base_radius` = 2e3 refused",
+        ),
+        (
+            "link.address=1.2.3.4:99999",
+            "`99999` is not a port number 1 to 65535",
+        ),
+        ("link.address=nothost", "`nothost` is not an address"),
+    ] {
+        let o = stewart(&["settings", "--set", set]);
+        assert_eq!(o.status.code(), Some(2), "{set}");
+        assert!(stderr(&o).contains(said), "{set}: {}", stderr(&o));
+    }
+    // The template format and its template, in either order.
+    for order in [
+        ["link.format=template", "link.template={a1:u8}"],
+        ["link.template={a1:u8}", "link.format=template"],
+    ] {
+        let o = stewart(&["settings", "--set", order[0], "--set", order[1]]);
+        assert_eq!(o.status.code(), Some(0), "{order:?}: {}", stderr(&o));
+        assert!(stdout(&o).contains("{a1:u8}"), "{order:?}");
+    }
+}

@@ -191,6 +191,34 @@ pub struct LinkProblem {
 /// The scenario key of the output template (where a refusal of it is placed).
 pub const TEMPLATE_KEY: &str = "link.template";
 
+/// Why `address` is no UDP address `HOST:PORT` (a name or an IP, `[…]` around IPv6, a
+/// port 1 to 65535), or `None` when it is one. Whether the host exists is only known when
+/// the link opens it.
+fn address_problem(address: &str) -> Option<String> {
+    let not = |why: String| {
+        Some(format!(
+            "`{address}` is not an address like 192.168.1.20:9000 or localhost:9000: {why}"
+        ))
+    };
+    let Some((host, port)) = address.trim().rsplit_once(':') else {
+        return not("it has no `:PORT`".to_owned());
+    };
+    let host = host.trim_start_matches('[').trim_end_matches(']');
+    if host.is_empty() || host.contains(char::is_whitespace) {
+        return not("it names no host".to_owned());
+    }
+    match port.parse::<u16>() {
+        Ok(0) => not("port 0 names no peer".to_owned()),
+        Ok(_) => None,
+        Err(_) => not(format!("`{port}` is not a port number 1 to 65535")),
+    }
+}
+
+/// The template the template format starts from: six 16-bit values between two 0xFF bytes
+/// and a line end.
+pub const STARTING_TEMPLATE: &str =
+    "<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>";
+
 /// A template as written after `=` (in `--set`) or `template:` (in `--format`): its
 /// leading spaces dropped and its end kept, as a space may be a byte the board reads.
 /// The one rule for every place a template is written: `--set`, `--format`, a scenario
@@ -245,6 +273,15 @@ impl LinkSettings {
         ] {
             if text.as_ref().is_some_and(|t| t.trim().is_empty()) {
                 return bad(format!("link.{key}"), "must not be empty".into());
+            }
+        }
+        for (key, text) in [
+            ("address", &self.address),
+            ("address2", &self.address2),
+            ("address3", &self.address3),
+        ] {
+            if let Some(reason) = text.as_deref().and_then(address_problem) {
+                return bad(format!("link.{key}"), reason);
             }
         }
         if !(0.0..=MAX_RAMP_S).contains(&self.ramp_s) {
@@ -387,7 +424,14 @@ impl LinkSettings {
                     edited.format = LinkFormat::Template;
                     edited.template = Some(template.to_owned());
                 }
-                None => edited.format = choice(value).map_err(refuse)?,
+                None => {
+                    edited.format = choice(value).map_err(refuse)?;
+                    // The template format starts from a board's usual frame until a
+                    // template is given (in either order of `--set`).
+                    if edited.format == LinkFormat::Template && edited.template.is_none() {
+                        edited.template = Some(STARTING_TEMPLATE.to_owned());
+                    }
+                }
             },
             ("template", None) => {
                 edited.template =
@@ -411,15 +455,12 @@ impl LinkSettings {
             ("offset", Some(k)) => edited.offset[k] = number()?,
             ("reversed", Some(k)) => {
                 // As every switch takes it: true or false, on or off, 1 or 0.
-                edited.reversed[k] = match value.to_ascii_lowercase().as_str() {
-                    "true" | "on" | "1" => true,
-                    "false" | "off" | "0" => false,
-                    _ => {
-                        return Err(refuse(format!(
-                            "`{value}` is not a switch: true or false (on or off, 1 or 0)"
-                        )));
-                    }
-                };
+                edited.reversed[k] = super::switch::read(value).ok_or_else(|| {
+                    refuse(format!(
+                        "`{value}` is not a switch: {}",
+                        super::switch::ACCEPTS
+                    ))
+                })?;
             }
             _ => {
                 return Err(refuse(

@@ -14,4 +14,5 @@ pub mod link_settings;
 pub mod pose;
 pub mod rotary;
 pub mod scene;
+pub mod switch;
 pub mod trajectory;

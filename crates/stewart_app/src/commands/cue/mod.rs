@@ -34,7 +34,8 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let mut inputs = source::inputs(&args.scenario, &scenario);
     inputs.push(("the vehicle motion", args.input.clone()));
     let out = output::destination(args.out.as_deref(), &inputs)?;
-    let (bytes, file) = read_input_bytes(&args.input)?;
+    let (bytes, file) =
+        read_input_bytes(&args.input, stewart_kinematics::io::file::FileKind::Table)?;
     let recording = if vehicle_capture::is_capture(&bytes) {
         Recording::Capture(Box::new(vehicle_capture::read(
             &bytes,

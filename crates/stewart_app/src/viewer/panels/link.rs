@@ -6,7 +6,7 @@
 use egui::{Color32, RichText};
 use stewart_kinematics::model::actuator::Quantity;
 use stewart_kinematics::model::link_settings::{
-    LinkFormat, LinkOutput, LinkStop, LinkTransport, RATES_HZ, Word,
+    LinkFormat, LinkOutput, LinkStop, LinkTransport, RATES_HZ, STARTING_TEMPLATE, Word,
 };
 use stewart_link::safety::LinkState;
 use stewart_link::sender::Status as SenderStatus;
@@ -521,11 +521,6 @@ fn board_ports(
         });
     }
 }
-
-/// The template a board's frame starts from: six 16-bit legs between two 0xFF bytes and a
-/// line end.
-const STARTING_TEMPLATE: &str =
-    "<255><255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be}<10><13>";
 
 /// The output template, edited in place, and a live preview: the bytes it sends at the
 /// home pose, or where it is wrong.

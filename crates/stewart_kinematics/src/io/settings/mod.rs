@@ -491,22 +491,21 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
     let (key, value) = text.split_once('=').ok_or_else(syntax)?;
     let setting = find(key.trim())?;
     let value = value.trim();
-    let word = value.to_ascii_lowercase();
-    let value = if setting.unit == Unit::Switch
-        && ["true", "on", "false", "off"].contains(&word.as_str())
-    {
-        Some(if word == "true" || word == "on" {
-            1.0
-        } else {
-            0.0
-        })
+    let value = if setting.unit == Unit::Switch {
+        // One rule for every switch (the link's too): words, or a number equal to 1 or 0.
+        let on = crate::model::switch::read(value).ok_or_else(|| SettingError::Invalid {
+            key: setting.key.clone(),
+            value: value.to_owned(),
+            reason: format!("it is a switch: {}", crate::model::switch::ACCEPTS),
+        })?;
+        Some(f64::from(u8::from(on)))
     } else if value.eq_ignore_ascii_case("off") {
         None
     } else {
-        let reason = match setting.unit {
-            Unit::Switch => "it is a switch: true or false (on or off, 1 or 0)",
-            _ if setting.optional() => "it must be a number, or `off`",
-            _ => "it must be a number",
+        let reason = if setting.optional() {
+            "it must be a number, or `off`"
+        } else {
+            "it must be a number"
         };
         let refused = |reason: &str| SettingError::Invalid {
             key: setting.key.clone(),
@@ -516,12 +515,7 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
         let number = value.parse::<f64>().map_err(|_| refused(reason))?;
         // Refused as typed (`1e400`, not the `inf` it reads as).
         if !number.is_finite() {
-            let switch = setting.unit == Unit::Switch;
-            return Err(refused(if switch {
-                reason
-            } else {
-                "it must be a finite number"
-            }));
+            return Err(refused("it must be a finite number"));
         }
         Some(number)
     };
@@ -589,16 +583,32 @@ pub fn apply_all<'a>(
                 })
             };
             if let Some(done) = worded {
+                // As typed; spaces alone shown between backticks (else nothing would show).
+                let typed = match value.trim() {
+                    "" => format!("`{value}`"),
+                    words => words.to_owned(),
+                };
                 done.map_err(|(key, reason)| SettingError::Invalid {
                     key,
-                    value: value.trim().to_owned(),
+                    value: typed,
                     reason,
                 })?;
                 continue;
             }
         }
         let (setting, value) = parse_assignment(text)?;
-        setting.set(&mut edited, value)?;
+        // A refusal quotes the value as typed (`2e3`, not the 2000 it reads as).
+        setting.set(&mut edited, value).map_err(|e| match e {
+            SettingError::Invalid { key, reason, .. } => SettingError::Invalid {
+                key,
+                value: text
+                    .split_once('=')
+                    .map_or("", |(_, v)| v.trim())
+                    .to_owned(),
+                reason,
+            },
+            other => other,
+        })?;
     }
     *scenario = edited;
     Ok(())
