@@ -23,6 +23,12 @@ const SIZES: [(u32, u32); 7] = [
 /// The largest side a frame may have, pixels (as `stewart render --size`).
 const MAX_SIDE: u32 = 4096;
 
+/// A fraction done as whole percent, rounded down (the window and the button agree; 100 %
+/// only once done).
+fn percent_done(fraction: f32) -> u32 {
+    (100.0 * fraction.clamp(0.0, 1.0)).floor() as u32
+}
+
 /// The toolbar's *Export…* button: opens (or closes) the export window.
 pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
     let busy = exports.job.is_some();
@@ -31,10 +37,10 @@ pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
             "export.open_busy",
             &[(
                 "percent",
-                &format!(
-                    "{:.0}",
-                    100.0 * exports.job.as_ref().map_or(0.0, |j| j.fraction())
-                ),
+                &exports
+                    .job
+                    .as_ref()
+                    .map_or(0, |j| percent_done(j.fraction())),
             )],
         )
     } else {
@@ -117,7 +123,9 @@ fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
     let t = parts.lang;
     let exports = &mut *parts.exports;
     if let Some(job) = &mut exports.job {
-        ui.add(egui::ProgressBar::new(job.fraction()).show_percentage());
+        // The percentage the toolbar's button shows, to the unit.
+        let done = percent_done(job.fraction());
+        ui.add(egui::ProgressBar::new(job.fraction()).text(format!("{done} %")));
         ui.label(job.describe());
         let label = if job.cancelling() {
             t.tr("export.cancelling")
@@ -347,7 +355,15 @@ fn span(
 
 #[cfg(test)]
 mod tests {
-    use super::file_stem;
+    use super::{file_stem, percent_done};
+
+    #[test]
+    fn the_button_and_the_window_say_the_same_percentage() {
+        assert_eq!(percent_done(0.056), 5);
+        assert_eq!(percent_done(0.999), 99);
+        assert_eq!(percent_done(1.0), 100);
+        assert_eq!(percent_done(f32::NAN), 0);
+    }
 
     #[test]
     fn a_name_becomes_a_file_name_without_spaces_or_awkward_characters() {

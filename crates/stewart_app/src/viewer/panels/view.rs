@@ -139,8 +139,20 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
         .response
         .on_hover_text(t.tr("view.screenshot_tip"));
     });
-    if !parts.look.presentation {
-        super::widgets::status(ui, &parts.shots.status, t);
+    if !parts.look.presentation && parts.shots.status.is_some() {
+        // Over the view below the toolbar, not a line that pushes the view down; a success
+        // goes after a few seconds.
+        let below = ui.min_rect().left_bottom() + egui::vec2(0.0, 4.0);
+        egui::Area::new(ui.scope_id().with("shot said"))
+            .fixed_pos(below)
+            .order(egui::Order::Foreground)
+            .show(ui.ctx(), |ui| {
+                egui::Frame::popup(ui.style()).show(ui, |ui| {
+                    super::widgets::status(ui, &parts.shots.status, t);
+                });
+            });
+        ui.ctx()
+            .request_repaint_after(crate::viewer::window::shots::SAID_FOR);
     }
     action
 }

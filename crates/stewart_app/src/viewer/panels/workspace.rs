@@ -9,7 +9,7 @@ use stewart_render::colormap;
 
 use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
-use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
+use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
 
 /// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it
 /// starts open.
@@ -99,7 +99,7 @@ fn numbers(ui: &mut egui::Ui, w: &WorkspaceTool, scenario: &Scenario, pose: &Pos
         "workspace_panel.volume",
         &[
             ("volume", &format_volume(o.volume)),
-            ("error", &format_volume(o.volume_error)),
+            ("error", &format_volume_error(o.volume_error)),
         ],
     ));
     for (axis, [lo, hi]) in ["x", "y", "z"].iter().zip(extent) {

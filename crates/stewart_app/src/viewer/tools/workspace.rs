@@ -47,6 +47,16 @@ pub(crate) fn format_volume(v: f64) -> String {
     format!("{v:.decimals$}")
 }
 
+/// An uncertainty of a volume, m³: two significant digits, in powers of ten when small
+/// (`4.5e-6`, not `0.000004474`).
+pub(crate) fn format_volume_error(e: f64) -> String {
+    if e != 0.0 && e.is_finite() && e.abs() < 1e-2 {
+        format!("{e:.1e}")
+    } else {
+        format_volume(e)
+    }
+}
+
 /// What a surface is computed for.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Request {
@@ -410,6 +420,8 @@ mod tests {
         assert_eq!(format_volume(0.000_221_37), "0.0002214");
         assert_eq!(format_volume(12.345_67), "12.35");
         assert_eq!(format_volume(0.0), "0");
+        assert_eq!(format_volume_error(0.000_004_474), "4.5e-6");
+        assert_eq!(format_volume_error(0.0123), "0.01230");
     }
 
     #[test]

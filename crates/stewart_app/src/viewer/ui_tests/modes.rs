@@ -592,3 +592,25 @@ fn drag_plot_edge(h: &mut egui_kittest::Harness<'static, crate::viewer::ViewerSt
     h.drop_at(edge + by);
     h.run();
 }
+
+/// The toolbar stays put: Play and Pause are one width, and a shot's line is said over
+/// the view instead of pushing it down.
+#[test]
+fn the_toolbar_does_not_move_when_play_turns_pause_or_a_shot_is_said() {
+    let mut h = harness("seed");
+    let pause = h.get_by_label("Pause").rect();
+    let view = h.state().look.view_px;
+    h.get_by_label("Pause").click();
+    h.run();
+    let play = h.get_by_label("Play").rect();
+    assert!((play.width() - pause.width()).abs() < 0.5, "{play:?} vs {pause:?}");
+    let export = h.get_by_label("Export…").rect();
+    h.state_mut()
+        .shots
+        .say(Some(Ok("Saved the view to /a/long/path/shot.png.".to_owned())));
+    h.run();
+    h.run();
+    assert!(h.query_by_label("Saved the view to /a/long/path/shot.png.").is_some());
+    assert_eq!(h.state().look.view_px, view, "the view was pushed down");
+    assert_eq!(h.get_by_label("Export…").rect(), export);
+}

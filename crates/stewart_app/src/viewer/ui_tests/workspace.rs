@@ -5,7 +5,7 @@
 use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::playback::MotionMode;
-use crate::viewer::tools::workspace::{WorkspaceTool, format_volume};
+use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::analysis::dynamics;
@@ -53,7 +53,7 @@ fn volume_line(s: &Scenario, orientation: [Angle; 3]) -> String {
     format!(
         "Volume {} m³ ± {} m³",
         format_volume(ws.volume),
-        format_volume(ws.volume_error)
+        format_volume_error(ws.volume_error)
     )
 }
 

@@ -483,11 +483,11 @@ impl App {
                     *s = Some(result);
                 }
             } else {
-                self.state.shots.status = Some(outcome);
+                self.state.shots.say(Some(outcome));
             }
         }
         if let Some(status) = self.window_shot.lock().ok().and_then(|mut s| s.take()) {
-            self.state.shots.status = Some(status);
+            self.state.shots.say(Some(status));
         }
         let done = self.screenshot.lock().ok().and_then(|mut s| s.take());
         if let Some(result) = done {

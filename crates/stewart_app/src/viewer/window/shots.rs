@@ -24,6 +24,9 @@ pub(crate) enum ShotKind {
 
 pub(crate) use crate::shot_scale::ShotScale;
 
+/// How long a saved shot's line stays in sight.
+pub(crate) const SAID_FOR: std::time::Duration = std::time::Duration::from_secs(8);
+
 /// The Screenshot menu's choices and the shot in progress.
 pub(crate) struct Shots {
     /// 3D view or whole window.
@@ -34,6 +37,8 @@ pub(crate) struct Shots {
     pub(crate) transparent: bool,
     /// Where the last shot went or why it failed.
     pub(crate) status: Status,
+    /// When that was said (a success is shown for [`SAID_FOR`], then goes).
+    said_at: Option<std::time::Instant>,
     /// A whole-window shot the window is to take at its next frame.
     pub(crate) window_request: Option<(PathBuf, ShotScale)>,
     /// The folder shots are saved in (the current folder).
@@ -50,6 +55,7 @@ impl Default for Shots {
             scale: ShotScale::One,
             transparent: false,
             status: None,
+            said_at: None,
             window_request: None,
             folder: PathBuf::from("."),
             job: Job::new("stewart-screenshot"),
@@ -113,10 +119,22 @@ impl Shots {
     /// Collect a finished shot.
     pub(crate) fn poll(&mut self) {
         match self.job.poll() {
-            Some(Ok(status)) => self.status = status,
-            Some(Err(e)) => self.status = Some(Err(e.into())),
+            Some(Ok(status)) => self.say(status),
+            Some(Err(e)) => self.say(Some(Err(e.into()))),
             None => {}
         }
+        // A success is said for a while, not for the rest of the session.
+        if matches!(self.status, Some(Ok(_)))
+            && self.said_at.is_some_and(|at| at.elapsed() >= SAID_FOR)
+        {
+            self.status = None;
+        }
+    }
+
+    /// Say `status` (where a shot went, or why it failed), from now.
+    pub(crate) fn say(&mut self, status: Status) {
+        self.status = status;
+        self.said_at = Some(std::time::Instant::now());
     }
 }
 
