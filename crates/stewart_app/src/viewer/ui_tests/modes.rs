@@ -603,14 +603,20 @@ fn the_toolbar_does_not_move_when_play_turns_pause_or_a_shot_is_said() {
     h.get_by_label("Pause").click();
     h.run();
     let play = h.get_by_label("Play").rect();
-    assert!((play.width() - pause.width()).abs() < 0.5, "{play:?} vs {pause:?}");
+    assert!(
+        (play.width() - pause.width()).abs() < 0.5,
+        "{play:?} vs {pause:?}"
+    );
     let export = h.get_by_label("Export…").rect();
-    h.state_mut()
-        .shots
-        .say(Some(Ok("Saved the view to /a/long/path/shot.png.".to_owned())));
+    h.state_mut().shots.say(Some(Ok(
+        "Saved the view to /a/long/path/shot.png.".to_owned()
+    )));
     h.run();
     h.run();
-    assert!(h.query_by_label("Saved the view to /a/long/path/shot.png.").is_some());
+    assert!(
+        h.query_by_label("Saved the view to /a/long/path/shot.png.")
+            .is_some()
+    );
     assert_eq!(h.state().look.view_px, view, "the view was pushed down");
     assert_eq!(h.get_by_label("Export…").rect(), export);
 }
