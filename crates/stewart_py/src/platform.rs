@@ -102,18 +102,21 @@ impl Platform {
     fn set(&mut self, py: Python<'_>, key: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let text = if value.is_none() {
             "off".to_owned()
-        } else if value.is_instance_of::<pyo3::types::PyBytes>() {
-            // Its repr (`b'…'`) would be taken as the words.
-            return Err(scenario_error(
-                py,
-                format!("`{key}`: give text (a str), not bytes"),
-            ));
         } else if let Ok(b) = value.extract::<bool>() {
             b.to_string()
         } else if let Ok(v) = value.extract::<f64>() {
             format!("{v}")
+        } else if let Ok(words) = value.extract::<String>() {
+            words
         } else {
-            value.str()?.to_string()
+            // Bytes, a list…: its repr (`b'…'`, `bytearray(…)`) would be taken as the words.
+            return Err(scenario_error(
+                py,
+                format!(
+                    "`{key}`: give a number, True or False, None or text (a str), not {}",
+                    value.get_type().name()?
+                ),
+            ));
         };
         let mut edited = self.scenario.clone();
         settings::apply_all(&mut edited, [format!("{key}={text}").as_str()])

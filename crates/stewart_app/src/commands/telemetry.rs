@@ -48,15 +48,21 @@ pub(crate) fn run(args: &TelemetryArgs) -> Result<ExitCode> {
     };
     match (&args.input, &args.listen) {
         (Some(input), _) => replay(input, args.port, &mut heard)?,
-        (None, Some(listen)) => listen_to(listen, args, &mut heard)?,
+        (None, Some(listen)) => listen_to(listen, args, &mut heard, out.as_ref())?,
         (None, None) => bail!("give --listen udp:HOST:PORT or --input CAPTURE"),
     }
     write_rows(&heard, out.as_ref())?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// Listen at `listen` until `--duration` or Ctrl-C.
-fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()> {
+/// Listen at `listen` until `--duration` or Ctrl-C; a named pipe as `out` is opened (its
+/// reader waited for) once the address is bound, before anything is heard.
+fn listen_to(
+    listen: &str,
+    args: &TelemetryArgs,
+    heard: &mut Heard,
+    out: Option<&Destination>,
+) -> Result<()> {
     let Some(address) = listen.strip_prefix("udp:") else {
         bail!("--listen takes udp:HOST:PORT (such as udp:0.0.0.0:20777), got `{listen}`");
     };
@@ -66,6 +72,9 @@ fn listen_to(listen: &str, args: &TelemetryArgs, heard: &mut Heard) -> Result<()
     let mut xplane = (args.xplane.as_deref())
         .map(|a| RrefSubscription::new(a, args.rate))
         .transpose()?;
+    if let Some(out) = out {
+        out.hold_open()?;
+    }
     let mut err = std::io::stderr();
     let _ = writeln!(
         err,
@@ -160,7 +169,17 @@ fn write_rows(heard: &Heard, out: Option<&Destination>) -> Result<()> {
         csv.row(row.iter().copied());
     }
     let text = csv.into_string();
-    output::emit_with(Some(out), |w| w.write_all(text.as_bytes()))
+    output::emit_with(Some(out), |w| w.write_all(text.as_bytes())).or_else(|e| {
+        // A session is not lost with its output (a pipe's reader gone): kept beside.
+        let kept =
+            std::env::temp_dir().join(format!("stewart-telemetry-{}.csv", std::process::id()));
+        output::write_atomically(&kept, text.as_bytes())?;
+        bail!(
+            "{e:#}; the session's {} rows are kept in `{}`",
+            heard.rows.len(),
+            kept.display()
+        )
+    })
 }
 
 /// What has arrived: the rows of motion, and this second's datagrams per format.

@@ -16,7 +16,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use anyhow::{Context as _, Result, bail};
-use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
+use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion, home_conditioning};
 use stewart_kinematics::{Pose, Scenario};
 use stewart_link::vehicle::intake::{Intake, Intaken};
 use stewart_link::vehicle::timeline::{Placement, Step, Timed};
@@ -205,6 +205,10 @@ impl LiveCue {
             bail!("--cue takes udp:HOST:PORT (such as udp:0.0.0.0:4123), got `{source}`");
         };
         let mut cueing = Cueing::new(&scenario.geometry, &scenario.limits, &scenario.cueing)
+            .and_then(|c| {
+                let checks = &scenario.checks;
+                home_conditioning(&scenario.geometry, checks, &scenario.cueing).map(|()| c)
+            })
             .map_err(|e| anyhow::anyhow!("scenario `{}`: {e}", scenario.name))?;
         // The planner solves on a thread of its own; the tick only follows its plans.
         let planner = match cueing.mpc_mut() {

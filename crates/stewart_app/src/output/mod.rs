@@ -139,11 +139,11 @@ impl Destination {
         })
     }
 
-    /// A FIFO (a named pipe) is opened now, before the command's work, waiting for its
-    /// reader (said on standard error) until Ctrl-C, as the shell's `>` does: a session
-    /// recorded for minutes is never lost waiting for a reader at the end. Other kinds
-    /// are left to the write.
-    pub(crate) fn open_early(self) -> Result<Self> {
+    /// A FIFO (a named pipe) is opened now, before long work (a session listened to),
+    /// waiting for its reader (said on standard error) until Ctrl-C, as the shell's `>`
+    /// does: a session recorded for minutes is never lost waiting for a reader at the end.
+    /// Other kinds are left to the write.
+    pub(crate) fn hold_open(&self) -> Result<()> {
         #[cfg(unix)]
         {
             use std::os::unix::fs::FileTypeExt;
@@ -151,9 +151,12 @@ impl Destination {
             if fifo {
                 crate::interrupt::flag();
                 let shown = self.shown.display();
-                let file = SpecialFile::open_saying(&self.real, &format!(
-                    "waiting for a reader of `{shown}` (a named pipe) before starting; Ctrl-C stops"
-                ))
+                let file = SpecialFile::open_saying(
+                    &self.real,
+                    &format!(
+                        "waiting for a reader of `{shown}` (a named pipe) before starting; Ctrl-C stops"
+                    ),
+                )
                 .with_context(|| format!("cannot write `{shown}`"))?;
                 *self
                     .held
@@ -161,7 +164,7 @@ impl Destination {
                     .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(file);
             }
         }
-        Ok(self)
+        Ok(())
     }
 
     /// The device or FIFO to write: the one held open, else opened now.
@@ -175,7 +178,13 @@ impl Destination {
             Some(file) => Ok(file),
             None => {
                 crate::interrupt::flag();
-                SpecialFile::open(&self.real)
+                SpecialFile::open_saying(
+                    &self.real,
+                    &format!(
+                        "waiting for a reader of `{}` (a named pipe); Ctrl-C stops",
+                        self.shown.display()
+                    ),
+                )
             }
         }
     }
@@ -375,8 +384,7 @@ pub(crate) fn destination(
     path: Option<&Path>,
     inputs: &[(&str, impl AsRef<Path>)],
 ) -> Result<Option<Destination>> {
-    path.map(|p| Destination::new(p, inputs).and_then(Destination::open_early))
-        .transpose()
+    path.map(|p| Destination::new(p, inputs)).transpose()
 }
 
 #[cfg(test)]

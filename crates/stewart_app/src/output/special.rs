@@ -28,13 +28,8 @@ pub(crate) struct SpecialFile(File);
 
 impl SpecialFile {
     /// Open `path` for writing, waiting for a FIFO's reader until one comes or a stop is
-    /// requested.
-    pub(crate) fn open(path: &Path) -> std::io::Result<Self> {
-        Self::open_saying(path, "")
-    }
-
-    /// [`SpecialFile::open`], saying `waiting` on standard error (when not empty) once the
-    /// reader has kept it waiting half a second.
+    /// requested; `waiting` is said on standard error (when not empty) once the reader has
+    /// kept it waiting half a second.
     pub(crate) fn open_saying(path: &Path, waiting: &str) -> std::io::Result<Self> {
         let started = std::time::Instant::now();
         let mut said = waiting.is_empty();
@@ -48,7 +43,10 @@ impl SpecialFile {
                 // A FIFO with no reader yet.
                 Err(e) if e.raw_os_error() == Some(libc::ENXIO) => {
                     if crate::interrupt::requested() {
-                        return Err(stopped());
+                        return Err(std::io::Error::new(
+                            ErrorKind::Interrupted,
+                            "interrupted while waiting for a reader: nothing was written",
+                        ));
                     }
                     if !said && started.elapsed() >= Duration::from_millis(500) {
                         said = true;

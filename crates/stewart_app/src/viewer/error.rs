@@ -318,7 +318,7 @@ impl From<stewart_kinematics::io::file::FileError> for ViewerError {
         use stewart_kinematics::io::file::FileError;
         match e {
             FileError::NotRegular { path, .. } => Self::NotRegularFile(path),
-            FileError::Io { path, source } => Self::io(path, Doing::Read, source),
+            FileError::Io { path, cause } => Self::io(path, Doing::Read, cause),
             FileError::TooLarge { path, cap_mib, .. } => Self::FileTooLarge { path, cap_mib },
         }
     }

@@ -596,3 +596,36 @@ fn the_link_asks_x_plane_for_its_datarefs_and_follows_the_replies() {
     let stops = last.iter().filter(|r| r[5..9] == [0; 4]).count();
     assert_eq!(stops, 6, "{} requests after the first six", last.len());
 }
+
+/// The live model-predictive cue refuses a home pose above the condition-number limit, as
+/// `cue` does (the same settings once ran live and said nothing).
+#[test]
+fn a_live_planner_refuses_a_home_pose_above_the_condition_limit_as_cue_does() {
+    let set = [
+        "--set",
+        "cueing.algorithm=mpc",
+        "--set",
+        "checks.condition_max=3",
+    ];
+    let o = stewart(
+        &[
+            &[
+                "link",
+                "--preset",
+                "servo-desk",
+                "--dry-run",
+                "--duration",
+                "1",
+            ][..],
+            &["--cue", "udp:127.0.0.1:0"],
+            &set[..],
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("the home pose is already at 4.26"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -148,3 +148,29 @@ fn standard_input_redirected_from_the_output_file_is_refused() {
     );
     assert_eq!(std::fs::read(&table).unwrap_or_default(), before);
 }
+
+/// A named pipe as the output of a short command is opened when the output is ready: a
+/// refusal before that (a missing input) is said at once, not after a reader came.
+#[test]
+fn a_refusal_does_not_wait_for_a_named_pipes_reader() {
+    let dir = tempdir();
+    let fifo = dir.path().join("out.fifo");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo");
+    let missing = dir.path().join("missing.csv");
+    let cue = crate::watched::Watched::spawn(
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["cue", "--preset", "paired", "--input"])
+            .arg(&missing)
+            .arg("--out")
+            .arg(&fifo),
+    );
+    let o = cue.finish();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("cannot be read"), "{}", stderr(&o));
+    assert!(
+        !stderr(&o).contains("waiting for a reader"),
+        "{}",
+        stderr(&o)
+    );
+}

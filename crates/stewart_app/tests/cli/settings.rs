@@ -182,7 +182,13 @@ fn as_coordinates_writes_the_same_platform_with_every_joint_a_point() {
 /// refused where it is written.
 #[test]
 fn switches_quotes_orders_and_addresses_read_the_same_everywhere() {
-    for set in ["link.reversed.1=1.0", "cueing.tilt=1.0", "cueing.tilt=00"] {
+    for set in [
+        "link.reversed.1=1.0",
+        "cueing.tilt=1.0",
+        "cueing.tilt=00",
+        "link.baud=115200.0",
+        "link.actuator.1=1.0",
+    ] {
         let o = stewart(&["settings", "--set", set]);
         assert_eq!(o.status.code(), Some(0), "{set}: {}", stderr(&o));
     }
@@ -204,6 +210,7 @@ fn switches_quotes_orders_and_addresses_read_the_same_everywhere() {
             "`99999` is not a port number 1 to 65535",
         ),
         ("link.address=nothost", "`nothost` is not an address"),
+        ("link.address=[::1]", "it has no `:PORT`"),
     ] {
         let o = stewart(&["settings", "--set", set]);
         assert_eq!(o.status.code(), Some(2), "{set}");

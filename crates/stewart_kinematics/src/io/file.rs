@@ -75,12 +75,12 @@ pub enum FileError {
         kind: &'static str,
     },
     /// It could not be opened or read.
-    #[error("`{path}` cannot be read ({source})")]
+    #[error("`{path}` cannot be read ({cause})")]
     Io {
         /// The path.
         path: PathBuf,
-        /// Why.
-        source: std::io::Error,
+        /// Why (said in the message, not again as a source).
+        cause: std::io::Error,
     },
 }
 
@@ -111,9 +111,9 @@ fn not_regular(meta: &std::fs::Metadata) -> Option<&'static str> {
 
 /// All of the regular file at `path`, read as `kind` (within its cap).
 pub fn read_file(path: &Path, kind: FileKind) -> Result<Vec<u8>, FileError> {
-    let io = |source| FileError::Io {
+    let io = |cause| FileError::Io {
         path: path.to_path_buf(),
-        source,
+        cause,
     };
     let meta = std::fs::metadata(path).map_err(io)?;
     if let Some(what) = not_regular(&meta) {

@@ -80,7 +80,7 @@ impl Scenario {
 fn gate_words(e: &crate::io::file::FileError) -> String {
     use crate::io::file::FileError;
     match e {
-        FileError::Io { source, .. } => format!("cannot be read ({source})"),
+        FileError::Io { cause, .. } => format!("cannot be read ({cause})"),
         FileError::NotRegular { what, .. } => format!("is {what}, not a file"),
         FileError::TooLarge { cap_mib, .. } => {
             format!("is larger than {cap_mib} MiB, the most this program reads from such a file")

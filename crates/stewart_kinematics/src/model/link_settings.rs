@@ -191,6 +191,13 @@ pub struct LinkProblem {
 /// The scenario key of the output template (where a refusal of it is placed).
 pub const TEMPLATE_KEY: &str = "link.template";
 
+/// A whole number however written (`115200`, `115200.0`, `1.152e5`), as every whole-number
+/// setting takes it; `None` for a fraction, a sign below zero or more than `u32` holds.
+fn whole(text: &str) -> Option<u32> {
+    let v = text.trim().parse::<f64>().ok()?;
+    (v.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&v)).then_some(v as u32)
+}
+
 /// Why `address` is no UDP address `HOST:PORT` (a name or an IP, `[…]` around IPv6, a
 /// port 1 to 65535), or `None` when it is one. Whether the host exists is only known when
 /// the link opens it.
@@ -200,7 +207,11 @@ fn address_problem(address: &str) -> Option<String> {
             "`{address}` is not an address like 192.168.1.20:9000 or localhost:9000: {why}"
         ))
     };
-    let Some((host, port)) = address.trim().rsplit_once(':') else {
+    let Some((host, port)) = address
+        .trim()
+        .rsplit_once(':')
+        .filter(|(_, p)| !p.ends_with(']'))
+    else {
         return not("it has no `:PORT`".to_owned());
     };
     let host = host.trim_start_matches('[').trim_end_matches(']');
@@ -411,7 +422,7 @@ impl LinkSettings {
                 } = text;
             }
             ("baud", None) => {
-                edited.baud = value.parse::<u32>().map_err(|_| {
+                edited.baud = whole(value).ok_or_else(|| {
                     refuse(format!(
                         "`{value}` is not a whole number of bits per second"
                     ))
@@ -445,9 +456,9 @@ impl LinkSettings {
             ("ramp_s", None) => edited.ramp_s = number()?,
             ("stop", None) => edited.stop = choice(value).map_err(refuse)?,
             ("actuator", Some(k)) => {
-                edited.actuator[k] = value
-                    .parse::<u8>()
-                    .map_err(|_| refuse(format!("`{value}` is not an actuator number 1 to 6")))?;
+                edited.actuator[k] = whole(value)
+                    .and_then(|n| u8::try_from(n).ok())
+                    .ok_or_else(|| refuse(format!("`{value}` is not an actuator number 1 to 6")))?;
             }
             ("scale", Some(k)) => edited.scale[k] = number()?,
             ("turns_per_unit", Some(k)) => edited.turns_per_unit[k] = number()?,

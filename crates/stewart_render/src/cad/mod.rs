@@ -185,7 +185,7 @@ pub fn load(path: &Path) -> Result<PartMesh, CadError> {
     })?;
     let bytes =
         stewart_kinematics::io::file::read_file(path, FileKind::Mesh).map_err(|e| match e {
-            FileError::Io { source, .. } => CadError::Io {
+            FileError::Io { cause: source, .. } => CadError::Io {
                 path: path.to_owned(),
                 source,
             },

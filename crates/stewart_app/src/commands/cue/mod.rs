@@ -145,7 +145,7 @@ fn jerk_note(scenario: &Scenario, samples: &[(f64, VehicleMotion)], poses: &[Pos
         return String::new();
     }
     format!(
-        "cue: cueing does not limit jerk: at {over} samples an actuator's jerk is above `{key}` (`check` of the output lists them)\n"
+        "cue: cueing does not limit jerk: an actuator's jerk is above `{key}` at {over} actuator samples (summed over the six; `check` of the output lists them)\n"
     )
 }
 

@@ -174,10 +174,12 @@ pub(crate) fn load(folder: &std::path::Path) -> Result<Option<Session>, ViewerEr
     use stewart_kinematics::io::file::{FileError, FileKind, read_file};
     let bytes = match read_file(&path, FileKind::Session) {
         Ok(bytes) => bytes,
-        Err(FileError::Io { source, .. }) if source.kind() == std::io::ErrorKind::NotFound => {
+        Err(FileError::Io { cause: source, .. })
+            if source.kind() == std::io::ErrorKind::NotFound =>
+        {
             return Ok(None);
         }
-        Err(FileError::Io { source, .. }) => return Err(unreadable(&source)),
+        Err(FileError::Io { cause: source, .. }) => return Err(unreadable(&source)),
         Err(FileError::NotRegular { .. }) => return Err(unreadable(&"not a regular file")),
         Err(e @ FileError::TooLarge { .. }) => return Err(unreadable(&e)),
     };

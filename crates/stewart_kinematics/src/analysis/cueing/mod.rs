@@ -89,7 +89,7 @@ pub enum CueError {
     /// The samples' times too close for their distance from zero: the table written
     /// would not read back (see [`crate::model::trajectory::SamplingError::TooFine`]).
     #[error(
-        "the samples are {step:.3e} s apart on average, too fine to tell apart {at:e} s from zero (at most 1e10 steps per unit of time from zero): the pose table written would not read back; start the times nearer 0"
+        "the samples are {step:.3e} s apart on average, too fine to tell apart {at:.1} s from zero (at most 1e10 steps per unit of time from zero): the pose table written would not read back; start the times nearer 0"
     )]
     TimesTooFine {
         /// The average step, seconds.
@@ -352,6 +352,32 @@ impl CuedRecording {
     }
 }
 
+/// A model-predictive cue keeps the check's condition-number limit, so it starts from a
+/// home pose within it (offline, where the guard keeps it; live, where the cue returns to
+/// it): refused otherwise. Nothing to refuse for the washout, or on a geometry singular at
+/// every pose (the check judges no condition number there).
+pub fn home_conditioning(
+    geometry: &Geometry,
+    checks: &crate::analysis::checks::CheckSettings,
+    settings: &CueingSettings,
+) -> Result<(), CueError> {
+    if settings.algorithm != CueingAlgorithm::Mpc
+        || crate::analysis::architecture::architecture(geometry).singular
+    {
+        return Ok(());
+    }
+    let condition = (geometry.actuated_conditioning(&geometry.home_pose()))
+        .and_then(|c| c.condition_number)
+        .unwrap_or(f64::INFINITY);
+    if condition > checks.condition_max {
+        return Err(CueError::HomeIllConditioned {
+            condition,
+            max: checks.condition_max,
+        });
+    }
+    Ok(())
+}
+
 /// The poses of a recording of vehicle motion, one per sample at its time (the first at
 /// neutral: the filters start at rest), each sample's motion held until the next. A
 /// model-predictive cue keeps the actuators' range, speed and acceleration, the joint
@@ -381,19 +407,7 @@ pub fn cue_recording(
             samples: samples.len(),
         });
     }
-    if settings.algorithm == CueingAlgorithm::Mpc
-        && !crate::analysis::architecture::architecture(geometry).singular
-    {
-        let condition = (geometry.actuated_conditioning(&geometry.home_pose()))
-            .and_then(|c| c.condition_number)
-            .unwrap_or(f64::INFINITY);
-        if condition > checks.condition_max {
-            return Err(CueError::HomeIllConditioned {
-                condition,
-                max: checks.condition_max,
-            });
-        }
-    }
+    home_conditioning(geometry, checks, settings)?;
     let mut poses = Vec::with_capacity(samples.len());
     let mut scales = Vec::with_capacity(samples.len());
     let mut cues = Vec::with_capacity(samples.len());

@@ -947,7 +947,7 @@ fn read_pose_table(
                 Some(path.span()),
                 "trajectory.file",
                 match e {
-                    crate::io::file::FileError::Io { source, .. } => {
+                    crate::io::file::FileError::Io { cause: source, .. } => {
                         format!("names `{name}`, which cannot be opened ({source})")
                     }
                     other => format!("names a file that cannot be read: {other}"),
@@ -977,7 +977,7 @@ fn keys_sampling(
                 span,
                 key,
                 format!(
-                    "has times {step:.3e} s apart on average, too fine to tell apart {at:e} s from zero (at most 1e10 steps per unit of time from zero): start the times nearer 0, or space them more"
+                    "has times {step:.3e} s apart on average, too fine to tell apart {at:.1} s from zero (at most 1e10 steps per unit of time from zero): start the times nearer 0, or space them more"
                 ),
             );
         }
