@@ -75,6 +75,15 @@ pub enum CaptureError {
          save it again as pcapng (Wireshark: File → Save As)"
     )]
     BigEndianModified,
+    /// An interface's clock finer than this reader counts (`if_tsresol`).
+    #[error(
+        "the capture's interface counts time in units of {} s (if_tsresol byte {byte:#04x}), finer than this reader counts (at most 2^64 ticks a second)",
+        if byte & 0x80 == 0 { format!("10^-{}", byte & 0x7f) } else { format!("2^-{}", byte & 0x7f) }
+    )]
+    Resolution {
+        /// The `if_tsresol` byte.
+        byte: u8,
+    },
     /// The file could not be read.
     #[error("the capture could not be read after packet {packet}")]
     Read {
@@ -129,7 +138,10 @@ pub fn read(input: &[u8]) -> Result<Capture, CaptureError> {
         match reader.next() {
             Ok((size, block)) => {
                 if state.take(&block).is_none() {
-                    return Err(damaged);
+                    return Err(match state.resolution {
+                        Some(byte) => CaptureError::Resolution { byte },
+                        None => damaged,
+                    });
                 }
                 offset += size as u64;
                 reader.consume(size);
@@ -196,25 +208,30 @@ impl Stamp {
 
 impl Link {
     /// A pcapng interface, in a section of the byte order `big_endian`.
+    /// A resolution finer than 64 bits of ticks a second counts is refused by its
+    /// `if_tsresol` byte (`Err(Some(byte))`); a malformed option is damage (`Err(None)`).
     fn of_interface(
         idb: &pcap_parser::InterfaceDescriptionBlock<'_>,
         big_endian: bool,
-    ) -> Option<Link> {
-        let mut per_second = Some(1_000_000u64);
+    ) -> Result<Link, Option<u8>> {
+        let mut per_second = 1_000_000u64;
         let mut offset_s = 0;
         for option in &idb.options {
-            let value = option.as_bytes().ok()?;
+            let value = option.as_bytes().map_err(|_| None)?;
             match option.code {
                 pcap_parser::OptionCode::IfTsresol => {
-                    let &[resolution] = value else { return None };
+                    let &[resolution] = value else {
+                        return Err(None);
+                    };
                     let exponent = u32::from(resolution & 0x7f);
                     per_second = match resolution & 0x80 {
                         0 => 10u64.checked_pow(exponent),
                         _ => 2u64.checked_pow(exponent),
-                    };
+                    }
+                    .ok_or(Some(resolution))?;
                 }
                 pcap_parser::OptionCode::IfTsoffset => {
-                    let bytes = <[u8; 8]>::try_from(value).ok()?;
+                    let bytes = <[u8; 8]>::try_from(value).map_err(|_| None)?;
                     offset_s = match big_endian {
                         true => i64::from_be_bytes(bytes),
                         false => i64::from_le_bytes(bytes),
@@ -223,10 +240,9 @@ impl Link {
                 _ => {}
             }
         }
-        // A resolution beyond 64 bits is damage.
-        Some(Link {
+        Ok(Link {
             kind: idb.linktype,
-            per_second: per_second?,
+            per_second,
             offset_s,
         })
     }
@@ -242,6 +258,8 @@ struct State {
     first: Option<Stamp>,
     last: Stamp,
     capture: Capture,
+    /// The `if_tsresol` byte of an interface whose clock is too fine, once one is met.
+    resolution: Option<u8>,
 }
 
 impl State {
@@ -278,7 +296,13 @@ impl State {
                 return Some(());
             }
             PcapBlockOwned::NG(Block::InterfaceDescription(idb)) => {
-                self.links.push(Link::of_interface(idb, self.big_endian)?);
+                match Link::of_interface(idb, self.big_endian) {
+                    Ok(link) => self.links.push(link),
+                    Err(resolution) => {
+                        self.resolution = resolution;
+                        return None;
+                    }
+                }
                 return Some(());
             }
             PcapBlockOwned::NG(Block::EnhancedPacket(epb)) => {

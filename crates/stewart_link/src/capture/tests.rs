@@ -323,12 +323,16 @@ fn pcapng_clocks_of_powers_of_two_and_offsets_in_either_byte_order_are_read() {
     let file = pcapng_clocked(true, 3, -5, &[(1000, udp4(b"a", 1)), (1250, udp4(b"b", 1))]);
     let c = read(file.as_slice()).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(c.datagrams[1].time_s, 0.25);
-    // A resolution beyond 64 bits is damage, named.
-    let file = pcapng_clocked(false, 0x80 | 70, 0, &[(1, udp4(b"a", 1))]);
-    assert!(matches!(
-        read(file.as_slice()),
-        Err(CaptureError::Damaged { .. })
-    ));
+    // A resolution beyond 64 bits is refused as that, naming it (it was called damage).
+    for byte in [0x80 | 70, 30] {
+        let file = pcapng_clocked(false, byte, 0, &[(1, udp4(b"a", 1))]);
+        let e = read(file.as_slice()).map(|_| ()).map_err(|e| e.to_string());
+        let expected = if byte == 30 { "10^-30 s" } else { "2^-70 s" };
+        assert!(
+            e.as_ref().is_err_and(|e| e.contains(expected)),
+            "{byte:#x}: {e:?}"
+        );
+    }
 }
 
 #[test]

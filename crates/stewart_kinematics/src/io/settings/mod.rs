@@ -583,10 +583,12 @@ pub fn apply_all<'a>(
                 })
             };
             if let Some(done) = worded {
-                // As typed; spaces alone shown between backticks (else nothing would show).
-                let typed = match value.trim() {
-                    "" => format!("`{value}`"),
-                    words => words.to_owned(),
+                // As typed; between backticks when spaces at an end are part of it (a
+                // template keeps its end), else they would not show.
+                let typed = if value.trim() == value {
+                    value.to_owned()
+                } else {
+                    format!("`{value}`")
                 };
                 done.map_err(|(key, reason)| SettingError::Invalid {
                     key,
