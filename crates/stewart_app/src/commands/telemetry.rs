@@ -170,15 +170,18 @@ fn write_rows(heard: &Heard, out: Option<&Destination>) -> Result<()> {
     }
     let text = csv.into_string();
     output::emit_with(Some(out), |w| w.write_all(text.as_bytes())).or_else(|e| {
-        // A session is not lost with its output (a pipe's reader gone): kept beside.
+        // A session is not lost with its output (a pipe's reader gone, a stop while waiting
+        // for one): kept beside, written whatever stop was asked for.
         let kept =
             std::env::temp_dir().join(format!("stewart-telemetry-{}.csv", std::process::id()));
-        output::write_atomically(&kept, text.as_bytes())?;
-        bail!(
-            "{e:#}; the session's {} rows are kept in `{}`",
-            heard.rows.len(),
-            kept.display()
-        )
+        match std::fs::write(&kept, text.as_bytes()) {
+            Ok(()) => bail!(
+                "{e:#}; the session's {} rows are kept in `{}`",
+                heard.rows.len(),
+                kept.display()
+            ),
+            Err(_) => Err(e),
+        }
     })
 }
 

@@ -211,6 +211,7 @@ fn switches_quotes_orders_and_addresses_read_the_same_everywhere() {
         ),
         ("link.address=nothost", "`nothost` is not an address"),
         ("link.address=[::1]", "it has no `:PORT`"),
+        ("link.address=udp:1.2.3.4:99", "write HOST:PORT alone"),
     ] {
         let o = stewart(&["settings", "--set", set]);
         assert_eq!(o.status.code(), Some(2), "{set}");

@@ -215,3 +215,39 @@ fn a_capture_with_a_long_silence_is_read_at_once_and_nothing_unreadable_is_writt
     );
     assert!(!out.exists());
 }
+
+/// Stopped while waiting for a named pipe's reader, a session is kept in a file it names
+/// (the rows once went with the stop).
+#[test]
+fn a_session_stopped_while_its_pipe_waits_for_a_reader_is_kept() {
+    let dir = tempdir();
+    let capture = dir.path().join("session.pcap");
+    let file = pcap_to_ports(|k| forza(k).into_iter().map(|d| (5300, d)).collect());
+    std::fs::write(&capture, file).unwrap_or_else(|e| panic!("{e}"));
+    let fifo = dir.path().join("rows.csv");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo");
+    let telemetry = crate::watched::Watched::spawn(
+        Command::new(env!("CARGO_BIN_EXE_stewart"))
+            .args(["telemetry", "--input"])
+            .arg(&capture)
+            .arg("--out")
+            .arg(&fifo),
+    );
+    telemetry.wait_for("waiting for a reader of");
+    let sent = Command::new("kill")
+        .args(["-INT", &telemetry.id().to_string()])
+        .status();
+    assert!(sent.is_ok_and(|s| s.success()));
+    let o = telemetry.finish();
+    let said = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{said}");
+    let kept = said
+        .split("rows are kept in `")
+        .nth(1)
+        .and_then(|rest| rest.split('`').next())
+        .unwrap_or_else(|| panic!("no file named: {said}"));
+    let rows = std::fs::read_to_string(kept).unwrap_or_default();
+    let _ = std::fs::remove_file(kept);
+    assert_eq!(rows.lines().count(), 301, "{said}");
+}

@@ -214,9 +214,14 @@ fn address_problem(address: &str) -> Option<String> {
     else {
         return not("it has no `:PORT`".to_owned());
     };
+    let bracketed = host.starts_with('[') && host.ends_with(']');
     let host = host.trim_start_matches('[').trim_end_matches(']');
     if host.is_empty() || host.contains(char::is_whitespace) {
         return not("it names no host".to_owned());
+    }
+    // `udp:1.2.3.4:99`: a scheme, or an IPv6 address outside its brackets.
+    if host.contains(':') && !bracketed {
+        return not("write HOST:PORT alone (an IPv6 address between [ ])".to_owned());
     }
     match port.parse::<u16>() {
         Ok(0) => not("port 0 names no peer".to_owned()),

@@ -70,7 +70,7 @@ pub enum SamplingError {
     TooFewSamples(u64),
     /// Samples so close that their times cannot be told apart at that distance from zero.
     #[error(
-        "the time step {step:e} s is too fine to be told apart from the times around {at:e} s (at most 1e10 steps per unit of time from zero): use fewer `samples` or a `start_s` nearer 0"
+        "the time step {step:e} s is too fine to be told apart from the times around {at:e} s (fewer than 1e10 steps per unit of time from zero): use fewer `samples` or a `start_s` nearer 0"
     )]
     TooFine {
         /// The step, seconds.
@@ -232,7 +232,7 @@ impl Motion {
     /// What `check` judges: the samples, and for keys sampled at their own times but
     /// joined by curves (cubic, smoothstep: a spline overshoots between rows) also every
     /// instant the link plays at `link_rate_hz` from the first key, so that what is judged
-    /// is what plays. An instant within a quarter period of a key is left to the key (the
+    /// is what plays (more finely spread where that would be over [`MAX_SAMPLES`]). An instant within a quarter period of a key is left to the key (the
     /// differences that judge speed, acceleration and jerk need steps of that order).
     pub fn samples_judged(&self, link_rate_hz: f64) -> Samples {
         let curved = match &self.trajectory {
@@ -245,9 +245,15 @@ impl Motion {
             return self.sample();
         };
         let (first, last) = keys.time_span();
-        let period = 1.0 / link_rate_hz.max(1e-3);
+        if !(link_rate_hz.is_finite() && link_rate_hz > 0.0) {
+            return self.sample();
+        }
+        // A motion longer than the most samples judged at that rate is judged as finely as
+        // they allow (still between the rows, never at the rows alone).
+        let rate = link_rate_hz.min((MAX_SAMPLES - keys.keys().len()) as f64 / (last - first));
+        let period = 1.0 / rate;
         let ticks = ((last - first) / period).floor();
-        if !(link_rate_hz.is_finite() && ticks.is_finite() && ticks < MAX_SAMPLES as f64) {
+        if !(ticks.is_finite() && ticks >= 0.0) {
             return self.sample();
         }
         let mut times: Vec<f64> = Vec::with_capacity(keys.keys().len() + ticks as usize + 1);
