@@ -212,6 +212,8 @@ fn switches_quotes_orders_and_addresses_read_the_same_everywhere() {
         ("link.address=nothost", "`nothost` is not an address"),
         ("link.address=[::1]", "it has no `:PORT`"),
         ("link.address=udp:1.2.3.4:99", "write HOST:PORT alone"),
+        ("link.address=[127.0.0.1]:9", "is not an IPv6 address"),
+        ("link.address=[::1]]:9", "is not an IPv6 address"),
     ] {
         let o = stewart(&["settings", "--set", set]);
         assert_eq!(o.status.code(), Some(2), "{set}");

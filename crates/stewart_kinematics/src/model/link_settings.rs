@@ -214,14 +214,20 @@ fn address_problem(address: &str) -> Option<String> {
     else {
         return not("it has no `:PORT`".to_owned());
     };
-    let bracketed = host.starts_with('[') && host.ends_with(']');
-    let host = host.trim_start_matches('[').trim_end_matches(']');
+    // One pair of brackets at most, around the whole host.
+    let inside = host.strip_prefix('[').and_then(|h| h.strip_suffix(']'));
+    let bracketed = inside.is_some();
+    let host = inside.unwrap_or(host);
     if host.is_empty() || host.contains(char::is_whitespace) {
         return not("it names no host".to_owned());
     }
-    // `udp:1.2.3.4:99`: a scheme, or an IPv6 address outside its brackets.
-    if host.contains(':') && !bracketed {
+    // `udp:1.2.3.4:99`: a scheme, or an IPv6 address outside its brackets; between
+    // brackets goes an IPv6 address and nothing else.
+    if (host.contains(':') || host.contains(['[', ']'])) && !bracketed {
         return not("write HOST:PORT alone (an IPv6 address between [ ])".to_owned());
+    }
+    if bracketed && host.parse::<std::net::Ipv6Addr>().is_err() {
+        return not(format!("`{host}` between [ ] is not an IPv6 address"));
     }
     match port.parse::<u16>() {
         Ok(0) => not("port 0 names no peer".to_owned()),

@@ -77,7 +77,7 @@ pub enum CaptureError {
     BigEndianModified,
     /// An interface's clock finer than this reader counts (`if_tsresol`).
     #[error(
-        "the capture's interface counts time in units of {} s (if_tsresol byte {byte:#04x}), finer than this reader counts (at most 2^64 ticks a second)",
+        "the capture's interface counts time in units of {} s (if_tsresol byte {byte:#04x}), finer than this reader counts (at most 2^63 or 10^19 ticks a second)",
         if byte & 0x80 == 0 { format!("10^-{}", byte & 0x7f) } else { format!("2^-{}", byte & 0x7f) }
     )]
     Resolution {

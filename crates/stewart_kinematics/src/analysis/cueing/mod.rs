@@ -89,7 +89,7 @@ pub enum CueError {
     /// The samples' times too close for their distance from zero: the table written
     /// would not read back (see [`crate::model::trajectory::SamplingError::TooFine`]).
     #[error(
-        "the samples are {step:.3e} s apart on average, too fine to tell apart {at:.1} s from zero (fewer than 1e10 steps per unit of time from zero): the pose table written would not read back; start the times nearer 0"
+        "the samples are {step:.3e} s apart on average, too fine to tell apart at {at} s (fewer than 1e10 steps per unit of time from zero): the pose table written would not read back; space the samples more, or start the times nearer 0"
     )]
     TimesTooFine {
         /// The average step, seconds.

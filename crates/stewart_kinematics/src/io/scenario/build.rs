@@ -977,7 +977,7 @@ fn keys_sampling(
                 span,
                 key,
                 format!(
-                    "has times {step:.3e} s apart on average, too fine to tell apart {at:.1} s from zero (fewer than 1e10 steps per unit of time from zero): start the times nearer 0, or space them more"
+                    "has times {step:.3e} s apart on average, too fine to tell apart at {at} s (fewer than 1e10 steps per unit of time from zero): start the times nearer 0, or space them more"
                 ),
             );
         }
