@@ -48,24 +48,13 @@ pub(super) fn open_button(ui: &mut egui::Ui, exports: &mut Exports, t: Lang) {
     };
     // As wide as its widest words ("Exporting 100 %"): the toolbar's buttons after it stay
     // where they are while an export runs.
-    let widest = [
-        t.tr("export.open").to_owned(),
-        t.fmt("export.open_busy", &[("percent", &"100")]),
-    ]
-    .iter()
-    .map(|w| {
-        egui::WidgetText::from(w.as_str())
-            .into_galley(
-                ui,
-                Some(egui::TextWrapMode::Extend),
-                f32::INFINITY,
-                egui::TextStyle::Button,
-            )
-            .size()
-            .x
-    })
-    .fold(0.0, f32::max);
-    let width = widest + 2.0 * ui.spacing().button_padding.x;
+    let width = widgets::button_width_for(
+        ui,
+        &[
+            t.tr("export.open").to_owned(),
+            t.fmt("export.open_busy", &[("percent", &"100")]),
+        ],
+    );
     let button = egui::Button::selectable(exports.open, words).min_size(egui::vec2(width, 0.0));
     if ui
         .add(button)

@@ -13,21 +13,8 @@ pub(super) fn play_button(ui: &mut egui::Ui, playback: &mut Playback, t: Lang) {
         t.tr("playback.play")
     };
     // As wide as the wider of its two words: the toolbar does not move when it changes.
-    let widest = ["playback.play", "playback.pause"]
-        .map(|k| {
-            egui::WidgetText::from(t.tr(k))
-                .into_galley(
-                    ui,
-                    Some(egui::TextWrapMode::Extend),
-                    f32::INFINITY,
-                    egui::TextStyle::Button,
-                )
-                .size()
-                .x
-        })
-        .into_iter()
-        .fold(0.0, f32::max);
-    let width = widest + 2.0 * ui.spacing().button_padding.x;
+    let width =
+        super::widgets::button_width_for(ui, &[t.tr("playback.play"), t.tr("playback.pause")]);
     if ui
         .add(egui::Button::new(label).min_size(egui::vec2(width, 0.0)))
         .on_hover_text(t.tr("playback.key_space"))

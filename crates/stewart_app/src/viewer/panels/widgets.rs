@@ -370,3 +370,22 @@ pub(crate) fn range_bar(
         egui::Stroke::new(2.0, ui.visuals().strong_text_color()),
     );
 }
+
+/// The width of a button that fits the widest of `words` (so that it keeps one width when
+/// its words change), points.
+pub(crate) fn button_width_for<S: AsRef<str>>(ui: &egui::Ui, words: &[S]) -> f32 {
+    let widest = (words.iter())
+        .map(|w| {
+            egui::WidgetText::from(w.as_ref())
+                .into_galley(
+                    ui,
+                    Some(egui::TextWrapMode::Extend),
+                    f32::INFINITY,
+                    egui::TextStyle::Button,
+                )
+                .size()
+                .x
+        })
+        .fold(0.0, f32::max);
+    widest + 2.0 * ui.spacing().button_padding.x
+}
