@@ -8,7 +8,7 @@ use stewart_kinematics::{
     model::layout::Layout,
 };
 
-use super::words::{architecture, finding, setting_label};
+use super::words::{architecture, finding, setting_label, time_text};
 use super::{Lang, catalogue, fill, keys};
 
 /// The `{name}` placeholders of a text.
@@ -193,6 +193,17 @@ fn english_findings_read_exactly_as_the_core_wrote_them() {
     for (f, line) in found.iter().zip(expected) {
         assert_eq!(finding(Lang::En, f), line, "{:?}", f.kind);
     }
+}
+
+#[test]
+fn a_findings_time_names_its_own_row() {
+    // Three decimals as before; a row 0.5 ms after another (a table's own rows are
+    // judged) gets the digits that tell them apart.
+    assert_eq!(time_text(5.0), "5.000");
+    assert_eq!(time_text(5.01 + 1e-12), "5.010");
+    assert_eq!(time_text(5.0005), "5.0005");
+    assert_eq!(time_text(1.062), "1.062");
+    assert_eq!(time_text(0.0000012), "0.000001");
 }
 
 #[test]

@@ -124,6 +124,18 @@ fn finding_key(kind: FindingKind) -> &'static str {
     }
 }
 
+/// A finding's time in seconds: three decimals, more (up to six) where the time has them,
+/// so that a table row 0.5 ms after another is not named by the other's time.
+pub(crate) fn time_text(t: f64) -> String {
+    let mut text = format!("{t:.6}");
+    if let Some(dot) = text.find('.') {
+        while text.len() > dot + 4 && text.ends_with('0') {
+            text.pop();
+        }
+    }
+    text
+}
+
 /// A diagnostics finding in words (the English of `stewart check`).
 pub(crate) fn finding(lang: Lang, f: &Finding) -> String {
     let number = |k: usize| f.legs.get(k).copied().unwrap_or(0);
@@ -140,16 +152,13 @@ pub(crate) fn finding(lang: Lang, f: &Finding) -> String {
         lang.fmt(
             "finding.span_many",
             &[
-                ("from", &format!("{:.3}", f.first_time)),
-                ("to", &format!("{:.3}", f.last_time)),
+                ("from", &time_text(f.first_time)),
+                ("to", &time_text(f.last_time)),
                 ("count", &f.count),
             ],
         )
     } else {
-        lang.fmt(
-            "finding.span_one",
-            &[("at", &format!("{:.3}", f.first_time))],
-        )
+        lang.fmt("finding.span_one", &[("at", &time_text(f.first_time))])
     };
     let over = -f.margin;
     let (worst, limit) = (f.worst_value, f.limit);
@@ -165,7 +174,7 @@ pub(crate) fn finding(lang: Lang, f: &Finding) -> String {
         ("a", &number(0)),
         ("b", &number(1)),
         ("span", &span),
-        ("when", &format!("{:.3}", f.worst_time)),
+        ("when", &time_text(f.worst_time)),
         ("limit", &limit),
         ("limit_m", &format!("{limit:.4}")),
         ("limit_mm", &format!("{:.1}", limit * 1e3)),

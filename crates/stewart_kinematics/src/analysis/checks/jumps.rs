@@ -22,10 +22,16 @@ fn interval_scales(times: &[f64]) -> Option<Vec<f64>> {
     if lo.is_nan() || lo <= 0.0 || hi <= lo * (1.0 + 1e-6) {
         return None;
     }
-    let mut sorted = intervals.clone();
-    sorted.sort_by(f64::total_cmp);
-    let typical = sorted[sorted.len() / 2];
+    let typical = typical_interval(times)?;
     Some(intervals.iter().map(|h| typical / h).collect())
+}
+
+/// The interval at which [`jumps_in`] judges every step: the median of `times`' intervals
+/// (`None` for fewer than two times).
+pub(crate) fn typical_interval(times: &[f64]) -> Option<f64> {
+    let mut sorted: Vec<f64> = times.windows(2).map(|w| w[1] - w[0]).collect();
+    sorted.sort_by(f64::total_cmp);
+    sorted.get(sorted.len() / 2).copied()
 }
 
 /// One finding per leg that jumps, with the first and last jump and the largest.
@@ -83,8 +89,8 @@ pub(crate) fn check_series(
     findings
 }
 
-/// One step judged a jump: in which column, the sample it ends at, its size (at the
-/// typical interval) and the most it could have been.
+/// One step judged a jump: in which column, the sample it ends at, its size over its own
+/// interval and the most the steps around it allow over that interval.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Jump {
     pub column: usize,
@@ -106,12 +112,11 @@ pub(crate) fn jumps_in<'a>(
     // be at the typical interval: a motion sampled more sparsely is no jump.
     let scale = if n < 2 { None } else { interval_scales(times) };
     (0..6).flat_map(move |column| {
+        let factor = |k: usize| scale.as_ref().map_or(1.0, |c| c[k]);
         let steps: Vec<f64> = values
             .windows(2)
             .enumerate()
-            .map(|(k, pair)| {
-                (pair[1][column] - pair[0][column]).abs() * scale.as_ref().map_or(1.0, |c| c[k])
-            })
+            .map(|(k, pair)| (pair[1][column] - pair[0][column]).abs() * factor(k))
             .collect();
         (0..steps.len())
             .filter_map(|k| {
@@ -121,11 +126,13 @@ pub(crate) fn jumps_in<'a>(
                     return None;
                 }
                 let limit = ratio * median_of_neighbours(&steps, k);
-                (!limit.is_nan() && step > limit).then_some(Jump {
+                // Judged at the typical interval, told as the step really taken over
+                // its own interval and the most the steps around allow over it.
+                (!limit.is_nan() && step > limit).then(|| Jump {
                     column,
                     after: k + 1,
-                    step,
-                    limit: limit.max(floor),
+                    step: step / factor(k),
+                    limit: limit.max(floor) / factor(k),
                 })
             })
             .collect::<Vec<_>>()
@@ -225,5 +232,24 @@ mod uneven_tests {
         let found = check(&times, &jumped, &settings);
         assert_eq!(found.len(), 6, "{found:?}");
         assert!(found.iter().all(|f| f.first_time == times[130]));
+    }
+
+    #[test]
+    fn a_jump_over_a_short_interval_is_told_as_the_step_it_really_is() {
+        // Rows 10 ms apart and one row 0.5 ms after another, 6 cm off: judged at the
+        // typical interval (20 times the step), but told as the 6 cm it is, beside the
+        // most the steps around allow over 0.5 ms.
+        let mut times: Vec<f64> = (0..100).map(|k| k as f64 * 0.01).collect();
+        times.insert(51, 0.5005);
+        let mut values: Vec<[f64; 6]> = times.iter().map(|t| [0.01 * t; 6]).collect();
+        values[51] = [0.01 * 0.5005 + 0.06; 6];
+        let found = check(&times, &values, &CheckSettings::default());
+        assert_eq!(found.len(), 6, "{found:?}");
+        let f = &found[0];
+        assert_eq!(f.worst_time, 0.5005);
+        assert!((f.worst_value - 0.06).abs() < 1e-5, "{}", f.worst_value);
+        // 5 × the 0.1 mm the steps around move in 10 ms, over a twentieth of that
+        // interval: 25 µm.
+        assert!((f.limit - 2.5e-5).abs() < 1e-9, "{}", f.limit);
     }
 }

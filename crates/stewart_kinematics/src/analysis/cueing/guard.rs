@@ -22,7 +22,9 @@
 //! motion back onto it as fast as the limits allow.
 
 use crate::analysis::checks::CheckSettings;
-use crate::analysis::checks::jumps::jumps_in;
+mod smoothing;
+
+use crate::analysis::checks::jumps::{Jump, jumps_in, typical_interval};
 use crate::analysis::workspace;
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
@@ -67,6 +69,9 @@ struct Place<'a> {
     /// Near a jump found before (how many times): every acceleration changes smoothly,
     /// more slowly each time.
     careful: u8,
+    /// The interval at which `check` judges every step for jumps (a step over a shorter
+    /// interval counts for more).
+    typical: f64,
 }
 
 /// What became of a planned pose.
@@ -161,24 +166,23 @@ impl ActuatorGuard {
     pub fn guard_all(&self, times: &[f64], planned: &[Pose]) -> Guarded {
         let n = planned.len().min(times.len());
         let mut careful = vec![0u8; n];
+        let times = &times[..n];
         let mut out = self.guard_with(times, planned, &careful);
         for pass in 0..=JUMP_PASSES {
-            // Judged as `check` will read them: from their table rows.
-            let values: Vec<[f64; 6]> = (out.poses.iter())
-                .map(|p| {
-                    let read = Pose::from_row(&p.to_row());
-                    self.geometry
-                        .actuator_values_at(&read)
-                        .unwrap_or([f64::NAN; 6])
-                })
-                .collect();
-            let jumps: Vec<_> =
-                jumps_in(&times[..n], &values, self.jump_ratio, self.jump_floor).collect();
-            if jumps.is_empty() || pass == JUMP_PASSES {
-                out.jumps_left = jumps.len();
+            // Judged as `check` will read them: from their table rows. Each jump is first
+            // smoothed where it is; only where that cannot keep the limits is the motion
+            // around it guarded again.
+            let jumps: Vec<_> = self.jumps_of(times, &out.poses);
+            let left = if jumps.is_empty() {
+                0
+            } else {
+                self.smooth_jumps(times, &mut out.poses, &jumps)
+            };
+            if left == 0 || pass == JUMP_PASSES {
+                out.jumps_left = left;
                 break;
             }
-            for jump in jumps {
+            for jump in self.jumps_of(times, &out.poses) {
                 let from = jump.after.saturating_sub(3 * SMOOTH_SAMPLES as usize);
                 let to = (jump.after + 3 * SMOOTH_SAMPLES as usize).min(n);
                 for c in &mut careful[from..to] {
@@ -187,7 +191,18 @@ impl ActuatorGuard {
             }
             out = self.guard_with(times, planned, &careful);
         }
+        // Every pose given otherwise than planned, the ones smoothed included.
+        let changed = (out.poses.iter().zip(planned))
+            .filter(|(a, b)| a != b)
+            .count();
+        out.held = changed.saturating_sub(out.stopped);
         out
+    }
+
+    /// The steps of `poses` at `times` that `check` would call jumps.
+    fn jumps_of(&self, times: &[f64], poses: &[Pose]) -> Vec<Jump> {
+        let values = self.values_as_read(poses);
+        jumps_in(times, &values, self.jump_ratio, self.jump_floor).collect()
     }
 
     /// [`ActuatorGuard::guard_all`] once, each sample marked in `careful` guarded
@@ -201,6 +216,7 @@ impl ActuatorGuard {
         // How far the last failure went back, and where it happened.
         let (mut span, mut failed_at) = (0usize, 0usize);
         let budget = WORK_PER_POSE * n + 1000;
+        let typical = typical_interval(&times[..n]).unwrap_or(0.0);
         let mut work = 0;
         let mut k = 0;
         while k < n {
@@ -212,6 +228,7 @@ impl ActuatorGuard {
                 times: &times[..n],
                 braking: k < brake_until,
                 careful: careful[k],
+                typical,
             };
             let wanted_before = (k > 0)
                 .then(|| self.geometry.actuator_values_at(&planned[k - 1]).ok())
@@ -459,8 +476,14 @@ impl ActuatorGuard {
         };
         if place.careful > 0 {
             // Near a jump found before, each step at most twice the last (or the check's
-            // floor): a motion that grows so is no jump, whatever limits are set.
-            let grow = (ROUNDING_KEPT * self.jump_floor / dt).max(2.0 * s0.abs());
+            // floor, as `check` judges a step: at the typical interval): a motion that
+            // grows so is no jump, whatever limits are set.
+            let judged_over = if place.typical > 0.0 {
+                place.typical
+            } else {
+                dt
+            };
+            let grow = (ROUNDING_KEPT * self.jump_floor / judged_over).max(2.0 * s0.abs());
             keep(-grow, grow);
         }
         if let Some(v) = self.speed {

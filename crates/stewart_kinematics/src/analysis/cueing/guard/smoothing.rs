@@ -1,0 +1,153 @@
+//! Jumps smoothed where they are: a step `check` would call a jump (much larger than the
+//! steps around it) is spread over the samples around it.
+//!
+//! The planner's re-solves can leave a step of a few tenths of a millimetre among steps
+//! ten times smaller: within every limit, but a jump by `check`'s rule. The actuator
+//! values over a window around it are replaced by the cubic (Hermite) that joins the
+//! window's ends with the motion's own values and slopes there, so the steps change
+//! gradually; the poses are found from those values by forward kinematics. A window is
+//! kept only when every pose keeps every limit, the speeds and accelerations in and
+//! around it (as `check` measures them) stay within theirs and no jump is left near it;
+//! otherwise a wider window is tried. Nothing outside the window changes, so one
+//! smoothing cannot start a jump elsewhere.
+
+use super::ActuatorGuard;
+use crate::analysis::checks::jumps::{Jump, jumps_in};
+use crate::analysis::checks::rates::{leg_accelerations, leg_speeds};
+use crate::model::pose::Pose;
+
+/// Samples on each side of a jump in the narrowest window tried; each wider one doubles.
+const NARROWEST: usize = 3;
+
+/// Windows tried per jump.
+const WIDENINGS: u32 = 4;
+
+/// Samples on each side of a window judged again for jumps (the jump rule's neighbours).
+const JUDGED_AROUND: usize = 4;
+
+impl ActuatorGuard {
+    /// The actuator values of `poses` as `check` reads them (from their table rows; NaN
+    /// where a row reads back to no pose).
+    pub(super) fn values_as_read(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
+        poses
+            .iter()
+            .map(|p| {
+                let read = Pose::from_row(&p.to_row());
+                self.geometry
+                    .actuator_values_at(&read)
+                    .unwrap_or([f64::NAN; 6])
+            })
+            .collect()
+    }
+
+    /// Smooth each of `jumps` in `poses` (at `times`) where a window allows; the jumps
+    /// left, as `check` would find them.
+    pub(super) fn smooth_jumps(&self, times: &[f64], poses: &mut [Pose], jumps: &[Jump]) -> usize {
+        for jump in jumps {
+            let values = self.values_as_read(poses);
+            // Already smoothed with an earlier one.
+            if !self
+                .jumps_near(times, &values, jump.after, jump.after)
+                .is_empty()
+            {
+                self.smooth_one(times, poses, jump.after);
+            }
+        }
+        let values = self.values_as_read(poses);
+        jumps_in(times, &values, self.jump_ratio, self.jump_floor).count()
+    }
+
+    /// The jumps of `values` ending within `JUDGED_AROUND` samples of `from ..= to`.
+    fn jumps_near(&self, times: &[f64], values: &[[f64; 6]], from: usize, to: usize) -> Vec<Jump> {
+        let lo = from.saturating_sub(JUDGED_AROUND);
+        let hi = to + JUDGED_AROUND;
+        jumps_in(times, values, self.jump_ratio, self.jump_floor)
+            .filter(|j| j.after >= lo && j.after <= hi)
+            .collect()
+    }
+
+    /// Spread the jump ending at sample `after` over the narrowest window that keeps
+    /// every limit and leaves no jump near it; `poses` unchanged when none does.
+    fn smooth_one(&self, times: &[f64], poses: &mut [Pose], after: usize) {
+        let n = poses.len();
+        for widening in 0..WIDENINGS {
+            let half = NARROWEST << widening;
+            // The window's ends a and b stay; a sample before a and after b give the
+            // slopes there, and the differences judged reach one sample further.
+            let (Some(a), b) = (after.checked_sub(half), after + half - 1) else {
+                return;
+            };
+            if a < 2 || b + 3 > n {
+                return;
+            }
+            let Some(window) = self.window_poses(times, poses, a, b) else {
+                continue;
+            };
+            let mut tried = poses.to_vec();
+            tried[a + 1..b].copy_from_slice(&window);
+            if self.window_keeps_the_limits(times, &tried, a, b) {
+                poses[a + 1..b].copy_from_slice(&window);
+                return;
+            }
+        }
+    }
+
+    /// The poses strictly between samples `a` and `b` whose actuator values follow the
+    /// cubic joining the values and slopes at `a` and `b`; `None` when one of them is no
+    /// pose within the limits.
+    fn window_poses(&self, times: &[f64], poses: &[Pose], a: usize, b: usize) -> Option<Vec<Pose>> {
+        let q = |k: usize| self.geometry.actuator_values_at(&poses[k]).ok();
+        let (qa0, qa, qb, qb1) = (q(a - 1)?, q(a)?, q(b)?, q(b + 1)?);
+        let (ta, tb) = (times[a], times[b]);
+        let h = tb - ta;
+        let slope_a: [f64; 6] = std::array::from_fn(|i| (qa[i] - qa0[i]) / (ta - times[a - 1]));
+        let slope_b: [f64; 6] = std::array::from_fn(|i| (qb1[i] - qb[i]) / (times[b + 1] - tb));
+        let mut near = poses[a];
+        let mut window = Vec::with_capacity(b - a - 1);
+        for &t in &times[a + 1..b] {
+            let u = (t - ta) / h;
+            let (u2, u3) = (u * u, u * u * u);
+            let (h00, h10, h01, h11) = (
+                2.0 * u3 - 3.0 * u2 + 1.0,
+                u3 - 2.0 * u2 + u,
+                -2.0 * u3 + 3.0 * u2,
+                u3 - u2,
+            );
+            let values: [f64; 6] = std::array::from_fn(|i| {
+                h00 * qa[i] + h10 * h * slope_a[i] + h01 * qb[i] + h11 * h * slope_b[i]
+            });
+            if values
+                .iter()
+                .any(|v| *v < self.range.0 || *v > self.range.1)
+            {
+                return None;
+            }
+            near = self.pose_of(&values, &near)?;
+            window.push(near);
+        }
+        Some(window)
+    }
+
+    /// Whether `poses`, changed between samples `a` and `b`, keep the speed and
+    /// acceleration limits wherever the change reaches (as `check` measures them from the
+    /// table rows) and leave no jump near the window.
+    fn window_keeps_the_limits(&self, times: &[f64], poses: &[Pose], a: usize, b: usize) -> bool {
+        let values = self.values_as_read(poses);
+        if !self.jumps_near(times, &values, a, b).is_empty() {
+            return false;
+        }
+        // Differences at a − 1 ..= b + 1 (every stencil touching the window), from the
+        // samples a − 2 ..= b + 2 (all interior to that slice).
+        let (from, to) = (a - 2, b + 3);
+        let (t, v) = (&times[from..to], &values[from..to]);
+        let within = |series: Vec<[f64; 6]>, limit: Option<f64>| {
+            limit.is_none_or(|max| {
+                series[1..series.len() - 1]
+                    .iter()
+                    .flatten()
+                    .all(|x| x.abs() <= max)
+            })
+        };
+        within(leg_speeds(t, v), self.speed) && within(leg_accelerations(t, v), self.accel)
+    }
+}
