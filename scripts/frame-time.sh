@@ -4,9 +4,14 @@
 # (default 20). Prints the adaptive quality's figures and, beside them, the full picture
 # on every frame (STEWART_VIEW_QUALITY=full); exits 1 when the adaptive mean is over
 # 33 ms or its 95th percentile over 50 ms. Needs xvfb-run (Debian: xvfb).
+# Arguments after SECONDS go to `stewart view` (default `--preset seed`), for example
+# `--preset seed --workspace`, or `--scenario big-cad-part.toml`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-20}"
+shift || true
+view_args=("$@")
+[ ${#view_args[@]} -gt 0 ] || view_args=(--preset seed)
 command -v xvfb-run >/dev/null || { echo "frame-time: xvfb-run not found (apt-get install xvfb)" >&2; exit 1; }
 cargo build --release -q -p stewart_app
 S="$PWD/target/release/stewart"
@@ -18,8 +23,9 @@ mkdir -m 700 "$XDG_RUNTIME_DIR"
 # statistics are printed when the window closes).
 measure() {
   STEWART_VIEW_QUALITY="$1" xvfb-run -a -s "-screen 0 1920x1080x24" bash -c '
-    "$0" view --fresh --preset seed --size 1280x720 --frame-stats 2>"$1/stats" &
-    pid=$!; sleep "$2"; kill -TERM "$pid"; wait "$pid"' "$S" "$dir" "$seconds"
+    S=$0 dir=$1 seconds=$2; shift 2
+    "$S" view --fresh --size 1280x720 --frame-stats "$@" 2>"$dir/stats" &
+    pid=$!; sleep "$seconds"; kill -TERM "$pid"; wait "$pid"' "$S" "$dir" "$seconds" "${view_args[@]}"
   grep "frames:" "$dir/stats"
 }
 echo "adaptive (the default):"

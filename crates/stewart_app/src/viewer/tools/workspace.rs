@@ -8,6 +8,13 @@
 //! [`WorkspaceControl`]'s) and the job moves to the newest. The UI thread only swaps in
 //! finished results (`poll`, never blocking); the meshes are built on the job too, so the
 //! UI's share is uploading them once.
+//!
+//! While the request changes from frame to frame (playback with the surface following
+//! the pose, a slider dragged) the frames come first: each request is computed coarse
+//! only, on one thread, and the next not before [`REST_AFTER_MOVING`] times as long as
+//! the last took has passed, so the surface's work takes at most a quarter of one core
+//! from the drawing (on a software rasteriser, the drawing is the CPU's too). Once the
+//! request stays the same from one frame to the next, it is refined with every core.
 
 use std::sync::Arc;
 use std::sync::atomic::Ordering;
@@ -29,6 +36,9 @@ pub(crate) const FINE_COLUMNS: usize = 512;
 /// Columns a side of the surface mesh drawn at most (every other column of the
 /// refinement).
 pub(crate) const DRAWN_COLUMNS: usize = 256;
+
+/// While moving, the pause after a computation, as a multiple of the time it took.
+pub(crate) const REST_AFTER_MOVING: u32 = 3;
 
 /// Cells a side of the conditioning slice with a workspace of `columns` a side: 40 with
 /// the coarse pass, 160 with the refinement (each cell needs a Jacobian's singular values,
@@ -100,6 +110,16 @@ pub(crate) struct Outcome {
     pub(crate) elapsed: Duration,
     /// Whether this is the refinement (else the coarse first look).
     pub(crate) refined: bool,
+    /// The threads it was computed on.
+    pub(crate) threads: usize,
+}
+
+/// A request as sent to the job: refined after its coarse result, or (while the request
+/// changes every frame) coarse only, on one thread.
+#[derive(Clone, Debug, PartialEq)]
+struct Sent {
+    request: Request,
+    refine: bool,
 }
 
 /// The conditioning slice's mesh and its counts.
@@ -137,11 +157,18 @@ pub struct WorkspaceTool {
     /// Why the last request could not be computed.
     pub(crate) error: Option<ViewerError>,
     /// The request last sent.
-    sent: Option<Request>,
+    sent: Option<Sent>,
     /// A newer request waiting for the one in flight to give its first (coarse) result: a
     /// pose that moves every frame (playback on a slow machine) would otherwise cancel
-    /// every computation before it gave anything.
-    pending: Option<Request>,
+    /// every computation before it gave anything. While moving, it also waits for the
+    /// rest after the last computation.
+    pending: Option<Sent>,
+    /// The request asked for at the last frame (one that differs is moving).
+    asked: Option<Request>,
+    /// While moving, no computation starts before this.
+    rest_until: Option<Instant>,
+    /// The one-thread pool moving requests are computed on (made at the first).
+    one_thread: Option<Arc<rayon::ThreadPool>>,
     job: Job<Result<Outcome, ViewerError>>,
     resolutions: [usize; 2],
 }
@@ -177,33 +204,61 @@ impl WorkspaceTool {
             error: None,
             sent: None,
             pending: None,
+            asked: None,
+            rest_until: None,
+            one_thread: None,
             job: Job::new("workspace"),
             resolutions: [coarse, fine],
         }
     }
 
-    /// Ask for `request` unless it was the last one asked: a refinement in flight for an
-    /// older request stops, and the job takes this one next; a request whose first result
-    /// has not come yet is finished first (this one waits, replaced by any newer). Never
-    /// blocks.
+    /// Ask for `request` (once a frame while the surface is shown) unless it was the last
+    /// one asked: a refinement in flight for an older request stops, and the job takes
+    /// this one next; a request whose first result has not come yet is finished first
+    /// (this one waits, replaced by any newer). A request other than the last frame's is
+    /// moving: coarse only, on one thread, after the rest (see the module docs); one
+    /// asked again at the next frame is refined. Never blocks.
     pub(crate) fn request(&mut self, request: Request) {
-        if self.sent.as_ref() == Some(&request) {
+        let moving = self.asked.as_ref() != Some(&request);
+        self.asked = Some(request.clone());
+        let wanted = Sent {
+            request,
+            refine: !moving,
+        };
+        if self
+            .sent
+            .as_ref()
+            .is_some_and(|s| s.request == wanted.request && (s.refine || !wanted.refine))
+        {
             self.pending = None;
             return;
         }
-        if self.job.busy() && !self.first_result_in() {
-            self.pending = Some(request);
+        self.pending = Some(wanted);
+        self.start_pending();
+    }
+
+    /// Start the request waiting when the job may take it: the one in flight has given
+    /// its first result (or nothing runs) and, for a moving request, the rest is over.
+    fn start_pending(&mut self) {
+        let Some(wanted) = &self.pending else {
+            return;
+        };
+        if self.job.busy() && !self.first_result_in() && self.error.is_none() {
             return;
         }
-        self.pending = None;
-        self.start(request);
+        if !wanted.refine && self.rest_until.is_some_and(|at| Instant::now() < at) {
+            return;
+        }
+        if let Some(next) = self.pending.take() {
+            self.start(next);
+        }
     }
 
     /// Whether the request in flight has given its first (coarse) result.
     fn first_result_in(&self) -> bool {
         self.latest
             .as_ref()
-            .is_some_and(|o| Some(&o.request) == self.sent.as_ref())
+            .is_some_and(|o| self.sent.as_ref().is_some_and(|s| s.request == o.request))
     }
 
     /// Whether the surface shown was computed for another request than the newest (the
@@ -212,22 +267,41 @@ impl WorkspaceTool {
         let newest = self.pending.as_ref().or(self.sent.as_ref());
         self.latest
             .as_ref()
-            .is_some_and(|o| Some(&o.request) != newest)
+            .is_some_and(|o| newest.is_none_or(|s| s.request != o.request))
     }
 
-    /// Start computing `request`.
-    fn start(&mut self, request: Request) {
-        self.sent = Some(request.clone());
+    /// Start computing `sent`: coarse then refined, or coarse only on one thread.
+    fn start(&mut self, sent: Sent) {
         let [coarse, fine] = self.resolutions;
+        // A refinement of what is already shown coarse starts at the refinement.
+        let coarse_in = (self.latest.as_ref())
+            .is_some_and(|o| o.request == sent.request && o.resolution == coarse.min(fine));
+        let passes: Vec<usize> = match (sent.refine, coarse_in) {
+            (false, _) => vec![coarse.min(fine)],
+            (true, true) => vec![fine],
+            (true, false) => vec![coarse.min(fine), fine],
+        };
+        let pool = if sent.refine {
+            None
+        } else {
+            self.one_thread_pool()
+        };
+        let (request, refine) = (sent.request.clone(), sent.refine);
+        self.sent = Some(sent);
         self.job.start(move |worker| {
-            for (k, resolution) in [coarse.min(fine), fine].into_iter().enumerate() {
+            for resolution in passes {
                 if worker.cancelled() {
                     return;
                 }
                 let control = WorkspaceControl::stopped_by(worker.cancel_flag());
-                match compute(&request, resolution, slice_cells(resolution), &control) {
+                let run = || compute(&request, resolution, slice_cells(resolution), &control);
+                let result = match &pool {
+                    Some(pool) => pool.install(run),
+                    None => run(),
+                };
+                match result {
                     Ok(mut outcome) => {
-                        outcome.refined = k == 1;
+                        outcome.refined = refine && resolution == fine;
                         if !worker.send(Ok(outcome)) {
                             return;
                         }
@@ -243,10 +317,27 @@ impl WorkspaceTool {
         });
     }
 
+    /// The one-thread pool for moving requests (`None`, all cores, if it cannot be made).
+    fn one_thread_pool(&mut self) -> Option<Arc<rayon::ThreadPool>> {
+        if self.one_thread.is_none() {
+            self.one_thread = rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .thread_name(|_| "workspace-moving".to_owned())
+                .build()
+                .ok()
+                .map(Arc::new);
+        }
+        self.one_thread.clone()
+    }
+
     /// Take the newest finished result (older ones that arrived meanwhile are skipped).
     pub(crate) fn poll(&mut self) {
         match self.job.poll() {
             Some(Ok(Ok(outcome))) => {
+                if outcome.threads == 1 {
+                    self.rest_until =
+                        Instant::now().checked_add(outcome.elapsed * REST_AFTER_MOVING);
+                }
                 self.latest = Some(outcome);
                 self.error = None;
             }
@@ -256,26 +347,26 @@ impl WorkspaceTool {
         }
         // The request in flight gave its first result (or ended): the newest waiting one
         // goes next.
-        if (self.first_result_in() || !self.job.busy() || self.error.is_some())
-            && let Some(next) = self.pending.take()
-        {
-            self.start(next);
-        }
+        self.start_pending();
     }
 
     /// Whether the newest request is not yet refined.
     pub(crate) fn busy(&self) -> bool {
         self.pending.is_some()
-            || self.sent.is_some()
-                && !self
+            || self.sent.as_ref().is_some_and(|s| {
+                !self
                     .latest
                     .as_ref()
-                    .is_some_and(|o| o.refined && Some(&o.request) == self.sent.as_ref())
-                && self.error.is_none()
+                    .is_some_and(|o| o.refined && o.request == s.request)
+            }) && self.error.is_none()
     }
 
-    /// Wait until the newest request is refined (tests, screenshots), at most `limit`.
+    /// Wait until the newest request is refined (tests, screenshots), at most `limit`: the
+    /// last asked for is asked again, as at a frame where it stayed the same.
     pub(crate) fn wait(&mut self, limit: Duration) {
+        if let Some(asked) = self.asked.clone() {
+            self.request(asked);
+        }
         let start = Instant::now();
         while self.busy() && start.elapsed() < limit {
             self.poll();
@@ -393,6 +484,7 @@ pub(crate) fn compute(
         slice,
         elapsed: start.elapsed(),
         refined: false,
+        threads: rayon::current_num_threads(),
     })
 }
 
@@ -458,13 +550,20 @@ mod tests {
                 .as_ref()
                 .is_some_and(|o| !o.refined && o.request == first)
         );
-        // The geometry changes while the first refinement runs.
+        // The first is asked again at the next frame: refined; the geometry changes while
+        // that refinement runs.
+        tool.request(first.clone());
+        while !tool.job.busy() {
+            tool.poll();
+        }
         std::thread::sleep(Duration::from_millis(20));
         let second = request("seed", 10.0);
         tool.request(second.clone());
         let mut seen = Vec::new();
         let start = Instant::now();
         while tool.busy() && start.elapsed() < Duration::from_secs(120) {
+            // The second stays: asked again at every frame.
+            tool.request(second.clone());
             tool.poll();
             if let Some(o) = &tool.latest {
                 seen.push((o.request == first, o.refined));
@@ -477,7 +576,9 @@ mod tests {
             !seen.contains(&(true, true)),
             "the first request's refinement was shown"
         );
-        assert_eq!(tool.cancelled(), 1);
+        // The first's refinement, at least (a coarse pass that has just sent its result
+        // may be counted too).
+        assert!(tool.cancelled() >= 1);
         assert!(tool.error.is_none());
     }
 
@@ -510,6 +611,41 @@ mod tests {
         let o = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
         assert!(o.refined && o.request == request("paired", yaw));
         assert!(!tool.stale());
+    }
+
+    #[test]
+    fn a_request_changing_every_frame_is_computed_coarse_on_one_thread_with_rests() {
+        // Playback with the surface following the pose: the frames come first. Each
+        // changing request is computed coarse only, on one thread, and the next waits
+        // three times as long as the last took; once the request stays, it is refined on
+        // every core.
+        let mut tool = WorkspaceTool::with_resolutions(128, 256);
+        let mut yaw = 0.0;
+        let mut shown: Vec<Request> = Vec::new();
+        let start = Instant::now();
+        while shown.len() < 3 && start.elapsed() < Duration::from_secs(120) {
+            yaw += 0.5;
+            tool.request(request("paired", yaw));
+            tool.poll();
+            if let Some(o) = &tool.latest
+                && shown.last() != Some(&o.request)
+            {
+                shown.push(o.request.clone());
+                assert!(!o.refined && o.resolution == 128 && o.threads == 1, "{o:?}");
+                // The newest request waits for the rest.
+                let rest = tool.rest_until.unwrap_or_else(|| panic!("no rest"));
+                assert!(Instant::now() < rest && tool.pending.is_some());
+                assert!(!tool.job.busy());
+            }
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        assert_eq!(shown.len(), 3);
+        // The pose rests: the same request at the next frame is refined on every core.
+        tool.request(request("paired", yaw));
+        tool.wait(Duration::from_secs(120));
+        let o = tool.latest.as_ref().unwrap_or_else(|| panic!("no result"));
+        assert!(o.refined && o.resolution == 256 && o.request == request("paired", yaw));
+        assert_eq!(o.threads, rayon::current_num_threads());
     }
 
     #[test]
