@@ -18,6 +18,7 @@ mod motion;
 mod playback;
 pub(crate) mod plot;
 mod plot_legend;
+pub(crate) mod plot_picture;
 pub(crate) mod plot_ticks;
 mod reach;
 mod scenario;
@@ -349,6 +350,7 @@ pub fn viewer_ui(ui: &mut egui::Ui, state: &mut ViewerState) {
             rolling: state.plot_rolls(),
             commanded: state.link.commanded_pose().is_some(),
             background: !state.quality.software,
+            pictured: state.quality.software,
         };
         let shown = plot_panel.show(ui, |ui| {
             plot::show(ui, &state.doc, &mut state.playback, &mut state.look, shows)

@@ -4,6 +4,8 @@
 
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
+
+use super::plot_picture::{Pictured, Session};
 use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::words;
@@ -77,6 +79,9 @@ pub(crate) struct Shows {
     /// The plot's own darker background (left out on a software rasteriser, where a fill
     /// that large costs milliseconds a frame: the curves then lie on the panel's colour).
     pub(crate) background: bool,
+    /// The curves are shown from a picture the window draws while they stay the same
+    /// (a software rasteriser: see [`super::plot_picture`]).
+    pub(crate) pictured: bool,
 }
 
 /// Curve width in points (presentation mode: the projector's, twice as wide).
@@ -117,6 +122,7 @@ pub(crate) fn show(
         rolling,
         commanded,
         background,
+        pictured,
     } = shows;
     let size = ui.available_size();
     let space = ui.available_rect_before_wrap();
@@ -127,7 +133,10 @@ pub(crate) fn show(
         let mut placement = ui
             .allocate_ui(
                 egui::vec2((size.x - columns.width()).max(100.0), size.y),
-                |ui| plot(ui, doc, playback, look, [rolling, commanded, background]),
+                |ui| {
+                    let shows = [rolling, commanded, background, pictured];
+                    plot(ui, doc, playback, look, shows)
+                },
             )
             .inner;
         placement.legend = super::plot_legend::show(ui, &entries, columns, line_width(look));
@@ -164,7 +173,7 @@ fn plot(
     doc: &Document,
     playback: &mut Playback,
     look: &mut Look,
-    [rolling, commanded, background]: [bool; 3],
+    [rolling, commanded, background, pictured]: [bool; 4],
 ) -> PlotPlacement {
     let width = line_width(look);
     let scenario = doc.scenario();
@@ -211,8 +220,21 @@ fn plot(
     } else {
         scenario.motion.sampling.start()
     };
+    let (lines, data) = curves(doc, playback, [min, max], look, rolling);
+    // Shown from a picture where the window draws one (see `plot_picture`); never in
+    // rolling mode, where the curves change every frame.
+    let session = (pictured && !rolling)
+        .then(|| Session::new(data, ui.ctx().pixels_per_point(), &look.curves_picture));
     let shown = plot.show(ui, |plot| {
-        curves(plot, doc, playback, [min, max], look, rolling);
+        match &session {
+            Some(session) => {
+                plot.add(session.picture());
+                for item in lines {
+                    plot.add(Pictured { item, session });
+                }
+            }
+            None => lines.into_iter().for_each(|line| plot.line(line)),
+        }
         limit_lines(plot, &quantity, [min, max], left_end, look);
         if !rolling {
             let now = scenario.motion.sampling.start() + playback.time;
@@ -223,6 +245,10 @@ fn plot(
             );
         }
     });
+    match session {
+        Some(session) => session.finish(&mut look.curves_picture),
+        None => look.curves_picture = Default::default(),
+    }
     let response = &shown.response;
     if !rolling
         && (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
@@ -318,17 +344,19 @@ fn limit_anchor(name: &str) -> egui::Align2 {
 }
 
 /// The six curves (the trajectory's, or in rolling mode the history's), each broken where a
-/// servo cannot reach, with the stretches beyond `limits` marked over them.
+/// servo cannot reach, with the stretches beyond `limits` marked over them; and the hash
+/// of what they draw (see [`super::plot_picture`]).
 fn curves(
-    plot: &mut egui_plot::PlotUi,
     doc: &Document,
     playback: &Playback,
     [min, max]: [Option<f64>; 2],
     look: &Look,
     rolling: bool,
-) {
+) -> (Vec<Line<'static>>, u64) {
     let (width, t) = (line_width(look), look.lang);
     let quantity = doc.scenario().geometry.quantity();
+    let mut lines = Vec::new();
+    let mut hash = super::plot_picture::DataHash::default();
     for leg in 0..6 {
         let points: Vec<[f64; 2]> = if rolling {
             playback
@@ -354,14 +382,16 @@ fn curves(
         let name = format!("{symbol}{}", leg + 1);
         for run in points.split(|p| p[1].is_nan()).filter(|r| !r.is_empty()) {
             let curve: PlotPoints = run.iter().copied().collect();
-            plot.line(
+            hash.curve(run, leg_colour(leg), width);
+            lines.push(
                 Line::new(name.clone(), curve)
                     .color(leg_colour(leg))
                     .width(width),
             );
             // The stretches beyond a limit, marked over the curve.
             for stretch in beyond([min, max], run) {
-                plot.line(
+                hash.curve(&stretch, BEYOND, width * 2.5);
+                lines.push(
                     Line::new(t.tr("plot.beyond"), PlotPoints::from(stretch))
                         .color(BEYOND)
                         .width(width * 2.5),
@@ -369,6 +399,7 @@ fn curves(
             }
         }
     }
+    (lines, hash.finish())
 }
 
 /// The limits as dashed lines, labelled with their values at `left_end` (the start of

@@ -59,6 +59,8 @@ pub struct Look {
     /// Where the plot drew its frame, limits, legend and toggle last (`None` while hidden
     /// or before the first frame).
     pub(crate) plot_placement: Option<crate::viewer::panels::plot::PlotPlacement>,
+    /// The plot's curves as a picture the window draws (a software rasteriser).
+    pub(crate) curves_picture: crate::viewer::panels::plot_picture::CurvesPicture,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub(crate) view_px: [u32; 2],
     /// The 3D view's width over its height, as laid out last frame.
@@ -95,6 +97,7 @@ impl Look {
             side_width: 0.0,
             plot_height: 0.0,
             plot_placement: None,
+            curves_picture: Default::default(),
             view_px: [1280, 720],
             view_aspect: 16.0 / 9.0,
             renderer_missing: Some(String::new()),

@@ -2,6 +2,7 @@
 //! surface; the 3D view shares its device. Redraws continuously only while playing.
 
 pub(crate) mod fonts;
+pub(crate) mod plot_picture;
 pub(crate) mod quality;
 pub(crate) mod reveal;
 pub(crate) mod shots;
@@ -55,6 +56,9 @@ struct FrameTimes {
     cpu: Vec<f64>,
     /// The whole frame, including recording, submission, uploads and presentation.
     total: Vec<f64>,
+    /// Frames by how the 3D view was drawn (`full`, `direct`, `scaled`, `gpu`), in the
+    /// order first seen.
+    drawn: Vec<(&'static str, usize)>,
 }
 
 impl FrameTimes {
@@ -71,12 +75,25 @@ impl FrameTimes {
         };
         // The first frames compile shaders and upload fonts: leave them out.
         let skip = self.cpu.len().min(5);
+        let drawn: Vec<String> = (self.drawn.iter())
+            .map(|(how, n)| format!("{how} {n}"))
+            .collect();
         format!(
-            "{} frames: CPU (UI, kinematics, draw list, tessellation) {}; total {}",
+            "{} frames: CPU (UI, kinematics, draw list, tessellation) {}; total {}; 3D view drawn: {}",
             self.cpu.len() - skip,
             stat(&self.cpu[skip..]),
-            stat(&self.total[skip..])
+            stat(&self.total[skip..]),
+            drawn.join(", ")
         )
+    }
+
+    /// One more frame whose 3D view was drawn as the quality key `key` says.
+    fn count_drawn(&mut self, key: &'static str) {
+        let how = key.strip_prefix("quality.").unwrap_or(key);
+        match self.drawn.iter_mut().find(|(h, _)| *h == how) {
+            Some((_, n)) => *n += 1,
+            None => self.drawn.push((how, 1)),
+        }
     }
 }
 
@@ -115,6 +132,8 @@ struct App {
     fullscreen: bool,
     /// Whether the last frame left something moving (playback, an export, the link).
     was_busy: bool,
+    /// The plot's curves picture (a software rasteriser).
+    plot_picture: Option<plot_picture::PictureTarget>,
 }
 
 /// Open the viewer on `state` and run until the window closes.
@@ -156,6 +175,7 @@ pub(crate) fn run(state: ViewerState, options: ViewOptions) -> Result<()> {
         gamepads: crate::viewer::state::gamepad::Gamepads::new(),
         fullscreen: false,
         was_busy: false,
+        plot_picture: None,
     };
     event_loop
         .run_app(&mut app)
@@ -362,6 +382,15 @@ impl App {
             .and_then(|v| now.checked_add(v.repaint_delay));
         open.input
             .handle_platform_output(&open.window, std::mem::take(&mut output.platform_output));
+        // The plot's curves, drawn into their picture where the plot asks for one.
+        if let Some(rs) = open.painter.render_state() {
+            plot_picture::draw_wanted(
+                &rs,
+                &self.ctx,
+                &mut self.plot_picture,
+                &mut self.state.look.curves_picture,
+            );
+        }
         let primitives = self
             .ctx
             .tessellate(std::mem::take(&mut output.shapes), output.pixels_per_point);
@@ -384,6 +413,7 @@ impl App {
         let total_ms = frame_start.elapsed().as_secs_f64() * 1e3;
         self.times.cpu.push(cpu_ms);
         self.times.total.push(total_ms);
+        self.times.count_drawn(self.state.quality.words_key());
         self.state.quality.record(total_ms);
         self.finish_shots(scaled, event_loop);
     }
