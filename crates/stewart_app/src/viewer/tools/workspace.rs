@@ -10,8 +10,8 @@
 //! UI's share is uploading them once.
 //!
 //! While the request changes from frame to frame (playback with the surface following
-//! the pose, a slider dragged) the frames come first: each request is computed coarse
-//! only, on one thread, and the next not before [`REST_AFTER_MOVING`] times as long as
+//! the pose, a slider dragged) the frames come first: each request is computed coarser
+//! still ([`MOVING_COLUMNS`]), on one thread, and the next not before [`REST_AFTER_MOVING`] times as long as
 //! the last took has passed, so the surface's work takes at most a quarter of one core
 //! from the drawing (on a software rasteriser, the drawing is the CPU's too). Once the
 //! request stays the same from one frame to the next, it is refined with every core.
@@ -33,6 +33,10 @@ use crate::viewer::tools::job::Job;
 pub(crate) const COARSE_COLUMNS: usize = 128;
 /// Columns a side of the refinement.
 pub(crate) const FINE_COLUMNS: usize = 512;
+/// Columns a side of a workspace computed while its request changes every frame: a
+/// quarter of the coarse one's cells (each surface drawn every frame costs its triangles
+/// on a software rasteriser; the refinement follows once the request stays).
+pub(crate) const MOVING_COLUMNS: usize = 64;
 /// Columns a side of the surface mesh drawn at most (every other column of the
 /// refinement).
 pub(crate) const DRAWN_COLUMNS: usize = 256;
@@ -277,7 +281,7 @@ impl WorkspaceTool {
         let coarse_in = (self.latest.as_ref())
             .is_some_and(|o| o.request == sent.request && o.resolution == coarse.min(fine));
         let passes: Vec<usize> = match (sent.refine, coarse_in) {
-            (false, _) => vec![coarse.min(fine)],
+            (false, _) => vec![MOVING_COLUMNS.min(coarse).min(fine)],
             (true, true) => vec![fine],
             (true, false) => vec![coarse.min(fine), fine],
         };
@@ -616,7 +620,7 @@ mod tests {
     #[test]
     fn a_request_changing_every_frame_is_computed_coarse_on_one_thread_with_rests() {
         // Playback with the surface following the pose: the frames come first. Each
-        // changing request is computed coarse only, on one thread, and the next waits
+        // changing request is computed coarser still, on one thread, and the next waits
         // three times as long as the last took; once the request stays, it is refined on
         // every core.
         let mut tool = WorkspaceTool::with_resolutions(128, 256);
@@ -631,7 +635,10 @@ mod tests {
                 && shown.last() != Some(&o.request)
             {
                 shown.push(o.request.clone());
-                assert!(!o.refined && o.resolution == 128 && o.threads == 1, "{o:?}");
+                assert!(
+                    !o.refined && o.resolution == MOVING_COLUMNS && o.threads == 1,
+                    "{o:?}"
+                );
                 // The newest request waits for the rest.
                 let rest = tool.rest_until.unwrap_or_else(|| panic!("no rest"));
                 assert!(Instant::now() < rest && tool.pending.is_some());
