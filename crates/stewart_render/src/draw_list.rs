@@ -29,9 +29,8 @@ pub struct Overlays {
     pub labels: bool,
     /// The labels' size against the usual (larger for a projector).
     pub label_scale: f32,
-    /// CAD parts drawn from their lighter stand-ins (a view on a software rasteriser);
-    /// off: from their files (exports, screenshots, a GPU).
-    pub cad_preview: bool,
+    /// Which of the CAD parts' meshes are drawn.
+    pub cad_detail: crate::draw_parts::PartDetail,
 }
 
 impl Default for Overlays {
@@ -44,7 +43,7 @@ impl Default for Overlays {
             coloured_legs: true,
             labels: true,
             label_scale: 1.0,
-            cad_preview: false,
+            cad_detail: crate::draw_parts::PartDetail::File,
         }
     }
 }
@@ -217,7 +216,7 @@ impl DrawList {
             None => list.linear_legs(frame, &colours, s, drawn),
             Some(servos) => list.servos(frame, servos, &colours, s, drawn),
         }
-        list.cad_parts(frame, &colours, parts, overlays.cad_preview);
+        list.cad_parts(frame, &colours, parts, overlays.cad_detail);
         if overlays.labels {
             list.labels(frame, &colours, overlays.label_scale);
         }
@@ -544,7 +543,7 @@ mod tests {
                 coloured_legs: true,
                 labels: true,
                 label_scale: 1.0,
-                cad_preview: false,
+                cad_detail: crate::draw_parts::PartDetail::File,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
@@ -586,7 +585,7 @@ mod tests {
             coloured_legs: false,
             labels: false,
             label_scale: 1.0,
-            cad_preview: false,
+            cad_detail: crate::draw_parts::PartDetail::File,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

@@ -42,6 +42,20 @@ pub fn frame_matrix(p: &Placement) -> Mat4 {
     )
 }
 
+/// Which of a CAD part's meshes a view draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum PartDetail {
+    /// The file as read (exports, screenshots, a GPU).
+    #[default]
+    File,
+    /// Its stand-in of at most [`crate::cad::simplify::PREVIEW_TRIANGLES`] (a view on a
+    /// software rasteriser).
+    Preview,
+    /// Its lighter stand-in of at most [`crate::cad::simplify::MOVING_TRIANGLES`] (such a
+    /// view while it moves).
+    Moving,
+}
+
 impl DrawList {
     /// Place every part `parts` has a mesh for.
     pub(crate) fn cad_parts(
@@ -49,19 +63,19 @@ impl DrawList {
         frame: &SceneFrame,
         colours: &LegColours,
         parts: &PartSet,
-        preview: bool,
+        detail: PartDetail,
     ) {
         if parts.is_empty() {
             return;
         }
         let theme = colours.theme;
         if let Some(p) = parts.get(Part::Base) {
-            self.place(p, preview, Mat4::IDENTITY, theme.base_plate, false);
+            self.place(p, detail, Mat4::IDENTITY, theme.base_plate, false);
         }
         if let Some(p) = parts.get(Part::Platform) {
             self.place(
                 p,
-                preview,
+                detail,
                 frame_matrix(&frame.platform_placement()),
                 theme.platform,
                 false,
@@ -76,19 +90,19 @@ impl DrawList {
                 let [at, _] = frame.leg_placements(k);
                 self.place(
                     p,
-                    preview,
+                    detail,
                     frame_matrix(&at),
                     body,
                     warn && !colours.coloured,
                 );
             }
             if let Some(p) = parts.get(Part::Rod) {
-                self.place(p, preview, frame_matrix(&frame.rod_placement(k)), rod, warn);
+                self.place(p, detail, frame_matrix(&frame.rod_placement(k)), rod, warn);
             }
             if let (Some(p), Some(at)) = (parts.get(Part::Horn), frame.horn_placement(k)) {
                 self.place(
                     p,
-                    preview,
+                    detail,
                     frame_matrix(&at),
                     colours.horn(k, leg.status),
                     warn,
@@ -97,18 +111,22 @@ impl DrawList {
         }
     }
 
-    /// Each piece of `part` (its stand-in when `preview`) at `frame`: in `studio` when `warning`, else in the table's
-    /// colour, the file's, or `studio`; always opaque.
+    /// Each piece of `part` (its mesh of `detail`) at `frame`: in `studio` when `warning`,
+    /// else in the table's colour, the file's, or `studio`; always opaque.
     fn place(
         &mut self,
         part: &LoadedPart,
-        preview: bool,
+        detail: PartDetail,
         frame: Mat4,
         studio: Srgba,
         warning: bool,
     ) {
         let model = (frame * part.transform).to_cols_array_2d();
-        let mesh = if preview { &part.preview } else { &part.mesh };
+        let mesh = match detail {
+            PartDetail::File => &part.mesh,
+            PartDetail::Preview => &part.preview,
+            PartDetail::Moving => &part.moving,
+        };
         for piece in mesh.pieces.iter().filter(|p| !p.mesh.indices.is_empty()) {
             let chosen = if warning {
                 studio

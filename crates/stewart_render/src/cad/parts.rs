@@ -20,6 +20,9 @@ pub struct LoadedPart {
     /// A stand-in of at most [`super::simplify::PREVIEW_TRIANGLES`] triangles (the same
     /// mesh when it has no more), for views a software rasteriser draws.
     pub preview: Arc<PartMesh>,
+    /// A lighter one, at most [`super::simplify::MOVING_TRIANGLES`] (the preview when it
+    /// has no more), for such views while they move.
+    pub moving: Arc<PartMesh>,
     /// From the file's units and axes into the part's frame: offset · rotation · scale.
     pub transform: Mat4,
     /// The table's colour (sRGB, alpha), which wins over the file's.
@@ -168,16 +171,26 @@ fn read_part(
     let kept = previous
         .and_then(|p| p.get(part))
         .filter(|p| p.path == path)
-        .map(|p| (Arc::clone(&p.mesh), Arc::clone(&p.preview)));
-    let (mesh, preview) = match kept {
-        Some(both) => both,
+        .map(|p| {
+            (
+                Arc::clone(&p.mesh),
+                Arc::clone(&p.preview),
+                Arc::clone(&p.moving),
+            )
+        });
+    let (mesh, preview, moving) = match kept {
+        Some(all) => all,
         None => {
             let mesh = Arc::new(super::load(&path).map_err(|e| error("file", e.into()))?);
-            let preview = previews
-                .then(|| super::simplify::simplified(&mesh, super::simplify::PREVIEW_TRIANGLES))
-                .flatten()
-                .map_or_else(|| Arc::clone(&mesh), Arc::new);
-            (mesh, preview)
+            let lighter = |from: &Arc<PartMesh>, budget| {
+                previews
+                    .then(|| super::simplify::simplified(from, budget))
+                    .flatten()
+                    .map_or_else(|| Arc::clone(from), Arc::new)
+            };
+            let preview = lighter(&mesh, super::simplify::PREVIEW_TRIANGLES);
+            let moving = lighter(&preview, super::simplify::MOVING_TRIANGLES);
+            (mesh, preview, moving)
         }
     };
     check_size(&mesh, look.scale, platform_m).map_err(|f| error("scale", f))?;
@@ -186,6 +199,7 @@ fn read_part(
         colour: look.colour.map(|c| c.rgba()),
         mesh,
         preview,
+        moving,
         path,
     })
 }

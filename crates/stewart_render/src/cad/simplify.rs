@@ -14,6 +14,10 @@ use super::{PartMesh, Piece};
 /// Triangles a part may have before a view on a software rasteriser draws a stand-in.
 pub const PREVIEW_TRIANGLES: usize = 60_000;
 
+/// Triangles of the lighter stand-in such a view draws while it moves (playback, a drag):
+/// every triangle is CPU time there, and the picture at rest is the preview again.
+pub const MOVING_TRIANGLES: usize = 20_000;
+
 /// `part` with at most `budget` triangles (`None`: it has no more than that already).
 pub fn simplified(part: &PartMesh, budget: usize) -> Option<PartMesh> {
     if part.triangles <= budget {

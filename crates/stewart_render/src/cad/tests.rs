@@ -429,3 +429,97 @@ fn a_stride_that_cannot_hold_its_elements_and_files_that_are_not_files_are_refus
         }
     }
 }
+
+#[test]
+fn a_heavy_part_has_a_preview_and_a_lighter_stand_in_for_a_moving_view() {
+    use crate::draw_parts::PartDetail;
+    // A binary STL of 100 000 triangles: a wavy plate of 224 × 224 cells, top and bottom.
+    let n = 224usize;
+    let mut triangles: Vec<[Vec3; 3]> = Vec::new();
+    let at = |i: usize, j: usize, top: bool| {
+        let (x, y) = (i as f32 * 4.0 - 448.0, j as f32 * 4.0 - 448.0);
+        let z = if top {
+            20.0 + 5.0 * (x / 30.0).sin() * (y / 40.0).cos()
+        } else {
+            0.0
+        };
+        Vec3::new(x, y, z)
+    };
+    for top in [true, false] {
+        for i in 0..n {
+            for j in 0..n {
+                let [a, b, c, d] = [
+                    at(i, j, top),
+                    at(i + 1, j, top),
+                    at(i + 1, j + 1, top),
+                    at(i, j + 1, top),
+                ];
+                if top {
+                    triangles.extend([[a, b, c], [a, c, d]]);
+                } else {
+                    triangles.extend([[a, c, b], [a, d, c]]);
+                }
+            }
+        }
+    }
+    let mut bytes = vec![0u8; 80];
+    bytes.extend((triangles.len() as u32).to_le_bytes());
+    for t in &triangles {
+        let normal = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        for v in std::iter::once(normal).chain(t.iter().copied()) {
+            for c in v.to_array() {
+                bytes.extend(c.to_le_bytes());
+            }
+        }
+        bytes.extend([0, 0]);
+    }
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(dir.path().join("plate.stl"), &bytes).unwrap_or_else(|e| panic!("{e}"));
+    let looks = AppearanceSettings {
+        platform: Some(PartLook {
+            scale: MeshScale::Millimetre,
+            ..PartLook::new("plate.stl")
+        }),
+        ..AppearanceSettings::default()
+    };
+    let set = PartSet::load(&looks, dir.path(), ActuatorKind::Linear, 1.0, None, true)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let part = set
+        .get(Part::Platform)
+        .unwrap_or_else(|| panic!("no platform"));
+    assert_eq!(part.mesh.triangles, 2 * 2 * n * n);
+    let (preview, moving) = (part.preview.triangles, part.moving.triangles);
+    assert!(
+        preview <= crate::cad::simplify::PREVIEW_TRIANGLES,
+        "{preview}"
+    );
+    assert!(moving <= crate::cad::simplify::MOVING_TRIANGLES, "{moving}");
+    assert!(moving > 1000, "{moving}: nothing left to see");
+    // The draw list places the meshes of the detail asked for.
+    let scenario = stewart_kinematics::Scenario::seed();
+    let frame = scenario
+        .geometry
+        .scene_frame(&scenario.geometry.home_pose(), Vec::new());
+    for (detail, mesh) in [
+        (PartDetail::File, &part.mesh),
+        (PartDetail::Preview, &part.preview),
+        (PartDetail::Moving, &part.moving),
+    ] {
+        let overlays = crate::Overlays {
+            cad_detail: detail,
+            ..crate::Overlays::default()
+        };
+        let list = crate::DrawList::build_with_parts(&frame, &crate::Theme::DARK, &overlays, &set);
+        let drawn: Vec<_> = list
+            .parts
+            .iter()
+            .map(|p| std::sync::Arc::as_ptr(&p.mesh))
+            .collect();
+        let wanted: Vec<_> = mesh
+            .pieces
+            .iter()
+            .map(|p| std::sync::Arc::as_ptr(&p.mesh))
+            .collect();
+        assert_eq!(drawn, wanted, "{detail:?}");
+    }
+}

@@ -157,7 +157,7 @@ fn work(state: &ViewerState, path: PathBuf) -> ExportWork {
                 request: state.workspace_request(),
                 list: {
                     // The job draws the surface it computes, not the one on screen.
-                    let mut list = state.scene_list(&theme, false);
+                    let mut list = state.scene_list(&theme, Default::default());
                     list.analysis.clear();
                     list
                 },

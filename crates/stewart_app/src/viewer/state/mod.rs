@@ -215,13 +215,20 @@ impl ViewerState {
     /// far, the switches of the look and, when on, the readout. The view and its
     /// screenshots draw the same list.
     pub(crate) fn draw_list(&self, theme: &Theme) -> stewart_render::DrawList {
-        // A software rasteriser draws heavy CAD parts' stand-ins to stay interactive.
-        self.scene_list(theme, self.quality.software)
+        // A software rasteriser draws heavy CAD parts' stand-ins to stay interactive, and
+        // lighter ones while the view moves (unless this frame is the full picture a
+        // window shot is taken of).
+        let moving = self.animating() && !self.quality.full_asked();
+        self.scene_list(theme, part_detail(self.quality.software, moving))
     }
 
-    /// [`ViewerState::draw_list`] with CAD parts drawn from their files in full (`preview`
-    /// off: screenshots, exports) or from their lighter stand-ins.
-    pub(crate) fn scene_list(&self, theme: &Theme, preview: bool) -> stewart_render::DrawList {
+    /// [`ViewerState::draw_list`] with CAD parts drawn from their meshes of `detail` (the
+    /// files in full for screenshots and exports).
+    pub(crate) fn scene_list(
+        &self,
+        theme: &Theme,
+        detail: stewart_render::draw_parts::PartDetail,
+    ) -> stewart_render::DrawList {
         // Live vehicle motion has no trajectory time nor path.
         let trajectory = self.playback.mode == MotionMode::Trajectory && !self.link.cueing_live();
         let path = if self.look.show_path && trajectory {
@@ -237,7 +244,7 @@ impl ViewerState {
             coloured_legs: self.look.coloured_legs,
             labels: self.look.labels,
             label_scale: if self.look.presentation { 1.6 } else { 1.0 },
-            cad_preview: preview,
+            cad_detail: detail,
             ..stewart_render::Overlays::default()
         };
         let mut list =
@@ -290,7 +297,7 @@ impl ViewerState {
             ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
             ShotKind::View => {
                 let theme = self.theme();
-                let list = self.scene_list(&theme, false);
+                let list = self.scene_list(&theme, Default::default());
                 let size = self.shots.scale.size(self.look.view_px);
                 let camera = self.look.camera;
                 self.shots
@@ -880,5 +887,29 @@ mod tests {
         s.set_layout(Layout::seed());
         s.wait_for_report();
         assert!(s.report().is_some_and(|r| r.architecture.singular));
+    }
+}
+
+/// The CAD parts' meshes a view draws: the files on a GPU; on a software rasteriser the
+/// stand-ins, lighter while the view moves.
+fn part_detail(software: bool, moving: bool) -> stewart_render::draw_parts::PartDetail {
+    use stewart_render::draw_parts::PartDetail;
+    match (software, moving) {
+        (false, _) => PartDetail::File,
+        (true, true) => PartDetail::Moving,
+        (true, false) => PartDetail::Preview,
+    }
+}
+
+#[cfg(test)]
+mod part_detail_tests {
+    use stewart_render::draw_parts::PartDetail;
+
+    #[test]
+    fn a_moving_view_on_a_software_rasteriser_draws_the_lighter_stand_ins() {
+        assert_eq!(super::part_detail(false, true), PartDetail::File);
+        assert_eq!(super::part_detail(false, false), PartDetail::File);
+        assert_eq!(super::part_detail(true, false), PartDetail::Preview);
+        assert_eq!(super::part_detail(true, true), PartDetail::Moving);
     }
 }

@@ -134,6 +134,11 @@ impl Quality {
         self.full_next = true;
     }
 
+    /// Whether the next frame is to be the full picture whatever moves (a window shot).
+    pub(crate) fn full_asked(&self) -> bool {
+        self.full_next
+    }
+
     /// Whether the last frame was the full picture (or drawn on a GPU, where every frame
     /// is).
     pub(crate) fn last_was_full(&self) -> bool {
