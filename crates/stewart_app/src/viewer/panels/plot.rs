@@ -105,6 +105,8 @@ pub(crate) struct PlotPlacement {
     pub(crate) legend: Vec<egui::Rect>,
     /// The values/forces toggle, when there is one.
     pub(crate) toggle: Option<egui::Rect>,
+    /// The length of the vertical axis's label (it is centred on the frame's height).
+    pub(crate) y_label_length: f32,
 }
 
 /// The panel: the plot, and its legend beside it (outside the curves) in as many columns
@@ -182,15 +184,31 @@ fn plot(
     let t = look.lang;
     let efforts = efforts_shown(doc, look, rolling).is_some();
     let [min, max] = if efforts { [None, None] } else { [min, max] };
-    let y_label = if efforts {
-        format!(
-            "{} ({})",
-            words::effort_name(t, &quantity),
-            quantity.effort.1
-        )
+    let (name, symbol, unit) = if efforts {
+        let (symbol, unit) = quantity.effort;
+        (words::effort_name(t, &quantity), symbol, unit)
     } else {
-        format!("{} ({})", words::quantity_name(t, &quantity), quantity.unit)
+        let name = words::quantity_name(t, &quantity);
+        (name, quantity.symbol, quantity.unit)
     };
+    // The axis's name along it, or its symbol where the plot is too short for the name
+    // (a projector's large text): the label is centred on the axis and cut at its ends.
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let length = |text: &str| {
+        (ui.painter())
+            .layout_no_wrap(text.to_owned(), body.clone(), Color32::WHITE)
+            .size()
+            .x
+    };
+    let room = (look.plot_placement.as_ref())
+        .map_or(ui.available_height() - 3.0 * body.size, |p| {
+            p.frame.height()
+        });
+    let y_label = [format!("{name} ({unit})"), format!("{symbol} ({unit})")]
+        .into_iter()
+        .find(|label| length(label) <= room)
+        .unwrap_or_else(|| format!("{symbol} ({unit})"));
+    let y_label_length = length(&y_label);
     let x_label = t.tr(match (rolling, commanded) {
         (true, true) => "plot.seconds_ago_commanded",
         (true, false) => "plot.seconds_ago",
@@ -290,6 +308,7 @@ fn plot(
         limits,
         legend: Vec::new(),
         toggle,
+        y_label_length,
     }
 }
 

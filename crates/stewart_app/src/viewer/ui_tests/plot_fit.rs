@@ -17,11 +17,17 @@ fn inside(inner: egui::Rect, outer: egui::Rect) -> bool {
 fn the_plot_shows_its_limits_and_whole_legend_at_projector_sizes() {
     for preset in ["seed", "paired"] {
         for (w, h) in [(1024.0, 768.0), (1280.0, 720.0), (1088.0, 612.0)] {
-            for presentation in [true, false] {
-                let case = format!("{preset} at {w}×{h}, presentation {presentation}");
+            // Out of presentation mode, entered with P, and started in it (`view
+            // --presentation`, where the plot starts a quarter of the window high).
+            for (presentation, started) in [(true, false), (false, false), (true, true)] {
+                let case = format!(
+                    "{preset} at {w}×{h}, presentation {presentation} (started so: {started})"
+                );
                 let scenario = Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}"));
-                let mut harness = sized_harness(ViewerState::new(scenario), egui::vec2(w, h));
-                if presentation {
+                let mut state = ViewerState::new(scenario);
+                state.look.presentation = started;
+                let mut harness = sized_harness(state, egui::vec2(w, h));
+                if presentation && !started {
                     harness.key_press(egui::Key::P);
                     harness.run();
                     harness.run();
@@ -36,6 +42,13 @@ fn the_plot_shows_its_limits_and_whole_legend_at_projector_sizes() {
                 let frame = placed.frame;
                 assert!(inside(frame, panel), "{case}: frame {frame:?} in {panel:?}");
                 assert_eq!(placed.limits.len(), 2, "{case}: both limits drawn");
+                // The vertical axis's label, centred on the frame, is not cut at its ends.
+                assert!(
+                    placed.y_label_length <= frame.height() + 0.5,
+                    "{case}: a label {} long beside a frame {} high",
+                    placed.y_label_length,
+                    frame.height()
+                );
                 for (y, label) in &placed.limits {
                     assert!(
                         (frame.top() - 0.5..=frame.bottom() + 0.5).contains(y),
