@@ -1,41 +1,42 @@
-//! The WGSL sources, from this crate's `shaders/` folder. `globals.wgsl` (the uniforms
+//! The WGSL sources, from the repository's top-level `shaders/` folder (the one place every
+//! WGSL file lives; this module is the only reader). `globals.wgsl` (the uniforms
 //! every pipeline reads) is written once and prepended to each pipeline's module.
 
 /// Lit instanced meshes (the opaque and the translucent pipelines), globals included.
 pub const MESH: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/mesh.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/mesh.wgsl")
 );
 /// Unlit lines, globals included.
 pub const LINES: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/lines.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/lines.wgsl")
 );
 
 /// Screen-space text and boxes from the glyph atlas, globals included.
 pub const TEXT: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/text.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/text.wgsl")
 );
 
 /// Translucent analysis meshes with a colour per vertex (workspace surface, conditioning
 /// slice), globals included.
 pub const ANALYSIS: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/analysis.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/analysis.wgsl")
 );
 
 /// The view's background as one flat triangle, globals included.
 pub const BACKGROUND: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/background.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/background.wgsl")
 );
 
 /// A picture rendered off screen drawn over the viewport, globals included (bound, not
 /// read).
 pub const BLIT: &str = concat!(
-    include_str!("../shaders/globals.wgsl"),
-    include_str!("../shaders/blit.wgsl")
+    include_str!("../../../shaders/globals.wgsl"),
+    include_str!("../../../shaders/blit.wgsl")
 );
 
 /// Every pipeline's module with the shader files it is made of, for validation.

@@ -650,7 +650,7 @@ fn real_forza_capture() -> Option<std::path::PathBuf> {
 /// A scenario file: the preset `rig` playing the pose table `poses`.
 fn preset_playing(dir: &std::path::Path, rig: &str, poses: &std::path::Path) -> String {
     let preset = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join(format!("../stewart_kinematics/presets/{rig}.toml"));
+        .join(format!("../../assets/presets/{rig}.toml"));
     let text = std::fs::read_to_string(&preset).unwrap_or_else(|e| panic!("{e}"));
     let mut kept = String::new();
     let mut in_trajectory = false;

@@ -37,7 +37,7 @@
 //! scale = "mm"
 //! ```
 //!
-//! See `presets/` (this crate) for a file of every trajectory kind and docs/guide/file-format.md for every key.
+//! See `assets/presets/` (top level) for a file of every trajectory kind and docs/guide/file-format.md for every key.
 
 pub(crate) mod build;
 mod error;

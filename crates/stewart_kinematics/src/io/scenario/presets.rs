@@ -1,59 +1,33 @@
-//! Scenario presets shipped in `presets/` (this crate) and compiled into the program.
+//! Scenario presets shipped in the repository's top-level `assets/presets/` and compiled
+//! into the program.
+
+/// A preset's name and its text, from `assets/presets/NAME.toml`.
+macro_rules! preset {
+    ($name:literal) => {
+        (
+            $name,
+            include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../assets/presets/",
+                $name,
+                ".toml"
+            )),
+        )
+    };
+}
 
 /// Every preset: its name and its TOML text.
 pub const PRESETS: [(&str, &str); 10] = [
-    (
-        "seed",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/seed.toml")),
-    ),
-    (
-        "paired",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/paired.toml")),
-    ),
-    (
-        "circle",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/circle.toml")),
-    ),
-    (
-        "figure8",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/figure8.toml")),
-    ),
-    (
-        "helix",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/helix.toml")),
-    ),
-    (
-        "sway",
-        include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/presets/sway.toml")),
-    ),
-    (
-        "keyframes",
-        include_str!(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/presets/keyframes.toml"
-        )),
-    ),
-    (
-        "servo-desk",
-        include_str!(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/presets/servo-desk.toml"
-        )),
-    ),
-    (
-        "crank-rig",
-        include_str!(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/presets/crank-rig.toml"
-        )),
-    ),
-    (
-        "dietmaier",
-        include_str!(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/presets/dietmaier.toml"
-        )),
-    ),
+    preset!("seed"),
+    preset!("paired"),
+    preset!("circle"),
+    preset!("figure8"),
+    preset!("helix"),
+    preset!("sway"),
+    preset!("keyframes"),
+    preset!("servo-desk"),
+    preset!("crank-rig"),
+    preset!("dietmaier"),
 ];
 
 /// The names of the presets, in order.
@@ -67,4 +41,21 @@ pub fn text(name: &str) -> Option<&'static str> {
         .iter()
         .find(|(n, _)| *n == name)
         .map(|(_, text)| *text)
+}
+
+#[cfg(test)]
+mod folder_tests {
+    #[test]
+    fn every_file_in_assets_presets_is_compiled_in_and_only_those() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/presets");
+        let mut files: Vec<String> = std::fs::read_dir(&dir)
+            .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+            .filter_map(|e| e.ok())
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        files.sort();
+        let mut compiled: Vec<String> = super::names().map(|n| format!("{n}.toml")).collect();
+        compiled.sort();
+        assert_eq!(files, compiled);
+    }
 }
