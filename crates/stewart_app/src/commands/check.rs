@@ -127,9 +127,9 @@ fn summary_line(s: &LimitSummary) -> String {
         ("singular".to_owned(), "none".to_owned())
     };
     format!(
-        "  {:<20} worst {worst}{at} at t = {:.3} s, limit {}{unit}, margin {margin}  {verdict}",
+        "  {:<20} worst {worst}{at} at t = {} s, limit {}{unit}, margin {margin}  {verdict}",
         limit_name(s.kind),
-        s.worst_time,
+        words::time_text(s.worst_time),
         s.limit,
     )
 }

@@ -204,6 +204,27 @@ fn a_findings_time_names_its_own_row() {
     assert_eq!(time_text(5.0005), "5.0005");
     assert_eq!(time_text(1.062), "1.062");
     assert_eq!(time_text(0.0000012), "0.000001");
+    // A row a hair before zero is at zero, not at "-0.000".
+    assert_eq!(time_text(-4e-7), "0.000");
+    assert_eq!(time_text(-0.25), "-0.250");
+    // A limit over a microsecond's interval is small, never shown as zero.
+    let tiny = Finding {
+        kind: FindingKind::Jump,
+        legs: vec![2],
+        first_time: 5.000001,
+        last_time: 5.000001,
+        count: 1,
+        worst_time: 5.000001,
+        worst_value: 7.9e-4,
+        limit: 1e-8,
+        margin: 1e-8 - 7.9e-4,
+        unit: "m".into(),
+    };
+    let words = finding(Lang::En, &tiny);
+    assert!(
+        words.ends_with("t = 5.000001 s, where the steps around it allow at most 0.0000100 mm"),
+        "{words}"
+    );
 }
 
 #[test]

@@ -125,7 +125,8 @@ fn finding_key(kind: FindingKind) -> &'static str {
 }
 
 /// A finding's time in seconds: three decimals, more (up to six) where the time has them,
-/// so that a table row 0.5 ms after another is not named by the other's time.
+/// so that a table row 0.5 ms after another is not named by the other's time; never a
+/// negative zero.
 pub(crate) fn time_text(t: f64) -> String {
     let mut text = format!("{t:.6}");
     if let Some(dot) = text.find('.') {
@@ -133,7 +134,21 @@ pub(crate) fn time_text(t: f64) -> String {
             text.pop();
         }
     }
-    text
+    match text.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
+        _ => text,
+    }
+}
+
+/// A small positive amount with three decimals, or three significant digits where three
+/// decimals would show it as zero (`0.000` for a limit of 0.19 µm).
+fn small_amount(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && v.abs() < 0.0005 {
+        let digits = (2 - v.abs().log10().floor() as i32).clamp(3, 12) as usize;
+        format!("{v:.digits$}")
+    } else {
+        format!("{v:.3}")
+    }
 }
 
 /// A diagnostics finding in words (the English of `stewart check`).
@@ -178,8 +193,8 @@ pub(crate) fn finding(lang: Lang, f: &Finding) -> String {
         ("limit", &limit),
         ("limit_m", &format!("{limit:.4}")),
         ("limit_mm", &format!("{:.1}", limit * 1e3)),
-        ("limit_mm3", &format!("{:.3}", limit * 1e3)),
-        ("limit_deg3", &format!("{limit:.3}")),
+        ("limit_mm3", &small_amount(limit * 1e3)),
+        ("limit_deg3", &small_amount(limit)),
         ("limit_e", &format!("{limit:.1e}")),
         ("worst_m", &format!("{worst:.4}")),
         ("worst_m3", &format!("{worst:.3}")),

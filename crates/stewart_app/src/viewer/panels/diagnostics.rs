@@ -74,7 +74,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) -> Option<f64> {
                     .link(format!("• {}", words::finding(t, f)))
                     .on_hover_text(t.fmt(
                         "diagnostics.jump_tip",
-                        &[("t", &format!("{:.3}", f.worst_time))],
+                        &[("t", &words::time_text(f.worst_time))],
                     ));
                 if link.clicked() {
                     jump = Some(f.worst_time);
