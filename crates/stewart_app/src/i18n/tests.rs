@@ -203,9 +203,12 @@ fn a_findings_time_names_its_own_row() {
     assert_eq!(time_text(5.01 + 1e-12), "5.010");
     assert_eq!(time_text(5.0005), "5.0005");
     assert_eq!(time_text(1.062), "1.062");
-    assert_eq!(time_text(0.0000012), "0.000001");
-    // A row a hair before zero is at zero, not at "-0.000".
-    assert_eq!(time_text(-4e-7), "0.000");
+    assert_eq!(time_text(0.0000012), "0.0000012");
+    assert_eq!(time_text(1.4000045), "1.4000045");
+    assert_eq!(time_text(54.600234), "54.600234");
+    // A row a hair before zero is named as it is, never "-0.000".
+    assert_eq!(time_text(-4e-7), "-0.0000004");
+    assert_eq!(time_text(-0.0), "0.000");
     assert_eq!(time_text(-0.25), "-0.250");
     // A limit over a microsecond's interval is small, never shown as zero.
     let tiny = Finding {

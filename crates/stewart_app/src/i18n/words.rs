@@ -124,16 +124,18 @@ fn finding_key(kind: FindingKind) -> &'static str {
     }
 }
 
-/// A finding's time in seconds: three decimals, more (up to six) where the time has them,
-/// so that a table row 0.5 ms after another is not named by the other's time; never a
-/// negative zero.
+/// A finding's time in seconds: three decimals, or as many more (up to nine) as the time
+/// needs to be told from its neighbours (a table row 0.5 ms or 1.5 µs after another is
+/// not named by the other's time); never a negative zero.
 pub(crate) fn time_text(t: f64) -> String {
-    let mut text = format!("{t:.6}");
-    if let Some(dot) = text.find('.') {
-        while text.len() > dot + 4 && text.ends_with('0') {
-            text.pop();
-        }
-    }
+    let close_enough = 1e-10 * t.abs().max(1.0);
+    let text = (3..=9)
+        .map(|decimals| format!("{t:.decimals$}"))
+        .find(|text| {
+            text.parse::<f64>()
+                .is_ok_and(|v| (v - t).abs() <= close_enough)
+        })
+        .unwrap_or_else(|| format!("{t:.9}"));
     match text.strip_prefix('-') {
         Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_owned(),
         _ => text,

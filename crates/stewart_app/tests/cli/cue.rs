@@ -725,3 +725,53 @@ fn a_model_predictive_cue_of_a_real_drive_keeps_every_limit_and_still_moves() {
         );
     }
 }
+
+#[test]
+fn a_model_predictive_cue_says_what_its_guard_could_not_keep() {
+    // Bursts of three samples 1.5 µs apart, 0.7 s between bursts: an acceleration limit
+    // over 1.5 µs asks the servo angles to agree to nanodegrees, finer than a pose found
+    // by forward kinematics carries. What `check` then finds in the output is said.
+    let dir = tempdir();
+    let mut text = String::from("t,ax,ay,az,wx,wy,wz\n");
+    let mut t = 0.0;
+    for k in 0..400 {
+        let s = f64::from(k);
+        text.push_str(&format!(
+            "{t},{},{},0,{},0,0\n",
+            10.0 * s.sin(),
+            10.0 * s.cos(),
+            50.0 * s.sin()
+        ));
+        t += if k % 3 == 0 { 0.7 } else { 1.5e-6 };
+    }
+    let vehicle = write(dir.path(), "bursts.csv", &text);
+    let poses = dir.path().join("cued.csv");
+    let o = stewart(&[
+        "cue",
+        "--preset",
+        "servo-desk",
+        "--set",
+        "cueing.algorithm=mpc",
+        "--input",
+        &vehicle,
+        "--out",
+        &poses.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let said = stderr(&o);
+    let note = (said.lines()).find(|l| l.starts_with("cue: the guard could not keep every limit"));
+    // What is said is what `check` finds: a note exactly when it finds a problem, naming
+    // the first (today: servo accelerations at the bursts).
+    let scenario = preset_playing(dir.path(), "servo-desk", &poses);
+    let check = stewart(&["check", "--scenario", &scenario]);
+    let report = stdout(&check);
+    let first = (report.lines()).find_map(|l| l.strip_prefix("  - "));
+    match (first, note) {
+        (None, None) => {}
+        (Some(first), Some(note)) => {
+            assert!(note.contains(first), "{note}\nagainst\n{first}");
+            assert!(note.contains("samples 1.5 µs apart"), "{note}");
+        }
+        (first, note) => panic!("check found {first:?}, cue said {note:?}"),
+    }
+}

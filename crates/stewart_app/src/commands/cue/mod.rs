@@ -115,7 +115,12 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
             }
         ));
     }
-    said.push_str(&jerk_note(&scenario, samples, &cued.poses));
+    said.push_str(&output_notes(
+        &scenario,
+        samples,
+        &cued.poses,
+        cued.planner.is_some(),
+    ));
     if let Recording::Capture(c) = &recording {
         said.push_str(&format!("cue: read from {file}: {}\n", c.contents()));
     }
@@ -123,30 +128,74 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// Cueing keeps no jerk limit (see [`cue_recording`]): with one set, the samples where the
-/// cue breaks it as `check` judges them, said (empty when none does or none is set).
-fn jerk_note(scenario: &Scenario, samples: &[(f64, VehicleMotion)], poses: &[Pose]) -> String {
+/// What `check` of the output finds that the cue did not keep, said: cueing keeps no jerk
+/// limit (see [`cue_recording`]), so with one set, the samples where the cue breaks it;
+/// and, after the model-predictive planner (`planned`), whatever else its guard could not
+/// keep (samples microseconds apart ask more of an actuator's values than the poses carry),
+/// besides the jumps it counts itself and the seed's singular layout. Empty when there is
+/// nothing to say.
+fn output_notes(
+    scenario: &Scenario,
+    samples: &[(f64, VehicleMotion)],
+    poses: &[Pose],
+    planned: bool,
+) -> String {
     let limits = &scenario.limits;
-    let key = match scenario.geometry.actuator().kind() {
-        ActuatorKind::Linear if limits.leg_jerk_max.is_some() => "limits.leg_jerk_max_m_s3",
-        ActuatorKind::Rotary if limits.servo_jerk_max.is_some() => "limits.servo_jerk_max_deg_s3",
-        _ => return String::new(),
+    let jerk_key = match scenario.geometry.actuator().kind() {
+        ActuatorKind::Linear if limits.leg_jerk_max.is_some() => Some("limits.leg_jerk_max_m_s3"),
+        ActuatorKind::Rotary if limits.servo_jerk_max.is_some() => {
+            Some("limits.servo_jerk_max_deg_s3")
+        }
+        _ => None,
     };
+    if jerk_key.is_none() && !planned {
+        return String::new();
+    }
     let cued = Samples {
         times: samples.iter().map(|(t, _)| *t).collect(),
         poses: poses.to_vec(),
     };
     let report = check_motion(&scenario.geometry, limits, &cued, &scenario.checks);
-    let over: usize = (report.findings.iter())
-        .filter(|f| matches!(f.kind, FindingKind::LegJerk | FindingKind::ServoJerk))
-        .map(|f| f.count)
-        .sum();
-    if over == 0 {
-        return String::new();
+    let jerk = |f: &&stewart_kinematics::analysis::checks::Finding| {
+        matches!(f.kind, FindingKind::LegJerk | FindingKind::ServoJerk)
+    };
+    let mut said = String::new();
+    let over: usize = report.findings.iter().filter(jerk).map(|f| f.count).sum();
+    if let Some(key) = jerk_key
+        && over > 0
+    {
+        said.push_str(&format!(
+            "cue: cueing does not limit jerk: an actuator's jerk is above `{key}` at {over} actuator samples (summed over the six; `check` of the output lists them)\n"
+        ));
     }
-    format!(
-        "cue: cueing does not limit jerk: an actuator's jerk is above `{key}` at {over} actuator samples (summed over the six; `check` of the output lists them)\n"
-    )
+    let unkept: Vec<_> = (report.findings.iter())
+        .filter(|f| {
+            !jerk(f)
+                && !matches!(
+                    f.kind,
+                    FindingKind::Jump | FindingKind::ServoJump | FindingKind::ArchitectureSingular
+                )
+        })
+        .collect();
+    if planned && let Some(first) = unkept.first() {
+        let closest = (cued.times.windows(2))
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min);
+        let why = if closest < 1e-3 {
+            format!(
+                " (samples {:.1} µs apart ask more of the actuators than a pose carries; space them further)",
+                closest * 1e6
+            )
+        } else {
+            String::new()
+        };
+        said.push_str(&format!(
+            "cue: the guard could not keep every limit: `check` of the output finds {} problem(s), the first: {}{why}\n",
+            unkept.len(),
+            crate::i18n::words::finding(crate::i18n::Lang::En, first)
+        ));
+    }
+    said
 }
 
 /// The vehicle motion read: a CSV table or a packet capture.
