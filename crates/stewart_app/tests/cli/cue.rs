@@ -775,3 +775,45 @@ fn a_model_predictive_cue_says_what_its_guard_could_not_keep() {
         (first, note) => panic!("check found {first:?}, cue said {note:?}"),
     }
 }
+
+#[test]
+fn a_model_predictive_cue_says_where_the_planner_held_the_platform_still() {
+    // On servo-desk the planner's plan for the launch-and-brake example gives poses the
+    // exact check refuses; the platform then holds the last good one. Said, with the
+    // longest stretch the output stands still, as the output itself shows it.
+    let dir = tempdir();
+    let input = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/cueing/launch-and-brake.csv");
+    let poses = dir.path().join("cued.csv");
+    let o = stewart(&[
+        "cue",
+        "--preset",
+        "servo-desk",
+        "--set",
+        "cueing.algorithm=mpc",
+        "--input",
+        &input.display().to_string(),
+        "--out",
+        &poses.display().to_string(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&poses).unwrap_or_else(|e| panic!("{e}"));
+    let (_, rows) = parse_csv(&text);
+    let mut longest = 0.0f64;
+    let mut start = 0;
+    for k in 1..=rows.len() {
+        if k == rows.len() || rows[k][1..] != rows[k - 1][1..] {
+            longest = longest.max(rows[k - 1][0] - rows[start][0]);
+            start = k;
+        }
+    }
+    let said = stderr(&o);
+    let note = (said.lines()).find(|l| l.contains("the platform held the last good pose"));
+    if longest > 1.0 {
+        let note = note.unwrap_or_else(|| panic!("held {longest} s, not said: {said}"));
+        assert!(
+            note.contains(&format!("stands still for {longest:.2} s at most")),
+            "{note} ({longest} s)"
+        );
+    }
+}

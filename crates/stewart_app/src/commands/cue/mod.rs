@@ -115,6 +115,9 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
             }
         ));
     }
+    if let Some(p) = cued.planner.filter(|p| p.stops > 0) {
+        said.push_str(&held_note(samples, &cued.poses, p.stops));
+    }
     said.push_str(&output_notes(
         &scenario,
         samples,
@@ -126,6 +129,33 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     }
     let _ = std::io::stderr().write_all(said.as_bytes());
     Ok(ExitCode::SUCCESS)
+}
+
+/// The planner held the last good pose `stops` times (its plan gave a pose the exact
+/// check refused): said, with the longest stretch the platform stands still.
+fn held_note(samples: &[(f64, VehicleMotion)], poses: &[Pose], stops: u64) -> String {
+    let (mut longest, mut from) = (0.0, 0.0);
+    let mut start = 0;
+    for k in 1..=poses.len() {
+        if k == poses.len() || poses[k] != poses[k - 1] {
+            let still = samples[k - 1].0 - samples[start].0;
+            if still > longest {
+                (longest, from) = (still, samples[start].0);
+            }
+            start = k;
+        }
+    }
+    let stretch = if longest > 0.0 {
+        format!(
+            "; the platform stands still for {longest:.2} s at most, from t = {} s",
+            crate::i18n::words::time_text(from)
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "cue: at {stops} poses the planner's plan broke a limit it could not see and the platform held the last good pose{stretch}\n"
+    )
 }
 
 /// What `check` of the output finds that the cue did not keep, said: cueing keeps no jerk
