@@ -49,7 +49,7 @@ def main():
     failures = []
     for path in files:
         with tempfile.TemporaryDirectory(prefix="docs-") as scratch:
-            for name in ("examples", "crates", "docs"):
+            for name in ("examples", "crates", "docs", "assets", "shaders"):
                 os.symlink(ROOT / name, pathlib.Path(scratch) / name)
             for line, skip, body in blocks(path):
                 where = f"{path.relative_to(ROOT)}:{line}"
