@@ -647,6 +647,22 @@ fn real_forza_capture() -> Option<std::path::PathBuf> {
     }
 }
 
+/// `stewart cue` with model-predictive cueing on the preset `rig`, from `input` to
+/// `poses`.
+fn cue_mpc(rig: &str, input: &str, poses: &std::path::Path) -> std::process::Output {
+    stewart(&[
+        "cue",
+        "--preset",
+        rig,
+        "--set",
+        "cueing.algorithm=mpc",
+        "--input",
+        input,
+        "--out",
+        &poses.display().to_string(),
+    ])
+}
+
 /// A scenario file: the preset `rig` playing the pose table `poses`.
 fn preset_playing(dir: &std::path::Path, rig: &str, poses: &std::path::Path) -> String {
     let preset = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -683,17 +699,7 @@ fn a_model_predictive_cue_of_a_real_drive_keeps_every_limit_and_still_moves() {
     let dir = tempdir();
     for rig in ["seed", "paired", "servo-desk", "crank-rig"] {
         let poses = dir.path().join(format!("{rig}.csv"));
-        let o = stewart(&[
-            "cue",
-            "--preset",
-            rig,
-            "--set",
-            "cueing.algorithm=mpc",
-            "--input",
-            &capture.display().to_string(),
-            "--out",
-            &poses.display().to_string(),
-        ]);
+        let o = cue_mpc(rig, &capture.display().to_string(), &poses);
         assert_eq!(o.status.code(), Some(0), "{rig}: {}", stderr(&o));
         assert!(!stderr(&o).contains("jumps"), "{rig}: {}", stderr(&o));
         let scenario = preset_playing(dir.path(), rig, &poses);
@@ -746,17 +752,7 @@ fn a_model_predictive_cue_says_what_its_guard_could_not_keep() {
     }
     let vehicle = write(dir.path(), "bursts.csv", &text);
     let poses = dir.path().join("cued.csv");
-    let o = stewart(&[
-        "cue",
-        "--preset",
-        "servo-desk",
-        "--set",
-        "cueing.algorithm=mpc",
-        "--input",
-        &vehicle,
-        "--out",
-        &poses.display().to_string(),
-    ]);
+    let o = cue_mpc("servo-desk", &vehicle, &poses);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let said = stderr(&o);
     let note = (said.lines()).find(|l| l.starts_with("cue: the guard could not keep every limit"));
@@ -785,17 +781,7 @@ fn a_model_predictive_cue_says_where_the_planner_held_the_platform_still() {
     let input = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../examples/cueing/launch-and-brake.csv");
     let poses = dir.path().join("cued.csv");
-    let o = stewart(&[
-        "cue",
-        "--preset",
-        "servo-desk",
-        "--set",
-        "cueing.algorithm=mpc",
-        "--input",
-        &input.display().to_string(),
-        "--out",
-        &poses.display().to_string(),
-    ]);
+    let o = cue_mpc("servo-desk", &input.display().to_string(), &poses);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let text = std::fs::read_to_string(&poses).unwrap_or_else(|e| panic!("{e}"));
     let (_, rows) = parse_csv(&text);

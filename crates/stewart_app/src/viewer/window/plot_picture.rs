@@ -34,6 +34,79 @@ pub(crate) fn draw_wanted(
     });
 }
 
+/// A colour target of the window's format (render attachment, and `usage`) and the depth
+/// buffer the window's egui pipeline draws with, both `size` pixels.
+fn colour_and_depth(
+    rs: &egui_wgpu::RenderState,
+    size: [u32; 2],
+    usage: wgpu::TextureUsages,
+) -> (wgpu::Texture, wgpu::Texture) {
+    let texture = |label, format, usage| {
+        stewart_render::targets::texture(&rs.device, label, size, format, 1, usage)
+    };
+    (
+        texture(
+            "plot curves picture",
+            rs.target_format,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | usage,
+        ),
+        texture(
+            "plot curves picture depth",
+            stewart_render::renderer::DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        ),
+    )
+}
+
+/// The command buffers that draw `primitives` (tessellated at `ppp`) with the window's egui
+/// renderer into `colour` over `clear`, with the depth buffer the window's pipeline has.
+fn paint_into(
+    rs: &egui_wgpu::RenderState,
+    primitives: &[egui::ClippedPrimitive],
+    (colour, depth): (&wgpu::Texture, &wgpu::Texture),
+    ppp: f32,
+    clear: wgpu::Color,
+) -> Vec<wgpu::CommandBuffer> {
+    let size = colour.size();
+    let screen = egui_wgpu::ScreenDescriptor {
+        size_in_pixels: [size.width, size.height],
+        pixels_per_point: ppp,
+    };
+    let device = &rs.device;
+    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+        label: Some("plot curves picture"),
+    });
+    let mut commands =
+        rs.renderer
+            .write()
+            .update_buffers(device, &rs.queue, &mut encoder, primitives, &screen);
+    {
+        let view = colour.create_view(&Default::default());
+        let depth = depth.create_view(&Default::default());
+        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("plot curves picture"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &view,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(clear),
+                    store: wgpu::StoreOp::Store,
+                },
+                depth_slice: None,
+            })],
+            depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        rs.renderer
+            .read()
+            .render(&mut pass.forget_lifetime(), primitives, &screen);
+    }
+    commands.push(encoder.finish());
+    commands
+}
+
 /// The side of the squares, physical pixels, by which the picture's parts that hold
 /// anything are found.
 const PART: f32 = 16.0;
@@ -116,22 +189,7 @@ fn draw(
         [s.width, s.height] == size
     });
     if !fits {
-        let texture = stewart_render::targets::texture(
-            device,
-            "plot curves picture",
-            size,
-            rs.target_format,
-            1,
-            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-        );
-        let depth = stewart_render::targets::texture(
-            device,
-            "plot curves picture depth",
-            size,
-            stewart_render::renderer::DEPTH_FORMAT,
-            1,
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
+        let (texture, depth) = colour_and_depth(rs, size, wgpu::TextureUsages::TEXTURE_BINDING);
         let view = texture.create_view(&Default::default());
         let mut renderer = rs.renderer.write();
         let id = match target.take() {
@@ -160,43 +218,14 @@ fn draw(
         })
         .collect();
     let primitives = ctx.tessellate(shapes, ppp);
-    let screen = egui_wgpu::ScreenDescriptor {
-        size_in_pixels: size,
-        pixels_per_point: ppp,
-    };
-    let queue = &rs.queue;
-    let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-        label: Some("plot curves picture"),
-    });
-    let mut commands =
-        rs.renderer
-            .write()
-            .update_buffers(device, queue, &mut encoder, &primitives, &screen);
-    {
-        let view = target.texture.create_view(&Default::default());
-        let depth = target.depth.create_view(&Default::default());
-        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("plot curves picture"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-                depth_slice: None,
-            })],
-            depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        rs.renderer
-            .read()
-            .render(&mut pass.forget_lifetime(), &primitives, &screen);
-    }
-    commands.push(encoder.finish());
-    queue.submit(commands);
+    let commands = paint_into(
+        rs,
+        &primitives,
+        (&target.texture, &target.depth),
+        ppp,
+        wgpu::Color::TRANSPARENT,
+    );
+    rs.queue.submit(commands);
     Some((target.id, parts_touched(&primitives, size, ppp, origin)))
 }
 
@@ -256,62 +285,20 @@ mod tests {
     ) -> Vec<u8> {
         let primitives = ctx.tessellate(shapes, ppp);
         let device = &rs.device;
-        let colour = stewart_render::targets::texture(
-            device,
-            "test colour",
-            size,
-            rs.target_format,
-            1,
-            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        );
-        let depth = stewart_render::targets::texture(
-            device,
-            "test depth",
-            size,
-            stewart_render::renderer::DEPTH_FORMAT,
-            1,
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
-        let screen = egui_wgpu::ScreenDescriptor {
-            size_in_pixels: size,
-            pixels_per_point: ppp,
-        };
-        let mut encoder = device.create_command_encoder(&Default::default());
-        let mut commands = rs.renderer.write().update_buffers(
-            device,
-            &rs.queue,
-            &mut encoder,
+        let (colour, depth) = colour_and_depth(rs, size, wgpu::TextureUsages::COPY_SRC);
+        let mut commands = paint_into(
+            rs,
             &primitives,
-            &screen,
+            (&colour, &depth),
+            ppp,
+            wgpu::Color {
+                r: 0.11,
+                g: 0.12,
+                b: 0.13,
+                a: 1.0,
+            },
         );
-        {
-            let view = colour.create_view(&Default::default());
-            let depth = depth.create_view(&Default::default());
-            let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: None,
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &view,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color {
-                            r: 0.11,
-                            g: 0.12,
-                            b: 0.13,
-                            a: 1.0,
-                        }),
-                        store: wgpu::StoreOp::Store,
-                    },
-                    depth_slice: None,
-                })],
-                depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            rs.renderer
-                .read()
-                .render(&mut pass.forget_lifetime(), &primitives, &screen);
-        }
+        let mut encoder = device.create_command_encoder(&Default::default());
         let readback =
             stewart_render::readback::Readback::new(device, "test readback", size[0], size[1]);
         readback.copy_from(&mut encoder, &colour);
