@@ -733,10 +733,12 @@ fn a_model_predictive_cue_of_a_real_drive_keeps_every_limit_and_still_moves() {
 }
 
 #[test]
-fn a_model_predictive_cue_says_what_its_guard_could_not_keep() {
+fn a_model_predictive_cue_of_samples_microseconds_apart_keeps_every_limit() {
     // Bursts of three samples 1.5 µs apart, 0.7 s between bursts: an acceleration limit
-    // over 1.5 µs asks the servo angles to agree to nanodegrees, finer than a pose found
-    // by forward kinematics carries. What `check` then finds in the output is said.
+    // over 1.5 µs asks the servo angles to agree to nanodegrees. The guard once judged
+    // the values it asked forward kinematics for rather than those of the pose found
+    // (1e-12 m apart), and `check` found servo S1 at 3959 °/s² against 3000; it now
+    // polishes each pose to rounding and judges it as read back from its table row.
     let dir = tempdir();
     let mut text = String::from("t,ax,ay,az,wx,wy,wz\n");
     let mut t = 0.0;
@@ -754,22 +756,16 @@ fn a_model_predictive_cue_says_what_its_guard_could_not_keep() {
     let poses = dir.path().join("cued.csv");
     let o = cue_mpc("servo-desk", &vehicle, &poses);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let said = stderr(&o);
-    let note = (said.lines()).find(|l| l.starts_with("cue: the guard could not keep every limit"));
-    // What is said is what `check` finds: a note exactly when it finds a problem, naming
-    // the first (today: servo accelerations at the bursts).
+    assert!(
+        !stderr(&o).contains("could not keep every limit"),
+        "{}",
+        stderr(&o)
+    );
     let scenario = preset_playing(dir.path(), "servo-desk", &poses);
     let check = stewart(&["check", "--scenario", &scenario]);
     let report = stdout(&check);
-    let first = (report.lines()).find_map(|l| l.strip_prefix("  - "));
-    match (first, note) {
-        (None, None) => {}
-        (Some(first), Some(note)) => {
-            assert!(note.contains(first), "{note}\nagainst\n{first}");
-            assert!(note.contains("samples 1.5 µs apart"), "{note}");
-        }
-        (first, note) => panic!("check found {first:?}, cue said {note:?}"),
-    }
+    let findings: Vec<&str> = (report.lines()).filter(|l| l.starts_with("  - ")).collect();
+    assert!(findings.is_empty(), "{findings:#?}");
 }
 
 #[test]

@@ -108,12 +108,21 @@ impl Geometry {
         values: &[f64; 6],
         near: &Pose,
     ) -> Result<Pose, ForwardError> {
-        let options = crate::solve::forward::ForwardOptions::default();
+        self.pose_from_actuator_values_with(values, near, &Default::default())
+    }
+
+    /// [`Geometry::pose_from_actuator_values`] with the forward solver's `options`.
+    pub fn pose_from_actuator_values_with(
+        &self,
+        values: &[f64; 6],
+        near: &Pose,
+        options: &crate::solve::forward::ForwardOptions,
+    ) -> Result<Pose, ForwardError> {
         let solution = if self.servos() {
             let angles = values.map(crate::model::angle::Angle::from_degrees);
-            self.forward_servos(&angles, near, &options)
+            self.forward_servos(&angles, near, options)
         } else {
-            self.forward(values, near, &options)
+            self.forward(values, near, options)
         };
         solution.map(|s| s.pose)
     }

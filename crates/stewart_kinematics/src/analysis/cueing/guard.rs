@@ -23,12 +23,16 @@
 
 use crate::analysis::checks::CheckSettings;
 mod smoothing;
+mod steering;
+
+use steering::{along, clamped};
 
 use crate::analysis::checks::jumps::{Jump, jumps_in, typical_interval};
 use crate::analysis::workspace;
 use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
 use crate::model::pose::Pose;
+use crate::solve::forward::ForwardOptions;
 
 /// The guard of one rig.
 #[derive(Clone, Debug)]
@@ -100,6 +104,11 @@ const SMOOTH_SAMPLES: f64 = 4.0;
 /// are judged again from their table rows, whose rounding must not carry a value kept
 /// exactly on a limit over it.
 const ROUNDING_KEPT: f64 = 1.0 - 1e-6;
+
+/// The rounding the actuator values of a pose found by forward kinematics carry once
+/// read back from its table row, as a share of the value (at least of 1): slopes are aimed
+/// this far inside their limits over the interval.
+const VALUE_ROUNDING: f64 = 1e-13;
 
 /// The most a sample's smoothing is doubled around the jumps found near it.
 const MOST_CAREFUL: u8 = 4;
@@ -286,7 +295,7 @@ impl ActuatorGuard {
         history: [Option<Given>; 3],
         place: Place,
     ) -> Option<(Given, bool)> {
-        let wanted = self.geometry.actuator_values_at(&pose).ok();
+        let wanted = self.read_back(&pose);
         let Some((t1, q1, last)) = history[2] else {
             // The first pose: where the motion starts (at rest).
             return Some(((t, wanted?, pose), false));
@@ -365,26 +374,74 @@ impl ActuatorGuard {
                 })),
                 _ => None,
             };
-            let slopes_tried =
-                tracking
-                    .into_iter()
-                    .chain(steering.iter().map(|&(blend, keep_going)| {
+            let slopes_of = |entries: &[(f64, f64)]| -> Vec<[f64; 6]> {
+                (entries.iter())
+                    .map(|&(blend, keep_going)| {
                         std::array::from_fn(|i| {
                             let wanted_slope = (target[i] - q1[i]) / dt;
                             blend * wanted_slope + (1.0 - blend) * keep_going * going_on[i]
                         })
-                    }));
-            let found = slopes_tried.into_iter().find_map(|slope: [f64; 6]| {
-                let values: [f64; 6] = std::array::from_fn(|i| {
-                    q1[i] + slope[i].clamp(allowed[i].0, allowed[i].1) * dt
-                });
-                if values == q1 {
-                    // Staying put: the last pose, already judged.
-                    return Some(((t, q1, last), true));
+                    })
+                    .collect()
+            };
+            // Each slope aimed inside what is allowed by the rounding the values found
+            // carry; first along its own direction from the motion going on (all
+            // actuators cut back together, so the values stay those of a pose), then
+            // each clamped alone; what is found judged as `check` reads it.
+            let aim: [(f64, f64); 6] = std::array::from_fn(|i| {
+                let room = VALUE_ROUNDING * q1[i].abs().max(1.0) / dt;
+                let (lo, hi) = allowed[i];
+                if hi - lo > 2.0 * room {
+                    (lo + room, hi - room)
+                } else {
+                    let mid = 0.5 * (lo + hi);
+                    (mid, mid)
                 }
-                self.pose_of(&values, &last)
-                    .map(|found| ((t, values, found), true))
             });
+            let by_values = |slopes: Vec<[f64; 6]>| {
+                (slopes.into_iter())
+                    .flat_map(|slope| [along(&going_on, &slope, &aim), clamped(&slope, &aim)])
+                    .find_map(|slope| {
+                        let values: [f64; 6] = std::array::from_fn(|i| q1[i] + slope[i] * dt);
+                        let (found, read) = if values == q1 {
+                            // Staying put: the last pose, already judged.
+                            (last, q1)
+                        } else {
+                            self.pose_of(&values, &last)?
+                        };
+                        (0..6)
+                            .all(|i| {
+                                let s = (read[i] - q1[i]) / dt;
+                                s >= allowed[i].0 && s <= allowed[i].1
+                            })
+                            .then_some(((t, read, found), true))
+                    })
+            };
+            // Where no pose has the values wanted (on a rig whose leg lengths reach only
+            // some values together, as an architecturally singular one's), on the way
+            // between poses instead: from the motion going on, or from the last pose,
+            // towards the plan's pose, or the last (braking). The last resort (braking,
+            // or staying put) comes after.
+            let going_pose = history[1].map(|(t0, _, before)| {
+                let (a, b) = (before.to_coordinates(), last.to_coordinates());
+                let r = dt / (t1 - t0);
+                Pose::from_coordinates(std::array::from_fn(|j| b[j] + (b[j] - a[j]) * r))
+            });
+            let towards: &[Pose] = if place.braking || wanted.is_none() {
+                &[last]
+            } else {
+                &[pose, last]
+            };
+            let between = || {
+                (going_pose.iter().chain([&last]))
+                    .flat_map(|from| towards.iter().map(move |to| (from, to)))
+                    .find_map(|(from, to)| self.between(t, (dt, &q1), from, to, (&allowed, &aim)))
+                    .map(|g| (g, true))
+            };
+            let (resort, moving) = steering.split_last()?;
+            let found = by_values(tracking.into_iter().chain(slopes_of(moving)).collect())
+                .or_else(between)
+                .or_else(|| by_values(slopes_of(std::slice::from_ref(resort))));
             if found.is_some() {
                 return found;
             }
@@ -394,7 +451,7 @@ impl ActuatorGuard {
 
     /// Whether `pose` keeps the joint cones, clearances and (as its table row reads back)
     /// the condition-number limit.
-    fn keeps_the_other_limits(&self, pose: &Pose) -> bool {
+    pub(super) fn keeps_the_other_limits(&self, pose: &Pose) -> bool {
         workspace::pose_within_limits_as_written(&self.geometry, &self.limits, pose)
             && self.condition_max.is_none_or(|max| {
                 self.geometry
@@ -404,15 +461,25 @@ impl ActuatorGuard {
             })
     }
 
-    /// The pose whose actuator values are `values`, found from `near`, when it keeps every
-    /// limit as written.
-    fn pose_of(&self, values: &[f64; 6], near: &Pose) -> Option<Pose> {
-        let found = self.geometry.pose_from_actuator_values(values, near).ok()?;
-        let exact = self
-            .geometry
-            .actuator_values_at(&found)
-            .is_ok_and(|q| q.iter().zip(values).all(|(a, b)| (a - b).abs() < 1e-6));
-        (exact && self.keeps_the_other_limits(&found)).then_some(found)
+    /// The pose whose actuator values are `values`, found from `near` (to rounding), and
+    /// its values as `check` reads them, when it keeps every limit as written.
+    pub(super) fn pose_of(&self, values: &[f64; 6], near: &Pose) -> Option<(Pose, [f64; 6])> {
+        let polished = ForwardOptions {
+            polish: true,
+            ..ForwardOptions::default()
+        };
+        let found = (self.geometry)
+            .pose_from_actuator_values_with(values, near, &polished)
+            .ok()?;
+        let read = self.read_back(&found)?;
+        let exact = read.iter().zip(values).all(|(a, b)| (a - b).abs() < 1e-6);
+        (exact && self.keeps_the_other_limits(&found)).then_some((found, read))
+    }
+
+    /// The actuator values of `pose` as `check` reads them: from its table row.
+    pub(super) fn read_back(&self, pose: &Pose) -> Option<[f64; 6]> {
+        let read = Pose::from_row(&pose.to_row());
+        self.geometry.actuator_values_at(&read).ok()
     }
 
     /// The slopes allowed over the next interval of `dt` from value `q` after the

@@ -21,6 +21,10 @@ use crate::model::angle::Angle;
 use crate::model::geometry::Geometry;
 use crate::model::pose::{Pose, rotation_zyx_from_sin_cos};
 
+/// The most Newton steps a polish takes (from within the tolerance, quadratic
+/// convergence reaches rounding in one or two).
+const POLISH_STEPS: usize = 4;
+
 /// Settings of the forward solver.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ForwardOptions {
@@ -28,6 +32,11 @@ pub struct ForwardOptions {
     pub tolerance: f64,
     /// Most iterations before giving up.
     pub max_iterations: usize,
+    /// Once within the tolerance, go on with plain Newton steps while each lowers the
+    /// residual, down to rounding (for callers that difference poses found microseconds
+    /// apart).
+    #[serde(default)]
+    pub polish: bool,
 }
 
 impl Default for ForwardOptions {
@@ -35,6 +44,7 @@ impl Default for ForwardOptions {
         Self {
             tolerance: 1e-12,
             max_iterations: 100,
+            polish: false,
         }
     }
 }
@@ -266,10 +276,13 @@ impl Geometry {
                 });
             }
             if residual <= options.tolerance {
+                if options.polish {
+                    (x, f) = self.polished(anchors, x, f, d, lengths);
+                }
                 return Ok(ForwardSolution {
                     pose: pose_of(&x),
                     iterations,
-                    residual,
+                    residual: f.amax(),
                 });
             }
             if iterations == options.max_iterations {
@@ -314,6 +327,31 @@ impl Geometry {
                 });
             }
         }
+    }
+
+    /// Plain Newton steps from `x` (residual `f`, derivative `d`) while each lowers the
+    /// largest residual: the point and its residual where rounding stops the descent.
+    fn polished(
+        &self,
+        anchors: &[Vector3<f64>; 6],
+        mut x: Vector6<f64>,
+        mut f: Vector6<f64>,
+        mut d: Matrix6<f64>,
+        lengths: &[f64; 6],
+    ) -> (Vector6<f64>, Vector6<f64>) {
+        for _ in 0..POLISH_STEPS {
+            let Some(step) = d.lu().solve(&(-f)) else {
+                break;
+            };
+            let candidate = x + step;
+            let (fc, dc) = self.residual_and_derivative(anchors, &candidate, lengths);
+            // Stop at rounding (or a NaN).
+            if fc.amax().partial_cmp(&f.amax()) != Some(std::cmp::Ordering::Less) {
+                break;
+            }
+            (x, f, d) = (candidate, fc, dc);
+        }
+        (x, f)
     }
 
     /// Backtracking along `step` until the cost drops by the Armijo fraction; returns the

@@ -145,6 +145,38 @@ fn impossible_lengths_fail_with_a_typed_error() {
 }
 
 #[test]
+fn a_polished_solution_reproduces_the_lengths_to_rounding() {
+    // Started 1 mm off, the solver stops once within 1e-12 m; polished, it goes on to the
+    // last few units in the last place of a metre (the guard of a cue differences poses
+    // found 1.5 µs apart, where 1e-12 m is an acceleration of hundreds of m/s²).
+    let g = crate::test_support::paired_geometry();
+    let truth = Pose::from_xyz_rpy_deg([0.05, -0.02, 0.9], [3.0, -2.0, 5.0]);
+    let lengths = g.leg_lengths(&truth);
+    let start = Pose::from_xyz_rpy_deg([0.051, -0.02, 0.9], [3.0, -2.0, 5.0]);
+    let off = |pose: &Pose| {
+        let found = g.leg_lengths(pose);
+        (0..6).fold(0.0f64, |m, i| m.max((found[i] - lengths[i]).abs()))
+    };
+    let plain = g.forward(&lengths, &start, &ForwardOptions::default());
+    let polished = ForwardOptions {
+        polish: true,
+        ..ForwardOptions::default()
+    };
+    let fine = g.forward(&lengths, &start, &polished);
+    let (plain, fine) = (
+        plain.unwrap_or_else(|e| panic!("{e}")),
+        fine.unwrap_or_else(|e| panic!("{e}")),
+    );
+    assert!(off(&fine.pose) <= 1e-15, "{}", off(&fine.pose));
+    // Here the plain solve stops at 6e-14 m, the polished one at 2e-16 m.
+    assert!(fine.residual <= 1e-15 && plain.residual > 100.0 * fine.residual);
+    assert!(fine.iterations == plain.iterations);
+    for (a, b) in fine.pose.to_row().iter().zip(truth.to_row()) {
+        assert!((a - b).abs() < 1e-12, "{a} against {b}");
+    }
+}
+
+#[test]
 fn iteration_limit_is_reported() {
     let g = crate::test_support::paired_geometry();
     let truth = Pose::from_xyz_rpy_deg([0.1, 0.1, 0.9], [10.0, -5.0, 20.0]);

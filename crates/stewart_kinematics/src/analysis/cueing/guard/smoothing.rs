@@ -29,14 +29,8 @@ impl ActuatorGuard {
     /// The actuator values of `poses` as `check` reads them (from their table rows; NaN
     /// where a row reads back to no pose).
     pub(super) fn values_as_read(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
-        poses
-            .iter()
-            .map(|p| {
-                let read = Pose::from_row(&p.to_row());
-                self.geometry
-                    .actuator_values_at(&read)
-                    .unwrap_or([f64::NAN; 6])
-            })
+        (poses.iter())
+            .map(|p| self.read_back(p).unwrap_or([f64::NAN; 6]))
             .collect()
     }
 
@@ -74,20 +68,24 @@ impl ActuatorGuard {
             let half = NARROWEST << widening;
             // The window's ends a and b stay; a sample before a and after b give the
             // slopes there, and the differences judged reach one sample further.
-            let (Some(a), b) = (after.checked_sub(half), after + half - 1) else {
-                return;
-            };
-            if a < 2 || b + 3 > n {
+            // At the start of the motion the window may begin at its first sample (the
+            // motion starts from rest there).
+            let a = after.saturating_sub(half);
+            let b = after + half - 1;
+            if b + 2 > n {
                 return;
             }
-            let Some(window) = self.window_poses(times, poses, a, b) else {
-                continue;
-            };
-            let mut tried = poses.to_vec();
-            tried[a + 1..b].copy_from_slice(&window);
-            if self.window_keeps_the_limits(times, &tried, a, b) {
-                poses[a + 1..b].copy_from_slice(&window);
-                return;
+            let windows = [
+                self.window_by_values(times, poses, a, b),
+                self.window_by_coordinates(times, poses, a, b),
+            ];
+            for window in windows.into_iter().flatten() {
+                let mut tried = poses.to_vec();
+                tried[a + 1..b].copy_from_slice(&window);
+                if self.window_keeps_the_limits(times, &tried, a, b) {
+                    poses[a + 1..b].copy_from_slice(&window);
+                    return;
+                }
             }
         }
     }
@@ -95,37 +93,46 @@ impl ActuatorGuard {
     /// The poses strictly between samples `a` and `b` whose actuator values follow the
     /// cubic joining the values and slopes at `a` and `b`; `None` when one of them is no
     /// pose within the limits.
-    fn window_poses(&self, times: &[f64], poses: &[Pose], a: usize, b: usize) -> Option<Vec<Pose>> {
+    fn window_by_values(
+        &self,
+        times: &[f64],
+        poses: &[Pose],
+        a: usize,
+        b: usize,
+    ) -> Option<Vec<Pose>> {
         let q = |k: usize| self.geometry.actuator_values_at(&poses[k]).ok();
-        let (qa0, qa, qb, qb1) = (q(a - 1)?, q(a)?, q(b)?, q(b + 1)?);
-        let (ta, tb) = (times[a], times[b]);
-        let h = tb - ta;
-        let slope_a: [f64; 6] = std::array::from_fn(|i| (qa[i] - qa0[i]) / (ta - times[a - 1]));
-        let slope_b: [f64; 6] = std::array::from_fn(|i| (qb1[i] - qb[i]) / (times[b + 1] - tb));
         let mut near = poses[a];
-        let mut window = Vec::with_capacity(b - a - 1);
-        for &t in &times[a + 1..b] {
-            let u = (t - ta) / h;
-            let (u2, u3) = (u * u, u * u * u);
-            let (h00, h10, h01, h11) = (
-                2.0 * u3 - 3.0 * u2 + 1.0,
-                u3 - 2.0 * u2 + u,
-                -2.0 * u3 + 3.0 * u2,
-                u3 - u2,
-            );
-            let values: [f64; 6] = std::array::from_fn(|i| {
-                h00 * qa[i] + h10 * h * slope_a[i] + h01 * qb[i] + h11 * h * slope_b[i]
-            });
-            if values
-                .iter()
-                .any(|v| *v < self.range.0 || *v > self.range.1)
-            {
-                return None;
-            }
-            near = self.pose_of(&values, &near)?;
-            window.push(near);
-        }
-        Some(window)
+        (hermite(times, a, b, q)?.into_iter())
+            .map(|values| {
+                if (values.iter()).any(|v| *v < self.range.0 || *v > self.range.1) {
+                    return None;
+                }
+                near = self.pose_of(&values, &near)?.0;
+                Some(near)
+            })
+            .collect()
+    }
+
+    /// The poses strictly between samples `a` and `b` whose coordinates follow the cubic
+    /// joining the poses and their rates at `a` and `b` (for a rig whose actuator values
+    /// reach no pose in between, as an architecturally singular one's); `None` when one
+    /// of them is outside the limits.
+    fn window_by_coordinates(
+        &self,
+        times: &[f64],
+        poses: &[Pose],
+        a: usize,
+        b: usize,
+    ) -> Option<Vec<Pose>> {
+        let c = |k: usize| Some(poses[k].to_coordinates());
+        (hermite(times, a, b, c)?.into_iter())
+            .map(|coordinates| {
+                let pose = Pose::from_coordinates(coordinates);
+                let read = self.read_back(&pose)?;
+                let within = (read.iter()).all(|v| *v >= self.range.0 && *v <= self.range.1);
+                (within && self.keeps_the_other_limits(&pose)).then_some(pose)
+            })
+            .collect()
     }
 
     /// Whether `poses`, changed between samples `a` and `b`, keep the speed and
@@ -137,17 +144,51 @@ impl ActuatorGuard {
             return false;
         }
         // Differences at a − 1 ..= b + 1 (every stencil touching the window), from the
-        // samples a − 2 ..= b + 2 (all interior to that slice).
-        let (from, to) = (a - 2, b + 3);
+        // samples a − 2 ..= b + 2: interior to that slice, or at an end of the motion,
+        // where `check` extrapolates from the same samples.
+        let (from, to) = (a.saturating_sub(2), (b + 3).min(times.len()));
         let (t, v) = (&times[from..to], &values[from..to]);
+        let first = usize::from(from > 0);
         let within = |series: Vec<[f64; 6]>, limit: Option<f64>| {
-            limit.is_none_or(|max| {
-                series[1..series.len() - 1]
-                    .iter()
-                    .flatten()
-                    .all(|x| x.abs() <= max)
-            })
+            let last = series.len() - usize::from(to < times.len());
+            limit.is_none_or(|max| series[first..last].iter().flatten().all(|x| x.abs() <= max))
         };
         within(leg_speeds(t, v), self.speed) && within(leg_accelerations(t, v), self.accel)
     }
+}
+
+/// The cubic (Hermite) joining the six numbers `at(a)` and `at(b)`, with the slopes of the
+/// intervals before `a` (none at the first sample: from rest) and after `b`, at the times
+/// strictly between; `None` where `at` has no value.
+fn hermite(
+    times: &[f64],
+    a: usize,
+    b: usize,
+    at: impl Fn(usize) -> Option<[f64; 6]>,
+) -> Option<Vec<[f64; 6]>> {
+    let (qa, qb, qb1) = (at(a)?, at(b)?, at(b + 1)?);
+    let (ta, tb) = (times[a], times[b]);
+    let h = tb - ta;
+    let slope_a: [f64; 6] = match a.checked_sub(1) {
+        Some(before) => {
+            let qa0 = at(before)?;
+            std::array::from_fn(|i| (qa[i] - qa0[i]) / (ta - times[before]))
+        }
+        None => [0.0; 6],
+    };
+    let slope_b: [f64; 6] = std::array::from_fn(|i| (qb1[i] - qb[i]) / (times[b + 1] - tb));
+    let between = times[a + 1..b].iter().map(|&t| {
+        let u = (t - ta) / h;
+        let (u2, u3) = (u * u, u * u * u);
+        let (h00, h10, h01, h11) = (
+            2.0 * u3 - 3.0 * u2 + 1.0,
+            u3 - 2.0 * u2 + u,
+            -2.0 * u3 + 3.0 * u2,
+            u3 - u2,
+        );
+        std::array::from_fn(|i| {
+            h00 * qa[i] + h10 * h * slope_a[i] + h01 * qb[i] + h11 * h * slope_b[i]
+        })
+    });
+    Some(between.collect())
 }

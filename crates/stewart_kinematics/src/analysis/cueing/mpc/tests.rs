@@ -205,6 +205,36 @@ fn hostile() -> Vec<(f64, VehicleMotion)> {
         .collect()
 }
 
+/// A recording whose samples come `spacing` (a repeating pattern of intervals) apart:
+/// turning and braking hard, as a car in a slalom, at times a game's clock gives.
+fn spaced(count: usize, spacing: &[f64]) -> Vec<(f64, VehicleMotion)> {
+    let mut t = 0.0;
+    (0..count)
+        .map(|k| {
+            let s = k as f64;
+            let sample = (
+                t,
+                VehicleMotion {
+                    accel: [10.0 * s.sin(), 10.0 * s.cos(), 0.0],
+                    rates_deg_s: [50.0 * s.sin(), 0.0, 30.0 * s.cos()],
+                },
+            );
+            t += spacing[k % spacing.len()];
+            sample
+        })
+        .collect()
+}
+
+/// Hostile timing: bursts of three samples 1.5 µs apart every 0.7 s (an acceleration
+/// limit over 1.5 µs asks the servo angles to agree to nanodegrees), and pairs 1 µs apart
+/// every 50 ms (the plan's very first step a jump among the steps after it).
+fn hostile_timing() -> [(&'static str, Vec<(f64, VehicleMotion)>); 2] {
+    [
+        ("bursts", spaced(90, &[0.7, 1.5e-6, 1.5e-6])),
+        ("pairs", spaced(200, &[0.05, 1e-6])),
+    ]
+}
+
 #[test]
 fn adversarial_input_never_takes_a_pose_outside_the_limits() {
     let input = hostile();
@@ -413,9 +443,12 @@ fn a_stop_near_a_servos_range_end_does_not_freeze_the_planner() {
 fn every_rig_kind_cued_from_every_example_and_hostile_input_passes_check() {
     // The promise of model-predictive cueing, as a property over the rigs of every kind
     // (linear: seed, paired; rotary: servo-desk, crank-rig) × the four example recordings
-    // and a hostile one: `check` of what comes out finds nothing (the rotary rigs' servo
+    // and hostile ones: `check` of what comes out finds nothing (the rotary rigs' servo
     // accelerations reached 24 645 °/s² against 3 000 before the guard kept them, and
-    // their condition number 51 against 30).
+    // their condition number 51 against 30; samples 1.5 µs apart broke servo-desk's
+    // acceleration by 959 °/s² until the guard judged the poses it found as read back;
+    // and pairs 1 µs apart left the seed still for 4.85 s, then jumping 292 mm, until
+    // the guard steered between poses where leg lengths reach no pose).
     use rayon::prelude::*;
     let inputs: Vec<(&str, Vec<(f64, VehicleMotion)>)> = [
         "braking-step",
@@ -426,6 +459,7 @@ fn every_rig_kind_cued_from_every_example_and_hostile_input_passes_check() {
     .into_iter()
     .map(|name| (name, recording(name)))
     .chain(std::iter::once(("hostile", hostile())))
+    .chain(hostile_timing())
     .collect();
     let cases: Vec<(&str, usize)> = ["seed", "paired", "servo-desk", "crank-rig"]
         .into_iter()
