@@ -1,6 +1,6 @@
 //! The rig's limits as linear constraints on the plan: every actuator's value (leg length
 //! or servo angle) inside its stroke (range), and each joint's cone angle under its limit
-//! where one is set, at the end of every step; the actuators' speeds at the end of every
+//! where one is set (a rotary rig's rods measured from their horn tips, as `check` does), at the end of every step; the actuators' speeds at the end of every
 //! step and accelerations over every step under their limits. Each is linearised about
 //! the pose now, `c(s) ≈ c(s₀) + M (s − s₀)`, with `M` by central differences of the exact
 //! inverse kinematics, and kept a margin inside its limit; the pose that comes out is then
@@ -10,7 +10,9 @@ use nalgebra::Vector3;
 
 use super::horizon::{Layout, Quantity};
 use super::qp::Constraints;
+use crate::analysis::checks::servos::rod_cone_angles;
 use crate::analysis::cueing::{Cue, pose_at};
+use crate::model::angle::Angle;
 use crate::model::geometry::Geometry;
 use crate::model::limits::{Limits, joint_angles};
 use crate::model::pose::Pose;
@@ -120,18 +122,32 @@ impl Rig {
         let mut out = [0.0; MAX_VALUES];
         out[..6].copy_from_slice(&actuators);
         if self.base_cone || self.platform_cone {
-            let angles = joint_angles(&pose, &self.geometry.inverse(&pose));
+            let angles = self.cone_angles(&pose, &actuators);
             let mut at = 6;
             for (on, k) in [(self.base_cone, 0), (self.platform_cone, 1)] {
                 if on {
-                    for (o, a) in out[at..at + 6].iter_mut().zip(&angles) {
-                        *o = a[k];
-                    }
+                    out[at..at + 6].copy_from_slice(&angles[k]);
                     at += 6;
                 }
             }
         }
         Some(out)
+    }
+
+    /// The joints' cone angles (radians) at `pose`, whose actuator values are `actuators`:
+    /// at the base (`[0]`) and platform (`[1]`) joints of each leg, or on a rotary rig of
+    /// each rod, from its horn tip — where `check` measures them.
+    fn cone_angles(&self, pose: &Pose, actuators: &[f64; 6]) -> [[f64; 6]; 2] {
+        let solution = self.geometry.inverse(pose);
+        let Some(servos) = self.geometry.rotary() else {
+            let angles = joint_angles(pose, &solution);
+            return [angles.map(|a| a[0]), angles.map(|a| a[1])];
+        };
+        let bases = self.geometry.base_joints();
+        let tips = std::array::from_fn(|i| {
+            servos.horn_tip(i, &bases[i], Angle::from_degrees(actuators[i]))
+        });
+        rod_cone_angles(pose, &solution.platform_joints, &tips).map(|k| k.map(f64::to_radians))
     }
 
     /// The values at `s`, their slopes, and their curvature along the velocity `v`.
