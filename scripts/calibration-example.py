@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Make the calibration example of docs/guide/analysis.md and crates/stewart_app/tests/cli/calibrate.rs, independently of
+"""Make the calibration example of docs/guide/analysis.md and tests/cli/calibrate.rs, independently of
 the Rust code: a built `paired` platform (its joints moved by up to 4 mm, its legs'
 length readings off by up to 3 mm), 60 poses measured with noise (10 µm in position,
 0.002° in angle: a laser tracker), and the leg lengths commanded for them.
 
-Writes crates/stewart_app/tests/cli/calibration/paired_measurements.csv and paired_as_built.csv (the truth:
+Writes tests/cli/calibration/paired_measurements.csv and paired_as_built.csv (the truth:
 both plates' joints and the offsets). Run from the repository root: python3 scripts/calibration-example.py
 """
 import math
@@ -46,12 +46,12 @@ def main():
     base = [moved(b) for b in BASE]
     platform = [moved(a) for a in PLATFORM]
     offsets = [rng.uniform(-0.003, 0.003) for _ in range(6)]
-    with open("crates/stewart_app/tests/cli/calibration/paired_as_built.csv", "w") as f:
+    with open("tests/cli/calibration/paired_as_built.csv", "w") as f:
         f.write("leg,bx,by,bz,ax,ay,az,offset\n")
         for i in range(6):
             values = list(base[i]) + list(platform[i]) + [offsets[i]]
             f.write(f"{i + 1}," + ",".join(f"{v:.9f}" for v in values) + "\n")
-    with open("crates/stewart_app/tests/cli/calibration/paired_measurements.csv", "w") as f:
+    with open("tests/cli/calibration/paired_measurements.csv", "w") as f:
         f.write("x,y,z,roll_deg,pitch_deg,yaw_deg,L1,L2,L3,L4,L5,L6\n")
         for _ in range(60):
             pose = [rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1), 0.8 + rng.uniform(-0.15, 0.15)]

@@ -15,8 +15,10 @@ python3 scripts/layer-check.py
 python3 scripts/architecture-check.py
 cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
-# Every command README.md and the user guide show, with the binary the tests just built.
-python3 scripts/docs-commands.py --debug
+# Every command README.md and the user guide show, with the program the tests just ran
+# (`stewart_app::main`), built as `stewart`.
+cargo build -p stewart_app --bin stewart
+python3 tests/docs/commands.py --debug
 # Every preset exported as an animated glTF scene, checked by the Khronos glTF-Validator.
 bash scripts/gltf-check.sh --debug
 # The Python package (a workspace of its own: it builds against Python): lints, then

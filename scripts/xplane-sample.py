@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Write crates/stewart_app/tests/cli/xplane_takeoff.txt: a takeoff as X-Plane's UDP `DATA` output would send
+"""Write tests/cli/xplane_takeoff.txt: a takeoff as X-Plane's UDP `DATA` output would send
 it, one datagram per line as `SECONDS HEX` (the time it is due, the bytes in hex).
 
 Synthesised in X-Plane's documented format (no X-Plane runs here): `DATA`, one byte, then
@@ -31,7 +31,7 @@ def state(t):
     roll = 0.15 if t < 10.0 else 0.0
     return (1.05, -0.05, 0.05, 0.0, roll, 0.05)
 
-path = sys.argv[1] if len(sys.argv) > 1 else "crates/stewart_app/tests/cli/xplane_takeoff.txt"
+path = sys.argv[1] if len(sys.argv) > 1 else "tests/cli/xplane_takeoff.txt"
 with open(path, "w") as f:
     for k in range(0, 241):
         t = k / 20.0

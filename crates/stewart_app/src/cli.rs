@@ -14,7 +14,9 @@ use crate::shot_scale::ShotScale;
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
 #[derive(Debug, Parser)]
-#[command(name = "stewart", version, about, long_about = None)]
+// The usage lines say `stewart` whatever the file is called (the end-to-end suites run
+// the same program as `stewart-e2e`).
+#[command(name = "stewart", bin_name = "stewart", version, about, long_about = None)]
 pub(crate) struct Cli {
     /// What to do.
     #[command(subcommand)]

@@ -12,7 +12,7 @@ fn xvfb_view(args: &[&str]) -> Command {
             "-a",
             "-s",
             "-screen 0 1600x900x24",
-            env!("CARGO_BIN_EXE_stewart"),
+            env!("CARGO_BIN_EXE_stewart-e2e"),
             "view",
         ])
         .args(args);
@@ -58,7 +58,7 @@ fn the_viewer_opens_draws_the_platform_and_saves_a_screenshot() {
 
 #[test]
 fn without_a_display_the_viewer_says_what_to_do() {
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["view"])
         .env_remove("DISPLAY")
         .env_remove("WAYLAND_DISPLAY")
@@ -116,7 +116,7 @@ fn the_viewer_remembers_its_session_and_a_broken_one_is_no_crash() {
         .args(["-a", "-s", "-screen 0 1600x900x24", "sh", "-c"])
         .arg(format!(
             "{} view --preset servo-desk --light --size 1000x600 & pid=$!; sleep 6; kill -TERM $pid; wait $pid",
-            env!("CARGO_BIN_EXE_stewart")
+            env!("CARGO_BIN_EXE_stewart-e2e")
         ))
         .env("STEWART_CONFIG_DIR", &config)
         .output()

@@ -129,7 +129,7 @@ fn mutated_file(k: usize) -> &'static str {
 
 fn preset_text(name: &str) -> Vec<u8> {
     if name == "rotary" {
-        let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/cli/rotary.toml");
+        let file = concat!(env!("CARGO_MANIFEST_DIR"), "/cli/rotary.toml");
         return std::fs::read(file).unwrap_or_else(|e| panic!("{e}"));
     }
     stewart_kinematics::io::scenario::presets::text(name)

@@ -11,7 +11,7 @@ fn scenario_with_table_and_part(
     let table_path = dir.join("poses.csv");
     std::fs::write(&table_path, table).unwrap_or_else(|e| panic!("{e}"));
     let part = dir.join("base.stl");
-    let examples = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/cad/base.stl");
+    let examples = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/cad/base.stl");
     std::fs::copy(examples, &part).unwrap_or_else(|e| panic!("{e}"));
     let scenario = write(
         dir,
@@ -94,7 +94,7 @@ fn a_named_pipe_output_is_opened_before_listening() {
     assert!(made.is_ok_and(|s| s.success()), "mkfifo");
     let port = crate::link::free_port();
     let telemetry = crate::watched::Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["telemetry", "--listen", &format!("udp:{port}")])
             .args(["--duration", "2", "--out"])
             .arg(&fifo),
@@ -134,7 +134,7 @@ fn standard_input_redirected_from_the_output_file_is_refused() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let before = std::fs::read(&table).unwrap_or_default();
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["solve", "--preset", "paired", "--poses", "-", "--out"])
         .arg(&table)
         .stdin(std::fs::File::open(&table).unwrap_or_else(|e| panic!("{e}")))
@@ -159,7 +159,7 @@ fn a_refusal_does_not_wait_for_a_named_pipes_reader() {
     assert!(made.is_ok_and(|s| s.success()), "mkfifo");
     let missing = dir.path().join("missing.csv");
     let cue = crate::watched::Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["cue", "--preset", "paired", "--input"])
             .arg(&missing)
             .arg("--out")

@@ -22,7 +22,7 @@ fn render_two_frames_with_env(
     out: &Path,
     env: &[(&str, &std::ffi::OsStr)],
 ) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_stewart"))
+    Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args([
             "render",
             "--out",
@@ -330,7 +330,7 @@ fn the_plot_is_real_svg_pdf_and_png() {
 fn an_interrupted_export_leaves_nothing_behind() {
     let dir = tempdir();
     let out = dir.path().join("long.gif");
-    let child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let child = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args([
             "render",
             "--out",

@@ -129,7 +129,7 @@ fn a_cable_pulled_mid_stream_disarms_with_a_clear_error() {
     let mut pair = PtyPair::new();
     let port = PtyPair::path(&pair.a).to_owned();
     let link = Watched::spawn(
-        Command::new(env!("CARGO_BIN_EXE_stewart"))
+        Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["link", "--preset", "paired", "--transport", "serial"])
             .args(["--port", &port, "--baud", "1000000", "--duration", "10"])
             .args(["--rate", "100", "--ramp", "0.2"]),

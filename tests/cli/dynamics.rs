@@ -243,11 +243,11 @@ fn forces_add_the_legs_and_friction_of_the_dynamics_table() {
 fn the_guides_modes_example_prints_what_the_guide_shows() {
     let file = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../examples/scenarios/heavy-legs.toml"
+        "/../examples/scenarios/heavy-legs.toml"
     );
     let readme = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../docs/guide/analysis.md"
+        "/../docs/guide/analysis.md"
     ))
     .unwrap_or_else(|e| panic!("{e}"));
     let o = stewart(&["modes", "--scenario", file]);

@@ -46,7 +46,7 @@ fn compare(reference: &image::RgbaImage, new: &image::RgbaImage) -> (usize, imag
 
 /// Compare `frame` with the reference image `name` (see the module docs).
 pub(crate) fn check(name: &str, frame: &Frame) {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots");
     let path = dir.join(format!("{name}.png"));
     let new = image::RgbaImage::from_raw(frame.width, frame.height, frame.rgba.clone())
         .unwrap_or_else(|| panic!("bad frame"));

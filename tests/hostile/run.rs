@@ -24,7 +24,7 @@ pub struct Outcome {
 
 /// A `stewart` command with a private runtime folder (Mesa warns without one).
 pub fn command(args: &[&str]) -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_stewart"));
+    let mut c = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"));
     c.args(args)
         .env("XDG_RUNTIME_DIR", std::env::temp_dir())
         .env_remove("WGPU_BACKEND")

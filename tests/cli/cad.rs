@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use crate::stewart;
 
 fn examples() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/cad")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/cad")
 }
 
 fn text(bytes: &[u8]) -> String {

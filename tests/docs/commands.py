@@ -12,7 +12,7 @@ peer), or when it is the README's two commands (setup and this very suite); one 
 `run under Xvfb: <why>` runs inside `xvfb-run` (the viewer's screenshots). Any failing block
 fails the run with its file, line and output.
 
-Usage: docs-commands.py [--list] [--debug]   (needs `cargo build [--release]` first: --debug
+Usage: tests/docs/commands.py [--list] [--debug]   (needs `cargo build [--release]` first: --debug
 runs target/debug/stewart, as scripts/check.sh does after the tests built it)
 """
 
@@ -24,7 +24,7 @@ import sys
 import tempfile
 import time
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 BLOCK = re.compile(r"(?:<!--\s*((?:not run|run under Xvfb):[^>]*)-->\n)?```sh\n(.*?)```", re.S)
 # The README's two commands: the setup, and the suite this script is part of.
 SELF = ("scripts/check.sh", "scripts/setup.sh")
@@ -49,7 +49,7 @@ def main():
     failures = []
     for path in files:
         with tempfile.TemporaryDirectory(prefix="docs-") as scratch:
-            for name in ("examples", "crates", "docs", "assets", "shaders"):
+            for name in ("examples", "crates", "docs", "assets", "shaders", "tests"):
                 os.symlink(ROOT / name, pathlib.Path(scratch) / name)
             for line, skip, body in blocks(path):
                 where = f"{path.relative_to(ROOT)}:{line}"

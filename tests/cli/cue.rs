@@ -380,7 +380,7 @@ fn live_vehicle_motion_streams_to_the_device_as_stewart_cue_computes_it() {
 /// stall here (the stall and fade are tested on their own, with the defaults).
 fn cued_link(input: &str, extra: &[&str]) -> Watched {
     let link = Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["link", "--preset", "seed", "--cue", &format!("udp:{input}")])
             .args(["--ramp", "0.2", "--set", "cueing.stall_s=3"])
             .args(extra),
@@ -636,7 +636,7 @@ fn real_forza_capture() -> Option<std::path::PathBuf> {
     let folder = std::env::var_os("STEWART_REAL_TELEMETRY")
         .map(std::path::PathBuf::from)
         .unwrap_or_else(|| {
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/real-telemetry")
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/real-telemetry")
         });
     let capture = folder.join("forza/fh5_debugpacketstream.pcap");
     if capture.is_file() {
@@ -666,7 +666,7 @@ fn cue_mpc(rig: &str, input: &str, poses: &std::path::Path) -> std::process::Out
 /// A scenario file: the preset `rig` playing the pose table `poses`.
 fn preset_playing(dir: &std::path::Path, rig: &str, poses: &std::path::Path) -> String {
     let preset = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join(format!("../../assets/presets/{rig}.toml"));
+        .join(format!("../assets/presets/{rig}.toml"));
     let text = std::fs::read_to_string(&preset).unwrap_or_else(|e| panic!("{e}"));
     let mut kept = String::new();
     let mut in_trajectory = false;
@@ -779,7 +779,7 @@ fn a_model_predictive_cue_on_a_rotary_rig_washes_out_instead_of_holding_a_pose()
     // the output itself shows it.
     let dir = tempdir();
     let input = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/cueing/launch-and-brake.csv");
+        .join("../examples/cueing/launch-and-brake.csv");
     for rig in ["servo-desk", "crank-rig"] {
         let poses = dir.path().join(format!("{rig}.csv"));
         let o = cue_mpc(rig, &input.display().to_string(), &poses);

@@ -15,7 +15,7 @@ use crate::snapshots::{SIZE, check};
 use crate::{offscreen, project, seed_camera};
 
 fn examples() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/cad")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/cad")
 }
 
 /// The example scenario `name` with `assignments`, and its parts.

@@ -12,7 +12,7 @@ use crate::{parse_csv, tempdir};
 fn a_games_datagrams_are_named_counted_and_written_as_vehicle_motion() {
     let dir = tempdir();
     let out = dir.path().join("vehicle.csv");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let mut child = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args([
             "telemetry",
             "--listen",
@@ -107,7 +107,7 @@ fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
     });
     std::fs::write(&capture, file).unwrap_or_else(|e| panic!("{e}"));
     let out = dir.path().join("vehicle.csv");
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["telemetry", "--input"])
         .arg(&capture)
         .arg("--out")
@@ -139,7 +139,7 @@ fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
     // What it writes, `stewart cue` reads.
     let (_, rows) = parse_csv(&std::fs::read_to_string(&out).unwrap_or_else(|e| panic!("{e}")));
     assert_eq!(rows.len(), 300);
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["cue", "--preset", "paired", "--input"])
         .arg(&out)
         .output()
@@ -151,7 +151,7 @@ fn a_capture_is_read_as_listening_would_and_other_ports_are_not_telemetry() {
         String::from_utf8_lossy(&o.stderr)
     );
     // Asked for, the other port is read (as the 64-byte form it happens to have).
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["telemetry", "--port", "5353", "--input"])
         .arg(&capture)
         .output()
@@ -187,7 +187,7 @@ fn a_capture_with_a_long_silence_is_read_at_once_and_nothing_unreadable_is_writt
     let capture = dir.path().join("gap.pcap");
     std::fs::write(&capture, file).unwrap_or_else(|e| panic!("{e}"));
     let started = std::time::Instant::now();
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["telemetry", "--input"])
         .arg(&capture)
         .output()
@@ -200,7 +200,7 @@ fn a_capture_with_a_long_silence_is_read_at_once_and_nothing_unreadable_is_writt
     assert!(said.contains("3 samples of motion kept"), "{said}");
     // Nothing arrived on another port: no table of no rows is written.
     let out = dir.path().join("none.csv");
-    let o = Command::new(env!("CARGO_BIN_EXE_stewart"))
+    let o = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
         .args(["telemetry", "--port", "9", "--input"])
         .arg(&capture)
         .arg("--out")
@@ -228,7 +228,7 @@ fn a_session_stopped_while_its_pipe_waits_for_a_reader_is_kept() {
     let made = Command::new("mkfifo").arg(&fifo).status();
     assert!(made.is_ok_and(|s| s.success()), "mkfifo");
     let telemetry = crate::watched::Watched::spawn(
-        Command::new(env!("CARGO_BIN_EXE_stewart"))
+        Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["telemetry", "--input"])
             .arg(&capture)
             .arg("--out")

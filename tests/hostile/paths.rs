@@ -325,7 +325,7 @@ fn a_window_larger_than_the_gpu_allows_is_shrunk_not_a_panic() {
             "-a",
             "-s",
             "-screen 0 1600x900x24",
-            env!("CARGO_BIN_EXE_stewart"),
+            env!("CARGO_BIN_EXE_stewart-e2e"),
         ])
         .args([
             "view",

@@ -535,7 +535,7 @@ fn dry_run_bytes(args: &[&str]) -> Vec<u8> {
 
 /// The paired preset with `[link]` written in a file, in `dir`.
 fn paired_file_with_link(dir: &std::path::Path, link: &str) -> String {
-    let preset = include_str!("../../../../assets/presets/paired.toml");
+    let preset = include_str!("../../assets/presets/paired.toml");
     let path = dir.join("paired-board.toml");
     std::fs::write(&path, format!("{preset}\n[link]\n{link}\n")).unwrap_or_else(|e| panic!("{e}"));
     path.display().to_string()

@@ -114,7 +114,7 @@ fn dietmaier_legs_at(row: &[f64]) -> [f64; 6] {
 
 #[test]
 fn dietmaiers_platform_has_forty_real_assembly_modes() {
-    let scenario = format!("{}/tests/cli/dietmaier.toml", env!("CARGO_MANIFEST_DIR"));
+    let scenario = format!("{}/cli/dietmaier.toml", env!("CARGO_MANIFEST_DIR"));
     let legs = scenario.replace("dietmaier.toml", "dietmaier_legs.csv");
     let o = stewart(&[
         "fk",

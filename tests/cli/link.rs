@@ -295,7 +295,7 @@ pub fn device_sim(address: &str, extra: &[&str]) -> Watched {
 /// background, with `extra` options, once it listens.
 pub fn device_sim_on(source: &[&str], extra: &[&str]) -> Watched {
     let sim = Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .arg("device-sim")
             .args(source)
             .args(["--idle", "1", "--duration", "30"])
@@ -498,7 +498,7 @@ fn end_to_end_the_device_gets_a_smooth_ramp_never_an_unsafe_value_and_ctrl_c_bri
     let address = free_port();
     let sim = device_sim(&address, &["--min", "-2000", "--max", "2000"]);
     let link = Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["link", "--preset", "servo-desk", "--transport", "udp"])
             .args(["--address", &address])
             .args(["--rate", "100", "--ramp", "0.5", "--loop"])
@@ -561,7 +561,7 @@ fn interrupt(pid: u32) {
 /// the 0.5 m/s limit away, so the way home takes seconds.
 fn paired_dry_run_four_seconds_in(record: &std::path::Path) -> Watched {
     let link = Watched::spawn(
-        std::process::Command::new(env!("CARGO_BIN_EXE_stewart"))
+        std::process::Command::new(env!("CARGO_BIN_EXE_stewart-e2e"))
             .args(["link", "--preset", "paired", "--dry-run", "--loop"])
             .args(["--rate", "200", "--out"])
             .arg(record),

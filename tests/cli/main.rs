@@ -44,7 +44,7 @@ pub fn stewart_with_input(args: &[&str], input: &[u8]) -> Output {
 /// locale is English unless `env` says otherwise (the words drawn follow LANG).
 pub fn stewart_in(env: &[(&str, &str)], args: &[&str], input: &[u8]) -> Output {
     use std::io::Write;
-    let mut command = Command::new(env!("CARGO_BIN_EXE_stewart"));
+    let mut command = Command::new(env!("CARGO_BIN_EXE_stewart-e2e"));
     command
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")

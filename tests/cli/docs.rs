@@ -6,7 +6,7 @@ use crate::{stderr, stdout, stewart};
 
 /// The guide's chapter `name`, under docs/guide/.
 fn chapter(name: &str) -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../../docs/guide/{name}"))
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../docs/guide/{name}"))
 }
 
 /// `text` is what docs/guide/`name` holds, or (with UPDATE_DOCS=1) it is written there.
@@ -19,7 +19,7 @@ fn is_current(name: &str, text: &str, how: &str) {
     let held = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
         held == text,
-        "docs/guide/{name} is not what {how} writes now: run UPDATE_DOCS=1 cargo test -p stewart_app --test cli docs"
+        "docs/guide/{name} is not what {how} writes now: run UPDATE_DOCS=1 cargo test -p stewart_tests --test cli docs"
     );
 }
 

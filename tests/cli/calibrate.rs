@@ -8,7 +8,7 @@ use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
 /// A file under `tests/cli/`.
 fn cli_file(name: &str) -> String {
-    format!("{}/tests/cli/{name}", env!("CARGO_MANIFEST_DIR"))
+    format!("{}/cli/{name}", env!("CARGO_MANIFEST_DIR"))
 }
 
 fn load(path: &Path) -> Scenario {

@@ -5,7 +5,7 @@ use crate::{parse_csv, stderr, stdout, stewart, tempdir, write};
 
 /// A desktop platform with hobby servos (the test scenario next to this file).
 fn scenario() -> String {
-    format!("{}/tests/cli/rotary.toml", env!("CARGO_MANIFEST_DIR"))
+    format!("{}/cli/rotary.toml", env!("CARGO_MANIFEST_DIR"))
 }
 
 /// The test scenario's numbers, transcribed: base and platform joints, horn directions.
