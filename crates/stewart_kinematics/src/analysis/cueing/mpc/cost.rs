@@ -21,7 +21,7 @@
 //! `G` is the same at every step and is factored once; the value now is exact, so the
 //! error is of the order of the change over the horizon times the tilt.
 
-use super::horizon::{Layout, Quantity};
+use super::horizon::{Horizon, StepValue};
 use super::vestibular::Organ;
 use crate::model::cueing_settings::{CueingSettings, GRAVITY, MAX_HORIZON_STEPS};
 
@@ -125,7 +125,7 @@ type Raw = [[f64; 6]; STEPS];
 
 impl Cost {
     /// The residuals of `settings` for `layout`.
-    pub fn new(settings: &CueingSettings, layout: &Layout) -> Self {
+    pub fn new(settings: &CueingSettings, layout: &Horizon) -> Self {
         let s = settings;
         let mut residuals = Vec::new();
         for step in 0..layout.steps {
@@ -226,7 +226,7 @@ impl Cost {
     }
 
     /// The raw force and rate errors of every step for the plan of no acceleration.
-    fn raw(layout: &Layout, now: &Now) -> Raw {
+    fn raw(layout: &Horizon, now: &Now) -> Raw {
         let mut raw = [[0.0; 6]; STEPS];
         for (k, errors) in raw.iter_mut().enumerate().take(layout.steps) {
             for (i, e) in errors.iter_mut().enumerate() {
@@ -242,8 +242,8 @@ impl Cost {
     }
 
     /// The offset of a residual without the vestibular model.
-    fn raw_offset(term: Term, k: usize, i: usize, layout: &Layout, now: &Now) -> f64 {
-        let free = |q: Quantity, axis: usize| {
+    fn raw_offset(term: Term, k: usize, i: usize, layout: &Horizon, now: &Now) -> f64 {
+        let free = |q: StepValue, axis: usize| {
             if layout.axes.contains(&axis) {
                 layout.free(q, k, now.s[axis], now.v[axis])
             } else {
@@ -256,24 +256,24 @@ impl Cost {
                 for j in 0..3 {
                     let g = gravity_slope(i, j);
                     if g != 0.0 {
-                        o += g * (free(Quantity::MidPosition, 3 + j) - now.s[3 + j]);
+                        o += g * (free(StepValue::MidPosition, 3 + j) - now.s[3 + j]);
                     }
                 }
                 o
             }
             Term::Rate => {
-                now.rates[i] - now.v[3 + i] + free(Quantity::MidVelocity, 3 + i)
+                now.rates[i] - now.v[3 + i] + free(StepValue::MidVelocity, 3 + i)
                     - now.wanted(k, 3 + i)
             }
             Term::Input => 0.0,
-            Term::Displacement => free(Quantity::EndPosition, i),
-            Term::Velocity => free(Quantity::EndVelocity, i),
+            Term::Displacement => free(StepValue::EndPosition, i),
+            Term::Velocity => free(StepValue::EndVelocity, i),
         }
     }
 
     /// The offset of residual `r` (its value for the plan of no acceleration), the raw
     /// errors `raw` at hand.
-    fn offset(&self, r: &Residual, layout: &Layout, now: &Now, raw: &Raw) -> f64 {
+    fn offset(&self, r: &Residual, layout: &Horizon, now: &Now, raw: &Raw) -> f64 {
         let (organ, channel) = match (r.term, &self.sensing) {
             (Term::Force, Some(o)) if r.sensed => (&o[0], r.axis),
             (Term::Rate, Some(o)) if r.sensed => (&o[1], 3 + r.axis),
@@ -293,7 +293,7 @@ impl Cost {
     }
 
     /// The linear term `a = 2 Σ w o φ` for the state and wishes `now` (into `out`).
-    pub fn gradient(&self, layout: &Layout, now: &Now, out: &mut [f64]) {
+    pub fn gradient(&self, layout: &Horizon, now: &Now, out: &mut [f64]) {
         out.iter_mut().for_each(|v| *v = 0.0);
         let raw = Self::raw(layout, now);
         for (r, row) in self.residuals.iter().zip(self.rows.chunks(self.n.max(1))) {
@@ -310,7 +310,7 @@ impl Cost {
 
     /// The cost `J(U)` of a plan (for the tests: the programme's objective plus its
     /// constant).
-    pub fn value(&self, layout: &Layout, now: &Now, plan: &[f64]) -> f64 {
+    pub fn value(&self, layout: &Horizon, now: &Now, plan: &[f64]) -> f64 {
         let raw = Self::raw(layout, now);
         self.residuals
             .iter()
@@ -325,20 +325,20 @@ impl Cost {
 }
 
 /// The row of a residual without the vestibular model, added into `row`.
-fn raw_row(layout: &Layout, term: Term, k: usize, i: usize, row: &mut [f64]) {
+fn raw_row(layout: &Horizon, term: Term, k: usize, i: usize, row: &mut [f64]) {
     match term {
         Term::Force => {
-            layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0);
+            layout.add_quantity(row, StepValue::Acceleration, k, i, 1.0);
             for j in 0..3 {
                 let g = gravity_slope(i, j);
                 if g != 0.0 {
-                    layout.add_quantity(row, Quantity::MidPosition, k, 3 + j, g);
+                    layout.add_quantity(row, StepValue::MidPosition, k, 3 + j, g);
                 }
             }
         }
-        Term::Rate => layout.add_quantity(row, Quantity::MidVelocity, k, 3 + i, 1.0),
-        Term::Input => layout.add_quantity(row, Quantity::Acceleration, k, i, 1.0),
-        Term::Displacement => layout.add_quantity(row, Quantity::EndPosition, k, i, 1.0),
-        Term::Velocity => layout.add_quantity(row, Quantity::EndVelocity, k, i, 1.0),
+        Term::Rate => layout.add_quantity(row, StepValue::MidVelocity, k, 3 + i, 1.0),
+        Term::Input => layout.add_quantity(row, StepValue::Acceleration, k, i, 1.0),
+        Term::Displacement => layout.add_quantity(row, StepValue::EndPosition, k, i, 1.0),
+        Term::Velocity => layout.add_quantity(row, StepValue::EndVelocity, k, i, 1.0),
     }
 }

@@ -14,9 +14,9 @@
 //! ṡ(τ_k + T_k/2)     = ṡ₀ + Σ_{j<k} T_j u_j + T_k/2 u_k
 //! ```
 
-/// A quantity of one axis along the horizon.
+/// A value of one axis at a step of the horizon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Quantity {
+pub enum StepValue {
     /// The position at the end of step `k`.
     EndPosition,
     /// The velocity at the end of step `k`.
@@ -29,10 +29,10 @@ pub enum Quantity {
     Acceleration,
 }
 
-/// The plan's layout: which axes are cued (the others stay at neutral and have no
+/// The horizon and the plan laid out on it: which axes are cued (the others stay at neutral and have no
 /// variables), the steps, and where each variable sits (step-major).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Layout {
+pub struct Horizon {
     /// The cued axes, of `0..6` (x, y, z, roll, pitch, yaw).
     pub axes: Vec<usize>,
     /// Steps.
@@ -45,7 +45,7 @@ pub struct Layout {
     pub extra: usize,
 }
 
-impl Layout {
+impl Horizon {
     /// The number of plan variables (accelerations).
     pub fn plan_len(&self) -> usize {
         self.axes.len() * self.steps
@@ -87,16 +87,16 @@ impl Layout {
     }
 
     /// The moment (from the step's start) at which `quantity` of step `k` is taken.
-    fn moment(quantity: Quantity, length: f64) -> f64 {
+    fn moment(quantity: StepValue, length: f64) -> f64 {
         match quantity {
-            Quantity::EndPosition | Quantity::EndVelocity => length,
-            Quantity::MidPosition | Quantity::MidVelocity => 0.5 * length,
-            Quantity::Acceleration => 0.0,
+            StepValue::EndPosition | StepValue::EndVelocity => length,
+            StepValue::MidPosition | StepValue::MidVelocity => 0.5 * length,
+            StepValue::Acceleration => 0.0,
         }
     }
 
     /// The coefficient of `u_j` in `quantity` of step `k`.
-    pub fn coefficient(&self, quantity: Quantity, k: usize, j: usize) -> f64 {
+    pub fn coefficient(&self, quantity: StepValue, k: usize, j: usize) -> f64 {
         if j > k {
             return 0.0;
         }
@@ -105,28 +105,28 @@ impl Layout {
         if j == k {
             let m = Self::moment(quantity, tk);
             return match quantity {
-                Quantity::Acceleration => 1.0,
-                Quantity::EndPosition | Quantity::MidPosition => 0.5 * m * m,
-                Quantity::EndVelocity | Quantity::MidVelocity => m,
+                StepValue::Acceleration => 1.0,
+                StepValue::EndPosition | StepValue::MidPosition => 0.5 * m * m,
+                StepValue::EndVelocity | StepValue::MidVelocity => m,
             };
         }
         let tj = self.length(j);
         let end_j = self.start(j) + tj;
         match quantity {
-            Quantity::Acceleration => 0.0,
-            Quantity::EndPosition | Quantity::MidPosition => tj * (0.5 * tj + at - end_j),
-            Quantity::EndVelocity | Quantity::MidVelocity => tj,
+            StepValue::Acceleration => 0.0,
+            StepValue::EndPosition | StepValue::MidPosition => tj * (0.5 * tj + at - end_j),
+            StepValue::EndVelocity | StepValue::MidVelocity => tj,
         }
     }
 
     /// `quantity` of step `k` with no acceleration at all, from position `s` and velocity
     /// `v` now.
-    pub fn free(&self, quantity: Quantity, k: usize, s: f64, v: f64) -> f64 {
+    pub fn free(&self, quantity: StepValue, k: usize, s: f64, v: f64) -> f64 {
         let at = self.start(k) + Self::moment(quantity, self.length(k));
         match quantity {
-            Quantity::EndPosition | Quantity::MidPosition => s + at * v,
-            Quantity::EndVelocity | Quantity::MidVelocity => v,
-            Quantity::Acceleration => 0.0,
+            StepValue::EndPosition | StepValue::MidPosition => s + at * v,
+            StepValue::EndVelocity | StepValue::MidVelocity => v,
+            StepValue::Acceleration => 0.0,
         }
     }
 
@@ -134,7 +134,7 @@ impl Layout {
     pub fn add_quantity(
         &self,
         row: &mut [f64],
-        quantity: Quantity,
+        quantity: StepValue,
         k: usize,
         axis: usize,
         factor: f64,
@@ -159,7 +159,7 @@ mod tests {
     /// every quantity with its affine form.
     #[test]
     fn the_affine_forms_are_the_integrated_motion() {
-        let layout = Layout {
+        let layout = Horizon {
             axes: vec![2],
             steps: 4,
             first: 0.01,
@@ -181,16 +181,16 @@ mod tests {
                 s += v * h + 0.5 * u * h * h;
                 v += u * h;
             }
-            let value = |q: Quantity| {
+            let value = |q: StepValue| {
                 let mut row = [0.0; 4];
                 layout.add_quantity(&mut row, q, k, 2, 1.0);
                 layout.free(q, k, s0, v0) + row.iter().zip(&plan).map(|(c, u)| c * u).sum::<f64>()
             };
-            assert!((value(Quantity::EndPosition) - s).abs() < 1e-12);
-            assert!((value(Quantity::EndVelocity) - v).abs() < 1e-12);
-            assert!((value(Quantity::MidPosition) - mid.0).abs() < 1e-12);
-            assert!((value(Quantity::MidVelocity) - mid.1).abs() < 1e-12);
-            assert_eq!(value(Quantity::Acceleration), u);
+            assert!((value(StepValue::EndPosition) - s).abs() < 1e-12);
+            assert!((value(StepValue::EndVelocity) - v).abs() < 1e-12);
+            assert!((value(StepValue::MidPosition) - mid.0).abs() < 1e-12);
+            assert!((value(StepValue::MidVelocity) - mid.1).abs() < 1e-12);
+            assert_eq!(value(StepValue::Acceleration), u);
         }
         assert_eq!(layout.step_at(0.005), Some(0));
         assert_eq!(layout.step_at(0.05), Some(1));

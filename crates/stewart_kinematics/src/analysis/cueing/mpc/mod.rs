@@ -37,7 +37,7 @@ use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
 use crate::model::pose::Pose;
 use cost::{Cost, Now};
-use horizon::{Layout, Quantity};
+use horizon::{Horizon, StepValue};
 use qp::{Constraints, DenseQp};
 use rig::{Rig, pose_of};
 
@@ -74,50 +74,85 @@ pub struct MpcCounts {
     pub guard_jumps_left: u64,
 }
 
-/// The planner and its state.
+/// The planner and its state, in the parts it is made of.
 #[derive(Clone, Debug)]
 pub struct Mpc {
+    problem: Problem,
+    plant: Plant,
+    plan: Plan,
+    wanted: Wanted,
+    remote: RemotePlanning,
+    counts: MpcCounts,
+    /// With the vestibular model: the organs' states.
+    sensed: Option<vestibular::Sensed>,
+}
+
+/// The optimisation problem, fixed at the start: the rig, its limits, the horizon's
+/// layout, the cost and the solver with its work space.
+#[derive(Clone, Debug)]
+struct Problem {
     settings: CueingSettings,
     geometry: Geometry,
     limits: Limits,
+    /// The reference point from the rotation centre.
     arm: Vector3<f64>,
-    layout: Layout,
+    layout: Horizon,
     cost: Cost,
     rig: Rig,
     qp: DenseQp,
     constraints: Constraints,
     gradient: Vec<f64>,
+}
+
+/// The platform as the planner moves it.
+#[derive(Clone, Debug)]
+struct Plant {
     /// Positions and angles, and their rates.
     s: [f64; 6],
     v: [f64; 6],
-    /// The plan (step-major accelerations of the cued axes) and how long it has run.
-    plan: Vec<f64>,
-    plan_age: f64,
+    /// The last state whose pose passed the exact check.
+    last_good: [f64; 6],
+}
+
+/// The plan being followed.
+#[derive(Clone, Debug)]
+struct Plan {
+    /// Step-major accelerations of the cued axes.
+    accelerations: Vec<f64>,
+    /// How long it has run, seconds.
+    age: f64,
     /// Seconds since the last solve (`∞` before the first).
     since_solve: f64,
+}
+
+/// What the vehicle asks for over the horizon.
+#[derive(Clone, Debug)]
+struct Wanted {
     /// The vehicle's motion in each step of the horizon, scaled (m/s², rad/s), before the
     /// fade.
-    wanted: Vec<[f64; 6]>,
+    mean: Vec<[f64; 6]>,
     /// The same at each step's end.
-    wanted_end: Vec<[f64; 6]>,
+    at_end: Vec<[f64; 6]>,
     /// A recording's samples from the last one given on (times from it), and how long
     /// ago it was given (empty: the motion is held).
     ahead: Vec<(f64, VehicleMotion)>,
     ahead_age: f64,
+    /// The share of the vehicle's motion asked for (0 to 1).
     fade: f64,
-    /// The last state whose pose passed the exact check.
-    last_good: [f64; 6],
-    counts: MpcCounts,
-    /// Planning elsewhere ([`remote`]): the solve instants so far, the request left for
-    /// the next and the reply offered.
-    remote: bool,
+}
+
+/// Planning elsewhere ([`remote`]).
+#[derive(Clone, Debug)]
+struct RemotePlanning {
+    /// Whether plans come from elsewhere.
+    on: bool,
+    /// The solve instants so far.
     instant: u64,
     /// Bumped by a stop, a reset or a skipped gap: replies asked for before are dropped.
     epoch: u64,
+    /// The request left for the next instant, and the reply offered.
     request: Option<remote::PlanRequest>,
     reply: Option<remote::PlanReply>,
-    /// With the vestibular model: the organs' states.
-    sensed: Option<vestibular::Sensed>,
 }
 
 /// Why a planner cannot be made.
@@ -133,7 +168,7 @@ impl Mpc {
     ) -> Result<Self, BadCost> {
         let axes: Vec<usize> = (0..6).filter(|&i| settings.axes()[i]).collect();
         let tilts = axes.iter().filter(|&&a| a == 3 || a == 4).count();
-        let layout = Layout {
+        let layout = Horizon {
             axes,
             steps: settings.mpc_horizon_steps as usize,
             first: settings.mpc_solve_interval_s,
@@ -151,34 +186,45 @@ impl Mpc {
         let rig = Rig::new(geometry, limits, arm, settings.mpc_margin);
         let rows = layout.axes.len() + rig.rows(layout.steps) + 4 * layout.steps * tilts + tilts;
         let qp = DenseQp::new(&g, n, rows).map_err(|_| BadCost)?;
+        let plan_len = layout.plan_len();
         Ok(Self {
-            settings: settings.clone(),
-            geometry: geometry.clone(),
-            limits: *limits,
-            arm,
-            constraints: Constraints::new(n, rows),
-            gradient: vec![0.0; n],
-            plan: vec![0.0; layout.plan_len()],
-            layout,
-            cost,
-            rig,
-            qp,
-            s: [0.0; 6],
-            v: [0.0; 6],
-            plan_age: 0.0,
-            since_solve: f64::INFINITY,
-            wanted: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
-            wanted_end: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
-            ahead: Vec::new(),
-            ahead_age: 0.0,
-            fade: 1.0,
-            last_good: [0.0; 6],
+            problem: Problem {
+                settings: settings.clone(),
+                geometry: geometry.clone(),
+                limits: *limits,
+                arm,
+                constraints: Constraints::new(n, rows),
+                gradient: vec![0.0; n],
+                layout,
+                cost,
+                rig,
+                qp,
+            },
+            plant: Plant {
+                s: [0.0; 6],
+                v: [0.0; 6],
+                last_good: [0.0; 6],
+            },
+            plan: Plan {
+                accelerations: vec![0.0; plan_len],
+                age: 0.0,
+                since_solve: f64::INFINITY,
+            },
+            wanted: Wanted {
+                mean: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
+                at_end: vec![[0.0; 6]; settings.mpc_horizon_steps as usize],
+                ahead: Vec::new(),
+                ahead_age: 0.0,
+                fade: 1.0,
+            },
+            remote: RemotePlanning {
+                on: false,
+                instant: 0,
+                epoch: 0,
+                request: None,
+                reply: None,
+            },
             counts: MpcCounts::default(),
-            remote: false,
-            instant: 0,
-            epoch: 0,
-            request: None,
-            reply: None,
             sensed: settings
                 .vestibular
                 .then(|| vestibular::Sensed::new(settings.mpc_solve_interval_s)),
@@ -197,10 +243,10 @@ impl Mpc {
     /// Hold `motion` as the vehicle's from now on, over the whole horizon (what a live
     /// input knows).
     pub fn hold(&mut self, motion: &VehicleMotion) {
-        self.ahead.clear();
-        let w = Self::scaled(&self.settings, motion);
-        self.wanted.iter_mut().for_each(|v| *v = w);
-        self.wanted_end.iter_mut().for_each(|v| *v = w);
+        self.wanted.ahead.clear();
+        let w = Self::scaled(&self.problem.settings, motion);
+        self.wanted.mean.iter_mut().for_each(|v| *v = w);
+        self.wanted.at_end.iter_mut().for_each(|v| *v = w);
     }
 
     /// The vehicle's motion from now on as `samples` (times from now, seconds, the first
@@ -208,9 +254,9 @@ impl Mpc {
     /// at its middle, and at its end (a recording, known ahead). Kept until the next
     /// sample, so that a solve between two samples looks from its own time.
     pub fn hold_ahead(&mut self, samples: &[(f64, VehicleMotion)]) {
-        self.ahead.clear();
-        self.ahead.extend_from_slice(samples);
-        self.ahead_age = 0.0;
+        self.wanted.ahead.clear();
+        self.wanted.ahead.extend_from_slice(samples);
+        self.wanted.ahead_age = 0.0;
         self.look_ahead();
     }
 
@@ -218,10 +264,14 @@ impl Mpc {
     /// step asks for the vehicle's motion averaged over it (so that the plan slides
     /// smoothly along the recording), and at its end for the sample held then.
     fn look_ahead(&mut self) {
-        if self.ahead.is_empty() {
+        if self.wanted.ahead.is_empty() {
             return;
         }
-        let (settings, samples, age) = (&self.settings, &self.ahead, self.ahead_age);
+        let (settings, samples, age) = (
+            &self.problem.settings,
+            &self.wanted.ahead,
+            self.wanted.ahead_age,
+        );
         // The sample held at `at` (one due at `at` to rounding counts as come).
         let index = |at: f64| {
             samples
@@ -258,26 +308,30 @@ impl Mpc {
             }
             sum.map(|s| s / (b - a))
         };
-        for k in 0..self.layout.steps {
-            let (start, length) = (self.layout.start(k), self.layout.length(k));
-            self.wanted[k] = mean(start, start + length);
-            self.wanted_end[k] = scaled(index(start + length));
+        for k in 0..self.problem.layout.steps {
+            let (start, length) = (self.problem.layout.start(k), self.problem.layout.length(k));
+            self.wanted.mean[k] = mean(start, start + length);
+            self.wanted.at_end[k] = scaled(index(start + length));
         }
     }
 
     /// Ask for only `fade` (0 to 1) of the vehicle's motion.
     pub fn set_fade(&mut self, fade: f64) {
-        self.fade = fade;
+        self.wanted.fade = fade;
     }
 
     /// Whether the platform is home and at rest (to 1e-4 m or rad, per second).
     pub fn settled(&self) -> bool {
-        self.s.iter().chain(&self.v).all(|x| x.abs() < 1e-4)
+        self.plant
+            .s
+            .iter()
+            .chain(&self.plant.v)
+            .all(|x| x.abs() < 1e-4)
     }
 
     /// How far ahead the plan reaches, seconds.
     pub fn horizon_s(&self) -> f64 {
-        self.layout.start(self.layout.steps)
+        self.problem.layout.start(self.problem.layout.steps)
     }
 
     /// How the planner has fared so far.
@@ -288,11 +342,11 @@ impl Mpc {
     /// The acceleration of each axis the plan holds `age` seconds after it began.
     fn input_at(&self, age: f64) -> [f64; 6] {
         let mut u = [0.0; 6];
-        let Some(j) = self.layout.step_at(age) else {
+        let Some(j) = self.problem.layout.step_at(age) else {
             return u;
         };
-        for (slot, &axis) in self.layout.axes.iter().enumerate() {
-            u[axis] = self.plan[j * self.layout.axes.len() + slot];
+        for (slot, &axis) in self.problem.layout.axes.iter().enumerate() {
+            u[axis] = self.plan.accelerations[j * self.problem.layout.axes.len() + slot];
         }
         u
     }
@@ -307,8 +361,10 @@ impl Mpc {
     ) -> ([f64; 6], [f64; 6], f64) {
         while h > 0.0 {
             // To the end of this plan step (or all of h once the plan is over).
-            let left = match self.layout.step_at(age) {
-                Some(k) => (self.layout.start(k) + self.layout.length(k) - age).max(1e-12),
+            let left = match self.problem.layout.step_at(age) {
+                Some(k) => {
+                    (self.problem.layout.start(k) + self.problem.layout.length(k) - age).max(1e-12)
+                }
                 None => h,
             };
             let dt = h.min(left);
@@ -326,7 +382,7 @@ impl Mpc {
     /// Advance `h` seconds — planning again whenever the solve interval has passed — and
     /// return the pose then.
     pub fn advance(&mut self, mut h: f64) -> Pose {
-        let every = self.settings.mpc_solve_interval_s;
+        let every = self.problem.settings.mpc_solve_interval_s;
         // Times from a recording's differences are off by rounding: a remainder this
         // small is no interval of its own.
         const ROUNDING: f64 = 1e-9;
@@ -336,87 +392,105 @@ impl Mpc {
         let span = self.horizon_s() + 2.0 * every;
         if h > span {
             let skipped = h - span;
-            (self.s, self.v, self.plan_age) =
-                self.integrate(self.s, self.v, self.plan_age, skipped);
-            self.ahead_age += skipped;
-            self.since_solve = f64::INFINITY;
-            self.epoch += 1;
+            (self.plant.s, self.plant.v, self.plan.age) =
+                self.integrate(self.plant.s, self.plant.v, self.plan.age, skipped);
+            self.wanted.ahead_age += skipped;
+            self.plan.since_solve = f64::INFINITY;
+            self.remote.epoch += 1;
             h = span;
         }
         while h > 0.0 {
-            if self.since_solve >= every - ROUNDING {
-                if self.remote {
+            if self.plan.since_solve >= every - ROUNDING {
+                if self.remote.on {
                     self.remote_instant();
                 } else {
                     self.look_ahead();
                     self.solve();
                 }
-                self.since_solve = 0.0;
+                self.plan.since_solve = 0.0;
             }
-            let mut dt = h.min(every - self.since_solve);
+            let mut dt = h.min(every - self.plan.since_solve);
             if h - dt < ROUNDING {
                 dt = h;
             }
-            (self.s, self.v, self.plan_age) = self.integrate(self.s, self.v, self.plan_age, dt);
-            self.since_solve += dt;
-            self.ahead_age += dt;
+            (self.plant.s, self.plant.v, self.plan.age) =
+                self.integrate(self.plant.s, self.plant.v, self.plan.age, dt);
+            self.plan.since_solve += dt;
+            self.wanted.ahead_age += dt;
             h -= dt;
         }
-        let pose = pose_of(&self.geometry, self.arm, &self.s);
-        if self.s.iter().chain(&self.v).all(|x| x.is_finite())
-            && workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose)
+        let pose = pose_of(&self.problem.geometry, self.problem.arm, &self.plant.s);
+        if self
+            .plant
+            .s
+            .iter()
+            .chain(&self.plant.v)
+            .all(|x| x.is_finite())
+            && workspace::pose_within_limits_as_written(
+                &self.problem.geometry,
+                &self.problem.limits,
+                &pose,
+            )
         {
-            self.last_good = self.s;
+            self.plant.last_good = self.plant.s;
             return pose;
         }
         // Never a pose outside the limits: stop at the last one that passed (a plan on its
         // way for the state left behind is no longer adopted).
         self.counts.stops += 1;
-        self.epoch += 1;
-        self.s = self.last_good;
-        self.v = [0.0; 6];
-        self.plan.iter_mut().for_each(|u| *u = 0.0);
-        self.since_solve = f64::INFINITY;
-        pose_of(&self.geometry, self.arm, &self.s)
+        self.remote.epoch += 1;
+        self.plant.s = self.plant.last_good;
+        self.plant.v = [0.0; 6];
+        self.plan.accelerations.iter_mut().for_each(|u| *u = 0.0);
+        self.plan.since_solve = f64::INFINITY;
+        pose_of(&self.problem.geometry, self.problem.arm, &self.plant.s)
     }
 
     /// The pose `h` seconds ahead along the plan, the state left as it is. No allocation.
     pub fn preview(&self, h: f64) -> Pose {
-        let (s, _, _) = self.integrate(self.s, self.v, self.plan_age, h.max(0.0));
-        let pose = pose_of(&self.geometry, self.arm, &s);
-        if workspace::pose_within_limits_as_written(&self.geometry, &self.limits, &pose) {
+        let (s, _, _) = self.integrate(self.plant.s, self.plant.v, self.plan.age, h.max(0.0));
+        let pose = pose_of(&self.problem.geometry, self.problem.arm, &s);
+        if workspace::pose_within_limits_as_written(
+            &self.problem.geometry,
+            &self.problem.limits,
+            &pose,
+        ) {
             pose
         } else {
-            pose_of(&self.geometry, self.arm, &self.last_good)
+            pose_of(
+                &self.problem.geometry,
+                self.problem.arm,
+                &self.plant.last_good,
+            )
         }
     }
 
     /// The motion now, as a cue: translation, acceleration, angles (all of roll and pitch
     /// counted as tilt: the planner does not split them).
     pub fn cue(&self) -> Cue {
-        let u = self.input_at(self.plan_age);
+        let u = self.input_at(self.plan.age);
         Cue {
-            position: [self.s[0], self.s[1], self.s[2]],
+            position: [self.plant.s[0], self.plant.s[1], self.plant.s[2]],
             acceleration: [u[0], u[1], u[2]],
-            angles: [self.s[3], self.s[4], self.s[5]],
-            tilt: [self.s[3], self.s[4]],
+            angles: [self.plant.s[3], self.plant.s[4], self.plant.s[5]],
+            tilt: [self.plant.s[3], self.plant.s[4]],
         }
     }
 
     /// Back to neutral and rest, the plan cleared.
     pub fn reset(&mut self) {
-        self.s = [0.0; 6];
-        self.v = [0.0; 6];
-        self.last_good = [0.0; 6];
-        self.plan.iter_mut().for_each(|u| *u = 0.0);
-        self.plan_age = 0.0;
-        self.since_solve = f64::INFINITY;
-        self.wanted.iter_mut().for_each(|v| *v = [0.0; 6]);
-        self.wanted_end.iter_mut().for_each(|v| *v = [0.0; 6]);
-        self.ahead.clear();
-        self.request = None;
-        self.reply = None;
-        self.epoch += 1;
+        self.plant.s = [0.0; 6];
+        self.plant.v = [0.0; 6];
+        self.plant.last_good = [0.0; 6];
+        self.plan.accelerations.iter_mut().for_each(|u| *u = 0.0);
+        self.plan.age = 0.0;
+        self.plan.since_solve = f64::INFINITY;
+        self.wanted.mean.iter_mut().for_each(|v| *v = [0.0; 6]);
+        self.wanted.at_end.iter_mut().for_each(|v| *v = [0.0; 6]);
+        self.wanted.ahead.clear();
+        self.remote.request = None;
+        self.remote.reply = None;
+        self.remote.epoch += 1;
         if let Some(s) = &mut self.sensed {
             s.reset();
         }
@@ -424,10 +498,10 @@ impl Mpc {
 
     /// Plan again from the state now; on failure keep the last plan.
     fn solve(&mut self) {
-        let a0 = self.input_at(self.plan_age);
+        let a0 = self.input_at(self.plan.age);
         self.sense(a0);
         if self.plan_from(a0) {
-            self.plan_age = 0.0;
+            self.plan.age = 0.0;
         }
     }
 
@@ -435,7 +509,7 @@ impl Mpc {
     fn felt_force(&self, a0: [f64; 6]) -> [f64; 3] {
         Cue {
             acceleration: [a0[0], a0[1], a0[2]],
-            angles: [self.s[3], self.s[4], self.s[5]],
+            angles: [self.plant.s[3], self.plant.s[4], self.plant.s[5]],
             ..Cue::default()
         }
         .specific_force()
@@ -448,10 +522,10 @@ impl Mpc {
             return;
         };
         let force = self.felt_force(a0);
-        let rates = body_rates(&self.s, &self.v);
+        let rates = body_rates(&self.plant.s, &self.plant.v);
         let error: [f64; 6] = std::array::from_fn(|i| {
             let felt = if i < 3 { force[i] } else { rates[i - 3] };
-            felt - self.fade * self.wanted[0][i]
+            felt - self.wanted.fade * self.wanted.mean[0][i]
         });
         let mut sensed = sensed.clone();
         sensed.step(error);
@@ -462,45 +536,52 @@ impl Mpc {
     /// the last plan. Whether a plan was found.
     fn plan_from(&mut self, a0: [f64; 6]) -> bool {
         self.counts.solves += 1;
-        let Some(lin) = self.rig.linearise(&self.s, &self.v) else {
+        let Some(lin) = self.problem.rig.linearise(&self.plant.s, &self.plant.v) else {
             self.counts.failed += 1;
             return false;
         };
         let now = Now {
-            s: self.s,
-            v: self.v,
+            s: self.plant.s,
+            v: self.plant.v,
             a: a0,
             force: self.felt_force(a0),
-            rates: body_rates(&self.s, &self.v),
-            wanted: &self.wanted,
-            wanted_end: &self.wanted_end,
-            fade: self.fade,
+            rates: body_rates(&self.plant.s, &self.plant.v),
+            wanted: &self.wanted.mean,
+            wanted_end: &self.wanted.at_end,
+            fade: self.wanted.fade,
             sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.states),
         };
-        self.cost.gradient(&self.layout, &now, &mut self.gradient);
-        let plan_len = self.layout.plan_len();
-        for e in 0..self.layout.extra {
-            self.gradient[plan_len + e] += SLACK_LINEAR;
+        self.problem
+            .cost
+            .gradient(&self.problem.layout, &now, &mut self.problem.gradient);
+        let plan_len = self.problem.layout.plan_len();
+        for e in 0..self.problem.layout.extra {
+            self.problem.gradient[plan_len + e] += SLACK_LINEAR;
         }
         // Kept the margin inside, like the rig's limits: when the rig's limits leave the
         // tilt rate no way to be met exactly, its penalty lets it over by a hair.
-        let tilt_limit = if self.settings.tilt {
-            self.settings.tilt_rate_max_deg_s.to_radians() * (1.0 - self.settings.mpc_margin)
+        let tilt_limit = if self.problem.settings.tilt {
+            self.problem.settings.tilt_rate_max_deg_s.to_radians()
+                * (1.0 - self.problem.settings.mpc_margin)
         } else {
             0.0
         };
         build_constraints(
-            &mut self.constraints,
-            &self.layout,
-            &self.rig,
+            &mut self.problem.constraints,
+            &self.problem.layout,
+            &self.problem.rig,
             tilt_limit,
             &lin,
             &now,
         );
-        match self.qp.solve(&self.gradient, &self.constraints) {
+        match self
+            .problem
+            .qp
+            .solve(&self.problem.gradient, &self.problem.constraints)
+        {
             Ok(x) if x.iter().all(|v| v.is_finite()) => {
-                self.plan.copy_from_slice(&x[..plan_len]);
-                self.counts.active = self.qp.active_count();
+                self.plan.accelerations.copy_from_slice(&x[..plan_len]);
+                self.counts.active = self.problem.qp.active_count();
                 true
             }
             // No plan, or one that is not a number (a wish beyond any float's range).
@@ -517,7 +598,7 @@ impl Mpc {
 /// beyond what the vehicle asks (each axis by its slack).
 fn build_constraints(
     c: &mut Constraints,
-    layout: &Layout,
+    layout: &Horizon,
     rig: &Rig,
     tilt_limit: f64,
     lin: &rig::Linearised,
@@ -527,9 +608,9 @@ fn build_constraints(
     let last = layout.steps - 1;
     // At rest at the horizon's end.
     for &axis in &layout.axes {
-        let free = layout.free(Quantity::EndVelocity, last, now.s[axis], now.v[axis]);
+        let free = layout.free(StepValue::EndVelocity, last, now.s[axis], now.v[axis]);
         if let Some(row) = c.push_equality(-free) {
-            layout.add_quantity(row, Quantity::EndVelocity, last, axis, 1.0);
+            layout.add_quantity(row, StepValue::EndVelocity, last, axis, 1.0);
         }
     }
     rig.push_rows(c, layout, lin, &now.s, &now.v);
@@ -547,7 +628,7 @@ fn build_constraints(
             let slopes = body_rate_slopes(&now.s)[axis - 3];
             let free: f64 = (0..3)
                 .map(|j| {
-                    slopes[j] * layout.free(Quantity::EndVelocity, k, now.s[3 + j], now.v[3 + j])
+                    slopes[j] * layout.free(StepValue::EndVelocity, k, now.s[3 + j], now.v[3 + j])
                 })
                 .sum();
             for wanted in [during, after]
@@ -559,7 +640,7 @@ fn build_constraints(
                     let row = c.push(f64::NEG_INFINITY, limit - side * (free - wanted));
                     for (j, m) in slopes.iter().enumerate() {
                         if *m != 0.0 {
-                            layout.add_quantity(row, Quantity::EndVelocity, k, 3 + j, side * m);
+                            layout.add_quantity(row, StepValue::EndVelocity, k, 3 + j, side * m);
                         }
                     }
                     row[plan_len + e] = -1.0;

@@ -50,40 +50,41 @@ impl Mpc {
     /// instant it adopts the reply offered for it, if any, and leaves a request for the
     /// next ([`Mpc::take_request`]).
     pub fn set_remote(&mut self, remote: bool) {
-        self.remote = remote;
+        self.remote.on = remote;
     }
 
     /// The request left at the last solve instant, if not taken yet, with the vehicle's
     /// motion held now (a sample taken since the instant is in it).
     pub fn take_request(&mut self) -> Option<PlanRequest> {
-        let mut request = self.request.take()?;
-        let steps = self.layout.steps;
-        request.wanted[..steps].copy_from_slice(&self.wanted);
-        request.wanted_end[..steps].copy_from_slice(&self.wanted_end);
-        request.fade = self.fade;
+        let mut request = self.remote.request.take()?;
+        let steps = self.problem.layout.steps;
+        request.wanted[..steps].copy_from_slice(&self.wanted.mean);
+        request.wanted_end[..steps].copy_from_slice(&self.wanted.at_end);
+        request.fade = self.wanted.fade;
         Some(request)
     }
 
     /// Offer a reply: it is adopted at its solve instant if it is the one asked for then.
     pub fn offer(&mut self, reply: &PlanReply) {
-        self.reply = Some(*reply);
+        self.remote.reply = Some(*reply);
     }
 
     /// Plan for `request` (on the planner that answers), from its state.
     pub fn answer(&mut self, request: &PlanRequest) -> PlanReply {
-        let steps = self.layout.steps;
-        self.s = request.s;
-        self.v = request.v;
-        self.wanted.copy_from_slice(&request.wanted[..steps]);
-        self.wanted_end
+        let steps = self.problem.layout.steps;
+        self.plant.s = request.s;
+        self.plant.v = request.v;
+        self.wanted.mean.copy_from_slice(&request.wanted[..steps]);
+        self.wanted
+            .at_end
             .copy_from_slice(&request.wanted_end[..steps]);
-        self.fade = request.fade;
+        self.wanted.fade = request.fade;
         if let Some(s) = &mut self.sensed {
             s.states = request.sensed;
         }
         let found = self.plan_from(request.a);
         let mut plan = [0.0; 6 * STEPS];
-        plan[..self.plan.len()].copy_from_slice(&self.plan);
+        plan[..self.plan.accelerations.len()].copy_from_slice(&self.plan.accelerations);
         PlanReply {
             id: request.id,
             epoch: request.epoch,
@@ -96,39 +97,39 @@ impl Mpc {
     /// At a solve instant, planning elsewhere: adopt the reply for this instant, or go on
     /// with the plan; then ask for the plan of the next instant.
     pub(super) fn remote_instant(&mut self) {
-        self.instant += 1;
-        match self.reply.take() {
-            Some(r) if r.id == self.instant && r.epoch == self.epoch && r.found => {
-                let n = self.plan.len();
-                self.plan.copy_from_slice(&r.plan[..n]);
-                self.plan_age = 0.0;
+        self.remote.instant += 1;
+        match self.remote.reply.take() {
+            Some(r) if r.id == self.remote.instant && r.epoch == self.remote.epoch && r.found => {
+                let n = self.plan.accelerations.len();
+                self.plan.accelerations.copy_from_slice(&r.plan[..n]);
+                self.plan.age = 0.0;
                 self.counts.active = r.active;
                 self.counts.solves += 1;
             }
-            Some(r) if r.id == self.instant && r.epoch == self.epoch => {
+            Some(r) if r.id == self.remote.instant && r.epoch == self.remote.epoch => {
                 self.counts.solves += 1;
                 self.counts.failed += 1;
             }
             _ => self.counts.late += 1,
         }
-        self.sense(self.input_at(self.plan_age));
-        let every = self.settings.mpc_solve_interval_s;
-        let (s, v, age) = self.integrate(self.s, self.v, self.plan_age, every);
+        self.sense(self.input_at(self.plan.age));
+        let every = self.problem.settings.mpc_solve_interval_s;
+        let (s, v, age) = self.integrate(self.plant.s, self.plant.v, self.plan.age, every);
         let mut request = PlanRequest {
-            id: self.instant + 1,
-            epoch: self.epoch,
+            id: self.remote.instant + 1,
+            epoch: self.remote.epoch,
             s,
             v,
             a: self.input_at(age),
             wanted: [[0.0; 6]; STEPS],
             wanted_end: [[0.0; 6]; STEPS],
-            fade: self.fade,
+            fade: self.wanted.fade,
             sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.next()),
         };
-        let steps = self.layout.steps;
-        request.wanted[..steps].copy_from_slice(&self.wanted);
-        request.wanted_end[..steps].copy_from_slice(&self.wanted_end);
-        self.request = Some(request);
+        let steps = self.problem.layout.steps;
+        request.wanted[..steps].copy_from_slice(&self.wanted.mean);
+        request.wanted_end[..steps].copy_from_slice(&self.wanted.at_end);
+        self.remote.request = Some(request);
     }
 }
 
@@ -197,20 +198,20 @@ mod tests {
                 follower.offer(&answering.answer(&request));
             }
         }
-        assert!(follower.v.iter().any(|v| v.abs() > 1e-3));
+        assert!(follower.plant.v.iter().any(|v| v.abs() > 1e-3));
         // Then the answers stop: the last plan is followed to rest.
         for _ in 0..300 {
             let pose = follower.advance(0.01);
             assert!(crate::analysis::workspace::pose_within_limits(
-                &follower.geometry,
-                &follower.limits,
+                &follower.problem.geometry,
+                &follower.problem.limits,
                 &pose
             ));
         }
         assert!(
-            follower.v.iter().all(|v| v.abs() < 1e-12),
+            follower.plant.v.iter().all(|v| v.abs() < 1e-12),
             "{:?}",
-            follower.v
+            follower.plant.v
         );
         assert!(follower.counts().late >= 300);
     }
@@ -233,6 +234,6 @@ mod tests {
         let late = follower.counts().late;
         follower.advance(0.01);
         assert_eq!(follower.counts().late, late + 1);
-        assert!(follower.plan.iter().all(|u| *u == 0.0));
+        assert!(follower.plan.accelerations.iter().all(|u| *u == 0.0));
     }
 }

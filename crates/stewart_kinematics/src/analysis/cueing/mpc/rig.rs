@@ -8,7 +8,7 @@
 
 use nalgebra::Vector3;
 
-use super::horizon::{Layout, Quantity};
+use super::horizon::{Horizon, StepValue};
 use super::qp::Constraints;
 use crate::analysis::checks::servos::rod_cone_angles;
 use crate::analysis::cueing::{Cue, pose_at};
@@ -186,7 +186,7 @@ impl Rig {
     pub fn push_rows(
         &self,
         c: &mut Constraints,
-        layout: &Layout,
+        layout: &Horizon,
         lin: &Linearised,
         s: &[f64; 6],
         v: &[f64; 6],
@@ -196,7 +196,7 @@ impl Rig {
                 let slope = &lin.slopes[i];
                 // c(s_k) ≈ c₀ + M (s_k − s₀), s_k − s₀ = free part + plan part.
                 let free: f64 = (0..6)
-                    .map(|a| slope[a] * (layout.free(Quantity::EndPosition, k, s[a], v[a]) - s[a]))
+                    .map(|a| slope[a] * (layout.free(StepValue::EndPosition, k, s[a], v[a]) - s[a]))
                     .sum();
                 let here = lin.values[i] + free;
                 let (lo, hi) = self.bounds[i];
@@ -210,19 +210,19 @@ impl Rig {
                 let (lo, hi) = (lo.min(lin.values[i]), hi.max(lin.values[i]));
                 let row = c.push(lo - here, hi - here);
                 for (axis, m) in slope.iter().enumerate() {
-                    layout.add_quantity(row, Quantity::EndPosition, k, axis, *m);
+                    layout.add_quantity(row, StepValue::EndPosition, k, axis, *m);
                 }
             }
             for (limit, quantity) in [
-                (self.speed, Quantity::EndVelocity),
-                (self.accel, Quantity::Acceleration),
+                (self.speed, StepValue::EndVelocity),
+                (self.accel, StepValue::Acceleration),
             ] {
                 let Some(limit) = limit else { continue };
                 for (slope, bend) in lin.slopes.iter().zip(&lin.curvature).take(6) {
                     let mut free: f64 = (0..6)
                         .map(|a| slope[a] * layout.free(quantity, k, s[a], v[a]))
                         .sum();
-                    if quantity == Quantity::Acceleration {
+                    if quantity == StepValue::Acceleration {
                         free += bend;
                     }
                     let row = c.push(-limit - free, limit - free);

@@ -47,7 +47,7 @@ fn without_limits_the_plan_is_the_cost_s_closed_form_minimiser() {
     // Surge alone, only the force error and the acceleration weighted: each step's
     // residuals are a_k − f* and a_k, so the minimiser is a_k = f* / (1 + w) (no
     // constraint). The condensed Hessian and gradient must give exactly that.
-    let layout = Layout {
+    let layout = Horizon {
         axes: vec![0],
         steps: 6,
         first: 0.01,
@@ -137,7 +137,7 @@ fn sustained_force_by_tilt(vestibular: bool) {
         "{:?}",
         cue.position
     );
-    assert!(mpc.v.iter().all(|v| v.abs() < tolerance));
+    assert!(mpc.plant.v.iter().all(|v| v.abs() < tolerance));
     assert_eq!(mpc.counts().failed, 0);
 }
 
@@ -266,20 +266,20 @@ fn a_plan_that_cannot_be_kept_brakes_along_the_last_one_and_never_leaves_the_lim
     let s = preset("paired");
     let mut mpc =
         Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s)).unwrap_or_else(|_| panic!("a planner"));
-    mpc.s[0] = -0.1;
-    mpc.s[1] = -0.1;
-    mpc.v[0] = 0.8;
-    mpc.v[1] = 0.8;
-    mpc.last_good = mpc.s;
+    mpc.plant.s[0] = -0.1;
+    mpc.plant.s[1] = -0.1;
+    mpc.plant.v[0] = 0.8;
+    mpc.plant.v[1] = 0.8;
+    mpc.plant.last_good = mpc.plant.s;
     // A plan from before: stop within its first four steps (0.31 s).
-    let width = mpc.layout.axes.len();
-    let stop = mpc.layout.start(4);
+    let width = mpc.problem.layout.axes.len();
+    let stop = mpc.problem.layout.start(4);
     for k in 0..4 {
-        mpc.plan[k * width] = -0.8 / stop;
-        mpc.plan[k * width + 1] = -0.8 / stop;
+        mpc.plan.accelerations[k * width] = -0.8 / stop;
+        mpc.plan.accelerations[k * width + 1] = -0.8 / stop;
     }
-    mpc.plan_age = 0.0;
-    mpc.since_solve = 0.0;
+    mpc.plan.age = 0.0;
+    mpc.plan.since_solve = 0.0;
     // A little further along the plan: the next solve has to stop from here.
     let mut poses = Vec::new();
     for _ in 0..300 {
@@ -306,11 +306,11 @@ fn a_pose_the_exact_check_refuses_is_never_given() {
     let mut mpc =
         Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s)).unwrap_or_else(|_| panic!("a planner"));
     let home = mpc.advance(0.01);
-    mpc.s[2] = 0.6;
+    mpc.plant.s[2] = 0.6;
     let pose = mpc.advance(0.01);
     assert_eq!(pose, home);
     assert_eq!(mpc.counts().stops, 1);
-    assert_eq!(mpc.s, [0.0; 6]);
+    assert_eq!(mpc.plant.s, [0.0; 6]);
 }
 
 #[test]
