@@ -422,11 +422,13 @@ impl ActuatorGuard {
             // between poses instead: from the motion going on, or from the last pose,
             // towards the plan's pose, or the last (braking). The last resort (braking,
             // or staying put) comes after.
-            let going_pose = history[1].map(|(t0, _, before)| {
-                let (a, b) = (before.to_coordinates(), last.to_coordinates());
-                let r = dt / (t1 - t0);
-                Pose::from_coordinates(std::array::from_fn(|j| b[j] + (b[j] - a[j]) * r))
-            });
+            let going_pose = history[1]
+                .filter(|(t0, _, _)| t1 > *t0)
+                .map(|(t0, _, before)| {
+                    let (a, b) = (before.to_coordinates(), last.to_coordinates());
+                    let r = dt / (t1 - t0);
+                    Pose::from_coordinates(std::array::from_fn(|j| b[j] + (b[j] - a[j]) * r))
+                });
             let towards: &[Pose] = if place.braking || wanted.is_none() {
                 &[last]
             } else {

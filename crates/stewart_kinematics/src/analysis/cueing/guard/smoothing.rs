@@ -69,10 +69,10 @@ impl ActuatorGuard {
             // The window's ends a and b stay; a sample before a and after b give the
             // slopes there, and the differences judged reach one sample further.
             // At the start of the motion the window may begin at its first sample (the
-            // motion starts from rest there).
+            // motion starts from rest there), and at its end finish at its last.
             let a = after.saturating_sub(half);
-            let b = after + half - 1;
-            if b + 2 > n {
+            let b = (after + half - 1).min(n - 1);
+            if b < after || b < a + 2 {
                 return;
             }
             let windows = [
@@ -158,15 +158,16 @@ impl ActuatorGuard {
 }
 
 /// The cubic (Hermite) joining the six numbers `at(a)` and `at(b)`, with the slopes of the
-/// intervals before `a` (none at the first sample: from rest) and after `b`, at the times
-/// strictly between; `None` where `at` has no value.
+/// intervals before `a` (none at the first sample: from rest) and after `b` (at the last
+/// sample: the mean slope from `a`), at the times strictly between; `None` where `at` has
+/// no value.
 fn hermite(
     times: &[f64],
     a: usize,
     b: usize,
     at: impl Fn(usize) -> Option<[f64; 6]>,
 ) -> Option<Vec<[f64; 6]>> {
-    let (qa, qb, qb1) = (at(a)?, at(b)?, at(b + 1)?);
+    let (qa, qb) = (at(a)?, at(b)?);
     let (ta, tb) = (times[a], times[b]);
     let h = tb - ta;
     let slope_a: [f64; 6] = match a.checked_sub(1) {
@@ -176,7 +177,14 @@ fn hermite(
         }
         None => [0.0; 6],
     };
-    let slope_b: [f64; 6] = std::array::from_fn(|i| (qb1[i] - qb[i]) / (times[b + 1] - tb));
+    // At the last sample, the window's own mean slope.
+    let slope_b: [f64; 6] = match times.get(b + 1) {
+        Some(&tb1) => {
+            let qb1 = at(b + 1)?;
+            std::array::from_fn(|i| (qb1[i] - qb[i]) / (tb1 - tb))
+        }
+        None => std::array::from_fn(|i| (qb[i] - qa[i]) / h),
+    };
     let between = times[a + 1..b].iter().map(|&t| {
         let u = (t - ta) / h;
         let (u2, u3) = (u * u, u * u * u);

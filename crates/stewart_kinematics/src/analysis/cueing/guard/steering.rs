@@ -76,6 +76,9 @@ impl ActuatorGuard {
             {
                 return Some((t, read, pose));
             }
+            if share == 0.0 {
+                break;
+            }
             share *= 0.5;
         }
         None

@@ -228,10 +228,15 @@ fn spaced(count: usize, spacing: &[f64]) -> Vec<(f64, VehicleMotion)> {
 /// Hostile timing: bursts of three samples 1.5 µs apart every 0.7 s (an acceleration
 /// limit over 1.5 µs asks the servo angles to agree to nanodegrees), and pairs 1 µs apart
 /// every 50 ms (the plan's very first step a jump among the steps after it).
-fn hostile_timing() -> [(&'static str, Vec<(f64, VehicleMotion)>); 2] {
+/// And short sparse recordings: five samples 5 s apart, and six whose last two are 2 µs
+/// apart (a jump at the last samples, where no smoothing window fitted until windows
+/// could end at the last sample).
+fn hostile_timing() -> [(&'static str, Vec<(f64, VehicleMotion)>); 4] {
     [
         ("bursts", spaced(90, &[0.7, 1.5e-6, 1.5e-6])),
         ("pairs", spaced(200, &[0.05, 1e-6])),
+        ("sparse", spaced(5, &[5.0])),
+        ("ends in a burst", spaced(6, &[0.01, 1e-6, 2.5, 2.5, 2e-6])),
     ]
 }
 
