@@ -75,11 +75,16 @@ impl ActuatorGuard {
             if b < after || b < a + 2 {
                 return;
             }
-            let windows = [
-                self.window_by_values(times, poses, a, b),
-                self.window_by_coordinates(times, poses, a, b),
-            ];
-            for window in windows.into_iter().flatten() {
+            // By actuator values, else by pose coordinates; with the motion's own slopes
+            // at the ends, else (where samples microseconds apart give those slopes
+            // little meaning) the window's mean slope at both.
+            let tries = [Ends::Motion, Ends::Mean].into_iter().flat_map(|ends| {
+                [
+                    self.window_by_values(times, poses, (a, b), ends),
+                    self.window_by_coordinates(times, poses, (a, b), ends),
+                ]
+            });
+            for window in tries.flatten() {
                 let mut tried = poses.to_vec();
                 tried[a + 1..b].copy_from_slice(&window);
                 if self.window_keeps_the_limits(times, &tried, a, b) {
@@ -97,12 +102,12 @@ impl ActuatorGuard {
         &self,
         times: &[f64],
         poses: &[Pose],
-        a: usize,
-        b: usize,
+        (a, b): (usize, usize),
+        ends: Ends,
     ) -> Option<Vec<Pose>> {
         let q = |k: usize| self.geometry.actuator_values_at(&poses[k]).ok();
         let mut near = poses[a];
-        (hermite(times, a, b, q)?.into_iter())
+        (hermite(times, (a, b), ends, q)?.into_iter())
             .map(|values| {
                 if (values.iter()).any(|v| *v < self.range.0 || *v > self.range.1) {
                     return None;
@@ -121,11 +126,11 @@ impl ActuatorGuard {
         &self,
         times: &[f64],
         poses: &[Pose],
-        a: usize,
-        b: usize,
+        (a, b): (usize, usize),
+        ends: Ends,
     ) -> Option<Vec<Pose>> {
         let c = |k: usize| Some(poses[k].to_coordinates());
-        (hermite(times, a, b, c)?.into_iter())
+        (hermite(times, (a, b), ends, c)?.into_iter())
             .map(|coordinates| {
                 let pose = Pose::from_coordinates(coordinates);
                 let read = self.read_back(&pose)?;
@@ -163,27 +168,30 @@ impl ActuatorGuard {
 /// no value.
 fn hermite(
     times: &[f64],
-    a: usize,
-    b: usize,
+    (a, b): (usize, usize),
+    ends: Ends,
     at: impl Fn(usize) -> Option<[f64; 6]>,
 ) -> Option<Vec<[f64; 6]>> {
     let (qa, qb) = (at(a)?, at(b)?);
     let (ta, tb) = (times[a], times[b]);
     let h = tb - ta;
-    let slope_a: [f64; 6] = match a.checked_sub(1) {
-        Some(before) => {
+    let mean: [f64; 6] = std::array::from_fn(|i| (qb[i] - qa[i]) / h);
+    let slope_a: [f64; 6] = match (ends, a.checked_sub(1)) {
+        (Ends::Mean, _) => mean,
+        (Ends::Motion, Some(before)) => {
             let qa0 = at(before)?;
             std::array::from_fn(|i| (qa[i] - qa0[i]) / (ta - times[before]))
         }
-        None => [0.0; 6],
+        // From rest at the first sample.
+        (Ends::Motion, None) => [0.0; 6],
     };
     // At the last sample, the window's own mean slope.
-    let slope_b: [f64; 6] = match times.get(b + 1) {
+    let slope_b: [f64; 6] = match times.get(b + 1).filter(|_| ends == Ends::Motion) {
         Some(&tb1) => {
             let qb1 = at(b + 1)?;
             std::array::from_fn(|i| (qb1[i] - qb[i]) / (tb1 - tb))
         }
-        None => std::array::from_fn(|i| (qb[i] - qa[i]) / h),
+        None => mean,
     };
     let between = times[a + 1..b].iter().map(|&t| {
         let u = (t - ta) / h;
@@ -199,4 +207,14 @@ fn hermite(
         })
     });
     Some(between.collect())
+}
+
+/// The slopes a smoothing window's cubic takes at its ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Ends {
+    /// The motion's own, over the intervals outside (at the first sample: from rest; at
+    /// the last: the window's mean).
+    Motion,
+    /// The window's mean slope at both ends.
+    Mean,
 }
