@@ -104,8 +104,8 @@ impl CueCounts {
 
 impl Drop for LiveCue {
     fn drop(&mut self) {
-        if let Some(x) = &self.xplane {
-            x.end(&self.socket);
+        if let Some(x) = &self.input.xplane {
+            x.end(&self.input.socket);
         }
     }
 }
@@ -165,9 +165,43 @@ impl Prediction {
 
 /// The live input and the cueing it feeds.
 pub struct LiveCue {
-    socket: UdpSocket,
+    input: UdpInput,
+    tally: Tally,
+    liveness: Liveness,
     cueing: Cueing,
+    /// The pose to follow.
+    pose: Pose,
+    /// The last two samples, for the look ahead (`None`: `input_prediction_s` is 0).
+    prediction: Option<Prediction>,
+    /// How far ahead of the last sample a tick looks, seconds.
+    prediction_s: f64,
+    /// The model-predictive planner's thread (`None` for the washout).
+    planner: Option<planner::PlannerThread>,
+}
+
+/// Where the vehicle's motion comes in: the socket, its buffer, and what reads the
+/// datagrams.
+struct UdpInput {
+    socket: UdpSocket,
+    buffer: Vec<u8>,
+    /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks) and
+    /// places their samples on the time line (restarted after a stall).
+    intake: Intake,
+    /// X-Plane asked for its datarefs of motion, when it is.
+    xplane: Option<RrefSubscription>,
+}
+
+/// What has come in: the counts shared with the interface, and the datagrams per format
+/// in this second's window (published as rates each second of stream time).
+struct Tally {
     counts: Arc<CueCounts>,
+    window: Vec<(&'static str, u32)>,
+    window_start: Option<f64>,
+}
+
+/// Whether the input is alive: when it last came, a stall or the game's menus, and how
+/// a quiet input fades.
+struct Liveness {
     /// Stream time of the last sample used.
     last_arrival: Option<f64>,
     /// Stream time of the last tick.
@@ -175,26 +209,40 @@ pub struct LiveCue {
     stalled: bool,
     /// The game says it is in its menus or paused (until its next sample).
     idle: bool,
-    pose: Pose,
-    buffer: Vec<u8>,
-    /// Reads the datagrams of every format (pairs F1's halves, unwraps games' clocks) and
-    /// places their samples on the time line (restarted after a stall).
-    intake: Intake,
-    /// X-Plane asked for its datarefs of motion, when it is.
-    xplane: Option<RrefSubscription>,
-    /// The last two samples, for the look ahead (`None`: `input_prediction_s` is 0).
-    prediction: Option<Prediction>,
-    /// How far ahead of the last sample a tick looks, seconds.
-    prediction_s: f64,
-    /// Datagrams per format since `window_start` (stream time), published as rates each
-    /// second.
-    window: Vec<(&'static str, u32)>,
-    window_start: Option<f64>,
     /// `stall_s` and `fade_s`.
     stall_s: f64,
     fade_s: f64,
-    /// The model-predictive planner's thread (`None` for the washout).
-    planner: Option<planner::PlannerThread>,
+}
+
+impl Tally {
+    /// One more datagram of format `name` in this second's window.
+    fn count_format(&mut self, name: &'static str) {
+        match self.window.iter_mut().find(|(n, _)| *n == name) {
+            Some((_, count)) => *count += 1,
+            None => self.window.push((name, 1)),
+        }
+    }
+
+    /// Once a second of stream time has passed, publish the window's rates and start the
+    /// next.
+    fn publish_rates(&mut self, t: f64) {
+        let start = *self.window_start.get_or_insert(t);
+        let elapsed = t - start;
+        if elapsed < 1.0 {
+            return;
+        }
+        let rates = self
+            .window
+            .drain(..)
+            .map(|(name, n)| (name, f64::from(n) / elapsed))
+            .collect();
+        *self
+            .counts
+            .arriving
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner) = rates;
+        self.window_start = Some(t);
+    }
 }
 
 impl LiveCue {
@@ -226,23 +274,29 @@ impl LiveCue {
             .set_nonblocking(true)
             .context("cannot make the cue socket non-blocking")?;
         Ok(Self {
-            socket,
+            input: UdpInput {
+                socket,
+                buffer: vec![0; DATAGRAM],
+                intake: Intake::new(scenario.cueing.stall_s),
+                xplane: None,
+            },
+            tally: Tally {
+                counts: Arc::default(),
+                window: Vec::new(),
+                window_start: None,
+            },
+            liveness: Liveness {
+                last_arrival: None,
+                last_tick: None,
+                stalled: false,
+                idle: false,
+                stall_s: scenario.cueing.stall_s,
+                fade_s: scenario.cueing.fade_s,
+            },
             cueing,
-            counts: Arc::default(),
-            last_arrival: None,
-            last_tick: None,
-            stalled: false,
-            idle: false,
             pose: scenario.geometry.home_pose(),
-            buffer: vec![0; DATAGRAM],
-            intake: Intake::new(scenario.cueing.stall_s),
-            xplane: None,
             prediction: (scenario.cueing.input_prediction_s > 0.0).then(Prediction::default),
             prediction_s: scenario.cueing.input_prediction_s,
-            window: Vec::new(),
-            window_start: None,
-            stall_s: scenario.cueing.stall_s,
-            fade_s: scenario.cueing.fade_s,
             planner,
         })
     }
@@ -250,32 +304,35 @@ impl LiveCue {
     /// Ask X-Plane for its datarefs of motion (`RREF`) while listening: at once, renewed
     /// every few seconds, stopped when this input is dropped.
     pub(crate) fn subscribe_xplane(&mut self, subscription: RrefSubscription) {
-        self.xplane = Some(subscription);
+        self.input.xplane = Some(subscription);
     }
 
     /// Where it listens.
     pub fn local_addr(&self) -> Result<std::net::SocketAddr> {
-        Ok(self.socket.local_addr()?)
+        Ok(self.input.socket.local_addr()?)
     }
 
     /// Samples taken so far.
     pub fn samples_taken(&self) -> u64 {
-        self.counts.received.load(Ordering::Relaxed)
+        self.tally.counts.received.load(Ordering::Relaxed)
     }
 
     /// The counts, shared.
     pub(crate) fn counts(&self) -> Arc<CueCounts> {
-        Arc::clone(&self.counts)
+        Arc::clone(&self.tally.counts)
     }
 
     /// The pose to follow at stream time `t`: the datagrams waiting are read, at most
     /// [`MAX_DATAGRAMS_PER_TICK`] and a fifth of the time since the last tick, and each
     /// sample steps the washout; a stalled input fades the cue.
     pub fn tick(&mut self, t: f64) -> Pose {
-        let dt = self.last_tick.map_or(0.0, |last| (t - last).max(0.0));
-        self.last_tick = Some(t);
-        if let Some(x) = self.xplane.as_mut() {
-            x.keep(&self.socket, std::time::Instant::now());
+        let dt = self
+            .liveness
+            .last_tick
+            .map_or(0.0, |last| (t - last).max(0.0));
+        self.liveness.last_tick = Some(t);
+        if let Some(x) = self.input.xplane.as_mut() {
+            x.keep(&self.input.socket, std::time::Instant::now());
         }
         // Until nothing more is waiting (or an ICMP error from a previous send), or the
         // tick's share of datagrams or of time is used.
@@ -285,12 +342,12 @@ impl LiveCue {
             if k > 0 && started.elapsed() > budget {
                 break;
             }
-            let Ok(n) = self.socket.recv(&mut self.buffer) else {
+            let Ok(n) = self.input.socket.recv(&mut self.input.buffer) else {
                 break;
             };
-            let buffer = std::mem::take(&mut self.buffer);
+            let buffer = std::mem::take(&mut self.input.buffer);
             self.receive(&buffer[..n], t);
-            self.buffer = buffer;
+            self.input.buffer = buffer;
         }
         self.settle(t, dt)
     }
@@ -298,13 +355,14 @@ impl LiveCue {
     /// One datagram arriving at stream time `t`, decoded and taken (what [`LiveCue::tick`]
     /// does with each datagram it reads; public for measurements that feed it directly).
     pub fn receive(&mut self, bytes: &[u8], t: f64) {
-        let (format, what, placed) = self.intake.take(bytes, t);
-        self.count_format(format.map_or(UNKNOWN_FORMAT, |f| f.name()));
+        let (format, what, placed) = self.input.intake.take(bytes, t);
+        self.tally
+            .count_format(format.map_or(UNKNOWN_FORMAT, |f| f.name()));
         match what {
             // The game's menus or pause: as if the input had stalled.
-            Intaken::Idle => self.idle = true,
+            Intaken::Idle => self.liveness.idle = true,
             Intaken::Refused(_) | Intaken::Sample(Placement::Stale) => {
-                self.counts.malformed.fetch_add(1, Ordering::Relaxed);
+                self.tally.counts.malformed.fetch_add(1, Ordering::Relaxed);
             }
             // A true repeat carries nothing new; a held sample comes with the next stamp.
             Intaken::Ignored | Intaken::Sample(_) => {}
@@ -319,49 +377,25 @@ impl LiveCue {
     /// `input_prediction_s`, where the washout goes with the input extrapolated that far
     /// beyond it.
     pub fn settle(&mut self, t: f64, dt: f64) -> Pose {
-        self.publish_rates(t);
-        let quiet = self.idle || self.last_arrival.is_none_or(|at| t - at > self.stall_s);
-        if quiet && self.last_arrival.is_some() {
+        self.tally.publish_rates(t);
+        let quiet = self.liveness.idle
+            || self
+                .liveness
+                .last_arrival
+                .is_none_or(|at| t - at > self.liveness.stall_s);
+        if quiet && self.liveness.last_arrival.is_some() {
             self.stall(dt);
         } else if !quiet && self.cueing.fade() < 1.0 {
-            self.cueing.set_fade(self.cueing.fade() + dt / self.fade_s);
+            self.cueing
+                .set_fade(self.cueing.fade() + dt / self.liveness.fade_s);
         }
-        match (&self.prediction, self.last_arrival) {
+        match (&self.prediction, self.liveness.last_arrival) {
             (Some(p), Some(arrived)) if !quiet => {
                 let ahead = (t - arrived).clamp(0.0, self.prediction_s);
                 self.cueing.preview(ahead, &p.midpoint(ahead))
             }
             _ => self.pose,
         }
-    }
-
-    /// One more datagram of format `name` in this second's window.
-    fn count_format(&mut self, name: &'static str) {
-        match self.window.iter_mut().find(|(n, _)| *n == name) {
-            Some((_, count)) => *count += 1,
-            None => self.window.push((name, 1)),
-        }
-    }
-
-    /// Once a second of stream time has passed, publish the window's rates and start the
-    /// next.
-    fn publish_rates(&mut self, t: f64) {
-        let start = *self.window_start.get_or_insert(t);
-        let elapsed = t - start;
-        if elapsed < 1.0 {
-            return;
-        }
-        let rates = self
-            .window
-            .drain(..)
-            .map(|(name, n)| (name, f64::from(n) / elapsed))
-            .collect();
-        *self
-            .counts
-            .arriving
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner) = rates;
-        self.window_start = Some(t);
     }
 
     /// Step the washout to the placed sample's time and hold its motion.
@@ -388,8 +422,7 @@ impl LiveCue {
         self.cueing.hold(&motion);
         self.ask();
         let cue = self.cueing.cue();
-        let mut trace = self
-            .counts
+        let mut trace = (self.tally.counts)
             .trace
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -403,18 +436,18 @@ impl LiveCue {
             trace.pop_front();
         }
         drop(trace);
-        self.last_arrival = Some(now);
-        self.stalled = false;
-        self.idle = false;
-        self.counts.received.fetch_add(1, Ordering::Relaxed);
+        self.liveness.last_arrival = Some(now);
+        self.liveness.stalled = false;
+        self.liveness.idle = false;
+        self.tally.counts.received.fetch_add(1, Ordering::Relaxed);
     }
 
     /// No sample for a while: a vehicle at rest, the cue fading to neutral; once there,
     /// the washout is at rest too.
     fn stall(&mut self, dt: f64) {
-        if !self.stalled {
-            self.stalled = true;
-            self.counts.stalls.fetch_add(1, Ordering::Relaxed);
+        if !self.liveness.stalled {
+            self.liveness.stalled = true;
+            self.tally.counts.stalls.fetch_add(1, Ordering::Relaxed);
             self.cueing.hold(&VehicleMotion::default());
             // The intake starts a new stretch of the sender's clock itself at the next
             // datagram (by the same stall time), as a replayed capture does.
@@ -422,7 +455,7 @@ impl LiveCue {
                 *p = Prediction::default();
             }
         }
-        let fade = self.cueing.fade() - dt / self.fade_s;
+        let fade = self.cueing.fade() - dt / self.liveness.fade_s;
         self.cueing.set_fade(fade);
         self.pose = self.advance(dt);
         self.ask();
