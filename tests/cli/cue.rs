@@ -284,6 +284,21 @@ fn bad_vehicle_motion_is_one_located_error_and_writes_nothing() {
         &["--set", "cueing.tilt_lp_wn=0"],
     );
     assert!(e.contains("cueing.tilt_lp_wn"), "{e}");
+    // One range rule for vehicle motion, wherever it comes from: a recording is held to
+    // the bounds a game's datagram is (the table once took 1e7 m/s² and 1e6 °/s, ten and
+    // a thousand times what a datagram may carry).
+    let e = run(
+        "hard.csv",
+        "t,ax,ay,az,wx,wy,wz\n0,0,0,0,0,0,0\n0.1,0,20000,0,0,0,0\n",
+        &[],
+    );
+    assert!(e.contains("hard.csv, line 3") && e.contains("ay"), "{e}");
+    let e = run(
+        "spin.csv",
+        "t,ax,ay,az,wx,wy,wz\n0,0,0,0,0,0,0\n0.1,0,0,0,0,0,-200000\n",
+        &[],
+    );
+    assert!(e.contains("spin.csv, line 3") && e.contains("wz"), "{e}");
 }
 
 #[test]

@@ -6,10 +6,11 @@ use std::io::Read;
 
 use anyhow::Result;
 use stewart_kinematics::analysis::cueing::VehicleMotion;
-use stewart_kinematics::io::bounds::{ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, symmetric};
+use stewart_kinematics::io::bounds::symmetric;
 use stewart_kinematics::io::table::NumericTable;
+use stewart_link::vehicle::COLUMN_BOUNDS;
 
-/// The columns, in order.
+/// The columns, in order (those of `COLUMN_BOUNDS`).
 pub(crate) const VEHICLE_COLUMNS: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
 
 /// A recording: the table as read (for its lines) and its samples.
@@ -23,12 +24,9 @@ pub(crate) struct VehicleTable {
 /// Read a recording from `input` (named `name` in errors).
 pub(crate) fn read(input: &mut dyn Read, name: &str) -> Result<VehicleTable> {
     let table = NumericTable::read(input, name, &VEHICLE_COLUMNS, &[])?;
-    table.check_range("t", &symmetric(TIME_S), "s")?;
-    for column in ["ax", "ay", "az"] {
-        table.check_range(column, &symmetric(ACCEL_M_S2), "m/s²")?;
-    }
-    for column in ["wx", "wy", "wz"] {
-        table.check_range(column, &symmetric(ANGULAR_SPEED_DEG_S), "°/s")?;
+    // The one range rule of vehicle motion, as a game's datagrams are read.
+    for (column, bound, unit) in COLUMN_BOUNDS {
+        table.check_range(column, &symmetric(bound), unit)?;
     }
     let samples = table
         .rows()

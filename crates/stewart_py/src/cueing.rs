@@ -19,17 +19,13 @@ const VEHICLE: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
 
 /// `vehicle` as samples, every value within the ranges `stewart cue` accepts.
 fn samples(vehicle: &Bound<'_, PyAny>) -> PyResult<Vec<(f64, VehicleMotion)>> {
-    use stewart_kinematics::io::bounds::{
-        ACCEL_M_S2, ANGULAR_SPEED_DEG_S, TIME_S, check, symmetric,
-    };
+    use stewart_kinematics::io::bounds::{check, symmetric};
+    // The one range rule of vehicle motion, as `stewart cue` and the games' datagrams.
+    use stewart_link::vehicle::COLUMN_BOUNDS;
     let rows = arrays::finite_table(vehicle, "vehicle", &VEHICLE)?;
     for (k, row) in rows.values().chunks_exact(7).enumerate() {
         for (i, v) in row.iter().enumerate() {
-            let (range, unit) = match i {
-                0 => (TIME_S, "s"),
-                1..=3 => (ACCEL_M_S2, "m/s²"),
-                _ => (ANGULAR_SPEED_DEG_S, "°/s"),
-            };
+            let (_, range, unit) = COLUMN_BOUNDS[i];
             if let Err(why) = check(*v, &symmetric(range), unit) {
                 return Err(PyValueError::new_err(format!(
                     "vehicle, row {k} (from 0), column {}: {why}",

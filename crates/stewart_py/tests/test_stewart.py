@@ -440,6 +440,11 @@ def test_cueing_gives_the_clis_poses_and_comparison_for_either_algorithm():
     huge[3, 1] = 1e300
     with pytest.raises(ValueError, match="vehicle, row 3 .*column ax"):
         stewart.cue(p, huge)
+    # The one range rule of vehicle motion: what a game's datagram may carry.
+    hard = vehicle.copy()
+    hard[4, 6] = 2e5
+    with pytest.raises(ValueError, match="vehicle, row 4 .*column wz"):
+        stewart.cue(p, hard)
     # A recording of no rows is refused, as `stewart cue` refuses it.
     with pytest.raises(ValueError, match="no rows"):
         stewart.cue(stewart.Platform.preset("seed"), np.zeros((0, 7)))

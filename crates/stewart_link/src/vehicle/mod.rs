@@ -41,6 +41,25 @@ use thiserror::Error;
 /// (`stewart_kinematics::io::bounds::TIME_S`), so that every sample written reads back.
 pub const MAX_TIME_S: f64 = 1e6;
 
+/// The largest |specific force| of a sample along any axis, m/s² (beyond any vehicle).
+pub const MAX_ACCEL_M_S2: f64 = 1e4;
+
+/// The largest |rotation rate| of a sample about any axis, °/s (beyond any vehicle).
+pub const MAX_RATE_DEG_S: f64 = 1e5;
+
+/// The one range rule of vehicle motion, wherever it comes from (a game's datagram, a
+/// capture, a CSV table, Python): each column of `t, ax, ay, az, wx, wy, wz` with its
+/// largest magnitude and unit.
+pub const COLUMN_BOUNDS: [(&str, f64, &str); 7] = [
+    ("t", MAX_TIME_S, "s"),
+    ("ax", MAX_ACCEL_M_S2, "m/s²"),
+    ("ay", MAX_ACCEL_M_S2, "m/s²"),
+    ("az", MAX_ACCEL_M_S2, "m/s²"),
+    ("wx", MAX_RATE_DEG_S, "°/s"),
+    ("wy", MAX_RATE_DEG_S, "°/s"),
+    ("wz", MAX_RATE_DEG_S, "°/s"),
+];
+
 /// Standard gravity, m/s² (games that give g-loads give them in g).
 pub const GRAVITY: f64 = 9.80665;
 
@@ -297,16 +316,8 @@ fn checked(reading: Reading) -> Result<Reading, VehicleError> {
     }
     let [ax, ay, az] = sample.accel;
     let [wx, wy, wz] = sample.rates_deg_s;
-    let columns = [
-        ("t", sample.t.unwrap_or(0.0), MAX_TIME_S),
-        ("ax", ax, 1e4),
-        ("ay", ay, 1e4),
-        ("az", az, 1e4),
-        ("wx", wx, 1e5),
-        ("wy", wy, 1e5),
-        ("wz", wz, 1e5),
-    ];
-    for (name, value, bound) in columns {
+    let values = [sample.t.unwrap_or(0.0), ax, ay, az, wx, wy, wz];
+    for (&(name, bound, _), value) in COLUMN_BOUNDS.iter().zip(values) {
         if !(value.is_finite() && value.abs() <= bound) {
             return Err(VehicleError::Value { name, value });
         }
