@@ -18,6 +18,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use anyhow::{Context as _, Result, bail};
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion, home_conditioning};
 use stewart_kinematics::{Pose, Scenario};
+use stewart_link::vehicle::Format;
 use stewart_link::vehicle::intake::{Intake, Intaken};
 use stewart_link::vehicle::timeline::{Placement, Step, Timed};
 
@@ -39,9 +40,6 @@ pub(crate) const MAX_DATAGRAMS_PER_TICK: usize = 64;
 
 /// The least time a tick may spend reading (the first tick, or very fast ticks).
 pub(crate) const MIN_READ_BUDGET: std::time::Duration = std::time::Duration::from_micros(100);
-
-/// The name counted for datagrams of no format known (the viewer says it in its words).
-pub(crate) const UNKNOWN_FORMAT: &str = "unknown";
 
 /// Seconds of the trace kept for the viewer's live plots.
 pub(crate) const TRACE_S: f64 = 10.0;
@@ -72,9 +70,9 @@ pub(crate) struct CueCounts {
     pub(crate) stalls: AtomicU64,
     /// The last [`TRACE_S`] of samples, oldest first.
     pub(crate) trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
-    /// The formats that arrived in the last whole second, with their datagrams a second
-    /// (named as their makers name them).
-    pub(crate) arriving: std::sync::Mutex<Vec<(&'static str, f64)>>,
+    /// The formats that arrived in the last whole second (`None`: datagrams not
+    /// recognised), with their datagrams a second.
+    pub(crate) arriving: std::sync::Mutex<Vec<(Option<Format>, f64)>>,
 }
 
 impl CueCounts {
@@ -83,8 +81,8 @@ impl CueCounts {
         [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
     }
 
-    /// The formats arriving, with their rates: `[("F1 24/25", 120.0)]`.
-    pub(crate) fn arriving(&self) -> Vec<(&'static str, f64)> {
+    /// The formats arriving, with their rates: `[(Some(Format::F1), 120.0)]`.
+    pub(crate) fn arriving(&self) -> Vec<(Option<Format>, f64)> {
         self.arriving
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner)
@@ -166,7 +164,7 @@ impl Prediction {
 /// The live input and the cueing it feeds.
 pub struct LiveCue {
     input: UdpInput,
-    tally: Tally,
+    reported: Reported,
     liveness: Liveness,
     cueing: Cueing,
     /// The pose to follow.
@@ -191,11 +189,12 @@ struct UdpInput {
     xplane: Option<RrefSubscription>,
 }
 
-/// What has come in: the counts shared with the interface, and the datagrams per format
-/// in this second's window (published as rates each second of stream time).
-struct Tally {
+/// What is reported of the input: the counts shared with the interface, and the datagrams
+/// per format (`None`: not recognised) in this second's window, published as rates each
+/// second of stream time.
+struct Reported {
     counts: Arc<CueCounts>,
-    window: Vec<(&'static str, u32)>,
+    window: Vec<(Option<Format>, u32)>,
     window_start: Option<f64>,
 }
 
@@ -214,12 +213,12 @@ struct Liveness {
     fade_s: f64,
 }
 
-impl Tally {
-    /// One more datagram of format `name` in this second's window.
-    fn count_format(&mut self, name: &'static str) {
-        match self.window.iter_mut().find(|(n, _)| *n == name) {
+impl Reported {
+    /// One more datagram of `format` in this second's window.
+    fn count_format(&mut self, format: Option<Format>) {
+        match self.window.iter_mut().find(|(f, _)| *f == format) {
             Some((_, count)) => *count += 1,
-            None => self.window.push((name, 1)),
+            None => self.window.push((format, 1)),
         }
     }
 
@@ -234,7 +233,7 @@ impl Tally {
         let rates = self
             .window
             .drain(..)
-            .map(|(name, n)| (name, f64::from(n) / elapsed))
+            .map(|(format, n)| (format, f64::from(n) / elapsed))
             .collect();
         *self
             .counts
@@ -280,7 +279,7 @@ impl LiveCue {
                 intake: Intake::new(scenario.cueing.stall_s),
                 xplane: None,
             },
-            tally: Tally {
+            reported: Reported {
                 counts: Arc::default(),
                 window: Vec::new(),
                 window_start: None,
@@ -314,12 +313,12 @@ impl LiveCue {
 
     /// Samples taken so far.
     pub fn samples_taken(&self) -> u64 {
-        self.tally.counts.received.load(Ordering::Relaxed)
+        self.reported.counts.received.load(Ordering::Relaxed)
     }
 
     /// The counts, shared.
     pub(crate) fn counts(&self) -> Arc<CueCounts> {
-        Arc::clone(&self.tally.counts)
+        Arc::clone(&self.reported.counts)
     }
 
     /// The pose to follow at stream time `t`: the datagrams waiting are read, at most
@@ -356,13 +355,15 @@ impl LiveCue {
     /// does with each datagram it reads; public for measurements that feed it directly).
     pub fn receive(&mut self, bytes: &[u8], t: f64) {
         let (format, what, placed) = self.input.intake.take(bytes, t);
-        self.tally
-            .count_format(format.map_or(UNKNOWN_FORMAT, |f| f.name()));
+        self.reported.count_format(format);
         match what {
             // The game's menus or pause: as if the input had stalled.
             Intaken::Idle => self.liveness.idle = true,
             Intaken::Refused(_) | Intaken::Sample(Placement::Stale) => {
-                self.tally.counts.malformed.fetch_add(1, Ordering::Relaxed);
+                self.reported
+                    .counts
+                    .malformed
+                    .fetch_add(1, Ordering::Relaxed);
             }
             // A true repeat carries nothing new; a held sample comes with the next stamp.
             Intaken::Ignored | Intaken::Sample(_) => {}
@@ -377,7 +378,7 @@ impl LiveCue {
     /// `input_prediction_s`, where the washout goes with the input extrapolated that far
     /// beyond it.
     pub fn settle(&mut self, t: f64, dt: f64) -> Pose {
-        self.tally.publish_rates(t);
+        self.reported.publish_rates(t);
         let quiet = self.liveness.idle
             || self
                 .liveness
@@ -422,7 +423,7 @@ impl LiveCue {
         self.cueing.hold(&motion);
         self.ask();
         let cue = self.cueing.cue();
-        let mut trace = (self.tally.counts)
+        let mut trace = (self.reported.counts)
             .trace
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -439,7 +440,10 @@ impl LiveCue {
         self.liveness.last_arrival = Some(now);
         self.liveness.stalled = false;
         self.liveness.idle = false;
-        self.tally.counts.received.fetch_add(1, Ordering::Relaxed);
+        self.reported
+            .counts
+            .received
+            .fetch_add(1, Ordering::Relaxed);
     }
 
     /// No sample for a while: a vehicle at rest, the cue fading to neutral; once there,
@@ -447,7 +451,7 @@ impl LiveCue {
     fn stall(&mut self, dt: f64) {
         if !self.liveness.stalled {
             self.liveness.stalled = true;
-            self.tally.counts.stalls.fetch_add(1, Ordering::Relaxed);
+            self.reported.counts.stalls.fetch_add(1, Ordering::Relaxed);
             self.cueing.hold(&VehicleMotion::default());
             // The intake starts a new stretch of the sender's clock itself at the next
             // datagram (by the same stall time), as a replayed capture does.
@@ -727,7 +731,7 @@ mod tests {
         // The Link panel's "arriving": Forza's form at its rate, one a tick of 20 ms.
         let arriving = live.counts().arriving();
         assert!(
-            matches!(arriving[..], [("Forza Sled", rate)] if (rate - 50.0).abs() < 0.5),
+            matches!(arriving[..], [(Some(Format::ForzaSled), rate)] if (rate - 50.0).abs() < 0.5),
             "{arriving:?}"
         );
         assert_eq!(live.counts().stalls.load(Ordering::Relaxed), 1);

@@ -16,7 +16,6 @@ use stewart_link::transport::list_ports;
 use super::widgets;
 use crate::i18n::Lang;
 use crate::link_plan::actuator_range;
-use crate::live_cue::UNKNOWN_FORMAT;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::live_link::LiveLink;
@@ -158,12 +157,8 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
             ],
         ));
         let arriving: Vec<String> = (cue.arriving().iter())
-            .map(|(name, rate)| {
-                let name = if *name == UNKNOWN_FORMAT {
-                    t.tr("link.cue_unknown")
-                } else {
-                    name
-                };
+            .map(|(format, rate)| {
+                let name = format.map_or_else(|| t.tr("link.cue_unknown"), |f| f.name());
                 format!("{name} {rate:.0}/s")
             })
             .collect();
