@@ -117,14 +117,14 @@ pub(crate) fn figure_file(
 }
 
 /// Where one slice is drawn: the box on the page and the metre-to-page scale.
-struct Frame {
+struct SliceBox {
     left: f64,
     bottom: f64,
     scale: f64,
     range: [[f64; 2]; 2],
 }
 
-impl Frame {
+impl SliceBox {
     fn x(&self, v: f64) -> f64 {
         self.left + (v - self.range[0][0]) * self.scale
     }
@@ -173,7 +173,7 @@ pub(crate) fn svg(fig: &WorkspaceFigure) -> String {
         .fold(f64::INFINITY, f64::min);
     let mut left = gap;
     for sl in fig.slices {
-        let frame = Frame {
+        let frame = SliceBox {
             left,
             bottom: bottom - 0.5 * (avail[1] - span(sl)[1] * scale),
             scale,
@@ -195,7 +195,7 @@ pub(crate) fn svg(fig: &WorkspaceFigure) -> String {
 }
 
 /// One slice: coloured runs, boundary, centre, axes.
-fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &SliceBox) {
     cells(s, fig, sl, f);
     boundary(s, sl, f);
     centre_mark(s, fig, sl, f);
@@ -203,7 +203,7 @@ fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
 }
 
 /// The reachable cells in their colours, a rectangle per run of one colour in a row.
-fn cells(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+fn cells(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &SliceBox) {
     let [nx, ny] = sl.cells;
     let cw = (sl.range[0][1] - sl.range[0][0]) / nx as f64;
     let ch = (sl.range[1][1] - sl.range[1][0]) / ny as f64;
@@ -241,7 +241,7 @@ fn cells(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
 }
 
 /// The boundary: every cell edge between a reachable cell and one out of reach.
-fn boundary(s: &mut String, sl: &Slice, f: &Frame) {
+fn boundary(s: &mut String, sl: &Slice, f: &SliceBox) {
     let [nx, ny] = sl.cells;
     let cw = (sl.range[0][1] - sl.range[0][0]) / nx as f64;
     let ch = (sl.range[1][1] - sl.range[1][0]) / ny as f64;
@@ -292,7 +292,7 @@ fn boundary(s: &mut String, sl: &Slice, f: &Frame) {
 }
 
 /// A cross at the platform centre.
-fn centre_mark(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+fn centre_mark(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &SliceBox) {
     let (cx, cy) = match sl.plane {
         Plane::Horizontal => (fig.centre[0], fig.centre[1]),
         Plane::Vertical => (fig.centre[0], fig.centre[2]),
@@ -309,7 +309,7 @@ fn centre_mark(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
 }
 
 /// The panel's frame, ticks in metres, axis labels and title.
-fn panel_axes(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &Frame) {
+fn panel_axes(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &SliceBox) {
     let t = fig.lang;
     let (x0, x1) = (f.x(sl.range[0][0]), f.x(sl.range[0][1]));
     let (y0, y1) = (f.y(sl.range[1][0]), f.y(sl.range[1][1]));

@@ -67,16 +67,16 @@ pub(crate) fn is_f1(bytes: &[u8]) -> bool {
 #[derive(Debug, Default)]
 pub(crate) struct Pairing {
     /// The last `Motion`'s frame and its g-forces `[lateral, longitudinal, vertical]`.
-    motion: Option<(Frame, [f64; 3])>,
+    motion: Option<(FrameStamp, [f64; 3])>,
     /// The last `Motion Ex`'s frame and its angular velocity `[X, Y, Z]`.
-    motion_ex: Option<(Frame, [f64; 3])>,
+    motion_ex: Option<(FrameStamp, [f64; 3])>,
     /// The frame of the last pair made into a sample.
-    last_pair: Option<Frame>,
+    last_pair: Option<FrameStamp>,
 }
 
 /// Which frame a packet belongs to: session, frame number, and its time.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Frame {
+struct FrameStamp {
     session: [u8; 8],
     number: Option<u32>,
     time: f64,
@@ -108,7 +108,7 @@ pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, Veh
     let session = (bytes.get(SESSION_UID..SESSION_UID + 8))
         .and_then(|s| <[u8; 8]>::try_from(s).ok())
         .unwrap_or_default();
-    let frame = Frame {
+    let frame = FrameStamp {
         session,
         number: u32_at(bytes, FRAME),
         time: f32_at(bytes, SESSION_TIME),
@@ -152,6 +152,6 @@ pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, Veh
     }
 }
 
-fn same_frame(a: &Frame, b: &Frame) -> bool {
+fn same_frame(a: &FrameStamp, b: &FrameStamp) -> bool {
     a.session == b.session && a.number == b.number
 }

@@ -30,21 +30,21 @@ pub const CLASSIC_WITH_ID_BYTES: usize = 68;
 pub const PACK_BYTES: [usize; 2] = [272, 280];
 
 /// Where a packet's fields are.
-struct Layout {
+struct FieldOffsets {
     time: usize,
     angular_velocity: usize,
     angles: usize,
     acceleration: usize,
 }
 
-const CLASSIC: Layout = Layout {
+const CLASSIC: FieldOffsets = FieldOffsets {
     time: 0,
     angular_velocity: 4,
     angles: 16,
     acceleration: 28,
 };
 
-const PACK: Layout = Layout {
+const PACK: FieldOffsets = FieldOffsets {
     time: 8,
     angular_velocity: 12,
     angles: 24,
@@ -68,7 +68,7 @@ pub(crate) fn pack(bytes: &[u8], clock: &mut WrappingClock) -> Result<Reading, V
     Ok(read(bytes, &PACK, clock))
 }
 
-fn read(bytes: &[u8], at: &Layout, clock: &mut WrappingClock) -> Reading {
+fn read(bytes: &[u8], at: &FieldOffsets, clock: &mut WrappingClock) -> Reading {
     let t = u32_at(bytes, at.time).map(|ms| clock.seconds(ms));
     let [heading, pitch, roll] = vector_at(bytes, at.angles);
     let to_car = |v: [f64; 3]| {

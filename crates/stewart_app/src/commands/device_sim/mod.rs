@@ -33,7 +33,7 @@ use model::{ActuatorModel, Actuators};
 
 /// What was received.
 #[derive(Default)]
-struct Tally {
+struct Received {
     rows: String,
     frames: u64,
     bad: u64,
@@ -102,7 +102,7 @@ pub(crate) fn run(args: &DeviceSimArgs) -> Result<ExitCode> {
 /// reads; each datagram stands alone), what it received, and its simulated actuators.
 struct Controller {
     decoder: WireDecoder,
-    tally: Tally,
+    tally: Received,
     actuators: Actuators,
     /// Whether the actuators lag, saturate or dead-band (else they are where told).
     modelled: bool,
@@ -124,9 +124,9 @@ impl Controller {
         );
         Self {
             decoder: WireDecoder::new(args),
-            tally: Tally {
+            tally: Received {
                 rows: "t_s,seq,armed,estop,home,unit,v1,v2,v3,v4,v5,v6\n".to_owned(),
-                ..Tally::default()
+                ..Received::default()
             },
             actuators: Actuators::new(model),
             modelled: model != ActuatorModel::default(),
@@ -411,7 +411,7 @@ impl Input {
 }
 
 /// Count and record one good frame.
-fn record(tally: &mut Tally, t: f64, f: &Frame, args: &DeviceSimArgs) {
+fn record(tally: &mut Received, t: f64, f: &Frame, args: &DeviceSimArgs) {
     tally.frames += 1;
     if let Some(previous) = tally.last_sequence {
         // Ahead by less than half the circle: the frames skipped were lost; else it stepped

@@ -19,7 +19,7 @@ use crate::solve::servo_closure;
 
 /// One moving part of a leg at a pose (and, for accelerations, a twist).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Part {
+pub(crate) struct MovingPart {
     /// Mass, kg.
     pub mass: f64,
     /// Inertia about the centre of mass, base-frame axes, kg·m².
@@ -40,7 +40,7 @@ pub(crate) struct Part {
     pub alpha_bias: Vector3<f64>,
 }
 
-impl Part {
+impl MovingPart {
     fn still(part: &LegPart) -> Self {
         Self {
             mass: part.mass,
@@ -70,7 +70,7 @@ pub(crate) struct Leg {
     /// For servos, the part of `θ̈` from velocities alone.
     pub rate_bias: f64,
     /// Cylinder and rod, or horn and rod.
-    pub parts: [Part; 2],
+    pub parts: [MovingPart; 2],
 }
 
 /// Why a leg has no parts at a pose.
@@ -163,23 +163,23 @@ fn linear_leg(
     let alpha_bias = u.cross(&(-2.0 * rate / l * u_dot));
     let ang_joint = u.cross_matrix() / l;
     let (cylinder, rod) = (dynamics.cylinder(), dynamics.rod());
-    let cylinder_part = Part {
+    let cylinder_part = MovingPart {
         inertia: cylinder.inertia * across,
         lin_joint: cylinder.com * p,
         ang_joint,
         omega,
         acc_bias: cylinder.com * curve,
         alpha_bias,
-        ..Part::still(&cylinder)
+        ..MovingPart::still(&cylinder)
     };
-    let rod_part = Part {
+    let rod_part = MovingPart {
         inertia: rod.inertia * across,
         lin_joint: Matrix3::identity() - rod.com * p,
         ang_joint,
         omega,
         acc_bias: -rod.com * curve,
         alpha_bias,
-        ..Part::still(&rod)
+        ..MovingPart::still(&rod)
     };
     Leg {
         arm,
@@ -227,16 +227,16 @@ fn servo_leg(
     let rate_bias = (d_dot.norm_squared() - d.dot(&h2) * rate * rate) * scale;
     let (horn_part, rod) = (dynamics.horn(), dynamics.rod());
     let horn_share = horn_part.com / a;
-    let horn_body = Part {
+    let horn_body = MovingPart {
         inertia: horn_part.inertia * axis * axis.transpose(),
         lin_rate: horn_share * h1,
         ang_rate: axis,
         omega: rate * axis,
         acc_bias: horn_share * rate * rate * h2,
-        ..Part::still(&horn_part)
+        ..MovingPart::still(&horn_part)
     };
     let along = rod.com / rho;
-    let rod_body = Part {
+    let rod_body = MovingPart {
         inertia: rod.inertia * (Matrix3::identity() - e * e.transpose()),
         lin_joint: along * Matrix3::identity(),
         lin_rate: (1.0 - along) * h1,
@@ -245,7 +245,7 @@ fn servo_leg(
         omega: e.cross(&d_dot) / rho,
         acc_bias: (1.0 - along) * rate * rate * h2,
         alpha_bias: -e.cross(&h2) * (rate * rate / rho),
-        ..Part::still(&rod)
+        ..MovingPart::still(&rod)
     };
     Leg {
         arm,
