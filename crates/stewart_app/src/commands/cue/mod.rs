@@ -248,7 +248,11 @@ impl Recording {
 /// One line on what was cued, and how much the limiter held back.
 fn summary(samples: &[(f64, VehicleMotion)], scales: &[f64]) -> String {
     let span = samples.last().map_or(0.0, |l| l.0) - samples.first().map_or(0.0, |f| f.0);
-    let mut s = format!("cue: {} poses over {span:.3} s", samples.len());
+    let mut s = format!(
+        "cue: {} poses over {} s",
+        samples.len(),
+        crate::i18n::words::time_text(span)
+    );
     let held = scales.iter().filter(|&&k| k < 1.0).count();
     if held > 0 {
         let least = scales.iter().copied().fold(1.0, f64::min);
@@ -289,5 +293,15 @@ mod tests {
         // A motion within the limits: nothing to say.
         let still = vec![home; 20];
         assert_eq!(output_notes(&scenario, &samples, &still, true), "");
+    }
+
+    #[test]
+    fn a_recording_shorter_than_a_millisecond_is_told_its_length() {
+        // 299 samples 1 µs apart once read "over 0.000 s".
+        let samples: Vec<(f64, VehicleMotion)> = (0..299)
+            .map(|k| (f64::from(k) * 1e-6, VehicleMotion::default()))
+            .collect();
+        let said = summary(&samples, &[1.0; 299]);
+        assert!(said.starts_with("cue: 299 poses over 0.000298 s"), "{said}");
     }
 }

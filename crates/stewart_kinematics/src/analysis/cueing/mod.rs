@@ -27,6 +27,17 @@ pub use lti::Lti;
 pub use mpc::{Mpc, MpcCounts};
 pub use washout::{Cue, VehicleMotion, Washout};
 
+/// Where two times written a microsecond apart differ by less once read (far from 0, a
+/// number carries fewer decimals), the reason, said: the message would otherwise quote
+/// two times that look exactly far enough apart.
+fn rounding_hint(t: f64, previous: f64) -> &'static str {
+    if t - previous > 0.99e-6 {
+        "; this far from 0 a gap of 1e-6 s reads as a little less: start the times nearer 0"
+    } else {
+        ""
+    }
+}
+
 /// Why vehicle motion could not be cued.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum CueError {
@@ -36,7 +47,8 @@ pub enum CueError {
     /// Sample `index` (from 0) does not come after the one before it by at least a
     /// microsecond (the least gap between a pose table's rows).
     #[error(
-        "t = {t} s does not come at least 1e-6 s after the previous sample's {previous} s (a pose table's rows must be that far apart)"
+        "t = {t} s does not come at least 1e-6 s after the previous sample's {previous} s (a pose table's rows must be that far apart){}",
+        rounding_hint(*t, *previous)
     )]
     Time {
         /// The sample, from 0.

@@ -620,3 +620,22 @@ fn the_limiters_pose_on_a_cones_edge_passes_check_as_its_row_reads_back() {
     }
     assert!(limited > 300, "{limited}");
 }
+
+#[test]
+fn times_a_microsecond_apart_far_from_zero_are_refused_saying_why() {
+    // Written 1 µs apart near -1e6 s, the two times read back 0.99999997 µs apart: the
+    // refusal quoted two times that look exactly far enough apart, and now says why.
+    let e = CueError::Time {
+        index: 1,
+        t: -999_999.999_992,
+        previous: -999_999.999_993,
+    };
+    let said = e.to_string();
+    assert!(said.contains("start the times nearer 0"), "{said}");
+    let close = CueError::Time {
+        index: 1,
+        t: 0.1,
+        previous: 0.1,
+    };
+    assert!(!close.to_string().contains("nearer 0"));
+}
