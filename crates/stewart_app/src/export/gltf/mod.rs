@@ -139,32 +139,87 @@ pub(crate) fn export_gltf(
         Some(crate::output::Destination::new(&bin_path, inputs)?)
     };
 
-    let g = &scenario.geometry;
-    let times: Vec<f64> = scenario.motion.times().collect();
-    let rotary = g.rotary().is_some();
-    let mut tracks: Vec<Track> = names(rotary)
-        .into_iter()
-        .map(|n| Track::new(n, times.len()))
-        .collect();
-    let mut longest = 0.0f64;
-    for &t in &times {
-        let frame = g.scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
-        for (track, p) in tracks.iter_mut().zip(placements(&frame)) {
-            track.key(&p);
-        }
-        longest = frame.legs.iter().map(|l| l.length).fold(longest, f64::max);
-    }
-
+    let sampled = Sampled::of(scenario);
     let mut doc = Document::default();
+    let g = &scenario.geometry;
     let home = g.scene_frame(&g.home_pose(), Vec::new());
     let looks = meshes::Looks {
         theme: &request.theme,
         coloured: request.coloured_legs,
         parts: &request.parts,
     };
-    let meshes = meshes::build(&mut doc, &home, &looks, longest as f32);
+    let meshes = meshes::build(&mut doc, &home, &looks, sampled.longest as f32);
+    let animated = animate(&mut doc, &sampled, &meshes);
+    close_document(&mut doc, &scenario.name, animated);
 
-    // Nodes: the root, the base, then the moving ones at their first key.
+    let bytes = match bin_destination {
+        None => {
+            let (glb, _) = doc.finish(None);
+            destination.write_bytes(&glb)?;
+            glb.len() as u64
+        }
+        Some(bin_destination) => {
+            let uri = uri_of(&bin_path)?;
+            let (text, bin) = doc.finish(Some(&uri));
+            bin_destination.write_bytes(&bin)?;
+            destination.write_bytes(&text)?;
+            (text.len() + bin.len()) as u64
+        }
+    };
+    Ok(GltfReport {
+        samples: sampled.times.len(),
+        moving: sampled.tracks.len(),
+        bytes,
+        seconds: started.elapsed().as_secs_f64(),
+    })
+}
+
+/// The trajectory sampled for the animation: its times, each moving part's track, and the
+/// longest leg reached (the rods' meshes are made that long).
+struct Sampled {
+    times: Vec<f64>,
+    tracks: Vec<Track>,
+    longest: f64,
+}
+
+impl Sampled {
+    /// Every moving part of `scenario`'s rig placed at each time of its motion.
+    fn of(scenario: &Scenario) -> Self {
+        let g = &scenario.geometry;
+        let times: Vec<f64> = scenario.motion.times().collect();
+        let rotary = g.rotary().is_some();
+        let mut tracks: Vec<Track> = names(rotary)
+            .into_iter()
+            .map(|n| Track::new(n, times.len()))
+            .collect();
+        let mut longest = 0.0f64;
+        for &t in &times {
+            let frame = g.scene_frame(&scenario.motion.trajectory.pose_at(t), Vec::new());
+            for (track, p) in tracks.iter_mut().zip(placements(&frame)) {
+                track.key(&p);
+            }
+            longest = frame.legs.iter().map(|l| l.length).fold(longest, f64::max);
+        }
+        Self {
+            times,
+            tracks,
+            longest,
+        }
+    }
+}
+
+/// The scene's nodes under its root (the base, then the moving parts at their first key)
+/// and the animation's channels and samplers.
+struct Animated {
+    children: Vec<json::Index<json::Node>>,
+    channels: Vec<json::animation::Channel>,
+    samplers: Vec<json::animation::Sampler>,
+}
+
+/// The base and each moving part as nodes of `doc`, every track a translation and a
+/// rotation channel sampled linearly at the motion's times (from its first).
+fn animate(doc: &mut Document, sampled: &Sampled, meshes: &meshes::Meshes) -> Animated {
+    let times = &sampled.times;
     let start = times.first().copied().unwrap_or(0.0);
     let seconds: Vec<f32> = times.iter().map(|t| (t - start) as f32).collect();
     let input = doc.floats(&seconds, 1, true, None);
@@ -176,7 +231,7 @@ pub(crate) fn export_gltf(
     let mut children = vec![base];
     let mut channels = Vec::new();
     let mut samplers = Vec::new();
-    for (k, track) in tracks.iter().enumerate() {
+    for (k, track) in sampled.tracks.iter().enumerate() {
         let translation = doc.floats(&track.translations, 3, true, None);
         let rotation = doc.floats(&track.rotations, 4, false, None);
         let node = doc.root.push(json::Node {
@@ -218,27 +273,37 @@ pub(crate) fn export_gltf(
             });
         }
     }
+    Animated {
+        children,
+        channels,
+        samplers,
+    }
+}
+
+/// The document's root node (turned so that the studio's z, up, is glTF's y), its scene
+/// and animation, both named `name`, and its asset.
+fn close_document(doc: &mut Document, name: &str, animated: Animated) {
     // −90° about x: the studio's z (up) becomes glTF's y (up).
     let half = std::f32::consts::FRAC_1_SQRT_2;
     let root = doc.root.push(json::Node {
         name: Some("stewart".to_owned()),
         rotation: Some(json::scene::UnitQuaternion([-half, 0.0, 0.0, half])),
-        children: Some(children),
+        children: Some(animated.children),
         ..Default::default()
     });
     let scene = doc.root.push(json::Scene {
         extensions: None,
         extras: Default::default(),
-        name: Some(scenario.name.clone()),
+        name: Some(name.to_owned()),
         nodes: vec![root],
     });
     doc.root.scene = Some(scene);
     doc.root.push(json::Animation {
         extensions: None,
         extras: Default::default(),
-        channels,
-        name: Some(scenario.name.clone()),
-        samplers,
+        channels: animated.channels,
+        name: Some(name.to_owned()),
+        samplers: animated.samplers,
     });
     doc.root.asset = json::Asset {
         generator: Some(format!(
@@ -248,28 +313,6 @@ pub(crate) fn export_gltf(
         version: "2.0".to_owned(),
         ..Default::default()
     };
-
-    let moving = tracks.len();
-    let bytes = match bin_destination {
-        None => {
-            let (glb, _) = doc.finish(None);
-            destination.write_bytes(&glb)?;
-            glb.len() as u64
-        }
-        Some(bin_destination) => {
-            let uri = uri_of(&bin_path)?;
-            let (text, bin) = doc.finish(Some(&uri));
-            bin_destination.write_bytes(&bin)?;
-            destination.write_bytes(&text)?;
-            (text.len() + bin.len()) as u64
-        }
-    };
-    Ok(GltfReport {
-        samples: times.len(),
-        moving,
-        bytes,
-        seconds: started.elapsed().as_secs_f64(),
-    })
 }
 
 /// The relative URI of the buffer file beside the `.gltf` (its name, percent-encoded).
