@@ -1,7 +1,7 @@
 //! Headless rendering tests: shaders validate, frames show what they must, and match
 //! reference images. They run on whatever adapter `Gpu::headless` finds (lavapipe in CI).
 
-mod cad;
+mod appearance;
 mod picture;
 mod shaders;
 mod snapshots;
@@ -10,7 +10,7 @@ mod workspace;
 use glam::Vec3;
 use stewart_kinematics::{Geometry, GeometryParams, Pose, model::geometry::StrokeLimits};
 use stewart_render::theme::series;
-use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
+use stewart_render::{DrawList, Image, Offscreen, OrbitCamera, Overlays, Theme};
 
 /// Render `pose` of `geometry` at `width × height` with the seed view.
 pub fn render(
@@ -20,7 +20,7 @@ pub fn render(
     theme: &Theme,
     width: u32,
     height: u32,
-) -> (Frame, OrbitCamera) {
+) -> (Image, OrbitCamera) {
     let camera = seed_camera(geometry);
     let overlays = Overlays::default();
     render_with(
@@ -43,7 +43,7 @@ pub fn render_with(
     (width, height): (u32, u32),
     overlays: &Overlays,
     camera: OrbitCamera,
-) -> (Frame, OrbitCamera) {
+) -> (Image, OrbitCamera) {
     let frame = geometry.scene_frame(pose, Vec::new());
     let list = DrawList::build(&frame, theme, overlays);
     let image = offscreen
@@ -187,7 +187,7 @@ fn a_leg_over_its_stroke_shows_the_warning_colour() {
         camera,
     )
     .0;
-    let reddish = |f: &Frame| {
+    let reddish = |f: &Image| {
         f.rgba
             .chunks(4)
             .filter(|p| p[0] > 180 && p[1] < 80 && p[2] < 80)
@@ -203,7 +203,7 @@ fn a_leg_over_its_stroke_shows_the_warning_colour() {
 
 /// Distance (largest channel difference, 0–255) from the pixel nearest `colour` among the
 /// pixels at `points` (world coordinates).
-fn closest_to(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
+fn closest_to(frame: &Image, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
     let target = [0, 1, 2].map(|k| (colour[k] * 255.0) as i32);
     points
         .iter()
@@ -221,7 +221,7 @@ fn closest_to(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32
 
 /// As [`closest_to`], searching a few pixels around each point (across a cylinder, its
 /// shading runs from dark edges to a highlight on the axis).
-fn closest_near(frame: &Frame, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
+fn closest_near(frame: &Image, camera: &OrbitCamera, points: &[Vec3], colour: [f32; 4]) -> i32 {
     let target = [0, 1, 2].map(|k| (colour[k] * 255.0) as i32);
     let mut best = 255;
     for &p in points {
@@ -487,12 +487,12 @@ fn renderers_on_several_threads_at_once_share_one_device_and_each_get_their_own_
         .map(|k| Pose::from_xyz_rpy_deg([0.02 * k as f64, 0.0, 0.8], [0.0, 0.0, 5.0 * k as f64]))
         .collect();
     let mut alone_renderer = offscreen();
-    let alone: Vec<Frame> = poses
+    let alone: Vec<Image> = poses
         .iter()
         .map(|p| render(&mut alone_renderer, &g, p, &Theme::DARK, w, h).0)
         .collect();
     assert!(alone.windows(2).all(|f| f[0].rgba != f[1].rgba));
-    let together: Vec<Vec<Frame>> = std::thread::scope(|scope| {
+    let together: Vec<Vec<Image>> = std::thread::scope(|scope| {
         let threads: Vec<_> = poses
             .iter()
             .map(|pose| {
@@ -501,7 +501,7 @@ fn renderers_on_several_threads_at_once_share_one_device_and_each_get_their_own_
                     let mut off = offscreen();
                     (0..4)
                         .map(|_| render(&mut off, g, pose, &Theme::DARK, w, h).0)
-                        .collect::<Vec<Frame>>()
+                        .collect::<Vec<Image>>()
                 })
             })
             .collect();
@@ -600,7 +600,7 @@ fn presentation_labels_are_larger_and_a_yellow_label_has_dark_ink() {
             ..Overlays::default()
         },
     );
-    let changed = |img: &Frame| {
+    let changed = |img: &Image| {
         (0..h)
             .flat_map(|y| (0..w).map(move |x| (x, y)))
             .filter(|&(x, y)| img.pixel(x, y) != bare.pixel(x, y))

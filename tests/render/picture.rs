@@ -26,15 +26,9 @@ fn prepared(gpu: &Gpu, renderer: &Renderer, theme: &Theme) -> PreparedView {
     );
     let mut view = renderer.new_view(&gpu.device);
     let viewport = SIZE.map(|v| v as f32);
-    renderer.prepare(
-        &gpu.device,
-        &gpu.queue,
-        &mut view,
-        &list,
-        &stewart_render::OrbitCamera::seed_view_of(&g),
-        theme,
-        viewport,
-    );
+    let camera = stewart_render::OrbitCamera::seed_view_of(&g);
+    let frame = stewart_render::ViewFrame::new(&list, &camera, theme, viewport);
+    renderer.prepare(&gpu.device, &gpu.queue, &mut view, &frame);
     view
 }
 

@@ -12,7 +12,7 @@
 use std::path::PathBuf;
 
 use stewart_kinematics::{Pose, Scenario};
-use stewart_render::{Frame, Theme};
+use stewart_render::{Image, Theme};
 
 use crate::{offscreen, render};
 
@@ -45,7 +45,7 @@ fn compare(reference: &image::RgbaImage, new: &image::RgbaImage) -> (usize, imag
 }
 
 /// Compare `frame` with the reference image `name` (see the module docs).
-pub(crate) fn check(name: &str, frame: &Frame) {
+pub(crate) fn check(name: &str, frame: &Image) {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots");
     let path = dir.join(format!("{name}.png"));
     let new = image::RgbaImage::from_raw(frame.width, frame.height, frame.rgba.clone())

@@ -10,7 +10,7 @@ use stewart_kinematics::{Angle, Scenario, model::limits::Limits};
 use stewart_render::analysis::AnalysisMesh;
 use stewart_render::colormap;
 use stewart_render::theme::linear;
-use stewart_render::{DrawList, Frame, Overlays, Theme};
+use stewart_render::{DrawList, Image, Overlays, Theme};
 
 use crate::snapshots::{SIZE, check};
 use crate::{offscreen, project, seed_camera};
@@ -52,7 +52,7 @@ fn slice(s: &Scenario) -> Slice {
 
 /// The seed view of `s` at home with `analysis` drawn, with the platform or (`bare`)
 /// without anything else.
-fn draw_with(s: &Scenario, analysis: Vec<Arc<AnalysisMesh>>, theme: &Theme, bare: bool) -> Frame {
+fn draw_with(s: &Scenario, analysis: Vec<Arc<AnalysisMesh>>, theme: &Theme, bare: bool) -> Image {
     let g = &s.geometry;
     let frame = g.scene_frame(&g.home_pose(), Vec::new());
     let mut list = if bare {
@@ -66,16 +66,16 @@ fn draw_with(s: &Scenario, analysis: Vec<Arc<AnalysisMesh>>, theme: &Theme, bare
         .unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn draw(s: &Scenario, analysis: Vec<Arc<AnalysisMesh>>, theme: &Theme) -> Frame {
+fn draw(s: &Scenario, analysis: Vec<Arc<AnalysisMesh>>, theme: &Theme) -> Image {
     draw_with(s, analysis, theme, false)
 }
 
-fn pixel(f: &Frame, (x, y): (u32, u32)) -> [i32; 3] {
+fn pixel(f: &Image, (x, y): (u32, u32)) -> [i32; 3] {
     let k = 4 * (y * f.width + x) as usize;
     [0, 1, 2].map(|c| i32::from(f.rgba[k + c]))
 }
 
-fn differing(a: &Frame, b: &Frame) -> usize {
+fn differing(a: &Image, b: &Image) -> usize {
     a.rgba
         .chunks(4)
         .zip(b.rgba.chunks(4))

@@ -27,7 +27,7 @@ fn bench(c: &mut Criterion) {
         overlays: Overlays::default(),
         readout: None,
         lang: stewart_app::i18n::Lang::En,
-        parts: stewart_render::cad::parts::PartSet::none(),
+        parts: stewart_render::appearance::parts::PartSet::none(),
     };
     let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
     let mut group = c.benchmark_group("export_1280x720");

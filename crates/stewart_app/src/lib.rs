@@ -17,13 +17,13 @@ pub(crate) mod commands;
 pub(crate) mod csv_io;
 pub mod export;
 
+pub(crate) mod appearance;
 pub mod i18n;
 pub(crate) mod interrupt;
 pub mod link_plan;
 pub mod live_cue;
 pub(crate) mod long_work;
 pub(crate) mod output;
-pub(crate) mod parts;
 pub(crate) mod readout;
 pub(crate) mod shot_scale;
 pub(crate) mod source;

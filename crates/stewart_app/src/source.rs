@@ -43,7 +43,7 @@ pub(crate) fn inputs(
         .map(|p| ("the scenario file", p.clone()))
         .collect();
     out.extend((scenario.files_read.iter()).map(|p| ("the scenario's pose table", p.clone())));
-    let folder = crate::parts::folder_of(args);
+    let folder = crate::appearance::folder_of(args);
     for part in stewart_kinematics::model::appearance::Part::ALL {
         if let Some(look) = scenario.appearance.part(part) {
             out.push(("one of the scenario's CAD parts", folder.join(&look.file)));

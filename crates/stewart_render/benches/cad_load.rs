@@ -1,6 +1,6 @@
 //! Reading a 2-million-triangle CAD part (the bar: under 2 s): a binary STL (the
 //! format big CAD exports come in) and the same surface as GLB, from files in a temporary
-//! folder, through `stewart_render::cad::load` (parse, check, flat normals, bounds); and
+//! folder, through `stewart_render::appearance::load` (parse, check, flat normals, bounds); and
 //! the lighter stand-in made of it for views a software rasteriser draws.
 
 use std::io::Write as _;
@@ -111,22 +111,22 @@ fn bench(c: &mut Criterion) {
     for (name, path) in [("binary_stl", &stl), ("glb", &glb)] {
         group.bench_function(name, |b| {
             b.iter(|| {
-                let part = stewart_render::cad::load(path).unwrap_or_else(|e| panic!("{e}"));
+                let part = stewart_render::appearance::load(path).unwrap_or_else(|e| panic!("{e}"));
                 assert_eq!(part.triangles, 2 * n * m);
                 part
             });
         });
     }
     // The stand-in a software rasteriser draws instead.
-    let part = stewart_render::cad::load(&stl).unwrap_or_else(|e| panic!("{e}"));
+    let part = stewart_render::appearance::load(&stl).unwrap_or_else(|e| panic!("{e}"));
     group.bench_function("preview_of_binary_stl", |b| {
         b.iter(|| {
-            let preview = stewart_render::cad::simplify::simplified(
+            let preview = stewart_render::appearance::simplify::simplified(
                 &part,
-                stewart_render::cad::simplify::PREVIEW_TRIANGLES,
+                stewart_render::appearance::simplify::PREVIEW_TRIANGLES,
             )
             .unwrap_or_else(|| panic!("not simplified"));
-            assert!(preview.triangles <= stewart_render::cad::simplify::PREVIEW_TRIANGLES);
+            assert!(preview.triangles <= stewart_render::appearance::simplify::PREVIEW_TRIANGLES);
             preview
         });
     });

@@ -6,21 +6,21 @@
 //! read back for export and tests. It knows nothing of egui or winit.
 //!
 //! - [`camera`]: the orbit camera (glam), and the camera that frames a cloud of points;
-//! - [`draw_list`]: scene frame → instances, plates and lines (CPU); [`draw_parts`]: CAD parts placed;
+//! - [`draw_list`]: scene frame → instances, plates, lines and placed CAD parts (CPU);
 //! - [`analysis`]: the workspace surface and the conditioning slice as coloured meshes;
-//! - [`renderer`]: pipelines and the one draw entry point;
-//! - [`cad`]: CAD parts: STL, OBJ and glTF files read into meshes, placed by `[appearance]`;
+//! - [`renderer`]: the one draw entry point ([`ViewFrame`] → a prepared view → a pass), on the
+//!   shared pipelines of `pipelines.rs`;
+//! - [`appearance`]: the CAD parts `[appearance]` names: STL, OBJ and glTF files read into meshes;
 //! - [`offscreen`]: headless targets and read-back;
 //! - [`Picture`]: a view rendered off screen at its own quality, drawn into another pass;
 //! - [`gpu`]: adapter choice (a GPU, else lavapipe), honouring `WGPU_BACKEND` / `WGPU_ADAPTER_NAME`.
 
 pub mod analysis;
-pub mod cad;
+pub mod appearance;
 pub mod camera;
 mod camera_fit;
 pub mod colormap;
 pub mod draw_list;
-pub mod draw_parts;
 mod extent;
 pub mod gpu;
 mod gpu_mesh;
@@ -28,6 +28,7 @@ pub mod gpu_types;
 pub mod mesh;
 pub mod offscreen;
 mod picture;
+mod pipelines;
 pub mod plate_shape;
 pub mod readback;
 pub mod renderer;
@@ -41,9 +42,9 @@ pub mod view;
 pub use camera::OrbitCamera;
 pub use draw_list::{DrawList, Overlays};
 pub use gpu::{Gpu, GpuError};
-pub use offscreen::{Frame, Offscreen, OffscreenError};
+pub use offscreen::{Image, Offscreen, OffscreenError};
 pub use picture::Picture;
-pub use renderer::Renderer;
+pub use renderer::{Renderer, ViewFrame};
 pub use text::{Anchor, Fonts, TextItem, TextSize};
 pub use theme::Theme;
 pub use view::PreparedView;

@@ -3,8 +3,9 @@
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
 use crate::gpu::{Gpu, GpuError};
+use crate::pipelines::DEPTH_FORMAT;
 use crate::readback::Readback;
-use crate::renderer::{DEPTH_FORMAT, Renderer};
+use crate::renderer::{Renderer, ViewFrame};
 use crate::theme::Theme;
 use crate::view::PreparedView;
 
@@ -16,7 +17,7 @@ pub const MAX_SIDE: u32 = 4096;
 
 /// An RGBA image read back from the GPU, rows top to bottom, no padding.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Frame {
+pub struct Image {
     /// Width, pixels.
     pub width: u32,
     /// Height, pixels.
@@ -25,7 +26,7 @@ pub struct Frame {
     pub rgba: Vec<u8>,
 }
 
-impl Frame {
+impl Image {
     /// The pixel at `(x, y)`.
     pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
         let i = 4 * (y as usize * self.width as usize + x as usize);
@@ -163,7 +164,7 @@ impl Offscreen {
         theme: &Theme,
         width: u32,
         height: u32,
-    ) -> Result<Frame, OffscreenError> {
+    ) -> Result<Image, OffscreenError> {
         self.submit(list, camera, theme, width, height)?;
         self.read()
     }
@@ -203,15 +204,9 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) {
-        self.renderer.prepare(
-            &self.gpu.device,
-            &self.gpu.queue,
-            view,
-            list,
-            camera,
-            theme,
-            [width as f32, height as f32],
-        );
+        let frame = ViewFrame::new(list, camera, theme, [width as f32, height as f32]);
+        self.renderer
+            .prepare(&self.gpu.device, &self.gpu.queue, view, &frame);
     }
 
     /// Draw a prepared `view` and start copying it to the readback buffer.
@@ -257,7 +252,7 @@ impl Offscreen {
     }
 
     /// Wait for the last submitted frame and return its pixels.
-    pub fn read(&mut self) -> Result<Frame, OffscreenError> {
+    pub fn read(&mut self) -> Result<Image, OffscreenError> {
         let Some(t) = &self.targets else {
             return Err(OffscreenError::Readback(
                 "no frame was submitted".to_owned(),
@@ -267,7 +262,7 @@ impl Offscreen {
             .readback
             .read(&self.gpu.device)
             .map_err(OffscreenError::Readback)?;
-        Ok(Frame {
+        Ok(Image {
             width: t.width,
             height: t.height,
             rgba,

@@ -3,7 +3,8 @@
 //! shows the 3D view at full quality, and how a slow machine shows it at a lower scale
 //! while it moves. Also the flat background a view draws when it shares a UI's pass.
 
-use crate::renderer::{DEPTH_FORMAT, Renderer};
+use crate::pipelines::DEPTH_FORMAT;
+use crate::renderer::Renderer;
 use crate::view::PreparedView;
 
 /// A view's off-screen picture: its colour (multisampled, then resolved), depth, and the
@@ -126,112 +127,4 @@ impl Picture {
     pub(crate) fn bind_group(&self) -> &wgpu::BindGroup {
         &self.bind_group
     }
-}
-
-/// The layout of a picture's bind group (group 1): the texture and its sampler.
-pub(crate) fn bind_group_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    sampled_texture_layout(device, "picture")
-}
-
-/// A bind group layout of one filterable 2-D texture (binding 0) and its sampler
-/// (binding 1), read by the fragment stage: a picture's, the glyph atlas's.
-pub(crate) fn sampled_texture_layout(device: &wgpu::Device, label: &str) -> wgpu::BindGroupLayout {
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some(label),
-        entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            },
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                count: None,
-            },
-        ],
-    })
-}
-
-/// A full-viewport pipeline without vertex buffers, replacing what is there (no
-/// blending), over everything drawn before (depth neither tested nor written).
-fn overwrite_pipeline(
-    device: &wgpu::Device,
-    label: &str,
-    layout: &wgpu::PipelineLayout,
-    module: &wgpu::ShaderModule,
-    multisample: wgpu::MultisampleState,
-    format: wgpu::TextureFormat,
-) -> wgpu::RenderPipeline {
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(label),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[],
-        },
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(false),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample,
-        fragment: Some(wgpu::FragmentState {
-            module,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format,
-                blend: None,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
-}
-
-/// The background pipeline (background.wgsl): the theme's colour over the viewport.
-pub(crate) fn background_pipeline(
-    device: &wgpu::Device,
-    layout: &wgpu::PipelineLayout,
-    multisample: wgpu::MultisampleState,
-    format: wgpu::TextureFormat,
-) -> wgpu::RenderPipeline {
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("background.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(crate::shaders::BACKGROUND.into()),
-    });
-    overwrite_pipeline(device, "background", layout, &module, multisample, format)
-}
-
-/// The picture pipeline (blit.wgsl): globals in group 0, the picture in group 1.
-pub(crate) fn pipeline(
-    device: &wgpu::Device,
-    globals: &wgpu::BindGroupLayout,
-    picture: &wgpu::BindGroupLayout,
-    multisample: wgpu::MultisampleState,
-    format: wgpu::TextureFormat,
-) -> wgpu::RenderPipeline {
-    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some("picture"),
-        bind_group_layouts: &[Some(globals), Some(picture)],
-        immediate_size: 0,
-    });
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("blit.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(crate::shaders::BLIT.into()),
-    });
-    overwrite_pipeline(device, "picture", &layout, &module, multisample, format)
 }

@@ -4,39 +4,68 @@
 use crate::camera::OrbitCamera;
 use crate::draw_list::DrawList;
 use crate::gpu_mesh::GpuMesh;
-use crate::gpu_types::{ColouredVertex, Globals, LineVertex, MeshInstance, MeshVertex, TextVertex};
+use crate::gpu_types::{Globals, MeshInstance, MeshVertex, TextVertex};
 use crate::mesh::Mesh;
-use crate::shaders;
+use crate::pipelines::Pipelines;
 use crate::text::{ATLAS_SIZE, Fonts, GlyphAtlas};
 use crate::theme::{Theme, linear};
 use crate::view::{Batches, PreparedView};
 
-/// Depth buffer format.
-pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+pub use crate::pipelines::DEPTH_FORMAT;
+
+/// One frame of a view: what is drawn, from where, in which colours, at what size.
+#[derive(Clone, Copy)]
+pub struct ViewFrame<'a> {
+    /// What is drawn.
+    pub list: &'a DrawList,
+    /// From where.
+    pub camera: &'a OrbitCamera,
+    /// In which colours.
+    pub theme: &'a Theme,
+    /// The viewport the frame is shown in: width × height, pixels.
+    pub viewport: [f32; 2],
+    /// The picture's size against the viewport: 1 pixel for pixel; below 1 a picture
+    /// rendered smaller and filtered up, whose text keeps its size in the view.
+    pub scale: f32,
+}
+
+impl<'a> ViewFrame<'a> {
+    /// `list` seen by `camera` in `theme`, in a `viewport` pixel for pixel.
+    pub fn new(
+        list: &'a DrawList,
+        camera: &'a OrbitCamera,
+        theme: &'a Theme,
+        viewport: [f32; 2],
+    ) -> Self {
+        Self {
+            list,
+            camera,
+            theme,
+            viewport,
+            scale: 1.0,
+        }
+    }
+
+    /// The same frame rendered at `scale` of its viewport.
+    pub fn scaled(self, scale: f32) -> Self {
+        Self { scale, ..self }
+    }
+}
 
 /// Pipelines and meshes for drawing a Stewart platform: built once per device and
 /// colour format, shared by every view. What one view draws in one frame lives in a
 /// [`PreparedView`], so a window can draw several views (the 3D view, thumbnails, a
 /// workspace view) with one renderer.
 pub struct Renderer {
-    opaque: wgpu::RenderPipeline,
-    parts: wgpu::RenderPipeline,
-    translucent: wgpu::RenderPipeline,
-    analysis: wgpu::RenderPipeline,
-    lines: wgpu::RenderPipeline,
-    globals_layout: wgpu::BindGroupLayout,
+    pipelines: Pipelines,
     cylinder: GpuMesh,
     sphere: GpuMesh,
     cone: GpuMesh,
     cuboid: GpuMesh,
-    text: wgpu::RenderPipeline,
     atlas_texture: wgpu::Texture,
     atlas_bind_group: wgpu::BindGroup,
     atlas: std::sync::Mutex<GlyphAtlas>,
     fonts: &'static Fonts,
-    background: wgpu::RenderPipeline,
-    picture: wgpu::RenderPipeline,
-    picture_layout: wgpu::BindGroupLayout,
     /// MSAA sample count the pipelines were built for.
     pub samples: u32,
     /// Colour format the pipelines were built for.
@@ -46,105 +75,13 @@ pub struct Renderer {
 impl Renderer {
     /// Build the pipelines for colour `format` with `samples` (1 or 4) MSAA samples.
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, samples: u32) -> Self {
-        let layout = globals_layout(device);
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("stewart"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let mesh_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("mesh.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shaders::MESH.into()),
-        });
-        let mesh_buffers = [
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<MeshVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<MeshInstance>() as u64,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4, 4 => Float32x4, 5 => Float32x4, 6 => Float32x4],
-            }),
-        ];
-        let multisample = wgpu::MultisampleState {
-            count: samples,
-            mask: !0,
-            alpha_to_coverage_enabled: false,
-        };
-        let blend_target = [Some(wgpu::ColorTargetState {
-            format,
-            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-            write_mask: wgpu::ColorWrites::ALL,
-        })];
-        let mesh_pipeline = |label: &str, depth_write: bool, cull: Option<wgpu::Face>| {
-            triangle_pipeline(
-                device,
-                TriangleStages {
-                    label,
-                    layout: &pipeline_layout,
-                    module: &mesh_module,
-                    buffers: &mesh_buffers,
-                },
-                depth_write,
-                cull,
-                multisample,
-                &blend_target,
-            )
-        };
-        let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
-        // CAD parts: opaque, but both faces drawn (files do not always wind their
-        // triangles the same way; the shading is two-sided).
-        let parts = mesh_pipeline("CAD parts", true, None);
-        // Translucent plates: depth-tested against the opaque scene, not written, both
-        // faces drawn, back to front.
-        let translucent = mesh_pipeline("translucent plates", false, None);
-        let analysis_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("analysis.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
-        });
-        // Analysis meshes: translucent, world coordinates, a colour per vertex.
-        let analysis = triangle_pipeline(
-            device,
-            TriangleStages {
-                label: "analysis meshes",
-                layout: &pipeline_layout,
-                module: &analysis_module,
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<ColouredVertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
-                })],
-            },
-            false,
-            None,
-            multisample,
-            &blend_target,
-        );
-        let lines = line_pipeline(device, &pipeline_layout, multisample, &blend_target);
-        let (text, atlas_texture, atlas_bind_group) =
-            text_pipeline(device, &layout, multisample, format);
-        let background =
-            crate::picture::background_pipeline(device, &pipeline_layout, multisample, format);
-        let picture_layout = crate::picture::bind_group_layout(device);
-        let picture =
-            crate::picture::pipeline(device, &layout, &picture_layout, multisample, format);
+        let (pipelines, atlas_texture, atlas_bind_group) = Pipelines::new(device, format, samples);
         Self {
-            background,
-            picture,
-            picture_layout,
-            opaque,
-            parts,
-            translucent,
-            analysis,
-            lines,
-            text,
+            pipelines,
             atlas_texture,
             atlas_bind_group,
             atlas: std::sync::Mutex::new(GlyphAtlas::new()),
             fonts: Fonts::system(),
-            globals_layout: layout,
             cylinder: GpuMesh::new(device, &Mesh::cylinder(), "cylinder"),
             sphere: GpuMesh::new(device, &Mesh::sphere(), "sphere"),
             cone: GpuMesh::new(device, &Mesh::cone(), "cone"),
@@ -156,7 +93,7 @@ impl Renderer {
 
     /// A new view's per-frame buffers (grown as its scenes need).
     pub fn new_view(&self, device: &wgpu::Device) -> PreparedView {
-        PreparedView::new(device, &self.globals_layout)
+        PreparedView::new(device, &self.pipelines.globals_layout)
     }
 
     /// The fonts text is drawn with (found on the system once).
@@ -164,36 +101,22 @@ impl Renderer {
         self.fonts
     }
 
-    /// Upload one frame of `view`: the camera for a `viewport` of width × height pixels,
-    /// the theme and the draw list (text laid out in those pixels).
-    #[allow(clippy::too_many_arguments)]
+    /// Upload one frame of `view`: the camera for the frame's viewport, the theme and
+    /// the draw list (text laid out in the viewport's pixels).
     pub fn prepare(
         &self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         view: &mut PreparedView,
-        list: &DrawList,
-        camera: &OrbitCamera,
-        theme: &Theme,
-        viewport: [f32; 2],
+        frame: &ViewFrame<'_>,
     ) {
-        self.prepare_scaled(device, queue, view, list, camera, theme, viewport, 1.0);
-    }
-
-    /// [`Renderer::prepare`] for a picture at `scale` of the view it is shown in (a view
-    /// rendered smaller and filtered up): text keeps its size in the view.
-    #[allow(clippy::too_many_arguments)]
-    pub fn prepare_scaled(
-        &self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        view: &mut PreparedView,
-        list: &DrawList,
-        camera: &OrbitCamera,
-        theme: &Theme,
-        viewport: [f32; 2],
-        scale: f32,
-    ) {
+        let ViewFrame {
+            list,
+            camera,
+            theme,
+            viewport,
+            scale,
+        } = *frame;
         let viewport = [viewport[0].max(1.0), viewport[1].max(1.0)];
         let aspect = viewport[0] / viewport[1];
         let eye = camera.eye();
@@ -353,11 +276,11 @@ impl Renderer {
     pub fn paint(&self, view: &PreparedView, pass: &mut wgpu::RenderPass<'_>) {
         pass.set_bind_group(0, &view.bind_group, &[]);
         if view.batches.lines > 0 {
-            pass.set_pipeline(&self.lines);
+            pass.set_pipeline(&self.pipelines.lines);
             pass.set_vertex_buffer(0, view.line_vertices.buffer.slice(..));
             pass.draw(0..view.batches.lines, 0..1);
         }
-        pass.set_pipeline(&self.opaque);
+        pass.set_pipeline(&self.pipelines.opaque);
         pass.set_vertex_buffer(1, view.instances.buffer.slice(..));
         for (mesh, range) in [
             (&self.cylinder, &view.batches.cylinders),
@@ -373,7 +296,7 @@ impl Renderer {
             pass.draw_indexed(0..mesh.count, 0, range.clone());
         }
         if !view.batches.parts.is_empty() {
-            pass.set_pipeline(&self.parts);
+            pass.set_pipeline(&self.pipelines.parts);
             for &(slot, instance) in &view.batches.parts {
                 let mesh = &view.parts[slot].1;
                 if mesh.count == 0 {
@@ -385,7 +308,7 @@ impl Renderer {
             }
         }
         if !view.batches.plates.is_empty() {
-            pass.set_pipeline(&self.translucent);
+            pass.set_pipeline(&self.pipelines.translucent);
             pass.set_vertex_buffer(0, view.plate_vertices.buffer.slice(..));
             pass.set_index_buffer(
                 view.plate_indices.buffer.slice(..),
@@ -396,7 +319,7 @@ impl Renderer {
             }
         }
         if !view.analysis.is_empty() {
-            pass.set_pipeline(&self.analysis);
+            pass.set_pipeline(&self.pipelines.analysis);
             for (_, mesh) in &view.analysis {
                 pass.set_vertex_buffer(0, mesh.vertices.slice(..));
                 pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
@@ -404,7 +327,7 @@ impl Renderer {
             }
         }
         if view.batches.text > 0 {
-            pass.set_pipeline(&self.text);
+            pass.set_pipeline(&self.pipelines.text);
             pass.set_bind_group(1, &self.atlas_bind_group, &[]);
             pass.set_vertex_buffer(0, view.text_vertices.buffer.slice(..));
             pass.draw(0..view.batches.text, 0..1);
@@ -415,7 +338,7 @@ impl Renderer {
     /// pass: what a clear would do, where the view shares its pass with a UI.
     pub fn paint_background(&self, view: &PreparedView, pass: &mut wgpu::RenderPass<'_>) {
         pass.set_bind_group(0, &view.bind_group, &[]);
-        pass.set_pipeline(&self.background);
+        pass.set_pipeline(&self.pipelines.background);
         pass.draw(0..3, 0..1);
     }
 
@@ -429,14 +352,14 @@ impl Renderer {
     ) {
         pass.set_bind_group(0, &view.bind_group, &[]);
         pass.set_bind_group(1, picture.bind_group(), &[]);
-        pass.set_pipeline(&self.picture);
+        pass.set_pipeline(&self.pipelines.picture);
         pass.draw(0..3, 0..1);
     }
 
     /// The layout of a picture's bind group (its texture and sampler), for
     /// [`crate::Picture::new`].
     pub(crate) fn picture_layout(&self) -> &wgpu::BindGroupLayout {
-        &self.picture_layout
+        &self.pipelines.picture_layout
     }
 
     /// Record a whole pass: clear `target` (and `depth`), draw, resolve into `resolve` when MSAA is on.
@@ -466,210 +389,4 @@ impl Renderer {
         });
         self.paint(view, &mut pass);
     }
-}
-
-/// What a triangle pipeline is made of: its name, layout, shader module (`vs_main`,
-/// `fs_main`) and vertex buffers.
-struct TriangleStages<'a> {
-    label: &'a str,
-    layout: &'a wgpu::PipelineLayout,
-    module: &'a wgpu::ShaderModule,
-    buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
-}
-
-/// A lit triangle pipeline, depth-tested (`Less`) and writing depth or not, culling `cull`.
-fn triangle_pipeline(
-    device: &wgpu::Device,
-    stages: TriangleStages<'_>,
-    depth_write: bool,
-    cull: Option<wgpu::Face>,
-    multisample: wgpu::MultisampleState,
-    targets: &[Option<wgpu::ColorTargetState>],
-) -> wgpu::RenderPipeline {
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(stages.label),
-        layout: Some(stages.layout),
-        vertex: wgpu::VertexState {
-            module: stages.module,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: stages.buffers,
-        },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::TriangleList,
-            cull_mode: cull,
-            ..Default::default()
-        },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(depth_write),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample,
-        fragment: Some(wgpu::FragmentState {
-            module: stages.module,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets,
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
-}
-
-/// The text pipeline (screen-space quads over everything, alpha-blended), the glyph atlas
-/// texture and its bind group.
-/// The layout of the per-view globals (camera, light): one uniform buffer for both stages.
-fn globals_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("globals"),
-        entries: &[wgpu::BindGroupLayoutEntry {
-            binding: 0,
-            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        }],
-    })
-}
-
-/// The pipeline of coloured line lists (grid, axes, path), depth-tested and written.
-fn line_pipeline(
-    device: &wgpu::Device,
-    layout: &wgpu::PipelineLayout,
-    multisample: wgpu::MultisampleState,
-    targets: &[Option<wgpu::ColorTargetState>],
-) -> wgpu::RenderPipeline {
-    let line_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("lines.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(shaders::LINES.into()),
-    });
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("lines"),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module: &line_module,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<LineVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x4],
-            })],
-        },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::LineList,
-            ..Default::default()
-        },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::LessEqual),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample,
-        fragment: Some(wgpu::FragmentState {
-            module: &line_module,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets,
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
-}
-
-fn text_pipeline(
-    device: &wgpu::Device,
-    globals: &wgpu::BindGroupLayout,
-    multisample: wgpu::MultisampleState,
-    format: wgpu::TextureFormat,
-) -> (wgpu::RenderPipeline, wgpu::Texture, wgpu::BindGroup) {
-    let layout = crate::picture::sampled_texture_layout(device, "glyph atlas");
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("glyph atlas"),
-        size: wgpu::Extent3d {
-            width: ATLAS_SIZE,
-            height: ATLAS_SIZE,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::R8Unorm,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    });
-    // Glyphs are placed on whole pixels at their own size: nearest sampling keeps them crisp.
-    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-        label: Some("glyph atlas"),
-        ..wgpu::SamplerDescriptor::default()
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("glyph atlas"),
-        layout: &layout,
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(
-                    &texture.create_view(&wgpu::TextureViewDescriptor::default()),
-                ),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: wgpu::BindingResource::Sampler(&sampler),
-            },
-        ],
-    });
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some("text"),
-        bind_group_layouts: &[Some(globals), Some(&layout)],
-        immediate_size: 0,
-    });
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("text.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(shaders::TEXT.into()),
-    });
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("text"),
-        layout: Some(&pipeline_layout),
-        vertex: wgpu::VertexState {
-            module: &module,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<TextVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x2, 1 => Float32x2, 2 => Float32x4],
-            })],
-        },
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(false),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample,
-        fragment: Some(wgpu::FragmentState {
-            module: &module,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format,
-                blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
-    (pipeline, texture, bind_group)
 }

@@ -18,7 +18,7 @@ use crate::source;
 fn animation(
     args: &RenderArgs,
     scenario: &stewart_kinematics::Scenario,
-    parts: stewart_render::cad::parts::PartSet,
+    parts: stewart_render::appearance::parts::PartSet,
 ) -> Result<ExitCode> {
     let request = crate::export::gltf::GltfRequest {
         out: args.out.clone(),
@@ -49,7 +49,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // one of its CAD parts).
     let scenario = source::load(&args.scenario)?;
     crate::output::Destination::new(&args.out, &source::inputs(&args.scenario, &scenario))?;
-    let parts = crate::parts::load(&scenario, &crate::parts::folder_of(&args.scenario))?;
+    let parts = crate::appearance::load(&scenario, &crate::appearance::folder_of(&args.scenario))?;
     if crate::export::gltf::is_gltf(&args.out) {
         return animation(args, &scenario, parts);
     }

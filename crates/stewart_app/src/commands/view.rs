@@ -66,7 +66,7 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
                 std::path::Path::to_path_buf,
             )
     } else {
-        crate::parts::folder_of(&args.scenario)
+        crate::appearance::folder_of(&args.scenario)
     };
     let mut state = ViewerState::new_in(scenario, parts_folder);
     if let Some(s) = &saved {

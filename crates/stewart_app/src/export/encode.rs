@@ -11,7 +11,7 @@ use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, anyhow, bail};
 use indicatif::ProgressBar;
-use stewart_render::Frame;
+use stewart_render::Image;
 
 use crate::output::{Destination, Kind};
 
@@ -84,7 +84,7 @@ enum Encoded {
     /// A quantised GIF frame.
     Gif(gif::Frame<'static>),
     /// Raw RGBA for ffmpeg.
-    Raw(Arc<Frame>),
+    Raw(Arc<Image>),
 }
 
 /// A running `ffmpeg`: killed and waited for when dropped, so that no path (an error,
@@ -324,8 +324,8 @@ impl Staging {
         dir: Option<&Path>,
         digits: usize,
         index: usize,
-        frame: Arc<Frame>,
-        previous: Option<&Frame>,
+        frame: Arc<Image>,
+        previous: Option<&Image>,
     ) -> Result<Encoded> {
         match kind {
             Target::Folder(out) => {
@@ -434,7 +434,7 @@ impl Staging {
 }
 
 /// A frame to encode: its index, its pixels and, for a GIF, the frame before it.
-type Job = (usize, Arc<Frame>, Option<Arc<Frame>>);
+type Job = (usize, Arc<Image>, Option<Arc<Image>>);
 
 /// An encoding worker: frames from `jobs` encoded for `target` (staged in `dir` with
 /// `digits`-digit names when it is a folder), each sent to `done` with its index, until
@@ -531,7 +531,7 @@ fn feed_frames(
     failed: &AtomicBool,
 ) -> Result<()> {
     let interrupted = || anyhow!("interrupted: nothing was written");
-    let mut previous: Option<Arc<Frame>> = None;
+    let mut previous: Option<Arc<Image>> = None;
     for k in indices {
         if stop.load(Ordering::Relaxed) {
             return Err(interrupted());

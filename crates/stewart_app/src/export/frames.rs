@@ -3,8 +3,8 @@
 use anyhow::{Result, anyhow};
 use nalgebra::Vector3;
 use stewart_kinematics::{Pose, Scenario};
-use stewart_render::cad::parts::PartSet;
-use stewart_render::{DrawList, Frame, Offscreen, OrbitCamera, Overlays, Theme};
+use stewart_render::appearance::parts::PartSet;
+use stewart_render::{DrawList, Image, Offscreen, OrbitCamera, Overlays, Theme};
 
 use super::plot;
 use super::vector;
@@ -285,7 +285,7 @@ impl<'a> FrameSource<'a> {
     }
 
     /// Render frame `k` (frames must be asked for in order for the traced path).
-    pub(crate) fn frame(&mut self, k: usize) -> Result<Frame> {
+    pub(crate) fn frame(&mut self, k: usize) -> Result<Image> {
         let t = k
             .checked_sub(self.job.first_index)
             .and_then(|i| self.job.times.get(i).copied())
@@ -328,7 +328,7 @@ impl<'a> FrameSource<'a> {
             let right = y * panel.width as usize * 4;
             rgba.extend_from_slice(&plot[right..right + panel.width as usize * 4]);
         }
-        Ok(Frame {
+        Ok(Image {
             width: self.job.width,
             height: self.job.height,
             rgba,

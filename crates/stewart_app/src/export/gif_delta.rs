@@ -11,7 +11,7 @@
 use std::borrow::Cow;
 use std::collections::HashMap;
 
-use stewart_render::Frame;
+use stewart_render::Image;
 
 /// NeuQuant's sampling: 10 is the gif crate's own default, a good balance of speed and
 /// colour (1 is slowest and best, 30 fastest).
@@ -49,7 +49,7 @@ pub(crate) struct Rect {
 
 /// The smallest rectangle holding every pixel in which `current` differs from
 /// `previous` (same size), or `None` when they are identical.
-pub(crate) fn changed_rect(previous: &Frame, current: &Frame) -> Option<Rect> {
+pub(crate) fn changed_rect(previous: &Image, current: &Image) -> Option<Rect> {
     let w = current.width as usize;
     let row_bytes = 4 * w;
     let rows = || {
@@ -83,7 +83,7 @@ pub(crate) fn changed_rect(previous: &Frame, current: &Frame) -> Option<Rect> {
 
 /// The GIF frame that turns `previous` (as shown) into `current`; the whole frame when
 /// there is no previous one. The delay is left for the caller.
-pub(crate) fn delta_frame(previous: Option<&Frame>, current: &Frame) -> gif::Frame<'static> {
+pub(crate) fn delta_frame(previous: Option<&Image>, current: &Image) -> gif::Frame<'static> {
     let full = Rect {
         left: 0,
         top: 0,
@@ -143,7 +143,7 @@ pub(crate) fn delta_frame(previous: Option<&Frame>, current: &Frame) -> gif::Fra
 /// first: those covering at least one pixel in a thousand of the whole frame, counted
 /// on every 7th pixel. Counted on the whole frame, not the changed part, so that a flat
 /// colour is one in every frame however little of it changes.
-fn flat_colours(frame: &Frame) -> Vec<[u8; 4]> {
+fn flat_colours(frame: &Image) -> Vec<[u8; 4]> {
     let mut counts: HashMap<[u8; 4], u32> = HashMap::new();
     let mut samples = 0u32;
     for p in frame.rgba.chunks_exact(4).step_by(FLAT_STRIDE) {
@@ -222,14 +222,14 @@ fn quantise(pixels: &[Option<[u8; 4]>], flat: &[[u8; 4]]) -> (Vec<u8>, Vec<u8>) 
 mod tests {
     use super::*;
 
-    fn frame(width: u32, height: u32, paint: impl Fn(u32, u32) -> [u8; 4]) -> Frame {
+    fn frame(width: u32, height: u32, paint: impl Fn(u32, u32) -> [u8; 4]) -> Image {
         let mut rgba = Vec::new();
         for y in 0..height {
             for x in 0..width {
                 rgba.extend(paint(x, y));
             }
         }
-        Frame {
+        Image {
             width,
             height,
             rgba,
@@ -237,7 +237,7 @@ mod tests {
     }
 
     /// A smooth gradient (thousands of colours, so NeuQuant is used) with a square at `at`.
-    fn scene(at: u32) -> Frame {
+    fn scene(at: u32) -> Image {
         frame(96, 64, |x, y| {
             if (at..at + 12).contains(&x) && (20..32).contains(&y) {
                 [230, 40, 40, 255]
@@ -276,13 +276,13 @@ mod tests {
 
     /// Encode `frames` as delta frames and compose them as a viewer does: the picture
     /// shown after each frame, and each frame's delay and area.
-    fn shown(frames: &[Frame]) -> (Vec<Vec<u8>>, Vec<(u16, u32)>) {
+    fn shown(frames: &[Image]) -> (Vec<Vec<u8>>, Vec<(u16, u32)>) {
         let (w, h) = (frames[0].width, frames[0].height);
         let mut bytes = Vec::new();
         {
             let mut encoder = gif::Encoder::new(&mut bytes, w as u16, h as u16, &[])
                 .unwrap_or_else(|e| panic!("{e}"));
-            let mut previous: Option<&Frame> = None;
+            let mut previous: Option<&Image> = None;
             for f in frames {
                 let mut g = delta_frame(previous, f);
                 g.delay = 4;
@@ -317,7 +317,7 @@ mod tests {
 
     #[test]
     fn delta_frames_decode_to_the_original_pictures() {
-        let frames: Vec<Frame> = [10, 14, 14, 30, 60].into_iter().map(scene).collect();
+        let frames: Vec<Image> = [10, 14, 14, 30, 60].into_iter().map(scene).collect();
         let (pictures, written) = shown(&frames);
         assert_eq!(pictures.len(), frames.len());
         // The first frame, quantised by NeuQuant: close on average.
@@ -368,7 +368,7 @@ mod tests {
                 }
             })
         };
-        let frames: Vec<Frame> = (0..8).map(|k| scene(10 + 15 * k)).collect();
+        let frames: Vec<Image> = (0..8).map(|k| scene(10 + 15 * k)).collect();
         let (pictures, _) = shown(&frames);
         for (k, (picture, original)) in pictures.iter().zip(&frames).enumerate() {
             for i in (0..picture.len()).step_by(4) {

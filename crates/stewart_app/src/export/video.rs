@@ -43,7 +43,7 @@ pub(crate) struct VideoRequest {
     /// each second of motion lasts `1 / speed` seconds of video).
     pub(crate) speed: f64,
     /// The CAD parts drawn in place of the usual plates and legs.
-    pub(crate) parts: stewart_render::cad::parts::PartSet,
+    pub(crate) parts: stewart_render::appearance::parts::PartSet,
 }
 
 /// The slowest and fastest playback a video may have against real time.
@@ -367,7 +367,7 @@ mod tests {
             readout: None,
             lang: crate::i18n::Lang::En,
             speed: 1.0,
-            parts: stewart_render::cad::parts::PartSet::none(),
+            parts: stewart_render::appearance::parts::PartSet::none(),
         }
     }
 

@@ -78,7 +78,7 @@ pub(crate) enum ViewerError {
     /// A setting refused its value.
     Setting(SettingError),
     /// A CAD part's mesh could not be read or placed (`[appearance]`).
-    Part(Arc<stewart_render::cad::parts::PartError>),
+    Part(Arc<stewart_render::appearance::parts::PartError>),
     /// The numbers do not make a platform.
     Geometry(GeometryError),
     /// Keyframes that do not make a motion.

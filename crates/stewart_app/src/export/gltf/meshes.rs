@@ -9,7 +9,7 @@ use gltf_json as json;
 use stewart_kinematics::model::appearance::Part;
 use stewart_kinematics::model::scene::SceneFrame;
 use stewart_render::Theme;
-use stewart_render::cad::parts::{LoadedPart, PartSet};
+use stewart_render::appearance::parts::{LoadedPart, PartSet};
 use stewart_render::draw_list::{
     BODY_RADIUS, JOINT_RADIUS, PLATE_THICKNESS, ROD_RADIUS, along, body_length,
 };
@@ -60,7 +60,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
     let colour = |c: Srgba| doc_colour(c);
     let mut base: Pieces = Vec::new();
     match looks.parts.get(Part::Base) {
-        Some(part) => base.extend(cad(doc, part, theme.base_plate)),
+        Some(part) => base.extend(part_pieces(doc, part, theme.base_plate)),
         None => {
             let joints: Vec<Vec3> = home.base_joints.iter().map(v3).collect();
             base.extend(plate(doc, &shapes, &joints, s, theme.base_plate));
@@ -95,7 +95,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
 
     // The platform in its own frame: its joints where the platform frame holds them.
     let mut platform: Pieces = match looks.parts.get(Part::Platform) {
-        Some(part) => cad(doc, part, theme.platform),
+        Some(part) => part_pieces(doc, part, theme.platform),
         None => {
             let p = home.platform_placement();
             let to_local = p.rotation.inverse();
@@ -134,7 +134,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
                     theme.leg_body
                 };
                 let pieces = match looks.parts.get(Part::Cylinder) {
-                    Some(part) => cad(doc, part, studio),
+                    Some(part) => part_pieces(doc, part, studio),
                     None => vec![(
                         doc.geometry(&shapes.cylinder, body_shape),
                         doc.material(colour(studio)),
@@ -158,7 +158,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
                     theme.horn
                 };
                 let pieces = match looks.parts.get(Part::Horn) {
-                    Some(part) => cad(doc, part, studio),
+                    Some(part) => part_pieces(doc, part, studio),
                     None => vec![
                         (
                             doc.geometry(&shapes.cylinder, arm),
@@ -187,7 +187,7 @@ fn rod_pieces(
 ) -> Pieces {
     let colour = looks.theme.leg_rod;
     match looks.parts.get(Part::Rod) {
-        Some(part) => cad(doc, part, colour),
+        Some(part) => part_pieces(doc, part, colour),
         None => {
             let tube = along(from, to, ROD_RADIUS * s, [0.0; 4]).model_matrix();
             let g = doc.geometry(&shapes.cylinder, tube);
@@ -222,7 +222,7 @@ fn plate(doc: &mut Document, shapes: &Shapes, joints: &[Vec3], s: f32, colour: S
 
 /// A CAD part's pieces in its frame, coloured as the renderer colours them (the table's
 /// colour, else the file's, else `studio`).
-fn cad(doc: &mut Document, part: &LoadedPart, studio: Srgba) -> Pieces {
+fn part_pieces(doc: &mut Document, part: &LoadedPart, studio: Srgba) -> Pieces {
     part.mesh
         .pieces
         .iter()

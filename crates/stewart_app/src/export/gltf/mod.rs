@@ -25,7 +25,7 @@ use json::validation::Checked::Valid;
 use stewart_kinematics::Scenario;
 use stewart_kinematics::model::scene::{Placement, SceneFrame};
 use stewart_render::Theme;
-use stewart_render::cad::parts::PartSet;
+use stewart_render::appearance::parts::PartSet;
 
 use document::Document;
 
@@ -82,7 +82,7 @@ impl Track {
 
     /// Add the key at `p`, its quaternion on the side of the previous one.
     fn key(&mut self, p: &Placement) {
-        let mut q = stewart_render::draw_parts::frame_rotation(p);
+        let mut q = stewart_render::draw_list::frame_rotation(p);
         if self.last.is_some_and(|last| last.dot(q) < 0.0) {
             q = -q;
         }

@@ -7,7 +7,7 @@ use std::path::Path;
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use stewart_kinematics::Scenario;
 use stewart_render::Theme;
-use stewart_render::cad::parts::PartSet;
+use stewart_render::appearance::parts::PartSet;
 
 use super::{GltfRequest, export_gltf};
 

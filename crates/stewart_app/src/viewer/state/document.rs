@@ -17,7 +17,7 @@ use stewart_kinematics::{CheckReport, GeometryParams, Scenario, model::layout::L
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use stewart_render::cad::parts::{PartSet, platform_size};
+use stewart_render::appearance::parts::{PartSet, platform_size};
 
 use crate::i18n::Lang;
 use crate::viewer::error::ViewerError;
@@ -53,7 +53,7 @@ impl Document {
     /// file's).
     pub(crate) fn new(scenario: Scenario, folder: PathBuf) -> Self {
         let mut scenario = scenario;
-        scenario.appearance = crate::parts::anchored(&scenario.appearance, &folder);
+        scenario.appearance = crate::appearance::anchored(&scenario.appearance, &folder);
         let mut doc = Self {
             derived: Derived::new(&scenario),
             as_loaded: scenario.clone(),
@@ -93,7 +93,8 @@ impl Document {
     /// Read the scenario's parts (files read before and unchanged are kept); those that
     /// fail are not drawn, the first one's reason kept for the Appearance section.
     fn reload_parts(&mut self) {
-        let (parts, errors) = crate::parts::read(&self.scenario, &self.folder, Some(&self.parts));
+        let (parts, errors) =
+            crate::appearance::read(&self.scenario, &self.folder, Some(&self.parts));
         self.parts = parts;
         self.parts_error = errors
             .into_iter()
@@ -154,8 +155,8 @@ impl Document {
                     || kind(&edited) != kind(&self.scenario)
                 {
                     let (read, mut errors) =
-                        crate::parts::read(&edited, &self.folder, Some(&self.parts));
-                    let changed = |e: &stewart_render::cad::parts::PartError| {
+                        crate::appearance::read(&edited, &self.folder, Some(&self.parts));
+                    let changed = |e: &stewart_render::appearance::parts::PartError| {
                         edited.appearance.part(e.part) != self.scenario.appearance.part(e.part)
                     };
                     if let Some(k) = errors.iter().position(changed) {
@@ -169,7 +170,7 @@ impl Document {
                     // A platform of another size judges its parts' sizes again (a part
                     // now absurd is left out and said, the edit kept).
                     let (read, errors) =
-                        crate::parts::read(&edited, &self.folder, Some(&self.parts));
+                        crate::appearance::read(&edited, &self.folder, Some(&self.parts));
                     let first = errors.into_iter().next();
                     parts = Some((read, first.map(|e| ViewerError::Part(Arc::new(e)))));
                 }
@@ -276,7 +277,7 @@ impl Document {
     /// `folder`: one undo step of its own.
     pub(crate) fn replace(&mut self, scenario: Scenario, folder: PathBuf) {
         let mut scenario = scenario;
-        scenario.appearance = crate::parts::anchored(&scenario.appearance, &folder);
+        scenario.appearance = crate::appearance::anchored(&scenario.appearance, &folder);
         self.undo.record(&self.scenario);
         self.undo.seal();
         self.as_loaded = scenario.clone();

@@ -11,7 +11,7 @@ use stewart_kinematics::io::file::{FileKind, read_file};
 use stewart_kinematics::io::settings::Group;
 use stewart_kinematics::model::appearance::{MeshScale, Part, PartLook};
 use stewart_kinematics::model::trajectory::PoseTable;
-use stewart_render::cad::parts::{likely_unit, platform_size};
+use stewart_render::appearance::parts::{likely_unit, platform_size};
 
 use crate::viewer::error::{Doing, ViewerError};
 use crate::viewer::state::ViewerState;
@@ -144,7 +144,7 @@ impl ViewerState {
         // Part files stay the same files: named from the folder saved to.
         let mut saved = self.scenario().clone();
         saved.appearance =
-            crate::parts::rebase(&saved.appearance, self.doc.folder(), &folder_of(&full));
+            crate::appearance::rebase(&saved.appearance, self.doc.folder(), &folder_of(&full));
         let text = saved.to_toml();
         let lang = self.look.lang;
         let written = crate::output::write_atomically(&full, text.as_bytes())
@@ -240,7 +240,7 @@ impl ViewerState {
         let kept = self.scenario().appearance.part(part).cloned();
         let scale = match &kept {
             Some(look) => look.scale,
-            None => stewart_render::cad::load(&full).map_or(MeshScale::Millimetre, |mesh| {
+            None => stewart_render::appearance::load(&full).map_or(MeshScale::Millimetre, |mesh| {
                 likely_unit(&mesh, platform_size(&self.scenario().geometry))
             }),
         };

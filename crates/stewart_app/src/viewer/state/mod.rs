@@ -227,7 +227,7 @@ impl ViewerState {
     pub(crate) fn scene_list(
         &self,
         theme: &Theme,
-        detail: stewart_render::draw_parts::PartDetail,
+        detail: stewart_render::draw_list::PartDetail,
     ) -> stewart_render::DrawList {
         // Live vehicle motion has no trajectory time nor path.
         let trajectory = self.playback.mode == MotionMode::Trajectory && !self.link.cueing_live();
@@ -244,7 +244,7 @@ impl ViewerState {
             coloured_legs: self.look.coloured_legs,
             labels: self.look.labels,
             label_scale: if self.look.presentation { 1.6 } else { 1.0 },
-            cad_detail: detail,
+            part_detail: detail,
             ..stewart_render::Overlays::default()
         };
         let mut list =
@@ -892,8 +892,8 @@ mod tests {
 
 /// The CAD parts' meshes a view draws: the files on a GPU; on a software rasteriser the
 /// stand-ins, lighter while the view moves.
-fn part_detail(software: bool, moving: bool) -> stewart_render::draw_parts::PartDetail {
-    use stewart_render::draw_parts::PartDetail;
+fn part_detail(software: bool, moving: bool) -> stewart_render::draw_list::PartDetail {
+    use stewart_render::draw_list::PartDetail;
     match (software, moving) {
         (false, _) => PartDetail::File,
         (true, true) => PartDetail::Moving,
@@ -903,7 +903,7 @@ fn part_detail(software: bool, moving: bool) -> stewart_render::draw_parts::Part
 
 #[cfg(test)]
 mod part_detail_tests {
-    use stewart_render::draw_parts::PartDetail;
+    use stewart_render::draw_list::PartDetail;
 
     #[test]
     fn a_moving_view_on_a_software_rasteriser_draws_the_lighter_stand_ins() {

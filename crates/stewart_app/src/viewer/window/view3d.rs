@@ -9,7 +9,7 @@
 
 use std::collections::HashMap;
 
-use stewart_render::{DrawList, OrbitCamera, Picture, PreparedView, Renderer, Theme};
+use stewart_render::{DrawList, OrbitCamera, Picture, PreparedView, Renderer, Theme, ViewFrame};
 
 use crate::viewer::window::quality::Drawn;
 
@@ -129,16 +129,8 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
         // The full picture is prepared by its own renderer below: the window's view then
         // only lends its bind group to the copy, and is not prepared a second time.
         if drawn != Drawn::Full {
-            renderer.prepare_scaled(
-                device,
-                queue,
-                view,
-                &self.list,
-                &self.camera,
-                &self.theme,
-                viewport,
-                scale,
-            );
+            let frame = ViewFrame::new(&self.list, &self.camera, &self.theme, viewport);
+            renderer.prepare(device, queue, view, &frame.scaled(scale));
         }
         let Some(full) = full else {
             return Vec::new();
@@ -156,15 +148,8 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
                     .views
                     .entry(self.view)
                     .or_insert_with(|| full.renderer.new_view(device));
-                full.renderer.prepare(
-                    device,
-                    queue,
-                    off,
-                    &self.list,
-                    &self.camera,
-                    &self.theme,
-                    viewport,
-                );
+                let frame = ViewFrame::new(&self.list, &self.camera, &self.theme, viewport);
+                full.renderer.prepare(device, queue, off, &frame);
                 let key = (self.view, Drawn::Full);
                 picture_for(
                     &mut full.pictures,

@@ -10,7 +10,7 @@
 //!   draws.
 //!
 //! Files without normals get flat ones (each triangle its own), as glTF prescribes. Every
-//! fault is a [`CadError`] naming the file and, where the format has them, the line,
+//! fault is a [`PartFileError`] naming the file and, where the format has them, the line,
 //! facet or byte.
 
 mod gltf_file;
@@ -56,14 +56,14 @@ impl PartMesh {
     }
 
     /// Gather `pieces` (none empty) and check that there is something finite to draw.
-    fn new(path: &Path, pieces: Vec<Piece>) -> Result<PartMesh, CadError> {
+    fn new(path: &Path, pieces: Vec<Piece>) -> Result<PartMesh, PartFileError> {
         let pieces: Vec<Piece> = pieces
             .into_iter()
             .filter(|p| !p.mesh.indices.is_empty())
             .collect();
         let triangles = pieces.iter().map(|p| p.mesh.indices.len() / 3).sum();
         if triangles == 0 {
-            return Err(CadError::Empty {
+            return Err(PartFileError::Empty {
                 path: path.to_owned(),
             });
         }
@@ -103,7 +103,7 @@ impl std::fmt::Display for Location {
 
 /// Why a mesh file could not be read.
 #[derive(Debug, Error)]
-pub enum CadError {
+pub enum PartFileError {
     /// The file could not be opened or read.
     #[error("{}: {source}", path.display())]
     Io {
@@ -156,7 +156,7 @@ pub enum CadError {
 
 /// The formats read, told by the file name's ending.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Format {
+pub enum MeshFormat {
     /// STL, binary or ASCII.
     Stl,
     /// Wavefront OBJ (with an MTL file for colours).
@@ -165,48 +165,52 @@ pub enum Format {
     Gltf,
 }
 
-impl Format {
+impl MeshFormat {
     /// The format of `path`, by its ending (any case).
-    pub fn of(path: &Path) -> Option<Format> {
+    pub fn of(path: &Path) -> Option<MeshFormat> {
         let ext = path.extension()?.to_str()?.to_ascii_lowercase();
         match ext.as_str() {
-            "stl" => Some(Format::Stl),
-            "obj" => Some(Format::Obj),
-            "gltf" | "glb" => Some(Format::Gltf),
+            "stl" => Some(MeshFormat::Stl),
+            "obj" => Some(MeshFormat::Obj),
+            "gltf" | "glb" => Some(MeshFormat::Gltf),
             _ => None,
         }
     }
 }
 
 /// Read the mesh file at `path`.
-pub fn load(path: &Path) -> Result<PartMesh, CadError> {
-    let format = Format::of(path).ok_or_else(|| CadError::UnknownFormat {
+pub fn load(path: &Path) -> Result<PartMesh, PartFileError> {
+    let format = MeshFormat::of(path).ok_or_else(|| PartFileError::UnknownFormat {
         path: path.to_owned(),
     })?;
     let bytes =
         stewart_kinematics::io::file::read_file(path, FileKind::Mesh).map_err(|e| match e {
-            FileError::Io { cause: source, .. } => CadError::Io {
+            FileError::Io { cause: source, .. } => PartFileError::Io {
                 path: path.to_owned(),
                 source,
             },
-            refused => CadError::Refused {
+            refused => PartFileError::Refused {
                 path: path.to_owned(),
                 reason: refused.to_string(),
             },
         })?;
     let pieces = match format {
-        Format::Stl => stl::read(path, &bytes)?,
-        Format::Obj => obj::read(path, &bytes)?,
-        Format::Gltf => gltf_file::read(path, &bytes)?,
+        MeshFormat::Stl => stl::read(path, &bytes)?,
+        MeshFormat::Obj => obj::read(path, &bytes)?,
+        MeshFormat::Gltf => gltf_file::read(path, &bytes)?,
     };
     PartMesh::new(path, pieces)
 }
 
 /// `Err(NotFinite)` at `at` for the first coordinate of `p` that is not finite.
-fn finite(path: &Path, p: [f32; 3], at: impl FnOnce() -> Option<Location>) -> Result<(), CadError> {
+fn finite(
+    path: &Path,
+    p: [f32; 3],
+    at: impl FnOnce() -> Option<Location>,
+) -> Result<(), PartFileError> {
     match p.into_iter().find(|v| !v.is_finite()) {
         None => Ok(()),
-        Some(value) => Err(CadError::NotFinite {
+        Some(value) => Err(PartFileError::NotFinite {
             path: path.to_owned(),
             at: at(),
             value,

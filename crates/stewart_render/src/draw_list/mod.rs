@@ -6,11 +6,14 @@ use stewart_kinematics::model::scene::{LegStatus, SceneFrame, ServoFrame};
 
 use stewart_kinematics::model::appearance::Part;
 
-use crate::cad::parts::PartSet;
+use crate::appearance::parts::PartSet;
+
+mod appearance;
 use crate::gpu_types::{LineVertex, MeshInstance};
 use crate::mesh::Mesh;
 use crate::plate_shape::plate_shape;
 use crate::theme::{Theme, linear};
+pub use appearance::{PartDetail, PartInstance, frame_matrix, frame_rotation};
 
 /// What to show besides the platform itself.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -30,7 +33,7 @@ pub struct Overlays {
     /// The labels' size against the usual (larger for a projector).
     pub label_scale: f32,
     /// Which of the CAD parts' meshes are drawn.
-    pub cad_detail: crate::draw_parts::PartDetail,
+    pub part_detail: PartDetail,
 }
 
 impl Default for Overlays {
@@ -43,7 +46,7 @@ impl Default for Overlays {
             coloured_legs: true,
             labels: true,
             label_scale: 1.0,
-            cad_detail: crate::draw_parts::PartDetail::File,
+            part_detail: PartDetail::File,
         }
     }
 }
@@ -72,7 +75,7 @@ pub struct DrawList {
     pub analysis: Vec<std::sync::Arc<crate::analysis::AnalysisMesh>>,
     /// CAD parts (`[appearance]`): each piece of each placed part, opaque, lit, seen from
     /// both sides; the renderer keeps each mesh on the GPU while the same `Arc` comes back.
-    pub parts: Vec<crate::draw_parts::PartInstance>,
+    pub parts: Vec<PartInstance>,
 }
 
 /// An actuator body's radius, as a fraction of the larger plate's radius.
@@ -216,7 +219,7 @@ impl DrawList {
             None => list.linear_legs(frame, &colours, s, drawn),
             Some(servos) => list.servos(frame, servos, &colours, s, drawn),
         }
-        list.cad_parts(frame, &colours, parts, overlays.cad_detail);
+        list.appearance_parts(frame, &colours, parts, overlays.part_detail);
         if overlays.labels {
             list.labels(frame, &colours, overlays.label_scale);
         }
@@ -543,7 +546,7 @@ mod tests {
                 coloured_legs: true,
                 labels: true,
                 label_scale: 1.0,
-                cad_detail: crate::draw_parts::PartDetail::File,
+                part_detail: PartDetail::File,
             },
         );
         assert_eq!(list.cylinders.len(), 12);
@@ -585,7 +588,7 @@ mod tests {
             coloured_legs: false,
             labels: false,
             label_scale: 1.0,
-            cad_detail: crate::draw_parts::PartDetail::File,
+            part_detail: PartDetail::File,
         };
         let list = DrawList::build(&frame, &Theme::LIGHT, &overlays);
         let servos = frame.servos.unwrap_or_else(|| panic!("rotary scene"));

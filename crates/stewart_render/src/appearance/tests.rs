@@ -8,7 +8,7 @@ use stewart_kinematics::model::actuator::ActuatorKind;
 use stewart_kinematics::model::appearance::{AppearanceSettings, MeshScale, Part, PartLook};
 
 use super::parts::{PartFault, PartSet};
-use super::{CadError, Location, load};
+use super::{Location, PartFileError, load};
 
 fn example(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -228,7 +228,7 @@ fn broken_obj_and_gltf_files_are_refused_with_their_place() {
     assert!(e.contains("not a mesh file this studio reads"), "{e}");
     assert!(matches!(
         load(&dir.path().join("missing.stl")),
-        Err(CadError::Io { .. })
+        Err(PartFileError::Io { .. })
     ));
     assert_eq!(Location::Byte(3).to_string(), "byte 3");
 }
@@ -347,7 +347,7 @@ fn hostile_gltf_accessors_and_node_trees_are_refused_not_read() {
 
 #[test]
 fn a_heavy_part_whose_small_piece_vanishes_keeps_no_empty_piece() {
-    use crate::cad::simplify::simplified;
+    use crate::appearance::simplify::simplified;
     use crate::mesh::Mesh;
     // A big sphere and a tiny one (a screw) far from it: at the coarse grid the screw
     // falls into one cell.
@@ -356,14 +356,14 @@ fn a_heavy_part_whose_small_piece_vanishes_keeps_no_empty_piece() {
     for v in &mut tiny.vertices {
         v.position = (Vec3::from(v.position) * 1e-4 + Vec3::new(3.0, 0.0, 0.0)).to_array();
     }
-    let part = crate::cad::PartMesh::new(
+    let part = crate::appearance::PartMesh::new(
         Path::new("x"),
         vec![
-            crate::cad::Piece {
+            crate::appearance::Piece {
                 mesh: std::sync::Arc::new(big),
                 colour: None,
             },
-            crate::cad::Piece {
+            crate::appearance::Piece {
                 mesh: std::sync::Arc::new(tiny),
                 colour: Some([1.0; 4]),
             },
@@ -432,7 +432,7 @@ fn a_stride_that_cannot_hold_its_elements_and_files_that_are_not_files_are_refus
 
 #[test]
 fn a_heavy_part_has_a_preview_and_a_lighter_stand_in_for_a_moving_view() {
-    use crate::draw_parts::PartDetail;
+    use crate::draw_list::PartDetail;
     // A binary STL of 100 000 triangles: a wavy plate of 224 × 224 cells, top and bottom.
     let n = 224usize;
     let mut triangles: Vec<[Vec3; 3]> = Vec::new();
@@ -490,10 +490,13 @@ fn a_heavy_part_has_a_preview_and_a_lighter_stand_in_for_a_moving_view() {
     assert_eq!(part.mesh.triangles, 2 * 2 * n * n);
     let (preview, moving) = (part.preview.triangles, part.moving.triangles);
     assert!(
-        preview <= crate::cad::simplify::PREVIEW_TRIANGLES,
+        preview <= crate::appearance::simplify::PREVIEW_TRIANGLES,
         "{preview}"
     );
-    assert!(moving <= crate::cad::simplify::MOVING_TRIANGLES, "{moving}");
+    assert!(
+        moving <= crate::appearance::simplify::MOVING_TRIANGLES,
+        "{moving}"
+    );
     assert!(moving > 1000, "{moving}: nothing left to see");
     // The draw list places the meshes of the detail asked for.
     let scenario = stewart_kinematics::Scenario::seed();
@@ -506,7 +509,7 @@ fn a_heavy_part_has_a_preview_and_a_lighter_stand_in_for_a_moving_view() {
         (PartDetail::Moving, &part.moving),
     ] {
         let overlays = crate::Overlays {
-            cad_detail: detail,
+            part_detail: detail,
             ..crate::Overlays::default()
         };
         let list = crate::DrawList::build_with_parts(&frame, &crate::Theme::DARK, &overlays, &set);

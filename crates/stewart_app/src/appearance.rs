@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use stewart_kinematics::Scenario;
 use stewart_kinematics::model::appearance::{AppearanceSettings, Part};
-use stewart_render::cad::parts::{PartError, PartSet, platform_size};
+use stewart_render::appearance::parts::{PartError, PartSet, platform_size};
 
 use crate::cli::ScenarioArgs;
 

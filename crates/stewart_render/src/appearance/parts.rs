@@ -10,7 +10,7 @@ use stewart_kinematics::model::actuator::ActuatorKind;
 use stewart_kinematics::model::appearance::{AppearanceSettings, MeshScale, Part, PartLook};
 use thiserror::Error;
 
-use super::{CadError, PartMesh};
+use super::{PartFileError, PartMesh};
 
 /// One part's mesh, ready to place.
 #[derive(Clone, Debug)]
@@ -56,7 +56,7 @@ pub struct PartError {
 pub enum PartFault {
     /// The file could not be read as a mesh.
     #[error(transparent)]
-    Cad(#[from] CadError),
+    Cad(#[from] PartFileError),
     /// At its scale the part is absurdly large or small against the platform.
     #[error(
         "at scale `{scale}` the part is {size_m:.3e} m across, against a platform of {platform_m:.3} m: {hint}"

@@ -9,12 +9,12 @@ use glam::Vec3;
 use stewart_kinematics::io::file::{FileKind, read_file};
 
 use super::normals::FlatMesh;
-use super::{CadError, Location, Piece, finite};
+use super::{Location, PartFileError, Piece, finite};
 use crate::gpu_types::MeshVertex;
 use crate::mesh::Mesh;
 
 /// The pieces of an OBJ file: one per object and material, coloured by its MTL's `Kd`.
-pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
+pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileError> {
     let folder = path.parent().unwrap_or(Path::new("")).to_owned();
     let options = tobj::LoadOptions {
         single_index: true,
@@ -28,7 +28,7 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
             Some((line, why)) => (Some(Location::Line(line)), why),
             None => (None, reason),
         };
-        CadError::Malformed {
+        PartFileError::Malformed {
             path: path.to_owned(),
             at,
             reason,
@@ -48,7 +48,7 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
     let mut pieces = Vec::with_capacity(models.len());
     for model in models {
         let m = &model.mesh;
-        let position = |i: u32| -> Result<Vec3, CadError> {
+        let position = |i: u32| -> Result<Vec3, PartFileError> {
             let k = 3 * i as usize;
             let p: [f32; 3] = m
                 .positions

@@ -10,8 +10,8 @@ use glam::{Mat4, Quat, Vec3};
 use stewart_kinematics::model::appearance::Part;
 use stewart_kinematics::model::scene::{LegStatus, Placement, SceneFrame};
 
-use crate::cad::parts::{LoadedPart, PartSet};
-use crate::draw_list::{DrawList, LegColours};
+use super::{DrawList, LegColours};
+use crate::appearance::parts::{LoadedPart, PartSet};
 use crate::gpu_types::MeshInstance;
 use crate::mesh::Mesh;
 use crate::theme::{Srgba, linear};
@@ -48,17 +48,17 @@ pub enum PartDetail {
     /// The file as read (exports, screenshots, a GPU).
     #[default]
     File,
-    /// Its stand-in of at most [`crate::cad::simplify::PREVIEW_TRIANGLES`] (a view on a
+    /// Its stand-in of at most [`crate::appearance::simplify::PREVIEW_TRIANGLES`] (a view on a
     /// software rasteriser).
     Preview,
-    /// Its lighter stand-in of at most [`crate::cad::simplify::MOVING_TRIANGLES`] (such a
+    /// Its lighter stand-in of at most [`crate::appearance::simplify::MOVING_TRIANGLES`] (such a
     /// view while it moves).
     Moving,
 }
 
 impl DrawList {
     /// Place every part `parts` has a mesh for.
-    pub(crate) fn cad_parts(
+    pub(crate) fn appearance_parts(
         &mut self,
         frame: &SceneFrame,
         colours: &LegColours,

@@ -9,14 +9,14 @@ use base64::Engine as _;
 use glam::{Mat3, Mat4, Vec3};
 
 use super::normals::FlatMesh;
-use super::{CadError, Location, Piece, finite};
+use super::{Location, PartFileError, Piece, finite};
 use crate::gpu_types::MeshVertex;
 use crate::mesh::Mesh;
 
 use stewart_kinematics::io::file::{FileKind, read_file};
 
-fn malformed(path: &Path, at: Option<String>, reason: String) -> CadError {
-    CadError::Malformed {
+fn malformed(path: &Path, at: Option<String>, reason: String) -> PartFileError {
+    PartFileError::Malformed {
         path: path.to_owned(),
         at: at.map(Location::Item),
         reason,
@@ -24,7 +24,7 @@ fn malformed(path: &Path, at: Option<String>, reason: String) -> CadError {
 }
 
 /// The pieces of a glTF file: one per primitive, in the default scene's node order.
-pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
+pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileError> {
     let gltf = gltf::Gltf::from_slice(bytes)
         .map_err(|e| malformed(path, None, format!("not a valid glTF 2.0 file: {e}")))?;
     let buffers = buffers(path, &gltf)?;
@@ -65,7 +65,7 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
 }
 
 /// Every buffer's bytes: the GLB's own chunk, a data URI, or a file beside this one.
-fn buffers(path: &Path, gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, CadError> {
+fn buffers(path: &Path, gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, PartFileError> {
     let folder = path.parent().unwrap_or(Path::new(""));
     let mut out = Vec::new();
     for buffer in gltf.document.buffers() {
@@ -143,7 +143,7 @@ fn primitive_piece(
     mesh: &gltf::Mesh,
     primitive: &gltf::Primitive,
     world: Mat4,
-) -> Result<Option<Piece>, CadError> {
+) -> Result<Option<Piece>, PartFileError> {
     use gltf::mesh::Mode;
     let at = || {
         Some(format!(
@@ -192,7 +192,7 @@ fn primitive_piece(
                 "has no vertex positions (or their data lies outside its buffer)".into(),
             )
         })?
-        .map(|p| -> Result<Vec3, CadError> {
+        .map(|p| -> Result<Vec3, PartFileError> {
             let placed = world.transform_point3(Vec3::from_array(p)).to_array();
             finite(path, placed, || at().map(Location::Item))?;
             Ok(Vec3::from_array(placed))
@@ -270,7 +270,7 @@ fn accessor_fits(
     accessor: &gltf::Accessor,
     types: &[gltf::accessor::DataType],
     dimensions: gltf::accessor::Dimensions,
-) -> Result<(), CadError> {
+) -> Result<(), PartFileError> {
     let at = || Some(format!("accessors[{}]", accessor.index()));
     if !types.contains(&accessor.data_type()) || accessor.dimensions() != dimensions {
         return Err(malformed(

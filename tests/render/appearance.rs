@@ -8,8 +8,8 @@ use glam::Vec3;
 use stewart_kinematics::io::settings;
 use stewart_kinematics::model::scene::SceneFrame;
 use stewart_kinematics::{Pose, Scenario};
-use stewart_render::cad::parts::PartSet;
-use stewart_render::{DrawList, Frame, OrbitCamera, Overlays, Theme};
+use stewart_render::appearance::parts::PartSet;
+use stewart_render::{DrawList, Image, OrbitCamera, Overlays, Theme};
 
 use crate::snapshots::{SIZE, check};
 use crate::{offscreen, project, seed_camera};
@@ -23,7 +23,7 @@ fn scenario(name: &str, assignments: &[&str]) -> (Scenario, PartSet) {
     let mut s = Scenario::load(&examples().join(name)).unwrap_or_else(|e| panic!("{e}"));
     settings::apply_all(&mut s, assignments.iter().copied()).unwrap_or_else(|e| panic!("{e}"));
     let g = &s.geometry;
-    let size = stewart_render::cad::parts::platform_size(g);
+    let size = stewart_render::appearance::parts::platform_size(g);
     let parts = PartSet::load(
         &s.appearance,
         &examples(),
@@ -41,7 +41,7 @@ fn draw(
     parts: &PartSet,
     pose: &Pose,
     theme: &Theme,
-) -> (Frame, OrbitCamera, SceneFrame) {
+) -> (Image, OrbitCamera, SceneFrame) {
     let mut off = offscreen();
     let frame = s.geometry.scene_frame(pose, Vec::new());
     let overlays = Overlays {
@@ -58,7 +58,7 @@ fn draw(
 
 /// Whether a pixel within 3 of the projection of `p` passes `test`.
 fn seen_near(
-    frame: &Frame,
+    frame: &Image,
     camera: &OrbitCamera,
     p: Vec3,
     test: impl Fn([i32; 3]) -> bool,

@@ -9,14 +9,14 @@ use std::path::Path;
 use glam::Vec3;
 
 use super::normals::FlatMesh;
-use super::{CadError, Location, Piece, finite};
+use super::{Location, PartFileError, Piece, finite};
 
 /// Bytes of a binary STL's header and of one facet.
 const HEADER: usize = 84;
 const FACET: usize = 50;
 
 /// The pieces of an STL file (one, uncoloured).
-pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, CadError> {
+pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileError> {
     let mesh = if is_binary(bytes) {
         binary(path, bytes)?
     } else if bytes.trim_ascii_start().starts_with(b"solid") {
@@ -62,15 +62,15 @@ fn is_binary(bytes: &[u8]) -> bool {
             && std::str::from_utf8(bytes).is_ok_and(|t| t.contains("facet")))
 }
 
-fn malformed(path: &Path, at: Option<Location>, reason: String) -> CadError {
-    CadError::Malformed {
+fn malformed(path: &Path, at: Option<Location>, reason: String) -> PartFileError {
+    PartFileError::Malformed {
         path: path.to_owned(),
         at,
         reason,
     }
 }
 
-fn binary(path: &Path, bytes: &[u8]) -> Result<crate::mesh::Mesh, CadError> {
+fn binary(path: &Path, bytes: &[u8]) -> Result<crate::mesh::Mesh, PartFileError> {
     let count = facets(bytes) as usize;
     let mut mesh = FlatMesh::with_capacity(count);
     for (k, facet) in bytes[HEADER..].chunks_exact(FACET).enumerate() {
@@ -92,7 +92,7 @@ fn binary(path: &Path, bytes: &[u8]) -> Result<crate::mesh::Mesh, CadError> {
     Ok(mesh.finish())
 }
 
-fn ascii(path: &Path, bytes: &[u8]) -> Result<crate::mesh::Mesh, CadError> {
+fn ascii(path: &Path, bytes: &[u8]) -> Result<crate::mesh::Mesh, PartFileError> {
     let text = std::str::from_utf8(bytes).map_err(|e| {
         malformed(
             path,
@@ -174,7 +174,7 @@ struct Lines<'a, I> {
 
 impl<'a, I: Iterator<Item = (usize, &'a str)>> Lines<'a, I> {
     /// The next line, or an error saying the file ends where `expect` should follow.
-    fn next(&mut self, expect: &str) -> Result<(usize, &'a str), CadError> {
+    fn next(&mut self, expect: &str) -> Result<(usize, &'a str), PartFileError> {
         match self.lines.next() {
             Some((n, line)) => {
                 self.last = n;
