@@ -5,7 +5,7 @@
 use std::net::UdpSocket;
 use std::time::Duration;
 
-use stewart_link::{Decoder, Frame, Unit};
+use stewart_link::{Frame, FrameDecoder, ValueUnit};
 
 use crate::watched::Watched;
 use crate::{parse_csv, stderr, stdout, stewart};
@@ -54,7 +54,7 @@ fn recorded(text: &str) -> Vec<(f64, Frame)> {
     text.lines()
         .map(|line| {
             let (t, hex) = line.split_once('\t').unwrap_or_else(|| panic!("{line}"));
-            let mut d = Decoder::new();
+            let mut d = FrameDecoder::new();
             let frame = hex
                 .split_whitespace()
                 .filter_map(|h| d.push(u8::from_str_radix(h, 16).unwrap_or_default()))
@@ -97,7 +97,7 @@ fn a_dry_run_records_the_servo_angles_once_armed() {
     let mut previous = -1.0;
     for (k, (t, f)) in frames.iter().enumerate() {
         assert_eq!(f.sequence as usize, k);
-        assert_eq!(f.unit, Unit::Centidegree);
+        assert_eq!(f.unit, ValueUnit::Centidegree);
         let slot = t * 50.0;
         assert!(
             (slot - slot.round()).abs() < 1e-6,
@@ -149,7 +149,7 @@ fn a_udp_stream_arrives_in_order_and_ends_disarmed() {
         let mut frames = Vec::new();
         let mut buf = [0u8; 64];
         while let Ok(n) = peer.recv(&mut buf) {
-            let mut d = Decoder::new();
+            let mut d = FrameDecoder::new();
             let f = buf[..n].iter().filter_map(|&b| d.push(b)).next();
             frames.push(
                 f.and_then(Result::ok)
@@ -166,7 +166,7 @@ fn a_udp_stream_arrives_in_order_and_ends_disarmed() {
     assert!(frames.len() > 100, "{}", frames.len());
     for (k, f) in frames.iter().enumerate() {
         assert_eq!(f.sequence as usize, k, "lost or reordered");
-        assert_eq!(f.unit, Unit::Micrometre);
+        assert_eq!(f.unit, ValueUnit::Micrometre);
         // Every leg length sent is inside the paired preset's stroke (0.55 … 1.30 m).
         assert!(
             f.values.iter().all(|&v| (550_000..=1_300_000).contains(&v)),

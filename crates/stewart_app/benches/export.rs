@@ -7,7 +7,7 @@ use std::sync::atomic::AtomicBool;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use indicatif::ProgressBar;
-use stewart_app::export::encode::{Target, export};
+use stewart_app::export::encode::{FrameSink, export};
 use stewart_app::export::frames::{FrameJob, FrameSource, default_camera};
 use stewart_kinematics::Scenario;
 use stewart_render::{Overlays, Theme};
@@ -46,7 +46,7 @@ fn bench(c: &mut Criterion) {
                     &mut source,
                     0..FRAMES,
                     fps,
-                    &Target::from_path(&out),
+                    &FrameSink::from_path(&out),
                     &ProgressBar::hidden(),
                     &AtomicBool::new(false),
                 )

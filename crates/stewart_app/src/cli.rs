@@ -173,7 +173,7 @@ pub(crate) struct DeviceSimArgs {
     /// board of `smc3` (unit 4: its numbers, 0–1023) or `odrive` (unit 5: millionths of a
     /// turn) — which one, `--board`.
     #[arg(long, value_parser = parse_wire_format, default_value = "binary", value_name = "FORMAT")]
-    pub(crate) format: WireFormat,
+    pub(crate) format: WireFormatArg,
     /// With `--format smc3` or `odrive`: which board this is (1 to 3; SMC3's second board
     /// carries actuators 4–6, ODrive's second 3–4 and third 5–6).
     #[arg(long, value_parser = clap::value_parser!(u8).range(1..=3), default_value = "1")]
@@ -285,7 +285,7 @@ pub(crate) struct LinkArgs {
     /// (`<N>` a byte; `{aK:T}` actuator K scaled from its range to T = u8, u10be, u12be,
     /// u16be, u16le, u24be, u32be, dec or dec3; other printable characters as they are).
     #[arg(long, value_parser = parse_wire_format, value_name = "FORMAT")]
-    pub(crate) format: Option<WireFormat>,
+    pub(crate) format: Option<WireFormatArg>,
     /// Seconds of the arming ramp from home to the trajectory (default 2).
     #[arg(long, allow_hyphen_values = true, value_name = "S", value_parser = parse_link_seconds)]
     pub(crate) ramp: Option<f64>,
@@ -309,7 +309,7 @@ pub(crate) struct LinkArgs {
 
 /// A wire format named on the command line.
 #[derive(Clone, Debug)]
-pub(crate) enum WireFormat {
+pub(crate) enum WireFormatArg {
     /// The 34-byte frames.
     Binary,
     /// `S,seq,…` lines.
@@ -322,32 +322,32 @@ pub(crate) enum WireFormat {
     Odrive,
 }
 
-impl WireFormat {
+impl WireFormatArg {
     /// The value of `link.format` that says it (`template:…` sets the template too).
     pub(crate) fn setting(&self) -> String {
         match self {
-            WireFormat::Binary => LinkFormat::Binary.word().to_owned(),
-            WireFormat::Text => LinkFormat::Text.word().to_owned(),
-            WireFormat::Template(t) => format!("template:{}", t.text()),
-            WireFormat::Smc3 => LinkFormat::Smc3.word().to_owned(),
-            WireFormat::Odrive => LinkFormat::Odrive.word().to_owned(),
+            WireFormatArg::Binary => LinkFormat::Binary.word().to_owned(),
+            WireFormatArg::Text => LinkFormat::Text.word().to_owned(),
+            WireFormatArg::Template(t) => format!("template:{}", t.text()),
+            WireFormatArg::Smc3 => LinkFormat::Smc3.word().to_owned(),
+            WireFormatArg::Odrive => LinkFormat::Odrive.word().to_owned(),
         }
     }
 }
 
 /// `binary`, `text`, or `template:…` (the template checked, its column named when refused).
-pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormat, String> {
+pub(crate) fn parse_wire_format(text: &str) -> Result<WireFormatArg, String> {
     // The one rule of the scenario's `link.format`: a template may end in a space.
     if let Some(template) = stewart_kinematics::model::link_settings::template_of_format(text) {
         return Template::parse(template)
-            .map(WireFormat::Template)
+            .map(WireFormatArg::Template)
             .map_err(|e| e.to_string());
     }
     match parse_word::<LinkFormat>(text)? {
-        LinkFormat::Binary => Ok(WireFormat::Binary),
-        LinkFormat::Text => Ok(WireFormat::Text),
-        LinkFormat::Smc3 => Ok(WireFormat::Smc3),
-        LinkFormat::Odrive => Ok(WireFormat::Odrive),
+        LinkFormat::Binary => Ok(WireFormatArg::Binary),
+        LinkFormat::Text => Ok(WireFormatArg::Text),
+        LinkFormat::Smc3 => Ok(WireFormatArg::Smc3),
+        LinkFormat::Odrive => Ok(WireFormatArg::Odrive),
         LinkFormat::Template => {
             Err("a template is written out: template:<255><255>{a1:u16be}…{a6:u16be}".to_owned())
         }
@@ -501,12 +501,12 @@ pub(crate) struct CueArgs {
     pub(crate) compare: bool,
     /// The comparison's format.
     #[arg(long, value_enum, default_value = "text", requires = "compare")]
-    pub(crate) format: Format,
+    pub(crate) format: ReportFormat,
 }
 
 /// Report formats of `stewart check`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub(crate) enum Format {
+pub(crate) enum ReportFormat {
     /// Sentences for people.
     Text,
     /// One JSON object for programs.
@@ -520,8 +520,8 @@ pub(crate) struct CheckArgs {
     #[command(flatten)]
     pub(crate) scenario: ScenarioArgs,
     /// Report format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub(crate) format: Format,
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
 }
 
 /// Arguments of `stewart design`.
@@ -536,8 +536,8 @@ pub(crate) struct DesignArgs {
     #[arg(long, value_name = "NAME=RANGE,…", allow_hyphen_values = true)]
     pub(crate) envelope: String,
     /// Report format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub(crate) format: Format,
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
 }
 
 /// Arguments of `stewart fk`.
@@ -761,8 +761,8 @@ pub(crate) struct ModesArgs {
     #[arg(long)]
     pub(crate) along_trajectory: bool,
     /// Report format.
-    #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub(crate) format: Format,
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
 }
 
 /// X,Y,Z,ROLL,PITCH,YAW: metres within ±1000 m, degrees within ±3600°.

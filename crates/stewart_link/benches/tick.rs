@@ -15,8 +15,8 @@ use support::drained_peer;
 use criterion::{Criterion, criterion_group};
 use stewart_link::channels::{ChannelMap, Output};
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::{Format, SenderConfig, Stream, time_each};
-use stewart_link::target::{Motion, Sample, Target};
+use stewart_link::sender::{SenderConfig, Stream, WireFormat, time_each};
+use stewart_link::target::{ActuatorMotion, Sample, Target};
 use stewart_link::transport::Udp;
 
 /// Linear legs (metres) with the `paired` preset's limits and a jerk limit.
@@ -34,7 +34,7 @@ fn limits() -> ActuatorLimits {
 fn motion(t: f64, (amplitude, hz): (f64, f64)) -> Sample {
     let w = 2.0 * std::f64::consts::PI * hz;
     let phase = |k: usize| w * t + k as f64;
-    Sample::Moving(Motion {
+    Sample::Moving(ActuatorMotion {
         position: std::array::from_fn(|k| 1.1 + amplitude * phase(k).sin()),
         velocity: std::array::from_fn(|k| amplitude * w * phase(k).cos()),
         acceleration: std::array::from_fn(|k| -amplitude * w * w * phase(k).sin()),
@@ -69,7 +69,7 @@ fn stream() -> Stream {
     supervisor.arm(0.0, [1.1; 6]);
     let config = SenderConfig {
         rate_hz: 1000.0,
-        format: Format::Binary,
+        format: WireFormat::Binary,
         map: ChannelMap::identity(Output::LegMicrometre),
         supervisor,
         arm_at_start: true,

@@ -9,11 +9,11 @@
 
 use thiserror::Error;
 
-use crate::frame::Unit;
+use crate::frame::ValueUnit;
 
 /// One output channel.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Channel {
+pub struct OutputChannel {
     /// The actuator (0–5) whose value this channel carries.
     pub source: usize,
     /// Multiplies the value (after reversal).
@@ -24,7 +24,7 @@ pub struct Channel {
     pub reversed: bool,
 }
 
-impl Channel {
+impl OutputChannel {
     /// Actuator `source` as it is.
     pub fn straight(source: usize) -> Self {
         Self {
@@ -54,11 +54,11 @@ pub enum Output {
 
 impl Output {
     /// The unit of the frame's values.
-    pub fn unit(self) -> Unit {
+    pub fn unit(self) -> ValueUnit {
         match self {
-            Output::LegMicrometre => Unit::Micrometre,
-            Output::ServoCentidegree => Unit::Centidegree,
-            Output::ServoPulse { .. } => Unit::PulseMicrosecond,
+            Output::LegMicrometre => ValueUnit::Micrometre,
+            Output::ServoCentidegree => ValueUnit::Centidegree,
+            Output::ServoPulse { .. } => ValueUnit::PulseMicrosecond,
         }
     }
 }
@@ -66,7 +66,7 @@ impl Output {
 /// A checked channel map.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ChannelMap {
-    channels: [Channel; 6],
+    channels: [OutputChannel; 6],
     output: Output,
 }
 
@@ -120,7 +120,7 @@ pub enum ChannelError {
 impl ChannelMap {
     /// A checked map: every actuator on exactly one channel, finite non-zero scales, finite
     /// offsets and pulse settings.
-    pub fn new(channels: [Channel; 6], output: Output) -> Result<Self, ChannelError> {
+    pub fn new(channels: [OutputChannel; 6], output: Output) -> Result<Self, ChannelError> {
         for (k, c) in channels.iter().enumerate() {
             if c.source > 5 {
                 return Err(ChannelError::Source {
@@ -171,13 +171,13 @@ impl ChannelMap {
     /// Actuator `k` on channel `k`, unscaled.
     pub fn identity(output: Output) -> Self {
         Self {
-            channels: std::array::from_fn(Channel::straight),
+            channels: std::array::from_fn(OutputChannel::straight),
             output,
         }
     }
 
     /// The channels.
-    pub fn channels(&self) -> &[Channel; 6] {
+    pub fn channels(&self) -> &[OutputChannel; 6] {
         &self.channels
     }
 
@@ -204,9 +204,9 @@ impl ChannelMap {
                 channel: k + 1,
                 value: natural * unit.per_natural_unit(),
                 unit: match unit {
-                    Unit::Micrometre => "micrometre",
-                    Unit::Centidegree => "centidegree",
-                    Unit::PulseMicrosecond => "microsecond",
+                    ValueUnit::Micrometre => "micrometre",
+                    ValueUnit::Centidegree => "centidegree",
+                    ValueUnit::PulseMicrosecond => "microsecond",
                 },
             })?;
         }
@@ -247,15 +247,15 @@ mod tests {
         );
         // Channel 1 carries servo 2 mirrored, channel 2 servo 1 with a 2° offset; pulses
         // of 1500 µs at 0° and 10 µs per degree.
-        let mut channels = std::array::from_fn(Channel::straight);
-        channels[0] = Channel {
+        let mut channels = std::array::from_fn(OutputChannel::straight);
+        channels[0] = OutputChannel {
             source: 1,
             reversed: true,
-            ..Channel::straight(1)
+            ..OutputChannel::straight(1)
         };
-        channels[1] = Channel {
+        channels[1] = OutputChannel {
             offset: 2.0,
-            ..Channel::straight(0)
+            ..OutputChannel::straight(0)
         };
         let map = ChannelMap::new(
             channels,
@@ -265,7 +265,7 @@ mod tests {
             },
         )
         .unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(map.output().unit(), Unit::PulseMicrosecond);
+        assert_eq!(map.output().unit(), ValueUnit::PulseMicrosecond);
         let angles = [10.0, 20.0, -30.0, 0.0, 45.5, -90.0];
         assert_eq!(map.wire(&angles), Ok([1300, 1620, 1200, 1500, 1955, 600]));
         let deg = ChannelMap::identity(Output::ServoCentidegree);
@@ -278,7 +278,7 @@ mod tests {
 
     #[test]
     fn a_map_with_two_channels_for_one_actuator_is_refused() {
-        let mut channels = std::array::from_fn(Channel::straight);
+        let mut channels = std::array::from_fn(OutputChannel::straight);
         channels[4].source = 1;
         assert_eq!(
             ChannelMap::new(channels, Output::LegMicrometre)
@@ -286,7 +286,7 @@ mod tests {
                 .to_string(),
             "channels 2 and 5 both carry actuator 2: each actuator needs its own channel"
         );
-        let mut channels = std::array::from_fn(Channel::straight);
+        let mut channels = std::array::from_fn(OutputChannel::straight);
         channels[3].scale = 0.0;
         assert!(
             ChannelMap::new(channels, Output::LegMicrometre)
@@ -295,7 +295,7 @@ mod tests {
                 .contains("`scale` must be a finite number, not zero")
         );
         let e = ChannelMap::new(
-            std::array::from_fn(Channel::straight),
+            std::array::from_fn(OutputChannel::straight),
             Output::ServoPulse {
                 zero_us: 1500.0,
                 us_per_degree: f64::INFINITY,
@@ -303,21 +303,21 @@ mod tests {
         )
         .unwrap_err();
         assert!(e.to_string().contains("pulse_us_per_deg"), "{e}");
-        let mut channels = std::array::from_fn(Channel::straight);
+        let mut channels = std::array::from_fn(OutputChannel::straight);
         channels[0].source = 6;
         assert!(ChannelMap::new(channels, Output::LegMicrometre).is_err());
     }
 
     #[test]
     fn the_wire_read_back_gives_the_values_to_its_rounding() {
-        let mut channels = std::array::from_fn(Channel::straight);
-        channels[0] = Channel {
+        let mut channels = std::array::from_fn(OutputChannel::straight);
+        channels[0] = OutputChannel {
             source: 3,
             reversed: true,
             scale: 1.5,
             offset: -2.0,
         };
-        channels[3] = Channel::straight(0);
+        channels[3] = OutputChannel::straight(0);
         let values = [12.345, -7.5, 0.0, 33.3, -45.0, 8.125];
         for output in [
             Output::ServoCentidegree,

@@ -45,4 +45,4 @@ pub mod text;
 pub mod transport;
 pub mod vehicle;
 
-pub use frame::{DecodeError, Decoder, Flags, Frame, FrameKind, Unit};
+pub use frame::{DecodeError, Flags, Frame, FrameDecoder, FrameKind, ValueUnit};

@@ -1,6 +1,6 @@
 //! What a stream follows: the target the sender asks for at each tick of stream time (a
 //! [`Target`]), the [`Sample`] it gives — six actuator values in natural units (metres or
-//! degrees), with their velocity and acceleration ([`Motion`]) when the source knows them —
+//! degrees), with their velocity and acceleration ([`ActuatorMotion`]) when the source knows them —
 //! or why it has none ([`TargetError`]). Whoever builds a stream (the app's link plan)
 //! speaks this vocabulary; the supervisor, the generator and the sender read it.
 
@@ -8,7 +8,7 @@ use thiserror::Error;
 
 /// Position, velocity and acceleration of the six actuators, natural units.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Motion {
+pub struct ActuatorMotion {
     /// Positions (metres or degrees).
     pub position: [f64; 6],
     /// Velocities, units per second.
@@ -17,7 +17,7 @@ pub struct Motion {
     pub acceleration: [f64; 6],
 }
 
-impl Motion {
+impl ActuatorMotion {
     /// At rest at `position`.
     pub fn at_rest(position: [f64; 6]) -> Self {
         Self {
@@ -34,7 +34,7 @@ pub enum Sample {
     /// Positions only (a teleoperated pose, a live signal).
     At([f64; 6]),
     /// Positions with velocity and acceleration.
-    Moving(Motion),
+    Moving(ActuatorMotion),
 }
 
 impl Sample {

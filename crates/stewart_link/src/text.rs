@@ -9,7 +9,7 @@
 
 use thiserror::Error;
 
-use crate::frame::{Flags, Frame, FrameKind, Unit};
+use crate::frame::{Flags, Frame, FrameKind, ValueUnit};
 
 /// The longest line a [`LineDecoder`] accepts, newline included: `S`, a sequence number and
 /// six `i32` values with their commas take at most 86 bytes.
@@ -75,7 +75,7 @@ pub enum LineError {
 /// The frame a line stands for (without its newline), the inverse of [`line`]: `S` is an
 /// armed set-point, `E` an e-stop with all values 0, `H` the way home (armed and home, as the
 /// link sends it). The text form carries no unit: the controller knows its own, `unit`.
-pub fn parse(text: &str, unit: Unit) -> Result<Frame, LineError> {
+pub fn parse(text: &str, unit: ValueUnit) -> Result<Frame, LineError> {
     let mut fields = text.trim_end_matches('\r').split(',');
     let kind = fields.next().unwrap_or_default();
     let (flags, count) = match kind {
@@ -136,14 +136,14 @@ pub fn parse(text: &str, unit: Unit) -> Result<Frame, LineError> {
 /// would; a line that runs past [`MAX_LINE`] is refused once and skipped to its newline.
 #[derive(Clone, Debug)]
 pub struct LineDecoder {
-    unit: Unit,
+    unit: ValueUnit,
     line: Vec<u8>,
     overflowed: bool,
 }
 
 impl LineDecoder {
     /// A decoder for a controller whose values are in `unit`.
-    pub fn new(unit: Unit) -> Self {
+    pub fn new(unit: ValueUnit) -> Self {
         Self {
             unit,
             line: Vec::with_capacity(MAX_LINE),
@@ -193,7 +193,7 @@ impl LineDecoder {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::frame::{FrameKind, Unit};
+    use crate::frame::{FrameKind, ValueUnit};
 
     #[test]
     fn lines_for_set_points_stop_and_home() {
@@ -204,7 +204,7 @@ mod tests {
                 armed: true,
                 ..Flags::default()
             },
-            unit: Unit::Centidegree,
+            unit: ValueUnit::Centidegree,
             values: [1250, -300, 0, 4500, -9000, 17],
         };
         assert_eq!(line(&f).as_deref(), Some("S,7,1250,-300,0,4500,-9000,17\n"));
@@ -236,24 +236,24 @@ mod tests {
                 kind: FrameKind::SetPoint,
                 sequence: 65535,
                 flags,
-                unit: Unit::Micrometre,
+                unit: ValueUnit::Micrometre,
                 values: [i32::MIN, i32::MAX, 0, 1, -1, 250_000],
             };
             let text = line(&f).unwrap_or_default();
             assert!(text.len() <= MAX_LINE, "{}", text.len());
-            assert_eq!(parse(text.trim_end(), Unit::Micrometre), Ok(f));
+            assert_eq!(parse(text.trim_end(), ValueUnit::Micrometre), Ok(f));
         }
-        let e = parse("E,12", Unit::Centidegree).unwrap_or_else(|e| panic!("{e}"));
+        let e = parse("E,12", ValueUnit::Centidegree).unwrap_or_else(|e| panic!("{e}"));
         assert!(e.flags.estop && !e.flags.armed);
         assert_eq!(
             (e.sequence, e.values, e.unit),
-            (12, [0; 6], Unit::Centidegree)
+            (12, [0; 6], ValueUnit::Centidegree)
         );
     }
 
     #[test]
     fn bad_lines_say_what_is_wrong() {
-        let u = Unit::Micrometre;
+        let u = ValueUnit::Micrometre;
         assert_eq!(parse("X,1", u), Err(LineError::Kind("X".into())));
         assert_eq!(
             parse("S,70000,1,2,3,4,5,6", u),
@@ -279,7 +279,7 @@ mod tests {
 
     #[test]
     fn the_decoder_splits_a_stream_into_lines_and_skips_an_overlong_one_once() {
-        let mut d = LineDecoder::new(Unit::Micrometre);
+        let mut d = LineDecoder::new(ValueUnit::Micrometre);
         let mut out = Vec::new();
         let long = "9".repeat(300);
         let stream = format!("S,1,1,2,3,4,5,6\r\n\nS,2,{long}\nE,3\nS,4,1");
@@ -291,7 +291,7 @@ mod tests {
         assert_eq!(out[1], Err(LineError::TooLong));
         assert_eq!(out[2].as_ref().map(|f| f.flags.estop), Ok(true));
         assert!(d.pending());
-        let mut binary = LineDecoder::new(Unit::Micrometre);
+        let mut binary = LineDecoder::new(ValueUnit::Micrometre);
         let got: Vec<_> = [0xA5, 0x5A, 0xFF, b'\n']
             .iter()
             .filter_map(|&b| binary.push(b))

@@ -7,7 +7,7 @@
 mod common;
 
 use stewart_link::text::line;
-use stewart_link::{Flags, Frame, FrameKind, Unit};
+use stewart_link::{Flags, Frame, FrameKind, ValueUnit};
 
 const HARNESS: &str = r#"
 #include <stdio.h>
@@ -38,7 +38,7 @@ fn frame(sequence: u16, flags: Flags, values: [i32; 6]) -> String {
         kind: FrameKind::SetPoint,
         sequence,
         flags,
-        unit: Unit::PulseMicrosecond,
+        unit: ValueUnit::PulseMicrosecond,
         values,
     })
     .unwrap_or_default()

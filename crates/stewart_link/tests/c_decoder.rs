@@ -6,7 +6,7 @@
 mod common;
 
 use stewart_link::crc::crc16;
-use stewart_link::{Flags, Frame, FrameKind, Unit};
+use stewart_link::{Flags, Frame, FrameKind, ValueUnit};
 
 /// A harness around the decoder: bytes on standard input, one line per outcome.
 const HARNESS: &str = r#"
@@ -48,7 +48,7 @@ fn frame(sequence: u16, values: [i32; 6]) -> Frame {
             armed: true,
             ..Flags::default()
         },
-        unit: Unit::Centidegree,
+        unit: ValueUnit::Centidegree,
         values,
     }
 }

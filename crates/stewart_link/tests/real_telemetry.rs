@@ -13,8 +13,10 @@ use std::path::PathBuf;
 use stewart_link::capture;
 use stewart_link::vehicle::intake::{Intake, Intaken};
 use stewart_link::vehicle::replay::replay;
-use stewart_link::vehicle::timeline::Placement;
-use stewart_link::vehicle::{Decoder, Format, GRAVITY, Reading, VehicleError, VehicleSample};
+use stewart_link::vehicle::timeline::PushOutcome;
+use stewart_link::vehicle::{
+    GRAVITY, Reading, VehicleDecoder, VehicleError, VehicleFormat, VehicleSample,
+};
 
 /// The folder of the recordings, when it is there.
 fn folder() -> Option<PathBuf> {
@@ -71,8 +73,8 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// A BeamNG MotionSim packet and its speed (the world velocity at byte 16).
 fn beamng(name: &str) -> Option<(VehicleSample, f64)> {
     let bytes = real(&format!("beamng/beamng_motionsim_{name}.bin"))?;
-    let decoded = Decoder::new().decode(&bytes);
-    assert_eq!(decoded.format, Some(Format::BeamNg));
+    let decoded = VehicleDecoder::new().decode(&bytes);
+    assert_eq!(decoded.format, Some(VehicleFormat::BeamNg));
     let speed = norm([16, 20, 24].map(|at| f32_at(&bytes, at)));
     Some((sample(&decoded.reading), speed))
 }
@@ -160,9 +162,12 @@ fn every_forza_horizon_datagram_with_new_motion_is_kept() {
     let mut times = Vec::new();
     for (k, d) in datagrams.iter().enumerate() {
         let (format, what, placed) = intake.take(d, k as f64 / 80.0);
-        assert_eq!(format, Some(Format::ForzaHorizon));
+        assert_eq!(format, Some(VehicleFormat::ForzaHorizon));
         assert!(
-            matches!(what, Intaken::Sample(Placement::Placed | Placement::Held)),
+            matches!(
+                what,
+                Intaken::Sample(PushOutcome::Placed | PushOutcome::Held)
+            ),
             "{k}: {what:?}"
         );
         times.extend(placed.iter().map(|p| p.t));
@@ -254,7 +259,7 @@ fn forza_motorsport_accelerating_reads_forwards_without_gravity() {
         };
         // The 317 bytes that survive, padded to the 331 of the form.
         bytes.resize(if bytes.len() > 232 { 331 } else { 232 }, 0);
-        let s = sample(&Decoder::new().decode(&bytes).reading);
+        let s = sample(&VehicleDecoder::new().decode(&bytes).reading);
         // AccelerationZ +8.08 forward at 13.5 m/s, AccelerationY −0.18: no gravity.
         assert!((s.accel[0] - 8.08).abs() < 0.01, "{path}: {s:?}");
         assert!(s.accel[2].abs() < 0.5, "{path}: {s:?}");
@@ -350,7 +355,7 @@ fn f1_24s_joined_pair_is_one_sample_and_real_halves_of_two_frames_none() {
     let capture = capture::read(unpaired.as_slice()).unwrap_or_else(|e| panic!("{e}"));
     let r = replay(&capture.datagrams, None, Intake::STALL_S);
     assert!(r.samples.is_empty());
-    assert_eq!((r.tally.of(Format::F1), r.tally.refused), (2, 0));
+    assert_eq!((r.tally.of(VehicleFormat::F1), r.tally.refused), (2, 0));
 }
 
 #[test]
@@ -361,20 +366,20 @@ fn f1_25s_packets_are_read_and_other_years_refused_naming_the_setting() {
     let Some(ex) = real("f1/f1_2025_motionEx_1.bin") else {
         return;
     };
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     // A spectator's Motion (player car 255): the game at rest for us, not an error.
     assert_eq!(d.decode(&motion).reading, Ok(Reading::Idle));
     // The 273-byte Motion Ex of 2025: read (the first half of a pair).
     let decoded = d.decode(&ex);
     assert_eq!(
         (decoded.format, decoded.reading),
-        (Some(Format::F1), Ok(Reading::Ignored))
+        (Some(VehicleFormat::F1), Ok(Reading::Ignored))
     );
     let Some(others) = real("f1/f1_2022_2023_2025_motion.pcap") else {
         return;
     };
     let capture = capture::read(others.as_slice()).unwrap_or_else(|e| panic!("{e}"));
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let mut refused = Vec::new();
     for datagram in &capture.datagrams {
         if let Err(e) = d.decode(&datagram.payload).reading {
@@ -395,7 +400,7 @@ fn f1_25s_packets_are_read_and_other_years_refused_naming_the_setting() {
         };
         let year: u16 = year.parse().unwrap_or_default();
         assert_eq!(
-            Decoder::new().decode(&bytes).reading,
+            VehicleDecoder::new().decode(&bytes).reading,
             Err(VehicleError::F1Format(year))
         );
     }

@@ -11,7 +11,7 @@ use stewart_kinematics::{
     CheckReport, Scenario, analysis::checks::FindingKind, analysis::checks::check_motion,
 };
 
-use crate::cli::{CheckArgs, Format};
+use crate::cli::{CheckArgs, ReportFormat};
 use crate::i18n::Lang;
 use crate::i18n::words::{self, finding};
 use crate::long_work::{self, PROBE_SAMPLES};
@@ -37,8 +37,8 @@ pub(crate) fn run(args: &CheckArgs) -> Result<ExitCode> {
         },
     );
     let text = match args.format {
-        Format::Text => text_report(&scenario, &report),
-        Format::Json => {
+        ReportFormat::Text => text_report(&scenario, &report),
+        ReportFormat::Json => {
             let doc = CheckDocument::new(&scenario.name, &scenario.geometry, &report);
             serde_json::to_string_pretty(&doc)? + "\n"
         }

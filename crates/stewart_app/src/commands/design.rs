@@ -10,7 +10,7 @@ use stewart_kinematics::analysis::design::{
 };
 use stewart_kinematics::{Geometry, Scenario};
 
-use crate::cli::{DesignArgs, Format};
+use crate::cli::{DesignArgs, ReportFormat};
 use crate::output;
 use crate::source;
 
@@ -36,8 +36,8 @@ pub(crate) fn run(args: &DesignArgs) -> Result<ExitCode> {
         Envelope::parse(&args.envelope, &g.home_pose()).map_err(|e| anyhow!("--envelope: {e}"))?;
     let report = envelope_needs(g, &envelope);
     let text = match args.format {
-        Format::Text => text(&scenario, &envelope, &report),
-        Format::Json => {
+        ReportFormat::Text => text(&scenario, &envelope, &report),
+        ReportFormat::Json => {
             let q = g.quantity();
             let needed = report.overall();
             let limits = g.quantity_limits();

@@ -15,7 +15,7 @@ use stewart_kinematics::analysis::dynamics::{
 use stewart_kinematics::model::trajectory::Samples;
 use stewart_kinematics::{Pose, Scenario};
 
-use crate::cli::{Format, ModesArgs};
+use crate::cli::{ModesArgs, ReportFormat};
 use crate::commands::design::pose_words;
 use crate::long_work::{self, PROBE_SAMPLES};
 use crate::output;
@@ -108,8 +108,8 @@ pub(crate) fn run(args: &ModesArgs) -> Result<ExitCode> {
         None
     };
     let text = match args.format {
-        Format::Text => text(&scenario, &at, &modes, lowest.as_ref()),
-        Format::Json => {
+        ReportFormat::Text => text(&scenario, &at, &modes, lowest.as_ref()),
+        ReportFormat::Json => {
             let json = JsonReport {
                 scenario: &scenario.name,
                 pose: JsonPose::of(&pose.to_row()),

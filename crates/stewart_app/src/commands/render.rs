@@ -9,7 +9,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use stewart_render::{OrbitCamera, Overlays, Theme};
 
 use crate::cli::{RenderArgs, ThemeName};
-use crate::export::encode::Target;
+use crate::export::encode::FrameSink;
 use crate::export::frames::default_camera;
 use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_words};
 use crate::source;
@@ -101,8 +101,8 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
         let _ = writeln!(err, "Note: {note}.");
     }
     // A video plays for a time; a folder of frames samples the motion at a rate.
-    let timing = match Target::from_path(&args.out) {
-        Target::Folder(_) => format!("{} frames/s of motion", rate_in_words(report.fps)),
+    let timing = match FrameSink::from_path(&args.out) {
+        FrameSink::Folder(_) => format!("{} frames/s of motion", rate_in_words(report.fps)),
         _ => format!(
             "{} frames/s, plays {:.2} s",
             rate_in_words(report.fps),

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use stewart_kinematics::io::settings::{Group, Setting, Target, Unit};
+use stewart_kinematics::io::settings::{Group, Setting, SettingTarget, Unit};
 use stewart_kinematics::{Scenario, io::bounds, io::settings};
 
 use crate::cli::{SettingsArgs, SettingsFormat};
@@ -107,11 +107,11 @@ pub(crate) fn reference(scenario: &Scenario) -> String {
             let kind = scenario.geometry.actuator().kind();
             let default = match s.target {
                 _ if s.applies(scenario) => value_of(s, s.default_for(scenario)),
-                Target::Geometry(_) => "(joints on a circle)".to_owned(),
+                SettingTarget::Geometry(_) => "(joints on a circle)".to_owned(),
                 _ if s.target.actuator_kind().is_some_and(|k| k != kind) => {
                     "(the other actuator kind)".to_owned()
                 }
-                Target::Actuator(_) => "(the other actuator kind)".to_owned(),
+                SettingTarget::Actuator(_) => "(the other actuator kind)".to_owned(),
                 _ => "(another trajectory kind)".to_owned(),
             };
             let unit = match s.unit.symbol() {
@@ -188,7 +188,7 @@ pub(crate) fn table(scenario: &Scenario) -> String {
         .map(|s| {
             let value = if s.applies(scenario) {
                 value_of(s, s.get(scenario))
-            } else if let Target::Geometry(key) = s.target
+            } else if let SettingTarget::Geometry(key) = s.target
                 && key.circle_plate().is_some()
             {
                 "(joints as coordinates)".to_owned()

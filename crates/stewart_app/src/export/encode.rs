@@ -19,7 +19,7 @@ use super::frames::FrameSource;
 
 /// Where frames go, chosen by the output path.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Target {
+pub enum FrameSink {
     /// A folder of numbered PNG files.
     Folder(PathBuf),
     /// A looping animated GIF.
@@ -28,13 +28,13 @@ pub enum Target {
     Mp4(PathBuf),
 }
 
-impl Target {
+impl FrameSink {
     /// `.gif` and `.mp4` paths are videos; anything else is a folder.
-    pub fn from_path(path: &Path) -> Target {
+    pub fn from_path(path: &Path) -> FrameSink {
         match crate::output::extension(path).as_deref() {
-            Some("gif") => Target::Gif(path.to_path_buf()),
-            Some("mp4") => Target::Mp4(path.to_path_buf()),
-            _ => Target::Folder(path.to_path_buf()),
+            Some("gif") => FrameSink::Gif(path.to_path_buf()),
+            Some("mp4") => FrameSink::Mp4(path.to_path_buf()),
+            _ => FrameSink::Folder(path.to_path_buf()),
         }
     }
 
@@ -42,7 +42,7 @@ impl Target {
     /// empty, a video must be a file (or a device or FIFO), and none of them an input.
     pub(crate) fn destination(&self) -> Result<Destination> {
         match self {
-            Target::Folder(out) => {
+            FrameSink::Folder(out) => {
                 let dest = Destination::new(out, crate::output::NO_INPUTS)?;
                 match dest.kind() {
                     Kind::Folder => {
@@ -68,7 +68,7 @@ impl Target {
                 }
                 Ok(dest)
             }
-            Target::Gif(out) | Target::Mp4(out) => {
+            FrameSink::Gif(out) | FrameSink::Mp4(out) => {
                 let dest = Destination::new(out, crate::output::NO_INPUTS)?;
                 dest.require_file()?;
                 Ok(dest)
@@ -258,7 +258,7 @@ struct Opened {
 
 impl Staging {
     fn open(
-        target: &Target,
+        target: &FrameSink,
         width: u32,
         height: u32,
         fps: f64,
@@ -269,7 +269,7 @@ impl Staging {
             ffmpeg: None,
         };
         match target {
-            Target::Folder(out) => {
+            FrameSink::Folder(out) => {
                 let dest = target.destination()?;
                 let dir = tempfile::Builder::new()
                     .prefix(".stewart-frames-")
@@ -282,7 +282,7 @@ impl Staging {
                     digits,
                 }))
             }
-            Target::Gif(_) => {
+            FrameSink::Gif(_) => {
                 let dest = target.destination()?;
                 let (Ok(w), Ok(h)) = (u16::try_from(width), u16::try_from(height)) else {
                     bail!("a GIF can be at most 65535 pixels wide and high")
@@ -301,7 +301,7 @@ impl Staging {
                     delay_cs,
                 }))
             }
-            Target::Mp4(_) => {
+            FrameSink::Mp4(_) => {
                 let dest = target.destination()?;
                 let file = dest.staged_file(".mp4")?.into_temp_path();
                 let mut ffmpeg = spawn_ffmpeg(width, height, fps, &file)?;
@@ -320,7 +320,7 @@ impl Staging {
 
     /// What a worker does with a frame.
     fn encode(
-        kind: &Target,
+        kind: &FrameSink,
         dir: Option<&Path>,
         digits: usize,
         index: usize,
@@ -328,7 +328,7 @@ impl Staging {
         previous: Option<&Image>,
     ) -> Result<Encoded> {
         match kind {
-            Target::Folder(out) => {
+            FrameSink::Folder(out) => {
                 let dir = dir.ok_or_else(|| anyhow!("no staging folder"))?;
                 let name = format!("frame_{index:0digits$}.png");
                 let path = dir.join(&name);
@@ -353,10 +353,10 @@ impl Staging {
                 Ok(Encoded::Written)
             }
             // The size was checked when the GIF was opened.
-            Target::Gif(_) => Ok(Encoded::Gif(super::gif_delta::delta_frame(
+            FrameSink::Gif(_) => Ok(Encoded::Gif(super::gif_delta::delta_frame(
                 previous, &frame,
             ))),
-            Target::Mp4(_) => Ok(Encoded::Raw(frame)),
+            FrameSink::Mp4(_) => Ok(Encoded::Raw(frame)),
         }
     }
 
@@ -440,7 +440,7 @@ type Job = (usize, Arc<Image>, Option<Arc<Image>>);
 /// `digits`-digit names when it is a folder), each sent to `done` with its index, until
 /// the queue closes or nobody takes the results.
 fn encode_frames(
-    target: &Target,
+    target: &FrameSink,
     dir: Option<&Path>,
     digits: usize,
     jobs: &Mutex<Receiver<Job>>,
@@ -573,7 +573,7 @@ pub fn export(
     source: &mut FrameSource,
     indices: std::ops::Range<usize>,
     fps: f64,
-    target: &Target,
+    target: &FrameSink,
     progress: &ProgressBar,
     stop: &AtomicBool,
 ) -> Result<()> {
@@ -622,7 +622,7 @@ pub fn export(
             }
             (staging, result)
         });
-        let keeps_previous = matches!(target, Target::Gif(_));
+        let keeps_previous = matches!(target, FrameSink::Gif(_));
         let render_result = feed_frames(
             source,
             indices.clone(),

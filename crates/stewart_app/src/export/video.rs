@@ -11,7 +11,7 @@ use indicatif::ProgressBar;
 use stewart_kinematics::Scenario;
 use stewart_render::{OrbitCamera, Overlays, Theme};
 
-use super::encode::{self, Target};
+use super::encode::{self, FrameSink};
 use super::frames::{FrameJob, FrameSource};
 
 /// What to export.
@@ -186,7 +186,7 @@ impl VideoRequest {
     pub(crate) fn plan(&self, scenario: &Scenario) -> Result<FramePlan> {
         let sampling = scenario.motion.sampling;
         let native_fps = (sampling.len() - 1) as f64 / sampling.duration();
-        let target = Target::from_path(&self.out);
+        let target = FrameSink::from_path(&self.out);
         let speed = self.speed;
         if !SPEEDS.contains(&speed) {
             bail!(
@@ -197,10 +197,10 @@ impl VideoRequest {
         }
         let slowed = speed != 1.0;
         let asked = self.fps.or(match target {
-            Target::Gif(_) => Some(GIF_FPS),
-            Target::Mp4(_) => Some(MP4_FPS),
+            FrameSink::Gif(_) => Some(GIF_FPS),
+            FrameSink::Mp4(_) => Some(MP4_FPS),
             // Frames are the samples, unless the motion is slowed: then at their rate.
-            Target::Folder(_) => slowed.then_some(native_fps),
+            FrameSink::Folder(_) => slowed.then_some(native_fps),
         });
         match (asked, self.fps) {
             // The motion's own rate, slowed into a folder of frames: say it is the motion's.
@@ -216,7 +216,7 @@ impl VideoRequest {
         }
         let fps = asked.unwrap_or(native_fps);
         let (fps, note) = match target {
-            Target::Gif(_) => {
+            FrameSink::Gif(_) => {
                 let delay_cs = encode::gif_delay_cs(fps);
                 let played = 100.0 / f64::from(delay_cs);
                 let note = ((played - fps).abs() > 1e-9 * fps).then_some(RateNote::GifRounded {
@@ -233,7 +233,7 @@ impl VideoRequest {
         let played = sampling.duration() / speed;
         let count = match (&target, asked) {
             (_, None) => sampling.len(),
-            (Target::Gif(_), Some(_)) => ((played * fps).round() as usize).max(1),
+            (FrameSink::Gif(_), Some(_)) => ((played * fps).round() as usize).max(1),
             (_, Some(_)) => ((played * fps).floor() + 1.0) as usize,
         };
         Ok(FramePlan {
@@ -286,9 +286,9 @@ pub(crate) fn export_video(
     let range = request.range(plan.count)?;
     // Only the exported frames' times are kept.
     let times: Vec<f64> = range.clone().map(|k| plan.time(k)).collect();
-    let target = Target::from_path(&request.out);
+    let target = FrameSink::from_path(&request.out);
     target.destination()?;
-    if matches!(target, Target::Mp4(_)) {
+    if matches!(target, FrameSink::Mp4(_)) {
         encode::check_ffmpeg()?;
     }
     if let Some(c) = &request.camera

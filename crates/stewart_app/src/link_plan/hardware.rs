@@ -11,10 +11,10 @@ use stewart_kinematics::model::link_settings::{
     LinkFormat, LinkOutput, LinkSettings, LinkStop, LinkTransport,
 };
 use stewart_link::boards::{Board, Turns};
-use stewart_link::channels::{Channel, ChannelMap, Output};
+use stewart_link::channels::{ChannelMap, Output, OutputChannel};
 use stewart_link::frame::FRAME_LEN;
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::Format;
+use stewart_link::sender::WireFormat;
 use stewart_link::template::Template;
 use stewart_link::transport::{Ports, Serial, Transport, Udp, max_rate_hz};
 
@@ -45,7 +45,7 @@ pub(crate) fn channel_map(scenario: &Scenario) -> Result<ChannelMap> {
             )
         }
     };
-    let channels = std::array::from_fn(|k| Channel {
+    let channels = std::array::from_fn(|k| OutputChannel {
         source: usize::from(link.actuator[k]).saturating_sub(1),
         scale: link.scale[k],
         offset: link.offset[k],
@@ -65,16 +65,16 @@ pub(crate) fn template_problem(scenario: &Scenario) -> Option<(String, String)> 
 }
 
 /// The wire format of `[link]` (a template parsed, or refused at its column).
-pub(crate) fn format(link: &LinkSettings) -> Result<Format> {
+pub(crate) fn format(link: &LinkSettings) -> Result<WireFormat> {
     Ok(match link.format {
-        LinkFormat::Binary => Format::Binary,
-        LinkFormat::Text => Format::Text,
+        LinkFormat::Binary => WireFormat::Binary,
+        LinkFormat::Text => WireFormat::Text,
         LinkFormat::Template => {
             let text = link.template.as_deref().unwrap_or_default();
-            Format::Template(Template::parse(text).map_err(|e| anyhow!("link.template: {e}"))?)
+            WireFormat::Template(Template::parse(text).map_err(|e| anyhow!("link.template: {e}"))?)
         }
-        LinkFormat::Smc3 => Format::Board(Board::Smc3),
-        LinkFormat::Odrive => Format::Board(Board::ODrive(Turns {
+        LinkFormat::Smc3 => WireFormat::Board(Board::Smc3),
+        LinkFormat::Odrive => WireFormat::Board(Board::ODrive(Turns {
             per_unit: link.turns_per_unit,
             offset: link.turns_offset,
         })),
@@ -121,13 +121,13 @@ pub(crate) fn check_board_format(scenario: &Scenario) -> Result<()> {
 }
 
 /// The most bytes one set-point takes on the wire in `format`.
-pub(crate) fn frame_bytes(format: &Format) -> usize {
+pub(crate) fn frame_bytes(format: &WireFormat) -> usize {
     match format {
-        Format::Binary => FRAME_LEN,
+        WireFormat::Binary => FRAME_LEN,
         // The longest text line: `S,65535,` and six signed 11-character values.
-        Format::Text => 8 + 6 * 12,
-        Format::Template(t) => t.max_len(),
-        Format::Board(b) => b.max_frame_bytes(),
+        WireFormat::Text => 8 + 6 * 12,
+        WireFormat::Template(t) => t.max_len(),
+        WireFormat::Board(b) => b.max_frame_bytes(),
     }
 }
 
@@ -173,7 +173,7 @@ pub(crate) fn actuator_range(scenario: &Scenario) -> (f64, f64) {
 /// viewer into its panel).
 pub(crate) fn open_device(link: &LinkSettings) -> Result<Box<dyn Transport>> {
     let boards = match format(link)? {
-        Format::Board(board) => board.ports(),
+        WireFormat::Board(board) => board.ports(),
         _ => 1,
     };
     if boards == 1 {

@@ -11,8 +11,8 @@ use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
 use stewart_link::safety::Supervisor;
-use stewart_link::sender::{Format, SenderConfig};
-use stewart_link::target::{Motion, Sample, Target, TargetError};
+use stewart_link::sender::{SenderConfig, WireFormat};
+use stewart_link::target::{ActuatorMotion, Sample, Target, TargetError};
 use stewart_link::transport::Transport;
 
 use crate::live_cue::LiveCue;
@@ -41,7 +41,7 @@ pub struct LinkPlan {
     /// Values to wire.
     pub(crate) map: ChannelMap,
     /// What goes on the wire: frames, lines, or a template's bytes.
-    pub(crate) format: Format,
+    pub(crate) format: WireFormat,
     /// The safety state machine for the scenario's limits (disarmed, at home).
     pub(crate) supervisor: Supervisor,
     /// The platform, for the target's actuator values.
@@ -132,7 +132,7 @@ impl LinkPlan {
                 let values = geometry
                     .actuator_values_at(&trajectory.pose_at(start + duration))
                     .map_err(TargetError::source)?;
-                Ok(Sample::Moving(Motion::at_rest(values)))
+                Ok(Sample::Moving(ActuatorMotion::at_rest(values)))
             }
             Some(local) => moving_sample(&geometry, |s| trajectory.pose_at(start + s), local, 1.0),
         })
@@ -238,7 +238,7 @@ pub(crate) fn moving_sample(
         .actuator_values_at(&pose_at(time))
         .map_err(TargetError::source)?;
     if speed == 0.0 {
-        return Ok(Sample::Moving(Motion::at_rest(centre)));
+        return Ok(Sample::Moving(ActuatorMotion::at_rest(centre)));
     }
     let h = DIFFERENCE_STEP_S;
     let mut around = [[0.0; 6]; 4];
@@ -255,7 +255,7 @@ pub(crate) fn moving_sample(
         speed * speed * (-m2[j] + 16.0 * m1[j] - 30.0 * centre[j] + 16.0 * p1[j] - p2[j])
             / (12.0 * h * h)
     });
-    Ok(Sample::Moving(Motion {
+    Ok(Sample::Moving(ActuatorMotion {
         position: centre,
         velocity,
         acceleration,

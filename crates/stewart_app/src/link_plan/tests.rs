@@ -56,7 +56,7 @@ fn the_trajectory_target_rests_at_the_last_pose_after_the_end() {
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(
         target(end + 3.0).ok(),
-        Some(Sample::Moving(Motion::at_rest(last)))
+        Some(Sample::Moving(ActuatorMotion::at_rest(last)))
     );
     // Inside, the values are the trajectory's own.
     let Ok(sample) = target(0.5 * end) else {

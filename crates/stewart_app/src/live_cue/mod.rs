@@ -18,9 +18,9 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use anyhow::{Context as _, Result, bail};
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion, home_conditioning};
 use stewart_kinematics::{Pose, Scenario};
-use stewart_link::vehicle::Format;
+use stewart_link::vehicle::VehicleFormat;
 use stewart_link::vehicle::intake::{Intake, Intaken};
-use stewart_link::vehicle::timeline::{Placement, Step, Timed};
+use stewart_link::vehicle::timeline::{PushOutcome, Step, Timed};
 
 use crate::xplane_rref::RrefSubscription;
 
@@ -72,7 +72,7 @@ pub(crate) struct CueCounts {
     pub(crate) trace: std::sync::Mutex<std::collections::VecDeque<TracePoint>>,
     /// The formats that arrived in the last whole second (`None`: datagrams not
     /// recognised), with their datagrams a second.
-    pub(crate) arriving: std::sync::Mutex<Vec<(Option<Format>, f64)>>,
+    pub(crate) arriving: std::sync::Mutex<Vec<(Option<VehicleFormat>, f64)>>,
 }
 
 impl CueCounts {
@@ -81,8 +81,8 @@ impl CueCounts {
         [&self.received, &self.malformed, &self.stalls].map(|n| n.load(Ordering::Relaxed))
     }
 
-    /// The formats arriving, with their rates: `[(Some(Format::F1), 120.0)]`.
-    pub(crate) fn arriving(&self) -> Vec<(Option<Format>, f64)> {
+    /// The formats arriving, with their rates: `[(Some(VehicleFormat::F1), 120.0)]`.
+    pub(crate) fn arriving(&self) -> Vec<(Option<VehicleFormat>, f64)> {
         self.arriving
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner)
@@ -194,7 +194,7 @@ struct UdpInput {
 /// second of stream time.
 struct Reported {
     counts: Arc<CueCounts>,
-    window: Vec<(Option<Format>, u32)>,
+    window: Vec<(Option<VehicleFormat>, u32)>,
     window_start: Option<f64>,
 }
 
@@ -215,7 +215,7 @@ struct Liveness {
 
 impl Reported {
     /// One more datagram of `format` in this second's window.
-    fn count_format(&mut self, format: Option<Format>) {
+    fn count_format(&mut self, format: Option<VehicleFormat>) {
         match self.window.iter_mut().find(|(f, _)| *f == format) {
             Some((_, count)) => *count += 1,
             None => self.window.push((format, 1)),
@@ -359,7 +359,7 @@ impl LiveCue {
         match what {
             // The game's menus or pause: as if the input had stalled.
             Intaken::Idle => self.liveness.idle = true,
-            Intaken::Refused(_) | Intaken::Sample(Placement::Stale) => {
+            Intaken::Refused(_) | Intaken::Sample(PushOutcome::Stale) => {
                 self.reported
                     .counts
                     .malformed
@@ -731,7 +731,7 @@ mod tests {
         // The Link panel's "arriving": Forza's form at its rate, one a tick of 20 ms.
         let arriving = live.counts().arriving();
         assert!(
-            matches!(arriving[..], [(Some(Format::ForzaSled), rate)] if (rate - 50.0).abs() < 0.5),
+            matches!(arriving[..], [(Some(VehicleFormat::ForzaSled), rate)] if (rate - 50.0).abs() < 0.5),
             "{arriving:?}"
         );
         assert_eq!(live.counts().stalls.load(Ordering::Relaxed), 1);

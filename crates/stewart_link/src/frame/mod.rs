@@ -50,7 +50,7 @@ impl FrameKind {
 
 /// The unit of a frame's six values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Unit {
+pub enum ValueUnit {
     /// Leg lengths, micrometres.
     Micrometre,
     /// Servo angles, hundredths of a degree.
@@ -59,20 +59,20 @@ pub enum Unit {
     PulseMicrosecond,
 }
 
-impl Unit {
+impl ValueUnit {
     fn code(self) -> u8 {
         match self {
-            Unit::Micrometre => 0x00,
-            Unit::Centidegree => 0x01,
-            Unit::PulseMicrosecond => 0x02,
+            ValueUnit::Micrometre => 0x00,
+            ValueUnit::Centidegree => 0x01,
+            ValueUnit::PulseMicrosecond => 0x02,
         }
     }
 
     fn from_code(code: u8) -> Option<Self> {
         match code {
-            0x00 => Some(Unit::Micrometre),
-            0x01 => Some(Unit::Centidegree),
-            0x02 => Some(Unit::PulseMicrosecond),
+            0x00 => Some(ValueUnit::Micrometre),
+            0x01 => Some(ValueUnit::Centidegree),
+            0x02 => Some(ValueUnit::PulseMicrosecond),
             _ => None,
         }
     }
@@ -81,9 +81,9 @@ impl Unit {
     /// microseconds).
     pub fn per_natural_unit(self) -> f64 {
         match self {
-            Unit::Micrometre => 1e6,
-            Unit::Centidegree => 100.0,
-            Unit::PulseMicrosecond => 1.0,
+            ValueUnit::Micrometre => 1e6,
+            ValueUnit::Centidegree => 100.0,
+            ValueUnit::PulseMicrosecond => 1.0,
         }
     }
 
@@ -135,7 +135,7 @@ pub struct Frame {
     /// Armed, e-stop, home.
     pub flags: Flags,
     /// Unit of `values`.
-    pub unit: Unit,
+    pub unit: ValueUnit,
     /// Six fixed-point values, actuator 1 first.
     pub values: [i32; 6],
 }
@@ -150,9 +150,9 @@ impl Frame {
             .filter_map(|(on, word)| on.then_some(word))
             .collect();
         let unit = match self.unit {
-            Unit::Micrometre => "µm",
-            Unit::Centidegree => "0.01°",
-            Unit::PulseMicrosecond => "µs",
+            ValueUnit::Micrometre => "µm",
+            ValueUnit::Centidegree => "0.01°",
+            ValueUnit::PulseMicrosecond => "µs",
         };
         let values: Vec<String> = self.values.iter().map(i32::to_string).collect();
         format!(
@@ -198,7 +198,7 @@ impl Frame {
         }
         let kind = FrameKind::from_code(bytes[3]).ok_or(DecodeError::Kind(bytes[3]))?;
         let flags = Flags::from_byte(bytes[6]).ok_or(DecodeError::Flags(bytes[6]))?;
-        let unit = Unit::from_code(bytes[7]).ok_or(DecodeError::Unit(bytes[7]))?;
+        let unit = ValueUnit::from_code(bytes[7]).ok_or(DecodeError::Unit(bytes[7]))?;
         let values = std::array::from_fn(|k| {
             let at = 8 + 4 * k;
             i32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]])
@@ -244,18 +244,18 @@ pub enum DecodeError {
 /// A stream decoder: bytes in, frames out, resynchronising on the sync bytes after noise
 /// or a damaged frame. Fixed memory (one frame's bytes).
 #[derive(Clone, Debug)]
-pub struct Decoder {
+pub struct FrameDecoder {
     buffer: [u8; FRAME_LEN],
     filled: usize,
 }
 
-impl Default for Decoder {
+impl Default for FrameDecoder {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl Decoder {
+impl FrameDecoder {
     /// A decoder waiting for a frame.
     pub fn new() -> Self {
         Self {

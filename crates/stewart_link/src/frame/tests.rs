@@ -23,7 +23,7 @@ fn examples() -> [(Frame, &'static str); 3] {
                     armed: true,
                     ..Flags::default()
                 },
-                unit: Unit::Centidegree,
+                unit: ValueUnit::Centidegree,
                 values: [1250, -300, 0, 4500, -9000, 17],
             },
             "A5 5A 01 01 01 00 01 01 E2 04 00 00 D4 FE FF FF 00 00 00 00 94 11 00 00 D8 DC FF FF 11 00 00 00 49 5A",
@@ -33,7 +33,7 @@ fn examples() -> [(Frame, &'static str); 3] {
                 kind: FrameKind::SetPoint,
                 sequence: 0x1234,
                 flags: Flags::default(),
-                unit: Unit::Micrometre,
+                unit: ValueUnit::Micrometre,
                 values: [980_204; 6],
             },
             "A5 5A 01 01 34 12 00 00 EC F4 0E 00 EC F4 0E 00 EC F4 0E 00 EC F4 0E 00 EC F4 0E 00 EC F4 0E 00 E5 2D",
@@ -47,7 +47,7 @@ fn examples() -> [(Frame, &'static str); 3] {
                     estop: true,
                     home: false,
                 },
-                unit: Unit::PulseMicrosecond,
+                unit: ValueUnit::PulseMicrosecond,
                 values: [1500, 1500, 1000, 2000, 1500, 1500],
             },
             "A5 5A 01 02 FF FF 03 02 DC 05 00 00 DC 05 00 00 E8 03 00 00 D0 07 00 00 DC 05 00 00 DC 05 00 00 70 BD",
@@ -113,7 +113,7 @@ fn the_stream_decoder_skips_noise_and_damaged_frames() {
     stream.extend([0xA5, 0x5A, 0x01]); // a frame cut short …
     stream.extend(damaged); // … then a damaged one
     stream.extend(c.encode());
-    let mut d = Decoder::new();
+    let mut d = FrameDecoder::new();
     let out: Vec<Result<Frame, DecodeError>> = stream.iter().filter_map(|&x| d.push(x)).collect();
     let frames: Vec<Frame> = out.iter().filter_map(|r| r.ok()).collect();
     assert_eq!(frames, vec![a, c]);
@@ -125,12 +125,12 @@ fn the_stream_decoder_skips_noise_and_damaged_frames() {
 
 #[test]
 fn fixed_point_rounds_and_refuses_what_does_not_fit() {
-    assert_eq!(Unit::Micrometre.to_fixed(0.980_204_4), Some(980_204));
-    assert_eq!(Unit::Centidegree.to_fixed(-89.996), Some(-9000));
-    assert_eq!(Unit::PulseMicrosecond.to_fixed(1500.4), Some(1500));
-    assert_eq!(Unit::Micrometre.to_fixed(f64::NAN), None);
-    assert_eq!(Unit::Micrometre.to_fixed(3000.0), None); // 3 km in µm overflows i32
-    assert_eq!(Unit::Centidegree.to_natural(-9000), -90.0);
+    assert_eq!(ValueUnit::Micrometre.to_fixed(0.980_204_4), Some(980_204));
+    assert_eq!(ValueUnit::Centidegree.to_fixed(-89.996), Some(-9000));
+    assert_eq!(ValueUnit::PulseMicrosecond.to_fixed(1500.4), Some(1500));
+    assert_eq!(ValueUnit::Micrometre.to_fixed(f64::NAN), None);
+    assert_eq!(ValueUnit::Micrometre.to_fixed(3000.0), None); // 3 km in µm overflows i32
+    assert_eq!(ValueUnit::Centidegree.to_natural(-9000), -90.0);
 }
 
 proptest! {
@@ -144,7 +144,7 @@ proptest! {
             kind: FrameKind::from_code(kind).unwrap_or(FrameKind::SetPoint),
             sequence: seq,
             flags: Flags::from_byte(flags).unwrap_or_default(),
-            unit: Unit::from_code(unit).unwrap_or(Unit::Micrometre),
+            unit: ValueUnit::from_code(unit).unwrap_or(ValueUnit::Micrometre),
             values,
         };
         let bytes = frame.encode();

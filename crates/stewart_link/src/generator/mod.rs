@@ -38,11 +38,11 @@ use rsruckig::prelude::{
 };
 use thiserror::Error;
 
-use crate::target::{Motion, Sample};
+use crate::target::{ActuatorMotion, Sample};
 
 /// Whether `m` needs more than twice the speed or acceleration of `bounds` on any actuator:
 /// such a target jumped (a step of teleoperation, a seek, a wrap of a looping motion).
-pub fn jumped(m: &Motion, bounds: &[Bounds; 6]) -> bool {
+pub fn jumped(m: &ActuatorMotion, bounds: &[Bounds; 6]) -> bool {
     (0..6).any(|k| {
         m.velocity[k].abs() > 2.0 * bounds[k].speed
             || m.acceleration[k].abs() > 2.0 * bounds[k].accel
@@ -381,7 +381,7 @@ const MEETING_HORIZON_S: f64 = 20.0;
 pub struct Generator {
     axes: [Axis; 6],
     bounds: [Bounds; 6],
-    state: Motion,
+    state: ActuatorMotion,
 }
 
 impl std::fmt::Debug for Generator {
@@ -407,7 +407,7 @@ impl Generator {
         Self {
             axes: std::array::from_fn(|k| Axis::new(&bounds[k])),
             bounds,
-            state: Motion::at_rest(bounds.map(|b| 0.5 * (b.range.0 + b.range.1))),
+            state: ActuatorMotion::at_rest(bounds.map(|b| 0.5 * (b.range.0 + b.range.1))),
         }
     }
 
@@ -417,13 +417,13 @@ impl Generator {
     }
 
     /// Where the actuators are and how they move (the last values stepped to).
-    pub fn state(&self) -> &Motion {
+    pub fn state(&self) -> &ActuatorMotion {
         &self.state
     }
 
     /// Put the actuators at rest at `position` (arming, a disarmed platform standing there).
     pub fn rest_at(&mut self, position: [f64; 6]) {
-        self.state = Motion::at_rest(position);
+        self.state = ActuatorMotion::at_rest(position);
         for axis in &mut self.axes {
             axis.last_goal = None;
         }
@@ -435,7 +435,7 @@ impl Generator {
     pub fn step(
         &mut self,
         dt: f64,
-        target: &Motion,
+        target: &ActuatorMotion,
         speed_cap: Option<f64>,
     ) -> Result<Reached, GeneratorError> {
         let mut reached = [false; 6];
@@ -490,7 +490,7 @@ impl TargetHistory {
     /// Add the target at time `t` and return its motion — the sample's own, or estimated —
     /// unless that motion [`jumped`]: then it is taken as a target at rest where it now is
     /// (the past forgotten). A time not after the newest replaces the newest.
-    pub fn push_within(&mut self, t: f64, sample: &Sample, bounds: &[Bounds; 6]) -> Motion {
+    pub fn push_within(&mut self, t: f64, sample: &Sample, bounds: &[Bounds; 6]) -> ActuatorMotion {
         let m = match sample {
             Sample::At(p) => self.push(t, *p),
             Sample::Moving(m) => {
@@ -507,7 +507,7 @@ impl TargetHistory {
 
     /// Add the target at time `t` and return its estimated motion. A time not after the
     /// newest replaces the newest.
-    pub fn push(&mut self, t: f64, position: [f64; 6]) -> Motion {
+    pub fn push(&mut self, t: f64, position: [f64; 6]) -> ActuatorMotion {
         if self.len > 0 && t <= self.samples[self.len - 1].0 {
             self.len -= 1;
         }
@@ -517,7 +517,7 @@ impl TargetHistory {
         }
         self.samples[self.len] = (t, position);
         self.len += 1;
-        let mut m = Motion::at_rest(position);
+        let mut m = ActuatorMotion::at_rest(position);
         match &self.samples[..self.len] {
             [(t1, p1), (t2, p2), (t3, p3)] => {
                 let (h1, h2) = (t2 - t1, t3 - t2);

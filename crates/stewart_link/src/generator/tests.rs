@@ -13,7 +13,7 @@ fn generator(speed: f64, accel: Option<f64>, jerk: Option<f64>) -> Generator {
 /// Ticks until every actuator is at `goal` (at rest), stepping `dt` with a resting target;
 /// checks the limits on the way. Returns the number of ticks.
 fn ticks_to(g: &mut Generator, goal: f64, dt: f64) -> usize {
-    let target = Motion::at_rest([goal; 6]);
+    let target = ActuatorMotion::at_rest([goal; 6]);
     let b = g.bounds()[0];
     for n in 1..100_000 {
         let before = *g.state();
@@ -89,7 +89,7 @@ fn a_step_with_a_jerk_limit_takes_the_time_optimal_seven_phases() {
     g.rest_at([0.6; 6]);
     let mut jerks = Vec::new();
     let mut last_a = 0.0;
-    let target = Motion::at_rest([1.0; 6]);
+    let target = ActuatorMotion::at_rest([1.0; 6]);
     let mut n = 0;
     loop {
         n += 1;
@@ -126,7 +126,7 @@ fn the_range_holds_when_the_target_runs_at_its_end() {
     g.rest_at([1.3; 6]);
     let mut top = f64::MIN;
     for k in 0..3000 {
-        let target = Motion {
+        let target = ActuatorMotion {
             position: [RANGE.1; 6],
             velocity: [0.5; 6],
             acceleration: [0.0; 6],
@@ -143,7 +143,10 @@ fn the_range_holds_when_the_target_runs_at_its_end() {
 fn the_target_history_differentiates_parabolas_exactly_on_uneven_ticks() {
     let p = |t: f64| 0.3 + 0.2 * t - 1.5 * t * t;
     let mut h = TargetHistory::default();
-    assert_eq!(h.push(0.0, [p(0.0); 6]), Motion::at_rest([p(0.0); 6]));
+    assert_eq!(
+        h.push(0.0, [p(0.0); 6]),
+        ActuatorMotion::at_rest([p(0.0); 6])
+    );
     // Two samples: the parabola from rest at the first.
     let m = h.push(0.01, [p(0.01); 6]);
     assert!((m.velocity[0] - 2.0 * (p(0.01) - p(0.0)) / 0.01).abs() < 1e-12);
@@ -156,7 +159,7 @@ fn the_target_history_differentiates_parabolas_exactly_on_uneven_ticks() {
     let m = h.push(0.02, [p(0.02); 6]);
     assert!((m.acceleration[0] + 3.0).abs() < 1e-8);
     h.clear();
-    assert_eq!(h.push(1.0, [2.0; 6]), Motion::at_rest([2.0; 6]));
+    assert_eq!(h.push(1.0, [2.0; 6]), ActuatorMotion::at_rest([2.0; 6]));
 }
 
 #[test]
@@ -165,12 +168,12 @@ fn a_braking_distance_exactly_the_distance_left_is_planned() {
     // exactly v²/2a = 0.1249° to go, under the 30°/s home speed (the solver failed here).
     let b = Bounds::new((-70.0, 70.0), Some(300.0), Some(3000.0), None);
     let mut g = Generator::new([b; 6]);
-    g.state = Motion {
+    g.state = ActuatorMotion {
         position: [1.266_088_772_998_069_4; 6],
         velocity: [27.374_999_999_984_833; 6],
         acceleration: [-3000.0; 6],
     };
-    let home = Motion::at_rest([1.390_987_210_497_931; 6]);
+    let home = ActuatorMotion::at_rest([1.390_987_210_497_931; 6]);
     let mut reached = false;
     for _ in 0..50 {
         let r = g.step(0.001_000_000_000_001_222_1, &home, Some(30.0));

@@ -38,7 +38,7 @@
 
 use crate::generator::{Bounds, Generator, TargetHistory};
 
-use crate::target::{Motion, Sample, TargetError};
+use crate::target::{ActuatorMotion, Sample, TargetError};
 
 /// The state of the link.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -182,7 +182,7 @@ impl Supervisor {
     }
 
     /// The last values sent with their velocity and acceleration.
-    pub fn motion(&self) -> &Motion {
+    pub fn motion(&self) -> &ActuatorMotion {
         self.generator.state()
     }
 
@@ -295,7 +295,7 @@ impl Supervisor {
             Some(len) => len,
             None => {
                 let motion = match &target {
-                    Sample::At(p) => Motion::at_rest(*p),
+                    Sample::At(p) => ActuatorMotion::at_rest(*p),
                     Sample::Moving(m) => *m,
                 };
                 let len = ramp_needed(self.ramp_s, &from, &motion, &self.limits);
@@ -351,7 +351,7 @@ impl Supervisor {
         self.history.clear();
         let here = *self.generator.state();
         let bounds = self.generator.bounds();
-        let rest = Motion::at_rest(
+        let rest = ActuatorMotion::at_rest(
             *self
                 .hold_at
                 .get_or_insert_with(|| braking_point(&here, bounds)),
@@ -370,7 +370,7 @@ impl Supervisor {
     }
 
     /// Which limit holds back the actuator furthest from its target (for the note).
-    fn binding_limit(&self, target: &Motion, reached: [bool; 6]) -> &'static str {
+    fn binding_limit(&self, target: &ActuatorMotion, reached: [bool; 6]) -> &'static str {
         let m = self.generator.state();
         let Some(k) = (0..6).filter(|&k| !reached[k]).max_by(|&i, &j| {
             let gap = |k: usize| (target.position[k] - m.position[k]).abs();
@@ -412,10 +412,11 @@ impl Supervisor {
                 (Some("e-stop: at home, disarmed".to_owned()), false)
             }
             StopMode::Home { speed } => {
-                match self
-                    .generator
-                    .step(dt, &Motion::at_rest(self.home), Some(speed.abs()))
-                {
+                match self.generator.step(
+                    dt,
+                    &ActuatorMotion::at_rest(self.home),
+                    Some(speed.abs()),
+                ) {
                     Ok(reached) if reached.all() && self.generator.state().velocity == [0.0; 6] => {
                         self.at_home = true;
                         (Some("e-stop: home reached exactly".to_owned()), true)
@@ -554,7 +555,7 @@ fn ramp(from: &[f64; 6], target: &Sample, u: f64, rate: f64) -> Sample {
             // d/dt of from + (p − from)·s(u), with u' = rate.
             let s1 = 30.0 * u * u * (1.0 - u) * (1.0 - u) * rate;
             let s2 = 60.0 * u * (1.0 - u) * (1.0 - 2.0 * u) * rate * rate;
-            Sample::Moving(Motion {
+            Sample::Moving(ActuatorMotion {
                 position: blend(&m.position),
                 velocity: std::array::from_fn(|k| {
                     m.velocity[k] * s + (m.position[k] - from[k]) * s1
@@ -585,7 +586,12 @@ pub const PLANNED_SHARE: f64 = 0.95;
 /// derivative, the distance D times s's peaks (1.875/T, 5.774/T², 60/T³) and the cross
 /// terms of the target's velocity v and acceleration a: speed D·1.875/T; acceleration
 /// 2v·1.875/T + D·5.774/T²; jerk 3a·1.875/T + 3v·5.774/T² + D·60/T³.
-fn ramp_needed(at_least: f64, from: &[f64; 6], to: &Motion, limits: &ActuatorLimits) -> f64 {
+fn ramp_needed(
+    at_least: f64,
+    from: &[f64; 6],
+    to: &ActuatorMotion,
+    limits: &ActuatorLimits,
+) -> f64 {
     const S1: f64 = 1.875;
     const S2: f64 = 5.773_502_691_896_258;
     const S3: f64 = 60.0;
@@ -612,7 +618,7 @@ fn ramp_needed(at_least: f64, from: &[f64; 6], to: &Motion, limits: &ActuatorLim
 
 /// Where each actuator comes to rest when it brakes as hard as its limits allow from
 /// `here` (kept inside its range).
-fn braking_point(here: &Motion, bounds: &[Bounds; 6]) -> [f64; 6] {
+fn braking_point(here: &ActuatorMotion, bounds: &[Bounds; 6]) -> [f64; 6] {
     std::array::from_fn(|k| {
         let b = &bounds[k];
         let (v, a) = (here.velocity[k], here.acceleration[k]);

@@ -6,7 +6,7 @@
 use proptest::prelude::*;
 
 use super::*;
-use crate::target::{Motion, Sample};
+use crate::target::{ActuatorMotion, Sample};
 
 const HOME: [f64; 6] = [0.0; 6];
 
@@ -359,7 +359,7 @@ proptest! {
             let sample = if estimated {
                 Sample::At(target)
             } else {
-                Sample::Moving(Motion {
+                Sample::Moving(ActuatorMotion {
                     position: target,
                     velocity: [wave(t, 1); 6],
                     acceleration: [wave(t, 2); 6],

@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use crate::boards::Board;
 use crate::channels::ChannelMap;
-use crate::frame::{Decoder, Flags, Frame, FrameKind};
+use crate::frame::{Flags, Frame, FrameDecoder, FrameKind};
 use crate::safety::{LinkState, Supervisor};
 use crate::target::Target;
 use crate::telemetry::{Matcher, Row, TelemetryStats};
@@ -22,7 +22,7 @@ use crate::transport::Transport;
 
 /// Binary frames, text lines, or a board's own bytes.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Format {
+pub enum WireFormat {
     /// The 34-byte frame.
     Binary,
     /// The `S,seq,…` line.
@@ -178,7 +178,7 @@ pub struct SenderConfig {
     /// Ticks per second (10–1000).
     pub rate_hz: f64,
     /// Frames or lines.
-    pub format: Format,
+    pub format: WireFormat,
     /// Values to wire.
     pub map: ChannelMap,
     /// The safety state machine (starts disarmed).
@@ -294,7 +294,7 @@ impl Sender {
 /// set-points it answers.
 #[derive(Default)]
 struct Telemetry {
-    decoder: Decoder,
+    decoder: FrameDecoder,
     frames: u64,
     latest: Option<(f64, Frame)>,
     last_at: Option<Instant>,
@@ -506,15 +506,17 @@ impl Stream {
             values,
         };
         let sent = match &self.config.format {
-            Format::Binary => Some(self.transport.send(t, &frame.encode())),
-            Format::Text => text::line(&frame).map(|line| self.transport.send(t, line.as_bytes())),
-            Format::Template(template) => (tick.armed || tick.home).then(|| {
+            WireFormat::Binary => Some(self.transport.send(t, &frame.encode())),
+            WireFormat::Text => {
+                text::line(&frame).map(|line| self.transport.send(t, line.as_bytes()))
+            }
+            WireFormat::Template(template) => (tick.armed || tick.home).then(|| {
                 self.bytes.clear();
                 let ranges = &self.config.supervisor.limits().range;
                 template.encode(&tick.values, ranges, &mut self.bytes);
                 self.transport.send(t, &self.bytes)
             }),
-            Format::Board(board) => {
+            WireFormat::Board(board) => {
                 let board = board.clone();
                 self.send_to_boards(&board, t, &tick)
             }

@@ -5,7 +5,7 @@ use std::sync::{Arc, Mutex};
 
 use super::*;
 use crate::channels::Output;
-use crate::frame::{Decoder, Unit};
+use crate::frame::{FrameDecoder, ValueUnit};
 use crate::safety::{ActuatorLimits, StopMode};
 use crate::target::Sample;
 use crate::transport::TransportError;
@@ -51,7 +51,7 @@ fn supervisor(ramp_s: f64, stop: StopMode) -> Supervisor {
 fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
     SenderConfig {
         rate_hz,
-        format: Format::Binary,
+        format: WireFormat::Binary,
         map: ChannelMap::identity(Output::ServoCentidegree),
         supervisor: supervisor(0.05, StopMode::Home { speed: 400.0 }),
         arm_at_start: true,
@@ -61,7 +61,7 @@ fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
 }
 
 fn frames(sent: &[(f64, Vec<u8>)]) -> Vec<(f64, Frame)> {
-    let mut d = Decoder::new();
+    let mut d = FrameDecoder::new();
     sent.iter()
         .map(|(t, b)| {
             let f = b.iter().filter_map(|&x| d.push(x)).next();
@@ -97,7 +97,7 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
     assert!(ticks > 60 && ticks < 80, "{ticks}");
     for (k, (t, f)) in frames.iter().enumerate() {
         assert_eq!(f.sequence as usize, k);
-        assert_eq!(f.unit, Unit::Centidegree);
+        assert_eq!(f.unit, ValueUnit::Centidegree);
         // On the deadline grid, one tick apart unless the machine stalled (then later).
         assert!(
             (t * 200.0 - (t * 200.0).round()).abs() < 1e-9,

@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use super::*;
 use crate::channels::Output;
-use crate::frame::{Flags, FrameKind, Unit};
+use crate::frame::{Flags, FrameKind, ValueUnit};
 
 fn telemetry(sequence: u16, values: [i32; 6]) -> Frame {
     Frame {
@@ -15,7 +15,7 @@ fn telemetry(sequence: u16, values: [i32; 6]) -> Frame {
             armed: true,
             ..Flags::default()
         },
-        unit: Unit::Micrometre,
+        unit: ValueUnit::Micrometre,
         values,
     }
 }

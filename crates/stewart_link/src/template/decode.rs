@@ -3,7 +3,7 @@
 //! skipped (counted) and matching starts again, so a stream joined in the middle of a frame,
 //! or a damaged byte, costs one frame.
 
-use super::{FieldType, Piece, Template};
+use super::{FieldType, Template, TemplatePiece};
 
 /// The numbers of one frame: each actuator's field as written (`None` where the template
 /// has none for it; the last, when it has several).
@@ -83,12 +83,12 @@ impl TemplateDecoder {
         let mut at = 0;
         for piece in self.template.pieces() {
             match *piece {
-                Piece::Byte(want) => match b.get(at) {
+                TemplatePiece::Byte(want) => match b.get(at) {
                     None => return Match::Wait,
                     Some(&got) if got == want => at += 1,
                     Some(_) => return Match::No,
                 },
-                Piece::Field { actuator, kind } => match read(kind, &b[at..]) {
+                TemplatePiece::Field { actuator, kind } => match read(kind, &b[at..]) {
                     Read::Value(n, len) => {
                         frame[actuator] = Some(n);
                         at += len;

@@ -117,7 +117,7 @@ impl FieldType {
 
 /// One piece of a template.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Piece {
+pub enum TemplatePiece {
     /// A byte, as it is.
     Byte(u8),
     /// An actuator's value (`actuator`: 0–5).
@@ -132,7 +132,7 @@ pub enum Piece {
 /// A parsed template.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Template {
-    pieces: Vec<Piece>,
+    pieces: Vec<TemplatePiece>,
     text: String,
 }
 
@@ -173,7 +173,7 @@ impl Template {
                     return refuse(column, format!("`{c}` closes nothing"));
                 }
                 c if c.is_ascii() && !c.is_ascii_control() => {
-                    pieces.push(Piece::Byte(c as u8));
+                    pieces.push(TemplatePiece::Byte(c as u8));
                     k += 1;
                 }
                 c => {
@@ -190,13 +190,13 @@ impl Template {
         // A `dec` field's digits end where the next byte is not a digit: it must be
         // followed by one, or no board (and no reader) can tell where the number ends.
         for (k, piece) in pieces.iter().enumerate() {
-            if let Piece::Field {
+            if let TemplatePiece::Field {
                 kind: FieldType::Dec,
                 actuator,
             } = piece
             {
                 let next = pieces.get(k + 1);
-                if !matches!(next, Some(Piece::Byte(b)) if !b.is_ascii_digit()) {
+                if !matches!(next, Some(TemplatePiece::Byte(b)) if !b.is_ascii_digit()) {
                     return refuse(
                         column_of(&chars, k),
                         format!(
@@ -207,7 +207,10 @@ impl Template {
                 }
             }
         }
-        if !pieces.iter().any(|p| matches!(p, Piece::Field { .. })) {
+        if !pieces
+            .iter()
+            .any(|p| matches!(p, TemplatePiece::Field { .. }))
+        {
             return refuse(
                 chars.len().max(1),
                 "no actuator: write at least one {aK:T}, such as {a1:u16be}".into(),
@@ -220,7 +223,7 @@ impl Template {
     }
 
     /// The pieces, in order.
-    pub fn pieces(&self) -> &[Piece] {
+    pub fn pieces(&self) -> &[TemplatePiece] {
         &self.pieces
     }
 
@@ -233,8 +236,8 @@ impl Template {
     pub fn max_len(&self) -> usize {
         (self.pieces.iter())
             .map(|p| match p {
-                Piece::Byte(_) => 1,
-                Piece::Field { kind, .. } => match kind {
+                TemplatePiece::Byte(_) => 1,
+                TemplatePiece::Field { kind, .. } => match kind {
                     FieldType::U8 => 1,
                     FieldType::U24Be | FieldType::Dec3 => 3,
                     FieldType::U32Be => 4,
@@ -251,8 +254,8 @@ impl Template {
     pub fn encode(&self, values: &[f64; 6], ranges: &[(f64, f64); 6], out: &mut Vec<u8>) {
         for piece in &self.pieces {
             match *piece {
-                Piece::Byte(b) => out.push(b),
-                Piece::Field { actuator, kind } => {
+                TemplatePiece::Byte(b) => out.push(b),
+                TemplatePiece::Field { actuator, kind } => {
                     kind.write(scaled(values[actuator], ranges[actuator], kind), out);
                 }
             }
@@ -295,16 +298,16 @@ fn column_of(chars: &[char], index: usize) -> usize {
 }
 
 /// The byte of `<N>`.
-fn byte(inside: &str) -> Result<Piece, String> {
+fn byte(inside: &str) -> Result<TemplatePiece, String> {
     match inside.trim().parse::<u32>() {
-        Ok(n) if n <= 255 => Ok(Piece::Byte(n as u8)),
+        Ok(n) if n <= 255 => Ok(TemplatePiece::Byte(n as u8)),
         Ok(n) => Err(format!("<{n}> is over 255: a byte is 0 to 255")),
         Err(_) => Err(format!("<{inside}> is not a byte: write <0> to <255>")),
     }
 }
 
 /// The field of `{aK:T}`.
-fn field(inside: &str) -> Result<Piece, String> {
+fn field(inside: &str) -> Result<TemplatePiece, String> {
     let names = || {
         (FieldType::ALL.iter())
             .map(|(_, n)| *n)
@@ -325,7 +328,7 @@ fn field(inside: &str) -> Result<Piece, String> {
         .find(|(_, n)| *n == kind.trim())
         .map(|(t, _)| *t)
         .ok_or_else(|| format!("`{kind}` is not a type: {}", names()))?;
-    Ok(Piece::Field {
+    Ok(TemplatePiece::Field {
         actuator: k - 1,
         kind,
     })

@@ -22,7 +22,7 @@
 //! [`Reading::Ignored`].
 
 use super::fields::vector_at;
-use super::{Format, Reading, VehicleError, VehicleSample};
+use super::{Reading, VehicleError, VehicleFormat, VehicleSample};
 
 /// The MotionSim packet's length.
 pub const MOTION_SIM_BYTES: usize = 88;
@@ -39,7 +39,7 @@ const RATES: usize = 64;
 pub(crate) fn motion_sim(bytes: &[u8]) -> Result<Reading, VehicleError> {
     if bytes.len() != MOTION_SIM_BYTES {
         return Err(VehicleError::Length {
-            format: Format::BeamNg,
+            format: VehicleFormat::BeamNg,
             got: bytes.len(),
             expected: "88",
         });

@@ -31,7 +31,7 @@
 //! (braking reads `ax < 0`, a left turn `ay > 0`).
 
 use super::fields::{f32_at, u16_at, u32_at, vector_at};
-use super::{Format, GRAVITY, Reading, VehicleError, VehicleSample};
+use super::{GRAVITY, Reading, VehicleError, VehicleFormat, VehicleSample};
 
 /// The formats read: F1 24's and F1 25's.
 pub const PACKET_FORMATS: [u16; 2] = [2024, 2025];
@@ -96,7 +96,7 @@ pub(crate) fn packet(bytes: &[u8], pairing: &mut Pairing) -> Result<Reading, Veh
     let length = |expected: usize| match bytes.len() == expected {
         true => Ok(()),
         false => Err(VehicleError::Length {
-            format: Format::F1,
+            format: VehicleFormat::F1,
             got: bytes.len(),
             expected: match expected {
                 e if e == MOTION.1 => "1349 for Motion",

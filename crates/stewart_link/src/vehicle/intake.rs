@@ -1,6 +1,6 @@
-//! Datagrams in, samples out: the one loop that decodes a datagram ([`Decoder`]), places
+//! Datagrams in, samples out: the one loop that decodes a datagram ([`VehicleDecoder`]), places
 //! its sample on the time line ([`Timeline`]) and counts what it was ([`Tally`], by
-//! [`Format`]). The live link, a replayed capture and `stewart telemetry` all read through
+//! [`VehicleFormat`]). The live link, a replayed capture and `stewart telemetry` all read through
 //! it, so they agree datagram for datagram.
 //!
 //! A sender's clock may start again (a new F1 session, a restarted game): after the game
@@ -9,14 +9,14 @@
 //! rule is the intake's, by arrival times, so a capture replayed gives what the live link
 //! took.
 
-use super::timeline::{Placed, Placement, Step, Timeline};
-use super::{Decoder, Format, MAX_TIME_S, Reading, VehicleError};
+use super::timeline::{Placed, PushOutcome, Step, Timeline};
+use super::{MAX_TIME_S, Reading, VehicleDecoder, VehicleError, VehicleFormat};
 
 /// What one datagram was.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Intaken {
     /// A sample, and what became of it on the time line.
-    Sample(Placement),
+    Sample(PushOutcome),
     /// The game in its menus or paused.
     Idle,
     /// Nothing to use (another packet of the game's, the first half of a pair).
@@ -30,8 +30,8 @@ pub enum Intaken {
 pub struct Tally {
     /// Datagrams taken.
     pub datagrams: u64,
-    /// Datagrams per format recognised, in the order of [`Format::ALL`].
-    per_format: [u64; Format::ALL.len()],
+    /// Datagrams per format recognised, in the order of [`VehicleFormat::ALL`].
+    per_format: [u64; VehicleFormat::ALL.len()],
     /// Samples placed on the time line as samples of their own (a clockless sample that
     /// replaced the last, arriving with it, is not counted again).
     pub placed: u64,
@@ -53,13 +53,13 @@ pub struct Tally {
 
 impl Tally {
     /// Datagrams of `format` so far.
-    pub fn of(&self, format: Format) -> u64 {
+    pub fn of(&self, format: VehicleFormat) -> u64 {
         self.per_format[format.index()]
     }
 
-    /// The formats that arrived, with their datagrams, in the order of [`Format::ALL`].
-    pub fn formats(&self) -> impl Iterator<Item = (Format, u64)> + '_ {
-        Format::ALL
+    /// The formats that arrived, with their datagrams, in the order of [`VehicleFormat::ALL`].
+    pub fn formats(&self) -> impl Iterator<Item = (VehicleFormat, u64)> + '_ {
+        VehicleFormat::ALL
             .iter()
             .zip(self.per_format)
             .filter(|(_, n)| *n > 0)
@@ -70,7 +70,7 @@ impl Tally {
 /// Reads datagrams into placed samples, counting them.
 #[derive(Debug)]
 pub struct Intake {
-    decoder: Decoder,
+    decoder: VehicleDecoder,
     timeline: Timeline,
     tally: Tally,
     /// Silent this long (seconds of arrival), the input has stalled: a new stretch.
@@ -92,7 +92,7 @@ impl Intake {
     /// An intake that has seen nothing, taking a silence of `stall_s` seconds as a stall.
     pub fn new(stall_s: f64) -> Self {
         Self {
-            decoder: Decoder::new(),
+            decoder: VehicleDecoder::new(),
             timeline: Timeline::new(),
             tally: Tally::default(),
             stall_s,
@@ -102,7 +102,7 @@ impl Intake {
 
     /// Take one datagram arriving at `arrival` (seconds on the receiver's clock): its
     /// format, what it was, and the samples it placed (oldest first).
-    pub fn take(&mut self, bytes: &[u8], arrival: f64) -> (Option<Format>, Intaken, Placed) {
+    pub fn take(&mut self, bytes: &[u8], arrival: f64) -> (Option<VehicleFormat>, Intaken, Placed) {
         if self
             .last_arrival
             .is_some_and(|last| arrival - last > self.stall_s)
@@ -135,9 +135,9 @@ impl Intake {
                 let tally = &mut self.tally;
                 tally.placed += placed.iter().filter(|p| p.step != Step::Same).count() as u64;
                 match placement {
-                    Placement::Repeat => tally.repeats += 1,
-                    Placement::Stale => tally.stale += 1,
-                    Placement::Placed | Placement::Held => {}
+                    PushOutcome::Repeat => tally.repeats += 1,
+                    PushOutcome::Stale => tally.stale += 1,
+                    PushOutcome::Placed | PushOutcome::Held => {}
                 }
                 Intaken::Sample(placement)
             }
@@ -191,16 +191,16 @@ mod tests {
         let mut intake = Intake::new(0.5);
         for (k, arrival) in [0.0, 0.1, 0.2].into_iter().enumerate() {
             let (_, what, _) = intake.take(text(10.0 + k as f64 * 0.1, 1.0).as_bytes(), arrival);
-            assert_eq!(what, Intaken::Sample(Placement::Placed));
+            assert_eq!(what, Intaken::Sample(PushOutcome::Placed));
         }
         // Back to 0 at once: older than the last, dropped.
         let (_, what, _) = intake.take(text(0.0, 2.0).as_bytes(), 0.3);
-        assert_eq!(what, Intaken::Sample(Placement::Stale));
+        assert_eq!(what, Intaken::Sample(PushOutcome::Stale));
         // Back to 0 after a second of silence: a new stretch, kept.
         let (_, what, placed) = intake.take(text(0.05, 2.0).as_bytes(), 1.3);
         assert_eq!(
             (what, placed.len()),
-            (Intaken::Sample(Placement::Placed), 1)
+            (Intaken::Sample(PushOutcome::Placed), 1)
         );
         assert_eq!(intake.tally().restarts, 1);
         // A clockless sample beyond the tables' times is refused by name.

@@ -19,7 +19,7 @@
 //! | OutGauge (BeamNG, Live for Speed): a dashboard, no motion | [`beamng`] | 92 or 96 bytes |
 //! | Live for Speed OutSim (classic, and `LFST` packs) | [`outsim`] | 64 or 68 bytes; `LFST` |
 //!
-//! A [`Decoder`] keeps what spans datagrams: F1's two packets of one frame are paired,
+//! A [`VehicleDecoder`] keeps what spans datagrams: F1's two packets of one frame are paired,
 //! and the games' millisecond clocks are unwrapped. Anything that cannot be read is
 //! refused with the reason (the receiver counts it), never a panic.
 
@@ -78,7 +78,7 @@ pub struct VehicleSample {
 
 /// The formats a datagram can be in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Format {
+pub enum VehicleFormat {
     /// `t,ax,ay,az,wx,wy,wz` as text.
     Text,
     /// The same seven numbers as little-endian `f32`.
@@ -107,25 +107,25 @@ pub enum Format {
     OutSimPack,
 }
 
-impl Format {
+impl VehicleFormat {
     /// Every format.
-    pub const ALL: [Format; 13] = [
-        Format::Text,
-        Format::Binary,
-        Format::XPlaneData,
-        Format::XPlaneRref,
-        Format::ForzaSled,
-        Format::ForzaDash,
-        Format::ForzaHorizon,
-        Format::ForzaMotorsport2023,
-        Format::F1,
-        Format::BeamNg,
-        Format::OutGauge,
-        Format::OutSim,
-        Format::OutSimPack,
+    pub const ALL: [VehicleFormat; 13] = [
+        VehicleFormat::Text,
+        VehicleFormat::Binary,
+        VehicleFormat::XPlaneData,
+        VehicleFormat::XPlaneRref,
+        VehicleFormat::ForzaSled,
+        VehicleFormat::ForzaDash,
+        VehicleFormat::ForzaHorizon,
+        VehicleFormat::ForzaMotorsport2023,
+        VehicleFormat::F1,
+        VehicleFormat::BeamNg,
+        VehicleFormat::OutGauge,
+        VehicleFormat::OutSim,
+        VehicleFormat::OutSimPack,
     ];
 
-    /// The format's place in [`Format::ALL`].
+    /// The format's place in [`VehicleFormat::ALL`].
     pub fn index(self) -> usize {
         self as usize
     }
@@ -133,19 +133,19 @@ impl Format {
     /// The format's name, as people know it (the same in every language).
     pub fn name(self) -> &'static str {
         match self {
-            Format::Text => "generic text",
-            Format::Binary => "generic f32",
-            Format::XPlaneData => "X-Plane DATA",
-            Format::XPlaneRref => "X-Plane RREF",
-            Format::ForzaSled => "Forza Sled",
-            Format::ForzaDash => "Forza Motorsport 7 Dash",
-            Format::ForzaHorizon => "Forza Horizon",
-            Format::ForzaMotorsport2023 => "Forza Motorsport (2023)",
-            Format::F1 => "F1 24/25",
-            Format::BeamNg => "BeamNG MotionSim",
-            Format::OutGauge => "OutGauge",
-            Format::OutSim => "LFS OutSim",
-            Format::OutSimPack => "LFS OutSim (LFST)",
+            VehicleFormat::Text => "generic text",
+            VehicleFormat::Binary => "generic f32",
+            VehicleFormat::XPlaneData => "X-Plane DATA",
+            VehicleFormat::XPlaneRref => "X-Plane RREF",
+            VehicleFormat::ForzaSled => "Forza Sled",
+            VehicleFormat::ForzaDash => "Forza Motorsport 7 Dash",
+            VehicleFormat::ForzaHorizon => "Forza Horizon",
+            VehicleFormat::ForzaMotorsport2023 => "Forza Motorsport (2023)",
+            VehicleFormat::F1 => "F1 24/25",
+            VehicleFormat::BeamNg => "BeamNG MotionSim",
+            VehicleFormat::OutGauge => "OutGauge",
+            VehicleFormat::OutSim => "LFS OutSim",
+            VehicleFormat::OutSimPack => "LFS OutSim (LFST)",
         }
     }
 }
@@ -169,7 +169,7 @@ pub enum Reading {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Decoded {
     /// The format recognised (`None`: none was).
-    pub format: Option<Format>,
+    pub format: Option<VehicleFormat>,
     /// What the datagram brings.
     pub reading: Result<Reading, VehicleError>,
 }
@@ -195,7 +195,7 @@ pub enum VehicleError {
     #[error("{format:?}: {got} bytes, not {expected}")]
     Length {
         /// The format its magic or header names.
-        format: Format,
+        format: VehicleFormat,
         /// The length received.
         got: usize,
         /// The lengths allowed, in words.
@@ -222,13 +222,13 @@ pub enum VehicleError {
 /// Reads datagrams of any format, keeping what spans them: F1's `Motion` and `Motion Ex`
 /// of one frame paired, and the games' millisecond clocks unwrapped.
 #[derive(Debug, Default)]
-pub struct Decoder {
+pub struct VehicleDecoder {
     f1: f1::Pairing,
     forza_clock: WrappingClock,
     outsim_clock: WrappingClock,
 }
 
-impl Decoder {
+impl VehicleDecoder {
     /// A decoder that has seen nothing.
     pub fn new() -> Self {
         Self::default()
@@ -243,50 +243,52 @@ impl Decoder {
         }
     }
 
-    fn read(&mut self, bytes: &[u8]) -> (Option<Format>, Result<Reading, VehicleError>) {
+    fn read(&mut self, bytes: &[u8]) -> (Option<VehicleFormat>, Result<Reading, VehicleError>) {
         let n = bytes.len();
         let magic = bytes.get(..4).unwrap_or(&[]);
         match magic {
-            b"DATA" => return (Some(Format::XPlaneData), xplane::data(bytes)),
-            b"RREF" => return (Some(Format::XPlaneRref), xplane::rref(bytes)),
-            b"BNG1" => return (Some(Format::BeamNg), beamng::motion_sim(bytes)),
+            b"DATA" => return (Some(VehicleFormat::XPlaneData), xplane::data(bytes)),
+            b"RREF" => return (Some(VehicleFormat::XPlaneRref), xplane::rref(bytes)),
+            b"BNG1" => return (Some(VehicleFormat::BeamNg), beamng::motion_sim(bytes)),
             b"LFST" => {
                 let reading = outsim::pack(bytes, &mut self.outsim_clock);
-                return (Some(Format::OutSimPack), reading);
+                return (Some(VehicleFormat::OutSimPack), reading);
             }
             _ => {}
         }
         // Printable bytes are text first (a text line may have any length).
         let text = generic::as_text(bytes).map(generic::text);
         match text {
-            Some(Ok(sample)) => return (Some(Format::Text), Ok(Reading::Sample(sample))),
+            Some(Ok(sample)) => return (Some(VehicleFormat::Text), Ok(Reading::Sample(sample))),
             // Printable bytes that are not seven numbers are a text error — but 28 of them
             // may be seven f32 that happen to print.
             Some(Err(e)) if n != generic::BINARY_BYTES => return (None, Err(e)),
             _ => {}
         }
         let format = match n {
-            generic::BINARY_BYTES => Some(Format::Binary),
-            forza::SLED_BYTES => Some(Format::ForzaSled),
-            forza::DASH_BYTES => Some(Format::ForzaDash),
-            forza::HORIZON_BYTES => Some(Format::ForzaHorizon),
-            forza::MOTORSPORT_2023_BYTES => Some(Format::ForzaMotorsport2023),
-            outsim::CLASSIC_BYTES | outsim::CLASSIC_WITH_ID_BYTES => Some(Format::OutSim),
-            beamng::OUTGAUGE_BYTES | beamng::OUTGAUGE_WITH_ID_BYTES => Some(Format::OutGauge),
-            _ if f1::is_f1(bytes) => Some(Format::F1),
+            generic::BINARY_BYTES => Some(VehicleFormat::Binary),
+            forza::SLED_BYTES => Some(VehicleFormat::ForzaSled),
+            forza::DASH_BYTES => Some(VehicleFormat::ForzaDash),
+            forza::HORIZON_BYTES => Some(VehicleFormat::ForzaHorizon),
+            forza::MOTORSPORT_2023_BYTES => Some(VehicleFormat::ForzaMotorsport2023),
+            outsim::CLASSIC_BYTES | outsim::CLASSIC_WITH_ID_BYTES => Some(VehicleFormat::OutSim),
+            beamng::OUTGAUGE_BYTES | beamng::OUTGAUGE_WITH_ID_BYTES => {
+                Some(VehicleFormat::OutGauge)
+            }
+            _ if f1::is_f1(bytes) => Some(VehicleFormat::F1),
             _ => None,
         };
         let reading = match format {
-            Some(Format::Binary) => Ok(generic::binary(bytes)),
+            Some(VehicleFormat::Binary) => Ok(generic::binary(bytes)),
             Some(
-                Format::ForzaSled
-                | Format::ForzaDash
-                | Format::ForzaHorizon
-                | Format::ForzaMotorsport2023,
+                VehicleFormat::ForzaSled
+                | VehicleFormat::ForzaDash
+                | VehicleFormat::ForzaHorizon
+                | VehicleFormat::ForzaMotorsport2023,
             ) => Ok(forza::sled(bytes, &mut self.forza_clock)),
-            Some(Format::OutSim) => Ok(outsim::classic(bytes, &mut self.outsim_clock)),
-            Some(Format::OutGauge) => Ok(Reading::Ignored),
-            Some(Format::F1) => f1::packet(bytes, &mut self.f1),
+            Some(VehicleFormat::OutSim) => Ok(outsim::classic(bytes, &mut self.outsim_clock)),
+            Some(VehicleFormat::OutGauge) => Ok(Reading::Ignored),
+            Some(VehicleFormat::F1) => f1::packet(bytes, &mut self.f1),
             _ => match text {
                 Some(Err(e)) => Err(e),
                 _ => Err(VehicleError::Unknown(n)),
@@ -299,7 +301,7 @@ impl Decoder {
 /// Decode one datagram alone (no F1 pairing, no clock unwrapping across datagrams): the
 /// sample, or why there is none.
 pub fn decode(bytes: &[u8]) -> Result<VehicleSample, VehicleError> {
-    match Decoder::new().decode(bytes).reading? {
+    match VehicleDecoder::new().decode(bytes).reading? {
         Reading::Sample(sample) => Ok(sample),
         Reading::Idle | Reading::Ignored => Err(VehicleError::Unknown(bytes.len())),
     }

@@ -20,7 +20,7 @@
 //! accelerations are taken without gravity.
 
 use super::fields::{u32_at, vector_at};
-use super::{Format, Reading, VehicleError, VehicleSample, WrappingClock};
+use super::{Reading, VehicleError, VehicleFormat, VehicleSample, WrappingClock};
 
 /// The classic packet's length.
 pub const CLASSIC_BYTES: usize = 64;
@@ -60,7 +60,7 @@ pub(crate) fn classic(bytes: &[u8], clock: &mut WrappingClock) -> Reading {
 pub(crate) fn pack(bytes: &[u8], clock: &mut WrappingClock) -> Result<Reading, VehicleError> {
     if !PACK_BYTES.contains(&bytes.len()) {
         return Err(VehicleError::Length {
-            format: Format::OutSimPack,
+            format: VehicleFormat::OutSimPack,
             got: bytes.len(),
             expected: "272 or 280 (OutSim Opts ff or 1ff)",
         });

@@ -11,7 +11,7 @@
 use std::collections::BTreeMap;
 
 use super::intake::{Intake, Intaken, Tally};
-use super::timeline::{Placement, Step, Timed};
+use super::timeline::{PushOutcome, Step, Timed};
 use crate::capture::Datagram;
 
 /// The telemetry of one port of a capture.
@@ -45,7 +45,7 @@ pub fn replay(datagrams: &[Datagram], port: Option<u16>, stall_s: f64) -> Replay
             continue;
         }
         let (_, what, placed) = intake.take(&d.payload, d.time_s);
-        if what == Intaken::Sample(Placement::Held) {
+        if what == Intaken::Sample(PushOutcome::Held) {
             held.push(d.packet);
         }
         let released = placed.len().saturating_sub(1);
@@ -72,7 +72,10 @@ pub fn telemetry_port(datagrams: &[Datagram]) -> Option<u16> {
         let (_, what, _) = intake.take(&d.payload, d.time_s);
         let counts = ports.entry(d.port).or_default();
         counts.1 += 1;
-        if matches!(what, Intaken::Sample(Placement::Placed | Placement::Held)) {
+        if matches!(
+            what,
+            Intaken::Sample(PushOutcome::Placed | PushOutcome::Held)
+        ) {
             counts.0 += 1;
         }
     }

@@ -55,13 +55,13 @@ fn the_generic_forms_decode_to_the_same_motion() {
         .flat_map(|v| v.to_le_bytes())
         .collect();
     assert_eq!(decode(&binary), Ok(text));
-    let mut d = Decoder::new();
-    assert_eq!(d.decode(&binary).format, Some(Format::Binary));
-    assert_eq!(d.decode(b"1,0,0,0,0,0,0").format, Some(Format::Text));
+    let mut d = VehicleDecoder::new();
+    assert_eq!(d.decode(&binary).format, Some(VehicleFormat::Binary));
+    assert_eq!(d.decode(b"1,0,0,0,0,0,0").format, Some(VehicleFormat::Text));
     // A text line of a binary format's length is still text.
     let line = format!("{:<63}\n", "1,2,3,4,5,6,7");
     assert_eq!(line.len(), outsim::CLASSIC_BYTES);
-    assert_eq!(d.decode(line.as_bytes()).format, Some(Format::Text));
+    assert_eq!(d.decode(line.as_bytes()).format, Some(VehicleFormat::Text));
 }
 
 #[test]
@@ -106,9 +106,9 @@ fn x_plane_rref_replies_give_the_same_motion_as_data() {
         reply.extend(index.to_le_bytes());
         reply.extend(value.to_le_bytes());
     }
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let decoded = d.decode(&reply);
-    assert_eq!(decoded.format, Some(Format::XPlaneRref));
+    assert_eq!(decoded.format, Some(VehicleFormat::XPlaneRref));
     let from_rref = sample_of(&decoded);
     let from_data = decode(&xplane_datagram([1.3, 0.5, 0.2], [0.2, 0.1, 0.3]))
         .unwrap_or_else(|e| panic!("{e}"));
@@ -123,7 +123,7 @@ fn x_plane_rref_replies_give_the_same_motion_as_data() {
     assert!(matches!(
         d.decode(&reply[..reply.len() - 3]).reading,
         Err(VehicleError::Length {
-            format: Format::XPlaneRref,
+            format: VehicleFormat::XPlaneRref,
             ..
         })
     ));
@@ -159,13 +159,13 @@ fn forza(len: usize, ms: u32, accel: [f32; 3], velocity: [f32; 3], omega: [f32; 
 #[test]
 fn forza_packets_of_every_length_give_the_sled_motion_in_our_axes() {
     for (len, format) in [
-        (232, Format::ForzaSled),
-        (311, Format::ForzaDash),
-        (324, Format::ForzaHorizon),
-        (331, Format::ForzaMotorsport2023),
+        (232, VehicleFormat::ForzaSled),
+        (311, VehicleFormat::ForzaDash),
+        (324, VehicleFormat::ForzaHorizon),
+        (331, VehicleFormat::ForzaMotorsport2023),
     ] {
         let p = forza(len, 1500, [1.0, 2.0, -3.0], [0.0; 3], [0.1, 0.2, 0.3]);
-        let decoded = Decoder::new().decode(&p);
+        let decoded = VehicleDecoder::new().decode(&p);
         assert_eq!(decoded.format, Some(format));
         let s = sample_of(&decoded);
         assert_eq!(s.t, Some(0.0)); // the first reading
@@ -188,7 +188,7 @@ fn forzas_left_handed_rates_are_settled_by_its_own_turning_car() {
     // ω × (0, 0, 20) = (20 ωY, −20 ωX, 0) = (−10, 0, 0): ωY = −0.5.
     let (v, w) = (20.0f32, 0.5f32);
     let p = forza(232, 0, [-v * w, 0.0, 0.0], [0.0, 0.0, v], [0.0, -w, 0.0]);
-    let s = sample_of(&Decoder::new().decode(&p));
+    let s = sample_of(&VehicleDecoder::new().decode(&p));
     // Ours: a left turn is a positive yaw rate, the acceleration to the left, and
     // a = ω × v holds in our right-handed axes too: ay = wz·vx.
     assert!(s.rates_deg_s[2] > 0.0 && s.accel[1] > 0.0, "{s:?}");
@@ -197,7 +197,7 @@ fn forzas_left_handed_rates_are_settled_by_its_own_turning_car() {
     // Pitching: nose down is positive about our y (left) and about Forza's X (right):
     // the nose (Z) moving down is ω × Z = (ωX, 0, 0) × (0, 0, 1) = (0, −ωX, 0), down.
     let p = forza(232, 0, [0.0; 3], [0.0; 3], [0.4, 0.0, 0.0]);
-    let s = sample_of(&Decoder::new().decode(&p));
+    let s = sample_of(&VehicleDecoder::new().decode(&p));
     assert!(
         (s.rates_deg_s[1] - 0.4f64.to_degrees()).abs() < 1e-4,
         "{s:?}"
@@ -206,7 +206,7 @@ fn forzas_left_handed_rates_are_settled_by_its_own_turning_car() {
 
 #[test]
 fn forza_menus_read_as_idle_and_its_clock_unwraps() {
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let mut menus = forza(324, 10, [5.0; 3], [0.0; 3], [0.0; 3]);
     put_u32(&mut menus, 0, 0);
     assert_eq!(d.decode(&menus).reading, Ok(Reading::Idle));
@@ -243,7 +243,7 @@ fn a_forza_clock_near_its_wrap_gives_the_times_of_one_far_from_it() {
     let times: Vec<Vec<f64>> = starts
         .iter()
         .map(|&start| {
-            let mut d = Decoder::new();
+            let mut d = VehicleDecoder::new();
             (0..10u32)
                 .map(|k| {
                     let ms = start.wrapping_add(16 * k);
@@ -292,11 +292,11 @@ fn f1_motion_ex(time: f32, frame: u32, omega: [f32; 3]) -> Vec<u8> {
 
 #[test]
 fn f1_motion_and_motion_ex_of_one_frame_make_one_sample() {
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let motion = f1_motion(12.5, 700, [0.5, -1.2, 0.1]);
     let ex = f1_motion_ex(12.5, 700, [0.01, 0.2, -0.05]);
     let first = d.decode(&motion);
-    assert_eq!(first.format, Some(Format::F1));
+    assert_eq!(first.format, Some(VehicleFormat::F1));
     assert_eq!(first.reading, Ok(Reading::Ignored));
     let s = sample_of(&d.decode(&ex));
     assert_eq!(s.t, Some(12.5));
@@ -326,13 +326,13 @@ fn f1_motion_and_motion_ex_of_one_frame_make_one_sample() {
     );
     // Other packets (a Car Telemetry, id 6) are nothing to use, and no error.
     let telemetry = d.decode(&f1(1352, 2024, 6, 12.8, 703, 5));
-    assert_eq!(telemetry.format, Some(Format::F1));
+    assert_eq!(telemetry.format, Some(VehicleFormat::F1));
     assert_eq!(telemetry.reading, Ok(Reading::Ignored));
 }
 
 #[test]
 fn every_format_has_its_place_in_the_list() {
-    for (k, format) in Format::ALL.iter().enumerate() {
+    for (k, format) in VehicleFormat::ALL.iter().enumerate() {
         assert_eq!(format.index(), k);
     }
 }
@@ -343,7 +343,7 @@ fn f1_25_packets_pair_as_f1_24_ones_and_a_spectator_is_idle() {
         p[..2].copy_from_slice(&2025u16.to_le_bytes());
         p
     };
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let motion = year(f1_motion(3.0, 9, [0.5, -1.2, 0.1]));
     let mut ex = year(f1_motion_ex(3.0, 9, [0.01, 0.2, -0.05]));
     // The 2025 Motion Ex is 273 bytes; the 2024 length is refused in the 2025 format.
@@ -381,14 +381,14 @@ fn f1_25_packets_pair_as_f1_24_ones_and_a_spectator_is_idle() {
 
 #[test]
 fn f1_packets_of_other_years_lengths_or_cars_are_refused() {
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let old = f1(1349, 2023, 0, 1.0, 1, 0);
     assert_eq!(d.decode(&old).reading, Err(VehicleError::F1Format(2023)));
     let short = f1(1300, 2024, 0, 1.0, 1, 0);
     assert!(matches!(
         d.decode(&short).reading,
         Err(VehicleError::Length {
-            format: Format::F1,
+            format: VehicleFormat::F1,
             got: 1300,
             ..
         })
@@ -410,9 +410,9 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
     put_f32s(&mut p, 4, &[100.0, 200.0, 3.0]); // position, not read
     put_f32s(&mut p, 28, &[1.5, -4.0, 0.25]); // accX (right), accY (forward), accZ (up)
     put_f32s(&mut p, 64, &[0.1, 0.2, 0.3]); // roll, pitch, yaw rates (as the car gives them)
-    let mut d = Decoder::new();
+    let mut d = VehicleDecoder::new();
     let decoded = d.decode(&p);
-    assert_eq!(decoded.format, Some(Format::BeamNg));
+    assert_eq!(decoded.format, Some(VehicleFormat::BeamNg));
     let s = sample_of(&decoded);
     assert_eq!(s.t, None);
     assert!(close(s.accel, [-4.0, -1.5, 0.25], 1e-6), "{s:?}");
@@ -421,7 +421,7 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
     assert!(matches!(
         d.decode(&p[..87]).reading,
         Err(VehicleError::Length {
-            format: Format::BeamNg,
+            format: VehicleFormat::BeamNg,
             ..
         })
     ));
@@ -429,7 +429,7 @@ fn beamng_motion_sim_becomes_our_axes_and_outgauge_is_told_apart() {
         let mut gauge = packet(len, &[]);
         gauge[4..8].copy_from_slice(b"beam");
         let decoded = d.decode(&gauge);
-        assert_eq!(decoded.format, Some(Format::OutGauge));
+        assert_eq!(decoded.format, Some(VehicleFormat::OutGauge));
         assert_eq!(decoded.reading, Ok(Reading::Ignored));
     }
 }
@@ -451,11 +451,11 @@ fn outsim_world_vectors_are_turned_into_the_car() {
         put_f32s(&mut p, base + 4, &[0.0, 0.0, 0.3]); // AngVel (world)
         put_f32s(&mut p, base + 16, &[heading, 0.0, 0.0]); // Heading, Pitch, Roll
         put_f32s(&mut p, base + 28, &[-2.0, -1.0, 0.0]); // Accel (world)
-        let decoded = Decoder::new().decode(&p);
+        let decoded = VehicleDecoder::new().decode(&p);
         let format = if magic.is_empty() {
-            Format::OutSim
+            VehicleFormat::OutSim
         } else {
-            Format::OutSimPack
+            VehicleFormat::OutSimPack
         };
         assert_eq!(decoded.format, Some(format), "{len}");
         let s = sample_of(&decoded);
@@ -466,9 +466,9 @@ fn outsim_world_vectors_are_turned_into_the_car() {
     let mut odd = packet(100, b"LFST");
     odd[99] = 1;
     assert!(matches!(
-        Decoder::new().decode(&odd).reading,
+        VehicleDecoder::new().decode(&odd).reading,
         Err(VehicleError::Length {
-            format: Format::OutSimPack,
+            format: VehicleFormat::OutSimPack,
             ..
         })
     ));
@@ -513,7 +513,7 @@ fn malformed_datagrams_are_refused_with_the_reason() {
     assert!(matches!(
         decode(b"DATA*123"),
         Err(VehicleError::Length {
-            format: Format::XPlaneData,
+            format: VehicleFormat::XPlaneData,
             got: 8,
             ..
         })
@@ -569,7 +569,7 @@ proptest! {
     /// with a number that is not finite.
     #[test]
     fn any_bytes_decode_without_a_panic(selector in any::<u8>(), body in proptest::collection::vec(any::<u8>(), 0..1500)) {
-        let mut d = Decoder::new();
+        let mut d = VehicleDecoder::new();
         for bytes in [body.clone(), steered(selector, body)] {
             let decoded = d.decode(&bytes);
             if let Ok(Reading::Sample(s)) = decoded.reading {

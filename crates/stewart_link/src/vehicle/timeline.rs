@@ -43,7 +43,7 @@ pub struct Timed {
 
 /// What became of a sample pushed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Placement {
+pub enum PushOutcome {
     /// Placed (with any held before it).
     Placed,
     /// Held until the next stamp (its stamp repeats the last, its motion is new).
@@ -103,7 +103,7 @@ impl Timeline {
 
     /// Place `sample`, arriving at `arrival` (seconds on the receiver's clock): what became
     /// of it, and the samples placed.
-    pub fn push(&mut self, sample: VehicleSample, arrival: f64) -> (Placement, Placed) {
+    pub fn push(&mut self, sample: VehicleSample, arrival: f64) -> (PushOutcome, Placed) {
         let mut placed = Placed::NONE;
         let time = sample.t.unwrap_or(arrival);
         let own_clock = sample.t.is_some();
@@ -114,7 +114,7 @@ impl Timeline {
                 sample,
             });
             self.last = Some((time, sample));
-            return (Placement::Placed, placed);
+            return (PushOutcome::Placed, placed);
         };
         if time > last {
             let held = self.held.iter().take_while(|h| h.is_some()).count();
@@ -135,10 +135,10 @@ impl Timeline {
                 sample,
             });
             self.last = Some((time, sample));
-            return (Placement::Placed, placed);
+            return (PushOutcome::Placed, placed);
         }
         if time < last {
-            return (Placement::Stale, placed);
+            return (PushOutcome::Stale, placed);
         }
         // The same time as the last.
         if !own_clock {
@@ -148,18 +148,18 @@ impl Timeline {
                 sample,
             });
             self.last = Some((time, sample));
-            return (Placement::Placed, placed);
+            return (PushOutcome::Placed, placed);
         }
         let newest = self.held.iter().flatten().last().unwrap_or(&last_sample);
         if same_motion(newest, &sample) {
-            return (Placement::Repeat, placed);
+            return (PushOutcome::Repeat, placed);
         }
         match self.held.iter_mut().find(|h| h.is_none()) {
             Some(slot) => {
                 *slot = Some(sample);
-                (Placement::Held, placed)
+                (PushOutcome::Held, placed)
             }
-            None => (Placement::Stale, placed),
+            None => (PushOutcome::Stale, placed),
         }
     }
 
@@ -214,16 +214,16 @@ mod tests {
         let (p, placed) = line.push(at(Some(0.0), 1.0), 0.0);
         assert_eq!(
             (p, times(&placed)),
-            (Placement::Placed, vec![(0.0, Step::First, 1.0)])
+            (PushOutcome::Placed, vec![(0.0, Step::First, 1.0)])
         );
         // Two more on the same stamp, each new: held.
-        assert_eq!(line.push(at(Some(0.0), 2.0), 0.01).0, Placement::Held);
-        assert_eq!(line.push(at(Some(0.0), 3.0), 0.02).0, Placement::Held);
+        assert_eq!(line.push(at(Some(0.0), 2.0), 0.01).0, PushOutcome::Held);
+        assert_eq!(line.push(at(Some(0.0), 3.0), 0.02).0, PushOutcome::Held);
         // The same motion again: a true repeat.
-        assert_eq!(line.push(at(Some(0.0), 3.0), 0.025).0, Placement::Repeat);
+        assert_eq!(line.push(at(Some(0.0), 3.0), 0.025).0, PushOutcome::Repeat);
         // The next stamp places the two held at a third and two thirds of the way.
         let (p, placed) = line.push(at(Some(0.03), 4.0), 0.03);
-        assert_eq!(p, Placement::Placed);
+        assert_eq!(p, PushOutcome::Placed);
         let got = times(&placed);
         assert_eq!(got.len(), 3);
         for ((t, step, ax), (want_t, want_ax)) in
@@ -237,24 +237,24 @@ mod tests {
             assert!((h - 0.01).abs() < 1e-15, "{got:?}");
         }
         // Older: stale.
-        assert_eq!(line.push(at(Some(0.02), 5.0), 0.04).0, Placement::Stale);
+        assert_eq!(line.push(at(Some(0.02), 5.0), 0.04).0, PushOutcome::Stale);
     }
 
     #[test]
     fn a_repeat_of_the_last_placed_is_dropped_and_held_ones_are_bounded() {
         let mut line = Timeline::new();
         line.push(at(Some(1.0), 1.0), 0.0);
-        assert_eq!(line.push(at(Some(1.0), 1.0), 0.0).0, Placement::Repeat);
+        assert_eq!(line.push(at(Some(1.0), 1.0), 0.0).0, PushOutcome::Repeat);
         for k in 0..MAX_HELD {
             assert_eq!(
                 line.push(at(Some(1.0), 10.0 + k as f64), 0.0).0,
-                Placement::Held
+                PushOutcome::Held
             );
         }
-        assert_eq!(line.push(at(Some(1.0), 99.0), 0.0).0, Placement::Stale);
+        assert_eq!(line.push(at(Some(1.0), 99.0), 0.0).0, PushOutcome::Stale);
         assert_eq!(line.restart(), MAX_HELD);
         let (p, placed) = line.push(at(Some(0.5), 1.0), 0.0);
-        assert_eq!((p, placed.len()), (Placement::Placed, 1));
+        assert_eq!((p, placed.len()), (PushOutcome::Placed, 1));
     }
 
     #[test]
@@ -265,6 +265,6 @@ mod tests {
         assert_eq!(times(&placed), vec![(2.0, Step::Same, 2.0)]);
         let (_, placed) = line.push(at(None, 3.0), 2.5);
         assert_eq!(times(&placed), vec![(2.5, Step::By(0.5), 3.0)]);
-        assert_eq!(line.push(at(None, 4.0), 2.0).0, Placement::Stale);
+        assert_eq!(line.push(at(None, 4.0), 2.0).0, PushOutcome::Stale);
     }
 }

@@ -31,7 +31,7 @@
 //! time (the receiver's clock is used). A datagram without every value is refused.
 
 use super::fields::{f32_at, i32_at};
-use super::{Format, GRAVITY, Reading, VehicleError, VehicleSample};
+use super::{GRAVITY, Reading, VehicleError, VehicleFormat, VehicleSample};
 
 /// The datarefs the studio subscribes to, at indices 0 to 5: the normal, axial and side
 /// g-loads, and the roll, pitch and yaw rates in °/s.
@@ -78,7 +78,7 @@ pub(crate) fn data(bytes: &[u8]) -> Result<Reading, VehicleError> {
     const RECORD: usize = 36;
     if bytes.len() < HEADER || !(bytes.len() - HEADER).is_multiple_of(RECORD) {
         return Err(VehicleError::Length {
-            format: Format::XPlaneData,
+            format: VehicleFormat::XPlaneData,
             got: bytes.len(),
             expected: "5 plus a multiple of 36",
         });
@@ -108,7 +108,7 @@ pub(crate) fn rref(bytes: &[u8]) -> Result<Reading, VehicleError> {
     const PAIR: usize = 8;
     if bytes.len() < HEADER || !(bytes.len() - HEADER).is_multiple_of(PAIR) {
         return Err(VehicleError::Length {
-            format: Format::XPlaneRref,
+            format: VehicleFormat::XPlaneRref,
             got: bytes.len(),
             expected: "5 plus a multiple of 8",
         });

@@ -18,7 +18,7 @@ use stewart_kinematics::model::actuator::ActuatorKind;
 use stewart_kinematics::model::trajectory::Samples;
 use stewart_kinematics::{Pose, Scenario};
 
-use crate::cli::{CueArgs, Format};
+use crate::cli::{CueArgs, ReportFormat};
 use crate::csv_io::{CsvText, read_input_bytes};
 use crate::output;
 use crate::source;
@@ -68,8 +68,8 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         .map_err(place)?;
         let measures = both.map(|(m, _)| m);
         let text = match args.format {
-            Format::Text => comparison::table(&measures),
-            Format::Json => comparison::json(&measures, &file),
+            ReportFormat::Text => comparison::table(&measures),
+            ReportFormat::Json => comparison::json(&measures, &file),
         };
         output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
         return Ok(ExitCode::SUCCESS);

@@ -22,9 +22,9 @@ use stewart_link::template::TemplateDecoder;
 use stewart_link::text::LineDecoder;
 use stewart_link::transport::Transport as _;
 use stewart_link::transport::{NOTHING_YET, Serial, bytes_read};
-use stewart_link::{Decoder, Flags, Frame, FrameKind, Unit};
+use stewart_link::{Flags, Frame, FrameDecoder, FrameKind, ValueUnit};
 
-use crate::cli::{DeviceSimArgs, WireFormat, WireUnit};
+use crate::cli::{DeviceSimArgs, WireFormatArg, WireUnit};
 use crate::output;
 
 pub(crate) mod model;
@@ -120,7 +120,7 @@ impl Controller {
         };
         let board = matches!(
             args.format,
-            WireFormat::Template(_) | WireFormat::Smc3 | WireFormat::Odrive
+            WireFormatArg::Template(_) | WireFormatArg::Smc3 | WireFormatArg::Odrive
         );
         Self {
             decoder: WireDecoder::new(args),
@@ -190,7 +190,7 @@ impl Controller {
 
 /// Reads binary frames, text lines or a template's frames, as `--format` says.
 enum WireDecoder {
-    Binary(Decoder),
+    Binary(FrameDecoder),
     Text(LineDecoder),
     /// A template's frames, numbered here (the bytes carry no sequence).
     Template(TemplateDecoder, u16),
@@ -202,21 +202,21 @@ enum WireDecoder {
 impl WireDecoder {
     fn new(args: &DeviceSimArgs) -> Self {
         match &args.format {
-            WireFormat::Binary => Self::Binary(Decoder::new()),
-            WireFormat::Text => Self::Text(LineDecoder::new(match args.text_unit {
-                WireUnit::Micrometre => Unit::Micrometre,
-                WireUnit::Centidegree => Unit::Centidegree,
-                WireUnit::Microsecond => Unit::PulseMicrosecond,
+            WireFormatArg::Binary => Self::Binary(FrameDecoder::new()),
+            WireFormatArg::Text => Self::Text(LineDecoder::new(match args.text_unit {
+                WireUnit::Micrometre => ValueUnit::Micrometre,
+                WireUnit::Centidegree => ValueUnit::Centidegree,
+                WireUnit::Microsecond => ValueUnit::PulseMicrosecond,
             })),
-            WireFormat::Template(t) => Self::Template(TemplateDecoder::new(t.clone()), 0),
-            WireFormat::Smc3 => Self::Board(
+            WireFormatArg::Template(t) => Self::Template(TemplateDecoder::new(t.clone()), 0),
+            WireFormatArg::Smc3 => Self::Board(
                 BoardReader::new(Board::Smc3),
                 usize::from(args.board - 1),
                 0,
                 false,
                 0,
             ),
-            WireFormat::Odrive => {
+            WireFormatArg::Odrive => {
                 // Reading needs no turns: the lines carry them.
                 let turns = Turns {
                     per_unit: [1.0; 6],
@@ -251,7 +251,7 @@ impl WireDecoder {
                         estop: false,
                         home: false,
                     },
-                    unit: Unit::Micrometre,
+                    unit: ValueUnit::Micrometre,
                     values: numbers.map(|n| n.map_or(0, |n| i32::try_from(n).unwrap_or(i32::MAX))),
                 };
                 *sequence = sequence.wrapping_add(1);
@@ -291,7 +291,7 @@ impl WireDecoder {
                         estop: false,
                         home: false,
                     },
-                    unit: Unit::Micrometre,
+                    unit: ValueUnit::Micrometre,
                     values: wire,
                 };
                 *sequence = sequence.wrapping_add(1);
@@ -319,7 +319,7 @@ impl WireDecoder {
     /// Forget a frame or line begun (before each datagram, which stands alone).
     fn reset(&mut self) {
         match self {
-            Self::Binary(d) => *d = Decoder::new(),
+            Self::Binary(d) => *d = FrameDecoder::new(),
             Self::Text(d) => d.reset(),
             Self::Template(d, _) => d.reset(),
             Self::Board(reader, ..) => *reader = BoardReader::new(reader.board().clone()),
@@ -427,12 +427,12 @@ fn record(tally: &mut Received, t: f64, f: &Frame, args: &DeviceSimArgs) {
     let outside = |v: &i32| args.min.is_some_and(|m| *v < m) || args.max.is_some_and(|m| *v > m);
     tally.outside += f.values.iter().filter(|v| outside(v)).count() as u64;
     let unit = match (&args.format, f.unit) {
-        (WireFormat::Template(_), _) => 3,
-        (WireFormat::Smc3, _) => 4,
-        (WireFormat::Odrive, _) => 5,
-        (_, Unit::Micrometre) => 0,
-        (_, Unit::Centidegree) => 1,
-        (_, Unit::PulseMicrosecond) => 2,
+        (WireFormatArg::Template(_), _) => 3,
+        (WireFormatArg::Smc3, _) => 4,
+        (WireFormatArg::Odrive, _) => 5,
+        (_, ValueUnit::Micrometre) => 0,
+        (_, ValueUnit::Centidegree) => 1,
+        (_, ValueUnit::PulseMicrosecond) => 2,
     };
     let values: Vec<String> = f.values.iter().map(i32::to_string).collect();
     tally.rows.push_str(&format!(

@@ -8,11 +8,11 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::model::link_settings::{LinkSettings, LinkTransport, Word as _};
-use stewart_link::sender::{Command, Format, Sender, SenderConfig, Status};
+use stewart_link::sender::{Command, Sender, SenderConfig, Status, WireFormat};
 use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};
 
-use crate::cli::{LinkArgs, WireFormat};
+use crate::cli::{LinkArgs, WireFormatArg};
 use crate::link_plan::LinkPlan;
 use crate::live_cue::LiveCue;
 use crate::xplane_rref::RrefSubscription;
@@ -398,7 +398,7 @@ fn settings(base: &LinkSettings, args: &LinkArgs) -> Result<LinkSettings> {
         ("address3", args.address3.clone()),
         ("baud", baud),
         ("rate_hz", rate),
-        ("format", args.format.as_ref().map(WireFormat::setting)),
+        ("format", args.format.as_ref().map(WireFormatArg::setting)),
         ("ramp_s", ramp),
     ];
     for (key, value) in overrides {
@@ -445,7 +445,7 @@ fn open_transport(
         name: String,
     ) -> Box<dyn Transport> {
         match plan.format {
-            Format::Template(_) => Box::new(Record::raw(out, name)),
+            WireFormat::Template(_) => Box::new(Record::raw(out, name)),
             _ => Box::new(Record::new(out, name)),
         }
     }

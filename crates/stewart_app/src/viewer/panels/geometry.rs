@@ -3,7 +3,7 @@
 //! every joint angle and the pivot.
 
 use stewart_kinematics::io::settings::{
-    self, ActuatorKey, ActuatorKind, GeometryKey, Group, Target, switch_actuator,
+    self, ActuatorKey, ActuatorKind, GeometryKey, Group, SettingTarget, switch_actuator,
 };
 use stewart_kinematics::{model::geometry::Plate, model::layout::Layout};
 
@@ -21,7 +21,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) {
                 GeometryKey::PlatformRadius,
                 GeometryKey::HomeHeight,
             ] {
-                setting_slider(ui, ed, Target::Geometry(key));
+                setting_slider(ui, ed, SettingTarget::Geometry(key));
             }
             actuators(ui, ed);
             layout(ui, ed);
@@ -46,7 +46,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) {
                             ui.label(egui::RichText::new(t.tr(points_note(plate))).small());
                         }
                         for i in 0..6 {
-                            setting_slider(ui, ed, Target::Geometry(key(i)));
+                            setting_slider(ui, ed, SettingTarget::Geometry(key(i)));
                         }
                     }
                 });
@@ -59,7 +59,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor) {
                 .default_open(ed.expand)
                 .show(ui, |ui| {
                     for i in 0..3 {
-                        setting_slider(ui, ed, Target::Geometry(GeometryKey::Pivot(i)));
+                        setting_slider(ui, ed, SettingTarget::Geometry(GeometryKey::Pivot(i)));
                     }
                 });
             edit_error(ui, ed.doc, ed.lang, &[Group::Geometry]);
@@ -116,7 +116,7 @@ fn joint_table(ui: &mut egui::Ui, ed: &mut Editor) {
         });
     if let Some((plate, i, k, v)) = edit {
         ed.apply(
-            settings::of(Target::Geometry(GeometryKey::Joint(plate, i, k))),
+            settings::of(SettingTarget::Geometry(GeometryKey::Joint(plate, i, k))),
             Some(v),
         );
     }
@@ -147,7 +147,7 @@ fn actuators(ui: &mut egui::Ui, ed: &mut Editor) {
     }
     // Each slider shows only for the kind it belongs to.
     for key in [GeometryKey::LegMin, GeometryKey::LegMax] {
-        setting_slider(ui, ed, Target::Geometry(key));
+        setting_slider(ui, ed, SettingTarget::Geometry(key));
     }
     for key in [
         ActuatorKey::HornLength,
@@ -155,12 +155,12 @@ fn actuators(ui: &mut egui::Ui, ed: &mut Editor) {
         ActuatorKey::ServoMin,
         ActuatorKey::ServoMax,
     ] {
-        setting_slider(ui, ed, Target::Actuator(key));
+        setting_slider(ui, ed, SettingTarget::Actuator(key));
     }
     let Some(level) = ed.scenario().geometry.servo_home_height() else {
         return;
     };
-    let home = settings::of(Target::Geometry(GeometryKey::HomeHeight));
+    let home = settings::of(SettingTarget::Geometry(GeometryKey::HomeHeight));
     if ui
         .button(t.fmt("geometry.level_home", &[("value", &format!("{level:.4}"))]))
         .on_hover_text(t.tr("geometry.level_home_tip"))
@@ -172,10 +172,10 @@ fn actuators(ui: &mut egui::Ui, ed: &mut Editor) {
         .default_open(ed.expand)
         .show(ui, |ui| {
             for i in 0..6 {
-                setting_slider(ui, ed, Target::Actuator(ActuatorKey::HornAngle(i)));
+                setting_slider(ui, ed, SettingTarget::Actuator(ActuatorKey::HornAngle(i)));
             }
             for i in 0..6 {
-                setting_slider(ui, ed, Target::Actuator(ActuatorKey::Trim(i)));
+                setting_slider(ui, ed, SettingTarget::Actuator(ActuatorKey::Trim(i)));
             }
         });
 }

@@ -2,7 +2,7 @@
 //! number of that kind (sinusoid channels, shape parameters, keyframes).
 
 use stewart_kinematics::io::settings::{
-    ChannelKey, Group, SamplingKey, ShapeKey, Target, TrajectoryChoice, Unit,
+    ChannelKey, Group, SamplingKey, SettingTarget, ShapeKey, TrajectoryChoice, Unit,
 };
 use stewart_kinematics::model::trajectory::{
     CHANNEL_NAMES, Interpolation, Keyframe, Keyframes, Trajectory, Wave,
@@ -223,7 +223,7 @@ fn trajectory(ui: &mut egui::Ui, ed: &mut Editor) {
         SamplingKey::Samples,
         SamplingKey::Start,
     ] {
-        setting_slider(ui, ed, Target::Sampling(key));
+        setting_slider(ui, ed, SettingTarget::Sampling(key));
     }
     match ed.scenario().motion.trajectory {
         Trajectory::Sinusoid(_) => sinusoid(ui, ed),
@@ -239,7 +239,7 @@ fn trajectory(ui: &mut egui::Ui, ed: &mut Editor) {
                 ShapeKey::ZEnd,
                 ShapeKey::Tilt,
             ] {
-                setting_slider(ui, ed, Target::Shape(key));
+                setting_slider(ui, ed, SettingTarget::Shape(key));
             }
         }
     }
@@ -258,7 +258,7 @@ fn sinusoid(ui: &mut egui::Ui, ed: &mut Editor) {
                     ChannelKey::Phase,
                     ChannelKey::Offset,
                 ] {
-                    setting_slider(ui, ed, Target::Channel(i, key));
+                    setting_slider(ui, ed, SettingTarget::Channel(i, key));
                 }
                 let wave = match ed.scenario().motion.trajectory {
                     Trajectory::Sinusoid(s) => s.channels().get(i).map(|(_, c)| c.wave),

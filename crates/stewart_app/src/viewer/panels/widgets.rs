@@ -2,7 +2,7 @@
 
 use egui::{Color32, RichText};
 use stewart_kinematics::Scenario;
-use stewart_kinematics::io::settings::{self, Group, Setting, Target, Unit};
+use stewart_kinematics::io::settings::{self, Group, Setting, SettingTarget, Unit};
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
@@ -24,7 +24,7 @@ pub(crate) const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 /// checkbox); optional settings get a checkbox that switches them on (at their slider's
 /// start) and off. Right-click resets to the default. Edits go through the setting's
 /// validation.
-pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Target) {
+pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: SettingTarget) {
     let setting = settings::of(target);
     let scenario = ed.scenario();
     if !setting.applies(scenario) {

@@ -122,7 +122,7 @@ fn a_refused_link_edit_says_why_and_changes_nothing() {
 /// A controller on a local UDP port that answers every set-point with telemetry whose
 /// values are the set-point's less `short` (wire units): a platform that lags behind.
 fn lagging_controller(short: i32) -> (String, std::thread::JoinHandle<()>) {
-    use stewart_link::{Decoder, Frame, FrameKind};
+    use stewart_link::{Frame, FrameDecoder, FrameKind};
     let socket = std::net::UdpSocket::bind("127.0.0.1:0").unwrap_or_else(|e| panic!("{e}"));
     socket
         .set_read_timeout(Some(Duration::from_millis(1500)))
@@ -134,7 +134,7 @@ fn lagging_controller(short: i32) -> (String, std::thread::JoinHandle<()>) {
     let handle = std::thread::spawn(move || {
         let mut buf = [0u8; 256];
         while let Ok((n, from)) = socket.recv_from(&mut buf) {
-            let mut d = Decoder::new();
+            let mut d = FrameDecoder::new();
             for &b in &buf[..n] {
                 if let Some(Ok(f)) = d.push(b) {
                     let answer = Frame {

@@ -7,7 +7,7 @@
 use super::cueing::{AXES, CueingKey};
 use super::dynamics::DynamicsKey;
 use super::target::{
-    ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey, Target,
+    ActuatorKey, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, SettingTarget, ShapeKey,
 };
 use super::{DefaultValue, Group, Setting, Unit};
 use crate::analysis::checks::CheckSettings;
@@ -35,7 +35,7 @@ impl Declare {
         unit: Unit,
         range: (f64, f64),
         default: DefaultValue,
-        target: Target,
+        target: SettingTarget,
     ) {
         self.list.push(Setting {
             key: key.into(),
@@ -165,7 +165,7 @@ fn model_rule(key: &str) -> Option<ModelRule> {
 fn geometry(d: &mut Declare) {
     use GeometryKey::*;
     let seed = GeometryParams::seed();
-    let g = |k| Target::Geometry(k);
+    let g = |k| SettingTarget::Geometry(k);
     let m = (0.05, 3.0);
     d.add(
         "geometry.base_radius",
@@ -256,7 +256,7 @@ fn geometry(d: &mut Declare) {
 /// servos with 25 mm horns and 120 mm rods.
 fn actuator(d: &mut Declare) {
     use ActuatorKey::*;
-    let a = |k| Target::Actuator(k);
+    let a = |k| SettingTarget::Actuator(k);
     d.add(
         "actuator.horn_length_m",
         "horn length",
@@ -328,7 +328,7 @@ fn trajectory(d: &mut Declare) {
     use ChannelKey::{Amplitude, Offset, Phase};
     use ShapeKey::{AmplitudeX, AmplitudeY, Radius, Tilt, Z, ZEnd, ZStart};
     let seed = Sampling::SEED;
-    let sampling = |k| Target::Sampling(k);
+    let sampling = |k| SettingTarget::Sampling(k);
     d.add(
         "trajectory.start_s",
         "start",
@@ -364,7 +364,7 @@ fn trajectory(d: &mut Declare) {
         };
         let key = |part: &str, unit_suffix: &str| format!("trajectory.{name}.{part}_{unit_suffix}");
         let label = |part: &str| format!("{name} {part}");
-        let t = |k| Target::Channel(i, k);
+        let t = |k| SettingTarget::Channel(i, k);
         d.add(
             key("amplitude", suffix),
             label("amplitude"),
@@ -405,7 +405,7 @@ fn trajectory(d: &mut Declare) {
         );
     }
 
-    let s = |k| Target::Shape(k);
+    let s = |k| SettingTarget::Shape(k);
     let height = (0.1, 3.0);
     d.add(
         "trajectory.radius_m",
@@ -475,7 +475,7 @@ fn trajectory(d: &mut Declare) {
 
 fn limits(d: &mut Declare) {
     use LimitKey::*;
-    let l = |k| Target::Limit(k);
+    let l = |k| SettingTarget::Limit(k);
     d.add(
         "limits.leg_speed_max_m_s",
         "max leg speed",
@@ -552,7 +552,7 @@ fn limits(d: &mut Declare) {
 
 fn checks(d: &mut Declare) {
     use CheckKey::*;
-    let c = |k| Target::Check(k);
+    let c = |k| SettingTarget::Check(k);
     let seed = CheckSettings::default();
     d.add(
         "checks.rigid_tolerance_m",
@@ -758,7 +758,14 @@ fn cueing(d: &mut Declare) {
     let defaults = CueingSettings::default();
     let mut add = |key: String, label: String, unit, range, target| {
         let default = super::cueing::get(&defaults, target).map_or(Off, Value);
-        d.add(key, label, unit, range, default, Target::Cueing(target));
+        d.add(
+            key,
+            label,
+            unit,
+            range,
+            default,
+            SettingTarget::Cueing(target),
+        );
     };
     for (key, label, unit, range, target) in CUEING {
         add(
@@ -881,7 +888,7 @@ fn dynamics(d: &mut Declare) {
             unit,
             range,
             default,
-            Target::Dynamics(target),
+            SettingTarget::Dynamics(target),
         );
     }
 }

@@ -1,6 +1,6 @@
 //! The trajectory kinds a user can switch between, and the motion each starts from.
 
-use super::target::{ShapeKey, Target};
+use super::target::{SettingTarget, ShapeKey};
 use crate::model::angle::Angle;
 use crate::model::pose::Pose;
 use crate::model::trajectory::{
@@ -65,7 +65,7 @@ impl TrajectoryChoice {
 /// keyframes span it).
 pub fn default_trajectory(choice: TrajectoryChoice, home_height: f64, duration: f64) -> Trajectory {
     let shape = |key| {
-        super::of(Target::Shape(key))
+        super::of(SettingTarget::Shape(key))
             .default
             .resolve(home_height)
             .unwrap_or(0.0)

@@ -25,8 +25,8 @@ pub use cueing::{AXES, CueingKey};
 pub use dynamics::DynamicsKey;
 pub use kinds::{TrajectoryChoice, default_trajectory, switch_trajectory};
 pub use target::{
-    ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey, ShapeKey,
-    Target,
+    ActuatorKey, ActuatorKind, ChannelKey, CheckKey, GeometryKey, LimitKey, SamplingKey,
+    SettingTarget, ShapeKey,
 };
 
 /// The unit a setting is written in.
@@ -182,7 +182,7 @@ pub struct Setting {
     /// The section of the file (and the panel of the viewer) it belongs to.
     pub group: Group,
     /// What it reads and writes.
-    pub target: Target,
+    pub target: SettingTarget,
 }
 
 /// The sections settings are grouped in, as in the scenario file.
@@ -343,9 +343,9 @@ impl Setting {
         let g = &scenario.geometry;
         let stroke = matches!(
             self.target,
-            Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+            SettingTarget::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
         );
-        let servo_part = matches!(self.target, Target::Actuator(_));
+        let servo_part = matches!(self.target, SettingTarget::Actuator(_));
         if stroke {
             let home = g.leg_lengths(&g.home_pose());
             let mean = home.iter().sum::<f64>() / 6.0;
@@ -406,7 +406,7 @@ impl Setting {
             }
             _ => {}
         }
-        if let Target::Geometry(key) = self.target
+        if let SettingTarget::Geometry(key) = self.target
             && let Some(plate) = key.circle_plate()
             && scenario.geometry.params().plate(plate).circle().is_none()
         {
@@ -475,7 +475,7 @@ pub fn find(key: &str) -> Result<&'static Setting, SettingError> {
 }
 
 /// The setting for a target.
-pub fn of(target: Target) -> &'static Setting {
+pub fn of(target: SettingTarget) -> &'static Setting {
     all()
         .iter()
         .find(|s| s.target == target)
@@ -524,15 +524,15 @@ pub fn parse_assignment(text: &str) -> Result<(&'static Setting, Option<f64>), S
 
 /// The settings that bound the actuator quantity of `kind`, lower end first: the stroke
 /// (`geometry.leg_min`, `leg_max`) or the servo range (`actuator.servo_min_deg`, `…max…`).
-pub fn quantity_limit_targets(kind: ActuatorKind) -> [Target; 2] {
+pub fn quantity_limit_targets(kind: ActuatorKind) -> [SettingTarget; 2] {
     match kind {
         ActuatorKind::Linear => [
-            Target::Geometry(GeometryKey::LegMin),
-            Target::Geometry(GeometryKey::LegMax),
+            SettingTarget::Geometry(GeometryKey::LegMin),
+            SettingTarget::Geometry(GeometryKey::LegMax),
         ],
         ActuatorKind::Rotary => [
-            Target::Actuator(ActuatorKey::ServoMin),
-            Target::Actuator(ActuatorKey::ServoMax),
+            SettingTarget::Actuator(ActuatorKey::ServoMin),
+            SettingTarget::Actuator(ActuatorKey::ServoMax),
         ],
     }
 }

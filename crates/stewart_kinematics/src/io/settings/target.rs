@@ -136,7 +136,7 @@ pub enum CheckKey {
 
 /// What a setting reads and writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Target {
+pub enum SettingTarget {
     /// A platform number.
     Geometry(GeometryKey),
     /// A rotary platform's actuator number.
@@ -157,30 +157,30 @@ pub enum Target {
     Dynamics(DynamicsKey),
 }
 
-impl Target {
+impl SettingTarget {
     /// Whether it may be absent.
     pub(super) fn optional(self) -> bool {
         matches!(
             self,
-            Target::Limit(_)
-                | Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
-                | Target::Actuator(ActuatorKey::ServoMin | ActuatorKey::ServoMax)
-                | Target::Dynamics(DynamicsKey::Stiffness)
+            SettingTarget::Limit(_)
+                | SettingTarget::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+                | SettingTarget::Actuator(ActuatorKey::ServoMin | ActuatorKey::ServoMax)
+                | SettingTarget::Dynamics(DynamicsKey::Stiffness)
         )
     }
 
     /// The actuator kind it belongs to (`None`: both).
     pub fn actuator_kind(self) -> Option<ActuatorKind> {
         match self {
-            Target::Actuator(_)
-            | Target::Limit(LimitKey::ServoSpeed | LimitKey::ServoAccel | LimitKey::ServoJerk) => {
-                Some(ActuatorKind::Rotary)
-            }
-            Target::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
-            | Target::Limit(LimitKey::LegSpeed | LimitKey::LegAccel | LimitKey::LegJerk) => {
+            SettingTarget::Actuator(_)
+            | SettingTarget::Limit(
+                LimitKey::ServoSpeed | LimitKey::ServoAccel | LimitKey::ServoJerk,
+            ) => Some(ActuatorKind::Rotary),
+            SettingTarget::Geometry(GeometryKey::LegMin | GeometryKey::LegMax)
+            | SettingTarget::Limit(LimitKey::LegSpeed | LimitKey::LegAccel | LimitKey::LegJerk) => {
                 Some(ActuatorKind::Linear)
             }
-            Target::Dynamics(key) => key.kind(),
+            SettingTarget::Dynamics(key) => key.kind(),
             _ => None,
         }
     }
@@ -194,9 +194,9 @@ impl Target {
             return false;
         }
         match self {
-            Target::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
-            Target::Shape(key) => shape_value(trajectory, key).is_some(),
-            Target::Geometry(key) => match key.circle_plate() {
+            SettingTarget::Channel(..) => matches!(trajectory, Trajectory::Sinusoid(_)),
+            SettingTarget::Shape(key) => shape_value(trajectory, key).is_some(),
+            SettingTarget::Geometry(key) => match key.circle_plate() {
                 Some(plate) => scenario.geometry.params().plate(plate).circle().is_some(),
                 None => true,
             },
@@ -207,7 +207,7 @@ impl Target {
     pub(super) fn get(self, scenario: &Scenario) -> Option<f64> {
         let params = scenario.geometry.params();
         match self {
-            Target::Geometry(key) => match key {
+            SettingTarget::Geometry(key) => match key {
                 GeometryKey::BaseRadius => params.base.circle().map(|c| c.0),
                 GeometryKey::PlatformRadius => params.platform.circle().map(|c| c.0),
                 GeometryKey::HomeHeight => Some(params.home_height),
@@ -228,7 +228,7 @@ impl Target {
                     .and_then(|p| p.get(k).copied()),
                 GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
             },
-            Target::Actuator(key) => {
+            SettingTarget::Actuator(key) => {
                 let r = scenario.geometry.rotary()?;
                 match key {
                     ActuatorKey::HornLength => Some(r.horn_length()),
@@ -242,7 +242,7 @@ impl Target {
                     }
                 }
             }
-            Target::Sampling(key) => {
+            SettingTarget::Sampling(key) => {
                 let s = &scenario.motion.sampling;
                 Some(match key {
                     SamplingKey::Start => s.start(),
@@ -250,7 +250,7 @@ impl Target {
                     SamplingKey::Samples => s.len() as f64,
                 })
             }
-            Target::Channel(i, key) => match &scenario.motion.trajectory {
+            SettingTarget::Channel(i, key) => match &scenario.motion.trajectory {
                 Trajectory::Sinusoid(s) => s.channels().get(i).map(|(_, c)| match key {
                     ChannelKey::Amplitude => c.amplitude,
                     ChannelKey::Frequency => c.frequency_hz,
@@ -259,8 +259,8 @@ impl Target {
                 }),
                 _ => None,
             },
-            Target::Shape(key) => shape_value(&scenario.motion.trajectory, key),
-            Target::Limit(key) => {
+            SettingTarget::Shape(key) => shape_value(&scenario.motion.trajectory, key),
+            SettingTarget::Limit(key) => {
                 let l = &scenario.limits;
                 match key {
                     LimitKey::LegSpeed => l.leg_speed_max,
@@ -274,7 +274,7 @@ impl Target {
                     LimitKey::ServoJerk => l.servo_jerk_max,
                 }
             }
-            Target::Check(key) => {
+            SettingTarget::Check(key) => {
                 let c = &scenario.checks;
                 Some(match key {
                     CheckKey::RigidTolerance => c.rigid_tolerance,
@@ -283,8 +283,8 @@ impl Target {
                     CheckKey::ConditionMax => c.condition_max,
                 })
             }
-            Target::Cueing(key) => super::cueing::get(&scenario.cueing, key),
-            Target::Dynamics(key) => super::dynamics::get(&scenario.dynamics, key),
+            SettingTarget::Cueing(key) => super::cueing::get(&scenario.cueing, key),
+            SettingTarget::Dynamics(key) => super::dynamics::get(&scenario.dynamics, key),
         }
     }
 
@@ -292,10 +292,10 @@ impl Target {
     pub(super) fn set(self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), String> {
         let v = value.unwrap_or(f64::NAN);
         match self {
-            Target::Geometry(key) => set_geometry(scenario, key, value),
-            Target::Actuator(key) => set_actuator(scenario, key, value),
-            Target::Sampling(key) => set_sampling(scenario, key, v),
-            Target::Channel(i, key) => {
+            SettingTarget::Geometry(key) => set_geometry(scenario, key, value),
+            SettingTarget::Actuator(key) => set_actuator(scenario, key, value),
+            SettingTarget::Sampling(key) => set_sampling(scenario, key, v),
+            SettingTarget::Channel(i, key) => {
                 if let Trajectory::Sinusoid(s) = &mut scenario.motion.trajectory
                     && let Some(c) = s.channels_mut().into_iter().nth(i)
                 {
@@ -303,14 +303,14 @@ impl Target {
                 }
                 Ok(())
             }
-            Target::Shape(key) => {
+            SettingTarget::Shape(key) => {
                 if let Some(field) = shape_field(&mut scenario.motion.trajectory, key) {
                     field.write(v);
                 }
                 Ok(())
             }
-            Target::Limit(key) => set_limit(scenario, key, value),
-            Target::Check(key) => {
+            SettingTarget::Limit(key) => set_limit(scenario, key, value),
+            SettingTarget::Check(key) => {
                 if v <= 0.0 {
                     return Err(format!("it must be positive, got {v}"));
                 }
@@ -323,8 +323,10 @@ impl Target {
                 } = v;
                 Ok(())
             }
-            Target::Cueing(key) => super::cueing::set(&mut scenario.cueing, key, v),
-            Target::Dynamics(key) => super::dynamics::set(&mut scenario.dynamics, key, value),
+            SettingTarget::Cueing(key) => super::cueing::set(&mut scenario.cueing, key, v),
+            SettingTarget::Dynamics(key) => {
+                super::dynamics::set(&mut scenario.dynamics, key, value)
+            }
         }
     }
 }
