@@ -300,7 +300,7 @@ fn title_error(title: &str) -> Option<String> {
     if title.is_empty() {
         None
     } else {
-        crate::cli::parse_title(title).err()
+        crate::cli::parse_title(title).err().map(|e| e.to_string())
     }
 }
 

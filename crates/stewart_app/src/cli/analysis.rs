@@ -1,0 +1,257 @@
+//! The analysis commands' arguments: `solve`, `fk`, `cue`, `check`, `design`, `calibrate`,
+//! `workspace`, `modes`, `forces`, `settings`.
+
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+
+use super::pictures::parse_lang;
+use super::values::{parse_angles, parse_inertia, parse_mass, parse_pose, parse_position};
+use super::{ReportFormat, ScenarioArgs};
+use crate::i18n::Lang;
+
+/// Arguments of `stewart settings`.
+#[derive(Debug, Args)]
+pub(crate) struct SettingsArgs {
+    /// The scenario whose values to show.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Instead of the table, write the scenario with every joint as coordinates
+    /// (`base_joints_m`, `platform_joints_m`): the same platform, ready to edit as built.
+    #[arg(long)]
+    pub(crate) as_coordinates: bool,
+    /// Write the scenario here (whole or not at all) instead of standard output; with
+    /// `--as-coordinates`.
+    #[arg(long, value_name = "FILE", requires = "as_coordinates")]
+    pub(crate) out: Option<PathBuf>,
+    /// The table for people, or the settings reference in Markdown (every key by file
+    /// section: meaning, unit, slider and accepted ranges, default; the user guide's
+    /// docs/guide/settings.md is this, for the seed).
+    #[arg(
+        long,
+        value_enum,
+        default_value = "text",
+        conflicts_with = "as_coordinates"
+    )]
+    pub(crate) format: SettingsFormat,
+}
+
+/// Forms of `stewart settings`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum SettingsFormat {
+    /// A table for the terminal, with the scenario's values.
+    Text,
+    /// The settings reference, in Markdown.
+    Markdown,
+}
+
+/// Arguments of `stewart solve`.
+#[derive(Debug, Args)]
+pub(crate) struct SolveArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Solve these poses instead of the trajectory: a CSV with columns
+    /// x,y,z,roll_deg,pitch_deg,yaw_deg (metres, degrees) and optionally t; `-` reads standard input.
+    #[arg(long, value_name = "POSES.csv")]
+    pub(crate) poses: Option<PathBuf>,
+    /// Write the CSV here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+    /// For a rotary platform: write the angles the servos are commanded — mirrored for
+    /// `servo_reversed`, plus `servo_trim_deg` — as cmd1..cmd6 instead of theta1..theta6.
+    #[arg(long)]
+    pub(crate) commanded: bool,
+}
+
+/// Arguments of `stewart cue`.
+#[derive(Debug, Args)]
+pub(crate) struct CueArgs {
+    /// The scenario: a preset or a file (its `[cueing]` table, geometry and limits).
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// The vehicle motion: a CSV with columns t (s), ax, ay, az (m/s², the vehicle's
+    /// acceleration in its own frame, gravity excluded) and wx, wy, wz (°/s), or a packet
+    /// capture (pcap or pcapng, from Wireshark or tcpdump) of a game's UDP telemetry in any
+    /// format the live link reads (Forza, F1 24 and 25, BeamNG, Live for Speed, X-Plane); `-`
+    /// reads standard input.
+    #[arg(long, value_name = "RECORDING")]
+    pub(crate) input: PathBuf,
+    /// For a capture: read the datagrams to this UDP port (default: the port whose
+    /// datagrams give vehicle motion; the others are counted, never read).
+    #[arg(long, allow_hyphen_values = true, value_name = "N")]
+    pub(crate) port: Option<u16>,
+    /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
+    /// at all, instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+    /// Run both algorithms (the classical washout with its workspace limiter on, and the
+    /// model-predictive cueing) on the input with the same scales, rig and limits, and
+    /// print how each reproduces what is felt instead of the poses: specific-force error
+    /// (RMSE) and shape correlation per axis, rotation-rate error, the false rotation of
+    /// tilt, the largest stroke used, the time the limiter held back.
+    #[arg(long)]
+    pub(crate) compare: bool,
+    /// The comparison's format.
+    #[arg(long, value_enum, default_value = "text", requires = "compare")]
+    pub(crate) format: ReportFormat,
+}
+
+/// Arguments of `stewart check`.
+#[derive(Debug, Args)]
+pub(crate) struct CheckArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
+}
+
+/// Arguments of `stewart design`.
+#[derive(Debug, Args)]
+pub(crate) struct DesignArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// The box of poses: x, y, z (m) and roll, pitch, yaw (°), each `±A` about home,
+    /// `A..B`, or one value; those left out stay at home. Example:
+    /// `x=±0.1,y=±0.1,z=0.7..0.9,roll=±10,pitch=±10,yaw=±15`.
+    #[arg(long, value_name = "NAME=RANGE,…", allow_hyphen_values = true)]
+    pub(crate) envelope: String,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
+}
+
+/// Arguments of `stewart fk`.
+#[derive(Debug, Args)]
+pub(crate) struct FkArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Leg lengths: a CSV with columns L1..L6 (metres) — or theta1..theta6 (degrees) for a
+    /// rotary-servo platform — and optionally t; other columns are ignored; `-` reads
+    /// standard input.
+    #[arg(long, value_name = "LEGS.csv")]
+    pub(crate) legs: PathBuf,
+    /// Write the CSV here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+    /// Start every row from the home pose instead of the previous row's pose.
+    #[arg(long)]
+    pub(crate) cold: bool,
+    /// List every assembly mode the search finds for each row (a `row` column names the
+    /// input row, from 1, and a `mode` column numbers its modes, highest platform first)
+    /// instead of following one branch.
+    #[arg(long, conflicts_with = "cold")]
+    pub(crate) assembly_modes: bool,
+}
+
+/// Arguments of `stewart calibrate`.
+#[derive(Debug, Args)]
+pub(crate) struct CalibrateArgs {
+    /// The platform as designed: a preset or a file (the starting values).
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Measured poses and what was commanded for each: a CSV with columns x, y, z
+    /// (metres), roll_deg, pitch_deg, yaw_deg (the scenario's base and platform frames),
+    /// and L1..L6 (metres) — or theta1..theta6 (model servo angles in degrees, as
+    /// `stewart solve` gives them) for a rotary-servo platform; other columns are
+    /// ignored; `-` reads standard input.
+    #[arg(long, value_name = "MEASUREMENTS.csv")]
+    pub(crate) measurements: PathBuf,
+    /// Write the calibrated scenario here (whole or not at all): joints as coordinates,
+    /// servo offsets in the trims, leg-length offsets in the link's channel offsets.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+    /// Keep a group of parameters at the scenario's values (known from elsewhere);
+    /// repeat for several.
+    #[arg(long, value_enum, value_name = "GROUP")]
+    pub(crate) hold: Vec<HoldGroup>,
+}
+
+/// A group of calibration parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum HoldGroup {
+    /// The six base joints.
+    Base,
+    /// The six platform joints.
+    Platform,
+    /// The six actuator offsets.
+    Offsets,
+}
+
+/// Arguments of `stewart workspace`.
+#[derive(Debug, Args)]
+pub(crate) struct WorkspaceArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Platform orientation ROLL,PITCH,YAW in degrees.
+    #[arg(long, value_name = "ROLL,PITCH,YAW", value_parser = parse_angles, default_value = "0,0,0", allow_hyphen_values = true)]
+    pub(crate) orientation: [f64; 3],
+    /// Columns per side of the grid (the volume's error shrinks as it rises).
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u16).range(2..=4096), allow_hyphen_values = true)]
+    pub(crate) resolution: u16,
+    /// Position X,Y,Z (metres) at which to report the orientation range (default: home).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
+    pub(crate) position: Option<[f64; 3]>,
+    /// Run even when the estimated cost is over the budget (2 minutes, 2 GB of spans);
+    /// a long run shows progress and Ctrl-C stops it.
+    #[arg(long)]
+    pub(crate) no_budget: bool,
+    /// Write the workspace boundary points: `.csv` (x,y,z) or `.ply` (for 3D tools).
+    #[arg(long, value_name = "FILE.csv|FILE.ply")]
+    pub(crate) out: Option<PathBuf>,
+    /// Draw a horizontal slice (at the position's height) and a vertical slice (through
+    /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png`.
+    #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png")]
+    pub(crate) plot: Option<PathBuf>,
+    /// Write the workspace's surface (a closed triangle mesh around the reachable
+    /// positions, from the same columns) as a binary PLY file.
+    #[arg(long, value_name = "FILE.ply")]
+    pub(crate) surface: Option<PathBuf>,
+    /// The language of the figure's words: `zh` or `en` (default: the environment's).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
+    pub(crate) lang: Option<Lang>,
+}
+
+/// Arguments of `stewart modes`.
+#[derive(Debug, Args)]
+pub(crate) struct ModesArgs {
+    /// The scenario: a preset or a file, with `[payload]` and `[dynamics]
+    /// actuator_stiffness`.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// The pose X,Y,Z,ROLL,PITCH,YAW (metres, degrees); default: home.
+    #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", value_parser = parse_pose, allow_hyphen_values = true)]
+    pub(crate) pose: Option<[f64; 6]>,
+    /// Also find the lowest natural frequency over the trajectory and where it occurs.
+    #[arg(long)]
+    pub(crate) along_trajectory: bool,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
+}
+
+/// Arguments of `stewart forces`.
+#[derive(Debug, Args)]
+pub(crate) struct ForcesArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// Moving mass in kg (overrides the scenario's `[payload]`).
+    #[arg(long, value_name = "KG", allow_hyphen_values = true, value_parser = parse_mass)]
+    pub(crate) mass: Option<f64>,
+    /// Centre of mass X,Y,Z in the platform frame, metres.
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_position, allow_hyphen_values = true)]
+    pub(crate) com: Option<[f64; 3]>,
+    /// Inertia about the centre of mass, kg·m²: principal moments IXX,IYY,IZZ, or the
+    /// tensor's six entries IXX,IYY,IZZ,IXY,IXZ,IYZ (products with their minus sign).
+    #[arg(long, value_name = "IXX,IYY,IZZ[,IXY,IXZ,IYZ]", value_parser = parse_inertia, allow_hyphen_values = true)]
+    pub(crate) inertia: Option<[f64; 6]>,
+    /// Write the CSV here (whole or not at all) instead of standard output.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) out: Option<PathBuf>,
+}
