@@ -4,7 +4,7 @@
 Python 3 standard library only, no randomness: the files come out the same, byte for byte,
 on every run. Run from the repository root: python3 scripts/make-cue-recordings.py
 
-Each file is the CSV that crates/stewart_app/src/vehicle_table.rs reads: the header
+Each file is the CSV that crates/stewart_app/src/vehicle_in/table.rs reads: the header
 `t,ax,ay,az,wx,wy,wz`, then one row every 10 ms (100 Hz) from t = 0 to the end inclusive.
 t in seconds; ax, ay, az the vehicle's specific force along its own x (forward), y (left),
 z (up), in m/s², gravity excluded; wx, wy, wz its rotation rates about those axes in degrees

@@ -10,8 +10,8 @@
 use std::net::UdpSocket;
 use std::time::{Duration, Instant};
 
-use stewart_app::live_cue::LiveCue;
-use stewart_app::live_cue::measure::lag;
+use stewart_app::vehicle_in::live_cue::LiveCue;
+use stewart_app::vehicle_in::live_cue::measure::lag;
 use stewart_kinematics::Scenario;
 
 fn main() {

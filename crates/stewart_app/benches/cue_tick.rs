@@ -20,7 +20,7 @@ mod support;
 
 use criterion::{Criterion, criterion_group};
 use stewart_app::link_plan::LinkPlan;
-use stewart_app::live_cue::LiveCue;
+use stewart_app::vehicle_in::live_cue::LiveCue;
 use stewart_kinematics::Scenario;
 use stewart_kinematics::analysis::cueing::{Cueing, VehicleMotion};
 use stewart_link::sender::{Stream, time_each};

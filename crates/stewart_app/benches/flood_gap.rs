@@ -21,7 +21,7 @@ mod support;
 
 use criterion::{Criterion, criterion_group};
 use stewart_app::link_plan::LinkPlan;
-use stewart_app::live_cue::LiveCue;
+use stewart_app::vehicle_in::live_cue::LiveCue;
 use stewart_kinematics::Scenario;
 use stewart_link::sender::{Sender, Stream};
 use stewart_link::transport::Udp;

@@ -3,11 +3,11 @@
 //! (`pub(crate)`) but a small façade:
 //!
 //! - [`main`]: the `stewart` program (the binary calls only this);
-//! - for the benchmarks: the export pipeline (`export::encode::{export, Target}`,
+//! - for the benchmarks: the export pipeline (`export::encode::{export, FrameSink}`,
 //!   `export::frames::{FrameJob, FrameSource, default_camera}`), the pose tables
 //!   (`export::tables`), the viewer's state and its frame (`viewer::ViewerState`,
 //!   `viewer::panels::viewer_ui`), the link's plan and a live cue (`link_plan::LinkPlan`,
-//!   `live_cue::LiveCue`), and the interface's language (`i18n::Lang`).
+//!   `vehicle_in::live_cue::LiveCue`), and the interface's language (`i18n::Lang`).
 //!
 //! The viewer's egui_kittest tests live inside it (`viewer/ui_tests`), so they may reach
 //! what the façade does not show.
@@ -21,16 +21,13 @@ pub(crate) mod appearance;
 pub mod i18n;
 pub(crate) mod interrupt;
 pub mod link_plan;
-pub mod live_cue;
 pub(crate) mod long_work;
 pub(crate) mod output;
 pub(crate) mod readout;
 pub(crate) mod shot_scale;
 pub(crate) mod source;
-pub(crate) mod vehicle_capture;
-pub(crate) mod vehicle_table;
+pub mod vehicle_in;
 pub mod viewer;
-pub(crate) mod xplane_rref;
 
 use std::io::Write as _;
 use std::process::ExitCode;

@@ -22,9 +22,9 @@ use stewart_link::vehicle::timeline::Step;
 use crate::cli::TelemetryArgs;
 use crate::csv_io::{CsvText, read_input_bytes};
 use crate::output::{self, Destination};
-use crate::vehicle_capture::tally_words;
-use crate::vehicle_table::VEHICLE_COLUMNS;
-use crate::xplane_rref::RrefSubscription;
+use crate::vehicle_in::capture::tally_words;
+use crate::vehicle_in::table::VEHICLE_COLUMNS;
+use crate::vehicle_in::xplane_rref::RrefSubscription;
 
 /// How long a read waits before the loop looks at the clock and Ctrl-C again.
 const POLL: Duration = Duration::from_millis(50);
@@ -142,7 +142,7 @@ fn replay(input: &std::path::Path, port: Option<u16>, heard: &mut Heard) -> Resu
         let _ = writeln!(stdout, "{}", heard.second(next_line));
     }
     heard.intake.finish();
-    let words = crate::vehicle_capture::capture_words(&capture, port, &others);
+    let words = crate::vehicle_in::capture::capture_words(&capture, port, &others);
     let _ = writeln!(
         std::io::stderr(),
         "telemetry: read from {name}: {}\ntelemetry: {}",

@@ -15,7 +15,7 @@ use stewart_link::sender::{SenderConfig, WireFormat};
 use stewart_link::target::{ActuatorMotion, Sample, Target, TargetError};
 use stewart_link::transport::Transport;
 
-use crate::live_cue::LiveCue;
+use crate::vehicle_in::live_cue::LiveCue;
 
 mod follow;
 mod hardware;

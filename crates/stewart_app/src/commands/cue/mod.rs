@@ -22,8 +22,8 @@ use crate::cli::{CueArgs, ReportFormat};
 use crate::csv_io::{CsvText, read_input_bytes};
 use crate::output;
 use crate::source;
-use crate::vehicle_capture::{self, CapturedMotion};
-use crate::vehicle_table::{self, VehicleTable};
+use crate::vehicle_in::capture::{self, CapturedMotion};
+use crate::vehicle_in::table::{self, VehicleTable};
 
 /// The pose table's columns.
 const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg"];
@@ -36,15 +36,15 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let out = output::destination(args.out.as_deref(), &inputs)?;
     let (bytes, file) =
         read_input_bytes(&args.input, stewart_kinematics::io::file::FileKind::Table)?;
-    let recording = if vehicle_capture::is_capture(&bytes) {
-        Recording::Capture(Box::new(vehicle_capture::read(
+    let recording = if capture::is_capture(&bytes) {
+        Recording::Capture(Box::new(capture::read(
             &bytes,
             &file,
             args.port,
             scenario.cueing.stall_s,
         )?))
     } else {
-        Recording::Table(vehicle_table::read(&mut bytes.as_slice(), &file)?)
+        Recording::Table(table::read(&mut bytes.as_slice(), &file)?)
     };
     let samples = recording.samples();
     let place = |e: CueError| match e {

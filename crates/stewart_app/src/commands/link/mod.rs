@@ -14,8 +14,8 @@ use stewart_link::transport::{Record, Transport, list_ports};
 
 use crate::cli::{LinkArgs, WireFormatArg};
 use crate::link_plan::LinkPlan;
-use crate::live_cue::LiveCue;
-use crate::xplane_rref::RrefSubscription;
+use crate::vehicle_in::live_cue::LiveCue;
+use crate::vehicle_in::xplane_rref::RrefSubscription;
 use crate::{output, source};
 
 mod record;

@@ -15,7 +15,7 @@ use super::plot::leg_colour;
 use super::side_plot;
 use super::widgets::{edit_error, setting_slider};
 use crate::i18n::Lang;
-use crate::live_cue::{CueCounts, TracePoint};
+use crate::vehicle_in::live_cue::{CueCounts, TracePoint};
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::vehicle::VehicleSource;
 

@@ -68,7 +68,7 @@ impl ViewerState {
         let header = bytes.as_ref().ok().map(|b| {
             String::from_utf8_lossy(b.split(|c| *c == b'\n').next().unwrap_or(&[])).into_owned()
         });
-        if header.is_some_and(|h| crate::vehicle_table::is_vehicle_header(&h)) {
+        if header.is_some_and(|h| crate::vehicle_in::table::is_vehicle_header(&h)) {
             self.open_vehicle(&full);
             return;
         }
@@ -111,7 +111,7 @@ impl ViewerState {
         let read = read_file(full, FileKind::Table)
             .map_err(ViewerError::from)
             .and_then(|bytes| {
-                crate::vehicle_table::read(&mut bytes.as_slice(), &name)
+                crate::vehicle_in::table::read(&mut bytes.as_slice(), &name)
                     .map_err(|e| ViewerError::VehicleTable(Arc::new(e)))
             });
         let outcome = read.and_then(|table| {

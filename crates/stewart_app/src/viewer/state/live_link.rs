@@ -17,7 +17,7 @@ use stewart_link::transport::{Record, Transport};
 
 use crate::i18n::Lang;
 use crate::link_plan::{AskedPose, Drive, Followed, LinkPlan};
-use crate::live_cue::{CueCounts, LiveCue};
+use crate::vehicle_in::live_cue::{CueCounts, LiveCue};
 use crate::viewer::error::ViewerError;
 
 /// Lines of a dry run kept for the panel.

@@ -22,7 +22,7 @@ use stewart_link::vehicle::VehicleFormat;
 use stewart_link::vehicle::intake::{Intake, Intaken};
 use stewart_link::vehicle::timeline::{PushOutcome, Step, Timed};
 
-use crate::xplane_rref::RrefSubscription;
+use crate::vehicle_in::xplane_rref::RrefSubscription;
 
 pub mod measure;
 mod planner;

@@ -6,7 +6,7 @@ use std::f64::consts::TAU;
 
 use stewart_kinematics::Scenario;
 
-use crate::live_cue::LiveCue;
+use crate::vehicle_in::live_cue::LiveCue;
 
 /// The platform's surge (x, metres) at each 1 kHz tick over `seconds`, the vehicle's
 /// forward specific force a unit sinusoid of `hz` sampled `rate` times a second, the input
