@@ -6,8 +6,8 @@ use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
 use crate::model::angle::Angle;
+use crate::model::leg_solution::LegSolution;
 use crate::model::pose::Pose;
-use crate::solve::inverse::LegSolution;
 
 /// Optional limits of a platform's actuators and joints.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -9,6 +9,7 @@ pub mod cueing_settings;
 pub mod dynamics_settings;
 pub mod geometry;
 pub mod layout;
+pub mod leg_solution;
 pub mod limits;
 pub mod link_settings;
 pub mod pose;

@@ -9,169 +9,163 @@ use crate::model::rotary::Unreachable;
 use crate::solve::forward::ForwardError;
 use crate::solve::servo_closure;
 
-impl Geometry {
-    /// The quantity that drives the joints: leg length or servo angle.
-    pub fn quantity(&self) -> Quantity {
-        self.actuator().kind().quantity()
-    }
+/// See [`Geometry::quantity`].
+pub(crate) fn quantity(geometry: &Geometry) -> Quantity {
+    geometry.actuator().kind().quantity()
+}
 
-    /// Whether the actuators are rotary servos: the solvers below dispatch on it.
-    fn servos(&self) -> bool {
-        self.actuator().kind() == ActuatorKind::Rotary
-    }
+/// Whether the actuators are rotary servos: the solvers below dispatch on it.
+fn servos(geometry: &Geometry) -> bool {
+    geometry.actuator().kind() == ActuatorKind::Rotary
+}
 
-    /// The speed, acceleration and jerk limits of the actuator values (m/s… or °/s…),
-    /// from `limits`' keys for this kind.
-    pub fn actuator_rate_limits(&self, limits: &crate::model::limits::Limits) -> [Option<f64>; 3] {
-        self.actuator().kind().rate_limits(limits)
-    }
+/// See [`Geometry::actuator_rate_limits`].
+pub(crate) fn actuator_rate_limits(
+    geometry: &Geometry,
+    limits: &crate::model::limits::Limits,
+) -> [Option<f64>; 3] {
+    geometry.actuator().kind().rate_limits(limits)
+}
 
-    /// Every assembly mode of actuator `values` (leg lengths in metres or servo angles in
-    /// degrees): the poses that hold them.
-    pub fn actuator_assembly_modes(
-        &self,
-        values: &[f64; 6],
-    ) -> Result<Vec<crate::solve::forward::ForwardSolution>, ForwardError> {
-        if self.servos() {
-            self.servo_assembly_modes(&values.map(crate::model::angle::Angle::from_degrees))
-        } else {
-            self.assembly_modes(values)
-        }
+/// See [`Geometry::actuator_assembly_modes`].
+pub(crate) fn actuator_assembly_modes(
+    geometry: &Geometry,
+    values: &[f64; 6],
+) -> Result<Vec<crate::solve::forward::ForwardSolution>, ForwardError> {
+    if servos(geometry) {
+        geometry.servo_assembly_modes(&values.map(crate::model::angle::Angle::from_degrees))
+    } else {
+        geometry.assembly_modes(values)
     }
+}
 
-    /// The map from a platform twist to the actuator rates: the legs' inverse Jacobian
-    /// ([`Geometry::jacobian`]) or the servos' ([`Geometry::servo_jacobian`]), or the servo
-    /// that cannot reach its joint.
-    pub fn actuator_jacobian(&self, pose: &Pose) -> Result<nalgebra::Matrix6<f64>, Unreachable> {
-        match self.servo_jacobian(pose) {
-            None => Ok(self.jacobian(pose)),
-            Some(j) => j,
-        }
+/// See [`Geometry::actuator_jacobian`].
+pub(crate) fn actuator_jacobian(
+    geometry: &Geometry,
+    pose: &Pose,
+) -> Result<nalgebra::Matrix6<f64>, Unreachable> {
+    match geometry.servo_jacobian(pose) {
+        None => Ok(geometry.jacobian(pose)),
+        Some(j) => j,
     }
+}
 
-    /// [`Geometry::actuator_jacobian`] and its conditioning, the Jacobian computed once
-    /// (`None` when a servo cannot reach its joint).
-    pub fn actuator_jacobian_and_conditioning(
-        &self,
-        pose: &Pose,
-    ) -> Option<(nalgebra::Matrix6<f64>, crate::solve::jacobian::Conditioning)> {
-        let j = self.actuator_jacobian(pose).ok()?;
-        let conditioning = if self.servos() {
-            self.servo_conditioning_of(&j)?
-        } else {
-            crate::solve::jacobian::conditioning_of(&j, self.characteristic_length())
-        };
-        Some((j, conditioning))
+/// See [`Geometry::actuator_jacobian_and_conditioning`].
+pub(crate) fn actuator_jacobian_and_conditioning(
+    geometry: &Geometry,
+    pose: &Pose,
+) -> Option<(nalgebra::Matrix6<f64>, crate::solve::jacobian::Conditioning)> {
+    let j = geometry.actuator_jacobian(pose).ok()?;
+    let conditioning = if servos(geometry) {
+        geometry.servo_conditioning_of(&j)?
+    } else {
+        crate::solve::jacobian::conditioning_of(&j, geometry.characteristic_length())
+    };
+    Some((j, conditioning))
+}
+
+/// See [`Geometry::actuated_conditioning`].
+pub(crate) fn actuated_conditioning(
+    geometry: &Geometry,
+    pose: &Pose,
+) -> Option<crate::solve::jacobian::Conditioning> {
+    if servos(geometry) {
+        geometry.servo_conditioning(pose)
+    } else {
+        Some(geometry.conditioning(pose))
     }
+}
 
-    /// Conditioning of whatever drives the platform: the legs' ([`Geometry::conditioning`])
-    /// or the servos' ([`Geometry::servo_conditioning`]; `None` when a servo cannot
-    /// reach its joint).
-    pub fn actuated_conditioning(
-        &self,
-        pose: &Pose,
-    ) -> Option<crate::solve::jacobian::Conditioning> {
-        if self.servos() {
-            self.servo_conditioning(pose)
-        } else {
-            Some(self.conditioning(pose))
-        }
+/// See [`Geometry::quantity_limits`].
+pub(crate) fn quantity_limits(geometry: &Geometry) -> [Option<f64>; 2] {
+    match geometry.actuator() {
+        Actuator::Rotary(servos) => match servos.range() {
+            Some((min, max)) => [Some(min.degrees()), Some(max.degrees())],
+            None => [None, None],
+        },
+        Actuator::Linear => [geometry.stroke().min, geometry.stroke().max],
     }
+}
 
-    /// The limits of that quantity: the stroke (m) or the servo range (°), each end
-    /// optional.
-    pub fn quantity_limits(&self) -> [Option<f64>; 2] {
-        match self.actuator() {
-            Actuator::Rotary(servos) => match servos.range() {
-                Some((min, max)) => [Some(min.degrees()), Some(max.degrees())],
-                None => [None, None],
-            },
-            Actuator::Linear => [self.stroke().min, self.stroke().max],
-        }
+/// See [`Geometry::actuator_values_at`].
+pub(crate) fn actuator_values_at(
+    geometry: &Geometry,
+    pose: &Pose,
+) -> Result<[f64; 6], Unreachable> {
+    match geometry.servo_angles(pose) {
+        None => Ok(geometry.leg_lengths(pose)),
+        Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
+        Some(Err(e)) => Err(e),
     }
+}
 
-    /// The quantity at one pose: leg lengths (m) or servo angles (°), or why a servo cannot
-    /// reach its joint.
-    pub fn actuator_values_at(&self, pose: &Pose) -> Result<[f64; 6], Unreachable> {
-        match self.servo_angles(pose) {
-            None => Ok(self.leg_lengths(pose)),
-            Some(Ok(angles)) => Ok(angles.map(|a| a.degrees())),
-            Some(Err(e)) => Err(e),
-        }
-    }
+/// See [`Geometry::pose_from_actuator_values`].
+pub(crate) fn pose_from_actuator_values(
+    geometry: &Geometry,
+    values: &[f64; 6],
+    near: &Pose,
+) -> Result<Pose, ForwardError> {
+    geometry.pose_from_actuator_values_with(values, near, &Default::default())
+}
 
-    /// The pose whose actuator values are `values` (leg lengths in metres or servo angles
-    /// in degrees): forward kinematics searched from `near` (the last pose known, or
-    /// home), or why there is none.
-    pub fn pose_from_actuator_values(
-        &self,
-        values: &[f64; 6],
-        near: &Pose,
-    ) -> Result<Pose, ForwardError> {
-        self.pose_from_actuator_values_with(values, near, &Default::default())
-    }
+/// See [`Geometry::pose_from_actuator_values_with`].
+pub(crate) fn pose_from_actuator_values_with(
+    geometry: &Geometry,
+    values: &[f64; 6],
+    near: &Pose,
+    options: &crate::solve::forward::ForwardOptions,
+) -> Result<Pose, ForwardError> {
+    let solution = if servos(geometry) {
+        let angles = values.map(crate::model::angle::Angle::from_degrees);
+        geometry.forward_servos(&angles, near, options)
+    } else {
+        geometry.forward(values, near, options)
+    };
+    solution.map(|s| s.pose)
+}
 
-    /// [`Geometry::pose_from_actuator_values`] with the forward solver's `options`.
-    pub fn pose_from_actuator_values_with(
-        &self,
-        values: &[f64; 6],
-        near: &Pose,
-        options: &crate::solve::forward::ForwardOptions,
-    ) -> Result<Pose, ForwardError> {
-        let solution = if self.servos() {
-            let angles = values.map(crate::model::angle::Angle::from_degrees);
-            self.forward_servos(&angles, near, options)
-        } else {
-            self.forward(values, near, options)
-        };
-        solution.map(|s| s.pose)
-    }
-
-    /// The quantity at every pose, on all cores (leg lengths in metres or servo angles in
-    /// degrees), or the earliest pose (its index) a servo cannot reach, and why.
-    pub fn actuator_values_batch(
-        &self,
-        poses: &[Pose],
-    ) -> Result<Vec<[f64; 6]>, (usize, Unreachable)> {
-        match self.servo_angles_batch(poses) {
-            None => Ok(self.leg_lengths_batch(poses)),
-            Some(Ok(values)) => Ok(values),
-            Some(Err((k, servo))) => Err((
-                k,
-                // Say why in the closed form's words.
-                match self.servo_angles(&poses[k]) {
-                    Some(Err(e)) => e,
-                    _ => Unreachable {
-                        servo: servo + 1,
-                        ratio: f64::INFINITY,
-                        excess: f64::INFINITY,
-                    },
+/// See [`Geometry::actuator_values_batch`].
+pub(crate) fn actuator_values_batch(
+    geometry: &Geometry,
+    poses: &[Pose],
+) -> Result<Vec<[f64; 6]>, (usize, Unreachable)> {
+    match geometry.servo_angles_batch(poses) {
+        None => Ok(geometry.leg_lengths_batch(poses)),
+        Some(Ok(values)) => Ok(values),
+        Some(Err((k, servo))) => Err((
+            k,
+            // Say why in the closed form's words.
+            match geometry.servo_angles(&poses[k]) {
+                Some(Err(e)) => e,
+                _ => Unreachable {
+                    servo: servo + 1,
+                    ratio: f64::INFINITY,
+                    excess: f64::INFINITY,
                 },
-            )),
-        }
+            },
+        )),
     }
+}
 
-    /// The quantity at every pose, on all cores for legs: lengths in metres, or servo
-    /// angles in degrees with NaN where a servo cannot reach its joint (a gap in a plot).
-    pub fn actuator_values(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
-        let Actuator::Rotary(servos) = self.actuator() else {
-            return self.leg_lengths_batch(poses);
-        };
-        if let Some(Ok(all)) = self.servo_angles_batch(poses) {
-            return all;
-        }
-        let bases = self.base_joints();
-        poses
-            .iter()
-            .map(|p| {
-                let joints = self.inverse(p).platform_joints;
-                std::array::from_fn(|i| {
-                    servo_closure::servo_angle(servos, i, &bases[i], &joints[i])
-                        .map_or(f64::NAN, |a| a.degrees())
-                })
-            })
-            .collect()
+/// See [`Geometry::actuator_values`].
+pub(crate) fn actuator_values(geometry: &Geometry, poses: &[Pose]) -> Vec<[f64; 6]> {
+    let Actuator::Rotary(servos) = geometry.actuator() else {
+        return geometry.leg_lengths_batch(poses);
+    };
+    if let Some(Ok(all)) = geometry.servo_angles_batch(poses) {
+        return all;
     }
+    let bases = geometry.base_joints();
+    poses
+        .iter()
+        .map(|p| {
+            let joints = geometry.inverse(p).platform_joints;
+            std::array::from_fn(|i| {
+                servo_closure::servo_angle(servos, i, &bases[i], &joints[i])
+                    .map_or(f64::NAN, |a| a.degrees())
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -14,68 +14,48 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::model::geometry::Geometry;
+use crate::model::leg_solution::LegSolution;
 use crate::model::pose::Pose;
 
-/// The platform joints, leg vectors and leg lengths for one pose.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LegSolution {
-    /// Platform joints `q_i` in the base frame, metres.
-    pub platform_joints: [Vector3<f64>; 6],
-    /// Leg vectors `l_i = q_i − b_i`, metres.
-    pub legs: [Vector3<f64>; 6],
-    /// Leg lengths `L_i = |l_i|`, metres.
-    pub lengths: [f64; 6],
-}
-
-impl LegSolution {
-    /// Unit vector along leg `i`, from base joint to platform joint (not finite for a
-    /// leg of zero length: see [`Geometry::leg_without_direction`]).
-    pub fn unit(&self, i: usize) -> Vector3<f64> {
-        self.legs[i] / self.lengths[i]
+/// See [`Geometry::inverse`].
+pub(crate) fn inverse(geometry: &Geometry, pose: &Pose) -> LegSolution {
+    let r = pose.rotation();
+    let platform_joints = geometry.platform_joints_for(&pose.position, &r);
+    let legs = std::array::from_fn(|i| platform_joints[i] - geometry.base_joints()[i]);
+    let lengths = legs.map(|l: Vector3<f64>| l.norm());
+    LegSolution {
+        platform_joints,
+        legs,
+        lengths,
     }
 }
 
-impl Geometry {
-    /// Platform joints, leg vectors and lengths for `pose`.
-    pub fn inverse(&self, pose: &Pose) -> LegSolution {
-        let r = pose.rotation();
-        let platform_joints = self.platform_joints_for(&pose.position, &r);
-        let legs = std::array::from_fn(|i| platform_joints[i] - self.base_joints()[i]);
-        let lengths = legs.map(|l: Vector3<f64>| l.norm());
-        LegSolution {
-            platform_joints,
-            legs,
-            lengths,
-        }
-    }
+/// See [`Geometry::leg_lengths`].
+pub(crate) fn leg_lengths(geometry: &Geometry, pose: &Pose) -> [f64; 6] {
+    geometry.inverse(pose).lengths
+}
 
-    /// The six leg lengths for `pose`, metres.
-    pub fn leg_lengths(&self, pose: &Pose) -> [f64; 6] {
-        self.inverse(pose).lengths
-    }
+/// See [`Geometry::platform_joints_for`].
+pub(crate) fn platform_joints_for(
+    geometry: &Geometry,
+    position: &Vector3<f64>,
+    rotation: &Matrix3<f64>,
+) -> [Vector3<f64>; 6] {
+    let c = geometry.pivot();
+    geometry
+        .platform_joints()
+        .map(|a| position + c + rotation * (a - c))
+}
 
-    /// Platform joints in the base frame for a position and rotation matrix.
-    pub fn platform_joints_for(
-        &self,
-        position: &Vector3<f64>,
-        rotation: &Matrix3<f64>,
-    ) -> [Vector3<f64>; 6] {
-        let c = self.pivot();
-        self.platform_joints()
-            .map(|a| position + c + rotation * (a - c))
-    }
+/// See [`Geometry::platform_centre`].
+pub(crate) fn platform_centre(geometry: &Geometry, pose: &Pose) -> Vector3<f64> {
+    let c = geometry.pivot();
+    pose.position + c - pose.rotation() * c
+}
 
-    /// Where the platform centre is in the base frame for `pose` (differs from
-    /// `pose.position` only when the pivot is offset and the platform is rotated).
-    pub fn platform_centre(&self, pose: &Pose) -> Vector3<f64> {
-        let c = self.pivot();
-        pose.position + c - pose.rotation() * c
-    }
-
-    /// The home pose: level, centred, at the home height.
-    pub fn home_pose(&self) -> Pose {
-        Pose::level_at(self.home_height())
-    }
+/// See [`Geometry::home_pose`].
+pub(crate) fn home_pose(geometry: &Geometry) -> Pose {
+    Pose::level_at(geometry.home_height())
 }
 
 #[cfg(test)]

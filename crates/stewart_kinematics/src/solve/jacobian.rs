@@ -70,128 +70,102 @@ impl Conditioning {
     }
 }
 
-impl Geometry {
-    /// The 6×6 inverse Jacobian at `pose`: rows `[u_iᵀ, (r_i × u_i)ᵀ]` (see the module docs).
-    pub fn jacobian(&self, pose: &Pose) -> Matrix6<f64> {
-        let r = pose.rotation();
-        let c = self.pivot();
-        let solution = self.inverse(pose);
-        let mut j = Matrix6::zeros();
-        for i in 0..6 {
-            let u = solution.unit(i);
-            let arm = r * (self.platform_joints()[i] - c);
-            let m = arm.cross(&u);
-            j.fixed_view_mut::<1, 3>(i, 0).copy_from(&u.transpose());
-            j.fixed_view_mut::<1, 3>(i, 3).copy_from(&m.transpose());
-        }
-        j
+/// See [`Geometry::jacobian`].
+pub(crate) fn jacobian(geometry: &Geometry, pose: &Pose) -> Matrix6<f64> {
+    let r = pose.rotation();
+    let c = geometry.pivot();
+    let solution = geometry.inverse(pose);
+    let mut j = Matrix6::zeros();
+    for i in 0..6 {
+        let u = solution.unit(i);
+        let arm = r * (geometry.platform_joints()[i] - c);
+        let m = arm.cross(&u);
+        j.fixed_view_mut::<1, 3>(i, 0).copy_from(&u.transpose());
+        j.fixed_view_mut::<1, 3>(i, 3).copy_from(&m.transpose());
     }
+    j
+}
 
-    /// The first leg (from 0) whose two joints meet at `pose` (closer than a billionth of
-    /// the platform's size): it has no direction, so the Jacobian, the leg forces and
-    /// the stiffness there are undefined.
-    pub fn leg_without_direction(&self, pose: &Pose) -> Option<usize> {
-        let tiny = 1e-9 * self.characteristic_length();
-        let solution = self.inverse(pose);
-        (0..6).find(|&i| solution.lengths[i].is_nan() || solution.lengths[i] <= tiny)
-    }
+/// See [`Geometry::leg_without_direction`].
+pub(crate) fn leg_without_direction(geometry: &Geometry, pose: &Pose) -> Option<usize> {
+    let tiny = 1e-9 * geometry.characteristic_length();
+    let solution = geometry.inverse(pose);
+    (0..6).find(|&i| solution.lengths[i].is_nan() || solution.lengths[i] <= tiny)
+}
 
-    /// The characteristic length used to normalise rotations: the root-mean-square
-    /// distance of the platform joints from the platform frame's origin (the radius, for
-    /// joints on a circle). A rotation by 1 rad then moves the joints by about as much as
-    /// a translation by this length.
-    pub fn characteristic_length(&self) -> f64 {
-        let sum: f64 = self
-            .platform_joints()
-            .iter()
-            .map(|a| a.norm_squared())
-            .sum();
-        (sum / 6.0).sqrt()
-    }
+/// See [`Geometry::characteristic_length`].
+pub(crate) fn characteristic_length(geometry: &Geometry) -> f64 {
+    let sum: f64 = geometry
+        .platform_joints()
+        .iter()
+        .map(|a| a.norm_squared())
+        .sum();
+    (sum / 6.0).sqrt()
+}
 
-    /// The 6×6 map from a platform twist `(v, ω)` about the pivot point to the six servo
-    /// rates (rad/s) of a rotary platform (`None` for linear legs), or the servo that
-    /// cannot reach its joint. Differentiating the rod closure `|q_i − H_i(θ_i)|² = s²`
-    /// with rod vector `d_i = q_i − H_i` and horn tip velocity per radian
-    /// `h_i = ∂H_i/∂θ_i = a(−sin θ cos β, −sin θ sin β, cos θ)` gives the row
-    /// `[d_iᵀ, (r_i × d_i)ᵀ] / (d_i · h_i)`. Where `d_i · h_i = 0` the rod pulls across the
-    /// horn's motion and the servo loses control of it: that row is infinite, and the
-    /// conditioning says singular.
-    pub fn servo_jacobian(
-        &self,
-        pose: &Pose,
-    ) -> Option<Result<Matrix6<f64>, crate::model::rotary::Unreachable>> {
-        let servos = self.rotary()?;
-        let joints = self.inverse(pose).platform_joints;
-        let angles = match servo_closure::servo_angles(servos, self.base_joints(), &joints) {
-            Ok(a) => a,
-            Err(e) => return Some(Err(e)),
-        };
-        let r = pose.rotation();
-        let c = self.pivot();
-        let mut j = Matrix6::zeros();
-        for i in 0..6 {
-            let tip = servos.horn_tip(i, &self.base_joints()[i], angles[i]);
-            let d = joints[i] - tip;
-            let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
-            let (st, ct) = angles[i].radians().sin_cos();
-            let h = servos.horn_length() * Vector3::new(-st * cb, -st * sb, ct);
-            let arm = r * (self.platform_joints()[i] - c);
-            let scale = 1.0 / d.dot(&h);
-            let m = arm.cross(&d);
-            j.fixed_view_mut::<1, 3>(i, 0)
-                .copy_from(&(d.transpose() * scale));
-            j.fixed_view_mut::<1, 3>(i, 3)
-                .copy_from(&(m.transpose() * scale));
-        }
-        Some(Ok(j))
+/// See [`Geometry::servo_jacobian`].
+pub(crate) fn servo_jacobian(
+    geometry: &Geometry,
+    pose: &Pose,
+) -> Option<Result<Matrix6<f64>, crate::model::rotary::Unreachable>> {
+    let servos = geometry.rotary()?;
+    let joints = geometry.inverse(pose).platform_joints;
+    let angles = match servo_closure::servo_angles(servos, geometry.base_joints(), &joints) {
+        Ok(a) => a,
+        Err(e) => return Some(Err(e)),
+    };
+    let r = pose.rotation();
+    let c = geometry.pivot();
+    let mut j = Matrix6::zeros();
+    for i in 0..6 {
+        let tip = servos.horn_tip(i, &geometry.base_joints()[i], angles[i]);
+        let d = joints[i] - tip;
+        let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
+        let (st, ct) = angles[i].radians().sin_cos();
+        let h = servos.horn_length() * Vector3::new(-st * cb, -st * sb, ct);
+        let arm = r * (geometry.platform_joints()[i] - c);
+        let scale = 1.0 / d.dot(&h);
+        let m = arm.cross(&d);
+        j.fixed_view_mut::<1, 3>(i, 0)
+            .copy_from(&(d.transpose() * scale));
+        j.fixed_view_mut::<1, 3>(i, 3)
+            .copy_from(&(m.transpose() * scale));
     }
+    Some(Ok(j))
+}
 
-    /// Conditioning of a rotary platform at `pose` (`None` for linear legs, or when a
-    /// servo cannot reach its joint): the singular values and weakest twist of the servo
-    /// Jacobian with its rows scaled by the horn length (servo rates as horn-tip speeds,
-    /// m/s per m/s) and its rotation columns by the characteristic length, as for legs.
-    ///
-    /// The condition number is the rods' own (the Jacobian with unit rows, as for legs)
-    /// divided by the worst servo's transmission `|cos|` of the angle between its rod and
-    /// its horn tip's motion (1: the rod pulls straight along it; 0: across it, at the edge
-    /// of reach). Near the edge of reach a row grows without bound; when all six reach it
-    /// together (pure heave of a symmetric platform) the rows grow alike and their ratio
-    /// alone stays finite (12.3 for servo-desk at 141.70 mm), so the transmission is taken
-    /// into account on its own, and the verdict becomes singular either way.
-    pub fn servo_conditioning(&self, pose: &Pose) -> Option<Conditioning> {
-        let j = self.servo_jacobian(pose)?.ok()?;
-        self.servo_conditioning_of(&j)
-    }
+/// See [`Geometry::servo_conditioning`].
+pub(crate) fn servo_conditioning(geometry: &Geometry, pose: &Pose) -> Option<Conditioning> {
+    let j = geometry.servo_jacobian(pose)?.ok()?;
+    geometry.servo_conditioning_of(&j)
+}
 
-    /// [`Geometry::servo_conditioning`] of a servo Jacobian already computed (`None` for
-    /// linear legs).
-    pub fn servo_conditioning_of(&self, j: &Matrix6<f64>) -> Option<Conditioning> {
-        let servos = self.rotary()?;
-        let scaled = j * servos.horn_length();
-        let ell = self.characteristic_length();
-        let mut conditioning = conditioning_of(&scaled, ell);
-        // Row i's translation part is d_i / (d_i · h_i): its length is 1 / (|h_i| τ_i).
-        let mut unit_rows = scaled;
-        let mut worst_transmission = f64::INFINITY;
-        for i in 0..6 {
-            let length = scaled.fixed_view::<1, 3>(i, 0).norm();
-            worst_transmission = worst_transmission.min(1.0 / length);
-            unit_rows.row_mut(i).scale_mut(1.0 / length);
-        }
-        let rods = conditioning_of(&unit_rows, ell).condition_number;
-        conditioning.condition_number = conditioning
-            .condition_number
-            .and(rods)
-            .map(|k| k / worst_transmission)
-            .filter(|k| k.is_finite() && k * RANK_TOLERANCE < 1.0);
-        Some(conditioning)
+/// See [`Geometry::servo_conditioning_of`].
+pub(crate) fn servo_conditioning_of(geometry: &Geometry, j: &Matrix6<f64>) -> Option<Conditioning> {
+    let servos = geometry.rotary()?;
+    let scaled = j * servos.horn_length();
+    let ell = geometry.characteristic_length();
+    let mut conditioning = conditioning_of(&scaled, ell);
+    // Row i's translation part is d_i / (d_i · h_i): its length is 1 / (|h_i| τ_i).
+    let mut unit_rows = scaled;
+    let mut worst_transmission = f64::INFINITY;
+    for i in 0..6 {
+        let length = scaled.fixed_view::<1, 3>(i, 0).norm();
+        worst_transmission = worst_transmission.min(1.0 / length);
+        unit_rows.row_mut(i).scale_mut(1.0 / length);
     }
+    let rods = conditioning_of(&unit_rows, ell).condition_number;
+    conditioning.condition_number = conditioning
+        .condition_number
+        .and(rods)
+        .map(|k| k / worst_transmission)
+        .filter(|k| k.is_finite() && k * RANK_TOLERANCE < 1.0);
+    Some(conditioning)
+}
 
-    /// Singular values, condition number and weakest twist of the normalised Jacobian.
-    pub fn conditioning(&self, pose: &Pose) -> Conditioning {
-        conditioning_of(&self.jacobian(pose), self.characteristic_length())
-    }
+/// See [`Geometry::conditioning`].
+pub(crate) fn conditioning(geometry: &Geometry, pose: &Pose) -> Conditioning {
+    conditioning_of(&geometry.jacobian(pose), geometry.characteristic_length())
 }
 
 /// Most SVD sweeps: a finite 6×6 matrix converges in a few dozen.

@@ -9,6 +9,7 @@ pub(crate) mod fast_trig;
 pub mod forward;
 pub mod inverse;
 pub mod jacobian;
+mod queries;
 mod scene_frame;
 mod servo_angles;
 pub mod servo_closure;

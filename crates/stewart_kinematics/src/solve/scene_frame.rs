@@ -11,70 +11,68 @@ use crate::solve::servo_closure;
 /// Fraction of the stroke near either end that counts as "near the limit".
 const NEAR_LIMIT: f64 = 0.05;
 
-impl Geometry {
-    /// The scene for `pose`, with the platform-centre path `path` (already in metres).
-    pub fn scene_frame(&self, pose: &Pose, path: Vec<Vector3<f64>>) -> SceneFrame {
-        let solution = self.inverse(pose);
-        let stroke = self.stroke();
-        let servos = self.servo_frames(&solution.platform_joints);
-        let mut legs = std::array::from_fn(|i| {
-            let length = solution.lengths[i];
-            let usage = stroke.usage(length);
-            let over = stroke.violation(length).is_some();
-            LegFrame {
-                base: self.base_joints()[i],
-                top: solution.platform_joints[i],
-                length,
-                stroke_usage: usage,
-                min_length: stroke.min,
-                status: status_of(over, usage),
-            }
-        });
-        if let Some(servos) = &servos {
-            for (leg, servo) in legs.iter_mut().zip(servos) {
-                leg.base = servo.horn_tip;
-                leg.length = (leg.top - leg.base).norm();
-                leg.stroke_usage = servo.range_usage;
-                leg.status = servo.status;
-            }
+/// See [`Geometry::scene_frame`].
+pub(crate) fn scene_frame(geometry: &Geometry, pose: &Pose, path: Vec<Vector3<f64>>) -> SceneFrame {
+    let solution = geometry.inverse(pose);
+    let stroke = geometry.stroke();
+    let servos = servo_frames(geometry, &solution.platform_joints);
+    let mut legs = std::array::from_fn(|i| {
+        let length = solution.lengths[i];
+        let usage = stroke.usage(length);
+        let over = stroke.violation(length).is_some();
+        LegFrame {
+            base: geometry.base_joints()[i],
+            top: solution.platform_joints[i],
+            length,
+            stroke_usage: usage,
+            min_length: stroke.min,
+            status: status_of(over, usage),
         }
-        SceneFrame {
-            base_joints: *self.base_joints(),
-            platform_joints: solution.platform_joints,
-            platform_centre: self.platform_centre(pose),
-            platform_rotation: pose.rotation(),
-            base_radius: self.plate_radius(Plate::Base),
-            platform_radius: self.plate_radius(Plate::Platform),
-            legs,
-            servos,
-            path,
+    });
+    if let Some(servos) = &servos {
+        for (leg, servo) in legs.iter_mut().zip(servos) {
+            leg.base = servo.horn_tip;
+            leg.length = (leg.top - leg.base).norm();
+            leg.stroke_usage = servo.range_usage;
+            leg.status = servo.status;
         }
     }
+    SceneFrame {
+        base_joints: *geometry.base_joints(),
+        platform_joints: solution.platform_joints,
+        platform_centre: geometry.platform_centre(pose),
+        platform_rotation: pose.rotation(),
+        base_radius: geometry.plate_radius(Plate::Base),
+        platform_radius: geometry.plate_radius(Plate::Platform),
+        legs,
+        servos,
+        path,
+    }
+}
 
-    /// The servos of a rotary platform holding platform joints `joints` (`None` for legs).
-    fn servo_frames(&self, joints: &[Vector3<f64>; 6]) -> Option<[ServoFrame; 6]> {
-        let servos = self.rotary()?;
-        let bases = self.base_joints();
-        Some(std::array::from_fn(|i| {
-            let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
-            let solved = servo_closure::servo_angle(servos, i, &bases[i], &joints[i]).ok();
-            let theta = solved
-                .unwrap_or_else(|| servo_closure::closest_angle(servos, i, &bases[i], &joints[i]));
-            let usage = solved.and_then(|t| {
-                let (min, max) = servos.range()?;
-                Some((t.radians() - min.radians()) / (max.radians() - min.radians()))
-            });
-            let over = solved.is_none() || usage.is_some_and(|u| !(0.0..=1.0).contains(&u));
-            ServoFrame {
-                shaft: bases[i],
-                axis: Vector3::new(-sb, cb, 0.0),
-                horn_tip: servos.horn_tip(i, &bases[i], theta),
-                angle_deg: solved.map(|t| t.degrees()),
-                range_usage: usage,
-                status: status_of(over, usage),
-            }
-        }))
-    }
+/// The servos of a rotary platform holding platform joints `joints` (`None` for legs).
+fn servo_frames(geometry: &Geometry, joints: &[Vector3<f64>; 6]) -> Option<[ServoFrame; 6]> {
+    let servos = geometry.rotary()?;
+    let bases = geometry.base_joints();
+    Some(std::array::from_fn(|i| {
+        let (sb, cb) = servos.horn_angles()[i].radians().sin_cos();
+        let solved = servo_closure::servo_angle(servos, i, &bases[i], &joints[i]).ok();
+        let theta = solved
+            .unwrap_or_else(|| servo_closure::closest_angle(servos, i, &bases[i], &joints[i]));
+        let usage = solved.and_then(|t| {
+            let (min, max) = servos.range()?;
+            Some((t.radians() - min.radians()) / (max.radians() - min.radians()))
+        });
+        let over = solved.is_none() || usage.is_some_and(|u| !(0.0..=1.0).contains(&u));
+        ServoFrame {
+            shaft: bases[i],
+            axis: Vector3::new(-sb, cb, 0.0),
+            horn_tip: servos.horn_tip(i, &bases[i], theta),
+            angle_deg: solved.map(|t| t.degrees()),
+            range_usage: usage,
+            status: status_of(over, usage),
+        }
+    }))
 }
 
 /// Over the limit, near it (within [`NEAR_LIMIT`] of an end of the usage), or normal.

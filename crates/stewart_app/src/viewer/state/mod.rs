@@ -33,7 +33,7 @@ use stewart_kinematics::io::settings::Setting;
 use stewart_kinematics::model::link_settings::LinkSettings;
 #[cfg(test)]
 use stewart_kinematics::{
-    CheckReport, GeometryParams, model::layout::Layout, solve::inverse::LegSolution,
+    CheckReport, GeometryParams, model::layout::Layout, model::leg_solution::LegSolution,
 };
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};

@@ -2,8 +2,8 @@
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_columns};
+use crate::model::leg_solution::LegSolution;
 use crate::model::limits::{LEG_PAIRS, Limits, pair_distances};
-use crate::solve::inverse::LegSolution;
 
 /// A finding for every pair of legs that comes closer than twice the leg radius (pairs
 /// that are as close as each other are all reported); the summary gives the smallest

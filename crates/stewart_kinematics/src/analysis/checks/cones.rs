@@ -3,9 +3,9 @@
 
 use super::FindingKind;
 use super::scan::{Bound, Collected, scan_legs};
+use crate::model::leg_solution::LegSolution;
 use crate::model::limits::{Limits, joint_angles};
 use crate::model::pose::Pose;
-use crate::solve::inverse::LegSolution;
 
 /// Findings and summaries for the cone limits that are set (angles in degrees).
 pub(crate) fn check(

@@ -3,7 +3,7 @@
 
 use crate::analysis::checks::{Finding, FindingKind};
 use crate::model::geometry::Geometry;
-use crate::solve::inverse::LegSolution;
+use crate::model::leg_solution::LegSolution;
 
 /// Worst distance change over all samples, and a finding if it exceeds `tolerance` (metres).
 pub fn check(

@@ -12,10 +12,10 @@ use super::scan::{Bound, Collected, scan_columns, scan_legs};
 use super::{CheckSettings, FindingKind, jumps};
 use crate::analysis::differences::{first_difference, second_difference, third_difference};
 use crate::model::geometry::Geometry;
+use crate::model::leg_solution::LegSolution;
 use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
 use crate::model::pose::Pose;
 use crate::model::rotary::RotaryActuators;
-use crate::solve::inverse::LegSolution;
 use crate::solve::servo_closure;
 
 /// The servo side of every sample of a motion.

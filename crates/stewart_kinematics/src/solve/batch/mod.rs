@@ -394,117 +394,106 @@ impl ServoBatch {
     }
 }
 
-impl Geometry {
-    /// Servo angles (degrees) of many poses of a rotary platform, on all cores (`None`
-    /// for linear legs); an unreachable pose is the error, with its index and servo
-    /// (both from 0). The earliest such pose is reported.
-    pub fn servo_angles_batch(&self, poses: &[Pose]) -> Option<Result<Vec<[f64; 6]>, OutOfReach>> {
-        let solver = ServoBatch::new(self)?;
-        let mut out = vec![[0.0; 6]; poses.len()];
-        Some(match solver.solve_parallel(poses, &mut out) {
-            Ok(()) => Ok(out
-                .into_iter()
-                .map(|row| row.map(|r| crate::model::angle::Angle::from_radians(r).degrees()))
-                .collect()),
-            // Parallel chunks may stop at a later pose first: find the earliest.
-            Err(_) => Err(poses
-                .iter()
-                .enumerate()
-                .find_map(|(k, p)| solver.angles(p).err().map(|servo| (k, servo)))
-                .unwrap_or((0, 0))),
-        })
-    }
+/// See [`Geometry::servo_angles_batch`].
+pub(crate) fn servo_angles_batch(
+    geometry: &Geometry,
+    poses: &[Pose],
+) -> Option<Result<Vec<[f64; 6]>, OutOfReach>> {
+    let solver = ServoBatch::new(geometry)?;
+    let mut out = vec![[0.0; 6]; poses.len()];
+    Some(match solver.solve_parallel(poses, &mut out) {
+        Ok(()) => Ok(out
+            .into_iter()
+            .map(|row| row.map(|r| crate::model::angle::Angle::from_radians(r).degrees()))
+            .collect()),
+        // Parallel chunks may stop at a later pose first: find the earliest.
+        Err(_) => Err(poses
+            .iter()
+            .enumerate()
+            .find_map(|(k, p)| solver.angles(p).err().map(|servo| (k, servo)))
+            .unwrap_or((0, 0))),
+    })
+}
 
-    /// Leg lengths of many poses, on all cores; allocates only the result.
-    pub fn leg_lengths_batch(&self, poses: &[Pose]) -> Vec<[f64; 6]> {
-        let mut out = vec![[0.0; 6]; poses.len()];
-        BatchSolver::new(self).solve_parallel(poses, &mut out);
-        out
-    }
+/// See [`Geometry::leg_lengths_batch`].
+pub(crate) fn leg_lengths_batch(geometry: &Geometry, poses: &[Pose]) -> Vec<[f64; 6]> {
+    let mut out = vec![[0.0; 6]; poses.len()];
+    BatchSolver::new(geometry).solve_parallel(poses, &mut out);
+    out
+}
 
-    /// Actuator values — leg lengths (m), or servo angles (degrees) of a rotary platform —
-    /// of pose rows `[x, y, z, roll, pitch, yaw]` (metres, degrees) into `out`, on all
-    /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
-    /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
-    /// same poses. A value that is not finite, or outside the accepted range of poses
-    /// ([`crate::io::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
-    /// while the chunk is in cache: no pass of its own), and so is a row a servo cannot
-    /// reach: the earliest such row is the error; `out` is then unspecified.
-    ///
-    /// # Panics
-    /// If `out` is shorter than `rows` (a programming error, not a user error).
-    pub fn actuator_values_rows(
-        &self,
-        rows: &[[f64; 6]],
-        out: &mut [[f64; 6]],
-    ) -> Result<(), RowError> {
-        assert!(out.len() >= rows.len(), "output shorter than input");
-        let out = &mut out[..rows.len()];
-        let servos = ServoBatch::new(self);
-        // Parallel chunks may stop at a later row first: the earliest is found afterwards.
-        let earliest_refused = || {
-            rows.iter()
-                .enumerate()
-                .find_map(|(k, row)| {
-                    if let Err((column, why)) = crate::io::bounds::check_pose_row(row) {
-                        return Some(match why {
-                            crate::io::bounds::OutOfBounds::NotFinite(_) => {
-                                RowError::NotFinite { row: k, column }
-                            }
-                            crate::io::bounds::OutOfBounds::Outside { .. } => {
-                                RowError::Outside { row: k, column }
-                            }
-                        });
-                    }
-                    let solver = servos.as_ref()?;
-                    solver
-                        .angles(&Pose::from_row(row))
-                        .err()
-                        .map(|servo| RowError::Unreachable { row: k, servo })
-                })
-                .unwrap_or(RowError::NotFinite { row: 0, column: 0 })
-        };
-        let solved = match &servos {
-            None => {
-                let solver = BatchSolver::new(self);
-                rows.par_chunks(CHUNK)
-                    .zip(out.par_chunks_mut(CHUNK))
-                    .try_for_each(|(r, o)| {
-                        let arch = pulp::Arch::new();
-                        if !arch.dispatch(Accepted(r)) {
-                            return Err(());
+/// See [`Geometry::actuator_values_rows`].
+pub(crate) fn actuator_values_rows(
+    geometry: &Geometry,
+    rows: &[[f64; 6]],
+    out: &mut [[f64; 6]],
+) -> Result<(), RowError> {
+    assert!(out.len() >= rows.len(), "output shorter than input");
+    let out = &mut out[..rows.len()];
+    let servos = ServoBatch::new(geometry);
+    // Parallel chunks may stop at a later row first: the earliest is found afterwards.
+    let earliest_refused = || {
+        rows.iter()
+            .enumerate()
+            .find_map(|(k, row)| {
+                if let Err((column, why)) = crate::io::bounds::check_pose_row(row) {
+                    return Some(match why {
+                        crate::io::bounds::OutOfBounds::NotFinite(_) => {
+                            RowError::NotFinite { row: k, column }
                         }
-                        // Accepted poses of an accepted geometry give finite lengths.
-                        arch.dispatch(Lengths {
-                            solver: &solver,
-                            poses: r,
-                            out: &mut *o,
-                        });
-                        Ok(())
-                    })
-            }
-            Some(solver) => rows
-                .par_chunks(CHUNK)
+                        crate::io::bounds::OutOfBounds::Outside { .. } => {
+                            RowError::Outside { row: k, column }
+                        }
+                    });
+                }
+                let solver = servos.as_ref()?;
+                solver
+                    .angles(&Pose::from_row(row))
+                    .err()
+                    .map(|servo| RowError::Unreachable { row: k, servo })
+            })
+            .unwrap_or(RowError::NotFinite { row: 0, column: 0 })
+    };
+    let solved = match &servos {
+        None => {
+            let solver = BatchSolver::new(geometry);
+            rows.par_chunks(CHUNK)
                 .zip(out.par_chunks_mut(CHUNK))
                 .try_for_each(|(r, o)| {
                     let arch = pulp::Arch::new();
                     if !arch.dispatch(Accepted(r)) {
                         return Err(());
                     }
-                    arch.dispatch(ServoChunk {
-                        solver,
+                    // Accepted poses of an accepted geometry give finite lengths.
+                    arch.dispatch(Lengths {
+                        solver: &solver,
                         poses: r,
                         out: &mut *o,
-                    })
-                    .map_err(drop)?;
-                    for row in o.iter_mut() {
-                        *row = row.map(|r| crate::model::angle::Angle::from_radians(r).degrees());
-                    }
+                    });
                     Ok(())
-                }),
-        };
-        solved.map_err(|()| earliest_refused())
-    }
+                })
+        }
+        Some(solver) => rows
+            .par_chunks(CHUNK)
+            .zip(out.par_chunks_mut(CHUNK))
+            .try_for_each(|(r, o)| {
+                let arch = pulp::Arch::new();
+                if !arch.dispatch(Accepted(r)) {
+                    return Err(());
+                }
+                arch.dispatch(ServoChunk {
+                    solver,
+                    poses: r,
+                    out: &mut *o,
+                })
+                .map_err(drop)?;
+                for row in o.iter_mut() {
+                    *row = row.map(|r| crate::model::angle::Angle::from_radians(r).degrees());
+                }
+                Ok(())
+            }),
+    };
+    solved.map_err(|()| earliest_refused())
 }
 
 /// [`all_accepted`] compiled for the CPU's widest instructions.

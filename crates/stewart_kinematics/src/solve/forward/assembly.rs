@@ -36,72 +36,72 @@ pub struct AssemblyModes {
     pub complex_solutions: usize,
 }
 
-impl Geometry {
-    /// Every real assembly for `lengths`, sorted by height (highest first). Fails like
-    /// [`Geometry::forward`] for invalid lengths, and with [`ForwardError::NoRealPose`]
-    /// when no real pose has these lengths.
-    pub fn assembly_modes(&self, lengths: &[f64; 6]) -> Result<Vec<ForwardSolution>, ForwardError> {
-        Ok(self.all_assembly_modes(lengths)?.modes)
-    }
+/// See [`Geometry::assembly_modes`].
+pub(crate) fn assembly_modes(
+    geometry: &Geometry,
+    lengths: &[f64; 6],
+) -> Result<Vec<ForwardSolution>, ForwardError> {
+    Ok(geometry.all_assembly_modes(lengths)?.modes)
+}
 
-    /// [`Geometry::assembly_modes`] with the count of complex solutions.
-    pub fn all_assembly_modes(&self, lengths: &[f64; 6]) -> Result<AssemblyModes, ForwardError> {
-        self.check_lengths(lengths)?;
-        self.solve_modes(self.base_joints(), lengths)
-    }
+/// See [`Geometry::all_assembly_modes`].
+pub(crate) fn all_assembly_modes(
+    geometry: &Geometry,
+    lengths: &[f64; 6],
+) -> Result<AssemblyModes, ForwardError> {
+    geometry.check_lengths(lengths)?;
+    solve_modes(geometry, geometry.base_joints(), lengths)
+}
 
-    /// Every real assembly of a rotary platform whose servos stand at `angles` (the horn
-    /// tips are then fixed and the rods legs of one length), sorted by height. Fails like
-    /// [`Geometry::forward_servos`].
-    pub fn servo_assembly_modes(
-        &self,
-        angles: &[crate::model::angle::Angle; 6],
-    ) -> Result<Vec<ForwardSolution>, ForwardError> {
-        let (tips, rod) = self.servo_anchors(angles)?;
-        Ok(self.solve_modes(&tips, &[rod; 6])?.modes)
-    }
+/// See [`Geometry::servo_assembly_modes`].
+pub(crate) fn servo_assembly_modes(
+    geometry: &Geometry,
+    angles: &[crate::model::angle::Angle; 6],
+) -> Result<Vec<ForwardSolution>, ForwardError> {
+    let (tips, rod) = geometry.servo_anchors(angles)?;
+    Ok(solve_modes(geometry, &tips, &[rod; 6])?.modes)
+}
 
-    /// All solutions for legs of `lengths` from fixed `anchors`, by homotopy.
-    fn solve_modes(
-        &self,
-        anchors: &[Vector3<f64>; 6],
-        lengths: &[f64; 6],
-    ) -> Result<AssemblyModes, ForwardError> {
-        let legs = std::array::from_fn(|i| {
-            LegParams::real(&self.platform_joints()[i], &anchors[i], lengths[i])
-        });
-        let solutions = homotopy::all_solutions(&legs).ok_or(ForwardError::NoRealPose {
-            complex_solutions: 0,
-        })?;
-        let options = ForwardOptions {
-            max_iterations: 50,
-            ..ForwardOptions::default()
+/// All solutions for legs of `lengths` from fixed `anchors`, by homotopy.
+fn solve_modes(
+    geometry: &Geometry,
+    anchors: &[Vector3<f64>; 6],
+    lengths: &[f64; 6],
+) -> Result<AssemblyModes, ForwardError> {
+    let legs = std::array::from_fn(|i| {
+        LegParams::real(&geometry.platform_joints()[i], &anchors[i], lengths[i])
+    });
+    let solutions = homotopy::all_solutions(&legs).ok_or(ForwardError::NoRealPose {
+        complex_solutions: 0,
+    })?;
+    let options = ForwardOptions {
+        max_iterations: 50,
+        ..ForwardOptions::default()
+    };
+    let c = geometry.pivot();
+    let mut modes: Vec<ForwardSolution> = Vec::new();
+    for z in homotopy::real_solutions(&solutions, REAL) {
+        let (r, t) = placement_of(&z);
+        // q = R a + t = p + c + R (a − c), so p = t − c + R c.
+        let start = from_rotation(t - c + r * c, &r);
+        let Ok(polished) = geometry.forward_from(anchors, lengths, &start, &options) else {
+            continue;
         };
-        let c = self.pivot();
-        let mut modes: Vec<ForwardSolution> = Vec::new();
-        for z in homotopy::real_solutions(&solutions, REAL) {
-            let (r, t) = placement_of(&z);
-            // q = R a + t = p + c + R (a − c), so p = t − c + R c.
-            let start = from_rotation(t - c + r * c, &r);
-            let Ok(polished) = self.forward_from(anchors, lengths, &start, &options) else {
-                continue;
-            };
-            let pose = canonical(&polished.pose);
-            if !modes.iter().any(|m| same_placement(&m.pose, &pose)) {
-                modes.push(ForwardSolution { pose, ..polished });
-            }
+        let pose = canonical(&polished.pose);
+        if !modes.iter().any(|m| same_placement(&m.pose, &pose)) {
+            modes.push(ForwardSolution { pose, ..polished });
         }
-        if modes.is_empty() {
-            return Err(ForwardError::NoRealPose {
-                complex_solutions: solutions.len(),
-            });
-        }
-        modes.sort_by(|a, b| b.pose.position.z.total_cmp(&a.pose.position.z));
-        Ok(AssemblyModes {
-            modes,
-            complex_solutions: solutions.len(),
-        })
     }
+    if modes.is_empty() {
+        return Err(ForwardError::NoRealPose {
+            complex_solutions: solutions.len(),
+        });
+    }
+    modes.sort_by(|a, b| b.pose.position.z.total_cmp(&a.pose.position.z));
+    Ok(AssemblyModes {
+        modes,
+        complex_solutions: solutions.len(),
+    })
 }
 
 /// The pose at `position` with rotation matrix `r`, Euler angles in the principal ranges.

@@ -147,236 +147,231 @@ fn rotation_and_axes(angles: [f64; 3]) -> (Matrix3<f64>, [Vector3<f64>; 3]) {
     (r, axes)
 }
 
-impl Geometry {
-    /// Residual `L(x) − target` and its derivative `∂L/∂x` at pose coordinates `x`, for
-    /// legs from the fixed points `anchors` (the base joints, or a rotary platform's horn
-    /// tips) to the platform joints.
-    fn residual_and_derivative(
-        &self,
-        anchors: &[Vector3<f64>; 6],
-        x: &Vector6<f64>,
-        target: &[f64; 6],
-    ) -> (Vector6<f64>, Matrix6<f64>) {
-        let (r, axes) = rotation_and_axes([x[3], x[4], x[5]]);
-        let position = Vector3::new(x[0], x[1], x[2]);
-        let c = self.pivot();
-        let mut f = Vector6::zeros();
-        let mut d = Matrix6::zeros();
-        for i in 0..6 {
-            let arm = r * (self.platform_joints()[i] - c);
-            let leg = position + c + arm - anchors[i];
-            let length = leg.norm();
-            let u = leg / length;
-            f[i] = length - target[i];
-            // ∂L/∂θ_k = u · (w_k × arm) = w_k · (arm × u).
-            let moment = arm.cross(&u);
-            for k in 0..3 {
-                d[(i, k)] = u[k];
-                d[(i, 3 + k)] = axes[k].dot(&moment);
-            }
+/// Residual `L(x) − target` and its derivative `∂L/∂x` at pose coordinates `x`, for
+/// legs from the fixed points `anchors` (the base joints, or a rotary platform's horn
+/// tips) to the platform joints.
+fn residual_and_derivative(
+    geometry: &Geometry,
+    anchors: &[Vector3<f64>; 6],
+    x: &Vector6<f64>,
+    target: &[f64; 6],
+) -> (Vector6<f64>, Matrix6<f64>) {
+    let (r, axes) = rotation_and_axes([x[3], x[4], x[5]]);
+    let position = Vector3::new(x[0], x[1], x[2]);
+    let c = geometry.pivot();
+    let mut f = Vector6::zeros();
+    let mut d = Matrix6::zeros();
+    for i in 0..6 {
+        let arm = r * (geometry.platform_joints()[i] - c);
+        let leg = position + c + arm - anchors[i];
+        let length = leg.norm();
+        let u = leg / length;
+        f[i] = length - target[i];
+        // ∂L/∂θ_k = u · (w_k × arm) = w_k · (arm × u).
+        let moment = arm.cross(&u);
+        for k in 0..3 {
+            d[(i, k)] = u[k];
+            d[(i, 3 + k)] = axes[k].dot(&moment);
         }
-        (f, d)
     }
+    (f, d)
+}
 
-    /// Validate leg lengths against the stroke.
-    pub fn check_lengths(&self, lengths: &[f64; 6]) -> Result<(), ForwardError> {
-        let stroke = self.stroke();
-        for (i, &l) in lengths.iter().enumerate() {
-            if !(l.is_finite() && l > 0.0) {
-                return Err(ForwardError::InvalidLength {
-                    leg: i + 1,
-                    value: l,
-                });
-            }
-            if stroke.violation(l).is_some() {
-                return Err(ForwardError::OutsideStroke {
-                    leg: i + 1,
-                    length: l,
-                    min: stroke.min.unwrap_or(0.0),
-                    max: stroke.max.unwrap_or(f64::INFINITY),
-                });
-            }
+/// See [`Geometry::check_lengths`].
+pub(crate) fn check_lengths(geometry: &Geometry, lengths: &[f64; 6]) -> Result<(), ForwardError> {
+    let stroke = geometry.stroke();
+    for (i, &l) in lengths.iter().enumerate() {
+        if !(l.is_finite() && l > 0.0) {
+            return Err(ForwardError::InvalidLength {
+                leg: i + 1,
+                value: l,
+            });
         }
-        Ok(())
+        if stroke.violation(l).is_some() {
+            return Err(ForwardError::OutsideStroke {
+                leg: i + 1,
+                length: l,
+                min: stroke.min.unwrap_or(0.0),
+                max: stroke.max.unwrap_or(f64::INFINITY),
+            });
+        }
     }
+    Ok(())
+}
 
-    /// The pose with leg lengths `lengths`, searched from `start`.
-    pub fn forward(
-        &self,
-        lengths: &[f64; 6],
-        start: &Pose,
-        options: &ForwardOptions,
-    ) -> Result<ForwardSolution, ForwardError> {
-        self.check_lengths(lengths)?;
-        self.forward_unchecked(lengths, start, options)
+/// See [`Geometry::forward`].
+pub(crate) fn forward(
+    geometry: &Geometry,
+    lengths: &[f64; 6],
+    start: &Pose,
+    options: &ForwardOptions,
+) -> Result<ForwardSolution, ForwardError> {
+    geometry.check_lengths(lengths)?;
+    geometry.forward_unchecked(lengths, start, options)
+}
+
+/// See [`Geometry::forward_unchecked`].
+pub(crate) fn forward_unchecked(
+    geometry: &Geometry,
+    lengths: &[f64; 6],
+    start: &Pose,
+    options: &ForwardOptions,
+) -> Result<ForwardSolution, ForwardError> {
+    geometry.forward_from(geometry.base_joints(), lengths, start, options)
+}
+
+/// See [`Geometry::forward_servos`].
+pub(crate) fn forward_servos(
+    geometry: &Geometry,
+    angles: &[Angle; 6],
+    start: &Pose,
+    options: &ForwardOptions,
+) -> Result<ForwardSolution, ForwardError> {
+    let (tips, rod) = geometry.servo_anchors(angles)?;
+    geometry.forward_from(&tips, &[rod; 6], start, options)
+}
+
+/// See [`Geometry::servo_anchors`].
+pub(crate) fn servo_anchors(
+    geometry: &Geometry,
+    angles: &[Angle; 6],
+) -> Result<([Vector3<f64>; 6], f64), ForwardError> {
+    let Some(servos) = geometry.rotary() else {
+        return Err(ForwardError::NotRotary);
+    };
+    for (i, a) in angles.iter().enumerate() {
+        if !a.radians().is_finite() {
+            return Err(ForwardError::InvalidAngle {
+                servo: i + 1,
+                value: a.radians().to_degrees(),
+            });
+        }
     }
+    let tips = std::array::from_fn(|i| servos.horn_tip(i, &geometry.base_joints()[i], angles[i]));
+    Ok((tips, servos.rod_length()))
+}
 
-    /// [`Geometry::forward`] without the stroke check (for searches that may pass through any length).
-    pub(crate) fn forward_unchecked(
-        &self,
-        lengths: &[f64; 6],
-        start: &Pose,
-        options: &ForwardOptions,
-    ) -> Result<ForwardSolution, ForwardError> {
-        self.forward_from(self.base_joints(), lengths, start, options)
+/// See [`Geometry::forward_from`].
+pub(crate) fn forward_from(
+    geometry: &Geometry,
+    anchors: &[Vector3<f64>; 6],
+    lengths: &[f64; 6],
+    start: &Pose,
+    options: &ForwardOptions,
+) -> Result<ForwardSolution, ForwardError> {
+    let mut x = coordinates(start);
+    let mut lambda: f64 = 1e-3;
+    let mut iterations = 0;
+    let (mut f, mut d) = residual_and_derivative(geometry, anchors, &x, lengths);
+    loop {
+        let residual = f.amax();
+        if !residual.is_finite() {
+            return Err(ForwardError::NotConverged {
+                iterations,
+                residual,
+            });
+        }
+        if residual <= options.tolerance {
+            if options.polish {
+                (x, f) = polished(geometry, anchors, x, f, d, lengths);
+            }
+            return Ok(ForwardSolution {
+                pose: pose_of(&x),
+                iterations,
+                residual: f.amax(),
+            });
+        }
+        if iterations == options.max_iterations {
+            return Err(ForwardError::NotConverged {
+                iterations,
+                residual,
+            });
+        }
+        iterations += 1;
+        let cost = f.norm_squared();
+        // Newton step with backtracking; the accepted point's residual and derivative
+        // are those of the next iteration.
+        if let Some(step) = d.lu().solve(&(-f))
+            && step.iter().all(|v| v.is_finite())
+            && let Some(next) = line_search(geometry, anchors, &x, &step, lengths, cost)
+        {
+            (x, f, d) = next;
+            lambda = (lambda * 0.3).max(1e-12);
+            continue;
+        }
+        // Levenberg–Marquardt: increase the damping until the cost decreases.
+        let g = d.transpose() * f;
+        let h = d.transpose() * d;
+        let mut improved = false;
+        for _ in 0..30 {
+            let damped = h + Matrix6::identity() * (lambda * (1.0 + h.diagonal().amax()));
+            if let Some(step) = damped.cholesky().map(|c| c.solve(&(-g))) {
+                let candidate = x + step;
+                let (fc, dc) = residual_and_derivative(geometry, anchors, &candidate, lengths);
+                if fc.norm_squared() < cost {
+                    (x, f, d) = (candidate, fc, dc);
+                    improved = true;
+                    break;
+                }
+            }
+            lambda *= 10.0;
+        }
+        if !improved {
+            return Err(ForwardError::Singular {
+                iterations,
+                residual,
+            });
+        }
     }
+}
 
-    /// The pose of a rotary platform whose servos stand at `angles`, searched from `start`:
-    /// the horn tips are then fixed points and the rods legs of one length, so the same
-    /// damped Newton method solves it (residual: each rod's closure, metres).
-    pub fn forward_servos(
-        &self,
-        angles: &[Angle; 6],
-        start: &Pose,
-        options: &ForwardOptions,
-    ) -> Result<ForwardSolution, ForwardError> {
-        let (tips, rod) = self.servo_anchors(angles)?;
-        self.forward_from(&tips, &[rod; 6], start, options)
-    }
-
-    /// The horn tips of a rotary platform whose servos stand at `angles`, and the rod
-    /// length: the fixed anchors and the leg length of its forward problem.
-    pub(crate) fn servo_anchors(
-        &self,
-        angles: &[Angle; 6],
-    ) -> Result<([Vector3<f64>; 6], f64), ForwardError> {
-        let Some(servos) = self.rotary() else {
-            return Err(ForwardError::NotRotary);
+/// Plain Newton steps from `x` (residual `f`, derivative `d`) while each lowers the
+/// largest residual: the point and its residual where rounding stops the descent.
+fn polished(
+    geometry: &Geometry,
+    anchors: &[Vector3<f64>; 6],
+    mut x: Vector6<f64>,
+    mut f: Vector6<f64>,
+    mut d: Matrix6<f64>,
+    lengths: &[f64; 6],
+) -> (Vector6<f64>, Vector6<f64>) {
+    for _ in 0..POLISH_STEPS {
+        let Some(step) = d.lu().solve(&(-f)) else {
+            break;
         };
-        for (i, a) in angles.iter().enumerate() {
-            if !a.radians().is_finite() {
-                return Err(ForwardError::InvalidAngle {
-                    servo: i + 1,
-                    value: a.radians().to_degrees(),
-                });
-            }
+        let candidate = x + step;
+        let (fc, dc) = residual_and_derivative(geometry, anchors, &candidate, lengths);
+        // Stop at rounding (or a NaN).
+        if fc.amax().partial_cmp(&f.amax()) != Some(std::cmp::Ordering::Less) {
+            break;
         }
-        let tips = std::array::from_fn(|i| servos.horn_tip(i, &self.base_joints()[i], angles[i]));
-        Ok((tips, servos.rod_length()))
+        (x, f, d) = (candidate, fc, dc);
     }
+    (x, f)
+}
 
-    /// The damped Newton solve for legs from `anchors` of lengths `lengths`.
-    pub(crate) fn forward_from(
-        &self,
-        anchors: &[Vector3<f64>; 6],
-        lengths: &[f64; 6],
-        start: &Pose,
-        options: &ForwardOptions,
-    ) -> Result<ForwardSolution, ForwardError> {
-        let mut x = coordinates(start);
-        let mut lambda: f64 = 1e-3;
-        let mut iterations = 0;
-        let (mut f, mut d) = self.residual_and_derivative(anchors, &x, lengths);
-        loop {
-            let residual = f.amax();
-            if !residual.is_finite() {
-                return Err(ForwardError::NotConverged {
-                    iterations,
-                    residual,
-                });
-            }
-            if residual <= options.tolerance {
-                if options.polish {
-                    (x, f) = self.polished(anchors, x, f, d, lengths);
-                }
-                return Ok(ForwardSolution {
-                    pose: pose_of(&x),
-                    iterations,
-                    residual: f.amax(),
-                });
-            }
-            if iterations == options.max_iterations {
-                return Err(ForwardError::NotConverged {
-                    iterations,
-                    residual,
-                });
-            }
-            iterations += 1;
-            let cost = f.norm_squared();
-            // Newton step with backtracking; the accepted point's residual and derivative
-            // are those of the next iteration.
-            if let Some(step) = d.lu().solve(&(-f))
-                && step.iter().all(|v| v.is_finite())
-                && let Some(next) = self.line_search(anchors, &x, &step, lengths, cost)
-            {
-                (x, f, d) = next;
-                lambda = (lambda * 0.3).max(1e-12);
-                continue;
-            }
-            // Levenberg–Marquardt: increase the damping until the cost decreases.
-            let g = d.transpose() * f;
-            let h = d.transpose() * d;
-            let mut improved = false;
-            for _ in 0..30 {
-                let damped = h + Matrix6::identity() * (lambda * (1.0 + h.diagonal().amax()));
-                if let Some(step) = damped.cholesky().map(|c| c.solve(&(-g))) {
-                    let candidate = x + step;
-                    let (fc, dc) = self.residual_and_derivative(anchors, &candidate, lengths);
-                    if fc.norm_squared() < cost {
-                        (x, f, d) = (candidate, fc, dc);
-                        improved = true;
-                        break;
-                    }
-                }
-                lambda *= 10.0;
-            }
-            if !improved {
-                return Err(ForwardError::Singular {
-                    iterations,
-                    residual,
-                });
-            }
+/// Backtracking along `step` until the cost drops by the Armijo fraction; returns the
+/// accepted point with its residual and derivative.
+fn line_search(
+    geometry: &Geometry,
+    anchors: &[Vector3<f64>; 6],
+    x: &Vector6<f64>,
+    step: &Vector6<f64>,
+    lengths: &[f64; 6],
+    cost: f64,
+) -> Option<(Vector6<f64>, Vector6<f64>, Matrix6<f64>)> {
+    let mut alpha = 1.0;
+    while alpha > 1e-4 {
+        let candidate = x + step * alpha;
+        let (f, d) = residual_and_derivative(geometry, anchors, &candidate, lengths);
+        let c = f.norm_squared();
+        // Full Newton steps reduce the cost by ~2α·cost; ask for 1e-4 of that.
+        if c <= cost * (1.0 - 2e-4 * alpha) || c == 0.0 {
+            return Some((candidate, f, d));
         }
+        alpha *= 0.5;
     }
-
-    /// Plain Newton steps from `x` (residual `f`, derivative `d`) while each lowers the
-    /// largest residual: the point and its residual where rounding stops the descent.
-    fn polished(
-        &self,
-        anchors: &[Vector3<f64>; 6],
-        mut x: Vector6<f64>,
-        mut f: Vector6<f64>,
-        mut d: Matrix6<f64>,
-        lengths: &[f64; 6],
-    ) -> (Vector6<f64>, Vector6<f64>) {
-        for _ in 0..POLISH_STEPS {
-            let Some(step) = d.lu().solve(&(-f)) else {
-                break;
-            };
-            let candidate = x + step;
-            let (fc, dc) = self.residual_and_derivative(anchors, &candidate, lengths);
-            // Stop at rounding (or a NaN).
-            if fc.amax().partial_cmp(&f.amax()) != Some(std::cmp::Ordering::Less) {
-                break;
-            }
-            (x, f, d) = (candidate, fc, dc);
-        }
-        (x, f)
-    }
-
-    /// Backtracking along `step` until the cost drops by the Armijo fraction; returns the
-    /// accepted point with its residual and derivative.
-    fn line_search(
-        &self,
-        anchors: &[Vector3<f64>; 6],
-        x: &Vector6<f64>,
-        step: &Vector6<f64>,
-        lengths: &[f64; 6],
-        cost: f64,
-    ) -> Option<(Vector6<f64>, Vector6<f64>, Matrix6<f64>)> {
-        let mut alpha = 1.0;
-        while alpha > 1e-4 {
-            let candidate = x + step * alpha;
-            let (f, d) = self.residual_and_derivative(anchors, &candidate, lengths);
-            let c = f.norm_squared();
-            // Full Newton steps reduce the cost by ~2α·cost; ask for 1e-4 of that.
-            if c <= cost * (1.0 - 2e-4 * alpha) || c == 0.0 {
-                return Some((candidate, f, d));
-            }
-            alpha *= 0.5;
-        }
-        None
-    }
+    None
 }
 
 #[cfg(test)]

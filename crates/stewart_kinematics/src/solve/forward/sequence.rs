@@ -41,61 +41,61 @@ pub struct SequenceError {
     pub error: ForwardError,
 }
 
-impl Geometry {
-    /// Solve every row of `lengths`; each starts from the previous solution, or from the
-    /// home pose when `cold`. Stops at the first row that fails.
-    pub fn forward_sequence(
-        &self,
-        lengths: &[[f64; 6]],
-        cold: bool,
-        options: &ForwardOptions,
-    ) -> Result<SequenceSolution, SequenceError> {
-        self.forward_sequence_from(lengths, &self.home_pose(), cold, options)
-    }
+/// See [`Geometry::forward_sequence`].
+pub(crate) fn forward_sequence(
+    geometry: &Geometry,
+    lengths: &[[f64; 6]],
+    cold: bool,
+    options: &ForwardOptions,
+) -> Result<SequenceSolution, SequenceError> {
+    geometry.forward_sequence_from(lengths, &geometry.home_pose(), cold, options)
+}
 
-    /// [`Geometry::forward_sequence`] with another first (and, when `cold`, every) start pose.
-    pub fn forward_sequence_from(
-        &self,
-        lengths: &[[f64; 6]],
-        home: &Pose,
-        cold: bool,
-        options: &ForwardOptions,
-    ) -> Result<SequenceSolution, SequenceError> {
-        let home = *home;
-        let mut solutions: Vec<ForwardSolution> = Vec::with_capacity(lengths.len());
-        for (index, row) in lengths.iter().enumerate() {
-            let start = match solutions.last() {
-                Some(s) if !cold => s.pose,
-                _ => home,
-            };
-            let solution = self
-                .forward(row, &start, options)
-                .map_err(|error| SequenceError { index, error })?;
-            solutions.push(solution);
-        }
-        let branch_changes = self.branch_changes(&solutions);
-        Ok(SequenceSolution {
-            solutions,
-            branch_changes,
+/// See [`Geometry::forward_sequence_from`].
+pub(crate) fn forward_sequence_from(
+    geometry: &Geometry,
+    lengths: &[[f64; 6]],
+    home: &Pose,
+    cold: bool,
+    options: &ForwardOptions,
+) -> Result<SequenceSolution, SequenceError> {
+    let home = *home;
+    let mut solutions: Vec<ForwardSolution> = Vec::with_capacity(lengths.len());
+    for (index, row) in lengths.iter().enumerate() {
+        let start = match solutions.last() {
+            Some(s) if !cold => s.pose,
+            _ => home,
+        };
+        let solution = geometry
+            .forward(row, &start, options)
+            .map_err(|error| SequenceError { index, error })?;
+        solutions.push(solution);
+    }
+    let branch_changes = geometry.branch_changes(&solutions);
+    Ok(SequenceSolution {
+        solutions,
+        branch_changes,
+    })
+}
+
+/// See [`Geometry::branch_changes`].
+pub(crate) fn branch_changes(
+    geometry: &Geometry,
+    solutions: &[ForwardSolution],
+) -> Vec<BranchChange> {
+    let dets: Vec<f64> = solutions
+        .iter()
+        .map(|s| geometry.jacobian(&s.pose).determinant())
+        .collect();
+    dets.windows(2)
+        .enumerate()
+        .filter(|(_, d)| d[0] * d[1] < 0.0)
+        .map(|(k, d)| BranchChange {
+            index: k + 1,
+            det_before: d[0],
+            det_after: d[1],
         })
-    }
-
-    /// Where `det J` changes sign between consecutive solutions.
-    pub fn branch_changes(&self, solutions: &[ForwardSolution]) -> Vec<BranchChange> {
-        let dets: Vec<f64> = solutions
-            .iter()
-            .map(|s| self.jacobian(&s.pose).determinant())
-            .collect();
-        dets.windows(2)
-            .enumerate()
-            .filter(|(_, d)| d[0] * d[1] < 0.0)
-            .map(|(k, d)| BranchChange {
-                index: k + 1,
-                det_before: d[0],
-                det_after: d[1],
-            })
-            .collect()
-    }
+        .collect()
 }
 
 #[cfg(test)]

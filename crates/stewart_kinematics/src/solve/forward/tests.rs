@@ -63,7 +63,7 @@ proptest! {
         let pose = Pose::from_xyz_rpy_deg([x, y, z], [r, p, w]);
         let coords = coordinates(&pose);
         let target = [0.5; 6];
-        let (f, d) = g.residual_and_derivative(g.base_joints(), &coords, &target);
+        let (f, d) = residual_and_derivative(&g, g.base_joints(), &coords, &target);
         let lengths = g.leg_lengths(&pose);
         let h = 1e-6;
         for i in 0..6 {
