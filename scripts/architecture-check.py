@@ -27,7 +27,7 @@ CRATES = {
     "render": "stewart_render",
     "app": "stewart_app",
 }
-LAYERS = ["model", "solve", "analysis", "io"]
+LAYERS = ["ground", "model", "solve", "analysis", "io"]
 
 
 def module_file(src, path):

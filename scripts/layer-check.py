@@ -9,7 +9,7 @@ import is printed with its file and line; `impl Geometry` blocks outside model/ 
 counted too, and refused anywhere but `solve/queries.rs` (the one file of the platform's
 per-pose queries).
 
-Modules any layer may name (`bounds`, `text`) and the exceptions ARCHITECTURE.md lists
+The ground (`ground::bounds`, `ground::text`) is below every layer; the exceptions ARCHITECTURE.md lists
 are not counted; nor are tests (`tests.rs`, `tests/`, and what `#[cfg(test)]` guards).
 An `impl Geometry` counts in any form, an extension trait's `impl Trait for Geometry` too.
 
@@ -23,17 +23,16 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent / "crates/stewart_kinematics/src"
-LAYERS = ["model", "solve", "analysis", "io"]
-# What each layer may name besides itself.
+LAYERS = ["ground", "model", "solve", "analysis", "io"]
+# What each layer may name besides itself: the layers below it, and the ground (the
+# accepted ranges and the input-text rules) under every one.
 ALLOWED = {
-    "model": {"model"},
-    "solve": {"model", "solve"},
-    "analysis": {"model", "solve", "analysis"},
-    "io": {"model", "solve", "analysis", "io"},
+    "ground": {"ground"},
+    "model": {"ground", "model"},
+    "solve": {"ground", "model", "solve"},
+    "analysis": {"ground", "model", "solve", "analysis"},
+    "io": {"ground", "model", "solve", "analysis", "io"},
 }
-# Modules any layer may name: the accepted ranges and the input-text rules everything
-# that takes a number or a file checks against (ARCHITECTURE.md).
-EVERYWHERE = {"bounds", "text", "file"}
 # The exceptions ARCHITECTURE.md lists and says why: (file under src/, module named).
 EXCEPTIONS = {
     ("model/trajectory/pose_table.rs", "table"),
@@ -106,7 +105,7 @@ def main():
     if len(sys.argv) == 3 and sys.argv[1] == "--max":
         limit = int(sys.argv[2])
     layers = module_layers()
-    name = re.compile(r"\bcrate::(?:(model|solve|analysis|io)::)?([a-z_][a-z0-9_]*)")
+    name = re.compile(r"\bcrate::(?:(ground|model|solve|analysis|io)::)?([a-z_][a-z0-9_]*)")
     upward = []
     impls = []
     for layer in LAYERS:
@@ -123,7 +122,7 @@ def main():
                     continue
                 for m in name.finditer(line):
                     module = m.group(2)
-                    if module in EVERYWHERE or (here, module) in EXCEPTIONS:
+                    if (here, module) in EXCEPTIONS:
                         continue
                     target = m.group(1) or layers.get(module)
                     if target and target not in ALLOWED[layer]:
@@ -137,7 +136,7 @@ def main():
     for layer in LAYERS:
         for path in (ROOT / layer).rglob("*.rs"):
             defined[layer] |= impl_methods(path)
-    rank = {"model": 0, "solve": 1, "analysis": 2, "io": 3}
+    rank = {"ground": -1, "model": 0, "solve": 1, "analysis": 2, "io": 3}
     owner = {}
     for layer in sorted(LAYERS, key=lambda l: -rank[l]):
         for method in defined[layer]:

@@ -27,7 +27,7 @@ pub(crate) fn read_input<T>(
 /// refusal names), within the tables' cap, and the name to use in messages: a file's bytes
 /// as the gate read them, once (a recording or a capture is not copied a second time).
 pub(crate) fn read_input_bytes(path: &Path, kind: FileKind) -> Result<(Vec<u8>, String)> {
-    use stewart_kinematics::io::text::{MAX_TABLE_BYTES, read_capped};
+    use stewart_kinematics::ground::text::{MAX_TABLE_BYTES, read_capped};
     if path.as_os_str() == "-" {
         let name = "standard input";
         let bytes = read_capped(&mut std::io::stdin().lock(), MAX_TABLE_BYTES)

@@ -23,8 +23,9 @@
 //!   [`analysis::forces`] and [`analysis::dynamics`], [`analysis::calibration`],
 //!   [`analysis::cueing`] from vehicle motion, singular [`analysis::architecture`]s;
 //! - [`io`] — beside them: [`io::scenario`] files and presets, the [`io::settings`] every
-//!   number is declared in, numeric CSV [`io::table`]s, input [`io::text`], and the accepted
-//!   range of every kind of number ([`io::bounds`]).
+//!   number is declared in, numeric CSV [`io::table`]s;
+//! - [`ground`] — under all of them: the accepted range of every kind of number
+//!   ([`ground::bounds`]) and the rules input [`ground::text`] is read by.
 //!
 //! The root names what most users start from; everything else is reached through its
 //! layer (`stewart_kinematics::analysis::workspace`):
@@ -38,6 +39,7 @@
 //! - [`CheckReport`]: what the pre-flight checks found over a motion.
 
 pub mod analysis;
+pub mod ground;
 pub mod io;
 pub mod model;
 pub mod solve;

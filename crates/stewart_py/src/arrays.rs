@@ -94,7 +94,7 @@ pub fn not_finite(name: &str, row: usize, column: &str, value: f64) -> PyErr {
 /// The refusal of `row` of the pose table `name`, whose value `column` is outside the
 /// accepted range of poses (the words `solve --poses` uses for a pose table).
 pub fn pose_outside(name: &str, row: usize, values: &[f64; 6], column: usize) -> PyErr {
-    use stewart_kinematics::io::bounds::{POSE_ROW, POSE_ROW_UNITS, check, symmetric};
+    use stewart_kinematics::ground::bounds::{POSE_ROW, POSE_ROW_UNITS, check, symmetric};
     let why = check(
         values[column],
         &symmetric(POSE_ROW[column]),
@@ -142,7 +142,7 @@ pub fn six(obj: &Bound<'_, PyAny>, name: &str, columns: &[&str; 6]) -> PyResult<
 /// numbers within the accepted range of poses, as a pose table's rows are checked.
 pub fn pose(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<stewart_kinematics::Pose> {
     let row = six(obj, name, &POSE_COLUMNS)?;
-    if let Err((column, why)) = stewart_kinematics::io::bounds::check_pose_row(&row) {
+    if let Err((column, why)) = stewart_kinematics::ground::bounds::check_pose_row(&row) {
         return Err(PyValueError::new_err(format!(
             "{name}, {}: {why}",
             POSE_COLUMNS[column]

@@ -19,7 +19,7 @@ const VEHICLE: [&str; 7] = ["t", "ax", "ay", "az", "wx", "wy", "wz"];
 
 /// `vehicle` as samples, every value within the ranges `stewart cue` accepts.
 fn samples(vehicle: &Bound<'_, PyAny>) -> PyResult<Vec<(f64, VehicleMotion)>> {
-    use stewart_kinematics::io::bounds::{check, symmetric};
+    use stewart_kinematics::ground::bounds::{check, symmetric};
     // The one range rule of vehicle motion, as `stewart cue` and the games' datagrams.
     use stewart_link::vehicle::COLUMN_BOUNDS;
     let rows = arrays::finite_table(vehicle, "vehicle", &VEHICLE)?;

@@ -541,7 +541,7 @@ pub fn calibrate<'py>(
     for (k, row) in rows.values().chunks_exact(12).enumerate() {
         let pose: [f64; 6] = std::array::from_fn(|i| row[i]);
         // Finite already (`finite_table`): only a pose outside the accepted ranges is left.
-        if let Err((column, _)) = stewart_kinematics::io::bounds::check_pose_row(&pose) {
+        if let Err((column, _)) = stewart_kinematics::ground::bounds::check_pose_row(&pose) {
             return Err(arrays::pose_outside("measured", k, &pose, column));
         }
     }

@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use stewart_kinematics::io::bounds::OutOfBounds;
+use stewart_kinematics::ground::bounds::OutOfBounds;
 use stewart_link::template::TemplateError;
 
 /// Why a value given on the command line is refused.

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use stewart_kinematics::io::bounds;
+use stewart_kinematics::ground::bounds;
 use stewart_kinematics::model::link_settings::{LinkFormat, LinkTransport, Word};
 use stewart_link::template::Template;
 

@@ -1,9 +1,9 @@
 //! Values several commands take: triples, positions, angles, poses, inertia, mass, a
-//! camera, each within the accepted ranges of `stewart_kinematics::io::bounds`.
+//! camera, each within the accepted ranges of `stewart_kinematics::ground::bounds`.
 
 use std::ops::RangeInclusive;
 
-use stewart_kinematics::io::bounds;
+use stewart_kinematics::ground::bounds;
 
 use super::ArgError;
 
@@ -24,7 +24,7 @@ pub(crate) fn parse_triple(text: &str) -> Result<[f64; 3], ArgError> {
     Ok([number(a)?, number(b)?, number(c)?])
 }
 
-/// Three numbers, each checked against its accepted range (see `stewart_kinematics::io::bounds`).
+/// Three numbers, each checked against its accepted range (see `stewart_kinematics::ground::bounds`).
 fn parse_bounded(
     text: &str,
     ranges: [(&'static str, RangeInclusive<f64>, &str); 3],

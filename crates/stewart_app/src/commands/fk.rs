@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use stewart_kinematics::analysis::architecture;
 
 use anyhow::{Result, anyhow};
-use stewart_kinematics::io::bounds;
+use stewart_kinematics::ground::bounds;
 use stewart_kinematics::io::table::NumericTable;
 use stewart_kinematics::model::actuator::Actuator;
 use stewart_kinematics::model::trajectory::POSE_COLUMNS;

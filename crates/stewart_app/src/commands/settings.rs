@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 use stewart_kinematics::io::settings::{Group, Setting, SettingTarget, Unit};
-use stewart_kinematics::{Scenario, io::bounds, io::settings};
+use stewart_kinematics::{Scenario, ground::bounds, io::settings};
 
 use crate::cli::{SettingsArgs, SettingsFormat};
 use crate::{output, source};

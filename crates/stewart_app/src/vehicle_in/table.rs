@@ -6,7 +6,7 @@ use std::io::Read;
 
 use anyhow::Result;
 use stewart_kinematics::analysis::cueing::VehicleMotion;
-use stewart_kinematics::io::bounds::symmetric;
+use stewart_kinematics::ground::bounds::symmetric;
 use stewart_kinematics::io::table::NumericTable;
 use stewart_link::vehicle::COLUMN_BOUNDS;
 

@@ -31,8 +31,8 @@ impl FileKind {
     /// The most bytes read of such a file.
     pub const fn cap(self) -> u64 {
         match self {
-            FileKind::Scenario => super::text::MAX_SCENARIO_BYTES,
-            FileKind::Table | FileKind::Capture => super::text::MAX_TABLE_BYTES,
+            FileKind::Scenario => crate::ground::text::MAX_SCENARIO_BYTES,
+            FileKind::Table | FileKind::Capture => crate::ground::text::MAX_TABLE_BYTES,
             FileKind::Session => 4 << 20,
             FileKind::Mesh | FileKind::MeshSidecar => 512 << 20,
         }

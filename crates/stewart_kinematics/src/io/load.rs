@@ -57,7 +57,7 @@ impl Scenario {
         };
         let bytes = crate::io::file::read_file(path, crate::io::file::FileKind::Scenario)
             .map_err(|e| unreadable(gate_words(&e)))?;
-        let text = crate::io::text::decode(bytes).map_err(unreadable)?;
+        let text = crate::ground::text::decode(bytes).map_err(unreadable)?;
         Self::from_toml_str_checked(&text, &name, path.parent(), check)
     }
 

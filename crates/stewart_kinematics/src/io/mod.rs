@@ -3,10 +3,8 @@
 //! `load` reads a scenario (file, preset or text) and applies the settings' ranges, above
 //! both so that the file format and the settings do not depend on each other.
 
-pub mod bounds;
 pub mod file;
 mod load;
 pub mod scenario;
 pub mod settings;
 pub mod table;
-pub mod text;

@@ -152,7 +152,7 @@ impl NumericTable {
     }
 
     /// Check every value of column `name` (if present) against `range` (see
-    /// [`crate::io::bounds`]); the first value outside is an error naming its line.
+    /// [`crate::ground::bounds`]); the first value outside is an error naming its line.
     pub fn check_range(
         &self,
         name: &str,
@@ -163,7 +163,7 @@ impl NumericTable {
             return Ok(());
         };
         for (k, row) in self.rows().enumerate() {
-            if let Err(e) = crate::io::bounds::check(row[c], range, unit) {
+            if let Err(e) = crate::ground::bounds::check(row[c], range, unit) {
                 return Err(TableError::BadValue {
                     file: self.file.clone(),
                     line: self.lines[k],
@@ -309,13 +309,13 @@ fn read_text(input: impl Read, file: &str) -> Result<String, TableError> {
         file: file.to_owned(),
         message,
     };
-    let mut bytes = crate::io::text::read_capped(input, crate::io::text::MAX_TABLE_BYTES)
+    let mut bytes = crate::ground::text::read_capped(input, crate::ground::text::MAX_TABLE_BYTES)
         .map_err(unreadable)?;
-    if let Some(encoding) = crate::io::text::foreign_encoding(&bytes) {
+    if let Some(encoding) = crate::ground::text::foreign_encoding(&bytes) {
         return Err(unreadable(format!("{encoding}; save it as UTF-8 text")));
     }
     blank_comments(&mut bytes);
-    crate::io::text::decode(bytes).map_err(unreadable)
+    crate::ground::text::decode(bytes).map_err(unreadable)
 }
 
 /// Blank every comment line (first non-blank character `#`) in place, keeping its line

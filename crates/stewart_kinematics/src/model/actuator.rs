@@ -182,7 +182,7 @@ pub const LEG_LENGTH: Quantity = Quantity {
     columns: ["L1", "L2", "L3", "L4", "L5", "L6"],
     effort: ("F", "N"),
     decimals: 6,
-    widest: (0.0, crate::io::bounds::LENGTH_M),
+    widest: (0.0, crate::ground::bounds::LENGTH_M),
     fine: (1e3, "mm"),
     si_per_unit: 1.0,
     actuator: ActuatorKind::Linear,

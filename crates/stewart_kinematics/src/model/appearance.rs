@@ -240,10 +240,10 @@ pub struct PartLook {
     #[serde(default)]
     pub scale: MeshScale,
     /// Turned about the part's x, then y, then z axis, degrees.
-    #[serde(default, deserialize_with = "crate::io::text::exactly")]
+    #[serde(default, deserialize_with = "crate::ground::text::exactly")]
     pub rotation_deg: [f64; 3],
     /// Moved in the part's frame, metres.
-    #[serde(default, deserialize_with = "crate::io::text::exactly")]
+    #[serde(default, deserialize_with = "crate::ground::text::exactly")]
     pub offset_m: [f64; 3],
     /// Drawn in this colour (else the file's own colours, else the studio's).
     #[serde(default, skip_serializing_if = "Option::is_none")]

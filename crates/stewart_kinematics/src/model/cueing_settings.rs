@@ -125,7 +125,7 @@ pub struct CueingSettings {
     pub yaw: bool,
     /// The point the motion is cued at (the occupant's head), platform frame, metres:
     /// rotations turn about it, so tilting does not move the head.
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub reference_m: [f64; 3],
     /// Scale the cue back so that no pose leaves the stroke and limits.
     pub workspace_limiter: bool,
@@ -298,7 +298,7 @@ impl CueingSettings {
         if let Some(p) = self.mpc_problem() {
             return Some(p);
         }
-        let far = crate::io::bounds::LENGTH_M;
+        let far = crate::ground::bounds::LENGTH_M;
         for (i, v) in self.reference_m.iter().enumerate() {
             if !(v.is_finite() && v.abs() <= far) {
                 return bad(

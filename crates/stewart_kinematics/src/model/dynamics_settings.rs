@@ -177,7 +177,7 @@ impl DynamicsSettings {
     /// negative friction, mass, distance or inertia, or one beyond the accepted bounds;
     /// NaN and infinity never.
     pub fn problem(&self) -> Option<DynamicsProblem> {
-        use crate::io::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
+        use crate::ground::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
         let bad = |key: &str, reason: String| {
             Some(DynamicsProblem {
                 key: format!("dynamics.{key}"),

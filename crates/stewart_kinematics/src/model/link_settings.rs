@@ -124,22 +124,22 @@ pub struct LinkSettings {
     /// What a stop does.
     pub stop: LinkStop,
     /// Channel k carries actuator `actuator[k]` (1–6), each actuator on one channel.
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub actuator: [u8; 6],
     /// Per channel: multiplies the value (after reversal).
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub scale: [f64; 6],
     /// Per channel: added after scaling, in the value's natural unit (m or °).
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub offset: [f64; 6],
     /// Per channel: mirror the value.
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub reversed: [bool; 6],
     /// Per actuator, for ODrive: motor turns per metre of leg (or per degree of servo).
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub turns_per_unit: [f64; 6],
     /// Per actuator, for ODrive: motor turns where the value is zero.
-    #[serde(deserialize_with = "crate::io::text::exactly")]
+    #[serde(deserialize_with = "crate::ground::text::exactly")]
     pub turns_offset: [f64; 6],
 }
 

@@ -265,7 +265,7 @@ impl Geometry {
     /// cores. Rows become poses a few hundred at a time inside each core's chunk (no pose
     /// table is built), with the bits [`Geometry::actuator_values_batch`] gives for the
     /// same poses. A value that is not finite, or outside the accepted range of poses
-    /// ([`crate::io::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
+    /// ([`crate::ground::bounds::POSE_ROW`], as every pose table is checked), is refused (checked
     /// while the chunk is in cache: no pass of its own), and so is a row a servo cannot
     /// reach: the earliest such row is the error; `out` is then unspecified.
     ///

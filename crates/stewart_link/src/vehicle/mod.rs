@@ -38,7 +38,7 @@ mod fields;
 use thiserror::Error;
 
 /// The largest |time| of a sample, seconds: the bound of every table's times
-/// (`stewart_kinematics::io::bounds::TIME_S`), so that every sample written reads back.
+/// (`stewart_kinematics::ground::bounds::TIME_S`), so that every sample written reads back.
 pub const MAX_TIME_S: f64 = 1e6;
 
 /// The largest |specific force| of a sample along any axis, m/s² (beyond any vehicle).

@@ -346,7 +346,7 @@ fn limit_label(quantity: &Quantity, t: crate::i18n::Lang, name: &str, v: f64) ->
         " {}{} {} {}",
         quantity.symbol,
         t.tr(name),
-        stewart_kinematics::io::bounds::short(v),
+        stewart_kinematics::ground::bounds::short(v),
         quantity.unit
     )
 }

@@ -252,7 +252,7 @@ fn fine_drag(
 fn slider_tip(t: Lang, setting: &Setting, scenario: &Scenario) -> String {
     let default = setting.default_for(scenario).map_or_else(
         || t.tr("widgets.default_off").to_owned(),
-        stewart_kinematics::io::bounds::short,
+        stewart_kinematics::ground::bounds::short,
     );
     t.fmt(
         "widgets.slider_tip",

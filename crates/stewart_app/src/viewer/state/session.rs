@@ -115,7 +115,7 @@ impl Session {
     /// camera takes anywhere — angles ±3600°, distance up to 10 km, target within 1 km)
     /// on `look`.
     pub(crate) fn restore_look(&self, look: &mut Look) {
-        use stewart_kinematics::io::bounds::{ANGLE_DEG, LENGTH_M};
+        use stewart_kinematics::ground::bounds::{ANGLE_DEG, LENGTH_M};
         let [azimuth_deg, elevation_deg, distance, x, y, z] = self.camera;
         let within = |v: f32, limit: f64| v.is_finite() && f64::from(v.abs()) <= limit;
         let usable = within(azimuth_deg, ANGLE_DEG)

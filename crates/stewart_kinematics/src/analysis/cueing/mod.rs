@@ -59,7 +59,7 @@ pub enum CueError {
         previous: f64,
     },
     /// The cue of sample `index` (from 0) leaves the accepted range of poses
-    /// ([`crate::io::bounds::POSE_ROW`]): a pose table that no command would read back.
+    /// ([`crate::ground::bounds::POSE_ROW`]): a pose table that no command would read back.
     #[error(
         "the cued pose at t = {t} s leaves the accepted range of poses: its {column} {why} (lower the [cueing] scales or strengthen the washout, or turn the workspace limiter on)"
     )]
@@ -71,7 +71,7 @@ pub enum CueError {
         /// The pose value's name: `x`, `y`, `z`, `roll_deg`, `pitch_deg` or `yaw_deg`.
         column: &'static str,
         /// Why the value is refused.
-        why: crate::io::bounds::OutOfBounds,
+        why: crate::ground::bounds::OutOfBounds,
     },
     /// The limiter keeps poses within the limits by scaling toward home, which must be
     /// within them.
@@ -471,7 +471,7 @@ pub fn cue_recording(
         poses = guarded.poses;
     }
     for (index, (pose, (t, _))) in poses.iter().zip(samples).enumerate() {
-        if let Err((column, why)) = crate::io::bounds::check_pose_row(&pose.to_row()) {
+        if let Err((column, why)) = crate::ground::bounds::check_pose_row(&pose.to_row()) {
             return Err(CueError::PoseOutside {
                 index,
                 t: *t,

@@ -82,7 +82,7 @@ impl Payload {
         centre_of_mass: Vector3<f64>,
         inertia: Matrix3<f64>,
     ) -> Result<Self, ForceError> {
-        use crate::io::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
+        use crate::ground::bounds::{INERTIA_KG_M2, LENGTH_M, MASS_KG};
         if !(mass.is_finite() && mass > 0.0 && mass <= MASS_KG) {
             return Err(ForceError::BadPayload {
                 field: "mass",

@@ -253,7 +253,7 @@ fn no_servo_keys(src: &Source, a: &ActuatorFile) -> Result<(), ScenarioError> {
 /// The servos of an `[actuator]` table with `kind = "rotary"`: horns, rods, directions,
 /// range and mounting, each error at its key.
 fn build_servos(src: &Source, file: &Spanned<ActuatorFile>) -> Result<Actuator, ScenarioError> {
-    use crate::io::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
+    use crate::ground::bounds::{ANGLE_DEG, LENGTH_M, check, symmetric};
     let a = file.get_ref();
     let missing = |key: &str| {
         src.invalid(

@@ -46,7 +46,7 @@ pub(crate) struct ScenarioFile {
 #[serde(deny_unknown_fields)]
 pub(crate) struct PayloadFile {
     pub mass_kg: f64,
-    #[serde(default, deserialize_with = "crate::io::text::exactly")]
+    #[serde(default, deserialize_with = "crate::ground::text::exactly")]
     pub com_m: [f64; 3],
     /// Three principal moments (Ixx, Iyy, Izz) or the whole tensor (Ixx, Iyy, Izz, Ixy,
     /// Ixz, Iyz); none: zero.
@@ -132,7 +132,7 @@ pub(crate) use crate::model::actuator::ActuatorKind;
 #[derive(Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct PivotFile {
-    #[serde(deserialize_with = "crate::io::text::exactly_spanned")]
+    #[serde(deserialize_with = "crate::ground::text::exactly_spanned")]
     pub offset_m: Spanned<[f64; 3]>,
 }
 

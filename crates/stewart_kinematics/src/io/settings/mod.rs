@@ -106,10 +106,10 @@ impl Unit {
     }
 
     /// The values a number of this unit may take anywhere (file, `--set`, slider): see
-    /// [`crate::io::bounds`]. Whether a particular value makes sense (a positive radius) is
+    /// [`crate::ground::bounds`]. Whether a particular value makes sense (a positive radius) is
     /// then up to the model's constructors.
     pub fn accepted(self) -> RangeInclusive<f64> {
-        use crate::io::bounds::{self, symmetric};
+        use crate::ground::bounds::{self, symmetric};
         match self {
             Unit::Metre => symmetric(bounds::LENGTH_M),
             Unit::Degree => symmetric(bounds::ANGLE_DEG),
@@ -280,7 +280,7 @@ impl Setting {
     }
 
     fn accepted_words_in(&self, unit: &str) -> String {
-        let words = crate::io::bounds::range_words(&self.accepted, unit);
+        let words = crate::ground::bounds::range_words(&self.accepted, unit);
         match (self.min_excluded, self.max_excluded) {
             (false, false) => words,
             (true, false) => format!("above {words}"),
@@ -288,8 +288,8 @@ impl Setting {
                 let above = if min { "above" } else { "from" };
                 format!(
                     "{above} {} and below {} {unit}",
-                    crate::io::bounds::short(*self.accepted.start()),
-                    crate::io::bounds::short(*self.accepted.end())
+                    crate::ground::bounds::short(*self.accepted.start()),
+                    crate::ground::bounds::short(*self.accepted.end())
                 )
                 .trim_end()
                 .to_owned()
@@ -312,7 +312,7 @@ impl Setting {
         }
         Err(format!(
             "{} is outside the accepted range {}",
-            crate::io::bounds::short(v),
+            crate::ground::bounds::short(v),
             self.accepted_words_for(kind)
         ))
     }
@@ -390,7 +390,7 @@ impl Setting {
     /// Write `value` (`None`: switch off). Validated as the file reader validates; a
     /// refused value leaves the scenario unchanged.
     pub fn set(&self, scenario: &mut Scenario, value: Option<f64>) -> Result<(), SettingError> {
-        let shown = value.map_or_else(|| "off".to_owned(), crate::io::bounds::short);
+        let shown = value.map_or_else(|| "off".to_owned(), crate::ground::bounds::short);
         let invalid = |reason: String| SettingError::Invalid {
             key: self.key.clone(),
             value: shown.clone(),

@@ -62,7 +62,7 @@ pub enum KeyframeError {
         /// Key number, from 1.
         index: usize,
     },
-    /// A value outside the accepted range of its kind (see [`crate::io::bounds`]).
+    /// A value outside the accepted range of its kind (see [`crate::ground::bounds`]).
     #[error("key {index}: {what}")]
     OutOfRange {
         /// Key number, from 1.
@@ -105,10 +105,10 @@ impl KeyframeError {
     }
 }
 
-/// Check a key's values against [`crate::io::bounds`]: time, position, angles.
+/// Check a key's values against [`crate::ground::bounds`]: time, position, angles.
 fn check_key_ranges(index: usize, k: &Keyframe) -> Result<(), KeyframeError> {
-    use crate::io::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
-    let out = |name: &str, reason: crate::io::bounds::OutOfBounds| KeyframeError::OutOfRange {
+    use crate::ground::bounds::{ANGLE_DEG, LENGTH_M, TIME_S, check, symmetric};
+    let out = |name: &str, reason: crate::ground::bounds::OutOfBounds| KeyframeError::OutOfRange {
         index,
         what: format!("{name} {reason}"),
     };

@@ -27,7 +27,7 @@ pub struct PoseTable {
 /// Check a table's pose columns ([`POSE_COLUMNS`]) against the accepted ranges of
 /// lengths and angles; the first value outside is an error naming its line.
 pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
-    use crate::io::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
+    use crate::ground::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
     for (k, name) in POSE_COLUMNS.iter().enumerate() {
         table.check_range(name, &symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k])?;
     }
@@ -37,7 +37,7 @@ pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
 impl PoseTable {
     /// Read a pose table; `file` names the source in error messages.
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
-        use crate::io::bounds::{TIME_S, symmetric};
+        use crate::ground::bounds::{TIME_S, symmetric};
         let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
         check_pose_ranges(&table)?;
         table.check_range("t", &symmetric(TIME_S), "s")?;

@@ -436,12 +436,12 @@ pub(crate) fn actuator_values_rows(
         rows.iter()
             .enumerate()
             .find_map(|(k, row)| {
-                if let Err((column, why)) = crate::io::bounds::check_pose_row(row) {
+                if let Err((column, why)) = crate::ground::bounds::check_pose_row(row) {
                     return Some(match why {
-                        crate::io::bounds::OutOfBounds::NotFinite(_) => {
+                        crate::ground::bounds::OutOfBounds::NotFinite(_) => {
                             RowError::NotFinite { row: k, column }
                         }
-                        crate::io::bounds::OutOfBounds::Outside { .. } => {
+                        crate::ground::bounds::OutOfBounds::Outside { .. } => {
                             RowError::Outside { row: k, column }
                         }
                     });
@@ -508,7 +508,7 @@ impl pulp::WithSimd for Accepted<'_> {
     }
 }
 
-/// Whether every value of `rows` is within its accepted range ([`crate::io::bounds::POSE_ROW`];
+/// Whether every value of `rows` is within its accepted range ([`crate::ground::bounds::POSE_ROW`];
 /// NaN is not), with no early exit so that the loop vectorises.
 #[inline(always)]
 fn all_accepted(rows: &[[f64; 6]]) -> bool {
@@ -518,7 +518,7 @@ fn all_accepted(rows: &[[f64; 6]]) -> bool {
         let mut l = [0.0; 24];
         let mut k = 0;
         while k < 24 {
-            l[k] = crate::io::bounds::POSE_ROW[k % 6];
+            l[k] = crate::ground::bounds::POSE_ROW[k % 6];
             k += 1;
         }
         l
@@ -546,7 +546,7 @@ pub enum RowError {
         column: usize,
     },
     /// Value `column` of `row` is finite but outside its accepted range
-    /// ([`crate::io::bounds::POSE_ROW`]).
+    /// ([`crate::ground::bounds::POSE_ROW`]).
     Outside {
         /// The row, from 0.
         row: usize,

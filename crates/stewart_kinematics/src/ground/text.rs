@@ -12,7 +12,7 @@ pub const MAX_TABLE_BYTES: u64 = 2 << 30;
 
 /// An array of exactly `N` values from a file: a longer or shorter one is refused, not
 /// cut (serde reads an array of `N` from the first `N` values of a longer one). For
-/// `#[serde(deserialize_with = "crate::io::text::exactly")]` on every fixed-size array field.
+/// `#[serde(deserialize_with = "crate::ground::text::exactly")]` on every fixed-size array field.
 pub fn exactly<'de, D, T, const N: usize>(d: D) -> Result<[T; N], D::Error>
 where
     D: serde::Deserializer<'de>,

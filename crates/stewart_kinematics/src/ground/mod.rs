@@ -1,0 +1,6 @@
+//! The ground every layer stands on: the accepted range of every kind of number
+//! ([`bounds`]) and the rules input text is read by ([`text`]: a size cap, plain words for
+//! text that is not UTF-8). Any layer may use them; they use no layer.
+
+pub mod bounds;
+pub mod text;
