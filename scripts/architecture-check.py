@@ -12,6 +12,18 @@ Checks three things and prints every miss:
    (for the kinematics crate each layer's modules) by a row of its table, a module inside
    another by the row of its parent (or an ancestor's) (`child`, `parent/child.rs` or `child/` there).
 
+and the rules it states, on the code:
+
+4. no two modules of a crate import each other (a crate's top-level modules, and the
+   parts of its big folders: the kinematics layers' modules, the app's `viewer/` and
+   `commands/`), directly or round a longer circle;
+5. nothing in the viewer's state, panels, tools or 3D view imports the window shell
+   (`viewer/window`), which hosts them;
+6. the top-level folders are reached only by their owners: `shaders/` by the renderer's
+   `shaders.rs`, `assets/` by the presets' loader, `tests/` by no crate;
+7. the crates' walls: the renderer depends on no UI crate (egui, winit), the link crate
+   on no kinematics.
+
 Exits 1 on any miss; run by scripts/check.sh.
 """
 
@@ -61,6 +73,142 @@ def public_modules(crate):
             parent = rel.parent if rel.name in ("mod.rs", "lib.rs", "main.rs") else rel.with_suffix("")
             found.append(str(parent / m.group(1)).removeprefix("./"))
     return found
+
+
+# Rule 4: the parts of these folders are the units a circle is looked for between.
+FOLDERS_OF_PARTS = {"model", "solve", "analysis", "io", "ground", "viewer", "commands"}
+# Rule 5: the shell, and the folders that may not import it.
+SHELL = "crate::viewer::window"
+BELOW_SHELL = ["viewer/state", "viewer/panels", "viewer/tools", "viewer/view3d"]
+# Rule 6: who may reach each top-level folder (paths from the repository's root).
+TOP_FOLDER_READERS = {
+    "shaders": {"crates/stewart_render/src/shaders.rs"},
+    "assets": {"crates/stewart_kinematics/src/io/scenario/presets.rs"},
+    "tests": set(),
+}
+# Rule 7: dependencies a crate may not have.
+FORBIDDEN_DEPENDENCIES = {
+    "stewart_render": {"egui", "egui-wgpu", "egui_plot", "winit"},
+    "stewart_link": {"stewart_kinematics"},
+    "stewart_kinematics": {"wgpu", "egui", "winit", "stewart_render", "stewart_link"},
+}
+
+
+def code_of(path):
+    """A source file without its tests (`#[cfg(test)] mod … {` to the end), comments and
+    documentation-only imports."""
+    text = path.read_text(encoding="utf-8")
+    m = re.search(r"#\[cfg\(test\)\]\s*mod \w+\s*\{", text)
+    if m:
+        text = text[: m.start()]
+    text = re.sub(r"#\[cfg\(doc\)\]\s*use [^;]*;", "", text)
+    return "\n".join(l for l in text.splitlines() if not l.lstrip().startswith("//"))
+
+
+def unit_of(src, parts):
+    """The unit (module, or part of a big folder) a path of module names belongs to."""
+    top = parts[0]
+    if top in FOLDERS_OF_PARTS and len(parts) > 1 and parts[1] != "mod":
+        return f"{top}/{parts[1]}"
+    return top
+
+
+def circles():
+    """Rule 4: each crate's circles of imports between its units."""
+    misses = []
+    for crate in CRATES.values():
+        src = ROOT / "crates" / crate / "src"
+        imports = {}
+        for f in src.rglob("*.rs"):
+            rel = f.relative_to(src).with_suffix("").parts
+            if rel[-1] == "tests" or "tests" in rel[:-1] or "ui_tests" in rel or rel[0] in ("lib", "main"):
+                continue
+            here = unit_of(src, rel)
+            for m in re.finditer(r"\bcrate::(\w+)(?:::(\w+))?", code_of(f)):
+                named = [m.group(1)] + ([m.group(2)] if m.group(2) else [])
+                if len(named) == 2 and not module_file(src, "/".join(named)):
+                    named = named[:1]
+                there = unit_of(src, named)
+                if there != here and not here.startswith(there + "/") and not there.startswith(here + "/"):
+                    imports.setdefault(here, set()).add(there)
+        # Tarjan's strongly connected components.
+        index, low, stack, on, order = {}, {}, [], set(), [0]
+
+        def visit(v):
+            index[v] = low[v] = order[0]
+            order[0] += 1
+            stack.append(v)
+            on.add(v)
+            for w in imports.get(v, ()):
+                if w not in index:
+                    visit(w)
+                    low[v] = min(low[v], low[w])
+                elif w in on:
+                    low[v] = min(low[v], index[w])
+            if low[v] == index[v]:
+                component = []
+                while True:
+                    w = stack.pop()
+                    on.discard(w)
+                    component.append(w)
+                    if w == v:
+                        break
+                if len(component) > 1:
+                    misses.append(f"{crate}: {', '.join(sorted(component))} import each other")
+
+        for v in sorted(imports):
+            if v not in index:
+                visit(v)
+    return misses
+
+
+def shell_imports():
+    """Rule 5: imports of the window shell from below it."""
+    src = ROOT / "crates" / "stewart_app" / "src"
+    misses = []
+    for folder in BELOW_SHELL:
+        for f in sorted((src / folder).rglob("*.rs")):
+            if "ui_tests" in f.parts:
+                continue
+            for number, line in enumerate(code_of(f).splitlines(), 1):
+                if SHELL in line:
+                    misses.append(f"{f.relative_to(ROOT)}:{number} imports the window shell")
+    return misses
+
+
+def top_folder_readers():
+    """Rule 6: every path into a top-level folder, from any crate's sources."""
+    misses = []
+    literal = re.compile(r"(?:\.\./)+(shaders|assets|tests)/")
+    for f in sorted((ROOT / "crates").rglob("*.rs")):
+        if "target" in f.parts:
+            continue
+        rel = str(f.relative_to(ROOT))
+        crate_dir = ROOT / "crates" / f.relative_to(ROOT / "crates").parts[0]
+        for m in literal.finditer(code_of(f)):
+            folder = m.group(1)
+            target = ROOT / folder
+            reached = any(
+                (base / m.group(0)).resolve() == target.resolve() for base in (f.parent, crate_dir)
+            )
+            if reached and rel not in TOP_FOLDER_READERS[folder]:
+                misses.append(f"{rel} reaches the top-level {folder}/ (only {sorted(TOP_FOLDER_READERS[folder]) or 'no crate'} may)")
+    return misses
+
+
+def walls():
+    """Rule 7: the dependencies each crate may not have."""
+    misses = []
+    for crate, forbidden in FORBIDDEN_DEPENDENCIES.items():
+        manifest = (ROOT / "crates" / crate / "Cargo.toml").read_text(encoding="utf-8")
+        deps = re.split(r"^\[", manifest, flags=re.M)
+        for section in deps:
+            if not section.startswith("dependencies]"):
+                continue
+            for name in re.findall(r"^([A-Za-z0-9_-]+)\s*=", section, re.M):
+                if name in forbidden:
+                    misses.append(f"{crate} depends on {name}")
+    return misses
 
 
 def main():
@@ -143,12 +291,18 @@ def main():
             if not defined:
                 misses.append(f"`{m.group(0)}`: {crate}::{path.replace('/', '::')} has no item {rest[0]}")
 
+    misses += circles() + shell_imports() + top_folder_readers() + walls()
+
     for miss in misses:
         print(miss)
     if misses:
         print(f"architecture-check: {len(misses)} claims of ARCHITECTURE.md are not true", file=sys.stderr)
         sys.exit(1)
-    print("architecture-check: every module ARCHITECTURE.md names exists and every public module is named")
+    print(
+        "architecture-check: every module ARCHITECTURE.md names exists, every public module is "
+        "named, and its rules hold (no import circles, the shell imported only from above, the "
+        "top-level folders reached by their owners, the crates' walls)"
+    )
 
 
 main()

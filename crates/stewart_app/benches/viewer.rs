@@ -42,7 +42,7 @@ fn bench(c: &mut Criterion) {
     // surface (the worker computes on its own thread; the frame only swaps results in).
     let scenario = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
     let mut state = ViewerState::new(scenario);
-    state.workspace.show = true;
+    state.tools.workspace.show = true;
     let ctx = egui::Context::default();
     for _ in 0..5 {
         frame(&ctx, &mut state);

@@ -31,16 +31,3 @@ impl ShotScale {
         }
     }
 }
-
-/// A screenshot scale as the command line takes it: `1`, `2` or `4k`.
-pub(crate) fn parse(text: &str) -> Result<ShotScale, crate::cli::ArgError> {
-    match text.trim().to_ascii_lowercase().as_str() {
-        "1" | "1x" => Ok(ShotScale::One),
-        "2" | "2x" => Ok(ShotScale::Two),
-        "4k" => Ok(ShotScale::Uhd),
-        _ => Err(crate::cli::ArgError::not_a(
-            text,
-            "a screenshot scale: 1, 2 or 4k",
-        )),
-    }
-}

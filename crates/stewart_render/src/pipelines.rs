@@ -49,22 +49,6 @@ impl Pipelines {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let mesh_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("mesh.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shaders::MESH.into()),
-        });
-        let mesh_buffers = [
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<MeshVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-            }),
-            Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<MeshInstance>() as u64,
-                step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4, 4 => Float32x4, 5 => Float32x4, 6 => Float32x4],
-            }),
-        ];
         let multisample = wgpu::MultisampleState {
             count: samples,
             mask: !0,
@@ -75,50 +59,9 @@ impl Pipelines {
             blend: Some(wgpu::BlendState::ALPHA_BLENDING),
             write_mask: wgpu::ColorWrites::ALL,
         })];
-        let mesh_pipeline = |label: &str, depth_write: bool, cull: Option<wgpu::Face>| {
-            triangle_pipeline(
-                device,
-                TriangleStages {
-                    label,
-                    layout: &pipeline_layout,
-                    module: &mesh_module,
-                    buffers: &mesh_buffers,
-                },
-                depth_write,
-                cull,
-                multisample,
-                &blend_target,
-            )
-        };
-        let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
-        // CAD parts: opaque, but both faces drawn (files do not always wind their
-        // triangles the same way; the shading is two-sided).
-        let parts = mesh_pipeline("CAD parts", true, None);
-        // Translucent plates: depth-tested against the opaque scene, not written, both
-        // faces drawn, back to front.
-        let translucent = mesh_pipeline("translucent plates", false, None);
-        let analysis_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("analysis.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
-        });
-        // Analysis meshes: translucent, world coordinates, a colour per vertex.
-        let analysis = triangle_pipeline(
-            device,
-            TriangleStages {
-                label: "analysis meshes",
-                layout: &pipeline_layout,
-                module: &analysis_module,
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<ColouredVertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
-                })],
-            },
-            false,
-            None,
-            multisample,
-            &blend_target,
-        );
+        let [opaque, parts, translucent] =
+            mesh_pipelines(device, &pipeline_layout, multisample, &blend_target);
+        let analysis = analysis_pipeline(device, &pipeline_layout, multisample, &blend_target);
         let lines = line_pipeline(device, &pipeline_layout, multisample, &blend_target);
         let (text, atlas_texture, atlas_bind_group) =
             text_pipeline(device, &layout, multisample, format);
@@ -139,6 +82,88 @@ impl Pipelines {
         };
         (pipelines, atlas_texture, atlas_bind_group)
     }
+}
+
+/// The lit mesh pipelines (mesh.wgsl, a mesh and its instances): opaque meshes with
+/// back faces culled, CAD parts (opaque, both faces), translucent plates (depth tested,
+/// not written, both faces).
+fn mesh_pipelines(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+    blend_target: &[Option<wgpu::ColorTargetState>],
+) -> [wgpu::RenderPipeline; 3] {
+    let mesh_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("mesh.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shaders::MESH.into()),
+    });
+    let mesh_buffers = [
+        Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<MeshVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+        }),
+        Some(wgpu::VertexBufferLayout {
+            array_stride: size_of::<MeshInstance>() as u64,
+            step_mode: wgpu::VertexStepMode::Instance,
+            attributes: &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4, 4 => Float32x4, 5 => Float32x4, 6 => Float32x4],
+        }),
+    ];
+    let mesh_pipeline = |label: &str, depth_write: bool, cull: Option<wgpu::Face>| {
+        triangle_pipeline(
+            device,
+            TriangleStages {
+                label,
+                layout,
+                module: &mesh_module,
+                buffers: &mesh_buffers,
+            },
+            depth_write,
+            cull,
+            multisample,
+            blend_target,
+        )
+    };
+    let opaque = mesh_pipeline("opaque meshes", true, Some(wgpu::Face::Back));
+    // CAD parts: opaque, but both faces drawn (files do not always wind their
+    // triangles the same way; the shading is two-sided).
+    let parts = mesh_pipeline("CAD parts", true, None);
+    // Translucent plates: depth-tested against the opaque scene, not written, both
+    // faces drawn, back to front.
+    let translucent = mesh_pipeline("translucent plates", false, None);
+    [opaque, parts, translucent]
+}
+
+/// The analysis meshes' pipeline (analysis.wgsl): translucent, world coordinates, a colour
+/// per vertex.
+fn analysis_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    multisample: wgpu::MultisampleState,
+    blend_target: &[Option<wgpu::ColorTargetState>],
+) -> wgpu::RenderPipeline {
+    let analysis_module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("analysis.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shaders::ANALYSIS.into()),
+    });
+    // Analysis meshes: translucent, world coordinates, a colour per vertex.
+    triangle_pipeline(
+        device,
+        TriangleStages {
+            label: "analysis meshes",
+            layout,
+            module: &analysis_module,
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<ColouredVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x4],
+            })],
+        },
+        false,
+        None,
+        multisample,
+        blend_target,
+    )
 }
 
 /// What a triangle pipeline is made of: its name, layout, shader module (`vs_main`,

@@ -119,13 +119,66 @@ impl Renderer {
         } = *frame;
         let viewport = [viewport[0].max(1.0), viewport[1].max(1.0)];
         let aspect = viewport[0] / viewport[1];
+        let globals = self.globals(camera, theme, aspect);
+        queue.write_buffer(&view.globals, 0, bytemuck::bytes_of(&globals));
+        view.clear = self.clear_colour(theme);
+        let mut instances = Vec::with_capacity(
+            list.cylinders.len()
+                + list.spheres.len()
+                + list.cones.len()
+                + list.boxes.len()
+                + list.plates.len()
+                + list.parts.len(),
+        );
+        // Instances: cylinders, spheres, cones, boxes, parts, then one per plate.
+        let cylinders = push_range(&list.cylinders, &mut instances);
+        let spheres = push_range(&list.spheres, &mut instances);
+        let cones = push_range(&list.cones, &mut instances);
+        let boxes = push_range(&list.boxes, &mut instances);
+        let slots = view.keep_parts(device, list.parts.iter().map(|p| &p.mesh));
+        let parts = slots
+            .into_iter()
+            .zip(&list.parts)
+            .map(|(slot, part)| {
+                instances.push(part.instance);
+                (slot, instances.len() as u32 - 1)
+            })
+            .collect();
+        let plate_mesh = plates_back_to_front(list, camera.eye(), &mut instances);
+        view.instances
+            .write(device, queue, bytemuck::cast_slice(&instances));
+        view.plate_vertices
+            .write(device, queue, bytemuck::cast_slice(&plate_mesh.vertices));
+        view.plate_indices
+            .write(device, queue, bytemuck::cast_slice(&plate_mesh.indices));
+        view.line_vertices
+            .write(device, queue, bytemuck::cast_slice(&list.lines));
+        view.keep_analysis(device, &list.analysis);
+        let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport, scale);
+        view.text_vertices
+            .write(device, queue, bytemuck::cast_slice(&text));
+        view.batches = Batches {
+            cylinders,
+            spheres,
+            cones,
+            boxes,
+            plates: plate_mesh.plates,
+            lines: list.lines.len() as u32,
+            text: text.len() as u32,
+            parts,
+        };
+    }
+
+    /// The frame's uniforms: the camera for `aspect`, its lights, the shading and the
+    /// theme's background.
+    fn globals(&self, camera: &OrbitCamera, theme: &Theme, aspect: f32) -> Globals {
         let eye = camera.eye();
         // Key light over the viewer's right shoulder and above; fill from the other side.
         let forward = -camera.direction();
         let right = forward.cross(glam::Vec3::Z).normalize_or(glam::Vec3::X);
         let key = (-forward + right * 0.6 + glam::Vec3::Z * 0.9).normalize();
         let fill = (-forward - right * 0.8 + glam::Vec3::Z * 0.2).normalize();
-        let globals = Globals {
+        Globals {
             view_proj: camera.view_proj(aspect).to_cols_array_2d(),
             eye: [eye.x, eye.y, eye.z, 1.0],
             key_light: [key.x, key.y, key.z, 0.75],
@@ -140,94 +193,24 @@ impl Renderer {
                 let bg = linear(theme.background);
                 [bg[0], bg[1], bg[2], theme.background[3]]
             },
-        };
-        queue.write_buffer(&view.globals, 0, bytemuck::bytes_of(&globals));
-        // A clear writes its colour as it is: linear into an sRGB target, encoded into
-        // one that is not (a window's surface, a picture drawn into it).
+        }
+    }
+
+    /// The colour a pass clears to: the theme's background written as it is, linear into
+    /// an sRGB target, encoded into one that is not (a window's surface, a picture drawn
+    /// into it).
+    fn clear_colour(&self, theme: &Theme) -> wgpu::Color {
         let bg = if self.format.is_srgb() {
             linear(theme.background)
         } else {
             theme.background
         };
-        view.clear = wgpu::Color {
+        wgpu::Color {
             r: bg[0] as f64,
             g: bg[1] as f64,
             b: bg[2] as f64,
             a: f64::from(theme.background[3]),
-        };
-
-        // Instances: cylinders, spheres, cones, boxes, then one identity instance per plate.
-        let mut instances: Vec<MeshInstance> = Vec::with_capacity(
-            list.cylinders.len()
-                + list.spheres.len()
-                + list.cones.len()
-                + list.boxes.len()
-                + list.plates.len()
-                + list.parts.len(),
-        );
-        let range = |items: &[MeshInstance], all: &mut Vec<MeshInstance>| {
-            let start = all.len() as u32;
-            all.extend_from_slice(items);
-            start..all.len() as u32
-        };
-        let cylinders = range(&list.cylinders, &mut instances);
-        let spheres = range(&list.spheres, &mut instances);
-        let cones = range(&list.cones, &mut instances);
-        let boxes = range(&list.boxes, &mut instances);
-        let slots = view.keep_parts(device, list.parts.iter().map(|p| &p.mesh));
-        let parts = slots
-            .into_iter()
-            .zip(&list.parts)
-            .map(|(slot, part)| {
-                instances.push(part.instance);
-                (slot, instances.len() as u32 - 1)
-            })
-            .collect();
-        // Plates back to front from the eye.
-        let mut order: Vec<usize> = (0..list.plates.len()).collect();
-        order.sort_by(|&a, &b| {
-            let da = (list.plates[a].2 - eye).length_squared();
-            let db = (list.plates[b].2 - eye).length_squared();
-            db.total_cmp(&da)
-        });
-        let mut plate_vertices: Vec<MeshVertex> = Vec::new();
-        let mut plate_indices: Vec<u32> = Vec::new();
-        let mut plates = Vec::new();
-        for k in order {
-            let (mesh, color, _) = &list.plates[k];
-            let base = plate_vertices.len() as u32;
-            let first = plate_indices.len() as u32;
-            plate_vertices.extend_from_slice(&mesh.vertices);
-            plate_indices.extend(mesh.indices.iter().map(|i| i + base));
-            let instance = instances.len() as u32;
-            instances.push(MeshInstance {
-                model: glam::Mat4::IDENTITY.to_cols_array_2d(),
-                color: *color,
-            });
-            plates.push((first, mesh.indices.len() as u32, instance));
         }
-        view.instances
-            .write(device, queue, bytemuck::cast_slice(&instances));
-        view.plate_vertices
-            .write(device, queue, bytemuck::cast_slice(&plate_vertices));
-        view.plate_indices
-            .write(device, queue, bytemuck::cast_slice(&plate_indices));
-        view.line_vertices
-            .write(device, queue, bytemuck::cast_slice(&list.lines));
-        view.keep_analysis(device, &list.analysis);
-        let text = self.prepare_text(queue, list, camera.view_proj(aspect), viewport, scale);
-        view.text_vertices
-            .write(device, queue, bytemuck::cast_slice(&text));
-        view.batches = Batches {
-            cylinders,
-            spheres,
-            cones,
-            boxes,
-            plates,
-            lines: list.lines.len() as u32,
-            text: text.len() as u32,
-            parts,
-        };
     }
 
     /// Lay out the draw list's text and upload the glyphs it added to the atlas.
@@ -388,5 +371,57 @@ impl Renderer {
             multiview_mask: None,
         });
         self.paint(view, &mut pass);
+    }
+}
+
+/// Append `items` to `all`; the range of instance indices they took.
+fn push_range(items: &[MeshInstance], all: &mut Vec<MeshInstance>) -> std::ops::Range<u32> {
+    let start = all.len() as u32;
+    all.extend_from_slice(items);
+    start..all.len() as u32
+}
+
+/// A frame's plates in one mesh, farthest first.
+struct PlateMesh {
+    vertices: Vec<MeshVertex>,
+    indices: Vec<u32>,
+    /// Each plate's first index, index count and instance.
+    plates: Vec<(u32, u32, u32)>,
+}
+
+/// The draw list's plates, farthest from `eye` first: their vertices and indices in one
+/// mesh, and each plate's first index, index count and instance (appended to `instances`,
+/// one identity instance of its colour each).
+fn plates_back_to_front(
+    list: &DrawList,
+    eye: glam::Vec3,
+    instances: &mut Vec<MeshInstance>,
+) -> PlateMesh {
+    let mut order: Vec<usize> = (0..list.plates.len()).collect();
+    order.sort_by(|&a, &b| {
+        let da = (list.plates[a].2 - eye).length_squared();
+        let db = (list.plates[b].2 - eye).length_squared();
+        db.total_cmp(&da)
+    });
+    let mut vertices: Vec<MeshVertex> = Vec::new();
+    let mut indices: Vec<u32> = Vec::new();
+    let mut plates = Vec::new();
+    for k in order {
+        let (mesh, color, _) = &list.plates[k];
+        let base = vertices.len() as u32;
+        let first = indices.len() as u32;
+        vertices.extend_from_slice(&mesh.vertices);
+        indices.extend(mesh.indices.iter().map(|i| i + base));
+        let instance = instances.len() as u32;
+        instances.push(MeshInstance {
+            model: glam::Mat4::IDENTITY.to_cols_array_2d(),
+            color: *color,
+        });
+        plates.push((first, mesh.indices.len() as u32, instance));
+    }
+    PlateMesh {
+        vertices,
+        indices,
+        plates,
     }
 }

@@ -245,7 +245,7 @@ pub(crate) struct ViewArgs {
     pub(crate) frames: u32,
     /// The screenshot's size: `1` as on screen, `2` twice that (text drawn anew, not
     /// upscaled), `4k` 3840 pixels wide.
-    #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = crate::shot_scale::parse, requires = "screenshot")]
+    #[arg(long, value_name = "1|2|4k", default_value = "1", value_parser = parse_shot_scale, requires = "screenshot")]
     pub(crate) screenshot_scale: ShotScale,
     /// With --screenshot: start from the saved session (a screenshot run otherwise neither
     /// reads nor writes it, so that it does not depend on leftover state).
@@ -254,4 +254,14 @@ pub(crate) struct ViewArgs {
     /// Print frame-time statistics (CPU part and total) when the window closes.
     #[arg(long)]
     pub(crate) frame_stats: bool,
+}
+
+/// A screenshot scale as the command line takes it: `1`, `2` or `4k`.
+pub(crate) fn parse_shot_scale(text: &str) -> Result<ShotScale, ArgError> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "1" | "1x" => Ok(ShotScale::One),
+        "2" | "2x" => Ok(ShotScale::Two),
+        "4k" => Ok(ShotScale::Uhd),
+        _ => Err(ArgError::not_a(text, "a screenshot scale: 1, 2 or 4k")),
+    }
 }

@@ -88,7 +88,7 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
     note = note.or(font_note);
     state.look.presentation = args.presentation;
     state.look.expand_panels = args.expand_panels;
-    state.workspace.show |= args.workspace;
+    state.tools.workspace.show |= args.workspace;
     // Never written by a screenshot run, even one that started from it.
     state.session.folder = folder.filter(|_| args.screenshot.is_none());
     state.remember_file(&origin);

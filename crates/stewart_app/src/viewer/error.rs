@@ -15,7 +15,6 @@ use stewart_kinematics::model::trajectory::keyframes::KeyframeError;
 use stewart_kinematics::{GeometryError, ScenarioError};
 
 use crate::i18n::Lang;
-use crate::viewer::tools::job::JobFailed;
 
 /// What was being done with a file when the system refused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -347,6 +346,29 @@ from_below! {
     WorkspaceError => Workspace,
     JobFailed => Job,
 }
+
+/// The outcome of the last file or export action, shown until the next one.
+pub(crate) type Status = Option<Result<String, ViewerError>>;
+
+/// Why a job gave no result.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum JobFailed {
+    /// The thread could not be started.
+    NotStarted(String),
+    /// The work panicked.
+    Panicked,
+}
+
+impl std::fmt::Display for JobFailed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            JobFailed::NotStarted(why) => write!(f, "the background thread could not start: {why}"),
+            JobFailed::Panicked => write!(f, "the background work failed unexpectedly"),
+        }
+    }
+}
+
+impl std::error::Error for JobFailed {}
 
 #[cfg(test)]
 mod tests {

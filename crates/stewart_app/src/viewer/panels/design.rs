@@ -4,6 +4,7 @@
 use egui::RichText;
 use stewart_kinematics::io::settings;
 
+use super::context::PanelContext;
 use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::state::document::Document;
@@ -15,9 +16,9 @@ pub(crate) fn show(
     ui: &mut egui::Ui,
     tool: &mut DesignTool,
     doc: &mut Document,
-    t: Lang,
-    open: bool,
+    cx: &PanelContext,
 ) {
+    let (t, open) = (cx.lang, cx.expand);
     egui::CollapsingHeader::new(t.tr("design.heading"))
         .default_open(open)
         .show(ui, |ui| {

@@ -151,7 +151,7 @@ fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
             .on_hover_text(t.tr("export.show_folder_tip"))
             .clicked()
     {
-        exports.status = crate::viewer::window::reveal::show_in_folder(&written)
+        exports.status = crate::viewer::reveal::show_in_folder(&written)
             .err()
             .map(Err)
             .or(exports.status.take());

@@ -13,6 +13,7 @@ use stewart_link::sender::Status as SenderStatus;
 use stewart_link::template::Template;
 use stewart_link::transport::list_ports;
 
+use super::context::PanelContext;
 use super::widgets;
 use crate::i18n::Lang;
 use crate::link_plan::actuator_range;
@@ -77,9 +78,9 @@ pub(crate) fn show(
     link: &mut LiveLink,
     doc: &mut Document,
     link_error: &mut Option<ViewerError>,
-    t: Lang,
-    open: bool,
+    cx: &PanelContext,
 ) -> bool {
+    let (t, open) = (cx.lang, cx.expand);
     let mut connect = false;
     egui::CollapsingHeader::new(t.tr("link.heading"))
         .default_open(open || link.connected())

@@ -4,6 +4,7 @@
 
 mod appearance;
 mod byte_dump;
+mod context;
 mod cueing;
 mod design;
 mod diagnostics;
@@ -28,6 +29,8 @@ mod view;
 mod widgets;
 mod workspace;
 
+use context::PanelContext;
+
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::files::Purpose;
@@ -48,9 +51,6 @@ const PLOT_HEIGHT: f32 = 220.0;
 /// The side panel's narrowest and widest, points.
 const MIN_SIDE: f32 = 260.0;
 const MAX_SIDE: f32 = 480.0;
-
-/// Text sizes are multiplied by this in presentation mode.
-pub(crate) const PRESENTATION_TEXT_SCALE: f32 = 1.5;
 
 /// The 3D view: its toolbar's requests done, the camera framed for the view's shape, then
 /// the scene drawn.
@@ -160,19 +160,17 @@ fn controls(ui: &mut egui::Ui, state: &mut ViewerState) {
     ui.separator();
     geometry::show(ui, &mut state.editor());
     ui.separator();
-    let pose = state.pose();
+    let cx = PanelContext::of(state);
     let next_mode = motion::show(
         ui,
         motion::MotionParts {
             doc: &mut state.doc,
             playback: &mut state.playback,
             teleop: &mut state.teleop,
-            reach: &mut state.reach,
-            assembly_shown: state.assembly.shown,
-            assembly_error: state.assembly_error.as_ref(),
-            pose,
-            lang: state.look.lang,
-            expand: state.look.expand_panels,
+            reach: &mut state.tools.reach,
+            assembly_shown: state.tools.assembly.shown,
+            assembly_error: state.tools.assembly_error.as_ref(),
+            cx: &cx,
         },
     );
     if next_mode {
@@ -183,7 +181,7 @@ fn controls(ui: &mut egui::Ui, state: &mut ViewerState) {
         ui,
         &mut state.playback,
         &state.doc.scenario().motion.sampling,
-        state.look.lang,
+        cx.lang,
     );
     view::drawing(ui, &mut state.look);
     ui.separator();
@@ -205,49 +203,33 @@ fn controls(ui: &mut egui::Ui, state: &mut ViewerState) {
 /// The side panel's analysis and hardware sections: design, workspace, reach, the link,
 /// cueing, dynamics.
 fn tool_sections(ui: &mut egui::Ui, state: &mut ViewerState) {
-    design::show(
-        ui,
-        &mut state.design,
-        &mut state.doc,
-        state.look.lang,
-        state.look.expand_panels,
-    );
+    let cx = PanelContext::of(state);
+    design::show(ui, &mut state.tools.design, &mut state.doc, &cx);
     ui.separator();
-    let pose = state.pose();
-    workspace::show(
-        ui,
-        &mut state.workspace,
-        state.doc.scenario(),
-        &pose,
-        state.look.lang,
-        state.look.expand_panels,
-    );
-    let (t, open) = (state.look.lang, state.look.expand_panels);
-    reach::show(ui, t, open, &state.pose(), || state.orientation_reach());
+    // The design may have changed the platform: the pose shown is read again.
+    let cx = PanelContext::of(state);
+    workspace::show(ui, &mut state.tools.workspace, state.doc.scenario(), &cx);
+    reach::show(ui, &cx, || state.orientation_reach());
     ui.separator();
-    let (t, open) = (state.look.lang, state.look.expand_panels);
     let connect = link::show(
         ui,
         &mut state.link,
         &mut state.doc,
         &mut state.link_error,
-        t,
-        open,
+        &cx,
     );
     if connect {
         state.connect_link();
     }
     ui.separator();
-    let now = state.doc.scenario().motion.sampling.start() + state.playback.time;
-    let (lang, expand) = (state.look.lang, state.look.expand_panels);
-    let mut editor = Editor::new(&mut state.doc, &mut state.playback, lang, expand);
-    if cueing::show(ui, &mut editor, now, state.link.cue()) {
+    let mut editor = Editor::new(&mut state.doc, &mut state.playback, cx.lang, cx.expand);
+    if cueing::show(ui, &mut editor, cx.now, state.link.cue()) {
         state.choose_file(Purpose::Open);
     }
     ui.separator();
     let pose = state.pose();
-    let mut editor = Editor::new(&mut state.doc, &mut state.playback, lang, expand);
-    dynamics::show(ui, &mut editor, &pose, &mut state.modes);
+    let mut editor = Editor::new(&mut state.doc, &mut state.playback, cx.lang, cx.expand);
+    dynamics::show(ui, &mut editor, &pose, &mut state.tools.modes);
 }
 
 /// The plot's panel at the bottom, sized for the window's `height` and the mode: at most
@@ -493,7 +475,7 @@ fn style(ctx: &egui::Context, state: &ViewerState) {
     }
     if state.look.presentation {
         for font in style.text_styles.values_mut() {
-            font.size *= PRESENTATION_TEXT_SCALE;
+            font.size *= crate::viewer::state::look::PRESENTATION_TEXT_SCALE;
         }
     }
     if *ctx.global_style() != style {

@@ -9,6 +9,7 @@ use stewart_kinematics::model::trajectory::{
 };
 use stewart_kinematics::{Pose, Scenario};
 
+use super::context::PanelContext;
 use super::widgets::{self, edit_error, setting_slider};
 use crate::i18n::{Lang, words};
 use crate::viewer::state::Teleop;
@@ -46,17 +47,13 @@ pub(crate) struct MotionParts<'a> {
     pub(crate) assembly_shown: Option<(usize, usize)>,
     /// Why the last *next assembly mode* found none.
     pub(crate) assembly_error: Option<&'a NoMode>,
-    /// The pose shown.
-    pub(crate) pose: Pose,
-    /// The interface's language.
-    pub(crate) lang: Lang,
-    /// Whether collapsible parts start open.
-    pub(crate) expand: bool,
+    /// The frame's context: the language, whether sections start open, the pose shown.
+    pub(crate) cx: &'a PanelContext,
 }
 
 /// The panel. Returns whether *Next assembly mode* was pressed (the caller finds it).
 pub(crate) fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
-    let t = parts.lang;
+    let t = parts.cx.lang;
     ui.heading(t.tr("motion.heading"));
     ui.horizontal(|ui| {
         ui.selectable_value(
@@ -75,7 +72,7 @@ pub(crate) fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
         MotionMode::Manual => manual(ui, &mut parts),
         MotionMode::Trajectory => trajectory(
             ui,
-            &mut Editor::new(parts.doc, parts.playback, t, parts.expand),
+            &mut Editor::new(parts.doc, parts.playback, t, parts.cx.expand),
         ),
     }
     edit_error(ui, parts.doc, t, &[Group::Trajectory]);
@@ -85,7 +82,7 @@ pub(crate) fn show(ui: &mut egui::Ui, mut parts: MotionParts) -> bool {
 /// The button that shows the next assembly mode of the legs shown, and which one it is.
 /// Returns whether it was pressed.
 fn assembly_modes(ui: &mut egui::Ui, parts: &MotionParts) -> bool {
-    let t = parts.lang;
+    let t = parts.cx.lang;
     let mut next = false;
     ui.horizontal(|ui| {
         next = ui
@@ -112,7 +109,7 @@ fn assembly_modes(ui: &mut egui::Ui, parts: &MotionParts) -> bool {
 }
 
 fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
-    let t = parts.lang;
+    let t = parts.cx.lang;
     let scenario = parts.doc.scenario();
     let home = scenario.geometry.home_pose().to_coordinates();
     let mut c = parts.playback.manual.to_coordinates();
@@ -127,9 +124,10 @@ fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
         };
         [home[k] - reach, home[k] + reach]
     });
-    let reachable = parts
-        .reach
-        .sliders(&scenario.geometry, &scenario.limits, &parts.pose, bounds);
+    let reachable =
+        parts
+            .reach
+            .sliders(&scenario.geometry, &scenario.limits, &parts.cx.pose, bounds);
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
         let angular = unit == Unit::Degree;
         let mut value = if angular { c[k].to_degrees() } else { c[k] };

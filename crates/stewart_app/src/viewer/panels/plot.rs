@@ -13,6 +13,7 @@ use crate::viewer::state::document::Document;
 use crate::viewer::state::history::History;
 use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::Playback;
+use crate::viewer::state::plot_memory::PlotPlacement;
 
 /// Leg `i`'s colour, as in exported plots.
 pub(crate) fn leg_colour(i: usize) -> Color32 {
@@ -87,26 +88,6 @@ pub(crate) struct Shows {
 /// Curve width in points (presentation mode: the projector's, twice as wide).
 fn line_width(look: &Look) -> f32 {
     if look.presentation { 3.5 } else { 1.5 }
-}
-
-/// Where the plot drew its parts, screen points (as last drawn): what a plot that fits its
-/// panel is judged by.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct PlotPlacement {
-    /// The space the panel gave the plot and its legend.
-    pub(crate) space: egui::Rect,
-    /// The plot's data area (inside its axes).
-    pub(crate) frame: egui::Rect,
-    /// The times at its left and right edges, seconds.
-    pub(crate) times: [f64; 2],
-    /// Each limit line drawn: its screen height and its label's rectangle.
-    pub(crate) limits: Vec<(f32, egui::Rect)>,
-    /// Each legend row.
-    pub(crate) legend: Vec<egui::Rect>,
-    /// The values/forces toggle, when there is one.
-    pub(crate) toggle: Option<egui::Rect>,
-    /// The length of the vertical axis's label (it is centred on the frame's height).
-    pub(crate) y_label_length: f32,
 }
 
 /// The panel: the plot, and its legend beside it (outside the curves) in as many columns

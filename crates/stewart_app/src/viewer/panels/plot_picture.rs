@@ -20,54 +20,7 @@ use std::hash::{Hash, Hasher};
 use egui::{Color32, Rect, Shape};
 use egui_plot::{PlotGeometry, PlotItem, PlotItemBase, PlotTransform};
 
-/// What a picture of the curves shows: the curves' data and style, and where in the
-/// window at which density (the plot's bounds and frame).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct PictureKey {
-    data: u64,
-    place: u64,
-}
-
-/// Curves the plot wants a picture of: their shapes in window points, the clip they are
-/// drawn with, and the pixel-aligned rectangle the picture covers.
-#[derive(Clone, Debug)]
-pub(crate) struct WantedPicture {
-    /// What it shows.
-    pub(crate) key: PictureKey,
-    /// The picture's rectangle, window points, on whole pixels.
-    pub(crate) rect: Rect,
-    /// The clip the curves are drawn with, window points.
-    pub(crate) clip: Rect,
-    /// The window's pixel density.
-    pub(crate) pixels_per_point: f32,
-    /// The curves' shapes, window points.
-    pub(crate) shapes: Vec<Shape>,
-}
-
-/// A picture the window drew: its texture, what it shows, and the parts of it that hold
-/// anything (window points; the rest is transparent and not drawn: on a software
-/// rasteriser every pixel drawn costs time).
-#[derive(Clone, Debug)]
-pub(crate) struct DrawnPicture {
-    /// The texture.
-    pub(crate) texture: egui::TextureId,
-    /// What it shows.
-    pub(crate) key: PictureKey,
-    /// The rectangles of it that hold anything.
-    pub(crate) parts: std::sync::Arc<Vec<Rect>>,
-}
-
-/// The hand-over between the plot and the window (kept in the look).
-#[derive(Clone, Debug, Default)]
-pub struct CurvesPicture {
-    /// The picture the window drew last.
-    pub(crate) drawn: Option<DrawnPicture>,
-    /// Curves drawn directly that stayed the same for two frames: the window draws their
-    /// picture (and takes this).
-    pub(crate) wanted: Option<WantedPicture>,
-    /// What the curves drawn directly at the last frame were.
-    last: Option<PictureKey>,
-}
+use crate::viewer::state::plot_memory::{CurvesPicture, DrawnPicture, PictureKey, WantedPicture};
 
 /// One frame's plot and the picture: built before the plot, read by its items, closed
 /// after it ([`Session::finish`]).

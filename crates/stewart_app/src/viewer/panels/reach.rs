@@ -3,8 +3,8 @@
 //! moves.
 
 use egui::{RichText, Stroke};
-use stewart_kinematics::Pose;
 
+use super::context::PanelContext;
 use super::widgets::{ERROR, OK, UNREACHABLE, range_bar};
 use crate::i18n::Lang;
 use crate::i18n::words;
@@ -12,13 +12,9 @@ use crate::viewer::tools::reach::{ANGLE_SPAN_DEG, MAP_SPAN_DEG, OrientationReach
 
 /// The panel in language `t`, at `pose`, open at first when `open`; `reach` is asked only
 /// while the panel is open.
-pub(crate) fn show(
-    ui: &mut egui::Ui,
-    t: Lang,
-    open: bool,
-    pose: &Pose,
-    reach: impl FnOnce() -> OrientationReach,
-) {
+pub(crate) fn show(ui: &mut egui::Ui, cx: &PanelContext, reach: impl FnOnce() -> OrientationReach) {
+    let (t, open) = (cx.lang, cx.expand);
+    let pose = &cx.pose;
     egui::CollapsingHeader::new(t.tr("reach.heading"))
         .default_open(open)
         .show(ui, |ui| {

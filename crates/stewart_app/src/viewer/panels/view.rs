@@ -9,9 +9,9 @@ use crate::i18n::Lang;
 use crate::viewer::state::exports::Exports;
 use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::Playback;
-use crate::viewer::window::quality::Quality;
-use crate::viewer::window::shots::Shots;
-use crate::viewer::window::view3d::SceneCallback;
+use crate::viewer::view3d::callback::SceneCallback;
+use crate::viewer::view3d::quality::Quality;
+use crate::viewer::view3d::shots::Shots;
 
 /// Standard views: the label's key, azimuth and elevation (MATLAB's `view(az, el)`).
 const VIEWS: [(&str, f32, f32); 4] = [
@@ -24,7 +24,7 @@ const VIEWS: [(&str, f32, f32); 4] = [
 /// The Screenshot menu: what, how large, background; Save (or F12 with these choices).
 /// Returns whether *Save* was pressed.
 fn screenshot_menu(ui: &mut egui::Ui, shots: &mut Shots, t: Lang) -> bool {
-    use crate::viewer::window::shots::{ShotKind, ShotScale};
+    use crate::viewer::view3d::shots::{ShotKind, ShotScale};
     ui.radio_value(&mut shots.kind, ShotKind::View, t.tr("view.shot_view"));
     ui.radio_value(&mut shots.kind, ShotKind::Window, t.tr("view.shot_window"));
     ui.horizontal(|ui| {
@@ -152,7 +152,7 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
                 });
             });
         ui.ctx()
-            .request_repaint_after(crate::viewer::window::shots::SAID_FOR);
+            .request_repaint_after(crate::viewer::view3d::shots::SAID_FOR);
     }
     action
 }

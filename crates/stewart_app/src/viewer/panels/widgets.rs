@@ -6,10 +6,10 @@ use stewart_kinematics::io::settings::{self, Group, Setting, SettingTarget, Unit
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
+use crate::viewer::error::Status;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::editor::Editor;
-use crate::viewer::state::files::Status;
 
 /// Red for refusals and errors.
 pub(crate) const ERROR: Color32 = Color32::from_rgb(220, 40, 40);

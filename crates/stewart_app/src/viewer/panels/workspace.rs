@@ -7,6 +7,7 @@ use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::colormap;
 
+use super::context::PanelContext;
 use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
@@ -17,10 +18,10 @@ pub(crate) fn show(
     ui: &mut egui::Ui,
     w: &mut WorkspaceTool,
     scenario: &Scenario,
-    pose: &Pose,
-    t: Lang,
-    open: bool,
+    cx: &PanelContext,
 ) {
+    let (t, open) = (cx.lang, cx.expand);
+    let pose = &cx.pose;
     egui::CollapsingHeader::new(t.tr("workspace_panel.heading"))
         .default_open(open || w.show)
         .show(ui, |ui| {

@@ -22,8 +22,9 @@ use crate::export::video::{VideoRequest, bytes_in_words, export_video, rate_in_w
 use crate::export::workspace_plot::figure_file;
 use crate::i18n::Lang;
 use crate::output::{Destination, write_atomically};
+use crate::viewer::error::JobFailed;
 use crate::viewer::error::ViewerError;
-use crate::viewer::tools::job::{Job, JobFailed};
+use crate::viewer::tools::job::Job;
 
 /// What to export.
 #[derive(Clone, Debug)]
@@ -312,7 +313,7 @@ fn surface_png(view: &SurfaceView, lang: Lang, stop: &AtomicBool) -> Result<Stri
     if let Some(slice) = outcome.slice {
         list.analysis.push(slice.mesh);
     }
-    crate::viewer::window::shots::render_view(
+    crate::viewer::view3d::shots::render_view(
         &list,
         view.camera,
         view.theme,

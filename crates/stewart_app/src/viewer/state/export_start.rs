@@ -112,7 +112,7 @@ fn request(state: &ViewerState, out: PathBuf) -> VideoRequest {
 /// height when the Workspace panel sets one.
 fn workspace_position(state: &ViewerState) -> [f64; 3] {
     let p = state.pose().position;
-    let w = &state.workspace;
+    let w = &state.tools.workspace;
     let z = if w.show_slice && !w.slice_follows {
         // The panel's height is the platform centre's; a pose places the reference point.
         p.z + w.slice_height - state.centre().z

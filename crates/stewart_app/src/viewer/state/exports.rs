@@ -2,8 +2,8 @@
 //! its own thread, and the outcome of the last one.
 
 use crate::i18n::Lang;
+use crate::viewer::error::Status;
 use crate::viewer::state::export_job::ExportJob;
-use crate::viewer::state::files::Status;
 
 /// What the export panel will write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

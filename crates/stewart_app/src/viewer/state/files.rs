@@ -7,11 +7,6 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::viewer::error::ViewerError;
-
-/// The outcome of the last file or export action, shown until the next one.
-pub(crate) type Status = Option<Result<String, ViewerError>>;
-
 /// How long a folder listing is trusted before the folder is read again.
 const LISTING_LIFETIME: Duration = Duration::from_secs(1);
 
@@ -23,7 +18,7 @@ pub(crate) struct Files {
     /// The scenario file opened or saved last (Ctrl+S writes there without asking).
     pub(crate) current: Option<PathBuf>,
     /// What the last open or save did.
-    pub(crate) status: Status,
+    pub(crate) status: crate::viewer::error::Status,
     /// The open/save dialog, while one is shown.
     pub(crate) picker: Option<Picker>,
     /// A write waiting for the answer to "replace it?".

@@ -5,6 +5,9 @@ use stewart_render::{OrbitCamera, Theme};
 
 use crate::i18n::Lang;
 
+/// Text sizes are multiplied by this in presentation mode.
+pub(crate) const PRESENTATION_TEXT_SCALE: f32 = 1.5;
+
 /// The view's settings.
 #[derive(Clone, Debug)]
 pub struct Look {
@@ -58,9 +61,9 @@ pub struct Look {
     pub(crate) plot_height: f32,
     /// Where the plot drew its frame, limits, legend and toggle last (`None` while hidden
     /// or before the first frame).
-    pub(crate) plot_placement: Option<crate::viewer::panels::plot::PlotPlacement>,
+    pub(crate) plot_placement: Option<crate::viewer::state::plot_memory::PlotPlacement>,
     /// The plot's curves as a picture the window draws (a software rasteriser).
-    pub(crate) curves_picture: crate::viewer::panels::plot_picture::CurvesPicture,
+    pub(crate) curves_picture: crate::viewer::state::plot_memory::CurvesPicture,
     /// The 3D view's size on screen, physical pixels (for screenshots at 1× and 2×).
     pub(crate) view_px: [u32; 2],
     /// The 3D view's width over its height, as laid out last frame.

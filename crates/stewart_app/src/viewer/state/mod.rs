@@ -20,6 +20,7 @@ pub(crate) mod history;
 pub(crate) mod live_link;
 pub(crate) mod look;
 pub(crate) mod playback;
+pub(crate) mod plot_memory;
 pub(crate) mod session;
 pub(crate) mod teleop;
 pub(crate) mod undo;
@@ -27,14 +28,6 @@ pub(crate) mod vehicle;
 
 use nalgebra::Vector3;
 
-#[cfg(test)]
-use stewart_kinematics::io::settings::Setting;
-#[cfg(test)]
-use stewart_kinematics::model::link_settings::LinkSettings;
-#[cfg(test)]
-use stewart_kinematics::{
-    CheckReport, GeometryParams, model::layout::Layout, model::leg_solution::LegSolution,
-};
 use stewart_kinematics::{Pose, Scenario};
 use stewart_render::{OrbitCamera, Theme};
 
@@ -71,22 +64,13 @@ pub struct ViewerState {
     /// What is remembered between runs.
     pub(crate) session: SessionState,
     /// Screenshots.
-    pub(crate) shots: crate::viewer::window::shots::Shots,
-    /// The stroke an envelope of poses needs.
-    pub(crate) design: crate::viewer::tools::design::DesignTool,
-    /// The workspace surface and the conditioning slice in the 3D view.
-    pub workspace: crate::viewer::tools::workspace::WorkspaceTool,
-    /// The assembly modes of the legs shown, stepped through one by one.
-    pub(crate) assembly: crate::viewer::tools::assembly::AssemblyBrowser,
-    /// Why the last step to another assembly mode found none.
-    pub(crate) assembly_error: Option<crate::viewer::tools::assembly::NoMode>,
-    /// Reach at the pose shown (orientation panel, manual sliders), cached.
-    pub(crate) reach: crate::viewer::tools::reach::ReachCache,
-    /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
-    pub(crate) modes: crate::viewer::tools::mode_view::ModeView,
+    pub(crate) shots: crate::viewer::view3d::shots::Shots,
+    /// The background tools: design search, workspace, assembly modes, reach, the
+    /// mode viewer.
+    pub tools: crate::viewer::tools::Tools,
     /// The 3D view's quality (adapted to the frame time on a software rasteriser) and the
     /// frame times.
-    pub(crate) quality: crate::viewer::window::quality::Quality,
+    pub(crate) quality: crate::viewer::view3d::quality::Quality,
     /// Ctrl+Q was pressed: the window closes as by its close button.
     pub(crate) quit_asked: bool,
 }
@@ -149,14 +133,9 @@ impl ViewerState {
                 origin: format!("preset {}", scenario.name),
                 ..SessionState::default()
             },
-            shots: crate::viewer::window::shots::Shots::default(),
-            design: crate::viewer::tools::design::DesignTool::default(),
-            workspace: crate::viewer::tools::workspace::WorkspaceTool::default(),
-            assembly: crate::viewer::tools::assembly::AssemblyBrowser::default(),
-            assembly_error: None,
-            reach: crate::viewer::tools::reach::ReachCache::default(),
-            modes: crate::viewer::tools::mode_view::ModeView::default(),
-            quality: crate::viewer::window::quality::Quality::default(),
+            shots: crate::viewer::view3d::shots::Shots::default(),
+            tools: crate::viewer::tools::Tools::default(),
+            quality: crate::viewer::view3d::quality::Quality::default(),
             quit_asked: false,
             doc: Document::new(scenario, folder),
         }
@@ -184,13 +163,6 @@ impl ViewerState {
         self.files.status = None;
         self.exports.status = None;
         self.shots.status = None;
-    }
-
-    /// Change the `[link]` table: `change` works on a copy, kept only when the table is
-    /// sound (else the reason shows in the Link panel).
-    #[cfg(test)]
-    pub(crate) fn edit_link(&mut self, change: impl FnOnce(&mut LinkSettings)) {
-        self.link_error = self.doc.edit_link(change).err();
     }
 
     /// Move the manual pose by a velocity command for `dt` seconds (keyboard and gamepad),
@@ -236,7 +208,10 @@ impl ViewerState {
         } else {
             Vec::new()
         };
-        let shown = self.modes.shown_pose(self.doc.scenario(), self.pose());
+        let shown = self
+            .tools
+            .modes
+            .shown_pose(self.doc.scenario(), self.pose());
         let frame = self.doc.scenario().geometry.scene_frame(&shown, path);
         let overlays = stewart_render::Overlays {
             platform_axes: self.look.platform_axes,
@@ -257,11 +232,15 @@ impl ViewerState {
                 .scene_frame(&measured, Vec::new());
             list.ghost(&ghost, theme);
         }
-        if self.workspace.show
-            && let Some(outcome) = &self.workspace.latest
+        if self.tools.workspace.show
+            && let Some(outcome) = &self.tools.workspace.latest
         {
             list.analysis.push(outcome.surface.clone());
-            if let Some(slice) = outcome.slice.as_ref().filter(|_| self.workspace.show_slice) {
+            if let Some(slice) = outcome
+                .slice
+                .as_ref()
+                .filter(|_| self.tools.workspace.show_slice)
+            {
                 list.analysis.push(slice.mesh.clone());
             }
         }
@@ -277,7 +256,7 @@ impl ViewerState {
                 None,
             );
             let scale = if self.look.presentation {
-                crate::viewer::panels::PRESENTATION_TEXT_SCALE
+                look::PRESENTATION_TEXT_SCALE
             } else {
                 1.0
             };
@@ -291,7 +270,7 @@ impl ViewerState {
     /// screen on a thread of its own, or the whole window at the next frame. Playback goes
     /// on; the outcome shows in the menu.
     pub(crate) fn take_screenshot(&mut self) {
-        use crate::viewer::window::shots::{ShotKind, next_path};
+        use crate::viewer::view3d::shots::{ShotKind, next_path};
         let path = next_path(&self.shots.folder, &self.doc.scenario().name);
         match self.shots.kind {
             ShotKind::Window => self.shots.window_request = Some((path, self.shots.scale)),
@@ -340,24 +319,6 @@ impl ViewerState {
             self.look.lang,
             self.look.expand_panels,
         )
-    }
-
-    /// [`Editor::apply`]: write one setting (`None`: switch an optional one off).
-    #[cfg(test)]
-    pub(crate) fn apply(&mut self, setting: &Setting, value: Option<f64>) {
-        self.editor().apply(setting, value);
-    }
-
-    /// Replace the geometry's numbers.
-    #[cfg(test)]
-    pub(crate) fn set_geometry(&mut self, params: GeometryParams) {
-        self.doc.set_geometry(params);
-    }
-
-    /// Rewrite all twelve joint angles from a named layout.
-    #[cfg(test)]
-    pub(crate) fn set_layout(&mut self, layout: Layout) {
-        self.doc.set_layout(layout);
     }
 
     /// Show another scenario from its start, keeping the viewer's own choices (theme,
@@ -423,25 +384,6 @@ impl ViewerState {
         self.editor().keep_time_in_range();
     }
 
-    /// The named layout of the joint angles, `None` when they were edited one by one
-    /// into no named layout.
-    #[cfg(test)]
-    pub(crate) fn layout(&self) -> Option<Layout> {
-        self.doc.layout()
-    }
-
-    /// Times and leg lengths for the plot.
-    #[cfg(test)]
-    pub(crate) fn plot_samples(&self) -> (&[f64], &[[f64; 6]]) {
-        self.doc.plot_samples()
-    }
-
-    /// The pre-flight report of the trajectory, once computed (off the UI thread).
-    #[cfg(test)]
-    pub(crate) fn report(&self) -> Option<&CheckReport> {
-        self.doc.report()
-    }
-
     /// Whether the report is still being computed.
     pub(crate) fn report_pending(&self) -> bool {
         self.doc.report_pending()
@@ -460,41 +402,31 @@ impl ViewerState {
         self.link.poll();
         self.link.follow(self.drive(), self.playback.looping);
         self.shots.poll();
-        self.design.poll();
-        if self.workspace.show {
+        self.tools.design.poll();
+        if self.tools.workspace.show {
             let request = self.workspace_request();
-            self.workspace.request(request);
+            self.tools.workspace.request(request);
         }
-        self.workspace.poll();
+        self.tools.workspace.poll();
     }
 
     /// When the workspace is shown, wait (at most thirty seconds) for its refinement at the
     /// pose shown (screenshots and tests want a settled picture).
     pub(crate) fn settle_workspace(&mut self) {
-        if self.workspace.show {
+        if self.tools.workspace.show {
             let request = self.workspace_request();
-            self.workspace.request(request);
-            self.workspace.wait(std::time::Duration::from_secs(30));
+            self.tools.workspace.request(request);
+            self.tools
+                .workspace
+                .wait(std::time::Duration::from_secs(30));
         }
-    }
-
-    /// Each manual-pose coordinate's reachable interval within its slider's `bounds` (pose
-    /// coordinates: metres, radians), the others held.
-    #[cfg(test)]
-    pub(crate) fn slider_reach(&mut self, bounds: [[f64; 2]; 6]) -> [Option<[f64; 2]>; 6] {
-        let pose = self.pose();
-        self.reach.sliders(
-            &self.doc.scenario().geometry,
-            &self.doc.scenario().limits,
-            &pose,
-            bounds,
-        )
     }
 
     /// Roll, pitch, yaw alone and the roll–pitch map at the pose shown.
     pub(crate) fn orientation_reach(&mut self) -> crate::viewer::tools::reach::OrientationReach {
         let pose = self.pose();
-        self.reach
+        self.tools
+            .reach
             .orientation(
                 &self.doc.scenario().geometry,
                 &self.doc.scenario().limits,
@@ -505,7 +437,7 @@ impl ViewerState {
 
     /// The orientation the workspace is shown at: the pose's, or the one chosen.
     pub(crate) fn workspace_orientation(&self) -> [stewart_kinematics::Angle; 3] {
-        self.workspace.orientation_at(&self.pose())
+        self.tools.workspace.orientation_at(&self.pose())
     }
 
     /// The platform centre of the pose shown, metres.
@@ -515,7 +447,7 @@ impl ViewerState {
 
     /// What the workspace is computed for now.
     pub(crate) fn workspace_request(&self) -> crate::viewer::tools::workspace::Request {
-        let w = &self.workspace;
+        let w = &self.tools.workspace;
         let slice_at = w.show_slice.then(|| {
             if w.slice_follows {
                 self.centre().z
@@ -573,15 +505,19 @@ impl ViewerState {
     /// in another pose with the same actuators, in manual mode.
     pub(crate) fn next_assembly_mode(&mut self) {
         let pose = self.pose();
-        match self.assembly.next(&self.doc.scenario().geometry, &pose) {
+        match self
+            .tools
+            .assembly
+            .next(&self.doc.scenario().geometry, &pose)
+        {
             Ok(next) => {
                 self.playback.mode = MotionMode::Manual;
                 self.playback.manual = next;
-                self.assembly_error = None;
+                self.tools.assembly_error = None;
             }
             Err(why) => {
-                self.assembly.shown = None;
-                self.assembly_error = Some(why);
+                self.tools.assembly.shown = None;
+                self.tools.assembly_error = Some(why);
             }
         }
     }
@@ -590,12 +526,6 @@ impl ViewerState {
     pub(crate) fn path_until_now(&self) -> Vec<Vector3<f64>> {
         let now = self.doc.scenario().motion.sampling.start() + self.playback.time;
         self.doc.path_until(now)
-    }
-
-    /// Legs of the pose shown now.
-    #[cfg(test)]
-    pub(crate) fn legs(&self) -> LegSolution {
-        self.doc.scenario().geometry.inverse(&self.pose())
     }
 
     /// The colour theme (presentation mode is always light).
@@ -613,8 +543,8 @@ impl ViewerState {
             || self.report_pending()
             || self.link.connected()
             || self.shots.busy()
-            || (self.workspace.show && self.workspace.busy())
-            || self.modes.animate
+            || (self.tools.workspace.show && self.tools.workspace.busy())
+            || self.tools.modes.animate
     }
 
     /// Whether the plot shows the rolling history of the values shown (manual mode, or
@@ -627,7 +557,7 @@ impl ViewerState {
     /// link cues live vehicle motion) the history. Returns whether playback moved.
     pub fn advance(&mut self, dt: f64) -> bool {
         self.playback.clock += dt;
-        self.modes.advance(dt);
+        self.tools.modes.advance(dt);
         if self.plot_rolls() {
             let pose = self.pose();
             let values = self.doc.scenario().geometry.actuator_values(&[pose]);
@@ -712,8 +642,8 @@ impl ViewerState {
             ),
         };
         // The workspace's surface, when shown, is in the picture too.
-        if self.workspace.show
-            && let Some(outcome) = &self.workspace.latest
+        if self.tools.workspace.show
+            && let Some(outcome) = &self.tools.workspace.latest
         {
             let points: Vec<glam::Vec3> = outcome
                 .surface
@@ -808,6 +738,7 @@ impl ViewerState {
 mod tests {
     use super::*;
     use stewart_kinematics::model::geometry::PlateJoints;
+    use stewart_kinematics::model::layout::Layout;
 
     #[test]
     fn playback_loops_and_stops() {

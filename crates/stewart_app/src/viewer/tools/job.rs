@@ -13,6 +13,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{self, Receiver, Sender};
 use std::thread::JoinHandle;
 
+use crate::viewer::error::JobFailed;
+
 /// The work's side: its cancel flag and where its results go.
 pub(crate) struct Worker<T> {
     cancel: Arc<AtomicBool>,
@@ -36,26 +38,6 @@ impl<T> Worker<T> {
         self.results.send(result).is_ok()
     }
 }
-
-/// Why a job gave no result.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) enum JobFailed {
-    /// The thread could not be started.
-    NotStarted(String),
-    /// The work panicked.
-    Panicked,
-}
-
-impl std::fmt::Display for JobFailed {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            JobFailed::NotStarted(why) => write!(f, "the background thread could not start: {why}"),
-            JobFailed::Panicked => write!(f, "the background work failed unexpectedly"),
-        }
-    }
-}
-
-impl std::error::Error for JobFailed {}
 
 type Work<T> = Box<dyn FnOnce(&Worker<T>) + Send>;
 

@@ -9,3 +9,20 @@ pub(crate) mod job;
 pub(crate) mod mode_view;
 pub(crate) mod reach;
 pub(crate) mod workspace;
+
+/// The background tools of one viewer, a part of its state.
+#[derive(Default)]
+pub struct Tools {
+    /// The stroke an envelope of poses needs.
+    pub(crate) design: design::DesignTool,
+    /// The workspace surface and the conditioning slice in the 3D view.
+    pub workspace: workspace::WorkspaceTool,
+    /// The assembly modes of the legs shown, stepped through one by one.
+    pub(crate) assembly: assembly::AssemblyBrowser,
+    /// Why the last step to another assembly mode found none.
+    pub(crate) assembly_error: Option<assembly::NoMode>,
+    /// Reach at the pose shown (orientation panel, manual sliders), cached.
+    pub(crate) reach: reach::ReachCache,
+    /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
+    pub(crate) modes: mode_view::ModeView,
+}

@@ -26,11 +26,13 @@ fn chinese(preset: &str) -> Harness<'static, ViewerState> {
     state.look.lang = Lang::Zh;
     state.look.expand_panels = true;
     // The Workspace panel's numbers and slice too (coarse: a debug build).
-    state.workspace = crate::viewer::tools::workspace::WorkspaceTool::with_resolutions(16, 48);
-    state.workspace.show = true;
+    state.tools.workspace =
+        crate::viewer::tools::workspace::WorkspaceTool::with_resolutions(16, 48);
+    state.tools.workspace.show = true;
     let mut h = super::harness_with(state, 4200.0);
     h.state_mut().settle_workspace();
     h.state_mut()
+        .tools
         .workspace
         .wait(std::time::Duration::from_secs(120));
     h.run();
@@ -141,8 +143,8 @@ fn a_refusal_reads_in_the_language_shown_and_follows_a_switch() {
     state.look.lang = Lang::Zh;
     state.look.expand_panels = true;
     state.open_path(&missing);
-    state.design.spans = [[0.0; 2]; 6];
-    state.design.start(&Scenario::seed().geometry);
+    state.tools.design.spans = [[0.0; 2]; 6];
+    state.tools.design.start(&Scenario::seed().geometry);
     let mut h = super::harness_with(state, 3600.0);
     h.run();
     let shown = |h: &Harness<'static, ViewerState>, words: &str| {

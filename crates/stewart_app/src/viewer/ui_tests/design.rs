@@ -16,12 +16,12 @@ fn seed_with_panels_open() -> Harness<'static, ViewerState> {
 fn the_stroke_an_envelope_needs_goes_into_the_limits() {
     let mut h = seed_with_panels_open();
     // z 0.7 .. 0.9 about the seed's home height 0.8 (the others at their defaults).
-    h.state_mut().design.spans[2] = [-0.1, 0.1];
+    h.state_mut().tools.design.spans[2] = [-0.1, 0.1];
     h.run();
     h.get_by_label("Compute").click();
     // The search runs on its own thread; the panel keeps drawing meanwhile.
     h.step();
-    h.state_mut().design.wait();
+    h.state_mut().tools.design.wait();
     h.run();
     assert!(h.query_by_label("Needed: 0.6551 .. 1.3520 m").is_some());
     super::look(&mut h, "design-panel.png");
@@ -46,7 +46,7 @@ fn the_stroke_an_envelope_needs_goes_into_the_limits() {
 #[test]
 fn a_bad_envelope_says_why() {
     let mut h = seed_with_panels_open();
-    h.state_mut().design.spans = [[0.0; 2]; 6];
+    h.state_mut().tools.design.spans = [[0.0; 2]; 6];
     h.run();
     h.get_by_label("Compute").click();
     h.run();
@@ -54,5 +54,5 @@ fn a_bad_envelope_says_why() {
         h.query_by_label_contains("the envelope is empty").is_some(),
         "the reason is shown"
     );
-    assert!(!h.state().design.busy());
+    assert!(!h.state().tools.design.busy());
 }

@@ -78,7 +78,7 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
     h.get_by_label("Swing the 3D view along the chosen mode")
         .click();
     h.run();
-    assert!(h.state().modes.animate && h.state().modes.mode == 2);
+    assert!(h.state().tools.modes.animate && h.state().tools.modes.mode == 2);
     assert!(
         h.state().animating(),
         "the window keeps drawing while a mode swings"
@@ -90,14 +90,14 @@ fn a_payload_and_a_stiffness_give_six_modes_and_the_view_swings_along_one() {
     // The picture swings; the pose the link would send does not.
     let state = h.state();
     let pose = state.pose();
-    let shown = state.modes.shown_pose(state.scenario(), pose);
+    let shown = state.tools.modes.shown_pose(state.scenario(), pose);
     assert!(
         (shown.position - pose.position).norm() > 1e-3,
         "{shown:?} vs {pose:?}"
     );
     let list = state.draw_list(&state.theme());
     let unswung = {
-        let mut still = state.modes.clone();
+        let mut still = state.tools.modes.clone();
         still.animate = false;
         let frame = state
             .scenario()
@@ -169,12 +169,12 @@ fn the_modes_of_a_singular_pose_say_which_directions_have_no_stiffness() {
         "no frequency of 0 shown"
     );
     // Those cannot be chosen to swing; the choice moved to the first mode with stiffness.
-    assert_eq!(h.state().modes.mode, 3);
+    assert_eq!(h.state().tools.modes.mode, 3);
     h.get_by_label("1").click();
     h.run();
-    assert_eq!(h.state().modes.mode, 3, "mode 1 cannot be chosen");
+    assert_eq!(h.state().tools.modes.mode, 3, "mode 1 cannot be chosen");
     h.get_by_label("5").click();
     h.run();
-    assert_eq!(h.state().modes.mode, 4);
+    assert_eq!(h.state().tools.modes.mode, 4);
     super::look(&mut h, "modes-singular.png");
 }

@@ -237,8 +237,8 @@ fn the_workspace_figure_surface_and_view_are_exported() {
     let mut h = tall_harness("paired", 3000.0);
     h.get_by_label("Export…").click();
     h.run();
-    h.state_mut().workspace.follow_pose = false;
-    h.state_mut().workspace.orientation_deg = [80.0, 0.0, 0.0];
+    h.state_mut().tools.workspace.follow_pose = false;
+    h.state_mut().tools.workspace.orientation_deg = [80.0, 0.0, 0.0];
     let empty = dir.path().join("empty.ply");
     export_again(&mut h, ExportKind::SurfacePly, &empty);
     let outcome = finish(&mut h);

@@ -18,6 +18,7 @@ mod shots;
 mod sidebar;
 mod sliders;
 mod snapshots;
+mod state_helpers;
 mod teleop;
 mod trajectory;
 mod workspace;

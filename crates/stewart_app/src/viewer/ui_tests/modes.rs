@@ -187,6 +187,7 @@ fn next_assembly_mode_steps_through_all_forty_of_dietmaiers_platform() {
         }
         let (_, n) = h
             .state()
+            .tools
             .assembly
             .shown
             .unwrap_or_else(|| panic!("no mode shown"));
@@ -213,7 +214,7 @@ fn an_architecturally_singular_platform_has_no_modes_to_step_through() {
     let mut h = harness("seed");
     h.get_by_label("Next assembly mode").click();
     h.run();
-    assert!(h.state().assembly_error.is_some());
+    assert!(h.state().tools.assembly_error.is_some());
     assert!(
         h.query_by_label_contains("architecturally singular: the legs do not determine")
             .is_some()

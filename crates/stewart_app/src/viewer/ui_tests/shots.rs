@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use crate::viewer::state::ViewerState;
-use crate::viewer::window::shots::{ShotKind, ShotScale};
+use crate::viewer::view3d::shots::{ShotKind, ShotScale};
 use egui_kittest::Harness;
 
 use super::harness;

@@ -20,7 +20,7 @@ const FINE: usize = 96;
 /// (computed at 32 then [`FINE`] columns) not yet shown.
 fn viewer(preset: &str) -> ViewerState {
     let mut state = ViewerState::new(Scenario::preset(preset).unwrap_or_else(|e| panic!("{e}")));
-    state.workspace = WorkspaceTool::with_resolutions(32, FINE);
+    state.tools.workspace = WorkspaceTool::with_resolutions(32, FINE);
     state.look.expand_panels = true;
     state.playback.mode = MotionMode::Manual;
     state
@@ -30,7 +30,7 @@ fn viewer(preset: &str) -> ViewerState {
 fn shown(preset: &str, lang: Lang) -> Harness<'static, ViewerState> {
     let mut state = viewer(preset);
     state.look.lang = lang;
-    state.workspace.show = true;
+    state.tools.workspace.show = true;
     let mut h = super::harness_with(state, 4200.0);
     settle(&mut h);
     h
@@ -41,6 +41,7 @@ fn shown(preset: &str, lang: Lang) -> Harness<'static, ViewerState> {
 fn settle(h: &mut Harness<'static, ViewerState>) {
     h.state_mut().settle_workspace();
     h.state_mut()
+        .tools
         .workspace
         .wait(std::time::Duration::from_secs(120));
     h.run();
@@ -93,6 +94,7 @@ fn the_surface_follows_the_geometry_and_the_pose() {
     let mut h = shown("paired", Lang::En);
     let before = h
         .state()
+        .tools
         .workspace
         .latest
         .clone()
@@ -106,6 +108,7 @@ fn the_surface_follows_the_geometry_and_the_pose() {
     settle(&mut h);
     let after = h
         .state()
+        .tools
         .workspace
         .latest
         .clone()
@@ -133,6 +136,7 @@ fn the_surface_follows_the_geometry_and_the_pose() {
     settle(&mut h);
     let turned = h
         .state()
+        .tools
         .workspace
         .latest
         .clone()
@@ -172,8 +176,8 @@ fn a_chosen_orientation_can_leave_the_centre_outside() {
             .is_some()
     );
     // Rolled so far the legs cannot hold the centre there.
-    h.state_mut().workspace.follow_pose = false;
-    h.state_mut().workspace.orientation_deg = [roll, 0.0, 0.0];
+    h.state_mut().tools.workspace.follow_pose = false;
+    h.state_mut().tools.workspace.orientation_deg = [roll, 0.0, 0.0];
     h.run();
     settle(&mut h);
     assert!(
@@ -192,6 +196,7 @@ fn a_singular_platform_marks_every_slice_cell() {
     let h = shown("seed", Lang::En);
     let slice = h
         .state()
+        .tools
         .workspace
         .latest
         .as_ref()
@@ -229,6 +234,7 @@ fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
     super::look(&mut h, "stiffness_slice.png");
     let state = h.state();
     let slice = state
+        .tools
         .workspace
         .latest
         .as_ref()
@@ -259,6 +265,7 @@ fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
     settle(&mut h);
     let again = h
         .state()
+        .tools
         .workspace
         .latest
         .as_ref()

@@ -3,10 +3,6 @@
 
 pub(crate) mod fonts;
 pub(crate) mod plot_picture;
-pub(crate) mod quality;
-pub(crate) mod reveal;
-pub(crate) mod shots;
-pub(crate) mod view3d;
 pub(crate) mod window_shot;
 pub(crate) mod window_size;
 
@@ -27,7 +23,8 @@ use winit::window::{Window, WindowId};
 use super::panels::viewer_ui;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::ViewerState;
-use crate::viewer::window::shots::ShotScale;
+use crate::viewer::view3d::shots::ShotScale;
+use crate::viewer::view3d::{callback, quality};
 use crate::viewer::window::window_shot::SAMPLES;
 
 /// How the viewer runs.
@@ -301,7 +298,10 @@ impl App {
             .renderer
             .write()
             .callback_resources
-            .insert(view3d::SceneResources::new(&render_state.device, renderer));
+            .insert(callback::SceneResources::new(
+                &render_state.device,
+                renderer,
+            ));
         self.state.quality = quality::Quality::new(samples == 1, quality::Policy::from_env());
         self.state.quality.window_clears = true;
         let srgb = render_state.target_format.is_srgb();

@@ -6,7 +6,7 @@
 
 use egui::epaint::ClippedShape;
 
-use crate::viewer::panels::plot_picture::{CurvesPicture, DrawnPicture, WantedPicture};
+use crate::viewer::state::plot_memory::{CurvesPicture, DrawnPicture, WantedPicture};
 
 /// The picture's texture, its depth buffer (the window's egui pipeline has one) and its
 /// egui id.

@@ -10,13 +10,13 @@ use stewart_render::readback::Readback;
 use crate::viewer::error::ViewerError;
 
 /// MSAA samples of the window and of its shots on a GPU (the 3D pipelines are built to
-/// match); a software rasteriser's window has one (see [`crate::viewer::window::quality`]).
+/// match); a software rasteriser's window has one (see [`crate::viewer::view3d::quality`]).
 pub(crate) const SAMPLES: u32 = 4;
 
 /// The pixel density factor that makes a window `width` physical pixels wide come out at
 /// `scale`: 1 (as on screen), 2, or 3840 pixels wide for 4K.
-pub(crate) fn factor(scale: crate::viewer::window::shots::ShotScale, width: u32) -> f32 {
-    use crate::viewer::window::shots::ShotScale;
+pub(crate) fn factor(scale: crate::viewer::view3d::shots::ShotScale, width: u32) -> f32 {
+    use crate::viewer::view3d::shots::ShotScale;
     match scale {
         ShotScale::One => 1.0,
         ShotScale::Two => 2.0,

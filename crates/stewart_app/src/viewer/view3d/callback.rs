@@ -4,14 +4,14 @@
 //!
 //! Drawn straight into the window's pass ([`Drawn::Direct`]: its background first, as
 //! one flat triangle), or, where that pass has no MSAA (a software rasteriser, see
-//! [`crate::viewer::window::quality`]), rendered off screen and drawn in as one picture: at full
+//! [`crate::viewer::view3d::quality`]), rendered off screen and drawn in as one picture: at full
 //! quality ([`Drawn::Full`]) or at a lower scale while moving ([`Drawn::Scaled`]).
 
 use std::collections::HashMap;
 
 use stewart_render::{DrawList, OrbitCamera, Picture, PreparedView, Renderer, Theme, ViewFrame};
 
-use crate::viewer::window::quality::Drawn;
+use crate::viewer::view3d::quality::Drawn;
 
 /// Samples of the off-screen full picture.
 const FULL_SAMPLES: u32 = 4;
@@ -112,7 +112,7 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
         // at its size; its bind group is bound when a picture is drawn in.
         let scaled = self
             .viewport
-            .map(|v| (v * crate::viewer::window::quality::SCALE).round().max(1.0));
+            .map(|v| (v * crate::viewer::view3d::quality::SCALE).round().max(1.0));
         let viewport = if drawn == Drawn::Scaled {
             scaled
         } else {
@@ -122,7 +122,7 @@ impl egui_wgpu::CallbackTrait for SceneCallback {
             .entry(self.view)
             .or_insert_with(|| renderer.new_view(device));
         let scale = if drawn == Drawn::Scaled {
-            crate::viewer::window::quality::SCALE
+            crate::viewer::view3d::quality::SCALE
         } else {
             1.0
         };

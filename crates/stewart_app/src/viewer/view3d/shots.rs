@@ -9,8 +9,8 @@ use std::sync::Arc;
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
 use crate::i18n::Lang;
+use crate::viewer::error::Status;
 use crate::viewer::error::ViewerError;
-use crate::viewer::state::files::Status;
 use crate::viewer::tools::job::Job;
 
 /// What to capture.
