@@ -56,6 +56,14 @@ pub enum FieldType {
 }
 
 impl FieldType {
+    /// Every type's name, comma-separated (`u8, u10be, …`).
+    pub fn names() -> String {
+        (Self::ALL.iter())
+            .map(|(_, n)| *n)
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     /// Every type, with its name in templates.
     pub const ALL: [(FieldType, &'static str); 9] = [
         (FieldType::U8, "u8"),
@@ -138,19 +146,63 @@ pub struct Template {
 
 /// Why a template was refused: where, and what.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
-#[error("template column {column}: {what}")]
+#[error("template column {column}: {fault}")]
 pub struct TemplateError {
     /// The column at fault, counted in characters from 1.
     pub column: usize,
     /// What is wrong there.
-    pub what: String,
+    pub fault: TemplateFault,
+}
+
+/// What is wrong at a template's column. Its `Display` is the English sentence; an
+/// interface in another language words each variant from its own catalogue.
+#[derive(Clone, Debug, Error, PartialEq, Eq)]
+pub enum TemplateFault {
+    /// `<` or `{` without its closing `>` or `}`.
+    #[error("`{open}` is not closed by `{close}`")]
+    NotClosed {
+        /// The opening character.
+        open: char,
+        /// The closing one it needs.
+        close: char,
+    },
+    /// `>` or `}` with nothing open.
+    #[error("`{0}` closes nothing")]
+    ClosesNothing(char),
+    /// A character that is not printable ASCII.
+    #[error("`{}` is not printable ASCII: write a byte as <N>", .0.escape_default())]
+    NotPrintable(char),
+    /// `{aK:dec}` not followed by a byte that ends its digits.
+    #[error("{{a{}:dec}} has no end: follow it with a byte that is not a digit, such as `,` or <10>", .actuator + 1)]
+    DecWithoutEnd {
+        /// The actuator, from 0.
+        actuator: usize,
+    },
+    /// No `{aK:T}` at all.
+    #[error("no actuator: write at least one {{aK:T}}, such as {{a1:u16be}}")]
+    NoActuator,
+    /// `<N>` over 255.
+    #[error("<{0}> is over 255: a byte is 0 to 255")]
+    ByteOver(u32),
+    /// `<…>` that is not a number.
+    #[error("<{0}> is not a byte: write <0> to <255>")]
+    NotAByte(String),
+    /// `{…}` that is not `{aK:T}`.
+    #[error("{{{0}}} is not {{aK:T}} (actuator K = 1 to 6, type T: {types})", types = FieldType::names())]
+    NotAField(String),
+    /// `{aK:…}` whose K is not 1 to 6.
+    #[error("`{0}` names no actuator: a1 to a6")]
+    NoSuchActuator(String),
+    /// `{…:T}` whose T is not a type.
+    #[error("`{0}` is not a type: {types}", types = FieldType::names())]
+    NoSuchType(String),
 }
 
 impl Template {
     /// Parse `text` (without the `template:` prefix).
     pub fn parse(text: &str) -> Result<Self, TemplateError> {
         let chars: Vec<char> = text.chars().collect();
-        let refuse = |column: usize, what: String| Err(TemplateError { column, what });
+        let refuse = |column: usize, fault: TemplateFault| Err(TemplateError { column, fault });
         let mut pieces = Vec::new();
         let mut k = 0;
         while k < chars.len() {
@@ -159,31 +211,25 @@ impl Template {
                 open @ ('<' | '{') => {
                     let close = if open == '<' { '>' } else { '}' };
                     let Some(len) = chars[k + 1..].iter().position(|&c| c == close) else {
-                        return refuse(column, format!("`{open}` is not closed by `{close}`"));
+                        return refuse(column, TemplateFault::NotClosed { open, close });
                     };
                     let inside: String = chars[k + 1..k + 1 + len].iter().collect();
                     pieces.push(if open == '<' {
-                        byte(&inside).map_err(|what| TemplateError { column, what })?
+                        byte(&inside).map_err(|fault| TemplateError { column, fault })?
                     } else {
-                        field(&inside).map_err(|what| TemplateError { column, what })?
+                        field(&inside).map_err(|fault| TemplateError { column, fault })?
                     });
                     k += len + 2;
                 }
                 c @ ('>' | '}') => {
-                    return refuse(column, format!("`{c}` closes nothing"));
+                    return refuse(column, TemplateFault::ClosesNothing(c));
                 }
                 c if c.is_ascii() && !c.is_ascii_control() => {
                     pieces.push(TemplatePiece::Byte(c as u8));
                     k += 1;
                 }
                 c => {
-                    return refuse(
-                        column,
-                        format!(
-                            "`{}` is not printable ASCII: write a byte as <N>",
-                            c.escape_default()
-                        ),
-                    );
+                    return refuse(column, TemplateFault::NotPrintable(c));
                 }
             }
         }
@@ -199,10 +245,9 @@ impl Template {
                 if !matches!(next, Some(TemplatePiece::Byte(b)) if !b.is_ascii_digit()) {
                     return refuse(
                         column_of(&chars, k),
-                        format!(
-                            "{{a{}:dec}} has no end: follow it with a byte that is not a digit, such as `,` or <10>",
-                            actuator + 1
-                        ),
+                        TemplateFault::DecWithoutEnd {
+                            actuator: *actuator,
+                        },
                     );
                 }
             }
@@ -211,10 +256,7 @@ impl Template {
             .iter()
             .any(|p| matches!(p, TemplatePiece::Field { .. }))
         {
-            return refuse(
-                chars.len().max(1),
-                "no actuator: write at least one {aK:T}, such as {a1:u16be}".into(),
-            );
+            return refuse(chars.len().max(1), TemplateFault::NoActuator);
         }
         Ok(Self {
             pieces,
@@ -298,36 +340,27 @@ fn column_of(chars: &[char], index: usize) -> usize {
 }
 
 /// The byte of `<N>`.
-fn byte(inside: &str) -> Result<TemplatePiece, String> {
+fn byte(inside: &str) -> Result<TemplatePiece, TemplateFault> {
     match inside.trim().parse::<u32>() {
         Ok(n) if n <= 255 => Ok(TemplatePiece::Byte(n as u8)),
-        Ok(n) => Err(format!("<{n}> is over 255: a byte is 0 to 255")),
-        Err(_) => Err(format!("<{inside}> is not a byte: write <0> to <255>")),
+        Ok(n) => Err(TemplateFault::ByteOver(n)),
+        Err(_) => Err(TemplateFault::NotAByte(inside.to_owned())),
     }
 }
 
 /// The field of `{aK:T}`.
-fn field(inside: &str) -> Result<TemplatePiece, String> {
-    let names = || {
-        (FieldType::ALL.iter())
-            .map(|(_, n)| *n)
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
+fn field(inside: &str) -> Result<TemplatePiece, TemplateFault> {
     let Some((actuator, kind)) = inside.split_once(':') else {
-        return Err(format!(
-            "{{{inside}}} is not {{aK:T}} (actuator K = 1 to 6, type T: {})",
-            names()
-        ));
+        return Err(TemplateFault::NotAField(inside.to_owned()));
     };
     let k = (actuator.trim().strip_prefix('a'))
         .and_then(|k| k.parse::<usize>().ok())
         .filter(|k| (1..=6).contains(k))
-        .ok_or_else(|| format!("`{actuator}` names no actuator: a1 to a6"))?;
+        .ok_or_else(|| TemplateFault::NoSuchActuator(actuator.to_owned()))?;
     let kind = (FieldType::ALL.iter())
         .find(|(_, n)| *n == kind.trim())
         .map(|(t, _)| *t)
-        .ok_or_else(|| format!("`{kind}` is not a type: {}", names()))?;
+        .ok_or_else(|| TemplateFault::NoSuchType(kind.to_owned()))?;
     Ok(TemplatePiece::Field {
         actuator: k - 1,
         kind,

@@ -57,7 +57,7 @@ fn a_bad_template_is_refused_at_its_column() {
     let refused = |text: &str| {
         Template::parse(text)
             .err()
-            .map(|e| (e.column, e.what))
+            .map(|e| (e.column, e.fault.to_string()))
             .unwrap_or_else(|| panic!("{text} was taken"))
     };
     let (column, what) = refused("<255>{a7:u16be}");

@@ -10,7 +10,7 @@ use stewart_kinematics::model::link_settings::{
 };
 use stewart_link::safety::LinkState;
 use stewart_link::sender::Status as SenderStatus;
-use stewart_link::template::Template;
+use stewart_link::template::{FieldType, Template, TemplateFault};
 use stewart_link::transport::list_ports;
 
 use super::context::PanelContext;
@@ -544,9 +544,10 @@ fn template(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
     let home = g.actuator_values_at(&g.home_pose());
     match (Template::parse(&text), home) {
         (Err(e), _) => {
+            let what = template_fault_words(&e.fault, t);
             let said = t.fmt(
                 "link.template_error",
-                &[("column", &e.column), ("what", &e.what)],
+                &[("column", &e.column), ("what", &what)],
             );
             ui.label(RichText::new(said).color(widgets::ERROR));
         }
@@ -633,4 +634,81 @@ fn channels(ui: &mut egui::Ui, doc: &mut Document, error: &mut Option<ViewerErro
                 ui.end_row();
             }
         });
+}
+
+/// A template's fault in the interface's language.
+fn template_fault_words(fault: &TemplateFault, t: Lang) -> String {
+    use TemplateFault as F;
+    let key = |k: &str| format!("link.template_fault.{k}");
+    let types = FieldType::names();
+    match fault {
+        F::NotClosed { open, close } => {
+            t.fmt(&key("not_closed"), &[("open", open), ("close", close)])
+        }
+        F::ClosesNothing(c) => t.fmt(&key("closes_nothing"), &[("c", c)]),
+        F::NotPrintable(c) => t.fmt(&key("not_printable"), &[("c", &c.escape_default())]),
+        F::DecWithoutEnd { actuator } => {
+            let field = format!("{{a{}:dec}}", actuator + 1);
+            t.fmt(&key("dec_without_end"), &[("field", &field)])
+        }
+        F::NoActuator => t.tr(&key("no_actuator")).to_owned(),
+        F::ByteOver(n) => t.fmt(&key("byte_over"), &[("n", n)]),
+        F::NotAByte(text) => t.fmt(&key("not_a_byte"), &[("text", text)]),
+        F::NotAField(inside) => {
+            let field = format!("{{{inside}}}");
+            t.fmt(&key("not_a_field"), &[("field", &field), ("types", &types)])
+        }
+        F::NoSuchActuator(text) => t.fmt(&key("no_such_actuator"), &[("text", text)]),
+        F::NoSuchType(text) => t.fmt(&key("no_such_type"), &[("text", text), ("types", &types)]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One fault of each kind, as the parser gives them.
+    fn every_fault() -> Vec<TemplateFault> {
+        [
+            "<255",
+            "}",
+            "é",
+            "{a1:dec}",
+            "<1>",
+            "<300>",
+            "<x>{a1:u8}",
+            "{a1}",
+            "{a9:u8}",
+            "{a1:u7}",
+        ]
+        .iter()
+        .map(|text| match Template::parse(text) {
+            Err(e) => e.fault,
+            Ok(_) => panic!("{text} was taken"),
+        })
+        .collect()
+    }
+
+    #[test]
+    fn every_template_fault_is_worded_by_each_catalogue() {
+        let faults = every_fault();
+        let kinds: std::collections::HashSet<_> =
+            faults.iter().map(std::mem::discriminant).collect();
+        assert_eq!(kinds.len(), 10, "{faults:?}");
+        for fault in &faults {
+            // English: the parser's own sentence, as the command line says it.
+            assert_eq!(template_fault_words(fault, Lang::En), fault.to_string());
+            // Chinese: its own sentence, every placeholder filled.
+            let zh = template_fault_words(fault, Lang::Zh);
+            assert!(
+                zh.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c)),
+                "{zh}"
+            );
+            for name in [
+                "{open}", "{close}", "{c}", "{field}", "{n}", "{text}", "{types}",
+            ] {
+                assert!(!zh.contains(name), "{zh}");
+            }
+        }
+    }
 }
