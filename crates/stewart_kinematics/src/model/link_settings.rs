@@ -258,12 +258,36 @@ pub fn template_of_format(written: &str) -> Option<&str> {
         .map(template_text)
 }
 
+/// Why a key is not a `[link]` setting.
+const UNKNOWN_KEY: &str = "unknown link setting (`stewart settings` lists every key)";
+
+/// `value` as a finite number, or why not.
+fn finite(value: &str) -> Result<f64, String> {
+    value
+        .parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("`{value}` is not a finite number"))
+}
+
+/// A problem with `key`, for `reason`.
+fn bad(key: String, reason: String) -> Option<LinkProblem> {
+    Some(LinkProblem { key, reason })
+}
+
 impl LinkSettings {
     /// The first value that cannot work, if any: a rate outside 10–1000 Hz, a baud rate of 0,
     /// an empty port or address, NaN or infinite numbers, a zero scale or pulse step, a pulse
     /// output without sensible pulse numbers, an actuator outside 1–6 or carried twice.
     pub fn problem(&self) -> Option<LinkProblem> {
-        let bad = |key: String, reason: String| Some(LinkProblem { key, reason });
+        self.transport_problem()
+            .or_else(|| self.text_problem())
+            .or_else(|| self.output_problem())
+            .or_else(|| self.channel_problem())
+    }
+
+    /// The rate, the baud and the template the format needs.
+    fn transport_problem(&self) -> Option<LinkProblem> {
         let (lo, hi) = RATES_HZ;
         if !(lo..=hi).contains(&self.rate_hz) {
             return bad(
@@ -284,6 +308,11 @@ impl LinkSettings {
                     .into(),
             );
         }
+        None
+    }
+
+    /// Ports, addresses and the template: not empty, addresses well formed.
+    fn text_problem(&self) -> Option<LinkProblem> {
         for (key, text) in [
             ("port", &self.port),
             ("address", &self.address),
@@ -306,6 +335,11 @@ impl LinkSettings {
                 return bad(format!("link.{key}"), reason);
             }
         }
+        None
+    }
+
+    /// The ramp and the pulse output's numbers.
+    fn output_problem(&self) -> Option<LinkProblem> {
         if !(0.0..=MAX_RAMP_S).contains(&self.ramp_s) {
             return bad(
                 "link.ramp_s".into(),
@@ -333,6 +367,11 @@ impl LinkSettings {
                 ),
             );
         }
+        None
+    }
+
+    /// Each channel: its actuator (one channel each), scale, offset and turns.
+    fn channel_problem(&self) -> Option<LinkProblem> {
         for k in 0..6 {
             let a = self.actuator[k];
             if !(1..=6).contains(&a) {
@@ -389,111 +428,106 @@ impl LinkSettings {
     /// `actuator.K`, `scale.K`, `offset.K`, `reversed.K` (K from 1 to 6). A refused value
     /// leaves the settings unchanged.
     pub fn set_text(&mut self, key: &str, value: &str) -> Result<(), LinkProblem> {
-        let full = format!("link.{key}");
         let refuse = |reason: String| LinkProblem {
-            key: full.clone(),
+            key: format!("link.{key}"),
             reason,
         };
-        // A template's text keeps its end (see [`template_text`]); every other value is
-        // trimmed.
-        let raw = value;
-        let value = value.trim();
         let mut edited = self.clone();
-        let number = || -> Result<f64, LinkProblem> {
-            value
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| refuse(format!("`{value}` is not a finite number")))
-        };
-        let (name, channel) = match key.split_once('.') {
+        match key.split_once('.') {
             Some((name, k)) => {
                 let k = k
                     .parse::<usize>()
                     .ok()
                     .filter(|k| (1..=6).contains(k))
                     .ok_or_else(|| refuse(format!("channels are numbered 1 to 6, got `{k}`")))?;
-                (name, Some(k - 1))
+                edited.set_channel_text(name, k - 1, value.trim())
             }
-            None => (key, None),
-        };
-        match (name, channel) {
-            ("transport", None) => {
-                edited.transport = choice(value).map_err(refuse)?;
-            }
-            ("port" | "address" | "port2" | "port3" | "address2" | "address3", None) => {
-                let text = (!value.eq_ignore_ascii_case("off")).then(|| value.to_owned());
-                *match name {
-                    "port" => &mut edited.port,
-                    "port2" => &mut edited.port2,
-                    "port3" => &mut edited.port3,
-                    "address" => &mut edited.address,
-                    "address2" => &mut edited.address2,
-                    _ => &mut edited.address3,
-                } = text;
-            }
-            ("baud", None) => {
-                edited.baud = whole(value).ok_or_else(|| {
-                    refuse(format!(
-                        "`{value}` is not a whole number of bits per second"
-                    ))
-                })?;
-            }
-            ("rate_hz", None) => edited.rate_hz = number()?,
-            ("format", None) => match template_of_format(raw) {
-                // `template:<255>…` sets both.
-                Some(template) => {
-                    edited.format = LinkFormat::Template;
-                    edited.template = Some(template.to_owned());
-                }
-                None => {
-                    edited.format = choice(value).map_err(refuse)?;
-                    // The template format starts from a board's usual frame until a
-                    // template is given (in either order of `--set`).
-                    if edited.format == LinkFormat::Template && edited.template.is_none() {
-                        edited.template = Some(STARTING_TEMPLATE.to_owned());
-                    }
-                }
-            },
-            ("template", None) => {
-                edited.template =
-                    (!value.eq_ignore_ascii_case("off")).then(|| template_text(raw).to_owned());
-            }
-            ("output", None) => {
-                edited.output = choice(value).map_err(refuse)?;
-            }
-            ("pulse_zero_us", None) => edited.pulse_zero_us = number()?,
-            ("pulse_us_per_deg", None) => edited.pulse_us_per_deg = number()?,
-            ("ramp_s", None) => edited.ramp_s = number()?,
-            ("stop", None) => edited.stop = choice(value).map_err(refuse)?,
-            ("actuator", Some(k)) => {
-                edited.actuator[k] = whole(value)
-                    .and_then(|n| u8::try_from(n).ok())
-                    .ok_or_else(|| refuse(format!("`{value}` is not an actuator number 1 to 6")))?;
-            }
-            ("scale", Some(k)) => edited.scale[k] = number()?,
-            ("turns_per_unit", Some(k)) => edited.turns_per_unit[k] = number()?,
-            ("turns_offset", Some(k)) => edited.turns_offset[k] = number()?,
-            ("offset", Some(k)) => edited.offset[k] = number()?,
-            ("reversed", Some(k)) => {
-                // As every switch takes it: true or false, on or off, 1 or 0.
-                edited.reversed[k] = super::switch::read(value).ok_or_else(|| {
-                    refuse(format!(
-                        "`{value}` is not a switch: {}",
-                        super::switch::ACCEPTS
-                    ))
-                })?;
-            }
-            _ => {
-                return Err(refuse(
-                    "unknown link setting (`stewart settings` lists every key)".to_owned(),
-                ));
-            }
+            None => edited.set_table_text(key, value),
         }
+        .map_err(refuse)?;
         if let Some(p) = edited.problem() {
             return Err(refuse(p.reason));
         }
         *self = edited;
+        Ok(())
+    }
+
+    /// One table-wide key of [`LinkSettings::set_text`], unchecked: why `raw` cannot be
+    /// read, else `Ok`. A template's text keeps its end (see [`template_text`]); every
+    /// other value is trimmed.
+    fn set_table_text(&mut self, name: &str, raw: &str) -> Result<(), String> {
+        let value = raw.trim();
+        match name {
+            "transport" => {
+                self.transport = choice(value)?;
+            }
+            "port" | "address" | "port2" | "port3" | "address2" | "address3" => {
+                let text = (!value.eq_ignore_ascii_case("off")).then(|| value.to_owned());
+                *match name {
+                    "port" => &mut self.port,
+                    "port2" => &mut self.port2,
+                    "port3" => &mut self.port3,
+                    "address" => &mut self.address,
+                    "address2" => &mut self.address2,
+                    _ => &mut self.address3,
+                } = text;
+            }
+            "baud" => {
+                self.baud = whole(value)
+                    .ok_or_else(|| format!("`{value}` is not a whole number of bits per second"))?;
+            }
+            "rate_hz" => self.rate_hz = finite(value)?,
+            "format" => match template_of_format(raw) {
+                // `template:<255>…` sets both.
+                Some(template) => {
+                    self.format = LinkFormat::Template;
+                    self.template = Some(template.to_owned());
+                }
+                None => {
+                    self.format = choice(value)?;
+                    // The template format starts from a board's usual frame until a
+                    // template is given (in either order of `--set`).
+                    if self.format == LinkFormat::Template && self.template.is_none() {
+                        self.template = Some(STARTING_TEMPLATE.to_owned());
+                    }
+                }
+            },
+            "template" => {
+                self.template =
+                    (!value.eq_ignore_ascii_case("off")).then(|| template_text(raw).to_owned());
+            }
+            "output" => {
+                self.output = choice(value)?;
+            }
+            "pulse_zero_us" => self.pulse_zero_us = finite(value)?,
+            "pulse_us_per_deg" => self.pulse_us_per_deg = finite(value)?,
+            "ramp_s" => self.ramp_s = finite(value)?,
+            "stop" => self.stop = choice(value)?,
+            _ => return Err(UNKNOWN_KEY.to_owned()),
+        }
+        Ok(())
+    }
+
+    /// One channel's key of [`LinkSettings::set_text`] (`k` from 0), unchecked.
+    fn set_channel_text(&mut self, name: &str, k: usize, value: &str) -> Result<(), String> {
+        match name {
+            "actuator" => {
+                self.actuator[k] = whole(value)
+                    .and_then(|n| u8::try_from(n).ok())
+                    .ok_or_else(|| format!("`{value}` is not an actuator number 1 to 6"))?;
+            }
+            "scale" => self.scale[k] = finite(value)?,
+            "turns_per_unit" => self.turns_per_unit[k] = finite(value)?,
+            "turns_offset" => self.turns_offset[k] = finite(value)?,
+            "offset" => self.offset[k] = finite(value)?,
+            "reversed" => {
+                // As every switch takes it: true or false, on or off, 1 or 0.
+                self.reversed[k] = super::switch::read(value).ok_or_else(|| {
+                    format!("`{value}` is not a switch: {}", super::switch::ACCEPTS)
+                })?;
+            }
+            _ => return Err(UNKNOWN_KEY.to_owned()),
+        }
         Ok(())
     }
 

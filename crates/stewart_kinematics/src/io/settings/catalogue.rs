@@ -325,8 +325,13 @@ fn actuator(d: &mut Declare) {
 }
 
 fn trajectory(d: &mut Declare) {
-    use ChannelKey::{Amplitude, Offset, Phase};
-    use ShapeKey::{AmplitudeX, AmplitudeY, Radius, Tilt, Z, ZEnd, ZStart};
+    sampling(d);
+    sinusoid_channels(d);
+    shapes(d);
+}
+
+/// The trajectory's sampling: start, duration, samples.
+fn sampling(d: &mut Declare) {
     let seed = Sampling::SEED;
     let sampling = |k| SettingTarget::Sampling(k);
     d.add(
@@ -353,7 +358,11 @@ fn trajectory(d: &mut Declare) {
         Value(seed.len() as f64),
         sampling(SamplingKey::Samples),
     );
+}
 
+/// Each of the sinusoid's six channels: amplitude, frequency, phase, offset.
+fn sinusoid_channels(d: &mut Declare) {
+    use ChannelKey::{Amplitude, Offset, Phase};
     let channels = Sinusoid::seed(0.0);
     for (i, (name, c)) in channels.channels().into_iter().enumerate() {
         // x, y, z are lengths; roll, pitch, yaw angles.
@@ -404,7 +413,12 @@ fn trajectory(d: &mut Declare) {
             t(Offset),
         );
     }
+}
 
+/// The shapes' numbers (circle, figure eight, helix, sway): radius, frequency, heights,
+/// half-widths, tilt.
+fn shapes(d: &mut Declare) {
+    use ShapeKey::{AmplitudeX, AmplitudeY, Radius, Tilt, Z, ZEnd, ZStart};
     let s = |k| SettingTarget::Shape(k);
     let height = (0.1, 3.0);
     d.add(
