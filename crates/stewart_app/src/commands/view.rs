@@ -32,42 +32,8 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
         },
         _ => (None, None),
     };
-    let given = args.scenario.preset.is_some()
-        || args.scenario.scenario.is_some()
-        || !args.scenario.set.is_empty();
-    let from_session: Option<(Scenario, String)> = match (&saved, given) {
-        (Some(s), false) => match s.scenario() {
-            Ok(scenario) => Some((scenario, s.origin.clone())),
-            Err(e) => {
-                let why = e.words(wanted);
-                note = Some(wanted.fmt("session.scenario_broken", &[("why", &why)]));
-                None
-            }
-        },
-        _ => None,
-    };
-    let restored = from_session.is_some();
-    let (scenario, origin) = match from_session {
-        Some(pair) => pair,
-        None => {
-            let scenario = source::load(&args.scenario)?;
-            let origin = origin_of(args, &scenario);
-            (scenario, origin)
-        }
-    };
-    // Part files are named from the scenario file's folder (for a session's scenario, the
-    // file it came from, when it came from one).
-    let parts_folder = if restored {
-        Some(std::path::Path::new(&origin))
-            .filter(|p| !origin.starts_with("preset ") && p.is_file())
-            .and_then(std::path::Path::parent)
-            .map_or_else(
-                || std::path::PathBuf::from("."),
-                std::path::Path::to_path_buf,
-            )
-    } else {
-        crate::appearance::folder_of(&args.scenario)
-    };
+    let (scenario, origin, restored) = starting_scenario(args, saved.as_ref(), wanted, &mut note)?;
+    let parts_folder = parts_folder(args, &origin, restored);
     let mut state = ViewerState::new_in(scenario, parts_folder);
     if let Some(s) = &saved {
         restore(&mut state, s, restored);
@@ -98,15 +64,7 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
     if args.expand_panels {
         state.session.panels = None;
     }
-    // A screenshot does not depend on the screen it was made on.
-    let shot = args.screenshot.is_some();
-    let size = match (args.size, saved.as_ref().and_then(Session::window_size)) {
-        (Some((w, h)), _) => WindowSize::Exact(w, h),
-        (None, Some((w, h))) if shot => WindowSize::Exact(w, h),
-        (None, Some((w, h))) => WindowSize::Remembered(w, h),
-        (None, None) if shot => WindowSize::Exact(window_size::FALLBACK.0, window_size::FALLBACK.1),
-        (None, None) => WindowSize::FitScreen,
-    };
+    let size = window_size_of(args, saved.as_ref());
     run_viewer(
         state,
         ViewOptions {
@@ -118,6 +76,70 @@ pub(crate) fn run(args: &ViewArgs) -> Result<ExitCode> {
         },
     )?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The scenario the viewer starts on, where it came from in words, and whether it is the
+/// saved session's: the session's when no scenario is given and its scenario reads (else
+/// why not goes to `note`), else the one given.
+fn starting_scenario(
+    args: &ViewArgs,
+    saved: Option<&Session>,
+    wanted: Lang,
+    note: &mut Option<String>,
+) -> Result<(Scenario, String, bool)> {
+    let given = args.scenario.preset.is_some()
+        || args.scenario.scenario.is_some()
+        || !args.scenario.set.is_empty();
+    let from_session: Option<(Scenario, String)> = match (saved, given) {
+        (Some(s), false) => match s.scenario() {
+            Ok(scenario) => Some((scenario, s.origin.clone())),
+            Err(e) => {
+                let why = e.words(wanted);
+                *note = Some(wanted.fmt("session.scenario_broken", &[("why", &why)]));
+                None
+            }
+        },
+        _ => None,
+    };
+    let restored = from_session.is_some();
+    let (scenario, origin) = match from_session {
+        Some(pair) => pair,
+        None => {
+            let scenario = source::load(&args.scenario)?;
+            let origin = origin_of(args, &scenario);
+            (scenario, origin)
+        }
+    };
+    Ok((scenario, origin, restored))
+}
+
+/// The folder the scenario's part files are named from: its file's (for a session's
+/// scenario, the file it came from, when it came from one).
+fn parts_folder(args: &ViewArgs, origin: &str, restored: bool) -> std::path::PathBuf {
+    if restored {
+        Some(std::path::Path::new(origin))
+            .filter(|p| !origin.starts_with("preset ") && p.is_file())
+            .and_then(std::path::Path::parent)
+            .map_or_else(
+                || std::path::PathBuf::from("."),
+                std::path::Path::to_path_buf,
+            )
+    } else {
+        crate::appearance::folder_of(&args.scenario)
+    }
+}
+
+/// The window's size: `--size`, else the session's (exactly, for a screenshot, which does
+/// not depend on the screen it was made on), else a share of the screen.
+fn window_size_of(args: &ViewArgs, saved: Option<&Session>) -> WindowSize {
+    let shot = args.screenshot.is_some();
+    match (args.size, saved.and_then(Session::window_size)) {
+        (Some((w, h)), _) => WindowSize::Exact(w, h),
+        (None, Some((w, h))) if shot => WindowSize::Exact(w, h),
+        (None, Some((w, h))) => WindowSize::Remembered(w, h),
+        (None, None) if shot => WindowSize::Exact(window_size::FALLBACK.0, window_size::FALLBACK.1),
+        (None, None) => WindowSize::FitScreen,
+    }
 }
 
 /// The saved look and panels; the camera too when the scenario is the saved one (another

@@ -184,6 +184,49 @@ impl ViewerError {
     pub(crate) fn words(&self, lang: Lang) -> String {
         use ViewerError as E;
         match self {
+            E::Io { .. }
+            | E::NotRegularFile(..)
+            | E::FileTooLarge { .. }
+            | E::UnknownKind(..)
+            | E::InFile { .. }
+            | E::Scenario(..)
+            | E::Table(..)
+            | E::VehicleTable(..)
+            | E::Export(..)
+            | E::Link(..)
+            | E::SessionUnreadable { .. }
+            | E::SessionDamaged { .. }
+            | E::SessionVersion { .. }
+            | E::SessionEncode(..) => self.file_words(lang),
+            E::OutOfRange { .. }
+            | E::Setting(..)
+            | E::Part(..)
+            | E::Geometry(..)
+            | E::Keyframes(..)
+            | E::Actuator(..)
+            | E::Payload(..)
+            | E::Cue(..)
+            | E::InvertedRange { .. }
+            | E::EmptyEnvelope
+            | E::Workspace(..)
+            | E::Job(..) => self.edit_words(lang),
+            E::Render(..)
+            | E::TooLarge { .. }
+            | E::Readback(..)
+            | E::Encode(..)
+            | E::WindowGone
+            | E::NoGpuDevice
+            | E::FileManager { .. }
+            | E::LinkSpawn(..)
+            | E::LinkStopped { .. }
+            | E::LinkEmergency { .. } => self.output_words(lang),
+        }
+    }
+
+    /// Files, tables, exports, the link's own words, the session.
+    fn file_words(&self, lang: Lang) -> String {
+        use ViewerError as E;
+        match self {
             E::Io {
                 path,
                 doing,
@@ -212,6 +255,35 @@ impl ViewerError {
             E::Scenario(e) => e.to_string(),
             E::Table(e) => e.to_string(),
             E::VehicleTable(e) | E::Export(e) | E::Link(e) => format!("{e:#}"),
+            E::SessionUnreadable { path, why } => lang.fmt(
+                "session.unreadable",
+                &[("path", &path.display()), ("why", why)],
+            ),
+            E::SessionDamaged { path, why } => lang.fmt(
+                "session.damaged",
+                &[("path", &path.display()), ("why", why)],
+            ),
+            E::SessionVersion {
+                path,
+                found,
+                version,
+            } => lang.fmt(
+                "session.other_version",
+                &[
+                    ("path", &path.display()),
+                    ("found", found),
+                    ("version", version),
+                ],
+            ),
+            E::SessionEncode(e) => e.to_string(),
+            _ => self.to_string(),
+        }
+    }
+
+    /// Edits refused, analyses and background jobs.
+    fn edit_words(&self, lang: Lang) -> String {
+        use ViewerError as E;
+        match self {
             E::OutOfRange { key, reason } => {
                 lang.fmt("errors.setting", &[("key", key), ("why", reason)])
             }
@@ -232,6 +304,14 @@ impl ViewerError {
                 lang.fmt("errors.job_not_started", &[("why", why)])
             }
             E::Job(JobFailed::Panicked) => lang.tr("errors.job_panicked").to_owned(),
+            _ => self.to_string(),
+        }
+    }
+
+    /// Rendering, the window, the file manager and the link's outcome.
+    fn output_words(&self, lang: Lang) -> String {
+        use ViewerError as E;
+        match self {
             E::Render(e) => e.to_string(),
             E::TooLarge { size, max } => lang.fmt(
                 "errors.too_large",
@@ -259,27 +339,7 @@ impl ViewerError {
                 "link.emergency",
                 &[("to", to), ("pose", pose), ("values", values)],
             ),
-            E::SessionUnreadable { path, why } => lang.fmt(
-                "session.unreadable",
-                &[("path", &path.display()), ("why", why)],
-            ),
-            E::SessionDamaged { path, why } => lang.fmt(
-                "session.damaged",
-                &[("path", &path.display()), ("why", why)],
-            ),
-            E::SessionVersion {
-                path,
-                found,
-                version,
-            } => lang.fmt(
-                "session.other_version",
-                &[
-                    ("path", &path.display()),
-                    ("found", found),
-                    ("version", version),
-                ],
-            ),
-            E::SessionEncode(e) => e.to_string(),
+            _ => self.to_string(),
         }
     }
 

@@ -93,27 +93,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         .planner
         .filter(|p| p.guarded + p.guard_stops + p.guard_jumps_left > 0)
     {
-        said.push_str(&format!(
-            "cue: the actuator guard changed {} of {} poses to keep the actuators' range, speed and acceleration, the joint cones, the clearances and the condition number as `check` judges them (where the plan broke one, and on the way back to it){}{}{}\n",
-            p.guarded + p.guard_stops,
-            cued.poses.len(),
-            match p.guard_rewinds {
-                0 => String::new(),
-                n => format!("; it went back {n} times to brake earlier"),
-            },
-            match p.guard_stops {
-                0 => String::new(),
-                n => format!(
-                    "; at {n} of them no pose near the plan kept every limit and the last pose was given again"
-                ),
-            },
-            match p.guard_jumps_left {
-                0 => String::new(),
-                n => format!(
-                    "; {n} steps would still read as jumps to `check` (run it on the output)"
-                ),
-            }
-        ));
+        said.push_str(&guard_note(&p, cued.poses.len()));
     }
     if let Some(p) = cued.planner.filter(|p| p.stops > 0) {
         said.push_str(&held_note(samples, &cued.poses, p.stops));
@@ -129,6 +109,29 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     }
     let _ = std::io::stderr().write_all(said.as_bytes());
     Ok(ExitCode::SUCCESS)
+}
+
+/// What the actuator guard did, in one sentence, of `poses` poses.
+fn guard_note(p: &stewart_kinematics::analysis::cueing::mpc::MpcCounts, poses: usize) -> String {
+    format!(
+        "cue: the actuator guard changed {} of {} poses to keep the actuators' range, speed and acceleration, the joint cones, the clearances and the condition number as `check` judges them (where the plan broke one, and on the way back to it){}{}{}\n",
+        p.guarded + p.guard_stops,
+        poses,
+        match p.guard_rewinds {
+            0 => String::new(),
+            n => format!("; it went back {n} times to brake earlier"),
+        },
+        match p.guard_stops {
+            0 => String::new(),
+            n => format!(
+                "; at {n} of them no pose near the plan kept every limit and the last pose was given again"
+            ),
+        },
+        match p.guard_jumps_left {
+            0 => String::new(),
+            n => format!("; {n} steps would still read as jumps to `check` (run it on the output)"),
+        }
+    )
 }
 
 /// The planner held the last good pose `stops` times (its plan gave a pose the exact
