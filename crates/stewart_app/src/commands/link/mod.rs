@@ -34,31 +34,9 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     // The outputs checked before anything listens, opens or sends: never a file the
     // scenario reads, never a folder.
     let inputs = source::inputs(&args.scenario, &scenario);
-    for path in [args.out.as_deref(), args.record.as_deref()]
-        .into_iter()
-        .flatten()
-    {
-        if path.as_os_str() != "-" {
-            output::Destination::new(path, &inputs)?.require_file()?;
-        }
-    }
+    check_outputs(args, &inputs)?;
     // Live vehicle motion, when asked: listening before anything is opened or sent.
-    let mut live = args
-        .cue
-        .as_deref()
-        .map(|source| LiveCue::bind(source, &scenario))
-        .transpose()?;
-    if let Some(live) = &live
-        && let Ok(at) = live.local_addr()
-    {
-        let _ = writeln!(
-            std::io::stderr(),
-            "link: cueing from vehicle motion on udp:{at}"
-        );
-    }
-    if let (Some(live), Some(xplane)) = (live.as_mut(), args.xplane.as_deref()) {
-        live.subscribe_xplane(RrefSubscription::new(xplane, scenario.link.rate_hz)?);
-    }
+    let live = listen(args, &scenario)?;
     let (transport, staged) = open_transport(&plan, args, &inputs)?;
     let stream_for = match (args.duration, args.repeat || live.is_some()) {
         (Some(d), _) => Some(d),
@@ -114,6 +92,42 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
         bail!("stopped by the user (e-stop): the platform was brought home and disarmed");
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The live vehicle motion `--cue` asks for, listening (and X-Plane asked to send it, with
+/// `--xplane`).
+fn listen(args: &LinkArgs, scenario: &stewart_kinematics::Scenario) -> Result<Option<LiveCue>> {
+    let mut live = args
+        .cue
+        .as_deref()
+        .map(|source| LiveCue::bind(source, scenario))
+        .transpose()?;
+    if let Some(live) = &live
+        && let Ok(at) = live.local_addr()
+    {
+        let _ = writeln!(
+            std::io::stderr(),
+            "link: cueing from vehicle motion on udp:{at}"
+        );
+    }
+    if let (Some(live), Some(xplane)) = (live.as_mut(), args.xplane.as_deref()) {
+        live.subscribe_xplane(RrefSubscription::new(xplane, scenario.link.rate_hz)?);
+    }
+    Ok(live)
+}
+
+/// `--out` and `--record` checked: never a file the scenario reads (`inputs`), never a
+/// folder.
+fn check_outputs(args: &LinkArgs, inputs: &[(&str, std::path::PathBuf)]) -> Result<()> {
+    for path in [args.out.as_deref(), args.record.as_deref()]
+        .into_iter()
+        .flatten()
+    {
+        if path.as_os_str() != "-" {
+            output::Destination::new(path, inputs)?.require_file()?;
+        }
+    }
+    Ok(())
 }
 
 /// Plan the first arming against the motion's start and say, before anything is sent,
