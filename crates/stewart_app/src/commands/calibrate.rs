@@ -110,41 +110,7 @@ fn report(scenario: &Scenario, c: &Calibration, file: &str, line: &dyn Fn(usize)
     let size = scenario.geometry.characteristic_length();
     let mut large = Vec::new();
     for (leg, fit) in c.legs.iter().enumerate() {
-        let _ = writeln!(
-            t,
-            "\nleg {}: RMS {:.4} mm before, {:.4} mm after ({} steps)",
-            leg + 1,
-            mm(fit.rms_before),
-            mm(fit.rms_after),
-            fit.iterations
-        );
-        let values: Vec<String> = fit
-            .singular_values
-            .iter()
-            .map(|s| format!("{s:.3e}"))
-            .collect();
-        let _ = writeln!(
-            t,
-            "  singular values of the identification Jacobian (RMS residual per unit change): {}",
-            values.join(" ")
-        );
-        let weakest: Vec<String> = fit
-            .weakest_direction
-            .iter()
-            .map(|(name, v)| format!("{v:+.2} {name}"))
-            .collect();
-        let _ = writeln!(t, "  least determined combination: {}", weakest.join(" "));
-        let _ = writeln!(
-            t,
-            "  {:<12} {:>13} {:>13} {:>12} {:>12}",
-            "parameter", "nominal", "calibrated", "change", "± (1σ)"
-        );
-        for p in &fit.parameters {
-            let _ = writeln!(t, "  {}", parameter_row(p));
-            if p.unit == ParameterUnit::Metre && (p.value - p.nominal).abs() > LARGE_CHANGE * size {
-                large.push(p.name.clone());
-            }
-        }
+        leg_fit(&mut t, leg, fit, size, &mut large);
     }
     let outliers: Vec<String> = c
         .row_residuals
@@ -176,6 +142,53 @@ fn report(scenario: &Scenario, c: &Calibration, file: &str, line: &dyn Fn(usize)
         );
     }
     t
+}
+
+/// One leg's fit: its residuals, how well its parameters are determined, and each
+/// parameter's change (the names of those that moved more than `LARGE_CHANGE` of `size`
+/// pushed to `large`).
+fn leg_fit(
+    t: &mut String,
+    leg: usize,
+    fit: &stewart_kinematics::analysis::calibration::LegCalibration,
+    size: f64,
+    large: &mut Vec<String>,
+) {
+    let _ = writeln!(
+        t,
+        "\nleg {}: RMS {:.4} mm before, {:.4} mm after ({} steps)",
+        leg + 1,
+        mm(fit.rms_before),
+        mm(fit.rms_after),
+        fit.iterations
+    );
+    let values: Vec<String> = fit
+        .singular_values
+        .iter()
+        .map(|s| format!("{s:.3e}"))
+        .collect();
+    let _ = writeln!(
+        t,
+        "  singular values of the identification Jacobian (RMS residual per unit change): {}",
+        values.join(" ")
+    );
+    let weakest: Vec<String> = fit
+        .weakest_direction
+        .iter()
+        .map(|(name, v)| format!("{v:+.2} {name}"))
+        .collect();
+    let _ = writeln!(t, "  least determined combination: {}", weakest.join(" "));
+    let _ = writeln!(
+        t,
+        "  {:<12} {:>13} {:>13} {:>12} {:>12}",
+        "parameter", "nominal", "calibrated", "change", "± (1σ)"
+    );
+    for p in &fit.parameters {
+        let _ = writeln!(t, "  {}", parameter_row(p));
+        if p.unit == ParameterUnit::Metre && (p.value - p.nominal).abs() > LARGE_CHANGE * size {
+            large.push(p.name.clone());
+        }
+    }
 }
 
 /// One parameter's row: name, nominal, calibrated, change, uncertainty (mm or degrees).

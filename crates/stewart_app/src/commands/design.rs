@@ -107,6 +107,39 @@ fn text(scenario: &Scenario, envelope: &Envelope, report: &DesignReport) -> Stri
             pose_words(&hi.pose)
         );
     }
+    needed_range(&mut s, g, report, decimals, unit);
+    if let Some(p) = &report.unreachable {
+        let _ = writeln!(
+            s,
+            "Some poses are out of reach (a servo cannot reach its platform joint), e.g. at {}.",
+            pose_words(p)
+        );
+    }
+    if let Some(w) = &report.worst_condition {
+        let value = if w.value.is_finite() {
+            format!("{:.2}", w.value)
+        } else {
+            "singular".to_owned()
+        };
+        let _ = writeln!(
+            s,
+            "Worst normalised condition number: {value} at {} (threshold {}).",
+            pose_words(&w.pose),
+            scenario.checks.condition_max
+        );
+    }
+    let _ = writeln!(
+        s,
+        "Found by a bounded pattern search from the best of {} seed poses (corners, centre, face centres, Halton points); {} poses evaluated.",
+        report.seeds, report.evaluations
+    );
+    s
+}
+
+/// The range the envelope needs of the actuators, and whether the scenario's limits hold
+/// it.
+fn needed_range(s: &mut String, g: &Geometry, report: &DesignReport, decimals: usize, unit: &str) {
+    let q = g.quantity();
     match report.overall() {
         Some([lo, hi]) => {
             let _ = writeln!(
@@ -149,30 +182,4 @@ fn text(scenario: &Scenario, envelope: &Envelope, report: &DesignReport) -> Stri
             let _ = writeln!(s, "No pose of the envelope is reachable.");
         }
     }
-    if let Some(p) = &report.unreachable {
-        let _ = writeln!(
-            s,
-            "Some poses are out of reach (a servo cannot reach its platform joint), e.g. at {}.",
-            pose_words(p)
-        );
-    }
-    if let Some(w) = &report.worst_condition {
-        let value = if w.value.is_finite() {
-            format!("{:.2}", w.value)
-        } else {
-            "singular".to_owned()
-        };
-        let _ = writeln!(
-            s,
-            "Worst normalised condition number: {value} at {} (threshold {}).",
-            pose_words(&w.pose),
-            scenario.checks.condition_max
-        );
-    }
-    let _ = writeln!(
-        s,
-        "Found by a bounded pattern search from the best of {} seed poses (corners, centre, face centres, Halton points); {} poses evaluated.",
-        report.seeds, report.evaluations
-    );
-    s
 }

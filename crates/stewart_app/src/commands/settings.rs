@@ -183,34 +183,7 @@ fn aligned(out: &mut String, entries: &[(String, String)]) {
 
 /// The table: key, current value, unit, slider range, accepted range, default.
 pub(crate) fn table(scenario: &Scenario) -> String {
-    let rows: Vec<[String; 6]> = settings::all()
-        .iter()
-        .map(|s| {
-            let value = if s.applies(scenario) {
-                value_of(s, s.get(scenario))
-            } else if let SettingTarget::Geometry(key) = s.target
-                && key.circle_plate().is_some()
-            {
-                "(joints as coordinates)".to_owned()
-            } else if s
-                .target
-                .actuator_kind()
-                .is_some_and(|k| k != scenario.geometry.actuator().kind())
-            {
-                "(the other actuator kind)".to_owned()
-            } else {
-                "(another trajectory kind)".to_owned()
-            };
-            [
-                s.key.clone(),
-                value,
-                s.unit.symbol().to_owned(),
-                slider_range(s),
-                accepted_range(s),
-                value_of(s, s.default_for(scenario)),
-            ]
-        })
-        .collect();
+    let rows: Vec<[String; 6]> = settings::all().iter().map(|s| row(s, scenario)).collect();
     let header = [
         "key",
         "value",
@@ -268,4 +241,31 @@ pub(crate) fn table(scenario: &Scenario) -> String {
         };
     }
     out
+}
+
+/// One setting's row: key, value (or why it does not apply), unit, ranges, default.
+fn row(s: &Setting, scenario: &Scenario) -> [String; 6] {
+    let value = if s.applies(scenario) {
+        value_of(s, s.get(scenario))
+    } else if let SettingTarget::Geometry(key) = s.target
+        && key.circle_plate().is_some()
+    {
+        "(joints as coordinates)".to_owned()
+    } else if s
+        .target
+        .actuator_kind()
+        .is_some_and(|k| k != scenario.geometry.actuator().kind())
+    {
+        "(the other actuator kind)".to_owned()
+    } else {
+        "(another trajectory kind)".to_owned()
+    };
+    [
+        s.key.clone(),
+        value,
+        s.unit.symbol().to_owned(),
+        slider_range(s),
+        accepted_range(s),
+        value_of(s, s.default_for(scenario)),
+    ]
 }
