@@ -133,7 +133,7 @@ fn body(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
     let mut action = form(ui, parts);
     let exports = &mut *parts.exports;
     let path = exports.form.path.trim().to_owned();
-    let sound = title_error(&exports.form.title).is_none();
+    let sound = title_error(&exports.form.title, t).is_none();
     if ui
         .add_enabled(
             !path.is_empty() && sound,
@@ -236,72 +236,95 @@ fn form(ui: &mut egui::Ui, parts: &mut ExportParts) -> Option<ExportAction> {
         });
     }
     if form.kind.is_video() {
-        let fps = form.fps;
-        let slider = egui::Slider::new(&mut form.fps, 0.0..=120.0);
-        widgets::fitted_slider(ui, t.tr("export.fps"), fps, slider);
-        let speed = form.speed;
-        let slider = egui::Slider::new(&mut form.speed, 0.05..=2.0).logarithmic(true);
-        widgets::fitted_slider(ui, t.tr("export.speed"), speed, slider)
-            .on_hover_text(t.tr("export.speed_tip"));
-        ui.horizontal(|ui| {
-            ui.checkbox(&mut form.light, t.tr("export.light"));
-            ui.checkbox(&mut form.composite, t.tr("export.composite"));
-        });
-        span(ui, form, duration, t);
-        ui.horizontal(|ui| {
-            let label = ui.label(t.tr("export.title"));
-            ui.add(
-                egui::TextEdit::singleline(&mut form.title)
-                    .hint_text(name)
-                    .desired_width(200.0),
-            )
-            .labelled_by(label.id)
-            .on_hover_text(t.tr("export.title_tip"));
-        });
-        if let Some(e) = title_error(&form.title) {
-            ui.label(egui::RichText::new(e).color(widgets::ERROR));
-        }
-        // What the export will write, planned for the path as typed (its extension
-        // decides the format and so the default rate).
-        if let Some((plan, n)) = &parts.plan {
-            let n = *n;
-            let words = t.fmt(
-                "export.frames",
-                &[
-                    ("count", &n),
-                    ("fps", &rate_in_words(plan.fps)),
-                    ("seconds", &format!("{:.2}", n as f64 / plan.fps)),
-                ],
-            );
-            ui.label(egui::RichText::new(words).small());
-            if let Some(RateNote::GifRounded {
-                asked,
-                fps,
-                delay_cs,
-            }) = plan.note
-            {
-                let words = t.fmt(
-                    "export.gif_rounded",
-                    &[
-                        ("asked", &rate_in_words(asked)),
-                        ("fps", &rate_in_words(fps)),
-                        ("delay", &delay_cs),
-                    ],
-                );
-                ui.label(egui::RichText::new(words).small());
-            }
-        }
+        video_options(ui, form, parts.plan.as_ref(), name, duration, t);
     }
     action
 }
 
-/// Why the readout's title cannot be burnt in (`None`: empty, or one line that fits).
-fn title_error(title: &str) -> Option<String> {
-    if title.is_empty() {
-        None
-    } else {
-        crate::cli::parse_title(title).err().map(|e| e.to_string())
+/// A video's options: rate, speed, colours, the span, the readout's title, and what the
+/// export will write.
+fn video_options(
+    ui: &mut egui::Ui,
+    form: &mut crate::viewer::state::exports::ExportForm,
+    plan: Option<&(FramePlan, usize)>,
+    name: &str,
+    duration: f64,
+    t: Lang,
+) {
+    let fps = form.fps;
+    let slider = egui::Slider::new(&mut form.fps, 0.0..=120.0);
+    widgets::fitted_slider(ui, t.tr("export.fps"), fps, slider);
+    let speed = form.speed;
+    let slider = egui::Slider::new(&mut form.speed, 0.05..=2.0).logarithmic(true);
+    widgets::fitted_slider(ui, t.tr("export.speed"), speed, slider)
+        .on_hover_text(t.tr("export.speed_tip"));
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut form.light, t.tr("export.light"));
+        ui.checkbox(&mut form.composite, t.tr("export.composite"));
+    });
+    span(ui, form, duration, t);
+    ui.horizontal(|ui| {
+        let label = ui.label(t.tr("export.title"));
+        ui.add(
+            egui::TextEdit::singleline(&mut form.title)
+                .hint_text(name)
+                .desired_width(200.0),
+        )
+        .labelled_by(label.id)
+        .on_hover_text(t.tr("export.title_tip"));
+    });
+    if let Some(e) = title_error(&form.title, t) {
+        ui.label(egui::RichText::new(e).color(widgets::ERROR));
     }
+    // What the export will write, planned for the path as typed (its extension
+    // decides the format and so the default rate).
+    if let Some((plan, n)) = plan {
+        let n = *n;
+        let words = t.fmt(
+            "export.frames",
+            &[
+                ("count", &n),
+                ("fps", &rate_in_words(plan.fps)),
+                ("seconds", &format!("{:.2}", n as f64 / plan.fps)),
+            ],
+        );
+        ui.label(egui::RichText::new(words).small());
+        if let Some(RateNote::GifRounded {
+            asked,
+            fps,
+            delay_cs,
+        }) = plan.note
+        {
+            let words = t.fmt(
+                "export.gif_rounded",
+                &[
+                    ("asked", &rate_in_words(asked)),
+                    ("fps", &rate_in_words(fps)),
+                    ("delay", &delay_cs),
+                ],
+            );
+            ui.label(egui::RichText::new(words).small());
+        }
+    }
+}
+
+/// Why the readout's title cannot be burnt in (`None`: empty, or one line that fits), in
+/// the interface's language.
+fn title_error(title: &str, t: Lang) -> Option<String> {
+    use crate::cli::ArgError;
+    if title.is_empty() {
+        return None;
+    }
+    crate::cli::parse_title(title).err().map(|e| match e {
+        ArgError::LongTitle { chars, max } => {
+            t.fmt("export.title_long", &[("chars", &chars), ("max", &max)])
+        }
+        ArgError::TitleControl { found } => {
+            let code = format!("U+{:04X}", u32::from(found));
+            t.fmt("export.title_control", &[("code", &code)])
+        }
+        other => other.to_string(),
+    })
 }
 
 /// *Only part of the motion*: from and to, seconds from its start, within `duration`.
