@@ -48,79 +48,12 @@ pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Setting
     let mut edit: Option<Option<f64>> = None;
     ui.horizontal(|ui| {
         if setting.optional() {
-            let mut on = current.is_some();
-            let name = setting_label(t, setting);
-            // A limit is switched on; a quantity (a stiffness) is given, from a typical value.
-            let tip = if setting.unit == Unit::Stiffness {
-                let start = setting.value_when_switched_on(scenario);
-                t.fmt(
-                    "widgets.use_value",
-                    &[
-                        ("name", &name),
-                        ("value", &format!("{start:e}")),
-                        ("unit", &unit_of(setting, scenario)),
-                    ],
-                )
-            } else {
-                t.fmt("widgets.use_limit", &[("name", &name)])
-            };
-            if ui.checkbox(&mut on, "").on_hover_text(tip).changed() {
-                edit = Some(on.then(|| setting.value_when_switched_on(scenario)));
-            }
+            edit = switch_on(ui, t, setting, scenario, current.is_some());
         }
         match current {
             Some(value) => {
-                let range = setting.range_for(scenario);
-                let mut v = value;
-                // The right and middle buttons open the menu or pan: they never move the knob.
-                let other_button = ui.input(|i| {
-                    [egui::PointerButton::Secondary, egui::PointerButton::Middle]
-                        .into_iter()
-                        .any(|b| i.pointer.button_down(b) || i.pointer.button_released(b))
-                });
-                let fine = ui.input(|i| i.modifiers.shift);
-                // A drag that went fine stays fine until its button is up, even when Shift is
-                // let go first (the plain slider would then jump to the pointer, as a
-                // second undo step). Keyed by the setting: one slider is dragged at a time.
-                let fine_id = ui.scope_id().with(("fine drag", &setting.key));
-                let was_fine = ui.data(|d| d.get_temp::<bool>(fine_id)).unwrap_or(false);
-                // While a fine drag may go on, the slider shows the value applied, not where
-                // the pointer would put a plain drag.
-                let frozen = (fine || was_fine) && ui.input(|i| i.pointer.primary_down());
-                let label = setting_label_with_unit(t, setting, kind);
-                let fits = make_room_for_the_label(ui, &label, value);
-                let text = fits.then(|| label.clone());
-                let slid = ui.add(slider(setting, text, range.clone(), &mut v, frozen));
-                // Too long even beside the shortest track: its own label, wrapped, names it.
-                let slid = if fits {
-                    slid
-                } else {
-                    let words = ui.add(egui::Label::new(label).wrap());
-                    slid.labelled_by(words.id)
-                };
-                // A slider senses drags only: clicks too, so that the right button's click
-                // opens the reset menu.
-                let response = slid
-                    .union(slid.interact(egui::Sense::click()))
-                    .on_hover_text(slider_tip(t, setting, scenario));
-                let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
-                let fine = fine || (held && was_fine);
-                let still_fine = fine && slid.is_pointer_button_down_on();
-                if still_fine != was_fine {
-                    ui.data_mut(|d| d.insert_temp(fine_id, still_fine));
-                }
-                if fine && held {
-                    // Fine steps from where the value is, by the pointer's motion alone
-                    // (the plain slider would jump to the pointer).
-                    let dx = ui.input(|i| i.pointer.delta().x);
-                    if dx != 0.0 && slid.is_pointer_button_down_on() {
-                        edit = Some(Some(fine_drag(ui, setting, &range, value, dx)));
-                    }
-                } else if slid.changed() && !other_button {
-                    edit = Some(Some(v));
-                }
-                if let Some(reset) = reset_menu(&response, t, setting, scenario) {
-                    edit = Some(reset);
+                if let Some(slid) = value_slider(ui, t, setting, scenario, value) {
+                    edit = Some(slid);
                 }
             }
             None => {
@@ -134,6 +67,103 @@ pub(crate) fn setting_slider(ui: &mut egui::Ui, ed: &mut Editor, target: Setting
     if let Some(value) = edit {
         ed.apply(setting, value);
     }
+}
+
+/// An optional setting's switch, `on` when it has a value: `Some` with the value to write
+/// (`None`: off) when it was switched.
+fn switch_on(
+    ui: &mut egui::Ui,
+    t: Lang,
+    setting: &Setting,
+    scenario: &Scenario,
+    on: bool,
+) -> Option<Option<f64>> {
+    let mut on = on;
+    let name = setting_label(t, setting);
+    // A limit is switched on; a quantity (a stiffness) is given, from a typical value.
+    let tip = if setting.unit == Unit::Stiffness {
+        let start = setting.value_when_switched_on(scenario);
+        t.fmt(
+            "widgets.use_value",
+            &[
+                ("name", &name),
+                ("value", &format!("{start:e}")),
+                ("unit", &unit_of(setting, scenario)),
+            ],
+        )
+    } else {
+        t.fmt("widgets.use_limit", &[("name", &name)])
+    };
+    ui.checkbox(&mut on, "")
+        .on_hover_text(tip)
+        .changed()
+        .then(|| on.then(|| setting.value_when_switched_on(scenario)))
+}
+
+/// The slider of a setting at `value`: `Some` with what to write when it was dragged,
+/// stepped finely with Shift, or reset from its menu.
+fn value_slider(
+    ui: &mut egui::Ui,
+    t: Lang,
+    setting: &Setting,
+    scenario: &Scenario,
+    value: f64,
+) -> Option<Option<f64>> {
+    let kind = scenario.geometry.actuator().kind();
+    let mut edit = None;
+    let range = setting.range_for(scenario);
+    let mut v = value;
+    // The right and middle buttons open the menu or pan: they never move the knob.
+    let other_button = ui.input(|i| {
+        [egui::PointerButton::Secondary, egui::PointerButton::Middle]
+            .into_iter()
+            .any(|b| i.pointer.button_down(b) || i.pointer.button_released(b))
+    });
+    let fine = ui.input(|i| i.modifiers.shift);
+    // A drag that went fine stays fine until its button is up, even when Shift is
+    // let go first (the plain slider would then jump to the pointer, as a
+    // second undo step). Keyed by the setting: one slider is dragged at a time.
+    let fine_id = ui.scope_id().with(("fine drag", &setting.key));
+    let was_fine = ui.data(|d| d.get_temp::<bool>(fine_id)).unwrap_or(false);
+    // While a fine drag may go on, the slider shows the value applied, not where
+    // the pointer would put a plain drag.
+    let frozen = (fine || was_fine) && ui.input(|i| i.pointer.primary_down());
+    let label = setting_label_with_unit(t, setting, kind);
+    let fits = make_room_for_the_label(ui, &label, value);
+    let text = fits.then(|| label.clone());
+    let slid = ui.add(slider(setting, text, range.clone(), &mut v, frozen));
+    // Too long even beside the shortest track: its own label, wrapped, names it.
+    let slid = if fits {
+        slid
+    } else {
+        let words = ui.add(egui::Label::new(label).wrap());
+        slid.labelled_by(words.id)
+    };
+    // A slider senses drags only: clicks too, so that the right button's click
+    // opens the reset menu.
+    let response = slid
+        .union(slid.interact(egui::Sense::click()))
+        .on_hover_text(slider_tip(t, setting, scenario));
+    let held = slid.is_pointer_button_down_on() || slid.drag_stopped();
+    let fine = fine || (held && was_fine);
+    let still_fine = fine && slid.is_pointer_button_down_on();
+    if still_fine != was_fine {
+        ui.data_mut(|d| d.insert_temp(fine_id, still_fine));
+    }
+    if fine && held {
+        // Fine steps from where the value is, by the pointer's motion alone
+        // (the plain slider would jump to the pointer).
+        let dx = ui.input(|i| i.pointer.delta().x);
+        if dx != 0.0 && slid.is_pointer_button_down_on() {
+            edit = Some(Some(fine_drag(ui, setting, &range, value, dx)));
+        }
+    } else if slid.changed() && !other_button {
+        edit = Some(Some(v));
+    }
+    if let Some(reset) = reset_menu(&response, t, setting, scenario) {
+        edit = Some(reset);
+    }
+    edit
 }
 
 /// The slider's right-click menu: back to the default (or off, for an optional setting
