@@ -46,17 +46,7 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
             match ed.doc.cued_vehicle() {
                 _ if live.is_some() => {
                     ui.label(t.tr("cueing.live"));
-                    let end = trace.last().map_or(0.0, |p| p.t);
-                    let times: Vec<f64> = trace.iter().map(|p| p.t - end).collect();
-                    let channels = Channels {
-                        times: times.clone(),
-                        vehicle: trace.iter().map(|p| p.vehicle).collect(),
-                        platform: trace.iter().map(|p| p.platform).collect(),
-                        other: None,
-                        tilt_times: times,
-                        tilt_deg: trace.iter().map(|p| p.tilt_deg).collect(),
-                    };
-                    plots(ui, &channels, t, None);
+                    plots(ui, &live_channels(&trace), t, None);
                 }
                 Some(v) => {
                     let file = std::path::Path::new(&v.name)
@@ -81,45 +71,62 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
                     ui.label(RichText::new(t.tr("cueing.hint")).small());
                 }
             }
-            egui::CollapsingHeader::new(t.tr("cueing.settings"))
-                .default_open(ed.expand)
-                .show(ui, |ui| {
-                    let algorithm = ed.scenario().cueing.algorithm;
-                    ui.horizontal_wrapped(|ui| {
-                        ui.label(t.tr("cueing.algorithm"));
-                        for choice in CueingAlgorithm::ALL {
-                            if ui
-                                .selectable_label(
-                                    algorithm == choice,
-                                    t.tr(algorithm_words(choice)),
-                                )
-                                .clicked()
-                                && algorithm != choice
-                            {
-                                ed.edit(Group::Cueing, |s| {
-                                    s.cueing.algorithm = choice;
-                                    Ok(())
-                                });
-                            }
-                        }
-                    });
-                    let targets: Vec<_> = settings::all()
-                        .iter()
-                        .filter(|s| s.group == Group::Cueing && shown_for(&s.key, algorithm))
-                        .map(|s| s.target)
-                        .collect();
-                    for target in targets {
-                        setting_slider(ui, ed, target);
-                    }
-                    let note = match algorithm {
-                        CueingAlgorithm::Washout => "cueing.limiter_keeps",
-                        CueingAlgorithm::Mpc => "cueing.mpc_keeps",
-                    };
-                    ui.label(RichText::new(t.tr(note)).small());
-                });
+            settings_section(ui, ed);
             edit_error(ui, ed.doc, t, &[Group::Cueing]);
         });
     open
+}
+
+/// The algorithm's choice and its settings.
+fn settings_section(ui: &mut egui::Ui, ed: &mut Editor) {
+    let t = ed.lang;
+    egui::CollapsingHeader::new(t.tr("cueing.settings"))
+        .default_open(ed.expand)
+        .show(ui, |ui| {
+            let algorithm = ed.scenario().cueing.algorithm;
+            ui.horizontal_wrapped(|ui| {
+                ui.label(t.tr("cueing.algorithm"));
+                for choice in CueingAlgorithm::ALL {
+                    if ui
+                        .selectable_label(algorithm == choice, t.tr(algorithm_words(choice)))
+                        .clicked()
+                        && algorithm != choice
+                    {
+                        ed.edit(Group::Cueing, |s| {
+                            s.cueing.algorithm = choice;
+                            Ok(())
+                        });
+                    }
+                }
+            });
+            let targets: Vec<_> = settings::all()
+                .iter()
+                .filter(|s| s.group == Group::Cueing && shown_for(&s.key, algorithm))
+                .map(|s| s.target)
+                .collect();
+            for target in targets {
+                setting_slider(ui, ed, target);
+            }
+            let note = match algorithm {
+                CueingAlgorithm::Washout => "cueing.limiter_keeps",
+                CueingAlgorithm::Mpc => "cueing.mpc_keeps",
+            };
+            ui.label(RichText::new(t.tr(note)).small());
+        });
+}
+
+/// The live input's trace as the plots' channels, times counted back from its last sample.
+fn live_channels(trace: &[TracePoint]) -> Channels {
+    let end = trace.last().map_or(0.0, |p| p.t);
+    let times: Vec<f64> = trace.iter().map(|p| p.t - end).collect();
+    Channels {
+        times: times.clone(),
+        vehicle: trace.iter().map(|p| p.vehicle).collect(),
+        platform: trace.iter().map(|p| p.platform).collect(),
+        other: None,
+        tilt_times: times,
+        tilt_deg: trace.iter().map(|p| p.tilt_deg).collect(),
+    }
 }
 
 /// The words naming `algorithm`.

@@ -148,26 +148,7 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
         });
     ui.label(link.described().unwrap_or_default());
     if let Some(cue) = link.cue() {
-        let [received, dropped, stalls] = cue.numbers();
-        ui.label(t.fmt(
-            "link.cue_counts",
-            &[
-                ("received", &received),
-                ("dropped", &dropped),
-                ("stalls", &stalls),
-            ],
-        ));
-        let arriving: Vec<String> = (cue.arriving().iter())
-            .map(|(format, rate)| {
-                let name = format.map_or_else(|| t.tr("link.cue_unknown"), |f| f.name());
-                format!("{name} {rate:.0}/s")
-            })
-            .collect();
-        ui.label(if arriving.is_empty() {
-            t.tr("link.cue_nothing").to_owned()
-        } else {
-            t.fmt("link.cue_arriving", &[("formats", &arriving.join(", "))])
-        });
+        cue_input(ui, cue, t);
     }
     let width = ui.available_width();
     let big = |text: &str, fill: Color32| {
@@ -225,6 +206,30 @@ fn live(ui: &mut egui::Ui, link: &mut LiveLink, quantity: Quantity, t: Lang, ope
     if ui.button(label).on_hover_text(tip).clicked() {
         link.disconnect();
     }
+}
+
+/// The live vehicle input's counts and the formats arriving, with their rates.
+fn cue_input(ui: &mut egui::Ui, cue: &crate::vehicle_in::live_cue::CueCounts, t: Lang) {
+    let [received, dropped, stalls] = cue.numbers();
+    ui.label(t.fmt(
+        "link.cue_counts",
+        &[
+            ("received", &received),
+            ("dropped", &dropped),
+            ("stalls", &stalls),
+        ],
+    ));
+    let arriving: Vec<String> = (cue.arriving().iter())
+        .map(|(format, rate)| {
+            let name = format.map_or_else(|| t.tr("link.cue_unknown"), |f| f.name());
+            format!("{name} {rate:.0}/s")
+        })
+        .collect();
+    ui.label(if arriving.is_empty() {
+        t.tr("link.cue_nothing").to_owned()
+    } else {
+        t.fmt("link.cue_arriving", &[("formats", &arriving.join(", "))])
+    });
 }
 
 /// The stream's timing, the telemetry's counts and the last frames' bytes: for those who
