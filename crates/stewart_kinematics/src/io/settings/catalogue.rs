@@ -207,6 +207,14 @@ fn geometry(d: &mut Declare) {
         Off,
         g(LegMax),
     );
+    joints(d);
+}
+
+/// Each plate's joints: their angles on the circle, or their coordinates; the pivot.
+fn joints(d: &mut Declare) {
+    use GeometryKey::*;
+    let seed = GeometryParams::seed();
+    let g = |k| SettingTarget::Geometry(k);
     let (base_angles, platform_angles) = crate::model::layout::Layout::seed().angles();
     for (plate, angles, key) in [
         ("base", base_angles, BaseAngle as fn(usize) -> GeometryKey),

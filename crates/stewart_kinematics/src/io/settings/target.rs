@@ -205,43 +205,9 @@ impl SettingTarget {
     }
 
     pub(super) fn get(self, scenario: &Scenario) -> Option<f64> {
-        let params = scenario.geometry.params();
         match self {
-            SettingTarget::Geometry(key) => match key {
-                GeometryKey::BaseRadius => params.base.circle().map(|c| c.0),
-                GeometryKey::PlatformRadius => params.platform.circle().map(|c| c.0),
-                GeometryKey::HomeHeight => Some(params.home_height),
-                GeometryKey::LegMin => params.stroke.min,
-                GeometryKey::LegMax => params.stroke.max,
-                GeometryKey::BaseAngle(i) => params
-                    .base
-                    .circle()
-                    .and_then(|c| c.1.get(i).map(|a| a.degrees())),
-                GeometryKey::PlatformAngle(i) => params
-                    .platform
-                    .circle()
-                    .and_then(|c| c.1.get(i).map(|a| a.degrees())),
-                GeometryKey::Joint(plate, i, k) => scenario
-                    .geometry
-                    .joints(plate)
-                    .get(i)
-                    .and_then(|p| p.get(k).copied()),
-                GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
-            },
-            SettingTarget::Actuator(key) => {
-                let r = scenario.geometry.rotary()?;
-                match key {
-                    ActuatorKey::HornLength => Some(r.horn_length()),
-                    ActuatorKey::RodLength => Some(r.rod_length()),
-                    ActuatorKey::HornAngle(i) => r.horn_angles().get(i).map(|a| a.degrees()),
-                    ActuatorKey::ServoMin => r.range().map(|(min, _)| min.degrees()),
-                    ActuatorKey::ServoMax => r.range().map(|(_, max)| max.degrees()),
-                    ActuatorKey::Trim(i) => r.trims().get(i).map(|a| a.degrees()),
-                    ActuatorKey::Reversed(i) => {
-                        r.reversed().get(i).map(|&on| f64::from(u8::from(on)))
-                    }
-                }
-            }
+            SettingTarget::Geometry(key) => geometry_value(scenario, key),
+            SettingTarget::Actuator(key) => actuator_value(scenario, key),
             SettingTarget::Sampling(key) => {
                 let s = &scenario.motion.sampling;
                 Some(match key {
@@ -509,6 +475,46 @@ impl ShapeField<'_> {
             ShapeField::Plain(x) => *x = v,
             ShapeField::Degrees(a) => *a = Angle::from_degrees(v),
         }
+    }
+}
+/// A platform number of `scenario` (`None` where its layout has none: a circle's radius
+/// of joints given as coordinates).
+fn geometry_value(scenario: &Scenario, key: GeometryKey) -> Option<f64> {
+    let params = scenario.geometry.params();
+    match key {
+        GeometryKey::BaseRadius => params.base.circle().map(|c| c.0),
+        GeometryKey::PlatformRadius => params.platform.circle().map(|c| c.0),
+        GeometryKey::HomeHeight => Some(params.home_height),
+        GeometryKey::LegMin => params.stroke.min,
+        GeometryKey::LegMax => params.stroke.max,
+        GeometryKey::BaseAngle(i) => params
+            .base
+            .circle()
+            .and_then(|c| c.1.get(i).map(|a| a.degrees())),
+        GeometryKey::PlatformAngle(i) => params
+            .platform
+            .circle()
+            .and_then(|c| c.1.get(i).map(|a| a.degrees())),
+        GeometryKey::Joint(plate, i, k) => scenario
+            .geometry
+            .joints(plate)
+            .get(i)
+            .and_then(|p| p.get(k).copied()),
+        GeometryKey::Pivot(i) => params.pivot.get(i).copied(),
+    }
+}
+
+/// A rotary platform's actuator number (`None` for linear legs).
+fn actuator_value(scenario: &Scenario, key: ActuatorKey) -> Option<f64> {
+    let r = scenario.geometry.rotary()?;
+    match key {
+        ActuatorKey::HornLength => Some(r.horn_length()),
+        ActuatorKey::RodLength => Some(r.rod_length()),
+        ActuatorKey::HornAngle(i) => r.horn_angles().get(i).map(|a| a.degrees()),
+        ActuatorKey::ServoMin => r.range().map(|(min, _)| min.degrees()),
+        ActuatorKey::ServoMax => r.range().map(|(_, max)| max.degrees()),
+        ActuatorKey::Trim(i) => r.trims().get(i).map(|a| a.degrees()),
+        ActuatorKey::Reversed(i) => r.reversed().get(i).map(|&on| f64::from(u8::from(on))),
     }
 }
 
