@@ -513,6 +513,36 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     if !ui.input(|i| i.pointer.any_down()) {
         state.doc.undo.seal();
     }
+    file_and_edit_keys(ui, state);
+    let pressed = |key| ui.input(|i| i.key_pressed(key));
+    if pressed(egui::Key::Space) {
+        state.playback.toggle();
+    }
+    if pressed(egui::Key::ArrowLeft) {
+        state.step(-1.0);
+    }
+    if pressed(egui::Key::ArrowRight) {
+        state.step(1.0);
+    }
+    if pressed(egui::Key::Home) {
+        state.playback.time = 0.0;
+    }
+    if pressed(egui::Key::F12) && !state.shots.busy() {
+        state.take_screenshot();
+    }
+    if pressed(egui::Key::P) || pressed(egui::Key::F5) {
+        // The audience sees the view, not the list of keys.
+        state.look.help = false;
+        state.look.presentation = !state.look.presentation;
+    }
+    if pressed(egui::Key::G) && state.look.presentation {
+        state.look.plot_hidden = !state.look.plot_hidden;
+    }
+}
+
+/// The keys with Ctrl (⌘): undo and redo, save, save as, open, quit; F1 for help.
+fn file_and_edit_keys(ui: &mut egui::Ui, state: &mut ViewerState) {
+    let pressed = |key| ui.input(|i| i.key_pressed(key));
     let shift = egui::Modifiers::COMMAND | egui::Modifiers::SHIFT;
     let (redo, undo) = ui.input_mut(|i| {
         let redo = i.consume_key(shift, egui::Key::Z)
@@ -546,28 +576,5 @@ fn shortcuts(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     if undo {
         state.undo_edit();
-    }
-    if pressed(egui::Key::Space) {
-        state.playback.toggle();
-    }
-    if pressed(egui::Key::ArrowLeft) {
-        state.step(-1.0);
-    }
-    if pressed(egui::Key::ArrowRight) {
-        state.step(1.0);
-    }
-    if pressed(egui::Key::Home) {
-        state.playback.time = 0.0;
-    }
-    if pressed(egui::Key::F12) && !state.shots.busy() {
-        state.take_screenshot();
-    }
-    if pressed(egui::Key::P) || pressed(egui::Key::F5) {
-        // The audience sees the view, not the list of keys.
-        state.look.help = false;
-        state.look.presentation = !state.look.presentation;
-    }
-    if pressed(egui::Key::G) && state.look.presentation {
-        state.look.plot_hidden = !state.look.plot_hidden;
     }
 }

@@ -80,21 +80,7 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
     ui.horizontal_wrapped(|ui| {
         super::playback::play_button(ui, parts.playback, t);
         if parts.look.presentation {
-            let words = if parts.look.fullscreen {
-                t.tr("view.leave_fullscreen")
-            } else {
-                t.tr("view.fullscreen")
-            };
-            if ui.button(words).on_hover_text("F11").clicked() {
-                parts.look.fullscreen = !parts.look.fullscreen;
-            }
-            if ui
-                .button(t.tr("view.leave_presentation"))
-                .on_hover_text(t.tr("view.leave_presentation_tip"))
-                .clicked()
-            {
-                parts.look.presentation = false;
-            }
+            presentation_buttons(ui, parts.look);
             return;
         }
         super::export::open_button(ui, parts.exports, t);
@@ -140,21 +126,45 @@ fn toolbar(ui: &mut egui::Ui, parts: &mut ViewParts) -> Option<ViewAction> {
         .on_hover_text(t.tr("view.screenshot_tip"));
     });
     if !parts.look.presentation && parts.shots.status.is_some() {
-        // Over the view below the toolbar, not a line that pushes the view down; a success
-        // goes after a few seconds.
-        let below = ui.min_rect().left_bottom() + egui::vec2(0.0, 4.0);
-        egui::Area::new(ui.scope_id().with("shot said"))
-            .fixed_pos(below)
-            .order(egui::Order::Foreground)
-            .show(ui.ctx(), |ui| {
-                egui::Frame::popup(ui.style()).show(ui, |ui| {
-                    super::widgets::status(ui, &parts.shots.status, t);
-                });
-            });
-        ui.ctx()
-            .request_repaint_after(crate::viewer::view3d::shots::SAID_FOR);
+        shot_status(ui, parts.shots, t);
     }
     action
+}
+
+/// In presentation mode the toolbar holds only full screen and the way out.
+fn presentation_buttons(ui: &mut egui::Ui, look: &mut Look) {
+    let t = look.lang;
+    let words = if look.fullscreen {
+        t.tr("view.leave_fullscreen")
+    } else {
+        t.tr("view.fullscreen")
+    };
+    if ui.button(words).on_hover_text("F11").clicked() {
+        look.fullscreen = !look.fullscreen;
+    }
+    if ui
+        .button(t.tr("view.leave_presentation"))
+        .on_hover_text(t.tr("view.leave_presentation_tip"))
+        .clicked()
+    {
+        look.presentation = false;
+    }
+}
+
+/// The last screenshot's outcome, over the view below the toolbar (not a line that pushes
+/// the view down); a success goes after a few seconds.
+fn shot_status(ui: &mut egui::Ui, shots: &Shots, t: Lang) {
+    let below = ui.min_rect().left_bottom() + egui::vec2(0.0, 4.0);
+    egui::Area::new(ui.scope_id().with("shot said"))
+        .fixed_pos(below)
+        .order(egui::Order::Foreground)
+        .show(ui.ctx(), |ui| {
+            egui::Frame::popup(ui.style()).show(ui, |ui| {
+                super::widgets::status(ui, &shots.status, t);
+            });
+        });
+    ui.ctx()
+        .request_repaint_after(crate::viewer::view3d::shots::SAID_FOR);
 }
 
 /// Where the view is drawn this frame and how wide it is.
