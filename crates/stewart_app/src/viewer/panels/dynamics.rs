@@ -102,6 +102,27 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
     });
     ui.label(t.tr("dynamics.inertia"));
     let moments = p.inertia.diagonal().max().max(1e-9);
+    changed |= inertia_grid(ui, &mut inertia, moments, t);
+    if changed {
+        let [ixx, iyy, izz, ixy, ixz, iyz] = inertia;
+        let tensor = Matrix3::new(ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz);
+        ed.edit(Group::Dynamics, |s| {
+            s.payload = Some(Payload::new(mass, Vector3::from(com), tensor)?);
+            Ok(())
+        });
+    }
+    if ui.small_button(t.tr("dynamics.remove_payload")).clicked() {
+        ed.edit(Group::Dynamics, |s| {
+            s.payload = None;
+            Ok(())
+        });
+    }
+}
+
+/// The payload's inertia tensor's six entries, dragged at a pace of `moments` (its largest
+/// principal moment); whether one changed.
+fn inertia_grid(ui: &mut egui::Ui, inertia: &mut [f64; 6], moments: f64, t: crate::i18n::Lang) -> bool {
+    let mut changed = false;
     egui::Grid::new("payload inertia")
         .num_columns(3)
         .show(ui, |ui| {
@@ -119,20 +140,7 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
                 ui.end_row();
             }
         });
-    if changed {
-        let [ixx, iyy, izz, ixy, ixz, iyz] = inertia;
-        let tensor = Matrix3::new(ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz);
-        ed.edit(Group::Dynamics, |s| {
-            s.payload = Some(Payload::new(mass, Vector3::from(com), tensor)?);
-            Ok(())
-        });
-    }
-    if ui.small_button(t.tr("dynamics.remove_payload")).clicked() {
-        ed.edit(Group::Dynamics, |s| {
-            s.payload = None;
-            Ok(())
-        });
-    }
+    changed
 }
 
 /// The six modes at the pose shown, and the mode viewer's controls.
