@@ -267,22 +267,7 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
         dashed,
         width: if dashed { 1.5 } else { 2.0 },
     };
-    let mut entries = vec![
-        entry(0, "cueing.vehicle_x", true),
-        entry(0, "cueing.platform_x", false),
-        entry(1, "cueing.vehicle_y", true),
-        entry(1, "cueing.platform_y", false),
-    ];
-    if c.other.is_some() {
-        for (axis, words) in [(0, "cueing.other_x"), (1, "cueing.other_y")] {
-            entries.push(side_plot::Entry {
-                colour: leg_colour(axis).gamma_multiply(0.6),
-                words: t.tr(words),
-                dashed: false,
-                width: 1.0,
-            });
-        }
-    }
+    let entries = force_legend(c.other.is_some(), t);
     side_plot::legend(ui, &entries);
     let note = if c.other.is_some() {
         "cueing.compared"
@@ -309,4 +294,32 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
             entry(3, "cueing.tilt_pitch", false),
         ],
     );
+}
+
+/// The force plot's legend: each axis's vehicle (dashed) and platform (solid), and the
+/// other algorithm's when two are compared.
+fn force_legend(compared: bool, t: Lang) -> Vec<side_plot::Entry<'static>> {
+    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::Entry {
+        colour: leg_colour(axis),
+        words: t.tr(words),
+        dashed,
+        width: if dashed { 1.5 } else { 2.0 },
+    };
+    let mut entries = vec![
+        entry(0, "cueing.vehicle_x", true),
+        entry(0, "cueing.platform_x", false),
+        entry(1, "cueing.vehicle_y", true),
+        entry(1, "cueing.platform_y", false),
+    ];
+    if compared {
+        for (axis, words) in [(0, "cueing.other_x"), (1, "cueing.other_y")] {
+            entries.push(side_plot::Entry {
+                colour: leg_colour(axis).gamma_multiply(0.6),
+                words: t.tr(words),
+                dashed: false,
+                width: 1.0,
+            });
+        }
+    }
+    entries
 }

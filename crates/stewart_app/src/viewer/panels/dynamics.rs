@@ -121,7 +121,12 @@ fn payload(ui: &mut egui::Ui, ed: &mut Editor) {
 
 /// The payload's inertia tensor's six entries, dragged at a pace of `moments` (its largest
 /// principal moment); whether one changed.
-fn inertia_grid(ui: &mut egui::Ui, inertia: &mut [f64; 6], moments: f64, t: crate::i18n::Lang) -> bool {
+fn inertia_grid(
+    ui: &mut egui::Ui,
+    inertia: &mut [f64; 6],
+    moments: f64,
+    t: crate::i18n::Lang,
+) -> bool {
     let mut changed = false;
     egui::Grid::new("payload inertia")
         .num_columns(3)
