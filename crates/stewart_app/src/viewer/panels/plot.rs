@@ -172,24 +172,7 @@ fn plot(
         let name = words::quantity_name(t, &quantity);
         (name, quantity.symbol, quantity.unit)
     };
-    // The axis's name along it, or its symbol where the plot is too short for the name
-    // (a projector's large text): the label is centred on the axis and cut at its ends.
-    let body = egui::TextStyle::Body.resolve(ui.style());
-    let length = |text: &str| {
-        (ui.painter())
-            .layout_no_wrap(text.to_owned(), body.clone(), Color32::WHITE)
-            .size()
-            .x
-    };
-    let room = (look.plot_placement.as_ref())
-        .map_or(ui.available_height() - 3.0 * body.size, |p| {
-            p.frame.height()
-        });
-    let y_label = [format!("{name} ({unit})"), format!("{symbol} ({unit})")]
-        .into_iter()
-        .find(|label| length(label) <= room)
-        .unwrap_or_else(|| format!("{symbol} ({unit})"));
-    let y_label_length = length(&y_label);
+    let (y_label, y_label_length) = y_axis_label(ui, look, name, symbol, unit);
     let x_label = t.tr(match (rolling, commanded) {
         (true, true) => "plot.seconds_ago_commanded",
         (true, false) => "plot.seconds_ago",
@@ -259,26 +242,7 @@ fn plot(
         playback.playing = false;
     }
     let frame = *shown.transform.frame();
-    let limits = [min, max]
-        .into_iter()
-        .zip(["plot.min", "plot.max"])
-        .filter_map(|(limit, name)| {
-            let v = limit?;
-            let at = shown
-                .transform
-                .position_from_point(&PlotPoint::new(left_end, v));
-            let size = ui
-                .painter()
-                .layout_no_wrap(
-                    limit_label(&quantity, t, name, v),
-                    egui::TextStyle::Body.resolve(ui.style()),
-                    Color32::WHITE,
-                )
-                .size();
-            let anchor = limit_anchor(name);
-            Some((at.y, anchor.anchor_size(at, size)))
-        })
-        .collect();
+    let limits = limit_label_places(ui, &shown.transform, [min, max], left_end, &quantity, t);
     let toggle =
         (doc.plot_efforts().is_some() && !rolling).then(|| efforts_toggle(ui, frame, look));
     let bounds = shown.transform.bounds();
@@ -291,6 +255,59 @@ fn plot(
         toggle,
         y_label_length,
     }
+}
+
+/// The vertical axis's label — the quantity's name along it, or its symbol where the plot
+/// is too short for the name (a projector's large text): the label is centred on the axis
+/// and cut at its ends — and its length, points.
+fn y_axis_label(ui: &egui::Ui, look: &Look, name: &str, symbol: &str, unit: &str) -> (String, f32) {
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let length = |text: &str| {
+        (ui.painter())
+            .layout_no_wrap(text.to_owned(), body.clone(), Color32::WHITE)
+            .size()
+            .x
+    };
+    let room = (look.plot_placement.as_ref())
+        .map_or(ui.available_height() - 3.0 * body.size, |p| {
+            p.frame.height()
+        });
+    let y_label = [format!("{name} ({unit})"), format!("{symbol} ({unit})")]
+        .into_iter()
+        .find(|label| length(label) <= room)
+        .unwrap_or_else(|| format!("{symbol} ({unit})"));
+    let y_label_length = length(&y_label);
+    (y_label, y_label_length)
+}
+
+/// Where each limit line's label sits: the line's screen height and the label's
+/// rectangle.
+fn limit_label_places(
+    ui: &egui::Ui,
+    transform: &egui_plot::PlotTransform,
+    [min, max]: [Option<f64>; 2],
+    left_end: f64,
+    quantity: &Quantity,
+    t: crate::i18n::Lang,
+) -> Vec<(f32, egui::Rect)> {
+    [min, max]
+        .into_iter()
+        .zip(["plot.min", "plot.max"])
+        .filter_map(|(limit, name)| {
+            let v = limit?;
+            let at = transform.position_from_point(&PlotPoint::new(left_end, v));
+            let size = ui
+                .painter()
+                .layout_no_wrap(
+                    limit_label(quantity, t, name, v),
+                    egui::TextStyle::Body.resolve(ui.style()),
+                    Color32::WHITE,
+                )
+                .size();
+            let anchor = limit_anchor(name);
+            Some((at.y, anchor.anchor_size(at, size)))
+        })
+        .collect()
 }
 
 /// The values/forces toggle in the plot's top right corner, on a backing of the panel's
