@@ -38,6 +38,17 @@ pub(super) struct Meshes {
     pub(super) moving: Vec<json::Index<json::Mesh>>,
 }
 
+/// What every mesh of the scene is built from: the home scene, the looks, the unit shapes,
+/// the platform's size `s` and the longest leg.
+#[derive(Clone, Copy)]
+struct Home<'a> {
+    home: &'a SceneFrame,
+    looks: &'a Looks<'a>,
+    shapes: &'a Shapes,
+    s: f32,
+    longest: f32,
+}
+
 type Pieces = Vec<(Geometry, json::Index<json::Material>)>;
 
 /// The shared shapes, written once.
@@ -56,6 +67,30 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         cuboid: Arc::new(Mesh::cuboid()),
     };
     let s = home.base_radius.max(home.platform_radius) as f32;
+    let at = Home {
+        home,
+        looks,
+        shapes: &shapes,
+        s,
+        longest,
+    };
+    let base = base_mesh(doc, &at);
+    let (platform, joint) = platform_pieces(doc, &at);
+    let mut moving = vec![doc.mesh("platform", &platform)];
+    leg_meshes(doc, &at, joint, &mut moving);
+    Meshes { base, moving }
+}
+
+/// The base's mesh: its plate (or CAD part), its joints, and the servo bodies standing
+/// still where the renderer puts them.
+fn base_mesh(doc: &mut Document, at: &Home<'_>) -> json::Index<json::Mesh> {
+    let Home {
+        home,
+        looks,
+        shapes,
+        s,
+        ..
+    } = *at;
     let theme = looks.theme;
     let colour = |c: Srgba| doc_colour(c);
     let mut base: Pieces = Vec::new();
@@ -63,7 +98,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         Some(part) => base.extend(part_pieces(doc, part, theme.base_plate)),
         None => {
             let joints: Vec<Vec3> = home.base_joints.iter().map(v3).collect();
-            base.extend(plate(doc, &shapes, &joints, s, theme.base_plate));
+            base.extend(plate(doc, shapes, &joints, s, theme.base_plate));
         }
     }
     if home.servos.is_none() {
@@ -91,8 +126,21 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         let m = doc.material(body.color);
         base.push((g, m));
     }
-    let base = doc.mesh("base", &base);
+    doc.mesh("base", &base)
+}
 
+/// The platform's pieces in its own frame (its plate or CAD part, its joints where the
+/// platform frame holds them), and the joints' material.
+fn platform_pieces(doc: &mut Document, at: &Home<'_>) -> (Pieces, json::Index<json::Material>) {
+    let Home {
+        home,
+        looks,
+        shapes,
+        s,
+        ..
+    } = *at;
+    let theme = looks.theme;
+    let colour = |c: Srgba| doc_colour(c);
     // The platform in its own frame: its joints where the platform frame holds them.
     let mut platform: Pieces = match looks.parts.get(Part::Platform) {
         Some(part) => part_pieces(doc, part, theme.platform),
@@ -104,7 +152,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
                 .iter()
                 .map(|q| v3(&(to_local * (q - p.origin))))
                 .collect();
-            plate(doc, &shapes, &joints, s, theme.platform)
+            plate(doc, shapes, &joints, s, theme.platform)
         }
     };
     let joint = doc.material(colour(theme.joint));
@@ -114,8 +162,26 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         let g = doc.geometry(&shapes.sphere, ball(local, JOINT_RADIUS * s));
         platform.push((g, joint));
     }
-    let mut moving = vec![doc.mesh("platform", &platform)];
+    (platform, joint)
+}
 
+/// Each leg's meshes pushed to `moving`: a linear leg's cylinder and rod (the rod reaching
+/// into the body at the `longest` leg), or a servo's horn and rod.
+fn leg_meshes(
+    doc: &mut Document,
+    at: &Home<'_>,
+    joint: json::Index<json::Material>,
+    moving: &mut Vec<json::Index<json::Mesh>>,
+) {
+    let Home {
+        home,
+        looks,
+        shapes,
+        s,
+        longest,
+    } = *at;
+    let theme = looks.theme;
+    let colour = |c: Srgba| doc_colour(c);
     match &home.servos {
         None => {
             let home_length = home.legs[0].length as f32;
@@ -125,7 +191,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
                 along(Vec3::ZERO, Vec3::Y * body, BODY_RADIUS * s, [0.0; 4]).model_matrix();
             // The rod reaches into the body at the longest leg.
             let rod_length = longest.max(home_length) - body + 0.02 * s;
-            let rod = rod_pieces(doc, &shapes, looks, Vec3::NEG_Y * rod_length, Vec3::ZERO, s);
+            let rod = rod_pieces(doc, shapes, looks, Vec3::NEG_Y * rod_length, Vec3::ZERO, s);
             let rod = doc.mesh("rod", &rod);
             for k in 0..6 {
                 let studio = if looks.coloured {
@@ -146,7 +212,7 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
         }
         Some(servos) => {
             let rod_length = (home.legs[0].top - home.legs[0].base).norm() as f32;
-            let rod = rod_pieces(doc, &shapes, looks, Vec3::ZERO, Vec3::Y * rod_length, s);
+            let rod = rod_pieces(doc, shapes, looks, Vec3::ZERO, Vec3::Y * rod_length, s);
             let rod = doc.mesh("rod", &rod);
             let horn = (servos[0].horn_tip - servos[0].shaft).norm() as f32;
             let arm = along(Vec3::ZERO, Vec3::X * horn, 0.13 * horn, [0.0; 4]).model_matrix();
@@ -172,7 +238,6 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
             }
         }
     }
-    Meshes { base, moving }
 }
 
 /// The rod's pieces: its CAD part, or a tube from `from` to `to` in its frame (`s`: the
