@@ -208,8 +208,6 @@ impl DrawList {
         let mut list = DrawList::default();
         let s = frame.base_radius.max(frame.platform_radius) as f32;
         let joint_radius = JOINT_RADIUS * s;
-        let plate_thickness = PLATE_THICKNESS * s;
-
         let colours = LegColours {
             theme,
             coloured: overlays.coloured_legs,
@@ -228,12 +226,39 @@ impl DrawList {
                 .push(ball(v3(p), joint_radius, linear(theme.joint)));
         }
 
-        // Plates: the convex hull of the joints in each plate's z = 0 plane (the base's
-        // top face at z = 0), joints off that plane on posts.
         let rotation = Mat3::from_cols_array(&std::array::from_fn(|k| {
             frame.platform_rotation[(k % 3, k / 3)] as f32
         }));
         let centre = v3(&frame.platform_centre);
+        list.add_plates(frame, theme, drawn, (centre, rotation), s);
+
+        if overlays.base_axes {
+            list.axes(Vec3::ZERO, Mat3::IDENTITY, 0.45 * s, 0.012 * s, theme);
+        }
+        if overlays.platform_axes {
+            list.axes(centre, rotation, 0.30 * s, 0.009 * s, theme);
+        }
+        if overlays.grid {
+            list.grid(1.6 * s, theme);
+        }
+        if overlays.path {
+            list.add_path(frame, theme);
+        }
+        list
+    }
+
+    /// The plates the usual drawing shows (not those a CAD part replaces): the convex hull
+    /// of the joints in each plate's z = 0 plane (the base's top face at z = 0), joints off
+    /// that plane on posts; the platform's at `centre` turned by `rotation`.
+    fn add_plates(
+        &mut self,
+        frame: &SceneFrame,
+        theme: &Theme,
+        drawn: Drawn,
+        (centre, rotation): (Vec3, Mat3),
+        s: f32,
+    ) {
+        let plate_thickness = PLATE_THICKNESS * s;
         for (origin, axes, joints, colour, usual) in [
             (
                 Vec3::ZERO,
@@ -255,13 +280,13 @@ impl DrawList {
             }
             let world: Vec<Vec3> = joints.iter().map(v3).collect();
             let shape = plate_shape(origin, axes, &world, plate_thickness);
-            list.plates.push((
+            self.plates.push((
                 Mesh::plate(shape.centre, shape.normal, &shape.corners, plate_thickness),
                 linear(colour),
                 origin,
             ));
             for (foot, joint) in shape.posts {
-                list.cylinders.push(along(
+                self.cylinders.push(along(
                     foot,
                     joint,
                     0.6 * ROD_RADIUS * s,
@@ -269,30 +294,24 @@ impl DrawList {
                 ));
             }
         }
+    }
 
-        if overlays.base_axes {
-            list.axes(Vec3::ZERO, Mat3::IDENTITY, 0.45 * s, 0.012 * s, theme);
+    /// The traced path as line segments.
+    fn add_path(&mut self, frame: &SceneFrame, theme: &Theme) {
+        if frame.path.len() < 2 {
+            return;
         }
-        if overlays.platform_axes {
-            list.axes(centre, rotation, 0.30 * s, 0.009 * s, theme);
+        let c = linear(theme.path);
+        for pair in frame.path.windows(2) {
+            self.lines.push(LineVertex {
+                position: v3(&pair[0]).to_array(),
+                color: c,
+            });
+            self.lines.push(LineVertex {
+                position: v3(&pair[1]).to_array(),
+                color: c,
+            });
         }
-        if overlays.grid {
-            list.grid(1.6 * s, theme);
-        }
-        if overlays.path && frame.path.len() > 1 {
-            let c = linear(theme.path);
-            for pair in frame.path.windows(2) {
-                list.lines.push(LineVertex {
-                    position: v3(&pair[0]).to_array(),
-                    color: c,
-                });
-                list.lines.push(LineVertex {
-                    position: v3(&pair[1]).to_array(),
-                    color: c,
-                });
-            }
-        }
-        list
     }
 
     /// The platform as the controller measured it (`frame`: the scene at the pose its
