@@ -290,41 +290,7 @@ fn text_pipeline(
     format: wgpu::TextureFormat,
 ) -> (wgpu::RenderPipeline, wgpu::Texture, wgpu::BindGroup) {
     let layout = sampled_texture_layout(device, "glyph atlas");
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("glyph atlas"),
-        size: wgpu::Extent3d {
-            width: ATLAS_SIZE,
-            height: ATLAS_SIZE,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::R8Unorm,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    });
-    // Glyphs are placed on whole pixels at their own size: nearest sampling keeps them crisp.
-    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-        label: Some("glyph atlas"),
-        ..wgpu::SamplerDescriptor::default()
-    });
-    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("glyph atlas"),
-        layout: &layout,
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: wgpu::BindingResource::TextureView(
-                    &texture.create_view(&wgpu::TextureViewDescriptor::default()),
-                ),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: wgpu::BindingResource::Sampler(&sampler),
-            },
-        ],
-    });
+    let (texture, bind_group) = glyph_atlas(device, &layout);
     let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some("text"),
         bind_group_layouts: &[Some(globals), Some(&layout)],
@@ -370,6 +336,49 @@ fn text_pipeline(
         cache: None,
     });
     (pipeline, texture, bind_group)
+}
+
+/// The glyph atlas: a one-channel texture, sampled nearest (glyphs are placed on whole
+/// pixels at their own size, and so stay crisp), and its bind group of `layout`.
+fn glyph_atlas(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+) -> (wgpu::Texture, wgpu::BindGroup) {
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("glyph atlas"),
+        size: wgpu::Extent3d {
+            width: ATLAS_SIZE,
+            height: ATLAS_SIZE,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::R8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+        label: Some("glyph atlas"),
+        ..wgpu::SamplerDescriptor::default()
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("glyph atlas"),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: wgpu::BindingResource::TextureView(
+                    &texture.create_view(&wgpu::TextureViewDescriptor::default()),
+                ),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: wgpu::BindingResource::Sampler(&sampler),
+            },
+        ],
+    });
+    (texture, bind_group)
 }
 
 /// The layout of a picture's bind group (group 1): the texture and its sampler.
