@@ -228,26 +228,7 @@ fn clamp_surface(w: NonZeroU32, h: NonZeroU32) -> (NonZeroU32, NonZeroU32) {
 
 impl App {
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
-        let attributes = Window::default_attributes()
-            .with_title(self.state.window_title())
-            .with_inner_size({
-                // A HiDPI scale makes the window larger in pixels than asked in points:
-                // keep it within what the GPU can draw into.
-                let monitor = event_loop.primary_monitor();
-                let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
-                let screen = monitor.map(|m| {
-                    let s = m.size().to_logical::<f64>(scale);
-                    (s.width, s.height)
-                });
-                let asked = self.options.size.on_screen(screen);
-                self.logical_size = [asked.0, asked.1];
-                let (w, h) = fitting_size(asked, scale);
-                winit::dpi::LogicalSize::new(w, h)
-            })
-            .with_max_inner_size(winit::dpi::PhysicalSize::new(
-                MAX_SURFACE_SIDE,
-                MAX_SURFACE_SIDE,
-            ));
+        let attributes = self.attributes(event_loop);
         let window = Arc::new(
             event_loop
                 .create_window(attributes)
@@ -282,26 +263,7 @@ impl App {
         let render_state = painter
             .render_state()
             .ok_or_else(|| anyhow!("no GPU device for the window"))?;
-        // Shots and exports render on this device too: one device per process.
-        stewart_render::Gpu::adopt(stewart_render::Gpu {
-            instance: render_state.instance.clone(),
-            adapter: render_state.adapter.clone(),
-            device: render_state.device.clone(),
-            queue: render_state.queue.clone(),
-        });
-        let renderer = stewart_render::Renderer::new(
-            &render_state.device,
-            render_state.target_format,
-            samples,
-        );
-        render_state
-            .renderer
-            .write()
-            .callback_resources
-            .insert(callback::SceneResources::new(
-                &render_state.device,
-                renderer,
-            ));
+        share_device(&render_state, samples);
         self.state.quality = quality::Quality::new(samples == 1, quality::Policy::from_env());
         self.state.quality.window_clears = true;
         let srgb = render_state.target_format.is_srgb();
@@ -325,22 +287,39 @@ impl App {
         Ok(())
     }
 
+    /// The window's title and size: the size asked, on the primary monitor, within what
+    /// the GPU can draw into (a HiDPI scale makes the window larger in pixels than asked in
+    /// points).
+    fn attributes(&mut self, event_loop: &ActiveEventLoop) -> winit::window::WindowAttributes {
+        Window::default_attributes()
+            .with_title(self.state.window_title())
+            .with_inner_size({
+                // A HiDPI scale makes the window larger in pixels than asked in points:
+                // keep it within what the GPU can draw into.
+                let monitor = event_loop.primary_monitor();
+                let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
+                let screen = monitor.map(|m| {
+                    let s = m.size().to_logical::<f64>(scale);
+                    (s.width, s.height)
+                });
+                let asked = self.options.size.on_screen(screen);
+                self.logical_size = [asked.0, asked.1];
+                let (w, h) = fitting_size(asked, scale);
+                winit::dpi::LogicalSize::new(w, h)
+            })
+            .with_max_inner_size(winit::dpi::PhysicalSize::new(
+                MAX_SURFACE_SIDE,
+                MAX_SURFACE_SIDE,
+            ))
+    }
+
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         if self.open.is_none() {
             return;
         }
         let now = Instant::now();
         let frame_start = now;
-        // A screenshot run steps time by a fixed 1/60 s per frame so its image is reproducible.
-        let dt = if self.options.screenshot.is_some() {
-            1.0 / 60.0
-        } else {
-            crate::viewer::state::playback::frame_step(
-                (now - self.last).as_secs_f64(),
-                self.was_busy,
-            )
-        };
-        self.last = now;
+        let dt = self.time_step(now);
         self.state.advance(dt);
         self.poll_gamepad();
         let Some(open) = self.open.as_mut() else {
@@ -368,13 +347,7 @@ impl App {
         }
         let state = &mut self.state;
         self.was_busy = state.animating();
-        if state.look.fullscreen != self.fullscreen {
-            self.fullscreen = state.look.fullscreen;
-            open.window.set_fullscreen(
-                self.fullscreen
-                    .then_some(winit::window::Fullscreen::Borderless(None)),
-            );
-        }
+        follow_fullscreen(&open.window, state.look.fullscreen, &mut self.fullscreen);
         // Honour egui's own repaint requests (zero: at once; otherwise after the delay).
         self.repaint_at = output
             .viewport_output
@@ -416,6 +389,21 @@ impl App {
         self.times.count_drawn(self.state.quality.words_key());
         self.state.quality.record(total_ms);
         self.finish_shots(scaled, event_loop);
+    }
+
+    /// The time this frame moves the state by: the time since the last frame (see
+    /// `frame_step`), or a fixed 1/60 s in a screenshot run so its image is reproducible.
+    fn time_step(&mut self, now: Instant) -> f64 {
+        let dt = if self.options.screenshot.is_some() {
+            1.0 / 60.0
+        } else {
+            crate::viewer::state::playback::frame_step(
+                (now - self.last).as_secs_f64(),
+                self.was_busy,
+            )
+        };
+        self.last = now;
+        dt
     }
 
     /// Read the gamepad, and say in the Motion panel which one it is (or why there is none).
@@ -730,6 +718,37 @@ impl ApplicationHandler for App {
             ));
         }
     }
+}
+
+/// The window made full screen, or not, when the look `wanted` it otherwise than it is
+/// (`shown`, updated).
+fn follow_fullscreen(window: &Window, wanted: bool, shown: &mut bool) {
+    if wanted != *shown {
+        *shown = wanted;
+        window.set_fullscreen(wanted.then_some(winit::window::Fullscreen::Borderless(None)));
+    }
+}
+
+/// The window's device made the process's one (shots and exports render on it too), and
+/// the 3D view's renderer on it for the window's format and `samples`.
+fn share_device(render_state: &egui_wgpu::RenderState, samples: u32) {
+    // Shots and exports render on this device too: one device per process.
+    stewart_render::Gpu::adopt(stewart_render::Gpu {
+        instance: render_state.instance.clone(),
+        adapter: render_state.adapter.clone(),
+        device: render_state.device.clone(),
+        queue: render_state.queue.clone(),
+    });
+    let renderer =
+        stewart_render::Renderer::new(&render_state.device, render_state.target_format, samples);
+    render_state
+        .renderer
+        .write()
+        .callback_resources
+        .insert(callback::SceneResources::new(
+            &render_state.device,
+            renderer,
+        ));
 }
 
 #[cfg(test)]
