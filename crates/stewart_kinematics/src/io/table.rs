@@ -196,35 +196,7 @@ impl NumericTable {
         };
         let header = reader.headers().map_err(unreadable)?.clone();
         let header_line = lines.of(header.position());
-        for (i, name) in header.iter().enumerate() {
-            if header.iter().skip(i + 1).any(|other| other == name) {
-                return Err(TableError::DuplicateColumn {
-                    file: file.to_owned(),
-                    line: header_line,
-                    column: name.to_owned(),
-                });
-            }
-        }
-        let mut columns = Vec::new();
-        let mut positions = Vec::new();
-        for name in required {
-            let Some(pos) = header.iter().position(|h| h == *name) else {
-                return Err(TableError::MissingColumn {
-                    file: file.to_owned(),
-                    line: header_line,
-                    column: (*name).to_owned(),
-                    expected: required.join(","),
-                });
-            };
-            columns.push((*name).to_owned());
-            positions.push(pos);
-        }
-        for name in optional {
-            if let Some(pos) = header.iter().position(|h| h == *name) {
-                columns.push((*name).to_owned());
-                positions.push(pos);
-            }
-        }
+        let (columns, positions) = chosen_columns(&header, header_line, file, required, optional)?;
         let mut values = Vec::new();
         let mut row_lines = Vec::new();
         let mut record = csv::StringRecord::new();
@@ -259,6 +231,48 @@ impl NumericTable {
             lines: row_lines,
         })
     }
+}
+
+/// The columns a table keeps, required then optional ones present, and where each is in
+/// the `header` (on line `header_line`): refused when a name repeats or a required one is
+/// missing.
+fn chosen_columns(
+    header: &csv::StringRecord,
+    header_line: u64,
+    file: &str,
+    required: &[&str],
+    optional: &[&str],
+) -> Result<(Vec<String>, Vec<usize>), TableError> {
+    for (i, name) in header.iter().enumerate() {
+        if header.iter().skip(i + 1).any(|other| other == name) {
+            return Err(TableError::DuplicateColumn {
+                file: file.to_owned(),
+                line: header_line,
+                column: name.to_owned(),
+            });
+        }
+    }
+    let mut columns = Vec::new();
+    let mut positions = Vec::new();
+    for name in required {
+        let Some(pos) = header.iter().position(|h| h == *name) else {
+            return Err(TableError::MissingColumn {
+                file: file.to_owned(),
+                line: header_line,
+                column: (*name).to_owned(),
+                expected: required.join(","),
+            });
+        };
+        columns.push((*name).to_owned());
+        positions.push(pos);
+    }
+    for name in optional {
+        if let Some(pos) = header.iter().position(|h| h == *name) {
+            columns.push((*name).to_owned());
+            positions.push(pos);
+        }
+    }
+    Ok((columns, positions))
 }
 
 /// Line numbers of byte offsets that only move forward: counting resumes where the

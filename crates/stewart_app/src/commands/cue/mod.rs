@@ -82,11 +82,7 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
         samples,
     )
     .map_err(place)?;
-    let mut csv = CsvText::with_header(&POSE_COLUMNS);
-    for ((t, _), pose) in samples.iter().zip(&cued.poses) {
-        csv.row(std::iter::once(*t).chain(pose.to_row()));
-    }
-    let text = csv.into_string();
+    let text = pose_table(samples, &cued.poses);
     output::emit_with(out.as_ref(), |w| w.write_all(text.as_bytes()))?;
     let mut said = summary(samples, &cued.scales);
     if let Some(p) = cued
@@ -109,6 +105,15 @@ pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     }
     let _ = std::io::stderr().write_all(said.as_bytes());
     Ok(ExitCode::SUCCESS)
+}
+
+/// The cued poses as a pose table, each at its sample's time.
+fn pose_table(samples: &[(f64, VehicleMotion)], poses: &[Pose]) -> String {
+    let mut csv = CsvText::with_header(&POSE_COLUMNS);
+    for ((t, _), pose) in samples.iter().zip(poses) {
+        csv.row(std::iter::once(*t).chain(pose.to_row()));
+    }
+    csv.into_string()
 }
 
 /// What the actuator guard did, in one sentence, of `poses` poses.
