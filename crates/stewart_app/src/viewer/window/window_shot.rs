@@ -101,48 +101,63 @@ pub(crate) fn render(
         }
         renderer.update_buffers(device, queue, &mut encoder, primitives, &screen)
     };
-    {
-        let msaa = targets
-            .msaa
-            .as_ref()
-            .map(|t| t.create_view(&Default::default()));
-        let resolve = targets.resolve.create_view(&Default::default());
-        let (view, resolve_target) = match &msaa {
-            Some(msaa) => (msaa, Some(&resolve)),
-            None => (&resolve, None),
-        };
-        let depth = targets.depth.create_view(&Default::default());
-        let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("window-shot"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
-                resolve_target,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color {
-                        r: f64::from(clear[0]),
-                        g: f64::from(clear[1]),
-                        b: f64::from(clear[2]),
-                        a: f64::from(clear[3]),
-                    }),
-                    store: wgpu::StoreOp::Store,
-                },
-                depth_slice: None,
-            })],
-            depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        let renderer = rs.renderer.read();
-        renderer.render(&mut pass.forget_lifetime(), primitives, &screen);
-    }
+    draw_pass(rs, &mut encoder, &targets, primitives, &screen, clear);
     let readback = Readback::new(device, "window-shot readback", size[0], size[1]);
     readback.copy_from(&mut encoder, &targets.resolve);
     commands.push(encoder.finish());
     queue.submit(commands);
     let data = readback.read(device).map_err(ViewerError::Readback)?;
+    Ok(colour_image(&data, size, rs.target_format))
+}
+
+/// The pass that draws the window's `primitives` into `targets`, cleared to `clear`.
+fn draw_pass(
+    rs: &egui_wgpu::RenderState,
+    encoder: &mut wgpu::CommandEncoder,
+    targets: &Targets,
+    primitives: &[ClippedPrimitive],
+    screen: &egui_wgpu::ScreenDescriptor,
+    clear: [f32; 4],
+) {
+    let msaa = targets
+        .msaa
+        .as_ref()
+        .map(|t| t.create_view(&Default::default()));
+    let resolve = targets.resolve.create_view(&Default::default());
+    let (view, resolve_target) = match &msaa {
+        Some(msaa) => (msaa, Some(&resolve)),
+        None => (&resolve, None),
+    };
+    let depth = targets.depth.create_view(&Default::default());
+    let pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("window-shot"),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view,
+            resolve_target,
+            ops: wgpu::Operations {
+                load: wgpu::LoadOp::Clear(wgpu::Color {
+                    r: f64::from(clear[0]),
+                    g: f64::from(clear[1]),
+                    b: f64::from(clear[2]),
+                    a: f64::from(clear[3]),
+                }),
+                store: wgpu::StoreOp::Store,
+            },
+            depth_slice: None,
+        })],
+        depth_stencil_attachment: Some(stewart_render::targets::cleared_depth(&depth)),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
+    let renderer = rs.renderer.read();
+    renderer.render(&mut pass.forget_lifetime(), primitives, screen);
+}
+
+/// Pixels read back in the target's `format` as an opaque egui image of `size`.
+fn colour_image(data: &[u8], size: [u32; 2], format: wgpu::TextureFormat) -> egui::ColorImage {
     let bgra = matches!(
-        rs.target_format,
+        format,
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
     );
     let pixels = data
@@ -152,8 +167,5 @@ pub(crate) fn render(
             egui::Color32::from_rgba_premultiplied(r, p[1], b, 255)
         })
         .collect();
-    Ok(egui::ColorImage::new(
-        [size[0] as usize, size[1] as usize],
-        pixels,
-    ))
+    egui::ColorImage::new([size[0] as usize, size[1] as usize], pixels)
 }
