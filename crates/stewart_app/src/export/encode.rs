@@ -649,20 +649,32 @@ pub fn export(
     });
     let sink_failed = rendered.is_ok() && written.is_err();
     if let Some(e) = first_failure(rendered, written, stop) {
-        let mut e = e;
-        if let Some(f) = ffmpeg.as_mut() {
-            // ffmpeg that quit by itself explains a failed write better than the write does;
-            // its input may close a moment before it exits, so give it a little time.
-            let quit = sink_failed && f.exited_with_failure(std::time::Duration::from_secs(2));
-            f.kill();
-            if quit && let Some(Staging::Mp4 { file, out, .. }) = &staging {
-                e = anyhow!("ffmpeg failed: {}", f.message(file, out.shown()));
-            }
-        }
-        // Staged files go only now, after ffmpeg is gone.
-        drop(staging);
-        return Err(e);
+        return Err(failed_export(e, sink_failed, staging, ffmpeg.as_mut()));
     }
     let staging = staging.ok_or_else(|| anyhow!("internal error: no output"))?;
     staging.finish(ffmpeg.as_mut())
+}
+
+/// The error an export ends with, `e` or what ffmpeg said when it quit by itself (the
+/// sink failed: ffmpeg explains a failed write better than the write does); ffmpeg
+/// stopped and only then the staged files dropped.
+fn failed_export(
+    e: anyhow::Error,
+    sink_failed: bool,
+    staging: Option<Staging>,
+    ffmpeg: Option<&mut FfmpegChild>,
+) -> anyhow::Error {
+    let mut e = e;
+    if let Some(f) = ffmpeg {
+        // ffmpeg that quit by itself explains a failed write better than the write does;
+        // its input may close a moment before it exits, so give it a little time.
+        let quit = sink_failed && f.exited_with_failure(std::time::Duration::from_secs(2));
+        f.kill();
+        if quit && let Some(Staging::Mp4 { file, out, .. }) = &staging {
+            e = anyhow!("ffmpeg failed: {}", f.message(file, out.shown()));
+        }
+    }
+    // Staged files go only now, after ffmpeg is gone.
+    drop(staging);
+    e
 }
