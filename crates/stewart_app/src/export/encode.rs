@@ -389,6 +389,14 @@ impl Staging {
             _ => bail!("internal error: a frame of the wrong kind"),
         }
     }
+    /// A folder of frames' staging folder and the digits of its file names (`None`, 0 for
+    /// a file).
+    fn folder(&self) -> (Option<PathBuf>, usize) {
+        match self {
+            Staging::Folder { dir, digits, .. } => (Some(dir.path().to_path_buf()), *digits),
+            _ => (None, 0),
+        }
+    }
 
     /// Move the finished output into place (ffmpeg, when there is one, has finished).
     fn finish(self, ffmpeg: Option<&mut FfmpegChild>) -> Result<()> {
@@ -582,14 +590,7 @@ pub fn export(
         mut staging,
         mut ffmpeg,
     } = Staging::open(target, first.0, first.1, fps, indices.end.saturating_sub(1))?;
-    let staged_dir = match &staging {
-        Staging::Folder { dir, .. } => Some(dir.path().to_path_buf()),
-        _ => None,
-    };
-    let digits = match &staging {
-        Staging::Folder { digits, .. } => *digits,
-        _ => 0,
-    };
+    let (staged_dir, digits) = staging.folder();
     let workers = std::thread::available_parallelism()
         .map_or(2, |n| n.get())
         .clamp(1, 8);
