@@ -84,15 +84,8 @@ pub(super) fn build(doc: &mut Document, home: &SceneFrame, looks: &Looks, longes
 /// The base's mesh: its plate (or CAD part), its joints, and the servo bodies standing
 /// still where the renderer puts them.
 fn base_mesh(doc: &mut Document, at: &Home<'_>) -> json::Index<json::Mesh> {
-    let Home {
-        home,
-        looks,
-        shapes,
-        s,
-        ..
-    } = *at;
+    let (home, looks, shapes, s) = (at.home, at.looks, at.shapes, at.s);
     let theme = looks.theme;
-    let colour = |c: Srgba| doc_colour(c);
     let mut base: Pieces = Vec::new();
     match looks.parts.get(Part::Base) {
         Some(part) => base.extend(part_pieces(doc, part, theme.base_plate)),
@@ -102,7 +95,7 @@ fn base_mesh(doc: &mut Document, at: &Home<'_>) -> json::Index<json::Mesh> {
         }
     }
     if home.servos.is_none() {
-        let joint = doc.material(colour(theme.joint));
+        let joint = doc.material(doc_colour(theme.joint));
         for p in &home.base_joints {
             let g = doc.geometry(&shapes.sphere, ball(v3(p), JOINT_RADIUS * s));
             base.push((g, joint));
@@ -132,15 +125,8 @@ fn base_mesh(doc: &mut Document, at: &Home<'_>) -> json::Index<json::Mesh> {
 /// The platform's pieces in its own frame (its plate or CAD part, its joints where the
 /// platform frame holds them), and the joints' material.
 fn platform_pieces(doc: &mut Document, at: &Home<'_>) -> (Pieces, json::Index<json::Material>) {
-    let Home {
-        home,
-        looks,
-        shapes,
-        s,
-        ..
-    } = *at;
+    let (home, looks, shapes, s) = (at.home, at.looks, at.shapes, at.s);
     let theme = looks.theme;
-    let colour = |c: Srgba| doc_colour(c);
     // The platform in its own frame: its joints where the platform frame holds them.
     let mut platform: Pieces = match looks.parts.get(Part::Platform) {
         Some(part) => part_pieces(doc, part, theme.platform),
@@ -155,7 +141,7 @@ fn platform_pieces(doc: &mut Document, at: &Home<'_>) -> (Pieces, json::Index<js
             plate(doc, shapes, &joints, s, theme.platform)
         }
     };
-    let joint = doc.material(colour(theme.joint));
+    let joint = doc.material(doc_colour(theme.joint));
     let p = home.platform_placement();
     for q in &home.platform_joints {
         let local = v3(&(p.rotation.inverse() * (q - p.origin)));
@@ -173,15 +159,9 @@ fn leg_meshes(
     joint: json::Index<json::Material>,
     moving: &mut Vec<json::Index<json::Mesh>>,
 ) {
-    let Home {
-        home,
-        looks,
-        shapes,
-        s,
-        longest,
-    } = *at;
+    let (home, looks, shapes, s) = (at.home, at.looks, at.shapes, at.s);
+    let longest = at.longest;
     let theme = looks.theme;
-    let colour = |c: Srgba| doc_colour(c);
     match &home.servos {
         None => {
             let home_length = home.legs[0].length as f32;
@@ -203,7 +183,7 @@ fn leg_meshes(
                     Some(part) => part_pieces(doc, part, studio),
                     None => vec![(
                         doc.geometry(&shapes.cylinder, body_shape),
-                        doc.material(colour(studio)),
+                        doc.material(doc_colour(studio)),
                     )],
                 };
                 moving.push(doc.mesh(&format!("leg{}_cylinder", k + 1), &pieces));
@@ -228,7 +208,7 @@ fn leg_meshes(
                     None => vec![
                         (
                             doc.geometry(&shapes.cylinder, arm),
-                            doc.material(colour(studio)),
+                            doc.material(doc_colour(studio)),
                         ),
                         (doc.geometry(&shapes.sphere, tip), joint),
                     ],
