@@ -9,9 +9,11 @@ bash scripts/setup.sh
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 cargo fmt --all --check
 # The kinematics core's layers (model -> solve -> analysis, io beside): no import or call
-# goes up a layer beyond the exceptions ARCHITECTURE.md lists.
+# goes up a layer beyond the exceptions it lists (docs/modules.md says why).
 python3 scripts/layer-check.py
-# ARCHITECTURE.md true: every module it names exists, every public module is named.
+# ARCHITECTURE.md and docs/modules.md true: every module they name exists, every public
+# module is named, and the rules the map states hold (no import circles, the shell imported
+# only from above, the top-level folders reached by their owners, the crates' walls).
 python3 scripts/architecture-check.py
 cargo clippy --workspace --all-targets -- -D warnings
 cargo test --workspace
