@@ -408,7 +408,7 @@ from_below! {
 }
 
 /// The outcome of the last file or export action, shown until the next one.
-pub(crate) type Status = Option<Result<String, ViewerError>>;
+pub(crate) type ActionStatus = Option<Result<String, ViewerError>>;
 
 /// Why a job gave no result.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -261,7 +261,7 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
             }
             marker(plot);
         });
-    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::Entry {
+    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::LegendEntry {
         colour: leg_colour(axis),
         words: t.tr(words),
         dashed,
@@ -298,8 +298,8 @@ fn plots(ui: &mut egui::Ui, c: &Channels, t: Lang, now: Option<f64>) {
 
 /// The force plot's legend: each axis's vehicle (dashed) and platform (solid), and the
 /// other algorithm's when two are compared.
-fn force_legend(compared: bool, t: Lang) -> Vec<side_plot::Entry<'static>> {
-    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::Entry {
+fn force_legend(compared: bool, t: Lang) -> Vec<side_plot::LegendEntry<'static>> {
+    let entry = |axis: usize, words: &'static str, dashed: bool| side_plot::LegendEntry {
         colour: leg_colour(axis),
         words: t.tr(words),
         dashed,
@@ -313,7 +313,7 @@ fn force_legend(compared: bool, t: Lang) -> Vec<side_plot::Entry<'static>> {
     ];
     if compared {
         for (axis, words) in [(0, "cueing.other_x"), (1, "cueing.other_y")] {
-            entries.push(side_plot::Entry {
+            entries.push(side_plot::LegendEntry {
                 colour: leg_colour(axis).gamma_multiply(0.6),
                 words: t.tr(words),
                 dashed: false,

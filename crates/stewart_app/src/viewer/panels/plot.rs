@@ -5,7 +5,7 @@
 use egui::Color32;
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, PlotPoints, Text, VLine};
 
-use super::plot_picture::{Pictured, Session};
+use super::plot_picture::{PictureSession, Pictured};
 use stewart_kinematics::model::actuator::Quantity;
 
 use crate::i18n::words;
@@ -206,7 +206,7 @@ fn plot(
     // Shown from a picture where the window draws one (see `plot_picture`); never in
     // rolling mode, where the curves change every frame.
     let session = (pictured && !rolling)
-        .then(|| Session::new(data, ui.ctx().pixels_per_point(), &look.curves_picture));
+        .then(|| PictureSession::new(data, ui.ctx().pixels_per_point(), &look.curves_picture));
     let shown = plot.show(ui, |plot| {
         match &session {
             Some(session) => {

@@ -23,8 +23,8 @@ use egui_plot::{PlotGeometry, PlotItem, PlotItemBase, PlotTransform};
 use crate::viewer::state::plot_memory::{CurvesPicture, DrawnPicture, PictureKey, WantedPicture};
 
 /// One frame's plot and the picture: built before the plot, read by its items, closed
-/// after it ([`Session::finish`]).
-pub(crate) struct Session {
+/// after it ([`PictureSession::finish`]).
+pub(crate) struct PictureSession {
     data: u64,
     pixels_per_point: f32,
     drawn: Option<DrawnPicture>,
@@ -36,7 +36,7 @@ pub(crate) struct Session {
     recorded: RefCell<(Vec<Shape>, Rect)>,
 }
 
-impl Session {
+impl PictureSession {
     /// A session for curves whose data and style hash to `data`, at `pixels_per_point`,
     /// with the picture drawn so far.
     pub(crate) fn new(data: u64, pixels_per_point: f32, picture: &CurvesPicture) -> Self {
@@ -130,7 +130,7 @@ pub(crate) fn on_pixels(frame: Rect, pixels_per_point: f32) -> Rect {
 
 /// The plot item that shows the picture when it shows this frame's curves.
 pub(crate) struct PictureItem<'s> {
-    session: &'s Session,
+    session: &'s PictureSession,
     base: PlotItemBase,
 }
 
@@ -198,7 +198,7 @@ pub(crate) struct Pictured<'s, I> {
     /// The curve.
     pub(crate) item: I,
     /// This frame's session.
-    pub(crate) session: &'s Session,
+    pub(crate) session: &'s PictureSession,
 }
 
 impl<I: PlotItem> PlotItem for Pictured<'_, I> {

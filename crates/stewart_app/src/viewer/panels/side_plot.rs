@@ -19,7 +19,7 @@ pub(crate) fn plot(id: &str, height: f32, time: &str) -> Plot<'static> {
 }
 
 /// One entry of a legend: colour, words, dashed or solid, line width.
-pub(crate) struct Entry<'a> {
+pub(crate) struct LegendEntry<'a> {
     /// The line's colour.
     pub(crate) colour: Color32,
     /// What it is.
@@ -33,7 +33,7 @@ pub(crate) struct Entry<'a> {
 /// A legend below a plot, outside its data: a short line drawn as the curve is, and its
 /// words, wrapping to the panel's width between entries, never inside one (a swatch stays
 /// with its words).
-pub(crate) fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
+pub(crate) fn legend(ui: &mut egui::Ui, entries: &[LegendEntry<'_>]) {
     ui.horizontal_wrapped(|ui| {
         for e in entries {
             entry(ui, e);
@@ -43,7 +43,7 @@ pub(crate) fn legend(ui: &mut egui::Ui, entries: &[Entry<'_>]) {
 }
 
 /// One legend entry as a single widget: its swatch and its words, never parted.
-fn entry(ui: &mut egui::Ui, e: &Entry<'_>) {
+fn entry(ui: &mut egui::Ui, e: &LegendEntry<'_>) {
     let galley = egui::WidgetText::from(e.words).into_galley(
         ui,
         Some(egui::TextWrapMode::Extend),

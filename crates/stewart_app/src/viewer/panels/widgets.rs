@@ -6,7 +6,7 @@ use stewart_kinematics::io::settings::{self, Group, Setting, SettingTarget, Unit
 
 use crate::i18n::Lang;
 use crate::i18n::words::{setting_label, setting_label_with_unit};
-use crate::viewer::error::Status;
+use crate::viewer::error::ActionStatus;
 use crate::viewer::error::ViewerError;
 use crate::viewer::state::document::Document;
 use crate::viewer::state::editor::Editor;
@@ -335,7 +335,7 @@ fn slider<'a>(
 }
 
 /// The outcome of the last action, green or red (an error in `t`'s words).
-pub(crate) fn status(ui: &mut egui::Ui, status: &Status, t: Lang) {
+pub(crate) fn status(ui: &mut egui::Ui, status: &ActionStatus, t: Lang) {
     match status {
         Some(Ok(message)) => {
             ui.label(RichText::new(message).color(OK));

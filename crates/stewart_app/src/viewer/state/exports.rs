@@ -2,7 +2,7 @@
 //! its own thread, and the outcome of the last one.
 
 use crate::i18n::Lang;
-use crate::viewer::error::Status;
+use crate::viewer::error::ActionStatus;
 use crate::viewer::state::export_job::ExportJob;
 
 /// What the export panel will write.
@@ -166,7 +166,7 @@ pub(crate) struct Exports {
     /// The export running or last run.
     pub(crate) job: Option<ExportJob>,
     /// What the last export did.
-    pub(crate) status: Status,
+    pub(crate) status: ActionStatus,
     /// Where the running export writes (absolute).
     pub(crate) writing: Option<std::path::PathBuf>,
     /// What the last export that succeeded wrote (absolute): *Show in folder* opens its

@@ -18,7 +18,7 @@ pub(crate) struct Files {
     /// The scenario file opened or saved last (Ctrl+S writes there without asking).
     pub(crate) current: Option<PathBuf>,
     /// What the last open or save did.
-    pub(crate) status: crate::viewer::error::Status,
+    pub(crate) status: crate::viewer::error::ActionStatus,
     /// The open/save dialog, while one is shown.
     pub(crate) picker: Option<Picker>,
     /// A write waiting for the answer to "replace it?".

@@ -62,7 +62,7 @@ pub(crate) enum CommandedFrom {
 pub(crate) struct LiveLink {
     running: Option<Running>,
     /// The outcome of the last connect or stream (shown until the next).
-    pub(crate) status: crate::viewer::error::Status,
+    pub(crate) status: crate::viewer::error::ActionStatus,
     /// The last lines of a dry run (newest last).
     recent: Arc<Mutex<VecDeque<String>>>,
     /// The language of the status messages (the viewer's).

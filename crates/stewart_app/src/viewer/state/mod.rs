@@ -41,7 +41,7 @@ use crate::viewer::state::files::Files;
 use crate::viewer::state::live_link::LiveLink;
 use crate::viewer::state::look::Look;
 use crate::viewer::state::playback::{MotionMode, Playback};
-use crate::viewer::state::teleop::{Command, PadState, Rates};
+use crate::viewer::state::teleop::{PadState, Rates, TeleopCommand};
 
 /// Everything the viewer shows.
 pub struct ViewerState {
@@ -97,7 +97,7 @@ pub(crate) struct Teleop {
     /// How fast a full command moves.
     pub(crate) rates: Rates,
     /// Why the last move stopped at the edge of the reachable set.
-    pub(crate) blocked: Option<teleop::OutOfReach>,
+    pub(crate) blocked: Option<teleop::ReachEdge>,
     /// Whether input is moving the platform (the window keeps drawing).
     pub(crate) moving: bool,
     /// The gamepad's state this frame (set by the window; `None` without one).
@@ -167,7 +167,7 @@ impl ViewerState {
 
     /// Move the manual pose by a velocity command for `dt` seconds (keyboard and gamepad),
     /// stopping at the edge of the reachable set. Only in manual mode.
-    pub(crate) fn teleoperate(&mut self, command: Command, dt: f64) {
+    pub(crate) fn teleoperate(&mut self, command: TeleopCommand, dt: f64) {
         self.teleop.moving = command.moving() && self.playback.mode == MotionMode::Manual;
         if !self.teleop.moving {
             return;

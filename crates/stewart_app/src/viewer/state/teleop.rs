@@ -22,22 +22,22 @@ const EDGE_STEPS: usize = 30;
 
 /// A velocity command: each axis (x, y, z, roll, pitch, yaw) from −1 to 1 of its rate.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct Command {
+pub(crate) struct TeleopCommand {
     /// Fractions of the rates, in pose order.
     pub(crate) velocity: [f64; 6],
     /// Move at a fifth of the rates.
     pub(crate) fine: bool,
 }
 
-impl Command {
+impl TeleopCommand {
     /// Whether it moves anything.
     pub(crate) fn moving(&self) -> bool {
         self.velocity.iter().any(|v| *v != 0.0)
     }
 
     /// Both commands together, each axis clamped to ±1.
-    pub(crate) fn plus(self, other: Command) -> Command {
-        Command {
+    pub(crate) fn plus(self, other: TeleopCommand) -> TeleopCommand {
+        TeleopCommand {
             velocity: std::array::from_fn(|k| {
                 (self.velocity[k] + other.velocity[k]).clamp(-1.0, 1.0)
             }),
@@ -57,8 +57,8 @@ pub(crate) const KEYS: [(egui::Key, egui::Key); 6] = [
 ];
 
 /// The command of the keys held down (`down` tells whether a key is held).
-pub(crate) fn from_keys(down: impl Fn(egui::Key) -> bool, shift: bool) -> Command {
-    Command {
+pub(crate) fn from_keys(down: impl Fn(egui::Key) -> bool, shift: bool) -> TeleopCommand {
+    TeleopCommand {
         velocity: KEYS.map(|(plus, minus)| {
             f64::from(u8::from(down(plus))) - f64::from(u8::from(down(minus)))
         }),
@@ -84,9 +84,9 @@ pub(crate) struct PadState {
 
 /// The command of a gamepad: nothing unless the dead-man button is held; stick travel
 /// inside the dead zone counts as zero and the rest is rescaled to reach 1.
-pub(crate) fn from_pad(p: &PadState) -> Command {
+pub(crate) fn from_pad(p: &PadState) -> TeleopCommand {
     if !p.deadman {
-        return Command::default();
+        return TeleopCommand::default();
     }
     let stick = |v: f32| {
         if !v.is_finite() || v.abs() < DEADZONE {
@@ -95,7 +95,7 @@ pub(crate) fn from_pad(p: &PadState) -> Command {
             f64::from(v.signum() * (v.abs().min(1.0) - DEADZONE) / (1.0 - DEADZONE))
         }
     };
-    Command {
+    TeleopCommand {
         // Stick up moves forward (+x), stick right moves right (−y, y points left).
         velocity: [
             stick(p.left[1]),
@@ -130,7 +130,7 @@ impl Rates {
 
 /// Why a pose cannot be taken.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum OutOfReach {
+pub(crate) enum ReachEdge {
     /// A coordinate is NaN or infinite.
     NotANumber,
     /// No horn angle of servo `servo` (from 1) closes its rod; `ratio` is |L|/√(M²+N²)
@@ -156,12 +156,12 @@ pub(crate) enum OutOfReach {
     },
 }
 
-impl OutOfReach {
+impl ReachEdge {
     /// The reason in `lang`.
     pub(crate) fn words(&self, lang: Lang) -> String {
         match *self {
-            OutOfReach::NotANumber => lang.tr("teleop.not_a_number").to_owned(),
-            OutOfReach::Servo { servo, ratio } => lang.fmt(
+            ReachEdge::NotANumber => lang.tr("teleop.not_a_number").to_owned(),
+            ReachEdge::Servo { servo, ratio } => lang.fmt(
                 "teleop.servo_unreachable",
                 &[
                     ("n", &servo),
@@ -171,7 +171,7 @@ impl OutOfReach {
                     ),
                 ],
             ),
-            OutOfReach::Limit {
+            ReachEdge::Limit {
                 n,
                 value,
                 limit,
@@ -199,17 +199,17 @@ impl OutOfReach {
 
 /// Why `pose` cannot be taken: a leg outside its stroke, a servo outside its range or
 /// unable to reach; `None` when it can.
-pub(crate) fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
+pub(crate) fn unreachable(g: &Geometry, pose: &Pose) -> Option<ReachEdge> {
     let c = pose.to_coordinates();
     if c.iter().any(|v| !v.is_finite()) {
-        return Some(OutOfReach::NotANumber);
+        return Some(ReachEdge::NotANumber);
     }
     let [lo, hi] = g.quantity_limits();
     let kind = g.actuator().kind();
     let values = match g.actuator_values_at(pose) {
         Ok(values) => values,
         Err(e) => {
-            return Some(OutOfReach::Servo {
+            return Some(ReachEdge::Servo {
                 servo: e.servo,
                 ratio: e.ratio,
             });
@@ -217,7 +217,7 @@ pub(crate) fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
     };
     values.iter().enumerate().find_map(|(k, &value)| {
         let n = k + 1;
-        let limit = |limit, below| OutOfReach::Limit {
+        let limit = |limit, below| ReachEdge::Limit {
             n,
             value,
             limit,
@@ -238,10 +238,10 @@ pub(crate) fn unreachable(g: &Geometry, pose: &Pose) -> Option<OutOfReach> {
 pub(crate) fn step(
     g: &Geometry,
     pose: &Pose,
-    command: &Command,
+    command: &TeleopCommand,
     rates: Rates,
     dt: f64,
-) -> (Pose, Option<OutOfReach>) {
+) -> (Pose, Option<ReachEdge>) {
     if !(command.moving() && dt.is_finite() && dt > 0.0) {
         return (*pose, None);
     }
@@ -322,7 +322,7 @@ mod tests {
             angular_deg_s: 10.0,
         };
         let home = g.home_pose();
-        let up = Command {
+        let up = TeleopCommand {
             velocity: [0.0, 0.0, 1.0, 0.0, 0.0, 0.5],
             fine: false,
         };
@@ -330,11 +330,11 @@ mod tests {
         assert_eq!(why, None);
         assert!((p.position.z - home.position.z - 0.05).abs() < 1e-12);
         assert!((p.yaw.degrees() - 2.5).abs() < 1e-9);
-        let fine = Command { fine: true, ..up };
+        let fine = TeleopCommand { fine: true, ..up };
         let (p, _) = step(g, &home, &fine, rates, 0.5);
         assert!((p.position.z - home.position.z - 0.01).abs() < 1e-12);
         // Up for ten seconds: the legs reach their 1.30 m maximum and the move stops there.
-        let straight_up = Command {
+        let straight_up = TeleopCommand {
             velocity: [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
             fine: false,
         };
@@ -348,7 +348,7 @@ mod tests {
         let (q, why) = step(g, &p, &straight_up, rates, 0.1);
         assert!(why.is_some());
         assert!((q.position.z - p.position.z).abs() < 1e-6);
-        let down = Command {
+        let down = TeleopCommand {
             velocity: [0.0, 0.0, -1.0, 0.0, 0.0, 0.0],
             fine: false,
         };
@@ -360,7 +360,7 @@ mod tests {
         let s = Scenario::preset("servo-desk").unwrap_or_else(|e| panic!("{e}"));
         let g = &s.geometry;
         let rates = Rates::for_geometry(g);
-        let up = Command {
+        let up = TeleopCommand {
             velocity: [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
             fine: false,
         };

@@ -9,7 +9,7 @@ use std::sync::Arc;
 use stewart_render::{DrawList, Offscreen, OrbitCamera, Theme};
 
 use crate::i18n::Lang;
-use crate::viewer::error::Status;
+use crate::viewer::error::ActionStatus;
 use crate::viewer::error::ViewerError;
 use crate::viewer::tools::job::Job;
 
@@ -36,14 +36,14 @@ pub(crate) struct Shots {
     /// A transparent background (3D view only).
     pub(crate) transparent: bool,
     /// Where the last shot went or why it failed.
-    pub(crate) status: Status,
+    pub(crate) status: ActionStatus,
     /// When that was said (a success is shown for [`SAID_FOR`], then goes).
     said_at: Option<std::time::Instant>,
     /// A whole-window shot the window is to take at its next frame.
     pub(crate) window_request: Option<(PathBuf, ShotScale)>,
     /// The folder shots are saved in (the current folder).
     pub(crate) folder: PathBuf,
-    job: Job<Status>,
+    job: Job<ActionStatus>,
     /// The language of the outcome's words.
     lang: Lang,
 }
@@ -132,7 +132,7 @@ impl Shots {
     }
 
     /// Say `status` (where a shot went, or why it failed), from now.
-    pub(crate) fn say(&mut self, status: Status) {
+    pub(crate) fn say(&mut self, status: ActionStatus) {
         self.status = status;
         self.said_at = Some(std::time::Instant::now());
     }
