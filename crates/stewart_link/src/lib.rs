@@ -2,8 +2,6 @@
 //!
 //! - [`boards`]: hobby controller boards on several serial ports (SMC3, ODrive): their
 //!   set-points and arming commands, written and read back;
-//! - [`capture`]: the UDP datagrams of a packet capture (pcap, pcapng), for replaying a
-//!   game's telemetry;
 //! - [`channels`]: which actuator goes out on which channel, scaled, mirrored, as µm,
 //!   0.01° or servo pulse µs;
 //! - [`crc`]: CRC-16/CCITT-FALSE, the frame checksum;
@@ -31,7 +29,6 @@
 //! this crate reproduce.
 
 pub mod boards;
-pub mod capture;
 pub mod channels;
 pub mod crc;
 pub mod frame;

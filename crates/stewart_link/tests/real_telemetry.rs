@@ -10,7 +10,7 @@
 
 use std::path::PathBuf;
 
-use stewart_link::capture;
+use stewart_link::vehicle::capture;
 use stewart_link::vehicle::intake::{Intake, Intaken};
 use stewart_link::vehicle::replay::replay;
 use stewart_link::vehicle::timeline::PushOutcome;

@@ -13,8 +13,8 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, Result, anyhow, bail};
-use stewart_link::capture;
 use stewart_link::vehicle::VehicleSample;
+use stewart_link::vehicle::capture;
 use stewart_link::vehicle::intake::Intake;
 use stewart_link::vehicle::replay::telemetry_port;
 use stewart_link::vehicle::timeline::Step;

@@ -9,7 +9,7 @@
 
 use anyhow::{Result, bail};
 use stewart_kinematics::analysis::cueing::VehicleMotion;
-use stewart_link::capture::{self, CaptureError};
+use stewart_link::vehicle::capture::{self, CaptureError};
 use stewart_link::vehicle::intake::Tally;
 use stewart_link::vehicle::replay::{Replay, replay};
 

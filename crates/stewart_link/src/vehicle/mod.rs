@@ -20,10 +20,13 @@
 //! | Live for Speed OutSim (classic, and `LFST` packs) | [`outsim`] | 64 or 68 bytes; `LFST` |
 //!
 //! A [`VehicleDecoder`] keeps what spans datagrams: F1's two packets of one frame are paired,
-//! and the games' millisecond clocks are unwrapped. Anything that cannot be read is
+//! and the games' millisecond clocks are unwrapped. This module owns all of vehicle input:
+//! decoding, the [`timeline`] that times samples, the [`intake`] loop with its tally by
+//! format, packet [`capture`]s (pcap, pcapng) and their [`replay`]. Anything that cannot be read is
 //! refused with the reason (the receiver counts it), never a panic.
 
 pub mod beamng;
+pub mod capture;
 pub mod f1;
 pub mod forza;
 pub mod generic;

@@ -10,9 +10,9 @@
 
 use std::collections::BTreeMap;
 
+use super::capture::Datagram;
 use super::intake::{Intake, Intaken, Tally};
 use super::timeline::{PushOutcome, Step, Timed};
-use crate::capture::Datagram;
 
 /// The telemetry of one port of a capture.
 #[derive(Clone, Debug, Default)]
