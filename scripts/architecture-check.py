@@ -22,7 +22,9 @@ and the rules it states, on the code:
 6. the top-level folders are reached only by their owners: `shaders/` by the renderer's
    `shaders.rs`, `assets/` by the presets' loader, `tests/` by no crate;
 7. the crates' walls: the renderer depends on no UI crate (egui, winit), the link crate
-   on no kinematics.
+   on no kinematics, the kinematics crate on no GPU, UI or other crate of ours;
+8. one module style: no `foo.rs` beside a `foo/` folder (a module with parts is a folder
+   with `mod.rs`).
 
 Exits 1 on any miss; run by scripts/check.sh.
 """
@@ -30,6 +32,7 @@ Exits 1 on any miss; run by scripts/check.sh.
 import pathlib
 import re
 import sys
+import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 DOC = ROOT / "ARCHITECTURE.md"
@@ -199,17 +202,25 @@ def top_folder_readers():
 
 
 def walls():
-    """Rule 7: the dependencies each crate may not have."""
+    """Rule 7: the dependencies each crate may not have (read as TOML: `x = …`,
+    `x.workspace = true` and `[dependencies.x]` alike)."""
     misses = []
     for crate, forbidden in FORBIDDEN_DEPENDENCIES.items():
-        manifest = (ROOT / "crates" / crate / "Cargo.toml").read_text(encoding="utf-8")
-        deps = re.split(r"^\[", manifest, flags=re.M)
-        for section in deps:
-            if not section.startswith("dependencies]"):
-                continue
-            for name in re.findall(r"^([A-Za-z0-9_-]+)\s*=", section, re.M):
+        manifest = tomllib.loads((ROOT / "crates" / crate / "Cargo.toml").read_text(encoding="utf-8"))
+        for table in ("dependencies", "build-dependencies"):
+            for name in manifest.get(table, {}):
                 if name in forbidden:
                     misses.append(f"{crate} depends on {name}")
+    return misses
+
+
+def one_module_style():
+    """Rule 8: a file `foo.rs` beside a folder `foo/` in any crate's sources."""
+    misses = []
+    for crate in CRATES.values():
+        for f in sorted((ROOT / "crates" / crate / "src").rglob("*.rs")):
+            if f.with_suffix("").is_dir():
+                misses.append(f"{f.relative_to(ROOT)} sits beside its folder: make it the folder's mod.rs")
     return misses
 
 
@@ -221,7 +232,10 @@ def main():
     # 1. The tree.
     tree = text.split("```")[1]
     for line in tree.splitlines():
-        token = line.split()[0] if line.strip() and not line.startswith(" ") else None
+        # A top-level path at the margin, a crate's folder two spaces in (deeper lines
+        # continue a description).
+        indent = len(line) - len(line.lstrip())
+        token = line.split()[0] if line.strip() and indent <= 2 else None
         if token and (token.endswith("/") or "." in token):
             path = ROOT / token
             if not path.exists() and token.count("/") == 1:
@@ -270,7 +284,7 @@ def main():
                     break
             if named:
                 continue
-            misses.append(f"{crate}'s public module {module} is not named in ARCHITECTURE.md")
+            misses.append(f"{crate}'s public module {module} is not named in docs/modules.md")
 
     # `stewart_<crate>::a::b` paths in the text.
     for m in re.finditer(r"\b(stewart_(?:kinematics|link|render|app))((?:::[A-Za-z_0-9]+)+)", text + index):
@@ -294,7 +308,7 @@ def main():
             if not defined:
                 misses.append(f"`{m.group(0)}`: {crate}::{path.replace('/', '::')} has no item {rest[0]}")
 
-    misses += circles() + shell_imports() + top_folder_readers() + walls()
+    misses += circles() + shell_imports() + top_folder_readers() + walls() + one_module_style()
 
     for miss in misses:
         print(miss)
@@ -302,9 +316,10 @@ def main():
         print(f"architecture-check: {len(misses)} claims of ARCHITECTURE.md are not true", file=sys.stderr)
         sys.exit(1)
     print(
-        "architecture-check: the tree of ARCHITECTURE.md and every module docs/modules.md names exist, every public module is "
-        "named, and its rules hold (no import circles, the shell imported only from above, the "
-        "top-level folders reached by their owners, the crates' walls)"
+        "architecture-check: the tree of ARCHITECTURE.md and every module docs/modules.md names "
+        "exist, every public module is named, and its rules hold (no import circles, the shell "
+        "imported only from above, the top-level folders reached by their owners, the crates' "
+        "walls, one module style)"
     )
 
 

@@ -54,7 +54,7 @@ pub struct Tally {
 impl Tally {
     /// Datagrams of `format` so far.
     pub fn of(&self, format: VehicleFormat) -> u64 {
-        self.per_format[format.index()]
+        self.per_format.get(format.index()).copied().unwrap_or(0)
     }
 
     /// The formats that arrived, with their datagrams, in the order of [`VehicleFormat::ALL`].
@@ -112,8 +112,12 @@ impl Intake {
         self.last_arrival = Some(arrival);
         let decoded = self.decoder.decode(bytes);
         self.tally.datagrams += 1;
-        if let Some(format) = decoded.format {
-            self.tally.per_format[format.index()] += 1;
+        // A format missing from `VehicleFormat::ALL` goes uncounted rather than panic.
+        if let Some(count) = decoded
+            .format
+            .and_then(|f| self.tally.per_format.get_mut(f.index()))
+        {
+            *count += 1;
         }
         let mut placed = Placed::default();
         let reading = match decoded.reading {

@@ -335,6 +335,26 @@ fn every_format_has_its_place_in_the_list() {
     for (k, format) in VehicleFormat::ALL.iter().enumerate() {
         assert_eq!(format.index(), k);
     }
+    // Exhaustive: a new format fails to build here until it is listed, and then fails
+    // until `ALL` holds it (the tally counts by its place there).
+    let listed = |format: VehicleFormat| match format {
+        VehicleFormat::Text
+        | VehicleFormat::Binary
+        | VehicleFormat::XPlaneData
+        | VehicleFormat::XPlaneRref
+        | VehicleFormat::ForzaSled
+        | VehicleFormat::ForzaDash
+        | VehicleFormat::ForzaHorizon
+        | VehicleFormat::ForzaMotorsport2023
+        | VehicleFormat::F1
+        | VehicleFormat::BeamNg
+        | VehicleFormat::OutGauge
+        | VehicleFormat::OutSim
+        | VehicleFormat::OutSimPack => VehicleFormat::ALL.contains(&format),
+    };
+    assert!(VehicleFormat::ALL.iter().all(|&f| listed(f)));
+    let last = VehicleFormat::OutSimPack;
+    assert!(listed(last) && last.index() + 1 == VehicleFormat::ALL.len());
 }
 
 #[test]
