@@ -13,12 +13,28 @@ use crate::model::pose::Pose;
 use crate::model::rotary::Unreachable;
 use crate::model::scene::SceneFrame;
 use crate::solve::batch::{OutOfReach, RowError};
+use crate::solve::chains::LegChain;
 use crate::solve::forward::assembly::AssemblyModes;
 use crate::solve::forward::sequence::{BranchChange, SequenceError, SequenceSolution};
 use crate::solve::forward::{ForwardError, ForwardOptions, ForwardSolution};
 use crate::solve::jacobian::Conditioning;
 
 impl Geometry {
+    /// Each leg as an open chain from its base joint at `pose` (see
+    /// [`crate::solve::chains`]): a linear leg's universal joint and length, or a servo's
+    /// angle and its rod's universal joint; refused where a servo cannot reach its joint.
+    #[inline]
+    pub fn leg_chains(&self, pose: &Pose) -> Result<[LegChain; 6], Unreachable> {
+        crate::solve::chains::leg_chains(self, pose)
+    }
+
+    /// The far end of leg `k`'s `chain`, base frame, metres: the chain followed joint by
+    /// joint (`None` for a chain of the other kind of actuator, or no leg `k`).
+    #[inline]
+    pub fn chain_tip(&self, k: usize, chain: &LegChain) -> Option<Vector3<f64>> {
+        crate::solve::chains::chain_tip(self, k, chain)
+    }
+
     /// The quantity that drives the joints: leg length or servo angle.
     #[inline]
     pub fn quantity(&self) -> Quantity {
