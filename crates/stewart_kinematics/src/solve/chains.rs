@@ -75,7 +75,7 @@ pub fn servo_axis(beta: f64) -> Unit<Vector3<f64>> {
 pub(crate) fn leg_chains(geometry: &Geometry, pose: &Pose) -> Result<[LegChain; 6], Unreachable> {
     let joints = geometry.inverse(pose).platform_joints;
     let base = geometry.base_joints();
-    let (Some(servos), Some(angles)) = (geometry.rotary(), geometry.servo_angles(pose)) else {
+    let Some(servos) = geometry.rotary() else {
         return Ok(std::array::from_fn(|k| {
             let leg = joints[k] - base[k];
             let length = leg.norm();
@@ -85,7 +85,8 @@ pub(crate) fn leg_chains(geometry: &Geometry, pose: &Pose) -> Result<[LegChain; 
             }
         }));
     };
-    let angles = angles?;
+    // The servos' angles closed on the joints just solved (not solved a second time).
+    let angles = crate::solve::servo_closure::servo_angles(servos, base, &joints)?;
     Ok(std::array::from_fn(|k| {
         let servo = angles[k].radians();
         let horn = horn_rotation(servos.horn_angles()[k].radians(), servo);
