@@ -18,6 +18,7 @@ mod fk;
 mod framing;
 mod gates;
 mod link;
+mod robot;
 mod rotary;
 mod serial;
 mod settings;

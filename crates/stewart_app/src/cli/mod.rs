@@ -6,6 +6,7 @@ mod analysis;
 mod arg_error;
 mod link;
 mod pictures;
+mod robot;
 mod values;
 
 use std::path::PathBuf;
@@ -21,6 +22,7 @@ pub(crate) use link::{
     DeviceSimArgs, FirmwareArgs, LinkArgs, TelemetryArgs, WireFormatArg, WireUnit,
 };
 pub(crate) use pictures::{PlotArgs, RenderArgs, ThemeName, ViewArgs, parse_title};
+pub(crate) use robot::{RobotArgs, RobotFormatArg};
 
 /// Stewart platform studio: inverse kinematics, trajectories and checks for the
 /// six-degree-of-freedom Gough–Stewart platform.
@@ -72,6 +74,10 @@ pub(crate) enum Command {
     Render(RenderArgs),
     /// The leg-length plot for a paper: SVG, PDF or PNG.
     Plot(PlotArgs),
+    /// The rig as a robot description: MJCF for MuJoCo (loops closed by equality
+    /// constraints, a position actuator per leg, a keyframe per sample) or URDF for ROS
+    /// (open chains, with the joints' values per sample as CSV).
+    Robot(RobotArgs),
     /// The interactive viewer (what `stewart` with no argument opens).
     View(ViewArgs),
     /// Every setting `--set` accepts (the keys of scenario files and the viewer's sliders):

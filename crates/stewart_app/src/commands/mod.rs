@@ -12,6 +12,7 @@ pub(crate) mod link;
 pub(crate) mod modes;
 pub(crate) mod plot;
 pub(crate) mod render;
+pub(crate) mod robot;
 pub(crate) mod settings;
 pub(crate) mod solve;
 pub(crate) mod telemetry;

@@ -8,6 +8,7 @@ pub(crate) mod gif_delta;
 pub(crate) mod gltf;
 pub(crate) mod plot;
 pub(crate) mod ply;
+pub(crate) mod robot;
 pub mod tables;
 pub(crate) mod vector;
 pub(crate) mod video;
