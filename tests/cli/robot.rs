@@ -177,3 +177,92 @@ fn what_cannot_be_described_is_refused_where_it_lies_and_nothing_is_written() {
     );
     assert_eq!(std::fs::read(&scenario).unwrap(), before);
 }
+
+#[test]
+fn the_joint_states_never_land_on_the_description_or_a_parts_material_file() {
+    let dir = tempdir();
+    let urdf = dir.path().join("rig.urdf");
+    let u = urdf.to_str().unwrap();
+    // A joint-state file that cannot be written leaves no description either.
+    let missing = dir.path().join("missing").join("s.csv");
+    refused(
+        &[
+            "robot",
+            "--preset",
+            "paired",
+            "--format",
+            "urdf",
+            "--out",
+            u,
+            "--joint-states",
+            missing.to_str().unwrap(),
+        ],
+        &["cannot write"],
+        &urdf,
+    );
+    // The description's own file, reached through `..` or a link.
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    let around = dir.path().join("sub").join("..").join("rig.urdf");
+    refused(
+        &[
+            "robot",
+            "--preset",
+            "paired",
+            "--format",
+            "urdf",
+            "--out",
+            u,
+            "--joint-states",
+            around.to_str().unwrap(),
+        ],
+        &["own file"],
+        &urdf,
+    );
+    std::fs::write(&urdf, "mine").unwrap();
+    let link = dir.path().join("link.csv");
+    std::os::unix::fs::symlink(&urdf, &link).unwrap();
+    let o = stewart(&[
+        "robot",
+        "--preset",
+        "paired",
+        "--format",
+        "urdf",
+        "--out",
+        u,
+        "--joint-states",
+        link.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(&urdf).unwrap(), "mine");
+    // The material file an OBJ part reads is an input too.
+    let cad = dir.path().join("cad");
+    std::fs::create_dir(&cad).unwrap();
+    let examples = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/cad");
+    for f in std::fs::read_dir(examples).unwrap() {
+        let f = f.unwrap();
+        std::fs::copy(f.path(), cad.join(f.file_name())).unwrap();
+    }
+    let mtl = cad.join("platform.mtl");
+    let before = std::fs::read(&mtl).unwrap();
+    let scenario = cad.join("seed-cad.toml");
+    let out = cad.join("x.urdf");
+    let o = stewart(&[
+        "robot",
+        "--scenario",
+        scenario.to_str().unwrap(),
+        "--format",
+        "urdf",
+        "--out",
+        out.to_str().unwrap(),
+        "--joint-states",
+        mtl.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("a file of the scenario's CAD parts"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read(&mtl).unwrap(), before);
+    assert!(!out.exists());
+}

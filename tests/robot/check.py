@@ -158,8 +158,8 @@ def check_urdf(yourdfpy, path, states, studio, name, failures):
     import xml.etree.ElementTree as ET
     meshes = [m.get("filename") for m in ET.parse(path).iter("mesh")]
     for f in meshes:
-        if not os.path.exists(os.path.join(os.path.dirname(path), f)):
-            failures.append(f"{name}: URDF mesh {f} not found from {os.path.dirname(path)}")
+        if not (f.startswith("file:///") and os.path.isfile(f.removeprefix("file://"))):
+            failures.append(f"{name}: URDF mesh {f} is not a file:// URI of an existing file")
     robot = yourdfpy.URDF.load(path, load_meshes=bool(meshes), build_collision_scene_graph=False,
                                load_collision_meshes=False)
     rows = list(csv.DictReader(open(states)))

@@ -52,6 +52,23 @@ pub(crate) fn inputs(
     out
 }
 
+/// [`inputs`], with the files the scenario's CAD parts were read from beside them (an
+/// OBJ's material files, a glTF's buffers).
+pub(crate) fn inputs_with_parts(
+    args: &ScenarioArgs,
+    scenario: &Scenario,
+    parts: &stewart_render::appearance::parts::PartSet,
+) -> Vec<(&'static str, std::path::PathBuf)> {
+    let mut out = inputs(args, scenario);
+    out.extend(
+        parts
+            .files()
+            .into_iter()
+            .map(|p| ("a file of the scenario's CAD parts", p)),
+    );
+    out
+}
+
 /// The scenario the arguments name, in words for messages: its file as given, or
 /// `preset NAME`.
 pub(crate) fn describe(args: &ScenarioArgs) -> String {

@@ -20,17 +20,14 @@ fn animation(
     scenario: &stewart_kinematics::Scenario,
     parts: stewart_render::appearance::parts::PartSet,
 ) -> Result<ExitCode> {
+    let inputs = source::inputs_with_parts(&args.scenario, scenario, &parts);
     let request = crate::export::gltf::GltfRequest {
         out: args.out.clone(),
         theme: Theme::from_light(args.theme == ThemeName::Light),
         coloured_legs: !args.single_colour,
         parts,
     };
-    let report = crate::export::gltf::export_gltf(
-        scenario,
-        &request,
-        &source::inputs(&args.scenario, scenario),
-    )?;
+    let report = crate::export::gltf::export_gltf(scenario, &request, &inputs)?;
     let _ = writeln!(
         std::io::stderr(),
         "Wrote a glTF animation of {} keys for {} moving parts to {} ({}) in {:.2} s.",
@@ -48,8 +45,11 @@ pub(crate) fn run(args: &RenderArgs) -> Result<ExitCode> {
     // The output is never one of the inputs (a scenario file named `x.gif`, its pose table,
     // one of its CAD parts).
     let scenario = source::load(&args.scenario)?;
-    crate::output::Destination::new(&args.out, &source::inputs(&args.scenario, &scenario))?;
     let parts = crate::appearance::load(&scenario, &crate::appearance::folder_of(&args.scenario))?;
+    crate::output::Destination::new(
+        &args.out,
+        &source::inputs_with_parts(&args.scenario, &scenario, &parts),
+    )?;
     if crate::export::gltf::is_gltf(&args.out) {
         return animation(args, &scenario, parts);
     }

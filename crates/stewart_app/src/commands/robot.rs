@@ -1,9 +1,10 @@
 //! `stewart robot`: the rig as an MJCF or URDF robot description.
 
 use std::io::Write as _;
+use std::path::Path;
 use std::process::ExitCode;
 
-use anyhow::{Result, bail};
+use anyhow::{Context as _, Result, bail};
 
 use crate::cli::{RobotArgs, RobotFormatArg};
 use crate::export::robot::{RobotFormat, describe, expected_extension};
@@ -22,28 +23,28 @@ pub(crate) fn run(args: &RobotArgs) -> Result<ExitCode> {
         );
     }
     let scenario = source::load(&args.scenario)?;
-    let inputs = source::inputs(&args.scenario, &scenario);
+    let folder = crate::appearance::folder_of(&args.scenario);
+    let parts = crate::appearance::load(&scenario, &folder)?;
+    let inputs = source::inputs_with_parts(&args.scenario, &scenario, &parts);
     let out = Destination::new(&args.out, &inputs)?;
     out.require_file()?;
     let states = match &args.joint_states {
         Some(path) => {
-            if std::path::absolute(path).ok() == std::path::absolute(&args.out).ok() {
-                bail!(
-                    "--joint-states `{}` is the description's own file; choose another",
-                    path.display()
-                );
-            }
             let d = Destination::new(path, &inputs)?;
             d.require_file()?;
+            if same_place(d.real(), out.real()) {
+                bail!(
+                    "--joint-states `{}` is the description's own file `{}`; choose another",
+                    path.display(),
+                    args.out.display()
+                );
+            }
             Some(d)
         }
         None => None,
     };
-    let folder = crate::appearance::folder_of(&args.scenario);
-    let parts = crate::appearance::load(&scenario, &folder)?;
-    // URDF names mesh files from its own folder: relative below it, else absolute.
-    let out_folder = crate::output::parent_of(&args.out);
-    let mesh_files = crate::appearance::rebase(&scenario.appearance, &folder, out_folder);
+    // URDF names mesh files by their absolute paths (as `file://` URIs).
+    let mesh_files = crate::appearance::anchored(&scenario.appearance, &folder);
     let every = args.every as usize;
     let described = source::describe(&args.scenario);
     let files = describe(&scenario, format, every, &parts, &mesh_files, |t| {
@@ -53,10 +54,16 @@ pub(crate) fn run(args: &RobotArgs) -> Result<ExitCode> {
             described.clone()
         }
     })?;
-    // Everything is computed before anything is written.
-    out.write_bytes(files.description.as_bytes())?;
-    if let (Some(d), Some(text)) = (&states, &files.joint_states) {
-        d.write_bytes(text.as_bytes())?;
+    // Everything is computed, then staged beside its place, before anything is put in
+    // place: a file that cannot be written leaves neither.
+    let description = stage(&out, &files.description)?;
+    let table = match (&states, &files.joint_states) {
+        (Some(d), Some(text)) => Some((d, stage(d, text)?)),
+        _ => None,
+    };
+    out.deliver(description)?;
+    if let Some((d, staged)) = table {
+        d.deliver(staged)?;
     }
     let mut err = std::io::stderr();
     let _ = writeln!(
@@ -85,4 +92,26 @@ pub(crate) fn run(args: &RobotArgs) -> Result<ExitCode> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `text` written whole into a staged file beside `d`'s place.
+fn stage(d: &Destination, text: &str) -> Result<tempfile::TempPath> {
+    let mut file = d.staged_file(".partial")?;
+    file.write_all(text.as_bytes())
+        .and_then(|()| file.as_file().sync_all())
+        .with_context(|| format!("cannot write `{}`", d.shown().display()))?;
+    Ok(file.into_temp_path())
+}
+
+/// Whether two paths (their links followed) name one file: the same file name in the
+/// same folder once each folder's `..` and links are resolved.
+fn same_place(a: &Path, b: &Path) -> bool {
+    let place = |p: &Path| {
+        let folder = std::fs::canonicalize(crate::output::parent_of(p)).ok()?;
+        Some(folder.join(p.file_name()?))
+    };
+    match (place(a), place(b)) {
+        (Some(x), Some(y)) => x == y,
+        _ => a == b,
+    }
 }

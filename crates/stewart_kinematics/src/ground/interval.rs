@@ -8,7 +8,7 @@
 //! rounded; their bounds are widened by four steps (their error is below one) and kept
 //! within ±1.
 
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{FRAC_PI_2, TAU};
 use std::ops::{Add, Mul, Neg, Sub};
 
 /// A closed interval `[lo, hi]` of reals, `lo ≤ hi`, both finite or infinite (never NaN).
@@ -265,7 +265,7 @@ impl Add<f64> for Interval {
 
 /// π as an interval holding the real π.
 pub const PI_INTERVAL: Interval = Interval {
-    lo: 3.141_592_653_589_793,
+    lo: std::f64::consts::PI,
     hi: 3.141_592_653_589_793_6,
 };
 
@@ -273,6 +273,7 @@ pub const PI_INTERVAL: Interval = Interval {
 mod tests {
     use super::*;
     use proptest::prelude::*;
+    use std::f64::consts::PI;
 
     /// An interval from two values and a point inside it chosen by `t` in [0, 1].
     fn interval_and_point(a: f64, b: f64, t: f64) -> (Interval, f64) {
@@ -296,10 +297,10 @@ mod tests {
             prop_assert!((x * y).contains(p * q));
             prop_assert!((-x).contains(-p));
             prop_assert!(x.sqr().contains(p * p));
-            if let Some(r) = x.sqrt() {
-                if p >= 0.0 {
-                    prop_assert!(r.contains(p.sqrt()));
-                }
+            if let Some(r) = x.sqrt()
+                && p >= 0.0
+            {
+                prop_assert!(r.contains(p.sqrt()));
             }
             match x.div(&y) {
                 Some(r) => prop_assert!(r.contains(p / q)),

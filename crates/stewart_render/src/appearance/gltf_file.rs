@@ -24,10 +24,16 @@ fn malformed(path: &Path, at: Option<String>, reason: String) -> PartFileError {
 }
 
 /// The pieces of a glTF file: one per primitive, in the default scene's node order.
-pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileError> {
+/// Read a glTF or GLB file's triangles and colours; the buffer files it names are added
+/// to `sidecars`.
+pub(super) fn read(
+    path: &Path,
+    bytes: &[u8],
+    sidecars: &mut Vec<std::path::PathBuf>,
+) -> Result<Vec<Piece>, PartFileError> {
     let gltf = gltf::Gltf::from_slice(bytes)
         .map_err(|e| malformed(path, None, format!("not a valid glTF 2.0 file: {e}")))?;
-    let buffers = buffers(path, &gltf)?;
+    let buffers = buffers(path, &gltf, sidecars)?;
     let document = &gltf.document;
     let roots: Vec<gltf::Node> = match document
         .default_scene()
@@ -65,7 +71,11 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileErro
 }
 
 /// Every buffer's bytes: the GLB's own chunk, a data URI, or a file beside this one.
-fn buffers(path: &Path, gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, PartFileError> {
+fn buffers(
+    path: &Path,
+    gltf: &gltf::Gltf,
+    sidecars: &mut Vec<std::path::PathBuf>,
+) -> Result<Vec<Vec<u8>>, PartFileError> {
     let folder = path.parent().unwrap_or(Path::new(""));
     let mut out = Vec::new();
     for buffer in gltf.document.buffers() {
@@ -90,6 +100,7 @@ fn buffers(path: &Path, gltf: &gltf::Gltf) -> Result<Vec<Vec<u8>>, PartFileError
             }
             gltf::buffer::Source::Uri(uri) => {
                 let file = folder.join(percent_decode(uri));
+                sidecars.push(file.clone());
                 read_file(&file, FileKind::MeshSidecar).map_err(|e| {
                     malformed(path, at(), format!("its data file cannot be read: {e}"))
                 })?

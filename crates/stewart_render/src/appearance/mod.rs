@@ -47,6 +47,9 @@ pub struct PartMesh {
     pub triangles: usize,
     /// The smallest and largest corner of its bounding box, file units.
     pub bounds: [Vec3; 2],
+    /// The other files its reading opened or tried (an OBJ's material files, a glTF's
+    /// buffer files): inputs a command may not write over.
+    pub sidecars: Vec<PathBuf>,
 }
 
 impl PartMesh {
@@ -76,6 +79,7 @@ impl PartMesh {
             pieces,
             triangles,
             bounds,
+            sidecars: Vec::new(),
         })
     }
 }
@@ -194,12 +198,15 @@ pub fn load(path: &Path) -> Result<PartMesh, PartFileError> {
                 reason: refused.to_string(),
             },
         })?;
+    let mut sidecars = Vec::new();
     let pieces = match format {
         MeshFormat::Stl => stl::read(path, &bytes)?,
-        MeshFormat::Obj => obj::read(path, &bytes)?,
-        MeshFormat::Gltf => gltf_file::read(path, &bytes)?,
+        MeshFormat::Obj => obj::read(path, &bytes, &mut sidecars)?,
+        MeshFormat::Gltf => gltf_file::read(path, &bytes, &mut sidecars)?,
     };
-    PartMesh::new(path, pieces)
+    let mut mesh = PartMesh::new(path, pieces)?;
+    mesh.sidecars = sidecars;
+    Ok(mesh)
 }
 
 /// `Err(NotFinite)` at `at` for the first coordinate of `p` that is not finite.

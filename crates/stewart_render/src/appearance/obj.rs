@@ -14,7 +14,13 @@ use crate::gpu_types::MeshVertex;
 use crate::mesh::Mesh;
 
 /// The pieces of an OBJ file: one per object and material, coloured by its MTL's `Kd`.
-pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileError> {
+/// Read an OBJ file's triangles and colours; the material files it names, read or not,
+/// are added to `sidecars`.
+pub(super) fn read(
+    path: &Path,
+    bytes: &[u8],
+    sidecars: &mut Vec<std::path::PathBuf>,
+) -> Result<Vec<Piece>, PartFileError> {
     let folder = path.parent().unwrap_or(Path::new("")).to_owned();
     let options = tobj::LoadOptions {
         single_index: true,
@@ -34,15 +40,19 @@ pub(super) fn read(path: &Path, bytes: &[u8]) -> Result<Vec<Piece>, PartFileErro
             reason,
         }
     };
-    let (models, materials) =
-        tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
-            // Through the gate: a regular file within the cap (`mtllib /dev/zero` would
-            // otherwise be read until memory runs out).
-            let file = read_file(&folder.join(mtl), FileKind::MeshSidecar)
-                .map_err(|_| tobj::LoadError::OpenFileFailed)?;
-            tobj::load_mtl_buf(&mut std::io::Cursor::new(file))
-        })
-        .map_err(|e| fault(format!("not a readable OBJ file ({e})")))?;
+    // The loader's callback is `Fn`: the files it names are gathered through a cell.
+    let named = std::cell::RefCell::new(Vec::new());
+    let loaded = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
+        // Through the gate: a regular file within the cap (`mtllib /dev/zero` would
+        // otherwise be read until memory runs out).
+        named.borrow_mut().push(folder.join(mtl));
+        let file = read_file(&folder.join(mtl), FileKind::MeshSidecar)
+            .map_err(|_| tobj::LoadError::OpenFileFailed)?;
+        tobj::load_mtl_buf(&mut std::io::Cursor::new(file))
+    })
+    .map_err(|e| fault(format!("not a readable OBJ file ({e})")))?;
+    sidecars.extend(named.into_inner());
+    let (models, materials) = loaded;
     // No MTL file, or one that cannot be read: the parts take the studio's colours.
     let materials = materials.unwrap_or_default();
     let mut pieces = Vec::with_capacity(models.len());

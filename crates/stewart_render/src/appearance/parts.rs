@@ -132,6 +132,16 @@ impl PartSet {
         self.parts[slot(part)].as_ref()
     }
 
+    /// Every file the parts were read from: each part's, and the files its reading opened
+    /// beside it (material and buffer files).
+    pub fn files(&self) -> Vec<PathBuf> {
+        self.parts
+            .iter()
+            .flatten()
+            .flat_map(|p| std::iter::once(p.path.clone()).chain(p.mesh.sidecars.iter().cloned()))
+            .collect()
+    }
+
     /// Whether no part has a mesh.
     pub fn is_empty(&self) -> bool {
         self.parts.iter().all(Option::is_none)

@@ -42,6 +42,7 @@ pub fn simplified(part: &PartMesh, budget: usize) -> Option<PartMesh> {
             pieces,
             triangles,
             bounds: part.bounds,
+            sidecars: part.sidecars.clone(),
         }
     };
     // A surface's triangles grow with the square of the grid's: one trial grid, then the
@@ -121,6 +122,7 @@ mod tests {
             }],
             triangles,
             bounds,
+            sidecars: Vec::new(),
         }
     }
 

@@ -78,11 +78,26 @@ impl Masses {
         let g = &scenario.geometry;
         let mut defaults = Vec::new();
         let platform = match &scenario.payload {
-            Some(p) => Inertial {
-                mass: p.mass,
-                centre: p.centre_of_mass,
-                inertia: p.inertia,
-            },
+            Some(p) => {
+                // A simulator needs every principal moment above 0; a payload may give a
+                // point mass or a flat body. Raise the smallest to a millionth of m·ℓ².
+                let floor = 1e-6 * p.mass * g.characteristic_length().powi(2);
+                let smallest = p.inertia.symmetric_eigenvalues().min();
+                let mut inertia = p.inertia;
+                if smallest < floor {
+                    inertia += Matrix3::identity() * (floor - smallest);
+                    defaults.push(format!(
+                        "platform: the [payload] inertia has a principal moment below {floor:.3e} \
+                         kg·m², so each is raised by {:.3e}",
+                        floor - smallest
+                    ));
+                }
+                Inertial {
+                    mass: p.mass,
+                    centre: p.centre_of_mass,
+                    inertia,
+                }
+            }
             None => {
                 let r = g.plate_radius(stewart_kinematics::model::geometry::Plate::Platform);
                 defaults.push(format!(

@@ -16,7 +16,7 @@ use xmlwriter::{Options, XmlWriter};
 
 use super::masses::Inertial;
 use super::rig::{Rig, Sample};
-use super::{comment_safe, quat_of, quaternion, vector};
+use super::{attribute_text, comment_safe, quat_of, quaternion, vector};
 
 /// The simulation step, seconds: a tenth of the actuators' period and below the
 /// equality constraints' time constant's half.
@@ -34,7 +34,7 @@ const PASSIVE_OMEGA: f64 = ACTUATOR_OMEGA / 30.0;
 pub(crate) fn write(rig: &Rig, parts: &PartSet) -> String {
     let mut w = XmlWriter::new(Options::default());
     w.start_element("mujoco");
-    w.write_attribute("model", &rig.name);
+    w.write_attribute("model", &attribute_text(&rig.name));
     w.write_comment(&comment_safe(&header(rig)));
     w.start_element("compiler");
     w.write_attribute("angle", "radian");
@@ -102,9 +102,11 @@ fn header(rig: &Rig) -> String {
          model angles (rad, positive lifts the horn's tip). Keyframes: the studio's samples.\n",
         rig.name
     );
-    for d in &rig.masses.defaults {
-        text.push_str(&format!(" Light default: {d}.\n"));
-    }
+    text.push_str(
+        " MuJoCo starts every control at 0, which pulls the legs in: load a keyframe\n\
+         (mj_resetDataKeyframe, or the viewer's Load key) or set the controls first.\n",
+    );
+    text.push_str(&super::assumptions(rig));
     text
 }
 

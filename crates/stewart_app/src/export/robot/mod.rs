@@ -70,6 +70,18 @@ pub(crate) fn describe(
     })
 }
 
+/// What the description assumed beyond the scenario, a line each, for its comment.
+fn assumptions(rig: &Rig) -> String {
+    let mut text = String::new();
+    for note in &rig.notes {
+        text.push_str(&format!(" {note}\n"));
+    }
+    for d in &rig.masses.defaults {
+        text.push_str(&format!(" Light default: {d}.\n"));
+    }
+    text
+}
+
 /// `x y z`, each number as Rust writes it back exactly.
 fn vector(v: &Vector3<f64>) -> String {
     format!("{} {} {}", v.x, v.y, v.z)
@@ -85,9 +97,33 @@ fn quat_of(r: &Rotation3<f64>) -> UnitQuaternion<f64> {
     UnitQuaternion::from_rotation_matrix(r)
 }
 
-/// A comment's text with no `--` (XML forbids it inside a comment).
+/// Characters XML 1.0 cannot hold at all (control characters but tab, line feed and
+/// carriage return) made U+FFFD.
+fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() && !matches!(c, '\t' | '\n' | '\r') {
+                '\u{FFFD}'
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
+/// Text from the scenario (its name, a file's path) as an attribute's value: `&`, `<` and
+/// `>` escaped (the writer escapes only the quote) and unprintable characters replaced.
+fn attribute_text(text: &str) -> String {
+    printable(text)
+        .replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// A comment's text with no `--` (XML forbids it inside a comment) and nothing
+/// unprintable.
 fn comment_safe(text: &str) -> String {
-    let mut out = text.replace("--", "- -");
+    let mut out = printable(text).replace("--", "- -");
     while out.contains("--") {
         out = out.replace("--", "- -");
     }

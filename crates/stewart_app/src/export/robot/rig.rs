@@ -25,6 +25,7 @@ pub(crate) struct Servos {
 }
 
 /// The platform, its legs and its actuators at one time.
+#[derive(Clone)]
 pub(crate) struct Sample {
     /// Seconds.
     pub(crate) time: f64,
@@ -71,9 +72,13 @@ pub(crate) struct Rig {
     pub(crate) pivot: Vector3<f64>,
     /// The servos of a rotary rig.
     pub(crate) servos: Option<Servos>,
-    /// Each actuator's range: the stroke (m) or the servo range (rad), when both ends
-    /// are set.
+    /// Each actuator's range: the stroke (m; an end the scenario does not set is 0 or
+    /// twice the longest leg sampled) or the servo range (rad; none when not set).
     pub(crate) range: Option<(f64, f64)>,
+    /// The actuators' speed limit, m/s or rad/s, when the scenario sets one.
+    pub(crate) speed_limit: Option<f64>,
+    /// What the description assumed beyond the scenario, in sentences for its comment.
+    pub(crate) notes: Vec<String>,
     /// Home: the bodies' reference frames.
     pub(crate) home: Sample,
     /// The exported samples.
@@ -120,16 +125,32 @@ impl Rig {
         place: impl Fn(f64) -> String,
     ) -> Result<Self> {
         let g = &scenario.geometry;
-        let home = sample(g, 0.0, g.home_pose())
-            .map_err(|e| anyhow::anyhow!("{}: the home pose: {e}", place(f64::NAN)))?;
-        let range = actuator_range(g);
+        let given = actuator_range(g);
         let motion = scenario.motion.sample();
         let mut samples = Vec::with_capacity(motion.times.len() / every.max(1) + 1);
         for (&time, &pose) in motion.times.iter().zip(&motion.poses).step_by(every.max(1)) {
             let s = sample(g, time, pose).map_err(|e| anyhow::anyhow!("{}: {e}", place(time)))?;
-            check_range(g, range, &s, &place)?;
+            check_range(g, given, &s, &place)?;
             samples.push(s);
         }
+        let mut notes = Vec::new();
+        // The bodies' reference configuration: home, unless home breaks the limits (then
+        // the default configuration would), when the first sample stands for it.
+        let home = match sample(g, 0.0, g.home_pose()) {
+            Ok(h) if check_range(g, given, &h, &|_| String::new()).is_ok() => h,
+            _ => {
+                let Some(first) = samples.first() else {
+                    anyhow::bail!("{}: the trajectory has no sample", place(f64::NAN));
+                };
+                notes.push(format!(
+                    "The home pose lies beyond the actuators' limits or reach: the bodies' \
+                     reference configuration is the first sample's (t = {} s).",
+                    first.time
+                ));
+                first.clone()
+            }
+        };
+        let range = filled_range(g, given, &samples, &home, &mut notes);
         let servos = g.rotary().map(|r| Servos {
             horn: r.horn_length(),
             rod: r.rod_length(),
@@ -151,6 +172,12 @@ impl Rig {
             masses: Masses::of(scenario, &home),
             servos,
             range,
+            speed_limit: if g.rotary().is_some() {
+                scenario.limits.servo_speed_max.map(f64::to_radians)
+            } else {
+                scenario.limits.leg_speed_max
+            },
+            notes,
             home,
             samples,
             size: g.characteristic_length(),
@@ -204,6 +231,43 @@ fn sample(
         rotation,
         chains,
     })
+}
+
+/// The range written for the actuators: the servo range as given, or the stroke with an
+/// end it does not set filled (shortest: 0; longest: twice the longest leg of the samples
+/// and the reference), each filled end said in `notes`.
+fn filled_range(
+    g: &Geometry,
+    given: Option<(f64, f64)>,
+    samples: &[Sample],
+    home: &Sample,
+    notes: &mut Vec<String>,
+) -> Option<(f64, f64)> {
+    if g.rotary().is_some() {
+        if given.is_none() {
+            notes.push("The scenario sets no servo range: the servos turn freely.".to_owned());
+        }
+        return given;
+    }
+    let stroke = g.stroke();
+    let lo = stroke.min.unwrap_or_else(|| {
+        notes.push("The scenario sets no shortest leg: the slides reach down to 0 m.".to_owned());
+        0.0
+    });
+    let hi = stroke.max.unwrap_or_else(|| {
+        let longest = samples
+            .iter()
+            .chain(std::iter::once(home))
+            .flat_map(Sample::actuators)
+            .fold(0.0, f64::max);
+        notes.push(format!(
+            "The scenario sets no longest leg: the slides reach up to twice the longest \
+             sampled, {} m.",
+            2.0 * longest
+        ));
+        2.0 * longest
+    });
+    Some((lo, hi))
 }
 
 /// The stroke (linear legs) or the servo range in radians, when both ends are set.

@@ -536,3 +536,81 @@ fn masses_come_from_payload_and_dynamics_and_each_default_is_said() {
     assert!(!comment.contains("Light default: rod"), "{comment}");
     assert!(!comment.contains("Light default: platform"), "{comment}");
 }
+
+#[test]
+fn any_scenario_name_makes_well_formed_xml() {
+    let mut s = preset("servo-desk");
+    s.name = "a&b <c> \"d\" 'e' \u{1} --f-".to_owned();
+    for format in [RobotFormat::Mjcf, RobotFormat::Urdf] {
+        let text = export(&s, format).description;
+        let doc = roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{format:?}: {e}"));
+        let name = attr(
+            doc.root_element(),
+            if format == RobotFormat::Mjcf {
+                "model"
+            } else {
+                "name"
+            },
+        );
+        assert_eq!(name, Some("a&b <c> \"d\" 'e' \u{FFFD} --f-"), "{format:?}");
+    }
+}
+
+#[test]
+fn a_flat_payload_a_one_sided_stroke_and_home_beyond_it_still_make_a_model_mujoco_takes() {
+    // A point-mass payload: MuJoCo needs every principal moment above 0.
+    let mut s = preset("paired");
+    if let Some(p) = s.payload.as_mut() {
+        p.inertia = nalgebra::Matrix3::zeros();
+    }
+    let text = export(&s, RobotFormat::Mjcf).description;
+    let doc = roxmltree::Document::parse(&text).expect("MJCF is XML");
+    let platform = doc
+        .descendants()
+        .find(|n| n.has_tag_name("body") && attr(*n, "name") == Some("platform"))
+        .and_then(|b| b.children().find(|n| n.has_tag_name("inertial")))
+        .expect("inertial");
+    let full = numbers(attr(platform, "fullinertia").expect("fullinertia"));
+    assert!(full[..3].iter().all(|&m| m > 0.0), "{full:?}");
+    assert!(text.contains("principal moment below"));
+
+    // Only the shortest leg set: the longest is filled, and said.
+    let mut s = preset("seed");
+    set(&mut s, &["geometry.leg_max=off"]);
+    let text = export(&s, RobotFormat::Mjcf).description;
+    let doc = roxmltree::Document::parse(&text).expect("MJCF is XML");
+    let slide = doc
+        .descendants()
+        .find(|n| attr(*n, "name") == Some("leg1_slide"))
+        .expect("slide");
+    let range = numbers(attr(slide, "range").expect("range"));
+    assert_eq!(range[0], 0.55);
+    assert!(range[1] > 2.0, "{range:?}");
+    assert!(text.contains("no longest leg"));
+
+    // Home beyond the stroke: the reference is the first sample, inside it.
+    let mut s = preset("seed");
+    set(
+        &mut s,
+        &[
+            "trajectory.z.offset_m=1",
+            "geometry.leg_min=0.99",
+            "geometry.leg_max=1.4",
+        ],
+    );
+    let files = export(&s, RobotFormat::Mjcf).description;
+    let doc = roxmltree::Document::parse(&files).expect("MJCF is XML");
+    for k in 1..=6 {
+        let slide = doc
+            .descendants()
+            .find(|n| attr(*n, "name") == Some(format!("leg{k}_slide").as_str()))
+            .expect("slide");
+        let reference: f64 = attr(slide, "ref").expect("ref").parse().expect("ref");
+        assert!((0.99..=1.4).contains(&reference), "leg {k}: {reference}");
+    }
+    assert!(files.contains("reference configuration is the first sample"));
+}
+
+fn set(s: &mut Scenario, assignments: &[&str]) {
+    stewart_kinematics::io::settings::apply_all(s, assignments.iter().copied()).expect("set");
+}

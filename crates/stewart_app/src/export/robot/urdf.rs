@@ -15,7 +15,7 @@ use xmlwriter::{Options, XmlWriter};
 
 use super::masses::Inertial;
 use super::rig::Rig;
-use super::{comment_safe, vector};
+use super::{attribute_text, comment_safe, vector};
 
 /// The movable joints' names, in the joint-state table's order.
 pub(crate) fn joint_names(rig: &Rig) -> Vec<String> {
@@ -87,7 +87,7 @@ pub(crate) fn write(rig: &Rig, meshes: &AppearanceSettings) -> String {
     let mut w = XmlWriter::new(Options::default());
     w.write_declaration();
     w.start_element("robot");
-    w.write_attribute("name", &rig.name);
+    w.write_attribute("name", &attribute_text(&rig.name));
     w.write_comment(&comment_safe(&header(rig)));
     let u = Urdf { rig, meshes };
     u.link(&mut w, "base", None, Part::Base, 0, |w| {
@@ -119,15 +119,11 @@ fn header(rig: &Rig) -> String {
          sample, at which each tip{{k}} lies on platform_joint{{k}}.\n",
         rig.name
     );
-    if rig.range.is_none() {
-        text.push_str(
-            " The scenario sets no stroke or servo range: the slides reach from 0 to twice\n\
-             the longest leg sampled, the servos turn freely.\n",
-        );
-    }
-    for d in &rig.masses.defaults {
-        text.push_str(&format!(" Light default: {d}.\n"));
-    }
+    text.push_str(&format!(
+        " Joint limits: the stroke or servo range and the scenario's speed limit (else\n\
+         {UNBOUNDED_SPEED}); effort {UNBOUNDED_EFFORT} everywhere, the scenario bounds none.\n"
+    ));
+    text.push_str(&super::assumptions(rig));
     text
 }
 
@@ -137,13 +133,20 @@ struct Urdf<'a> {
     meshes: &'a AppearanceSettings,
 }
 
+/// The speed written where the scenario sets none, m/s or rad/s (URDF requires one; 0
+/// would read as "cannot move").
+const UNBOUNDED_SPEED: f64 = 1e3;
+/// The effort written on every limited joint, N or N·m: the scenario bounds none.
+const UNBOUNDED_EFFORT: f64 = 1e6;
+
 /// A joint's kind and range.
 enum Motion {
     Fixed,
     /// Turns without end.
     Continuous,
-    /// Turns or slides within `(lower, upper)` (radians or metres).
-    Limited(&'static str, f64, f64),
+    /// Turns or slides within `(lower, upper)` (radians or metres), at most at a speed
+    /// (rad/s or m/s).
+    Limited(&'static str, f64, f64, f64),
 }
 
 impl Urdf<'_> {
@@ -173,7 +176,7 @@ impl Urdf<'_> {
                 origin(w, &(frame * Vector3::from(look.offset_m)), &placed);
                 w.start_element("geometry");
                 w.start_element("mesh");
-                w.write_attribute("filename", &look.file);
+                w.write_attribute("filename", &attribute_text(&file_uri(&look.file)));
                 let s = look.scale.metres();
                 w.write_attribute("scale", &format!("{s} {s} {s}"));
                 w.end_element();
@@ -200,7 +203,7 @@ impl Urdf<'_> {
             joint(
                 w,
                 name,
-                &Motion::Limited("prismatic", -reach, reach),
+                &Motion::Limited("prismatic", -reach, reach, UNBOUNDED_SPEED),
                 &parent,
                 &child,
                 &Vector3::zeros(),
@@ -275,7 +278,7 @@ impl Urdf<'_> {
         let rig = self.rig;
         let n = k + 1;
         let length = rig.home.actuators()[k];
-        let (lower, upper) = rig.range.unwrap_or_else(|| (0.0, 2.0 * longest(rig)));
+        let (lower, upper) = rig.range.unwrap_or((0.0, f64::MAX));
         let cylinder_link = format!("leg{n}_cylinder");
         let names = [format!("leg{n}_swing_x"), format!("leg{n}_swing_y")];
         universal(
@@ -298,7 +301,12 @@ impl Urdf<'_> {
             );
         });
         let rod_link = format!("leg{n}_rod");
-        let slide = Motion::Limited("prismatic", lower, upper);
+        let slide = Motion::Limited(
+            "prismatic",
+            lower,
+            upper,
+            rig.speed_limit.unwrap_or(UNBOUNDED_SPEED),
+        );
         let z = Vector3::z();
         joint(
             w,
@@ -322,7 +330,12 @@ impl Urdf<'_> {
         let direction = servos.directions[k];
         let horn_link = format!("servo{n}_horn");
         let motion = match rig.range {
-            Some((lo, hi)) => Motion::Limited("revolute", lo, hi),
+            Some((lo, hi)) => Motion::Limited(
+                "revolute",
+                lo,
+                hi,
+                rig.speed_limit.unwrap_or(UNBOUNDED_SPEED),
+            ),
             None => Motion::Continuous,
         };
         let axis = servos.axes[k];
@@ -410,13 +423,9 @@ fn universal(
     );
 }
 
-/// The longest leg over the samples and home, metres.
-fn longest(rig: &Rig) -> f64 {
-    rig.samples
-        .iter()
-        .chain(std::iter::once(&rig.home))
-        .flat_map(|s| s.actuators())
-        .fold(0.0, f64::max)
+/// A mesh file's absolute path as the `file://` URI RViz and URDF libraries resolve.
+fn file_uri(path: &str) -> String {
+    format!("file://{path}")
 }
 
 /// The fixed link `tip{n}` at `at` in `parent`.
@@ -465,13 +474,13 @@ fn joint(
         w.write_attribute("xyz", &vector(axis));
         w.end_element();
     }
-    if let Motion::Limited(_, lower, upper) = motion {
+    if let Motion::Limited(_, lower, upper, speed) = motion {
         w.start_element("limit");
         w.write_attribute("lower", lower);
         w.write_attribute("upper", upper);
-        // The scenario's rate limits do not bound effort; URDF requires both numbers.
-        w.write_attribute("effort", "0");
-        w.write_attribute("velocity", "0");
+        // URDF requires an effort; a scenario bounds none (the file's comment says so).
+        w.write_attribute("effort", &UNBOUNDED_EFFORT);
+        w.write_attribute("velocity", speed);
         w.end_element();
     }
     w.end_element();
