@@ -5,6 +5,7 @@
 
 pub mod architecture;
 pub mod calibration;
+pub mod certified;
 pub mod checks;
 pub mod cueing;
 pub mod design;

@@ -1,0 +1,219 @@
+use super::free::{Search, free_ball, free_range, proven_free};
+use super::pose_box::{BoxLegs, PoseBox};
+use super::regular::{naive_regular, proven_regular};
+use crate::io::scenario::Scenario;
+use crate::model::angle::Angle;
+use crate::model::pose::Pose;
+
+fn preset(name: &str) -> Scenario {
+    Scenario::preset(name).unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+fn never() -> bool {
+    false
+}
+
+const SEARCH: Search = Search {
+    budget: 20_000,
+    stop: &never,
+};
+
+/// Poses about home: `n` of them, up to a fifth of the platform's size away and 20°
+/// (60° in yaw) turned.
+fn poses_about_home(s: &Scenario, n: usize) -> Vec<Pose> {
+    let g = &s.geometry;
+    let size = g.characteristic_length();
+    let mut seed = 0x1234_5678_u32;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        f64::from(seed) / f64::from(u32::MAX) * 2.0 - 1.0
+    };
+    (0..n)
+        .map(|_| {
+            let p = g.home_pose().position
+                + nalgebra::Vector3::new(next(), next(), next()) * 0.3 * size;
+            let [r, p2, y] = [20.0 * next(), 20.0 * next(), 60.0 * next()].map(Angle::from_degrees);
+            Pose::new(p, r, p2, y)
+        })
+        .collect()
+}
+
+#[test]
+fn the_seeds_layout_is_singular_everywhere_and_nothing_of_it_is_ever_certified() {
+    let s = preset("seed");
+    let g = &s.geometry;
+    let home = g.home_pose();
+    for k in 0..6 {
+        assert_eq!(
+            free_range(g, &home, k, 0.5, SEARCH)
+                .expect("linear legs")
+                .interval,
+            None,
+            "coordinate {k}"
+        );
+    }
+    assert_eq!(
+        free_ball(g, &home, 0.5, SEARCH)
+            .expect("linear legs")
+            .radius,
+        None
+    );
+    // Every pose of the seed is singular (its joints lie on conics in projective
+    // correspondence). Without outward rounding the test would "prove" many of them
+    // regular: rounding alone lifts the Jacobian's zero singular value to about 1e-16.
+    let poses = poses_about_home(&s, 3000);
+    let naive = poses
+        .iter()
+        .filter(|p| {
+            naive_regular(&BoxLegs::of(g, &PoseBox::at(p)).jacobian(g.characteristic_length()))
+        })
+        .count();
+    let proven = poses
+        .iter()
+        .filter(|p| proven_free(g, &PoseBox::at(p)))
+        .count();
+    assert!(
+        naive > 100,
+        "rounded to nearest, {naive} of 3000 singular poses pass"
+    );
+    assert_eq!(proven, 0, "rounded outward, none may");
+}
+
+#[test]
+fn a_planar_platform_turned_against_its_base_is_certified_up_to_fichters_torsion_singularity() {
+    // The paired layout: joints in pairs on two parallel planes (semi-regular hexagons),
+    // the platform's turned 60° against the base's. Fichter (1986): singular at a torsion
+    // of ±90° about the vertical, at any height.
+    let s = preset("paired");
+    let g = &s.geometry;
+    let home = g.home_pose();
+    let yaw = free_range(g, &home, 5, std::f64::consts::PI, SEARCH).expect("linear legs");
+    let [lo, hi] = yaw.interval.expect("home is regular").map(f64::to_degrees);
+    assert!(
+        (-90.0..=-89.0).contains(&lo) && (89.0..=90.0).contains(&hi),
+        "{lo}° … {hi}°"
+    );
+    assert!(!yaw.cut_short);
+    // The whole working range lies inside.
+    let samples = s.motion.sample();
+    for p in &samples.poses {
+        assert!((lo..=hi).contains(&p.yaw.degrees()), "{p:?}");
+        assert!(proven_free(g, &PoseBox::at(p)), "{p:?}");
+    }
+    // Past ±90°: the determinant changes sign there (a second method, sampled).
+    let det = |deg: f64| {
+        let pose = Pose::new(
+            home.position,
+            Angle::ZERO,
+            Angle::ZERO,
+            Angle::from_degrees(deg),
+        );
+        let j = BoxLegs::of(g, &PoseBox::at(&pose)).jacobian(1.0);
+        nalgebra::Matrix6::from_fn(|r, c| j[r][c].mid()).determinant()
+    };
+    assert!(det(89.9) * det(90.1) < 0.0 && det(-89.9) * det(-90.1) < 0.0);
+}
+
+#[test]
+fn inside_a_certified_range_every_sampled_pose_is_regular() {
+    for name in ["paired", "dietmaier", "circle"] {
+        let s = preset(name);
+        let g = &s.geometry;
+        let home = g.home_pose();
+        for k in 0..6 {
+            let reach = if k < 3 {
+                g.characteristic_length()
+            } else {
+                std::f64::consts::PI
+            };
+            let Some([lo, hi]) = free_range(g, &home, k, reach, SEARCH)
+                .expect("linear legs")
+                .interval
+            else {
+                panic!("{name}: home regular");
+            };
+            for step in 0..=200 {
+                let v = lo + (hi - lo) * f64::from(step) / 200.0;
+                let mut c = home.to_coordinates();
+                c[k] = v;
+                let pose = Pose::from_coordinates(c);
+                let cond = g.conditioning(&pose).condition_number;
+                assert!(
+                    cond.is_some_and(f64::is_finite),
+                    "{name} coordinate {k} at {v}: {cond:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_certified_ball_holds_only_regular_poses_and_grows_with_the_budget() {
+    let s = preset("paired");
+    let g = &s.geometry;
+    let home = g.home_pose();
+    let small = free_ball(
+        g,
+        &home,
+        0.5,
+        Search {
+            budget: 2_000,
+            stop: &never,
+        },
+    );
+    let large = free_ball(
+        g,
+        &home,
+        0.5,
+        Search {
+            budget: 40_000,
+            stop: &never,
+        },
+    );
+    let radius = |b: Result<super::free::FreeBall, _>| b.expect("linear").radius.expect("regular");
+    let (r1, r2) = (radius(small), radius(large));
+    assert!(r1 > 0.0 && r2 >= r1, "{r1} {r2}");
+    // Every corner and face centre of the certified cube is regular, sampled.
+    for corner in 0..27 {
+        let d = nalgebra::Vector3::new(
+            f64::from(corner % 3) - 1.0,
+            f64::from(corner / 3 % 3) - 1.0,
+            f64::from(corner / 9) - 1.0,
+        ) * r2;
+        let pose = home.with_position(home.position + d);
+        assert!(g.conditioning(&pose).condition_number.is_some(), "{d:?}");
+    }
+}
+
+#[test]
+fn a_stop_request_ends_the_search_with_what_is_certified_so_far() {
+    let s = preset("paired");
+    let g = &s.geometry;
+    let stop = || true;
+    let r = free_range(
+        g,
+        &g.home_pose(),
+        5,
+        3.0,
+        Search {
+            budget: 1_000_000,
+            stop: &stop,
+        },
+    )
+    .expect("linear legs");
+    assert!(r.cut_short);
+    assert_eq!(r.interval.map(|[lo, hi]| (lo, hi)), Some((0.0, 0.0)));
+    let j = BoxLegs::of(g, &PoseBox::at(&g.home_pose())).jacobian(1.0);
+    assert!(proven_regular(&j));
+}
+
+#[test]
+fn a_servo_rig_is_refused_not_certified_with_the_wrong_rows() {
+    let s = preset("servo-desk");
+    let g = &s.geometry;
+    let e = free_range(g, &g.home_pose(), 5, 1.0, SEARCH).expect_err("refused");
+    assert!(e.to_string().contains("rotary servos"));
+    assert!(free_ball(g, &g.home_pose(), 0.1, SEARCH).is_err());
+}
