@@ -22,6 +22,7 @@ mod robot;
 mod rotary;
 mod serial;
 mod settings;
+mod singularity;
 mod solve;
 mod telemetry;
 mod video_timing;

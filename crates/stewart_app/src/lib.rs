@@ -82,6 +82,7 @@ pub fn main() -> ExitCode {
         Some(Command::Render(args)) => commands::render::run(&args),
         Some(Command::Plot(args)) => commands::plot::run(&args),
         Some(Command::Robot(args)) => commands::robot::run(&args),
+        Some(Command::Singularity(args)) => commands::singularity::run(&args),
         Some(Command::View(args)) => commands::view::run(&args),
         Some(Command::Settings(args)) => commands::settings::run(&args),
         Some(Command::Firmware(args)) => commands::firmware::run(&args),

@@ -255,3 +255,49 @@ pub(crate) struct ForcesArgs {
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
 }
+
+/// What `singularity --certify` holds free: one coordinate, or the position in a ball.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum FreeCoordinate {
+    /// x, metres.
+    X,
+    /// y, metres.
+    Y,
+    /// z, metres.
+    Z,
+    /// Roll, degrees.
+    Roll,
+    /// Pitch, degrees.
+    Pitch,
+    /// Yaw, degrees.
+    Yaw,
+    /// The position in a ball about the pose's (its orientation held), metres.
+    Position,
+}
+
+/// Arguments of `stewart singularity`.
+#[derive(Debug, Args)]
+pub(crate) struct SingularityArgs {
+    /// The scenario: a preset or a file.
+    #[command(flatten)]
+    pub(crate) scenario: ScenarioArgs,
+    /// The pose X,Y,Z,ROLL,PITCH,YAW (metres, degrees); default: home.
+    #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", value_parser = parse_pose, allow_hyphen_values = true)]
+    pub(crate) pose: Option<[f64; 6]>,
+    /// Prove, by interval arithmetic, the widest range about the pose that holds no
+    /// singular pose: of the coordinate `--free` names, the others held (or, for
+    /// `position`, the widest ball of positions). Exit status 1 when not even the pose
+    /// itself can be proven regular.
+    #[arg(long, requires = "free")]
+    pub(crate) certify: bool,
+    /// The coordinate `--certify` frees.
+    #[arg(long, value_enum, requires = "certify")]
+    pub(crate) free: Option<FreeCoordinate>,
+    /// The most boxes the proof may test (each a few microseconds); when spent, the
+    /// answer is what is proven so far, and says so.
+    #[arg(long, value_name = "N", default_value_t = 2_000_000, value_parser = clap::value_parser!(u64).range(1..=1_000_000_000), allow_hyphen_values = true)]
+    pub(crate) budget: u64,
+    /// Report format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
+}

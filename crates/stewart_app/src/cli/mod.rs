@@ -14,8 +14,8 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 pub(crate) use analysis::{
-    CalibrateArgs, CheckArgs, CueArgs, DesignArgs, FkArgs, ForcesArgs, HoldGroup, ModesArgs,
-    SettingsArgs, SettingsFormat, SolveArgs, WorkspaceArgs,
+    CalibrateArgs, CheckArgs, CueArgs, DesignArgs, FkArgs, ForcesArgs, FreeCoordinate, HoldGroup,
+    ModesArgs, SettingsArgs, SettingsFormat, SingularityArgs, SolveArgs, WorkspaceArgs,
 };
 pub(crate) use arg_error::ArgError;
 pub(crate) use link::{
@@ -66,6 +66,10 @@ pub(crate) enum Command {
     /// Stiffness, mass matrix and natural modes at a pose (the scenario's `[payload]` and
     /// `[dynamics]`): the six frequencies with each mode's motion, as text or JSON.
     Modes(ModesArgs),
+    /// How near a pose is to singularity (its conditioning), and with `--certify --free
+    /// COORDINATE` the widest range about it proven free of singularity by interval
+    /// arithmetic: every pose inside, not only sampled ones (linear legs).
+    Singularity(SingularityArgs),
     /// The stroke (or servo range) a motion envelope needs: the smallest and largest
     /// value of each leg length (servo angle) over a 6-D box of poses, where each occurs,
     /// and the worst conditioning inside the box.

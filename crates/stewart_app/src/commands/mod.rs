@@ -14,6 +14,7 @@ pub(crate) mod plot;
 pub(crate) mod render;
 pub(crate) mod robot;
 pub(crate) mod settings;
+pub(crate) mod singularity;
 pub(crate) mod solve;
 pub(crate) mod telemetry;
 pub(crate) mod view;

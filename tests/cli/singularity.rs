@@ -1,0 +1,136 @@
+//! `stewart singularity`: the conditioning at a pose, and `--certify --free` ranges proven
+//! free of singularity — Fichter's torsion singularity found on a planar layout, nothing
+//! ever proven for the seed's singular one, servo rigs refused.
+
+use crate::{stderr, stdout, stewart};
+
+fn json(args: &[&str]) -> (Option<i32>, serde_json::Value) {
+    let o = stewart(args);
+    let v = serde_json::from_str(&stdout(&o))
+        .unwrap_or_else(|e| panic!("{args:?}: {e}: {}", stderr(&o)));
+    (o.status.code(), v)
+}
+
+#[test]
+fn the_paired_layout_is_proven_free_up_to_its_torsion_singularity() {
+    let (code, v) = json(&[
+        "singularity",
+        "--preset",
+        "paired",
+        "--certify",
+        "--free",
+        "yaw",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0));
+    let [lo, hi] = [0, 1].map(|k| v["interval"][k].as_f64().expect("number"));
+    assert!(
+        (-90.0..-89.0).contains(&lo) && (89.0..90.0).contains(&hi),
+        "{v}"
+    );
+    assert_eq!(v["unit"], "deg");
+    let (code, v) = json(&[
+        "singularity",
+        "--preset",
+        "paired",
+        "--certify",
+        "--free",
+        "position",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0));
+    assert!(v["radius_m"].as_f64().expect("radius") > 0.1, "{v}");
+}
+
+#[test]
+fn the_seed_is_never_certified_and_says_so_with_exit_status_1() {
+    for free in ["yaw", "x", "position"] {
+        let (code, v) = json(&[
+            "singularity",
+            "--preset",
+            "seed",
+            "--certify",
+            "--free",
+            free,
+            "--format",
+            "json",
+        ]);
+        assert_eq!(code, Some(1), "{free}");
+        let key = if free == "position" {
+            "radius_m"
+        } else {
+            "interval"
+        };
+        assert!(v[key].is_null(), "{free}: {v}");
+    }
+    let o = stewart(&[
+        "singularity",
+        "--preset",
+        "seed",
+        "--certify",
+        "--free",
+        "roll",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stdout(&o).contains("Nothing proven free of singularity"),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn a_spent_budget_servos_and_a_missing_coordinate_are_said() {
+    let (code, v) = json(&[
+        "singularity",
+        "--preset",
+        "paired",
+        "--certify",
+        "--free",
+        "yaw",
+        "--budget",
+        "3",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0));
+    assert_eq!(v["cut_short"], true, "{v}");
+    let o = stewart(&[
+        "singularity",
+        "--preset",
+        "servo-desk",
+        "--certify",
+        "--free",
+        "yaw",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("rotary servos"), "{}", stderr(&o));
+    let o = stewart(&["singularity", "--preset", "paired", "--certify"]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = stewart(&[
+        "singularity",
+        "--preset",
+        "paired",
+        "--certify",
+        "--free",
+        "yaw",
+        "--budget",
+        "0",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    // Without --certify: the conditioning at the pose.
+    let o = stewart(&[
+        "singularity",
+        "--preset",
+        "paired",
+        "--pose",
+        "0,0,0.8,0,0,45",
+    ]);
+    assert!(
+        o.status.success() && stdout(&o).contains("condition number"),
+        "{}",
+        stdout(&o)
+    );
+}
