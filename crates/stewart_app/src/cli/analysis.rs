@@ -6,7 +6,9 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 
 use super::pictures::parse_lang;
-use super::values::{parse_angles, parse_inertia, parse_mass, parse_pose, parse_position};
+use super::values::{
+    parse_angles, parse_inertia, parse_mass, parse_pose, parse_position, parse_width,
+};
 use super::{ReportFormat, ScenarioArgs};
 use crate::i18n::Lang;
 
@@ -215,6 +217,23 @@ pub(crate) struct WorkspaceArgs {
     /// The language of the figure's words: `zh` or `en` (default: the environment's).
     #[arg(long, value_name = "zh|en", value_parser = parse_lang)]
     pub(crate) lang: Option<Lang>,
+    /// Prove a bracket of the volume instead of sampling it: boxes of positions classed by
+    /// interval arithmetic as inner (every position reachable), outer (none) or boundary
+    /// (undecided at `--boundary-width`), so that inner ≤ volume ≤ inner + boundary
+    /// (linear legs; on all cores; Ctrl-C ends it with what is decided).
+    #[arg(long, conflicts_with_all = ["out", "plot", "surface", "position", "no_budget"])]
+    pub(crate) certified: bool,
+    /// `--certified`: boxes narrower than this on their widest side are not split
+    /// further, metres (default: half a hundredth of the platform's size).
+    #[arg(long, value_name = "M", requires = "certified", value_parser = parse_width, allow_hyphen_values = true)]
+    pub(crate) boundary_width: Option<f64>,
+    /// `--certified`: the most boxes to classify (each some microseconds); when spent,
+    /// the undecided rest counts as boundary and the answer says so.
+    #[arg(long, value_name = "N", requires = "certified", default_value_t = 50_000_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000_000), allow_hyphen_values = true)]
+    pub(crate) budget: u64,
+    /// `--certified`: report format.
+    #[arg(long, value_enum, requires = "certified", default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
 }
 
 /// Arguments of `stewart modes`.

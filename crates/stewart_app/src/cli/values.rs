@@ -118,6 +118,23 @@ pub(crate) fn parse_mass(text: &str) -> Result<f64, ArgError> {
     }
 }
 
+/// A width in metres: more than 0, at most 1000.
+pub(crate) fn parse_width(text: &str) -> Result<f64, ArgError> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| ArgError::not_a(text, "a number of metres"))?;
+    if v.is_finite() && v > 0.0 && v <= bounds::LENGTH_M {
+        Ok(v)
+    } else {
+        Err(ArgError::out_of_range(
+            Some("the width"),
+            "more than 0 and at most 1000 m",
+            text,
+        ))
+    }
+}
+
 /// X,Y,Z,ROLL,PITCH,YAW: metres within ±1000 m, degrees within ±3600°.
 pub(crate) fn parse_pose(text: &str) -> Result<[f64; 6], ArgError> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();

@@ -9,6 +9,7 @@
 pub mod free;
 pub mod pose_box;
 pub mod regular;
+pub mod workspace;
 
 #[cfg(test)]
 mod tests;

@@ -217,3 +217,117 @@ fn a_servo_rig_is_refused_not_certified_with_the_wrong_rows() {
     assert!(e.to_string().contains("rotary servos"));
     assert!(free_ball(g, &g.home_pose(), 0.1, SEARCH).is_err());
 }
+
+mod workspace {
+    use super::*;
+    use crate::analysis::certified::workspace::{BoxClass, WorkspaceRequest, certified_workspace};
+    use crate::analysis::workspace::{constant_orientation_workspace, pose_within_limits};
+    use crate::model::limits::Limits;
+
+    fn bracket(
+        s: &Scenario,
+        limits: &Limits,
+        width: f64,
+    ) -> crate::analysis::certified::workspace::CertifiedWorkspace {
+        let level = s.geometry.home_pose();
+        let request = WorkspaceRequest {
+            orientation: &level,
+            boundary_width: width,
+            budget: 5_000_000,
+            stop: &never,
+        };
+        certified_workspace(&s.geometry, limits, &request)
+            .expect("linear legs")
+            .expect("both stroke limits")
+    }
+
+    #[test]
+    fn the_grid_volume_lies_in_the_bracket_and_the_bracket_tightens() {
+        let s = preset("paired");
+        for limits in [Limits::default(), s.limits] {
+            let grid = constant_orientation_workspace(&s.geometry, &limits, [Angle::ZERO; 3], 400)
+                .expect("workspace");
+            let mut last = f64::INFINITY;
+            for width in [0.08, 0.04, 0.02] {
+                let w = bracket(&s, &limits, width);
+                assert!(!w.cut_short);
+                let (lo, hi) = (w.inner_m3, w.inner_m3 + w.boundary_m3);
+                assert!(
+                    lo <= grid.volume + grid.volume_error && grid.volume - grid.volume_error <= hi,
+                    "width {width}: grid {} ± {} outside [{lo}, {hi}]",
+                    grid.volume,
+                    grid.volume_error
+                );
+                assert!(w.boundary_m3 < last, "{} then {}", last, w.boundary_m3);
+                last = w.boundary_m3;
+            }
+        }
+    }
+
+    #[test]
+    fn every_position_of_an_inner_box_is_reachable_and_none_outside_the_kept_boxes_is() {
+        let s = preset("paired");
+        let w = bracket(&s, &s.limits, 0.03);
+        let level = s.geometry.home_pose();
+        let mut seed = 0x2545_f491_u32;
+        let mut unit = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            f64::from(seed) / f64::from(u32::MAX)
+        };
+        let inside = |b: &[crate::ground::interval::Interval; 3], p: &nalgebra::Vector3<f64>| {
+            (0..3).all(|k| b[k].contains(p[k]))
+        };
+        let inner: Vec<_> = w
+            .boxes
+            .iter()
+            .filter(|b| b.class == BoxClass::Inner)
+            .collect();
+        assert!(inner.len() > 100);
+        for b in inner.iter().step_by(inner.len() / 100) {
+            for _ in 0..5 {
+                let p = nalgebra::Vector3::from_fn(|k, _| {
+                    b.position[k].lo() + unit() * b.position[k].width()
+                });
+                assert!(
+                    pose_within_limits(&s.geometry, &s.limits, &level.with_position(p)),
+                    "{p:?}"
+                );
+            }
+        }
+        // Positions in no kept box (outer boxes are dropped) are all unreachable.
+        let mut outside = 0;
+        for _ in 0..20_000 {
+            let p = nalgebra::Vector3::new(2.4 * unit() - 1.2, 2.4 * unit() - 1.2, 2.0 * unit());
+            if w.boxes.iter().any(|b| inside(&b.position, &p)) {
+                continue;
+            }
+            outside += 1;
+            assert!(
+                !pose_within_limits(&s.geometry, &s.limits, &level.with_position(p)),
+                "{p:?}"
+            );
+        }
+        assert!(outside > 1000);
+    }
+
+    #[test]
+    fn a_spent_budget_counts_the_undecided_as_boundary() {
+        let s = preset("paired");
+        let level = s.geometry.home_pose();
+        let request = WorkspaceRequest {
+            orientation: &level,
+            boundary_width: 0.001,
+            budget: 10_000,
+            stop: &never,
+        };
+        let w = certified_workspace(&s.geometry, &s.limits, &request)
+            .expect("linear")
+            .expect("stroke");
+        assert!(w.cut_short);
+        let grid = constant_orientation_workspace(&s.geometry, &s.limits, [Angle::ZERO; 3], 200)
+            .expect("grid");
+        assert!(w.inner_m3 <= grid.volume && grid.volume <= w.inner_m3 + w.boundary_m3);
+    }
+}

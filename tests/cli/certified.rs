@@ -1,6 +1,7 @@
-//! `stewart singularity`: the conditioning at a pose, and `--certify --free` ranges proven
-//! free of singularity — Fichter's torsion singularity found on a planar layout, nothing
-//! ever proven for the seed's singular one, servo rigs refused.
+//! Certified analysis from the command line: `stewart singularity --certify --free`
+//! (ranges proven free of singularity — Fichter's torsion singularity found on a planar
+//! layout, nothing ever proven for the seed's singular one, servo rigs refused) and
+//! `stewart workspace --certified` (a volume bracket holding the sampled volume).
 
 use crate::{stderr, stdout, stewart};
 
@@ -133,4 +134,64 @@ fn a_spent_budget_servos_and_a_missing_coordinate_are_said() {
         "{}",
         stdout(&o)
     );
+}
+
+#[test]
+fn the_certified_workspace_brackets_the_sampled_volume() {
+    let (code, v) = json(&[
+        "workspace",
+        "--preset",
+        "paired",
+        "--certified",
+        "--boundary-width",
+        "0.02",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0));
+    let inner = v["inner_m3"].as_f64().expect("inner");
+    let boundary = v["boundary_m3"].as_f64().expect("boundary");
+    let o = stewart(&["workspace", "--preset", "paired", "--resolution", "200"]);
+    let text = stdout(&o);
+    let volume: f64 = text
+        .split("volume ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .expect("the grid's volume");
+    assert!(
+        inner <= volume && volume <= inner + boundary,
+        "{inner} {boundary} {volume}"
+    );
+    for refused in [
+        vec!["workspace", "--preset", "servo-desk", "--certified"],
+        vec![
+            "workspace",
+            "--preset",
+            "seed",
+            "--set",
+            "geometry.leg_max=off",
+            "--certified",
+        ],
+        vec![
+            "workspace",
+            "--preset",
+            "paired",
+            "--certified",
+            "--boundary-width",
+            "0",
+        ],
+        vec!["workspace", "--preset", "paired", "--format", "json"],
+        vec![
+            "workspace",
+            "--preset",
+            "paired",
+            "--certified",
+            "--plot",
+            "x.svg",
+        ],
+    ] {
+        let o = stewart(&refused);
+        assert_eq!(o.status.code(), Some(2), "{refused:?}: {}", stderr(&o));
+    }
 }

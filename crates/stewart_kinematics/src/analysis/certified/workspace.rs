@@ -1,0 +1,290 @@
+//! The certified constant-orientation workspace: boxes of positions classed, by interval
+//! arithmetic, *inner* (every position of the box is reachable: the stroke, the joint
+//! cones and the legs' clearance hold, above the base plane), *outer* (none is) or
+//! *boundary* (undecided at the finest width asked), by branch and bound. The volume then
+//! lies in `[inner, inner + boundary]` — a bracket, not an estimate.
+//!
+//! The clearance of two legs is bounded by its value at the box's centre and how far the
+//! legs can move inside the box: with the orientation held, every point of a leg moves at
+//! most as far as its platform joint, at most the box's half-diagonal, so two legs' distance
+//! changes by at most twice that (a margin covers the centre's own rounding).
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+use nalgebra::Vector3;
+use rayon::prelude::*;
+
+use crate::ground::interval::Interval;
+use crate::model::geometry::Geometry;
+use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
+use crate::model::pose::Pose;
+
+use super::free::RotaryNotCovered;
+use super::pose_box::{BoxLegs, IVec3, PoseBox};
+
+/// What a box of positions is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BoxClass {
+    /// Every position reachable.
+    Inner,
+    /// No position reachable.
+    Outer,
+    /// Undecided at the finest width.
+    Boundary,
+}
+
+/// One classified box: its position intervals (x, y, z) and its class.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClassedBox {
+    /// x, y, z, metres.
+    pub position: [Interval; 3],
+    /// Its class.
+    pub class: BoxClass,
+}
+
+/// The certified workspace.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CertifiedWorkspace {
+    /// Volume of the inner boxes, m³: at most the workspace's volume.
+    pub inner_m3: f64,
+    /// Volume of the boundary boxes, m³: the workspace's volume is at most `inner_m3 +
+    /// boundary_m3`.
+    pub boundary_m3: f64,
+    /// The inner and boundary boxes (outer ones are dropped), for slices and pictures.
+    pub boxes: Vec<ClassedBox>,
+    /// Boxes classified.
+    pub tested: usize,
+    /// Whether the box budget or a stop request ended it: the boxes not yet split count
+    /// as boundary, so the bracket still holds.
+    pub cut_short: bool,
+}
+
+/// What is asked.
+#[derive(Clone, Copy)]
+pub struct WorkspaceRequest<'a> {
+    /// The orientation held (its position is ignored).
+    pub orientation: &'a Pose,
+    /// Boxes narrower than this (metres, on their widest side) are not split further.
+    pub boundary_width: f64,
+    /// The most boxes to classify.
+    pub budget: usize,
+    /// Asked now and then: `true` ends it with what is decided (the rest as boundary).
+    pub stop: &'a (dyn Fn() -> bool + Sync),
+}
+
+/// The certified workspace of `geometry` under its stroke and `limits` at the request's
+/// orientation. Needs both stroke limits (without them it is unbounded).
+pub fn certified_workspace(
+    geometry: &Geometry,
+    limits: &Limits,
+    request: &WorkspaceRequest,
+) -> Result<Option<CertifiedWorkspace>, RotaryNotCovered> {
+    if geometry.rotary().is_some() {
+        return Err(RotaryNotCovered);
+    }
+    let stroke = geometry.stroke();
+    let (Some(min), Some(max)) = (stroke.min, stroke.max) else {
+        return Ok(None);
+    };
+    let judge = Judge {
+        geometry,
+        stroke: Interval::new(min, max).unwrap_or(Interval::ENTIRE),
+        cones: [limits.base_cone, limits.platform_cone].map(|a| a.map(|a| a.radians().cos())),
+        clearance: limits.leg_radius.map(|r| 2.0 * r),
+        orientation: *request.orientation,
+        margin: 1e-9 * geometry.characteristic_length(),
+    };
+    let start = judge.start(max);
+    // Split the start into a few thousand boxes, then each branch on its own thread.
+    let mut seeds = vec![start];
+    while seeds.len() < 4096 {
+        seeds = seeds
+            .iter()
+            .flat_map(|b| {
+                let k = widest(b);
+                split(b, k)
+            })
+            .collect();
+    }
+    let tested = AtomicUsize::new(0);
+    let stopped = AtomicBool::new(false);
+    let results: Vec<Vec<ClassedBox>> = seeds
+        .par_iter()
+        .map(|seed| judge.branch(*seed, request, &tested, &stopped))
+        .collect();
+    let boxes: Vec<ClassedBox> = results.into_iter().flatten().collect();
+    let volume = |class: BoxClass| {
+        boxes
+            .iter()
+            .filter(|b| b.class == class)
+            .map(|b| b.position.iter().map(Interval::width).product::<f64>())
+            .sum::<f64>()
+    };
+    Ok(Some(CertifiedWorkspace {
+        inner_m3: volume(BoxClass::Inner),
+        boundary_m3: volume(BoxClass::Boundary),
+        tested: tested.load(Ordering::Relaxed),
+        cut_short: stopped.load(Ordering::Relaxed),
+        boxes,
+    }))
+}
+
+/// The widest side of a position box.
+fn widest(b: &[Interval; 3]) -> usize {
+    (0..3)
+        .max_by(|&i, &j| b[i].width().total_cmp(&b[j].width()))
+        .unwrap_or(0)
+}
+
+/// The two halves of a position box across side `k`.
+fn split(b: &[Interval; 3], k: usize) -> [[Interval; 3]; 2] {
+    let [lo, hi] = b[k].split();
+    let mut a = *b;
+    let mut c = *b;
+    a[k] = lo;
+    c[k] = hi;
+    [a, c]
+}
+
+/// The limits, ready to judge boxes.
+struct Judge<'a> {
+    geometry: &'a Geometry,
+    stroke: Interval,
+    /// The cosines of the base and platform cone limits.
+    cones: [Option<f64>; 2],
+    /// The least distance between two legs' axes.
+    clearance: Option<f64>,
+    orientation: Pose,
+    /// Added to the clearance bound for the centre distance's rounding, metres.
+    margin: f64,
+}
+
+impl Judge<'_> {
+    /// A box holding every reachable position: within the longest leg of every base
+    /// joint's shifted centre, above the base plane.
+    fn start(&self, longest: f64) -> [Interval; 3] {
+        let at = PoseBox::at(&self.orientation.with_position(Vector3::zeros()));
+        let legs = BoxLegs::of(self.geometry, &at);
+        // At position p leg i is p + legs_i(0): within `longest` of −legs_i(0).
+        let mut lo = [f64::NEG_INFINITY; 3];
+        let mut hi = [f64::INFINITY; 3];
+        for l in &legs.legs {
+            for k in 0..3 {
+                lo[k] = lo[k].max(-l[k].hi() - longest);
+                hi[k] = hi[k].min(-l[k].lo() + longest);
+            }
+        }
+        lo[2] = lo[2].max(0.0);
+        std::array::from_fn(|k| Interval::new(lo[k], hi[k].max(lo[k])).unwrap_or(Interval::ENTIRE))
+    }
+
+    /// Classify boxes from `seed` down, depth first.
+    fn branch(
+        &self,
+        seed: [Interval; 3],
+        request: &WorkspaceRequest,
+        tested: &AtomicUsize,
+        stopped: &AtomicBool,
+    ) -> Vec<ClassedBox> {
+        let mut out = Vec::new();
+        let mut stack = vec![seed];
+        while let Some(b) = stack.pop() {
+            let spent = tested.fetch_add(1, Ordering::Relaxed) >= request.budget;
+            if spent || stopped.load(Ordering::Relaxed) || (request.stop)() {
+                stopped.store(true, Ordering::Relaxed);
+                // Undecided: the rest counts as boundary, so the bracket still holds.
+                out.extend(
+                    std::iter::once(b)
+                        .chain(stack.drain(..))
+                        .map(|position| ClassedBox {
+                            position,
+                            class: BoxClass::Boundary,
+                        }),
+                );
+                break;
+            }
+            match self.class(&b) {
+                BoxClass::Outer => {}
+                BoxClass::Boundary if b[widest(&b)].width() > request.boundary_width => {
+                    stack.extend(split(&b, widest(&b)));
+                }
+                class => out.push(ClassedBox { position: b, class }),
+            }
+        }
+        out
+    }
+
+    /// The class of a box of positions.
+    fn class(&self, position: &[Interval; 3]) -> BoxClass {
+        let mut b = PoseBox::at(&self.orientation);
+        b.coordinates[..3].copy_from_slice(position);
+        let legs = BoxLegs::of(self.geometry, &b);
+        let mut all = position[2].lo() > 0.0;
+        if position[2].hi() <= 0.0 {
+            return BoxClass::Outer;
+        }
+        for length in legs.lengths() {
+            if length.lo() > self.stroke.hi() || length.hi() < self.stroke.lo() {
+                return BoxClass::Outer;
+            }
+            all &= length.within(&self.stroke);
+        }
+        let rotation = b.rotation();
+        let normals: [IVec3; 2] = [
+            [
+                Interval::point(0.0),
+                Interval::point(0.0),
+                Interval::point(1.0),
+            ],
+            [rotation[0][2], rotation[1][2], rotation[2][2]],
+        ];
+        for (cone, n) in self.cones.iter().zip(&normals) {
+            let Some(cos_max) = cone else { continue };
+            for (l, length) in legs.legs.iter().zip(legs.lengths()) {
+                let along = l[0] * n[0] + l[1] * n[1] + l[2] * n[2];
+                match along.div(&length) {
+                    Some(cos) if cos.hi() < *cos_max => return BoxClass::Outer,
+                    Some(cos) => all &= cos.lo() >= *cos_max,
+                    None => all = false,
+                }
+            }
+        }
+        if let Some(clearance) = self.clearance {
+            match self.clearance_bounds(position) {
+                Some((lo, _)) if lo >= clearance => {}
+                Some((_, hi)) if hi < clearance => return BoxClass::Outer,
+                _ => all = false,
+            }
+        }
+        if all {
+            BoxClass::Inner
+        } else {
+            BoxClass::Boundary
+        }
+    }
+
+    /// The least distance between two legs over the box: from the box's centre, less and
+    /// more twice the half-diagonal (and the margin).
+    fn clearance_bounds(&self, position: &[Interval; 3]) -> Option<(f64, f64)> {
+        let centre = self.orientation.with_position(Vector3::new(
+            position[0].mid(),
+            position[1].mid(),
+            position[2].mid(),
+        ));
+        let joints = self.geometry.inverse(&centre).platform_joints;
+        let bases = self.geometry.base_joints();
+        let half_diagonal = 0.5
+            * (position[0].width().powi(2)
+                + position[1].width().powi(2)
+                + position[2].width().powi(2))
+            .sqrt();
+        let least = LEG_PAIRS
+            .iter()
+            .map(|&(i, j)| segment_distance(bases[i], joints[i], bases[j], joints[j]))
+            .fold(f64::INFINITY, f64::min);
+        least.is_finite().then(|| {
+            let reach = 2.0 * half_diagonal + self.margin;
+            (least - reach, least + reach)
+        })
+    }
+}
