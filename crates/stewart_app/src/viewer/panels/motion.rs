@@ -28,7 +28,7 @@ const POSE_SLIDERS: [(&str, Unit, f64); 6] = [
     ("z", Unit::Metre, 0.3),
     ("roll", Unit::Degree, 30.0),
     ("pitch", Unit::Degree, 30.0),
-    ("yaw", Unit::Degree, 45.0),
+    ("yaw", Unit::Degree, 120.0),
 ];
 
 /// What the Motion panel edits and reads: the document and playback (the trajectory's
@@ -128,6 +128,9 @@ fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
         parts
             .reach
             .sliders(&scenario.geometry, &scenario.limits, &parts.cx.pose, bounds);
+    let certified = parts
+        .reach
+        .certified(&scenario.geometry, &parts.cx.pose, bounds);
     for (k, (name, unit, reach)) in POSE_SLIDERS.into_iter().enumerate() {
         let angular = unit == Unit::Degree;
         let mut value = if angular { c[k].to_degrees() } else { c[k] };
@@ -154,12 +157,14 @@ fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
                 ui,
                 [centre - reach, centre + reach],
                 reachable[k].map(|r| r.map(to_slider)),
+                certified[k].map(|r| r.map(to_slider)),
                 value,
                 ui.spacing().slider_width - 2.0 * handle,
             );
         });
     }
     parts.playback.manual = Pose::from_coordinates(c);
+    determinant(ui, scenario, &parts.cx.pose, t);
     if ui
         .button(t.tr("motion.home"))
         .on_hover_text(t.tr("motion.home_tip"))
@@ -185,6 +190,23 @@ fn manual(ui: &mut egui::Ui, parts: &mut MotionParts) {
 
 /// The reachability indicator: green while the pose can be taken, red with the reason
 /// when a move stopped at the edge or the pose is out of reach.
+/// How far from singular the pose shown is: the normalised Jacobian's determinant (the
+/// product of its singular values), beside home's — twist towards ±90° and watch it fall.
+fn determinant(ui: &mut egui::Ui, scenario: &Scenario, pose: &Pose, t: Lang) {
+    let g = &scenario.geometry;
+    let det = |p: &Pose| g.conditioning(p).singular_values.iter().product::<f64>();
+    let (now, home) = (det(pose), det(&g.home_pose()));
+    let words = t.fmt(
+        "motion.determinant",
+        &[
+            ("now", &format!("{now:.4}")),
+            ("home", &format!("{home:.4}")),
+        ],
+    );
+    ui.label(words)
+        .on_hover_text(t.tr("motion.determinant_tip"));
+}
+
 fn reach(ui: &mut egui::Ui, scenario: &Scenario, manual: Pose, teleop: &Teleop, t: Lang) {
     let now = teleop::unreachable(&scenario.geometry, &manual);
     let (colour, words) = match (now, &teleop.blocked) {

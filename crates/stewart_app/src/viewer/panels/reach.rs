@@ -42,7 +42,7 @@ pub(crate) fn show(ui: &mut egui::Ui, cx: &PanelContext, reach: impl FnOnce() ->
                     .monospace(),
                 );
                 let span = ANGLE_SPAN_DEG + now[a].abs();
-                range_bar(ui, [-span, span], Some([lo, hi]), now[a], 220.0);
+                range_bar(ui, [-span, span], Some([lo, hi]), None, now[a], 220.0);
             }
             let reachable = reach.map.reachable.iter().filter(|&&r| r).count();
             ui.label(t.fmt(

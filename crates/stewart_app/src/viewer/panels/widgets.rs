@@ -17,6 +17,8 @@ pub(crate) const ERROR: Color32 = Color32::from_rgb(220, 40, 40);
 pub(crate) const WARNING: Color32 = Color32::from_rgb(230, 150, 20);
 /// Green for success.
 pub(crate) const OK: Color32 = Color32::from_rgb(60, 160, 80);
+/// A range proven free of singularity.
+pub(crate) const CERTIFIED: Color32 = Color32::from_rgb(90, 160, 235);
 /// What lies out of reach (reach bars, the roll–pitch map).
 pub(crate) const UNREACHABLE: Color32 = Color32::from_rgb(70, 40, 45);
 
@@ -368,12 +370,14 @@ pub(crate) fn not_applied(ui: &mut egui::Ui, e: &ViewerError, t: Lang) {
     ui.label(RichText::new(t.fmt("widgets.not_applied", &[("why", &why)])).color(ERROR));
 }
 
-/// A bar over `full` (slider units) with the `reachable` part in green and the `value`
+/// A bar over `full` (slider units) with the `reachable` part in green, the range proven
+/// free of singularity (`certified`) as a blue line along its foot, and the `value`
 /// marked: drawn under a slider of that `width`, or alone.
 pub(crate) fn range_bar(
     ui: &mut egui::Ui,
     full: [f64; 2],
     reachable: Option<[f64; 2]>,
+    certified: Option<[f64; 2]>,
     value: f64,
     width: f32,
 ) {
@@ -389,6 +393,13 @@ pub(crate) fn range_bar(
             egui::Rect::from_x_y_ranges(x(lo)..=x(hi), rect.y_range()),
             1.0,
             OK,
+        );
+    }
+    if let Some([lo, hi]) = certified {
+        let foot = rect.bottom() - 1.0;
+        painter.line_segment(
+            [egui::pos2(x(lo), foot), egui::pos2(x(hi), foot)],
+            egui::Stroke::new(2.0, CERTIFIED),
         );
     }
     let vx = x(value);

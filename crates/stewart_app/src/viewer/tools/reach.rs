@@ -3,6 +3,7 @@
 //! by what they depend on, so a still pose costs nothing and a moving one a few thousand
 //! inverse solutions a frame.
 
+use stewart_kinematics::analysis::certified::free::{Search, free_range};
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::ReachMap;
 use stewart_kinematics::{Angle, Geometry, Pose, model::limits::Limits};
@@ -15,6 +16,8 @@ pub(crate) const MAP_SPAN_DEG: f64 = 45.0;
 pub(crate) const MAP_CELLS: usize = 41;
 /// Steps of the outward search across a coordinate's bounds.
 const STEPS: usize = 120;
+/// Boxes the proof of a slider's singularity-free range may test.
+const FREE_BOXES: usize = 600;
 
 /// Reach around the pose at its position: roll, pitch and yaw alone (radians), and the
 /// roll–pitch map at its yaw.
@@ -39,6 +42,7 @@ struct Key {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct ReachCache {
     sliders: Option<(Key, [Option<[f64; 2]>; 6])>,
+    free: Option<(Key, [Option<[f64; 2]>; 6])>,
     orientation: Option<(Key, OrientationReach)>,
 }
 
@@ -67,6 +71,44 @@ impl ReachCache {
             workspace::coordinate_range(geometry, limits, pose, k, bounds[k], STEPS)
         });
         self.sliders = Some((key, ranges));
+        ranges
+    }
+
+    /// Each coordinate's range about the pose proven free of singularity (the others
+    /// held), within its slider's `bounds`: `None` where not even the pose is proven
+    /// regular, or for servos (not certified). A few hundred boxes a coordinate, a
+    /// millisecond or so, when the pose or the scenario changes.
+    pub(crate) fn certified(
+        &mut self,
+        geometry: &Geometry,
+        pose: &Pose,
+        bounds: [[f64; 2]; 6],
+    ) -> [Option<[f64; 2]>; 6] {
+        let key = Key {
+            geometry: geometry.clone(),
+            limits: Limits::default(),
+            pose: *pose,
+            bounds,
+        };
+        if let Some((k, ranges)) = &self.free
+            && *k == key
+        {
+            return *ranges;
+        }
+        let c = pose.to_coordinates();
+        let never = || false;
+        let ranges = std::array::from_fn(|k| {
+            let reach = (c[k] - bounds[k][0]).abs().max((bounds[k][1] - c[k]).abs());
+            let search = Search {
+                budget: FREE_BOXES,
+                stop: &never,
+            };
+            let range = free_range(geometry, pose, k, reach, search).ok()?;
+            range
+                .interval
+                .map(|[lo, hi]| [lo.max(bounds[k][0]), hi.min(bounds[k][1])])
+        });
+        self.free = Some((key, ranges));
         ranges
     }
 
@@ -114,5 +156,42 @@ impl ReachCache {
                 (key, reach)
             })
             .1
+    }
+}
+
+#[cfg(test)]
+mod certified_tests {
+    use super::ReachCache;
+    use stewart_kinematics::Scenario;
+
+    #[test]
+    fn the_yaw_slider_shows_the_range_proven_free_up_to_fichters_ninety_degrees() {
+        let s = Scenario::preset("paired").expect("preset");
+        let g = &s.geometry;
+        let home = g.home_pose();
+        let c = home.to_coordinates();
+        let wide = 2.0_f64;
+        let bounds = std::array::from_fn(|k| [c[k] - wide, c[k] + wide]);
+        let mut cache = ReachCache::default();
+        let free = cache.certified(g, &home, bounds);
+        let [lo, hi] = free[5].expect("home is regular").map(f64::to_degrees);
+        assert!(
+            (-90.0..-89.0).contains(&lo) && (89.0..90.0).contains(&hi),
+            "{lo} {hi}"
+        );
+        // Asked again for the same pose: the cached answer.
+        assert_eq!(cache.certified(g, &home, bounds), free);
+        // The seed: nothing; servos: not certified.
+        for name in ["seed", "servo-desk"] {
+            let s = Scenario::preset(name).expect("preset");
+            let home = s.geometry.home_pose();
+            assert!(
+                cache
+                    .certified(&s.geometry, &home, bounds)
+                    .iter()
+                    .all(Option::is_none),
+                "{name}"
+            );
+        }
     }
 }
