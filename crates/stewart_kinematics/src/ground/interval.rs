@@ -70,9 +70,16 @@ impl Interval {
         m.clamp(self.lo, self.hi)
     }
 
-    /// `hi − lo`, rounded up.
+    /// `hi − lo`, rounded up (0 for a point).
     pub fn width(&self) -> f64 {
-        up(self.hi - self.lo)
+        let w = self.hi - self.lo;
+        if w == 0.0 { 0.0 } else { up(w) }
+    }
+
+    /// `hi − lo`, rounded down: at most the real width.
+    pub fn width_below(&self) -> f64 {
+        let w = self.hi - self.lo;
+        if w == 0.0 { 0.0 } else { down(w).max(0.0) }
     }
 
     /// The largest absolute value of a point inside.
@@ -165,7 +172,10 @@ impl Interval {
     /// ends, and ±1 where a maximum (`x + shift = 2kπ`) or a minimum (`= π + 2kπ`) may lie
     /// inside — decided with a margin, so that a rounding error only ever widens.
     fn cos_shifted(&self, shift: f64) -> Self {
-        if !(self.lo.is_finite() && self.hi.is_finite()) || self.hi - self.lo >= TAU {
+        // Beyond a million radians the shift's rounding could outgrow the margin below:
+        // the whole range, which holds whatever lies inside.
+        let far = self.lo.abs().max(self.hi.abs()) > 1e6;
+        if far || !(self.lo.is_finite() && self.hi.is_finite()) || self.hi - self.lo >= TAU {
             return Self { lo: -1.0, hi: 1.0 };
         }
         let at = |x: f64| if shift == 0.0 { x.cos() } else { x.sin() };
@@ -319,6 +329,13 @@ mod tests {
             prop_assert!(x.cos().contains(p.cos()), "cos {x:?} {p}");
             prop_assert!(x.sin().width() <= w + 1e-12 && x.cos().width() <= w + 1e-12);
         }
+
+        #[test]
+        fn far_angles_hold_their_points_too(a in -1e10f64..1e10, w in 0f64..2.0, t in 0f64..=1.0) {
+            let (x, p) = interval_and_point(a, a + w, t);
+            prop_assert!(x.sin().contains(p.sin()), "sin {x:?} {p}");
+            prop_assert!(x.cos().contains(p.cos()), "cos {x:?} {p}");
+        }
     }
 
     #[test]
@@ -332,6 +349,10 @@ mod tests {
         assert!(i(0.2, 0.3).cos().hi() < 0.99);
         assert!(i(7.0, 7.5).sin().lo() > 0.6, "{:?}", i(7.0, 7.5).sin());
         assert_eq!(i(0.0, 7.0).sin(), i(-1.0, 1.0));
+        // A real peak the shifted turn count would round past (found by review).
+        let far = i(4_374_695_819.833_795, 4_374_695_820.833_795).sin();
+        assert_eq!(far.hi(), 1.0);
+        assert_eq!(Interval::point(2.5).width(), 0.0);
     }
 
     #[test]

@@ -73,6 +73,8 @@ pub fn free_range(
     search: Search,
 ) -> Result<FreeRange, RotaryNotCovered> {
     covered(geometry)?;
+    // A reach that is no finite distance searches nothing beyond the pose.
+    let reach = if reach.is_finite() { reach.abs() } else { 0.0 };
     let at = PoseBox::at(pose);
     if !proven_free(geometry, &at) {
         return Ok(FreeRange {
@@ -150,6 +152,8 @@ pub fn free_ball(
     search: Search,
 ) -> Result<FreeBall, RotaryNotCovered> {
     covered(geometry)?;
+    // A reach that is no finite distance searches nothing beyond the pose.
+    let reach = if reach.is_finite() { reach.abs() } else { 0.0 };
     let at = PoseBox::at(pose);
     let mut boxes = 1;
     if !proven_free(geometry, &at) {

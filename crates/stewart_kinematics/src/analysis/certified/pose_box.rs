@@ -65,9 +65,14 @@ impl PoseBox {
     }
 }
 
-/// `m · v` for a point vector `v`.
-fn times(m: &[IVec3; 3], v: &nalgebra::Vector3<f64>) -> IVec3 {
-    std::array::from_fn(|r| m[r][0] * v.x + m[r][1] * v.y + m[r][2] * v.z)
+/// `m · v`.
+fn times(m: &[IVec3; 3], v: &IVec3) -> IVec3 {
+    std::array::from_fn(|r| m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2])
+}
+
+/// `a − b` for point vectors, enclosed (the difference of two floats may not be one).
+fn difference(a: &nalgebra::Vector3<f64>, b: &nalgebra::Vector3<f64>) -> IVec3 {
+    std::array::from_fn(|k| Interval::point(a[k]) - Interval::point(b[k]))
 }
 
 /// `a × b`.
@@ -99,10 +104,11 @@ impl BoxLegs {
         let mut arms = [[Interval::point(0.0); 3]; 6];
         let mut legs = arms;
         for (i, a) in geometry.platform_joints().iter().enumerate() {
-            let arm = times(&r, &(a - c));
+            let arm = times(&r, &difference(a, &c));
             arms[i] = arm;
-            // q_i = position + c + R (a_i − c)
-            legs[i] = std::array::from_fn(|k| position[k] + arm[k] + (c[k] - base[i][k]));
+            // q_i − b_i = position + R (a_i − c) + (c − b_i)
+            let offset = difference(&c, &base[i]);
+            legs[i] = std::array::from_fn(|k| position[k] + arm[k] + offset[k]);
         }
         Self { arms, legs }
     }

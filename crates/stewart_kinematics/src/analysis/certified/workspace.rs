@@ -89,7 +89,8 @@ pub fn certified_workspace(
     let judge = Judge {
         geometry,
         stroke: Interval::new(min, max).unwrap_or(Interval::ENTIRE),
-        cones: [limits.base_cone, limits.platform_cone].map(|a| a.map(|a| a.radians().cos())),
+        cones: [limits.base_cone, limits.platform_cone]
+            .map(|a| a.map(|a| Interval::point(a.radians()).cos())),
         clearance: limits.leg_radius.map(|r| 2.0 * r),
         orientation: *request.orientation,
         margin: 1e-9 * geometry.characteristic_length(),
@@ -113,16 +114,21 @@ pub fn certified_workspace(
         .map(|seed| judge.branch(*seed, request, &tested, &stopped))
         .collect();
     let boxes: Vec<ClassedBox> = results.into_iter().flatten().collect();
-    let volume = |class: BoxClass| {
-        boxes
-            .iter()
-            .filter(|b| b.class == class)
-            .map(|b| b.position.iter().map(Interval::width).product::<f64>())
-            .sum::<f64>()
+    // Inner rounded down and boundary up, so that the bracket holds to the last bit.
+    let volume = |class: BoxClass, round: fn(Interval) -> f64| {
+        let mut sum = Interval::point(0.0);
+        for b in boxes.iter().filter(|b| b.class == class) {
+            let mut v = Interval::point(1.0);
+            for side in &b.position {
+                v = v * Interval::new(side.width_below(), side.width()).unwrap_or(Interval::ENTIRE);
+            }
+            sum = sum + v;
+        }
+        round(sum)
     };
     Ok(Some(CertifiedWorkspace {
-        inner_m3: volume(BoxClass::Inner),
-        boundary_m3: volume(BoxClass::Boundary),
+        inner_m3: volume(BoxClass::Inner, |v| v.lo().max(0.0)),
+        boundary_m3: volume(BoxClass::Boundary, |v| v.hi()),
         tested: tested.load(Ordering::Relaxed),
         cut_short: stopped.load(Ordering::Relaxed),
         boxes,
@@ -150,8 +156,8 @@ fn split(b: &[Interval; 3], k: usize) -> [[Interval; 3]; 2] {
 struct Judge<'a> {
     geometry: &'a Geometry,
     stroke: Interval,
-    /// The cosines of the base and platform cone limits.
-    cones: [Option<f64>; 2],
+    /// The cosines of the base and platform cone limits, enclosed.
+    cones: [Option<Interval>; 2],
     /// The least distance between two legs' axes.
     clearance: Option<f64>,
     orientation: Pose,
@@ -170,8 +176,9 @@ impl Judge<'_> {
         let mut hi = [f64::INFINITY; 3];
         for l in &legs.legs {
             for k in 0..3 {
-                lo[k] = lo[k].max(-l[k].hi() - longest);
-                hi[k] = hi[k].min(-l[k].lo() + longest);
+                let reach = -l[k] + Interval::new(-longest, longest).unwrap_or(Interval::ENTIRE);
+                lo[k] = lo[k].max(reach.lo());
+                hi[k] = hi[k].min(reach.hi());
             }
         }
         lo[2] = lo[2].max(0.0);
@@ -243,8 +250,8 @@ impl Judge<'_> {
             for (l, length) in legs.legs.iter().zip(legs.lengths()) {
                 let along = l[0] * n[0] + l[1] * n[1] + l[2] * n[2];
                 match along.div(&length) {
-                    Some(cos) if cos.hi() < *cos_max => return BoxClass::Outer,
-                    Some(cos) => all &= cos.lo() >= *cos_max,
+                    Some(cos) if cos.hi() < cos_max.lo() => return BoxClass::Outer,
+                    Some(cos) => all &= cos.lo() >= cos_max.hi(),
                     None => all = false,
                 }
             }
