@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use stewart_kinematics::analysis::workspace;
 
 use std::io::Write as _;
-use std::sync::atomic::Ordering;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
@@ -337,7 +337,12 @@ fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
         .boundary_width
         .unwrap_or(0.005 * g.characteristic_length());
     crate::interrupt::flag();
-    let stop = crate::interrupt::requested;
+    // The stop is asked once a box: counting the asks counts the boxes, for the spinner.
+    let asked = AtomicUsize::new(0);
+    let stop = || {
+        asked.fetch_add(1, Ordering::Relaxed);
+        crate::interrupt::requested()
+    };
     let request = WorkspaceRequest {
         orientation: &orientation,
         boundary_width: width,
@@ -345,7 +350,27 @@ fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
         stop: &stop,
     };
     let started = Instant::now();
-    let w = certified_workspace(g, &scenario.limits, &request)?.ok_or_else(|| {
+    // On a terminal, the time spent and the boxes classified while it runs.
+    let spinner = ProgressBar::new_spinner();
+    spinner.set_style(
+        ProgressStyle::with_template("{spinner} {elapsed} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+    );
+    let result = std::thread::scope(|scope| {
+        let worker = scope.spawn(|| certified_workspace(g, &scenario.limits, &request));
+        while !worker.is_finished() {
+            spinner.set_message(format!(
+                "{} boxes classified (Ctrl-C ends it with what is decided)",
+                asked.load(Ordering::Relaxed)
+            ));
+            spinner.tick();
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        worker.join()
+    });
+    spinner.finish_and_clear();
+    let result = result.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+    let w = result?.ok_or_else(|| {
         anyhow::anyhow!(
             "scenario `{}`: the certified workspace needs both stroke limits (`leg_min` and `leg_max` in [geometry])",
             scenario.name
