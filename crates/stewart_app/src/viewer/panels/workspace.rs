@@ -10,7 +10,9 @@ use stewart_render::colormap;
 use super::context::PanelContext;
 use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
+use crate::viewer::tools::certified::CertifiedKey;
 use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
+use stewart_kinematics::analysis::certified::workspace::{BoxClass, CertifiedWorkspace};
 
 /// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it
 /// starts open.
@@ -32,6 +34,7 @@ pub(crate) fn show(
             }
             orientation(ui, w, t);
             numbers(ui, w, scenario, pose, t);
+            certified(ui, w, scenario, pose, t);
             ui.separator();
             let centre_z = scenario.geometry.platform_centre(pose).z;
             let condition_max = scenario.checks.condition_max;
@@ -41,6 +44,107 @@ pub(crate) fn show(
                 stiffness_note(ui, w, per_unit, t);
             }
         });
+}
+
+/// The certified bracket: a button that asks for it, the bracket for the scenario and
+/// orientation shown, and a horizontal slice of its boxes at the platform's height.
+fn certified(ui: &mut egui::Ui, w: &mut WorkspaceTool, scenario: &Scenario, pose: &Pose, t: Lang) {
+    let key = CertifiedKey {
+        geometry: scenario.geometry.clone(),
+        limits: scenario.limits,
+        orientation: w.orientation_at(pose),
+    };
+    ui.horizontal(|ui| {
+        let busy = w.certified.busy();
+        if ui
+            .add_enabled(!busy, egui::Button::new(t.tr("workspace_panel.certify")))
+            .on_hover_text(t.tr("workspace_panel.certify_tip"))
+            .clicked()
+        {
+            w.certified.start(key.clone());
+        }
+        if busy {
+            ui.spinner();
+        }
+    });
+    let Some(outcome) = &w.certified.latest else {
+        return;
+    };
+    if outcome.key != key {
+        ui.label(RichText::new(t.tr("workspace_panel.certified_stale")).color(WARNING));
+        return;
+    }
+    let Some(c) = &outcome.workspace else {
+        ui.label(t.tr("workspace_panel.certified_none"));
+        return;
+    };
+    let share = if c.inner_m3 > 0.0 {
+        format!("{:.1}", 100.0 * c.boundary_m3 / c.inner_m3)
+    } else {
+        "∞".to_owned()
+    };
+    ui.label(
+        RichText::new(t.fmt(
+            "workspace_panel.certified",
+            &[
+                ("lo", &format!("{:.4}", c.inner_m3)),
+                ("hi", &format!("{:.4}", c.inner_m3 + c.boundary_m3)),
+                ("share", &share),
+                ("boxes", &c.tested),
+                ("width", &format!("{:.1}", 1000.0 * outcome.width)),
+            ],
+        ))
+        .color(OK),
+    );
+    if c.cut_short {
+        ui.label(RichText::new(t.tr("workspace_panel.certified_cut")).color(WARNING));
+    }
+    ui.label(t.tr("workspace_panel.certified_slice"));
+    certified_slice(ui, c, pose.position.z);
+}
+
+/// The certified boxes the plane `z` crosses, seen from above: inner green, boundary
+/// amber, on the smallest square holding them.
+fn certified_slice(ui: &mut egui::Ui, c: &CertifiedWorkspace, z: f64) {
+    let crossed: Vec<_> = c
+        .boxes
+        .iter()
+        .filter(|b| b.position[2].contains(z))
+        .collect();
+    let side = ui.available_width().clamp(120.0, 240.0);
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(side, side), egui::Sense::hover());
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 2.0, ui.visuals().extreme_bg_color);
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for b in &crossed {
+        for k in 0..2 {
+            lo[k] = lo[k].min(b.position[k].lo());
+            hi[k] = hi[k].max(b.position[k].hi());
+        }
+    }
+    let span = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    if !(span.is_finite() && span > 0.0) {
+        return;
+    }
+    let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
+    let at = |x: f64, y: f64| {
+        egui::pos2(
+            rect.center().x + ((x - centre[0]) / span) as f32 * rect.width(),
+            rect.center().y - ((y - centre[1]) / span) as f32 * rect.height(),
+        )
+    };
+    for b in crossed {
+        let colour = match b.class {
+            BoxClass::Inner => OK,
+            _ => WARNING,
+        };
+        let r = egui::Rect::from_two_pos(
+            at(b.position[0].lo(), b.position[1].lo()),
+            at(b.position[0].hi(), b.position[1].hi()),
+        );
+        painter.rect_filled(r, 0.0, colour);
+    }
 }
 
 /// At the pose's orientation, or at one chosen with three drag values.

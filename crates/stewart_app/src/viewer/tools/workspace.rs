@@ -175,6 +175,8 @@ pub struct WorkspaceTool {
     one_thread: Option<Arc<rayon::ThreadPool>>,
     job: Job<Result<Outcome, ViewerError>>,
     resolutions: [usize; 2],
+    /// The certified bracket, asked for with a button.
+    pub(crate) certified: super::certified::CertifiedTool,
 }
 
 impl Default for WorkspaceTool {
@@ -213,6 +215,7 @@ impl WorkspaceTool {
             one_thread: None,
             job: Job::new("workspace"),
             resolutions: [coarse, fine],
+            certified: super::certified::CertifiedTool::default(),
         }
     }
 
@@ -336,6 +339,7 @@ impl WorkspaceTool {
 
     /// Take the newest finished result (older ones that arrived meanwhile are skipped).
     pub(crate) fn poll(&mut self) {
+        self.certified.poll();
         let mut rest_begun = false;
         match self.job.poll() {
             Some(Ok(Ok(outcome))) => {

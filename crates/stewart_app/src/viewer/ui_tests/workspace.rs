@@ -273,3 +273,47 @@ fn the_slice_can_be_coloured_by_the_platforms_lowest_stiffness() {
         .map(|s| s.stiffness);
     assert_eq!(again, Some(None));
 }
+
+#[test]
+fn certify_proves_the_bracket_the_command_line_gives_and_says_when_it_is_stale() {
+    let mut h = shown("paired", Lang::En);
+    h.get_by_label("Certify the volume").click();
+    // One frame takes the click (a spinner then turns while it runs).
+    h.step();
+    h.state_mut().tools.workspace.certified.wait();
+    h.run();
+    let s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+    let level = s.geometry.home_pose();
+    let never = || false;
+    let request = stewart_kinematics::analysis::certified::workspace::WorkspaceRequest {
+        orientation: &level,
+        boundary_width: 0.01 * s.geometry.characteristic_length(),
+        budget: 3_000_000,
+        stop: &never,
+    };
+    let c = stewart_kinematics::analysis::certified::workspace::certified_workspace(
+        &s.geometry,
+        &s.limits,
+        &request,
+    )
+    .expect("linear legs")
+    .expect("stroke");
+    let bounds = format!(
+        "Proven: {:.4} m³ ≤ volume ≤ {:.4} m³",
+        c.inner_m3,
+        c.inner_m3 + c.boundary_m3
+    );
+    assert!(
+        h.query_by_label_contains(&bounds).is_some(),
+        "{bounds} not shown"
+    );
+    assert!(
+        h.query_by_label_contains("proven reachable (green)")
+            .is_some()
+    );
+    // Another orientation: the bracket shown is no longer for it.
+    h.state_mut().tools.workspace.follow_pose = false;
+    h.state_mut().tools.workspace.orientation_deg = [5.0, 0.0, 0.0];
+    h.run();
+    assert!(h.query_by_label_contains("certify again").is_some());
+}
