@@ -95,25 +95,26 @@ pub fn certified_workspace(
         orientation: *request.orientation,
         margin: 1e-9 * geometry.characteristic_length(),
     };
-    let start = judge.start(max);
-    // Split the start into a few thousand boxes, then each branch on its own thread.
-    let mut seeds = vec![start];
-    while seeds.len() < 4096 {
-        seeds = seeds
-            .iter()
-            .flat_map(|b| {
-                let k = widest(b);
-                split(b, k)
-            })
-            .collect();
-    }
+    // Breadth first, a level at a time on all cores: a run stopped early has classed the
+    // whole region coarsely, so its bracket is already useful.
     let tested = AtomicUsize::new(0);
     let stopped = AtomicBool::new(false);
-    let results: Vec<Vec<ClassedBox>> = seeds
-        .par_iter()
-        .map(|seed| judge.branch(*seed, request, &tested, &stopped))
-        .collect();
-    let boxes: Vec<ClassedBox> = results.into_iter().flatten().collect();
+    let mut boxes: Vec<ClassedBox> = Vec::new();
+    let mut frontier = vec![judge.start(max)];
+    while !frontier.is_empty() {
+        let level: Vec<Step> = frontier
+            .par_iter()
+            .map(|b| judge.step(b, request, &tested, &stopped))
+            .collect();
+        frontier = Vec::new();
+        for step in level {
+            match step {
+                Step::Done(b) => boxes.push(b),
+                Step::Split(halves) => frontier.extend(halves),
+                Step::Dropped => {}
+            }
+        }
+    }
     // Inner rounded down and boundary up, so that the bracket holds to the last bit.
     let volume = |class: BoxClass, round: fn(Interval) -> f64| {
         let mut sum = Interval::point(0.0);
@@ -152,6 +153,16 @@ fn split(b: &[Interval; 3], k: usize) -> [[Interval; 3]; 2] {
     [a, c]
 }
 
+/// What became of one box of a level.
+enum Step {
+    /// Classed for good.
+    Done(ClassedBox),
+    /// Split for the next level.
+    Split([[Interval; 3]; 2]),
+    /// Outer: no position of it is reachable.
+    Dropped,
+}
+
 /// The limits, ready to judge boxes.
 struct Judge<'a> {
     geometry: &'a Geometry,
@@ -185,40 +196,38 @@ impl Judge<'_> {
         std::array::from_fn(|k| Interval::new(lo[k], hi[k].max(lo[k])).unwrap_or(Interval::ENTIRE))
     }
 
-    /// Classify boxes from `seed` down, depth first.
-    fn branch(
+    /// One box of a level: classed (kept when inner, or boundary at the finest width),
+    /// dropped (outer), or split in two for the next level. Once the budget is spent or a
+    /// stop was asked, every box left stays undecided: boundary, so the bracket holds.
+    fn step(
         &self,
-        seed: [Interval; 3],
+        b: &[Interval; 3],
         request: &WorkspaceRequest,
         tested: &AtomicUsize,
         stopped: &AtomicBool,
-    ) -> Vec<ClassedBox> {
-        let mut out = Vec::new();
-        let mut stack = vec![seed];
-        while let Some(b) = stack.pop() {
-            let spent = tested.fetch_add(1, Ordering::Relaxed) >= request.budget;
-            if spent || stopped.load(Ordering::Relaxed) || (request.stop)() {
-                stopped.store(true, Ordering::Relaxed);
-                // Undecided: the rest counts as boundary, so the bracket still holds.
-                out.extend(
-                    std::iter::once(b)
-                        .chain(stack.drain(..))
-                        .map(|position| ClassedBox {
-                            position,
-                            class: BoxClass::Boundary,
-                        }),
-                );
-                break;
-            }
-            match self.class(&b) {
-                BoxClass::Outer => {}
-                BoxClass::Boundary if b[widest(&b)].width() > request.boundary_width => {
-                    stack.extend(split(&b, widest(&b)));
-                }
-                class => out.push(ClassedBox { position: b, class }),
-            }
+    ) -> Step {
+        let boundary = ClassedBox {
+            position: *b,
+            class: BoxClass::Boundary,
+        };
+        if stopped.load(Ordering::Relaxed) {
+            return Step::Done(boundary);
         }
-        out
+        let spent = tested.fetch_add(1, Ordering::Relaxed) >= request.budget;
+        if spent || (request.stop)() {
+            stopped.store(true, Ordering::Relaxed);
+            return Step::Done(boundary);
+        }
+        match self.class(b) {
+            BoxClass::Outer => Step::Dropped,
+            BoxClass::Boundary if b[widest(b)].width() > request.boundary_width => {
+                Step::Split(split(b, widest(b)))
+            }
+            class => Step::Done(ClassedBox {
+                position: *b,
+                class,
+            }),
+        }
     }
 
     /// The class of a box of positions.
