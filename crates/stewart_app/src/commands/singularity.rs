@@ -21,6 +21,9 @@ struct Certified<'a> {
     /// The pose: x, y, z (m), roll, pitch, yaw (°).
     pose: [f64; 6],
     free: &'static str,
+    /// The freed coordinate's index in `pose`.
+    #[serde(skip)]
+    index: usize,
     /// `deg` or `m`.
     unit: &'static str,
     /// The proven range (a coordinate), or null.
@@ -58,6 +61,7 @@ pub(crate) fn run(args: &SingularityArgs) -> Result<ExitCode> {
         scenario: &scenario.name,
         pose: row,
         free: name_of(free),
+        index: index(free),
         unit: "m",
         interval: None,
         radius_m: None,
@@ -74,7 +78,7 @@ pub(crate) fn run(args: &SingularityArgs) -> Result<ExitCode> {
             ball.radius.is_some()
         }
         _ => {
-            let k = index(free);
+            let k = doc.index;
             let angle = k >= 3;
             let reach = if angle {
                 std::f64::consts::PI
@@ -140,7 +144,7 @@ fn words(doc: &Certified, at: &str) -> String {
                 doc.boxes
             );
             for (end, side) in [(lo, "lower"), (hi, "upper")] {
-                let pose_value = doc.pose[index_of(name)];
+                let pose_value = doc.pose[doc.index];
                 if ((end - pose_value).abs() - doc.reach).abs() < 1e-9 * doc.reach.max(1.0) {
                     t.push_str(&format!(
                         "The {side} end is the search's reach (±{:.6}{unit}): the free range may go on.\n",
@@ -166,14 +170,6 @@ fn words(doc: &Certified, at: &str) -> String {
         );
     }
     text
-}
-
-/// The pose row's index of a coordinate's name.
-fn index_of(name: &str) -> usize {
-    ["x", "y", "z", "roll", "pitch", "yaw"]
-        .iter()
-        .position(|n| *n == name)
-        .unwrap_or(0)
 }
 
 /// The sampled answer: the conditioning at the pose.

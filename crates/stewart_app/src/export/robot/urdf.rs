@@ -42,15 +42,9 @@ pub(crate) fn joint_names(rig: &Rig) -> Vec<String> {
 
 /// The movable joints' values at sample `s`, in [`joint_names`]' order.
 pub(crate) fn joint_values(s: &super::rig::Sample) -> Vec<f64> {
-    let p = &s.pose;
-    let mut out = vec![
-        p.position.x,
-        p.position.y,
-        p.position.z,
-        p.yaw.radians(),
-        p.pitch.radians(),
-        p.roll.radians(),
-    ];
+    // The virtual chain turns yaw first, then pitch, then roll.
+    let [x, y, z, roll, pitch, yaw] = s.pose.to_coordinates();
+    let mut out = vec![x, y, z, yaw, pitch, roll];
     for chain in &s.chains {
         match chain {
             LegChain::Linear { universal, length } => {
