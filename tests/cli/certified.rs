@@ -181,6 +181,14 @@ fn the_certified_workspace_brackets_the_sampled_volume() {
             "--boundary-width",
             "0",
         ],
+        vec![
+            "workspace",
+            "--preset",
+            "paired",
+            "--certified",
+            "--boundary-width",
+            "1e-300",
+        ],
         vec!["workspace", "--preset", "paired", "--format", "json"],
         vec![
             "workspace",

@@ -118,18 +118,19 @@ pub(crate) fn parse_mass(text: &str) -> Result<f64, ArgError> {
     }
 }
 
-/// A width in metres: more than 0, at most 1000.
+/// A box width in metres: at least a micrometre (finer boxes than that would spend any
+/// budget before deciding anything), at most 1000.
 pub(crate) fn parse_width(text: &str) -> Result<f64, ArgError> {
     let v: f64 = text
         .trim()
         .parse()
         .map_err(|_| ArgError::not_a(text, "a number of metres"))?;
-    if v.is_finite() && v > 0.0 && v <= bounds::LENGTH_M {
+    if (1e-6..=bounds::LENGTH_M).contains(&v) {
         Ok(v)
     } else {
         Err(ArgError::out_of_range(
             Some("the width"),
-            "more than 0 and at most 1000 m",
+            "at least 1e-6 and at most 1000 m",
             text,
         ))
     }
