@@ -4,7 +4,7 @@
 
 use stewart_link::template::{FieldType, Template, TemplateDecoder, TemplateFrame};
 
-use crate::link::{device_sim, device_sim_on, frames_sent, free_port};
+use crate::link::{deadlines_skipped, device_sim, device_sim_on, frames_sent, free_port};
 use crate::serial::PtyPair;
 use crate::{parse_csv, stderr, stdout, stewart, tempdir};
 
@@ -39,6 +39,7 @@ fn a_templates_bytes_are_the_solved_legs_scaled_from_the_stroke() {
         "--preset",
         "paired",
         "--dry-run",
+        "--instant",
         "--rate",
         "200",
         "--format",
@@ -59,8 +60,8 @@ fn a_templates_bytes_are_the_solved_legs_scaled_from_the_stroke() {
     let step = rows[1][0] - rows[0][0];
     let (mut compared, mut worst) = (0, 0.0f64);
     for (k, frame) in sent.iter().enumerate() {
-        // Armed from the first tick: frame k at k/rate. After the ramp, until the stop,
-        // on the solve table's own times.
+        // Armed from the first tick: frame k at k/rate (on the stream's own clock, none
+        // skipped). After the ramp, until the stop, on the solve table's own times.
         let t = k as f64 / rate;
         let row = (t / step).round() as usize;
         if t < 3.0 || row + 1 >= rows.len() || (t - rows[row][0]).abs() > 1e-9 {
@@ -101,7 +102,8 @@ fn recorded_numbers(sim: &std::process::Output, sent: usize) -> Vec<[f64; 6]> {
         .collect()
 }
 
-/// The numbers of a dry run of the same stream (the stream is the same tick by tick).
+/// The numbers of a dry run of the same stream on its own clock (the stream is the same
+/// tick by tick).
 fn dry_run_numbers(extra: &[&str]) -> Vec<[f64; 6]> {
     let dir = tempdir();
     let out = dir.path().join("frames.bin");
@@ -112,6 +114,7 @@ fn dry_run_numbers(extra: &[&str]) -> Vec<[f64; 6]> {
             "--preset",
             "paired",
             "--dry-run",
+            "--instant",
             "--format",
             TEMPLATE,
         ][..],
@@ -126,6 +129,41 @@ fn dry_run_numbers(extra: &[&str]) -> Vec<[f64; 6]> {
         .iter()
         .map(|f| f.map(|n| f64::from(n.unwrap_or(0))))
         .collect()
+}
+
+/// What the device read is the dry run's stream, frame for frame, when the live stream kept
+/// every deadline. A machine so loaded that it skipped some (the link says how many) sent
+/// fewer frames, each for its own time; while the platform follows the motion (after the
+/// ramp, before the stop) those are the motion's values at that time exactly, so the
+/// device read the dry run's frames of that stretch in order, less at most the skipped.
+fn same_as_a_dry_run(link: &std::process::Output, got: &[[f64; 6]], timing: &[&str]) {
+    let all = dry_run_numbers(timing);
+    let skipped = deadlines_skipped(link);
+    if skipped == 0 {
+        assert_eq!(got, all);
+        return;
+    }
+    let value = |name: &str| -> f64 {
+        let at = timing
+            .iter()
+            .position(|a| *a == name)
+            .unwrap_or_else(|| panic!("{name}"));
+        timing[at + 1].parse().unwrap_or_else(|e| panic!("{e}"))
+    };
+    let (rate, ramp, duration) = (value("--rate"), value("--ramp"), value("--duration"));
+    let following = &all[(ramp * rate) as usize + 1..(duration * rate) as usize];
+    let (mut from, mut found) = (0, 0);
+    for frame in got {
+        if let Some(at) = following[from..].iter().position(|f| f == frame) {
+            from += at + 1;
+            found += 1;
+        }
+    }
+    assert!(
+        found + skipped >= following.len(),
+        "{found} of {} frames while following, {skipped} deadlines skipped",
+        following.len()
+    );
 }
 
 #[test]
@@ -146,7 +184,7 @@ fn device_sim_reads_a_templates_frames_over_udp_as_they_were_sent() {
     assert!(sent > 50, "{sent}");
     let sim = sim.finish();
     let got = recorded_numbers(&sim, sent);
-    assert_eq!(got, dry_run_numbers(&timing));
+    same_as_a_dry_run(&o, &got, &timing);
 }
 
 #[test]
@@ -170,7 +208,7 @@ fn device_sim_reads_a_templates_frames_over_a_serial_line() {
     let sent = frames_sent(&o);
     let sim = sim.finish();
     let got = recorded_numbers(&sim, sent);
-    assert_eq!(got, dry_run_numbers(&timing));
+    same_as_a_dry_run(&o, &got, &timing);
 }
 
 #[test]

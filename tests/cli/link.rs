@@ -255,6 +255,21 @@ fn bad_link_options_are_one_clear_error_and_nothing_is_sent() {
             vec!["link", "--dry-run", "--transport", "udp"],
             "--dry-run sends nothing",
         ),
+        (
+            vec![
+                "link",
+                "--instant",
+                "--transport",
+                "udp",
+                "--address",
+                "127.0.0.1:9",
+            ],
+            "--instant is for a dry run: a udp link keeps real time",
+        ),
+        (
+            vec!["link", "--instant", "--loop"],
+            "--instant with --loop needs --duration",
+        ),
     ] {
         let o = stewart(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
@@ -275,6 +290,18 @@ pub fn frames_sent(o: &std::process::Output) -> usize {
         .lines()
         .find(|l| l.starts_with("link: ") && l.contains(" frames to "))
         .and_then(|l| l.split_whitespace().nth(1))
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0)
+}
+
+/// The deadlines a live stream skipped (`; N deadlines skipped` in its summary; none
+/// when it does not say).
+pub fn deadlines_skipped(o: &std::process::Output) -> usize {
+    stderr(o)
+        .lines()
+        .find(|l| l.starts_with("link: ") && l.contains(" frames to "))
+        .and_then(|l| l.split("; ").find(|p| p.contains(" deadlines skipped")))
+        .and_then(|p| p.split_whitespace().next())
         .and_then(|n| n.parse().ok())
         .unwrap_or(0)
 }

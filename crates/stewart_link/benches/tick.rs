@@ -15,7 +15,7 @@ use support::drained_peer;
 use criterion::{Criterion, criterion_group};
 use stewart_link::channels::{ChannelMap, Output};
 use stewart_link::safety::{ActuatorLimits, StopMode, Supervisor};
-use stewart_link::sender::{SenderConfig, Stream, WireFormat, time_each};
+use stewart_link::sender::{Clock, SenderConfig, Stream, WireFormat, time_each};
 use stewart_link::target::{ActuatorMotion, Sample, Target};
 use stewart_link::transport::Udp;
 
@@ -75,6 +75,7 @@ fn stream() -> Stream {
         arm_at_start: true,
         stop_after: None,
         record: None,
+        clock: Clock::Wall,
     };
     let target: Target = Box::new(|t| Ok(motion(t, MOTIONS[0].1)));
     let udp = Udp::connect(&address).unwrap_or_else(|e| panic!("{e}"));

@@ -205,6 +205,11 @@ pub(crate) struct LinkArgs {
     /// Send nothing anywhere: record what would be sent (the same as `--transport file`).
     #[arg(long)]
     pub(crate) dry_run: bool,
+    /// A dry run on the stream's own clock: every tick in turn, written at once instead of
+    /// in real time (the same bytes a live stream sends on an idle machine, none skipped
+    /// however loaded this one is).
+    #[arg(long, conflicts_with_all = ["cue", "bench", "list_ports", "record"])]
+    pub(crate) instant: bool,
     /// binary (34-byte frames with a CRC, docs/PROTOCOL.md), text (`S,seq,v1,…,v6`
     /// lines), smc3 (two SMC3 boards: `[A hi lo]` frames, 0–1023, on --port and --port2),
     /// odrive (three two-axis ODrives: `p axis turns turns/s 0` lines, on --port, --port2,

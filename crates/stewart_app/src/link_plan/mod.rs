@@ -11,7 +11,7 @@ use stewart_kinematics::model::link_settings::LinkSettings;
 use stewart_kinematics::{Geometry, Pose, Scenario, Trajectory};
 use stewart_link::channels::ChannelMap;
 use stewart_link::safety::Supervisor;
-use stewart_link::sender::{SenderConfig, WireFormat};
+use stewart_link::sender::{Clock, SenderConfig, WireFormat};
 use stewart_link::target::{ActuatorMotion, Sample, Target, TargetError};
 use stewart_link::transport::Transport;
 
@@ -85,6 +85,7 @@ impl LinkPlan {
             arm_at_start,
             stop_after,
             record: None,
+            clock: Clock::Wall,
         }
     }
 

@@ -190,6 +190,21 @@ pub struct SenderConfig {
     /// Where each set-point answered by telemetry goes, with its measured values (a
     /// recorder on another thread; nothing is written on the sender's).
     pub record: Option<mpsc::Sender<Row>>,
+    /// Whose clock the ticks follow.
+    pub clock: Clock,
+}
+
+/// Whose clock the ticks follow.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Clock {
+    /// The wall clock: each tick waits for its deadline, and a stalled machine skips
+    /// deadlines rather than send late set-points (every live link).
+    #[default]
+    Wall,
+    /// The stream's own clock: every tick in turn, at once, none skipped (a dry run into a
+    /// record that nothing reads as it is written: the same ticks as a live stream on an
+    /// idle machine, whatever the load).
+    Stepped,
 }
 
 /// A running sender.
@@ -612,9 +627,14 @@ fn run(
     let period = 1.0 / rate_hz;
     let arm_at_start = config.arm_at_start;
     let stop_after = config.stop_after;
+    let stepped = config.clock == Clock::Stepped;
     let mut stream = Stream::new(config, target, transport);
     let mut waiter = Waiter::new(period);
-    let scheduling = priority::raise();
+    let scheduling = if stepped {
+        "stepped (no deadlines)".to_owned()
+    } else {
+        priority::raise()
+    };
     shared
         .lock()
         .unwrap_or_else(PoisonError::into_inner)
@@ -634,27 +654,30 @@ fn run(
     let mut tail_until: Option<f64> = None;
     loop {
         let mut t = k as f64 * period;
-        let mut deadline = start + Duration::from_secs_f64(t);
-        waiter.sleep_until(deadline);
-        // Woken so late that later deadlines have passed too (the machine stalled): a late
-        // set-point is a wrong one, so send only for the latest deadline passed, not a burst.
-        let behind = (Instant::now()
-            .saturating_duration_since(deadline)
-            .as_secs_f64()
-            / period)
-            .floor() as u64;
-        if behind > 0 {
-            skipped += behind;
-            k += behind;
-            t = k as f64 * period;
-            deadline = start + Duration::from_secs_f64(t);
-        }
-        lateness.add(
-            Instant::now()
+        if !stepped {
+            let mut deadline = start + Duration::from_secs_f64(t);
+            waiter.sleep_until(deadline);
+            // Woken so late that later deadlines have passed too (the machine stalled): a
+            // late set-point is a wrong one, so send only for the latest deadline passed, not
+            // a burst.
+            let behind = (Instant::now()
                 .saturating_duration_since(deadline)
                 .as_secs_f64()
-                * 1e6,
-        );
+                / period)
+                .floor() as u64;
+            if behind > 0 {
+                skipped += behind;
+                k += behind;
+                t = k as f64 * period;
+                deadline = start + Duration::from_secs_f64(t);
+            }
+            lateness.add(
+                Instant::now()
+                    .saturating_duration_since(deadline)
+                    .as_secs_f64()
+                    * 1e6,
+            );
+        }
         let sv = stream.supervisor();
         // Arm on the first tick, whichever deadline that is (a stalled start skips some).
         if std::mem::take(&mut first_tick) && arm_at_start {
@@ -668,7 +691,7 @@ fn run(
         if stopping && matches!(sv.state(), LinkState::Arming | LinkState::Armed) {
             sv.estop();
         }
-        if stream.tick(t) {
+        if stream.tick(t) && !stepped {
             let now = Instant::now();
             if let Some(previous) = last_send {
                 let interval = now.saturating_duration_since(previous).as_secs_f64();

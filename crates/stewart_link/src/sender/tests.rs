@@ -57,6 +57,7 @@ fn config(rate_hz: f64, stop_after: Option<f64>) -> SenderConfig {
         arm_at_start: true,
         stop_after,
         record: None,
+        clock: Clock::Wall,
     }
 }
 
@@ -138,6 +139,58 @@ fn a_stream_ramps_follows_returns_home_and_ends_disarmed() {
     assert_eq!(last.values, [0; 6]);
     assert!(!last.flags.armed && !last.flags.home && !last.flags.estop);
     assert!(summary.status.timing.count as usize >= frames.len());
+}
+
+#[test]
+fn a_stepped_clock_sends_every_tick_in_turn_and_the_same_frames_as_ticking_by_hand() {
+    let sent = Arc::new(Mutex::new(Vec::new()));
+    let transport = Capture {
+        sent: Arc::clone(&sent),
+        fail_at: None,
+    };
+    let wave = |t: f64| {
+        Ok(Sample::At(std::array::from_fn(|k| {
+            20.0 * (t + k as f64).sin()
+        })))
+    };
+    let mut stepped = config(1000.0, Some(30.0));
+    stepped.clock = Clock::Stepped;
+    // Thirty seconds of stream, whatever the machine's load: no deadline can be missed.
+    let sender = Sender::spawn(stepped, Box::new(wave), Box::new(transport))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let summary = sender.join();
+    assert_eq!(summary.failure, None);
+    assert_eq!(summary.status.skipped, 0);
+    assert_eq!(summary.status.timing.count, 0, "nothing is timed");
+    assert_eq!(summary.status.scheduling, "stepped (no deadlines)");
+    let sent = sent.lock().unwrap_or_else(PoisonError::into_inner).clone();
+    for (k, (t, _)) in sent.iter().enumerate() {
+        assert_eq!(*t, k as f64 * (1.0 / 1000.0), "tick {k}");
+    }
+    // The same stream ticked by hand, tick by tick: the same bytes.
+    let by_hand = Arc::new(Mutex::new(Vec::new()));
+    let capture = Capture {
+        sent: Arc::clone(&by_hand),
+        fail_at: None,
+    };
+    let mut config = config(1000.0, Some(30.0));
+    config.supervisor.arm(0.0, [0.0; 6]);
+    let mut stream = Stream::new(config, Box::new(wave), Box::new(capture));
+    let mut k = 0;
+    while by_hand.lock().unwrap_or_else(PoisonError::into_inner).len() < sent.len() {
+        let t = k as f64 * (1.0 / 1000.0);
+        if t >= 30.0 && stream.supervisor().state() == LinkState::Armed {
+            stream.supervisor().estop();
+        }
+        stream.tick(t);
+        k += 1;
+    }
+    let by_hand = by_hand
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clone();
+    assert_eq!(sent, by_hand);
+    assert!(sent.len() > 30_000, "{}", sent.len());
 }
 
 #[test]

@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{Result, anyhow, bail};
 use stewart_kinematics::model::link_settings::{LinkSettings, LinkTransport, Word as _};
-use stewart_link::sender::{Command, Sender, SenderConfig, Status, WireFormat};
+use stewart_link::sender::{Clock, Command, Sender, SenderConfig, Status, WireFormat};
 use stewart_link::telemetry::STALE_AFTER_S;
 use stewart_link::transport::{Record, Transport, list_ports};
 
@@ -45,6 +45,12 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
     };
     let described = transport.describe();
     let mut config = plan.sender_config(true, stream_for);
+    if args.instant {
+        if stream_for.is_none() {
+            bail!("--instant with --loop needs --duration: the stream would never end");
+        }
+        config.clock = Clock::Stepped;
+    }
     let recorder = start_recorder(args, &plan, &mut config, &inputs)?;
     let (target, cue_counts) = match live {
         Some(live) => {
@@ -56,6 +62,7 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
             (plan.trajectory_target(args.repeat), None)
         }
     };
+    let clock = config.clock;
     let sender = Sender::spawn(config, target, transport)?;
     let stops_seen = supervise(&sender, stream_for);
     let summary = sender.join();
@@ -63,7 +70,7 @@ pub(crate) fn run(args: &LinkArgs) -> Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let s = &summary.status;
-    print_summary(s, &described, scenario.link.rate_hz);
+    print_summary(s, &described, scenario.link.rate_hz, clock);
     if let Some(counts) = cue_counts {
         let _ = writeln!(std::io::stderr(), "link: {}", counts.words());
     }
@@ -244,20 +251,32 @@ fn supervise(sender: &Sender, stream_for: Option<f64>) -> u32 {
 
 /// The stream's figures on standard error: frames, timing, the last note, and what the
 /// controller answered.
-fn print_summary(s: &Status, described: &str, rate_hz: f64) {
+fn print_summary(s: &Status, described: &str, rate_hz: f64, clock: Clock) {
     let timing = &s.timing;
+    let timed = match clock {
+        Clock::Stepped => "; stepped on the stream's own clock, not timed".to_owned(),
+        Clock::Wall => format!(
+            "; period error mean {:.0} µs, p99 {:.0} µs, max {:.0} µs; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs",
+            s.period_error.mean_us,
+            s.period_error.p99_us,
+            s.period_error.max_us,
+            timing.mean_us,
+            timing.p99_us,
+            timing.max_us,
+        ),
+    };
+    let skipped = match s.skipped {
+        0 => String::new(),
+        n => format!(
+            "; {n} deadlines skipped (the machine stalled: only the latest set-point is sent, never a burst)"
+        ),
+    };
     let _ = writeln!(
         std::io::stderr(),
-        "link: {} frames to {described} over {:.2} s at {} Hz; period error mean {:.0} µs, p99 {:.0} µs, max {:.0} µs; wake-up lateness mean {:.0} µs, p99 {:.0} µs, max {:.0} µs{}",
+        "link: {} frames to {described} over {:.2} s at {} Hz{timed}{skipped}{}",
         s.frames,
         s.time,
         rate_hz,
-        s.period_error.mean_us,
-        s.period_error.p99_us,
-        s.period_error.max_us,
-        timing.mean_us,
-        timing.p99_us,
-        timing.max_us,
         s.note
             .as_ref()
             .map(|n| format!("; last note: {n}"))
@@ -426,6 +445,12 @@ fn settings(base: &LinkSettings, args: &LinkArgs) -> Result<LinkSettings> {
             bail!("--dry-run sends nothing: leave out `--transport`, or drop --dry-run");
         }
         link.transport = LinkTransport::File;
+    }
+    if args.instant && link.transport != LinkTransport::File {
+        bail!(
+            "--instant is for a dry run: a {} link keeps real time (add --dry-run)",
+            link.transport.word()
+        );
     }
     Ok(link)
 }
