@@ -28,6 +28,7 @@ pub(crate) mod shot_scale;
 pub(crate) mod source;
 pub mod vehicle_in;
 pub mod viewer;
+pub(crate) mod volume_text;
 
 use std::io::Write as _;
 use std::process::ExitCode;

@@ -71,7 +71,7 @@ pub(crate) fn run(args: &SingularityArgs) -> Result<ExitCode> {
     };
     let found = match free {
         FreeCoordinate::Position => {
-            let ball = free_ball(g, &pose, doc.reach, search)?;
+            let ball = free_ball(g, &pose, doc.reach, search);
             doc.radius_m = Some(ball.radius);
             doc.boxes = ball.boxes;
             doc.cut_short = ball.cut_short;
@@ -85,7 +85,7 @@ pub(crate) fn run(args: &SingularityArgs) -> Result<ExitCode> {
             } else {
                 doc.reach
             };
-            let range = free_range(g, &pose, k, reach, search)?;
+            let range = free_range(g, &pose, k, reach, search);
             let shown = |v: f64| if angle { v.to_degrees() } else { v };
             doc.unit = if angle { "deg" } else { "m" };
             doc.reach = shown(reach);

@@ -22,6 +22,7 @@ use crate::csv_io::CsvText;
 use crate::long_work::duration_words;
 use crate::output;
 use crate::source;
+use crate::volume_text::{format_bound, format_length, format_volume, format_volume_error};
 
 /// Run the command.
 pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
@@ -112,9 +113,9 @@ fn volume_lines(s: &mut String, scenario: &Scenario, ws: &ConstantOrientationWor
     let method = ws.method_words(&scenario.geometry, &scenario.limits);
     let _ = writeln!(
         s,
-        "  volume {:.6} m³ ± {:.6} m³ ({n} × {n} columns of {:.2} mm; {method}; the bound is twice the spread of the 16 interleaved grids 4× coarser)",
-        ws.volume,
-        ws.volume_error,
+        "  volume {} m³ ± {} m³ ({n} × {n} columns of {:.2} mm; {method}; the bound is twice the spread of the 16 interleaved grids 4× coarser)",
+        format_volume(ws.volume),
+        format_volume_error(ws.volume_error),
         ws.cell * 1e3
     );
     let _ = match ws.extent {
@@ -199,9 +200,9 @@ fn write_surface(
     file.write_bytes(&bytes)?;
     let _ = writeln!(
         s,
-        "Wrote the surface ({} triangles, enclosing {:.6} m³) to {}.",
+        "Wrote the surface ({} triangles, enclosing {} m³) to {}.",
         surface.triangles.len(),
-        surface.enclosed_volume(),
+        format_volume(surface.enclosed_volume()),
         path.display()
     );
     Ok(())
@@ -370,7 +371,7 @@ fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
     });
     spinner.finish_and_clear();
     let result = result.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-    let w = result?.ok_or_else(|| {
+    let w = result.ok_or_else(|| {
         anyhow::anyhow!(
             "scenario `{}`: the certified workspace needs both stroke limits (`leg_min` and `leg_max` in [geometry])",
             scenario.name
@@ -391,23 +392,23 @@ fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
         crate::cli::ReportFormat::Text => {
             let mut t = format!(
                 "Certified workspace of `{}` at roll {}°, pitch {}°, yaw {}°:\n  \
-                 {:.6} m³ ≤ volume ≤ {:.6} m³ (inner {:.6} m³, boundary {:.6} m³, {:.1} % of inner)\n  \
+                 {} m³ ≤ volume ≤ {} m³ (inner {} m³, boundary {} m³, {})\n  \
                  {} boxes classified by interval arithmetic, none narrower than {} m, in {:.1} s.\n",
                 scenario.name,
                 args.orientation[0],
                 args.orientation[1],
                 args.orientation[2],
-                w.inner_m3,
-                w.inner_m3 + w.boundary_m3,
-                w.inner_m3,
-                w.boundary_m3,
+                format_bound(w.inner_m3, false),
+                format_bound(w.inner_m3 + w.boundary_m3, true),
+                format_bound(w.inner_m3, false),
+                format_bound(w.boundary_m3, true),
                 if w.inner_m3 > 0.0 {
-                    100.0 * w.boundary_m3 / w.inner_m3
+                    format!("{:.1} % of inner", 100.0 * w.boundary_m3 / w.inner_m3)
                 } else {
-                    f64::INFINITY
+                    "no box proven inner".to_owned()
                 },
                 w.tested,
-                width,
+                format_length(width),
                 started.elapsed().as_secs_f64()
             );
             if w.cut_short {

@@ -4,9 +4,9 @@
 //!
 //! Each bound is rounded away from the inside by one step ([`f64::next_down`] below,
 //! [`f64::next_up`] above) after the nearest-rounded operation, which covers its error of
-//! at most half a step. The sine and cosine of the platform's library are not correctly
-//! rounded; their bounds are widened by four steps (their error is below one) and kept
-//! within ±1.
+//! at most half a step. The sine, cosine, arcsine and arctangent of the platform's library
+//! are not correctly rounded; their bounds are widened by four steps (their error is below
+//! one) and kept within their ranges.
 
 use std::f64::consts::{FRAC_PI_2, TAU};
 use std::ops::{Add, Mul, Neg, Sub};
@@ -193,12 +193,44 @@ impl Interval {
             lo = -1.0;
         }
         // Four steps for the library's sine and cosine (their error is below one).
-        let widen = |x: f64, f: fn(f64) -> f64| f(f(f(f(x))));
+        let (lo, hi) = widened(lo, hi);
         Self {
-            lo: widen(lo, down).max(-1.0),
-            hi: widen(hi, up).min(1.0),
+            lo: lo.max(-1.0),
+            hi: hi.min(1.0),
         }
     }
+
+    /// The arcsine over the part of the interval within [−1, 1] (`None` when no part is).
+    pub fn asin(&self) -> Option<Self> {
+        let (lo, hi) = (self.lo.max(-1.0), self.hi.min(1.0));
+        if lo > hi {
+            return None;
+        }
+        // Increasing: the ends' values, widened, within [−π/2, π/2] enclosed.
+        let (a, b) = widened(lo.asin(), hi.asin());
+        let half = up(FRAC_PI_2);
+        Some(Self {
+            lo: a.max(-half),
+            hi: b.min(half),
+        })
+    }
+
+    /// The arctangent over the interval (increasing, within ±π/2).
+    pub fn atan(&self) -> Self {
+        let (a, b) = widened(self.lo.atan(), self.hi.atan());
+        let half = up(FRAC_PI_2);
+        Self {
+            lo: a.max(-half),
+            hi: b.min(half),
+        }
+    }
+}
+
+/// Four steps below `x`, and above `y`: a bound of the library's sine, cosine, arcsine or
+/// arctangent (each within a step of the real value) made safe.
+fn widened(x: f64, y: f64) -> (f64, f64) {
+    let four = |v: f64, f: fn(f64) -> f64| f(f(f(f(v))));
+    (four(x, down), four(y, up))
 }
 
 /// The smallest interval holding four values rounded to nearest, widened a step each way.
@@ -328,6 +360,21 @@ mod tests {
             prop_assert!(x.sin().contains(p.sin()), "sin {x:?} {p}");
             prop_assert!(x.cos().contains(p.cos()), "cos {x:?} {p}");
             prop_assert!(x.sin().width() <= w + 1e-12 && x.cos().width() <= w + 1e-12);
+        }
+
+        #[test]
+        fn arcsines_and_arctangents_hold_their_points(
+            a in -1.2f64..1.2, b in -1.2f64..1.2, t in 0f64..=1.0, big in -1e12f64..1e12,
+        ) {
+            let (x, p) = interval_and_point(a, b, t);
+            match x.asin() {
+                Some(y) if (-1.0..=1.0).contains(&p) => prop_assert!(y.contains(p.asin()), "asin {x:?} {p}"),
+                Some(_) => {}
+                None => prop_assert!(!(-1.0..=1.0).contains(&p), "asin {x:?} refused {p}"),
+            }
+            prop_assert!(x.atan().contains(p.atan()), "atan {x:?} {p}");
+            let (x, p) = interval_and_point(big, big * 1.001, t);
+            prop_assert!(x.atan().contains(p.atan()), "atan {x:?} {p}");
         }
 
         #[test]

@@ -11,7 +11,8 @@ use super::context::PanelContext;
 use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::tools::certified::CertifiedKey;
-use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
+use crate::viewer::tools::workspace::WorkspaceTool;
+use crate::volume_text::{format_volume, format_volume_error};
 use stewart_kinematics::analysis::certified::workspace::{BoxClass, CertifiedWorkspace};
 
 /// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it

@@ -31,7 +31,7 @@ pub(crate) struct CertifiedKey {
 pub(crate) struct CertifiedOutcome {
     /// What it was for.
     pub(crate) key: CertifiedKey,
-    /// The bracket and the boxes; `None` without both stroke limits or for servos.
+    /// The bracket and the boxes; `None` for legs without both stroke limits.
     pub(crate) workspace: Option<CertifiedWorkspace>,
     /// The width boxes stop at, metres.
     pub(crate) width: f64,
@@ -68,9 +68,7 @@ impl CertifiedTool {
                 budget: BOXES,
                 stop: &stop,
             };
-            let workspace = certified_workspace(&key.geometry, &key.limits, &request)
-                .ok()
-                .flatten();
+            let workspace = certified_workspace(&key.geometry, &key.limits, &request);
             if !worker.cancelled() {
                 worker.send(CertifiedOutcome {
                     key,

@@ -51,26 +51,6 @@ fn slice_cells(columns: usize) -> usize {
     (columns * 5 / 16).clamp(8, 160)
 }
 
-/// A volume in m³ to four significant digits (a desk platform's workspace is a fraction
-/// of a litre, a motion simulator's a cubic metre).
-pub(crate) fn format_volume(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let decimals = (3 - v.abs().log10().floor() as i32).clamp(0, 12) as usize;
-    format!("{v:.decimals$}")
-}
-
-/// An uncertainty of a volume, m³: two significant digits, in powers of ten when small
-/// (`4.5e-6`, not `0.000004474`).
-pub(crate) fn format_volume_error(e: f64) -> String {
-    if e != 0.0 && e.is_finite() && e.abs() < 1e-2 {
-        format!("{e:.1e}")
-    } else {
-        format_volume(e)
-    }
-}
-
 /// What a surface is computed for.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Request {
@@ -518,16 +498,6 @@ mod tests {
             slice_stiffness: None,
             colour: [0.5, 0.5, 0.5, 0.3],
         }
-    }
-
-    #[test]
-    fn volumes_keep_four_significant_digits() {
-        assert_eq!(format_volume(0.170_704), "0.1707");
-        assert_eq!(format_volume(0.000_221_37), "0.0002214");
-        assert_eq!(format_volume(12.345_67), "12.35");
-        assert_eq!(format_volume(0.0), "0");
-        assert_eq!(format_volume_error(0.000_004_474), "4.5e-6");
-        assert_eq!(format_volume_error(0.0123), "0.01230");
     }
 
     #[test]

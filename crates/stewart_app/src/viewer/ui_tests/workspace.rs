@@ -5,7 +5,8 @@
 use crate::i18n::Lang;
 use crate::viewer::state::ViewerState;
 use crate::viewer::state::playback::MotionMode;
-use crate::viewer::tools::workspace::{WorkspaceTool, format_volume, format_volume_error};
+use crate::viewer::tools::workspace::WorkspaceTool;
+use crate::volume_text::{format_volume, format_volume_error};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use stewart_kinematics::analysis::dynamics;
@@ -296,7 +297,6 @@ fn certify_proves_the_bracket_the_command_line_gives_and_says_when_it_is_stale()
         &s.limits,
         &request,
     )
-    .expect("linear legs")
     .expect("stroke");
     let bounds = format!(
         "Proven: {:.4} m³ ≤ volume ≤ {:.4} m³",

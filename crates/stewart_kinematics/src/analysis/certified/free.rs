@@ -8,22 +8,7 @@ use crate::model::pose::Pose;
 
 use super::pose_box::{BoxLegs, PoseBox};
 use super::regular::proven_regular;
-
-/// Certified analysis covers linear legs: a servo's row of the Jacobian follows its rod,
-/// whose direction depends on the horn's angle, which these bounds do not follow yet.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
-#[error(
-    "certified analysis covers platforms with linear legs; this one has rotary servos (their rods' directions follow the horns' angles, not yet bounded over a box)"
-)]
-pub struct RotaryNotCovered;
-
-/// Refuse a rotary platform.
-fn covered(geometry: &Geometry) -> Result<(), RotaryNotCovered> {
-    match geometry.rotary() {
-        Some(_) => Err(RotaryNotCovered),
-        None => Ok(()),
-    }
-}
+use super::servos::BoxServos;
 
 /// What a certification found and what it cost.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,9 +42,18 @@ pub struct Search<'a> {
     pub stop: &'a (dyn Fn() -> bool + Sync),
 }
 
-/// Whether every pose of `b` is proven away from singularity.
+/// Whether every pose of `b` is proven away from singularity — for a rotary platform, also
+/// every servo away from the edge of its reach (horn and rod in line), where its angle's
+/// rate runs away.
 pub fn proven_free(geometry: &Geometry, b: &PoseBox) -> bool {
-    proven_regular(&BoxLegs::of(geometry, b).jacobian(geometry.characteristic_length()))
+    let legs = BoxLegs::of(geometry, b);
+    let length = geometry.characteristic_length();
+    match geometry.rotary() {
+        None => proven_regular(&legs.jacobian(length)),
+        Some(servos) => BoxServos::of(servos, geometry.base_joints(), &legs)
+            .jacobian(&legs, length)
+            .is_some_and(|j| proven_regular(&j)),
+    }
 }
 
 /// The widest range of coordinate `k` (0…5: x, y, z in metres, roll, pitch, yaw in
@@ -71,17 +65,16 @@ pub fn free_range(
     k: usize,
     reach: f64,
     search: Search,
-) -> Result<FreeRange, RotaryNotCovered> {
-    covered(geometry)?;
+) -> FreeRange {
     // A reach that is no finite distance searches nothing beyond the pose.
     let reach = if reach.is_finite() { reach.abs() } else { 0.0 };
     let at = PoseBox::at(pose);
     if !proven_free(geometry, &at) {
-        return Ok(FreeRange {
+        return FreeRange {
             interval: None,
             boxes: 1,
             cut_short: false,
-        });
+        };
     }
     let v = at.coordinates[k].mid();
     let tolerance = if k < 3 {
@@ -95,11 +88,11 @@ pub fn free_range(
     };
     let side = |direction: f64| march(geometry, &at, k, v, v + direction * reach, tolerance, half);
     let ((lo, a, cut_a), (hi, b, cut_b)) = rayon::join(|| side(-1.0), || side(1.0));
-    Ok(FreeRange {
+    FreeRange {
         interval: Some([lo, hi]),
         boxes: 1 + a + b,
         cut_short: cut_a || cut_b,
-    })
+    }
 }
 
 /// From `from` towards `to` along coordinate `k`, steps proven one after another, each
@@ -145,23 +138,17 @@ fn march(
 /// The widest ball of positions about `pose`'s (its orientation held), of radius at most
 /// `reach`, proven regular: the cube about it is proven box by box, its half-side found by
 /// doubling, then by bisection to a thousandth.
-pub fn free_ball(
-    geometry: &Geometry,
-    pose: &Pose,
-    reach: f64,
-    search: Search,
-) -> Result<FreeBall, RotaryNotCovered> {
-    covered(geometry)?;
+pub fn free_ball(geometry: &Geometry, pose: &Pose, reach: f64, search: Search) -> FreeBall {
     // A reach that is no finite distance searches nothing beyond the pose.
     let reach = if reach.is_finite() { reach.abs() } else { 0.0 };
     let at = PoseBox::at(pose);
     let mut boxes = 1;
     if !proven_free(geometry, &at) {
-        return Ok(FreeBall {
+        return FreeBall {
             radius: None,
             boxes,
             cut_short: false,
-        });
+        };
     }
     let mut good = 0.0;
     let mut bad = None;
@@ -187,11 +174,11 @@ pub fn free_ball(
             Some(b) => 0.5 * (good + b),
         };
     }
-    Ok(FreeBall {
+    FreeBall {
         radius: Some(good),
         boxes,
         cut_short,
-    })
+    }
 }
 
 /// Whether the cube of half-side `r` about `at`'s position is proven regular, splitting

@@ -47,19 +47,12 @@ fn the_seeds_layout_is_singular_everywhere_and_nothing_of_it_is_ever_certified()
     let home = g.home_pose();
     for k in 0..6 {
         assert_eq!(
-            free_range(g, &home, k, 0.5, SEARCH)
-                .expect("linear legs")
-                .interval,
+            free_range(g, &home, k, 0.5, SEARCH).interval,
             None,
             "coordinate {k}"
         );
     }
-    assert_eq!(
-        free_ball(g, &home, 0.5, SEARCH)
-            .expect("linear legs")
-            .radius,
-        None
-    );
+    assert_eq!(free_ball(g, &home, 0.5, SEARCH).radius, None);
     // Every pose of the seed is singular (its joints lie on conics in projective
     // correspondence). Without outward rounding the test would "prove" many of them
     // regular: rounding alone lifts the Jacobian's zero singular value to about 1e-16.
@@ -89,7 +82,7 @@ fn a_planar_platform_turned_against_its_base_is_certified_up_to_fichters_torsion
     let s = preset("paired");
     let g = &s.geometry;
     let home = g.home_pose();
-    let yaw = free_range(g, &home, 5, std::f64::consts::PI, SEARCH).expect("linear legs");
+    let yaw = free_range(g, &home, 5, std::f64::consts::PI, SEARCH);
     let [lo, hi] = yaw.interval.expect("home is regular").map(f64::to_degrees);
     assert!(
         (-90.0..=-89.0).contains(&lo) && (89.0..=90.0).contains(&hi),
@@ -128,10 +121,7 @@ fn inside_a_certified_range_every_sampled_pose_is_regular() {
             } else {
                 std::f64::consts::PI
             };
-            let Some([lo, hi]) = free_range(g, &home, k, reach, SEARCH)
-                .expect("linear legs")
-                .interval
-            else {
+            let Some([lo, hi]) = free_range(g, &home, k, reach, SEARCH).interval else {
                 panic!("{name}: home regular");
             };
             for step in 0..=200 {
@@ -172,7 +162,7 @@ fn a_certified_ball_holds_only_regular_poses_and_grows_with_the_budget() {
             stop: &never,
         },
     );
-    let radius = |b: Result<super::free::FreeBall, _>| b.expect("linear").radius.expect("regular");
+    let radius = |b: super::free::FreeBall| b.radius.expect("regular");
     let (r1, r2) = (radius(small), radius(large));
     assert!(r1 > 0.0 && r2 >= r1, "{r1} {r2}");
     // Every corner and face centre of the certified cube is regular, sampled.
@@ -201,21 +191,11 @@ fn a_stop_request_ends_the_search_with_what_is_certified_so_far() {
             budget: 1_000_000,
             stop: &stop,
         },
-    )
-    .expect("linear legs");
+    );
     assert!(r.cut_short);
     assert_eq!(r.interval.map(|[lo, hi]| (lo, hi)), Some((0.0, 0.0)));
     let j = BoxLegs::of(g, &PoseBox::at(&g.home_pose())).jacobian(1.0);
     assert!(proven_regular(&j));
-}
-
-#[test]
-fn a_servo_rig_is_refused_not_certified_with_the_wrong_rows() {
-    let s = preset("servo-desk");
-    let g = &s.geometry;
-    let e = free_range(g, &g.home_pose(), 5, 1.0, SEARCH).expect_err("refused");
-    assert!(e.to_string().contains("rotary servos"));
-    assert!(free_ball(g, &g.home_pose(), 0.1, SEARCH).is_err());
 }
 
 mod workspace {
@@ -236,80 +216,100 @@ mod workspace {
             budget: 5_000_000,
             stop: &never,
         };
-        certified_workspace(&s.geometry, limits, &request)
-            .expect("linear legs")
-            .expect("both stroke limits")
+        certified_workspace(&s.geometry, limits, &request).expect("both stroke limits")
     }
 
     #[test]
     fn the_grid_volume_lies_in_the_bracket_and_the_bracket_tightens() {
-        let s = preset("paired");
-        for limits in [Limits::default(), s.limits] {
-            let grid = constant_orientation_workspace(&s.geometry, &limits, [Angle::ZERO; 3], 400)
-                .expect("workspace");
-            let mut last = f64::INFINITY;
-            for width in [0.08, 0.04, 0.02] {
-                let w = bracket(&s, &limits, width);
-                assert!(!w.cut_short);
-                let (lo, hi) = (w.inner_m3, w.inner_m3 + w.boundary_m3);
-                assert!(
-                    lo <= grid.volume + grid.volume_error && grid.volume - grid.volume_error <= hi,
-                    "width {width}: grid {} ± {} outside [{lo}, {hi}]",
-                    grid.volume,
-                    grid.volume_error
-                );
-                assert!(w.boundary_m3 < last, "{} then {}", last, w.boundary_m3);
-                last = w.boundary_m3;
+        // Linear legs, and rotary servos on both kinds of rig (the desk's servos in a
+        // range; the crank rig's cranks).
+        for name in ["paired", "servo-desk", "crank-rig"] {
+            let s = preset(name);
+            let size = s.geometry.characteristic_length();
+            for limits in [Limits::default(), s.limits] {
+                let grid =
+                    constant_orientation_workspace(&s.geometry, &limits, [Angle::ZERO; 3], 400)
+                        .expect("workspace");
+                let mut last = f64::INFINITY;
+                for width in [0.08, 0.04, 0.02] {
+                    let w = bracket(&s, &limits, width * size);
+                    assert!(!w.cut_short);
+                    let (lo, hi) = (w.inner_m3, w.inner_m3 + w.boundary_m3);
+                    assert!(
+                        lo <= grid.volume + grid.volume_error
+                            && grid.volume - grid.volume_error <= hi,
+                        "{name}, width {width}: grid {} ± {} outside [{lo}, {hi}]",
+                        grid.volume,
+                        grid.volume_error
+                    );
+                    assert!(
+                        w.boundary_m3 < last,
+                        "{name}: {} then {}",
+                        last,
+                        w.boundary_m3
+                    );
+                    assert!(lo > 0.0, "{name}: nothing proven at width {width}");
+                    last = w.boundary_m3;
+                }
             }
         }
     }
 
     #[test]
     fn every_position_of_an_inner_box_is_reachable_and_none_outside_the_kept_boxes_is() {
-        let s = preset("paired");
-        let w = bracket(&s, &s.limits, 0.03);
-        let level = s.geometry.home_pose();
-        let mut seed = 0x2545_f491_u32;
-        let mut unit = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            f64::from(seed) / f64::from(u32::MAX)
-        };
-        let inside = |b: &[crate::ground::interval::Interval; 3], p: &nalgebra::Vector3<f64>| {
-            (0..3).all(|k| b[k].contains(p[k]))
-        };
-        let inner: Vec<_> = w
-            .boxes
-            .iter()
-            .filter(|b| b.class == BoxClass::Inner)
-            .collect();
-        assert!(inner.len() > 100);
-        for b in inner.iter().step_by(inner.len() / 100) {
-            for _ in 0..5 {
-                let p = nalgebra::Vector3::from_fn(|k, _| {
-                    b.position[k].lo() + unit() * b.position[k].width()
-                });
-                assert!(
-                    pose_within_limits(&s.geometry, &s.limits, &level.with_position(p)),
-                    "{p:?}"
-                );
+        for name in ["paired", "servo-desk", "crank-rig"] {
+            let s = preset(name);
+            let size = s.geometry.characteristic_length();
+            let w = bracket(&s, &s.limits, 0.03 * size);
+            let level = s.geometry.home_pose();
+            let mut seed = 0x2545_f491_u32;
+            let mut unit = || {
+                seed ^= seed << 13;
+                seed ^= seed >> 17;
+                seed ^= seed << 5;
+                f64::from(seed) / f64::from(u32::MAX)
+            };
+            let inside = |b: &[crate::ground::interval::Interval; 3],
+                          p: &nalgebra::Vector3<f64>| {
+                (0..3).all(|k| b[k].contains(p[k]))
+            };
+            let inner: Vec<_> = w
+                .boxes
+                .iter()
+                .filter(|b| b.class == BoxClass::Inner)
+                .collect();
+            assert!(inner.len() > 100, "{name}: {}", inner.len());
+            for b in inner.iter().step_by(inner.len() / 100) {
+                for _ in 0..5 {
+                    let p = nalgebra::Vector3::from_fn(|k, _| {
+                        b.position[k].lo() + unit() * b.position[k].width()
+                    });
+                    assert!(
+                        pose_within_limits(&s.geometry, &s.limits, &level.with_position(p)),
+                        "{name}: {p:?}"
+                    );
+                }
             }
-        }
-        // Positions in no kept box (outer boxes are dropped) are all unreachable.
-        let mut outside = 0;
-        for _ in 0..20_000 {
-            let p = nalgebra::Vector3::new(2.4 * unit() - 1.2, 2.4 * unit() - 1.2, 2.0 * unit());
-            if w.boxes.iter().any(|b| inside(&b.position, &p)) {
-                continue;
+            // Positions in no kept box (outer boxes are dropped) are all unreachable.
+            let (mut outside, mut reachable) = (0, 0);
+            let centre = level.position;
+            for _ in 0..20_000 {
+                let p = centre
+                    + nalgebra::Vector3::new(unit() - 0.5, unit() - 0.5, unit() - 0.5)
+                        * (2.0 * size);
+                let within = pose_within_limits(&s.geometry, &s.limits, &level.with_position(p));
+                reachable += usize::from(within);
+                if w.boxes.iter().any(|b| inside(&b.position, &p)) {
+                    continue;
+                }
+                outside += 1;
+                assert!(!within, "{name}: {p:?}");
             }
-            outside += 1;
             assert!(
-                !pose_within_limits(&s.geometry, &s.limits, &level.with_position(p)),
-                "{p:?}"
+                outside > 1000 && reachable > 500,
+                "{name}: {outside} {reachable}"
             );
         }
-        assert!(outside > 1000);
     }
 
     #[test]
@@ -322,9 +322,7 @@ mod workspace {
             budget: 10_000,
             stop: &never,
         };
-        let w = certified_workspace(&s.geometry, &s.limits, &request)
-            .expect("linear")
-            .expect("stroke");
+        let w = certified_workspace(&s.geometry, &s.limits, &request).expect("stroke");
         assert!(w.cut_short);
         let grid = constant_orientation_workspace(&s.geometry, &s.limits, [Angle::ZERO; 3], 200)
             .expect("grid");
@@ -336,5 +334,124 @@ mod workspace {
             w.inner_m3,
             grid.volume
         );
+    }
+}
+
+#[test]
+fn servo_ranges_stop_just_short_of_where_the_sampled_servo_jacobian_first_fails() {
+    // A second method: march out from home along each coordinate in 20 000 steps, with
+    // the studio's own servo Jacobian, until its determinant changes sign or a servo no
+    // longer reaches. The certified range must stop before that and not far short of it.
+    for name in ["servo-desk", "crank-rig"] {
+        let s = preset(name);
+        let g = &s.geometry;
+        let home = g.home_pose();
+        let sign = |p: &Pose| -> Option<f64> {
+            let d = g.servo_jacobian(p)?.ok()?.determinant();
+            d.is_finite().then_some(d.signum())
+        };
+        let at_home = sign(&home);
+        assert!(at_home.is_some(), "{name}");
+        for k in 0..6 {
+            let reach = if k < 3 {
+                g.characteristic_length()
+            } else {
+                std::f64::consts::PI
+            };
+            let range = free_range(g, &home, k, reach, SEARCH);
+            let certified = range.interval.expect("home is regular");
+            assert!(!range.cut_short);
+            let start = home.to_coordinates();
+            let steps = 20_000;
+            let step = reach / f64::from(steps);
+            for (side, direction) in [-1.0, 1.0].into_iter().enumerate() {
+                let first_failure = (1..=steps).map(f64::from).find_map(|i| {
+                    let mut c = start;
+                    c[k] += direction * i * step;
+                    (sign(&Pose::from_coordinates(c)) != at_home).then_some(c[k])
+                });
+                let Some(edge) = first_failure else {
+                    assert_eq!(certified[side], start[k] + direction * reach, "{name} {k}");
+                    continue;
+                };
+                let (proven, sampled) =
+                    ((certified[side] - start[k]).abs(), (edge - start[k]).abs());
+                assert!(
+                    proven < sampled,
+                    "{name} {k}: proven {proven}, fails at {sampled}"
+                );
+                assert!(
+                    sampled - proven < 2.0 * step + 1e-3 * sampled,
+                    "{name} {k}: proven {proven}, fails at {sampled}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_servos_bounds_over_a_box_hold_every_pose_inside_it() {
+    use super::servos::{BoxServos, Reach};
+    use crate::solve::servo_closure::servo_angle;
+    for name in ["servo-desk", "crank-rig"] {
+        let s = preset(name);
+        let g = &s.geometry;
+        let servos = g.rotary().expect("rotary");
+        let size = g.characteristic_length();
+        let mut seed = 0x9e37_79b9_u32;
+        let mut unit = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            f64::from(seed) / f64::from(u32::MAX)
+        };
+        let (mut every, mut none) = (0, 0);
+        for centre in poses_about_home(&s, 400) {
+            // Boxes from a thousandth to a tenth of the platform's size (and as many
+            // hundredths of a radian) about the pose.
+            let half = 10f64.powf(-3.0 + 2.0 * unit());
+            let mut b = PoseBox::at(&centre);
+            for k in 0..6 {
+                let r = if k < 3 { half * size } else { half };
+                b.coordinates[k] =
+                    crate::ground::interval::Interval::around(b.coordinates[k].mid(), r);
+            }
+            let legs = BoxLegs::of(g, &b);
+            let over = BoxServos::of(servos, g.base_joints(), &legs);
+            for _ in 0..20 {
+                let c: [f64; 6] = std::array::from_fn(|k| {
+                    b.coordinates[k].lo() + unit() * b.coordinates[k].width()
+                });
+                let pose = Pose::from_coordinates(c);
+                let joints = g.inverse(&pose).platform_joints;
+                for (i, joint) in joints.iter().enumerate() {
+                    let angle = servo_angle(servos, i, &g.base_joints()[i], joint);
+                    match over.reach[i] {
+                        Reach::Every => {
+                            let theta = angle.expect("reaches").radians();
+                            every += 1;
+                            if let Some(servo) = over.servos[i] {
+                                assert!(servo.angle.contains(theta), "{name}: {theta}");
+                                let tip = servos.horn_tip(
+                                    i,
+                                    &g.base_joints()[i],
+                                    angle.expect("reaches"),
+                                );
+                                for k in 0..3 {
+                                    assert!(servo.tip[k].contains(tip[k]));
+                                    assert!(servo.rod[k].contains(joint[k] - tip[k]));
+                                }
+                            }
+                        }
+                        Reach::None => {
+                            none += 1;
+                            assert!(angle.is_err(), "{name}: reached in a box said unreachable");
+                        }
+                        Reach::Undecided => {}
+                    }
+                }
+            }
+        }
+        assert!(every > 10_000 && none > 100, "{name}: {every} {none}");
     }
 }

@@ -19,8 +19,11 @@ use crate::model::geometry::Geometry;
 use crate::model::limits::{LEG_PAIRS, Limits, segment_distance};
 use crate::model::pose::Pose;
 
-use super::free::RotaryNotCovered;
 use super::pose_box::{BoxLegs, IVec3, PoseBox};
+use super::servos::{BoxServos, Reach};
+use crate::analysis::checks::servos::rod_distances;
+use crate::model::rotary::RotaryActuators;
+use crate::solve::servo_closure;
 
 /// What a box of positions is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,13 +81,12 @@ pub fn certified_workspace(
     geometry: &Geometry,
     limits: &Limits,
     request: &WorkspaceRequest,
-) -> Result<Option<CertifiedWorkspace>, RotaryNotCovered> {
-    if geometry.rotary().is_some() {
-        return Err(RotaryNotCovered);
-    }
+) -> Option<CertifiedWorkspace> {
     let stroke = geometry.stroke();
-    let (Some(min), Some(max)) = (stroke.min, stroke.max) else {
-        return Ok(None);
+    let (min, max) = match geometry.rotary() {
+        // A joint within horn and rod of its shaft: the farthest any can be.
+        Some(servos) => (0.0, servos.horn_length() + servos.rod_length()),
+        None => (stroke.min?, stroke.max?),
     };
     let judge = Judge {
         geometry,
@@ -127,13 +129,19 @@ pub fn certified_workspace(
         }
         round(sum)
     };
-    Ok(Some(CertifiedWorkspace {
+    Some(CertifiedWorkspace {
         inner_m3: volume(BoxClass::Inner, |v| v.lo().max(0.0)),
         boundary_m3: volume(BoxClass::Boundary, |v| v.hi()),
         tested: tested.load(Ordering::Relaxed),
         cut_short: stopped.load(Ordering::Relaxed),
         boxes,
-    }))
+    })
+}
+
+/// Half the diagonal of a position box: the farthest a point of it is from its centre.
+fn half_diagonal(position: &[Interval; 3]) -> f64 {
+    0.5 * (position[0].width().powi(2) + position[1].width().powi(2) + position[2].width().powi(2))
+        .sqrt()
 }
 
 /// The widest side of a position box.
@@ -232,19 +240,93 @@ impl Judge<'_> {
 
     /// The class of a box of positions.
     fn class(&self, position: &[Interval; 3]) -> BoxClass {
-        let mut b = PoseBox::at(&self.orientation);
-        b.coordinates[..3].copy_from_slice(position);
-        let legs = BoxLegs::of(self.geometry, &b);
-        let mut all = position[2].lo() > 0.0;
         if position[2].hi() <= 0.0 {
             return BoxClass::Outer;
         }
-        for length in legs.lengths() {
+        let mut b = PoseBox::at(&self.orientation);
+        b.coordinates[..3].copy_from_slice(position);
+        let legs = BoxLegs::of(self.geometry, &b);
+        let verdict = match self.geometry.rotary() {
+            None => self.legs_class(position, &b, &legs),
+            Some(servos) => self.servos_class(servos, position, &b, &legs),
+        };
+        match verdict {
+            Some(true) if position[2].lo() > 0.0 => BoxClass::Inner,
+            Some(_) => BoxClass::Boundary,
+            None => BoxClass::Outer,
+        }
+    }
+
+    /// Linear legs over a box: `None` when no position of it is reachable, else whether
+    /// every one is (the stroke, the cones, the clearance).
+    fn legs_class(&self, position: &[Interval; 3], b: &PoseBox, legs: &BoxLegs) -> Option<bool> {
+        let mut all = true;
+        let lengths = legs.lengths();
+        for length in lengths {
             if length.lo() > self.stroke.hi() || length.hi() < self.stroke.lo() {
-                return BoxClass::Outer;
+                return None;
             }
             all &= length.within(&self.stroke);
         }
+        let rods: [Option<(IVec3, Interval)>; 6] =
+            std::array::from_fn(|i| Some((legs.legs[i], lengths[i])));
+        all &= self.cones_hold(b, &rods)?;
+        if let Some(clearance) = self.clearance {
+            match self.clearance_bounds(position) {
+                Some((lo, _)) if lo >= clearance => {}
+                Some((_, hi)) if hi < clearance => return None,
+                _ => all = false,
+            }
+        }
+        Some(all)
+    }
+
+    /// Rotary servos over a box: `None` when no position of it is reachable, else whether
+    /// every one is (every servo closes its rod within its range; the rods' cones and
+    /// clearance).
+    fn servos_class(
+        &self,
+        servos: &RotaryActuators,
+        position: &[Interval; 3],
+        b: &PoseBox,
+        legs: &BoxLegs,
+    ) -> Option<bool> {
+        let over = BoxServos::of(servos, self.geometry.base_joints(), legs);
+        let mut all = true;
+        for (reach, servo) in over.reach.iter().zip(&over.servos) {
+            match (reach, servo) {
+                (Reach::None, _) => return None,
+                (Reach::Every, Some(servo)) => {
+                    if let Some((min, max)) = servos.range() {
+                        let range =
+                            Interval::new(min.radians(), max.radians()).unwrap_or(Interval::ENTIRE);
+                        if servo.angle.hi() < range.lo() || servo.angle.lo() > range.hi() {
+                            return None;
+                        }
+                        all &= servo.angle.within(&range);
+                    }
+                }
+                _ => all = false,
+            }
+        }
+        // A rod is exactly its length wherever it closes.
+        let s = Interval::point(servos.rod_length());
+        let rods = over.servos.map(|servo| servo.map(|v| (v.rod, s)));
+        all &= self.cones_hold(b, &rods)?;
+        if let Some(clearance) = self.clearance {
+            match self.rod_clearance_bounds(servos, position, &over) {
+                Some((lo, _)) if lo >= clearance => {}
+                Some((_, hi)) if hi < clearance => return None,
+                _ => all = false,
+            }
+        }
+        Some(all)
+    }
+
+    /// The cone limits on `rods` (each a vector from the base side to the platform joint
+    /// and its length; `None`: not bounded): `None` when every position of the box breaks
+    /// one, else whether every position keeps them all.
+    fn cones_hold(&self, b: &PoseBox, rods: &[Option<(IVec3, Interval)>; 6]) -> Option<bool> {
         let rotation = b.rotation();
         let normals: [IVec3; 2] = [
             [
@@ -254,29 +336,61 @@ impl Judge<'_> {
             ],
             [rotation[0][2], rotation[1][2], rotation[2][2]],
         ];
+        let mut all = true;
         for (cone, n) in self.cones.iter().zip(&normals) {
             let Some(cos_max) = cone else { continue };
-            for (l, length) in legs.legs.iter().zip(legs.lengths()) {
+            for rod in rods {
+                let Some((l, length)) = rod else {
+                    all = false;
+                    continue;
+                };
                 let along = l[0] * n[0] + l[1] * n[1] + l[2] * n[2];
-                match along.div(&length) {
-                    Some(cos) if cos.hi() < cos_max.lo() => return BoxClass::Outer,
+                match along.div(length) {
+                    Some(cos) if cos.hi() < cos_max.lo() => return None,
                     Some(cos) => all &= cos.lo() >= cos_max.hi(),
                     None => all = false,
                 }
             }
         }
-        if let Some(clearance) = self.clearance {
-            match self.clearance_bounds(position) {
-                Some((lo, _)) if lo >= clearance => {}
-                Some((_, hi)) if hi < clearance => return BoxClass::Outer,
-                _ => all = false,
-            }
+        Some(all)
+    }
+
+    /// The least distance between two rods, or a rod and another servo's horn, over the
+    /// box: from the box's centre, less and more twice the farthest an end moves inside it
+    /// (a platform joint at most the half-diagonal, a horn tip at most the horn times its
+    /// angle's range), and the margin. `None` unless every servo's angle is bounded and
+    /// the centre reached.
+    fn rod_clearance_bounds(
+        &self,
+        servos: &RotaryActuators,
+        position: &[Interval; 3],
+        over: &BoxServos,
+    ) -> Option<(f64, f64)> {
+        let mut swing: f64 = 0.0;
+        for servo in &over.servos {
+            swing = swing.max(servos.horn_length() * (*servo)?.angle.width());
         }
-        if all {
-            BoxClass::Inner
-        } else {
-            BoxClass::Boundary
-        }
+        let centre = self.orientation.with_position(Vector3::new(
+            position[0].mid(),
+            position[1].mid(),
+            position[2].mid(),
+        ));
+        let joints = self.geometry.inverse(&centre).platform_joints;
+        let bases = self.geometry.base_joints();
+        let angles = servo_closure::servo_angles(servos, bases, &joints).ok()?;
+        let tips: [Vector3<f64>; 6] =
+            std::array::from_fn(|i| servos.horn_tip(i, &bases[i], angles[i]));
+        let (rods, horns) = rod_distances(bases, &joints, &tips);
+        let least = rods
+            .iter()
+            .chain(&horns)
+            .copied()
+            .fold(f64::INFINITY, f64::min);
+        let moves = half_diagonal(position).max(swing);
+        least.is_finite().then(|| {
+            let reach = 2.0 * moves + self.margin;
+            (least - reach, least + reach)
+        })
     }
 
     /// The least distance between two legs over the box: from the box's centre, less and
@@ -289,11 +403,7 @@ impl Judge<'_> {
         ));
         let joints = self.geometry.inverse(&centre).platform_joints;
         let bases = self.geometry.base_joints();
-        let half_diagonal = 0.5
-            * (position[0].width().powi(2)
-                + position[1].width().powi(2)
-                + position[2].width().powi(2))
-            .sqrt();
+        let half_diagonal = half_diagonal(position);
         let least = LEG_PAIRS
             .iter()
             .map(|&(i, j)| segment_distance(bases[i], joints[i], bases[j], joints[j]))
