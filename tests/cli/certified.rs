@@ -246,10 +246,58 @@ fn the_certified_workspace_brackets_the_sampled_volume() {
             "paired",
             "--certified",
             "--plot",
-            "x.svg",
+            "x.txt",
+        ],
+        vec![
+            "workspace",
+            "--preset",
+            "paired",
+            "--certified",
+            "--surface",
+            "x.ply",
         ],
     ] {
         let o = stewart(&refused);
         assert_eq!(o.status.code(), Some(2), "{refused:?}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn the_certified_slices_are_drawn_under_the_sampled_boundary() {
+    let dir = crate::tempdir();
+    let svg = dir.path().join("certified.svg");
+    let o = stewart(&[
+        "workspace",
+        "--preset",
+        "servo-desk",
+        "--certified",
+        "--boundary-width",
+        "0.002",
+        "--plot",
+        &svg.display().to_string(),
+        "--lang",
+        "en",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("Wrote the slices to"), "{}", stdout(&o));
+    let text = std::fs::read_to_string(&svg).unwrap_or_else(|e| panic!("{e}"));
+    let group = text
+        .split(r#"<g class="certified""#)
+        .nth(1)
+        .and_then(|g| g.split("</g>").next())
+        .expect("the certified boxes");
+    // Both classes drawn, in the figure's key's colours, and the sampled boundary over them.
+    let green = group.matches(r##"fill="#3CA05A""##).count();
+    let amber = group.matches(r##"fill="#F2A900""##).count();
+    assert!(green > 10 && amber > 10, "{green} {amber}");
+    assert_eq!(text.matches(r#"<g class="certified""#).count(), 2);
+    assert_eq!(text.matches(r#"class="boundary""#).count(), 2);
+    for words in [
+        "Certified workspace of servo-desk",
+        "proven reachable",
+        "undecided",
+        "sampled boundary",
+    ] {
+        assert!(text.contains(words), "{words}");
     }
 }

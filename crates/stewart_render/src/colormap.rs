@@ -18,6 +18,12 @@ const VIRIDIS: [[u8; 3]; 9] = [
 /// Poses past the near-singular threshold (and singular ones), sRGB magenta.
 pub const PAST: [u8; 3] = [0xD0, 0x1C, 0x8B];
 
+/// A certified region whose every position is proven reachable, sRGB green.
+pub const PROVEN: [u8; 3] = [0x3C, 0xA0, 0x5A];
+
+/// A certified region left undecided (the boundary's band), sRGB amber.
+pub const UNDECIDED: [u8; 3] = [0xF2, 0xA9, 0x00];
+
 /// Viridis at `s` in 0 ..= 1 (clamped), sRGB.
 pub fn viridis(s: f64) -> [u8; 3] {
     let x = s.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;

@@ -207,7 +207,9 @@ pub(crate) struct WorkspaceArgs {
     #[arg(long, value_name = "FILE.csv|FILE.ply")]
     pub(crate) out: Option<PathBuf>,
     /// Draw a horizontal slice (at the position's height) and a vertical slice (through
-    /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png`.
+    /// its y) coloured by the condition number: `.svg`, `.pdf` or `.png` (with
+    /// `--certified`: the certified boxes the two planes cut, proven reachable green and
+    /// undecided amber, under the sampled boundary).
     #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png")]
     pub(crate) plot: Option<PathBuf>,
     /// Write the workspace's surface (a closed triangle mesh around the reachable
@@ -220,8 +222,8 @@ pub(crate) struct WorkspaceArgs {
     /// Prove a bracket of the volume instead of sampling it: boxes of positions classed by
     /// interval arithmetic as inner (every position reachable), outer (none) or boundary
     /// (undecided at `--boundary-width`), so that inner ≤ volume ≤ inner + boundary
-    /// (linear legs; on all cores; Ctrl-C ends it with what is decided).
-    #[arg(long, conflicts_with_all = ["out", "plot", "surface", "position", "no_budget"])]
+    /// (legs or servos; on all cores; Ctrl-C ends it with what is decided).
+    #[arg(long, conflicts_with_all = ["out", "surface", "no_budget"])]
     pub(crate) certified: bool,
     /// `--certified`: boxes narrower than this on their widest side are not split
     /// further, metres (default: half a hundredth of the platform's size).

@@ -27,11 +27,7 @@ use crate::volume_text::{format_bound, format_length, format_volume, format_volu
 /// Run the command.
 pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
-    if args.certified {
-        return certified(args, &scenario);
-    }
     let inputs = source::inputs(&args.scenario, &scenario);
-    let out = output::destination(args.out.as_deref(), &inputs)?;
     let plot_out = match &args.plot {
         Some(path) => {
             let d = output::Destination::new(path, &inputs)?;
@@ -41,6 +37,10 @@ pub(crate) fn run(args: &WorkspaceArgs) -> Result<ExitCode> {
         }
         None => None,
     };
+    if args.certified {
+        return certified(args, &scenario, plot_out.as_ref());
+    }
+    let out = output::destination(args.out.as_deref(), &inputs)?;
     let surface_out = match &args.surface {
         Some(path) => {
             let d = output::Destination::new(path, &inputs)?;
@@ -326,8 +326,13 @@ struct CertifiedJson<'a> {
     cut_short: bool,
 }
 
-/// `--certified`: the volume bracket proven by interval arithmetic.
-fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
+/// `--certified`: the volume bracket proven by interval arithmetic (and, with `--plot`, the
+/// certified boxes two planes cut).
+fn certified(
+    args: &WorkspaceArgs,
+    scenario: &Scenario,
+    plot: Option<&output::Destination>,
+) -> Result<ExitCode> {
     use stewart_kinematics::analysis::certified::workspace::{
         WorkspaceRequest, certified_workspace,
     };
@@ -417,6 +422,32 @@ fn certified(args: &WorkspaceArgs, scenario: &Scenario) -> Result<ExitCode> {
             t
         }
     };
+    let mut text = text;
+    if let Some(plot) = plot {
+        let orientation = args.orientation.map(Angle::from_degrees);
+        // The sampled workspace gives the figure its extent and the boundary line.
+        let ws = compute(
+            g,
+            &scenario.limits,
+            orientation,
+            usize::from(args.resolution),
+            false,
+        )?;
+        let path = plot.shown();
+        let bytes = crate::export::workspace_plot::certified_figure_file(
+            scenario,
+            &ws,
+            &w.boxes,
+            orientation,
+            args.position.unwrap_or([0.0, 0.0, g.home_height()]),
+            crate::i18n::for_command(args.lang, "workspace"),
+            path,
+        )?;
+        plot.write_bytes(&bytes)?;
+        if args.format == crate::cli::ReportFormat::Text {
+            text.push_str(&format!("  Wrote the slices to {}.\n", path.display()));
+        }
+    }
     output::stdout(text.as_bytes())?;
     Ok(ExitCode::SUCCESS)
 }

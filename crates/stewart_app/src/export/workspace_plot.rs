@@ -3,11 +3,16 @@
 //! logarithmic from 1 to the near-singular threshold; past it a marked colour), the
 //! reachable boundary as a line, the platform centre as a cross, axes in metres and a
 //! colour bar. Cells are merged into runs of one colour, so the SVG and PDF stay vectors.
+//!
+//! The certified figure (`workspace --certified --plot`) cuts the certified boxes with the
+//! same two planes instead: proven reachable green, undecided amber, with the sampled
+//! boundary's line over them (it must run inside the amber band).
 
 use std::fmt::Write as _;
 
 use anyhow::Result;
 use stewart_kinematics::Angle;
+use stewart_kinematics::analysis::certified::workspace::{BoxClass, ClassedBox};
 use stewart_kinematics::analysis::workspace;
 use stewart_kinematics::analysis::workspace::{ConstantOrientationWorkspace, Plane, Slice};
 
@@ -42,6 +47,38 @@ pub(crate) struct WorkspaceFigure<'a> {
     pub(crate) condition_max: f64,
     /// The language of the words.
     pub(crate) lang: Lang,
+    /// The certified boxes each slice's plane cuts, drawn instead of the condition
+    /// number's cells (the certified figure).
+    pub(crate) certified: Option<[Vec<Cut>; 2]>,
+}
+
+/// A certified box cut by a slice's plane: its rectangle in the slice's two axes
+/// (`[[x0, x1], [y0, y1]]`, metres) and whether it is proven reachable (else undecided).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Cut {
+    /// Across and up, metres.
+    pub(crate) rect: [[f64; 2]; 2],
+    /// Proven reachable (else undecided).
+    pub(crate) inner: bool,
+}
+
+/// The certified `boxes` the slice `sl`'s plane cuts.
+pub(crate) fn cuts(boxes: &[ClassedBox], sl: &Slice) -> Vec<Cut> {
+    let (normal, up) = match sl.plane {
+        Plane::Horizontal => (2, 1),
+        Plane::Vertical => (1, 2),
+    };
+    boxes
+        .iter()
+        .filter(|b| b.position[normal].contains(sl.at))
+        .map(|b| Cut {
+            rect: [
+                [b.position[0].lo(), b.position[0].hi()],
+                [b.position[up].lo(), b.position[up].hi()],
+            ],
+            inner: b.class == BoxClass::Inner,
+        })
+        .collect()
 }
 
 /// Colour of condition number `k`: viridis from 1 to `max` on a log scale
@@ -67,6 +104,71 @@ pub(crate) fn figure_file(
     lang: Lang,
     path: &std::path::Path,
 ) -> Result<Vec<u8>> {
+    let [horizontal, vertical] = slices(scenario, ws, orientation, position)?;
+    let title = title(scenario, orientation, lang, "workspace.title");
+    let svg = svg(&WorkspaceFigure {
+        title: &title,
+        slices: [&horizontal, &vertical],
+        centre: position,
+        condition_max: scenario.checks.condition_max,
+        lang,
+        certified: None,
+    });
+    super::vector::by_extension(svg, path)
+}
+
+/// The certified `boxes` cut by the same two planes as [`figure_file`]'s (their extent
+/// and the sampled boundary from `ws`) as a figure in the format `path` ends in.
+pub(crate) fn certified_figure_file(
+    scenario: &stewart_kinematics::Scenario,
+    ws: &ConstantOrientationWorkspace,
+    boxes: &[ClassedBox],
+    orientation: [Angle; 3],
+    position: [f64; 3],
+    lang: Lang,
+    path: &std::path::Path,
+) -> Result<Vec<u8>> {
+    let [horizontal, vertical] = slices(scenario, ws, orientation, position)?;
+    let title = title(scenario, orientation, lang, "workspace.certified_title");
+    let certified = Some([cuts(boxes, &horizontal), cuts(boxes, &vertical)]);
+    let svg = svg(&WorkspaceFigure {
+        title: &title,
+        slices: [&horizontal, &vertical],
+        centre: position,
+        condition_max: scenario.checks.condition_max,
+        lang,
+        certified,
+    });
+    super::vector::by_extension(svg, path)
+}
+
+/// The figure's title, from the catalogue's `key`.
+fn title(
+    scenario: &stewart_kinematics::Scenario,
+    orientation: [Angle; 3],
+    lang: Lang,
+    key: &str,
+) -> String {
+    let [r, p, yaw] = orientation.map(|a| format!("{:.1}", a.degrees()));
+    lang.fmt(
+        key,
+        &[
+            ("name", &scenario.name),
+            ("roll", &r),
+            ("pitch", &p),
+            ("yaw", &yaw),
+        ],
+    )
+}
+
+/// A horizontal slice at `position`'s height and a vertical one through its y, over the
+/// workspace's extent with a margin.
+fn slices(
+    scenario: &stewart_kinematics::Scenario,
+    ws: &ConstantOrientationWorkspace,
+    orientation: [Angle; 3],
+    position: [f64; 3],
+) -> Result<[Slice; 2]> {
     let g = &scenario.geometry;
     let Some([ex, ey, ez]) = ws.extent else {
         anyhow::bail!("no position is reachable at this orientation: there is nothing to plot");
@@ -96,24 +198,7 @@ pub(crate) fn figure_file(
         [x, z],
         [count(x), count(z)],
     );
-    let [r, p, yaw] = orientation.map(|a| format!("{:.1}", a.degrees()));
-    let title = lang.fmt(
-        "workspace.title",
-        &[
-            ("name", &scenario.name),
-            ("roll", &r),
-            ("pitch", &p),
-            ("yaw", &yaw),
-        ],
-    );
-    let svg = svg(&WorkspaceFigure {
-        title: &title,
-        slices: [&horizontal, &vertical],
-        centre: position,
-        condition_max: scenario.checks.condition_max,
-        lang,
-    });
-    super::vector::by_extension(svg, path)
+    Ok([horizontal, vertical])
 }
 
 /// Where one slice is drawn: the box on the page and the metre-to-page scale.
@@ -172,34 +257,93 @@ pub(crate) fn svg(fig: &WorkspaceFigure) -> String {
         })
         .fold(f64::INFINITY, f64::min);
     let mut left = gap;
-    for sl in fig.slices {
+    for (k, sl) in fig.slices.iter().enumerate() {
         let frame = SliceBox {
             left,
             bottom: bottom - 0.5 * (avail[1] - span(sl)[1] * scale),
             scale,
             range: sl.range,
         };
-        panel(&mut s, fig, sl, &frame);
+        match &fig.certified {
+            Some(cuts) => certified_cells(&mut s, &cuts[k], &frame),
+            None => cells(&mut s, fig, sl, &frame),
+        }
+        boundary(&mut s, sl, &frame);
+        centre_mark(&mut s, fig, sl, &frame);
+        panel_axes(&mut s, fig, sl, &frame);
         left += avail[0] + gap;
     }
-    colour_bar(
-        &mut s,
-        fig,
-        WIDTH - bar + 6.0,
-        top + 10.0,
-        bottom - top - 40.0,
-    );
+    let (x, height) = (WIDTH - bar + 6.0, bottom - top - 40.0);
+    match fig.certified {
+        Some(_) => certified_key(&mut s, fig, x, top + 10.0),
+        None => colour_bar(&mut s, fig, x, top + 10.0, height),
+    }
     let _ = t;
     s.push_str("</svg>\n");
     s
 }
 
-/// One slice: coloured runs, boundary, centre, axes.
-fn panel(s: &mut String, fig: &WorkspaceFigure, sl: &Slice, f: &SliceBox) {
-    cells(s, fig, sl, f);
-    boundary(s, sl, f);
-    centre_mark(s, fig, sl, f);
-    panel_axes(s, fig, sl, f);
+/// The certified boxes a plane cuts: the proven ones green, then the undecided amber over
+/// them, clipped to the panel.
+fn certified_cells(s: &mut String, cuts: &[Cut], f: &SliceBox) {
+    let [[x0, x1], [y0, y1]] = f.range;
+    let _ = writeln!(s, r#"<g class="certified" shape-rendering="crispEdges">"#);
+    for inner in [true, false] {
+        let fill = hex(if inner {
+            colormap::PROVEN
+        } else {
+            colormap::UNDECIDED
+        });
+        for c in cuts.iter().filter(|c| c.inner == inner) {
+            let [[a0, a1], [b0, b1]] = c.rect;
+            let (a0, a1, b0, b1) = (a0.max(x0), a1.min(x1), b0.max(y0), b1.min(y1));
+            if a0 >= a1 || b0 >= b1 {
+                continue;
+            }
+            let _ = writeln!(
+                s,
+                r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{fill}"/>"#,
+                f.x(a0),
+                f.y(b1),
+                (a1 - a0) * f.scale + 0.3,
+                (b1 - b0) * f.scale + 0.3
+            );
+        }
+    }
+    let _ = writeln!(s, "</g>");
+}
+
+/// The certified figure's key: proven, undecided, the sampled boundary.
+fn certified_key(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64) {
+    let t = fig.lang;
+    for (k, (fill, key)) in [
+        (colormap::PROVEN, "workspace.proven"),
+        (colormap::UNDECIDED, "workspace.undecided"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let y = top + 16.0 * k as f64;
+        let _ = writeln!(
+            s,
+            r#"<rect x="{x:.2}" y="{y:.2}" width="12" height="8" fill="{}"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+            hex(fill),
+            x + 15.0,
+            y + 7.5,
+            t.tr(key)
+        );
+    }
+    let y = top + 32.0;
+    let _ = writeln!(
+        s,
+        r#"<line x1="{x:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="0.9"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        y + 4.0,
+        x + 12.0,
+        y + 4.0,
+        x + 15.0,
+        y + 7.0,
+        t.tr("workspace.sampled_boundary")
+    );
 }
 
 /// The reachable cells in their colours, a rectangle per run of one colour in a row.
@@ -455,4 +599,69 @@ fn colour_bar(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64, height: f
         y + 7.0,
         t.tr("workspace.boundary")
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use stewart_kinematics::Scenario;
+    use stewart_kinematics::analysis::certified::workspace::{
+        WorkspaceRequest, certified_workspace,
+    };
+    use stewart_kinematics::analysis::workspace::{
+        constant_orientation_workspace, pose_within_limits,
+    };
+
+    #[test]
+    fn the_cut_boxes_hold_every_sampled_cell_and_the_proven_ones_are_reachable() {
+        for name in ["paired", "servo-desk"] {
+            let s = Scenario::preset(name).expect("preset");
+            let g = &s.geometry;
+            let level = [Angle::ZERO; 3];
+            let ws = constant_orientation_workspace(g, &s.limits, level, 100).expect("grid");
+            let home = g.home_pose();
+            let never = || false;
+            let request = WorkspaceRequest {
+                orientation: &home,
+                boundary_width: 0.02 * g.characteristic_length(),
+                budget: 5_000_000,
+                stop: &never,
+            };
+            let w = certified_workspace(g, &s.limits, &request).expect("certified");
+            let centre = [0.0, 0.0, g.home_height()];
+            let slices = slices(&s, &ws, level, centre).expect("slices");
+            let (mut sampled, mut proven) = (0, 0);
+            for sl in &slices {
+                let cuts = cuts(&w.boxes, sl);
+                let point = |[a, b]: [f64; 2]| match sl.plane {
+                    Plane::Horizontal => home.with_position([a, b, sl.at].into()),
+                    Plane::Vertical => home.with_position([a, sl.at, b].into()),
+                };
+                let inside = |c: &Cut, [a, b]: [f64; 2]| {
+                    (c.rect[0][0]..=c.rect[0][1]).contains(&a)
+                        && (c.rect[1][0]..=c.rect[1][1]).contains(&b)
+                };
+                // Every cell the grid finds reachable lies in a box kept (inner or not).
+                for j in 0..sl.cells[1] {
+                    for i in 0..sl.cells[0] {
+                        let at = sl.centre(i, j);
+                        if sl.get(i, j).is_some() && pose_within_limits(g, &s.limits, &point(at)) {
+                            sampled += 1;
+                            assert!(cuts.iter().any(|c| inside(c, at)), "{name}: {at:?}");
+                        }
+                    }
+                }
+                // The centre of every proven rectangle is reachable.
+                for c in cuts.iter().filter(|c| c.inner) {
+                    let at = [0, 1].map(|k| 0.5 * (c.rect[k][0] + c.rect[k][1]));
+                    assert!(
+                        pose_within_limits(g, &s.limits, &point(at)),
+                        "{name}: {at:?}"
+                    );
+                    proven += 1;
+                }
+            }
+            assert!(sampled > 1000 && proven > 50, "{name}: {sampled} {proven}");
+        }
+    }
 }

@@ -7,7 +7,10 @@
 //! every pose of the box reaches when `L / √(M² + N²)` lies within [−1, 1] over it, none
 //! when it lies wholly outside. Where `M > 0` over the box (the joint above the shaft, as on
 //! every working rig) the studio's branch `θ = asin(L / √(M² + N²)) − atan(N / M)` is
-//! continuous, and the angle's interval follows from the arcsine's and arctangent's.
+//! continuous, and the angle's interval follows from the arcsine's (of the ratio's part
+//! within [−1, 1]) and arctangent's: it holds the angle of every pose of the box that
+//! reaches, so a box that straddles the edge of reach can still be shown out of the
+//! servo's range wherever it reaches.
 //!
 //! The Jacobian's row `i` is `[d_i, r_i × d_i] / (d_i · h'_i)` (`d_i` the rod, `h'_i` the
 //! horn tip's velocity per radian): it is regular when every `d_i · h'_i` is away from 0
@@ -30,7 +33,7 @@ pub enum Reach {
     Undecided,
 }
 
-/// One servo over a box, where every pose of it reaches.
+/// One servo over a box: its angle, tip and rod at every pose of the box that reaches.
 #[derive(Clone, Copy, Debug)]
 pub struct BoxServo {
     /// The horn's angle, radians (the studio's model angle, before trims).
@@ -41,15 +44,19 @@ pub struct BoxServo {
     pub rod: IVec3,
     /// The horn tip's velocity per radian of the servo.
     pub tip_rate: IVec3,
+    /// The transmission `d · h'`: the servo's angle turns by `d · δq / (d · h')` as its
+    /// platform joint moves by `δq`, so it is away from 0 except at the edge of reach.
+    pub transmission: Interval,
 }
 
-/// The six servos over a box: for each its reach, and what it is where every pose reaches
-/// and its angle is bounded.
+/// The six servos over a box: for each its reach, and what it is at the poses that reach,
+/// where its angle is bounded.
 #[derive(Clone, Copy, Debug)]
 pub struct BoxServos {
     /// Whether each servo reaches.
     pub reach: [Reach; 6],
-    /// Each servo where it reaches at every pose and its angle is bounded.
+    /// Each servo at the poses of the box that reach it, where its angle is bounded (`M > 0`
+    /// over the box, and some pose may reach).
     pub servos: [Option<BoxServo>; 6],
 }
 
@@ -82,7 +89,7 @@ impl BoxServos {
             } else {
                 Reach::Undecided
             };
-            if reach[i] != Reach::Every || m.lo() <= 0.0 {
+            if reach[i] == Reach::None || m.lo() <= 0.0 {
                 continue;
             }
             let (Some(asin), Some(tan)) = (ratio.asin(), n.div(&m)) else {
@@ -99,11 +106,13 @@ impl BoxServos {
             // The platform joint is the base joint plus the leg.
             let rod: IVec3 = std::array::from_fn(|k| base[k] + l[k] - tip[k]);
             let tip_rate: IVec3 = [-(a * sin * h.x), -(a * sin * h.y), a * cos];
+            let transmission = rod[0] * tip_rate[0] + rod[1] * tip_rate[1] + rod[2] * tip_rate[2];
             out[i] = Some(BoxServo {
                 angle,
                 tip,
                 rod,
                 tip_rate,
+                transmission,
             });
         }
         Self { reach, servos: out }
@@ -116,11 +125,12 @@ impl BoxServos {
     pub fn jacobian(&self, legs: &BoxLegs, length: f64) -> Option<[[Interval; 6]; 6]> {
         let mut rows = [[Interval::point(0.0); 6]; 6];
         for (i, row) in rows.iter_mut().enumerate() {
+            if self.reach[i] != Reach::Every {
+                return None;
+            }
             let servo = self.servos[i]?;
             let d = &servo.rod;
-            let h = &servo.tip_rate;
-            let transmission = d[0] * h[0] + d[1] * h[1] + d[2] * h[2];
-            if transmission.contains(0.0) {
+            if servo.transmission.contains(0.0) {
                 return None;
             }
             let moment = cross(&legs.arms[i], d);

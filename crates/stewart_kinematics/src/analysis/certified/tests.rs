@@ -111,7 +111,10 @@ fn a_planar_platform_turned_against_its_base_is_certified_up_to_fichters_torsion
 
 #[test]
 fn inside_a_certified_range_every_sampled_pose_is_regular() {
-    for name in ["paired", "dietmaier", "circle"] {
+    // The studio's own conditioning (for servos, the servo Jacobian's, which also turns
+    // singular as a servo nears the edge of its reach) at 201 poses of each range, its
+    // ends included.
+    for name in ["paired", "dietmaier", "circle", "servo-desk", "crank-rig"] {
         let s = preset(name);
         let g = &s.geometry;
         let home = g.home_pose();
@@ -129,7 +132,10 @@ fn inside_a_certified_range_every_sampled_pose_is_regular() {
                 let mut c = home.to_coordinates();
                 c[k] = v;
                 let pose = Pose::from_coordinates(c);
-                let cond = g.conditioning(&pose).condition_number;
+                let cond = match g.servo_conditioning(&pose) {
+                    Some(servo) => servo.condition_number,
+                    None => g.conditioning(&pose).condition_number,
+                };
                 assert!(
                     cond.is_some_and(f64::is_finite),
                     "{name} coordinate {k} at {v}: {cond:?}"
@@ -313,6 +319,118 @@ mod workspace {
     }
 
     #[test]
+    fn the_clearance_bound_over_a_box_holds_every_position_inside_it() {
+        // Random boxes of positions about the workspace, from a thousandth to a tenth of
+        // the platform's size: the least distance between legs (rods, rods and horns) at
+        // random positions inside, by the studio's own measure, lies within the bounds.
+        use crate::analysis::certified::workspace::least_distance_bounds;
+        use crate::analysis::checks::servos::rod_distances;
+        use crate::ground::interval::Interval;
+        use crate::model::limits::pair_distances;
+        for name in ["servo-desk", "crank-rig", "paired"] {
+            let s = preset(name);
+            let g = &s.geometry;
+            let home = g.home_pose();
+            let size = g.characteristic_length();
+            let least = |pose: &Pose| -> Option<f64> {
+                let solution = g.inverse(pose);
+                Some(match g.rotary() {
+                    Some(servos) => {
+                        let angles = g.servo_angles(pose)?.ok()?;
+                        let tips = std::array::from_fn(|i| {
+                            servos.horn_tip(i, &g.base_joints()[i], angles[i])
+                        });
+                        let (rods, horns) =
+                            rod_distances(g.base_joints(), &solution.platform_joints, &tips);
+                        rods.iter()
+                            .chain(&horns)
+                            .copied()
+                            .fold(f64::INFINITY, f64::min)
+                    }
+                    None => pair_distances(&solution)
+                        .into_iter()
+                        .fold(f64::INFINITY, f64::min),
+                })
+            };
+            let mut seed = 0x6a09_e667_u32;
+            let mut unit = || {
+                seed ^= seed << 13;
+                seed ^= seed >> 17;
+                seed ^= seed << 5;
+                f64::from(seed) / f64::from(u32::MAX)
+            };
+            let (mut bounded, mut tight) = (0, 0);
+            for _ in 0..600 {
+                let centre = home.position
+                    + nalgebra::Vector3::new(unit() - 0.5, unit() - 0.5, unit() - 0.5) * size;
+                let half = size * 10f64.powf(-3.0 + 2.0 * unit());
+                let b: [Interval; 3] = std::array::from_fn(|k| Interval::around(centre[k], half));
+                let Some((lo, hi)) = least_distance_bounds(g, &home, &b) else {
+                    continue;
+                };
+                bounded += 1;
+                tight += usize::from(hi - lo < 0.1 * size);
+                for _ in 0..20 {
+                    let p = nalgebra::Vector3::from_fn(|k, _| b[k].lo() + unit() * b[k].width());
+                    if let Some(d) = least(&home.with_position(p)) {
+                        assert!(lo <= d && d <= hi, "{name}: {d} not in [{lo}, {hi}]");
+                    }
+                }
+            }
+            assert!(bounded > 200 && tight > 50, "{name}: {bounded} {tight}");
+        }
+    }
+
+    #[test]
+    fn nothing_outside_the_kept_boxes_is_reachable_down_to_the_base_plane() {
+        // The whole region searched, from the base plane (where a servo's joint may sit
+        // level with its shaft: the angle's formula turns there) to the highest a joint
+        // can be, with and without the limits.
+        for name in ["servo-desk", "crank-rig", "paired"] {
+            let s = preset(name);
+            let g = &s.geometry;
+            let home = g.home_pose();
+            let top = match g.rotary() {
+                Some(servos) => servos.horn_length() + servos.rod_length(),
+                None => g.stroke().max.expect("stroke"),
+            };
+            for limits in [Limits::default(), s.limits] {
+                let w = bracket(&s, &limits, 0.03 * g.characteristic_length());
+                let mut seed = 0x1b87_3593_u32;
+                let mut unit = || {
+                    seed ^= seed << 13;
+                    seed ^= seed >> 17;
+                    seed ^= seed << 5;
+                    f64::from(seed) / f64::from(u32::MAX)
+                };
+                let reach = g.plate_radius(crate::model::geometry::Plate::Base) + top;
+                let (mut outside, mut reachable) = (0, 0);
+                for _ in 0..20_000 {
+                    let p = nalgebra::Vector3::new(
+                        (2.0 * unit() - 1.0) * reach,
+                        (2.0 * unit() - 1.0) * reach,
+                        unit() * top,
+                    );
+                    let within = pose_within_limits(g, &limits, &home.with_position(p));
+                    reachable += usize::from(within);
+                    if w.boxes
+                        .iter()
+                        .any(|b| (0..3).all(|k| b.position[k].contains(p[k])))
+                    {
+                        continue;
+                    }
+                    outside += 1;
+                    assert!(!within, "{name}: {p:?}");
+                }
+                assert!(
+                    outside > 10_000 && reachable > 20,
+                    "{name}: {outside} {reachable}"
+                );
+            }
+        }
+    }
+
+    #[test]
     fn a_spent_budget_counts_the_undecided_as_boundary() {
         let s = preset("paired");
         let level = s.geometry.home_pose();
@@ -405,7 +523,7 @@ fn a_servos_bounds_over_a_box_hold_every_pose_inside_it() {
             seed ^= seed << 5;
             f64::from(seed) / f64::from(u32::MAX)
         };
-        let (mut every, mut none) = (0, 0);
+        let (mut every, mut none, mut undecided, mut bounded) = (0, 0, 0, 0);
         for centre in poses_about_home(&s, 400) {
             // Boxes from a thousandth to a tenth of the platform's size (and as many
             // hundredths of a radian) about the pose.
@@ -428,30 +546,33 @@ fn a_servos_bounds_over_a_box_hold_every_pose_inside_it() {
                     let angle = servo_angle(servos, i, &g.base_joints()[i], joint);
                     match over.reach[i] {
                         Reach::Every => {
-                            let theta = angle.expect("reaches").radians();
+                            assert!(angle.is_ok(), "{name}: a box said reachable");
                             every += 1;
-                            if let Some(servo) = over.servos[i] {
-                                assert!(servo.angle.contains(theta), "{name}: {theta}");
-                                let tip = servos.horn_tip(
-                                    i,
-                                    &g.base_joints()[i],
-                                    angle.expect("reaches"),
-                                );
-                                for k in 0..3 {
-                                    assert!(servo.tip[k].contains(tip[k]));
-                                    assert!(servo.rod[k].contains(joint[k] - tip[k]));
-                                }
-                            }
                         }
                         Reach::None => {
                             none += 1;
                             assert!(angle.is_err(), "{name}: reached in a box said unreachable");
                         }
-                        Reach::Undecided => {}
+                        Reach::Undecided => undecided += 1,
+                    }
+                    // Wherever the pose reaches, the servo's bounds hold it (also in a box
+                    // that straddles the edge of reach).
+                    if let (Ok(angle), Some(servo)) = (angle, over.servos[i]) {
+                        let theta = angle.radians();
+                        assert!(servo.angle.contains(theta), "{name}: {theta}");
+                        let tip = servos.horn_tip(i, &g.base_joints()[i], angle);
+                        for k in 0..3 {
+                            assert!(servo.tip[k].contains(tip[k]));
+                            assert!(servo.rod[k].contains(joint[k] - tip[k]));
+                        }
+                        bounded += 1;
                     }
                 }
             }
         }
-        assert!(every > 10_000 && none > 100, "{name}: {every} {none}");
+        assert!(
+            every > 10_000 && none > 100 && undecided > 100 && bounded > 10_000,
+            "{name}: {every} {none} {undecided} {bounded}"
+        );
     }
 }

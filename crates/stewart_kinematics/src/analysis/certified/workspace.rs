@@ -88,15 +88,12 @@ pub fn certified_workspace(
         Some(servos) => (0.0, servos.horn_length() + servos.rod_length()),
         None => (stroke.min?, stroke.max?),
     };
-    let judge = Judge {
+    let judge = Judge::new(
         geometry,
-        stroke: Interval::new(min, max).unwrap_or(Interval::ENTIRE),
-        cones: [limits.base_cone, limits.platform_cone]
-            .map(|a| a.map(|a| Interval::point(a.radians()).cos())),
-        clearance: limits.leg_radius.map(|r| 2.0 * r),
-        orientation: *request.orientation,
-        margin: 1e-9 * geometry.characteristic_length(),
-    };
+        limits,
+        request.orientation,
+        Interval::new(min, max).unwrap_or(Interval::ENTIRE),
+    );
     // Breadth first, a level at a time on all cores: a run stopped early has classed the
     // whole region coarsely, so its bracket is already useful.
     let tested = AtomicUsize::new(0);
@@ -136,6 +133,11 @@ pub fn certified_workspace(
         cut_short: stopped.load(Ordering::Relaxed),
         boxes,
     })
+}
+
+/// A step above `x`, so that a bound computed in floating point stays a bound.
+fn up(x: f64) -> f64 {
+    x.next_up()
 }
 
 /// Half the diagonal of a position box: the farthest a point of it is from its centre.
@@ -184,7 +186,43 @@ struct Judge<'a> {
     margin: f64,
 }
 
-impl Judge<'_> {
+/// The least distance between two legs (for servos: two rods, or a rod and another servo's
+/// horn) over a box of positions at `orientation`'s, bounded below and above: the bound the
+/// clearance limit is judged by.
+#[cfg(test)]
+pub(super) fn least_distance_bounds(
+    geometry: &Geometry,
+    orientation: &Pose,
+    position: &[Interval; 3],
+) -> Option<(f64, f64)> {
+    let judge = Judge::new(geometry, &Limits::default(), orientation, Interval::ENTIRE);
+    match geometry.rotary() {
+        None => judge.clearance_bounds(position),
+        Some(servos) => {
+            let mut b = PoseBox::at(orientation);
+            b.coordinates[..3].copy_from_slice(position);
+            let legs = BoxLegs::of(geometry, &b);
+            let over = BoxServos::of(servos, geometry.base_joints(), &legs);
+            judge.rod_clearance_bounds(servos, position, &over)
+        }
+    }
+}
+
+impl<'a> Judge<'a> {
+    /// The limits of `geometry` at `orientation`'s orientation, `stroke` the legs' (for
+    /// servos, the joints' distance from their shafts that the search starts within).
+    fn new(geometry: &'a Geometry, limits: &Limits, orientation: &Pose, stroke: Interval) -> Self {
+        Judge {
+            geometry,
+            stroke,
+            cones: [limits.base_cone, limits.platform_cone]
+                .map(|a| a.map(|a| Interval::point(a.radians()).cos())),
+            clearance: limits.leg_radius.map(|r| 2.0 * r),
+            orientation: *orientation,
+            margin: 1e-9 * geometry.characteristic_length(),
+        }
+    }
+
     /// A box holding every reachable position: within the longest leg of every base
     /// joint's shifted centre, above the base plane.
     fn start(&self, longest: f64) -> [Interval; 3] {
@@ -293,10 +331,13 @@ impl Judge<'_> {
     ) -> Option<bool> {
         let over = BoxServos::of(servos, self.geometry.base_joints(), legs);
         let mut all = true;
+        // A servo's bounds hold at the poses of the box that reach it: the rest are out
+        // anyway, so a bound broken everywhere it holds still rules the whole box out.
         for (reach, servo) in over.reach.iter().zip(&over.servos) {
+            all &= *reach == Reach::Every;
             match (reach, servo) {
                 (Reach::None, _) => return None,
-                (Reach::Every, Some(servo)) => {
+                (_, Some(servo)) => {
                     if let Some((min, max)) = servos.range() {
                         let range =
                             Interval::new(min.radians(), max.radians()).unwrap_or(Interval::ENTIRE);
@@ -306,7 +347,7 @@ impl Judge<'_> {
                         all &= servo.angle.within(&range);
                     }
                 }
-                _ => all = false,
+                (_, None) => all = false,
             }
         }
         // A rod is exactly its length wherever it closes.
@@ -366,9 +407,21 @@ impl Judge<'_> {
         position: &[Interval; 3],
         over: &BoxServos,
     ) -> Option<(f64, f64)> {
+        // A horn tip moves at most the horn times its angle's change: at most the angle's
+        // range, and, where every pose reaches with the transmission away from 0, at most
+        // `s / min |d · h'|` per metre the joint moves (the angle's rate is
+        // `d · δq / (d · h')` with `|d| = s`), the joint moving at most the half-diagonal.
+        let (a, s) = (servos.horn_length(), servos.rod_length());
+        let half = half_diagonal(position);
         let mut swing: f64 = 0.0;
-        for servo in &over.servos {
-            swing = swing.max(servos.horn_length() * (*servo)?.angle.width());
+        for (servo, reach) in over.servos.iter().zip(&over.reach) {
+            let servo = (*servo)?;
+            let mut turn = servo.angle.width();
+            let least = servo.transmission.mig();
+            if *reach == Reach::Every && least > 0.0 {
+                turn = turn.min(up(s * half / least));
+            }
+            swing = swing.max(up(a * turn));
         }
         let centre = self.orientation.with_position(Vector3::new(
             position[0].mid(),
@@ -386,9 +439,12 @@ impl Judge<'_> {
             .chain(&horns)
             .copied()
             .fold(f64::INFINITY, f64::min);
-        let moves = half_diagonal(position).max(swing);
+        let moves = half.max(swing);
+        // The centre's angles are the library's arcsine: near the edge of reach its error
+        // grows to about √ε rad, covered by a millionth of a radian of horn.
+        let margin = self.margin + 1e-6 * a;
         least.is_finite().then(|| {
-            let reach = 2.0 * moves + self.margin;
+            let reach = 2.0 * moves + margin;
             (least - reach, least + reach)
         })
     }
