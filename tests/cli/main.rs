@@ -19,6 +19,7 @@ mod fk;
 mod framing;
 mod gates;
 mod link;
+mod omct;
 mod robot;
 mod rotary;
 mod serial;

@@ -24,6 +24,25 @@ pub(crate) fn load(args: &ScenarioArgs) -> Result<Scenario> {
     Ok(scenario)
 }
 
+/// Whether the scenario the arguments name gives the table `[name]` itself: in its file's
+/// text (a preset's included), or by a `--set name.…` (a command that reports on a table's
+/// settings refuses to report the defaults as the user's).
+pub(crate) fn gives_table(args: &ScenarioArgs, name: &str) -> bool {
+    let prefix = format!("{name}.");
+    if args.set.iter().any(|s| s.trim_start().starts_with(&prefix)) {
+        return true;
+    }
+    let text = match (&args.preset, &args.scenario) {
+        (_, Some(path)) => std::fs::read_to_string(path).ok(),
+        (Some(preset), None) => {
+            stewart_kinematics::io::scenario::presets::text(preset).map(str::to_owned)
+        }
+        (None, None) => stewart_kinematics::io::scenario::presets::text("seed").map(str::to_owned),
+    };
+    text.and_then(|t| t.parse::<toml::Table>().ok())
+        .is_some_and(|t| t.contains_key(name))
+}
+
 /// A scenario file, its template checked as [`load`] checks it (the viewer's Open and a
 /// session's scenario).
 pub(crate) fn load_file(

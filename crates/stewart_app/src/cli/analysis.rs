@@ -7,7 +7,8 @@ use clap::{Args, ValueEnum};
 
 use super::pictures::parse_lang;
 use super::values::{
-    parse_angles, parse_inertia, parse_mass, parse_pose, parse_position, parse_width,
+    parse_amplitude_scale, parse_angles, parse_frequency, parse_inertia, parse_latency_ms,
+    parse_mass, parse_pose, parse_position, parse_width,
 };
 use super::{ReportFormat, ScenarioArgs};
 use crate::i18n::Lang;
@@ -77,8 +78,8 @@ pub(crate) struct CueArgs {
     /// capture (pcap or pcapng, from Wireshark or tcpdump) of a game's UDP telemetry in any
     /// format the live link reads (Forza, F1 24 and 25, BeamNG, Live for Speed, X-Plane); `-`
     /// reads standard input.
-    #[arg(long, value_name = "RECORDING")]
-    pub(crate) input: PathBuf,
+    #[arg(long, value_name = "RECORDING", required_unless_present = "omct")]
+    pub(crate) input: Option<PathBuf>,
     /// For a capture: read the datagrams to this UDP port (default: the port whose
     /// datagrams give vehicle motion; the others are counted, never read).
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
@@ -94,8 +95,33 @@ pub(crate) struct CueArgs {
     /// tilt, the largest stroke used, the time the limiter held back.
     #[arg(long)]
     pub(crate) compare: bool,
-    /// The comparison's format.
-    #[arg(long, value_enum, default_value = "text", requires = "compare")]
+    /// The Objective Motion Cueing Test instead of a recording: the cueing driven by sines
+    /// of vehicle motion at twelve frequencies from 0.1 to 15.85 rad/s, and the gain and
+    /// phase of what is felt against what the vehicle did, in ten tests (surge, sway,
+    /// heave, roll, pitch, yaw; surge-to-pitch, sway-to-roll, pitch-to-surge,
+    /// roll-to-sway). With --compare, both algorithms.
+    #[arg(long, conflicts_with_all = ["input", "port"])]
+    pub(crate) omct: bool,
+    /// --omct: multiplies every test's input amplitude (1 m/s², 5 °/s), 0.001 to 10.
+    #[arg(long, value_name = "S", requires = "omct", allow_hyphen_values = true, value_parser = parse_amplitude_scale)]
+    pub(crate) amplitude_scale: Option<f64>,
+    /// --omct: the test frequencies instead of the twelve, rad/s (0.01 to 100), comma
+    /// separated.
+    #[arg(long, value_name = "W,W,…", requires = "omct", value_delimiter = ',', allow_hyphen_values = true, value_parser = parse_frequency)]
+    pub(crate) frequencies: Option<Vec<f64>>,
+    /// --omct: a transport delay added to the chain, milliseconds (0 to 1000): the rig's,
+    /// as `link` measures it.
+    #[arg(long, value_name = "MS", requires = "omct", allow_hyphen_values = true, value_parser = parse_latency_ms)]
+    pub(crate) latency_ms: Option<f64>,
+    /// --omct: draw the direct tests' gain and phase (a Bode figure): `.svg`, `.pdf` or
+    /// `.png`.
+    #[arg(long, value_name = "FILE.svg|FILE.pdf|FILE.png", requires = "omct")]
+    pub(crate) plot: Option<PathBuf>,
+    /// The language of the figure's words: `zh` or `en` (default: the environment's).
+    #[arg(long, value_name = "zh|en", value_parser = parse_lang, requires = "plot")]
+    pub(crate) lang: Option<Lang>,
+    /// The report's format (--compare and --omct).
+    #[arg(long, value_enum, default_value = "text")]
     pub(crate) format: ReportFormat,
 }
 

@@ -156,3 +156,41 @@ pub(crate) fn parse_pose(text: &str) -> Result<[f64; 6], ArgError> {
         angles[2],
     ])
 }
+
+/// A number within `range`, `what` naming it and `words` saying the range.
+fn within(
+    text: &str,
+    what: &'static str,
+    words: &'static str,
+    range: RangeInclusive<f64>,
+) -> Result<f64, ArgError> {
+    let v: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| ArgError::not_a(text, "a number"))?;
+    if range.contains(&v) {
+        Ok(v)
+    } else {
+        Err(ArgError::out_of_range(Some(what), words, text))
+    }
+}
+
+/// The OMCT's amplitude scale: 0.001 to 10.
+pub(crate) fn parse_amplitude_scale(text: &str) -> Result<f64, ArgError> {
+    within(text, "the amplitude scale", "from 0.001 to 10", 1e-3..=10.0)
+}
+
+/// A test frequency, rad/s: 0.01 to 100.
+pub(crate) fn parse_frequency(text: &str) -> Result<f64, ArgError> {
+    within(
+        text,
+        "the frequency",
+        "from 0.01 to 100 rad/s",
+        0.01..=100.0,
+    )
+}
+
+/// A transport delay, milliseconds: 0 to 1000.
+pub(crate) fn parse_latency_ms(text: &str) -> Result<f64, ArgError> {
+    within(text, "the latency", "from 0 to 1000 ms", 0.0..=1000.0)
+}

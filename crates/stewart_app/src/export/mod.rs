@@ -6,6 +6,7 @@ pub(crate) mod firmware;
 pub mod frames;
 pub(crate) mod gif_delta;
 pub(crate) mod gltf;
+pub(crate) mod omct_plot;
 pub(crate) mod plot;
 pub(crate) mod ply;
 pub(crate) mod robot;

@@ -2,9 +2,11 @@
 //! `[cueing]` table), as a pose table that `solve --poses`, `check` and `link` take. The
 //! motion is a CSV recording or a packet capture of a game's telemetry (told apart by the
 //! file's first bytes). `--compare` runs both algorithms and reports how each reproduces
-//! what is felt ([`comparison`]).
+//! what is felt ([`comparison`]); `--omct` runs the Objective Motion Cueing Test instead
+//! ([`omct`]).
 
 mod comparison;
+mod omct;
 
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -31,11 +33,30 @@ const POSE_COLUMNS: [&str; 7] = ["t", "x", "y", "z", "roll_deg", "pitch_deg", "y
 /// Run the command.
 pub(crate) fn run(args: &CueArgs) -> Result<ExitCode> {
     let scenario = source::load(&args.scenario)?;
+    if args.omct {
+        return omct::run(args, &scenario);
+    }
+    for (given, option) in [
+        (args.amplitude_scale.is_some(), "--amplitude-scale"),
+        (args.frequencies.is_some(), "--frequencies"),
+        (args.latency_ms.is_some(), "--latency-ms"),
+        (args.plot.is_some(), "--plot"),
+    ] {
+        if given {
+            anyhow::bail!("{option} belongs to the motion cueing test: add --omct");
+        }
+    }
+    if args.format == ReportFormat::Json && !args.compare {
+        anyhow::bail!("--format json is the report of --compare or --omct; the poses are a CSV");
+    }
+    let input = args
+        .input
+        .clone()
+        .ok_or_else(|| anyhow!("--input names the vehicle motion (or --omct tests the cueing)"))?;
     let mut inputs = source::inputs(&args.scenario, &scenario);
-    inputs.push(("the vehicle motion", args.input.clone()));
+    inputs.push(("the vehicle motion", input.clone()));
     let out = output::destination(args.out.as_deref(), &inputs)?;
-    let (bytes, file) =
-        read_input_bytes(&args.input, stewart_kinematics::io::file::FileKind::Table)?;
+    let (bytes, file) = read_input_bytes(&input, stewart_kinematics::io::file::FileKind::Table)?;
     let recording = if capture::is_capture(&bytes) {
         Recording::Capture(Box::new(capture::read(
             &bytes,

@@ -12,8 +12,10 @@ use super::widgets::{self, ERROR, OK, WARNING};
 use crate::i18n::Lang;
 use crate::viewer::tools::certified::CertifiedKey;
 use crate::viewer::tools::workspace::WorkspaceTool;
-use crate::volume_text::{format_volume, format_volume_error};
-use stewart_kinematics::analysis::certified::workspace::{BoxClass, CertifiedWorkspace};
+use crate::volume_text::{format_bound, format_volume, format_volume_error};
+use stewart_kinematics::analysis::certified::workspace::{
+    BoxClass, CertifiedWorkspace, ClassedBox,
+};
 
 /// The panel: the workspace tool, for `scenario` with `pose` shown; `open`: whether it
 /// starts open.
@@ -88,8 +90,8 @@ fn certified(ui: &mut egui::Ui, w: &mut WorkspaceTool, scenario: &Scenario, pose
         RichText::new(t.fmt(
             "workspace_panel.certified",
             &[
-                ("lo", &format!("{:.4}", c.inner_m3)),
-                ("hi", &format!("{:.4}", c.inner_m3 + c.boundary_m3)),
+                ("lo", &format_bound(c.inner_m3, false)),
+                ("hi", &format_bound(c.inner_m3 + c.boundary_m3, true)),
                 ("share", &share),
                 ("boxes", &c.tested),
                 ("width", &format!("{:.1}", 1000.0 * outcome.width)),
@@ -105,7 +107,8 @@ fn certified(ui: &mut egui::Ui, w: &mut WorkspaceTool, scenario: &Scenario, pose
 }
 
 /// The certified boxes the plane `z` crosses, seen from above: inner green, boundary
-/// amber, on the smallest square holding them.
+/// amber over them, on the smallest square holding them. (A flat stretch of the edge with
+/// no amber is a limit that happens to fall on a box face: decided exactly there.)
 fn certified_slice(ui: &mut egui::Ui, c: &CertifiedWorkspace, z: f64) {
     let crossed: Vec<_> = c
         .boxes
@@ -135,15 +138,21 @@ fn certified_slice(ui: &mut egui::Ui, c: &CertifiedWorkspace, z: f64) {
             rect.center().y - ((y - centre[1]) / span) as f32 * rect.height(),
         )
     };
-    for b in crossed {
+    // The proven boxes first, the undecided over them.
+    let (inner, undecided): (Vec<&ClassedBox>, Vec<&ClassedBox>) = crossed
+        .into_iter()
+        .partition(|b| b.class == BoxClass::Inner);
+    for b in inner.into_iter().chain(undecided) {
         let colour = match b.class {
             BoxClass::Inner => OK,
             _ => WARNING,
         };
+        // Half a pixel more each way: boxes finer than a pixel still join up.
         let r = egui::Rect::from_two_pos(
             at(b.position[0].lo(), b.position[1].lo()),
             at(b.position[0].hi(), b.position[1].hi()),
-        );
+        )
+        .expand(0.5);
         painter.rect_filled(r, 0.0, colour);
     }
 }

@@ -54,6 +54,45 @@ pub struct CueMeasures {
 /// wanted force, felt rate, wanted rate)` per sample `1..n−1`.
 pub type FeltSample = ([f64; 3], [f64; 3], [f64; 3], [f64; 3]);
 
+/// What is felt at the middle of three poses `p` at times `t` (uneven steps allowed), the
+/// reference point at `arm` from the rotation centre (platform frame): the specific force
+/// in the platform's axes (m/s², the reference point's acceleration by the second
+/// difference, `Rᵀ (a + g ẑ) − g ẑ`) and the body rate (rad/s) that turns the first pose's
+/// rotation into the last's.
+pub fn felt_at(arm: &Vector3<f64>, t: [f64; 3], p: [&Pose; 3]) -> ([f64; 3], [f64; 3]) {
+    let head = |p: &Pose| p.position + p.rotation() * arm;
+    let up = Vector3::new(0.0, 0.0, GRAVITY);
+    let [t0, t1, t2] = t;
+    let (h0, h1, h2) = (head(p[0]), head(p[1]), head(p[2]));
+    // The second difference on uneven steps.
+    let a = 2.0 * ((h2 - h1) / (t2 - t1) - (h1 - h0) / (t1 - t0)) / (t2 - t0);
+    let f = p[1].rotation().transpose() * (a + up) - up;
+    let w = rotation_vector(&(p[0].rotation().transpose() * p[2].rotation())) / (t2 - t0);
+    ([f.x, f.y, f.z], [w.x, w.y, w.z])
+}
+
+/// The rotation vector (axis times angle, radians) of rotation matrix `m`, accurate for
+/// the small turns between close samples: the angle from its sine (half the skew part's
+/// length) and cosine together, where the cosine alone (`acos` of the trace) loses half
+/// its digits near 0 and reads 1e-7 rad as 0 or NaN.
+pub fn rotation_vector(m: &nalgebra::Matrix3<f64>) -> Vector3<f64> {
+    let v = Vector3::new(
+        m[(2, 1)] - m[(1, 2)],
+        m[(0, 2)] - m[(2, 0)],
+        m[(1, 0)] - m[(0, 1)],
+    );
+    let sin = 0.5 * v.norm();
+    let cos = 0.5 * (m.trace() - 1.0);
+    if sin == 0.0 {
+        return Vector3::zeros();
+    }
+    // Past a right angle the skew part shrinks again: the rotation's own axis there.
+    if cos < 0.0 {
+        return Rotation3::from_matrix_unchecked(*m).scaled_axis();
+    }
+    v * (sin.atan2(cos) / (2.0 * sin))
+}
+
 /// What is felt along `poses` (at `times`), the reference point `reference_m` (platform
 /// frame), against `samples` scaled by `settings`.
 pub fn felt(
@@ -63,7 +102,6 @@ pub fn felt(
     poses: &[Pose],
 ) -> Vec<FeltSample> {
     let arm = Vector3::from(settings.reference_m) - geometry.pivot();
-    let head = |p: &Pose| p.position + p.rotation() * arm;
     let wanted = |m: &VehicleMotion| {
         (
             m.accel.map(|a| settings.translation_scale * a),
@@ -71,7 +109,6 @@ pub fn felt(
                 .map(|r| settings.rotation_scale * r.to_radians()),
         )
     };
-    let up = Vector3::new(0.0, 0.0, GRAVITY);
     let mut out = Vec::with_capacity(samples.len().saturating_sub(2));
     for k in 1..samples
         .len()
@@ -79,22 +116,18 @@ pub fn felt(
         .min(poses.len().saturating_sub(1))
     {
         let (t0, t1, t2) = (samples[k - 1].0, samples[k].0, samples[k + 1].0);
-        let (h0, h1, h2) = (head(&poses[k - 1]), head(&poses[k]), head(&poses[k + 1]));
-        // The second difference on uneven steps.
-        let a = 2.0 * ((h2 - h1) / (t2 - t1) - (h1 - h0) / (t1 - t0)) / (t2 - t0);
-        let r = poses[k].rotation();
-        let f = r.transpose() * (a + up) - up;
-        let turn = Rotation3::from_matrix_unchecked(
-            poses[k - 1].rotation().transpose() * poses[k + 1].rotation(),
+        let (f, w) = felt_at(
+            &arm,
+            [t0, t1, t2],
+            [&poses[k - 1], &poses[k], &poses[k + 1]],
         );
-        let w = turn.scaled_axis() / (t2 - t0);
         let (f0, w0) = wanted(&samples[k - 1].1);
         let (f1, w1) = wanted(&samples[k].1);
         // Each held sample counts for its interval, as in the second difference.
         let share = (t1 - t0) / (t2 - t0);
         let mean =
             |x: [f64; 3], y: [f64; 3]| std::array::from_fn(|i| share * x[i] + (1.0 - share) * y[i]);
-        out.push(([f.x, f.y, f.z], mean(f0, f1), [w.x, w.y, w.z], mean(w0, w1)));
+        out.push((f, mean(f0, f1), w, mean(w0, w1)));
     }
     out
 }

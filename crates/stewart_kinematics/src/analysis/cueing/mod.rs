@@ -8,6 +8,7 @@ pub mod guard;
 mod limiter;
 mod lti;
 pub mod mpc;
+pub mod omct;
 mod washout;
 
 use nalgebra::Vector3;
