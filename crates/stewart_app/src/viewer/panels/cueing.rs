@@ -1,7 +1,9 @@
 //! Motion cueing: the algorithm (classical washout or model-predictive) and its settings
 //! (the scenario's `[cueing]` table), and, while a vehicle recording plays as the motion,
 //! the vehicle's scaled specific force against the one each algorithm makes felt, their
-//! errors and the stroke each uses, and the tilt, over time.
+//! errors and the stroke each uses, and the tilt, over time; on its second tab, the
+//! objective motion cueing test of the settings shown (gain and phase of the six direct
+//! tests against frequency).
 
 use std::sync::PoisonError;
 
@@ -18,14 +20,22 @@ use crate::i18n::Lang;
 use crate::vehicle_in::live_cue::{CueCounts, TracePoint};
 use crate::viewer::state::editor::Editor;
 use crate::viewer::state::vehicle::VehicleSource;
+use crate::viewer::tools::omct::{OmctKey, OmctTool};
 
 /// Height of each plot, points.
 const PLOT_HEIGHT: f32 = 200.0;
 
 /// The panel; `now` is the scenario time shown (the plots' marker); `live`, the link's
-/// live vehicle input while it streams one. Returns whether the user asked to open a
-/// vehicle motion recording (the file dialog is the window's).
-pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&CueCounts>) -> bool {
+/// live vehicle input while it streams one; `omct`, the objective test's job. Returns
+/// whether the user asked to open a vehicle motion recording (the file dialog is the
+/// window's).
+pub(crate) fn show(
+    ui: &mut egui::Ui,
+    ed: &mut Editor,
+    now: f64,
+    live: Option<&CueCounts>,
+    omct: &mut OmctTool,
+) -> bool {
     let t = ed.lang;
     let mut open = false;
     // Whether the recording played is new since the last frame (the panel open or not).
@@ -37,6 +47,20 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
     egui::CollapsingHeader::new(t.tr("cueing.heading"))
         .default_open(ed.expand)
         .show(ui, |ui| {
+            // Two tabs: what a recording (or the live input) makes felt, and the test.
+            let tab_id = ui.make_persistent_id("cueing tab");
+            let mut testing = ui.data(|d| d.get_temp::<bool>(tab_id)).unwrap_or(false);
+            ui.horizontal(|ui| {
+                ui.selectable_value(&mut testing, false, t.tr("cueing.tab_motion"));
+                ui.selectable_value(&mut testing, true, t.tr("cueing.tab_omct"));
+            });
+            ui.data_mut(|d| d.insert_temp(tab_id, testing));
+            if testing {
+                omct_tab(ui, ed, omct);
+                settings_section(ui, ed);
+                edit_error(ui, ed.doc, t, &[Group::Cueing]);
+                return;
+            }
             let trace: Vec<TracePoint> = live
                 .map(|c| {
                     let trace = c.trace.lock().unwrap_or_else(PoisonError::into_inner);
@@ -76,6 +100,139 @@ pub(crate) fn show(ui: &mut egui::Ui, ed: &mut Editor, now: f64, live: Option<&C
         });
     open
 }
+
+/// The objective motion cueing test of the settings shown: a button, then the six direct
+/// tests' gain and phase against frequency (log scales), the distorted points named.
+fn omct_tab(ui: &mut egui::Ui, ed: &mut Editor, tool: &mut OmctTool) {
+    let t = ed.lang;
+    let scenario = ed.doc.scenario();
+    let key = OmctKey {
+        geometry: scenario.geometry.clone(),
+        limits: scenario.limits,
+        cueing: scenario.cueing.clone(),
+    };
+    ui.label(RichText::new(t.tr("cueing.omct_about")).small());
+    ui.horizontal(|ui| {
+        let busy = tool.busy();
+        if ui
+            .add_enabled(!busy, egui::Button::new(t.tr("cueing.omct_run")))
+            .on_hover_text(t.tr("cueing.omct_tip"))
+            .clicked()
+        {
+            tool.start(key.clone());
+        }
+        if busy {
+            ui.spinner();
+        }
+    });
+    let Some(outcome) = &tool.latest else {
+        return;
+    };
+    if outcome.key != key {
+        ui.label(RichText::new(t.tr("cueing.omct_stale")).color(super::widgets::WARNING));
+        return;
+    }
+    let report = match &outcome.report {
+        Ok(r) => r,
+        Err(why) => {
+            ui.label(RichText::new(why).color(super::widgets::WARNING));
+            return;
+        }
+    };
+    let direct: Vec<_> = report.tests.iter().filter(|r| r.test.direct()).collect();
+    let points = |values: &dyn Fn(usize) -> Option<f64>| -> PlotPoints<'static> {
+        report
+            .frequencies
+            .iter()
+            .enumerate()
+            .filter_map(|(k, w)| values(k).map(|v| [w.log10(), v]))
+            .collect()
+    };
+    let decades = |mark: egui_plot::GridMark, _: &std::ops::RangeInclusive<f64>| {
+        // A decade's mark as its value (0.1, 1, 10), the marks between left bare.
+        if (mark.value - mark.value.round()).abs() < 1e-9 {
+            let v = 10f64.powf(mark.value.round());
+            if v < 1e-3 {
+                return format!("{v:.0e}");
+            }
+            let text = format!("{v:.4}");
+            text.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            String::new()
+        }
+    };
+    egui_plot::Plot::new("omct gain")
+        .height(PLOT_HEIGHT)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .x_axis_label(t.tr("omct.frequency"))
+        .y_axis_label(t.tr("omct.gain"))
+        .x_axis_formatter(decades)
+        .y_axis_formatter(decades)
+        .show(ui, |plot| {
+            for (k, r) in direct.iter().enumerate() {
+                let gain = points(&|i| (r.gain[i] > 0.0).then(|| r.gain[i].log10()));
+                plot.line(
+                    Line::new(t.tr(OMCT_WORDS[k]), gain)
+                        .color(leg_colour(k))
+                        .width([3.4, 1.4, 1.4, 4.0, 2.4, 1.0][k]),
+                );
+            }
+        });
+    egui_plot::Plot::new("omct phase")
+        .height(PLOT_HEIGHT)
+        .allow_scroll(false)
+        .allow_drag(false)
+        .x_axis_label(t.tr("omct.frequency"))
+        .y_axis_label(t.tr("omct.phase"))
+        .x_axis_formatter(decades)
+        .show(ui, |plot| {
+            for (k, r) in direct.iter().enumerate() {
+                let phase = points(&|i| r.phase_deg[i].is_finite().then_some(r.phase_deg[i]));
+                plot.line(
+                    Line::new(t.tr(OMCT_WORDS[k]), phase)
+                        .color(leg_colour(k))
+                        .width([3.4, 1.4, 1.4, 4.0, 2.4, 1.0][k]),
+                );
+            }
+        });
+    let entries: Vec<side_plot::LegendEntry> = (0..direct.len().min(6))
+        .map(|k| side_plot::LegendEntry {
+            colour: leg_colour(k),
+            words: t.tr(OMCT_WORDS[k]),
+            dashed: false,
+            width: 2.0,
+        })
+        .collect();
+    side_plot::legend(ui, &entries);
+    let distorted: Vec<String> = report
+        .tests
+        .iter()
+        .flat_map(|r| {
+            r.distorted
+                .iter()
+                .zip(&report.frequencies)
+                .filter(|(d, _)| **d)
+                .map(move |(_, w)| format!("{} {w:.2}", r.test.name()))
+        })
+        .collect();
+    let note = if distorted.is_empty() {
+        t.tr("cueing.omct_clean").to_owned()
+    } else {
+        t.fmt("cueing.omct_distorted", &[("list", &distorted.join(", "))])
+    };
+    ui.label(RichText::new(note).small());
+}
+
+/// The six direct tests' names, as the figure's key says them.
+const OMCT_WORDS: [&str; 6] = [
+    "omct.surge",
+    "omct.sway",
+    "omct.heave",
+    "omct.roll",
+    "omct.pitch",
+    "omct.yaw",
+];
 
 /// The algorithm's choice and its settings.
 fn settings_section(ui: &mut egui::Ui, ed: &mut Editor) {

@@ -223,7 +223,13 @@ fn tool_sections(ui: &mut egui::Ui, state: &mut ViewerState) {
     }
     ui.separator();
     let mut editor = Editor::new(&mut state.doc, &mut state.playback, cx.lang, cx.expand);
-    if cueing::show(ui, &mut editor, cx.now, state.link.cue()) {
+    if cueing::show(
+        ui,
+        &mut editor,
+        cx.now,
+        state.link.cue(),
+        &mut state.tools.omct,
+    ) {
         state.choose_file(Purpose::Open);
     }
     ui.separator();

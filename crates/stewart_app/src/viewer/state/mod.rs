@@ -408,6 +408,7 @@ impl ViewerState {
             self.tools.workspace.request(request);
         }
         self.tools.workspace.poll();
+        self.tools.omct.poll();
     }
 
     /// When the workspace is shown, wait (at most thirty seconds) for its refinement at the

@@ -1,13 +1,15 @@
 //! The background computations the panels ask for: one [`job`] runner (newest request
 //! wins, the work in flight cancelled), the [`workspace`] surface and slice and its
 //! [`certified`] bracket, the [`design`] search, [`reach`] at the pose shown, the Dynamics
-//! panel's [`mode_view`], and the [`assembly`] modes of the legs shown.
+//! panel's [`mode_view`], the Motion cueing panel's [`omct`] test, and the [`assembly`]
+//! modes of the legs shown.
 
 pub(crate) mod assembly;
 pub(crate) mod certified;
 pub(crate) mod design;
 pub(crate) mod job;
 pub(crate) mod mode_view;
+pub(crate) mod omct;
 pub(crate) mod reach;
 pub(crate) mod workspace;
 
@@ -26,4 +28,6 @@ pub struct Tools {
     pub(crate) reach: reach::ReachCache,
     /// The Dynamics panel's mode viewer (the 3D view swinging along a mode).
     pub(crate) modes: mode_view::ModeView,
+    /// The Motion cueing panel's objective test of the cueing shown.
+    pub(crate) omct: omct::OmctTool,
 }

@@ -296,3 +296,51 @@ fn an_opened_recording_shows_its_plots_and_legend_entries_stay_whole() {
         }
     }
 }
+
+#[test]
+fn the_cueing_test_tab_runs_the_omct_of_the_settings_shown_and_says_when_it_is_stale() {
+    use stewart_kinematics::analysis::cueing::omct::{OmctOptions, omct};
+    let mut h = super::tall_harness("paired", 2400.0);
+    h.get_by_label("Motion cueing").click();
+    h.run();
+    h.get_by_label("Cueing test (OMCT)").click();
+    h.run();
+    h.get_by_label("Run the test").click();
+    // One frame takes the click (a spinner then turns while it runs).
+    h.step();
+    h.state_mut().tools.omct.wait();
+    h.run();
+    super::look(&mut h, "cueing-omct.png");
+    // The report shown is the command line's, number for number.
+    let s = stewart_kinematics::Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
+    let never = || false;
+    let direct = omct(
+        &s.geometry,
+        &s.limits,
+        &s.cueing,
+        &OmctOptions::default(),
+        &never,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let shown = h
+        .state()
+        .tools
+        .omct
+        .latest
+        .as_ref()
+        .and_then(|o| o.report.as_ref().ok())
+        .cloned()
+        .unwrap_or_else(|| panic!("no report"));
+    assert_eq!(shown.tests[0].gain, direct.tests[0].gain);
+    // The default tilt rate limit (3°/s) clips surge and sway around 2.5 rad/s.
+    assert!(
+        h.query_by_label_contains("Distorted (harmonics over 5 %")
+            .is_some()
+    );
+    assert!(h.query_by_label_contains("surge 2.51").is_some());
+    // Other settings: the test shown is no longer theirs.
+    let scale = settings::find("cueing.translation_scale").unwrap_or_else(|e| panic!("{e}"));
+    h.state_mut().editor().apply(scale, Some(0.3));
+    h.run();
+    assert!(h.query_by_label_contains("run it again").is_some());
+}

@@ -298,10 +298,11 @@ fn certify_proves_the_bracket_the_command_line_gives_and_says_when_it_is_stale()
         &request,
     )
     .expect("stroke");
+    // The bounds rounded outward, as the command line prints them.
     let bounds = format!(
-        "Proven: {:.4} m³ ≤ volume ≤ {:.4} m³",
-        c.inner_m3,
-        c.inner_m3 + c.boundary_m3
+        "Proven: {} m³ ≤ volume ≤ {} m³",
+        crate::volume_text::format_bound(c.inner_m3, false),
+        crate::volume_text::format_bound(c.inner_m3 + c.boundary_m3, true)
     );
     assert!(
         h.query_by_label_contains(&bounds).is_some(),
