@@ -283,6 +283,7 @@ fn certify_proves_the_bracket_the_command_line_gives_and_says_when_it_is_stale()
     h.step();
     h.state_mut().tools.workspace.certified.wait();
     h.run();
+    super::look(&mut h, "certified.png");
     let s = Scenario::preset("paired").unwrap_or_else(|e| panic!("{e}"));
     let level = s.geometry.home_pose();
     let never = || false;
