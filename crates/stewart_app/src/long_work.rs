@@ -81,6 +81,30 @@ pub(crate) fn duration_words(seconds: f64) -> String {
     }
 }
 
+/// Run `work` on a thread of its own while a spinner (on a terminal) shows the time spent
+/// and `message()`, asked anew ten times a second; its result, its panic passed on.
+pub(crate) fn with_spinner<T: Send>(
+    message: impl Fn() -> String,
+    work: impl FnOnce() -> T + Send,
+) -> T {
+    let spinner = ProgressBar::new_spinner();
+    spinner.set_style(
+        ProgressStyle::with_template("{spinner} {elapsed} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+    );
+    let result = std::thread::scope(|scope| {
+        let worker = scope.spawn(work);
+        while !worker.is_finished() {
+            spinner.set_message(message());
+            spinner.tick();
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        worker.join()
+    });
+    spinner.finish_and_clear();
+    result.unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

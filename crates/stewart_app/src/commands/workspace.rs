@@ -357,25 +357,15 @@ fn certified(
     };
     let started = Instant::now();
     // On a terminal, the time spent and the boxes classified while it runs.
-    let spinner = ProgressBar::new_spinner();
-    spinner.set_style(
-        ProgressStyle::with_template("{spinner} {elapsed} {msg}")
-            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
-    );
-    let result = std::thread::scope(|scope| {
-        let worker = scope.spawn(|| certified_workspace(g, &scenario.limits, &request));
-        while !worker.is_finished() {
-            spinner.set_message(format!(
+    let result = crate::long_work::with_spinner(
+        || {
+            format!(
                 "{} boxes classified (Ctrl-C ends it with what is decided)",
                 asked.load(Ordering::Relaxed)
-            ));
-            spinner.tick();
-            std::thread::sleep(Duration::from_millis(100));
-        }
-        worker.join()
-    });
-    spinner.finish_and_clear();
-    let result = result.unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            )
+        },
+        || certified_workspace(g, &scenario.limits, &request),
+    );
     let w = result.ok_or_else(|| {
         anyhow::anyhow!(
             "scenario `{}`: the certified workspace needs both stroke limits (`leg_min` and `leg_max` in [geometry])",

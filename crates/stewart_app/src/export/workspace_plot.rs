@@ -313,6 +313,20 @@ fn certified_cells(s: &mut String, cuts: &[Cut], f: &SliceBox) {
     let _ = writeln!(s, "</g>");
 }
 
+/// A key's entry for the boundary line: a short black line and its `words`.
+fn boundary_key(s: &mut String, x: f64, y: f64, words: &str) {
+    let _ = writeln!(
+        s,
+        r#"<line x1="{x:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="0.9"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
+        y + 4.0,
+        x + 12.0,
+        y + 4.0,
+        x + 15.0,
+        y + 7.0,
+        words
+    );
+}
+
 /// The certified figure's key: proven, undecided, the sampled boundary.
 fn certified_key(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64) {
     let t = fig.lang;
@@ -334,16 +348,7 @@ fn certified_key(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64) {
         );
     }
     let y = top + 32.0;
-    let _ = writeln!(
-        s,
-        r#"<line x1="{x:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="0.9"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
-        y + 4.0,
-        x + 12.0,
-        y + 4.0,
-        x + 15.0,
-        y + 7.0,
-        t.tr("workspace.sampled_boundary")
-    );
+    boundary_key(s, x, y, t.tr("workspace.sampled_boundary"));
 }
 
 /// The reachable cells in their colours, a rectangle per run of one colour in a row.
@@ -589,16 +594,7 @@ fn colour_bar(s: &mut String, fig: &WorkspaceFigure, x: f64, top: f64, height: f
         t.fmt("workspace.past", &[("max", &tick(max))])
     );
     let y = y + 14.0;
-    let _ = writeln!(
-        s,
-        r#"<line x1="{x:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="black" stroke-width="0.9"/><text x="{:.2}" y="{:.2}" font-size="8.5">{}</text>"#,
-        y + 4.0,
-        x + 12.0,
-        y + 4.0,
-        x + 15.0,
-        y + 7.0,
-        t.tr("workspace.boundary")
-    );
+    boundary_key(s, x, y, t.tr("workspace.boundary"));
 }
 
 #[cfg(test)]

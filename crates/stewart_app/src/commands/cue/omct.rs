@@ -4,10 +4,8 @@
 
 use std::process::ExitCode;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::Duration;
 
 use anyhow::{Result, anyhow, bail};
-use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
 use stewart_kinematics::Scenario;
 use stewart_kinematics::analysis::cueing::omct::{
@@ -89,14 +87,15 @@ fn run_one(
         asked.fetch_add(1, Ordering::Relaxed);
         crate::interrupt::requested()
     };
-    let spinner = ProgressBar::new_spinner();
-    spinner.set_style(
-        ProgressStyle::with_template("{spinner} {elapsed} {msg}")
-            .unwrap_or_else(|_| ProgressStyle::default_spinner()),
-    );
     let word = algorithm_word(settings.algorithm);
-    let result = std::thread::scope(|scope| {
-        let worker = scope.spawn(|| {
+    crate::long_work::with_spinner(
+        || {
+            format!(
+                "OMCT of the {word}: {} periods run (Ctrl-C stops it)",
+                asked.load(Ordering::Relaxed)
+            )
+        },
+        || {
             omct(
                 &scenario.geometry,
                 &scenario.limits,
@@ -104,19 +103,8 @@ fn run_one(
                 options,
                 &stop,
             )
-        });
-        while !worker.is_finished() {
-            spinner.set_message(format!(
-                "OMCT of the {word}: {} periods run (Ctrl-C stops it)",
-                asked.load(Ordering::Relaxed)
-            ));
-            spinner.tick();
-            std::thread::sleep(Duration::from_millis(100));
-        }
-        worker.join()
-    });
-    spinner.finish_and_clear();
-    result.unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        },
+    )
 }
 
 /// `washout` or `mpc`, as `[cueing]` spells them.

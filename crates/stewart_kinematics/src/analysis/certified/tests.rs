@@ -18,18 +18,23 @@ const SEARCH: Search = Search {
     stop: &never,
 };
 
+/// A xorshift stream from `seed`: numbers in [0, 1], the same on every run.
+fn uniform(mut seed: u32) -> impl FnMut() -> f64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        f64::from(seed) / f64::from(u32::MAX)
+    }
+}
+
 /// Poses about home: `n` of them, up to a fifth of the platform's size away and 20°
 /// (60° in yaw) turned.
 fn poses_about_home(s: &Scenario, n: usize) -> Vec<Pose> {
     let g = &s.geometry;
     let size = g.characteristic_length();
-    let mut seed = 0x1234_5678_u32;
-    let mut next = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 17;
-        seed ^= seed << 5;
-        f64::from(seed) / f64::from(u32::MAX) * 2.0 - 1.0
-    };
+    let mut unit = uniform(0x1234_5678_u32);
+    let mut next = || 2.0 * unit() - 1.0;
     (0..n)
         .map(|_| {
             let p = g.home_pose().position
@@ -268,13 +273,7 @@ mod workspace {
             let size = s.geometry.characteristic_length();
             let w = bracket(&s, &s.limits, 0.03 * size);
             let level = s.geometry.home_pose();
-            let mut seed = 0x2545_f491_u32;
-            let mut unit = || {
-                seed ^= seed << 13;
-                seed ^= seed >> 17;
-                seed ^= seed << 5;
-                f64::from(seed) / f64::from(u32::MAX)
-            };
+            let mut unit = uniform(0x2545_f491_u32);
             let inside = |b: &[crate::ground::interval::Interval; 3],
                           p: &nalgebra::Vector3<f64>| {
                 (0..3).all(|k| b[k].contains(p[k]))
@@ -352,13 +351,7 @@ mod workspace {
                         .fold(f64::INFINITY, f64::min),
                 })
             };
-            let mut seed = 0x6a09_e667_u32;
-            let mut unit = || {
-                seed ^= seed << 13;
-                seed ^= seed >> 17;
-                seed ^= seed << 5;
-                f64::from(seed) / f64::from(u32::MAX)
-            };
+            let mut unit = uniform(0x6a09_e667_u32);
             let (mut bounded, mut tight) = (0, 0);
             for _ in 0..600 {
                 let centre = home.position
@@ -396,13 +389,7 @@ mod workspace {
             };
             for limits in [Limits::default(), s.limits] {
                 let w = bracket(&s, &limits, 0.03 * g.characteristic_length());
-                let mut seed = 0x1b87_3593_u32;
-                let mut unit = || {
-                    seed ^= seed << 13;
-                    seed ^= seed >> 17;
-                    seed ^= seed << 5;
-                    f64::from(seed) / f64::from(u32::MAX)
-                };
+                let mut unit = uniform(0x1b87_3593_u32);
                 let reach = g.plate_radius(crate::model::geometry::Plate::Base) + top;
                 let (mut outside, mut reachable) = (0, 0);
                 for _ in 0..20_000 {
@@ -516,13 +503,7 @@ fn a_servos_bounds_over_a_box_hold_every_pose_inside_it() {
         let g = &s.geometry;
         let servos = g.rotary().expect("rotary");
         let size = g.characteristic_length();
-        let mut seed = 0x9e37_79b9_u32;
-        let mut unit = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 17;
-            seed ^= seed << 5;
-            f64::from(seed) / f64::from(u32::MAX)
-        };
+        let mut unit = uniform(0x9e37_79b9_u32);
         let (mut every, mut none, mut undecided, mut bounded) = (0, 0, 0, 0);
         for centre in poses_about_home(&s, 400) {
             // Boxes from a thousandth to a tenth of the platform's size (and as many

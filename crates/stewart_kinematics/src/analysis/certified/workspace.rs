@@ -309,13 +309,7 @@ impl<'a> Judge<'a> {
         let rods: [Option<(IVec3, Interval)>; 6] =
             std::array::from_fn(|i| Some((legs.legs[i], lengths[i])));
         all &= self.cones_hold(b, &rods)?;
-        if let Some(clearance) = self.clearance {
-            match self.clearance_bounds(position) {
-                Some((lo, _)) if lo >= clearance => {}
-                Some((_, hi)) if hi < clearance => return None,
-                _ => all = false,
-            }
-        }
+        all &= self.clearance_holds(|| self.clearance_bounds(position))?;
         Some(all)
     }
 
@@ -354,14 +348,22 @@ impl<'a> Judge<'a> {
         let s = Interval::point(servos.rod_length());
         let rods = over.servos.map(|servo| servo.map(|v| (v.rod, s)));
         all &= self.cones_hold(b, &rods)?;
-        if let Some(clearance) = self.clearance {
-            match self.rod_clearance_bounds(servos, position, &over) {
-                Some((lo, _)) if lo >= clearance => {}
-                Some((_, hi)) if hi < clearance => return None,
-                _ => all = false,
-            }
-        }
+        all &= self.clearance_holds(|| self.rod_clearance_bounds(servos, position, &over))?;
         Some(all)
+    }
+
+    /// The clearance limit against the least distance's `bounds` over a box (asked only
+    /// when the limit is set): `None` when every position of the box collides, else
+    /// whether none does.
+    fn clearance_holds(&self, bounds: impl FnOnce() -> Option<(f64, f64)>) -> Option<bool> {
+        let Some(clearance) = self.clearance else {
+            return Some(true);
+        };
+        match bounds() {
+            Some((lo, _)) if lo >= clearance => Some(true),
+            Some((_, hi)) if hi < clearance => None,
+            _ => Some(false),
+        }
     }
 
     /// The cone limits on `rods` (each a vector from the base side to the platform joint
