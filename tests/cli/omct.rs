@@ -193,6 +193,19 @@ fn bad_input_is_one_located_error() {
                 "paired",
                 "--set",
                 "cueing.algorithm=washout",
+                "--frequencies",
+                "2,1",
+            ],
+            "the test frequencies must rise: 1 rad/s follows 2 rad/s",
+        ),
+        (
+            vec![
+                "cue",
+                "--omct",
+                "--preset",
+                "paired",
+                "--set",
+                "cueing.algorithm=washout",
                 "--latency-ms",
                 "-1",
             ],
@@ -233,5 +246,50 @@ fn bad_input_is_one_located_error() {
         let err = stderr(&o);
         assert!(err.contains(expected), "{args:?}: {err}");
         assert!(stdout(&o).is_empty(), "{args:?}");
+    }
+}
+
+#[test]
+fn outputs_that_would_be_lost_are_refused_before_the_test_runs() {
+    let dir = tempdir();
+    let same = dir.path().join("same.svg");
+    let missing = dir.path().join("no-such-folder").join("bode.svg");
+    let base = [
+        "cue",
+        "--omct",
+        "--preset",
+        "paired",
+        "--set",
+        "cueing.algorithm=washout",
+        "--frequencies",
+        "0.01",
+    ];
+    for (extra, expected) in [
+        (
+            vec![
+                "--out",
+                same.to_str().expect("utf-8"),
+                "--plot",
+                same.to_str().expect("utf-8"),
+            ],
+            "--out (the report) and --plot (the figure) both name",
+        ),
+        (
+            vec!["--plot", missing.to_str().expect("utf-8")],
+            "does not exist",
+        ),
+        (
+            vec!["--out", missing.to_str().expect("utf-8")],
+            "does not exist",
+        ),
+    ] {
+        let args = [&base[..], &extra[..]].concat();
+        // Refused at once: the test at 0.01 rad/s alone takes seconds, so an error that
+        // came after it would come with its output discarded.
+        let o = stewart(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(expected), "{args:?}: {}", stderr(&o));
+        assert!(!stderr(&o).contains(".stewart-"), "{}", stderr(&o));
+        assert!(!same.exists() && !missing.exists());
     }
 }

@@ -84,8 +84,9 @@ pub(crate) struct CueArgs {
     /// datagrams give vehicle motion; the others are counted, never read).
     #[arg(long, allow_hyphen_values = true, value_name = "N")]
     pub(crate) port: Option<u16>,
-    /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here, whole or not
-    /// at all, instead of standard output.
+    /// Write the pose table (t, x, y, z, roll_deg, pitch_deg, yaw_deg) here — with
+    /// `--compare` or `--omct`, the report — whole or not at all, instead of standard
+    /// output.
     #[arg(long, value_name = "FILE")]
     pub(crate) out: Option<PathBuf>,
     /// Run both algorithms (the classical washout with its workspace limiter on, and the

@@ -111,7 +111,7 @@ pub(crate) fn svg(scenario: &Scenario, reports: &[OmctReport], lang: Lang) -> St
     let phases: Vec<f64> = reports
         .iter()
         .flat_map(direct)
-        .flat_map(|t| t.phase_deg)
+        .flat_map(|t| t.continuous_phase_deg())
         .filter(|p| p.is_finite())
         .collect();
     let (plo, phi) = phases
@@ -153,7 +153,8 @@ pub(crate) fn svg(scenario: &Scenario, reports: &[OmctReport], lang: Lang) -> St
                     })
                     .collect()
             };
-            for (values, panel, log) in [(&t.gain, &gain, true), (&t.phase_deg, &phase, false)] {
+            let continuous = t.continuous_phase_deg();
+            for (values, panel, log) in [(&t.gain, &gain, true), (&continuous, &phase, false)] {
                 let pts = points(values, panel, log);
                 let d: Vec<String> = pts
                     .iter()

@@ -230,6 +230,45 @@ impl Destination {
             })
     }
 
+    /// Before long work: refuse a folder where a file is wanted, and a regular path whose
+    /// folder is missing or cannot take a new file (tried with a staged file, removed at
+    /// once), so that no result is computed only to be lost.
+    pub(crate) fn check_writable(&self) -> Result<&Self> {
+        self.require_file()?;
+        if self.kind == Kind::File {
+            let dir = self.staging_dir();
+            if !dir.is_dir() {
+                bail!(
+                    "cannot write `{}`: the folder `{}` does not exist",
+                    self.shown.display(),
+                    dir.display()
+                );
+            }
+            drop(self.staged_file(".probe")?);
+        }
+        Ok(self)
+    }
+
+    /// Refuse `other` where it is the same file as this output (`what` names the two):
+    /// one would be lost under the other.
+    pub(crate) fn refuse_same(&self, other: &Self, what: &str) -> Result<()> {
+        // A path not there yet is named by its folder, links followed, and its name.
+        let identity = |d: &Self| {
+            let folder = parent_of(&d.real);
+            match (std::fs::canonicalize(folder), d.real.file_name()) {
+                (Ok(f), Some(name)) => f.join(name),
+                _ => d.real.clone(),
+            }
+        };
+        if self.kind != Kind::Special && identity(self) == identity(other) {
+            bail!(
+                "{what} both name `{}`; give them different files",
+                other.shown.display()
+            );
+        }
+        Ok(())
+    }
+
     /// Refuse a folder where a file is wanted.
     pub(crate) fn require_file(&self) -> Result<&Self> {
         if self.kind == Kind::Folder {

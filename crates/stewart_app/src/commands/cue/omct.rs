@@ -26,11 +26,17 @@ pub(crate) fn run(args: &CueArgs, scenario: &Scenario) -> Result<ExitCode> {
     }
     let inputs = source::inputs(&args.scenario, scenario);
     let out = output::destination(args.out.as_deref(), &inputs)?;
+    if let Some(out) = &out {
+        out.check_writable()?;
+    }
     let plot = match &args.plot {
         Some(path) => {
             let d = output::Destination::new(path, &inputs)?;
-            d.require_file()?;
             crate::export::vector::check_extension(path)?;
+            d.check_writable()?;
+            if let Some(out) = &out {
+                out.refuse_same(&d, "--out (the report) and --plot (the figure)")?;
+            }
             Some(d)
         }
         None => None,
@@ -149,7 +155,9 @@ fn table(scenario: &Scenario, reports: &[OmctReport]) -> String {
             ));
             for (k, w) in r.frequencies.iter().enumerate() {
                 let phase = if t.phase_deg[k].is_finite() {
-                    format!("{:.2}", t.phase_deg[k])
+                    // Rounded to nothing, a phase has no sign.
+                    let p = format!("{:.2}", t.phase_deg[k]);
+                    if p == "-0.00" { "0.00".to_owned() } else { p }
                 } else {
                     "—".to_owned()
                 };

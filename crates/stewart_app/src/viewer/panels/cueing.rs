@@ -188,7 +188,8 @@ fn omct_tab(ui: &mut egui::Ui, ed: &mut Editor, tool: &mut OmctTool) {
         .x_axis_formatter(decades)
         .show(ui, |plot| {
             for (k, r) in direct.iter().enumerate() {
-                let phase = points(&|i| r.phase_deg[i].is_finite().then_some(r.phase_deg[i]));
+                let continuous = r.continuous_phase_deg();
+                let phase = points(&|i| continuous[i].is_finite().then_some(continuous[i]));
                 plot.line(
                     Line::new(t.tr(OMCT_WORDS[k]), phase)
                         .color(leg_colour(k))

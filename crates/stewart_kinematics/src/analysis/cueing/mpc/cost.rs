@@ -86,6 +86,10 @@ pub struct Now<'a> {
     pub wanted_end: &'a [[f64; 6]],
     /// The share of `wanted` asked for (a stalled live input fades it).
     pub fade: f64,
+    /// A held input's roll and pitch rates as the vehicle has them now (rad/s, scaled,
+    /// before the fade), where `wanted` holds only what is new in them
+    /// ([`super::fading`]): the tilt-rate limit's reference in the first step.
+    pub tilt_now: Option<[f64; 2]>,
     /// The vestibular filters' states now (otoliths x, y, z, canals roll, pitch, yaw),
     /// driven by the error felt so far (zeros without the vestibular model).
     pub sensed: [[f64; 3]; 6],
@@ -100,6 +104,15 @@ impl Now<'_> {
     /// The same at the end of step `k`.
     pub fn wanted_end(&self, k: usize, i: usize) -> f64 {
         self.fade * self.wanted_end[k.min(self.wanted_end.len() - 1)][i]
+    }
+
+    /// The vehicle's roll (`i` = 3) or pitch (4) rate the tilt-rate limit is kept against
+    /// in step `k`: over it and at its end.
+    pub fn tilt_reference(&self, k: usize, i: usize) -> [f64; 2] {
+        match self.tilt_now {
+            Some(r) if k == 0 => [self.fade * r[i - 3]; 2],
+            _ => [self.wanted(k, i), self.wanted_end(k, i)],
+        }
     }
 }
 

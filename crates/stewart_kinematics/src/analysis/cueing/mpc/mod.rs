@@ -7,7 +7,8 @@
 //! - **Model.** Each axis (`x, y, z` of the reference point, roll, pitch, yaw) is a double
 //!   integrator, exact; only the felt force's and the limits' slopes are linearised
 //!   ([`horizon`]). The vehicle's motion is held over the horizon (a live input knows no
-//!   more).
+//!   more), but for its heave and rates, which no platform can sustain: what is new in
+//!   them, fading ([`fading`]).
 //! - **Constraints, all hard**: every actuator within its stroke (range) and each joint
 //!   within its cone at the end of every step, linearised about the pose now and kept
 //!   `mpc_margin` inside; actuator speed and acceleration limits; at rest at the
@@ -22,6 +23,7 @@
 //!   last pose that passed.
 
 pub mod cost;
+pub mod fading;
 pub mod horizon;
 pub mod qp;
 pub mod remote;
@@ -37,6 +39,7 @@ use crate::model::geometry::Geometry;
 use crate::model::limits::Limits;
 use crate::model::pose::Pose;
 use cost::{Cost, Now};
+use fading::{FADING, Fading};
 use horizon::{Horizon, StepValue};
 use qp::{Constraints, DenseQp};
 use rig::{Rig, pose_of};
@@ -45,6 +48,11 @@ use rig::{Rig, pose_of};
 /// exact (no slack while the limit can be met).
 const SLACK_LINEAR: f64 = 1e6;
 const SLACK_QUADRATIC: f64 = 10.0;
+
+/// The time constants of a held heave's and rates' fading (heave, roll, pitch, yaw), as
+/// shares of the horizon: roll and pitch fade in a quarter of it, as a roll or pitch rate
+/// held longer tilts the platform so far that gravity's false force outweighs the rate.
+pub const FADE_SHARES: [f64; 4] = [1.0, 0.25, 0.25, 1.0];
 
 /// How the planner has fared.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -139,6 +147,10 @@ struct Wanted {
     ahead_age: f64,
     /// The share of the vehicle's motion asked for (0 to 1).
     fade: f64,
+    /// A held motion's heave and rates, cued as what is new in them ([`fading`]).
+    fading: [Fading; 4],
+    /// A held motion's roll and pitch rates as they are (none with a recording ahead).
+    tilt_now: Option<[f64; 2]>,
 }
 
 /// Planning elsewhere ([`remote`]).
@@ -216,6 +228,8 @@ impl Mpc {
                 ahead: Vec::new(),
                 ahead_age: 0.0,
                 fade: 1.0,
+                fading: [Fading::default(); 4],
+                tilt_now: None,
             },
             remote: RemotePlanning {
                 on: false,
@@ -247,6 +261,35 @@ impl Mpc {
         let w = Self::scaled(&self.problem.settings, motion);
         self.wanted.mean.iter_mut().for_each(|v| *v = w);
         self.wanted.at_end.iter_mut().for_each(|v| *v = w);
+        for (f, &axis) in self.wanted.fading.iter_mut().zip(&FADING) {
+            f.hold(w[axis]);
+        }
+        self.wanted.tilt_now = Some([w[3], w[4]]);
+        self.predict_held();
+    }
+
+    /// A held motion's heave and rates over the horizon: what is new in them, fading
+    /// ([`fading`]).
+    fn predict_held(&mut self) {
+        if !self.wanted.ahead.is_empty() {
+            return;
+        }
+        let horizon = self.horizon_s();
+        for k in 0..self.problem.layout.steps {
+            for ((f, &axis), share) in self.wanted.fading.iter().zip(&FADING).zip(FADE_SHARES) {
+                let (mean, end) = f.predicted(&self.problem.layout, k, share * horizon);
+                self.wanted.mean[k][axis] = mean;
+                self.wanted.at_end[k][axis] = end;
+            }
+        }
+    }
+
+    /// Let `dt` seconds pass for the fading axes.
+    fn fade(&mut self, dt: f64) {
+        let horizon = self.horizon_s();
+        for (f, share) in self.wanted.fading.iter_mut().zip(FADE_SHARES) {
+            f.advance(dt, share * horizon);
+        }
     }
 
     /// The vehicle's motion from now on as `samples` (times from now, seconds, the first
@@ -255,6 +298,7 @@ impl Mpc {
     /// sample, so that a solve between two samples looks from its own time.
     pub fn hold_ahead(&mut self, samples: &[(f64, VehicleMotion)]) {
         self.wanted.ahead.clear();
+        self.wanted.tilt_now = None;
         self.wanted.ahead.extend_from_slice(samples);
         self.wanted.ahead_age = 0.0;
         self.look_ahead();
@@ -395,12 +439,14 @@ impl Mpc {
             (self.plant.s, self.plant.v, self.plan.age) =
                 self.integrate(self.plant.s, self.plant.v, self.plan.age, skipped);
             self.wanted.ahead_age += skipped;
+            self.fade(skipped);
             self.plan.since_solve = f64::INFINITY;
             self.remote.epoch += 1;
             h = span;
         }
         while h > 0.0 {
             if self.plan.since_solve >= every - ROUNDING {
+                self.predict_held();
                 if self.remote.on {
                     self.remote_instant();
                 } else {
@@ -417,6 +463,7 @@ impl Mpc {
                 self.integrate(self.plant.s, self.plant.v, self.plan.age, dt);
             self.plan.since_solve += dt;
             self.wanted.ahead_age += dt;
+            self.fade(dt);
             h -= dt;
         }
         let pose = pose_of(&self.problem.geometry, self.problem.arm, &self.plant.s);
@@ -488,6 +535,8 @@ impl Mpc {
         self.wanted.mean.iter_mut().for_each(|v| *v = [0.0; 6]);
         self.wanted.at_end.iter_mut().for_each(|v| *v = [0.0; 6]);
         self.wanted.ahead.clear();
+        self.wanted.fading.iter_mut().for_each(Fading::reset);
+        self.wanted.tilt_now = None;
         self.remote.request = None;
         self.remote.reply = None;
         self.remote.epoch += 1;
@@ -549,6 +598,7 @@ impl Mpc {
             wanted: &self.wanted.mean,
             wanted_end: &self.wanted.at_end,
             fade: self.wanted.fade,
+            tilt_now: self.wanted.tilt_now,
             sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.states),
         };
         self.problem
@@ -622,8 +672,7 @@ fn build_constraints(
         for k in 0..layout.steps - 1 {
             // Within the limit of the vehicle's rate over the step and of its rate from the
             // step's end on: so also over every interval between two samples.
-            let during = now.wanted(k, axis);
-            let after = now.wanted_end(k, axis);
+            let [during, after] = now.tilt_reference(k, axis);
             // The body rate, linear in the angles' rates at the angles now.
             let slopes = body_rate_slopes(&now.s)[axis - 3];
             let free: f64 = (0..3)

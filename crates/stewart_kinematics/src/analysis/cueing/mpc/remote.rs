@@ -29,6 +29,7 @@ pub struct PlanRequest {
     wanted: [[f64; 6]; STEPS],
     wanted_end: [[f64; 6]; STEPS],
     fade: f64,
+    tilt_now: Option<[f64; 2]>,
     /// The vestibular organs' states then.
     sensed: [[f64; 3]; 6],
 }
@@ -61,6 +62,7 @@ impl Mpc {
         request.wanted[..steps].copy_from_slice(&self.wanted.mean);
         request.wanted_end[..steps].copy_from_slice(&self.wanted.at_end);
         request.fade = self.wanted.fade;
+        request.tilt_now = self.wanted.tilt_now;
         Some(request)
     }
 
@@ -79,6 +81,7 @@ impl Mpc {
             .at_end
             .copy_from_slice(&request.wanted_end[..steps]);
         self.wanted.fade = request.fade;
+        self.wanted.tilt_now = request.tilt_now;
         if let Some(s) = &mut self.sensed {
             s.states = request.sensed;
         }
@@ -124,6 +127,7 @@ impl Mpc {
             wanted: [[0.0; 6]; STEPS],
             wanted_end: [[0.0; 6]; STEPS],
             fade: self.wanted.fade,
+            tilt_now: self.wanted.tilt_now,
             sensed: self.sensed.as_ref().map_or([[0.0; 3]; 6], |v| v.next()),
         };
         let steps = self.problem.layout.steps;

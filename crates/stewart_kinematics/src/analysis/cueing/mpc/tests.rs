@@ -76,6 +76,7 @@ fn without_limits_the_plan_is_the_cost_s_closed_form_minimiser() {
         wanted: &wanted,
         wanted_end: &wanted,
         fade: 1.0,
+        tilt_now: None,
         sensed: [[0.0; 3]; 6],
     };
     let mut a = vec![0.0; layout.len()];
@@ -537,5 +538,70 @@ fn a_limited_washout_keeps_a_45_degree_cone_as_check_judges_it_bit_for_bit() {
             }
             assert!(on_edge > 0, "{rig} {cone}: the limiter never acted");
         }
+    }
+}
+
+/// The planner of `settings` on `preset`, the vehicle's `motion` held for `seconds` in
+/// steps of 10 ms: the poses' heave or angles, and the felt force, at each step.
+fn held_response(
+    preset_name: &str,
+    motion: VehicleMotion,
+    seconds: f64,
+) -> (Vec<[f64; 6]>, Vec<[f64; 3]>) {
+    let s = preset(preset_name);
+    let mut mpc =
+        Mpc::new(&s.geometry, &s.limits, &mpc_settings(&s)).unwrap_or_else(|_| panic!("a planner"));
+    mpc.hold(&motion);
+    let (mut states, mut forces) = (Vec::new(), Vec::new());
+    for _ in 0..(seconds / 0.01).round() as usize {
+        mpc.advance(0.01);
+        states.push(mpc.plant.s);
+        forces.push(mpc.cue().specific_force());
+    }
+    assert_eq!(mpc.counts().failed, 0);
+    (states, forces)
+}
+
+#[test]
+fn a_held_heave_force_is_cued_at_its_onset_and_washed_out() {
+    // Held with the plan at rest at the horizon's end, a heave force was cued not at all
+    // (the force the same at every step lies along that constraint); what is new in it
+    // fades instead: up at once, felt up, then back to neutral.
+    for name in ["seed", "servo-desk"] {
+        let (states, forces) = held_response(
+            name,
+            VehicleMotion {
+                accel: [0.0, 0.0, 1.0],
+                rates_deg_s: [0.0; 3],
+            },
+            30.0,
+        );
+        let k_t = preset(name).cueing.translation_scale;
+        assert!(forces[0][2] > 0.1 * k_t, "{name}: {:?}", forces[0]);
+        assert!(states[50][2] > 1e-3, "{name}: {:?}", states[50]);
+        let last = states.last().unwrap_or_else(|| unreachable!());
+        assert!(last[2].abs() < 1e-3, "{name}: {last:?}");
+    }
+}
+
+#[test]
+fn a_held_roll_rate_rolls_the_platform_at_once_and_washes_out() {
+    for name in ["seed", "crank-rig"] {
+        let (states, _) = held_response(
+            name,
+            VehicleMotion {
+                accel: [0.0; 3],
+                rates_deg_s: [5.0, 0.0, 0.0],
+            },
+            30.0,
+        );
+        // Rolling the right way within a tenth of a second, then back to level.
+        assert!(states[10][3] > 1e-4, "{name}: {:?}", states[10]);
+        assert!(
+            states.iter().all(|s| s[3] > -1e-3),
+            "{name}: a wrong-way roll"
+        );
+        let last = states.last().unwrap_or_else(|| unreachable!());
+        assert!(last[3].abs() < 1e-3, "{name}: {last:?}");
     }
 }

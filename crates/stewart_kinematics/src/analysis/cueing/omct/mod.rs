@@ -54,6 +54,9 @@ pub const DISTORTION_SHARE: f64 = 0.05;
 /// The longest simulation step, seconds.
 pub const LONGEST_STEP_S: f64 = 1e-3;
 
+/// The most test frequencies accepted.
+pub const MOST_FREQUENCIES: usize = 60;
+
 /// The lowest and highest test frequencies accepted, rad/s.
 pub const FREQUENCY_RANGE: [f64; 2] = [0.01, 100.0];
 
@@ -257,6 +260,12 @@ pub enum OmctError {
     /// No frequency at all.
     #[error("the test needs at least one frequency")]
     NoFrequency,
+    /// More than [`MOST_FREQUENCIES`] frequencies.
+    #[error("{0} test frequencies: at most {MOST_FREQUENCIES} (the test has twelve)")]
+    TooManyFrequencies(usize),
+    /// Frequencies not rising.
+    #[error("the test frequencies must rise: {1} rad/s follows {0} rad/s")]
+    Unordered(f64, f64),
     /// An amplitude scale outside [`SCALE_RANGE`].
     #[error(
         "the amplitude scale {0} is outside {lo} … {hi}",
@@ -281,9 +290,9 @@ pub struct TestResult {
     pub amplitude: f64,
     /// Output over input amplitude, per frequency (the test's unit).
     pub gain: Vec<f64>,
-    /// The output's phase against the input, degrees (negative: a lag), continuous down
-    /// from the highest frequency's (within ±180°), per frequency; NaN where there is no
-    /// response at all (gain 0).
+    /// The output's phase against the input, degrees within (−180°, 180°] (negative: a
+    /// lag), per frequency, whatever the other frequencies; NaN where there is no response
+    /// at all (gain 0). [`TestResult::continuous_phase_deg`] draws them as one curve.
     pub phase_deg: Vec<f64>,
     /// The harmonics' share of the fundamental (total harmonic distortion), per frequency.
     pub distortion: Vec<f64>,
@@ -320,10 +329,16 @@ pub fn omct(
     if options.frequencies.is_empty() {
         return Err(OmctError::NoFrequency);
     }
+    if options.frequencies.len() > MOST_FREQUENCIES {
+        return Err(OmctError::TooManyFrequencies(options.frequencies.len()));
+    }
     for &f in &options.frequencies {
         if !(FREQUENCY_RANGE[0]..=FREQUENCY_RANGE[1]).contains(&f) {
             return Err(OmctError::Frequency(f));
         }
+    }
+    if let Some(w) = options.frequencies.windows(2).find(|w| w[1] <= w[0]) {
+        return Err(OmctError::Unordered(w[0], w[1]));
     }
     let scale = options.amplitude_scale;
     if !(SCALE_RANGE[0]..=SCALE_RANGE[1]).contains(&scale) {
@@ -380,9 +395,6 @@ pub fn omct(
         r.distorted
             .push(m.distortion > DISTORTION_SHARE || m.limited);
     }
-    for r in &mut tests {
-        unwrap(&mut r.phase_deg);
-    }
     Ok(OmctReport {
         algorithm: settings.algorithm,
         frequencies: options.frequencies.clone(),
@@ -391,16 +403,20 @@ pub fn omct(
     })
 }
 
-/// Phases made continuous down from the highest frequency's (within ±180°, where a
-/// washout's high-passes have let the motion through): each within half a turn of the
-/// one above it.
-fn unwrap(phases: &mut [f64]) {
-    let mut above: Option<f64> = None;
-    for p in phases.iter_mut().rev().filter(|p| p.is_finite()) {
-        if let Some(a) = above {
-            *p -= 360.0 * ((*p - a) / 360.0).round();
+impl TestResult {
+    /// The phases made one curve for a figure: continuous down from the highest
+    /// frequency's (as given, within ±180°, where a washout's high-passes have let the
+    /// motion through), each within half a turn of the one above it.
+    pub fn continuous_phase_deg(&self) -> Vec<f64> {
+        let mut phases = self.phase_deg.clone();
+        let mut above: Option<f64> = None;
+        for p in phases.iter_mut().rev().filter(|p| p.is_finite()) {
+            if let Some(a) = above {
+                *p -= 360.0 * ((*p - a) / 360.0).round();
+            }
+            above = Some(*p);
         }
-        above = Some(*p);
+        phases
     }
 }
 

@@ -135,6 +135,39 @@ fn every_washout_test_is_its_filters_transfer_function() {
 }
 
 #[test]
+fn on_every_kind_of_rig_within_its_own_limits_the_washout_s_report_is_its_filters() {
+    // Linear (seed, paired) and rotary (servo-desk, crank-rig) rigs, each within its own
+    // strokes, servo ranges and cones: at small amplitudes nothing clips, and every test
+    // at the ends and middle of the range is still the filters' transfer function.
+    let settings = linear_washout();
+    let options = OmctOptions {
+        frequencies: vec![0.1, 1.0, 15.848_931_924_611_13],
+        amplitude_scale: 0.05,
+        latency_s: 0.0,
+    };
+    for name in ["seed", "paired", "servo-desk", "crank-rig"] {
+        let s = crate::io::scenario::Scenario::preset(name).expect("preset");
+        let report = omct(&s.geometry, &s.limits, &settings, &options, &never).expect("runs");
+        for r in &report.tests {
+            for (k, &omega) in report.frequencies.iter().enumerate() {
+                let exact = washout(&settings, r.test, omega);
+                let gain = exact.0.hypot(exact.1);
+                let mut dphase = r.phase_deg[k] - exact.1.atan2(exact.0).to_degrees();
+                dphase -= 360.0 * (dphase / 360.0).round();
+                let what = format!("{name}, {} at {omega}", r.test.name());
+                assert!(!r.distorted[k], "{what}: {}", r.distortion[k]);
+                assert!(
+                    (r.gain[k] - gain).abs() <= 1e-3 * gain,
+                    "{what}: {}",
+                    r.gain[k]
+                );
+                assert!(dphase.abs() <= 0.05, "{what}: {}", r.phase_deg[k]);
+            }
+        }
+    }
+}
+
+#[test]
 fn a_millisecond_of_delay_adds_its_lag_and_nothing_else() {
     let s = crate::io::scenario::Scenario::preset("paired").expect("preset");
     let settings = linear_washout();
@@ -148,7 +181,8 @@ fn a_millisecond_of_delay_adds_its_lag_and_nothing_else() {
     };
     let (now, late) = (run(0.0), run(0.001));
     for (a, b) in now.tests.iter().zip(&late.tests) {
-        let lag = a.phase_deg[0] - b.phase_deg[0];
+        let mut lag = a.phase_deg[0] - b.phase_deg[0];
+        lag -= 360.0 * (lag / 360.0).round();
         // ω d in degrees: 15.849 rad/s × 1 ms = 0.908°.
         assert!((lag - 0.908_0).abs() < 5e-4, "{}: {lag}", a.test.name());
         assert!((a.gain[0] - b.gain[0]).abs() <= 1e-12 * a.gain[0]);
@@ -209,6 +243,12 @@ fn the_planner_is_deterministic_undistorted_when_small_and_holds_sustained_force
         "{:?} vs {tilt_rate}",
         to_pitch.gain
     );
+    // Heave, which no platform sustains, is cued as it changes: a real share of the
+    // scaled force at 2.5 rad/s, leading by less than a quarter period.
+    let heave = &a.tests[2];
+    assert_eq!(heave.test, OmctTest::Heave);
+    assert!(heave.gain[1] > 0.2 * k_t, "{:?}", heave.gain);
+    assert!(heave.phase_deg[1].abs() < 90.0, "{:?}", heave.phase_deg);
 }
 
 #[test]
@@ -282,4 +322,77 @@ fn bad_options_are_one_error_each() {
     );
     let stopped = omct(&s.geometry, &s.limits, &settings, &base(), &|| true);
     assert_eq!(stopped.map(|_| ()), Err(OmctError::Stopped));
+}
+
+#[test]
+fn a_phase_is_within_half_a_turn_whatever_the_other_frequencies() {
+    // The surge test at 0.1 rad/s lags by about 2°, alone or among others; the figure's
+    // curve is continuous down from the highest frequency.
+    let s = crate::io::scenario::Scenario::preset("paired").expect("preset");
+    let run = |frequencies: Vec<f64>| {
+        let options = OmctOptions {
+            frequencies,
+            amplitude_scale: 0.1,
+            latency_s: 0.0,
+        };
+        omct(
+            &s.geometry,
+            &Limits::default(),
+            &linear_washout(),
+            &options,
+            &never,
+        )
+        .expect("runs")
+    };
+    let alone = run(vec![0.1]);
+    let among = run(frequencies().to_vec());
+    for (a, b) in alone.tests.iter().zip(&among.tests) {
+        assert_eq!(
+            a.phase_deg[0].to_bits(),
+            b.phase_deg[0].to_bits(),
+            "{}",
+            a.test.name()
+        );
+        assert!(
+            b.phase_deg
+                .iter()
+                .all(|p| p.is_nan() || (-180.0..=180.0).contains(p))
+        );
+        let continuous = b.continuous_phase_deg();
+        for w in continuous.windows(2) {
+            assert!(w[0].is_nan() || w[1].is_nan() || (w[1] - w[0]).abs() <= 180.0);
+        }
+    }
+    assert!(
+        (-3.0..0.0).contains(&alone.tests[0].phase_deg[0]),
+        "{:?}",
+        alone.tests[0].phase_deg
+    );
+}
+
+#[test]
+fn frequencies_that_do_not_rise_or_are_too_many_are_refused() {
+    let s = crate::io::scenario::Scenario::preset("paired").expect("preset");
+    let run = |frequencies: Vec<f64>| {
+        let options = OmctOptions {
+            frequencies,
+            ..OmctOptions::default()
+        };
+        omct(&s.geometry, &s.limits, &linear_washout(), &options, &never)
+    };
+    assert_eq!(
+        run(vec![2.0, 1.0]).err(),
+        Some(OmctError::Unordered(2.0, 1.0))
+    );
+    assert_eq!(
+        run(vec![1.0, 1.0]).err(),
+        Some(OmctError::Unordered(1.0, 1.0))
+    );
+    let many: Vec<f64> = (0..=MOST_FREQUENCIES)
+        .map(|k| 1.0 + k as f64 * 0.01)
+        .collect();
+    assert_eq!(
+        run(many).err(),
+        Some(OmctError::TooManyFrequencies(MOST_FREQUENCIES + 1))
+    );
 }
