@@ -17,6 +17,8 @@
 
 use std::f64::consts::FRAC_2_PI;
 
+use crate::solve::wide::Real;
+
 /// Beyond this magnitude (radians) the three-part reduction loses exactness.
 pub const REDUCTION_LIMIT: f64 = 100000.0;
 
@@ -49,8 +51,8 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() > REDUCTION_LIMIT || x.is_nan() {
         return x.sin_cos();
     }
-    let (s, c, quadrant) = kernel(x * FRAC_2_PI, x);
-    match quadrant & 3 {
+    let (s, c, j) = kernel(x * FRAC_2_PI, x);
+    match quadrant(j) & 3 {
         0 => (s, c),
         1 => (c, -s),
         2 => (-s, -c),
@@ -58,21 +60,34 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
     }
 }
 
-/// Steps 1 and 2 for `x` within [`REDUCTION_LIMIT`] (and `scaled = x · 2/π`): the sine and
-/// cosine of the reduced argument and the quadrant `j` (step 3 is the caller's), with no
-/// branch, for the batch's lanes too.
+/// Steps 1 and 2 for `x` within [`REDUCTION_LIMIT`] (and `scaled = x · 2/π`), for one
+/// number or for lanes of them ([`Real`]): the sine and cosine of the reduced argument and
+/// `j`, the integer whose low two bits are the quadrant (step 3 is the caller's, with
+/// [`quadrant`]), with no branch.
 #[inline(always)]
-pub(crate) fn kernel(scaled: f64, x: f64) -> (f64, f64, i64) {
+pub(crate) fn kernel<T: Real>(scaled: T, x: T) -> (T, T, T) {
+    let c = T::splat;
     let j = scaled.round();
-    let y = ((x - j * PIO2_1) - j * PIO2_2) - j * PIO2_3;
+    let y = ((x - j * c(PIO2_1)) - j * c(PIO2_2)) - j * c(PIO2_3);
     let z = y * y;
-    let s = y + y * z * (S1 + z * (S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)))));
-    let r = z * z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
-    let hz = 0.5 * z;
-    let w = 1.0 - hz;
-    let c = w + (((1.0 - w) - hz) + r);
-    // j fits in an i64 exactly since |j| ≤ 2/π · REDUCTION_LIMIT.
-    (s, c, j as i64)
+    let s = y + y * z * (c(S1) + z * (c(S2) + z * (c(S3) + z * (c(S4) + z * (c(S5) + z * c(S6))))));
+    let r = z * z * (c(C1) + z * (c(C2) + z * (c(C3) + z * (c(C4) + z * (c(C5) + z * c(C6))))));
+    let hz = c(0.5) * z;
+    let w = c(1.0) - hz;
+    let cos = w + (((c(1.0) - w) - hz) + r);
+    (s, cos, j)
+}
+
+/// `1.5 · 2⁵²`: an integer `j` with `|j| < 2⁵¹` added to it is exact, and the sum's low
+/// mantissa bits are `j` in two's complement.
+const INTEGER_BITS: f64 = 6_755_399_441_055_744.0;
+
+/// The quadrant of [`kernel`]'s `j` (`|j|` ≤ 2/π · [`REDUCTION_LIMIT`]) in the low two
+/// bits, read from the bits of a float sum rather than converted (`as i64`), which AVX2
+/// has no vector instruction for: converted, it took the batch's lanes back to scalar code.
+#[inline(always)]
+pub(crate) fn quadrant(j: f64) -> u64 {
+    (j + INTEGER_BITS).to_bits()
 }
 
 // The low parts of π/4 and π/2 (π/4 = FRAC_PI_4 + PI_4_LO), and fdlibm's minimax
@@ -98,11 +113,12 @@ const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
 /// `atan(t)` on |t| ≤ 7/16 with a low part added at the base angle `hi + lo`:
 /// `hi + lo + atan(t)`, fdlibm's polynomial and its way of adding the parts.
 #[inline(always)]
-fn atan_reduced(t: f64, hi: f64, lo: f64) -> f64 {
+fn atan_reduced<T: Real>(t: T, hi: T, lo: T) -> T {
+    let c = |k: usize| T::splat(AT[k]);
     let z = t * t;
     let w = z * z;
-    let s1 = z * (AT[0] + w * (AT[2] + w * (AT[4] + w * (AT[6] + w * (AT[8] + w * AT[10])))));
-    let s2 = w * (AT[1] + w * (AT[3] + w * (AT[5] + w * (AT[7] + w * AT[9]))));
+    let s1 = z * (c(0) + w * (c(2) + w * (c(4) + w * (c(6) + w * (c(8) + w * c(10))))));
+    let s2 = w * (c(1) + w * (c(3) + w * (c(5) + w * (c(7) + w * c(9)))));
     hi - ((t * (s1 + s2) - lo) - t)
 }
 
@@ -119,33 +135,28 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     atan2_finite(y, x)
 }
 
-/// [`atan2`] of finite `y`, `x`, not both zero, with no branch (selects only), for the
-/// batch's lanes too.
+/// [`atan2`] of finite `y`, `x`, not both zero, with no branch (selects only), for one
+/// number or for lanes of them ([`Real`]). Each division's operands are chosen first, so
+/// that there are two divisions whichever way a lane goes (`a / 1` is `a` exactly).
 #[inline(always)]
-pub(crate) fn atan2_finite(y: f64, x: f64) -> f64 {
+pub(crate) fn atan2_finite<T: Real>(y: T, x: T) -> T {
+    let k = T::splat;
     let (ay, ax) = (y.abs(), x.abs());
-    let steep = ay > ax;
-    let a = if steep { ax / ay } else { ay / ax };
-    let big = a > std::f64::consts::SQRT_2 - 1.0;
-    let t = if big { (a - 1.0) / (a + 1.0) } else { a };
-    let (hi, lo) = if big {
-        (std::f64::consts::FRAC_PI_4, PI_4_LO)
-    } else {
-        (0.0, 0.0)
-    };
+    let steep = ay.greater(ax);
+    let a = T::select(steep, ax, ay) / T::select(steep, ay, ax);
+    let big = a.greater(k(std::f64::consts::SQRT_2 - 1.0));
+    let t = T::select(big, a - k(1.0), a) / T::select(big, a + k(1.0), k(1.0));
+    let hi = T::select(big, k(std::f64::consts::FRAC_PI_4), k(0.0));
+    let lo = T::select(big, k(PI_4_LO), k(0.0));
     let r = atan_reduced(t, hi, lo);
     // Past 45°: π/2 − r, with π/2's low part.
-    let r = if steep {
-        (std::f64::consts::FRAC_PI_2 - r) + PI_2_LO
-    } else {
-        r
-    };
-    let r = if x < 0.0 {
-        std::f64::consts::PI - (r - PI_LO)
-    } else {
-        r
-    };
-    if y.is_sign_negative() { -r } else { r }
+    let r = T::select(steep, (k(std::f64::consts::FRAC_PI_2) - r) + k(PI_2_LO), r);
+    let r = T::select(
+        k(0.0).greater(x),
+        k(std::f64::consts::PI) - (r - k(PI_LO)),
+        r,
+    );
+    T::select(y.sign_negative(), -r, r)
 }
 
 #[cfg(test)]

@@ -15,3 +15,4 @@ mod queries;
 mod scene_frame;
 mod servo_angles;
 pub mod servo_closure;
+pub(crate) mod wide;

@@ -7,14 +7,20 @@
 //!
 //! Layout, measured: the eight rotations and positions go into a [`PosesLanes`] the caller
 //! owns (returned by value it was copied each time), each leg's vector is then made and
-//! used at once (kept in registers, not stored for all six legs), and the lengths are
-//! gathered in a local block of eight rows copied out whole — together 70 → 114 M poses/s
-//! for legs and 42 → 54 M/s for servos on a 2-core AVX-512 machine.
+//! used at once (kept in registers, not stored for all six legs) — together 70 → 114 M
+//! poses/s for legs and 42 → 54 M/s for servos on a 2-core AVX-512 machine. On AVX2 (AMD
+//! Zen 3, issue #60) three things kept it far slower: the quadrant converted `as i64`
+//! (no AVX2 instruction: scalar code), lengths stored row by row (masked stores, slow on
+//! AMD) and each transcendental's chain of dependent steps taken one lane group after
+//! another; now the quadrant is read from a float's bits, lengths are stored leg by leg
+//! and then turned into rows, and the three angles of a pose (the six servos' atan2) go
+//! through their polynomials side by side ([`Wide`]).
 
 use std::f64::consts::FRAC_2_PI;
 
 use super::{AsPose, BatchSolver, ServoBatch};
 use crate::solve::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
+use crate::solve::wide::{Real, Wide, all_within};
 
 /// Poses computed together.
 pub const LANES: usize = 8;
@@ -22,17 +28,28 @@ pub const LANES: usize = 8;
 /// Eight numbers, one per pose.
 type Lanes = [f64; LANES];
 
-/// `(sin x, cos x)` of eight angles within [`REDUCTION_LIMIT`]: [`fast_trig::sin_cos`]'s
-/// reduction, polynomials and quadrant swap, lane by lane.
+/// `(sin x, cos x)` of the three angles of eight poses within [`REDUCTION_LIMIT`]:
+/// [`fast_trig::sin_cos`]'s reduction, polynomials and quadrant swap, lane by lane, each
+/// step taken for the three angles of a lane side by side ([`Wide`]`<3>`: three
+/// independent chains interleaved, where one angle after the other would wait on each
+/// step's latency); the negations are the sign bit flipped (as `-` does), by bit
+/// operations that stay in vector registers.
 #[inline(always)]
-fn sin_cos(x: &Lanes) -> (Lanes, Lanes) {
-    let (mut sin, mut cos) = ([0.0; LANES], [0.0; LANES]);
+fn sin_cos(angles: &[Lanes; 3]) -> ([Lanes; 3], [Lanes; 3]) {
+    let (mut sin, mut cos) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
     for l in 0..LANES {
-        let (s, c, quadrant) = fast_trig::kernel(x[l] * FRAC_2_PI, x[l]);
-        let swap = quadrant & 1 != 0;
-        let (a, b) = if swap { (c, s) } else { (s, c) };
-        sin[l] = if quadrant & 2 != 0 { -a } else { a };
-        cos[l] = if (quadrant + 1) & 2 != 0 { -b } else { b };
+        let x = Wide::<3>::from_fn(|k| angles[k][l]);
+        let (s, c, j) = fast_trig::kernel(x * Wide::splat(FRAC_2_PI), x);
+        for k in 0..3 {
+            let quadrant = fast_trig::quadrant(j.0[k]);
+            let (a, b) = if quadrant & 1 != 0 {
+                (c.0[k], s.0[k])
+            } else {
+                (s.0[k], c.0[k])
+            };
+            sin[k][l] = f64::from_bits(a.to_bits() ^ ((quadrant & 2) << 62));
+            cos[k][l] = f64::from_bits(b.to_bits() ^ (((quadrant + 1) & 2) << 62));
+        }
     }
     (sin, cos)
 }
@@ -61,15 +78,16 @@ impl BatchSolver {
         if !poses_lanes(poses, &mut frames) {
             return false;
         }
-        // Rows gathered here and copied out whole: the eight output rows are contiguous.
-        let mut rows = [[0.0; 6]; LANES];
-        for i in 0..6 {
+        let mut lengths = [[0.0; LANES]; 6];
+        for (i, lengths) in lengths.iter_mut().enumerate() {
             let [x, y, z] = self.leg_lanes(&frames, i);
             for l in 0..LANES {
-                rows[l][i] = (x[l] * x[l] + y[l] * y[l] + z[l] * z[l]).sqrt();
+                lengths[l] = (x[l] * x[l] + y[l] * y[l] + z[l] * z[l]).sqrt();
             }
         }
-        out[..LANES].copy_from_slice(&rows);
+        for (l, row) in out[..LANES].iter_mut().enumerate() {
+            *row = std::array::from_fn(|i| lengths[i][l]);
+        }
         true
     }
 
@@ -92,17 +110,16 @@ impl BatchSolver {
 /// beyond the fast reduction (or is not a number).
 #[inline(always)]
 pub(super) fn poses_lanes<P: AsPose>(poses: &[P], frames: &mut PosesLanes) -> bool {
-    let angle = |k: usize| -> Lanes { std::array::from_fn(|l| poses[l].angle(k)) };
-    let roll = angle(0);
-    let pitch = angle(1);
-    let yaw = angle(2);
-    let fast = |a: &Lanes| a.iter().all(|x| x.abs() <= REDUCTION_LIMIT);
-    if !(fast(&roll) && fast(&pitch) && fast(&yaw)) {
+    let mut angles = [[0.0; LANES]; 3];
+    for (k, angle) in angles.iter_mut().enumerate() {
+        for (l, lane) in angle.iter_mut().enumerate() {
+            *lane = poses[l].angle(k);
+        }
+    }
+    if !all_within(angles.as_flattened(), REDUCTION_LIMIT) {
         return false;
     }
-    let (sr, cr) = sin_cos(&roll);
-    let (sp, cp) = sin_cos(&pitch);
-    let (sy, cy) = sin_cos(&yaw);
+    let ([sr, sp, sy], [cr, cp, cy]) = sin_cos(&angles);
     let r = &mut frames.r;
     for l in 0..LANES {
         // Rows of R = Rz(yaw)·Ry(pitch)·Rx(roll), as in `BatchSolver::legs`.
@@ -132,7 +149,8 @@ impl ServoBatch {
             return false;
         }
         let (two_a, rod_minus_horn, ncos, nsin) = self.constants();
-        let mut theta = [[0.0; LANES]; 6];
+        // The two arguments of each servo's atan2, servo by servo.
+        let (mut ty, mut tx) = ([[0.0; LANES]; 6], [[0.0; LANES]; 6]);
         let mut sound = true;
         for i in 0..6 {
             let [lx, ly, lz] = self.legs().leg_lanes(&frames, i);
@@ -145,16 +163,20 @@ impl ServoBatch {
                 // Out of reach, or a degenerate closure: the scalar path says which.
                 sound &= c2 >= 0.0 && !(m == 0.0 && n == 0.0);
                 let c = c2.max(0.0).sqrt();
-                let (ty, tx) = (big_l * m - c * n, c * m + big_l * n);
-                sound &= ty.is_finite() && tx.is_finite() && !(ty == 0.0 && tx == 0.0);
-                theta[i][l] = atan2_finite(ty, tx);
+                (ty[i][l], tx[i][l]) = (big_l * m - c * n, c * m + big_l * n);
+                sound &= ty[i][l].is_finite()
+                    && tx[i][l].is_finite()
+                    && !(ty[i][l] == 0.0 && tx[i][l] == 0.0);
             }
         }
         if !sound {
             return false;
         }
+        // Pose by pose, its six servos side by side (six independent chains through the
+        // atan2's divisions and polynomial): each result is an output row as it stands.
         for (l, row) in out.iter_mut().enumerate().take(LANES) {
-            *row = std::array::from_fn(|i| theta[i][l]);
+            let pick = |v: &[Lanes; 6]| Wide::<6>::from_fn(|i| v[i][l]);
+            row.copy_from_slice(&atan2_finite(pick(&ty), pick(&tx)).0);
         }
         true
     }

@@ -333,6 +333,20 @@ impl ServoBatch {
         Ok(out)
     }
 
+    /// Servo angles (radians) of every pose into `out` on the calling thread, compiled for
+    /// the CPU's widest vector instructions (as [`BatchSolver::solve_serial`]); the first
+    /// unreachable pose, with its servo (from 0), is the error.
+    ///
+    /// # Panics
+    /// If `out` is shorter than `poses` (a programming error, not a user error).
+    pub fn solve_serial(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> Result<(), OutOfReach> {
+        pulp::Arch::new().dispatch(ServoChunk {
+            solver: self,
+            poses,
+            out,
+        })
+    }
+
     /// Servo angles (radians) of every pose into `out`, spread over all cores; the first
     /// unreachable pose found, with its servo (from 0), is the error.
     ///
@@ -349,12 +363,7 @@ impl ServoBatch {
             .zip(out[..poses.len()].par_chunks_mut(CHUNK))
             .enumerate()
             .try_for_each(|(chunk, (p, o))| {
-                pulp::Arch::new()
-                    .dispatch(ServoChunk {
-                        solver: self,
-                        poses: p,
-                        out: o,
-                    })
+                self.solve_serial(p, o)
                     .map_err(|(k, servo)| (chunk * CHUNK + k, servo))
             })
     }

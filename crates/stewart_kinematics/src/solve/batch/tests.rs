@@ -316,3 +316,57 @@ fn pose_rows_give_the_bits_of_the_pose_batch() {
     assert_eq!(legs.actuator_values_rows(&far, &mut out), Ok(()));
     assert!(out[CHUNK + 7].iter().all(|l| l.is_finite()));
 }
+
+#[test]
+fn results_keep_the_bits_they_had_before_the_kernels_were_tuned_for_avx2() {
+    // Digests (FNV-1a over every result's bits) of 100 003 poses about home, taken with the
+    // kernels of commit 7fd12a7 (before issue #60) by `examples/batch_profile.rs`, which
+    // makes the same poses: the tuned kernels give the very same bits.
+    let digest = |out: &[[f64; 6]]| {
+        out.as_flattened()
+            .iter()
+            .fold(0xcbf2_9ce4_8422_2325_u64, |h, v| {
+                (h ^ v.to_bits()).wrapping_mul(0x0100_0000_01b3)
+            })
+    };
+    let rows_about = |g: &Geometry| -> Vec<[f64; 6]> {
+        let home = g.home_pose().to_row();
+        let scale = [0.01, 0.01, 0.005, 4.0, 4.0, 8.0];
+        (0..100_003)
+            .map(|k| {
+                let s = (k as f64 * 0.618_033_988_749_895).fract() - 0.5;
+                std::array::from_fn(|c| {
+                    home[c] + scale[c] * s * if c % 2 == 0 { 1.0 } else { -1.0 }
+                })
+            })
+            .collect()
+    };
+    let seed = Geometry::seed();
+    let rows = rows_about(&seed);
+    let poses: Vec<Pose> = rows.iter().map(Pose::from_row).collect();
+    let mut out = vec![[0.0; 6]; rows.len()];
+    BatchSolver::new(&seed).solve_serial(&poses, &mut out);
+    assert_eq!(digest(&out), 0xce18_a93e_c286_7b05, "leg lengths");
+    seed.actuator_values_rows(&rows, &mut out)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(digest(&out), 0xce18_a93e_c286_7b05, "leg lengths of rows");
+
+    let desk = crate::Scenario::preset("servo-desk")
+        .unwrap_or_else(|e| panic!("{e}"))
+        .geometry;
+    let rows = rows_about(&desk);
+    let poses: Vec<Pose> = rows.iter().map(Pose::from_row).collect();
+    let servos = ServoBatch::new(&desk).unwrap_or_else(|| panic!("servo-desk is rotary"));
+    servos
+        .solve_serial(&poses, &mut out)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(digest(&out), 0xa7ff_6e4a_cfb1_dc43, "servo angles");
+    servos
+        .solve_reference(&poses, &mut out)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(
+        digest(&out),
+        0xa7ff_6e4a_cfb1_dc43,
+        "servo angles, baseline build"
+    );
+}
