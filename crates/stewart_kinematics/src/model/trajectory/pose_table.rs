@@ -37,8 +37,23 @@ pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
 impl PoseTable {
     /// Read a pose table; `file` names the source in error messages.
     pub fn read(input: impl Read, file: &str) -> Result<Self, TableError> {
+        Self::of_table(NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?)
+    }
+
+    /// [`PoseTable::read`] of bytes already read (no copy of them is made).
+    pub fn read_bytes(bytes: Vec<u8>, file: &str) -> Result<Self, TableError> {
+        Self::of_table(NumericTable::read_bytes(
+            bytes,
+            file,
+            &POSE_COLUMNS,
+            &["t"],
+        )?)
+    }
+
+    /// The poses of a table read with [`POSE_COLUMNS`] and `t`, checked.
+    fn of_table(table: NumericTable) -> Result<Self, TableError> {
         use crate::ground::bounds::{TIME_S, symmetric};
-        let table = NumericTable::read(input, file, &POSE_COLUMNS, &["t"])?;
+        use rayon::prelude::*;
         check_pose_ranges(&table)?;
         table.check_range("t", &symmetric(TIME_S), "s")?;
         let t_index = table.index("t");
@@ -47,7 +62,8 @@ impl PoseTable {
             .map(|v| [v[0], v[1], v[2], v[3], v[4], v[5]])
             .collect();
         let poses = values
-            .iter()
+            .par_iter()
+            .with_min_len(4096)
             .map(|v| Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]]))
             .collect();
         let times = t_index.map(|i| table.rows().map(|r| r[i]).collect());

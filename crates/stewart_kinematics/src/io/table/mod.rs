@@ -162,6 +162,16 @@ impl NumericTable {
         let Some(c) = self.index(name) else {
             return Ok(());
         };
+        // One fast pass (no early exit, so it vectorises) to see that every value is in
+        // range; only a table with a value outside is searched for the first.
+        let width = self.columns.len();
+        let inside = self.values[c..]
+            .iter()
+            .step_by(width)
+            .fold(true, |ok, v| ok & range.contains(v));
+        if inside {
+            return Ok(());
+        }
         for (k, row) in self.rows().enumerate() {
             if let Err(e) = crate::ground::bounds::check(row[c], range, unit) {
                 return Err(TableError::BadValue {
@@ -184,8 +194,34 @@ impl NumericTable {
         required: &[&str],
         optional: &[&str],
     ) -> Result<Self, TableError> {
-        let text = read_text(input, file)?;
-        let mut lines = LineCounter::new(&text);
+        let bytes = crate::ground::text::read_capped(input, crate::ground::text::MAX_TABLE_BYTES)
+            .map_err(|message| TableError::Unreadable {
+            file: file.to_owned(),
+            message,
+        })?;
+        Self::read_bytes(bytes, file, required, optional)
+    }
+
+    /// [`NumericTable::read`] of bytes already read (no copy of them is made).
+    pub fn read_bytes(
+        bytes: Vec<u8>,
+        file: &str,
+        required: &[&str],
+        optional: &[&str],
+    ) -> Result<Self, TableError> {
+        Self::read_text(&text_of(bytes, file)?, file, required, optional, true)
+    }
+
+    /// [`NumericTable::read`] of the text, its rows read on all cores when the text is
+    /// plain ([`plain`]) and `on_all_cores`, else by the csv crate.
+    fn read_text(
+        text: &str,
+        file: &str,
+        required: &[&str],
+        optional: &[&str],
+        on_all_cores: bool,
+    ) -> Result<Self, TableError> {
+        let mut lines = LineCounter::new(text);
         let mut reader = csv::ReaderBuilder::new()
             .trim(csv::Trim::All)
             .flexible(true)
@@ -197,6 +233,32 @@ impl NumericTable {
         let header = reader.headers().map_err(unreadable)?.clone();
         let header_line = lines.of(header.position());
         let (columns, positions) = chosen_columns(&header, header_line, file, required, optional)?;
+        let rest = reader.position().byte() as usize;
+        if on_all_cores && let Some(text_after) = text.get(rest..) {
+            let first_line = 1 + text.as_bytes()[..rest]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count() as u64;
+            let kept: Vec<(&str, usize)> = columns
+                .iter()
+                .map(String::as_str)
+                .zip(positions.iter().copied())
+                .collect();
+            if let Some(rows) = plain::read(text_after, first_line, file, header.len(), &kept) {
+                let rows = rows?;
+                if rows.lines.is_empty() {
+                    return Err(TableError::NoRows {
+                        file: file.to_owned(),
+                    });
+                }
+                return Ok(Self {
+                    file: file.to_owned(),
+                    columns,
+                    values: rows.values,
+                    lines: rows.lines,
+                });
+            }
+        }
         let mut values = Vec::new();
         let mut row_lines = Vec::new();
         let mut record = csv::StringRecord::new();
@@ -318,17 +380,18 @@ impl<'a> LineCounter<'a> {
 
 /// The whole input as text with comment lines blanked (see [`blank_comments`]), or an
 /// error naming the encoding or the first line that is not UTF-8.
-fn read_text(input: impl Read, file: &str) -> Result<String, TableError> {
+fn text_of(mut bytes: Vec<u8>, file: &str) -> Result<String, TableError> {
     let unreadable = |message: String| TableError::Unreadable {
         file: file.to_owned(),
         message,
     };
-    let mut bytes = crate::ground::text::read_capped(input, crate::ground::text::MAX_TABLE_BYTES)
-        .map_err(unreadable)?;
     if let Some(encoding) = crate::ground::text::foreign_encoding(&bytes) {
         return Err(unreadable(format!("{encoding}; save it as UTF-8 text")));
     }
-    blank_comments(&mut bytes);
+    // A table with no `#` has no comment line: one fast search instead of a pass.
+    if bytes.contains(&b'#') {
+        blank_comments(&mut bytes);
+    }
     crate::ground::text::decode(bytes).map_err(unreadable)
 }
 
@@ -379,6 +442,8 @@ fn describe_csv_error(e: &csv::Error) -> String {
         _ => e.to_string(),
     }
 }
+
+mod plain;
 
 #[cfg(test)]
 mod tests {
@@ -443,5 +508,111 @@ mod tests {
             e.to_string(),
             "poses.csv: line 3, column 1 is not valid UTF-8 (byte 0xFF; the file may be in Latin-1 or another legacy encoding): save it as UTF-8 text"
         );
+    }
+}
+
+#[cfg(test)]
+mod plain_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The table read on all cores where it can be, and by the csv crate (comment lines
+    /// blanked first, as [`NumericTable::read`] does).
+    fn both(text: &str) -> [Result<NumericTable, TableError>; 2] {
+        let mut bytes = text.as_bytes().to_vec();
+        blank_comments(&mut bytes);
+        let text = String::from_utf8(bytes).unwrap_or_else(|e| panic!("{e}"));
+        [true, false]
+            .map(|cores| NumericTable::read_text(&text, "t.csv", &["x", "y"], &["t"], cores))
+    }
+
+    /// The two readings agree: the same rows, lines and columns, or the same error.
+    fn agree(text: &str) {
+        match both(text) {
+            [Ok(a), Ok(b)] => {
+                assert_eq!(a.columns, b.columns, "{text:?}");
+                assert_eq!(a.lines, b.lines, "{text:?}");
+                assert_eq!(
+                    a.values.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                    b.values.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                    "{text:?}"
+                );
+            }
+            [Err(a), Err(b)] => assert_eq!(a.to_string(), b.to_string(), "{text:?}"),
+            [a, b] => panic!(
+                "{text:?}: {:?} against {:?}",
+                a.map(|t| t.lines),
+                b.map(|t| t.lines)
+            ),
+        }
+    }
+
+    #[test]
+    fn plain_tables_read_as_the_csv_crate_reads_them() {
+        for text in [
+            "x,y\n1,2\n3,4\n",
+            "x,y\n1,2\n3,4",
+            "x,y\r\n1,2\r\n\r\n3,4\r\n",
+            "\n\nx,y\n\n1,2\n   \n\t\n3,4\n\n",
+            "# note\nx,y\n# a comment\n1,2\n  # indented comment\n3,4\n",
+            " x , y ,t\n 1 , 2 ,0.5\n\t3\t,\t4\t,1\n",
+            "t,note,y,x\n0,a,2,1\n1,b,4,3\n",
+            "x,y\n\u{a0}1\u{3000},2\n",
+            "x,y\n1\n",
+            "x,y\n1,2,3\n",
+            "x,y\n1,a\n",
+            "x,y\n1,\n",
+            "x,y\n1,NaN\n",
+            "x,y\n1,inf\n",
+            "x,y\n1,1e999\n",
+            "x,y\n",
+            "x,y\n\n# only a comment\n",
+            "x,y\n\"1\",2\n",
+            "x,y\n1,\"2\n3\"\n",
+            "x,y\r1,2\r3,4\r",
+            "x,y\n1,2\r3,4\n",
+            "x,y\n1,2\n\r",
+            "x\n1\n",
+            "x,x,y\n1,2,3\n",
+        ] {
+            agree(text);
+        }
+    }
+
+    #[test]
+    fn line_numbers_and_errors_hold_across_chunks() {
+        // Several chunks of rows, with blank and comment lines between them; then the same
+        // with an error far in, and with a quote far in (the csv crate reads it all).
+        let mut text = String::from("t,x,y\n");
+        for k in 0..200_000 {
+            text.push_str(&format!("{k},{}.25,-{k}e-3\n", k % 97));
+            if k % 1_000 == 0 {
+                text.push_str("\n# a comment\n");
+            }
+        }
+        assert!(text.len() > 3 << 20);
+        agree(&text);
+        let [t, _] = both(&text);
+        let t = t.unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(t.len(), 200_000);
+        assert_eq!(t.line(199_999) as usize, text.lines().count());
+        let late = text.len() * 3 / 4;
+        let line_end = late + text[late..].find('\n').unwrap_or(0);
+        for insert in ["1,2,oops\n", "1,2\n", "\"7\",8,9\n", "1,2,3\r4,5,6\n"] {
+            let mut broken = text.clone();
+            broken.insert_str(line_end + 1, insert);
+            agree(&broken);
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2_000))]
+        #[test]
+        fn random_tables_read_alike(body in proptest::collection::vec(
+            prop::sample::select(vec!["1", "-2.5", "e3", ",", " ", "\t", "\n", "\r\n", "\r", "\"", "#", "x", "NaN", "\u{a0}"]),
+            0..40,
+        )) {
+            agree(&format!("x,y\n{}", body.concat()));
+        }
     }
 }
