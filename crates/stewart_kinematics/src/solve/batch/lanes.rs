@@ -173,10 +173,20 @@ impl ServoBatch {
             return false;
         }
         // Pose by pose, its six servos side by side (six independent chains through the
-        // atan2's divisions and polynomial): each result is an output row as it stands.
-        for (l, row) in out.iter_mut().enumerate().take(LANES) {
+        // atan2's divisions and polynomial), stored servo by servo so that the loop over
+        // the poses is made four (eight) poses wide; then turned into rows.
+        let mut theta = [[0.0; LANES]; 6];
+        for l in 0..LANES {
             let pick = |v: &[Lanes; 6]| Wide::<6>::from_fn(|i| v[i][l]);
-            row.copy_from_slice(&atan2_finite(pick(&ty), pick(&tx)).0);
+            let angles = atan2_finite(pick(&ty), pick(&tx));
+            for (i, servo) in theta.iter_mut().enumerate() {
+                servo[l] = angles.0[i];
+            }
+        }
+        for (l, row) in out.iter_mut().enumerate().take(LANES) {
+            for (i, value) in row.iter_mut().enumerate() {
+                *value = theta[i][l];
+            }
         }
         true
     }
