@@ -151,22 +151,20 @@ fn split_fields<'a>(record: &'a str, cells: &mut Vec<&'a str>) {
             mask &= mask - 1;
         }
     };
+    // Bit i set where byte i of a block (at most 32 bytes) is a comma.
+    let commas = |block: &[u8]| {
+        block
+            .iter()
+            .enumerate()
+            .fold(0_u32, |m, (i, &b)| m | (u32::from(b == b',') << i))
+    };
     let mut blocks = bytes.chunks_exact(BLOCK);
     let mut base = 0;
     for block in &mut blocks {
-        let mask = block
-            .iter()
-            .enumerate()
-            .fold(0_u32, |m, (i, &b)| m | (u32::from(b == b',') << i));
-        push_commas(base, mask);
+        push_commas(base, commas(block));
         base += BLOCK;
     }
-    let rest = blocks.remainder();
-    let mask = rest
-        .iter()
-        .enumerate()
-        .fold(0_u32, |m, (i, &b)| m | (u32::from(b == b',') << i));
-    push_commas(base, mask);
+    push_commas(base, commas(blocks.remainder()));
     cells.push(record[from..].trim());
 }
 
