@@ -14,6 +14,9 @@ use stewart_kinematics::{BatchSolver, Geometry, Pose, Scenario};
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let kind = args.first().map_or("legs", String::as_str);
+    if kind == "table" {
+        return read_table(args.get(1).map_or("table.csv", String::as_str));
+    }
     let number = |k: usize, default: usize| {
         args.get(k)
             .map_or(Ok(default), |s| s.parse::<usize>())
@@ -65,5 +68,23 @@ fn main() {
     println!(
         "{kind}: {:.2} ns per pose ({n} poses × {repeats}); digest {digest:016x}",
         seconds * 1e9 / (n * repeats) as f64,
+    );
+}
+
+/// `table FILE`: the file read as `solve --poses` reads a pose table, then parsed, each
+/// timed (the bytes read once, as the command does).
+fn read_table(path: &str) {
+    use stewart_kinematics::io::file::FileKind;
+    use stewart_kinematics::model::trajectory::PoseTable;
+    let start = Instant::now();
+    let bytes = stewart_kinematics::io::file::read_file(path.as_ref(), FileKind::Table)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let read = start.elapsed();
+    let table = PoseTable::read_bytes(bytes, path).unwrap_or_else(|e| panic!("{e}"));
+    println!(
+        "table: {} poses; read {:.0} ms, parsed {:.0} ms",
+        table.poses.len(),
+        read.as_secs_f64() * 1e3,
+        (start.elapsed() - read).as_secs_f64() * 1e3
     );
 }

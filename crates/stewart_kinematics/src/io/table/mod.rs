@@ -141,6 +141,11 @@ impl NumericTable {
         self.values.chunks_exact(self.columns.len().max(1))
     }
 
+    /// Every value, row after row (`columns.len()` per row).
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
     /// Line of row `k` in the file, from 1.
     pub fn line(&self, k: usize) -> u64 {
         self.lines[k]
@@ -159,30 +164,53 @@ impl NumericTable {
         range: &std::ops::RangeInclusive<f64>,
         unit: &str,
     ) -> Result<(), TableError> {
-        let Some(c) = self.index(name) else {
-            return Ok(());
-        };
-        // One fast pass (no early exit, so it vectorises) to see that every value is in
-        // range; only a table with a value outside is searched for the first.
-        let width = self.columns.len();
-        let inside = self.values[c..]
+        self.check_ranges(&[(name, range.clone(), unit)])
+    }
+
+    /// [`NumericTable::check_range`] of each `(name, range, unit)` in turn: the first
+    /// value outside in the first column that has one is the error. One pass over the
+    /// rows on all cores sees that every value is in range (no early exit within a block,
+    /// so that it vectorises); only a table with a value outside is searched for the first.
+    pub fn check_ranges(
+        &self,
+        checks: &[(&str, std::ops::RangeInclusive<f64>, &str)],
+    ) -> Result<(), TableError> {
+        use rayon::prelude::*;
+        let present: Vec<(usize, &std::ops::RangeInclusive<f64>)> = checks
             .iter()
-            .step_by(width)
-            .fold(true, |ok, v| ok & range.contains(v));
+            .filter_map(|(name, range, _)| Some((self.index(name)?, range)))
+            .collect();
+        let width = self.columns.len().max(1);
+        let inside = self.values.par_chunks(width * 4096).all(|block| {
+            present.iter().all(|&(c, range)| {
+                block[c..]
+                    .iter()
+                    .step_by(width)
+                    .fold(true, |ok, v| ok & range.contains(v))
+            })
+        });
         if inside {
             return Ok(());
         }
-        for (k, row) in self.rows().enumerate() {
-            if let Err(e) = crate::ground::bounds::check(row[c], range, unit) {
-                return Err(TableError::BadValue {
-                    file: self.file.clone(),
-                    line: self.lines[k],
-                    column: name.to_owned(),
-                    message: e.to_string(),
-                });
+        for (name, range, unit) in checks {
+            let Some(c) = self.index(name) else { continue };
+            for (k, row) in self.rows().enumerate() {
+                if let Err(e) = crate::ground::bounds::check(row[c], range, unit) {
+                    return Err(TableError::BadValue {
+                        file: self.file.clone(),
+                        line: self.lines[k],
+                        column: (*name).to_owned(),
+                        message: e.to_string(),
+                    });
+                }
             }
         }
         Ok(())
+    }
+
+    /// The lines of every row, the table given up for them.
+    pub fn into_lines(self) -> Vec<u64> {
+        self.lines
     }
 
     /// Read `required` columns (all must be present) and whichever `optional` columns
@@ -414,6 +442,22 @@ fn blank_comments(bytes: &mut [u8]) {
             }
         }
         start = end + 1;
+    }
+}
+
+impl TableError {
+    /// The error of a piece of text whose lines were counted from 0, moved to the file's
+    /// lines: its line (where it has one) plus `first`.
+    fn shift_line(&mut self, first: u64) {
+        match self {
+            Self::MissingColumn { line, .. }
+            | Self::DuplicateColumn { line, .. }
+            | Self::NotANumber { line, .. }
+            | Self::NotFinite { line, .. }
+            | Self::FieldCount { line, .. }
+            | Self::BadValue { line, .. } => *line += first,
+            _ => {}
+        }
     }
 }
 

@@ -16,12 +16,10 @@ const CHUNK_BYTES: usize = 1 << 20;
 /// Whether `text` is plain: no `"` (no quoted field) and every `\r` followed by `\n`
 /// (the csv crate ends a record at a bare `\r` too; line numbers count `\n` only).
 fn is_plain(text: &[u8]) -> bool {
-    !text.contains(&b'"')
-        && (!text.contains(&b'\r')
-            || text
-                .iter()
-                .enumerate()
-                .all(|(i, &b)| b != b'\r' || text.get(i + 1) == Some(&b'\n')))
+    // One search for either (the usual answer: neither).
+    memchr::memchr2(b'"', b'\r', text).is_none()
+        || (memchr::memchr(b'"', text).is_none()
+            && memchr::memchr_iter(b'\r', text).all(|i| text.get(i + 1) == Some(&b'\n')))
 }
 
 /// What the rows of a plain table hold: the chosen columns' values, row after row, and
@@ -29,6 +27,10 @@ fn is_plain(text: &[u8]) -> bool {
 pub(super) struct Rows {
     pub values: Vec<f64>,
     pub lines: Vec<u64>,
+    /// While chunks are read: the line this chunk's lines count from, and how many
+    /// lines it has.
+    first_line: u64,
+    line_count: u64,
 }
 
 /// The rows of `text`, whose first line is line `first_line`: `fields` per record, of
@@ -56,72 +58,108 @@ pub(super) fn read(
     }
     starts.push(bytes.len());
     let spans: Vec<(usize, usize)> = starts.windows(2).map(|w| (w[0], w[1])).collect();
-    // The line each chunk starts on.
-    let newlines: Vec<u64> = spans
-        .par_iter()
-        .map(|&(a, b)| bytes[a..b].iter().filter(|&&c| c == b'\n').count() as u64)
-        .collect();
-    let firsts: Vec<u64> = newlines
+    let last = columns
         .iter()
-        .scan(first_line, |line, n| {
-            let here = *line;
-            *line += n;
-            Some(here)
-        })
-        .collect();
+        .map(|&(_, position)| position)
+        .max()
+        .unwrap_or(0);
+    // Each chunk read with its lines counted from 0, then placed after the lines of the
+    // chunks before it.
     let parts: Vec<Option<Result<Rows, TableError>>> = spans
         .par_iter()
-        .zip(&firsts)
-        .map(|(&(a, b), &line)| {
+        .map(|&(a, b)| {
             let chunk = &text[a..b];
-            is_plain(chunk.as_bytes()).then(|| read_chunk(chunk, line, file, fields, columns))
+            is_plain(chunk.as_bytes()).then(|| read_chunk(chunk, file, fields, last, columns))
         })
         .collect();
-    let mut rows = Rows {
-        values: Vec::new(),
-        lines: Vec::new(),
-    };
+    let parts = parts.into_iter().collect::<Option<Vec<_>>>()?;
+    let mut line = first_line;
+    let mut placed = Vec::with_capacity(parts.len());
     for part in parts {
-        // The earliest chunk's error is the file's first.
-        match part? {
-            Ok(part) => {
-                rows.values.extend_from_slice(&part.values);
-                rows.lines.extend_from_slice(&part.lines);
+        match part {
+            Ok(mut rows) => {
+                rows.first_line = line;
+                line += rows.line_count;
+                placed.push(rows);
             }
-            Err(e) => return Some(Err(e)),
+            // The earliest chunk's error is the file's first.
+            Err(mut e) => {
+                e.shift_line(line);
+                return Some(Err(e));
+            }
         }
     }
-    Some(Ok(rows))
+    Some(Ok(join(placed)))
 }
 
-/// The rows of whole lines `text`, the first on line `line`.
+/// The rows of every chunk in one table, copied on all cores (each part's lines made the
+/// file's).
+fn join(parts: Vec<Rows>) -> Rows {
+    let values_len = parts.iter().map(|p| p.values.len()).sum();
+    let lines_len = parts.iter().map(|p| p.lines.len()).sum();
+    let mut rows = Rows {
+        values: vec![0.0; values_len],
+        lines: vec![0; lines_len],
+        first_line: 0,
+        line_count: 0,
+    };
+    let mut slots = Vec::with_capacity(parts.len());
+    let (mut values, mut lines) = (rows.values.as_mut_slice(), rows.lines.as_mut_slice());
+    for part in &parts {
+        let (v, rest_v) = values.split_at_mut(part.values.len());
+        let (l, rest_l) = lines.split_at_mut(part.lines.len());
+        slots.push((part, v, l));
+        (values, lines) = (rest_v, rest_l);
+    }
+    slots.into_par_iter().for_each(|(part, values, lines)| {
+        values.copy_from_slice(&part.values);
+        for (to, from) in lines.iter_mut().zip(&part.lines) {
+            *to = part.first_line + from;
+        }
+    });
+    rows
+}
+
+/// The rows of whole lines `text`, their lines counted from 0; `last` is the last field
+/// position any column needs.
 fn read_chunk(
     text: &str,
-    mut line: u64,
     file: &str,
     fields: usize,
+    last: usize,
     columns: &[(&str, usize)],
 ) -> Result<Rows, TableError> {
     let lines_here = text.len() / 16 + 1;
     let mut rows = Rows {
         values: Vec::with_capacity(lines_here * columns.len()),
         lines: Vec::with_capacity(lines_here),
+        first_line: 0,
+        line_count: 0,
     };
-    let mut cells: Vec<&str> = Vec::with_capacity(fields);
-    for record in text.split_terminator('\n') {
+    let mut cells: Vec<&str> = Vec::with_capacity(last + 1);
+    let mut line = 0;
+    // Each line, found by a vector-wide search for its end.
+    let mut start = 0;
+    let ends = memchr::memchr_iter(b'\n', text.as_bytes()).chain(std::iter::once(text.len()));
+    for end in ends {
+        if end == text.len() && start == end {
+            break; // no text after the last line end
+        }
+        let record = &text[start..end];
+        start = end + 1;
         let record = record.strip_suffix('\r').unwrap_or(record);
         if record.trim().is_empty() {
             // A blank line, or a comment line (blanked when read).
             line += 1;
             continue;
         }
-        split_fields(record, &mut cells);
-        if cells.len() != fields {
+        let found = split_fields(record, last, &mut cells);
+        if found != fields {
             return Err(TableError::FieldCount {
                 file: file.to_owned(),
                 line,
                 expected: fields as u64,
-                found: cells.len() as u64,
+                found: found as u64,
             });
         }
         for &(name, position) in columns {
@@ -131,46 +169,81 @@ fn read_chunk(
         rows.lines.push(line);
         line += 1;
     }
+    rows.line_count = line;
     Ok(rows)
 }
 
-/// The trimmed fields of `record` (split at every comma) into `cells`. Commas are found 32
-/// bytes at a time as a bit mask (a comparison the compiler makes one vector instruction),
-/// then taken bit by bit: fields are short, and a branch or a search call per byte or per
-/// field costs more.
-fn split_fields<'a>(record: &'a str, cells: &mut Vec<&'a str>) {
-    const BLOCK: usize = 32;
+/// The trimmed fields of `record` (split at every comma) up to position `last` into
+/// `cells`, and how many fields it has: past `last` commas are only counted, a pass the
+/// compiler makes vector-wide (a table's unused columns cost little).
+fn split_fields<'a>(record: &'a str, last: usize, cells: &mut Vec<&'a str>) -> usize {
     cells.clear();
     let bytes = record.as_bytes();
     let mut from = 0;
-    let mut push_commas = |base: usize, mut mask: u32| {
-        while mask != 0 {
-            let at = base + mask.trailing_zeros() as usize;
-            cells.push(record[from..at].trim());
-            from = at + 1;
-            mask &= mask - 1;
+    while cells.len() <= last {
+        match next_comma(bytes, from) {
+            Some(at) => {
+                cells.push(record[from..at].trim());
+                from = at + 1;
+            }
+            None => {
+                cells.push(record[from..].trim());
+                return cells.len();
+            }
         }
-    };
-    // Bit i set where byte i of a block (at most 32 bytes) is a comma.
-    let commas = |block: &[u8]| {
-        block
-            .iter()
-            .enumerate()
-            .fold(0_u32, |m, (i, &b)| m | (u32::from(b == b',') << i))
-    };
-    let mut blocks = bytes.chunks_exact(BLOCK);
-    let mut base = 0;
-    for block in &mut blocks {
-        push_commas(base, commas(block));
-        base += BLOCK;
     }
-    push_commas(base, commas(blocks.remainder()));
-    cells.push(record[from..].trim());
+    cells.len() + 1 + bytes[from..].iter().filter(|&&b| b == b',').count()
+}
+
+/// The position of the first comma in `bytes` from `from` on, looked for eight bytes at
+/// a time: in a word of them XOR-ed with commas, a comma is a zero byte, and
+/// `(w − 0x01…01) & !w & 0x80…80` marks the lowest zero byte exactly (a borrow can only
+/// mark bytes above it).
+fn next_comma(bytes: &[u8], from: usize) -> Option<usize> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGHS: u64 = 0x8080_8080_8080_8080;
+    let mut at = from;
+    while let Some(word) = bytes.get(at..at + 8) {
+        let mut eight = [0; 8];
+        eight.copy_from_slice(word);
+        let w = u64::from_le_bytes(eight) ^ (ONES * u64::from(b','));
+        let zeros = w.wrapping_sub(ONES) & !w & HIGHS;
+        if zeros != 0 {
+            return Some(at + (zeros.trailing_zeros() / 8) as usize);
+        }
+        at += 8;
+    }
+    bytes[at.min(bytes.len())..]
+        .iter()
+        .position(|&b| b == b',')
+        .map(|i| at + i)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::split_fields;
+    use super::{next_comma, split_fields};
+
+    #[test]
+    fn the_next_comma_is_found_at_every_offset_and_in_every_byte_of_a_word() {
+        let text = "a,bc,,defghijkl,\u{2c}é,,x,0.14999999998815644,\u{ac}\u{12c},y";
+        let bytes = text.as_bytes();
+        for from in 0..=bytes.len() {
+            let expected = bytes[from..]
+                .iter()
+                .position(|&b| b == b',')
+                .map(|i| from + i);
+            assert_eq!(next_comma(bytes, from), expected, "from {from}");
+        }
+        // Bytes that borrow: 0x2d ('-', one above a comma) and 0x2b after a comma.
+        let tricky = b"--,+-,---------,";
+        for from in 0..=tricky.len() {
+            let expected = tricky[from..]
+                .iter()
+                .position(|&b| b == b',')
+                .map(|i| from + i);
+            assert_eq!(next_comma(tricky, from), expected, "from {from}");
+        }
+    }
 
     #[test]
     fn fields_are_split_at_every_comma_and_trimmed_whatever_the_blocks() {
@@ -185,10 +258,17 @@ mod tests {
         ] {
             for pad in 0..40 {
                 let padded = format!("{}{record}", " ".repeat(pad));
-                let mut cells = Vec::new();
-                split_fields(&padded, &mut cells);
                 let expected: Vec<&str> = padded.split(',').map(str::trim).collect();
-                assert_eq!(cells, expected, "{padded:?}");
+                for last in 0..6 {
+                    let mut cells = Vec::new();
+                    let found = split_fields(&padded, last, &mut cells);
+                    assert_eq!(found, expected.len(), "{padded:?}");
+                    assert_eq!(
+                        cells,
+                        expected[..expected.len().min(last + 1)],
+                        "{padded:?}"
+                    );
+                }
             }
         }
     }

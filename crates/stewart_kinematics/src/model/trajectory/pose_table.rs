@@ -27,11 +27,17 @@ pub struct PoseTable {
 /// Check a table's pose columns ([`POSE_COLUMNS`]) against the accepted ranges of
 /// lengths and angles; the first value outside is an error naming its line.
 pub fn check_pose_ranges(table: &NumericTable) -> Result<(), TableError> {
+    table.check_ranges(&pose_range_checks())
+}
+
+/// Each pose column with its accepted range and unit.
+fn pose_range_checks() -> Vec<(&'static str, std::ops::RangeInclusive<f64>, &'static str)> {
     use crate::ground::bounds::{POSE_ROW, POSE_ROW_UNITS, symmetric};
-    for (k, name) in POSE_COLUMNS.iter().enumerate() {
-        table.check_range(name, &symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k])?;
-    }
-    Ok(())
+    POSE_COLUMNS
+        .iter()
+        .enumerate()
+        .map(|(k, &name)| (name, symmetric(POSE_ROW[k]), POSE_ROW_UNITS[k]))
+        .collect()
 }
 
 impl PoseTable {
@@ -54,11 +60,16 @@ impl PoseTable {
     fn of_table(table: NumericTable) -> Result<Self, TableError> {
         use crate::ground::bounds::{TIME_S, symmetric};
         use rayon::prelude::*;
-        check_pose_ranges(&table)?;
-        table.check_range("t", &symmetric(TIME_S), "s")?;
+        // The pose columns, then `t`, each in one pass on all cores.
+        let mut checks = pose_range_checks();
+        checks.push(("t", symmetric(TIME_S), "s"));
+        table.check_ranges(&checks)?;
         let t_index = table.index("t");
+        let width = table.columns.len();
         let values: Vec<[f64; 6]> = table
-            .rows()
+            .values()
+            .par_chunks_exact(width)
+            .with_min_len(4096)
             .map(|v| [v[0], v[1], v[2], v[3], v[4], v[5]])
             .collect();
         let poses = values
@@ -66,8 +77,15 @@ impl PoseTable {
             .with_min_len(4096)
             .map(|v| Pose::from_xyz_rpy_deg([v[0], v[1], v[2]], [v[3], v[4], v[5]]))
             .collect();
-        let times = t_index.map(|i| table.rows().map(|r| r[i]).collect());
-        let lines = table.lines().to_vec();
+        let times = t_index.map(|i| {
+            table
+                .values()
+                .par_chunks_exact(width)
+                .with_min_len(4096)
+                .map(|r| r[i])
+                .collect()
+        });
+        let lines = table.into_lines();
         Ok(Self {
             times,
             poses,
