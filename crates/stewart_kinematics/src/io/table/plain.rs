@@ -33,17 +33,17 @@ pub(super) struct Rows {
     line_count: u64,
 }
 
-/// The rows of `text`, whose first line is line `first_line`: `fields` per record, of
-/// which `columns` (name, position) are kept; `None` when the text is not plain (then the
-/// csv crate reads it).
+/// The rows of `bytes`, whose first line is line `first_line`: `fields` per record, of
+/// which `columns` (name, position) are kept; `None` when the text is not plain or not
+/// UTF-8 (each chunk is checked as it is read: a `\n` never splits a character), and the
+/// csv crate then reads it.
 pub(super) fn read(
-    text: &str,
+    bytes: &[u8],
     first_line: u64,
     file: &str,
     fields: usize,
     columns: &[(&str, usize)],
 ) -> Option<Result<Rows, TableError>> {
-    let bytes = text.as_bytes();
     // Chunk boundaries just after a '\n', so that each chunk holds whole lines.
     let mut starts = vec![0];
     while let Some(&last) = starts.last() {
@@ -68,8 +68,9 @@ pub(super) fn read(
     let parts: Vec<Option<Result<Rows, TableError>>> = spans
         .par_iter()
         .map(|&(a, b)| {
-            let chunk = &text[a..b];
-            is_plain(chunk.as_bytes()).then(|| read_chunk(chunk, file, fields, last, columns))
+            let chunk = &bytes[a..b];
+            let text = std::str::from_utf8(chunk).ok()?;
+            is_plain(chunk).then(|| read_chunk(text, file, fields, last, columns))
         })
         .collect();
     let parts = parts.into_iter().collect::<Option<Vec<_>>>()?;
@@ -105,12 +106,13 @@ fn join(parts: Vec<Rows>) -> Rows {
     };
     let mut slots = Vec::with_capacity(parts.len());
     let (mut values, mut lines) = (rows.values.as_mut_slice(), rows.lines.as_mut_slice());
-    for part in &parts {
+    for part in parts {
         let (v, rest_v) = values.split_at_mut(part.values.len());
         let (l, rest_l) = lines.split_at_mut(part.lines.len());
         slots.push((part, v, l));
         (values, lines) = (rest_v, rest_l);
     }
+    // Each part is freed as soon as it is copied.
     slots.into_par_iter().for_each(|(part, values, lines)| {
         values.copy_from_slice(&part.values);
         for (to, from) in lines.iter_mut().zip(&part.lines) {
@@ -148,8 +150,8 @@ fn read_chunk(
         let record = &text[start..end];
         start = end + 1;
         let record = record.strip_suffix('\r').unwrap_or(record);
-        if record.trim().is_empty() {
-            // A blank line, or a comment line (blanked when read).
+        if record.trim().is_empty() || is_comment(record) {
+            // A blank line, or a comment line (blanked beforehand, or here).
             line += 1;
             continue;
         }
@@ -173,6 +175,12 @@ fn read_chunk(
     Ok(rows)
 }
 
+/// Whether `record` is a comment line: its first character other than a space or a tab
+/// is `#` (as `blank_comments` sees one).
+fn is_comment(record: &str) -> bool {
+    record.trim_start_matches([' ', '\t']).starts_with('#')
+}
+
 /// The trimmed fields of `record` (split at every comma) up to position `last` into
 /// `cells`, and how many fields it has: past `last` commas are only counted, a pass the
 /// compiler makes vector-wide (a table's unused columns cost little).
@@ -183,16 +191,29 @@ fn split_fields<'a>(record: &'a str, last: usize, cells: &mut Vec<&'a str>) -> u
     while cells.len() <= last {
         match next_comma(bytes, from) {
             Some(at) => {
-                cells.push(record[from..at].trim());
+                cells.push(trim(&record[from..at]));
                 from = at + 1;
             }
             None => {
-                cells.push(record[from..].trim());
+                cells.push(trim(&record[from..]));
                 return cells.len();
             }
         }
     }
     cells.len() + 1 + bytes[from..].iter().filter(|&&b| b == b',').count()
+}
+
+/// `field` trimmed ([`str::trim`]), with no look at its characters when it starts and
+/// ends with a visible ASCII one (as numbers do): every whitespace character is either
+/// ASCII at or below the space, or not ASCII.
+fn trim(field: &str) -> &str {
+    let visible = |b: Option<&u8>| b.is_some_and(|&b| b > b' ' && b.is_ascii());
+    let bytes = field.as_bytes();
+    if visible(bytes.first()) && visible(bytes.last()) {
+        field
+    } else {
+        field.trim()
+    }
 }
 
 /// The position of the first comma in `bytes` from `from` on, looked for eight bytes at
@@ -221,7 +242,25 @@ fn next_comma(bytes: &[u8], from: usize) -> Option<usize> {
 
 #[cfg(test)]
 mod tests {
-    use super::{next_comma, split_fields};
+    use super::{next_comma, split_fields, trim};
+
+    #[test]
+    fn fields_are_trimmed_as_str_trim_trims_them() {
+        for c in (0..0x3100)
+            .filter_map(char::from_u32)
+            .chain(['\u{feff}', '\u{205f}'])
+        {
+            for field in [
+                format!("{c}"),
+                format!("{c}1"),
+                format!("1{c}"),
+                format!("{c}1.5{c}"),
+                format!(" {c}"),
+            ] {
+                assert_eq!(trim(&field), field.trim(), "{:?}", c);
+            }
+        }
+    }
 
     #[test]
     fn the_next_comma_is_found_at_every_offset_and_in_every_byte_of_a_word() {
