@@ -265,7 +265,7 @@ impl NumericTable {
         let header = reader.headers().ok()?.clone();
         let rest = usize::try_from(reader.position().byte()).ok()?;
         let before = bytes.get(..rest)?;
-        if before.contains(&b'#') {
+        if before.contains(&b'#') || !ends_a_line(bytes, rest) {
             return None;
         }
         let (columns, positions) = chosen_columns(&header, 1, file, required, optional).ok()?;
@@ -306,7 +306,10 @@ impl NumericTable {
         let header_line = lines.of(header.position());
         let (columns, positions) = chosen_columns(&header, header_line, file, required, optional)?;
         let rest = reader.position().byte() as usize;
-        if on_all_cores && let Some(text_after) = text.get(rest..) {
+        if on_all_cores
+            && ends_a_line(text.as_bytes(), rest)
+            && let Some(text_after) = text.get(rest..)
+        {
             let first_line = 1 + text.as_bytes()[..rest]
                 .iter()
                 .filter(|&&b| b == b'\n')
@@ -507,6 +510,17 @@ impl TableError {
     }
 }
 
+/// Whether the header, read up to byte `rest`, ended with a line: a plain table's chunks
+/// see lines as `\n` ends them, and a header ended by a bare `\r` (the csv crate ends a
+/// record there too) would leave them a line that is not one.
+fn ends_a_line(bytes: &[u8], rest: usize) -> bool {
+    match rest.checked_sub(1).and_then(|i| bytes.get(i)) {
+        None | Some(b'\n') => true,
+        Some(b'\r') => bytes.get(rest) == Some(&b'\n'),
+        Some(_) => false,
+    }
+}
+
 fn parse_cell(text: &str, file: &str, line: u64, column: &str) -> Result<f64, TableError> {
     let value: f64 = text.parse().map_err(|_| TableError::NotANumber {
         file: file.to_owned(),
@@ -667,6 +681,12 @@ mod plain_tests {
             b"x,y\n1,2\n\x00",
             b"x,\xFFy\n1,2\n",
             b"q,r\n1,2\n",
+            // A header ended by a bare carriage return, then a comment line.
+            b"x,y\r# c\n1,2\n",
+            b"\xEF\xBB\xBFx,y\r# c\n1,2\n",
+            b"x,y\r\n# c\n1,2\n",
+            b"x,y",
+            b"x,y\r",
         ] {
             agree_bytes(bytes);
         }
