@@ -13,14 +13,26 @@
 //! (no AVX2 instruction: scalar code), lengths stored row by row (masked stores, slow on
 //! AMD) and each transcendental's chain of dependent steps taken one lane group after
 //! another; now the quadrant is read from a float's bits, lengths are stored leg by leg
-//! and then turned into rows, and the three angles of a pose (the six servos' atan2) go
-//! through their polynomials side by side ([`Wide`]).
+//! and then turned into rows, and the three angles of a pose go through their polynomials
+//! side by side ([`Wide`]`<3>`). The servos' `atan2` is taken servo by servo, eight poses
+//! wide, its polynomial with fused multiply–adds (`fast_trig::atan2_finite`, the scalar
+//! path's too: within one unit in the last place of the results before), and a lane's
+//! soundness is a mask of non-short-circuit `&`, not branches (docs/guide/performance.md
+//! has the figures).
 
 use std::f64::consts::FRAC_2_PI;
 
 use super::{AsPose, BatchSolver, ServoBatch};
 use crate::solve::fast_trig::{self, REDUCTION_LIMIT, atan2_finite};
 use crate::solve::wide::{Real, Wide, all_within};
+
+/// Below this `M² + N²` a lane is left to the scalar path, which says whether the
+/// closure is degenerate: above it `atan2`'s arguments, of magnitude `M² + N²` (as
+/// `L² + c² = M² + N²`), are far from zero.
+const TINY_REACH: f64 = 1e-150;
+/// Above this `M² + N²` a lane is left to the scalar path: below it `atan2`'s arguments,
+/// of magnitude `M² + N²`, are finite.
+const HUGE_REACH: f64 = 1e299;
 
 /// Poses computed together.
 pub const LANES: usize = 8;
@@ -151,7 +163,7 @@ impl ServoBatch {
         let (two_a, rod_minus_horn, ncos, nsin) = self.constants();
         // The two arguments of each servo's atan2, servo by servo.
         let (mut ty, mut tx) = ([[0.0; LANES]; 6], [[0.0; LANES]; 6]);
-        let mut sound = true;
+        let mut sound = [true; LANES];
         for i in 0..6 {
             let [lx, ly, lz] = self.legs().leg_lanes(&frames, i);
             for l in 0..LANES {
@@ -159,29 +171,23 @@ impl ServoBatch {
                 let big_l = x * x + y * y + z * z - rod_minus_horn;
                 let m = two_a * z;
                 let n = ncos[i] * x + nsin[i] * y;
-                let c2 = m * m + n * n - big_l * big_l;
-                // Out of reach, or a degenerate closure: the scalar path says which.
-                sound &= c2 >= 0.0 && !(m == 0.0 && n == 0.0);
-                let c = c2.max(0.0).sqrt();
+                let reach = m * m + n * n;
+                let c2 = reach - big_l * big_l;
+                let c = c2.sqrt();
                 (ty[i][l], tx[i][l]) = (big_l * m - c * n, c * m + big_l * n);
-                sound &= ty[i][l].is_finite()
-                    && tx[i][l].is_finite()
-                    && !(ty[i][l] == 0.0 && tx[i][l] == 0.0);
+                // Out of reach, degenerate or absurdly large: the scalar path says which.
+                // Non-short-circuit `&`, one mask per lane: no branch in the loop.
+                sound[l] &= (c2 >= 0.0) & (reach > TINY_REACH) & (reach < HUGE_REACH);
             }
         }
-        if !sound {
+        if !sound.iter().fold(true, |all, &lane| all & lane) {
             return false;
         }
-        // Pose by pose, its six servos side by side (six independent chains through the
-        // atan2's divisions and polynomial), stored servo by servo so that the loop over
-        // the poses is made four (eight) poses wide; then turned into rows.
+        // Servo by servo, eight poses wide (two or one vector registers a step); the six
+        // servos' chains are independent, so they overlap in the processor. Then rows.
         let mut theta = [[0.0; LANES]; 6];
-        for l in 0..LANES {
-            let pick = |v: &[Lanes; 6]| Wide::<6>::from_fn(|i| v[i][l]);
-            let angles = atan2_finite(pick(&ty), pick(&tx));
-            for (i, servo) in theta.iter_mut().enumerate() {
-                servo[l] = angles.0[i];
-            }
+        for (i, theta) in theta.iter_mut().enumerate() {
+            *theta = atan2_finite(Wide(ty[i]), Wide(tx[i])).0;
         }
         for (l, row) in out.iter_mut().enumerate().take(LANES) {
             for (i, value) in row.iter_mut().enumerate() {

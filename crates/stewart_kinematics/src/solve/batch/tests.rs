@@ -228,6 +228,82 @@ fn dispatched_servo_angles_give_the_scalar_paths_bits_and_its_first_unreachable_
 }
 
 #[test]
+fn absurd_or_degenerate_lanes_go_to_the_scalar_path_which_says_which() {
+    // A pose among reachable ones whose joints lie astronomically far (the closure's
+    // squares overflow) or on a shaft's axis: the group is left to the scalar path, whose
+    // first error is the batch's, on every path.
+    let g = crate::test_support::servo_geometry();
+    let solver = ServoBatch::new(&g).unwrap_or_else(|| panic!("not rotary"));
+    let home = g.home_pose();
+    for (x, y, z) in [
+        (1e160, 0.0, 0.117),
+        (3e150, -2e150, 1e151),
+        (0.0, 0.0, -1e-170),
+    ] {
+        let mut poses = vec![home; 21];
+        poses[11].position = Vector3::new(x, y, z);
+        let scalar = solver.angles_scalar(&poses[11]).err();
+        let first = scalar.map(|servo| (11, servo));
+        let mut out = vec![[0.0; 6]; poses.len()];
+        let dispatched = solver.solve_parallel(&poses, &mut out).err();
+        let reference = solver.solve_reference(&poses, &mut out).err();
+        assert_eq!(dispatched, first, "({x}, {y}, {z})");
+        assert_eq!(reference, first, "({x}, {y}, {z})");
+        if first.is_none() {
+            let lone = solver
+                .angles_scalar(&poses[11])
+                .unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(out[11].map(f64::to_bits), lone.map(f64::to_bits));
+        }
+    }
+}
+
+#[test]
+fn a_closure_that_underflows_goes_to_the_scalar_path() {
+    // Base and platform joints at the same places (joint 0 at angle 0: exactly (r, 0, 0)),
+    // 3 m horns on 5 m rods (rod² − horn² = 16 exactly) and servo 0's shaft at 0°: a pose
+    // 4 m up, 1e-170 m high puts leg 0 at (0, 4, 1e-170): its closure's squares underflow
+    // to zero and both `atan2` arguments are 0. The scalar path (the standard library's
+    // `atan2(0, 0)`) gives 0; the lanes must leave such a pose to it, not give 0/0.
+    use crate::model::angle::Angle;
+    use crate::model::geometry::PlateJoints;
+    let angles = [0.0, 20.0, 120.0, 140.0, 240.0, 260.0].map(Angle::from_degrees);
+    let mut p = GeometryParams::from_layout(3.0, 3.0, 4.0, Layout::seed());
+    p.base = PlateJoints::Circle {
+        radius: 3.0,
+        angles,
+    };
+    p.platform = PlateJoints::Circle {
+        radius: 3.0,
+        angles,
+    };
+    p.actuator = crate::model::actuator::Actuator::Rotary(
+        crate::model::rotary::RotaryActuators::new(
+            3.0,
+            5.0,
+            [0.0, 20.0, 120.0, 140.0, 240.0, 260.0],
+            None,
+        )
+        .unwrap_or_else(|e| panic!("{e}")),
+    );
+    let g = Geometry::new(p).unwrap_or_else(|e| panic!("{e}"));
+    let solver = ServoBatch::new(&g).unwrap_or_else(|| panic!("not rotary"));
+    let mut poses = vec![Pose::from_xyz_rpy_deg([0.0, 0.0, 4.0], [0.0; 3]); 16];
+    poses[5].position = Vector3::new(0.0, 4.0, 1e-170);
+    let lone = solver.angles_scalar(&poses[5]);
+    assert_eq!(lone.map(|a| a[0].to_bits()), Ok(0), "{lone:?}");
+    let mut out = vec![[f64::NAN; 6]; poses.len()];
+    assert_eq!(solver.solve_parallel(&poses, &mut out), Ok(()));
+    let mut reference = vec![[f64::NAN; 6]; poses.len()];
+    assert_eq!(solver.solve_reference(&poses, &mut reference), Ok(()));
+    for (k, pose) in poses.iter().enumerate() {
+        let lone = solver.angles_scalar(pose).map(|a| a.map(f64::to_bits));
+        assert_eq!(Ok(out[k].map(f64::to_bits)), lone, "pose {k}");
+        assert_eq!(Ok(reference[k].map(f64::to_bits)), lone, "pose {k}");
+    }
+}
+
+#[test]
 fn pose_rows_give_the_bits_of_the_pose_batch() {
     // Rows of a pose table (degrees), a ragged count over several chunks: the same
     // bits as the batch of the poses a table reader makes of them, for legs and servos.
@@ -319,9 +395,12 @@ fn pose_rows_give_the_bits_of_the_pose_batch() {
 
 #[test]
 fn results_keep_the_bits_they_had_before_the_kernels_were_tuned_for_avx2() {
-    // Digests (FNV-1a over every result's bits) of 100 003 poses about home, taken with the
-    // kernels of commit 7fd12a7 (before issue #60) by `examples/batch_profile.rs`, which
-    // makes the same poses: the tuned kernels give the very same bits.
+    // Digests (FNV-1a over every result's bits) of 100 003 poses about home, taken by
+    // `examples/batch_profile.rs`, which makes the same poses. Leg lengths: with the kernels
+    // of commit 7fd12a7 (before issue #60); the tuned kernels give the very same bits.
+    // Servo angles: since their atan2's polynomial takes fused multiply–adds (issue #60;
+    // 0xa7ff_6e4a_cfb1_dc43 before), within one unit in the last place of the results
+    // before (`fast_trig`'s tests).
     let digest = |out: &[[f64; 6]]| {
         out.as_flattened()
             .iter()
@@ -360,13 +439,13 @@ fn results_keep_the_bits_they_had_before_the_kernels_were_tuned_for_avx2() {
     servos
         .solve_serial(&poses, &mut out)
         .unwrap_or_else(|e| panic!("{e:?}"));
-    assert_eq!(digest(&out), 0xa7ff_6e4a_cfb1_dc43, "servo angles");
+    assert_eq!(digest(&out), 0x81c4_72be_5915_fcf6, "servo angles");
     servos
         .solve_reference(&poses, &mut out)
         .unwrap_or_else(|e| panic!("{e:?}"));
     assert_eq!(
         digest(&out),
-        0xa7ff_6e4a_cfb1_dc43,
+        0x81c4_72be_5915_fcf6,
         "servo angles, baseline build"
     );
 }
