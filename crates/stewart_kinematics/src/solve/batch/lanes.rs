@@ -34,6 +34,11 @@ const TINY_REACH: f64 = 1e-150;
 /// of magnitude `M² + N²`, are finite.
 const HUGE_REACH: f64 = 1e299;
 
+/// How many servos' closures come between a servo's closure and its `atan2` in the
+/// servo-angle lanes (measured on Zen 3, one core, the median of eight runs: 37 ns a pose
+/// with none between, 35 ns with one, 32 ns with two, 33 ns with three or four).
+const ANGLE_LAG: usize = 2;
+
 /// Poses computed together.
 pub const LANES: usize = 8;
 
@@ -161,33 +166,37 @@ impl ServoBatch {
             return false;
         }
         let (two_a, rod_minus_horn, ncos, nsin) = self.constants();
-        // The two arguments of each servo's atan2, servo by servo.
+        // The two arguments of each servo's atan2, then its angle, servo by servo, eight
+        // poses wide; the angle of servo `i` is taken after the closure of servo `i + 2`
+        // (its square root's wait filled with independent work). Lanes out of reach,
+        // degenerate or absurdly large get some angle and are found by `sound` (one mask
+        // per lane, non-short-circuit `&`: no branch) before anything is written.
         let (mut ty, mut tx) = ([[0.0; LANES]; 6], [[0.0; LANES]; 6]);
+        let mut theta = [[0.0; LANES]; 6];
         let mut sound = [true; LANES];
-        for i in 0..6 {
-            let [lx, ly, lz] = self.legs().leg_lanes(&frames, i);
-            for l in 0..LANES {
-                let (x, y, z) = (lx[l], ly[l], lz[l]);
-                let big_l = x * x + y * y + z * z - rod_minus_horn;
-                let m = two_a * z;
-                let n = ncos[i] * x + nsin[i] * y;
-                let reach = m * m + n * n;
-                let c2 = reach - big_l * big_l;
-                let c = c2.sqrt();
-                (ty[i][l], tx[i][l]) = (big_l * m - c * n, c * m + big_l * n);
-                // Out of reach, degenerate or absurdly large: the scalar path says which.
-                // Non-short-circuit `&`, one mask per lane: no branch in the loop.
-                sound[l] &= (c2 >= 0.0) & (reach > TINY_REACH) & (reach < HUGE_REACH);
+        for step in 0..6 + ANGLE_LAG {
+            if step < 6 {
+                let i = step;
+                let [lx, ly, lz] = self.legs().leg_lanes(&frames, i);
+                for l in 0..LANES {
+                    let (x, y, z) = (lx[l], ly[l], lz[l]);
+                    let big_l = x * x + y * y + z * z - rod_minus_horn;
+                    let m = two_a * z;
+                    let n = ncos[i] * x + nsin[i] * y;
+                    let reach = m * m + n * n;
+                    let c2 = reach - big_l * big_l;
+                    let c = c2.sqrt();
+                    (ty[i][l], tx[i][l]) = (big_l * m - c * n, c * m + big_l * n);
+                    sound[l] &= (c2 >= 0.0) & (reach > TINY_REACH) & (reach < HUGE_REACH);
+                }
+            }
+            if step >= ANGLE_LAG {
+                let i = step - ANGLE_LAG;
+                theta[i] = atan2_finite(Wide(ty[i]), Wide(tx[i])).0;
             }
         }
         if !sound.iter().fold(true, |all, &lane| all & lane) {
             return false;
-        }
-        // Servo by servo, eight poses wide (two or one vector registers a step); the six
-        // servos' chains are independent, so they overlap in the processor. Then rows.
-        let mut theta = [[0.0; LANES]; 6];
-        for (i, theta) in theta.iter_mut().enumerate() {
-            *theta = atan2_finite(Wide(ty[i]), Wide(tx[i])).0;
         }
         for (l, row) in out.iter_mut().enumerate().take(LANES) {
             for (i, value) in row.iter_mut().enumerate() {
