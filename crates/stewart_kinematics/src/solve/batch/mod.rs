@@ -3,9 +3,13 @@
 //! The geometry is laid out once as structure-of-arrays constants; each pose then costs
 //! one shared sine/cosine reduction per angle ([`crate::solve::fast_trig`]) and straight-line
 //! arithmetic, with no allocation. Work is split over the cores with rayon in chunks
-//! large enough to amortise scheduling.
+//! large enough to amortise scheduling; within a chunk the poses are copied 64 at a time
+//! onto the stack before their arithmetic (and a table's rows checked there), so that
+//! their cache misses are in flight together.
 
 mod lanes;
+
+use std::convert::Infallible;
 
 use rayon::prelude::*;
 use wide::f64x4;
@@ -17,6 +21,9 @@ use lanes::LANES;
 
 /// Poses per rayon task: big enough that scheduling is noise, small enough to balance.
 pub const CHUNK: usize = 4096;
+/// Poses copied together into a buffer on the stack before their arithmetic
+/// ([`by_blocks`]).
+const BLOCK: usize = 64;
 
 /// What the batch reads a pose from: a [`Pose`], or a row `[x, y, z, roll, pitch, yaw]`
 /// of a table (metres, degrees; its angles turned to radians as [`Pose`] turns them, so
@@ -28,6 +35,11 @@ pub(crate) trait AsPose: Copy + Sync {
     fn angle(&self, k: usize) -> f64;
     /// The pose itself.
     fn pose(&self) -> Pose;
+    /// Why a block is refused before its arithmetic ([`Infallible`] for poses).
+    type Refusal;
+    /// A block's check before its arithmetic: rows must lie in the accepted range of a
+    /// pose table, all of them; poses are not checked.
+    fn check(block: &[Self]) -> Result<(), Self::Refusal>;
 }
 
 impl AsPose for Pose {
@@ -43,6 +55,11 @@ impl AsPose for Pose {
     fn pose(&self) -> Pose {
         *self
     }
+    type Refusal = Infallible;
+    #[inline(always)]
+    fn check(_: &[Self]) -> Result<(), Infallible> {
+        Ok(())
+    }
 }
 
 impl AsPose for [f64; 6] {
@@ -57,6 +74,12 @@ impl AsPose for [f64; 6] {
     #[inline(always)]
     fn pose(&self) -> Pose {
         Pose::from_row(self)
+    }
+    /// A row outside the accepted range, or not finite ([`all_accepted`]).
+    type Refusal = ();
+    #[inline(always)]
+    fn check(block: &[Self]) -> Result<(), ()> {
+        if all_accepted(block) { Ok(()) } else { Err(()) }
     }
 }
 
@@ -142,14 +165,9 @@ impl BatchSolver {
     /// # Panics
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     pub fn solve_serial(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
-        self.solve_serial_of(poses, out);
-    }
-
-    /// [`BatchSolver::solve_serial`] of poses or rows.
-    fn solve_serial_of<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
         // The same loop compiled for the widest vector instructions this CPU has (AVX2 and
         // FMA, or AVX-512), chosen at run time; without them, the baseline build.
-        pulp::Arch::new().dispatch(Lengths {
+        let Ok(()) = pulp::Arch::new().dispatch(Lengths {
             solver: self,
             poses,
             out,
@@ -163,13 +181,37 @@ impl BatchSolver {
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     #[inline(always)]
     pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) {
-        self.solve_reference_of(poses, out);
+        let Ok(()) = self.solve_reference_of(poses, out);
     }
 
-    /// [`BatchSolver::solve_reference`] of poses or rows.
+    /// [`BatchSolver::solve_reference`] of poses or rows, block by block ([`staged`]),
+    /// each checked first ([`AsPose::check`]): the first refusal stops it (`out` is then
+    /// partly written).
     #[inline(always)]
-    fn solve_reference_of<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
+    fn solve_reference_of<P: AsPose>(
+        &self,
+        poses: &[P],
+        out: &mut [[f64; 6]],
+    ) -> Result<(), P::Refusal> {
         assert!(out.len() >= poses.len(), "output shorter than input");
+        let whole = poses.len() / BLOCK * BLOCK;
+        for (block, out) in poses[..whole]
+            .chunks_exact(BLOCK)
+            .zip(out.chunks_exact_mut(BLOCK))
+        {
+            let block = staged(block);
+            P::check(&block)?;
+            self.solve_block(&block, out);
+        }
+        P::check(&poses[whole..])?;
+        self.solve_block(&poses[whole..], &mut out[whole..]);
+        Ok(())
+    }
+
+    /// The leg lengths of a block of poses into `out`: eight at a time, and the poses of
+    /// a group the lanes leave (or the rest) one by one.
+    #[inline(always)]
+    fn solve_block<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) {
         let whole = poses.len() / LANES * LANES;
         for (p, o) in poses[..whole]
             .chunks_exact(LANES)
@@ -208,6 +250,18 @@ impl BatchSolver {
     }
 }
 
+/// A block of [`BLOCK`] poses copied into a buffer on the stack.
+///
+/// The copy's loads do not wait on one another, so the processor has the block's cache
+/// misses in flight at once; read where they lie, a group of eight poses (over a thousand
+/// instructions, beyond the reorder window) waited for its own misses, one group after
+/// another: the batch read from main memory at a third of its speed on cached poses (30
+/// against 11 ns a pose on Zen 3, whose prefetchers did not hide it).
+#[inline(always)]
+fn staged<P: AsPose>(block: &[P]) -> [P; BLOCK] {
+    std::array::from_fn(|k| block[k])
+}
+
 /// [`BatchSolver::solve_reference`] as one piece of work for `pulp` to compile per
 /// instruction set: inlined whole into each, so every step gets the wide instructions.
 struct Lengths<'a, P> {
@@ -217,11 +271,11 @@ struct Lengths<'a, P> {
 }
 
 impl<P: AsPose> pulp::WithSimd for Lengths<'_, P> {
-    type Output = ();
+    type Output = Result<(), P::Refusal>;
 
     #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _simd: S) {
-        self.solver.solve_reference_of(self.poses, self.out);
+    fn with_simd<S: pulp::Simd>(self, _simd: S) -> Self::Output {
+        self.solver.solve_reference_of(self.poses, self.out)
     }
 }
 
@@ -233,7 +287,7 @@ struct ServoChunk<'a, P> {
 }
 
 impl<P: AsPose> pulp::WithSimd for ServoChunk<'_, P> {
-    type Output = Result<(), OutOfReach>;
+    type Output = Result<(), Stop<P::Refusal>>;
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _simd: S) -> Self::Output {
@@ -243,6 +297,23 @@ impl<P: AsPose> pulp::WithSimd for ServoChunk<'_, P> {
 
 /// The first pose out of reach in a batch: its index and its servo (both from 0).
 pub type OutOfReach = (usize, usize);
+
+/// Why a servo batch stopped: a block refused by its check ([`AsPose::check`]), or a
+/// pose out of reach.
+enum Stop<R> {
+    Refused(R),
+    OutOfReach(OutOfReach),
+}
+
+impl Stop<Infallible> {
+    /// The pose out of reach (poses are never refused).
+    fn out_of_reach(self) -> OutOfReach {
+        match self {
+            Stop::OutOfReach(first) => first,
+            Stop::Refused(never) => match never {},
+        }
+    }
+}
 
 /// Batch servo angles of a rotary platform: the batch leg vectors, then the closed form
 /// of [`crate::model::rotary`] with one square root and one `atan2` per servo:
@@ -340,11 +411,13 @@ impl ServoBatch {
     /// # Panics
     /// If `out` is shorter than `poses` (a programming error, not a user error).
     pub fn solve_serial(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> Result<(), OutOfReach> {
-        pulp::Arch::new().dispatch(ServoChunk {
-            solver: self,
-            poses,
-            out,
-        })
+        pulp::Arch::new()
+            .dispatch(ServoChunk {
+                solver: self,
+                poses,
+                out,
+            })
+            .map_err(Stop::out_of_reach)
     }
 
     /// Servo angles (radians) of every pose into `out`, spread over all cores; the first
@@ -379,16 +452,44 @@ impl ServoBatch {
     #[inline(always)]
     pub fn solve_reference(&self, poses: &[Pose], out: &mut [[f64; 6]]) -> Result<(), OutOfReach> {
         self.solve_reference_of(poses, out)
+            .map_err(Stop::out_of_reach)
     }
 
-    /// [`ServoBatch::solve_reference`] of poses or rows.
+    /// [`ServoBatch::solve_reference`] of poses or rows, block by block ([`staged`]), each
+    /// checked first ([`AsPose::check`]).
     #[inline(always)]
     fn solve_reference_of<P: AsPose>(
         &self,
         poses: &[P],
         out: &mut [[f64; 6]],
-    ) -> Result<(), OutOfReach> {
+    ) -> Result<(), Stop<P::Refusal>> {
         assert!(out.len() >= poses.len(), "output shorter than input");
+        let whole = poses.len() / BLOCK * BLOCK;
+        for (b, (block, out)) in poses[..whole]
+            .chunks_exact(BLOCK)
+            .zip(out.chunks_exact_mut(BLOCK))
+            .enumerate()
+        {
+            let block = staged(block);
+            P::check(&block).map_err(Stop::Refused)?;
+            self.solve_block(&block, out, b * BLOCK)
+                .map_err(Stop::OutOfReach)?;
+        }
+        P::check(&poses[whole..]).map_err(Stop::Refused)?;
+        self.solve_block(&poses[whole..], &mut out[whole..], whole)
+            .map_err(Stop::OutOfReach)
+    }
+
+    /// The servo angles of a block of poses, the first of which is pose `start` of the
+    /// batch, into `out`: eight at a time, and the poses of a group the lanes leave (or
+    /// the rest) one by one, the first out of reach stopping it.
+    #[inline(always)]
+    fn solve_block<P: AsPose>(
+        &self,
+        poses: &[P],
+        out: &mut [[f64; 6]],
+        start: usize,
+    ) -> Result<(), OutOfReach> {
         for (group, (p, o)) in poses.chunks(LANES).zip(out.chunks_mut(LANES)).enumerate() {
             if p.len() == LANES && self.angles_lanes(p, o) {
                 continue;
@@ -396,7 +497,7 @@ impl ServoBatch {
             for (k, (pose, slot)) in p.iter().zip(o.iter_mut()).enumerate() {
                 *slot = self
                     .angles_scalar(&pose.pose())
-                    .map_err(|servo| (group * LANES + k, servo))?;
+                    .map_err(|servo| (start + group * LANES + k, servo))?;
             }
         }
         Ok(())
@@ -469,33 +570,26 @@ pub(crate) fn actuator_values_rows(
             rows.par_chunks(CHUNK)
                 .zip(out.par_chunks_mut(CHUNK))
                 .try_for_each(|(r, o)| {
-                    let arch = pulp::Arch::new();
-                    if !arch.dispatch(Accepted(r)) {
-                        return Err(());
-                    }
-                    // Accepted poses of an accepted geometry give finite lengths.
-                    arch.dispatch(Lengths {
+                    // Each block's rows checked as it is staged (accepted poses of an
+                    // accepted geometry give finite lengths).
+                    pulp::Arch::new().dispatch(Lengths {
                         solver: &solver,
                         poses: r,
-                        out: &mut *o,
-                    });
-                    Ok(())
+                        out: o,
+                    })
                 })
         }
         Some(solver) => rows
             .par_chunks(CHUNK)
             .zip(out.par_chunks_mut(CHUNK))
             .try_for_each(|(r, o)| {
-                let arch = pulp::Arch::new();
-                if !arch.dispatch(Accepted(r)) {
-                    return Err(());
-                }
-                arch.dispatch(ServoChunk {
-                    solver,
-                    poses: r,
-                    out: &mut *o,
-                })
-                .map_err(drop)?;
+                pulp::Arch::new()
+                    .dispatch(ServoChunk {
+                        solver,
+                        poses: r,
+                        out: &mut *o,
+                    })
+                    .map_err(drop)?;
                 for row in o.iter_mut() {
                     *row = row.map(|r| crate::model::angle::Angle::from_radians(r).degrees());
                 }
@@ -503,18 +597,6 @@ pub(crate) fn actuator_values_rows(
             }),
     };
     solved.map_err(|()| earliest_refused())
-}
-
-/// [`all_accepted`] compiled for the CPU's widest instructions.
-struct Accepted<'a>(&'a [[f64; 6]]);
-
-impl pulp::WithSimd for Accepted<'_> {
-    type Output = bool;
-
-    #[inline(always)]
-    fn with_simd<S: pulp::Simd>(self, _simd: S) -> bool {
-        all_accepted(self.0)
-    }
 }
 
 /// Whether every value of `rows` is within its accepted range ([`crate::ground::bounds::POSE_ROW`];
