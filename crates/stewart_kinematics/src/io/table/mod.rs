@@ -297,12 +297,15 @@ impl NumericTable {
         let mut reader = csv::ReaderBuilder::new()
             .trim(csv::Trim::All)
             .flexible(true)
+            .has_headers(false)
             .from_reader(text.as_bytes());
         let unreadable = |e: csv::Error| TableError::Unreadable {
             file: file.to_owned(),
             message: describe_csv_error(&e),
         };
-        let header = reader.headers().map_err(unreadable)?.clone();
+        // The header is the first line that is not blank or a comment (blanked when read).
+        let mut header = csv::StringRecord::new();
+        while reader.read_record(&mut header).map_err(unreadable)? && is_blank(&header) {}
         let header_line = lines.of(header.position());
         let (columns, positions) = chosen_columns(&header, header_line, file, required, optional)?;
         let rest = reader.position().byte() as usize;
@@ -341,7 +344,7 @@ impl NumericTable {
         let mut record = csv::StringRecord::new();
         while reader.read_record(&mut record).map_err(unreadable)? {
             let line = lines.of(record.position());
-            if record.len() == 1 && record.get(0).is_some_and(str::is_empty) {
+            if is_blank(&record) {
                 continue; // a blank line, or a comment line (blanked when read)
             }
             if record.len() != header.len() {
@@ -540,6 +543,12 @@ fn parse_cell(text: &str, file: &str, line: u64, column: &str) -> Result<f64, Ta
     }
 }
 
+/// Whether a record is a blank line, or a comment line blanked when read: one empty field
+/// (fields are trimmed).
+fn is_blank(record: &csv::StringRecord) -> bool {
+    record.len() == 1 && record.get(0).is_some_and(str::is_empty)
+}
+
 fn describe_csv_error(e: &csv::Error) -> String {
     match e.kind() {
         csv::ErrorKind::Io(io) => format!("cannot be read ({io})"),
@@ -569,6 +578,32 @@ mod tests {
         let t = read("t,x,y\n0.5,1,2\n").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(t.index("t"), Some(2));
         assert_eq!(t.row(0), &[1.0, 2.0, 0.5]);
+    }
+
+    #[test]
+    fn comment_and_blank_lines_before_the_header_are_skipped() {
+        for (text, first) in [
+            ("# my poses\nx,y\n1,2\n", 3),
+            ("  # indented\n\n   \nx,y\n1,2\n", 5),
+            ("# a\r\n# b\r\nt,x,y\r\n0,1,2\r\n", 4),
+        ] {
+            let t = read(text).unwrap_or_else(|e| panic!("{text:?}: {e}"));
+            assert_eq!(t.columns[..2], ["x", "y"], "{text:?}");
+            assert_eq!((t.line(0), t.row(0)[..2].to_vec()), (first, vec![1.0, 2.0]));
+        }
+        // The header's line is the one named when it lacks a column.
+        assert_eq!(
+            read("# note\nx,z\n1,2\n").unwrap_err().to_string(),
+            "poses.csv, line 2: the header has no `y` column (expected columns: x,y)"
+        );
+        // No header at all: as for an empty file, the first column is missing.
+        for text in ["# only a comment\n", ""] {
+            let message = read(text).unwrap_err().to_string();
+            assert!(
+                message.contains("the header has no `x` column"),
+                "{message}"
+            );
+        }
     }
 
     #[test]
