@@ -34,9 +34,6 @@ pub(crate) trait Real:
     fn sign_negative(self) -> Self::Mask;
     /// `yes` where `mask` holds, else `no`.
     fn select(mask: Self::Mask, yes: Self, no: Self) -> Self;
-    /// `self · a + b` rounded once (a fused multiply–add, [`f64::mul_add`]): the same bits
-    /// on every path, one instruction where the CPU has FMA.
-    fn mul_add(self, a: Self, b: Self) -> Self;
 }
 
 impl Real for f64 {
@@ -64,10 +61,6 @@ impl Real for f64 {
     #[inline(always)]
     fn select(mask: bool, yes: Self, no: Self) -> Self {
         if mask { yes } else { no }
-    }
-    #[inline(always)]
-    fn mul_add(self, a: Self, b: Self) -> Self {
-        f64::mul_add(self, a, b)
     }
 }
 
@@ -169,10 +162,6 @@ impl<const N: usize> Real for Wide<N> {
     fn select(mask: [bool; N], yes: Self, no: Self) -> Self {
         Self::from_fn(|l| if mask[l] { yes.0[l] } else { no.0[l] })
     }
-    #[inline(always)]
-    fn mul_add(self, a: Self, b: Self) -> Self {
-        Self::from_fn(|l| f64::mul_add(self.0[l], a.0[l], b.0[l]))
-    }
 }
 
 #[cfg(test)]
@@ -189,8 +178,6 @@ mod tests {
             assert_eq!((a - b).0[l], x - y);
             assert_eq!((a * b).0[l], x * y);
             assert_eq!((a / b).0[l], x / y);
-            assert_eq!(a.mul_add(b, a).0[l], x.mul_add(y, x));
-            assert_eq!(Real::mul_add(x, y, x), x.mul_add(y, x));
             assert_eq!(Real::round(a).0[l], x.round());
             assert_eq!(Real::abs(a).0[l], x.abs());
             assert_eq!((-a).0[l].to_bits(), (-x).to_bits());

@@ -15,10 +15,9 @@
 //! another; now the quadrant is read from a float's bits, lengths are stored leg by leg
 //! and then turned into rows, and the three angles of a pose go through their polynomials
 //! side by side ([`Wide`]`<3>`). The servos' `atan2` is taken servo by servo, eight poses
-//! wide, its polynomial with fused multiply–adds (`fast_trig::atan2_finite`, the scalar
-//! path's too: within one unit in the last place of the results before), and a lane's
-//! soundness is a mask of non-short-circuit `&`, not branches (docs/guide/performance.md
-//! has the figures).
+//! wide (`fast_trig::atan2_finite`, the scalar path's too), each after the next two
+//! servos' closures, and a lane's soundness is a mask of non-short-circuit `&`, not
+//! branches (docs/guide/performance.md has the figures).
 
 use std::f64::consts::FRAC_2_PI;
 
@@ -157,8 +156,9 @@ pub(super) fn poses_lanes<P: AsPose>(poses: &[P], frames: &mut PosesLanes) -> bo
 impl ServoBatch {
     /// The servo angles (radians) of eight poses into `out`: [`ServoBatch::angles_scalar`]
     /// lane by lane, so the same bits; `false` (nothing written) when an angle lies beyond
-    /// the fast reduction or a servo of some pose cannot reach its joint — the caller then
-    /// takes the poses one by one, which says which.
+    /// the fast reduction, or a servo of some pose cannot reach its joint or has a
+    /// degenerate or absurdly large closure ([`TINY_REACH`], [`HUGE_REACH`]) — the caller
+    /// then takes the poses one by one, which says which.
     #[inline(always)]
     pub(super) fn angles_lanes<P: AsPose>(&self, poses: &[P], out: &mut [[f64; 6]]) -> bool {
         let mut frames = PosesLanes::ZERO;
