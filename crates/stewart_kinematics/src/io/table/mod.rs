@@ -306,7 +306,12 @@ impl NumericTable {
         // The header is the first line that is not blank or a comment (blanked when read).
         let mut header = csv::StringRecord::new();
         while reader.read_record(&mut header).map_err(unreadable)? && is_blank(&header) {}
-        let header_line = lines.of(header.position());
+        // No header line at all (an empty file, or only comments): named as line 1.
+        let header_line = if header.is_empty() {
+            1
+        } else {
+            lines.of(header.position())
+        };
         let (columns, positions) = chosen_columns(&header, header_line, file, required, optional)?;
         let rest = reader.position().byte() as usize;
         if on_all_cores
@@ -476,9 +481,11 @@ fn text_of(mut bytes: Vec<u8>, file: &str) -> Result<String, TableError> {
 }
 
 /// Blank every comment line (first non-blank character `#`) in place, keeping its line
-/// ending, so that byte offsets and line numbers stay those of the file.
+/// ending (and a byte-order mark before the first), so that byte offsets and line numbers
+/// stay those of the file.
 fn blank_comments(bytes: &mut [u8]) {
-    let mut start = 0;
+    const BOM: &[u8] = &[0xEF, 0xBB, 0xBF];
+    let mut start = if bytes.starts_with(BOM) { BOM.len() } else { 0 };
     while start < bytes.len() {
         let end = bytes[start..]
             .iter()
@@ -586,6 +593,7 @@ mod tests {
             ("# my poses\nx,y\n1,2\n", 3),
             ("  # indented\n\n   \nx,y\n1,2\n", 5),
             ("# a\r\n# b\r\nt,x,y\r\n0,1,2\r\n", 4),
+            ("\u{feff}# saved by a spreadsheet\nx,y\n1,2\n", 3),
         ] {
             let t = read(text).unwrap_or_else(|e| panic!("{text:?}: {e}"));
             assert_eq!(t.columns[..2], ["x", "y"], "{text:?}");
@@ -596,12 +604,11 @@ mod tests {
             read("# note\nx,z\n1,2\n").unwrap_err().to_string(),
             "poses.csv, line 2: the header has no `y` column (expected columns: x,y)"
         );
-        // No header at all: as for an empty file, the first column is missing.
-        for text in ["# only a comment\n", ""] {
-            let message = read(text).unwrap_err().to_string();
-            assert!(
-                message.contains("the header has no `x` column"),
-                "{message}"
+        // No header at all: as for an empty file, the first column is missing on line 1.
+        for text in ["# only a comment\n", "\n# a\n# b\n", ""] {
+            assert_eq!(
+                read(text).unwrap_err().to_string(),
+                "poses.csv, line 1: the header has no `x` column (expected columns: x,y)"
             );
         }
     }
