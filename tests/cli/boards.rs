@@ -560,12 +560,22 @@ fn device_sim_reads_each_odrive_board_over_udp_and_over_serial() {
 /// A template whose frame ends in a space (a board that reads space-ended numbers).
 const SPACED: &str = "<255>{a1:u16be}{a2:u16be}{a3:u16be}{a4:u16be}{a5:u16be}{a6:u16be} ";
 
-/// The bytes of a short dry run of the paired preset with `args` (a scenario or `--set`s).
+/// The bytes of a short dry run of the paired preset with `args` (a scenario or `--set`s),
+/// on the stream's own clock (`--instant`: every tick in turn, none skipped however
+/// loaded the machine, so that two runs give the same frames).
 fn dry_run_bytes(args: &[&str]) -> Vec<u8> {
     let dir = tempdir();
     let out = dir.path().join("frames.bin");
     let path = out.display().to_string();
-    let timing = ["--duration", "0.1", "--rate", "100", "--ramp", "0.05"];
+    let timing = [
+        "--duration",
+        "0.1",
+        "--rate",
+        "100",
+        "--ramp",
+        "0.05",
+        "--instant",
+    ];
     let o = stewart(&[&["link", "--dry-run"][..], args, &timing, &["--out", &path]].concat());
     assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
     std::fs::read(&out).unwrap_or_else(|e| panic!("{e}"))
