@@ -73,6 +73,8 @@ fn a_dry_run_records_the_servo_angles_once_armed() {
         "--preset",
         "servo-desk",
         "--dry-run",
+        // The stream's own clock: a loaded machine's late first tick cannot move the ramp.
+        "--instant",
         "--duration",
         "1",
         "--rate",
@@ -684,6 +686,7 @@ fn an_easy_ramp_is_honoured_and_a_longer_one_is_announced_before_it_starts() {
         "--preset",
         "paired",
         "--dry-run",
+        "--instant",
         "--rate",
         "200",
         "--duration",
@@ -744,7 +747,16 @@ fn once_armed_the_values_sent_are_the_checked_trajectory() {
         let first = header.iter().position(|c| c == column).unwrap_or(7);
         let step = rows[1][0] - rows[0][0];
         for rate in ["200", "1000"] {
-            let o = stewart(&["link", "--preset", preset, "--dry-run", "--rate", rate]);
+            // On the stream's own clock (`--instant`): no tick skipped, the ramp on time.
+            let o = stewart(&[
+                "link",
+                "--preset",
+                preset,
+                "--dry-run",
+                "--instant",
+                "--rate",
+                rate,
+            ]);
             assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
             assert!(
                 stderr(&o).contains("e-stop: at home, disarmed"),
